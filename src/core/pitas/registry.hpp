@@ -1,0 +1,67 @@
+// The only place where method names and mnemonics map to motions.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/keyframe.hpp"
+#include "core/mean_kind.hpp"
+#include "core/pitas/motion.hpp"
+
+namespace pita {
+
+enum class Method {
+  P1,   // Pa-Ca
+  P2,   // LS-Po
+  P3,   // Pa-LP
+  P4,   // Be-LP
+  P5,   // He-LP, as appendix C builds it (translation-invariant only)
+  P5S,  // Hs-LP, He-LP blended in the frame of M(A, C) (similarity-invariant)
+  P6,   // La-LP
+  P7,   // Ra-Pe
+  P8,   // Lo-Pe
+  P9,   // Ne-LP
+  P10,  // Pa-EL
+  SMA,  // steady morph between two arrows (Eq. 21)
+};
+
+// Where P2's log-spiral is applied: the start point (Sec. 3.1) or the midpoint
+// of the arrow (the variant drawn in Fig. 1).
+enum class Anchor { start, midpoint };
+
+// Per-method options. Each method reads only the fields that concern it.
+struct MethodOptions {
+  Anchor anchor = Anchor::start;                  // P2
+  MeanKind path_mean = MeanKind::geometric;       // SMA, P9 (Sec. 2.7, Fig. D.36)
+  MeanKind magnitude_mean = MeanKind::geometric;  // SMA, P9
+};
+
+struct MethodInfo {
+  Method method;
+  std::string_view id;        // "P6"
+  std::string_view mnemonic;  // "La-LP"
+  std::string_view title;     // "Lagrange point, log-polar vector"
+  int keyframe_count;         // 3, or 2 for SMA
+  bool winding_aware;         // measured, see tests/core/test_fig10.cpp
+};
+
+// Every method, in display order.
+std::span<const MethodInfo> all_methods();
+const MethodInfo& info(Method m);
+
+// Accepts "P6", "p6", "6", "La-LP", "la-lp", "P6:La-LP" (case-insensitive).
+std::optional<Method> find_method(std::string_view name);
+// The closest known names to a misspelt one, best first ("did you mean").
+std::vector<std::string> suggest_methods(std::string_view name);
+
+// Builds the motion through the keyframes. Throws std::invalid_argument when
+// the number of keyframes is wrong or the knots are not strictly increasing,
+// and MotionDomainError when the motion does not exist for these keyframes.
+std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
+                                    const MethodOptions& options = {});
+
+}  // namespace pita
