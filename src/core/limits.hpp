@@ -25,10 +25,12 @@ inline constexpr double kTwirlTranslation = 1e-12;
 inline constexpr double kLogSpiralDegenerate = 1e-12;
 
 // -Pe vector motion (P7, P8; READING-NOTES item 13): v(tau) = alpha e^{k tau} +
-// beta e^{-k tau} with cosh k = (v_a + v_c) / (2 v_b). When |sinh k| is below
-// this value (cosh k = -1, i.e. v_a + v_c = -2 v_b) the boundary-value problem
-// has no solution and the motion is refused with a domain error.
-inline constexpr double kPerseverantSingular = 1e-12;
+// beta e^{-k tau} with cosh k = kappa = (v_a + v_c) / (2 v_b). At kappa = -1
+// (v_a + v_c = -2 v_b, e.g. A and C both pointing against B with the same
+// magnitude) sinh k = 0 and the boundary-value problem has no solution; near it
+// the motion's amplitude grows like 1/sqrt(|kappa + 1|). Within this distance
+// of -1 (amplitude ~ 1e5 |v_b|) the motion is refused with a domain error.
+inline constexpr double kPerseverantSingular = 1e-10;
 
 // P8's stable remainder R(tau) = (sinh(k tau)/sinh k - tau) / (cosh k - 1) is
 // summed as a power series in K = k^2 while |K| max(1, tau^2) is below this

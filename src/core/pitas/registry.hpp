@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/keyframe.hpp"
-#include "core/mean_kind.hpp"
+#include "core/pitas/method_options.hpp"
 #include "core/pitas/motion.hpp"
 
 namespace pita {
@@ -27,17 +27,6 @@ enum class Method {
   P9,   // Ne-LP
   P10,  // Pa-EL
   SMA,  // steady morph between two arrows (Eq. 21)
-};
-
-// Where P2's log-spiral is applied: the start point (Sec. 3.1) or the midpoint
-// of the arrow (the variant drawn in Fig. 1).
-enum class Anchor { start, midpoint };
-
-// Per-method options. Each method reads only the fields that concern it.
-struct MethodOptions {
-  Anchor anchor = Anchor::start;                  // P2
-  MeanKind path_mean = MeanKind::geometric;       // SMA, P9 (Sec. 2.7, Fig. D.36)
-  MeanKind magnitude_mean = MeanKind::geometric;  // SMA, P9
 };
 
 struct MethodInfo {
@@ -63,5 +52,10 @@ std::vector<std::string> suggest_methods(std::string_view name);
 // and MotionDomainError when the motion does not exist for these keyframes.
 std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
                                     const MethodOptions& options = {});
+
+// The PITA through three timed keyframes with any distinct knots, unchecked
+// (the order-independence property, Eq. 42, swaps knots). Not for SMA.
+std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& keyframes,
+                                  const MethodOptions& options = {});
 
 }  // namespace pita

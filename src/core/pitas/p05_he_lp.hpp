@@ -1,0 +1,29 @@
+// P5:He-LP (Sec. 3.2, Eq. 33, appendices A and C): the exponential of the
+// Lagrange-weighted mean of the logs of the keyframes' homogeneous matrices,
+// taken about the centroid o of the three origins (appendix C's heuristic).
+// Logs use principal angles (READING-NOTES item 6), so P5 is not winding-aware
+// and pops when a keyframe angle crosses +-pi. It is invariant to translations
+// only (item 7): see HsLp for the similarity-invariant variant.
+//
+// In complex form a similarity z -> e^l z + p has log (l, v) with
+// v = p l / (e^l - 1) (Eq. A.7-A.8), and exp(l, v) = (e^l, (e^l - 1)/l v) (A.6).
+#pragma once
+
+#include "core/keyframe.hpp"
+#include "core/pitas/motion.hpp"
+
+namespace pita {
+
+class HeLp final : public Motion {
+ public:
+  explicit HeLp(const KeyframeTriple& k);
+  Arrow at(double t) const override;
+
+ private:
+  KeyframeTriple k_;
+  Complex log_[3];        // ln m + i Arg(e^{iw}) of each keyframe
+  Complex translation_log_[3];  // v of each keyframe, about the centroid
+  Point centroid_;
+};
+
+}  // namespace pita

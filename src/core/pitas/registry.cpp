@@ -1,0 +1,153 @@
+#include "core/pitas/registry.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/pitas/p01_pa_ca.hpp"
+#include "core/pitas/p02_ls_po.hpp"
+#include "core/pitas/p03_pa_lp.hpp"
+#include "core/pitas/p04_be_lp.hpp"
+#include "core/pitas/p05_he_lp.hpp"
+#include "core/pitas/p05s_hs_lp.hpp"
+#include "core/pitas/p06_la_lp.hpp"
+#include "core/pitas/p07_ra_pe.hpp"
+#include "core/pitas/p08_lo_pe.hpp"
+#include "core/pitas/p09_ne_lp.hpp"
+#include "core/pitas/p10_pa_el.hpp"
+#include "core/pitas/sma.hpp"
+
+namespace pita {
+namespace {
+
+// winding_aware is what tests/core/test_fig10.cpp measures (W row of Fig. 10,
+// plus P4 and P9, which are built from winding-aware steady morphs).
+constexpr std::array<MethodInfo, 12> kMethods{{
+    {Method::P1, "P1", "Pa-Ca", "parabolic point, Cartesian vector", 3, false},
+    {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true},
+    {Method::P3, "P3", "Pa-LP", "parabolic point, log-polar vector", 3, true},
+    {Method::P4, "P4", "Be-LP", "Bezier of steady morphs (BiSAM), log-polar vector", 3, true},
+    {Method::P5, "P5", "He-LP", "homogeneous exponential about the centroid", 3, false},
+    {Method::P5S, "P5S", "Hs-LP", "homogeneous exponential in the frame of M(A, C)", 3, false},
+    {Method::P6, "P6", "La-LP", "Lagrange form with steady morphs and transports", 3, true},
+    {Method::P7, "P7", "Ra-Pe", "radially perseverant point, perseverant vector", 3, false},
+    {Method::P8, "P8", "Lo-Pe", "locally perseverant (PAM on similarities)", 3, false},
+    {Method::P9, "P9", "Ne-LP", "Neville form with steady morphs", 3, true},
+    {Method::P10, "P10", "Pa-EL", "parabolic point, exponential of log linear parts", 3, false},
+    {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true},
+}};
+
+std::string lower(std::string_view s) {
+  std::string r(s);
+  for (char& ch : r) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return r;
+}
+
+// The names a method answers to, lower case.
+std::vector<std::string> names_of(const MethodInfo& m) {
+  std::vector<std::string> names{lower(m.id), lower(m.mnemonic),
+                                 lower(std::string(m.id) + ":" + std::string(m.mnemonic))};
+  if (m.id.size() > 1 && m.id[0] == 'P') names.push_back(lower(m.id.substr(1)));  // "6", "5s"
+  return names;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::span<const MethodInfo> all_methods() { return kMethods; }
+
+const MethodInfo& info(Method m) {
+  for (const MethodInfo& i : kMethods) {
+    if (i.method == m) return i;
+  }
+  throw std::logic_error("unregistered method");
+}
+
+std::optional<Method> find_method(std::string_view name) {
+  const std::string key = lower(name);
+  for (const MethodInfo& m : kMethods) {
+    for (const std::string& n : names_of(m)) {
+      if (n == key) return m.method;
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> suggest_methods(std::string_view name) {
+  const std::string key = lower(name);
+  std::vector<std::pair<std::size_t, std::string>> scored;
+  for (const MethodInfo& m : kMethods) {
+    std::size_t best = std::string::npos;
+    for (const std::string& n : names_of(m)) best = std::min(best, edit_distance(key, n));
+    if (best <= 2) {
+      scored.emplace_back(best, std::string(m.id) + " (" + std::string(m.mnemonic) + ")");
+    }
+  }
+  std::stable_sort(scored.begin(), scored.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::string> out;
+  for (auto& s : scored) out.push_back(std::move(s.second));
+  return out;
+}
+
+std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const MethodOptions& o) {
+  switch (m) {
+    case Method::P1: return std::make_unique<PaCa>(k);
+    case Method::P2: return std::make_unique<LsPo>(k, o.anchor);
+    case Method::P3: return std::make_unique<PaLp>(k);
+    case Method::P4: return std::make_unique<BeLp>(k);
+    case Method::P5: return std::make_unique<HeLp>(k);
+    case Method::P5S: return std::make_unique<HsLp>(k);
+    case Method::P6: return std::make_unique<LaLp>(k);
+    case Method::P7: return std::make_unique<RaPe>(k);
+    case Method::P8: return std::make_unique<LoPe>(k);
+    case Method::P9: return std::make_unique<NeLp>(k, o.path_mean, o.magnitude_mean);
+    case Method::P10: return std::make_unique<PaEl>(k);
+    case Method::SMA: break;
+  }
+  throw std::invalid_argument("SMA interpolates two keyframes, not three");
+}
+
+std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
+                                    const MethodOptions& options) {
+  const MethodInfo& mi = info(m);
+  if (static_cast<int>(keyframes.size()) != mi.keyframe_count) {
+    throw std::invalid_argument(std::string(mi.id) + " takes " +
+                                std::to_string(mi.keyframe_count) + " keyframes, got " +
+                                std::to_string(keyframes.size()));
+  }
+  for (std::size_t i = 0; i < keyframes.size(); ++i) {
+    const Keyframe& k = keyframes[i];
+    if (!std::isfinite(k.t) || !is_finite(k.arrow) || !(k.arrow.m > 0.0)) {
+      throw std::invalid_argument("keyframe " + std::to_string(i) +
+                                  " must have finite values and a magnitude > 0");
+    }
+    if (i > 0 && !(keyframes[i - 1].t < k.t)) {
+      throw std::invalid_argument("knots must be strictly increasing");
+    }
+  }
+  if (m == Method::SMA) {
+    return std::make_unique<SteadyMorphMotion>(keyframes[0], keyframes[1], options.path_mean,
+                                               options.magnitude_mean);
+  }
+  return make_pita(m, KeyframeTriple{keyframes[0], keyframes[1], keyframes[2]}, options);
+}
+
+}  // namespace pita

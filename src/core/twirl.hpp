@@ -1,0 +1,108 @@
+// Twirls (Sec. 2.2, Eq. 5-8) and the twirl between two arrows (Eq. 17-19).
+//
+// A twirl is a similarity that also acts on windings: T(f, m, w) dilates by
+// m > 0 and turns by the real angle w about the fixed point f, and adds w to
+// the winding of any arrow it moves (Eq. 7). Its powers are T^t = T(f, m^t, tw)
+// (Eq. 8).
+//
+// Representation. Writing L = ln m + i w (the winding-aware log of the linear
+// part), we store a twirl by an anchor point a, the displacement u = T.a - a of
+// that anchor, and L:
+//     T^t . x = a + e^{tL} (x - a) + phi_t(L) u,   phi_t(L) = expm1(tL)/expm1(L)
+// (READING-NOTES item 1). This never forms the fixed point
+// f = a - u / (e^L - 1), so it stays exact as the twirl tends to a pure
+// translation (L -> 0), where phi_t -> t.
+#pragma once
+
+#include <optional>
+
+#include "core/arrow.hpp"
+#include "core/complex_math.hpp"
+#include "core/limits.hpp"
+
+namespace pita {
+
+struct Twirl {
+  Point anchor{};      // a
+  Vector displacement{};  // u = T.a - a
+  Complex log{};       // L = ln m + i w: log-ratio and winding of the twirl
+
+  double ratio() const { return std::exp(log.real()); }  // m (Eq. 17)
+  double winding() const { return log.imag(); }         // w (Eq. 18)
+};
+
+// T(f, m, w): the twirl about fixed point f by ratio m > 0 and winding w (Eq. 5-7).
+inline Twirl twirl(Point f, double m, double w) { return {f, Vector{}, Complex{std::log(m), w}}; }
+
+// The identity twirl.
+inline Twirl identity_twirl() { return {}; }
+
+// A pure translation by v.
+inline Twirl translation(Vector v) { return {Point{}, v, Complex{}}; }
+
+// phi_t(L) = (e^{tL} - 1) / (e^L - 1), the fraction of the anchor's displacement
+// reached at time t; its limit t is used when |e^L - 1| < kTwirlTranslation
+// (see limits.hpp for why frames stay continuous across that threshold).
+inline Complex twirl_progress(Complex L, Complex expm1_tL, double t) {
+  const Complex den = expm1(L);
+  if (std::abs(den) < limits::kTwirlTranslation) return Complex{t, 0.0};
+  return expm1_tL / den;
+}
+
+// T^t (Eq. 8), as a twirl with the same anchor.
+inline Twirl pow(const Twirl& T, double t) {
+  const Complex tl = t * T.log;
+  return {T.anchor, twirl_progress(T.log, expm1(tl), t) * T.displacement, tl};
+}
+
+// T . x for a point (Eq. 5).
+inline Point apply(const Twirl& T, Point x) {
+  return T.anchor + std::exp(T.log) * (x - T.anchor) + T.displacement;
+}
+
+// T . v for a vector (Eq. 6): only the linear part acts.
+inline Vector apply_to_vector(const Twirl& T, Vector v) { return std::exp(T.log) * v; }
+
+// T . A for an arrow (Eq. 7): moves the origin, scales the magnitude, and adds
+// the twirl's winding to the arrow's winding.
+inline Arrow apply(const Twirl& T, const Arrow& A) {
+  return {apply(T, A.p), A.m * std::exp(T.log.real()), A.w + T.log.imag()};
+}
+
+// T^t . A, computed with a single complex exponential (the hot path of every
+// steady construction).
+inline Arrow apply_power(const Twirl& T, double t, const Arrow& A) {
+  const Complex tl = t * T.log;
+  const ExpPair e = exp_pair(tl);
+  const Point p = T.anchor + e.exp * (A.p - T.anchor) +
+                  twirl_progress(T.log, e.expm1, t) * T.displacement;
+  return {p, A.m * std::abs(e.exp), A.w + tl.imag()};
+}
+
+// T^t . x for a point.
+inline Point apply_power(const Twirl& T, double t, Point x) {
+  const Complex tl = t * T.log;
+  const ExpPair e = exp_pair(tl);
+  return T.anchor + e.exp * (x - T.anchor) + twirl_progress(T.log, e.expm1, t) * T.displacement;
+}
+
+// T^{-1}: maps T.a back to a.
+inline Twirl inverse(const Twirl& T) {
+  // T^{-1} . y = a + e^{-L}(y - a - u); anchored at a' = a + u, it sends a' to a.
+  return {T.anchor + T.displacement, -T.displacement, -T.log};
+}
+
+// S . T (apply T first, then S).
+Twirl compose(const Twirl& S, const Twirl& T);
+
+// The fixed point f of the twirl (Eq. 19, sign as READING-NOTES item 1), or
+// nothing when the twirl is a translation (|e^L - 1| below kTwirlTranslation).
+std::optional<Point> fixed_point(const Twirl& T);
+
+// The twirl T_{A,B} that maps arrow A onto arrow B (Eq. 17-19): ratio B.m/A.m,
+// winding B.w - A.w, anchor A.p, displacement B.p - A.p.
+inline Twirl twirl_between(const Arrow& A, const Arrow& B) {
+  return {A.p, B.p - A.p, Complex{std::log(B.m / A.m), B.w - A.w}};
+}
+
+}  // namespace pita
