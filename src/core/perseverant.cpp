@@ -65,10 +65,15 @@ SeriesValues series(Complex K, double tau) {
 }  // namespace
 
 Perseverant::Values Perseverant::values(double tau) const {
-  if (use_series(tau)) {
-    const SeriesValues v = series(K_, tau);
-    return {v.S, v.Q, v.R};
-  }
+  return use_series(tau) ? series_values(tau) : closed_form_values(tau);
+}
+
+Perseverant::Values Perseverant::series_values(double tau) const {
+  const SeriesValues v = series(K_, tau);
+  return {v.S, v.Q, v.R};
+}
+
+Perseverant::Values Perseverant::closed_form_values(double tau) const {
   // One complex exponential gives sinh(k tau / 2) and cosh(k tau / 2).
   const Complex e = std::exp(0.5 * tau * k_);
   const Complex ei = 1.0 / e;

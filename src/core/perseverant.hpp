@@ -29,7 +29,11 @@ class Perseverant {
   struct Values {
     Complex S, Q, R;
   };
+  // The series in K while |K| max(1, tau^2) < kPerseverantSeries, else the
+  // closed forms. Both forms are public so the tests can compare them.
   Values values(double tau) const;
+  Values series_values(double tau) const;
+  Values closed_form_values(double tau) const;
   Complex S(double tau) const { return values(tau).S; }
   Complex Q(double tau) const { return values(tau).Q; }
   Complex R(double tau) const { return values(tau).R; }

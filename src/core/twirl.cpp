@@ -4,7 +4,7 @@ namespace pita {
 
 Twirl compose(const Twirl& S, const Twirl& T) {
   // (S.T).x = S.(T.x). Keep T's anchor: (S.T).a = S.(a + u_T).
-  const Point image = apply(S, T.anchor + T.displacement);
+  const Point image = S * (T.anchor + T.displacement);
   return {T.anchor, image - T.anchor, S.log + T.log};
 }
 

@@ -55,8 +55,8 @@ inline Twirl pow(const Twirl& T, double t) {
   return {T.anchor, twirl_progress(T.log, expm1(tl), t) * T.displacement, tl};
 }
 
-// T . x for a point (Eq. 5).
-inline Point apply(const Twirl& T, Point x) {
+// T . x for a point (Eq. 5), written T * x like the paper's T.x (Sophus's operator*).
+inline Point operator*(const Twirl& T, Point x) {
   return T.anchor + std::exp(T.log) * (x - T.anchor) + T.displacement;
 }
 
@@ -65,8 +65,8 @@ inline Vector apply_to_vector(const Twirl& T, Vector v) { return std::exp(T.log)
 
 // T . A for an arrow (Eq. 7): moves the origin, scales the magnitude, and adds
 // the twirl's winding to the arrow's winding.
-inline Arrow apply(const Twirl& T, const Arrow& A) {
-  return {apply(T, A.p), A.m * std::exp(T.log.real()), A.w + T.log.imag()};
+inline Arrow operator*(const Twirl& T, const Arrow& A) {
+  return {T * A.p, A.m * std::exp(T.log.real()), A.w + T.log.imag()};
 }
 
 // T^t . A, computed with a single complex exponential (the hot path of every

@@ -1,0 +1,120 @@
+// Steady morph, steady average and steady transport (Sec. 2.5-2.7).
+#include "core/steady_morph.hpp"
+
+#include "core/mean_morph.hpp"
+#include "core/steady_transport.hpp"
+#include "test_support.hpp"
+
+namespace pita::test {
+namespace {
+
+TEST(SteadyMorph, ReachesEndpoints) {
+  Sampler s(10);
+  for (int i = 0; i < 300; ++i) {
+    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
+    EXPECT_TRUE(arrows_near(steady_morph(A, B, 0.0), A, 1e-14, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_morph(A, B, 1.0), B, 1e-12, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_morph(2.0, A, 5.0, B, 5.0), B, 1e-12, 10.0, false));
+  }
+}
+
+TEST(SteadyMorph, IsSymmetric) {
+  // Eq. 22: M(a, A, b, B, t) = M(b, B, a, A, t).
+  Sampler s(11);
+  for (int i = 0; i < 300; ++i) {
+    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
+    const double t = s.uniform(-1, 2);
+    EXPECT_TRUE(arrows_near(steady_morph(0.0, A, 1.0, B, t), steady_morph(1.0, B, 0.0, A, t),
+                            1e-10, 10.0, false))
+        << i;
+  }
+}
+
+TEST(SteadyAverage, IsSymmetric) {
+  Sampler s(12);
+  for (int i = 0; i < 300; ++i) {
+    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
+    EXPECT_TRUE(arrows_near(steady_average(A, B), steady_average(B, A), 1e-11, 10.0, false));
+  }
+}
+
+TEST(SteadyMorph, IsSteady) {
+  // Consecutive frames are related by one constant similarity (Fig. 3): the
+  // twirl between D(t) and D(t + h) does not depend on t.
+  Sampler s(13);
+  for (int i = 0; i < 100; ++i) {
+    const Arrow A = s.arrow(Config::tame), B = s.arrow(Config::tame);
+    const double h = 0.1;
+    const Twirl T0 = twirl_between(steady_morph(A, B, 0.0), steady_morph(A, B, h));
+    for (double t : {0.2, 0.55, 1.3}) {
+      const Twirl T = twirl_between(steady_morph(A, B, t), steady_morph(A, B, t + h));
+      EXPECT_NEAR(std::abs(T.log - T0.log), 0.0, 1e-12);
+      const Point x = s.point();
+      EXPECT_NEAR(std::abs((T * x) - (T0 * x)), 0.0, 1e-9);
+    }
+  }
+}
+
+TEST(SteadyMorph, IsSimilarityCovariant) {
+  Sampler s(14);
+  for (int i = 0; i < 200; ++i) {
+    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
+    const Twirl S = twirl(s.point(), std::exp(s.uniform(-1, 1)), s.uniform(-7, 7));
+    const double t = s.uniform(-1, 2);
+    EXPECT_TRUE(arrows_near(steady_morph(S * A, S * B, t),
+                            S * steady_morph(A, B, t), 1e-9, 10.0, false));
+  }
+}
+
+TEST(SteadyTransport, MovesByTheMorphSimilarity) {
+  // T(C, A, B, t) = T_{A, M(A,B,t)} . C (Eq. 24): the similarity that carries A
+  // to the morph frame carries C along.
+  Sampler s(15);
+  for (int i = 0; i < 200; ++i) {
+    const Arrow A = s.arrow(Config::tame), B = s.arrow(Config::tame), C = s.arrow(Config::tame);
+    const double t = s.uniform(-1, 2);
+    const Arrow via_frame = twirl_between(A, steady_morph(A, B, t)) * C;
+    // Windings: the twirl A -> M(A,B,t) has winding t (B.w - A.w) exactly.
+    EXPECT_TRUE(arrows_near(steady_transport(C, A, B, t), via_frame, 1e-9, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_transport(A, A, B, t), steady_morph(A, B, t), 1e-12, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_transport(C, 1.0, A, 3.0, B, 1.0 + 2.0 * t),
+                            steady_transport(C, A, B, t), 1e-12, 10.0, false));
+  }
+}
+
+TEST(MeanMorph, GeometricMeansGiveTheSteadyMorph) {
+  Sampler s(16);
+  for (int i = 0; i < 200; ++i) {
+    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
+    const double t = s.uniform(-0.5, 1.5);
+    EXPECT_TRUE(arrows_near(mean_morph(A, B, t, MeanKind::geometric, MeanKind::geometric),
+                            steady_morph(A, B, t), 1e-9, 10.0, false));
+  }
+}
+
+TEST(MeanMorph, VariantsInterpolateWithTheirMeans) {
+  Sampler s(17);
+  for (const MeanKind path : {MeanKind::arithmetic, MeanKind::harmonic}) {
+    for (const MeanKind mag : {MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic}) {
+      for (int i = 0; i < 50; ++i) {
+        const Arrow A = s.arrow(Config::tame), B = s.arrow(Config::tame);
+        EXPECT_TRUE(arrows_near(mean_morph(A, B, 0.0, path, mag), A, 1e-12, 10.0, false));
+        EXPECT_TRUE(arrows_near(mean_morph(A, B, 1.0, path, mag), B, 1e-10, 10.0, false));
+        const Arrow mid = mean_morph(A, B, 0.5, path, mag);
+        const double expected_m = mag == MeanKind::arithmetic ? 0.5 * (A.m + B.m)
+                                  : mag == MeanKind::geometric ? std::sqrt(A.m * B.m)
+                                                               : 2.0 / (1.0 / A.m + 1.0 / B.m);
+        EXPECT_NEAR(mid.m, expected_m, 1e-12 * expected_m);
+        // The radius about the SMA's fixed point follows the path mean.
+        const Point f = *fixed_point(twirl_between(A, B));
+        const double ra = std::abs(A.p - f), rb = std::abs(B.p - f);
+        const double expected_r = path == MeanKind::arithmetic ? 0.5 * (ra + rb)
+                                                               : 2.0 / (1.0 / ra + 1.0 / rb);
+        EXPECT_NEAR(std::abs(mid.p - f), expected_r, 1e-9 * (1 + expected_r));
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pita::test
