@@ -26,8 +26,9 @@ inline Complex expm1(Complex z) {
 // Both e^z and e^z - 1, each accurate (one exp and one sincos when |Re z| is
 // small, which is the common case).
 struct ExpPair {
-  Complex exp;    // e^z
-  Complex expm1;  // e^z - 1
+  Complex exp;     // e^z
+  Complex expm1;   // e^z - 1
+  double modulus;  // |e^z| = e^{Re z}
 };
 inline ExpPair exp_pair(Complex z) {
   const double x = z.real();
@@ -44,7 +45,7 @@ inline ExpPair exp_pair(Complex z) {
     ex = std::exp(x);
     em1 = ex - 1.0;
   }
-  return {{ex * c, ex * s}, {em1 * c + cm1, ex * s}};
+  return {{ex * c, ex * s}, {em1 * c + cm1, ex * s}, ex};
 }
 
 // The principal angle of winding w, in (-pi, pi] (Sec. 2.1: zero-turn).

@@ -5,19 +5,20 @@
 
 namespace pita {
 
-Point log_spiral_point(const LagrangeWeights& l, Point pa, Point pb, Point pc) {
+LogSpiral::LogSpiral(Point pa, Point pb, Point pc) : pa_(pa), pb_(pb), pc_(pc) {
   const Vector ab = pb - pa;
   const Vector bc = pc - pb;
   const double scale = std::abs(ab) + std::abs(bc);
-  if (std::abs(ab) <= limits::kLogSpiralDegenerate * scale ||
-      std::abs(bc) <= limits::kLogSpiralDegenerate * scale) {
-    return parabolic_point(l, pa, pb, pc);
-  }
-  const double u = l.y + 2.0 * l.z;
+  degenerate_ = std::abs(ab) <= limits::kLogSpiralDegenerate * scale ||
+                std::abs(bc) <= limits::kLogSpiralDegenerate * scale;
   // The twirl between zero-turn arrows ab and bc: anchor a, displacement b - a,
   // log = ln(|bc|/|ab|) + i Arg(bc/ab) (principal).
-  const Twirl spiral{pa, ab, std::log(bc / ab)};
-  return apply_power(spiral, u, pa);
+  if (!degenerate_) spiral_ = Twirl(pa, ab, std::log(bc / ab));
+}
+
+Point LogSpiral::at(const LagrangeWeights& l) const {
+  if (degenerate_) return parabolic_point(l, pa_, pb_, pc_);
+  return apply_power(spiral_, l.y + 2.0 * l.z, pa_);  // u = y + 2z
 }
 
 }  // namespace pita

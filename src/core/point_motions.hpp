@@ -4,6 +4,7 @@
 
 #include "core/arrow.hpp"
 #include "core/lagrange_weights.hpp"
+#include "core/twirl.hpp"
 
 namespace pita {
 
@@ -22,6 +23,19 @@ inline Point parabolic_point(const LagrangeWeights& l, Point pa, Point pb, Point
 // collinear with b outside [a, c]. When b nearly coincides with a or c the
 // spiral degenerates (limits::kLogSpiralDegenerate) and the parabolic motion is
 // used instead.
-Point log_spiral_point(const LagrangeWeights& l, Point pa, Point pb, Point pc);
+class LogSpiral {
+ public:
+  LogSpiral(Point pa, Point pb, Point pc);
+  Point at(const LagrangeWeights& l) const;
+
+ private:
+  Point pa_, pb_, pc_;
+  bool degenerate_;
+  Twirl spiral_;  // T_{ab->bc}
+};
+
+inline Point log_spiral_point(const LagrangeWeights& l, Point pa, Point pb, Point pc) {
+  return LogSpiral(pa, pb, pc).at(l);
+}
 
 }  // namespace pita

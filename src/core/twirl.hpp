@@ -22,13 +22,35 @@
 
 namespace pita {
 
-struct Twirl {
-  Point anchor{};      // a
-  Vector displacement{};  // u = T.a - a
-  Complex log{};       // L = ln m + i w: log-ratio and winding of the twirl
+class Twirl {
+ public:
+  // The identity.
+  Twirl() = default;
+  // The twirl that moves `anchor` by `displacement` and whose linear part has
+  // log `log` = ln m + i w.
+  Twirl(Point anchor, Vector displacement, Complex log);
 
-  double ratio() const { return std::exp(log.real()); }  // m (Eq. 17)
-  double winding() const { return log.imag(); }         // w (Eq. 18)
+  Point anchor() const { return anchor_; }              // a
+  Vector displacement() const { return displacement_; }  // u = T.a - a
+  Complex log() const { return log_; }                  // L = ln m + i w
+  double ratio() const { return std::exp(log_.real()); }  // m (Eq. 17)
+  double winding() const { return log_.imag(); }          // w (Eq. 18)
+  // True when |e^L - 1| < kTwirlTranslation: no finite fixed point.
+  bool is_translation() const { return translation_; }
+
+  // phi_t(L) u, the displacement of the anchor under T^t, given e^{tL} - 1.
+  Vector anchor_motion(double t, Complex expm1_tL) const {
+    return translation_ ? t * displacement_ : expm1_tL * offset_;
+  }
+  // a - f = u / (e^L - 1), cached (no division on the hot path).
+  Vector anchor_offset() const { return offset_; }
+
+ private:
+  Point anchor_{};
+  Vector displacement_{};
+  Complex log_{};
+  Vector offset_{};
+  bool translation_ = true;
 };
 
 // T(f, m, w): the twirl about fixed point f by ratio m > 0 and winding w (Eq. 5-7).
@@ -40,64 +62,58 @@ inline Twirl identity_twirl() { return {}; }
 // A pure translation by v.
 inline Twirl translation(Vector v) { return {Point{}, v, Complex{}}; }
 
-// phi_t(L) = (e^{tL} - 1) / (e^L - 1), the fraction of the anchor's displacement
-// reached at time t; its limit t is used when |e^L - 1| < kTwirlTranslation
-// (see limits.hpp for why frames stay continuous across that threshold).
-inline Complex twirl_progress(Complex L, Complex expm1_tL, double t) {
-  const Complex den = expm1(L);
-  if (std::abs(den) < limits::kTwirlTranslation) return Complex{t, 0.0};
-  return expm1_tL / den;
-}
-
-// T^t (Eq. 8), as a twirl with the same anchor.
+// T^t (Eq. 8), as a twirl with the same anchor. The anchor moves by
+// phi_t(L) u with phi_t(L) = (e^{tL} - 1)/(e^L - 1); its limit t is used when
+// |e^L - 1| < kTwirlTranslation (limits.hpp says why frames stay continuous).
 inline Twirl pow(const Twirl& T, double t) {
-  const Complex tl = t * T.log;
-  return {T.anchor, twirl_progress(T.log, expm1(tl), t) * T.displacement, tl};
+  const Complex tl = t * T.log();
+  return {T.anchor(), T.anchor_motion(t, expm1(tl)), tl};
 }
 
 // T . x for a point (Eq. 5), written T * x like the paper's T.x (Sophus's operator*).
 inline Point operator*(const Twirl& T, Point x) {
-  return T.anchor + std::exp(T.log) * (x - T.anchor) + T.displacement;
+  return T.anchor() + std::exp(T.log()) * (x - T.anchor()) + T.displacement();
 }
 
 // T . v for a vector (Eq. 6): only the linear part acts.
-inline Vector apply_to_vector(const Twirl& T, Vector v) { return std::exp(T.log) * v; }
+inline Vector apply_to_vector(const Twirl& T, Vector v) { return std::exp(T.log()) * v; }
 
 // T . A for an arrow (Eq. 7): moves the origin, scales the magnitude, and adds
 // the twirl's winding to the arrow's winding.
 inline Arrow operator*(const Twirl& T, const Arrow& A) {
-  return {T * A.p, A.m * std::exp(T.log.real()), A.w + T.log.imag()};
+  return {T * A.p, A.m * std::exp(T.log().real()), A.w + T.log().imag()};
 }
 
 // T^t . A, computed with a single complex exponential (the hot path of every
 // steady construction).
 inline Arrow apply_power(const Twirl& T, double t, const Arrow& A) {
-  const Complex tl = t * T.log;
+  const Complex tl = t * T.log();
   const ExpPair e = exp_pair(tl);
-  const Point p = T.anchor + e.exp * (A.p - T.anchor) +
-                  twirl_progress(T.log, e.expm1, t) * T.displacement;
-  return {p, A.m * std::abs(e.exp), A.w + tl.imag()};
+  const Point p = T.anchor() + e.exp * (A.p - T.anchor()) + T.anchor_motion(t, e.expm1);
+  return {p, A.m * e.modulus, A.w + tl.imag()};
 }
 
 // T^t . x for a point.
 inline Point apply_power(const Twirl& T, double t, Point x) {
-  const Complex tl = t * T.log;
-  const ExpPair e = exp_pair(tl);
-  return T.anchor + e.exp * (x - T.anchor) + twirl_progress(T.log, e.expm1, t) * T.displacement;
+  const ExpPair e = exp_pair(t * T.log());
+  return T.anchor() + e.exp * (x - T.anchor()) + T.anchor_motion(t, e.expm1);
 }
 
 // T^{-1}: maps T.a back to a.
 inline Twirl inverse(const Twirl& T) {
   // T^{-1} . y = a + e^{-L}(y - a - u); anchored at a' = a + u, it sends a' to a.
-  return {T.anchor + T.displacement, -T.displacement, -T.log};
+  return {T.anchor() + T.displacement(), -T.displacement(), -T.log()};
 }
 
 // S . T (apply T first, then S).
 Twirl compose(const Twirl& S, const Twirl& T);
 
-// The fixed point f of the twirl (Eq. 19, sign as READING-NOTES item 1), or
-// nothing when the twirl is a translation (|e^L - 1| below kTwirlTranslation).
-std::optional<Point> fixed_point(const Twirl& T);
+// The fixed point f = a - u/(e^L - 1) of the twirl (Eq. 19, sign as
+// READING-NOTES item 1), or nothing when the twirl is a translation.
+inline std::optional<Point> fixed_point(const Twirl& T) {
+  if (T.is_translation()) return std::nullopt;
+  return T.anchor() - T.anchor_offset();
+}
 
 // The twirl T_{A,B} that maps arrow A onto arrow B (Eq. 17-19): ratio B.m/A.m,
 // winding B.w - A.w, anchor A.p, displacement B.p - A.p.

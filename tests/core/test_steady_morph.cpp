@@ -48,7 +48,7 @@ TEST(SteadyMorph, IsSteady) {
     const Twirl T0 = twirl_between(steady_morph(A, B, 0.0), steady_morph(A, B, h));
     for (double t : {0.2, 0.55, 1.3}) {
       const Twirl T = twirl_between(steady_morph(A, B, t), steady_morph(A, B, t + h));
-      EXPECT_NEAR(std::abs(T.log - T0.log), 0.0, 1e-12);
+      EXPECT_NEAR(std::abs(T.log() - T0.log()), 0.0, 1e-12);
       const Point x = s.point();
       EXPECT_NEAR(std::abs((T * x) - (T0 * x)), 0.0, 1e-9);
     }

@@ -66,7 +66,7 @@ TEST(Twirl, PowersCompose) {
     const Point x = s.point();
     const Point lhs = pow(T, a) * (pow(T, b) * x);
     const Point rhs = pow(T, a + b) * x;
-    const double scale = 1.0 + std::abs(rhs) + std::abs(T.displacement) * 10;
+    const double scale = 1.0 + std::abs(rhs) + std::abs(T.displacement()) * 10;
     EXPECT_NEAR(std::abs(lhs - rhs), 0.0, 1e-10 * scale) << i;
     EXPECT_NEAR(std::abs((pow(pow(T, a), b) * x) - (pow(T, a * b) * x)), 0.0, 1e-10 * scale);
     EXPECT_NEAR(std::abs((compose(pow(T, a), pow(T, b)) * x) - rhs), 0.0, 1e-10 * scale);

@@ -6,6 +6,7 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/motion.hpp"
 #include "core/pitas/method_options.hpp"
+#include "core/point_motions.hpp"
 
 namespace pita {
 
@@ -17,6 +18,7 @@ class LsPo final : public Motion {
  private:
   KeyframeTriple k_;
   Anchor anchor_;
+  LogSpiral spiral_;  // through the start points, or the midpoints
 };
 
 }  // namespace pita
