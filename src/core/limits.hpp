@@ -38,4 +38,44 @@ inline constexpr double kPerseverantSingular = 1e-10;
 // most one digit to cancellation.
 inline constexpr double kPerseverantSeries = 0.5;
 
+// Persistent Affine Motion (pam.hpp, Eq. 37-39): the matrix functions of the
+// 2x2 matrix K = L_B^-1 (L_A + L_C)/2 (eigenvalues m +- s, s^2 real).
+//
+// The scalar functions C, S, Q, R of kappa (and acosh^2 for E) are summed as
+// Taylor series in x = kappa - 1 (hypergeometric, radius 2) while
+// |x| max(1, tau^2) is below this bound: every term is then at most 3/8 of the
+// one before (about 35 terms to full precision), and beyond it the closed
+// forms in k = acosh kappa lose at most one digit to cancellation in S - tau.
+inline constexpr double kPamSeries = 0.25;
+
+// Imaginary step h used when K has a double (or a numerically double)
+// eigenvalue m: the Sylvester coefficient is then the derivative
+// phi'(m) = Im phi(m + i h) / h + O(h^2) (complex step, exact to rounding for
+// h this small; phi is real on the real axis right of -1).
+inline constexpr double kPamComplexStep = 1e-20;
+
+// Two real eigenvalues m +- s closer than this fraction of their distance
+// m + 1 to the singularity kappa = -1: the divided difference
+// (phi(m + s) - phi(m - s)) / (2 s) would lose log10(1/fraction) digits, so
+// we extrapolate it from two complex steps, 2 phi'(m) - Im phi(m + i s) / s,
+// whose error is about phi^(5)(m) s^4 / 60. At 5e-4 both errors are about
+// 4e-13 relative to phi'.
+inline constexpr double kPamCloseEigenvalues = 5e-4;
+
+// K has the eigenvalue -1 (sinh k = 0, no solution; the PAM analogue of
+// kPerseverantSingular, with the same value so that P8 and PAM refuse the
+// same similarities).
+inline constexpr double kPamSingular = 1e-10;
+
+// Complex eigenvalues m +- i t with m < -1 and t below this fraction of |m|
+// lie on acosh's branch cut for all practical purposes: the Sylvester
+// coefficient grows like 1/t, so rounding in K (~1e-16 |K|) would give errors
+// of 1e-16/t relative. We refuse them (P8 takes the upper side of the cut,
+// which an affinity, having no orientation of its own, cannot).
+inline constexpr double kPamBranchCut = 1e-8;
+
+// The middle affinity B must be invertible: |det L_B| above this fraction of
+// |L_B|_F^2 (the determinant of a rotation-scaling is |L|_F^2 / 2).
+inline constexpr double kPamSingularMiddle = 1e-12;
+
 }  // namespace pita::limits

@@ -1,0 +1,58 @@
+# Sourced by the scripts in scripts/: installs the Debian 12 packages pita
+# needs when any is missing, then configures and builds into build/.
+# Nothing is downloaded from anywhere but Debian's package archive.
+
+PITA_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+PITA_BUILD="${PITA_BUILD:-$PITA_ROOT/build}"
+
+# One package per need; the comment says which.
+PITA_PACKAGES=(
+  build-essential cmake ninja-build pkg-config  # compiler and build
+  libcli11-dev         # command line
+  nlohmann-json3-dev   # scenes
+  libfmt-dev           # formatting
+  libeigen3-dev        # matrices (tests' oracles, affine motions)
+  libcairo2-dev        # figures: SVG, PNG, PDF
+  libpango1.0-dev      # figures: text (banners, titles)
+  libgtest-dev libgmock-dev  # tests
+  libbenchmark-dev     # benchmarks
+)
+
+pita_install_dependencies() {
+  local missing=()
+  for p in "${PITA_PACKAGES[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      missing+=("$p")
+    fi
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  echo "pita: installing missing Debian packages: ${missing[*]}" >&2
+  local sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null; then
+      sudo="sudo"
+    else
+      echo "pita: these packages are missing and I am not root (and there is no sudo):" >&2
+      echo "      apt-get install ${missing[*]}" >&2
+      return 1
+    fi
+  fi
+  if ! { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"; } >&2; then
+    echo "pita: apt-get could not install: ${missing[*]}" >&2
+    echo "      install them by hand (apt-get install ${missing[*]}) and run this again." >&2
+    return 1
+  fi
+}
+
+# Configures (first time) and builds every target: build/pita, the tests and
+# the benchmark. Release unless PITA_BUILD_TYPE says otherwise.
+pita_build() {
+  pita_install_dependencies || return 1
+  if [ ! -f "$PITA_BUILD/build.ninja" ]; then
+    cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja \
+      -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" >/dev/null || return 1
+  fi
+  cmake --build "$PITA_BUILD" -j "$(nproc)"
+}

@@ -1,0 +1,272 @@
+#include "cli/eval.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "core/pitas/registry.hpp"
+#include "scene/frames.hpp"
+#include "scene/sampling.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::cli {
+
+namespace {
+
+// At most this many times may be given with --t (as many as --samples allows).
+constexpr std::size_t kMaxTimes = static_cast<std::size_t>(scene::kMaxSamples);
+
+// A problem with the input; the message is printed after "pita: ".
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::string_view trimmed(std::string_view text) {
+  while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+  while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
+  return text;
+}
+
+// --samples N: an integer in [kMinSamples, kMaxSamples].
+int parse_samples(const std::string& text) {
+  const std::string_view digits = trimmed(text);
+  long long count = 0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
+  const bool integer = !digits.empty() && error == std::errc{} && end == digits.data() + digits.size();
+  if (!integer || count < scene::kMinSamples || count > scene::kMaxSamples) {
+    throw InputError(fmt::format("--samples: must be an integer between {} and {} (got \"{}\")",
+                                 scene::kMinSamples, scene::kMaxSamples, text));
+  }
+  return static_cast<int>(count);
+}
+
+// --t T1,T2,...: finite reals, any order, values outside [a, c] extrapolate.
+std::vector<double> parse_times(const std::string& text) {
+  std::vector<double> times;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t stop = comma == std::string::npos ? text.size() : comma;
+    std::string_view item = trimmed(std::string_view(text).substr(start, stop - start));
+    if (times.size() == kMaxTimes) {
+      throw InputError(fmt::format("--t: at most {} times may be given", kMaxTimes));
+    }
+    if (item.empty()) {
+      throw InputError(fmt::format("--t: time number {} is empty (give comma-separated numbers, "
+                                   "for example --t 0,0.5,1.5)",
+                                   times.size() + 1));
+    }
+    const std::string_view as_typed = item;
+    if (item.front() == '+') item.remove_prefix(1);  // from_chars refuses a leading '+'
+    double t = 0.0;
+    const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), t);
+    if (error == std::errc::result_out_of_range) {
+      throw InputError(fmt::format("--t: \"{}\" is out of the range of a double", as_typed));
+    }
+    if (error != std::errc{} || end != item.data() + item.size()) {
+      throw InputError(fmt::format("--t: \"{}\" is not a number", as_typed));
+    }
+    if (!std::isfinite(t)) {
+      throw InputError(fmt::format("--t: \"{}\" is not a finite number", as_typed));
+    }
+    times.push_back(t);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return times;
+}
+
+// "P6 (La-LP)", "SMA".
+std::string method_label(Method method) {
+  const MethodInfo& about = info(method);
+  if (about.mnemonic.empty() || about.mnemonic == about.id) return std::string(about.id);
+  return fmt::format("{} ({})", about.id, about.mnemonic);
+}
+
+// Evenly spaced times from the first knot to the last: --samples N, else the
+// scene's "samples", else kDefaultSamples.
+std::vector<double> uniform_sample_times(std::optional<int> samples, const scene::Scene& scene) {
+  const int count = samples.value_or(scene.samples.value_or(scene::kDefaultSamples));
+  std::vector<double> times =
+      scene::uniform_times(scene.keyframes.front().t, scene.keyframes.back().t, count);
+  for (double t : times) {
+    if (!std::isfinite(t)) {
+      throw InputError(fmt::format("{}: the knots are too far apart to sample between them",
+                                   scene.path));
+    }
+  }
+  return times;
+}
+
+std::vector<scene::Frame> evaluate(const scene::Scene& scene, const std::vector<double>& times) {
+  const std::string label = method_label(scene.method);
+  std::unique_ptr<Motion> motion;
+  try {
+    motion = make_motion(scene.method, scene.keyframes, scene.options);
+  } catch (const MotionDomainError& error) {
+    throw InputError(fmt::format("{}: method {} has no motion through these keyframes: {}",
+                                 scene.path, label, error.what()));
+  } catch (const std::invalid_argument& error) {
+    throw InputError(fmt::format("{}: method {} refuses these keyframes: {}", scene.path, label,
+                                 error.what()));
+  }
+
+  std::vector<scene::Frame> frames;
+  frames.reserve(times.size());
+  for (double t : times) {
+    Arrow arrow;
+    try {
+      arrow = motion->at(t);
+    } catch (const MotionDomainError& error) {
+      throw InputError(fmt::format("{}: method {} is undefined at t = {}: {}", scene.path, label,
+                                   t, error.what()));
+    } catch (const std::invalid_argument& error) {
+      throw InputError(fmt::format("{}: method {} is undefined at t = {}: {}", scene.path, label,
+                                   t, error.what()));
+    }
+    const Point q = arrow.q();
+    if (!is_finite(arrow) || !std::isfinite(q.real()) || !std::isfinite(q.imag())) {
+      throw InputError(fmt::format(
+          "{}: method {} gives a non-finite arrow at t = {} (p = ({}, {}), m = {}, w = {}): the "
+          "motion overflows or is singular there",
+          scene.path, label, t, arrow.p.real(), arrow.p.imag(), arrow.m, arrow.w));
+    }
+    frames.push_back({t, arrow});
+  }
+  return frames;
+}
+
+std::string methods_table() {
+  std::string table;
+  for (const MethodInfo& method : all_methods()) {
+    table += fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title);
+  }
+  return table;
+}
+
+std::string eval_footer() {
+  return R"(
+Scene format (JSON; schema/scene.schema.json describes every field):
+  {
+    "$schema": "../schema/scene.schema.json",
+    "description": "three keyframes, one with an extra turn",
+    "method": "P6",
+    "keyframes": [
+      {"t": 0,   "p": [0, 0],   "m": 1,   "w": 0.4},
+      {"t": 0.5, "p": [3, 1.5], "q": [3.5, 2]},
+      {"t": 1,   "p": [6, 0],   "m": 1.2, "w": 3.5, "turns": 1}
+    ],
+    "samples": 9,
+    "options": {"anchor": "start", "path_mean": "geometric", "magnitude_mean": "geometric"}
+  }
+  method       a method below, by id ("P6") or mnemonic ("La-LP"), any case
+  keyframes    3 keyframes (2 for SMA); knots "t" strictly increasing
+    t          knot (time value)
+    p          start point [x, y]
+    m, w       magnitude (> 0) and winding (any real angle in radians, not reduced)
+    q          end point [x, y], instead of m and w: the zero-turn arrow from p to q
+    turns      integer (optional): adds 2*pi*turns to the winding
+  samples      frames printed when neither --samples nor --t is given (default 9)
+  options      anchor (P2): "start" | "midpoint"; path_mean, magnitude_mean (SMA, P9):
+               "arithmetic" | "geometric" | "harmonic"
+
+Methods:
+)" + methods_table() +
+         R"(
+SMA takes two keyframes, every other method three.
+
+Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, "q": [x, y]}, ...]}
+with one frame per line, or CSV with the header t,px,py,m,w,qx,qy.
+
+Examples:
+  pita eval scenes/fig01-eight-pitas.json
+  pita eval scenes/fig01-eight-pitas.json --method P8 --samples 5 --format csv
+  pita eval scenes/fig28-prediction.json --t 0,0.5,1,1.5
+
+Exit codes: 0 success, 2 bad input or usage (the message on stderr names the file,
+the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout).
+)";
+}
+
+}  // namespace
+
+std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* eval = app.add_subcommand(
+      "eval", "Evaluate the motion through a scene's keyframes and print its frames");
+  eval->footer(eval_footer());
+
+  eval->add_option("SCENE", options->scene_path, "Scene file (JSON), for example scenes/fig01-eight-pitas.json")
+      ->required();
+  eval->add_option_function<std::string>(
+          "--method", [options](const std::string& name) { options->method = name; },
+          "Use this method instead of the scene's (the keyframe count must fit it)")
+      ->type_name("M");
+  CLI::Option* samples =
+      eval->add_option_function<std::string>(
+              "--samples", [options](const std::string& count) { options->samples = count; },
+              "Print N frames at evenly spaced times from the first knot to the last "
+              "(2 <= N <= 1000000; default: the scene's \"samples\", else 9)")
+          ->type_name("N");
+  CLI::Option* times =
+      eval->add_option_function<std::string>(
+              "--t", [options](const std::string& list) { options->times = list; },
+              "Print the frames at these times: comma-separated finite numbers, any order; "
+              "times outside the knots extrapolate")
+          ->type_name("T1,T2,...");
+  samples->excludes(times);
+  eval->add_option("--format", options->format, "Output format")
+      ->check(CLI::IsMember({"json", "csv"}))
+      ->type_name("FORMAT")
+      ->capture_default_str();
+  return options;
+}
+
+ExitCode run_eval(const EvalOptions& options) {
+  try {
+    std::optional<Method> method_override;
+    if (options.method) {
+      try {
+        method_override = scene::resolve_method(*options.method);
+      } catch (const std::invalid_argument& error) {
+        throw InputError(fmt::format("--method: {}", error.what()));
+      }
+    }
+    std::optional<std::vector<double>> times;
+    if (options.times) times = parse_times(*options.times);
+    std::optional<int> samples;
+    if (options.samples) samples = parse_samples(*options.samples);
+
+    scene::Scene scene = scene::load_scene(options.scene_path);
+    if (method_override) scene = scene::with_method(std::move(scene), *method_override);
+
+    const std::vector<scene::Frame> frames =
+        evaluate(scene, times ? *times : uniform_sample_times(samples, scene));
+    // The whole output is built before anything is printed: a failure leaves stdout empty.
+    const std::string text = options.format == "csv" ? scene::frames_to_csv(frames)
+                                                     : scene::frames_to_json(scene.method_name, frames);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+      std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno)
+                << ")\n";
+      return ExitCode::failure;
+    }
+    return ExitCode::success;
+  } catch (const InputError& error) {
+    std::cerr << "pita: " << error.what() << '\n';
+    return ExitCode::bad_input;
+  } catch (const scene::SceneError& error) {
+    std::cerr << "pita: " << error.what() << '\n';
+    return ExitCode::bad_input;
+  }
+}
+
+}  // namespace pita::cli

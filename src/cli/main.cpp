@@ -1,0 +1,77 @@
+// pita: the command-line front end. Each subcommand lives in its own file
+// (an options struct, setup_<name>, run_<name>); main maps every failure to an
+// ExitCode. CLI11's own parse errors would exit 100-127: they exit 2 here.
+#include <algorithm>
+#include <exception>
+#include <iostream>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/eval.hpp"
+#include "cli/exit_code.hpp"
+#include "scene/did_you_mean.hpp"
+
+#ifndef PITA_VERSION
+#error "PITA_VERSION is defined by src/CMakeLists.txt"
+#endif
+
+int main(int argc, char** argv) {
+  using pita::cli::ExitCode;
+  using pita::cli::to_int;
+
+  CLI::App app{
+      "pita: planar interpolation of three arrows. Computes the motions (PITAs P1-P10 and the "
+      "steady morph SMA) through timed keyframes given as JSON scenes.",
+      "pita"};
+  app.set_version_flag("--version", std::string("pita ") + PITA_VERSION);
+  // Not app.require_subcommand(): CLI11 would then report "pita --frobnicate"
+  // as a missing subcommand instead of naming the unknown option.
+  app.require_subcommand(0, 1);
+  app.footer(
+      "\nExample:\n"
+      "  pita eval scenes/fig01-eight-pitas.json\n\n"
+      "Run 'pita eval --help' for the scene format, the methods and more examples.\n"
+      "Exit codes: 0 success, 2 bad input or usage.");
+
+  const auto eval_options = pita::cli::setup_eval(app);
+
+  // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
+  // and suggest the closest known one.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string_view given = argv[1];
+    std::vector<std::string_view> known;
+    for (const CLI::App* subcommand : std::as_const(app).get_subcommands([](const CLI::App*) { return true; })) {
+      known.push_back(subcommand->get_name());
+    }
+    if (std::find(known.begin(), known.end(), given) == known.end()) {
+      std::cerr << "pita: unknown subcommand \"" << given << '"'
+                << pita::scene::did_you_mean(pita::scene::closest_names(given, known))
+                << "\nRun 'pita --help' for usage.\n";
+      return to_int(ExitCode::bad_input);
+    }
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    if (error.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
+      app.exit(error);  // --help or --version: printed on stdout
+      return to_int(ExitCode::success);
+    }
+    std::cerr << "pita: " << error.what() << "\nRun 'pita --help' or 'pita eval --help' for usage.\n";
+    return to_int(ExitCode::bad_input);
+  }
+
+  try {
+    if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
+  } catch (const std::exception& error) {
+    std::cerr << "pita: internal error: " << error.what() << '\n';
+    return to_int(ExitCode::failure);
+  }
+  std::cerr << "pita: missing subcommand, for example: pita eval scenes/fig01-eight-pitas.json\n"
+               "Run 'pita --help' for usage.\n";
+  return to_int(ExitCode::bad_input);
+}

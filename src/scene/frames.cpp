@@ -1,0 +1,62 @@
+#include "scene/frames.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace pita::scene {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+void require_finite(const Frame& frame) {
+  if (!std::isfinite(frame.t) || !is_finite(frame.arrow) || !std::isfinite(frame.arrow.q().real()) ||
+      !std::isfinite(frame.arrow.q().imag())) {
+    throw std::invalid_argument(fmt::format("frame at t = {} is not finite", frame.t));
+  }
+}
+
+// nlohmann's number form: shortest round-trip digits, "0.0" for zero.
+std::string json_number(double x) { return Json(x).dump(); }
+
+std::string json_point(Point point) {
+  return fmt::format("[{}, {}]", json_number(point.real()), json_number(point.imag()));
+}
+
+}  // namespace
+
+std::string frames_to_json(std::string_view method_id, std::span<const Frame> frames) {
+  // Written by hand around nlohmann's scalars so that keys keep this order and
+  // each frame gets a line of its own (nlohmann prints either one line or one
+  // value per line).
+  std::string text = "{\"method\": " + Json(std::string(method_id)).dump() + ", \"frames\": [";
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const Frame& frame = frames[i];
+    require_finite(frame);
+    text += i == 0 ? "\n  " : ",\n  ";
+    text += "{\"t\": " + json_number(frame.t);
+    text += ", \"p\": " + json_point(frame.arrow.p);
+    text += ", \"m\": " + json_number(frame.arrow.m);
+    text += ", \"w\": " + json_number(frame.arrow.w);
+    text += ", \"q\": " + json_point(frame.arrow.q()) + "}";
+  }
+  text += frames.empty() ? "]}\n" : "\n]}\n";
+  return text;
+}
+
+std::string frames_to_csv(std::span<const Frame> frames) {
+  std::string text = "t,px,py,m,w,qx,qy\n";
+  for (const Frame& frame : frames) {
+    require_finite(frame);
+    const Point q = frame.arrow.q();
+    text += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", frame.t,
+                        frame.arrow.p.real(), frame.arrow.p.imag(), frame.arrow.m, frame.arrow.w,
+                        q.real(), q.imag());
+  }
+  return text;
+}
+
+}  // namespace pita::scene

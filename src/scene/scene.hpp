@@ -1,0 +1,77 @@
+// The scene model: a JSON scene file read, checked and fully resolved (every
+// default applied, every name looked up, every number checked), so that the
+// layers above never see JSON (habit copied from usvg handing resvg a resolved
+// tree). The format is documented in README.md ("Scene format") and published
+// as schema/scene.schema.json.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/keyframe.hpp"
+#include "core/pitas/registry.hpp"
+
+namespace pita::scene {
+
+// Bounds of the number of uniformly spaced samples ("samples" in a scene,
+// --samples on the command line), and the default when neither is given.
+inline constexpr int kMinSamples = 2;
+inline constexpr int kMaxSamples = 1'000'000;
+inline constexpr int kDefaultSamples = 9;
+
+struct Scene {
+  std::string path;           // where the scene came from (a file name, as given)
+  std::string description;    // "" when the scene has none
+  std::string method_name;    // canonical id of the method, "P6"
+  Method method = Method::P6;
+  MethodOptions options;      // every field set (defaults applied)
+  std::vector<Keyframe> keyframes;  // as many as the method takes, knots strictly increasing
+  std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
+};
+
+// What is wrong with a scene, and where. what() is
+//   "FILE: /keyframes/1/m: magnitude must be > 0 (got -2)"   (a value; the
+//       JSON Pointer of RFC 6901 is left out when it is the whole document), or
+//   "FILE:3:14: malformed JSON: ..."                         (a position of the text).
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(std::string file, std::string pointer, std::string reason);
+  SceneError(std::string file, int line, int column, std::string reason);
+
+  const std::string& file() const { return file_; }
+  const std::string& pointer() const { return pointer_; }  // "" for the whole document
+  const std::string& reason() const { return reason_; }
+  int line() const { return line_; }      // 1-based; 0 when the error is not at a position
+  int column() const { return column_; }  // 1-based; 0 when the error is not at a position
+
+ private:
+  std::string file_;
+  std::string pointer_;
+  std::string reason_;
+  int line_ = 0;
+  int column_ = 0;
+};
+
+// Reads and checks the scene file at `path`. Throws SceneError (also when the
+// file cannot be read); the error names the file as `path` is spelt.
+Scene load_scene(const std::filesystem::path& path);
+
+// Checks the scene given as JSON text; `source_name` names it in errors and
+// becomes Scene::path. Throws SceneError.
+Scene parse_scene(std::string_view text, std::string source_name);
+
+// The method named `name` (any spelling pita::find_method accepts). Throws
+// std::invalid_argument with a message such as
+//   unknown method "P66" (did you mean "P6"?)
+Method resolve_method(std::string_view name);
+
+// The scene with its method replaced by `method` (command-line override).
+// Throws SceneError at /keyframes when the method takes another number of
+// keyframes.
+Scene with_method(Scene scene, Method method);
+
+}  // namespace pita::scene

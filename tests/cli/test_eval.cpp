@@ -1,0 +1,321 @@
+// pita eval, through the real binary (src/cli/eval.cpp): exit codes, stdout
+// and stderr. Bad input exits 2 with one message naming the file, the JSON
+// Pointer and the reason, and prints nothing on stdout.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "run_pita.hpp"
+
+namespace pita::test {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Fig. 1's keyframes: three arrows with even knots.
+const std::string kGoodScene = R"({
+  "method": "P6",
+  "keyframes": [
+    {"t": 0,   "p": [0, 0],   "m": 1,   "w": 0.4},
+    {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
+    {"t": 1,   "p": [6, 0],   "m": 1.2, "w": 3.5}
+  ]
+})";
+
+class Eval : public ::testing::Test {
+ protected:
+  void SetUp() override { dir.write("scene.json", kGoodScene); }
+  RunResult run(const std::vector<std::string>& args) const { return run_pita(args, dir.path()); }
+
+  ScratchDir dir;
+};
+
+std::vector<double> times_of(const Json& document) {
+  std::vector<double> times;
+  for (const Json& frame : document.at("frames")) times.push_back(frame.at("t").get<double>());
+  return times;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// ------------------------------------------------------------ good input
+
+TEST_F(Eval, GoodSceneGivesJsonFramesInKeyOrder) {
+  const RunResult result = run({"eval", "scene.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  const Json document = Json::parse(result.out);
+  std::vector<std::string> top_keys;
+  for (const auto& [key, value] : document.items()) top_keys.push_back(key);
+  EXPECT_EQ(top_keys, (std::vector<std::string>{"method", "frames"}));
+  EXPECT_EQ(document.at("method"), "P6");
+  ASSERT_EQ(document.at("frames").size(), 9u);  // the default
+  for (const Json& frame : document.at("frames")) {
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : frame.items()) keys.push_back(key);
+    EXPECT_EQ(keys, (std::vector<std::string>{"t", "p", "m", "w", "q"}));
+  }
+  // One frame per line.
+  EXPECT_EQ(lines_of(result.out).size(), 9u + 2u);
+  // The motion starts at A and ends at C.
+  const Json& first = document.at("frames").front();
+  EXPECT_EQ(first.at("t").get<double>(), 0.0);
+  EXPECT_NEAR(first.at("m").get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(first.at("w").get<double>(), 0.4, 1e-12);
+  const Json& last = document.at("frames").back();
+  EXPECT_EQ(last.at("t").get<double>(), 1.0);
+  EXPECT_NEAR(last.at("p")[0].get<double>(), 6.0, 1e-12);
+  EXPECT_NEAR(last.at("w").get<double>(), 3.5, 1e-12);
+}
+
+TEST_F(Eval, SamplesGivesEvenlySpacedTimes) {
+  const RunResult result = run({"eval", "scene.json", "--samples", "5"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(times_of(Json::parse(result.out)), (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
+}
+
+TEST_F(Eval, SceneSamplesAreTheDefault) {
+  dir.write("sampled.json", kGoodScene.substr(0, kGoodScene.rfind('}')) + R"(, "samples": 3})");
+  const RunResult result = run({"eval", "sampled.json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(times_of(Json::parse(result.out)), (std::vector<double>{0.0, 0.5, 1.0}));
+  // --samples wins over the scene's.
+  const RunResult overridden = run({"eval", "sampled.json", "--samples", "2"});
+  ASSERT_EQ(overridden.exit_code, 0) << overridden.err;
+  EXPECT_EQ(times_of(Json::parse(overridden.out)), (std::vector<double>{0.0, 1.0}));
+}
+
+TEST_F(Eval, TimesAreEvaluatedAsGivenAndMayExtrapolate) {
+  const RunResult result = run({"eval", "scene.json", "--t", "1.5,-0.5, 0.25,+2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(times_of(Json::parse(result.out)), (std::vector<double>{1.5, -0.5, 0.25, 2.0}));
+  const RunResult negative_first = run({"eval", "scene.json", "--t", "-1"});
+  ASSERT_EQ(negative_first.exit_code, 0) << negative_first.err;
+  EXPECT_EQ(times_of(Json::parse(negative_first.out)), (std::vector<double>{-1.0}));
+}
+
+TEST_F(Eval, CsvFormat) {
+  const RunResult result = run({"eval", "scene.json", "--format", "csv", "--samples", "4"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::vector<std::string> lines = lines_of(result.out);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "t,px,py,m,w,qx,qy");
+  const std::vector<std::string> starts = {"0,", "0.33333333333333331,", "0.66666666666666663,", "1,"};
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_EQ(lines[i].rfind(starts[i - 1], 0), 0u) << lines[i];
+    EXPECT_EQ(std::count(lines[i].begin(), lines[i].end(), ','), 6) << lines[i];
+  }
+}
+
+TEST_F(Eval, MethodOverride) {
+  const RunResult result = run({"eval", "scene.json", "--method", "P8", "--samples", "3"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(Json::parse(result.out).at("method"), "P8");
+  const RunResult mnemonic = run({"eval", "scene.json", "--method", "la-lp"});
+  ASSERT_EQ(mnemonic.exit_code, 0) << mnemonic.err;
+  EXPECT_EQ(Json::parse(mnemonic.out).at("method"), "P6");
+}
+
+TEST_F(Eval, EveryStarterSceneEvaluates) {
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PITA_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    const RunResult result = run({"eval", entry.path().string()});
+    EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.err;
+    EXPECT_NO_THROW(Json::parse(result.out)) << entry.path();
+  }
+}
+
+// ------------------------------------------------------------ bad scenes
+
+struct BadScene {
+  std::string name;   // test name, and the file is <name>.json
+  std::string text;   // the scene
+  std::string error;  // the whole of stderr, after "pita: <name>.json"
+};
+
+// Test names print the case, not the bytes of the struct.
+void PrintTo(const BadScene& bad, std::ostream* out) { *out << bad.name; }
+
+class EvalBadScene : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(EvalBadScene, ExitsTwoWithFilePointerAndReason) {
+  const BadScene& bad = GetParam();
+  const ScratchDir dir;
+  const std::string file = bad.name + ".json";
+  dir.write(file, bad.text);
+  const RunResult result = run_pita({"eval", file}, dir.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err, "pita: " + file + bad.error + "\n");
+}
+
+const std::string kA = R"({"t": 0, "p": [0, 0], "m": 1, "w": 0})";
+const std::string kC = R"({"t": 1, "p": [2, 0], "m": 1, "w": 0})";
+std::string p6_with_middle(const std::string& middle) {
+  return R"({"method": "P6", "keyframes": [)" + kA + ", " + middle + ", " + kC + "]}";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Classes, EvalBadScene,
+    ::testing::Values(
+        BadScene{"malformed", "{\n  \"method\": \"P6\",\n  \"keyframes\": [1, 2,]\n}",
+                 ":3:22: malformed JSON: syntax error while parsing value - unexpected ']'; "
+                 "expected '[', '{', or a literal"},
+        BadScene{"overflow", "{\"method\": \"P6\",\n \"samples\": 1e999}",
+                 ":2:13: number 1e999 is out of range (too large for a double)"},
+        BadScene{"not_an_object", "[1, 2]", ": a scene must be a JSON object (got array [1,2])"},
+        BadScene{"missing_field", p6_with_middle(R"({"p": [1, 0], "m": 1, "w": 0})"),
+                 ": /keyframes/1/t: missing required field (the knot, a time value)"},
+        BadScene{"wrong_type", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": "abc", "w": 0})"),
+                 ": /keyframes/1/m: must be a number (got string \"abc\")"},
+        BadScene{"magnitude", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": -2, "w": 1})"),
+                 ": /keyframes/1/m: magnitude must be > 0 (got -2)"},
+        BadScene{"q_and_m", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "q": [2, 2]})"),
+                 ": /keyframes/1/q: give either \"q\" or \"m\" and \"w\", not both"},
+        BadScene{"zero_length", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "q": [1, 0]})"),
+                 ": /keyframes/1/q: q equals p: a zero-length arrow has no direction"},
+        BadScene{"bad_point", p6_with_middle(R"({"t": 0.5, "p": [1], "m": 1, "w": 0})"),
+                 ": /keyframes/1/p: must be an array of two numbers [x, y] (got array [1])"},
+        BadScene{"turns", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 1, "turns": 0.5})"),
+                 ": /keyframes/1/turns: must be an integer (got 0.5)"},
+        BadScene{"equal_knots", p6_with_middle(R"({"t": 0, "p": [1, 0], "m": 1, "w": 1})"),
+                 ": /keyframes/1/t: knot 0 equals the previous knot; knots must be strictly "
+                 "increasing"},
+        BadScene{"unordered_knots", p6_with_middle(R"({"t": 2, "p": [1, 0], "m": 1, "w": 1})"),
+                 ": /keyframes/2/t: knot 1 is less than the previous knot 2; knots must be strictly "
+                 "increasing"},
+        BadScene{"unknown_method", R"({"method": "La-LQ", "keyframes": []})",
+                 ": /method: unknown method \"La-LQ\"; did you mean P6 (La-LP) or P3 (Pa-LP)?"},
+        BadScene{"keyframe_count", R"({"method": "SMA", "keyframes": [)" + kA + ", " + kC + ", " +
+                                       kC + "]}",
+                 ": /keyframes: method SMA takes exactly 2 keyframes (got 3)"},
+        BadScene{"samples", R"({"samples": 1000001, "method": "P6", "keyframes": [)" + kA + ", " +
+                                R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 1})" + ", " + kC + "]}",
+                 ": /samples: must be an integer between 2 and 1000000 (got 1000001)"},
+        BadScene{"unknown_field", R"({"method": "P6", "keyframe": []})",
+                 ": /keyframe: unknown field \"keyframe\"; did you mean \"keyframes\"?"}),
+    [](const ::testing::TestParamInfo<BadScene>& param_info) { return param_info.param.name; });
+
+// ------------------------------------------------------------ bad options
+
+TEST_F(Eval, MissingFile) {
+  const RunResult result = run({"eval", "missing.json"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err, "pita: missing.json: cannot open the scene file (No such file or directory)\n");
+}
+
+TEST_F(Eval, UnknownMethodOptionSuggests) {
+  const RunResult result = run({"eval", "scene.json", "--method", "La-LQ"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err, "pita: --method: unknown method \"La-LQ\"; did you mean P6 (La-LP) or P3 (Pa-LP)?\n");
+}
+
+TEST_F(Eval, MethodOverrideMustFitTheKeyframeCount) {
+  const RunResult result = run({"eval", "scene.json", "--method", "SMA"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err, "pita: scene.json: /keyframes: method SMA takes exactly 2 keyframes (got 3)\n");
+}
+
+TEST_F(Eval, SamplesOutOfRange) {
+  for (const std::string count : {"1", "0", "-3", "1000001", "2.5", "abc", ""}) {
+    const RunResult result = run({"eval", "scene.json", "--samples", count});
+    EXPECT_EQ(result.exit_code, 2) << count;
+    EXPECT_EQ(result.out, "") << count;
+    EXPECT_EQ(result.err, "pita: --samples: must be an integer between 2 and 1000000 (got \"" + count + "\")\n");
+  }
+  const RunResult smallest = run({"eval", "scene.json", "--samples", "2"});
+  EXPECT_EQ(smallest.exit_code, 0) << smallest.err;
+}
+
+TEST_F(Eval, SamplesAndTimesExcludeEachOther) {
+  const RunResult result = run({"eval", "scene.json", "--samples", "3", "--t", "0.5"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: --samples excludes --t\n", 0), 0u) << result.err;
+}
+
+TEST_F(Eval, TimesMustBeFiniteNumbers) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"1e999", "pita: --t: \"1e999\" is out of the range of a double\n"},
+      {"0,-1e999", "pita: --t: \"-1e999\" is out of the range of a double\n"},
+      {"nan", "pita: --t: \"nan\" is not a finite number\n"},
+      {"0.5,inf", "pita: --t: \"inf\" is not a finite number\n"},
+      {"0.5,abc", "pita: --t: \"abc\" is not a number\n"},
+      {"0.5x", "pita: --t: \"0.5x\" is not a number\n"},
+      {"0,,1", "pita: --t: time number 2 is empty (give comma-separated numbers, for example --t "
+               "0,0.5,1.5)\n"},
+  };
+  for (const auto& [times, error] : cases) {
+    const RunResult result = run({"eval", "scene.json", "--t", times});
+    EXPECT_EQ(result.exit_code, 2) << times;
+    EXPECT_EQ(result.out, "") << times;
+    EXPECT_EQ(result.err, error);
+  }
+}
+
+TEST_F(Eval, UnknownFormat) {
+  const RunResult result = run({"eval", "scene.json", "--format", "xml"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: --format: xml not in {json,csv}\n", 0), 0u) << result.err;
+}
+
+TEST_F(Eval, MissingSceneArgument) {
+  const RunResult result = run({"eval"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: SCENE is required\n", 0), 0u) << result.err;
+}
+
+// ------------------------------------------------------------ motions that do not exist
+
+// P7 and P8 have no motion when v_A + v_C = -2 v_B (READING-NOTES item 13).
+TEST_F(Eval, SingularConfigurationExitsTwoWithoutNumbers) {
+  dir.write("singular.json", R"({"method": "P7", "keyframes": [
+    {"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 0], "m": 1, "w": 3.141592653589793},
+    {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})");
+  for (const std::string method : {"P7", "P8"}) {
+    const RunResult result = run({"eval", "singular.json", "--method", method});
+    EXPECT_EQ(result.exit_code, 2) << method;
+    EXPECT_EQ(result.out, "") << method;
+    const std::string prefix = "pita: singular.json: method " + method +
+                               (method == "P7" ? " (Ra-Pe)" : " (Lo-Pe)") +
+                               " has no motion through these keyframes: ";
+    EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
+  }
+}
+
+TEST_F(Eval, NonFiniteFrameExitsTwoAndPrintsNothing) {
+  // Extrapolating this far overflows: the frame is not finite.
+  const RunResult result = run({"eval", "scene.json", "--t", "0,1e300"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: scene.json: method P6 (La-LP) gives a non-finite arrow at t = 1e+300 (", 0), 0u)
+      << result.err;
+  EXPECT_NE(result.err.find("): the motion overflows or is singular there\n"), std::string::npos)
+      << result.err;
+}
+
+}  // namespace
+}  // namespace pita::test

@@ -1,0 +1,91 @@
+// The frame writers (src/scene/frames.cpp): exact JSON and CSV forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/frames.hpp"
+
+namespace pita::scene {
+namespace {
+
+// Windings of zero make q exact: q = p + (m, 0).
+const std::vector<Frame> kTwoFrames = {
+    {0.0, Arrow{make_point(0, 0), 1.0, 0.0}},
+    {0.5, Arrow{make_point(1.5, -2), 2.0, 0.0}},
+};
+
+TEST(FramesToJson, ExactForm) {
+  EXPECT_EQ(frames_to_json("P6", kTwoFrames),
+            "{\"method\": \"P6\", \"frames\": [\n"
+            "  {\"t\": 0.0, \"p\": [0.0, 0.0], \"m\": 1.0, \"w\": 0.0, \"q\": [1.0, 0.0]},\n"
+            "  {\"t\": 0.5, \"p\": [1.5, -2.0], \"m\": 2.0, \"w\": 0.0, \"q\": [3.5, -2.0]}\n"
+            "]}\n");
+}
+
+TEST(FramesToJson, NoFrames) {
+  EXPECT_EQ(frames_to_json("SMA", {}), "{\"method\": \"SMA\", \"frames\": []}\n");
+}
+
+TEST(FramesToJson, KeysInOrderAndDoublesRoundTrip) {
+  const std::vector<Frame> frames = {
+      {0.1, Arrow{make_point(1.0 / 3.0, -2.0 / 7.0), 0.1 + 0.2, 1e-300}},
+      {1e10, Arrow{make_point(-1e300, 5e-324), 1.7976931348623157e308, -123.456}},
+  };
+  const auto document = nlohmann::ordered_json::parse(frames_to_json("P6", frames));
+  ASSERT_EQ(document["frames"].size(), frames.size());
+  std::vector<std::string> top_keys;
+  for (const auto& [key, value] : document.items()) top_keys.push_back(key);
+  EXPECT_EQ(top_keys, (std::vector<std::string>{"method", "frames"}));
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto& frame = document["frames"][i];
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : frame.items()) keys.push_back(key);
+    EXPECT_EQ(keys, (std::vector<std::string>{"t", "p", "m", "w", "q"})) << "frame " << i;
+    EXPECT_EQ(frame["t"].get<double>(), frames[i].t) << "frame " << i;
+    EXPECT_EQ(frame["p"][0].get<double>(), frames[i].arrow.p.real()) << "frame " << i;
+    EXPECT_EQ(frame["p"][1].get<double>(), frames[i].arrow.p.imag()) << "frame " << i;
+    EXPECT_EQ(frame["m"].get<double>(), frames[i].arrow.m) << "frame " << i;
+    EXPECT_EQ(frame["w"].get<double>(), frames[i].arrow.w) << "frame " << i;
+  }
+}
+
+TEST(FramesToJson, EscapesTheMethodName) {
+  EXPECT_EQ(frames_to_json("a\"b", {}), "{\"method\": \"a\\\"b\", \"frames\": []}\n");
+}
+
+TEST(FramesToCsv, HeaderAndSeventeenDigits) {
+  EXPECT_EQ(frames_to_csv(kTwoFrames),
+            "t,px,py,m,w,qx,qy\n"
+            "0,0,0,1,0,1,0\n"
+            "0.5,1.5,-2,2,0,3.5,-2\n");
+  const std::vector<Frame> third = {{0.1, Arrow{make_point(1.0 / 3.0, 0), 1.0, 0.0}}};
+  EXPECT_EQ(frames_to_csv(third),
+            "t,px,py,m,w,qx,qy\n"
+            "0.10000000000000001,0.33333333333333331,0,1,0,1.3333333333333333,0\n");
+}
+
+TEST(FramesToCsv, NoFramesIsJustTheHeader) { EXPECT_EQ(frames_to_csv({}), "t,px,py,m,w,qx,qy\n"); }
+
+TEST(Frames, NonFiniteFramesAreRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::vector<Frame>> bad = {
+      {{nan, Arrow{}}},
+      {{0.0, Arrow{make_point(inf, 0), 1.0, 0.0}}},
+      {{0.0, Arrow{make_point(0, 0), nan, 0.0}}},
+      {{0.0, Arrow{make_point(0, 0), 1.0, -inf}}},
+      {{0.0, Arrow{make_point(1.7e308, 0), 1.7e308, 0.0}}},  // q overflows
+  };
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    EXPECT_THROW(frames_to_json("P6", bad[i]), std::invalid_argument) << "case " << i;
+    EXPECT_THROW(frames_to_csv(bad[i]), std::invalid_argument) << "case " << i;
+  }
+}
+
+}  // namespace
+}  // namespace pita::scene
