@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The README's main command: installs what is missing, builds, then evaluates
-# every scene in scenes/ into out/<scene>.json, two scenes at a time (one per
+# The README's main command: installs what is missing, builds, then renders
+# every scene in scenes/ into out/<scene>.svg and out/<scene>.png, and prints
+# its frames into out/<scene>.frames.json, two scenes at a time (one per
 # core). Each output is written to a temporary file and renamed into place, so
 # out/ never holds a half-written file. Exit 0 only if every scene succeeded.
 #
@@ -25,9 +26,10 @@ eval_one() {
   name="$(basename "$scene" .json)"
   local tmp
   tmp="$(mktemp "$PITA_OUT/.$name.XXXXXX")"
-  if "$PITA_BIN" eval "$scene" >"$tmp"; then
-    mv -f "$tmp" "$PITA_OUT/$name.json"
-    echo "wrote $PITA_OUT/$name.json"
+  if "$PITA_BIN" render "$scene" -o "$PITA_OUT" --format svg,png &&
+     "$PITA_BIN" eval "$scene" >"$tmp"; then
+    mv -f "$tmp" "$PITA_OUT/$name.frames.json"
+    echo "wrote $PITA_OUT/$name.frames.json"
   else
     rm -f "$tmp"
     echo "pita: FAILED $scene" >&2

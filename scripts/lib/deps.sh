@@ -15,6 +15,9 @@ PITA_PACKAGES=(
   libcairo2-dev        # figures: SVG, PNG, PDF
   libpango1.0-dev      # figures: text (banners, titles)
   libgtest-dev libgmock-dev  # tests
+  libvalijson-dev      # tests: the scene schema checked by an independent validator
+  libxml2-utils librsvg2-bin  # tests: SVG read back by xmllint and rsvg-convert
+  python3              # tests: the independent oracle (tests/oracle)
   libbenchmark-dev     # benchmarks
 )
 

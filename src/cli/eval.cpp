@@ -113,11 +113,12 @@ std::vector<scene::Frame> evaluate(const scene::Scene& scene, const std::vector<
   try {
     motion = make_motion(scene.method, scene.keyframes, scene.options);
   } catch (const MotionDomainError& error) {
-    throw InputError(fmt::format("{}: method {} has no motion through these keyframes: {}",
+    throw InputError(fmt::format("{}: /keyframes: method {} has no motion through these "
+                                 "keyframes: {}",
                                  scene.path, label, error.what()));
   } catch (const std::invalid_argument& error) {
-    throw InputError(fmt::format("{}: method {} refuses these keyframes: {}", scene.path, label,
-                                 error.what()));
+    throw InputError(fmt::format("{}: /keyframes: method {} refuses these keyframes: {}",
+                                 scene.path, label, error.what()));
   }
 
   std::vector<scene::Frame> frames;
@@ -127,18 +128,19 @@ std::vector<scene::Frame> evaluate(const scene::Scene& scene, const std::vector<
     try {
       arrow = motion->at(t);
     } catch (const MotionDomainError& error) {
-      throw InputError(fmt::format("{}: method {} is undefined at t = {}: {}", scene.path, label,
-                                   t, error.what()));
+      throw InputError(fmt::format("{}: /keyframes: method {} is undefined at t = {}: {}",
+                                   scene.path, label, t, error.what()));
     } catch (const std::invalid_argument& error) {
-      throw InputError(fmt::format("{}: method {} is undefined at t = {}: {}", scene.path, label,
-                                   t, error.what()));
+      throw InputError(fmt::format("{}: /keyframes: method {} is undefined at t = {}: {}",
+                                   scene.path, label, t, error.what()));
     }
     const Point q = arrow.q();
     if (!is_finite(arrow) || !std::isfinite(q.real()) || !std::isfinite(q.imag())) {
       throw InputError(fmt::format(
-          "{}: method {} gives a non-finite arrow at t = {} (p = ({}, {}), m = {}, w = {}): the "
-          "motion overflows or is singular there",
-          scene.path, label, t, arrow.p.real(), arrow.p.imag(), arrow.m, arrow.w));
+          "{}: /keyframes: method {} has no finite frame at t = {}: its numbers overflow double "
+          "precision there (t too far outside the knots, knots very uneven, or magnitudes of very "
+          "different sizes)",
+          scene.path, label, t));
     }
     frames.push_back({t, arrow});
   }
@@ -182,7 +184,8 @@ Scene format (JSON; schema/scene.schema.json describes every field):
 Methods:
 )" + methods_table() +
          R"(
-SMA takes two keyframes, every other method three.
+SMA takes two keyframes, every other method three. Pa-Po, LS-Ca and LS-LP are the
+independent combinations of Fig. 7 outside the paper's basket.
 
 Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, "q": [x, y]}, ...]}
 with one frame per line, or CSV with the header t,px,py,m,w,qx,qy.
@@ -193,7 +196,8 @@ Examples:
   pita eval scenes/fig28-prediction.json --t 0,0.5,1,1.5
 
 Exit codes: 0 success, 2 bad input or usage (the message on stderr names the file,
-the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout).
+the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout),
+3 the frames could not be written to standard output.
 )";
 }
 

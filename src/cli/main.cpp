@@ -12,6 +12,7 @@
 
 #include "cli/eval.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/render.hpp"
 #include "scene/did_you_mean.hpp"
 
 #ifndef PITA_VERSION
@@ -31,12 +32,16 @@ int main(int argc, char** argv) {
   // as a missing subcommand instead of naming the unknown option.
   app.require_subcommand(0, 1);
   app.footer(
-      "\nExample:\n"
-      "  pita eval scenes/fig01-eight-pitas.json\n\n"
-      "Run 'pita eval --help' for the scene format, the methods and more examples.\n"
-      "Exit codes: 0 success, 2 bad input or usage.");
+      "\nExamples:\n"
+      "  pita eval scenes/fig01-eight-pitas.json            print the frames as JSON\n"
+      "  pita render scenes/fig01-eight-pitas.json -o fig01.png\n"
+      "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n\n"
+      "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
+      "for figures.\n"
+      "Exit codes: 0 success, 2 bad input or usage, 3 an output could not be written.");
 
   const auto eval_options = pita::cli::setup_eval(app);
+  const auto render_options = pita::cli::setup_render(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -61,12 +66,13 @@ int main(int argc, char** argv) {
       app.exit(error);  // --help or --version: printed on stdout
       return to_int(ExitCode::success);
     }
-    std::cerr << "pita: " << error.what() << "\nRun 'pita --help' or 'pita eval --help' for usage.\n";
+    std::cerr << "pita: " << error.what() << "\nRun 'pita --help' for usage.\n";
     return to_int(ExitCode::bad_input);
   }
 
   try {
     if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
+    if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
   } catch (const std::exception& error) {
     std::cerr << "pita: internal error: " << error.what() << '\n';
     return to_int(ExitCode::failure);

@@ -32,7 +32,14 @@ Arrow mean_morph(const Arrow& A, const Arrow& B, double t, MeanKind path_mean,
   const Complex den = expm1(L);
   const Complex progress =
       std::abs(den) < limits::kTwirlTranslation ? Complex{t, 0.0} : s_m1 / den;
-  const double m = A.m * (1.0 + mean_of_one_and_minus_one(magnitude_mean, log_lambda, t));
+  // The magnitude directly (not 1 + (mean - 1)), so that it keeps its relative
+  // precision when it becomes tiny.
+  double m = 0.0;
+  switch (magnitude_mean) {
+    case MeanKind::arithmetic: m = (1.0 - t) * A.m + t * B.m; break;
+    case MeanKind::geometric: m = A.m * std::exp(t * log_lambda); break;
+    case MeanKind::harmonic: m = 1.0 / ((1.0 - t) / A.m + t / B.m); break;
+  }
   return {A.p + progress * (B.p - A.p), m, A.w + t * theta};
 }
 

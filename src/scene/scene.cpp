@@ -3,124 +3,46 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
-#include <cmath>
 #include <cstring>
 #include <fstream>
-#include <span>
 #include <sstream>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "core/arrow.hpp"
-#include "scene/did_you_mean.hpp"
+#include "scene/figure_reader.hpp"
+#include "scene/json_reader.hpp"
 
 namespace pita::scene {
 
 namespace {
 
-// Objects keep their members in document order, so that the first problem
-// reported is the first one in the file.
-using Json = nlohmann::ordered_json;
+using detail::element_pointer;
+using detail::Json;
+using detail::JsonReader;
+using detail::keyframe_count_reason;
+using detail::unknown_method_reason;
+using detail::value_text;
 
-// The fields each object of a scene may have. A figures issue will add canvas,
-// layers and panels; until then anything else is an error.
-constexpr std::array<std::string_view, 6> kSceneFields = {
-    "$schema", "description", "method", "keyframes", "samples", "options"};
-constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
-constexpr std::array<std::string_view, 3> kOptionFields = {"anchor", "path_mean",
-                                                           "magnitude_mean"};
+// The fields each object of a scene may have; anything else is an error.
+constexpr std::array<std::string_view, 10> kSceneFields = {
+    "$schema", "description", "method", "keyframes", "samples", "options",
+    "title",   "canvas",      "layers", "panels"};
+constexpr std::array<std::string_view, 6> kPanelFields = {"method", "options", "keyframes",
+                                                          "title",  "samples", "layers"};
 
-constexpr std::array<std::string_view, 2> kAnchorNames = {"start", "midpoint"};
-constexpr std::array<Anchor, 2> kAnchors = {Anchor::start, Anchor::midpoint};
-constexpr std::array<std::string_view, 3> kMeanNames = {"arithmetic", "geometric", "harmonic"};
-constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geometric,
-                                            MeanKind::harmonic};
-
-// ---------------------------------------------------------------- messages
-
-// JSON Pointer (RFC 6901) of a member: "~" is written "~0" and "/" is "~1".
-std::string member_pointer(const std::string& parent, std::string_view key) {
-  std::string pointer = parent + '/';
-  for (char c : key) {
-    if (c == '~') {
-      pointer += "~0";
-    } else if (c == '/') {
-      pointer += "~1";
-    } else {
-      pointer += c;
-    }
-  }
-  return pointer;
-}
-
-std::string element_pointer(const std::string& parent, std::size_t index) {
-  return parent + '/' + std::to_string(index);
-}
-
-// A number as messages show it: the shortest form that reads back exactly
-// ("-2", "0.5", "1e+300", "inf").
-std::string number_text(double x) { return fmt::format("{}", x); }
-
-// A JSON value as messages show it after "got": "3", "null", "string \"abc\"",
-// "array [1,2,3]"; long values are cut short.
-std::string value_text(const Json& value) {
-  constexpr std::size_t kMaxShown = 40;
-  if (value.is_number()) return number_text(value.get<double>());
-  // ensure_ascii keeps the text valid UTF-8 however it is cut.
-  std::string text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
-  if (text.size() > kMaxShown) text = text.substr(0, kMaxShown - 3) + "...";
-  switch (value.type()) {
-    case Json::value_t::string:
-      return "string " + text;
-    case Json::value_t::array:
-      return "array " + text;
-    case Json::value_t::object:
-      return "object " + text;
-    default:
-      return text;  // null, true, false
-  }
-}
-
-std::string joined(std::span<const std::string_view> names) {
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) text += ", ";
-    text += names[i];
-  }
-  return text;
-}
-
-std::string quoted_choices(std::span<const std::string_view> names) {
-  const std::vector<std::string> copies(names.begin(), names.end());
-  return alternatives(copies);
-}
-
-// The registry ranks its suggestions best first; a few are enough.
-constexpr std::size_t kMaxMethodSuggestions = 3;
-
-std::string unknown_method_reason(std::string_view name) {
-  std::string reason = fmt::format("unknown method \"{}\"", name);
-  std::vector<std::string> suggestions = suggest_methods(name);
-  if (suggestions.size() > kMaxMethodSuggestions) suggestions.resize(kMaxMethodSuggestions);
-  if (!suggestions.empty()) return reason + did_you_mean(suggestions, /*quoted=*/false);
-  std::string known;
-  for (const MethodInfo& method : all_methods()) {
-    if (!known.empty()) known += ", ";
-    known += method.id;
-  }
-  return reason + "; known methods: " + known;
-}
-
-std::string keyframe_count_reason(Method method, std::size_t count) {
+// A panel given by its method is titled "P6 La-LP" ("SMA" for SMA).
+std::string method_title(Method method) {
   const MethodInfo& about = info(method);
-  std::string name(about.id);
+  std::string title(about.id);
   if (!about.mnemonic.empty() && about.mnemonic != about.id) {
-    name += fmt::format(" ({})", about.mnemonic);
+    title += ' ';
+    title += about.mnemonic;
   }
-  return fmt::format("method {} takes exactly {} keyframes (got {})", name, about.keyframe_count,
-                     count);
+  return title;
 }
 
 // ------------------------------------------------------------ JSON parsing
@@ -198,206 +120,151 @@ Json parse_json(std::string_view text, const std::string& file) {
 
 class SceneReader {
  public:
-  explicit SceneReader(std::string file) : file_(std::move(file)) {}
+  explicit SceneReader(std::string file) : reader_(std::move(file)) {}
 
   Scene read(const Json& document) const {
     if (!document.is_object()) {
       fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
     }
-    check_fields(document, "", kSceneFields);
+    reader_.check_fields(document, "", kSceneFields);
 
     Scene scene;
-    scene.path = file_;
-    if (const Json* schema = member(document, "$schema")) string(*schema, "/$schema");
+    scene.path = reader_.file();
+    if (const Json* schema = member(document, "$schema")) reader_.string(*schema, "/$schema");
     if (const Json* description = member(document, "description")) {
-      scene.description = string(*description, "/description");
+      scene.description = reader_.string(*description, "/description");
     }
 
     const Json* method = member(document, "method");
     if (method == nullptr) fail("/method", "missing required field (a method such as \"P6\")");
-    const std::string method_name = string(*method, "/method");
-    const std::optional<Method> found = find_method(method_name);
-    if (!found) fail("/method", unknown_method_reason(method_name));
-    scene.method = *found;
-    scene.method_name = std::string(info(*found).id);
+    scene.method = reader_.method(*method, "/method");
+    scene.method_name = std::string(info(scene.method).id);
 
     if (const Json* options = member(document, "options")) {
-      scene.options = read_options(*options, "/options");
+      scene.options = reader_.options(*options, "/options", MethodOptions{});
     }
 
     const Json* keyframes = member(document, "keyframes");
     if (keyframes == nullptr) fail("/keyframes", "missing required field (an array of keyframes)");
-    if (!keyframes->is_array()) {
-      fail("/keyframes", "must be an array of keyframes (got " + value_text(*keyframes) + ")");
-    }
-    if (keyframes->size() != static_cast<std::size_t>(info(scene.method).keyframe_count)) {
-      fail("/keyframes", keyframe_count_reason(scene.method, keyframes->size()));
-    }
-    for (std::size_t i = 0; i < keyframes->size(); ++i) {
-      const std::string pointer = element_pointer("/keyframes", i);
-      const Keyframe keyframe = read_keyframe((*keyframes)[i], pointer);
-      if (i > 0) check_knot_order(scene.keyframes.back().t, keyframe.t, pointer + "/t");
-      scene.keyframes.push_back(keyframe);
-    }
+    scene.keyframes = reader_.keyframes(*keyframes, "/keyframes", scene.method);
 
     if (const Json* samples = member(document, "samples")) {
-      const double count = integer(*samples, "/samples");
-      if (count < kMinSamples || count > kMaxSamples) {
-        fail("/samples", fmt::format("must be an integer between {} and {} (got {})", kMinSamples,
-                                     kMaxSamples, number_text(count)));
-      }
-      scene.samples = static_cast<int>(count);
+      scene.samples = reader_.integer(*samples, "/samples", kMinSamples, kMaxSamples);
+    }
+
+    // The figure (README "Figures"); `pita eval` ignores it.
+    if (const Json* title = member(document, "title")) {
+      scene.title = reader_.string(*title, "/title");
+    }
+    if (const Json* canvas = member(document, "canvas")) {
+      scene.canvas = detail::read_canvas(reader_, *canvas, "/canvas");
+    }
+    if (const Json* layers = member(document, "layers")) {
+      scene.layers = detail::read_layers(reader_, *layers, "/layers");
+    } else {
+      scene.layers = {PatternLayer{}, KeyframesLayer{}};
+    }
+    if (const Json* panels = member(document, "panels")) {
+      scene.panels = read_panels(*panels, "/panels", scene);
+    } else {
+      scene.panels = {scene_panel(scene, "")};
     }
     return scene;
   }
 
  private:
   [[noreturn]] void fail(const std::string& pointer, std::string reason) const {
-    throw SceneError(file_, pointer, std::move(reason));
+    reader_.fail(pointer, std::move(reason));
   }
 
   static const Json* member(const Json& object, const std::string& key) {
-    const auto found = object.find(key);
-    return found == object.end() ? nullptr : &*found;
+    return JsonReader::member(object, key);
   }
 
-  void check_fields(const Json& object, const std::string& pointer,
-                    std::span<const std::string_view> known) const {
-    for (const auto& [key, value] : object.items()) {
-      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-      const std::vector<std::string> suggestions = closest_names(key, known);
-      std::string reason = fmt::format("unknown field \"{}\"", key);
-      reason += suggestions.empty() ? "; known fields: " + joined(known) : did_you_mean(suggestions);
-      fail(member_pointer(pointer, key), reason);
+  // The panel that draws the scene itself.
+  static Panel scene_panel(const Scene& scene, std::string pointer) {
+    Panel panel;
+    panel.method = scene.method;
+    panel.method_name = scene.method_name;
+    panel.options = scene.options;
+    panel.keyframes = scene.keyframes;
+    panel.samples = scene.samples.value_or(kDefaultFigureSamples);
+    panel.pointer = std::move(pointer);
+    return panel;
+  }
+
+  std::vector<Panel> read_panels(const Json& value, const std::string& pointer,
+                                 const Scene& scene) const {
+    if (!value.is_array()) {
+      fail(pointer, "must be an array of panels, each a method name or an object (got " +
+                        value_text(value) + ")");
     }
-  }
-
-  std::string string(const Json& value, const std::string& pointer) const {
-    if (!value.is_string()) fail(pointer, "must be a string (got " + value_text(value) + ")");
-    return value.get<std::string>();
-  }
-
-  // Every number of a scene must be finite. nlohmann 3.11 already refuses
-  // numbers that overflow (see parse_json); other versions read them as inf.
-  double number(const Json& value, const std::string& pointer) const {
-    if (!value.is_number()) fail(pointer, "must be a number (got " + value_text(value) + ")");
-    const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(pointer, "must be a finite number (got " + number_text(x) + ")");
-    return x;
-  }
-
-  // A number with no fractional part (as JSON Schema's "integer": 3 and 3.0).
-  double integer(const Json& value, const std::string& pointer) const {
-    const bool ok = value.is_number() && std::isfinite(value.get<double>()) &&
-                    value.get<double>() == std::trunc(value.get<double>());
-    if (!ok) fail(pointer, "must be an integer (got " + value_text(value) + ")");
-    return value.get<double>();
-  }
-
-  Point point(const Json& value, const std::string& pointer) const {
-    if (!value.is_array() || value.size() != 2) {
-      fail(pointer, "must be an array of two numbers [x, y] (got " + value_text(value) + ")");
+    if (value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
+      fail(pointer, fmt::format("must have between 1 and {} panels (got {})", kMaxPanels,
+                                value.size()));
     }
-    return make_point(number(value[0], element_pointer(pointer, 0)),
-                      number(value[1], element_pointer(pointer, 1)));
+    std::vector<Panel> panels;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      panels.push_back(read_panel(value[i], element_pointer(pointer, i), scene));
+    }
+    return panels;
   }
 
-  template <typename T, std::size_t N>
-  T choice(const Json& value, const std::string& pointer,
-           const std::array<std::string_view, N>& names, const std::array<T, N>& values) const {
+  // A panel is a method name ("P2") or an object whose fields override the scene's.
+  Panel read_panel(const Json& value, const std::string& pointer, const Scene& scene) const {
+    Panel panel = scene_panel(scene, pointer);
     if (value.is_string()) {
-      const auto found = std::find(names.begin(), names.end(), value.get<std::string>());
-      if (found != names.end()) return values[static_cast<std::size_t>(found - names.begin())];
+      set_method(panel, reader_.method(value, pointer), pointer, scene);
+      return panel;
     }
-    fail(pointer, "must be " + quoted_choices(names) + " (got " + value_text(value) + ")");
-  }
-
-  MethodOptions read_options(const Json& value, const std::string& pointer) const {
-    if (!value.is_object()) fail(pointer, "must be an object (got " + value_text(value) + ")");
-    check_fields(value, pointer, kOptionFields);
-    MethodOptions options;
-    if (const Json* anchor = member(value, "anchor")) {
-      options.anchor = choice(*anchor, pointer + "/anchor", kAnchorNames, kAnchors);
-    }
-    if (const Json* mean = member(value, "path_mean")) {
-      options.path_mean = choice(*mean, pointer + "/path_mean", kMeanNames, kMeans);
-    }
-    if (const Json* mean = member(value, "magnitude_mean")) {
-      options.magnitude_mean = choice(*mean, pointer + "/magnitude_mean", kMeanNames, kMeans);
-    }
-    return options;
-  }
-
-  // A keyframe is {"t", "p", and either "q" or "m" and "w"; "turns" optional}.
-  Keyframe read_keyframe(const Json& value, const std::string& pointer) const {
     if (!value.is_object()) {
-      fail(pointer, "a keyframe must be an object (got " + value_text(value) + ")");
+      fail(pointer, "a panel must be a method name or an object (got " + value_text(value) + ")");
     }
-    check_fields(value, pointer, kKeyframeFields);
-
-    const Json* knot = member(value, "t");
-    if (knot == nullptr) fail(pointer + "/t", "missing required field (the knot, a time value)");
-    Keyframe keyframe;
-    keyframe.t = number(*knot, pointer + "/t");
-
-    const Json* start = member(value, "p");
-    if (start == nullptr) fail(pointer + "/p", "missing required field (the start point [x, y])");
-    const Point p = point(*start, pointer + "/p");
-
-    const Json* end = member(value, "q");
-    const Json* magnitude = member(value, "m");
-    const Json* winding = member(value, "w");
-    if (end != nullptr) {
-      if (magnitude != nullptr || winding != nullptr) {
-        fail(pointer + "/q", "give either \"q\" or \"m\" and \"w\", not both");
-      }
-      const Point q = point(*end, pointer + "/q");
-      if (q == p) fail(pointer + "/q", "q equals p: a zero-length arrow has no direction");
-      keyframe.arrow = zero_turn_arrow(p, q);
-      if (!is_finite(keyframe.arrow)) {
-        fail(pointer + "/q", "the arrow from p to q is too long (its magnitude overflows)");
-      }
-    } else {
-      if (magnitude == nullptr && winding == nullptr) {
-        fail(pointer, "missing the arrow: give \"q\", or \"m\" and \"w\"");
-      }
-      if (magnitude == nullptr) {
-        fail(pointer + "/m", "missing required field (\"w\" needs the magnitude \"m\")");
-      }
-      if (winding == nullptr) {
-        fail(pointer + "/w", "missing required field (\"m\" needs the winding \"w\")");
-      }
-      const double m = number(*magnitude, pointer + "/m");
-      if (!(m > 0.0)) fail(pointer + "/m", "magnitude must be > 0 (got " + number_text(m) + ")");
-      keyframe.arrow = Arrow{p, m, number(*winding, pointer + "/w")};
-    }
-
-    if (const Json* turns = member(value, "turns")) {
-      const double k = integer(*turns, pointer + "/turns");
-      keyframe.arrow = with_turns(keyframe.arrow, k);
-      if (!std::isfinite(keyframe.arrow.w)) {
-        fail(pointer + "/turns",
-             "too many turns: the winding overflows (got " + number_text(k) + ")");
+    reader_.check_fields(value, pointer, kPanelFields);
+    const Json* keyframes = member(value, "keyframes");
+    if (const Json* method = member(value, "method")) {
+      const std::string at = pointer + "/method";
+      const Method found = reader_.method(*method, at);
+      if (keyframes == nullptr) {
+        set_method(panel, found, at, scene);
+      } else {
+        panel.method = found;
+        panel.method_name = std::string(info(found).id);
+        panel.title = method_title(found);
       }
     }
-    return keyframe;
+    if (const Json* options = member(value, "options")) {
+      panel.options = reader_.options(*options, pointer + "/options", scene.options);
+    }
+    if (keyframes != nullptr) {
+      panel.keyframes = reader_.keyframes(*keyframes, pointer + "/keyframes", panel.method);
+    }
+    if (const Json* title = member(value, "title")) {
+      panel.title = reader_.string(*title, pointer + "/title");
+    }
+    if (const Json* samples = member(value, "samples")) {
+      panel.samples = reader_.integer(*samples, pointer + "/samples", kMinSamples,
+                                      kMaxFigureSamples);
+    }
+    if (const Json* layers = member(value, "layers")) {
+      panel.layers = detail::read_layers(reader_, *layers, pointer + "/layers");
+    }
+    return panel;
   }
 
-  // Knots must be strictly increasing (the registry requires a < b < c).
-  void check_knot_order(double previous, double knot, const std::string& pointer) const {
-    if (knot == previous) {
-      fail(pointer, fmt::format("knot {} equals the previous knot; knots must be strictly "
-                                "increasing",
-                                number_text(knot)));
+  // The panel draws the scene's keyframes with `method`, which must take as many.
+  void set_method(Panel& panel, Method method, const std::string& pointer,
+                  const Scene& scene) const {
+    if (scene.keyframes.size() != static_cast<std::size_t>(info(method).keyframe_count)) {
+      fail(pointer, keyframe_count_reason(method, scene.keyframes.size()) +
+                        " from the scene; give the panel its own \"keyframes\"");
     }
-    if (knot < previous) {
-      fail(pointer, fmt::format("knot {} is less than the previous knot {}; knots must be "
-                                "strictly increasing",
-                                number_text(knot), number_text(previous)));
-    }
+    panel.method = method;
+    panel.method_name = std::string(info(method).id);
+    panel.title = method_title(method);
   }
 
-  std::string file_;
+  JsonReader reader_;
 };
 
 std::string located(const std::string& file, const std::string& pointer,
@@ -453,6 +320,12 @@ Scene with_method(Scene scene, Method method) {
   }
   scene.method = method;
   scene.method_name = std::string(about.id);
+  // The panel that is the scene itself follows it; panels of their own keep theirs.
+  for (Panel& panel : scene.panels) {
+    if (!panel.pointer.empty()) continue;
+    panel.method = method;
+    panel.method_name = scene.method_name;
+  }
   return scene;
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/keyframe.hpp"
 #include "core/pitas/registry.hpp"
+#include "scene/figure.hpp"
 
 namespace pita::scene {
 
@@ -31,7 +32,16 @@ struct Scene {
   MethodOptions options;      // every field set (defaults applied)
   std::vector<Keyframe> keyframes;  // as many as the method takes, knots strictly increasing
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
+
+  // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores it.
+  std::string title;                // "" = none; drawn above the panels
+  Canvas canvas;
+  std::vector<Layer> layers;        // in drawing order; default: pattern, then keyframes
+  std::vector<Panel> panels;        // at least one: the scene itself when it has no "panels"
 };
+
+// Frames of a drawn pattern when neither the scene nor the layer says.
+inline constexpr int kDefaultFigureSamples = 17;
 
 // What is wrong with a scene, and where. what() is
 //   "FILE: /keyframes/1/m: magnitude must be > 0 (got -2)"   (a value; the

@@ -83,9 +83,9 @@ TEST_F(Main, UnknownSubcommandSuggests) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
   EXPECT_EQ(result.err, "pita: unknown subcommand \"evl\"; did you mean \"eval\"?\nRun 'pita --help' for usage.\n");
-  const RunResult far = run({"render"});
+  const RunResult far = run({"frobnicate"});
   EXPECT_EQ(far.exit_code, 2);
-  EXPECT_EQ(far.err, "pita: unknown subcommand \"render\"\nRun 'pita --help' for usage.\n");
+  EXPECT_EQ(far.err, "pita: unknown subcommand \"frobnicate\"\nRun 'pita --help' for usage.\n");
 }
 
 }  // namespace

@@ -118,3 +118,21 @@ TEST(MeanMorph, VariantsInterpolateWithTheirMeans) {
 
 }  // namespace
 }  // namespace pita::test
+
+namespace pita::test {
+namespace {
+
+// Found by the independent oracle (tests/oracle): the magnitude must keep its
+// relative precision far from the keyframes, whatever the path mean.
+TEST(MeanMorph, MagnitudeKeepsRelativePrecision) {
+  const Arrow A{{0.0, 0.0}, 1.0, 0.0}, B{{1.0, 0.0}, 20.0, 1.0};
+  for (MeanKind path : {MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic}) {
+    const double m = mean_morph(A, B, -12.0, path, MeanKind::geometric).m;
+    EXPECT_NEAR(m / std::pow(20.0, -12.0), 1.0, 1e-13);
+    EXPECT_NEAR(mean_morph(A, B, 0.25, path, MeanKind::arithmetic).m, 1.0 + 0.25 * 19.0, 1e-14);
+    EXPECT_NEAR(mean_morph(A, B, 0.25, path, MeanKind::harmonic).m, 1.0 / (0.75 + 0.25 / 20.0), 1e-14);
+  }
+}
+
+}  // namespace
+}  // namespace pita::test

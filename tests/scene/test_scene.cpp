@@ -292,10 +292,10 @@ TEST(SceneError, KnotsMustBeStrictlyIncreasing) {
 
 TEST(SceneError, UnknownMethod) {
   EXPECT_EQ(error_of(R"({"method": "La-LQ", "keyframes": []})"),
-            "s.json: /method: unknown method \"La-LQ\"; did you mean P6 (La-LP) or P3 (Pa-LP)?");
+            "s.json: /method: unknown method \"La-LQ\"; did you mean P6 (La-LP), P3 (Pa-LP) or LS-LP?");
   EXPECT_EQ(error_of(R"({"method": "xyzzy", "keyframes": []})"),
             "s.json: /method: unknown method \"xyzzy\"; known methods: P1, P2, P3, P4, P5, P5S, P6, "
-            "P7, P8, P9, P10, SMA");
+            "P7, P8, P9, P10, SMA, Pa-Po, LS-Ca, LS-LP");
 }
 
 TEST(SceneError, WrongNumberOfKeyframes) {
@@ -335,9 +335,11 @@ TEST(SceneError, UnknownFieldsSuggestCloseNames) {
             "s.json: /smaples: unknown field \"smaples\"; did you mean \"samples\"?");
   EXPECT_EQ(error_of(R"({"method": "P6", "Keyframe": []})"),
             "s.json: /Keyframe: unknown field \"Keyframe\"; did you mean \"keyframes\"?");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {})")),
-            "s.json: /canvas: unknown field \"canvas\"; known fields: $schema, description, method, "
-            "keyframes, samples, options");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvs": {})")),
+            "s.json: /canvs: unknown field \"canvs\"; did you mean \"canvas\"?");
+  EXPECT_EQ(error_of(p6_with(R"(, "figure": {})")),
+            "s.json: /figure: unknown field \"figure\"; known fields: $schema, description, method, "
+            "keyframes, samples, options, title, canvas, layers, panels");
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "mm": 1, "w": 0})")),
             "s.json: /keyframes/1/mm: unknown field \"mm\"; did you mean \"m\"?");
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 0, "x": 1})")),
@@ -349,7 +351,7 @@ TEST(SceneError, UnknownFieldsSuggestCloseNames) {
 TEST(SceneError, PointerEscapesSlashAndTilde) {
   EXPECT_EQ(error_of(R"({"a/b~c": 1})"),
             "s.json: /a~1b~0c: unknown field \"a/b~c\"; known fields: $schema, description, method, "
-            "keyframes, samples, options");
+            "keyframes, samples, options, title, canvas, layers, panels");
 }
 
 // ------------------------------------------------------------ methods and files

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -41,39 +42,88 @@ std::vector<std::filesystem::path> scene_files() {
   return files;
 }
 
-TEST(SceneSchema, IsValidJsonDraft202012) {
+TEST(SceneSchema, IsJsonSchemaDraft07) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
-  EXPECT_EQ(schema.at("$schema"), "https://json-schema.org/draft/2020-12/schema");
+  EXPECT_EQ(schema.at("$schema"), "http://json-schema.org/draft-07/schema#");
   EXPECT_EQ(schema.at("type"), "object");
   EXPECT_EQ(schema.at("additionalProperties"), false);
+  EXPECT_TRUE(schema.contains("definitions"));
+  EXPECT_FALSE(schema.contains("$defs"));  // 2019-09 and later; draft 7 says "definitions"
 }
 
 // The schema lists exactly the fields the parser accepts (tests/scene/test_scene.cpp
-// checks that the parser refuses every other one).
+// and test_schema.cpp check that the parser refuses every other one).
 TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
+  const nlohmann::json& definitions = schema.at("definitions");
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "samples",
-                                   "options"}));
+                                   "options", "title", "canvas", "layers", "panels"}));
   EXPECT_EQ(schema.at("required"), (nlohmann::json{"method", "keyframes"}));
-  const nlohmann::json& keyframe = schema.at("$defs").at("keyframe");
+  const nlohmann::json& keyframe = definitions.at("keyframe");
   EXPECT_EQ(keys_of(keyframe.at("properties")),
             (std::set<std::string>{"t", "p", "m", "w", "q", "turns"}));
   EXPECT_EQ(keyframe.at("additionalProperties"), false);
-  const nlohmann::json& options = schema.at("properties").at("options");
+  const nlohmann::json& options = definitions.at("options");
   EXPECT_EQ(keys_of(options.at("properties")),
             (std::set<std::string>{"anchor", "path_mean", "magnitude_mean"}));
   EXPECT_EQ(options.at("additionalProperties"), false);
   const nlohmann::json& samples = schema.at("properties").at("samples");
   EXPECT_EQ(samples.at("minimum"), kMinSamples);
   EXPECT_EQ(samples.at("maximum"), kMaxSamples);
+
+  const nlohmann::json& canvas = definitions.at("canvas");
+  EXPECT_EQ(keys_of(canvas.at("properties")),
+            (std::set<std::string>{"width", "height", "background", "view", "margin", "y_axis",
+                                   "columns", "font"}));
+  EXPECT_EQ(canvas.at("additionalProperties"), false);
+  EXPECT_EQ(canvas.at("properties").at("width").at("minimum"), kMinCanvasSide);
+  EXPECT_EQ(canvas.at("properties").at("width").at("maximum"), kMaxCanvasSide);
+  EXPECT_EQ(canvas.at("properties").at("height").at("minimum"), kMinCanvasSide);
+  EXPECT_EQ(canvas.at("properties").at("height").at("maximum"), kMaxCanvasSide);
+  EXPECT_EQ(definitions.at("layers").at("maxItems"), kMaxLayers);
+  EXPECT_EQ(schema.at("properties").at("panels").at("minItems"), 1);
+  EXPECT_EQ(schema.at("properties").at("panels").at("maxItems"), kMaxPanels);
+  EXPECT_EQ(definitions.at("figureSamples").at("maximum"), kMaxFigureSamples);
+  EXPECT_EQ(definitions.at("text").at("maxLength"), kMaxTextLength);
+  EXPECT_EQ(definitions.at("trajectoryLayer").at("properties").at("samples").at("maximum"),
+            kMaxTrajectorySamples);
+
+  const std::vector<std::pair<std::string, std::set<std::string>>> layers = {
+      {"pattern", {"type", "color", "width", "opacity", "dash", "extended", "samples", "range"}},
+      {"keyframes", {"type", "colors", "width", "opacity", "winding", "spiral_center", "extended"}},
+      {"trajectory", {"type", "point", "samples", "range", "color", "width", "opacity", "dash"}},
+      {"stroke", {"type", "fill", "opacity", "outline", "samples", "range"}},
+      {"banner",
+       {"type", "text", "font", "fill", "opacity", "outline", "padding", "samples", "range"}},
+      {"discrepancy",
+       {"type", "predictor", "method", "scale", "color", "width", "opacity", "dash", "fill",
+        "samples"}},
+      {"label", {"type", "text", "at", "size", "color"}},
+      {"legend", {"type", "corner", "size"}},
+  };
+  std::vector<std::string> types;
+  for (const auto& [type, fields] : layers) {
+    SCOPED_TRACE(type);
+    types.push_back(type);
+    const nlohmann::json& layer = definitions.at(type + "Layer");
+    EXPECT_EQ(keys_of(layer.at("properties")), fields);
+    EXPECT_EQ(layer.at("additionalProperties"), false);
+    EXPECT_EQ(layer.at("properties").at("type").at("const"), type);
+  }
+  EXPECT_EQ(definitions.at("layer").at("properties").at("type").at("enum"), nlohmann::json(types));
+  const nlohmann::json& panel = definitions.at("panel").at("else");
+  EXPECT_EQ(keys_of(panel.at("properties")),
+            (std::set<std::string>{"method", "options", "keyframes", "title", "samples", "layers"}));
+  EXPECT_EQ(panel.at("additionalProperties"), false);
 }
 
 TEST(SceneSchema, ListsEveryMethodForAutocomplete) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   std::vector<std::string> ids;
   for (const MethodInfo& method : all_methods()) ids.emplace_back(method.id);
-  EXPECT_EQ(schema.at("properties").at("method").at("examples").get<std::vector<std::string>>(), ids);
+  EXPECT_EQ(
+      schema.at("definitions").at("method").at("examples").get<std::vector<std::string>>(), ids);
 }
 
 TEST(SceneFiles, EveryStarterSceneParses) {

@@ -17,6 +17,7 @@
 #include "core/pitas/p07_ra_pe.hpp"
 #include "core/pitas/p08_lo_pe.hpp"
 #include "core/pitas/p09_ne_lp.hpp"
+#include "core/pitas/independent.hpp"
 #include "core/pitas/p10_pa_el.hpp"
 #include "core/pitas/sma.hpp"
 
@@ -25,7 +26,7 @@ namespace {
 
 // winding_aware is what tests/core/test_fig10.cpp measures (W row of Fig. 10,
 // plus P4 and P9, which are built from winding-aware steady morphs).
-constexpr std::array<MethodInfo, 12> kMethods{{
+constexpr std::array<MethodInfo, 15> kMethods{{
     {Method::P1, "P1", "Pa-Ca", "parabolic point, Cartesian vector", 3, false},
     {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true},
     {Method::P3, "P3", "Pa-LP", "parabolic point, log-polar vector", 3, true},
@@ -38,6 +39,9 @@ constexpr std::array<MethodInfo, 12> kMethods{{
     {Method::P9, "P9", "Ne-LP", "Neville form with steady morphs", 3, true},
     {Method::P10, "P10", "Pa-EL", "parabolic point, exponential of log linear parts", 3, false},
     {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true},
+    {Method::PaPo, "Pa-Po", "Pa-Po", "parabolic point, polar vector (Fig. 7)", 3, true, false},
+    {Method::LSCa, "LS-Ca", "LS-Ca", "log-spiral point, Cartesian vector (Fig. 7)", 3, false, false},
+    {Method::LSLP, "LS-LP", "LS-LP", "log-spiral point, log-polar vector (Fig. 7)", 3, true, false},
 }};
 
 std::string lower(std::string_view s) {
@@ -50,7 +54,9 @@ std::string lower(std::string_view s) {
 std::vector<std::string> names_of(const MethodInfo& m) {
   std::vector<std::string> names{lower(m.id), lower(m.mnemonic),
                                  lower(std::string(m.id) + ":" + std::string(m.mnemonic))};
-  if (m.id.size() > 1 && m.id[0] == 'P') names.push_back(lower(m.id.substr(1)));  // "6", "5s"
+  if (m.id.size() > 1 && m.id[0] == 'P' && std::isdigit(static_cast<unsigned char>(m.id[1]))) {
+    names.push_back(lower(m.id.substr(1)));  // "6", "5s"
+  }
   return names;
 }
 
@@ -97,7 +103,9 @@ std::vector<std::string> suggest_methods(std::string_view name) {
     std::size_t best = std::string::npos;
     for (const std::string& n : names_of(m)) best = std::min(best, edit_distance(key, n));
     if (best <= 2) {
-      scored.emplace_back(best, std::string(m.id) + " (" + std::string(m.mnemonic) + ")");
+      scored.emplace_back(best, m.id == m.mnemonic
+                                    ? std::string(m.id)
+                                    : std::string(m.id) + " (" + std::string(m.mnemonic) + ")");
     }
   }
   std::stable_sort(scored.begin(), scored.end(),
@@ -120,6 +128,9 @@ std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const Metho
     case Method::P8: return std::make_unique<LoPe>(k);
     case Method::P9: return std::make_unique<NeLp>(k, o.path_mean, o.magnitude_mean);
     case Method::P10: return std::make_unique<PaEl>(k);
+    case Method::PaPo: return std::make_unique<IndependentPita>(k, PointMotion::parabola, VectorMotion::polar);
+    case Method::LSCa: return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::cartesian);
+    case Method::LSLP: return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::log_polar);
     case Method::SMA: break;
   }
   throw std::invalid_argument("SMA interpolates two keyframes, not three");

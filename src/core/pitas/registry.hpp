@@ -27,6 +27,10 @@ enum class Method {
   P9,   // Ne-LP
   P10,  // Pa-EL
   SMA,  // steady morph between two arrows (Eq. 21)
+  // The independent combinations of Fig. 7 that are not in the basket.
+  PaPo,  // parabolic point, polar vector
+  LSCa,  // log-spiral point, Cartesian vector
+  LSLP,  // log-spiral point, log-polar vector
 };
 
 struct MethodInfo {
@@ -36,6 +40,8 @@ struct MethodInfo {
   std::string_view title;     // "Lagrange point, log-polar vector"
   int keyframe_count;         // 3, or 2 for SMA
   bool winding_aware;         // measured, see tests/core/test_fig10.cpp
+  bool in_basket = true;      // one of the paper's PITAs (P1-P10, P5S) or SMA; false for
+                              // the other independent combinations of Fig. 7
 };
 
 // Every method, in display order.

@@ -1,0 +1,36 @@
+// Time to draw one figure, from the scene file to the output bytes (nothing
+// written to disk). Run: build/pita_bench --benchmark_filter=Render
+//   BM_Render/<scene>/<format>: load + build + render, ms per figure
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+using namespace pita;
+
+void BM_Render(benchmark::State& state, std::string scene_file, render::Format format) {
+  const std::string path = std::string(PITA_SOURCE_DIR) + "/scenes/" + scene_file;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const scene::Scene scene = scene::load_scene(path);
+    const render::Figure figure = render::build_figure(scene);
+    bytes = render::render_figure(scene, figure, format).size();
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["bytes"] = static_cast<double>(bytes);
+}
+
+BENCHMARK_CAPTURE(BM_Render, fig01_svg, "fig01-eight-pitas.json", render::Format::svg)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Render, fig01_png, "fig01-eight-pitas.json", render::Format::png)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Render, fig26_svg, "fig26-banners.json", render::Format::svg)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Render, fig26_png, "fig26-banners.json", render::Format::png)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace

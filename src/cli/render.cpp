@@ -1,0 +1,191 @@
+#include "cli/render.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "render/figure.hpp"
+#include "render/output_file.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The CSS pixel: PNGs are drawn at --dpi / 96 times the canvas size.
+constexpr double kCssDpi = 96.0;
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::vector<render::Format> parse_formats(const std::string& text) {
+  std::vector<render::Format> formats;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto format = render::format_from_name(item);
+    if (!format) {
+      throw UsageError(fmt::format("--format: \"{}\" is not a format (use svg, png or pdf, "
+                                   "comma-separated: --format svg,png)",
+                                   item));
+    }
+    if (std::find(formats.begin(), formats.end(), *format) == formats.end()) formats.push_back(*format);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return formats;
+}
+
+// Where each scene's figures go: (format, path) pairs.
+struct Target {
+  render::Format format;
+  fs::path path;
+};
+
+std::vector<Target> targets_for(const RenderOptions& options, const std::string& scene_path,
+                                const std::vector<render::Format>& formats, bool single_file) {
+  if (single_file) return {{formats.front(), options.output}};
+  std::vector<Target> targets;
+  const std::string stem = fs::path(scene_path).stem().string();
+  for (const render::Format format : formats) {
+    targets.push_back({format, fs::path(options.output) / (stem + "." + std::string(render::extension(format)))});
+  }
+  return targets;
+}
+
+std::string footer() {
+  return R"(
+OUT is a file when it ends in .svg, .png or .pdf (one scene; the format is its
+extension), otherwise a directory (created if needed) that receives
+OUT/<scene name>.<format> for each --format (default svg).
+
+Each file is written to a temporary file and renamed into place: a failed
+scene leaves no file behind, and the other scenes are still rendered.
+Output is deterministic: the same scene gives the same bytes.
+
+Scene fields for figures (see README "Figures" and schema/scene.schema.json):
+  title, canvas {width, height, background, view, margin, y_axis, columns, font},
+  layers [{"type": "pattern" | "keyframes" | "trajectory" | "stroke" | "banner" |
+           "discrepancy" | "label" | "legend", ...}],
+  panels ["P1", {"method": "P2", "keyframes": [...], "title": "..."}, ...]
+
+Examples:
+  pita render scenes/fig01-eight-pitas.json -o fig01.png --scale 2
+  pita render scenes/*.json -o out --format svg,png
+  pita render scenes/fig25-strokes.json -o out --format pdf
+
+Exit codes: 0 success, 2 bad input or usage, 3 an output could not be written.
+)";
+}
+
+}  // namespace
+
+std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* render = app.add_subcommand("render", "Draw the figures of scenes as SVG, PNG or PDF");
+  render->footer(footer());
+  render->add_option("SCENE", options->scene_paths, "Scene files (JSON)")->required();
+  render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")
+      ->required()
+      ->type_name("OUT");
+  render->add_option_function<std::string>(
+          "--format", [options](const std::string& list) { options->formats = list; },
+          "Formats to write into the OUT directory, comma-separated: svg,png,pdf (default svg)")
+      ->type_name("LIST");
+  CLI::Option* scale =
+      render->add_option_function<double>(
+              "--scale", [options](double s) { options->scale = s; },
+              fmt::format("PNG pixels per canvas pixel ({} to {}; default 1)", render::kMinScale,
+                          render::kMaxScale))
+          ->type_name("S");
+  CLI::Option* dpi = render->add_option_function<double>(
+                               "--dpi", [options](double d) { options->dpi = d; },
+                               "PNG resolution: scale = DPI / 96")
+                         ->type_name("DPI");
+  scale->excludes(dpi);
+  return options;
+}
+
+ExitCode run_render(const RenderOptions& options) {
+  std::vector<render::Format> formats;
+  double scale = 1.0;
+  bool single_file = false;
+  try {
+    const std::optional<render::Format> by_extension =
+        render::format_from_name(fs::path(options.output).extension().string().substr(
+            fs::path(options.output).has_extension() ? 1 : 0));
+    single_file = by_extension.has_value();
+    if (options.formats) formats = parse_formats(*options.formats);
+    if (single_file) {
+      if (options.scene_paths.size() != 1) {
+        throw UsageError(fmt::format("-o {}: a single output file takes one scene (got {}); give a "
+                                     "directory to render several",
+                                     options.output, options.scene_paths.size()));
+      }
+      if (!formats.empty() && (formats.size() != 1 || formats.front() != *by_extension)) {
+        throw UsageError(fmt::format("--format {} contradicts the extension of -o {}",
+                                     *options.formats, options.output));
+      }
+      formats = {*by_extension};
+    } else if (formats.empty()) {
+      formats = {render::Format::svg};
+    }
+    if (options.dpi) scale = *options.dpi / kCssDpi;
+    if (options.scale) scale = *options.scale;
+    if (!(scale >= render::kMinScale && scale <= render::kMaxScale)) {
+      throw UsageError(fmt::format("{}: the PNG scale must be between {} and {} (got {})",
+                                   options.dpi ? "--dpi" : "--scale", render::kMinScale,
+                                   render::kMaxScale, scale));
+    }
+    if (!single_file) {
+      std::error_code error;
+      fs::create_directories(options.output, error);
+      if (error || !fs::is_directory(options.output)) {
+        std::cerr << "pita: -o " << options.output << ": cannot create the output directory ("
+                  << (error ? error.message() : "a file of that name exists") << ")\n";
+        return ExitCode::failure;
+      }
+    }
+  } catch (const UsageError& error) {
+    std::cerr << "pita: " << error.what() << '\n';
+    return ExitCode::bad_input;
+  }
+
+  ExitCode result = ExitCode::success;
+  for (const std::string& path : options.scene_paths) {
+    try {
+      const scene::Scene scene = scene::load_scene(path);
+      const render::Figure figure = render::build_figure(scene);
+      // Every format is rendered before any is written: a bad scene writes nothing.
+      std::vector<std::pair<fs::path, std::string>> files;
+      for (const Target& target : targets_for(options, path, formats, single_file)) {
+        files.emplace_back(target.path, render::render_figure(scene, figure, target.format, scale));
+      }
+      for (const auto& [file, bytes] : files) {
+        render::write_file_atomically(file, bytes);
+        std::cout << "wrote " << file.string() << '\n';
+      }
+    } catch (const scene::SceneError& error) {
+      std::cerr << "pita: " << error.what() << '\n';
+      result = ExitCode::bad_input;
+    } catch (const render::RenderError& error) {
+      std::cerr << "pita: " << error.what() << '\n';
+      result = ExitCode::bad_input;
+    } catch (const std::runtime_error& error) {  // writing failed
+      std::cerr << "pita: " << error.what() << '\n';
+      if (result == ExitCode::success) result = ExitCode::failure;
+    }
+  }
+  return result;
+}
+
+}  // namespace pita::cli

@@ -1,0 +1,34 @@
+// pita render SCENE... -o OUT [--format svg,png,pdf] [--scale S | --dpi D]
+//
+// Draws each scene's figure (render/figure.hpp) and writes it, through a
+// temporary file renamed into place, as OUT (one scene, OUT with an
+// extension) or as OUT/<scene name>.<format> for each format.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/exit_code.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace pita::cli {
+
+struct RenderOptions {
+  std::vector<std::string> scene_paths;
+  std::string output;                  // -o: a file (.svg/.png/.pdf) or a directory
+  std::optional<std::string> formats;  // --format svg,png,pdf as typed
+  std::optional<double> scale;         // --scale (PNG)
+  std::optional<double> dpi;           // --dpi (PNG): scale = dpi / 96
+};
+
+std::shared_ptr<RenderOptions> setup_render(CLI::App& app);
+
+// Renders every scene, even after one fails; exit 2 if any scene was bad.
+ExitCode run_render(const RenderOptions& options);
+
+}  // namespace pita::cli

@@ -1,0 +1,92 @@
+// What a figure draws, as numbers: shapes in world coordinates (the plane of
+// the keyframes), before any view transform or cairo call. render/ builds a
+// Drawing per panel (panel_drawing.hpp) and then paints it (painter.hpp); the
+// tests check the geometry here, and golden files record it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/arrow.hpp"
+#include "scene/figure.hpp"
+
+namespace pita::render {
+
+using scene::Color;
+using scene::LineStyle;
+
+// An open or closed polyline: pattern frames, trajectories, spirals, outlines.
+struct Polyline {
+  std::vector<Point> points;
+  bool closed = false;
+  LineStyle line;
+};
+
+// Filled closed contours with the nonzero rule (stroke strips, banner glyphs).
+struct FilledPath {
+  std::vector<std::vector<Point>> contours;
+  Color fill;
+  double opacity = 1.0;
+  std::optional<LineStyle> outline;
+};
+
+// A circle (discrepancy), radius in world units.
+struct Circle {
+  Point center;
+  double radius = 0.0;
+  LineStyle line;
+  std::optional<Color> fill;
+};
+
+// A segment with an arrowhead at `to` (keyframes); the head has a fixed size
+// in pixels, so it is sized by the painter.
+struct ArrowShape {
+  Point from;
+  Point to;
+  LineStyle line;
+};
+
+// A text anchored at a point of the plane (labels); size in pixels.
+struct Label {
+  std::string text;
+  Point at;
+  double size = 12.0;
+  Color color;
+};
+
+using Shape = std::variant<Polyline, FilledPath, Circle, ArrowShape, Label>;
+
+// A shape and where it comes from: the JSON Pointer of its layer
+// ("/layers/2") and the frame (or keyframe) index it belongs to, -1 if none.
+struct Item {
+  std::string layer;
+  int index = -1;
+  Shape shape;
+};
+
+// The legend of a panel, painted in pixel space.
+struct LegendEntry {
+  Color color;
+  std::string text;
+};
+struct Legend {
+  scene::LegendLayer::Corner corner = scene::LegendLayer::Corner::top_left;
+  double size = 11.0;
+  std::vector<LegendEntry> entries;
+};
+
+struct Drawing {
+  std::vector<Item> items;
+  std::vector<Legend> legends;
+};
+
+// The smallest box holding every point of the drawing (circles and labels by
+// their centre or anchor only); nullopt for an empty drawing.
+std::optional<scene::Box> bounds(const Drawing& drawing);
+
+// True when every coordinate and radius of the drawing is finite.
+bool is_finite(const Drawing& drawing);
+
+}  // namespace pita::render

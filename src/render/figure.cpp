@@ -1,0 +1,188 @@
+#include "render/figure.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "render/painter.hpp"
+#include "render/panel_drawing.hpp"
+
+namespace pita::render {
+
+namespace {
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+bool finite_transform(const ViewTransform& t) {
+  return std::isfinite(t.scale) && std::isfinite(t.world_center.real()) &&
+         std::isfinite(t.world_center.imag());
+}
+
+void paint(cairo_t* cr, const scene::Scene& scene, const Figure& figure) {
+  const scene::Canvas& canvas = scene.canvas;
+  if (canvas.background) {
+    const scene::Color& c = *canvas.background;
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+    cairo_paint(cr);
+  }
+  if (!scene.title.empty()) {
+    paint_text(cr, scene.title, canvas.font, kTitleSize, Color{0.05, 0.05, 0.05, 1.0},
+               0.5 * canvas.width, 0.5 * (kTitleBand - 1.3 * kTitleSize), TextAlign::center);
+  }
+  for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
+    const PanelPlacement& place = figure.placements[i];
+    const std::string& title = scene.panels[i].title;
+    if (!title.empty()) {
+      paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0},
+                 place.title.x + 0.5 * place.title.width,
+                 place.title.y + 0.5 * (kPanelTitleBand - 1.3 * kPanelTitleSize), TextAlign::center);
+    }
+    paint_drawing(cr, figure.drawings[i], place, canvas.font);
+  }
+}
+
+void check(cairo_status_t status, const scene::Scene& scene) {
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw RenderError(scene.path, "", fmt::format("cairo failed: {}", cairo_status_to_string(status)));
+  }
+}
+
+// cairo numbers SVG surfaces ("surface5") with a counter global to the
+// process, so the second figure rendered by one process would differ from the
+// same figure rendered alone. Renumber them 1, 2, ... in order of appearance.
+// (Text is drawn as glyph outlines, so "surface" occurs only in cairo's ids.)
+std::string canonical_svg_ids(const std::string& svg) {
+  std::map<std::string, std::string> renamed;
+  std::string out;
+  out.reserve(svg.size());
+  static constexpr std::string_view kPrefix = "surface";
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t found = svg.find(kPrefix, at);
+    if (found == std::string::npos) break;
+    std::size_t end = found + kPrefix.size();
+    while (end < svg.size() && std::isdigit(static_cast<unsigned char>(svg[end]))) ++end;
+    out.append(svg, at, found + kPrefix.size() - at);
+    if (end > found + kPrefix.size()) {
+      const std::string number = svg.substr(found + kPrefix.size(), end - found - kPrefix.size());
+      const auto [it, inserted] = renamed.emplace(number, std::to_string(renamed.size() + 1));
+      out += it->second;
+    }
+    at = end;
+  }
+  out.append(svg, at, std::string::npos);
+  return out;
+}
+
+}  // namespace
+
+std::optional<Format> format_from_name(std::string_view name) {
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower == "svg") return Format::svg;
+  if (lower == "png") return Format::png;
+  if (lower == "pdf") return Format::pdf;
+  return std::nullopt;
+}
+
+std::string_view extension(Format format) {
+  switch (format) {
+    case Format::svg: return "svg";
+    case Format::png: return "png";
+    case Format::pdf: return "pdf";
+  }
+  return "";
+}
+
+Figure build_figure(const scene::Scene& scene) {
+  Figure figure;
+  if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
+  for (const scene::Panel& panel : scene.panels) {
+    Drawing drawing = panel_drawing(scene, panel);
+    if (!is_finite(drawing)) {
+      throw RenderError(scene.path, panel.pointer,
+                        "the figure has non-finite coordinates (the motion overflows)");
+    }
+    figure.drawings.push_back(std::move(drawing));
+  }
+  figure.placements = layout_panels(scene, figure.drawings);
+  for (std::size_t i = 0; i < figure.placements.size(); ++i) {
+    if (!finite_transform(figure.placements[i].transform)) {
+      throw RenderError(scene.path, scene.panels[i].pointer,
+                        "the figure's extent is too large to draw (coordinates overflow)");
+    }
+  }
+  return figure;
+}
+
+std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
+                          double scale) {
+  const double width = scene.canvas.width, height = scene.canvas.height;
+  std::string bytes;
+  SurfacePtr surface;
+  switch (format) {
+    case Format::svg:
+      surface.reset(cairo_svg_surface_create_for_stream(append, &bytes, width, height));
+      cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+      break;
+    case Format::pdf:
+      surface.reset(cairo_pdf_surface_create_for_stream(append, &bytes, width, height));
+      // A fixed date keeps the output byte-identical from run to run.
+      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE,
+                                     "2000-01-01T00:00:00Z");
+      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "pita");
+      if (!scene.title.empty()) {
+        cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, scene.title.c_str());
+      }
+      break;
+    case Format::png: {
+      const double w = std::round(width * scale), h = std::round(height * scale);
+      if (!(scale >= kMinScale && scale <= kMaxScale) || w > kMaxPngSide || h > kMaxPngSide) {
+        throw RenderError(scene.path, "/canvas",
+                          fmt::format("a PNG of {}x{} pixels at scale {} exceeds the limit of {} "
+                                      "pixels per side",
+                                      width, height, scale, kMaxPngSide));
+      }
+      surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(w),
+                                               static_cast<int>(h)));
+      break;
+    }
+  }
+  check(cairo_surface_status(surface.get()), scene);
+  {
+    ContextPtr cr(cairo_create(surface.get()));
+    if (format == Format::png) cairo_scale(cr.get(), scale, scale);
+    paint(cr.get(), scene, figure);
+    check(cairo_status(cr.get()), scene);
+  }
+  if (format == Format::png) {
+    cairo_surface_flush(surface.get());
+    check(cairo_surface_write_to_png_stream(surface.get(), append, &bytes), scene);
+  }
+  cairo_surface_finish(surface.get());
+  check(cairo_surface_status(surface.get()), scene);
+  return format == Format::svg ? canonical_svg_ids(bytes) : bytes;
+}
+
+}  // namespace pita::render

@@ -1,0 +1,41 @@
+// A whole figure: every panel's drawing laid out on the canvas and painted
+// with cairo onto an SVG, PNG or PDF surface, returned as the file's bytes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "render/drawing.hpp"
+#include "render/layout.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render {
+
+enum class Format { svg, png, pdf };
+
+// "svg", "png", "pdf" (any case) -> Format; nullopt otherwise.
+std::optional<Format> format_from_name(std::string_view name);
+std::string_view extension(Format format);  // "svg", ...
+
+// PNG size limits: each side at most kMaxPngSide pixels after scaling.
+inline constexpr int kMaxPngSide = 16384;
+inline constexpr double kMinScale = 0.01;
+inline constexpr double kMaxScale = 16.0;
+
+// The drawings of every panel and their placements (what `render` paints).
+struct Figure {
+  std::vector<Drawing> drawings;
+  std::vector<PanelPlacement> placements;
+};
+// Throws RenderError (render/panel_drawing.hpp).
+Figure build_figure(const scene::Scene& scene);
+
+// The file's bytes. `scale` multiplies the PNG's pixel size (SVG and PDF are
+// vector: 1 canvas pixel = 1 unit). The same scene gives the same bytes.
+// Throws RenderError.
+std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
+                          double scale = 1.0);
+
+}  // namespace pita::render

@@ -1,0 +1,51 @@
+// Where each panel goes on the canvas and how the plane maps onto it. All
+// sizes are canvas pixels (at scale 1); y of the canvas points down.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render {
+
+inline constexpr double kTitleSize = 18.0;       // scene title, pixels
+inline constexpr double kTitleBand = 34.0;       // height reserved for it
+inline constexpr double kPanelTitleSize = 13.0;  // panel titles
+inline constexpr double kPanelTitleBand = 22.0;
+
+struct Rect {
+  double x = 0, y = 0, width = 0, height = 0;
+};
+
+// The similarity from the plane to the canvas: a uniform scale about the
+// view's centre, y flipped when the scene's y axis points up.
+struct ViewTransform {
+  Point world_center;
+  Point canvas_center;
+  double scale = 1.0;  // pixels per world unit
+  bool y_up = true;
+
+  Point operator()(Point world) const {
+    const Point d = (world - world_center) * scale;
+    return canvas_center + Point{d.real(), y_up ? -d.imag() : d.imag()};
+  }
+};
+
+struct PanelPlacement {
+  Rect cell;        // the panel's share of the canvas
+  Rect title;       // its title band (height 0 without a title)
+  Rect plot;        // where its drawing goes, margins removed
+  scene::Box view;  // the world box shown
+  ViewTransform transform;
+};
+
+// One placement per panel, for drawings[i] of panel i: the grid of
+// canvas.columns columns (default ceil(sqrt(n))) below the scene's title, and
+// each panel's view (canvas.view, else its own drawing's bounds, or the union
+// of all for "shared"), fitted into its plot area keeping proportions.
+std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
+                                          const std::vector<Drawing>& drawings);
+
+}  // namespace pita::render

@@ -1,0 +1,166 @@
+#include "render/painter.hpp"
+
+#include <pango/pangocairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace pita::render {
+
+namespace {
+
+void set_color(cairo_t* cr, const Color& c, double opacity) {
+  cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a * opacity);
+}
+
+void set_line(cairo_t* cr, const LineStyle& line) {
+  set_color(cr, line.color, line.opacity);
+  cairo_set_line_width(cr, line.width);
+  cairo_set_dash(cr, line.dash.empty() ? nullptr : line.dash.data(),
+                 static_cast<int>(line.dash.size()), 0.0);
+}
+
+void move_to(cairo_t* cr, Point p) { cairo_move_to(cr, p.real(), p.imag()); }
+void line_to(cairo_t* cr, Point p) { cairo_line_to(cr, p.real(), p.imag()); }
+
+struct ShapePainter {
+  cairo_t* cr;
+  const ViewTransform& view;
+  const std::string& font;
+
+  void operator()(const Polyline& s) const {
+    if (s.points.size() < 2) return;
+    move_to(cr, view(s.points.front()));
+    for (std::size_t i = 1; i < s.points.size(); ++i) line_to(cr, view(s.points[i]));
+    if (s.closed) cairo_close_path(cr);
+    set_line(cr, s.line);
+    cairo_stroke(cr);
+  }
+
+  void operator()(const FilledPath& s) const {
+    for (const auto& contour : s.contours) {
+      if (contour.size() < 3) continue;
+      move_to(cr, view(contour.front()));
+      for (std::size_t i = 1; i < contour.size(); ++i) line_to(cr, view(contour[i]));
+      cairo_close_path(cr);
+    }
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    set_color(cr, s.fill, s.opacity);
+    if (s.outline) {
+      cairo_fill_preserve(cr);
+      set_line(cr, *s.outline);
+      cairo_stroke(cr);
+    } else {
+      cairo_fill(cr);
+    }
+  }
+
+  void operator()(const Circle& s) const {
+    const Point c = view(s.center);
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, c.real(), c.imag(), s.radius * view.scale, 0.0, 2.0 * M_PI);
+    if (s.fill) {
+      set_color(cr, *s.fill, s.line.opacity);
+      cairo_fill_preserve(cr);
+    }
+    set_line(cr, s.line);
+    cairo_stroke(cr);
+  }
+
+  void operator()(const ArrowShape& s) const {
+    const Point from = view(s.from), to = view(s.to);
+    const double length = std::abs(to - from);
+    const double head = std::max(kHeadMin, kHeadPerWidth * s.line.width);
+    set_line(cr, s.line);
+    if (length > 0.0) {
+      const Point direction = (to - from) / length;
+      const double h = std::min(head, length);
+      const Point base = to - direction * h;
+      move_to(cr, from);
+      line_to(cr, base + direction * (0.3 * h));  // under the head, no gap
+      cairo_stroke(cr);
+      const Point side = direction * Point{0.0, 1.0} * (0.4 * h);
+      move_to(cr, to);
+      line_to(cr, base + side);
+      line_to(cr, base - side);
+      cairo_close_path(cr);
+      cairo_fill(cr);
+    }
+  }
+
+  void operator()(const Label& s) const {
+    const Point at = view(s.at);
+    paint_text(cr, s.text, font, s.size, s.color, at.real(), at.imag() - 0.6 * s.size,
+               TextAlign::left);
+  }
+};
+
+void unref(gpointer object) { g_object_unref(object); }
+
+void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std::string& font) {
+  const double line_height = 1.5 * legend.size, swatch = 2.0 * legend.size;
+  const double height = line_height * static_cast<double>(legend.entries.size());
+  const bool right = legend.corner == scene::LegendLayer::Corner::top_right ||
+                     legend.corner == scene::LegendLayer::Corner::bottom_right;
+  const bool bottom = legend.corner == scene::LegendLayer::Corner::bottom_left ||
+                      legend.corner == scene::LegendLayer::Corner::bottom_right;
+  const double pad = 6.0, width = swatch + 9.0 * legend.size;
+  const double x = right ? area.x + area.width - width - pad : area.x + pad;
+  double y = bottom ? area.y + area.height - height - pad : area.y + pad;
+  for (const LegendEntry& entry : legend.entries) {
+    const double mid = y + 0.5 * line_height;
+    cairo_move_to(cr, x, mid);
+    cairo_line_to(cr, x + swatch, mid);
+    set_line(cr, LineStyle{entry.color, 2.0, 1.0, {}});
+    cairo_stroke(cr);
+    paint_text(cr, entry.text, font, legend.size, Color{0.1, 0.1, 0.1, 1.0}, x + swatch + 5.0,
+               mid - 0.65 * legend.size, TextAlign::left);
+    y += line_height;
+  }
+}
+
+}  // namespace
+
+void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
+                const Color& color, double x, double y, TextAlign align) {
+  std::unique_ptr<PangoLayout, decltype(&unref)> layout(pango_cairo_create_layout(cr), &unref);
+  cairo_font_options_t* options = cairo_font_options_create();
+  cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
+  cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
+  pango_cairo_context_set_font_options(pango_layout_get_context(layout.get()), options);
+  cairo_font_options_destroy(options);
+  pango_layout_context_changed(layout.get());
+  PangoFontDescription* description = pango_font_description_from_string(font.c_str());
+  pango_font_description_set_absolute_size(description, size * PANGO_SCALE);
+  pango_layout_set_font_description(layout.get(), description);
+  pango_font_description_free(description);
+  pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
+  int width = 0, height = 0;
+  pango_layout_get_pixel_size(layout.get(), &width, &height);
+  const double left = align == TextAlign::left     ? x
+                      : align == TextAlign::center ? x - 0.5 * width
+                                                   : x - width;
+  set_color(cr, color, 1.0);
+  cairo_move_to(cr, left, y);
+  pango_cairo_show_layout(cr, layout.get());
+  cairo_new_path(cr);
+}
+
+void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
+                   const std::string& font) {
+  cairo_save(cr);
+  cairo_rectangle(cr, placement.cell.x, placement.cell.y + placement.title.height,
+                  placement.cell.width, placement.cell.height - placement.title.height);
+  cairo_clip(cr);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  const ShapePainter painter{cr, placement.transform, font};
+  for (const Item& item : drawing.items) std::visit(painter, item.shape);
+  const Rect area{placement.cell.x, placement.cell.y + placement.title.height, placement.cell.width,
+                  placement.cell.height - placement.title.height};
+  for (const Legend& legend : drawing.legends) paint_legend(cr, legend, area, font);
+  cairo_restore(cr);
+}
+
+}  // namespace pita::render

@@ -1,0 +1,26 @@
+// Paints drawings, titles and legends on a cairo context whose user units are
+// canvas pixels.
+#pragma once
+
+#include <cairo.h>
+
+#include <string>
+
+#include "render/drawing.hpp"
+#include "render/layout.hpp"
+
+namespace pita::render {
+
+// Arrowheads: length in pixels, max(kHeadMin, kHeadPerWidth * line width).
+inline constexpr double kHeadMin = 8.0;
+inline constexpr double kHeadPerWidth = 4.0;
+
+void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
+                   const std::string& font);
+
+enum class TextAlign { left, center, right };
+// Draws `text` with its box's top at y, aligned on x.
+void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
+                const Color& color, double x, double y, TextAlign align);
+
+}  // namespace pita::render

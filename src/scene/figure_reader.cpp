@@ -1,0 +1,425 @@
+#include "scene/figure_reader.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <span>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "scene/color.hpp"
+#include "scene/did_you_mean.hpp"
+
+namespace pita::scene::detail {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+
+// Bounds shared by several fields (schema/scene.schema.json says the same).
+constexpr Interval kLineWidth{0.0, 100.0, /*min_open=*/true};
+constexpr Interval kOpacity{0.0, 1.0};
+constexpr Interval kPositive{0.0, kInfinity, /*min_open=*/true};
+constexpr Interval kFraction{0.0, 0.45};  // margin, padding
+constexpr Interval kTextSize{0.0, 200.0, /*min_open=*/true};
+constexpr std::size_t kMaxDashes = 16;
+constexpr std::size_t kMaxKeyframeColors = 16;
+constexpr int kMaxColumns = 64;
+
+constexpr std::array<std::string_view, 8> kCanvasFields = {
+    "width", "height", "background", "view", "margin", "y_axis", "columns", "font"};
+constexpr std::array<std::string_view, 2> kBoxFields = {"min", "max"};
+constexpr std::array<std::string_view, 4> kLineFields = {"color", "width", "opacity", "dash"};
+
+constexpr std::array<std::string_view, 8> kPatternFields = {
+    "type", "color", "width", "opacity", "dash", "extended", "samples", "range"};
+constexpr std::array<std::string_view, 7> kKeyframesFields = {
+    "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
+constexpr std::array<std::string_view, 8> kTrajectoryFields = {
+    "type", "point", "samples", "range", "color", "width", "opacity", "dash"};
+constexpr std::array<std::string_view, 6> kStrokeFields = {"type",    "fill",    "opacity",
+                                                           "outline", "samples", "range"};
+constexpr std::array<std::string_view, 9> kBannerFields = {
+    "type", "text", "font", "fill", "opacity", "outline", "padding", "samples", "range"};
+constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
+    "type", "predictor", "method", "scale", "color", "width", "opacity", "dash", "fill", "samples"};
+constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
+constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
+
+// The fields of each layer type, in the order of kLayerTypes.
+constexpr std::array<std::span<const std::string_view>, 8> kLayerFields = {
+    kPatternFields, kKeyframesFields, kTrajectoryFields, kStrokeFields,
+    kBannerFields,  kDiscrepancyFields, kLabelFields,   kLegendFields};
+
+constexpr std::array<std::string_view, 2> kYAxisNames = {"up", "down"};
+constexpr std::array<bool, 2> kYUp = {true, false};
+constexpr std::array<std::string_view, 3> kPointNames = {"p", "q", "mid"};
+constexpr std::array<TrackedPoint, 3> kPoints = {TrackedPoint::start, TrackedPoint::end,
+                                                 TrackedPoint::middle};
+constexpr std::array<std::string_view, 2> kSpiralCenterNames = {"start", "midpoint"};
+constexpr std::array<SpiralCenter, 2> kSpiralCenters = {SpiralCenter::start,
+                                                        SpiralCenter::middle};
+constexpr std::array<std::string_view, 3> kPredictorNames = {"previous", "average", "pita"};
+constexpr std::array<Predictor, 3> kPredictors = {Predictor::previous, Predictor::average,
+                                                  Predictor::pita};
+constexpr std::array<std::string_view, 4> kCornerNames = {"top-left", "top-right", "bottom-left",
+                                                          "bottom-right"};
+constexpr std::array<LegendLayer::Corner, 4> kCorners = {
+    LegendLayer::Corner::top_left, LegendLayer::Corner::top_right,
+    LegendLayer::Corner::bottom_left, LegendLayer::Corner::bottom_right};
+
+// An object being read: its members and where it is.
+class Fields {
+ public:
+  Fields(const JsonReader& reader, const Json& object, std::string pointer)
+      : reader_(reader), object_(object), pointer_(std::move(pointer)) {}
+
+  const JsonReader& reader() const { return reader_; }
+  const Json& object() const { return object_; }
+  const std::string& pointer() const { return pointer_; }
+  const Json* get(std::string_view key) const {
+    return JsonReader::member(object_, std::string(key));
+  }
+  std::string at(std::string_view key) const { return member_pointer(pointer_, key); }
+
+  // Each reads the member `key` into `out` when it is there.
+  void number(std::string_view key, const Interval& bounds, double& out) const {
+    if (const Json* value = get(key)) out = reader_.number(*value, at(key), bounds);
+  }
+  void boolean(std::string_view key, bool& out) const {
+    if (const Json* value = get(key)) out = reader_.boolean(*value, at(key));
+  }
+  void color(std::string_view key, Color& out) const {
+    if (const Json* value = get(key)) out = reader_.color(*value, at(key));
+  }
+  void color(std::string_view key, std::optional<Color>& out) const {
+    if (const Json* value = get(key)) out = reader_.color(*value, at(key));
+  }
+  void text(std::string_view key, std::size_t max_length, std::string& out) const {
+    if (const Json* value = get(key)) out = reader_.text(*value, at(key), max_length);
+  }
+  void integer(std::string_view key, int min, int max, int& out) const {
+    if (const Json* value = get(key)) out = reader_.integer(*value, at(key), min, max);
+  }
+  void integer(std::string_view key, int min, int max, std::optional<int>& out) const {
+    if (const Json* value = get(key)) out = reader_.integer(*value, at(key), min, max);
+  }
+  template <typename T, std::size_t N>
+  void choice(std::string_view key, const std::array<std::string_view, N>& names,
+              const std::array<T, N>& values, T& out) const {
+    if (const Json* value = get(key)) out = reader_.choice(*value, at(key), names, values);
+  }
+
+  const Json& required(std::string_view key, std::string_view what) const {
+    const Json* value = get(key);
+    if (value == nullptr) reader_.fail(at(key), fmt::format("missing required field ({})", what));
+    return *value;
+  }
+
+ private:
+  const JsonReader& reader_;
+  const Json& object_;
+  std::string pointer_;
+};
+
+// "dash": [on, off, ...], at most kMaxDashes lengths > 0; [] is solid.
+std::vector<double> read_dash(const JsonReader& reader, const Json& value,
+                              const std::string& pointer) {
+  if (!value.is_array()) {
+    reader.fail(pointer, fmt::format("must be an array of at most {} dash lengths > 0 (got {})",
+                                     kMaxDashes, value_text(value)));
+  }
+  if (value.size() > kMaxDashes) {
+    reader.fail(pointer, fmt::format("must have at most {} dash lengths (got {})", kMaxDashes,
+                                     value.size()));
+  }
+  std::vector<double> dash;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    dash.push_back(reader.number(value[i], element_pointer(pointer, i), kPositive));
+  }
+  return dash;
+}
+
+// "color", "width", "opacity", "dash" of a line, over `line`'s defaults.
+void read_line(const Fields& fields, LineStyle& line) {
+  fields.color("color", line.color);
+  fields.number("width", kLineWidth, line.width);
+  fields.number("opacity", kOpacity, line.opacity);
+  if (const Json* dash = fields.get("dash")) {
+    line.dash = read_dash(fields.reader(), *dash, fields.at("dash"));
+  }
+}
+
+// "outline": {"color", "width", "opacity", "dash"} over LineStyle's defaults.
+void read_outline(const Fields& fields, std::optional<LineStyle>& out) {
+  const Json* value = fields.get("outline");
+  if (value == nullptr) return;
+  const std::string pointer = fields.at("outline");
+  fields.reader().object(*value, pointer, "an outline");
+  fields.reader().check_fields(*value, pointer, kLineFields);
+  LineStyle line;
+  read_line(Fields(fields.reader(), *value, pointer), line);
+  out = line;
+}
+
+// "range": [from, to], from < to.
+void read_range(const Fields& fields, std::optional<TimeRange>& out) {
+  const Json* value = fields.get("range");
+  if (value == nullptr) return;
+  const std::string pointer = fields.at("range");
+  if (!value->is_array() || value->size() != 2) {
+    fields.reader().fail(pointer, "must be an array of two times [from, to] (got " +
+                                      value_text(*value) + ")");
+  }
+  const double from = fields.reader().number((*value)[0], element_pointer(pointer, 0));
+  const double to = fields.reader().number((*value)[1], element_pointer(pointer, 1));
+  if (!(to > from)) {
+    fields.reader().fail(
+        element_pointer(pointer, 1),
+        fmt::format("the end of a range must be greater than its start {} (got {})",
+                    number_text(from), number_text(to)));
+  }
+  out = TimeRange{from, to};
+}
+
+void read_figure_samples(const Fields& fields, std::optional<int>& out) {
+  fields.integer("samples", 2, kMaxFigureSamples, out);
+}
+
+PatternLayer read_pattern(const Fields& fields) {
+  PatternLayer layer;
+  read_line(fields, layer.line);
+  fields.boolean("extended", layer.extended);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+KeyframesLayer read_keyframes_layer(const Fields& fields) {
+  KeyframesLayer layer;
+  if (const Json* colors = fields.get("colors")) {
+    const std::string pointer = fields.at("colors");
+    if (!colors->is_array() || colors->empty() || colors->size() > kMaxKeyframeColors) {
+      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} colors (got {})",
+                                                kMaxKeyframeColors, value_text(*colors)));
+    }
+    layer.colors.clear();
+    for (std::size_t i = 0; i < colors->size(); ++i) {
+      layer.colors.push_back(fields.reader().color((*colors)[i], element_pointer(pointer, i)));
+    }
+  }
+  fields.number("width", kLineWidth, layer.width);
+  fields.number("opacity", kOpacity, layer.opacity);
+  fields.boolean("winding", layer.winding);
+  fields.choice("spiral_center", kSpiralCenterNames, kSpiralCenters, layer.spiral_center);
+  fields.boolean("extended", layer.extended);
+  return layer;
+}
+
+TrajectoryLayer read_trajectory(const Fields& fields) {
+  TrajectoryLayer layer;
+  fields.choice("point", kPointNames, kPoints, layer.point);
+  fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
+  read_range(fields, layer.range);
+  read_line(fields, layer.line);
+  return layer;
+}
+
+StrokeLayer read_stroke(const Fields& fields) {
+  StrokeLayer layer;
+  fields.color("fill", layer.fill);
+  fields.number("opacity", kOpacity, layer.opacity);
+  read_outline(fields, layer.outline);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+BannerLayer read_banner(const Fields& fields) {
+  BannerLayer layer;
+  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"),
+                                    kMaxTextLength);
+  fields.text("font", kUnbounded, layer.font);
+  fields.color("fill", layer.fill);
+  fields.number("opacity", kOpacity, layer.opacity);
+  read_outline(fields, layer.outline);
+  fields.number("padding", kFraction, layer.padding);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+DiscrepancyLayer read_discrepancy(const Fields& fields) {
+  DiscrepancyLayer layer;
+  fields.choice("predictor", kPredictorNames, kPredictors, layer.predictor);
+  if (const Json* method = fields.get("method")) {
+    layer.method = fields.reader().method(*method, fields.at("method"));
+  }
+  fields.number("scale", kPositive, layer.scale);
+  read_line(fields, layer.line);
+  fields.color("fill", layer.fill);
+  read_figure_samples(fields, layer.samples);
+  return layer;
+}
+
+LabelLayer read_label(const Fields& fields) {
+  LabelLayer layer;
+  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"),
+                                    kMaxTextLength);
+  layer.at = fields.reader().point(fields.required("at", "the point [x, y] of the text"),
+                                   fields.at("at"));
+  fields.number("size", kTextSize, layer.size);
+  fields.color("color", layer.color);
+  return layer;
+}
+
+LegendLayer read_legend(const Fields& fields) {
+  LegendLayer layer;
+  fields.choice("corner", kCornerNames, kCorners, layer.corner);
+  fields.number("size", kTextSize, layer.size);
+  return layer;
+}
+
+// The index in kLayerTypes of the layer's "type".
+std::size_t read_layer_type(const Fields& fields) {
+  const Json& value = fields.required("type", "the layer type: " + quoted_choices(kLayerTypes));
+  const std::string pointer = fields.at("type");
+  if (!value.is_string()) {
+    fields.reader().fail(pointer, "must be " + quoted_choices(kLayerTypes) + " (got " +
+                                      value_text(value) + ")");
+  }
+  const std::string name = value.get<std::string>();
+  const auto found = std::find(kLayerTypes.begin(), kLayerTypes.end(), name);
+  if (found != kLayerTypes.end()) return static_cast<std::size_t>(found - kLayerTypes.begin());
+  const std::vector<std::string> suggestions = closest_names(name, kLayerTypes);
+  std::string reason = fmt::format("unknown layer type \"{}\"", name);
+  reason += suggestions.empty() ? "; layer types: " + joined(kLayerTypes)
+                                : did_you_mean(suggestions);
+  fields.reader().fail(pointer, reason);
+}
+
+// Fails at the first field that a layer of type `type` does not take: one that
+// another layer type takes says so, any other gets a "did you mean" among the
+// fields of this type.
+void check_layer_fields(const Fields& fields, std::size_t type) {
+  const std::span<const std::string_view> known = kLayerFields[type];
+  for (const auto& [key, value] : fields.object().items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const bool elsewhere = std::any_of(kLayerFields.begin(), kLayerFields.end(), [&](auto names) {
+      return std::find(names.begin(), names.end(), key) != names.end();
+    });
+    if (!elsewhere) break;  // check_fields below reports it
+    fields.reader().fail(fields.at(key),
+                         fmt::format("field \"{}\" is not used by a \"{}\" layer (its fields: {})",
+                                     key, kLayerTypes[type], joined(known)));
+  }
+  fields.reader().check_fields(fields.object(), fields.pointer(), known);
+}
+
+Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  reader.object(value, pointer, "a layer");
+  const Fields fields(reader, value, pointer);
+  const std::size_t type = read_layer_type(fields);
+  check_layer_fields(fields, type);
+  switch (type) {
+    case 0: return read_pattern(fields);
+    case 1: return read_keyframes_layer(fields);
+    case 2: return read_trajectory(fields);
+    case 3: return read_stroke(fields);
+    case 4: return read_banner(fields);
+    case 5: return read_discrepancy(fields);
+    case 6: return read_label(fields);
+    default: return read_legend(fields);
+  }
+}
+
+// "view": "auto", "shared" or {"min": [x, y], "max": [x, y]}.
+void read_view(const JsonReader& reader, const Json& value, const std::string& pointer,
+               Canvas& canvas) {
+  if (value.is_string() && value.get<std::string>() == "auto") {
+    canvas.view.reset();
+    canvas.shared_fit = false;
+    return;
+  }
+  if (value.is_string() && value.get<std::string>() == "shared") {
+    canvas.view.reset();
+    canvas.shared_fit = true;
+    return;
+  }
+  if (!value.is_object()) {
+    reader.fail(pointer, "must be \"auto\", \"shared\" or a box {\"min\": [x, y], \"max\": [x, y]} "
+                         "(got " + value_text(value) + ")");
+  }
+  reader.check_fields(value, pointer, kBoxFields);
+  const Fields box(reader, value, pointer);
+  const Point min = reader.point(box.required("min", "the corner [x, y] with the least x and y"),
+                                 box.at("min"));
+  const Point max = reader.point(box.required("max", "the corner [x, y] with the greatest x and y"),
+                                 box.at("max"));
+  const std::array<double, 2> low = {min.real(), min.imag()};
+  const std::array<double, 2> high = {max.real(), max.imag()};
+  for (std::size_t axis = 0; axis < 2; ++axis) {
+    if (!(high[axis] > low[axis])) {
+      const char* name = axis == 0 ? "x" : "y";
+      reader.fail(element_pointer(box.at("max"), axis),
+                  fmt::format("max {} must be greater than min {} {} (got {})", name, name,
+                              number_text(low[axis]), number_text(high[axis])));
+    }
+  }
+  canvas.view = Box{min, max};
+  canvas.shared_fit = false;
+}
+
+}  // namespace
+
+Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  reader.object(value, pointer, "the canvas");
+  reader.check_fields(value, pointer, kCanvasFields);
+  const Fields fields(reader, value, pointer);
+  Canvas canvas;
+  fields.integer("width", kMinCanvasSide, kMaxCanvasSide, canvas.width);
+  fields.integer("height", kMinCanvasSide, kMaxCanvasSide, canvas.height);
+  if (const Json* background = fields.get("background")) {
+    const std::string at = fields.at("background");
+    if (background->is_string() && background->get<std::string>() == "none") {
+      canvas.background.reset();
+    } else {
+      const std::array<std::string_view, 1> none = {"none"};
+      if (background->is_string() && !closest_names(background->get<std::string>(), none).empty()) {
+        try {
+          parse_color(background->get<std::string>());
+        } catch (const std::invalid_argument&) {
+          reader.fail(at, fmt::format("unknown color \"{}\"; did you mean \"none\" (transparent)?",
+                                      background->get<std::string>()));
+        }
+      }
+      canvas.background = reader.color(*background, at);
+    }
+  }
+  if (const Json* view = fields.get("view")) read_view(reader, *view, fields.at("view"), canvas);
+  fields.number("margin", kFraction, canvas.margin);
+  fields.choice("y_axis", kYAxisNames, kYUp, canvas.y_up);
+  fields.integer("columns", 1, kMaxColumns, canvas.columns);
+  fields.text("font", kUnbounded, canvas.font);
+  return canvas;
+}
+
+std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
+                               const std::string& pointer) {
+  if (!value.is_array()) {
+    reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
+  }
+  if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
+    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
+                                     value.size()));
+  }
+  std::vector<Layer> layers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    layers.push_back(read_layer(reader, value[i], element_pointer(pointer, i)));
+  }
+  return layers;
+}
+
+}  // namespace pita::scene::detail

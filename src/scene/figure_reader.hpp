@@ -1,0 +1,27 @@
+// Reading the figure part of a scene: "canvas" and "layers" (scene.cpp reads
+// "title" and "panels", which need the scene's method and keyframes).
+// Internal to src/scene/.
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene/figure.hpp"
+#include "scene/json_reader.hpp"
+
+namespace pita::scene::detail {
+
+// The layer types, in the order messages and the schema list them.
+inline constexpr std::array<std::string_view, 8> kLayerTypes = {
+    "pattern", "keyframes", "trajectory", "stroke", "banner", "discrepancy", "label", "legend"};
+
+// "canvas": every field optional, the defaults of figure.hpp otherwise.
+Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer);
+
+// "layers": an array of at most kMaxLayers layers, each {"type": ..., ...}.
+std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
+                               const std::string& pointer);
+
+}  // namespace pita::scene::detail

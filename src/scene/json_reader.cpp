@@ -1,0 +1,354 @@
+#include "scene/json_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "scene/color.hpp"
+#include "scene/did_you_mean.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::scene::detail {
+
+namespace {
+
+constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
+constexpr std::array<std::string_view, 3> kOptionFields = {"anchor", "path_mean",
+                                                           "magnitude_mean"};
+
+constexpr std::array<std::string_view, 2> kAnchorNames = {"start", "midpoint"};
+constexpr std::array<Anchor, 2> kAnchors = {Anchor::start, Anchor::midpoint};
+constexpr std::array<std::string_view, 3> kMeanNames = {"arithmetic", "geometric", "harmonic"};
+constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geometric,
+                                            MeanKind::harmonic};
+
+// The registry ranks its suggestions best first; a few are enough.
+constexpr std::size_t kMaxMethodSuggestions = 3;
+
+// Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.
+std::size_t character_count(std::string_view text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0U) != 0x80U;
+  }));
+}
+
+std::string interval_text(const Interval& bounds) {
+  const bool has_min = std::isfinite(bounds.min);
+  const bool has_max = std::isfinite(bounds.max);
+  if (has_min && has_max && !bounds.min_open && !bounds.max_open) {
+    return fmt::format("between {} and {}", number_text(bounds.min), number_text(bounds.max));
+  }
+  std::string text;
+  if (has_min) text += fmt::format("{} {}", bounds.min_open ? ">" : ">=", number_text(bounds.min));
+  if (has_max) {
+    if (!text.empty()) text += " and ";
+    text += fmt::format("{} {}", bounds.max_open ? "<" : "<=", number_text(bounds.max));
+  }
+  return text;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- messages
+
+std::string member_pointer(const std::string& parent, std::string_view key) {
+  std::string pointer = parent + '/';
+  for (char c : key) {
+    if (c == '~') {
+      pointer += "~0";
+    } else if (c == '/') {
+      pointer += "~1";
+    } else {
+      pointer += c;
+    }
+  }
+  return pointer;
+}
+
+std::string element_pointer(const std::string& parent, std::size_t index) {
+  return parent + '/' + std::to_string(index);
+}
+
+std::string number_text(double x) { return fmt::format("{}", x); }
+
+std::string value_text(const Json& value) {
+  constexpr std::size_t kMaxShown = 40;
+  if (value.is_number()) return number_text(value.get<double>());
+  // ensure_ascii keeps the text valid UTF-8 however it is cut.
+  std::string text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
+  if (text.size() > kMaxShown) text = text.substr(0, kMaxShown - 3) + "...";
+  switch (value.type()) {
+    case Json::value_t::string:
+      return "string " + text;
+    case Json::value_t::array:
+      return "array " + text;
+    case Json::value_t::object:
+      return "object " + text;
+    default:
+      return text;  // null, true, false
+  }
+}
+
+std::string joined(std::span<const std::string_view> names) {
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) text += ", ";
+    text += names[i];
+  }
+  return text;
+}
+
+std::string quoted_choices(std::span<const std::string_view> names) {
+  const std::vector<std::string> copies(names.begin(), names.end());
+  return alternatives(copies);
+}
+
+std::string unknown_method_reason(std::string_view name) {
+  std::string reason = fmt::format("unknown method \"{}\"", name);
+  std::vector<std::string> suggestions = suggest_methods(name);
+  if (suggestions.size() > kMaxMethodSuggestions) suggestions.resize(kMaxMethodSuggestions);
+  if (!suggestions.empty()) return reason + did_you_mean(suggestions, /*quoted=*/false);
+  std::string known;
+  for (const MethodInfo& method : all_methods()) {
+    if (!known.empty()) known += ", ";
+    known += method.id;
+  }
+  return reason + "; known methods: " + known;
+}
+
+std::string keyframe_count_reason(Method method, std::size_t count) {
+  const MethodInfo& about = info(method);
+  std::string name(about.id);
+  if (!about.mnemonic.empty() && about.mnemonic != about.id) {
+    name += fmt::format(" ({})", about.mnemonic);
+  }
+  return fmt::format("method {} takes exactly {} keyframes (got {})", name, about.keyframe_count,
+                     count);
+}
+
+// ---------------------------------------------------------------- reader
+
+void JsonReader::fail(const std::string& pointer, std::string reason) const {
+  throw SceneError(file_, pointer, std::move(reason));
+}
+
+const Json* JsonReader::member(const Json& object, const std::string& key) {
+  const auto found = object.find(key);
+  return found == object.end() ? nullptr : &*found;
+}
+
+void JsonReader::object(const Json& value, const std::string& pointer,
+                        std::string_view what) const {
+  if (!value.is_object()) {
+    fail(pointer, fmt::format("{} must be an object (got {})", what, value_text(value)));
+  }
+}
+
+void JsonReader::check_fields(const Json& object, const std::string& pointer,
+                              std::span<const std::string_view> known) const {
+  for (const auto& [key, value] : object.items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const std::vector<std::string> suggestions = closest_names(key, known);
+    std::string reason = fmt::format("unknown field \"{}\"", key);
+    reason += suggestions.empty() ? "; known fields: " + joined(known) : did_you_mean(suggestions);
+    fail(member_pointer(pointer, key), reason);
+  }
+}
+
+std::string JsonReader::string(const Json& value, const std::string& pointer) const {
+  if (!value.is_string()) fail(pointer, "must be a string (got " + value_text(value) + ")");
+  return value.get<std::string>();
+}
+
+std::string JsonReader::text(const Json& value, const std::string& pointer,
+                             std::size_t max_length) const {
+  std::string result = string(value, pointer);
+  if (result.empty()) fail(pointer, "must not be empty");
+  const std::size_t length = character_count(result);
+  if (length > max_length) {
+    fail(pointer, fmt::format("must be at most {} characters long (got {})", max_length, length));
+  }
+  return result;
+}
+
+bool JsonReader::boolean(const Json& value, const std::string& pointer) const {
+  if (!value.is_boolean()) {
+    fail(pointer, "must be true or false (got " + value_text(value) + ")");
+  }
+  return value.get<bool>();
+}
+
+// nlohmann 3.11 already refuses numbers that overflow (see parse_json);
+// other versions read them as inf.
+double JsonReader::number(const Json& value, const std::string& pointer) const {
+  if (!value.is_number()) fail(pointer, "must be a number (got " + value_text(value) + ")");
+  const double x = value.get<double>();
+  if (!std::isfinite(x)) fail(pointer, "must be a finite number (got " + number_text(x) + ")");
+  return x;
+}
+
+double JsonReader::number(const Json& value, const std::string& pointer,
+                          const Interval& bounds) const {
+  const double x = number(value, pointer);
+  const bool above = bounds.min_open ? x > bounds.min : x >= bounds.min;
+  const bool below = bounds.max_open ? x < bounds.max : x <= bounds.max;
+  if (!above || !below) {
+    fail(pointer, fmt::format("must be {} (got {})", interval_text(bounds), number_text(x)));
+  }
+  return x;
+}
+
+double JsonReader::integer(const Json& value, const std::string& pointer) const {
+  const bool ok = value.is_number() && std::isfinite(value.get<double>()) &&
+                  value.get<double>() == std::trunc(value.get<double>());
+  if (!ok) fail(pointer, "must be an integer (got " + value_text(value) + ")");
+  return value.get<double>();
+}
+
+int JsonReader::integer(const Json& value, const std::string& pointer, int min, int max) const {
+  const double x = integer(value, pointer);
+  if (x < min || x > max) {
+    fail(pointer, fmt::format("must be an integer between {} and {} (got {})", min, max,
+                              number_text(x)));
+  }
+  return static_cast<int>(x);
+}
+
+Point JsonReader::point(const Json& value, const std::string& pointer) const {
+  if (!value.is_array() || value.size() != 2) {
+    fail(pointer, "must be an array of two numbers [x, y] (got " + value_text(value) + ")");
+  }
+  return make_point(number(value[0], element_pointer(pointer, 0)),
+                    number(value[1], element_pointer(pointer, 1)));
+}
+
+Color JsonReader::color(const Json& value, const std::string& pointer) const {
+  if (!value.is_string()) {
+    fail(pointer, "must be a color: a string \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or a name such "
+                  "as \"red\" (got " + value_text(value) + ")");
+  }
+  try {
+    return parse_color(value.get<std::string>());
+  } catch (const std::invalid_argument& error) {
+    fail(pointer, error.what());
+  }
+}
+
+Method JsonReader::method(const Json& value, const std::string& pointer) const {
+  const std::string name = string(value, pointer);
+  const std::optional<Method> found = find_method(name);
+  if (!found) fail(pointer, unknown_method_reason(name));
+  return *found;
+}
+
+void JsonReader::choice_failed(const Json& value, const std::string& pointer,
+                               std::span<const std::string_view> names) const {
+  fail(pointer, "must be " + quoted_choices(names) + " (got " + value_text(value) + ")");
+}
+
+MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
+                                  MethodOptions base) const {
+  if (!value.is_object()) fail(pointer, "must be an object (got " + value_text(value) + ")");
+  check_fields(value, pointer, kOptionFields);
+  if (const Json* anchor = member(value, "anchor")) {
+    base.anchor = choice(*anchor, pointer + "/anchor", kAnchorNames, kAnchors);
+  }
+  if (const Json* mean = member(value, "path_mean")) {
+    base.path_mean = choice(*mean, pointer + "/path_mean", kMeanNames, kMeans);
+  }
+  if (const Json* mean = member(value, "magnitude_mean")) {
+    base.magnitude_mean = choice(*mean, pointer + "/magnitude_mean", kMeanNames, kMeans);
+  }
+  return base;
+}
+
+std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string& pointer,
+                                            Method method) const {
+  if (!value.is_array()) {
+    fail(pointer, "must be an array of keyframes (got " + value_text(value) + ")");
+  }
+  if (value.size() != static_cast<std::size_t>(info(method).keyframe_count)) {
+    fail(pointer, keyframe_count_reason(method, value.size()));
+  }
+  std::vector<Keyframe> result;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = element_pointer(pointer, i);
+    const Keyframe next = keyframe(value[i], at);
+    if (i > 0) check_knot_order(result.back().t, next.t, at + "/t");
+    result.push_back(next);
+  }
+  return result;
+}
+
+// A keyframe is {"t", "p", and either "q" or "m" and "w"; "turns" optional}.
+Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) const {
+  if (!value.is_object()) {
+    fail(pointer, "a keyframe must be an object (got " + value_text(value) + ")");
+  }
+  check_fields(value, pointer, kKeyframeFields);
+
+  const Json* knot = member(value, "t");
+  if (knot == nullptr) fail(pointer + "/t", "missing required field (the knot, a time value)");
+  Keyframe keyframe;
+  keyframe.t = number(*knot, pointer + "/t");
+
+  const Json* start = member(value, "p");
+  if (start == nullptr) fail(pointer + "/p", "missing required field (the start point [x, y])");
+  const Point p = point(*start, pointer + "/p");
+
+  const Json* end = member(value, "q");
+  const Json* magnitude = member(value, "m");
+  const Json* winding = member(value, "w");
+  if (end != nullptr) {
+    if (magnitude != nullptr || winding != nullptr) {
+      fail(pointer + "/q", "give either \"q\" or \"m\" and \"w\", not both");
+    }
+    const Point q = point(*end, pointer + "/q");
+    if (q == p) fail(pointer + "/q", "q equals p: a zero-length arrow has no direction");
+    keyframe.arrow = zero_turn_arrow(p, q);
+    if (!is_finite(keyframe.arrow)) {
+      fail(pointer + "/q", "the arrow from p to q is too long (its magnitude overflows)");
+    }
+  } else {
+    if (magnitude == nullptr && winding == nullptr) {
+      fail(pointer, "missing the arrow: give \"q\", or \"m\" and \"w\"");
+    }
+    if (magnitude == nullptr) {
+      fail(pointer + "/m", "missing required field (\"w\" needs the magnitude \"m\")");
+    }
+    if (winding == nullptr) {
+      fail(pointer + "/w", "missing required field (\"m\" needs the winding \"w\")");
+    }
+    const double m = number(*magnitude, pointer + "/m");
+    if (!(m > 0.0)) fail(pointer + "/m", "magnitude must be > 0 (got " + number_text(m) + ")");
+    keyframe.arrow = Arrow{p, m, number(*winding, pointer + "/w")};
+  }
+
+  if (const Json* turns = member(value, "turns")) {
+    const double k = integer(*turns, pointer + "/turns");
+    keyframe.arrow = with_turns(keyframe.arrow, k);
+    if (!std::isfinite(keyframe.arrow.w)) {
+      fail(pointer + "/turns",
+           "too many turns: the winding overflows (got " + number_text(k) + ")");
+    }
+  }
+  return keyframe;
+}
+
+// Knots must be strictly increasing (the registry requires a < b < c).
+void JsonReader::check_knot_order(double previous, double knot, const std::string& pointer) const {
+  if (knot == previous) {
+    fail(pointer, fmt::format("knot {} equals the previous knot; knots must be strictly "
+                              "increasing",
+                              number_text(knot)));
+  }
+  if (knot < previous) {
+    fail(pointer, fmt::format("knot {} is less than the previous knot {}; knots must be "
+                              "strictly increasing",
+                              number_text(knot), number_text(previous)));
+  }
+}
+
+}  // namespace pita::scene::detail

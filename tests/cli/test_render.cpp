@@ -1,0 +1,129 @@
+// `pita render` through the real binary: files written (and only when the
+// scene is good), formats, sizes, determinism, and the SVG read back by an
+// XML parser (xmllint) and by a second renderer (librsvg's rsvg-convert).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "run_pita.hpp"
+
+namespace pita::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kGoodScene = R"({"method": "P6", "keyframes": [
+  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+  {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
+  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
+
+const std::string kBadScene = R"({"method": "P6", "keyframes": [
+  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+  {"t": 0.5, "p": [3, 1.5], "m": -0.6, "w": 2.0},
+  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
+
+std::uint32_t png_dimension(const std::string& png, std::size_t at) {
+  std::uint32_t v = 0;
+  for (std::size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(png.at(at + k));
+  return v;
+}
+
+int shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(Render, WritesEveryRequestedFormat) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  const RunResult r = run_pita({"render", "good.json", "-o", "out", "--format", "svg,png,pdf"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* name : {"good.svg", "good.png", "good.pdf"}) {
+    EXPECT_TRUE(fs::exists(dir.path() / "out" / name)) << name;
+  }
+  const std::string png = read_file(dir.path() / "out/good.png");
+  EXPECT_EQ(png_dimension(png, 16), 800u);  // the default canvas
+  EXPECT_EQ(png_dimension(png, 20), 600u);
+  EXPECT_EQ(read_file(dir.path() / "out/good.pdf").substr(0, 5), "%PDF-");
+  // No temporary file is left behind.
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir.path() / "out")) ++files;
+  EXPECT_EQ(files, 3);
+}
+
+TEST(Render, SvgIsReadByAnXmlParserAndBySecondRenderer) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  ASSERT_EQ(run_pita({"render", "good.json", "-o", "good.svg"}, dir.path()).exit_code, 0);
+  const std::string svg = (dir.path() / "good.svg").string();
+  EXPECT_EQ(shell("xmllint --noout '" + svg + "'"), 0);
+  const std::string png = (dir.path() / "rsvg.png").string();
+  ASSERT_EQ(shell("rsvg-convert '" + svg + "' -o '" + png + "'"), 0);
+  const std::string bytes = read_file(png);
+  EXPECT_EQ(png_dimension(bytes, 16), 800u);
+  EXPECT_EQ(png_dimension(bytes, 20), 600u);
+}
+
+TEST(Render, PngScaleAndDpi) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  ASSERT_EQ(run_pita({"render", "good.json", "-o", "a.png", "--scale", "1.5"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(png_dimension(read_file(dir.path() / "a.png"), 16), 1200u);
+  ASSERT_EQ(run_pita({"render", "good.json", "-o", "b.png", "--dpi", "192"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(png_dimension(read_file(dir.path() / "b.png"), 20), 1200u);
+  const RunResult too_big = run_pita({"render", "good.json", "-o", "c.png", "--scale", "100"}, dir.path());
+  EXPECT_EQ(too_big.exit_code, 2);
+  EXPECT_NE(too_big.err.find("--scale"), std::string::npos) << too_big.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "c.png"));
+}
+
+TEST(Render, SameSceneGivesIdenticalBytes) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  dir.write("other.json", kGoodScene);
+  ASSERT_EQ(run_pita({"render", "good.json", "-o", "one", "--format", "svg,png,pdf"}, dir.path()).exit_code, 0);
+  // Rendered second in a process that has rendered another scene first.
+  ASSERT_EQ(run_pita({"render", "other.json", "good.json", "-o", "two", "--format", "svg,png,pdf"},
+                     dir.path()).exit_code, 0);
+  for (const char* name : {"good.svg", "good.png", "good.pdf"}) {
+    EXPECT_TRUE(read_file(dir.path() / "one" / name) == read_file(dir.path() / "two" / name)) << name;
+  }
+}
+
+TEST(Render, BadSceneWritesNothingAndNamesThePointer) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  dir.write("bad.json", kBadScene);
+  const RunResult r = run_pita({"render", "bad.json", "good.json", "-o", "out", "--format", "svg,png"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bad.json: /keyframes/1/m"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out/bad.svg"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out/bad.png"));
+  // The good scene is still rendered.
+  EXPECT_TRUE(fs::exists(dir.path() / "out/good.svg"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/good.png"));
+}
+
+TEST(Render, UsageErrorsExitTwo) {
+  const ScratchDir dir;
+  dir.write("good.json", kGoodScene);
+  const std::vector<std::vector<std::string>> cases = {
+      {"render", "good.json", "good.json", "-o", "one.svg"},  // one file, two scenes
+      {"render", "good.json", "-o", "x", "--format", "gif"},
+      {"render", "good.json", "-o", "x.png", "--format", "svg"},
+      {"render", "good.json"},                                 // no -o
+      {"render", "good.json", "-o", "x.png", "--scale", "1", "--dpi", "96"},
+      {"render", "missing.json", "-o", "x.svg"},
+  };
+  for (const auto& args : cases) {
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << args.back() << ": " << r.err;
+    EXPECT_FALSE(r.err.empty());
+  }
+}
+
+}  // namespace
+}  // namespace pita::test

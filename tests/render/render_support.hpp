@@ -1,0 +1,38 @@
+// Scenes built in code for the render tests (independent of the JSON reader).
+#pragma once
+
+#include <cmath>
+
+#include "core/pitas/registry.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render::test {
+
+inline scene::Panel panel(Method method, std::vector<Keyframe> keyframes, int samples = 9) {
+  scene::Panel p;
+  p.method = method;
+  p.method_name = std::string(info(method).id);
+  p.keyframes = std::move(keyframes);
+  p.samples = samples;
+  p.title = p.method_name;
+  return p;
+}
+
+inline std::vector<Keyframe> three_keyframes() {
+  return {{0.0, Arrow{{0.0, 0.0}, 1.0, 1.2}},
+          {0.5, Arrow{{3.0, 1.5}, 0.7, 2.0}},
+          {1.0, Arrow{{6.0, 0.0}, 1.3, 1.9}}};
+}
+
+inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<scene::Panel> panels) {
+  scene::Scene s;
+  s.path = "test.json";
+  s.method = panels.front().method;
+  s.method_name = panels.front().method_name;
+  s.keyframes = panels.front().keyframes;
+  s.layers = std::move(layers);
+  s.panels = std::move(panels);
+  return s;
+}
+
+}  // namespace pita::render::test

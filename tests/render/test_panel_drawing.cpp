@@ -1,0 +1,204 @@
+// Geometry of what is drawn (render/panel_drawing.hpp), checked against the
+// motions themselves and the paper's definitions, not against saved output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/discrepancy.hpp"
+#include "core/steady_morph.hpp"
+#include "render/panel_drawing.hpp"
+#include "render/spiral.hpp"
+#include "render_support.hpp"
+
+namespace pita::render::test {
+namespace {
+
+std::vector<Arrow> frames_of(const scene::Panel& p, int n) {
+  const auto motion = make_motion(p.method, p.keyframes, p.options);
+  std::vector<Arrow> frames;
+  for (int i = 0; i < n; ++i) {
+    const double t = p.keyframes.front().t +
+                     (p.keyframes.back().t - p.keyframes.front().t) * i / (n - 1);
+    frames.push_back(motion->at(t));
+  }
+  return frames;
+}
+
+template <typename T>
+std::vector<const T*> shapes(const Drawing& d) {
+  std::vector<const T*> found;
+  for (const Item& item : d.items) {
+    if (const T* s = std::get_if<T>(&item.shape)) found.push_back(s);
+  }
+  return found;
+}
+
+TEST(PatternLayer, DrawsEachFrameFromPToQ) {
+  const scene::Panel p = panel(Method::P6, three_keyframes(), 11);
+  const Drawing d = panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  const auto frames = frames_of(p, 11);
+  ASSERT_EQ(lines.size(), 11u);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    ASSERT_EQ(lines[i]->points.size(), 2u);
+    EXPECT_NEAR(std::abs(lines[i]->points[0] - frames[i].p), 0.0, 1e-12) << i;
+    EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12) << i;
+    EXPECT_EQ(d.items[i].layer, "/layers/0");
+    EXPECT_EQ(d.items[i].index, static_cast<int>(i));
+  }
+}
+
+TEST(PatternLayer, ExtendedFormHasPAtItsMidpoint) {
+  const scene::Panel p = panel(Method::P3, three_keyframes(), 5);
+  scene::PatternLayer layer;
+  layer.extended = true;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto frames = frames_of(p, 5);
+  const auto lines = shapes<Polyline>(d);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_NEAR(std::abs(0.5 * (lines[i]->points[0] + lines[i]->points[1]) - frames[i].p), 0.0, 1e-12);
+    EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12);
+  }
+}
+
+TEST(PatternLayer, RangeExtrapolatesBeyondTheKnots) {
+  // Sec. 7.5: the frame at t = 1.5 is the prediction D(1.5).
+  const scene::Panel p = panel(Method::P8, three_keyframes());
+  scene::PatternLayer layer;
+  layer.samples = 4;
+  layer.range = scene::TimeRange{0.0, 1.5};
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  const Arrow predicted = make_motion(Method::P8, p.keyframes)->at(1.5);
+  EXPECT_NEAR(std::abs(lines.back()->points[0] - predicted.p), 0.0, 1e-12);
+}
+
+TEST(StrokeLayer, QuadCornersAreTheFramesEndpoints) {
+  const scene::Panel p = panel(Method::P5, three_keyframes(), 13);
+  const Drawing d = panel_drawing(scene_with({scene::StrokeLayer{}}, {p}), p);
+  const auto paths = shapes<FilledPath>(d);
+  ASSERT_EQ(paths.size(), 1u);
+  const auto frames = frames_of(p, 13);
+  ASSERT_EQ(paths[0]->contours.size(), 12u);
+  for (std::size_t i = 0; i + 1 < frames.size(); ++i) {
+    const auto& quad = paths[0]->contours[i];
+    ASSERT_EQ(quad.size(), 4u);
+    // The four corners, in either orientation.
+    for (Point corner : {frames[i].p, frames[i].q(), frames[i + 1].q(), frames[i + 1].p}) {
+      double nearest = 1e9;
+      for (Point x : quad) nearest = std::min(nearest, std::abs(x - corner));
+      EXPECT_LT(nearest, 1e-12) << "quad " << i;
+    }
+    // Oriented counter-clockwise, so that the nonzero fill covers overlaps.
+    double twice_area = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      twice_area += quad[k].real() * quad[(k + 1) % 4].imag() - quad[(k + 1) % 4].real() * quad[k].imag();
+    }
+    EXPECT_GE(twice_area, 0.0) << i;
+  }
+}
+
+TEST(DiscrepancyLayer, RadiusIsScaleTimesE) {
+  const scene::Panel p = panel(Method::P6, three_keyframes(), 9);
+  for (const auto predictor : {scene::Predictor::previous, scene::Predictor::average, scene::Predictor::pita}) {
+    scene::DiscrepancyLayer layer;
+    layer.predictor = predictor;
+    layer.scale = 7.5;
+    layer.method = Method::P1;
+    const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+    const auto circles = shapes<Circle>(d);
+    const auto frames = frames_of(p, 9);
+    const std::size_t first = predictor == scene::Predictor::previous ? 1
+                              : predictor == scene::Predictor::average ? 1 : 3;
+    const std::size_t count = predictor == scene::Predictor::average ? 7 : 9 - first;
+    ASSERT_EQ(circles.size(), count);
+    for (std::size_t k = 0; k < circles.size(); ++k) {
+      const std::size_t i = first + k;
+      Arrow predicted;
+      if (predictor == scene::Predictor::previous) predicted = frames[i - 1];
+      if (predictor == scene::Predictor::average) predicted = steady_average(frames[i - 1], frames[i + 1]);
+      if (predictor == scene::Predictor::pita) {
+        const double ti = static_cast<double>(i) / 8.0, h = 1.0 / 8.0;
+        const std::vector<Keyframe> seen{{ti - 3 * h, frames[i - 3]}, {ti - 2 * h, frames[i - 2]},
+                                         {ti - h, frames[i - 1]}};
+        predicted = make_motion(Method::P1, seen)->at(ti);
+      }
+      // E by its closed form (READING-NOTES item 5), independent of Eq. 44-47.
+      const Arrow& x = frames[i];
+      const double E = (std::norm(predicted.p - x.p) + std::norm(predicted.q() - x.q())) *
+                       (1.0 / (x.m * x.m) + 1.0 / (predicted.m * predicted.m));
+      EXPECT_NEAR(circles[k]->radius, 7.5 * E, 1e-9 * (1.0 + 7.5 * E)) << k;
+      EXPECT_NEAR(std::abs(circles[k]->center - x.p), 0.0, 1e-12);
+      EXPECT_EQ(d.items[k].index, static_cast<int>(i));
+    }
+  }
+}
+
+TEST(KeyframesLayer, ArrowsAndSpiralsShowTheKeyframes) {
+  std::vector<Keyframe> keys = three_keyframes();
+  keys[1].arrow.w += 4.0 * std::numbers::pi;  // two extra turns
+  const scene::Panel p = panel(Method::P6, keys);
+  const Drawing d = panel_drawing(scene_with({scene::KeyframesLayer{}}, {p}), p);
+  const auto arrows = shapes<ArrowShape>(d);
+  const auto coils = shapes<Polyline>(d);
+  ASSERT_EQ(arrows.size(), 3u);
+  ASSERT_EQ(coils.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(std::abs(arrows[i]->from - keys[i].arrow.p), 0.0, 1e-15);
+    EXPECT_NEAR(std::abs(arrows[i]->to - keys[i].arrow.q()), 0.0, 1e-12);
+    // The spiral ends in the arrow's direction, having turned through w.
+    const Point end = coils[i]->points.back() - keys[i].arrow.p;
+    EXPECT_NEAR(std::remainder(std::arg(end) - keys[i].arrow.w, 2 * std::numbers::pi), 0.0, 1e-9);
+    double turned = 0.0;
+    for (std::size_t k = 1; k < coils[i]->points.size(); ++k) {
+      turned += std::arg((coils[i]->points[k] - keys[i].arrow.p) / (coils[i]->points[k - 1] - keys[i].arrow.p));
+    }
+    EXPECT_NEAR(turned, keys[i].arrow.w, 1e-9) << i;
+  }
+}
+
+TEST(TrajectoryLayer, FollowsTheChosenPoint) {
+  const scene::Panel p = panel(Method::P2, three_keyframes());
+  scene::TrajectoryLayer layer;
+  layer.point = scene::TrackedPoint::middle;
+  layer.samples = 101;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  ASSERT_EQ(lines.size(), 1u);
+  ASSERT_EQ(lines[0]->points.size(), 101u);
+  const auto frames = frames_of(p, 101);
+  for (std::size_t i = 0; i < frames.size(); i += 10) {
+    EXPECT_NEAR(std::abs(lines[0]->points[i] - 0.5 * (frames[i].p + frames[i].q())), 0.0, 1e-12);
+  }
+}
+
+TEST(PanelDrawing, NonexistentMotionIsARenderErrorNamingTheKeyframes) {
+  // P8 has no motion when v_A + v_C = -2 v_B (kappa = -1).
+  std::vector<Keyframe> keys{{0.0, Arrow{{0, 0}, 1.0, 0.0}},
+                             {0.5, Arrow{{1, 0}, 1.0, std::numbers::pi}},
+                             {1.0, Arrow{{2, 0}, 1.0, 0.0}}};
+  scene::Panel p = panel(Method::P8, keys);
+  p.pointer = "/panels/2";
+  try {
+    panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
+    FAIL() << "expected a RenderError";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("test.json: /panels/2: P8"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(PanelDrawing, OverflowingFramesAreRefusedNotDrawn) {
+  scene::Panel p = panel(Method::P2, three_keyframes());
+  scene::PatternLayer layer;
+  layer.range = scene::TimeRange{0.0, 1e300};
+  try {
+    panel_drawing(scene_with({layer}, {p}), p);
+    FAIL() << "expected a RenderError";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("/layers/0"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace pita::render::test

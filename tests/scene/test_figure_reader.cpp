@@ -1,0 +1,617 @@
+// The figure part of a scene (src/scene/figure_reader.cpp and the panels of
+// src/scene/scene.cpp): title, canvas, layers and panels, their defaults, and
+// the pointer and reason of every kind of error.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "scene/color.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::scene {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_scene(text, "s.json");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+// A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
+std::string p6_with(const std::string& extra) {
+  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
+         extra + "}";
+}
+
+Scene p6(const std::string& extra) { return parse_scene(p6_with(extra), "s.json"); }
+
+// The only layer of a P6 scene whose "layers" is [layer].
+template <typename T>
+T only_layer(const std::string& layer) {
+  const Scene scene = p6(R"(, "layers": [)" + layer + "]");
+  EXPECT_EQ(scene.layers.size(), 1U);
+  EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
+  return std::get<T>(scene.layers.at(0));
+}
+
+std::string layer_error(const std::string& layer) {
+  return error_of(p6_with(R"(, "layers": [)" + layer + "]"));
+}
+
+Color rgb(double r, double g, double b, double a = 1.0) { return Color{r, g, b, a}; }
+
+void expect_same_line(const LineStyle& actual, const LineStyle& expected) {
+  EXPECT_EQ(actual.color, expected.color);
+  EXPECT_EQ(actual.width, expected.width);
+  EXPECT_EQ(actual.opacity, expected.opacity);
+  EXPECT_EQ(actual.dash, expected.dash);
+}
+
+void expect_same_keyframes(const std::vector<Keyframe>& actual,
+                           const std::vector<Keyframe>& expected) {
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < actual.size(); ++i) {
+    EXPECT_EQ(actual[i].t, expected[i].t);
+    EXPECT_EQ(actual[i].arrow.p, expected[i].arrow.p);
+    EXPECT_EQ(actual[i].arrow.m, expected[i].arrow.m);
+    EXPECT_EQ(actual[i].arrow.w, expected[i].arrow.w);
+  }
+}
+
+// ------------------------------------------------------------ defaults
+
+TEST(FigureDefaults, SceneWithoutFigureFields) {
+  const Scene scene = p6("");
+  EXPECT_EQ(scene.title, "");
+  const Canvas canvas;
+  EXPECT_EQ(scene.canvas.width, 800);
+  EXPECT_EQ(scene.canvas.height, 600);
+  EXPECT_EQ(scene.canvas.background, canvas.background);
+  EXPECT_FALSE(scene.canvas.view.has_value());
+  EXPECT_FALSE(scene.canvas.shared_fit);
+  EXPECT_EQ(scene.canvas.margin, canvas.margin);
+  EXPECT_TRUE(scene.canvas.y_up);
+  EXPECT_EQ(scene.canvas.columns, 0);
+  EXPECT_EQ(scene.canvas.font, "Sans");
+
+  ASSERT_EQ(scene.layers.size(), 2U);
+  ASSERT_TRUE(std::holds_alternative<PatternLayer>(scene.layers[0]));
+  ASSERT_TRUE(std::holds_alternative<KeyframesLayer>(scene.layers[1]));
+  expect_same_line(std::get<PatternLayer>(scene.layers[0]).line, PatternLayer{}.line);
+  EXPECT_EQ(std::get<KeyframesLayer>(scene.layers[1]).colors, KeyframesLayer{}.colors);
+
+  ASSERT_EQ(scene.panels.size(), 1U);
+  const Panel& panel = scene.panels[0];
+  EXPECT_EQ(panel.title, "");
+  EXPECT_EQ(panel.pointer, "");
+  EXPECT_EQ(panel.method, Method::P6);
+  EXPECT_EQ(panel.method_name, "P6");
+  EXPECT_EQ(panel.samples, kDefaultFigureSamples);
+  EXPECT_FALSE(panel.layers.has_value());
+  expect_same_keyframes(panel.keyframes, scene.keyframes);
+}
+
+TEST(FigureDefaults, ScenePanelTakesTheScenesSamplesAndOptions) {
+  const Scene scene = p6(R"(, "samples": 31, "options": {"anchor": "midpoint"})");
+  ASSERT_EQ(scene.panels.size(), 1U);
+  EXPECT_EQ(scene.panels[0].samples, 31);
+  EXPECT_EQ(scene.panels[0].options.anchor, Anchor::midpoint);
+}
+
+TEST(FigureDefaults, EmptyLayersDrawNothing) { EXPECT_TRUE(p6(R"(, "layers": [])").layers.empty()); }
+
+TEST(FigureDefaults, WithMethodMovesTheScenePanel) {
+  const Scene scene = with_method(p6(""), Method::P1);
+  EXPECT_EQ(scene.panels.at(0).method, Method::P1);
+  EXPECT_EQ(scene.panels.at(0).method_name, "P1");
+  // Panels of their own keep their method.
+  const Scene own = with_method(p6(R"(, "panels": ["P2"])"), Method::P1);
+  EXPECT_EQ(own.panels.at(0).method, Method::P2);
+}
+
+// ------------------------------------------------------------ title and canvas
+
+TEST(Canvas, ReadsEveryField) {
+  const Scene scene = p6(R"(, "title": "Fig. 1", "canvas": {"width": 1024, "height": 16,
+      "background": "#102030", "view": {"min": [-1, -2], "max": [3, 4]}, "margin": 0.45,
+      "y_axis": "down", "columns": 4, "font": "DejaVu Serif"})");
+  EXPECT_EQ(scene.title, "Fig. 1");
+  EXPECT_EQ(scene.canvas.width, 1024);
+  EXPECT_EQ(scene.canvas.height, 16);
+  EXPECT_EQ(scene.canvas.background, parse_color("#102030"));
+  ASSERT_TRUE(scene.canvas.view.has_value());
+  EXPECT_EQ(scene.canvas.view->min, make_point(-1, -2));
+  EXPECT_EQ(scene.canvas.view->max, make_point(3, 4));
+  EXPECT_FALSE(scene.canvas.shared_fit);
+  EXPECT_EQ(scene.canvas.margin, 0.45);
+  EXPECT_FALSE(scene.canvas.y_up);
+  EXPECT_EQ(scene.canvas.columns, 4);
+  EXPECT_EQ(scene.canvas.font, "DejaVu Serif");
+}
+
+TEST(Canvas, BackgroundNoneIsTransparent) {
+  EXPECT_FALSE(p6(R"(, "canvas": {"background": "none"})").canvas.background.has_value());
+  EXPECT_EQ(p6(R"(, "canvas": {"background": "white"})").canvas.background, rgb(1, 1, 1));
+}
+
+TEST(Canvas, ViewAutoAndShared) {
+  const Scene shared = p6(R"(, "canvas": {"view": "shared"})");
+  EXPECT_TRUE(shared.canvas.shared_fit);
+  EXPECT_FALSE(shared.canvas.view.has_value());
+  const Scene fit = p6(R"(, "canvas": {"view": "auto", "y_axis": "up"})");
+  EXPECT_FALSE(fit.canvas.shared_fit);
+  EXPECT_FALSE(fit.canvas.view.has_value());
+  EXPECT_TRUE(fit.canvas.y_up);
+}
+
+TEST(CanvasError, Messages) {
+  EXPECT_EQ(error_of(p6_with(R"(, "title": null)")), "s.json: /title: must be a string (got null)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": 3)")),
+            "s.json: /canvas: the canvas must be an object (got 3)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"hieght": 3})")),
+            "s.json: /canvas/hieght: unknown field \"hieght\"; did you mean \"height\"?");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"width": 8193})")),
+            "s.json: /canvas/width: must be an integer between 16 and 8192 (got 8193)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"height": "600"})")),
+            "s.json: /canvas/height: must be an integer (got string \"600\")");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"margin": -0.1})")),
+            "s.json: /canvas/margin: must be between 0 and 0.45 (got -0.1)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"y_axis": "Up"})")),
+            "s.json: /canvas/y_axis: must be \"up\" or \"down\" (got string \"Up\")");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"columns": 65})")),
+            "s.json: /canvas/columns: must be an integer between 1 and 64 (got 65)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"font": ""})")),
+            "s.json: /canvas/font: must not be empty");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": "nnoe"})")),
+            "s.json: /canvas/background: unknown color \"nnoe\"; did you mean \"none\" "
+            "(transparent)?");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": "#fff0"})")),
+            "s.json: /canvas/background: \"#fff0\" is not a color: \"#\" must be followed by 3, 6 "
+            "or 8 hex digits (\"#rgb\", \"#rrggbb\" or \"#rrggbbaa\")");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": false})")),
+            "s.json: /canvas/background: must be a color: a string \"#rgb\", \"#rrggbb\", "
+            "\"#rrggbbaa\" or a name such as \"red\" (got false)");
+}
+
+TEST(CanvasError, View) {
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": "fit"})")),
+            "s.json: /canvas/view: must be \"auto\", \"shared\" or a box {\"min\": [x, y], "
+            "\"max\": [x, y]} (got string \"fit\")");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0]}})")),
+            "s.json: /canvas/view/max: missing required field (the corner [x, y] with the "
+            "greatest x and y)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 1], "maxx": 1}})")),
+            "s.json: /canvas/view/maxx: unknown field \"maxx\"; did you mean \"max\"?");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [0, 1]}})")),
+            "s.json: /canvas/view/max/0: max x must be greater than min x 0 (got 0)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 2], "max": [1, 1]}})")),
+            "s.json: /canvas/view/max/1: max y must be greater than min y 2 (got 1)");
+  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, "a"], "max": [1, 1]}})")),
+            "s.json: /canvas/view/min/1: must be a number (got string \"a\")");
+}
+
+// ------------------------------------------------------------ layers
+
+TEST(Layers, Pattern) {
+  const PatternLayer layer = only_layer<PatternLayer>(
+      R"({"type": "pattern", "color": "#ff0000", "width": 2.5, "opacity": 0.5, "dash": [3, 1.5],
+          "extended": true, "samples": 40, "range": [-0.5, 2]})");
+  expect_same_line(layer.line, LineStyle{rgb(1, 0, 0), 2.5, 0.5, {3, 1.5}});
+  EXPECT_TRUE(layer.extended);
+  EXPECT_EQ(layer.samples, 40);
+  ASSERT_TRUE(layer.range.has_value());
+  EXPECT_EQ(layer.range->from, -0.5);
+  EXPECT_EQ(layer.range->to, 2);
+}
+
+TEST(Layers, LineFieldsOverrideOnlyWhatIsGiven) {
+  const PatternLayer pattern = only_layer<PatternLayer>(R"({"type": "pattern", "width": 3})");
+  LineStyle expected = PatternLayer{}.line;
+  expected.width = 3;
+  expect_same_line(pattern.line, expected);
+  EXPECT_FALSE(pattern.samples.has_value());
+  EXPECT_FALSE(pattern.range.has_value());
+  EXPECT_FALSE(pattern.extended);
+
+  const TrajectoryLayer trajectory =
+      only_layer<TrajectoryLayer>(R"({"type": "trajectory", "color": "blue"})");
+  expected = TrajectoryLayer{}.line;
+  expected.color = parse_color("blue");
+  expect_same_line(trajectory.line, expected);
+
+  const DiscrepancyLayer discrepancy =
+      only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "dash": []})");
+  expect_same_line(discrepancy.line, DiscrepancyLayer{}.line);
+}
+
+TEST(Layers, Keyframes) {
+  const KeyframesLayer layer = only_layer<KeyframesLayer>(
+      R"({"type": "keyframes", "colors": ["black", "#0f0"], "width": 1, "opacity": 0.25,
+          "winding": false, "spiral_center": "midpoint", "extended": true})");
+  EXPECT_EQ(layer.colors, (std::vector<Color>{rgb(0, 0, 0), rgb(0, 1, 0)}));
+  EXPECT_EQ(layer.width, 1);
+  EXPECT_EQ(layer.opacity, 0.25);
+  EXPECT_FALSE(layer.winding);
+  EXPECT_EQ(layer.spiral_center, SpiralCenter::middle);
+  EXPECT_TRUE(layer.extended);
+
+  const KeyframesLayer plain = only_layer<KeyframesLayer>(R"({"type": "keyframes"})");
+  EXPECT_EQ(plain.colors, KeyframesLayer{}.colors);
+  EXPECT_EQ(plain.width, 2.0);
+  EXPECT_TRUE(plain.winding);
+  EXPECT_EQ(plain.spiral_center, SpiralCenter::start);
+}
+
+TEST(Layers, Trajectory) {
+  const TrajectoryLayer layer = only_layer<TrajectoryLayer>(
+      R"({"type": "trajectory", "point": "mid", "samples": 100000, "range": [0, 0.5],
+          "color": "cyan", "width": 100, "opacity": 0, "dash": [1]})");
+  EXPECT_EQ(layer.point, TrackedPoint::middle);
+  EXPECT_EQ(layer.samples, kMaxTrajectorySamples);
+  EXPECT_EQ(layer.range->to, 0.5);
+  expect_same_line(layer.line, LineStyle{parse_color("cyan"), 100, 0, {1}});
+  EXPECT_EQ(only_layer<TrajectoryLayer>(R"({"type": "trajectory", "point": "q"})").point,
+            TrackedPoint::end);
+  const TrajectoryLayer plain = only_layer<TrajectoryLayer>(R"({"type": "trajectory"})");
+  EXPECT_EQ(plain.point, TrackedPoint::start);
+  EXPECT_EQ(plain.samples, 512);
+}
+
+TEST(Layers, Stroke) {
+  const StrokeLayer layer = only_layer<StrokeLayer>(
+      R"({"type": "stroke", "fill": "#00000080", "opacity": 0.5,
+          "outline": {"color": "red", "dash": [2, 2]}, "samples": 2, "range": [0.25, 0.75]})");
+  EXPECT_EQ(layer.fill, rgb(0, 0, 0, 128 / 255.0));
+  EXPECT_EQ(layer.opacity, 0.5);
+  ASSERT_TRUE(layer.outline.has_value());
+  expect_same_line(*layer.outline, LineStyle{parse_color("red"), 1.0, 1.0, {2, 2}});
+  EXPECT_EQ(layer.samples, 2);
+  EXPECT_EQ(layer.range->from, 0.25);
+  EXPECT_FALSE(only_layer<StrokeLayer>(R"({"type": "stroke"})").outline.has_value());
+  expect_same_line(*only_layer<StrokeLayer>(R"({"type": "stroke", "outline": {}})").outline,
+                   LineStyle{});
+}
+
+TEST(Layers, Banner) {
+  const BannerLayer layer = only_layer<BannerLayer>(
+      R"({"type": "banner", "text": "Été", "font": "Serif Italic", "fill": "orange",
+          "opacity": 0.8, "outline": {"width": 0.5}, "padding": 0, "samples": 10000,
+          "range": [0, 1]})");
+  EXPECT_EQ(layer.text, "Été");
+  EXPECT_EQ(layer.font, "Serif Italic");
+  EXPECT_EQ(layer.fill, parse_color("orange"));
+  EXPECT_EQ(layer.opacity, 0.8);
+  EXPECT_EQ(layer.outline->width, 0.5);
+  EXPECT_EQ(layer.padding, 0);
+  EXPECT_EQ(layer.samples, kMaxFigureSamples);
+  const BannerLayer plain = only_layer<BannerLayer>(R"({"type": "banner", "text": "x"})");
+  EXPECT_EQ(plain.font, "Sans Bold");
+  EXPECT_EQ(plain.padding, 0.1);
+  EXPECT_FALSE(plain.outline.has_value());
+  // The length counts characters, not bytes: 1000 two-byte characters fit.
+  std::string long_text;
+  for (std::size_t i = 0; i < kMaxTextLength; ++i) long_text += "é";
+  EXPECT_EQ(only_layer<BannerLayer>(R"({"type": "banner", "text": ")" + long_text + "\"}").text,
+            long_text);
+}
+
+TEST(Layers, Discrepancy) {
+  const DiscrepancyLayer layer = only_layer<DiscrepancyLayer>(
+      R"({"type": "discrepancy", "predictor": "pita", "method": "lo-pe", "scale": 0.5,
+          "color": "green", "width": 0.1, "opacity": 1, "dash": [5], "fill": "yellow",
+          "samples": 12})");
+  EXPECT_EQ(layer.predictor, Predictor::pita);
+  EXPECT_EQ(layer.method, Method::P8);
+  EXPECT_EQ(layer.scale, 0.5);
+  expect_same_line(layer.line, LineStyle{parse_color("green"), 0.1, 1, {5}});
+  EXPECT_EQ(layer.fill, parse_color("yellow"));
+  EXPECT_EQ(layer.samples, 12);
+  const DiscrepancyLayer plain =
+      only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "pita"})");
+  EXPECT_FALSE(plain.method.has_value());  // the panel's method
+  EXPECT_FALSE(plain.fill.has_value());
+  EXPECT_EQ(plain.scale, 30);
+  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "average"})")
+                .predictor,
+            Predictor::average);
+  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy"})").predictor,
+            Predictor::previous);
+}
+
+TEST(Layers, LabelAndLegend) {
+  const LabelLayer label = only_layer<LabelLayer>(
+      R"({"type": "label", "text": "A", "at": [1.5, -2], "size": 200, "color": "#808080"})");
+  EXPECT_EQ(label.text, "A");
+  EXPECT_EQ(label.at, make_point(1.5, -2));
+  EXPECT_EQ(label.size, 200);
+  EXPECT_EQ(label.color, parse_color("gray"));
+  EXPECT_EQ(only_layer<LabelLayer>(R"({"type": "label", "text": "B", "at": [0, 0]})").size, 12);
+
+  const LegendLayer legend =
+      only_layer<LegendLayer>(R"({"type": "legend", "corner": "bottom-left", "size": 9})");
+  EXPECT_EQ(legend.corner, LegendLayer::Corner::bottom_left);
+  EXPECT_EQ(legend.size, 9);
+  const LegendLayer plain = only_layer<LegendLayer>(R"({"type": "legend"})");
+  EXPECT_EQ(plain.corner, LegendLayer::Corner::top_left);
+  EXPECT_EQ(plain.size, 11);
+  EXPECT_EQ(only_layer<LegendLayer>(R"({"type": "legend", "corner": "top-right"})").corner,
+            LegendLayer::Corner::top_right);
+  EXPECT_EQ(only_layer<LegendLayer>(R"({"type": "legend", "corner": "bottom-right"})").corner,
+            LegendLayer::Corner::bottom_right);
+}
+
+TEST(Layers, KeepTheirOrder) {
+  const Scene scene = p6(R"(, "layers": [{"type": "legend"}, {"type": "stroke"},
+      {"type": "pattern"}, {"type": "legend"}])");
+  ASSERT_EQ(scene.layers.size(), 4U);
+  EXPECT_EQ(scene.layers[0].index(), 7U);
+  EXPECT_EQ(scene.layers[1].index(), 3U);
+  EXPECT_EQ(scene.layers[2].index(), 0U);
+  EXPECT_EQ(scene.layers[3].index(), 7U);
+}
+
+TEST(LayerError, TypeAndFields) {
+  EXPECT_EQ(error_of(p6_with(R"(, "layers": {})")),
+            "s.json: /layers: must be an array of layers (got object {})");
+  EXPECT_EQ(layer_error("[]"), "s.json: /layers/0: a layer must be an object (got array [])");
+  EXPECT_EQ(layer_error(R"({"color": "red"})"),
+            "s.json: /layers/0/type: missing required field (the layer type: \"pattern\", "
+            "\"keyframes\", \"trajectory\", \"stroke\", \"banner\", \"discrepancy\", \"label\" or "
+            "\"legend\")");
+  EXPECT_EQ(layer_error(R"({"type": "patern"})"),
+            "s.json: /layers/0/type: unknown layer type \"patern\"; did you mean \"pattern\"?");
+  EXPECT_EQ(layer_error(R"({"type": "arrows"})"),
+            "s.json: /layers/0/type: unknown layer type \"arrows\"; layer types: pattern, "
+            "keyframes, trajectory, stroke, banner, discrepancy, label, legend");
+  EXPECT_EQ(layer_error(R"({"type": 1})"),
+            "s.json: /layers/0/type: must be \"pattern\", \"keyframes\", \"trajectory\", "
+            "\"stroke\", \"banner\", \"discrepancy\", \"label\" or \"legend\" (got 1)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "text": "hi"})"),
+            "s.json: /layers/0/text: field \"text\" is not used by a \"pattern\" layer (its "
+            "fields: type, color, width, opacity, dash, extended, samples, range)");
+  EXPECT_EQ(layer_error(R"({"type": "keyframes", "color": "red"})"),
+            "s.json: /layers/0/color: field \"color\" is not used by a \"keyframes\" layer (its "
+            "fields: type, colors, width, opacity, winding, spiral_center, extended)");
+  EXPECT_EQ(layer_error(R"({"type": "stroke", "colour": "red"})"),
+            "s.json: /layers/0/colour: unknown field \"colour\"; known fields: type, fill, "
+            "opacity, outline, samples, range");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "colour": "red"})"),
+            "s.json: /layers/0/colour: unknown field \"colour\"; did you mean \"color\"?");
+  EXPECT_EQ(layer_error(R"({"type": "legend", "corners": "top-left"})"),
+            "s.json: /layers/0/corners: unknown field \"corners\"; did you mean \"corner\"?");
+  // The type is read first, wherever it is written.
+  EXPECT_EQ(layer_error(R"({"text": "A", "type": "label", "at": [0, 0], "fill": "red"})"),
+            "s.json: /layers/0/fill: field \"fill\" is not used by a \"label\" layer (its fields: "
+            "type, text, at, size, color)");
+  std::string many;
+  for (int i = 0; i <= kMaxLayers; ++i) many += std::string(i > 0 ? "," : "") + R"({"type": "legend"})";
+  EXPECT_EQ(error_of(p6_with(R"(, "layers": [)" + many + "]")),
+            "s.json: /layers: must have at most 64 layers (got 65)");
+}
+
+TEST(LayerError, Values) {
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "width": 0})"),
+            "s.json: /layers/0/width: must be > 0 and <= 100 (got 0)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "opacity": 2})"),
+            "s.json: /layers/0/opacity: must be between 0 and 1 (got 2)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": 3})"),
+            "s.json: /layers/0/dash: must be an array of at most 16 dash lengths > 0 (got 3)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": [1, -1]})"),
+            "s.json: /layers/0/dash/1: must be > 0 (got -1)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]})"),
+            "s.json: /layers/0/dash: must have at most 16 dash lengths (got 17)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "extended": 1})"),
+            "s.json: /layers/0/extended: must be true or false (got 1)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "samples": 10001})"),
+            "s.json: /layers/0/samples: must be an integer between 2 and 10000 (got 10001)");
+  EXPECT_EQ(layer_error(R"({"type": "trajectory", "samples": 1})"),
+            "s.json: /layers/0/samples: must be an integer between 2 and 100000 (got 1)");
+  EXPECT_EQ(layer_error(R"({"type": "pattern", "range": [1, 1]})"),
+            "s.json: /layers/0/range/1: the end of a range must be greater than its start 1 (got 1)");
+  EXPECT_EQ(layer_error(R"({"type": "stroke", "range": 1})"),
+            "s.json: /layers/0/range: must be an array of two times [from, to] (got 1)");
+  EXPECT_EQ(layer_error(R"({"type": "stroke", "range": [0, null]})"),
+            "s.json: /layers/0/range/1: must be a number (got null)");
+  EXPECT_EQ(layer_error(R"({"type": "stroke", "outline": {"width": 200}})"),
+            "s.json: /layers/0/outline/width: must be > 0 and <= 100 (got 200)");
+  EXPECT_EQ(layer_error(R"({"type": "stroke", "outline": {"fill": "red"}})"),
+            "s.json: /layers/0/outline/fill: unknown field \"fill\"; known fields: color, width, "
+            "opacity, dash");
+  EXPECT_EQ(layer_error(R"({"type": "banner", "outline": true, "text": "A"})"),
+            "s.json: /layers/0/outline: an outline must be an object (got true)");
+  EXPECT_EQ(layer_error(R"({"type": "keyframes", "colors": "red"})"),
+            "s.json: /layers/0/colors: must be an array of 1 to 16 colors (got string \"red\")");
+  EXPECT_EQ(layer_error(R"({"type": "keyframes", "colors": ["red", "bleu"]})"),
+            "s.json: /layers/0/colors/1: unknown color \"bleu\"; did you mean \"blue\"?");
+  EXPECT_EQ(layer_error(R"({"type": "keyframes", "spiral_center": "middle"})"),
+            "s.json: /layers/0/spiral_center: must be \"start\" or \"midpoint\" (got string "
+            "\"middle\")");
+  EXPECT_EQ(layer_error(R"({"type": "trajectory", "point": "end"})"),
+            "s.json: /layers/0/point: must be \"p\", \"q\" or \"mid\" (got string \"end\")");
+  EXPECT_EQ(layer_error(R"({"type": "banner"})"),
+            "s.json: /layers/0/text: missing required field (the text to draw)");
+  EXPECT_EQ(layer_error(R"({"type": "banner", "text": ""})"),
+            "s.json: /layers/0/text: must not be empty");
+  EXPECT_EQ(layer_error(R"({"type": "banner", "text": ")" + std::string(1001, 'a') + "\"}"),
+            "s.json: /layers/0/text: must be at most 1000 characters long (got 1001)");
+  EXPECT_EQ(layer_error(R"({"type": "banner", "text": "A", "padding": 0.5})"),
+            "s.json: /layers/0/padding: must be between 0 and 0.45 (got 0.5)");
+  EXPECT_EQ(layer_error(R"({"type": "banner", "text": "A", "font": ""})"),
+            "s.json: /layers/0/font: must not be empty");
+  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "predictor": "pitta"})"),
+            "s.json: /layers/0/predictor: must be \"previous\", \"average\" or \"pita\" (got "
+            "string \"pitta\")");
+  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "method": "P66"})"),
+            "s.json: /layers/0/method: unknown method \"P66\"; did you mean P6 (La-LP), P1 "
+            "(Pa-Ca) or P2 (LS-Po)?");
+  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "scale": -1})"),
+            "s.json: /layers/0/scale: must be > 0 (got -1)");
+  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "fill": "none"})"),
+            "s.json: /layers/0/fill: unknown color \"none\"; a color is \"#rgb\", \"#rrggbb\", "
+            "\"#rrggbbaa\" or one of black, white, red, green, blue, gray, grey, orange, purple, "
+            "brown, magenta, cyan, yellow");
+  EXPECT_EQ(layer_error(R"({"type": "label", "at": [0, 0]})"),
+            "s.json: /layers/0/text: missing required field (the text to draw)");
+  EXPECT_EQ(layer_error(R"({"type": "label", "text": "A"})"),
+            "s.json: /layers/0/at: missing required field (the point [x, y] of the text)");
+  EXPECT_EQ(layer_error(R"({"type": "label", "text": "A", "at": [0, 0], "size": 201})"),
+            "s.json: /layers/0/size: must be > 0 and <= 200 (got 201)");
+  EXPECT_EQ(layer_error(R"({"type": "legend", "corner": "top_left"})"),
+            "s.json: /layers/0/corner: must be \"top-left\", \"top-right\", \"bottom-left\" or "
+            "\"bottom-right\" (got string \"top_left\")");
+}
+
+// ------------------------------------------------------------ panels
+
+TEST(Panels, MethodNames) {
+  const Scene scene = p6(R"(, "samples": 5, "panels": ["P1", "la-lp", "P6:La-LP", "5s"])");
+  ASSERT_EQ(scene.panels.size(), 4U);
+  EXPECT_EQ(scene.panels[0].method, Method::P1);
+  EXPECT_EQ(scene.panels[0].method_name, "P1");
+  EXPECT_EQ(scene.panels[0].title, "P1 Pa-Ca");
+  EXPECT_EQ(scene.panels[0].pointer, "/panels/0");
+  EXPECT_EQ(scene.panels[1].title, "P6 La-LP");
+  EXPECT_EQ(scene.panels[2].title, "P6 La-LP");
+  EXPECT_EQ(scene.panels[3].method, Method::P5S);
+  EXPECT_EQ(scene.panels[3].title, "P5S Hs-LP");
+  EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
+  for (const Panel& panel : scene.panels) {
+    expect_same_keyframes(panel.keyframes, scene.keyframes);
+    EXPECT_EQ(panel.samples, 5);
+    EXPECT_FALSE(panel.layers.has_value());
+  }
+}
+
+TEST(Panels, SmaIsTitledByItsId) {
+  const Scene scene = parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}],
+      "panels": ["sma"]})",
+                                  "s.json");
+  EXPECT_EQ(scene.panels.at(0).title, "SMA");
+  EXPECT_EQ(scene.panels.at(0).method, Method::SMA);
+}
+
+TEST(Panels, ObjectsOverrideTheScene) {
+  const Scene scene = p6(R"(, "samples": 21, "options": {"path_mean": "harmonic"}, "panels": [
+      {},
+      {"title": "mine"},
+      {"method": "P2", "options": {"anchor": "midpoint"}},
+      {"method": "P9", "title": ""},
+      {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 0], "m": 1, "w": 1},
+                     {"t": 3, "p": [2, 0], "m": 1, "w": 2}], "samples": 3},
+      {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+                                      {"t": 1, "p": [1, 0], "m": 2, "w": 1}]},
+      {"layers": [{"type": "trajectory"}]}
+    ])");
+  ASSERT_EQ(scene.panels.size(), 7U);
+  const Panel& plain = scene.panels[0];
+  EXPECT_EQ(plain.title, "");  // no method named: no title
+  EXPECT_EQ(plain.method, Method::P6);
+  EXPECT_EQ(plain.samples, 21);
+  EXPECT_EQ(plain.options.path_mean, MeanKind::harmonic);
+  EXPECT_EQ(plain.pointer, "/panels/0");
+
+  EXPECT_EQ(scene.panels[1].title, "mine");
+  EXPECT_EQ(scene.panels[1].method, Method::P6);
+
+  const Panel& p2 = scene.panels[2];
+  EXPECT_EQ(p2.method, Method::P2);
+  EXPECT_EQ(p2.title, "P2 LS-Po");
+  EXPECT_EQ(p2.options.anchor, Anchor::midpoint);
+  EXPECT_EQ(p2.options.path_mean, MeanKind::harmonic);  // the scene's, not given by the panel
+  EXPECT_EQ(p2.options.magnitude_mean, MeanKind::geometric);
+
+  EXPECT_EQ(scene.panels[3].method, Method::P9);
+  EXPECT_EQ(scene.panels[3].title, "");  // an explicit "" wins
+
+  const Panel& own = scene.panels[4];
+  ASSERT_EQ(own.keyframes.size(), 3U);
+  EXPECT_EQ(own.keyframes[1].t, 2);
+  EXPECT_EQ(own.keyframes[2].arrow.w, 2);
+  EXPECT_EQ(own.samples, 3);
+  EXPECT_EQ(own.method, Method::P6);
+
+  const Panel& sma = scene.panels[5];
+  EXPECT_EQ(sma.method, Method::SMA);
+  EXPECT_EQ(sma.method_name, "SMA");
+  EXPECT_EQ(sma.title, "SMA");
+  EXPECT_EQ(sma.keyframes.size(), 2U);
+
+  ASSERT_TRUE(scene.panels[6].layers.has_value());
+  ASSERT_EQ(scene.panels[6].layers->size(), 1U);
+  EXPECT_TRUE(std::holds_alternative<TrajectoryLayer>(scene.panels[6].layers->at(0)));
+  EXPECT_EQ(scene.panels[6].pointer, "/panels/6");
+  EXPECT_EQ(scene.layers.size(), 2U);  // the scene's own layers are still the defaults
+}
+
+TEST(Panels, SamplesDefaultWithoutTheScenesSamples) {
+  const Scene scene = p6(R"(, "panels": ["P1", {"samples": 4}])");
+  EXPECT_EQ(scene.panels.at(0).samples, kDefaultFigureSamples);
+  EXPECT_EQ(scene.panels.at(1).samples, 4);
+}
+
+TEST(PanelError, Messages) {
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [])")),
+            "s.json: /panels: must have between 1 and 64 panels (got 0)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": {"method": "P1"})")),
+            "s.json: /panels: must be an array of panels, each a method name or an object (got "
+            "object {\"method\":\"P1\"})");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", null])")),
+            "s.json: /panels/1: a panel must be a method name or an object (got null)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", "P66"])")),
+            "s.json: /panels/1: unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 "
+            "(LS-Po)?");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"metod": "P1"}])")),
+            "s.json: /panels/0/metod: unknown field \"metod\"; did you mean \"method\"?");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"type": "pattern"}])")),
+            "s.json: /panels/0/type: unknown field \"type\"; known fields: method, options, "
+            "keyframes, title, samples, layers");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": 2}])")),
+            "s.json: /panels/0/method: must be a string (got 2)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"title": false}])")),
+            "s.json: /panels/0/title: must be a string (got false)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"samples": 1}])")),
+            "s.json: /panels/0/samples: must be an integer between 2 and 10000 (got 1)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"options": {"anchor": "end"}}])")),
+            "s.json: /panels/0/options/anchor: must be \"start\" or \"midpoint\" (got string "
+            "\"end\")");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"layers": [{"type": "banner"}]}])")),
+            "s.json: /panels/0/layers/0/text: missing required field (the text to draw)");
+}
+
+TEST(PanelError, KeyframesAreCheckedLikeTheScenes) {
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", "P2", "P3", "SMA"])")),
+            "s.json: /panels/3: method SMA takes exactly 2 keyframes (got 3) from the scene; give "
+            "the panel its own \"keyframes\"");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": "SMA", "title": "x"}])")),
+            "s.json: /panels/0/method: method SMA takes exactly 2 keyframes (got 3) from the "
+            "scene; give the panel its own \"keyframes\"");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}]}])")),
+            "s.json: /panels/0/keyframes: method P6 (La-LP) takes exactly 3 keyframes (got 1)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": "SMA", "keyframes": [
+                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "m": 1, "w": 0},
+                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
+            "s.json: /panels/0/keyframes: method SMA takes exactly 2 keyframes (got 3)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", {"keyframes": [
+                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "m": 0, "w": 0},
+                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
+            "s.json: /panels/1/keyframes/1/m: magnitude must be > 0 (got 0)");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [
+                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [0, 0], "m": 1, "w": 0},
+                {"t": 1, "p": [0, 0], "m": 1, "w": 0}]}])")),
+            "s.json: /panels/0/keyframes/2/t: knot 1 is less than the previous knot 2; knots must "
+            "be strictly increasing");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [
+                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "q": [0, 0]},
+                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
+            "s.json: /panels/0/keyframes/1/q: q equals p: a zero-length arrow has no direction");
+}
+
+}  // namespace
+}  // namespace pita::scene

@@ -1,0 +1,400 @@
+// The published schema (schema/scene.schema.json, JSON Schema draft 7) against
+// the parser (src/scene/), with an independent validator, valijson (tests
+// only: pita itself never reads the schema):
+//  - every starter scene in scenes/ is valid;
+//  - every bad scene of the corpus below is refused by both, and the parser
+//    names the JSON Pointer of the bad value;
+//  - good scenes that use every field are accepted by both.
+// A few checks are the parser's alone, since a schema cannot express them
+// (strictly increasing knots, the number of keyframes a panel's method takes
+// with the scene's keyframes, method names, range and view ends in order):
+// ParserOnlyChecks lists them, and checks that the schema lets them through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validation_results.hpp>
+#include <valijson/validator.hpp>
+
+#include "scene/color.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::scene {
+namespace {
+
+const std::filesystem::path kSourceDir = PITA_SOURCE_DIR;
+
+nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << "cannot open " << path;
+  return nlohmann::json::parse(in);
+}
+
+// The schema, parsed once by valijson.
+const valijson::Schema& scene_schema() {
+  static const valijson::Schema* schema = [] {
+    auto* parsed = new valijson::Schema;
+    const nlohmann::json document = read_json(kSourceDir / "schema/scene.schema.json");
+    valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
+    const valijson::adapters::NlohmannJsonAdapter adapter(document);
+    parser.populateSchema(adapter, *parsed);
+    return parsed;
+  }();
+  return *schema;
+}
+
+// valijson's path of a value, "<root>[layers][0][text]", as a JSON Pointer,
+// "/layers/0/text" (the keys of our scenes need no escaping).
+std::string pointer_of(const std::vector<std::string>& context) {
+  std::string pointer;
+  for (const std::string& part : context) {
+    if (part.size() >= 2 && part.front() == '[' && part.back() == ']') {
+      pointer += '/' + part.substr(1, part.size() - 2);
+    }
+  }
+  return pointer;
+}
+
+struct SchemaVerdict {
+  bool valid = true;
+  std::string errors;                 // one line per error: "POINTER: description"
+  std::vector<std::string> pointers;  // where each error is
+};
+
+// What valijson finds wrong with `document`.
+SchemaVerdict validate(const nlohmann::json& document) {
+  valijson::Validator validator;
+  valijson::ValidationResults results;
+  const valijson::adapters::NlohmannJsonAdapter adapter(document);
+  SchemaVerdict verdict;
+  verdict.valid = validator.validate(scene_schema(), adapter, &results);
+  valijson::ValidationResults::Error error;
+  while (results.popError(error)) {
+    verdict.pointers.push_back(pointer_of(error.context));
+    verdict.errors += verdict.pointers.back() + ": " + error.description + "\n";
+  }
+  return verdict;
+}
+
+// "" when the schema accepts `document`, else its errors.
+std::string schema_errors(const nlohmann::json& document) {
+  const SchemaVerdict verdict = validate(document);
+  return verdict.valid ? "" : (verdict.errors.empty() ? "invalid" : verdict.errors);
+}
+
+// The pointer of the SceneError that parsing `text` throws, or "(no error)".
+std::string error_pointer(const std::string& text) {
+  try {
+    parse_scene(text, "s.json");
+  } catch (const SceneError& error) {
+    return error.pointer();
+  }
+  return "(no error)";
+}
+
+std::string error_message(const std::string& text) {
+  try {
+    parse_scene(text, "s.json");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+// A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
+std::string p6_with(const std::string& extra) {
+  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
+         extra + "}";
+}
+
+// A P6 scene whose only layer is `layer` (JSON text).
+std::string with_layer(const std::string& layer) { return p6_with(R"(, "layers": [)" + layer + "]"); }
+
+// Keyframes for panels: three, the middle one `middle`.
+std::string three_keyframes(const std::string& middle) {
+  return R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
+         R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+}
+
+struct BadScene {
+  std::string what;     // the class of mistake
+  std::string text;     // the scene
+  std::string pointer;  // where the parser must say it is wrong
+};
+
+std::string many(const std::string& item, int count) {
+  std::string text;
+  for (int i = 0; i < count; ++i) text += (i > 0 ? ", " : "") + item;
+  return text;
+}
+
+const std::vector<BadScene>& bad_scenes() {
+  static const std::vector<BadScene> corpus = {
+      // Unknown fields, at every level.
+      {"unknown top-level field", p6_with(R"(, "titel": "x")"), "/titel"},
+      {"unknown canvas field", p6_with(R"(, "canvas": {"widht": 100})"), "/canvas/widht"},
+      {"unknown view field", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 1], "mid": [0, 0]}})"),
+       "/canvas/view/mid"},
+      {"unknown layer field", with_layer(R"({"type": "pattern", "colour": "red"})"), "/layers/0/colour"},
+      {"field of another layer type", with_layer(R"({"type": "pattern", "text": "hi"})"),
+       "/layers/0/text"},
+      {"field of another layer type (legend)", with_layer(R"({"type": "legend", "color": "red"})"),
+       "/layers/0/color"},
+      {"unknown outline field", with_layer(R"({"type": "stroke", "outline": {"colour": "red"}})"),
+       "/layers/0/outline/colour"},
+      {"unknown panel field", p6_with(R"(, "panels": [{"methd": "P2"}])"), "/panels/0/methd"},
+      {"unknown panel option", p6_with(R"(, "panels": [{"options": {"anchr": "start"}}])"),
+       "/panels/0/options/anchr"},
+      {"unknown panel keyframe field",
+       p6_with(R"(, "panels": [{"keyframes": )" +
+               three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0, "x": 1})") + "}]"),
+       "/panels/0/keyframes/1/x"},
+      {"unknown field in a panel's layer",
+       p6_with(R"(, "panels": ["P1", {"layers": [{"type": "label", "text": "a", "at": [0, 0], "font": "Sans"}]}])"),
+       "/panels/1/layers/0/font"},
+      // Wrong types.
+      {"title not a string", p6_with(R"(, "title": 3)"), "/title"},
+      {"canvas not an object", p6_with(R"(, "canvas": [])"), "/canvas"},
+      {"canvas width not an integer", p6_with(R"(, "canvas": {"width": 800.5})"), "/canvas/width"},
+      {"layers not an array", p6_with(R"(, "layers": {"type": "pattern"})"), "/layers"},
+      {"layer not an object", with_layer(R"("pattern")"), "/layers/0"},
+      {"boolean field not a boolean", with_layer(R"({"type": "keyframes", "winding": "yes"})"),
+       "/layers/0/winding"},
+      {"outline not an object", with_layer(R"({"type": "stroke", "outline": "black"})"),
+       "/layers/0/outline"},
+      {"color not a string", with_layer(R"({"type": "stroke", "fill": 3})"), "/layers/0/fill"},
+      {"discrepancy method not a string", with_layer(R"({"type": "discrepancy", "method": 6})"),
+       "/layers/0/method"},
+      {"panels not an array", p6_with(R"(, "panels": "P2")"), "/panels"},
+      {"panel neither a string nor an object", p6_with(R"(, "panels": [3])"), "/panels/0"},
+      {"panel title not a string", p6_with(R"(, "panels": [{"title": 3}])"), "/panels/0/title"},
+      {"range not a pair", with_layer(R"({"type": "pattern", "range": [0, 0.5, 1]})"),
+       "/layers/0/range"},
+      {"label point not a pair", with_layer(R"({"type": "label", "text": "A", "at": [1]})"),
+       "/layers/0/at"},
+      // Bounds.
+      {"canvas width too small", p6_with(R"(, "canvas": {"width": 15})"), "/canvas/width"},
+      {"canvas height too large", p6_with(R"(, "canvas": {"height": 8193})"), "/canvas/height"},
+      {"margin too large", p6_with(R"(, "canvas": {"margin": 0.5})"), "/canvas/margin"},
+      {"columns zero", p6_with(R"(, "canvas": {"columns": 0})"), "/canvas/columns"},
+      {"columns too many", p6_with(R"(, "canvas": {"columns": 65})"), "/canvas/columns"},
+      {"empty font", p6_with(R"(, "canvas": {"font": ""})"), "/canvas/font"},
+      {"too many layers", p6_with(R"(, "layers": [)" + many(R"({"type": "legend"})", 65) + "]"),
+       "/layers"},
+      {"line width zero", with_layer(R"({"type": "pattern", "width": 0})"), "/layers/0/width"},
+      {"line width too large", with_layer(R"({"type": "trajectory", "width": 101})"),
+       "/layers/0/width"},
+      {"opacity above 1", with_layer(R"({"type": "stroke", "opacity": 1.5})"), "/layers/0/opacity"},
+      {"opacity below 0", with_layer(R"({"type": "pattern", "opacity": -0.1})"), "/layers/0/opacity"},
+      {"dash length not positive", with_layer(R"({"type": "pattern", "dash": [4, 0]})"),
+       "/layers/0/dash/1"},
+      {"dash too long", with_layer(R"({"type": "pattern", "dash": [)" + many("1", 17) + "]}"),
+       "/layers/0/dash"},
+      {"pattern samples too few", with_layer(R"({"type": "pattern", "samples": 1})"),
+       "/layers/0/samples"},
+      {"pattern samples too many", with_layer(R"({"type": "stroke", "samples": 10001})"),
+       "/layers/0/samples"},
+      {"trajectory samples too many", with_layer(R"({"type": "trajectory", "samples": 100001})"),
+       "/layers/0/samples"},
+      {"keyframe colors empty", with_layer(R"({"type": "keyframes", "colors": []})"),
+       "/layers/0/colors"},
+      {"keyframe colors too many",
+       with_layer(R"({"type": "keyframes", "colors": [)" + many(R"("red")", 17) + "]}"),
+       "/layers/0/colors"},
+      {"banner padding too large",
+       with_layer(R"({"type": "banner", "text": "A", "padding": 0.46})"), "/layers/0/padding"},
+      {"discrepancy scale zero", with_layer(R"({"type": "discrepancy", "scale": 0})"),
+       "/layers/0/scale"},
+      {"label size zero", with_layer(R"({"type": "label", "text": "A", "at": [0, 0], "size": 0})"),
+       "/layers/0/size"},
+      {"legend size too large", with_layer(R"({"type": "legend", "size": 201})"), "/layers/0/size"},
+      {"no panels", p6_with(R"(, "panels": [])"), "/panels"},
+      {"too many panels", p6_with(R"(, "panels": [)" + many(R"("P1")", 65) + "]"), "/panels"},
+      {"panel samples too many", p6_with(R"(, "panels": [{"samples": 10001}])"), "/panels/0/samples"},
+      {"panel keyframe magnitude not positive",
+       p6_with(R"(, "panels": [{"keyframes": )" +
+               three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": -1, "w": 0})") + "}]"),
+       "/panels/0/keyframes/1/m"},
+      {"panel SMA given three keyframes",
+       p6_with(R"(, "panels": [{"method": "SMA", "keyframes": )" +
+               three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
+       "/panels/0/keyframes"},
+      // Colors.
+      {"hex color of 5 digits", p6_with(R"(, "canvas": {"background": "#12345"})"),
+       "/canvas/background"},
+      {"hex color with a non-hex digit", with_layer(R"({"type": "keyframes", "colors": ["red", "#ggg"]})"),
+       "/layers/0/colors/1"},
+      {"unknown color name", with_layer(R"({"type": "label", "text": "A", "at": [0, 0], "color": "rde"})"),
+       "/layers/0/color"},
+      {"color name in capitals", with_layer(R"({"type": "pattern", "color": "Red"})"),
+       "/layers/0/color"},
+      // Choices.
+      {"y axis", p6_with(R"(, "canvas": {"y_axis": "sideways"})"), "/canvas/y_axis"},
+      {"view", p6_with(R"(, "canvas": {"view": "fit"})"), "/canvas/view"},
+      {"view box without min", p6_with(R"(, "canvas": {"view": {"max": [1, 1]}})"), "/canvas/view/min"},
+      {"layer without type", with_layer(R"({"color": "red"})"), "/layers/0/type"},
+      {"unknown layer type", with_layer(R"({"type": "patern"})"), "/layers/0/type"},
+      {"trajectory point", with_layer(R"({"type": "trajectory", "point": "start"})"),
+       "/layers/0/point"},
+      {"spiral center", with_layer(R"({"type": "keyframes", "spiral_center": "middle"})"),
+       "/layers/0/spiral_center"},
+      {"predictor", with_layer(R"({"type": "discrepancy", "predictor": "next"})"),
+       "/layers/0/predictor"},
+      {"legend corner", with_layer(R"({"type": "legend", "corner": "top"})"), "/layers/0/corner"},
+      // Required text.
+      {"banner without text", with_layer(R"({"type": "banner"})"), "/layers/0/text"},
+      {"banner with empty text", with_layer(R"({"type": "banner", "text": ""})"), "/layers/0/text"},
+      {"banner text too long",
+       with_layer(R"({"type": "banner", "text": ")" + std::string(kMaxTextLength + 1, 'x') + "\"}"),
+       "/layers/0/text"},
+      {"label without point", with_layer(R"({"type": "label", "text": "A"})"), "/layers/0/at"},
+  };
+  return corpus;
+}
+
+// Mistakes that only the parser sees: the schema lets them through.
+const std::vector<BadScene>& parser_only_scenes() {
+  static const std::vector<BadScene> corpus = {
+      {"range ends out of order", with_layer(R"({"type": "pattern", "range": [1, 0.5]})"),
+       "/layers/0/range/1"},
+      {"view min not below max", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 0]}})"),
+       "/canvas/view/max/1"},
+      {"panel method that does not take the scene's keyframes", p6_with(R"(, "panels": ["SMA"])"),
+       "/panels/0"},
+      {"panel object method that does not take the scene's keyframes",
+       p6_with(R"(, "panels": [{"method": "SMA", "title": "steady"}])"), "/panels/0/method"},
+      {"panel keyframes that do not fit the scene's method",
+       R"({"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+         {"t": 1, "p": [1, 0], "m": 1, "w": 0}], "panels": [{"keyframes": )" +
+           three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0})") + "}]}",
+       "/panels/0/keyframes"},
+      {"panel knots not increasing",
+       p6_with(R"(, "panels": [{"keyframes": )" +
+               three_keyframes(R"({"t": 1, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
+       "/panels/0/keyframes/2/t"},
+      {"unknown panel method", p6_with(R"(, "panels": ["P66"])"), "/panels/0"},
+      {"unknown discrepancy method", with_layer(R"({"type": "discrepancy", "method": "P66"})"),
+       "/layers/0/method"},
+  };
+  return corpus;
+}
+
+TEST(SceneSchemaValidation, EveryStarterSceneIsValid) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kSourceDir / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_EQ(schema_errors(read_json(entry.path())), "");
+    ++count;
+  }
+  EXPECT_GT(count, 0);
+}
+
+TEST(SceneSchemaValidation, CorpusCoversEnoughMistakes) { EXPECT_GE(bad_scenes().size(), 25U); }
+
+TEST(SceneSchemaValidation, BadScenesAreRefusedByBoth) {
+  for (const BadScene& bad : bad_scenes()) {
+    SCOPED_TRACE(bad.what + ": " + bad.text.substr(0, 300));
+    const SchemaVerdict verdict = validate(nlohmann::json::parse(bad.text));
+    EXPECT_FALSE(verdict.valid) << "the schema accepts it";
+    // The schema refuses it for the same mistake: each of its errors is at the
+    // bad value or at an object or array that holds it.
+    for (const std::string& at : verdict.pointers) {
+      const bool holds = bad.pointer.rfind(at, 0) == 0 &&
+                         (at.size() == bad.pointer.size() || bad.pointer[at.size()] == '/');
+      EXPECT_TRUE(holds) << "schema error at " << at << ":\n" << verdict.errors;
+    }
+    EXPECT_EQ(error_pointer(bad.text), bad.pointer) << error_message(bad.text);
+  }
+}
+
+TEST(SceneSchemaValidation, ParserOnlyChecks) {
+  for (const BadScene& bad : parser_only_scenes()) {
+    SCOPED_TRACE(bad.what);
+    EXPECT_EQ(schema_errors(nlohmann::json::parse(bad.text)), "");
+    EXPECT_EQ(error_pointer(bad.text), bad.pointer) << error_message(bad.text);
+  }
+}
+
+// Good scenes that use every field, each accepted by both.
+const std::vector<std::string>& good_scenes() {
+  static const std::vector<std::string> scenes = {
+      R"({
+        "$schema": "../schema/scene.schema.json",
+        "description": "every field",
+        "title": "Every field",
+        "method": "P6",
+        "options": {"anchor": "midpoint", "path_mean": "arithmetic", "magnitude_mean": "harmonic"},
+        "keyframes": [
+          {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+          {"t": 0.5, "p": [3, 1.5], "q": [3.5, 2]},
+          {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5, "turns": 1}
+        ],
+        "samples": 9,
+        "canvas": {"width": 1200, "height": 400, "background": "#F8F8F0", "view": {"min": [-1, -2], "max": [7, 3]},
+                   "margin": 0.1, "y_axis": "down", "columns": 3, "font": "DejaVu Sans"},
+        "layers": [
+          {"type": "stroke", "fill": "#4066a680", "opacity": 0.5,
+           "outline": {"color": "black", "width": 0.5, "opacity": 0.8, "dash": [2, 1]}, "samples": 40, "range": [0, 1]},
+          {"type": "banner", "text": "PITA", "font": "Serif Bold", "fill": "white", "opacity": 0.9,
+           "outline": {"color": "grey"}, "padding": 0.2, "samples": 30, "range": [0.1, 0.9]},
+          {"type": "pattern", "color": "gray", "width": 0.5, "opacity": 0.7, "dash": [], "extended": true,
+           "samples": 25, "range": [-0.5, 1.5]},
+          {"type": "trajectory", "point": "mid", "samples": 1000, "range": [0, 1], "color": "orange",
+           "width": 1.5, "opacity": 1, "dash": [4, 2]},
+          {"type": "discrepancy", "predictor": "pita", "method": "P1", "scale": 10, "color": "purple",
+           "width": 1, "opacity": 0.5, "dash": [1, 1], "fill": "#ff000040", "samples": 20},
+          {"type": "keyframes", "colors": ["red", "green", "blue", "#abc"], "width": 3, "opacity": 1,
+           "winding": false, "spiral_center": "midpoint", "extended": true},
+          {"type": "label", "text": "A", "at": [0, -0.5], "size": 14, "color": "brown"},
+          {"type": "legend", "corner": "bottom-right", "size": 10}
+        ],
+        "panels": [
+          "P1",
+          "la-lp",
+          {"method": "P2", "options": {"anchor": "start"}, "title": "", "samples": 33},
+          {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 1},
+                         {"t": 2, "p": [2, 0], "m": 1, "w": 2}],
+           "layers": [{"type": "trajectory", "point": "q"}]},
+          {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}]}
+        ]
+      })",
+      // Transparent background, shared view, empty layers.
+      p6_with(R"(, "canvas": {"background": "none", "view": "shared"}, "layers": [], "panels": ["P4", "La-LP"])"),
+  };
+  return scenes;
+}
+
+TEST(SceneSchemaValidation, GoodScenesAreAcceptedByBoth) {
+  for (const std::string& text : good_scenes()) {
+    SCOPED_TRACE(text.substr(0, 300));
+    EXPECT_EQ(schema_errors(nlohmann::json::parse(text)), "");
+    EXPECT_EQ(error_message(text), "(no error)");
+  }
+}
+
+TEST(SceneSchemaValidation, ColorNamesMatchTheParser) {
+  const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
+  std::vector<std::string> names;
+  for (const NamedColor& named : named_colors()) names.emplace_back(named.name);
+  EXPECT_EQ(schema.at("definitions").at("color").at("anyOf").at(1).at("enum"),
+            nlohmann::json(names));
+  const std::string description = schema.at("definitions").at("color").at("description");
+  for (const NamedColor& named : named_colors()) {
+    EXPECT_NE(description.find(std::string(named.name) + " (" + std::string(named.hex) + ")"),
+              std::string::npos)
+        << named.name;
+  }
+}
+
+}  // namespace
+}  // namespace pita::scene
