@@ -73,11 +73,43 @@ std::string element_pointer(const std::string& parent, std::size_t index) {
 
 std::string number_text(double x) { return fmt::format("{}", x); }
 
+namespace {
+
+// Appends a short preview of `value` to `out`, stopping once `out` is longer
+// than `budget` and never descending more than a few levels: a scene may nest
+// 100 000 arrays, and the whole value is never needed to say what it is.
+void append_preview(const Json& value, std::string& out, std::size_t budget, int depth) {
+  constexpr int kMaxDepth = 3;
+  if (value.is_array() || value.is_object()) {
+    const bool array = value.is_array();
+    out += array ? '[' : '{';
+    if (!value.empty() && depth >= kMaxDepth) {
+      out += "...";
+    } else {
+      bool first = true;
+      for (auto it = value.begin(); it != value.end(); ++it) {
+        if (out.size() > budget) break;
+        if (!first) out += ',';
+        first = false;
+        if (!array) out += Json(it.key()).dump(-1, ' ', true, Json::error_handler_t::replace) + ':';
+        append_preview(*it, out, budget, depth + 1);
+      }
+    }
+    out += array ? ']' : '}';
+    return;
+  }
+  // Scalars dump without recursion; a long string is cut below.
+  out += value.dump(-1, ' ', true, Json::error_handler_t::replace).substr(0, budget + 1);
+}
+
+}  // namespace
+
 std::string value_text(const Json& value) {
   constexpr std::size_t kMaxShown = 40;
   if (value.is_number()) return number_text(value.get<double>());
   // ensure_ascii keeps the text valid UTF-8 however it is cut.
-  std::string text = value.dump(-1, ' ', true, Json::error_handler_t::replace);
+  std::string text;
+  append_preview(value, text, kMaxShown, 0);
   if (text.size() > kMaxShown) text = text.substr(0, kMaxShown - 3) + "...";
   switch (value.type()) {
     case Json::value_t::string:
@@ -293,10 +325,15 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
   if (knot == nullptr) fail(pointer + "/t", "missing required field (the knot, a time value)");
   Keyframe keyframe;
   keyframe.t = number(*knot, pointer + "/t");
+  if (std::abs(keyframe.t) > kMaxKeyframeValue) {
+    fail(pointer + "/t", fmt::format("knot must be within +-{:g} (got {})", kMaxKeyframeValue,
+                                     number_text(keyframe.t)));
+  }
 
   const Json* start = member(value, "p");
   if (start == nullptr) fail(pointer + "/p", "missing required field (the start point [x, y])");
   const Point p = point(*start, pointer + "/p");
+  check_coordinates(p, pointer + "/p");
 
   const Json* end = member(value, "q");
   const Json* magnitude = member(value, "m");
@@ -306,7 +343,13 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
       fail(pointer + "/q", "give either \"q\" or \"m\" and \"w\", not both");
     }
     const Point q = point(*end, pointer + "/q");
+    check_coordinates(q, pointer + "/q");
     if (q == p) fail(pointer + "/q", "q equals p: a zero-length arrow has no direction");
+    if (!(std::abs(q - p) >= kMinMagnitude)) {
+      fail(pointer + "/q", fmt::format("q is within {:g} of p: the arrow is too short for its "
+                                       "direction and magnitude to be computed",
+                                       kMinMagnitude));
+    }
     keyframe.arrow = zero_turn_arrow(p, q);
     if (!is_finite(keyframe.arrow)) {
       fail(pointer + "/q", "the arrow from p to q is too long (its magnitude overflows)");
@@ -323,18 +366,42 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
     }
     const double m = number(*magnitude, pointer + "/m");
     if (!(m > 0.0)) fail(pointer + "/m", "magnitude must be > 0 (got " + number_text(m) + ")");
+    if (m < kMinMagnitude || m > kMaxKeyframeValue) {
+      fail(pointer + "/m", fmt::format("magnitude must be between {:g} and {:g} (got {})",
+                                       kMinMagnitude, kMaxKeyframeValue, number_text(m)));
+    }
     keyframe.arrow = Arrow{p, m, number(*winding, pointer + "/w")};
+    if (std::abs(keyframe.arrow.w) > kMaxWinding) {
+      fail(pointer + "/w", fmt::format("winding must be within +-{:g} radians (about {:.0f} "
+                                       "turns; beyond, 2 pi k loses the angle's precision) "
+                                       "(got {})",
+                                       kMaxWinding, kMaxWinding / (2 * 3.141592653589793),
+                                       number_text(keyframe.arrow.w)));
+    }
   }
 
   if (const Json* turns = member(value, "turns")) {
     const double k = integer(*turns, pointer + "/turns");
     keyframe.arrow = with_turns(keyframe.arrow, k);
-    if (!std::isfinite(keyframe.arrow.w)) {
+    if (!(std::abs(keyframe.arrow.w) <= kMaxWinding)) {
       fail(pointer + "/turns",
-           "too many turns: the winding overflows (got " + number_text(k) + ")");
+           fmt::format("too many turns: the winding must stay within +-{:g} radians (got {} "
+                       "turns)",
+                       kMaxWinding, number_text(k)));
     }
   }
   return keyframe;
+}
+
+void JsonReader::check_coordinates(Point x, const std::string& pointer) const {
+  for (int i = 0; i < 2; ++i) {
+    const double v = i == 0 ? x.real() : x.imag();
+    if (std::abs(v) > kMaxKeyframeValue) {
+      fail(pointer + "/" + std::to_string(i),
+           fmt::format("coordinate must be within +-{:g} (got {})", kMaxKeyframeValue,
+                       number_text(v)));
+    }
+  }
 }
 
 // Knots must be strictly increasing (the registry requires a < b < c).

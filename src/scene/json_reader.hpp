@@ -116,6 +116,8 @@ class JsonReader {
                                   std::span<const std::string_view> names) const;
   Keyframe keyframe(const Json& value, const std::string& pointer) const;
   void check_knot_order(double previous, double knot, const std::string& pointer) const;
+  // Both coordinates within +-kMaxKeyframeValue.
+  void check_coordinates(Point x, const std::string& pointer) const;
 
   std::string file_;
 };

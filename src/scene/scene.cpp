@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <utility>
@@ -97,9 +98,82 @@ class NumberOverflowLocator : public nlohmann::json_sax<Json> {
   std::string token;    // the number as written
 };
 
+// A member given twice in one object ("m": 1, "m": -1): JSON leaves its
+// meaning open and nlohmann keeps the last one silently, so we refuse it.
+struct DuplicateKey {
+  std::string pointer;
+  std::string key;
+};
+
+// Follows the parser's events to know the JSON Pointer of the value being
+// read, and throws DuplicateKey at a member's second occurrence.
+class DuplicateKeyFinder {
+ public:
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, Json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        stack_.emplace_back();
+        stack_.back().array = event == Event::array_start;
+        break;
+      case Event::key: {
+        Frame& top = stack_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) throw DuplicateKey{pointer(), top.key};
+        break;
+      }
+      case Event::object_end:
+      case Event::array_end:
+        stack_.pop_back();
+        next_element();
+        break;
+      case Event::value: next_element(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool array = false;
+    std::size_t index = 0;
+    std::set<std::string> keys;
+    std::string key;
+  };
+
+  void next_element() {
+    if (!stack_.empty() && stack_.back().array) ++stack_.back().index;
+  }
+
+  std::string pointer() const {
+    std::string text;
+    for (const Frame& frame : stack_) {
+      if (frame.array) {
+        text += '/' + std::to_string(frame.index);
+      } else {
+        text += '/';
+        for (char c : frame.key) text += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+      }
+    }
+    return text;
+  }
+
+  std::vector<Frame> stack_;
+};
+
 Json parse_json(std::string_view text, const std::string& file) {
+  // nlohmann stops at a NUL byte as if the text ended there.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    const auto [line, column] = line_and_column(text, nul);
+    throw SceneError(file, line, column,
+                     "the file contains a NUL byte: a scene is UTF-8 text (is this file UTF-16 "
+                     "or binary?)");
+  }
   try {
-    return Json::parse(text);
+    return Json::parse(text, DuplicateKeyFinder());
+  } catch (const DuplicateKey& duplicate) {
+    throw SceneError(file, duplicate.pointer,
+                     fmt::format("field \"{}\" is given twice in the same object", duplicate.key));
   } catch (const Json::parse_error& error) {
     // error.byte counts the bytes read, the offending one included.
     const auto [line, column] = line_and_column(text, error.byte == 0 ? 0 : error.byte - 1);

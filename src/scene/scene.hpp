@@ -24,6 +24,14 @@ inline constexpr int kMinSamples = 2;
 inline constexpr int kMaxSamples = 1'000'000;
 inline constexpr int kDefaultSamples = 9;
 
+// Limits on keyframe values (errors name the field and the bound). Knots,
+// coordinates and magnitudes beyond 1e100 (or magnitudes below 1e-100) leave
+// the methods no room before their intermediate numbers overflow; windings
+// beyond 1e6 rad (~159 000 turns) lose the angle's precision in w + 2 pi k.
+inline constexpr double kMaxKeyframeValue = 1e100;
+inline constexpr double kMinMagnitude = 1e-100;
+inline constexpr double kMaxWinding = 1e6;
+
 struct Scene {
   std::string path;           // where the scene came from (a file name, as given)
   std::string description;    // "" when the scene has none

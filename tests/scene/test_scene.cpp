@@ -266,7 +266,7 @@ TEST(SceneError, ZeroLengthArrow) {
 
 TEST(SceneError, ArrowTooLong) {
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [-1e308, 0], "q": [1e308, 0]})")),
-            "s.json: /keyframes/1/q: the arrow from p to q is too long (its magnitude overflows)");
+            "s.json: /keyframes/1/p/0: coordinate must be within +-1e+100 (got -1e+308)");
 }
 
 TEST(SceneError, TurnsMustBeAnInteger) {
@@ -275,7 +275,7 @@ TEST(SceneError, TurnsMustBeAnInteger) {
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "q": [1, 1], "turns": "1"})")),
             "s.json: /keyframes/1/turns: must be an integer (got string \"1\")");
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "q": [1, 1], "turns": 1e308})")),
-            "s.json: /keyframes/1/turns: too many turns: the winding overflows (got 1e+308)");
+            "s.json: /keyframes/1/turns: too many turns: the winding must stay within +-1e+06 radians (got 1e+308 turns)");
 }
 
 TEST(SceneError, KnotsMustBeStrictlyIncreasing) {
@@ -408,6 +408,51 @@ TEST(Scene, LoadSceneNamesTheFileAsGiven) {
               path.string() + ": /keyframes: method P6 (La-LP) takes exactly 3 keyframes (got 0)");
   }
   std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace pita::scene
+
+namespace pita::scene {
+namespace {
+
+// Found by feeding malformed scenes to `pita eval` (a corpus of 461 cases).
+TEST(SceneRobustness, DuplicateKeysAreRefusedWithTheirPointer) {
+  EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 0, "m": 2})")),
+            "s.json: /keyframes/1/m: field \"m\" is given twice in the same object");
+  EXPECT_EQ(error_of(R"({"method": "P6", "method": "SMA", "keyframes": []})"),
+            "s.json: /method: field \"method\" is given twice in the same object");
+}
+
+TEST(SceneRobustness, NulByteIsRefusedNotTreatedAsTheEnd) {
+  const std::string text = std::string(R"({"method": "P6"})") + '\0' + "junk";
+  EXPECT_EQ(error_of(text).rfind("s.json:1:17: the file contains a NUL byte", 0), 0u) << error_of(text);
+}
+
+TEST(SceneRobustness, DeepNestingIsReportedShortly) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(error_of(R"({"method": )" + deep + "}"),
+            "s.json: /method: must be a string (got array [[[[...]]]])");
+}
+
+TEST(SceneRobustness, KeyframeValuesHaveLimits) {
+  EXPECT_NE(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 5e-324, "w": 0})"))
+                .find("/keyframes/1/m: magnitude must be between 1e-100 and 1e+100"),
+            std::string::npos);
+  EXPECT_NE(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 1e14})"))
+                .find("/keyframes/1/w: winding must be within +-1e+06 radians"),
+            std::string::npos);
+  EXPECT_NE(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 0, "turns": 1e18})"))
+                .find("/keyframes/1/turns: too many turns"),
+            std::string::npos);
+  EXPECT_NE(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 1e200], "m": 1, "w": 0})"))
+                .find("/keyframes/1/p/1: coordinate must be within +-1e+100"),
+            std::string::npos);
+  EXPECT_NE(error_of(p6_with_middle(R"({"t": 0.5, "p": [0, 0], "q": [5e-324, 0]})"))
+                .find("/keyframes/1/q: q is within 1e-100 of p"),
+            std::string::npos);
+  // Just inside the limits is fine.
+  EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1e-100, "w": 1e6})")), "(no error)");
 }
 
 }  // namespace
