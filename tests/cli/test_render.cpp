@@ -107,6 +107,47 @@ TEST(Render, BadSceneWritesNothingAndNamesThePointer) {
   EXPECT_TRUE(fs::exists(dir.path() / "out/good.png"));
 }
 
+TEST(Render, BadFigureFieldsWriteNothing) {
+  const ScratchDir dir;
+  const std::string keyframes = R"("keyframes": [
+    {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
+    {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"("canvas": {"width": 99999})", "/canvas/width"},
+      {R"("layers": [{"type": "patern"}])", "/layers/0/type"},
+      {R"("layers": [{"type": "banner"}])", "/layers/0/text"},
+      {R"("layers": [{"type": "pattern", "color": "#12"}])", "/layers/0/color"},
+      {R"("panels": ["P7", "SMA"])", "/panels/1"},
+      {R"("layers": [{"type": "stroke", "samples": 1}])", "/layers/0/samples"},
+  };
+  for (const auto& [field, pointer] : cases) {
+    dir.write("bad.json", R"({"method": "P6", )" + keyframes + ", " + field + "}");
+    const RunResult r = run_pita({"render", "bad.json", "-o", "out", "--format", "svg,png,pdf"}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << field;
+    EXPECT_NE(r.err.find("bad.json: " + pointer), std::string::npos) << field << ": " << r.err;
+    EXPECT_TRUE(!fs::exists(dir.path() / "out") || fs::is_empty(dir.path() / "out")) << field;
+  }
+}
+
+TEST(Render, EveryStarterSceneRenders) {
+  const ScratchDir dir;
+  std::vector<std::string> args{"render"};
+  for (const auto& entry : fs::directory_iterator(fs::path(PITA_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() == ".json") args.push_back(entry.path().string());
+  }
+  ASSERT_GE(args.size(), 10u);  // Fig. 1, 3, 4, 7, 8, 13, 17, 25, 26, 28
+  const std::size_t scenes = args.size() - 1;
+  args.insert(args.end(), {"-o", "out", "--format", "svg,png"});
+  const RunResult r = run_pita(args, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "out")) {
+    EXPECT_GT(fs::file_size(entry.path()), 1000u) << entry.path();
+    ++files;
+  }
+  EXPECT_EQ(files, 2 * scenes);
+}
+
 TEST(Render, UsageErrorsExitTwo) {
   const ScratchDir dir;
   dir.write("good.json", kGoodScene);
