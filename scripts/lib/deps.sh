@@ -14,6 +14,7 @@ PITA_PACKAGES=(
   libeigen3-dev        # matrices (tests' oracles, affine motions)
   libcairo2-dev        # figures: SVG, PNG, PDF
   libpango1.0-dev      # figures: text (banners, titles)
+  fonts-dejavu-core    # figures: the fonts the scenes and goldens use (DejaVu Sans, Serif)
   libgtest-dev libgmock-dev  # tests
   libvalijson-dev      # tests: the scene schema checked by an independent validator
   libxml2-utils librsvg2-bin  # tests: SVG read back by xmllint and rsvg-convert

@@ -6,7 +6,7 @@ namespace pita::cli {
 
 enum class ExitCode : int {
   success = 0,
-  golden_mismatch = 1,  // a rendered figure differs from its golden (not used yet)
+  golden_mismatch = 1,  // pita check: a figure differs from its golden, or has none
   bad_input = 2,        // bad usage, a bad scene, or a motion that does not exist for it
   failure = 3,          // anything else: the output could not be written, or a bug
 };

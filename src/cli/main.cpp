@@ -12,6 +12,7 @@
 
 #include "cli/eval.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/golden.hpp"
 #include "cli/render.hpp"
 #include "scene/did_you_mean.hpp"
 
@@ -35,13 +36,17 @@ int main(int argc, char** argv) {
       "\nExamples:\n"
       "  pita eval scenes/fig01-eight-pitas.json            print the frames as JSON\n"
       "  pita render scenes/fig01-eight-pitas.json -o fig01.png\n"
-      "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n\n"
+      "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n"
+      "  pita check                                         every figure against golden/\n\n"
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
-      "Exit codes: 0 success, 2 bad input or usage, 3 an output could not be written.");
+      "Exit codes: 0 success, 1 a figure differs from its golden (check), 2 bad input or\n"
+      "usage, 3 an output could not be written.");
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);
+  const auto check_options = pita::cli::setup_check(app);
+  const auto update_options = pita::cli::setup_update_goldens(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -73,6 +78,10 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
     if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
+    if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
+    if (app.got_subcommand("update-goldens")) {
+      return to_int(pita::cli::run_update_goldens(*update_options));
+    }
   } catch (const std::exception& error) {
     std::cerr << "pita: internal error: " << error.what() << '\n';
     return to_int(ExitCode::failure);

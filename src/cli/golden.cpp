@@ -1,0 +1,214 @@
+#include "cli/golden.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "golden/check.hpp"
+#include "golden/report.hpp"
+#include "render/output_file.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The scenes named, or every scenes/*.json of the working directory.
+std::vector<fs::path> scenes_of(const GoldenOptions& options) {
+  std::vector<fs::path> paths(options.scene_paths.begin(), options.scene_paths.end());
+  if (paths.empty()) {
+    std::error_code error;
+    for (const auto& entry : fs::directory_iterator("scenes", error)) {
+      if (entry.path().extension() == ".json") paths.push_back(entry.path());
+    }
+    std::sort(paths.begin(), paths.end());
+  }
+  return paths;
+}
+
+golden::Tolerances tolerances_of(const GoldenOptions& o) {
+  golden::Tolerances t;
+  t.numbers = o.number_tolerance;
+  t.svg = o.svg_tolerance;
+  t.image.channel = o.pixel_tolerance;
+  t.image.max_share = o.max_differing;
+  return t;
+}
+
+void add_common(CLI::App* command, GoldenOptions& o) {
+  command->add_option("SCENE", o.scene_paths, "Scene files (default: every scenes/*.json)");
+  command->add_option("--golden", o.golden_dir, "Golden directory, mirroring scenes/")
+      ->capture_default_str()
+      ->type_name("DIR");
+}
+
+}  // namespace
+
+std::shared_ptr<GoldenOptions> setup_check(CLI::App& app) {
+  auto o = std::make_shared<GoldenOptions>();
+  o->number_tolerance = golden::kDefaultNumberTolerance;
+  o->svg_tolerance = golden::kDefaultSvgTolerance;
+  o->pixel_tolerance = golden::kDefaultChannelTolerance;
+  o->max_differing = golden::kDefaultDifferingShare;
+  CLI::App* check = app.add_subcommand("check", "Compare each scene's figure with its goldens");
+  add_common(check, *o);
+  check->add_option("--report", o->report_dir,
+                    "Write DIR/index.html with the expected, actual and diff images of each mismatch")
+      ->type_name("DIR");
+  check->add_option("--number-tolerance", o->number_tolerance,
+                    "Largest difference of a drawn number, relative to its panel's extent")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0))
+      ->type_name("X");
+  check->add_option("--svg-tolerance", o->svg_tolerance, "Largest difference of an SVG number, in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1000.0))
+      ->type_name("PX");
+  check->add_option("--pixel-tolerance", o->pixel_tolerance,
+                    "A PNG pixel differs when a channel differs by more than N levels (0-255)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 255))
+      ->type_name("N");
+  check->add_option("--max-differing", o->max_differing,
+                    "Largest share of differing PNG pixels that still matches (0-1)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0))
+      ->type_name("SHARE");
+  check->footer(R"(
+Each scene is rendered in memory and compared with golden/<name>/<name>.data.json
+(every drawn number, relative tolerance), .svg (its geometry, parsed numbers with an
+absolute tolerance) and .png (per-pixel tolerance and a share of differing pixels).
+A scene without goldens fails. Exit codes: 0 all match, 1 a figure differs or has no
+golden, 2 a bad scene or an unreadable golden.
+
+Examples:
+  pita check                               every scene of scenes/ against golden/
+  pita check scenes/fig13-knot-ratio.json --report check-report
+)");
+  return o;
+}
+
+std::shared_ptr<GoldenOptions> setup_update_goldens(CLI::App& app) {
+  auto o = std::make_shared<GoldenOptions>();
+  CLI::App* update = app.add_subcommand(
+      "update-goldens", "Write the goldens of scenes (the only way goldens change)");
+  add_common(update, *o);
+  update->footer(R"(
+Renders each scene and writes golden/<name>/<name>.{data.json,svg,png}, printing for
+each file whether it is new, unchanged or changed, and by how much. Review the
+changes (git diff, the PNGs) before committing them, and say why they changed.
+)");
+  return o;
+}
+
+ExitCode run_check(const GoldenOptions& options) {
+  const std::vector<fs::path> scenes = scenes_of(options);
+  if (scenes.empty()) {
+    std::cerr << "pita: check: no scenes given and no scenes/*.json here\n";
+    return ExitCode::bad_input;
+  }
+  const golden::Tolerances tolerances = tolerances_of(options);
+  bool bad_input = false, differs = false;
+  std::vector<golden::ReportEntry> report;
+  for (const fs::path& scene : scenes) {
+    golden::ReportEntry entry;
+    entry.check.scene_path = scene.string();
+    entry.check.name = golden::scene_name(scene);
+    try {
+      entry.check = golden::check_scene(scene, options.golden_dir, tolerances);
+    } catch (const scene::SceneError& e) {
+      entry.error = e.what();
+    } catch (const render::RenderError& e) {
+      entry.error = e.what();
+    } catch (const golden::GoldenError& e) {
+      entry.error = e.what();
+    }
+    if (!entry.error.empty()) {
+      bad_input = true;
+      std::cerr << "pita: " << entry.error << '\n';
+    } else if (entry.check.matches()) {
+      std::cout << "ok    " << scene.string() << '\n';
+    } else {
+      differs = true;
+      std::cerr << "FAIL  " << scene.string() << '\n';
+      for (const golden::FileCheck& f : entry.check.files) {
+        if (f.verdict == golden::Verdict::match) continue;
+        std::cerr << "      " << f.golden.string() << ": " << f.detail << '\n';
+      }
+    }
+    report.push_back(std::move(entry));
+  }
+  if (options.report_dir) {
+    try {
+      golden::write_report(*options.report_dir, report);
+      std::cerr << "report: " << (fs::path(*options.report_dir) / "index.html").string() << '\n';
+    } catch (const std::exception& e) {
+      std::cerr << "pita: --report " << *options.report_dir << ": " << e.what() << '\n';
+      return ExitCode::failure;
+    }
+  }
+  if (bad_input) return ExitCode::bad_input;
+  return differs ? ExitCode::golden_mismatch : ExitCode::success;
+}
+
+ExitCode run_update_goldens(const GoldenOptions& options) {
+  const std::vector<fs::path> scenes = scenes_of(options);
+  if (scenes.empty()) {
+    std::cerr << "pita: update-goldens: no scenes given and no scenes/*.json here\n";
+    return ExitCode::bad_input;
+  }
+  // Exact comparison, to say by how much each file changed.
+  golden::Tolerances exact;
+  exact.numbers = 0.0;
+  exact.svg = 0.0;
+  exact.image = {0, 0.0};
+  ExitCode result = ExitCode::success;
+  for (const fs::path& scene : scenes) {
+    try {
+      const golden::Outputs outputs = golden::render_outputs(scene);
+      const std::string name = golden::scene_name(scene);
+      for (const golden::FileKind kind : golden::kFileKinds) {
+        const std::string& bytes = kind == golden::FileKind::data  ? outputs.data
+                                   : kind == golden::FileKind::svg ? outputs.svg
+                                                                   : outputs.png;
+        const fs::path path = golden::golden_path(options.golden_dir, name, kind);
+        std::string status;
+        try {
+          const golden::FileCheck c = golden::compare_file(kind, path, bytes, exact);
+          if (c.verdict == golden::Verdict::missing) {
+            status = "new";
+          } else if (c.expected == bytes) {
+            status = "unchanged";
+          } else {
+            status = "changed: " + c.detail;
+          }
+        } catch (const golden::GoldenError& e) {
+          status = std::string("replaced an unreadable golden (") + e.what() + ")";
+        }
+        if (status != "unchanged") {
+          fs::create_directories(path.parent_path());
+          render::write_file_atomically(path, bytes);
+        }
+        std::cout << path.string() << ": " << status << '\n';
+      }
+    } catch (const scene::SceneError& e) {
+      std::cerr << "pita: " << e.what() << '\n';
+      result = ExitCode::bad_input;
+    } catch (const render::RenderError& e) {
+      std::cerr << "pita: " << e.what() << '\n';
+      result = ExitCode::bad_input;
+    } catch (const std::runtime_error& e) {
+      std::cerr << "pita: " << e.what() << '\n';
+      if (result == ExitCode::success) result = ExitCode::failure;
+    }
+  }
+  return result;
+}
+
+}  // namespace pita::cli

@@ -1,0 +1,144 @@
+#include "golden/check.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "golden/figure_data.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::golden {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw GoldenError(path.string() + ": cannot read the golden file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+const std::string& output(const Outputs& outputs, FileKind kind) {
+  switch (kind) {
+    case FileKind::data: return outputs.data;
+    case FileKind::svg: return outputs.svg;
+    case FileKind::png: return outputs.png;
+  }
+  return outputs.data;
+}
+
+Json parse_data(const std::string& text, const fs::path& path) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::exception& error) {
+    throw GoldenError(fmt::format("{}: the golden data file is not valid JSON ({})", path.string(),
+                                  error.what()));
+  }
+}
+
+}  // namespace
+
+std::string_view suffix(FileKind kind) {
+  switch (kind) {
+    case FileKind::data: return ".data.json";
+    case FileKind::svg: return ".svg";
+    case FileKind::png: return ".png";
+  }
+  return "";
+}
+
+fs::path golden_path(const fs::path& golden_dir, const std::string& name, FileKind kind) {
+  return golden_dir / name / (name + std::string(suffix(kind)));
+}
+
+std::string scene_name(const fs::path& scene_path) { return scene_path.stem().string(); }
+
+Outputs render_outputs(const fs::path& scene_path) {
+  const scene::Scene scene = scene::load_scene(scene_path);
+  const render::Figure figure = render::build_figure(scene);
+  Outputs out;
+  out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
+  out.svg = render::render_figure(scene, figure, render::Format::svg);
+  out.png = render::render_figure(scene, figure, render::Format::png);
+  return out;
+}
+
+bool SceneCheck::matches() const {
+  for (const FileCheck& f : files) {
+    if (f.verdict != Verdict::match) return false;
+  }
+  return true;
+}
+
+FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string& actual,
+                       const Tolerances& tolerances) {
+  FileCheck check{kind, golden, Verdict::match, "", "", actual, ""};
+  std::error_code error;
+  if (!fs::exists(golden, error)) {
+    check.verdict = Verdict::missing;
+    check.detail = "no golden file (create it with `pita update-goldens`)";
+    return check;
+  }
+  check.expected = read_bytes(golden);
+  if (check.expected == actual) {
+    check.detail = "identical";
+    return check;
+  }
+  switch (kind) {
+    case FileKind::data: {
+      const NumberComparison c = compare_numbers(parse_data(check.expected, golden),
+                                                 parse_data(actual, "(fresh rendering)"),
+                                                 tolerances.numbers);
+      check.verdict = c.matches ? Verdict::match : Verdict::differs;
+      check.detail = c.matches ? fmt::format("within tolerance (worst {:.2g} of the extent)", c.relative)
+                               : describe(c, tolerances.numbers);
+      break;
+    }
+    case FileKind::svg: {
+      const SvgComparison c = compare_svg(check.expected, actual, tolerances.svg);
+      check.verdict = c.matches ? Verdict::match : Verdict::differs;
+      check.detail = c.matches ? fmt::format("geometry within {:g} px", tolerances.svg)
+                               : describe(c, tolerances.svg);
+      break;
+    }
+    case FileKind::png: {
+      ImageComparison c;
+      try {
+        c = compare_png(check.expected, actual, tolerances.image);
+      } catch (const GoldenError& e) {
+        throw GoldenError(golden.string() + ": " + e.what());
+      }
+      check.verdict = c.matches ? Verdict::match : Verdict::differs;
+      check.diff_png = c.diff_png;
+      if (!c.same_size) {
+        check.detail = fmt::format("the image is {}x{} instead of {}x{}", c.actual_width,
+                                   c.actual_height, c.expected_width, c.expected_height);
+      } else {
+        check.detail = fmt::format("{} pixels ({:.3f}%) differ by more than {} levels (largest "
+                                   "difference {}); allowed: {:.3f}%",
+                                   c.differing, 100.0 * c.share, tolerances.image.channel,
+                                   c.max_channel_difference, 100.0 * tolerances.image.max_share);
+      }
+      break;
+    }
+  }
+  return check;
+}
+
+SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
+                       const Tolerances& tolerances) {
+  const Outputs outputs = render_outputs(scene_path);
+  SceneCheck result{scene_path.string(), scene_name(scene_path), {}};
+  for (const FileKind kind : kFileKinds) {
+    result.files.push_back(compare_file(kind, golden_path(golden_dir, result.name, kind),
+                                        output(outputs, kind), tolerances));
+  }
+  return result;
+}
+
+}  // namespace pita::golden

@@ -1,0 +1,79 @@
+// Goldens: the expected outputs of each scene, golden/<name>/<name>.{data.json,
+// svg, png} (golden/ mirrors scenes/), and the comparison of a fresh
+// rendering, made in memory, with them.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "golden/image_compare.hpp"
+#include "golden/number_compare.hpp"
+#include "golden/svg_compare.hpp"
+
+namespace pita::golden {
+
+// PNGs are compared tolerantly (a newer cairo, pixman or FreeType may move
+// antialiasing by a level or two); the numbers are what catch a moved frame.
+inline constexpr int kDefaultChannelTolerance = 16;     // of 255
+inline constexpr double kDefaultDifferingShare = 0.002;  // of the pixels
+
+struct Tolerances {
+  double numbers = kDefaultNumberTolerance;  // relative to the panel's extent
+  double svg = kDefaultSvgTolerance;         // pixels
+  ImageTolerance image{kDefaultChannelTolerance, kDefaultDifferingShare};
+};
+
+// The three golden files of a scene, as bytes.
+struct Outputs {
+  std::string data;  // figure_data_text
+  std::string svg;
+  std::string png;
+};
+
+enum class FileKind { data, svg, png };
+inline constexpr FileKind kFileKinds[] = {FileKind::data, FileKind::svg, FileKind::png};
+std::string_view suffix(FileKind kind);  // ".data.json", ".svg", ".png"
+
+// golden_dir/<name>/<name><suffix>
+std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name,
+                                  FileKind kind);
+
+// The scene's name: its file name without ".json".
+std::string scene_name(const std::filesystem::path& scene_path);
+
+// Loads, renders and serialises a scene. Throws scene::SceneError or
+// render::RenderError for a bad scene.
+Outputs render_outputs(const std::filesystem::path& scene_path);
+
+enum class Verdict { match, differs, missing };
+
+struct FileCheck {
+  FileKind kind;
+  std::filesystem::path golden;
+  Verdict verdict = Verdict::match;
+  std::string detail;    // what differs, for people
+  std::string expected;  // golden bytes ("" when missing)
+  std::string actual;    // fresh bytes
+  std::string diff_png;  // PNG highlighting differing pixels (png only)
+};
+
+struct SceneCheck {
+  std::string scene_path;
+  std::string name;
+  std::vector<FileCheck> files;
+  bool matches() const;
+};
+
+// Throws SceneError/RenderError (bad scene) and GoldenError (a golden file
+// that cannot be read or decoded).
+SceneCheck check_scene(const std::filesystem::path& scene_path,
+                       const std::filesystem::path& golden_dir, const Tolerances& tolerances);
+
+// How a fresh output differs from its golden, in a line ("unchanged", "new",
+// "changed: 312 pixels (0.03%)", ...). Throws GoldenError for an unreadable
+// golden.
+FileCheck compare_file(FileKind kind, const std::filesystem::path& golden, const std::string& actual,
+                       const Tolerances& tolerances);
+
+}  // namespace pita::golden

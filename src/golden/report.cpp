@@ -1,0 +1,122 @@
+#include "golden/report.hpp"
+
+#include <fmt/format.h>
+
+#include "render/output_file.hpp"
+
+namespace pita::golden {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string_view kind_name(FileKind kind) {
+  switch (kind) {
+    case FileKind::data: return "numbers";
+    case FileKind::svg: return "SVG geometry";
+    case FileKind::png: return "PNG pixels";
+  }
+  return "";
+}
+
+std::string_view verdict_name(Verdict v) {
+  switch (v) {
+    case Verdict::match: return "match";
+    case Verdict::differs: return "DIFFERS";
+    case Verdict::missing: return "MISSING";
+  }
+  return "";
+}
+
+// An image cell: the file if it was written, else a note.
+std::string image_cell(const std::string& file, const std::string& caption) {
+  if (file.empty()) return "<td><em>none</em><br>" + escaped(caption) + "</td>";
+  return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>",
+                     escaped(file), escaped(caption));
+}
+
+}  // namespace
+
+void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries) {
+  fs::create_directories(dir);
+  std::string html = R"(<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>pita check report</title>
+<style>
+body { font-family: sans-serif; margin: 2em; }
+table { border-collapse: collapse; margin-bottom: 1em; }
+td, th { border: 1px solid #ccc; padding: 4px 8px; vertical-align: top; text-align: left; }
+img { max-width: 420px; border: 1px solid #999; }
+.match { color: #070; } .DIFFERS, .MISSING, .ERROR { color: #b00; font-weight: bold; }
+</style></head><body>
+<h1>pita check</h1>
+)";
+  std::size_t bad = 0;
+  for (const ReportEntry& e : entries) bad += (!e.error.empty() || !e.check.matches()) ? 1 : 0;
+  html += fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
+                      entries.size(), bad);
+  html += "<table><tr><th>scene</th><th>result</th></tr>\n";
+  for (const ReportEntry& e : entries) {
+    const std::string result = !e.error.empty() ? "ERROR" : e.check.matches() ? "match" : "DIFFERS";
+    html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
+                        escaped(e.check.name), result);
+  }
+  html += "</table>\n";
+
+  for (const ReportEntry& e : entries) {
+    html += fmt::format("<h2 id=\"{0}\">{0}</h2>\n<p>{1}</p>\n", escaped(e.check.name),
+                        escaped(e.check.scene_path));
+    if (!e.error.empty()) {
+      html += "<p class=\"ERROR\">" + escaped(e.error) + "</p>\n";
+      continue;
+    }
+    html += "<table><tr><th>output</th><th>golden</th><th>result</th><th>details</th></tr>\n";
+    for (const FileCheck& f : e.check.files) {
+      html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
+                          kind_name(f.kind), escaped(f.golden.string()), verdict_name(f.verdict),
+                          verdict_name(f.verdict), escaped(f.detail));
+    }
+    html += "</table>\n";
+    if (e.check.matches()) continue;
+    // The images: expected, actual, diff.
+    for (const FileCheck& f : e.check.files) {
+      if (f.kind != FileKind::png) continue;
+      std::string expected, actual, diff;
+      if (!f.expected.empty()) {
+        expected = e.check.name + ".expected.png";
+        render::write_file_atomically(dir / expected, f.expected);
+      }
+      actual = e.check.name + ".actual.png";
+      render::write_file_atomically(dir / actual, f.actual);
+      if (!f.diff_png.empty() && f.verdict != Verdict::match) {
+        diff = e.check.name + ".diff.png";
+        render::write_file_atomically(dir / diff, f.diff_png);
+      }
+      html += "<table><tr>" + image_cell(expected, "expected (golden)") +
+              image_cell(actual, "actual") + image_cell(diff, "differing pixels in red") +
+              "</tr></table>\n";
+    }
+    for (const FileCheck& f : e.check.files) {
+      if (f.kind != FileKind::svg || f.verdict == Verdict::match) continue;
+      if (!f.expected.empty()) render::write_file_atomically(dir / (e.check.name + ".expected.svg"), f.expected);
+      render::write_file_atomically(dir / (e.check.name + ".actual.svg"), f.actual);
+    }
+  }
+  html += "</body></html>\n";
+  render::write_file_atomically(dir / "index.html", html);
+}
+
+}  // namespace pita::golden

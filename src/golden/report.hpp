@@ -1,0 +1,23 @@
+// The report of `pita check --report DIR`: for each scene whose outputs
+// differ from their goldens, the expected, actual and diff images, and one
+// index.html that shows them side by side with the numbers (a CI artifact).
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "golden/check.hpp"
+
+namespace pita::golden {
+
+// Writes DIR/index.html and, per differing scene, DIR/<name>.expected.png,
+// DIR/<name>.actual.png, DIR/<name>.diff.png (and the SVGs). Scenes that
+// could not be checked are listed with their error. Throws
+// std::runtime_error when a file cannot be written.
+struct ReportEntry {
+  SceneCheck check;
+  std::string error;  // non-empty: the scene could not be checked (bad scene or golden)
+};
+void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries);
+
+}  // namespace pita::golden

@@ -1,0 +1,108 @@
+// `pita check` and `pita update-goldens` through the real binary, on scenes
+// and goldens made in a scratch directory.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <regex>
+#include <string>
+
+#include "run_pita.hpp"
+
+namespace pita::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scene(const std::string& middle_x) {
+  return R"({"method": "P6", "keyframes": [
+  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+  {"t": 0.5, "p": [)" + middle_x + R"(, 1.5], "m": 0.6, "w": 2.0},
+  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}],
+  "layers": [{"type": "stroke"}, {"type": "pattern"}, {"type": "discrepancy", "scale": 3}, {"type": "keyframes"}]})";
+}
+
+class Check : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir.write("fig.json", scene("3"));
+    const RunResult r = run({"update-goldens", "fig.json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("golden/fig/fig.png: new"), std::string::npos) << r.out;
+  }
+  RunResult run(const std::vector<std::string>& args) { return run_pita(args, dir.path()); }
+  ScratchDir dir;
+};
+
+TEST_F(Check, UntouchedSceneMatches) {
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("ok    fig.json"), std::string::npos) << r.out;
+}
+
+TEST_F(Check, PerturbedKeyframeFailsNamingLayerAndFrame) {
+  dir.write("fig.json", scene("3.001"));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("FAIL  fig.json"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("layer /layers/[0-9]+, frame [0-9]+"))) << r.err;
+}
+
+TEST_F(Check, ChangeBelowToleranceMatches) {
+  dir.write("fig.json", scene("3.0000000000001"));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST_F(Check, MissingGoldenFails) {
+  dir.write("other.json", scene("3"));
+  const RunResult r = run({"check", "fig.json", "other.json"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("golden/other/other.data.json: no golden file"), std::string::npos) << r.err;
+}
+
+TEST_F(Check, ReportReferencesImagesThatExist) {
+  dir.write("fig.json", scene("3.2"));
+  const RunResult r = run({"check", "fig.json", "--report", "report"});
+  EXPECT_EQ(r.exit_code, 1);
+  const std::string html = read_file(dir.path() / "report/index.html");
+  ASSERT_FALSE(html.empty());
+  const std::regex image("<img src=\"([^\"]+)\"");
+  int images = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), image); it != std::sregex_iterator(); ++it) {
+    EXPECT_TRUE(fs::exists(dir.path() / "report" / (*it)[1].str())) << (*it)[1].str();
+    ++images;
+  }
+  EXPECT_EQ(images, 3);  // expected, actual, diff
+  EXPECT_NE(html.find("DIFFERS"), std::string::npos);
+}
+
+TEST_F(Check, CorruptedGoldenPngIsBadInput) {
+  const fs::path png = dir.path() / "golden/fig/fig.png";
+  const std::string bytes = read_file(png);
+  dir.write("golden/fig/fig.png", bytes.substr(0, bytes.size() / 3));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("golden/fig/fig.png: the expected PNG cannot be decoded"), std::string::npos) << r.err;
+}
+
+TEST_F(Check, BadSceneIsBadInput) {
+  dir.write("fig.json", R"({"method": "P6", "keyframes": []})");
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("fig.json: /keyframes"), std::string::npos) << r.err;
+}
+
+TEST_F(Check, UpdateGoldensSaysWhatChangedAndByHowMuch) {
+  RunResult r = run({"update-goldens", "fig.json"});
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("golden/fig/fig.data.json: unchanged"), std::string::npos) << r.out;
+  dir.write("fig.json", scene("3.2"));
+  r = run({"update-goldens", "fig.json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("fig.data.json: changed: [0-9]+ of [0-9]+ numbers differ"))) << r.out;
+  EXPECT_TRUE(std::regex_search(r.out, std::regex("fig.png: changed: [0-9]+ pixels"))) << r.out;
+  EXPECT_EQ(run({"check", "fig.json"}).exit_code, 0);
+}
+
+}  // namespace
+}  // namespace pita::test
