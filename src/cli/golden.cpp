@@ -32,12 +32,14 @@ std::vector<fs::path> scenes_of(const GoldenOptions& options) {
   return paths;
 }
 
-golden::Tolerances tolerances_of(const GoldenOptions& o) {
+// The command line's tolerances, else the scene's "golden" field, else the defaults.
+golden::Tolerances tolerances_of(const GoldenOptions& o, const fs::path& scene_path) {
+  const scene::Scene s = scene::load_scene(scene_path);
   golden::Tolerances t;
-  t.numbers = o.number_tolerance;
-  t.svg = o.svg_tolerance;
-  t.image.channel = o.pixel_tolerance;
-  t.image.max_share = o.max_differing;
+  t.numbers = o.number_tolerance.value_or(s.golden.numbers.value_or(t.numbers));
+  t.svg = o.svg_tolerance.value_or(s.golden.svg.value_or(t.svg));
+  t.image.channel = o.pixel_tolerance.value_or(s.golden.pixel.value_or(t.image.channel));
+  t.image.max_share = o.max_differing.value_or(s.golden.max_differing.value_or(t.image.max_share));
   return t;
 }
 
@@ -52,38 +54,40 @@ void add_common(CLI::App* command, GoldenOptions& o) {
 
 std::shared_ptr<GoldenOptions> setup_check(CLI::App& app) {
   auto o = std::make_shared<GoldenOptions>();
-  o->number_tolerance = golden::kDefaultNumberTolerance;
-  o->svg_tolerance = golden::kDefaultSvgTolerance;
-  o->pixel_tolerance = golden::kDefaultChannelTolerance;
-  o->max_differing = golden::kDefaultDifferingShare;
   CLI::App* check = app.add_subcommand("check", "Compare each scene's figure with its goldens");
   add_common(check, *o);
   check->add_option("--report", o->report_dir,
                     "Write DIR/index.html with the expected, actual and diff images of each mismatch")
       ->type_name("DIR");
   check->add_option("--number-tolerance", o->number_tolerance,
-                    "Largest difference of a drawn number, relative to its panel's extent")
-      ->capture_default_str()
+                    fmt::format("Largest difference of a drawn number, relative to its panel's "
+                                "extent (default {:g})",
+                                golden::kDefaultNumberTolerance))
       ->check(CLI::Range(0.0, 1.0))
       ->type_name("X");
-  check->add_option("--svg-tolerance", o->svg_tolerance, "Largest difference of an SVG number, in pixels")
-      ->capture_default_str()
+  check->add_option("--svg-tolerance", o->svg_tolerance,
+                    fmt::format("Largest difference of an SVG number, in pixels (default {:g})",
+                                golden::kDefaultSvgTolerance))
       ->check(CLI::Range(0.0, 1000.0))
       ->type_name("PX");
   check->add_option("--pixel-tolerance", o->pixel_tolerance,
-                    "A PNG pixel differs when a channel differs by more than N levels (0-255)")
-      ->capture_default_str()
+                    fmt::format("A PNG pixel differs when a channel differs by more than N levels "
+                                "of 255 (default {})",
+                                golden::kDefaultChannelTolerance))
       ->check(CLI::Range(0, 255))
       ->type_name("N");
   check->add_option("--max-differing", o->max_differing,
-                    "Largest share of differing PNG pixels that still matches (0-1)")
-      ->capture_default_str()
+                    fmt::format("Largest share of differing PNG pixels that still matches, 0-1 "
+                                "(default {:g})",
+                                golden::kDefaultDifferingShare))
       ->check(CLI::Range(0.0, 1.0))
       ->type_name("SHARE");
   check->footer(R"(
 Each scene is rendered in memory and compared with golden/<name>/<name>.data.json
 (every drawn number, relative tolerance), .svg (its geometry, parsed numbers with an
 absolute tolerance) and .png (per-pixel tolerance and a share of differing pixels).
+A scene may set its own tolerances ("golden": {"number_tolerance", "svg_tolerance",
+"pixel_tolerance", "max_differing"}); the command line overrides them.
 A scene without goldens fails. Exit codes: 0 all match, 1 a figure differs or has no
 golden, 2 a bad scene or an unreadable golden.
 
@@ -113,7 +117,6 @@ ExitCode run_check(const GoldenOptions& options) {
     std::cerr << "pita: check: no scenes given and no scenes/*.json here\n";
     return ExitCode::bad_input;
   }
-  const golden::Tolerances tolerances = tolerances_of(options);
   bool bad_input = false, differs = false;
   std::vector<golden::ReportEntry> report;
   for (const fs::path& scene : scenes) {
@@ -121,7 +124,7 @@ ExitCode run_check(const GoldenOptions& options) {
     entry.check.scene_path = scene.string();
     entry.check.name = golden::scene_name(scene);
     try {
-      entry.check = golden::check_scene(scene, options.golden_dir, tolerances);
+      entry.check = golden::check_scene(scene, options.golden_dir, tolerances_of(options, scene));
     } catch (const scene::SceneError& e) {
       entry.error = e.what();
     } catch (const render::RenderError& e) {

@@ -24,10 +24,12 @@ struct GoldenOptions {
   std::vector<std::string> scene_paths;  // default: scenes/*.json
   std::string golden_dir = "golden";
   std::optional<std::string> report_dir;
-  double number_tolerance;
-  double svg_tolerance;
-  int pixel_tolerance;
-  double max_differing;
+  // Given on the command line: they override the scene's "golden" field,
+  // which overrides the defaults of golden/check.hpp.
+  std::optional<double> number_tolerance;
+  std::optional<double> svg_tolerance;
+  std::optional<int> pixel_tolerance;
+  std::optional<double> max_differing;
 };
 
 std::shared_ptr<GoldenOptions> setup_check(CLI::App& app);

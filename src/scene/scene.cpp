@@ -27,11 +27,14 @@ using detail::JsonReader;
 using detail::keyframe_count_reason;
 using detail::unknown_method_reason;
 using detail::value_text;
+using detail::Interval;
 
 // The fields each object of a scene may have; anything else is an error.
-constexpr std::array<std::string_view, 10> kSceneFields = {
+constexpr std::array<std::string_view, 11> kSceneFields = {
     "$schema", "description", "method", "keyframes", "samples", "options",
-    "title",   "canvas",      "layers", "panels"};
+    "title",   "canvas",      "layers", "panels",    "golden"};
+constexpr std::array<std::string_view, 4> kGoldenFields = {"number_tolerance", "svg_tolerance",
+                                                           "pixel_tolerance", "max_differing"};
 constexpr std::array<std::string_view, 6> kPanelFields = {"method", "options", "keyframes",
                                                           "title",  "samples", "layers"};
 
@@ -196,6 +199,24 @@ class SceneReader {
  public:
   explicit SceneReader(std::string file) : reader_(std::move(file)) {}
 
+  // "golden": {"number_tolerance", "svg_tolerance", "pixel_tolerance", "max_differing"}.
+  void read_golden(const Json& value, Scene::GoldenTolerances& out) const {
+    reader_.object(value, "/golden", "\"golden\"");
+    reader_.check_fields(value, "/golden", kGoldenFields);
+    if (const Json* x = member(value, "number_tolerance")) {
+      out.numbers = reader_.number(*x, "/golden/number_tolerance", Interval{0.0, 1.0});
+    }
+    if (const Json* x = member(value, "svg_tolerance")) {
+      out.svg = reader_.number(*x, "/golden/svg_tolerance", Interval{0.0, 1000.0});
+    }
+    if (const Json* x = member(value, "pixel_tolerance")) {
+      out.pixel = reader_.integer(*x, "/golden/pixel_tolerance", 0, 255);
+    }
+    if (const Json* x = member(value, "max_differing")) {
+      out.max_differing = reader_.number(*x, "/golden/max_differing", Interval{0.0, 1.0});
+    }
+  }
+
   Scene read(const Json& document) const {
     if (!document.is_object()) {
       fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
@@ -243,6 +264,7 @@ class SceneReader {
     } else {
       scene.panels = {scene_panel(scene, "")};
     }
+    if (const Json* golden = member(document, "golden")) read_golden(*golden, scene.golden);
     return scene;
   }
 

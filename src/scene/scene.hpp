@@ -46,6 +46,15 @@ struct Scene {
   Canvas canvas;
   std::vector<Layer> layers;        // in drawing order; default: pattern, then keyframes
   std::vector<Panel> panels;        // at least one: the scene itself when it has no "panels"
+
+  // "golden": this scene's tolerances for `pita check` (README "Goldens");
+  // unset fields take the command line's values, else the defaults.
+  struct GoldenTolerances {
+    std::optional<double> numbers;        // "number_tolerance", [0, 1]
+    std::optional<double> svg;            // "svg_tolerance", pixels, [0, 1000]
+    std::optional<int> pixel;             // "pixel_tolerance", [0, 255]
+    std::optional<double> max_differing;  // "max_differing", [0, 1]
+  } golden;
 };
 
 // Frames of a drawn pattern when neither the scene nor the layer says.

@@ -106,3 +106,26 @@ TEST_F(Check, UpdateGoldensSaysWhatChangedAndByHowMuch) {
 
 }  // namespace
 }  // namespace pita::test
+
+namespace pita::test {
+namespace {
+
+TEST(CheckTolerances, SceneToleranceAppliesAndCommandLineOverridesIt) {
+  const ScratchDir dir;
+  const auto write = [&](const std::string& x) {
+    dir.write("fig.json", R"({"method": "P3", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [)" + x + R"(, 1.5], "m": 0.6, "w": 2.0},
+      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}],
+      "golden": {"number_tolerance": 0.01, "svg_tolerance": 1000, "pixel_tolerance": 255, "max_differing": 1}})");
+  };
+  write("3");
+  ASSERT_EQ(run_pita({"update-goldens", "fig.json"}, dir.path()).exit_code, 0);
+  write("3.0001");  // moves frames by ~1e-5 of the extent: within the scene's 0.01
+  EXPECT_EQ(run_pita({"check", "fig.json"}, dir.path()).exit_code, 0);
+  const RunResult strict = run_pita({"check", "fig.json", "--number-tolerance", "1e-9"}, dir.path());
+  EXPECT_EQ(strict.exit_code, 1);
+  EXPECT_NE(strict.err.find("tolerance 1e-09"), std::string::npos) << strict.err;
+}
+
+}  // namespace
+}  // namespace pita::test

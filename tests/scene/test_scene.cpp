@@ -339,7 +339,7 @@ TEST(SceneError, UnknownFieldsSuggestCloseNames) {
             "s.json: /canvs: unknown field \"canvs\"; did you mean \"canvas\"?");
   EXPECT_EQ(error_of(p6_with(R"(, "figure": {})")),
             "s.json: /figure: unknown field \"figure\"; known fields: $schema, description, method, "
-            "keyframes, samples, options, title, canvas, layers, panels");
+            "keyframes, samples, options, title, canvas, layers, panels, golden");
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "mm": 1, "w": 0})")),
             "s.json: /keyframes/1/mm: unknown field \"mm\"; did you mean \"m\"?");
   EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 0, "x": 1})")),
@@ -351,7 +351,7 @@ TEST(SceneError, UnknownFieldsSuggestCloseNames) {
 TEST(SceneError, PointerEscapesSlashAndTilde) {
   EXPECT_EQ(error_of(R"({"a/b~c": 1})"),
             "s.json: /a~1b~0c: unknown field \"a/b~c\"; known fields: $schema, description, method, "
-            "keyframes, samples, options, title, canvas, layers, panels");
+            "keyframes, samples, options, title, canvas, layers, panels, golden");
 }
 
 // ------------------------------------------------------------ methods and files

@@ -58,7 +58,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& definitions = schema.at("definitions");
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "samples",
-                                   "options", "title", "canvas", "layers", "panels"}));
+                                   "options", "title", "canvas", "layers", "panels", "golden"}));
   EXPECT_EQ(schema.at("required"), (nlohmann::json{"method", "keyframes"}));
   const nlohmann::json& keyframe = definitions.at("keyframe");
   EXPECT_EQ(keys_of(keyframe.at("properties")),
