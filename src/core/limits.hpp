@@ -78,4 +78,57 @@ inline constexpr double kPamBranchCut = 1e-8;
 // |L_B|_F^2 (the determinant of a rotation-scaling is |L|_F^2 / 2).
 inline constexpr double kPamSingularMiddle = 1e-12;
 
+
+// ------------------------------------------------------------------ EAR
+// Steady Affine Morphs (affine_power.hpp): the case selection of the SAM
+// paper's appendix A.5 (Algorithm 1), with tolerances where the paper writes
+// ==, and the switches between formulas that compute the same A^t.
+
+// S2: L is within this relative distance of a uniform scaling by a negative
+// factor -rho (a rotation by pi with uniform scale): max |L - r I| entry
+// <= kHalfTurn * |r|, with r = trace/2 < 0. Such L get the log
+// log(rho) I + pi J (the rotation by +pi, READING-NOTES item 15), even when
+// their eigenvalues are two distinct negatives (no real log: G3) or complex
+// with an angle just short of -pi (G1 would give -pi). Beyond it, complex
+// eigenvalues are G1 and real negative ones are G3.
+inline constexpr double kHalfTurn = 1e-12;
+
+// S1: an eigenvalue lambda of L with |lambda - 1| <= kUnitEigenvalue. The
+// affinity then has no unique fixed point (a pure translation, a shear, or a
+// scaling along one direction combined with a translation along another,
+// appendix A.4), so fixed_point() says so. A^t itself is continuous across
+// this boundary: it is never computed through the fixed point near it.
+inline constexpr double kUnitEigenvalue = 1e-12;
+
+// The translation part of A^t is g_t(L) b with g_t(lambda) =
+// (lambda^t - 1)/(lambda - 1) (Eq. 9 rewritten so that it stays exact at
+// lambda = 1; READING-NOTES item 15 asks for expm1). Three formulas compute
+// g_t(L), each where it is exact to rounding:
+//  - the binomial series sum_{n>=1} C(t, n) E^{n-1}, E = L - I, while the
+//    spectral radius of E is at most kUnitSeriesRadius (near the identity:
+//    translations, shears, S1); the series converges like n 4^-n, ~30 terms;
+//  - through the fixed point, (I - L^t) q with q = (I - L)^-1 b (Eq. 9), when
+//    both eigenvalues are at least kUnitFixedPointDistance from 1 (then
+//    I - L is well conditioned);
+//  - otherwise by the divided difference of g_t at the two eigenvalues, which
+//    are then real and at least 1/8 apart (one within 1/8 of 1, the other
+//    more than 1/4 from it).
+// |t| above kUnitSeriesMaxTime is reached by squaring A^{t/2^k} (the series
+// loses (1 + radius)^|t| to cancellation).
+inline constexpr double kUnitSeriesRadius = 0.25;
+inline constexpr double kUnitFixedPointDistance = 0.125;
+inline constexpr double kUnitSeriesMaxTime = 16.0;
+
+// The log coefficient k (log L = c I + k (L - r I)) is summed as the series
+// sum u^n/(2n+1), u = delta/r^2, while |u| is below this bound (r > 0, around
+// the double eigenvalue where G1 meets G2; 12 terms reach full precision).
+// Beyond it the closed forms atan2(omega, r)/omega (G1) and atanh(s/r)/s (G2)
+// lose nothing to cancellation.
+inline constexpr double kDoubleEigenvalueSeries = 1e-2;
+
+// The functions cosh(sqrt z) and sinh(sqrt z)/sqrt z of e^{tC} (Eq. 11
+// written with the discriminant z = t^2 gamma of tC) are summed as series
+// while |z| is below this bound.
+inline constexpr double kExpSeries = 1e-2;
+
 }  // namespace pita::limits

@@ -1,0 +1,406 @@
+#include "core/affine_power.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <tuple>
+
+#include "core/limits.hpp"
+
+namespace pita {
+
+namespace {
+
+using Eigen::Matrix2d;
+using Eigen::Vector2d;
+
+constexpr double kPi = std::numbers::pi;
+
+// A number in messages: six significant digits.
+std::string g6(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
+// The quantities of A.5 read off L = [[a, b], [c, d]].
+struct Characteristics {
+  double r;      // trace / 2
+  double delta;  // ((a - d)/2)^2 + b c = r^2 - det L (the discriminant)
+  double det;
+  double det_minus_one;  // det L - 1 = trace E + det E, E = L - I (exact near I)
+  double trace_E;        // 2 (r - 1)
+  double det_E;          // det(L - I) = (a - 1)(d - 1) - b c
+  double n_max;          // the largest entry of N = L - r I
+};
+
+Characteristics characteristics(const Matrix2d& L) {
+  const double a = L(0, 0), b = L(0, 1), c = L(1, 0), d = L(1, 1);
+  const double h = (a - d) / 2.0;
+  Characteristics k{};
+  k.r = (a + d) / 2.0;
+  k.delta = h * h + b * c;
+  k.det = a * d - b * c;
+  k.trace_E = (a - 1.0) + (d - 1.0);
+  k.det_E = (a - 1.0) * (d - 1.0) - b * c;
+  k.det_minus_one = k.trace_E + k.det_E;
+  k.n_max = std::max({std::abs(h), std::abs(b), std::abs(c)});
+  return k;
+}
+
+// The real eigenvalues of E = L - I when delta >= 0, the larger in magnitude
+// first (the other from det E / first, without cancellation).
+std::pair<double, double> real_unit_offsets(const Characteristics& k) {
+  const double s = std::sqrt(k.delta);
+  const double half_trace = k.trace_E / 2.0;
+  const double big = half_trace + std::copysign(s, half_trace);
+  if (big == 0.0) return {0.0, 0.0};
+  return {big, k.det_E / big};
+}
+
+// sum_{n>=0} u^n / (2n + 1): atanh(sqrt u)/sqrt u for u > 0, atan(sqrt -u)/sqrt -u
+// for u < 0 (|u| < limits::kDoubleEigenvalueSeries).
+double atanh_ratio_series(double u) {
+  double sum = 0.0, power = 1.0;
+  for (int n = 0; n < 14; ++n) {
+    sum += power / (2.0 * n + 1.0);
+    power *= u;
+  }
+  return sum;
+}
+
+// cosh(sqrt z), cosh(sqrt z) - 1 and sinh(sqrt z)/sqrt z for real z (cos and
+// sin of sqrt(-z) when z < 0): the entire functions of Eq. 11.
+double cosh_sqrt(double z) {
+  if (std::abs(z) < limits::kExpSeries) {
+    return 1.0 + z / 2.0 * (1.0 + z / 12.0 * (1.0 + z / 30.0 * (1.0 + z / 56.0)));
+  }
+  return z > 0.0 ? std::cosh(std::sqrt(z)) : std::cos(std::sqrt(-z));
+}
+double cosh_sqrt_minus_one(double z) {
+  if (std::abs(z) < limits::kExpSeries) {
+    return z / 2.0 * (1.0 + z / 12.0 * (1.0 + z / 30.0 * (1.0 + z / 56.0 * (1.0 + z / 90.0))));
+  }
+  if (z > 0.0) {
+    const double h = std::sinh(std::sqrt(z) / 2.0);
+    return 2.0 * h * h;
+  }
+  const double h = std::sin(std::sqrt(-z) / 2.0);
+  return -2.0 * h * h;
+}
+double sinh_sqrt_ratio(double z) {
+  if (std::abs(z) < limits::kExpSeries) {
+    return 1.0 + z / 6.0 * (1.0 + z / 20.0 * (1.0 + z / 42.0 * (1.0 + z / 72.0 * (1.0 + z / 110.0))));
+  }
+  if (z > 0.0) {
+    const double w = std::sqrt(z);
+    return std::sinh(w) / w;
+  }
+  const double w = std::sqrt(-z);
+  return std::sin(w) / w;
+}
+
+std::string eigenvalue_text(const Matrix2d& L) {
+  const Eigenvalues e = eigenvalues(L);
+  if (e.im1 == 0.0) return g6(e.re1) + " and " + g6(e.re2);
+  return g6(e.re1) + " +- " + g6(std::abs(e.im1)) + "i";
+}
+
+// Why L has no real power (the message of NoRealLogarithm).
+std::string no_log_reason(const Matrix2d& L) {
+  if (!L.allFinite()) return "the linear part has a non-finite entry";
+  const Characteristics k = characteristics(L);
+  if (!(k.det > 0.0)) {
+    return "the linear part has determinant " + g6(k.det) +
+           " <= 0: it is not orientation preserving, and no continuous motion of affinities "
+           "joins it to the identity (Sec. 2.1)";
+  }
+  if (k.delta == 0.0) {
+    return "the linear part has the double negative eigenvalue " + g6(k.r) +
+           " with a single eigenvector (case G3): it has no real logarithm (Sec. 5.1)";
+  }
+  return "the linear part has the two distinct negative eigenvalues " + eigenvalue_text(L) +
+         " (case G3): it has no real logarithm (Sec. 5.1)";
+}
+
+}  // namespace
+
+std::string_view name(RootCase kase) {
+  switch (kase) {
+    case RootCase::G1: return "G1";
+    case RootCase::G2: return "G2";
+    case RootCase::S1: return "S1";
+    case RootCase::S2: return "S2";
+    case RootCase::G3: return "G3";
+  }
+  return "?";
+}
+
+std::string_view description(RootCase kase) {
+  switch (kase) {
+    case RootCase::G1: return "complex eigenvalues";
+    case RootCase::G2: return "two positive eigenvalues";
+    case RootCase::S1: return "eigenvalue 1: translation, shear or one-directional scaling";
+    case RootCase::S2: return "rotation by pi with uniform scaling";
+    case RootCase::G3: return "no real logarithm";
+  }
+  return "?";
+}
+
+Eigenvalues eigenvalues(const Matrix2d& L) {
+  const Characteristics k = characteristics(L);
+  if (k.delta < 0.0) {
+    const double omega = std::sqrt(-k.delta);
+    return {k.r, omega, k.r, -omega};
+  }
+  const double s = std::sqrt(k.delta);
+  const double big = k.r + std::copysign(s, k.r);
+  const double small = big == 0.0 ? 0.0 : k.det / big;
+  return big >= small ? Eigenvalues{big, 0.0, small, 0.0} : Eigenvalues{small, 0.0, big, 0.0};
+}
+
+// Algorithm 1 (A.5), with the tolerances of limits.hpp where it writes ==.
+RootCase select_case(const Matrix2d& L) {
+  if (!L.allFinite()) return RootCase::G3;
+  const Characteristics k = characteristics(L);
+  if (!(k.det > 0.0)) return RootCase::G3;
+  if (k.r < 0.0 && k.n_max <= limits::kHalfTurn * std::abs(k.r)) return RootCase::S2;
+  if (k.delta < 0.0) return RootCase::G1;
+  if (k.r < 0.0) return RootCase::G3;  // delta >= 0: real negative eigenvalues
+  const auto [mu1, mu2] = real_unit_offsets(k);
+  if (std::min(std::abs(mu1), std::abs(mu2)) <= limits::kUnitEigenvalue) return RootCase::S1;
+  return RootCase::G2;
+}
+
+namespace {
+
+// log L = c I + k N (N = L - r I), or c I + pi J in S2; gamma = the
+// discriminant of log L (its eigenvalues are c +- sqrt(gamma)).
+struct LogParts {
+  double c;
+  Matrix2d M;
+  double gamma;
+};
+
+LogParts log_parts(const Matrix2d& L, RootCase kase) {
+  const Characteristics k = characteristics(L);
+  // c = ln(sqrt(det L)) = ln |lambda| (G1, S2) = (ln lambda1 + ln lambda2)/2 (G2).
+  const double c = 0.5 * std::log1p(k.det_minus_one);
+  if (kase == RootCase::S2) {
+    Matrix2d J;
+    J << 0.0, -kPi, kPi, 0.0;
+    return {c, J, -kPi * kPi};
+  }
+  const Matrix2d N = L - k.r * Matrix2d::Identity();
+  double coefficient = 0.0;
+  if (k.r > 0.0 && std::abs(k.delta) < limits::kDoubleEigenvalueSeries * k.r * k.r) {
+    // Around the double eigenvalue r (delta = 0, G1 meets G2): the limit 1/r.
+    coefficient = atanh_ratio_series(k.delta / (k.r * k.r)) / k.r;
+  } else if (k.delta < 0.0) {
+    // G1, Eq. 18 with atan2 (READING-NOTES item 15): theta in (0, pi).
+    const double omega = std::sqrt(-k.delta);
+    coefficient = std::atan2(omega, k.r) / omega;
+  } else {
+    // G2 and S1, Eq. 20: y = ln((chi + 1)/(chi - 1))/2 = atanh(s/r), chi = r/s.
+    const double s = std::sqrt(k.delta);
+    coefficient = std::atanh(s / k.r) / s;
+  }
+  return {c, coefficient * N, coefficient * coefficient * k.delta};
+}
+
+}  // namespace
+
+Matrix2d linear_log(const Matrix2d& L) {
+  const RootCase kase = select_case(L);
+  if (kase == RootCase::G3) throw NoRealLogarithm(no_log_reason(L), kase);
+  const LogParts log = log_parts(L, kase);
+  return log.c * Matrix2d::Identity() + log.M;
+}
+
+Matrix2d linear_exp(const Matrix2d& C, double t) {
+  // C = x I + M, M^2 = gamma I:  e^{tC} = e^{tx} (cosh(t sqrt gamma) I
+  // + t sinh(t sqrt gamma)/(t sqrt gamma) M)                       (Eq. 11)
+  const double x = (C(0, 0) + C(1, 1)) / 2.0;
+  const double h = (C(0, 0) - C(1, 1)) / 2.0;
+  const double gamma = h * h + C(0, 1) * C(1, 0);
+  const Matrix2d M = C - x * Matrix2d::Identity();
+  const double z = t * t * gamma;
+  return std::exp(t * x) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M);
+}
+
+Matrix2d linear_power(const Matrix2d& L, double t) {
+  return AffinePowers(Affine2{L, Vector2d::Zero()}).at(t).L;
+}
+
+std::optional<Vector2d> fixed_point(const Affine2& A) {
+  const RootCase kase = select_case(A.L);
+  if (kase == RootCase::S1) return std::nullopt;
+  const Characteristics k = characteristics(A.L);
+  if (kase == RootCase::G3 && k.det_E == 0.0) return std::nullopt;  // eigenvalue 1 (det <= 0)
+  // (I - L) q = b; det(I - L) = det(L - I) = det E in 2D.
+  Matrix2d adjugate;
+  adjugate << 1.0 - A.L(1, 1), A.L(0, 1), A.L(1, 0), 1.0 - A.L(0, 0);
+  return Vector2d(adjugate * A.b / k.det_E);
+}
+
+AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
+  if (!A.L.allFinite() || !A.b.allFinite()) {
+    throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
+  }
+  case_ = select_case(A.L);
+  if (case_ == RootCase::G3) throw NoRealLogarithm(no_log_reason(A.L), case_);
+  const LogParts log = log_parts(A.L, case_);
+  c_ = log.c;
+  M_ = log.M;
+  gamma_ = log.gamma;
+  C_ = c_ * Matrix2d::Identity() + M_;
+
+  const Characteristics k = characteristics(A.L);
+  E_ = A.L - Matrix2d::Identity();
+  trace_E_ = k.trace_E;
+  det_E_ = k.det_E;
+  // Spectral radius of E and distance of the nearer eigenvalue of L to 1.
+  double radius = 0.0, nearest = 0.0;
+  if (case_ == RootCase::S2) {
+    radius = nearest = 1.0 - k.r;  // L = r I, r < 0
+  } else if (k.delta < 0.0) {
+    radius = nearest = std::sqrt(std::max(det_E_, 0.0));  // |mu|^2 = det E for mu, conj(mu)
+  } else {
+    std::tie(mu1_, mu2_) = real_unit_offsets(k);
+    radius = std::abs(mu1_);
+    nearest = std::abs(mu2_);
+  }
+  if (radius <= limits::kUnitSeriesRadius) {
+    translation_ = Translation::unit_series;
+  } else if (nearest >= limits::kUnitFixedPointDistance) {
+    translation_ = Translation::fixed_point;
+  } else {
+    translation_ = Translation::eigenvalues;  // real: complex ones have radius == nearest
+  }
+
+  // The translation v of log A = [[C, v], [0, 0]]: v = l(L) b with
+  // l(lambda) = ln(lambda)/(lambda - 1) (the derivative of g_t at t = 0).
+  switch (translation_) {
+    case Translation::unit_series: {
+      // l(1 + mu) = log1p(mu)/mu = sum_{n>=1} (-1)^{n-1} mu^{n-1}/n.
+      double p = 1.0, q = 0.0, g0 = 0.0, g1 = 0.0;  // E^{n-1} = p I + q E
+      for (int n = 1; n <= 200; ++n) {
+        const double coefficient = (n % 2 == 1 ? 1.0 : -1.0) / n;
+        g0 += coefficient * p;
+        g1 += coefficient * q;
+        const double p_next = -det_E_ * q, q_next = p + trace_E_ * q;
+        p = p_next;
+        q = q_next;
+        if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) < 1e-18 * (std::abs(g0) + 1e-300)) break;
+      }
+      v_ = (g0 * Matrix2d::Identity() + g1 * E_) * A.b;
+      break;
+    }
+    case Translation::fixed_point: {
+      q_ = *fixed_point(A);
+      v_ = -C_ * q_;  // C (L - I)^-1 b
+      break;
+    }
+    case Translation::eigenvalues: {
+      const auto l = [](double mu) { return mu == 0.0 ? 1.0 : std::log1p(mu) / mu; };
+      const double g1 = (l(mu1_) - l(mu2_)) / (mu1_ - mu2_);  // divided difference
+      const double g0 = l(mu1_) - g1 * mu1_;                  // l(E) = g0 I + g1 E
+      v_ = (g0 * Matrix2d::Identity() + g1 * E_) * A.b;
+      break;
+    }
+  }
+}
+
+Matrix2d AffinePowers::power_of_linear(double t) const {
+  const double z = t * t * gamma_;
+  return std::exp(t * c_) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M_);
+}
+
+Matrix2d AffinePowers::power_minus_identity(double t) const {
+  // e^{tc} ch - 1 = expm1(tc) ch + (ch - 1): no cancellation for small t.
+  const double z = t * t * gamma_;
+  const double ch = cosh_sqrt(z);
+  return (std::expm1(t * c_) * ch + cosh_sqrt_minus_one(z)) * Matrix2d::Identity() +
+         std::exp(t * c_) * t * sinh_sqrt_ratio(z) * M_;
+}
+
+Affine2 AffinePowers::at_small(double t) const {
+  Affine2 result;
+  result.L = power_of_linear(t);
+  switch (translation_) {
+    case Translation::unit_series: {
+      // g_t(1 + mu) = ((1 + mu)^t - 1)/mu = sum_{n>=1} C(t, n) mu^{n-1}.
+      double p = 1.0, q = 0.0, g0 = 0.0, g1 = 0.0;  // E^{n-1} = p I + q E
+      double binomial = t;                          // C(t, 1)
+      const double scale = 1.0 + E_.norm();
+      for (int n = 1; n <= 400 && binomial != 0.0; ++n) {
+        g0 += binomial * p;
+        g1 += binomial * q;
+        const double p_next = -det_E_ * q, q_next = p + trace_E_ * q;
+        p = p_next;
+        q = q_next;
+        binomial *= (t - n) / (n + 1.0);
+        const double term = std::abs(binomial) * (std::abs(p) + std::abs(q) * scale);
+        if (term < 1e-18 * (std::abs(g0) + std::abs(g1) * scale)) break;
+      }
+      result.b = (g0 * Matrix2d::Identity() + g1 * E_) * A_.b;
+      break;
+    }
+    case Translation::fixed_point:
+      // Eq. 9: A^t(p) = L^t (p - q) + q, so the translation is (I - L^t) q.
+      result.b = -power_minus_identity(t) * q_;
+      break;
+    case Translation::eigenvalues: {
+      const auto g = [t](double mu) { return mu == 0.0 ? t : std::expm1(t * std::log1p(mu)) / mu; };
+      const double g1 = (g(mu1_) - g(mu2_)) / (mu1_ - mu2_);
+      const double g0 = g(mu1_) - g1 * mu1_;
+      result.b = (g0 * Matrix2d::Identity() + g1 * E_) * A_.b;
+      break;
+    }
+  }
+  return result;
+}
+
+Affine2 AffinePowers::at(double t) const {
+  if (t == 0.0) return Affine2::identity();
+  if (t == 1.0) return A_;
+  if (translation_ != Translation::unit_series || std::abs(t) <= limits::kUnitSeriesMaxTime) {
+    return at_small(t);
+  }
+  // A^t = (A^{t/2^k})^{2^k}, each factor within the series' range.
+  int halvings = 0;
+  double step = t;
+  while (std::abs(step) > limits::kUnitSeriesMaxTime) {
+    step /= 2.0;
+    ++halvings;
+  }
+  Affine2 result = at_small(step);
+  for (int i = 0; i < halvings; ++i) result = compose(result, result);
+  return result;
+}
+
+Affine2 affine_power(const Affine2& A, double t) { return AffinePowers(A).at(t); }
+
+AffinePowers SteadyAffineMorph::checked(const Affine2& B, const Affine2& C) {
+  const Affine2 A = compose(C, inverse(B));
+  try {
+    return AffinePowers(A);
+  } catch (const NoRealLogarithm& error) {
+    throw NoRealLogarithm(std::string("no SAM exists between these poses: A = C o B^-1 has no "
+                                      "real power (") +
+                              error.what() +
+                              "); insert a middle pose between them and use a polySAM or a "
+                              "SAM bi-arc through it (Sec. 5.3)",
+                          error.root_case());
+  }
+}
+
+SteadyAffineMorph::SteadyAffineMorph(const Affine2& B, const Affine2& C)
+    : B_(B), powers_(checked(B, C)) {}
+
+Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t) {
+  return SteadyAffineMorph(B, C).at(t);
+}
+
+}  // namespace pita

@@ -1,0 +1,149 @@
+// Real powers of 2D affinities: the closed-form EAR algorithm ("Extraction of
+// Affinity Roots") of the SAM paper, appendix A (A.1-A.5, Algorithm 1).
+//
+// An orientation-preserving affinity A: x -> L x + b (core/affine2.hpp) has
+// the real powers A^t = e^{t log A} (Eq. 1-2) exactly when L has a real
+// logarithm (Sec. 5.1, Culver). With the fixed point q of A (A.1),
+//     A^t(p) = L^t (p - q) + q,   L^t = e^{t log L}                  (Eq. 9)
+// and log L comes from the case selection of A.5 (Algorithm 1) on
+//     r = trace(L)/2,  delta = ((a - d)/2)^2 + b c  (the discriminant; it
+//     equals r^2 - det L, but computed from the entries, READING-NOTES 15),
+//     N = L - r I (traceless, N^2 = delta I), so L = r I + N:
+//  G1  delta < 0, complex eigenvalues r +- i omega:
+//        log L = ln(rho) I + (theta/omega) N, rho = sqrt(det L),
+//        theta = atan2(omega, r) in (0, pi)                       (Eq. 18, 19)
+//  G2  delta >= 0, r > 0, two positive eigenvalues r +- s:
+//        log L = ln(rho) I + (atanh(s/r)/s) N                  (Eq. 20, 13-16)
+//      including the double eigenvalue (delta = 0: rI or a Jordan block, for
+//      which Algorithm 1 has no branch), where the coefficient is 1/r
+//  S1  G2 with an eigenvalue 1: the same log, but A has no unique fixed point
+//      (a translation, a shear, or a one-directional scaling with a
+//      translation, A.4); A^t is computed without q (see limits.hpp)
+//  S2  L = -rho I (a rotation by pi with uniform scaling):
+//        log L = ln(rho) I + pi J, J the rotation by +pi/2        (A.3, S2)
+//  G3  delta >= 0, r < 0, not S2: two negative eigenvalues, or a double one
+//      with a single eigenvector: no real logarithm, no SAM (A.3, Sec. 5.1).
+// Every threshold is in core/limits.hpp ("EAR").
+//
+// The SAM from pose B to pose C is A^t o B with A = C o B^-1 (Sec. 2.2).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <Eigen/Core>
+
+#include "core/affine2.hpp"
+#include "core/pitas/motion.hpp"
+
+namespace pita {
+
+// The cases of appendix A.5.
+enum class RootCase { G1, G2, S1, S2, G3 };
+
+// "G1", ... and a few words: "G1 (complex eigenvalues)".
+std::string_view name(RootCase kase);
+std::string_view description(RootCase kase);
+
+// No real power of the affinity exists: its linear part has no real log (G3),
+// or is not orientation preserving (det L <= 0, Sec. 2.1). what() says which,
+// with the eigenvalues.
+class NoRealLogarithm : public MotionDomainError {
+ public:
+  NoRealLogarithm(const std::string& reason, RootCase kase)
+      : MotionDomainError(reason), kase_(kase) {}
+  // G3 when L has no real log; also G3 for det L <= 0 (no orientation).
+  RootCase root_case() const { return kase_; }
+
+ private:
+  RootCase kase_;
+};
+
+// The case of L (Algorithm 1 with the tolerances of limits.hpp). det L must
+// be > 0; a non-finite or non-orientation-preserving L is G3.
+RootCase select_case(const Eigen::Matrix2d& L);
+
+// log L by the case's closed form; throws NoRealLogarithm in G3.
+Eigen::Matrix2d linear_log(const Eigen::Matrix2d& L);
+
+// e^{tC} of a real 2x2 matrix C (Eq. 11, written with the discriminant of C
+// so that it stays real and exact when the eigenvalues of C meet).
+Eigen::Matrix2d linear_exp(const Eigen::Matrix2d& C, double t = 1.0);
+
+// L^t = e^{t log L}; throws NoRealLogarithm in G3.
+Eigen::Matrix2d linear_power(const Eigen::Matrix2d& L, double t);
+
+// The eigenvalues of L as (real, imaginary) pairs, first the one with the
+// larger real part (then the positive imaginary part).
+struct Eigenvalues {
+  double re1, im1, re2, im2;
+};
+Eigenvalues eigenvalues(const Eigen::Matrix2d& L);
+
+// A's fixed point q = L q + b (A.1, A.4); nullopt when 1 is an eigenvalue of
+// L (S1: no unique fixed point).
+std::optional<Eigen::Vector2d> fixed_point(const Affine2& A);
+
+// The real powers A^t of one affinity (EAR). The constructor does the case
+// selection and the log once; at(t) is then a few exp/cos calls.
+class AffinePowers {
+ public:
+  // Throws NoRealLogarithm (G3, or det L <= 0, or non-finite entries).
+  explicit AffinePowers(const Affine2& A);
+
+  // A^t (Eq. 9): at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t).
+  Affine2 at(double t) const;
+
+  RootCase root_case() const { return case_; }
+  const Affine2& affinity() const { return A_; }
+
+  // log L, and the homogeneous log [[log L, v], [0, 0]] of A: the velocity
+  // field x -> log(L) x + v of the SAM, the same at every time (Sec. 2.3 (6)).
+  const Eigen::Matrix2d& linear_log() const { return C_; }
+  Eigen::Vector2d velocity_translation() const { return v_; }
+
+ private:
+  // How g_t(L) = (L^t - I)(L - I)^-1, the translation part of A^t applied to
+  // b, is computed (limits.hpp, "EAR").
+  enum class Translation { unit_series, fixed_point, eigenvalues };
+
+  Affine2 at_small(double t) const;         // |t| <= limits::kUnitSeriesMaxTime, or any t
+  Eigen::Matrix2d power_of_linear(double t) const;          // L^t
+  Eigen::Matrix2d power_minus_identity(double t) const;     // L^t - I, exact near t = 0
+
+  Affine2 A_;
+  RootCase case_ = RootCase::G2;
+  double c_ = 0.0;           // log L = c I + M,
+  Eigen::Matrix2d M_;        // M traceless,
+  double gamma_ = 0.0;       // M^2 = gamma I
+  Eigen::Matrix2d C_;        // log L
+  Eigen::Vector2d v_;        // translation part of log A
+  Translation translation_ = Translation::fixed_point;
+  Eigen::Matrix2d E_;        // L - I
+  double trace_E_ = 0.0, det_E_ = 0.0;
+  double mu1_ = 0.0, mu2_ = 0.0;  // the eigenvalues of E (Translation::eigenvalues: real)
+  Eigen::Vector2d q_;        // the fixed point (Translation::fixed_point)
+};
+
+// A^t (builds AffinePowers; use the class for many t).
+Affine2 affine_power(const Affine2& A, double t);
+
+// The Steady Affine Morph from pose B (time 0) to pose C (time 1):
+// A^t o B with A = C o B^-1 (Sec. 2.2). Throws NoRealLogarithm with the
+// message "no SAM exists between these poses: ..." when A has no real power.
+class SteadyAffineMorph {
+ public:
+  SteadyAffineMorph(const Affine2& B, const Affine2& C);
+  Affine2 at(double t) const { return compose(powers_.at(t), B_); }
+  const AffinePowers& powers() const { return powers_; }
+
+ private:
+  static AffinePowers checked(const Affine2& B, const Affine2& C);
+  Affine2 B_;
+  AffinePowers powers_;
+};
+
+Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t);
+
+}  // namespace pita

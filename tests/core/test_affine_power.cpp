@@ -1,0 +1,483 @@
+// EAR (core/affine_power.hpp): the closed-form log and real powers of 2D
+// affinities and the Steady Affine Morph, checked against the properties of
+// the SAM paper (Sec. 2.3, 5, 6.1, appendix A) and against Eigen's
+// MatrixFunctions module (Schur-Pade log and pow on the 3x3 homogeneous
+// matrix) as an independent oracle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "core/affine_power.hpp"
+#include "core/limits.hpp"
+
+namespace pita {
+namespace {
+
+using Eigen::Matrix2d;
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+
+constexpr double kPi = std::numbers::pi;
+
+Matrix2d mat(double a, double b, double c, double d) {
+  Matrix2d L;
+  L << a, b, c, d;
+  return L;
+}
+Matrix2d rotation(double angle) { return mat(std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle)); }
+
+Matrix3d homogeneous(const Affine2& A) {
+  Matrix3d H = Matrix3d::Identity();
+  H.topLeftCorner<2, 2>() = A.L;
+  H.topRightCorner<2, 1>() = A.b;
+  return H;
+}
+
+// |X - Y| / max(|Y|, 1) in the Frobenius norm of the homogeneous matrices.
+double relative_error(const Affine2& X, const Affine2& Y) {
+  return (homogeneous(X) - homogeneous(Y)).norm() / std::max(homogeneous(Y).norm(), 1.0);
+}
+double relative_error(const Matrix2d& X, const Matrix2d& Y) {
+  return (X - Y).norm() / std::max(Y.norm(), 1e-300);
+}
+
+// Eigen's real power of the homogeneous matrix: the independent oracle.
+Affine2 eigen_power(const Affine2& A, double t) {
+  const Matrix3d P = homogeneous(A).pow(t);
+  Affine2 result;
+  result.L = P.topLeftCorner<2, 2>();
+  result.b = P.topRightCorner<2, 1>();
+  return result;
+}
+
+// Near the identity, Eigen's pow loses ~1e-11 (even in long double: its
+// Schur-Pade steps are not tuned for it), so there the oracle is the Taylor
+// series exp(t log(I + E)) of the homogeneous matrix in long double, with
+// log(I + E) = sum (-1)^{n+1} E^n / n (spectral radius of E well below 1).
+Affine2 series_power(const Affine2& A, double t) {
+  using M3 = Eigen::Matrix<long double, 3, 3>;
+  const M3 E = homogeneous(A).cast<long double>() - M3::Identity();
+  M3 log = M3::Zero(), power = E;
+  for (int n = 1; n < 80; ++n) {
+    log += ((n % 2 == 1) ? 1.0L : -1.0L) / n * power;
+    power = power * E;
+  }
+  M3 exp = M3::Identity(), term = M3::Identity();
+  for (int n = 1; n < 60; ++n) {
+    term = term * (static_cast<long double>(t) * log) / static_cast<long double>(n);
+    exp += term;
+  }
+  const Eigen::Matrix3d P = exp.cast<double>();
+  return Affine2{P.topLeftCorner<2, 2>(), P.topRightCorner<2, 1>()};
+}
+
+struct Random {
+  std::mt19937_64 rng{20261130};
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+  // An orientation-preserving affinity with a real log: R(a) R(-c) diag(1/s, s) R(c)
+  // scaled by e^k (Sec. 5.2), with |a| inside the trapezoid |a| < (1 + s) pi / 2.
+  Affine2 steady(double max_scale_log = 2.0) {
+    const double s = uniform(0.05, 1.0);
+    const double a = uniform(-1.0, 1.0) * (1.0 + s) * kPi / 2.0 * 0.98;
+    const double c = uniform(-kPi, kPi);
+    const double k = uniform(-max_scale_log, max_scale_log);
+    Affine2 A;
+    A.L = std::exp(k) * rotation(a) * rotation(-c) * mat(1.0 / s, 0.0, 0.0, s) * rotation(c);
+    A.b = Vector2d(uniform(-5.0, 5.0), uniform(-5.0, 5.0));
+    return A;
+  }
+};
+
+// ------------------------------------------------------------ case selection
+
+TEST(SelectCase, TheFiveCasesOfAlgorithmOne) {
+  EXPECT_EQ(select_case(rotation(1.0)), RootCase::G1);
+  EXPECT_EQ(select_case(2.0 * rotation(3.0)), RootCase::G1);
+  EXPECT_EQ(select_case(mat(2.0, 0.3, 0.0, 0.5)), RootCase::G2);
+  EXPECT_EQ(select_case(mat(2.0, 1.0, 0.0, 2.0)), RootCase::G2);  // Jordan block, double eigenvalue
+  EXPECT_EQ(select_case(3.0 * Matrix2d::Identity()), RootCase::G2);
+  EXPECT_EQ(select_case(Matrix2d::Identity()), RootCase::S1);             // translation
+  EXPECT_EQ(select_case(mat(1.0, 4.0, 0.0, 1.0)), RootCase::S1);          // shear
+  EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, 3.0)), RootCase::S1);          // one-directional scaling
+  EXPECT_EQ(select_case(-2.0 * Matrix2d::Identity()), RootCase::S2);
+  EXPECT_EQ(select_case(rotation(kPi)), RootCase::S2);
+  EXPECT_EQ(select_case(rotation(-kPi)), RootCase::S2);
+  EXPECT_EQ(select_case(mat(-2.0, 0.0, 0.0, -0.5)), RootCase::G3);
+  EXPECT_EQ(select_case(mat(-1.0, 1.0, 0.0, -1.0)), RootCase::G3);  // negative Jordan block
+  EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, -1.0)), RootCase::G3);   // a reflection (det < 0)
+}
+
+TEST(SelectCase, HalfTurnThresholdFromBothSides) {
+  const double tol = limits::kHalfTurn;
+  // Within the tolerance: S2 whatever the perturbation.
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(1, 0, 0, -1))), RootCase::S2);
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(0, -1, 1, 0))), RootCase::S2);
+  // Beyond it: two distinct negative eigenvalues are G3, a rotation short of pi is G1.
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 3.0 * tol * mat(1, 0, 0, -1))), RootCase::G3);
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 3.0 * tol * mat(0, -1, 1, 0))), RootCase::G1);
+  // The discriminant is computed from the entries: a rotation by pi - 1e-9 is G1, not G3
+  // (r^2 - det L would round to 0 and then be taken as no SAM; READING-NOTES 15).
+  EXPECT_EQ(select_case(rotation(kPi - 1e-9)), RootCase::G1);
+}
+
+TEST(SelectCase, UnitEigenvalueThresholdFromBothSides) {
+  const double tol = limits::kUnitEigenvalue;
+  EXPECT_EQ(select_case(mat(1.0 + 0.5 * tol, 0.0, 0.0, 3.0)), RootCase::S1);
+  EXPECT_EQ(select_case(mat(1.0 + 2.0 * tol, 0.0, 0.0, 3.0)), RootCase::G2);
+  EXPECT_EQ(select_case(mat(1.0 - 2.0 * tol, 0.0, 0.0, 0.3)), RootCase::G2);
+  EXPECT_EQ(select_case(mat(1.0, 5.0, 0.0, 1.0 + 0.5 * tol)), RootCase::S1);
+  EXPECT_EQ(select_case(mat(1.0 + 4.0 * tol, 5.0, 0.0, 1.0 + 8.0 * tol)), RootCase::G2);
+}
+
+TEST(SelectCase, ComplexOrRealAcrossTheDoubleEigenvalue) {
+  // delta = b c for L = [[2, 1], [eps, 2]]: complex for eps < 0, real for eps >= 0.
+  EXPECT_EQ(select_case(mat(2.0, 1.0, -1e-300, 2.0)), RootCase::G1);
+  EXPECT_EQ(select_case(mat(2.0, 1.0, 0.0, 2.0)), RootCase::G2);
+  EXPECT_EQ(select_case(mat(2.0, 1.0, 1e-300, 2.0)), RootCase::G2);
+  // With r < 0 the same boundary separates G1 from G3 (no log).
+  EXPECT_EQ(select_case(mat(-2.0, 1.0, -1e-12, -2.0)), RootCase::G1);
+  EXPECT_EQ(select_case(mat(-2.0, 1.0, 1e-12, -2.0)), RootCase::G3);
+}
+
+// Sec. 5.2, Eq. 4: R(a) diag(1/s, s) has a real log iff |a| < acos(-2s/(s^2+1)),
+// and the trapezoid |a| < (1 + s) pi / 2 lies inside that region.
+TEST(SelectCase, ExistenceRegionIsEquationFour) {
+  for (int i = 1; i <= 50; ++i) {
+    const double s = i / 50.0;
+    const double boundary = std::acos(-2.0 * s / (s * s + 1.0));
+    for (const double a : {boundary - 1e-6, boundary + 1e-6}) {
+      for (const double sign : {-1.0, 1.0}) {
+        const RootCase kase = select_case(rotation(sign * a) * mat(1.0 / s, 0.0, 0.0, s));
+        const bool exists = a < boundary;
+        if (a > kPi) continue;
+        EXPECT_EQ(kase != RootCase::G3, exists) << "s = " << s << ", a = " << sign * a;
+      }
+    }
+    EXPECT_LE((1.0 + s) * kPi / 2.0, boundary + 1e-15) << "trapezoid inside the region at s = " << s;
+  }
+}
+
+// ---------------------------------------------------------------- log and exp
+
+TEST(LinearLog, ExpOfLogIsL) {
+  Random random;
+  for (int i = 0; i < 2000; ++i) {
+    const Matrix2d L = random.steady(3.0).L;
+    const Matrix2d C = linear_log(L);
+    EXPECT_LT(relative_error(linear_exp(C), L), 1e-13) << L;
+  }
+}
+
+TEST(LinearLog, AgreesWithEigenLog) {
+  Random random;
+  double worst = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const Matrix2d L = random.steady(2.0).L;
+    const Matrix2d expected = L.log();
+    worst = std::max(worst, (linear_log(L) - expected).norm() / std::max(expected.norm(), 1.0));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(LinearLog, SpecialCasesHaveTheirClosedForms) {
+  // S2: rotation by +pi with scaling 2 (READING-NOTES 15): ln 2 I + pi J.
+  EXPECT_LT(relative_error(linear_log(-2.0 * Matrix2d::Identity()), mat(std::log(2.0), -kPi, kPi, std::log(2.0))), 1e-15);
+  // Shear: log [[1, k], [0, 1]] = [[0, k], [0, 0]].
+  EXPECT_LT(relative_error(linear_log(mat(1.0, 4.0, 0.0, 1.0)), mat(0.0, 4.0, 0.0, 0.0)), 1e-15);
+  // Jordan block: log [[r, 1], [0, r]] = [[ln r, 1/r], [0, ln r]].
+  EXPECT_LT(relative_error(linear_log(mat(2.0, 1.0, 0.0, 2.0)), mat(std::log(2.0), 0.5, 0.0, std::log(2.0))), 1e-15);
+  // A rotation by theta (G1) has log theta J.
+  EXPECT_LT(relative_error(linear_log(rotation(2.5)), mat(0.0, -2.5, 2.5, 0.0)), 1e-15);
+  EXPECT_THROW(linear_log(mat(-2.0, 0.0, 0.0, -0.5)), NoRealLogarithm);
+}
+
+// Both sides of every switch between formulas agree with Eigen.
+TEST(LinearLog, AcrossTheSeriesThresholds) {
+  for (const double factor : {0.5, 0.999, 1.001, 2.0}) {
+    for (const double sign : {-1.0, 1.0}) {
+      // L = [[r, 1], [u r^2, r]]: delta / r^2 = u around kDoubleEigenvalueSeries.
+      const double r = 1.7, u = sign * factor * limits::kDoubleEigenvalueSeries;
+      const Matrix2d L = mat(r, 1.0, u * r * r, r);
+      EXPECT_LT(relative_error(linear_log(L), L.log()), 1e-13) << "u = " << u;
+      EXPECT_LT(relative_error(linear_exp(linear_log(L)), L), 1e-14) << "u = " << u;
+    }
+  }
+  for (const double eps : {1e-16, 1e-12, 1e-8, 1e-4}) {  // nearly Jordan
+    const Matrix2d L = mat(2.0, 1.0, eps, 2.0);
+    EXPECT_LT(relative_error(linear_log(L), L.log()), 1e-13) << "eps = " << eps;
+  }
+}
+
+// --------------------------------------------------------------- powers of A
+
+TEST(AffinePower, IdentityAtZeroAndAAtOne) {
+  Random random;
+  for (int i = 0; i < 200; ++i) {
+    const Affine2 A = random.steady();
+    const AffinePowers powers(A);
+    EXPECT_EQ(homogeneous(powers.at(0.0)), Matrix3d::Identity());
+    EXPECT_EQ(homogeneous(powers.at(1.0)), homogeneous(A));
+    // Not only by the shortcut: a hair away, A^t tends to them.
+    EXPECT_LT(relative_error(powers.at(1e-14), Affine2::identity()), 1e-12);
+    EXPECT_LT(relative_error(powers.at(1.0 - 1e-14), A), 1e-12);
+  }
+}
+
+TEST(AffinePower, PowersAdd) {
+  Random random;
+  for (int i = 0; i < 500; ++i) {
+    const AffinePowers powers(random.steady(1.5));
+    const double s = random.uniform(-1.0, 2.0), t = random.uniform(-1.0, 2.0);
+    EXPECT_LT(relative_error(compose(powers.at(s), powers.at(t)), powers.at(s + t)), 1e-12)
+        << "s = " << s << ", t = " << t;
+  }
+}
+
+TEST(AffinePower, FixedPointIsFixed) {
+  Random random;
+  for (int i = 0; i < 500; ++i) {
+    const Affine2 A = random.steady();
+    const std::optional<Vector2d> q = fixed_point(A);
+    ASSERT_TRUE(q.has_value());
+    EXPECT_LT((apply(A, *q) - *q).norm(), 1e-11 * (1.0 + q->norm()));
+    const double t = random.uniform(-1.0, 2.0);
+    EXPECT_LT((apply(affine_power(A, t), *q) - *q).norm(), 1e-11 * (1.0 + q->norm()));
+  }
+  EXPECT_FALSE(fixed_point(Affine2{Matrix2d::Identity(), Vector2d(1.0, 2.0)}).has_value());
+  EXPECT_FALSE(fixed_point(Affine2{mat(1.0, 0.0, 0.0, 3.0), Vector2d(1.0, 2.0)}).has_value());
+}
+
+TEST(AffinePower, AgreesWithEigenPowOnRandomAffinities) {
+  Random random;
+  double worst = 0.0;
+  for (int i = 0; i < 3000; ++i) {
+    const Affine2 A = random.steady(2.0);
+    const double t = random.uniform(-1.5, 2.5);
+    worst = std::max(worst, relative_error(affine_power(A, t), eigen_power(A, t)));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// The special cases against closed forms written here, and against Eigen.
+TEST(AffinePower, PureTranslationMovesAtConstantSpeed) {
+  const Affine2 A{Matrix2d::Identity(), Vector2d(3.0, -2.0)};
+  for (const double t : {-1.0, 0.25, 0.5, 1.7, 40.0}) {
+    const Affine2 P = affine_power(A, t);
+    EXPECT_LT(relative_error(P, Affine2{Matrix2d::Identity(), t * A.b}), 1e-15) << t;
+  }
+}
+
+TEST(AffinePower, ShearAndTranslation) {
+  // L = [[1, k], [0, 1]]: L^t = [[1, t k], [0, 1]], translation t b + t(t-1)/2 (L - I) b.
+  const double k = 2.5;
+  const Affine2 A{mat(1.0, k, 0.0, 1.0), Vector2d(1.0, 3.0)};
+  for (const double t : {-0.5, 0.3, 0.5, 2.0, 7.5}) {
+    Affine2 expected{mat(1.0, t * k, 0.0, 1.0), t * A.b + t * (t - 1.0) / 2.0 * (A.L - Matrix2d::Identity()) * A.b};
+    EXPECT_LT(relative_error(affine_power(A, t), expected), 1e-15) << t;
+    EXPECT_LT(relative_error(affine_power(A, t), eigen_power(A, t)), 1e-12) << t;
+  }
+}
+
+TEST(AffinePower, ScalingAlongOneDirectionWithTranslation) {
+  // S1 with a simple eigenvalue 1: diag(1, 3), b = (2, 1):
+  // A^t = [diag(1, 3^t) | (2 t, (3^t - 1)/2)] (A.4, case 2).
+  const Affine2 A{mat(1.0, 0.0, 0.0, 3.0), Vector2d(2.0, 1.0)};
+  for (const double t : {-1.0, 0.2, 0.5, 1.5, 20.0}) {
+    const double p = std::pow(3.0, t);
+    const Affine2 expected{mat(1.0, 0.0, 0.0, p), Vector2d(2.0 * t, (p - 1.0) / 2.0)};
+    EXPECT_LT(relative_error(affine_power(A, t), expected), 1e-14) << t;
+  }
+}
+
+TEST(AffinePower, HalfTurnWithScaling) {
+  // S2: L = -4 I, fixed point q = b / 5: A^t = 4^t R(pi t) about q.
+  const Affine2 A{-4.0 * Matrix2d::Identity(), Vector2d(5.0, 10.0)};
+  const Vector2d q(1.0, 2.0);
+  for (const double t : {0.25, 0.5, 0.75, 1.5}) {
+    const Matrix2d L = std::pow(4.0, t) * rotation(kPi * t);
+    const Affine2 expected{L, q - L * q};
+    EXPECT_LT(relative_error(affine_power(A, t), expected), 1e-14) << t;
+  }
+  const AffinePowers half(A);
+  EXPECT_LT(relative_error(compose(half.at(0.5), half.at(0.5)), A), 1e-14);
+}
+
+TEST(AffinePower, JordanBlockAgreesWithEigen) {
+  const Affine2 A{mat(2.0, 1.0, 0.0, 2.0), Vector2d(1.0, -1.0)};
+  for (const double t : {-0.7, 0.3, 0.5, 1.9}) {
+    EXPECT_LT(relative_error(affine_power(A, t), eigen_power(A, t)), 1e-13) << t;
+  }
+}
+
+// A^t is continuous across each switch of limits.hpp ("EAR"): at both sides
+// it agrees with Eigen, and across S1 the two sides agree with each other.
+TEST(AffinePower, AcrossTheTranslationFormulaSwitches) {
+  std::vector<Affine2> cases;
+  for (const double factor : {0.99, 1.01}) {
+    const double radius = factor * limits::kUnitSeriesRadius;
+    const double near = factor * limits::kUnitFixedPointDistance;
+    cases.push_back({mat(1.0 + radius, 0.3, 0.0, 1.0 - radius / 2.0), Vector2d(1.0, 2.0)});
+    cases.push_back({mat(1.0 + near, 0.0, 0.0, 2.5), Vector2d(-1.0, 2.0)});
+    cases.push_back({mat(1.0 - near, 0.7, 0.0, 0.3), Vector2d(2.0, 1.0)});
+    cases.push_back({(1.0 + radius) * rotation(0.1), Vector2d(2.0, 1.0)});
+  }
+  for (const double eps : {1e-13, 1e-10, 1e-7, 1e-4}) {
+    cases.push_back({mat(1.0 + eps, 0.0, 0.0, 2.0), Vector2d(2.0, 1.0)});  // near S1
+  }
+  for (const Affine2& A : cases) {
+    for (const double t : {-0.6, 0.1, 0.5, 0.9, 1.7}) {
+      EXPECT_LT(relative_error(affine_power(A, t), eigen_power(A, t)), 1e-12)
+          << "A = " << homogeneous(A) << "\nt = " << t;
+    }
+  }
+  // Near the identity (translations, shears, small rotations), against the series.
+  std::vector<Affine2> near_identity;
+  for (const double eps : {1e-13, 1e-10, 1e-7, 1e-4, 1e-2}) {
+    near_identity.push_back({mat(1.0 + eps, 0.5, -eps, 1.0 - eps), Vector2d(2.0, 1.0)});
+    near_identity.push_back({(1.0 + eps) * rotation(eps), Vector2d(2.0, 1.0)});
+    near_identity.push_back({mat(1.0, 0.1, 0.0, 1.0 + eps), Vector2d(-1.0, 3.0)});
+  }
+  for (const Affine2& A : near_identity) {
+    for (const double t : {-0.6, 0.1, 0.5, 0.9, 1.7}) {
+      EXPECT_LT(relative_error(affine_power(A, t), series_power(A, t)), 1e-14)
+          << "A = " << homogeneous(A) << "\nt = " << t;
+    }
+  }
+  // Across S1: diag(1 +- 2 kUnitEigenvalue, 3) on either side of the threshold.
+  const double tol = limits::kUnitEigenvalue;
+  for (const double t : {0.3, 0.5, 2.0}) {
+    const Affine2 inside{mat(1.0 + 0.5 * tol, 0.0, 0.0, 3.0), Vector2d(2.0, 1.0)};
+    const Affine2 outside{mat(1.0 + 2.0 * tol, 0.0, 0.0, 3.0), Vector2d(2.0, 1.0)};
+    EXPECT_LT(relative_error(affine_power(inside, t), affine_power(outside, t)), 1e-11);
+  }
+}
+
+TEST(AffinePower, LargeTimesThroughSquaring) {
+  const Affine2 A{mat(1.01, 0.2, 0.0, 0.99), Vector2d(1.0, 2.0)};
+  for (const double t : {17.0, 100.5, -40.25}) {
+    EXPECT_LT(relative_error(affine_power(A, t), eigen_power(A, t)), 1e-11) << t;
+  }
+}
+
+TEST(AffinePower, HomogeneousLogAgreesWithEigen) {
+  Random random;
+  for (int i = 0; i < 300; ++i) {
+    const Affine2 A = random.steady(1.5);
+    const AffinePowers powers(A);
+    Matrix3d X = Matrix3d::Zero();
+    X.topLeftCorner<2, 2>() = powers.linear_log();
+    X.topRightCorner<2, 1>() = powers.velocity_translation();
+    const Matrix3d expected = homogeneous(A).log();
+    EXPECT_LT((X - expected).norm() / std::max(expected.norm(), 1.0), 1e-12);
+  }
+  const AffinePowers shear(Affine2{mat(1.0, 2.0, 0.0, 1.0), Vector2d(1.0, 1.0)});
+  // log of [[1, 2, 1], [0, 1, 1], [0, 0, 1]]: N - N^2/2 with N = H - I.
+  EXPECT_LT((shear.velocity_translation() - Vector2d(0.0, 1.0)).norm() +
+                (shear.linear_log() - mat(0.0, 2.0, 0.0, 0.0)).norm(),
+            1e-15);
+}
+
+TEST(AffinePower, NoRealPowerIsRefused) {
+  const Affine2 A{mat(-2.0, 0.0, 0.0, -0.5), Vector2d(1.0, 0.0)};
+  try {
+    AffinePowers powers(A);
+    FAIL() << "G3 accepted";
+  } catch (const NoRealLogarithm& error) {
+    EXPECT_EQ(error.root_case(), RootCase::G3);
+    EXPECT_NE(std::string(error.what()).find("no real logarithm"), std::string::npos) << error.what();
+  }
+  EXPECT_THROW(AffinePowers(Affine2{mat(1.0, 0.0, 0.0, -1.0), Vector2d::Zero()}), NoRealLogarithm);
+  EXPECT_THROW(AffinePowers(Affine2{mat(NAN, 0.0, 0.0, 1.0), Vector2d::Zero()}), NoRealLogarithm);
+}
+
+// -------------------------------------------------------- Steady Affine Morph
+
+TEST(SteadyAffineMorph, InterpolatesThePoses) {
+  Random random;
+  for (int i = 0; i < 200; ++i) {
+    const Affine2 B = random.steady(), A = random.steady();
+    const Affine2 C = compose(A, B);
+    const SteadyAffineMorph sam(B, C);
+    EXPECT_LT(relative_error(sam.at(0.0), B), 1e-15);
+    EXPECT_LT(relative_error(sam.at(1.0), C), 1e-12);
+  }
+}
+
+// Sec. 2.3 (2): a change of coordinates T commutes with the SAM, and so does
+// a change of the shape's own frame S.
+TEST(SteadyAffineMorph, AffineInvariant) {
+  Random random;
+  for (int i = 0; i < 300; ++i) {
+    const Affine2 B = random.steady(), C = compose(random.steady(1.0), B);
+    Affine2 T = random.steady(1.0), S = random.steady(1.0);
+    const double t = random.uniform(-0.5, 1.5);
+    const Affine2 base = steady_affine_morph(B, C, t);
+    EXPECT_LT(relative_error(steady_affine_morph(compose(T, B), compose(T, C), t), compose(T, base)), 1e-11);
+    EXPECT_LT(relative_error(steady_affine_morph(compose(B, S), compose(C, S), t), compose(base, S)), 1e-11);
+  }
+}
+
+// Sec. 2.3 (3): swapping the poses reverses the motion.
+TEST(SteadyAffineMorph, Reversible) {
+  Random random;
+  for (int i = 0; i < 300; ++i) {
+    const Affine2 B = random.steady(), C = compose(random.steady(1.0), B);
+    const double t = random.uniform(0.0, 1.0);
+    EXPECT_LT(relative_error(steady_affine_morph(B, C, t), steady_affine_morph(C, B, 1.0 - t)), 1e-11);
+  }
+}
+
+// Sec. 6.1: the velocity in the local frame, F(t)^-1 F'(t), is constant, and
+// so is the global one, F'(t) F(t)^-1 = log A (finite differences).
+TEST(SteadyAffineMorph, VelocityConstantInTheLocalFrame) {
+  Random random;
+  const double h = 1e-5;
+  for (int i = 0; i < 100; ++i) {
+    const Affine2 B = random.steady(1.0), C = compose(random.steady(1.0), B);
+    const SteadyAffineMorph sam(B, C);
+    const auto local = [&](double t) {
+      const Matrix3d derivative = (homogeneous(sam.at(t + h)) - homogeneous(sam.at(t - h))) / (2.0 * h);
+      return Matrix3d(homogeneous(sam.at(t)).inverse() * derivative);
+    };
+    const auto global = [&](double t) {
+      const Matrix3d derivative = (homogeneous(sam.at(t + h)) - homogeneous(sam.at(t - h))) / (2.0 * h);
+      return Matrix3d(derivative * homogeneous(sam.at(t)).inverse());
+    };
+    const Matrix3d local0 = local(0.0), global0 = global(0.0);
+    for (const double t : {0.25, 0.5, 0.75, 1.0}) {
+      EXPECT_LT((local(t) - local0).norm(), 1e-7 * (1.0 + local0.norm()));
+      EXPECT_LT((global(t) - global0).norm(), 1e-7 * (1.0 + global0.norm()));
+    }
+    // An unsteady motion fails the same check: linear interpolation of the matrices.
+    const auto linear = [&](double t) {
+      return Matrix3d((1.0 - t) * homogeneous(B) + t * homogeneous(C));
+    };
+    const auto linear_local = [&](double t) {
+      return Matrix3d(linear(t).inverse() * (linear(t + h) - linear(t - h)) / (2.0 * h));
+    };
+    EXPECT_GT((linear_local(0.75) - linear_local(0.25)).norm(), 1e-4 * (1.0 + linear_local(0.25).norm()));
+  }
+}
+
+TEST(SteadyAffineMorph, NoSamBetweenPosesIsSaidClearly) {
+  const Affine2 B{rotation(0.3), Vector2d(1.0, 0.0)};
+  const Affine2 C = compose(Affine2{mat(-2.0, 0.0, 0.0, -0.5), Vector2d(0.0, 1.0)}, B);
+  try {
+    SteadyAffineMorph sam(B, C);
+    FAIL() << "no SAM expected";
+  } catch (const NoRealLogarithm& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind("no SAM exists between these poses: ", 0), 0u) << message;
+    EXPECT_NE(message.find("middle pose"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace pita
