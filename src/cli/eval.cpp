@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/pitas/registry.hpp"
+#include "core/pose_motion.hpp"
 #include "scene/frames.hpp"
 #include "scene/sampling.hpp"
 #include "scene/scene.hpp"
@@ -96,8 +97,10 @@ std::string method_label(Method method) {
 // scene's "samples", else kDefaultSamples.
 std::vector<double> uniform_sample_times(std::optional<int> samples, const scene::Scene& scene) {
   const int count = samples.value_or(scene.samples.value_or(scene::kDefaultSamples));
-  std::vector<double> times =
-      scene::uniform_times(scene.keyframes.front().t, scene.keyframes.back().t, count);
+  const bool poses = scene.kind == scene::SceneKind::poses;
+  const double first = poses ? scene.poses.front().t : scene.keyframes.front().t;
+  const double last = poses ? scene.poses.back().t : scene.keyframes.back().t;
+  std::vector<double> times = scene::uniform_times(first, last, count);
   for (double t : times) {
     if (!std::isfinite(t)) {
       throw InputError(fmt::format("{}: the knots are too far apart to sample between them",
@@ -105,6 +108,37 @@ std::vector<double> uniform_sample_times(std::optional<int> samples, const scene
     }
   }
   return times;
+}
+
+// The poses of a pose scene's motion (README "Pose scenes").
+std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
+                                             const std::vector<double>& times) {
+  const std::string_view id = info(scene.pose_method).id;
+  std::optional<PoseMotion> motion;
+  try {
+    motion.emplace(scene.pose_method, scene.poses);
+  } catch (const NoSamBetweenPoses& error) {
+    throw InputError(fmt::format("{}: /poses: {} (poses {} and {}, method {})", scene.path,
+                                 error.what(), error.first(), error.first() + 1, id));
+  }
+  std::vector<scene::PoseFrame> frames;
+  frames.reserve(times.size());
+  for (double t : times) {
+    Affine2 pose;
+    try {
+      pose = motion->at(t);
+    } catch (const NoRealLogarithm& error) {
+      throw InputError(fmt::format("{}: /poses: method {} is undefined at t = {}: {}", scene.path,
+                                   id, t, error.what()));
+    }
+    if (!pose.L.allFinite() || !pose.b.allFinite()) {
+      throw InputError(fmt::format("{}: /poses: method {} has no finite pose at t = {}: its numbers "
+                                   "overflow double precision there (t too far outside the knots)",
+                                   scene.path, id, t));
+    }
+    frames.push_back({t, pose});
+  }
+  return frames;
 }
 
 std::vector<scene::Frame> evaluate(const scene::Scene& scene, const std::vector<double>& times) {
@@ -238,11 +272,15 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
 ExitCode run_eval(const EvalOptions& options) {
   try {
     std::optional<Method> method_override;
+    std::optional<PoseMethod> pose_method_override;
     if (options.method) {
-      try {
-        method_override = scene::resolve_method(*options.method);
-      } catch (const std::invalid_argument& error) {
-        throw InputError(fmt::format("--method: {}", error.what()));
+      pose_method_override = find_pose_method(*options.method);
+      if (!pose_method_override) {
+        try {
+          method_override = scene::resolve_method(*options.method);
+        } catch (const std::invalid_argument& error) {
+          throw InputError(fmt::format("--method: {}", error.what()));
+        }
       }
     }
     std::optional<std::vector<double>> times;
@@ -252,12 +290,23 @@ ExitCode run_eval(const EvalOptions& options) {
 
     scene::Scene scene = scene::load_scene(options.scene_path);
     if (method_override) scene = scene::with_method(std::move(scene), *method_override);
+    if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
-    const std::vector<scene::Frame> frames =
-        evaluate(scene, times ? *times : uniform_sample_times(samples, scene));
-    // The whole output is built before anything is printed: a failure leaves stdout empty.
-    const std::string text = options.format == "csv" ? scene::frames_to_csv(frames)
-                                                     : scene::frames_to_json(scene.method_name, frames);
+    std::string text;  // the whole output is built before anything is printed
+    if (scene.kind == scene::SceneKind::poses) {
+      if (scene.poses.empty()) {
+        throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
+      }
+      const std::vector<scene::PoseFrame> frames =
+          evaluate_poses(scene, times ? *times : uniform_sample_times(samples, scene));
+      text = options.format == "csv" ? scene::pose_frames_to_csv(frames)
+                                     : scene::pose_frames_to_json(scene.method_name, frames);
+    } else {
+      const std::vector<scene::Frame> frames =
+          evaluate(scene, times ? *times : uniform_sample_times(samples, scene));
+      text = options.format == "csv" ? scene::frames_to_csv(frames)
+                                     : scene::frames_to_json(scene.method_name, frames);
+    }
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
       std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno)
                 << ")\n";

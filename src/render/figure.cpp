@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "render/painter.hpp"
+#include "render/pose_drawing.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::render {
@@ -119,7 +120,8 @@ Figure build_figure(const scene::Scene& scene) {
   Figure figure;
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   for (const scene::Panel& panel : scene.panels) {
-    Drawing drawing = panel_drawing(scene, panel);
+    Drawing drawing = scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel)
+                                                            : panel_drawing(scene, panel);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,
                         "the figure has non-finite coordinates (the motion overflows)");

@@ -13,6 +13,7 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
+#include "core/pose_motion.hpp"
 
 namespace pita::scene {
 
@@ -148,6 +149,66 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer>;
 
+// ------------------------------------------------------------ pose scenes
+// Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
+// shapes are outlines in the frame of the reference pose, drawn through the
+// pose of each frame.
+
+inline constexpr int kMaxShapes = 64;
+inline constexpr int kMaxShapePoints = 10'000;
+inline constexpr int kMaxExistenceCells = 4'000'000;  // columns x rows of "existence"
+
+// A closed outline (polygon) or open polyline in reference coordinates.
+struct ShapeOutline {
+  std::vector<Point> points;             // at least 2
+  bool closed = true;
+  std::optional<Color> color;            // nullopt: the layer's colour
+};
+
+struct ShapesLayer {  // "shapes": the shapes at each frame (a pattern of shapes)
+  LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
+  std::optional<Color> fill;             // filled with fill_opacity when given
+  double fill_opacity = 0.25;
+  std::optional<int> samples;            // default: the panel's samples
+  std::optional<TimeRange> range;        // default: first to last knot
+};
+
+struct PosesLayer {  // "poses": the shapes at the control poses
+  std::vector<Color> colors{Color{0.85, 0.0, 0.0, 1.0}, Color{0.0, 0.6, 0.0, 1.0},
+                            Color{0.0, 0.0, 0.85, 1.0}};  // one per pose, cycled
+  double width = 2.0;
+  double fill_opacity = 0.15;
+};
+
+struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each frame
+  double scale = 0.25;                   // drawn length = scale * velocity (per unit of time)
+  LineStyle line{Color{0.8, 0.2, 0.1, 1.0}, 1.0, 1.0, {}};
+  std::optional<int> samples;
+  std::optional<TimeRange> range;
+};
+
+struct PathsLayer {  // "paths": the trajectory of each vertex of each shape
+  int samples = 256;
+  std::optional<TimeRange> range;
+  LineStyle line{Color{0.55, 0.55, 0.55, 1.0}, 0.8, 1.0, {}};
+};
+
+// "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)
+// classified by EAR's case selection on a grid of cells over a in [-pi, pi],
+// s in (0, 1]; cells without a SAM (G3) are filled; the boundary of Eq. 4,
+// |a| = acos(-2s/(s^2+1)), and the trapezoid |a| < (1+s) pi/2 are drawn over it.
+struct ExistenceLayer {
+  int columns = 360;
+  int rows = 200;
+  Color fill{0.85, 0.2, 0.2, 1.0};       // no SAM
+  std::optional<Color> exists_fill = Color{0.93, 0.96, 0.93, 1.0};
+  LineStyle boundary{Color{0.0, 0.0, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};  // Eq. 4
+  LineStyle trapezoid{Color{0.0, 0.0, 0.0, 1.0}, 2.0, 1.0, {}};
+};
+
+using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
+                               ExistenceLayer, LabelLayer>;
+
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
 struct Panel {
@@ -162,6 +223,13 @@ struct Panel {
   // The panel's own "layers", drawn instead of the scene's (Fig. 1 draws
   // different trajectories per panel); nullopt: the scene's layers.
   std::optional<std::vector<Layer>> layers;
+
+  // Pose scenes (Scene::kind == SceneKind::poses): the method and poses of
+  // this panel (the scene's unless overridden), its shapes and layers.
+  PoseMethod pose_method = PoseMethod::sam;
+  std::vector<TimedPose> poses;
+  std::vector<ShapeOutline> shapes;
+  std::optional<std::vector<PoseLayer>> pose_layers;
 };
 
 }  // namespace pita::scene

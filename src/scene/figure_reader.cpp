@@ -372,7 +372,145 @@ void read_view(const JsonReader& reader, const Json& value, const std::string& p
   canvas.shared_fit = false;
 }
 
+// ------------------------------------------------------------ pose layers
+
+constexpr std::array<std::string_view, 9> kShapesFields = {
+    "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"};
+constexpr std::array<std::string_view, 4> kPosesFields = {"type", "colors", "width",
+                                                          "fill_opacity"};
+constexpr std::array<std::string_view, 8> kVelocitiesFields = {
+    "type", "scale", "color", "width", "opacity", "dash", "samples", "range"};
+constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "range", "color",
+                                                          "width", "opacity", "dash"};
+constexpr std::array<std::string_view, 7> kExistenceFields = {
+    "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
+constexpr std::array<std::span<const std::string_view>, 6> kPoseLayerFields = {
+    kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields};
+
+// A line style given as an object {"color", "width", "opacity", "dash"}.
+void read_line_object(const Fields& fields, std::string_view key, LineStyle& line) {
+  const Json* value = fields.get(key);
+  if (value == nullptr) return;
+  const std::string pointer = fields.at(key);
+  fields.reader().object(*value, pointer, "a line style {\"color\", \"width\", \"opacity\", \"dash\"}");
+  fields.reader().check_fields(*value, pointer, kLineFields);
+  read_line(Fields(fields.reader(), *value, pointer), line);
+}
+
+std::vector<Color> read_colors(const Fields& fields, std::vector<Color> defaults) {
+  const Json* colors = fields.get("colors");
+  if (colors == nullptr) return defaults;
+  const std::string pointer = fields.at("colors");
+  if (!colors->is_array() || colors->empty() || colors->size() > kMaxKeyframeColors) {
+    fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} colors (got {})",
+                                              kMaxKeyframeColors, value_text(*colors)));
+  }
+  std::vector<Color> result;
+  for (std::size_t i = 0; i < colors->size(); ++i) {
+    result.push_back(fields.reader().color((*colors)[i], element_pointer(pointer, i)));
+  }
+  return result;
+}
+
+PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  reader.object(value, pointer, "a layer");
+  const Fields fields(reader, value, pointer);
+  const Json& type_value = fields.required("type", "the layer type: " + quoted_choices(kPoseLayerTypes));
+  const std::string type_pointer = fields.at("type");
+  if (!type_value.is_string()) {
+    reader.fail(type_pointer, "must be " + quoted_choices(kPoseLayerTypes) + " (got " +
+                                  value_text(type_value) + ")");
+  }
+  const std::string name = type_value.get<std::string>();
+  const auto found = std::find(kPoseLayerTypes.begin(), kPoseLayerTypes.end(), name);
+  if (found == kPoseLayerTypes.end()) {
+    std::string reason = fmt::format("unknown layer type \"{}\" for a pose scene", name);
+    if (std::find(kLayerTypes.begin(), kLayerTypes.end(), name) != kLayerTypes.end()) {
+      reason = fmt::format("layer type \"{}\" draws arrows (keyframe scenes); a pose scene's "
+                           "layers: {}",
+                           name, joined(kPoseLayerTypes));
+    } else {
+      const std::vector<std::string> suggestions = closest_names(name, kPoseLayerTypes);
+      reason += suggestions.empty() ? "; layer types: " + joined(kPoseLayerTypes)
+                                    : did_you_mean(suggestions);
+    }
+    reader.fail(type_pointer, reason);
+  }
+  const auto type = static_cast<std::size_t>(found - kPoseLayerTypes.begin());
+  reader.check_fields(value, pointer, kPoseLayerFields[type]);
+  switch (type) {
+    case 0: {
+      ShapesLayer layer;
+      read_line(fields, layer.line);
+      fields.color("fill", layer.fill);
+      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+      read_figure_samples(fields, layer.samples);
+      read_range(fields, layer.range);
+      return layer;
+    }
+    case 1: {
+      PosesLayer layer;
+      layer.colors = read_colors(fields, layer.colors);
+      fields.number("width", kLineWidth, layer.width);
+      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+      return layer;
+    }
+    case 2: {
+      VelocitiesLayer layer;
+      fields.number("scale", kPositive, layer.scale);
+      read_line(fields, layer.line);
+      read_figure_samples(fields, layer.samples);
+      read_range(fields, layer.range);
+      return layer;
+    }
+    case 3: {
+      PathsLayer layer;
+      fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
+      read_range(fields, layer.range);
+      read_line(fields, layer.line);
+      return layer;
+    }
+    case 4: {
+      ExistenceLayer layer;
+      fields.integer("columns", 2, 4000, layer.columns);
+      fields.integer("rows", 2, 4000, layer.rows);
+      if (static_cast<long long>(layer.columns) * layer.rows > kMaxExistenceCells) {
+        reader.fail(fields.at("rows"), fmt::format("columns x rows must be at most {} (got {} x {})",
+                                                   kMaxExistenceCells, layer.columns, layer.rows));
+      }
+      fields.color("fill", layer.fill);
+      if (const Json* exists = fields.get("exists_fill")) {
+        if (exists->is_string() && exists->get<std::string>() == "none") {
+          layer.exists_fill.reset();
+        } else {
+          layer.exists_fill = reader.color(*exists, fields.at("exists_fill"));
+        }
+      }
+      read_line_object(fields, "boundary", layer.boundary);
+      read_line_object(fields, "trapezoid", layer.trapezoid);
+      return layer;
+    }
+    default: return read_label(fields);
+  }
+}
+
 }  // namespace
+
+std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
+                                        const std::string& pointer) {
+  if (!value.is_array()) {
+    reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
+  }
+  if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
+    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
+                                     value.size()));
+  }
+  std::vector<PoseLayer> layers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    layers.push_back(read_pose_layer(reader, value[i], element_pointer(pointer, i)));
+  }
+  return layers;
+}
 
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer) {
   reader.object(value, pointer, "the canvas");

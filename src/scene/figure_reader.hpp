@@ -24,4 +24,12 @@ Canvas read_canvas(const JsonReader& reader, const Json& value, const std::strin
 std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
                                const std::string& pointer);
 
+// The layer types of pose scenes (README "Pose scenes").
+inline constexpr std::array<std::string_view, 6> kPoseLayerTypes = {
+    "shapes", "poses", "velocities", "paths", "existence", "label"};
+
+// "layers" of a pose scene or panel.
+std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
+                                        const std::string& pointer);
+
 }  // namespace pita::scene::detail

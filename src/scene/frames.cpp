@@ -59,4 +59,41 @@ std::string frames_to_csv(std::span<const Frame> frames) {
   return text;
 }
 
+namespace {
+
+void require_finite(const PoseFrame& frame) {
+  if (!std::isfinite(frame.t) || !frame.pose.L.allFinite() || !frame.pose.b.allFinite()) {
+    throw std::invalid_argument(fmt::format("frame at t = {} is not finite", frame.t));
+  }
+}
+
+}  // namespace
+
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame> frames) {
+  std::string text = "{\"method\": " + Json(std::string(method_id)).dump() + ", \"frames\": [";
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const PoseFrame& frame = frames[i];
+    require_finite(frame);
+    const Affine2& A = frame.pose;
+    text += i == 0 ? "\n  " : ",\n  ";
+    text += "{\"t\": " + json_number(frame.t);
+    text += fmt::format(", \"matrix\": [[{}, {}, {}], [{}, {}, {}]]}}", json_number(A.L(0, 0)),
+                        json_number(A.L(0, 1)), json_number(A.b(0)), json_number(A.L(1, 0)),
+                        json_number(A.L(1, 1)), json_number(A.b(1)));
+  }
+  text += frames.empty() ? "]}\n" : "\n]}\n";
+  return text;
+}
+
+std::string pose_frames_to_csv(std::span<const PoseFrame> frames) {
+  std::string text = "t,a,b,tx,c,d,ty\n";
+  for (const PoseFrame& frame : frames) {
+    require_finite(frame);
+    const Affine2& A = frame.pose;
+    text += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", frame.t,
+                        A.L(0, 0), A.L(0, 1), A.b(0), A.L(1, 0), A.L(1, 1), A.b(1));
+  }
+  return text;
+}
+
 }  // namespace pita::scene

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/affine2.hpp"
 #include "core/arrow.hpp"
 
 namespace pita::scene {
@@ -29,5 +30,22 @@ std::string frames_to_json(std::string_view method_id, std::span<const Frame> fr
 // with "{:.17g}" (17 significant digits read back exactly). Throws
 // std::invalid_argument if a frame is not finite.
 std::string frames_to_csv(std::span<const Frame> frames);
+
+// The pose A(t) of a pose scene's motion at time t.
+struct PoseFrame {
+  double t = 0.0;
+  Affine2 pose;
+};
+
+// {"method": "SAM", "frames": [
+//   {"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]},
+//   ...
+// ]}
+// (x -> [[a, b], [c, d]] x + [tx, ty]), one frame per line, shortest
+// round-trip numbers. Throws std::invalid_argument if a frame is not finite.
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame> frames);
+
+// The header "t,a,b,tx,c,d,ty", then one line per frame ("{:.17g}").
+std::string pose_frames_to_csv(std::span<const PoseFrame> frames);
 
 }  // namespace pita::scene

@@ -16,6 +16,7 @@
 
 #include "scene/figure_reader.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/pose_reader.hpp"
 
 namespace pita::scene {
 
@@ -37,6 +38,20 @@ constexpr std::array<std::string_view, 4> kGoldenFields = {"number_tolerance", "
                                                            "pixel_tolerance", "max_differing"};
 constexpr std::array<std::string_view, 6> kPanelFields = {"method", "options", "keyframes",
                                                           "title",  "samples", "layers"};
+
+// Pose scenes (README "Pose scenes").
+constexpr std::array<std::string_view, 12> kPoseSceneFields = {
+    "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
+    "samples", "title",       "canvas", "layers", "panels",             "golden"};
+constexpr std::array<std::string_view, 6> kPosePanelFields = {"method",  "poses",  "shapes",
+                                                              "title",   "samples", "layers"};
+
+// Whether a layer needs the motion (every one but "existence" and "label").
+bool needs_motion(const std::vector<PoseLayer>& layers) {
+  return std::any_of(layers.begin(), layers.end(), [](const PoseLayer& layer) {
+    return !std::holds_alternative<ExistenceLayer>(layer) && !std::holds_alternative<LabelLayer>(layer);
+  });
+}
 
 // A panel given by its method is titled "P6 La-LP" ("SMA" for SMA).
 std::string method_title(Method method) {
@@ -221,6 +236,7 @@ class SceneReader {
     if (!document.is_object()) {
       fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
     }
+    if (is_pose_scene(document)) return read_pose_scene(document);
     reader_.check_fields(document, "", kSceneFields);
 
     Scene scene;
@@ -269,6 +285,163 @@ class SceneReader {
   }
 
  private:
+  // A pose scene has "poses", or a pose method such as "SAM".
+  static bool is_pose_scene(const Json& document) {
+    if (member(document, "poses") != nullptr) return true;
+    const Json* method = member(document, "method");
+    return method != nullptr && method->is_string() &&
+           find_pose_method(method->get<std::string>()).has_value() &&
+           member(document, "keyframes") == nullptr;
+  }
+
+  Scene read_pose_scene(const Json& document) const {
+    reader_.check_fields(document, "", kPoseSceneFields);
+    Scene scene;
+    scene.kind = SceneKind::poses;
+    scene.path = reader_.file();
+    if (const Json* schema = member(document, "$schema")) reader_.string(*schema, "/$schema");
+    if (const Json* description = member(document, "description")) {
+      scene.description = reader_.string(*description, "/description");
+    }
+    const Json* method = member(document, "method");
+    if (method == nullptr) {
+      fail("/method", "missing required field (a pose method such as \"SAM\")");
+    }
+    scene.pose_method = detail::read_pose_method(reader_, *method, "/method");
+    scene.method_name = std::string(info(scene.pose_method).id);
+    if (const Json* reference = member(document, "reference_triangle")) {
+      scene.reference_triangle =
+          detail::read_reference_triangle(reader_, *reference, "/reference_triangle");
+    }
+    if (const Json* shapes = member(document, "shapes")) {
+      scene.shapes = detail::read_shapes(reader_, *shapes, "/shapes", scene.reference_triangle);
+    } else {
+      scene.shapes = {ShapeOutline{std::vector<Point>(scene.reference_triangle.begin(),
+                                                      scene.reference_triangle.end()),
+                                   true, std::nullopt}};
+    }
+    if (const Json* samples = member(document, "samples")) {
+      scene.samples = reader_.integer(*samples, "/samples", kMinSamples, kMaxSamples);
+    }
+    if (const Json* title = member(document, "title")) scene.title = reader_.string(*title, "/title");
+    if (const Json* canvas = member(document, "canvas")) {
+      scene.canvas = detail::read_canvas(reader_, *canvas, "/canvas");
+    }
+    if (const Json* layers = member(document, "layers")) {
+      scene.pose_layers = detail::read_pose_layers(reader_, *layers, "/layers");
+    } else {
+      scene.pose_layers = {ShapesLayer{}, PosesLayer{}};
+    }
+    const Json* panels = member(document, "panels");
+    const Json* poses = member(document, "poses");
+    const PoseMethodInfo& about = info(scene.pose_method);
+    if (poses != nullptr) {
+      scene.poses = detail::read_poses(reader_, *poses, "/poses", scene.reference_triangle,
+                                       about.min_poses, std::min(about.max_poses, kMaxPoses),
+                                       about.id);
+      check_motion(scene.pose_method, scene.poses, "/poses");
+    } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
+      fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
+                     "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");
+    }
+    if (panels != nullptr) {
+      scene.panels = read_pose_panels(*panels, "/panels", scene);
+    } else {
+      scene.panels = {pose_scene_panel(scene, "")};
+    }
+    if (const Json* golden = member(document, "golden")) read_golden(*golden, scene.golden);
+    return scene;
+  }
+
+  // The motion must exist: every SAM it needs (NoSamBetweenPoses names the pair).
+  void check_motion(PoseMethod method, const std::vector<TimedPose>& poses,
+                    const std::string& pointer) const {
+    try {
+      (void)PoseMotion(method, poses);
+    } catch (const NoSamBetweenPoses& error) {
+      const std::size_t i = error.first();
+      fail(pointer, fmt::format("{} (poses {} and {}, method {})", error.what(), i, i + 1,
+                                info(method).id));
+    }
+  }
+
+  static Panel pose_scene_panel(const Scene& scene, std::string pointer) {
+    Panel panel;
+    panel.pose_method = scene.pose_method;
+    panel.method_name = scene.method_name;
+    panel.poses = scene.poses;
+    panel.shapes = scene.shapes;
+    panel.samples = scene.samples.value_or(kDefaultFigureSamples);
+    panel.pointer = std::move(pointer);
+    return panel;
+  }
+
+  std::vector<Panel> read_pose_panels(const Json& value, const std::string& pointer,
+                                      const Scene& scene) const {
+    if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
+      fail(pointer, fmt::format("must be an array of 1 to {} panels (got {})", kMaxPanels,
+                                value_text(value)));
+    }
+    std::vector<Panel> panels;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const std::string at = element_pointer(pointer, i);
+      const Json& item = value[i];
+      Panel panel = pose_scene_panel(scene, at);
+      bool own_method = false, own_poses = false;
+      if (item.is_string()) {
+        panel.pose_method = detail::read_pose_method(reader_, item, at);
+        own_method = true;
+      } else {
+        reader_.object(item, at, "a panel (a pose method name or an object)");
+        reader_.check_fields(item, at, kPosePanelFields);
+        if (const Json* method = member(item, "method")) {
+          panel.pose_method = detail::read_pose_method(reader_, *method, at + "/method");
+          own_method = true;
+        }
+        if (const Json* title = member(item, "title")) panel.title = reader_.string(*title, at + "/title");
+        if (const Json* samples = member(item, "samples")) {
+          panel.samples = reader_.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
+        }
+        if (const Json* shapes = member(item, "shapes")) {
+          panel.shapes = detail::read_shapes(reader_, *shapes, at + "/shapes", scene.reference_triangle);
+        }
+        if (const Json* layers = member(item, "layers")) {
+          panel.pose_layers = detail::read_pose_layers(reader_, *layers, at + "/layers");
+        }
+        if (const Json* poses = member(item, "poses")) {
+          const PoseMethodInfo& about = info(panel.pose_method);
+          panel.poses = detail::read_poses(reader_, *poses, at + "/poses", scene.reference_triangle,
+                                           about.min_poses, std::min(about.max_poses, kMaxPoses),
+                                           about.id);
+          own_poses = true;
+        }
+      }
+      panel.method_name = std::string(info(panel.pose_method).id);
+      const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
+      if (needs_motion(layers)) {
+        const PoseMethodInfo& about = info(panel.pose_method);
+        const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
+        const auto count = static_cast<int>(panel.poses.size());
+        if (panel.poses.empty()) {
+          fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
+                   "scene \"poses\"");
+        }
+        if (count < about.min_poses || count > about.max_poses) {
+          fail(own_method ? at : poses_at,
+               fmt::format("method {} takes {} poses (got {}); give the panel its own \"poses\"",
+                           about.id,
+                           about.min_poses == about.max_poses ? fmt::format("exactly {}", about.min_poses)
+                                                              : fmt::format("{} to {}", about.min_poses, about.max_poses),
+                           count));
+        }
+        if (own_poses || own_method) check_motion(panel.pose_method, panel.poses, poses_at);
+      }
+      if (panel.title.empty() && own_method) panel.title = std::string(info(panel.pose_method).id);
+      panels.push_back(std::move(panel));
+    }
+    return panels;
+  }
+
   [[noreturn]] void fail(const std::string& pointer, std::string reason) const {
     reader_.fail(pointer, std::move(reason));
   }
@@ -410,6 +583,12 @@ Method resolve_method(std::string_view name) {
 }
 
 Scene with_method(Scene scene, Method method) {
+  if (scene.kind == SceneKind::poses) {
+    throw SceneError(scene.path, "/method",
+                     fmt::format("method {} interpolates arrows; this is a pose scene (methods: SAM, "
+                                 "polySAM, bezier-SAM, biarc-SAM, linear)",
+                                 info(method).id));
+  }
   const MethodInfo& about = info(method);
   if (scene.keyframes.size() != static_cast<std::size_t>(about.keyframe_count)) {
     throw SceneError(scene.path, "/keyframes", keyframe_count_reason(method, scene.keyframes.size()));
@@ -420,6 +599,36 @@ Scene with_method(Scene scene, Method method) {
   for (Panel& panel : scene.panels) {
     if (!panel.pointer.empty()) continue;
     panel.method = method;
+    panel.method_name = scene.method_name;
+  }
+  return scene;
+}
+
+Scene with_pose_method(Scene scene, PoseMethod method) {
+  if (scene.kind != SceneKind::poses) {
+    throw SceneError(scene.path, "/method",
+                     fmt::format("method {} interpolates poses; this scene has keyframes (arrows)",
+                                 info(method).id));
+  }
+  const PoseMethodInfo& about = info(method);
+  const auto count = static_cast<int>(scene.poses.size());
+  if (count < about.min_poses || count > about.max_poses) {
+    throw SceneError(scene.path, "/poses",
+                     fmt::format("method {} takes {} to {} poses (got {})", about.id,
+                                 about.min_poses, about.max_poses, count));
+  }
+  try {
+    (void)PoseMotion(method, scene.poses);
+  } catch (const NoSamBetweenPoses& error) {
+    throw SceneError(scene.path, "/poses",
+                     fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(),
+                                 error.first() + 1, about.id));
+  }
+  scene.pose_method = method;
+  scene.method_name = std::string(about.id);
+  for (Panel& panel : scene.panels) {
+    if (!panel.pointer.empty()) continue;
+    panel.pose_method = method;
     panel.method_name = scene.method_name;
   }
   return scene;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <array>
 #include <vector>
 
 #include "core/keyframe.hpp"
@@ -32,7 +33,16 @@ inline constexpr double kMaxKeyframeValue = 1e100;
 inline constexpr double kMinMagnitude = 1e-100;
 inline constexpr double kMaxWinding = 1e6;
 
+// Arrow scenes ("keyframes", the PITA paper) or pose scenes ("poses", the SAM
+// paper: README "Pose scenes").
+enum class SceneKind { arrows, poses };
+
+// Limits of pose scenes: entries of matrices and coordinates within
+// kMaxKeyframeValue; at most kMaxPoses poses.
+inline constexpr int kMaxPoses = 1000;
+
 struct Scene {
+  SceneKind kind = SceneKind::arrows;
   std::string path;           // where the scene came from (a file name, as given)
   std::string description;    // "" when the scene has none
   std::string method_name;    // canonical id of the method, "P6"
@@ -40,6 +50,14 @@ struct Scene {
   MethodOptions options;      // every field set (defaults applied)
   std::vector<Keyframe> keyframes;  // as many as the method takes, knots strictly increasing
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
+
+  // Pose scenes: method_name is the pose method's id ("SAM"); `method`,
+  // `options` and `keyframes` are unused.
+  PoseMethod pose_method = PoseMethod::sam;
+  std::vector<TimedPose> poses;            // empty when no layer needs a motion
+  std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
+  std::vector<ShapeOutline> shapes;        // default: the reference triangle
+  std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
 
   // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores it.
   std::string title;                // "" = none; drawn above the panels
@@ -100,5 +118,10 @@ Method resolve_method(std::string_view name);
 // Throws SceneError at /keyframes when the method takes another number of
 // keyframes.
 Scene with_method(Scene scene, Method method);
+
+// The pose scene with its method replaced (command-line override). Throws
+// SceneError when the scene has keyframes, the method takes another number of
+// poses, or a SAM it needs does not exist.
+Scene with_pose_method(Scene scene, PoseMethod method);
 
 }  // namespace pita::scene

@@ -46,7 +46,12 @@ TEST(SceneSchema, IsJsonSchemaDraft07) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   EXPECT_EQ(schema.at("$schema"), "http://json-schema.org/draft-07/schema#");
   EXPECT_EQ(schema.at("type"), "object");
-  EXPECT_EQ(schema.at("additionalProperties"), false);
+  // Pose scenes (with "poses", or a pose method and no "keyframes") and arrow
+  // scenes each have their schema; the other branch's errors never show.
+  EXPECT_EQ(schema.at("then").at("$ref"), "#/definitions/poseScene");
+  EXPECT_EQ(schema.at("else").at("$ref"), "#/definitions/arrowScene");
+  EXPECT_EQ(schema.at("definitions").at("arrowScene").at("additionalProperties"), false);
+  EXPECT_EQ(schema.at("definitions").at("poseScene").at("additionalProperties"), false);
   EXPECT_TRUE(schema.contains("definitions"));
   EXPECT_FALSE(schema.contains("$defs"));  // 2019-09 and later; draft 7 says "definitions"
 }
@@ -54,8 +59,9 @@ TEST(SceneSchema, IsJsonSchemaDraft07) {
 // The schema lists exactly the fields the parser accepts (tests/scene/test_scene.cpp
 // and test_schema.cpp check that the parser refuses every other one).
 TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
-  const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
-  const nlohmann::json& definitions = schema.at("definitions");
+  const nlohmann::json document = read_json(kSourceDir / "schema/scene.schema.json");
+  const nlohmann::json& definitions = document.at("definitions");
+  const nlohmann::json& schema = definitions.at("arrowScene");
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "samples",
                                    "options", "title", "canvas", "layers", "panels", "golden"}));
@@ -118,6 +124,42 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }
 
+TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
+  const nlohmann::json document = read_json(kSourceDir / "schema/scene.schema.json");
+  const nlohmann::json& definitions = document.at("definitions");
+  const nlohmann::json& scene = definitions.at("poseScene");
+  EXPECT_EQ(keys_of(scene.at("properties")),
+            (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
+                                   "shapes", "samples", "title", "canvas", "layers", "panels",
+                                   "golden"}));
+  EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
+            (std::set<std::string>{"t", "matrix", "triangle"}));
+  EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
+            (std::set<std::string>{"polygon", "polyline", "triangle", "outline", "color"}));
+  std::vector<std::string> methods;
+  for (const PoseMethodInfo& method : all_pose_methods()) methods.emplace_back(method.id);
+  EXPECT_EQ(definitions.at("poseMethod").at("enum").get<std::vector<std::string>>(), methods);
+  const std::vector<std::pair<std::string, std::set<std::string>>> layers = {
+      {"shapes", {"type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"}},
+      {"poses", {"type", "colors", "width", "fill_opacity"}},
+      {"velocities", {"type", "scale", "color", "width", "opacity", "dash", "samples", "range"}},
+      {"paths", {"type", "samples", "range", "color", "width", "opacity", "dash"}},
+      {"existence", {"type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"}},
+  };
+  std::vector<std::string> types;
+  for (const auto& [type, fields] : layers) {
+    SCOPED_TRACE(type);
+    types.push_back(type);
+    const nlohmann::json& layer = definitions.at(type + "Layer");
+    EXPECT_EQ(keys_of(layer.at("properties")), fields);
+    EXPECT_EQ(layer.at("additionalProperties"), false);
+  }
+  types.push_back("label");
+  EXPECT_EQ(definitions.at("poseLayer").at("properties").at("type").at("enum"), nlohmann::json(types));
+  EXPECT_EQ(keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
+            (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers"}));
+}
+
 TEST(SceneSchema, ListsEveryMethodForAutocomplete) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   std::vector<std::string> ids;
@@ -142,13 +184,19 @@ TEST(SceneFiles, EveryStarterSceneParses) {
   }
 }
 
+// figNN-*.json for the PITA paper's figures, sam-figNN-*.json for the SAM
+// paper's (pose scenes).
 TEST(SceneFiles, NamedAfterTheirFigure) {
   for (const std::filesystem::path& path : scene_files()) {
-    const std::string name = path.stem().string();
+    std::string name = path.stem().string();
+    const bool sam = name.rfind("sam-", 0) == 0;
+    if (sam) name = name.substr(4);
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
     EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) &&
                 name[5] == '-')
-        << name << " is not named figNN-*.json";
+        << path.stem() << " is not named figNN-*.json (or sam-figNN-*.json)";
+    EXPECT_EQ(load_scene(path).kind == SceneKind::poses, sam)
+        << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
 }
 

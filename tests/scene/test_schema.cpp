@@ -125,6 +125,12 @@ std::string three_keyframes(const std::string& middle) {
          R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
 }
 
+// A valid SAM scene (two poses) with `extra` top-level members.
+std::string sam_with(const std::string& extra) {
+  return R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+    {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}])" + extra + "}";
+}
+
 struct BadScene {
   std::string what;     // the class of mistake
   std::string text;     // the scene
@@ -139,6 +145,22 @@ std::string many(const std::string& item, int count) {
 
 const std::vector<BadScene>& bad_scenes() {
   static const std::vector<BadScene> corpus = {
+      // Pose scenes (SAM paper).
+      {"unknown pose scene field", sam_with(R"(, "keyframe": [])"), "/keyframe"},
+      {"pose matrix 3x3", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/matrix"},
+      {"pose without time", R"({"method": "SAM", "poses": [{"matrix": [[1, 0, 0], [0, 1, 0]]},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/t"},
+      {"unknown pose field", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]], "turns": 1},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/turns"},
+      {"one pose", R"({"method": "polySAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses"},
+      {"unknown shape outline", sam_with(R"(, "shapes": [{"outline": "G"}])"), "/shapes/0/outline"},
+      {"arrow layer in a pose scene", sam_with(R"(, "layers": [{"type": "pattern"}])"), "/layers/0/type"},
+      {"unknown shapes layer field", sam_with(R"(, "layers": [{"type": "shapes", "colour": "red"}])"),
+       "/layers/0/colour"},
+      {"existence rows too many", sam_with(R"(, "layers": [{"type": "existence", "rows": 5000}])"),
+       "/layers/0/rows"},
+      {"unknown pose panel field", sam_with(R"(, "panels": [{"keyframes": []}])"), "/panels/0/keyframes"},
       // Unknown fields, at every level.
       {"unknown top-level field", p6_with(R"(, "titel": "x")"), "/titel"},
       {"unknown canvas field", p6_with(R"(, "canvas": {"widht": 100})"), "/canvas/widht"},
@@ -264,6 +286,14 @@ const std::vector<BadScene>& bad_scenes() {
 // Mistakes that only the parser sees: the schema lets them through.
 const std::vector<BadScene>& parser_only_scenes() {
   static const std::vector<BadScene> corpus = {
+      {"pose not orientation preserving", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+        {"t": 1, "matrix": [[1, 0, 0], [0, -1, 0]]}]})", "/poses/1/matrix"},
+      {"no SAM between the poses", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+        {"t": 1, "matrix": [[-2, 0, 0], [0, -0.5, 0]]}]})", "/poses"},
+      {"pose times not increasing", R"({"method": "SAM", "poses": [{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/1/t"},
+      {"reflected triangle", R"({"method": "SAM", "poses": [{"t": 0, "triangle": [[0, 0], [1, 0], [0, 1]]},
+        {"t": 1, "triangle": [[0, 0], [0, 1], [1, 0]]}]})", "/poses/1/triangle"},
       {"range ends out of order", with_layer(R"({"type": "pattern", "range": [1, 0.5]})"),
        "/layers/0/range/1"},
       {"view min not below max", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 0]}})"),
@@ -368,6 +398,41 @@ const std::vector<std::string>& good_scenes() {
           {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}]}
         ]
       })",
+      R"({
+        "$schema": "../schema/scene.schema.json",
+        "description": "every pose scene field",
+        "title": "Every field",
+        "method": "polySAM",
+        "reference_triangle": [[0, 0], [2, 0], [0, 2]],
+        "shapes": [{"outline": "F", "color": "cyan"}, {"triangle": "reference"}, {"polygon": [[0, 0], [1, 0], [1, 1]]},
+                   {"polyline": [[0, 0], [1, 1]]}, {"outline": "house"}, {"outline": "square"}],
+        "poses": [
+          {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+          {"t": 0.5, "triangle": [[3, 0], [3, 2], [1, 0]]},
+          {"t": 1, "matrix": [[0.5, -1, 6], [1, 0.5, 1]]}
+        ],
+        "samples": 5,
+        "canvas": {"width": 900, "height": 600, "view": "shared"},
+        "layers": [
+          {"type": "paths", "samples": 64, "range": [0, 1], "color": "gray", "width": 0.5, "opacity": 0.5, "dash": [2, 2]},
+          {"type": "shapes", "color": "blue", "width": 1, "opacity": 1, "dash": [], "fill": "#88aaff", "fill_opacity": 0.2,
+           "samples": 9, "range": [0, 1]},
+          {"type": "velocities", "scale": 0.2, "color": "red", "width": 1, "opacity": 1, "dash": [1, 1], "samples": 5, "range": [0, 1]},
+          {"type": "poses", "colors": ["green", "orange", "red"], "width": 2, "fill_opacity": 0.3},
+          {"type": "label", "text": "F", "at": [0, -1], "size": 12, "color": "black"}
+        ],
+        "panels": [
+          "linear",
+          {"method": "biarc-SAM", "title": "bi-arc", "samples": 9},
+          {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[2, 0, 1], [0, 2, 1]]}],
+           "shapes": [{"outline": "square"}]},
+          {"title": "existence", "layers": [{"type": "existence", "columns": 20, "rows": 10, "fill": "red",
+            "exists_fill": "none", "boundary": {"color": "black", "dash": [3, 3]}, "trapezoid": {"width": 1}}]}
+        ],
+        "golden": {"pixel_tolerance": 20}
+      })",
+      // A pose scene without poses: only layers that need none.
+      R"({"method": "SAM", "layers": [{"type": "existence"}]})",
       // Transparent background, shared view, empty layers.
       p6_with(R"(, "canvas": {"background": "none", "view": "shared"}, "layers": [], "panels": ["P4", "La-LP"])"),
   };

@@ -1,0 +1,182 @@
+#include "core/pose_motion.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <stdexcept>
+#include <utility>
+
+namespace pita {
+
+namespace {
+
+constexpr std::array<PoseMethodInfo, 5> kPoseMethods = {{
+    {PoseMethod::sam, "SAM", "Steady Affine Morph", 2, 2},
+    {PoseMethod::poly_sam, "polySAM", "polySAM (a SAM per span)", 2, 1000},
+    {PoseMethod::bezier_sam, "bezier-SAM", "Bezier SAM", 3, 4},
+    {PoseMethod::biarc_sam, "biarc-SAM", "SAM bi-arc retrofit", 3, 3},
+    {PoseMethod::linear, "linear", "linear interpolation of the matrices", 2, 1000},
+}};
+
+bool same_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+Affine2 linear_mix(const Affine2& A, const Affine2& B, double u) {
+  return {(1.0 - u) * A.L + u * B.L, (1.0 - u) * A.b + u * B.b};
+}
+
+}  // namespace
+
+std::span<const PoseMethodInfo> all_pose_methods() { return kPoseMethods; }
+
+const PoseMethodInfo& info(PoseMethod method) {
+  for (const PoseMethodInfo& entry : kPoseMethods) {
+    if (entry.method == method) return entry;
+  }
+  return kPoseMethods[0];
+}
+
+std::optional<PoseMethod> find_pose_method(std::string_view name) {
+  for (const PoseMethodInfo& entry : kPoseMethods) {
+    if (same_ignoring_case(entry.id, name)) return entry.method;
+  }
+  return std::nullopt;
+}
+
+PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses)
+    : method_(method), poses_(std::move(poses)) {
+  const PoseMethodInfo& about = info(method);
+  if (poses_.size() < static_cast<std::size_t>(about.min_poses) ||
+      poses_.size() > static_cast<std::size_t>(about.max_poses)) {
+    throw std::invalid_argument(std::string(about.id) + ": wrong number of poses");
+  }
+  for (std::size_t i = 0; i + 1 < poses_.size(); ++i) {
+    if (!(poses_[i].t < poses_[i + 1].t)) throw std::invalid_argument("knots must increase");
+  }
+  // Every SAM between consecutive poses, named by its pair when it fails.
+  if (method != PoseMethod::linear) {
+    for (std::size_t i = 0; i + 1 < poses_.size(); ++i) {
+      try {
+        spans_.emplace_back(poses_[i].pose, poses_[i + 1].pose);
+      } catch (const NoRealLogarithm& error) {
+        throw NoSamBetweenPoses(error, i);
+      }
+    }
+  }
+  if (method == PoseMethod::biarc_sam) {
+    try {
+      biarc_.emplace(poses_[0].pose, poses_[1].pose, poses_[2].pose);
+    } catch (const NoRealLogarithm& error) {
+      throw NoSamBetweenPoses(error, 0);
+    }
+  }
+  if (method == PoseMethod::bezier_sam || method == PoseMethod::biarc_sam) {
+    // The SAMs between intermediate poses are found only by evaluating.
+    for (int i = 0; i <= 64; ++i) {
+      const double u = i / 64.0;
+      const double t = poses_.front().t + u * (poses_.back().t - poses_.front().t);
+      try {
+        (void)evaluate(t);
+      } catch (const NoRealLogarithm& error) {
+        throw NoSamBetweenPoses(error, 0);
+      }
+    }
+  }
+}
+
+double PoseMotion::bezier_parameter(double t) const {
+  const double u = (t - poses_.front().t) / (poses_.back().t - poses_.front().t);
+  return std::clamp(u, 0.0, 1.0);
+}
+
+Affine2 PoseMotion::evaluate(double t) const {
+  switch (method_) {
+    case PoseMethod::sam:
+    case PoseMethod::poly_sam:
+    case PoseMethod::linear: {
+      // The span holding t; the first and last extrapolate.
+      std::size_t i = 0;
+      while (i + 2 < poses_.size() && t >= poses_[i + 1].t) ++i;
+      const TimedPose& from = poses_[i];
+      const TimedPose& to = poses_[i + 1];
+      if (t == from.t) return from.pose;
+      if (t == to.t) return to.pose;
+      const double u = (t - from.t) / (to.t - from.t);
+      if (method_ == PoseMethod::linear) return linear_mix(from.pose, to.pose, u);
+      return spans_[i].at(u);
+    }
+    case PoseMethod::bezier_sam: {
+      const double u = bezier_parameter(t);
+      if (poses_.size() == 3) return bezier_sam(poses_[0].pose, poses_[1].pose, poses_[2].pose, u);
+      return bezier_sam(poses_[0].pose, poses_[1].pose, poses_[2].pose, poses_[3].pose, u);
+    }
+    case PoseMethod::biarc_sam: {
+      const double a = poses_[0].t, b = poses_[1].t, c = poses_[2].t;
+      const double tc = std::clamp(t, a, c);
+      const double u = tc <= b ? 0.5 * (tc - a) / (b - a) : 0.5 + 0.5 * (tc - b) / (c - b);
+      if (tc == b) return poses_[1].pose;
+      return biarc_->at(u);
+    }
+  }
+  return poses_.front().pose;
+}
+
+Affine2 PoseMotion::at(double t) const { return evaluate(t); }
+
+std::size_t PoseMotion::span_of(double t) const {
+  std::size_t i = 0;
+  while (i + 2 < poses_.size() && t >= poses_[i + 1].t) ++i;
+  return i;
+}
+
+Affine2 PoseMotion::velocity(double t) const {
+  const double first = poses_.front().t, last = poses_.back().t;
+  switch (method_) {
+    case PoseMethod::sam:
+    case PoseMethod::poly_sam: {
+      const std::size_t i = span_of(t);
+      const double duration = poses_[i + 1].t - poses_[i].t;
+      const AffinePowers& powers = spans_[i].powers();
+      const Affine2 pose = evaluate(t);
+      const Eigen::Matrix2d& C = powers.linear_log();
+      return {C * pose.L / duration, (C * pose.b + powers.velocity_translation()) / duration};
+    }
+    case PoseMethod::linear: {
+      const std::size_t i = span_of(t);
+      const double duration = poses_[i + 1].t - poses_[i].t;
+      const Affine2& A = poses_[i].pose;
+      const Affine2& B = poses_[i + 1].pose;
+      return {(B.L - A.L) / duration, (B.b - A.b) / duration};
+    }
+    case PoseMethod::bezier_sam:
+    case PoseMethod::biarc_sam: {
+      const double h = 1e-3 * (last - first);
+      const auto difference = [](const Affine2& A, const Affine2& B, double weight) {
+        return Affine2{(A.L - B.L) * weight, (A.b - B.b) * weight};
+      };
+      const auto plus = [](const Affine2& A, const Affine2& B) { return Affine2{A.L + B.L, A.b + B.b}; };
+      if (t - 2.0 * h < first || t + 2.0 * h > last) {
+        // One-sided, second order: (-3 f(t) + 4 f(t + s) - f(t + 2s)) / (2 s).
+        const double s = (t - 2.0 * h < first) ? h : -h;
+        const Affine2 f0 = evaluate(t), f1 = evaluate(t + s), f2 = evaluate(t + 2.0 * s);
+        return plus(difference(f1, f0, 4.0 / (2.0 * s)), difference(f0, f2, 1.0 / (2.0 * s)));
+      }
+      // (f(t - 2h) - 8 f(t - h) + 8 f(t + h) - f(t + 2h)) / (12 h).
+      const Affine2 m2 = evaluate(t - 2.0 * h), m1 = evaluate(t - h), p1 = evaluate(t + h),
+                    p2 = evaluate(t + 2.0 * h);
+      return plus(difference(p1, m1, 8.0 / (12.0 * h)), difference(m2, p2, 1.0 / (12.0 * h)));
+    }
+  }
+  return {};
+}
+
+std::optional<RootCase> PoseMotion::span_case(std::size_t i) const {
+  if (i >= spans_.size()) return std::nullopt;
+  return spans_[i].powers().root_case();
+}
+
+}  // namespace pita

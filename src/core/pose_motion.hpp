@@ -1,0 +1,95 @@
+// The motions of a pose scene (SAM paper): timed affine poses interpolated by
+// a SAM, a polySAM, a Bezier SAM, the SAM bi-arc, or linear interpolation of
+// the matrices (the "linear" column of Fig. 2: every vertex moves on a
+// straight line at constant speed). What registry.hpp is to the PITAs.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/affine2.hpp"
+#include "core/affine_power.hpp"
+#include "core/sam_splines.hpp"
+
+namespace pita {
+
+enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear };
+
+struct PoseMethodInfo {
+  PoseMethod method;
+  std::string_view id;     // as scenes spell it: "SAM"
+  std::string_view title;  // "Steady Affine Morph"
+  int min_poses;
+  int max_poses;
+};
+
+std::span<const PoseMethodInfo> all_pose_methods();
+const PoseMethodInfo& info(PoseMethod method);
+// By id, any case ("sam", "polySAM"); nullopt if none.
+std::optional<PoseMethod> find_pose_method(std::string_view name);
+
+struct TimedPose {
+  double t = 0.0;
+  Affine2 pose;
+};
+
+// No SAM between poses `first` and `first + 1` of the motion (indices into
+// its poses), which the method needs.
+class NoSamBetweenPoses : public NoRealLogarithm {
+ public:
+  NoSamBetweenPoses(const NoRealLogarithm& cause, std::size_t first)
+      : NoRealLogarithm(cause.what(), cause.root_case()), first_(first) {}
+  std::size_t first() const { return first_; }
+
+ private:
+  std::size_t first_;
+};
+
+// The motion through the poses (as many as the method takes, knots strictly
+// increasing). Throws NoSamBetweenPoses from the constructor when a SAM the
+// method needs does not exist: for SAM and polySAM those between consecutive
+// poses; for the Bezier SAM also those between the intermediate poses, which
+// the constructor checks at 65 parameters in [0, 1] (Sec. 5.3 notes they
+// usually exist when the consecutive ones do); for the bi-arc those from each
+// pose to the next and those of its Bezier arcs, checked the same way.
+//
+// Times: SAM and polySAM map [t_i, t_{i+1}] onto [0, 1] per span; the Bezier
+// SAM maps [t_0, t_n] onto [0, 1]; the bi-arc maps [t_0, t_1] onto [0, 1/2]
+// and [t_1, t_2] onto [1/2, 1], so that it passes through the middle pose at
+// its knot. Times outside the knots extrapolate (SAM, polySAM, linear) or
+// are clamped (Bezier, bi-arc, whose arcs are not defined beyond).
+class PoseMotion {
+ public:
+  PoseMotion(PoseMethod method, std::vector<TimedPose> poses);
+
+  Affine2 at(double t) const;
+
+  // The derivative dA/dt as an affinity-shaped pair (dL/dt, db/dt), so that
+  // the velocity of the point A(t) p0 is apply(velocity(t), p0). Exact for
+  // SAM and polySAM ((log A_span) A(t) / span duration, Sec. 2.3 (6)) and for
+  // linear; for the Bezier SAM and the bi-arc a fourth-order central
+  // difference (one-sided second order at the ends). At an interior knot,
+  // where a polySAM's velocity jumps, the outgoing one; at the last, the
+  // incoming one.
+  Affine2 velocity(double t) const;
+
+  PoseMethod method() const { return method_; }
+  const std::vector<TimedPose>& poses() const { return poses_; }
+  // The EAR case of the SAM between poses i and i + 1 (SAM, polySAM).
+  std::optional<RootCase> span_case(std::size_t i) const;
+
+ private:
+  Affine2 evaluate(double t) const;
+  double bezier_parameter(double t) const;
+  std::size_t span_of(double t) const;  // outgoing span at interior knots
+
+  PoseMethod method_;
+  std::vector<TimedPose> poses_;
+  std::vector<SteadyAffineMorph> spans_;  // SAM, polySAM
+  std::optional<SamBiarc> biarc_;
+};
+
+}  // namespace pita

@@ -1,0 +1,68 @@
+// Motions through more than two poses built from SAMs (SAM paper Sec. 5.3 and
+// 7.3): the polySAM, the quadratic and cubic Bezier SAMs, the bi-arc
+// retrofit, the SAM patch and the four-point subdivision. Each uses SAM
+// (core/affine_power.hpp) as its only interpolation primitive, so each throws
+// NoRealLogarithm ("no SAM exists between these poses: ...") when a SAM it
+// needs does not exist.
+#pragma once
+
+#include <vector>
+
+#include "core/affine2.hpp"
+#include "core/affine_power.hpp"
+
+namespace pita {
+
+// SAM(F_A, t, F_B): the pose at time t of the SAM from F_A to F_B (Sec. 5.3).
+Affine2 sam(const Affine2& from, double t, const Affine2& to);
+
+// SAM(F_X, F_A, t, F_B): F_X moved by the motion that takes F_A along its SAM
+// to time t, A^t o F_X with A = F_B o F_A^-1 (Sec. 5.3).
+Affine2 sam_moved(const Affine2& pose, const Affine2& from, double t, const Affine2& to);
+
+// The quadratic Bezier motion with control poses A, B, C (Sec. 5.3):
+// SAM(SAM(A, t, B), t, SAM(B, t, C)). Passes through A and C, not through B.
+Affine2 bezier_sam(const Affine2& A, const Affine2& B, const Affine2& C, double t);
+
+// The cubic one (Sec. 7.3, Fig. 12).
+Affine2 bezier_sam(const Affine2& A, const Affine2& B, const Affine2& C, const Affine2& D, double t);
+
+// leftControl (Sec. 5.3): SAM(SAM(A, 0.75, B), C, 0.25, B).
+Affine2 left_control(const Affine2& A, const Affine2& B, const Affine2& C);
+
+// The SAM bi-arc retrofit (Sec. 5.3, Fig. 7d): two quadratic Bezier motions
+// (A, L, B) and (B, R, C) joined at B at u = 1/2, with L = leftControl(A, B, C)
+// and R = leftControl(C, B, A). C1 at B; needs only the SAMs A-B and B-C.
+class SamBiarc {
+ public:
+  SamBiarc(const Affine2& A, const Affine2& B, const Affine2& C);
+  Affine2 at(double u) const;  // u in [0, 1]: A at 0, B at 1/2, C at 1
+  const Affine2& left() const { return left_; }
+  const Affine2& right() const { return right_; }
+
+ private:
+  Affine2 A_, B_, C_, left_, right_;
+};
+
+// The polySAM through timed poses (knots strictly increasing): the SAM from
+// pose i to pose i+1 on [knots[i], knots[i+1]]; outside the knots the first
+// or last SAM extrapolates (Sec. 5.3).
+class PolySam {
+ public:
+  PolySam(std::vector<double> knots, std::vector<Affine2> poses);
+  Affine2 at(double t) const;
+  // The index of the span holding t (clamped to the first and last).
+  std::size_t span(double t) const;
+
+ private:
+  std::vector<double> knots_;
+  std::vector<Affine2> poses_;
+  std::vector<SteadyAffineMorph> spans_;
+};
+
+// One four-point subdivision step of a polySAM's control poses (Sec. 7.3):
+// n poses -> 2n - 1, the old ones kept, each new one the SAM average of two
+// parabolic predictions left(...) = SAM(SAM(A, 0.625, B), C, 0.125, B).
+std::vector<Affine2> subdivide_four_point(const std::vector<Affine2>& poses);
+
+}  // namespace pita

@@ -1,0 +1,247 @@
+#include "render/pose_drawing.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "core/affine_power.hpp"
+#include "core/pose_motion.hpp"
+#include "scene/sampling.hpp"
+
+namespace pita::render {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Point apply_to(const Affine2& A, Point p) {
+  const Eigen::Vector2d x = apply(A, Eigen::Vector2d(p.real(), p.imag()));
+  return {x.x(), x.y()};
+}
+
+class PoseBuilder {
+ public:
+  PoseBuilder(const scene::Scene& scene, const scene::Panel& panel) : scene_(scene), panel_(panel) {}
+
+  Drawing build() {
+    const bool own = panel_.pose_layers.has_value();
+    const std::vector<scene::PoseLayer>& layers = own ? *panel_.pose_layers : scene_.pose_layers;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
+      std::visit([this](const auto& layer) { add(layer); }, layers[i]);
+    }
+    return std::move(drawing_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& reason) const {
+    const bool elsewhere = !panel_.pointer.empty() && !layer_.starts_with(panel_.pointer);
+    throw RenderError(scene_.path, layer_,
+                      elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
+  }
+
+  const PoseMotion& motion() {
+    if (!motion_) {
+      if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
+      try {
+        motion_.emplace(panel_.pose_method, panel_.poses);
+      } catch (const std::exception& error) {
+        fail(fmt::format("{}: {}", panel_.method_name, error.what()));
+      }
+    }
+    return *motion_;
+  }
+
+  Affine2 pose_at(double t) {
+    Affine2 pose;
+    try {
+      pose = motion().at(t);
+    } catch (const std::exception& error) {
+      fail(fmt::format("no pose at t = {}: {}", t, error.what()));
+    }
+    if (!pose.L.allFinite() || !pose.b.allFinite()) {
+      fail(fmt::format("{} gives a non-finite pose at t = {} (the motion overflows there)",
+                       panel_.method_name, t));
+    }
+    return pose;
+  }
+
+  std::vector<double> times(const std::optional<int>& samples,
+                            const std::optional<scene::TimeRange>& range) {
+    const std::vector<TimedPose>& poses = motion().poses();
+    const double from = range ? range->from : poses.front().t;
+    const double to = range ? range->to : poses.back().t;
+    return scene::uniform_times(from, to, samples.value_or(panel_.samples));
+  }
+
+  void push(int index, Shape shape) { drawing_.items.push_back({layer_, index, std::move(shape)}); }
+
+  std::vector<Point> mapped(const Affine2& pose, const scene::ShapeOutline& shape) const {
+    std::vector<Point> points;
+    points.reserve(shape.points.size());
+    for (const Point p : shape.points) points.push_back(apply_to(pose, p));
+    return points;
+  }
+
+  void add(const scene::ShapesLayer& layer) {
+    const std::vector<double> ts = times(layer.samples, layer.range);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const Affine2 pose = pose_at(ts[i]);
+      for (const scene::ShapeOutline& shape : panel_.shapes) {
+        LineStyle line = layer.line;
+        if (shape.color) line.color = *shape.color;
+        std::vector<Point> points = mapped(pose, shape);
+        if (layer.fill && shape.closed) {
+          push(static_cast<int>(i), FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity, line});
+        } else {
+          push(static_cast<int>(i), Polyline{std::move(points), shape.closed, line});
+        }
+      }
+    }
+  }
+
+  void add(const scene::PosesLayer& layer) {
+    const std::vector<TimedPose>& poses = panel_.poses;
+    if (poses.empty()) fail("this layer draws the poses, and the panel has no poses");
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      const Color color = layer.colors[i % layer.colors.size()];
+      const LineStyle line{color, layer.width, 1.0, {}};
+      for (const scene::ShapeOutline& shape : panel_.shapes) {
+        std::vector<Point> points = mapped(poses[i].pose, shape);
+        if (shape.closed) {
+          push(static_cast<int>(i), FilledPath{{std::move(points)}, color, layer.fill_opacity, line});
+        } else {
+          push(static_cast<int>(i), Polyline{std::move(points), false, line});
+        }
+      }
+    }
+  }
+
+  // d/du of the pose at time t, u the time normalised to the motion's
+  // duration (1 from the first pose to the last): PoseMotion::velocity.
+  Affine2 velocity_at(double t) {
+    const std::vector<TimedPose>& poses = motion().poses();
+    const double duration = poses.back().t - poses.front().t;
+    Affine2 rate;
+    try {
+      rate = motion().velocity(t);
+    } catch (const std::exception& error) {
+      fail(fmt::format("no velocity at t = {}: {}", t, error.what()));
+    }
+    return Affine2{rate.L * duration, rate.b * duration};
+  }
+
+  void add(const scene::VelocitiesLayer& layer) {
+    const std::vector<double> ts = times(layer.samples, layer.range);
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      const Affine2 pose = pose_at(ts[i]);
+      const Affine2 velocity = velocity_at(ts[i]);
+      for (const scene::ShapeOutline& shape : panel_.shapes) {
+        for (const Point p : shape.points) {
+          const Point from = apply_to(pose, p);
+          const Point rate = apply_to(velocity, p);  // (dL/du) p + db/du
+          push(static_cast<int>(i), ArrowShape{from, from + layer.scale * rate, layer.line});
+        }
+      }
+    }
+  }
+
+  void add(const scene::PathsLayer& layer) {
+    const std::vector<double> ts = times(layer.samples, layer.range);
+    std::vector<Affine2> poses;
+    poses.reserve(ts.size());
+    for (const double t : ts) poses.push_back(pose_at(t));
+    for (const scene::ShapeOutline& shape : panel_.shapes) {
+      for (const Point p : shape.points) {
+        std::vector<Point> path;
+        path.reserve(poses.size());
+        for (const Affine2& pose : poses) path.push_back(apply_to(pose, p));
+        push(-1, Polyline{std::move(path), false, layer.line});
+      }
+    }
+  }
+
+  void add(const scene::ExistenceLayer& layer) {
+    for (Item& item : existence_drawing(layer, layer_).items) drawing_.items.push_back(std::move(item));
+  }
+
+  void add(const scene::LabelLayer& layer) {
+    push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  }
+
+  const scene::Scene& scene_;
+  const scene::Panel& panel_;
+  std::optional<PoseMotion> motion_;
+  std::string layer_;
+  Drawing drawing_;
+};
+
+}  // namespace
+
+Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string& pointer) {
+  Drawing drawing;
+  const double h = kExistenceHeight;
+  const auto push = [&](int index, Shape shape) {
+    drawing.items.push_back({pointer, index, std::move(shape)});
+  };
+  const auto rectangle = [h](double a0, double a1, double s0, double s1) {
+    return std::vector<Point>{{a0, h * s0}, {a1, h * s0}, {a1, h * s1}, {a0, h * s1}};
+  };
+  if (layer.exists_fill) {
+    push(-1, FilledPath{{rectangle(-kPi, kPi, 0.0, 1.0)}, *layer.exists_fill, 1.0, std::nullopt});
+  }
+  // The cells without a SAM, row by row, runs of neighbours merged: each cell
+  // classified at its centre by EAR's case selection on R(a) diag(1/s, s).
+  FilledPath bad{{}, layer.fill, 1.0, std::nullopt};
+  const double da = 2.0 * kPi / layer.columns, ds = 1.0 / layer.rows;
+  for (int j = 0; j < layer.rows; ++j) {
+    const double s = (j + 0.5) * ds;
+    Eigen::Matrix2d scaling;
+    scaling << 1.0 / s, 0.0, 0.0, s;
+    int run_start = -1;
+    for (int i = 0; i <= layer.columns; ++i) {
+      bool no_sam = false;
+      if (i < layer.columns) {
+        const double a = -kPi + (i + 0.5) * da;
+        Eigen::Matrix2d rotation;
+        rotation << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+        no_sam = select_case(rotation * scaling) == RootCase::G3;
+      }
+      if (no_sam && run_start < 0) run_start = i;
+      if (!no_sam && run_start >= 0) {
+        bad.contours.push_back(rectangle(-kPi + run_start * da, -kPi + i * da, j * ds, (j + 1) * ds));
+        run_start = -1;
+      }
+    }
+  }
+  push(-1, std::move(bad));
+  // Eq. 4: |a| = acos(-2 s / (s^2 + 1)), s in (0, 1].
+  for (const double side : {-1.0, 1.0}) {
+    std::vector<Point> curve;
+    for (int k = 0; k <= 400; ++k) {
+      const double s = k / 400.0;
+      curve.push_back({side * std::acos(-2.0 * s / (s * s + 1.0)), h * s});
+    }
+    push(-1, Polyline{std::move(curve), false, layer.boundary});
+  }
+  // The trapezoid |a| < (1 + s) pi / 2.
+  push(-1, Polyline{{{-kPi / 2.0, 0.0}, {kPi / 2.0, 0.0}, {kPi, h}, {-kPi, h}}, true, layer.trapezoid});
+  // The frame of the plot and its ticks.
+  const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
+  push(-1, Polyline{rectangle(-kPi, kPi, 0.0, 1.0), true, frame});
+  const Color text{0.1, 0.1, 0.1, 1.0};
+  push(-1, Label{"a = -\u03c0", {-kPi, -0.12 * h}, 12.0, text});
+  push(-1, Label{"0", {0.0, -0.12 * h}, 12.0, text});
+  push(-1, Label{"\u03c0", {kPi, -0.12 * h}, 12.0, text});
+  push(-1, Label{"s = 0", {-kPi - 0.45, 0.0}, 12.0, text});
+  push(-1, Label{"s = 1", {-kPi - 0.45, h}, 12.0, text});
+  return drawing;
+}
+
+Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel) {
+  return PoseBuilder(scene, panel).build();
+}
+
+}  // namespace pita::render

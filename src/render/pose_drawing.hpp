@@ -1,0 +1,21 @@
+// The geometry of one panel of a pose scene (SAM paper): the layers of
+// scene/figure.hpp's "pose scenes" part, evaluated on the panel's poses and
+// method, in world coordinates.
+#pragma once
+
+#include "render/drawing.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render {
+
+// The shapes of every pose layer of `scene` for `panel`, in drawing order.
+// Throws RenderError.
+Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel);
+
+// The "existence" layer alone (Fig. 6 of the SAM paper): exposed for tests.
+// Cells are rectangles [a0, a1] x [h s0, h s1] with h = kExistenceHeight.
+inline constexpr double kExistenceHeight = 3.141592653589793;  // drawn height of s in [0, 1]
+Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string& pointer);
+
+}  // namespace pita::render

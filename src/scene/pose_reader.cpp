@@ -1,0 +1,258 @@
+#include "scene/pose_reader.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/did_you_mean.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::scene::detail {
+
+namespace {
+
+constexpr std::array<std::string_view, 3> kPoseFields = {"t", "matrix", "triangle"};
+constexpr std::array<std::string_view, 5> kShapeKinds = {"polygon", "polyline", "triangle",
+                                                         "outline", "color"};
+constexpr std::array<std::string_view, 3> kOutlineNames = {"F", "house", "square"};
+
+double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const double x = reader.number(value, pointer);
+  if (std::abs(x) > kMaxKeyframeValue) {
+    reader.fail(pointer, fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue,
+                                     number_text(x)));
+  }
+  return x;
+}
+
+Point bounded_point(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const Point p = reader.point(value, pointer);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double x = axis == 0 ? p.real() : p.imag();
+    if (std::abs(x) > kMaxKeyframeValue) {
+      reader.fail(element_pointer(pointer, static_cast<std::size_t>(axis)),
+                  fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(x)));
+    }
+  }
+  return p;
+}
+
+// The affinity [p1 - p0, p2 - p0 | p0] mapping the unit triangle onto (p0, p1, p2).
+Affine2 frame_of(const std::array<Point, 3>& p) {
+  Affine2 A;
+  A.L << (p[1] - p[0]).real(), (p[2] - p[0]).real(), (p[1] - p[0]).imag(), (p[2] - p[0]).imag();
+  A.b << p[0].real(), p[0].imag();
+  return A;
+}
+
+std::array<Point, 3> read_three_points(const JsonReader& reader, const Json& value,
+                                       const std::string& pointer) {
+  if (!value.is_array() || value.size() != 3) {
+    reader.fail(pointer, "must be an array of three points [[x, y], [x, y], [x, y]] (got " +
+                             value_text(value) + ")");
+  }
+  std::array<Point, 3> points;
+  for (std::size_t i = 0; i < 3; ++i) {
+    points[i] = bounded_point(reader, value[i], element_pointer(pointer, i));
+  }
+  return points;
+}
+
+// Twice the signed area of the triangle, and whether it is degenerate: the
+// area below 1e-12 of the product of its two edge lengths.
+bool degenerate(const std::array<Point, 3>& p, double& cross) {
+  const Point e1 = p[1] - p[0], e2 = p[2] - p[0];
+  cross = e1.real() * e2.imag() - e1.imag() * e2.real();
+  return !(std::abs(cross) > 1e-12 * std::abs(e1) * std::abs(e2)) || !std::isfinite(cross);
+}
+
+Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const auto shape_error = [&] {
+    reader.fail(pointer, "must be a 2x3 matrix [[a, b, tx], [c, d, ty]] (x -> [[a, b], [c, d]] x "
+                         "+ [tx, ty]; got " + value_text(value) + ")");
+  };
+  if (!value.is_array() || value.size() != 2) shape_error();
+  Affine2 A;
+  for (std::size_t row = 0; row < 2; ++row) {
+    if (!value[row].is_array() || value[row].size() != 3) shape_error();
+    const std::string at = element_pointer(pointer, row);
+    for (std::size_t column = 0; column < 3; ++column) {
+      const double x = bounded(reader, value[row][column], element_pointer(at, column));
+      if (column < 2) {
+        A.L(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(column)) = x;
+      } else {
+        A.b(static_cast<Eigen::Index>(row)) = x;
+      }
+    }
+  }
+  const double det = A.L.determinant();
+  if (!(det > 0.0) || !std::isfinite(det)) {
+    reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {} <= 0: a "
+                                     "pose must be an orientation-preserving affinity (SAM paper "
+                                     "Sec. 2.1)",
+                                     number_text(det)));
+  }
+  if (!(det > 1e-200)) {
+    reader.fail(pointer, fmt::format("the linear part has determinant {}: the pose is numerically "
+                                     "singular",
+                                     number_text(det)));
+  }
+  return A;
+}
+
+}  // namespace
+
+std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
+                                             const std::string& pointer) {
+  const std::array<Point, 3> points = read_three_points(reader, value, pointer);
+  double cross = 0.0;
+  if (degenerate(points, cross)) {
+    reader.fail(pointer, "the reference triangle is degenerate (its points are collinear)");
+  }
+  return points;
+}
+
+PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
+                            const std::string& pointer) {
+  std::vector<std::string_view> ids;
+  for (const PoseMethodInfo& entry : all_pose_methods()) ids.push_back(entry.id);
+  if (!value.is_string()) {
+    reader.fail(pointer, "must be a pose method: " + quoted_choices(ids) + " (got " +
+                             value_text(value) + ")");
+  }
+  const std::string name = value.get<std::string>();
+  if (const std::optional<PoseMethod> found = find_pose_method(name)) return *found;
+  std::string reason = fmt::format("unknown pose method \"{}\"", name);
+  const std::vector<std::string> suggestions = closest_names(name, ids);
+  reason += suggestions.empty() ? "; pose methods: " + joined(ids) : did_you_mean(suggestions);
+  reader.fail(pointer, reason);
+}
+
+std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
+                                  const std::string& pointer,
+                                  const std::array<Point, 3>& reference, int min_poses,
+                                  int max_poses, std::string_view method_id) {
+  if (!value.is_array()) {
+    reader.fail(pointer, "must be an array of poses {\"t\": ..., \"matrix\": [[a, b, tx], [c, d, "
+                         "ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]} (got " +
+                             value_text(value) + ")");
+  }
+  const auto count = static_cast<int>(std::min<std::size_t>(value.size(), 1'000'000));
+  if (count < min_poses || count > max_poses) {
+    const std::string wanted = min_poses == max_poses
+                                   ? fmt::format("exactly {}", min_poses)
+                                   : fmt::format("{} to {}", min_poses, max_poses);
+    reader.fail(pointer, fmt::format("method {} takes {} poses (got {})", method_id, wanted,
+                                     value.size()));
+  }
+  const Affine2 reference_frame = frame_of(reference);
+  double reference_cross = 0.0;
+  degenerate(reference, reference_cross);
+  std::vector<TimedPose> poses;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = element_pointer(pointer, i);
+    const Json& item = value[i];
+    reader.object(item, at, "a pose");
+    reader.check_fields(item, at, kPoseFields);
+    const Json* t = JsonReader::member(item, "t");
+    if (t == nullptr) reader.fail(at + "/t", "missing required field (the pose's time)");
+    TimedPose pose;
+    pose.t = bounded(reader, *t, at + "/t");
+    if (!poses.empty() && !(pose.t > poses.back().t)) {
+      reader.fail(at + "/t", fmt::format("times must increase strictly: {} follows {}",
+                                         number_text(pose.t), number_text(poses.back().t)));
+    }
+    const Json* matrix = JsonReader::member(item, "matrix");
+    const Json* triangle = JsonReader::member(item, "triangle");
+    if (matrix != nullptr && triangle != nullptr) {
+      reader.fail(at + "/triangle", "give either \"matrix\" or \"triangle\", not both");
+    }
+    if (matrix != nullptr) {
+      pose.pose = read_matrix(reader, *matrix, at + "/matrix");
+    } else if (triangle != nullptr) {
+      const std::array<Point, 3> points = read_three_points(reader, *triangle, at + "/triangle");
+      double cross = 0.0;
+      if (degenerate(points, cross)) {
+        reader.fail(at + "/triangle", "the triangle is degenerate (its points are collinear)");
+      }
+      if ((cross > 0.0) != (reference_cross > 0.0)) {
+        reader.fail(at + "/triangle",
+                    "the triangle has the opposite orientation of the reference triangle "
+                    "(clockwise against counter-clockwise): only a reflection maps one onto the "
+                    "other, and a pose must preserve orientation (SAM paper Sec. 2.1)");
+      }
+      pose.pose = compose(frame_of(points), inverse(reference_frame));
+    } else {
+      reader.fail(at, "a pose needs \"matrix\": [[a, b, tx], [c, d, ty]] or \"triangle\": [[x, y], "
+                      "[x, y], [x, y]] (the images of the reference triangle's points)");
+    }
+    poses.push_back(pose);
+  }
+  return poses;
+}
+
+std::vector<Point> builtin_outline(std::string_view name) {
+  if (name == "F") {
+    return {{0.0, 0.0},  {0.25, 0.0}, {0.25, 0.4},  {0.6, 0.4}, {0.6, 0.6},
+            {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8},  {0.75, 1.0}, {0.0, 1.0}};
+  }
+  if (name == "house") return {{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.6}, {0.5, 1.0}, {0.0, 0.6}};
+  return {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};  // square
+}
+
+std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
+                                      const std::string& pointer,
+                                      const std::array<Point, 3>& reference) {
+  if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxShapes)) {
+    reader.fail(pointer, fmt::format("must be an array of 1 to {} shapes (got {})", kMaxShapes,
+                                     value_text(value)));
+  }
+  std::vector<ShapeOutline> shapes;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = element_pointer(pointer, i);
+    const Json& item = value[i];
+    reader.object(item, at, "a shape");
+    reader.check_fields(item, at, kShapeKinds);
+    ShapeOutline shape;
+    if (const Json* color = JsonReader::member(item, "color")) {
+      shape.color = reader.color(*color, at + "/color");
+    }
+    int kinds = 0;
+    for (const std::string_view kind : {"polygon", "polyline", "triangle", "outline"}) {
+      const Json* given = JsonReader::member(item, std::string(kind));
+      if (given == nullptr) continue;
+      const std::string where = at + "/" + std::string(kind);
+      if (++kinds > 1) {
+        reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\" or "
+                           "\"outline\"; give only one");
+      }
+      if (kind == "polygon" || kind == "polyline") {
+        if (!given->is_array() || given->size() < 2 ||
+            given->size() > static_cast<std::size_t>(kMaxShapePoints)) {
+          reader.fail(where, fmt::format("must be an array of 2 to {} points [x, y] (got {})",
+                                         kMaxShapePoints, value_text(*given)));
+        }
+        for (std::size_t j = 0; j < given->size(); ++j) {
+          shape.points.push_back(bounded_point(reader, (*given)[j], element_pointer(where, j)));
+        }
+        shape.closed = kind == "polygon";
+      } else if (kind == "triangle") {
+        if (!given->is_string() || given->get<std::string>() != "reference") {
+          reader.fail(where, "must be \"reference\" (the reference triangle; got " +
+                                 value_text(*given) + ")");
+        }
+        shape.points.assign(reference.begin(), reference.end());
+      } else {
+        shape.points = builtin_outline(reader.choice(*given, where, kOutlineNames, kOutlineNames));
+      }
+    }
+    if (kinds == 0) {
+      reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\" or "
+                      "\"outline\": \"F\" | \"house\" | \"square\"");
+    }
+    shapes.push_back(std::move(shape));
+  }
+  return shapes;
+}
+
+}  // namespace pita::scene::detail

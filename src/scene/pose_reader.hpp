@@ -1,0 +1,42 @@
+// Reading the parts of a pose scene (README "Pose scenes"): the reference
+// triangle, the poses (2x3 matrices or triangles), the shapes. Internal to
+// src/scene/; errors are SceneErrors naming the JSON Pointer of the bad value.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/pose_motion.hpp"
+#include "scene/figure.hpp"
+#include "scene/json_reader.hpp"
+
+namespace pita::scene::detail {
+
+// "reference_triangle": three points, not collinear.
+std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
+                                             const std::string& pointer);
+
+// "poses": an array of {"t", and "matrix": [[a, b, tx], [c, d, ty]] or
+// "triangle": [[x, y], [x, y], [x, y]]}, knots strictly increasing, each pose
+// orientation preserving; between min_poses and max_poses of them.
+std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
+                                  const std::string& pointer,
+                                  const std::array<Point, 3>& reference, int min_poses,
+                                  int max_poses, std::string_view method_id);
+
+// "shapes": an array of {"polygon": points} | {"polyline": points} |
+// {"triangle": "reference"} | {"outline": "F" | "house" | "square"}, each
+// with an optional "color".
+std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
+                                      const std::string& pointer,
+                                      const std::array<Point, 3>& reference);
+
+// The builtin outlines, in the unit box [0, 1]^2.
+std::vector<Point> builtin_outline(std::string_view name);
+
+// The method of a pose scene or panel ("SAM", "polySAM", ...).
+PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
+                            const std::string& pointer);
+
+}  // namespace pita::scene::detail

@@ -1,0 +1,129 @@
+// Motions through several poses built from SAMs (core/sam_splines.hpp): the
+// properties Sec. 5.3 and 7.3 of the SAM paper state for them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/pose_motion.hpp"
+#include "core/sam_splines.hpp"
+
+namespace pita {
+namespace {
+
+using Eigen::Matrix2d;
+using Eigen::Vector2d;
+
+Affine2 pose(double a, double b, double c, double d, double x, double y) {
+  Affine2 A;
+  A.L << a, b, c, d;
+  A.b << x, y;
+  return A;
+}
+
+double distance(const Affine2& X, const Affine2& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); }
+
+// Fig. 7's situation: no SAM from A to C (C o A^-1 has two negative
+// eigenvalues), but SAMs A-B and B-C exist.
+const Affine2 kA = pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+const Affine2 kB = pose(0.0, -1.6, 0.6, 0.0, 3.0, 3.0);
+const Affine2 kC = pose(-1.8, 0.0, 0.0, -0.55, 6.0, 0.0);
+
+TEST(SamSplines, TheFigureSevenPairHasNoSam) {
+  EXPECT_THROW(SteadyAffineMorph(kA, kC), NoRealLogarithm);
+  EXPECT_NO_THROW(SteadyAffineMorph(kA, kB));
+  EXPECT_NO_THROW(SteadyAffineMorph(kB, kC));
+}
+
+TEST(SamSplines, PolySamInterpolatesEveryPose) {
+  const PolySam motion({0.0, 0.4, 1.0}, {kA, kB, kC});
+  EXPECT_LT(distance(motion.at(0.0), kA), 1e-15);
+  EXPECT_LT(distance(motion.at(0.4), kB), 1e-15);
+  EXPECT_LT(distance(motion.at(1.0), kC), 1e-15);
+  EXPECT_LT(distance(motion.at(0.2), sam(kA, 0.5, kB)), 1e-14);
+  EXPECT_LT(distance(motion.at(0.7), sam(kB, 0.5, kC)), 1e-14);
+}
+
+TEST(SamSplines, BiarcInterpolatesAndIsSmoothAtTheMiddlePose) {
+  const SamBiarc biarc(kA, kB, kC);
+  EXPECT_LT(distance(biarc.at(0.0), kA), 1e-12);
+  EXPECT_LT(distance(biarc.at(0.5), kB), 1e-12);
+  EXPECT_LT(distance(biarc.at(1.0), kC), 1e-12);
+  // C1 at B: one-sided velocities agree (Sec. 5.3), unlike the polySAM's.
+  const double h = 1e-6;
+  const auto velocity_gap = [&](auto&& motion, double at) {
+    const Affine2 before = motion(at - h), middle = motion(at), after = motion(at + h);
+    const double gap = (after.L - middle.L - (middle.L - before.L)).norm() +
+                       (after.b - middle.b - (middle.b - before.b)).norm();
+    return gap / h;
+  };
+  EXPECT_LT(velocity_gap([&](double u) { return biarc.at(u); }, 0.5), 1e-4);
+  const PolySam poly({0.0, 0.5, 1.0}, {kA, kB, kC});
+  EXPECT_GT(velocity_gap([&](double u) { return poly.at(u); }, 0.5), 0.5);
+}
+
+TEST(SamSplines, BezierOfPosesOnOneSamIsThatSam) {
+  const Affine2 P = pose(1.0, 0.2, -0.1, 0.9, 0.0, 0.0), Q = pose(0.3, -1.2, 1.1, 0.4, 4.0, 1.0);
+  const Affine2 middle = sam(P, 0.5, Q);
+  for (const double t : {0.0, 0.2, 0.5, 0.8, 1.0}) {
+    EXPECT_LT(distance(bezier_sam(P, middle, Q, t), sam(P, t, Q)), 1e-12) << t;
+  }
+  // Passes through its end poses, not through the middle control.
+  EXPECT_LT(distance(bezier_sam(kA, kB, kC, 0.0), kA), 1e-15);
+  EXPECT_LT(distance(bezier_sam(kA, kB, kC, 1.0), kC), 1e-12);
+  EXPECT_GT(distance(bezier_sam(kA, kB, kC, 0.5), kB), 0.1);
+}
+
+TEST(SamSplines, SubdivisionKeepsARegularPatternRegular) {
+  // P_i = M^i P_0: subdividing inserts M^{i + 1/2} P_0 (Sec. 7.3).
+  const Affine2 M = pose(0.9, -0.3, 0.3, 0.9, 1.0, 0.5), P0 = pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
+  const AffinePowers powers(M);
+  std::vector<Affine2> poses;
+  for (int i = 0; i < 5; ++i) poses.push_back(compose(powers.at(i), P0));
+  const std::vector<Affine2> finer = subdivide_four_point(poses);
+  ASSERT_EQ(finer.size(), 9u);
+  for (std::size_t j = 0; j < finer.size(); ++j) {
+    EXPECT_LT(distance(finer[j], compose(powers.at(static_cast<double>(j) / 2.0), P0)), 1e-11) << j;
+  }
+}
+
+}  // namespace
+}  // namespace pita
+
+namespace pita {
+namespace {
+
+// PoseMotion::velocity against central differences of PoseMotion::at.
+TEST(PoseMotion, VelocityIsTheDerivative) {
+  const std::vector<TimedPose> poses = {{0.0, kA}, {0.4, kB}, {1.0, kC}};
+  for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam,
+                                  PoseMethod::biarc_sam}) {
+    const PoseMotion motion(method, poses);
+    for (const double t : {0.1, 0.3, 0.55, 0.9}) {
+      const double h = 1e-6;
+      const Affine2 before = motion.at(t - h), after = motion.at(t + h);
+      const Affine2 expected{(after.L - before.L) / (2.0 * h), (after.b - before.b) / (2.0 * h)};
+      EXPECT_LT(distance(motion.velocity(t), expected), 1e-6 * (1.0 + expected.L.norm() + expected.b.norm()))
+          << info(method).id << " at t = " << t;
+    }
+  }
+  const PoseMotion sam(PoseMethod::sam, {{0.0, kA}, {2.0, kB}});
+  EXPECT_LT(distance(sam.at(0.0), kA), 1e-15);
+  EXPECT_LT(distance(sam.at(2.0), kB), 1e-15);
+  const PoseMotion biarc(PoseMethod::biarc_sam, poses);
+  EXPECT_LT(distance(biarc.at(0.4), kB), 1e-15);  // through the middle pose at its knot
+}
+
+TEST(PoseMotion, RefusesTheMissingSamAndNamesThePair) {
+  try {
+    PoseMotion motion(PoseMethod::poly_sam, {{0.0, kB}, {0.5, kA}, {1.0, kC}});
+    FAIL() << "no SAM from A to C expected";
+  } catch (const NoSamBetweenPoses& error) {
+    EXPECT_EQ(error.first(), 1u);
+  }
+}
+
+}  // namespace
+}  // namespace pita

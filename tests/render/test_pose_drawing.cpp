@@ -1,0 +1,157 @@
+// The geometry of pose scenes (render/pose_drawing.hpp): shapes carried by
+// the motion, velocity arrows, vertex paths, and the existence region of the
+// SAM paper's Fig. 6, each checked against an independent computation (Eigen's
+// matrix power and log, Eq. 4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include "render/pose_drawing.hpp"
+
+namespace pita::render {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Affine2 affinity(double a, double b, double tx, double c, double d, double ty) {
+  Affine2 A;
+  A.L << a, b, c, d;
+  A.b << tx, ty;
+  return A;
+}
+
+Eigen::Matrix3d homogeneous(const Affine2& A) {
+  Eigen::Matrix3d H = Eigen::Matrix3d::Identity();
+  H.topLeftCorner<2, 2>() = A.L;
+  H.topRightCorner<2, 1>() = A.b;
+  return H;
+}
+
+Point through(const Eigen::Matrix3d& H, Point p) {
+  const Eigen::Vector3d x = H * Eigen::Vector3d(p.real(), p.imag(), 1.0);
+  return {x.x(), x.y()};
+}
+
+// A SAM scene of two poses of the reference triangle, with `layers`.
+scene::Scene sam_scene(std::vector<scene::PoseLayer> layers, PoseMethod method = PoseMethod::sam) {
+  scene::Scene s;
+  s.kind = scene::SceneKind::poses;
+  s.path = "test.json";
+  s.pose_method = method;
+  s.method_name = std::string(info(method).id);
+  s.poses = {{0.0, affinity(1.0, 0.2, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(-0.5, -1.4, 5.0, 1.1, 0.3, 2.0)}};
+  s.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt}};
+  s.pose_layers = std::move(layers);
+  scene::Panel panel;
+  panel.pose_method = method;
+  panel.method_name = s.method_name;
+  panel.poses = s.poses;
+  panel.shapes = s.shapes;
+  panel.samples = 5;
+  s.panels = {panel};
+  return s;
+}
+
+TEST(PoseDrawing, ShapesFollowTheSam) {
+  const scene::Scene scene = sam_scene({scene::ShapesLayer{}});
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 5u);
+  // Independently: A = C B^-1 by Eigen, A^u by Eigen's pow, at u = i/4.
+  const Eigen::Matrix3d B = homogeneous(scene.poses[0].pose), C = homogeneous(scene.poses[1].pose);
+  const Eigen::Matrix3d A = C * B.inverse();
+  for (int i = 0; i < 5; ++i) {
+    const auto& outline = std::get<Polyline>(drawing.items[static_cast<std::size_t>(i)].shape);
+    EXPECT_TRUE(outline.closed);
+    const Eigen::Matrix3d pose = A.pow(i / 4.0) * B;
+    for (std::size_t k = 0; k < 3; ++k) {
+      EXPECT_LT(std::abs(outline.points[k] - through(pose, scene.shapes[0].points[k])), 1e-11)
+          << "frame " << i << ", vertex " << k;
+    }
+  }
+}
+
+// Sec. 2.3 (6): the velocity of a SAM is the constant field x -> log(A) x
+// (per unit of normalised time); the arrows are that field, scaled.
+TEST(PoseDrawing, SamVelocitiesAreTheLogField) {
+  scene::VelocitiesLayer layer;
+  layer.scale = 0.5;
+  const scene::Scene scene = sam_scene({layer});
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 15u);  // 5 frames x 3 vertices
+  const Eigen::Matrix3d A = homogeneous(scene.poses[1].pose) * homogeneous(scene.poses[0].pose).inverse();
+  const Eigen::Matrix3d field = A.log();
+  for (const Item& item : drawing.items) {
+    const auto& arrow = std::get<ArrowShape>(item.shape);
+    const Eigen::Vector3d v = field * Eigen::Vector3d(arrow.from.real(), arrow.from.imag(), 1.0);
+    const Point expected = arrow.from + 0.5 * Point(v.x(), v.y());
+    EXPECT_LT(std::abs(arrow.to - expected), 1e-11 * (1.0 + std::abs(expected))) << item.index;
+  }
+}
+
+TEST(PoseDrawing, LinearMotionMovesVerticesOnStraightLines) {
+  const scene::Scene scene = sam_scene({scene::PathsLayer{}}, PoseMethod::linear);
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 3u);
+  for (const Item& item : drawing.items) {
+    const auto& path = std::get<Polyline>(item.shape);
+    const Point from = path.points.front(), to = path.points.back();
+    for (const Point p : path.points) {
+      const double cross = std::imag(std::conj(to - from) * (p - from));
+      EXPECT_LT(std::abs(cross), 1e-12 * std::norm(to - from));
+    }
+  }
+}
+
+TEST(PoseDrawing, PosesLayerDrawsEachControlPose) {
+  const scene::Scene scene = sam_scene({scene::PosesLayer{}});
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 2u);
+  const auto& last = std::get<FilledPath>(drawing.items[1].shape);
+  EXPECT_LT(std::abs(last.contours[0][1] - through(homogeneous(scene.poses[1].pose), {1.0, 0.0})), 1e-15);
+}
+
+// Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
+TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
+  scene::ExistenceLayer layer;
+  layer.columns = 180;
+  layer.rows = 90;
+  layer.exists_fill.reset();
+  const Drawing drawing = existence_drawing(layer, "/layers/0");
+  const auto& bad = std::get<FilledPath>(drawing.items.at(0).shape);
+  const auto filled = [&](double a, double y) {
+    for (const auto& rectangle : bad.contours) {
+      if (a > rectangle[0].real() && a < rectangle[1].real() && y > rectangle[0].imag() &&
+          y < rectangle[2].imag()) {
+        return true;
+      }
+    }
+    return false;
+  };
+  int checked = 0, red = 0;
+  for (int j = 0; j < layer.rows; ++j) {
+    const double s = (j + 0.5) / layer.rows;
+    const double boundary = std::acos(-2.0 * s / (s * s + 1.0));  // Eq. 4
+    for (int i = 0; i < layer.columns; ++i) {
+      const double a = -kPi + (i + 0.5) * 2.0 * kPi / layer.columns;
+      if (std::abs(std::abs(a) - boundary) < 1e-9) continue;
+      const bool no_sam = std::abs(a) > boundary;
+      EXPECT_EQ(filled(a, kExistenceHeight * s), no_sam) << "a = " << a << ", s = " << s;
+      red += no_sam;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, layer.columns * layer.rows);
+  EXPECT_GT(red, checked / 20);
+  // The trapezoid |a| < (1 + s) pi/2 lies in the region where a SAM exists.
+  for (int j = 0; j <= 100; ++j) {
+    const double s = j / 100.0;
+    EXPECT_LE((1.0 + s) * kPi / 2.0, std::acos(-2.0 * s / (s * s + 1.0)) + 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace pita::render
