@@ -118,8 +118,7 @@ std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
   try {
     motion.emplace(scene.pose_method, scene.poses);
   } catch (const NoSamBetweenPoses& error) {
-    throw InputError(fmt::format("{}: /poses: {} (poses {} and {}, method {})", scene.path,
-                                 error.what(), error.first(), error.first() + 1, id));
+    throw InputError(fmt::format("{}: /poses: {}", scene.path, scene::no_sam_reason(error, scene.pose_method)));
   }
   std::vector<scene::PoseFrame> frames;
   frames.reserve(times.size());
@@ -224,10 +223,23 @@ independent combinations of Fig. 7 outside the paper's basket.
 Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, "q": [x, y]}, ...]}
 with one frame per line, or CSV with the header t,px,py,m,w,qx,qy.
 
+Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
+  {"method": "SAM",
+   "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+             {"t": 1, "triangle": [[6.5, 0.5], [7.2, 2.9], [4.9, 1.6]]}]}
+  matrix       [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty], a d - b c > 0
+  triangle     the images of "reference_triangle" (default [[0, 0], [1, 0], [0, 1]])
+  method       SAM (2 poses), polySAM (2 or more), bezier-SAM (3 or 4), biarc-SAM (3),
+               linear (2 or more: linear interpolation of the matrices)
+  Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]}, ...]}
+  or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
+  relative affinity has no real logarithm) pita says so and exits 2.
+
 Examples:
   pita eval scenes/fig01-eight-pitas.json
   pita eval scenes/fig01-eight-pitas.json --method P8 --samples 5 --format csv
   pita eval scenes/fig28-prediction.json --t 0,0.5,1,1.5
+  pita eval scenes/sam-fig01-regular-patterns.json --method linear --format csv
 
 Exit codes: 0 success, 2 bad input or usage (the message on stderr names the file,
 the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout),

@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
   using pita::cli::to_int;
 
   CLI::App app{
-      "pita: planar interpolation of three arrows. Computes the motions (PITAs P1-P10 and the "
-      "steady morph SMA) through timed keyframes given as JSON scenes.",
+      "pita: planar interpolation of three arrows and steady affine morphs. Computes the motions "
+      "(PITAs P1-P10 and the steady morph SMA) through timed keyframes, and the Steady Affine "
+      "Morphs (SAM, polySAM, Bezier SAM, bi-arc) through timed affine poses, given as JSON scenes.",
       "pita"};
   app.set_version_flag("--version", std::string("pita ") + PITA_VERSION);
   // Not app.require_subcommand(): CLI11 would then report "pita --frobnicate"

@@ -77,11 +77,16 @@ Scene fields for figures (see README "Figures" and schema/scene.schema.json):
   layers [{"type": "pattern" | "keyframes" | "trajectory" | "stroke" | "banner" |
            "discrepancy" | "label" | "legend", ...}],
   panels ["P1", {"method": "P2", "keyframes": [...], "title": "..."}, ...]
+Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
+  shapes [{"outline": "F"} | {"triangle": "reference"} | {"polygon": [[x, y], ...]}],
+  layers [{"type": "shapes" | "poses" | "velocities" | "paths" | "existence" | "label", ...}],
+  panels ["linear", {"method": "biarc-SAM", "poses": [...], "title": "..."}, ...]
 
 Examples:
   pita render scenes/fig01-eight-pitas.json -o fig01.png --scale 2
   pita render scenes/*.json -o out --format svg,png
   pita render scenes/fig25-strokes.json -o out --format pdf
+  pita render scenes/sam-fig07-no-sam-biarc.json -o fig7.png
 
 Exit codes: 0 success, 2 bad input or usage, 3 an output could not be written.
 )";

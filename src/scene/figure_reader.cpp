@@ -372,6 +372,24 @@ void read_view(const JsonReader& reader, const Json& value, const std::string& p
   canvas.shared_fit = false;
 }
 
+// "layers": an array of at most kMaxLayers layers, each read by `read_one`.
+template <typename LayerType, typename ReadOne>
+std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& value,
+                                        const std::string& pointer, ReadOne read_one) {
+  if (!value.is_array()) {
+    reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
+  }
+  if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
+    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
+                                     value.size()));
+  }
+  std::vector<LayerType> layers;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    layers.push_back(read_one(reader, value[i], element_pointer(pointer, i)));
+  }
+  return layers;
+}
+
 // ------------------------------------------------------------ pose layers
 
 constexpr std::array<std::string_view, 9> kShapesFields = {
@@ -498,18 +516,7 @@ PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std
 
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer) {
-  if (!value.is_array()) {
-    reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
-  }
-  if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
-    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
-                                     value.size()));
-  }
-  std::vector<PoseLayer> layers;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    layers.push_back(read_pose_layer(reader, value[i], element_pointer(pointer, i)));
-  }
-  return layers;
+  return read_layer_array<PoseLayer>(reader, value, pointer, read_pose_layer);
 }
 
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -546,18 +553,7 @@ Canvas read_canvas(const JsonReader& reader, const Json& value, const std::strin
 
 std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
                                const std::string& pointer) {
-  if (!value.is_array()) {
-    reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
-  }
-  if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
-    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
-                                     value.size()));
-  }
-  std::vector<Layer> layers;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    layers.push_back(read_layer(reader, value[i], element_pointer(pointer, i)));
-  }
-  return layers;
+  return read_layer_array<Layer>(reader, value, pointer, read_layer);
 }
 
 }  // namespace pita::scene::detail

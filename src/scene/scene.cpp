@@ -359,9 +359,7 @@ class SceneReader {
     try {
       (void)PoseMotion(method, poses);
     } catch (const NoSamBetweenPoses& error) {
-      const std::size_t i = error.first();
-      fail(pointer, fmt::format("{} (poses {} and {}, method {})", error.what(), i, i + 1,
-                                info(method).id));
+      fail(pointer, no_sam_reason(error, method));
     }
   }
 
@@ -604,6 +602,11 @@ Scene with_method(Scene scene, Method method) {
   return scene;
 }
 
+std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
+  return fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(),
+                     error.first() + 1, info(method).id);
+}
+
 Scene with_pose_method(Scene scene, PoseMethod method) {
   if (scene.kind != SceneKind::poses) {
     throw SceneError(scene.path, "/method",
@@ -620,9 +623,7 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
   try {
     (void)PoseMotion(method, scene.poses);
   } catch (const NoSamBetweenPoses& error) {
-    throw SceneError(scene.path, "/poses",
-                     fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(),
-                                 error.first() + 1, about.id));
+    throw SceneError(scene.path, "/poses", no_sam_reason(error, method));
   }
   scene.pose_method = method;
   scene.method_name = std::string(about.id);

@@ -119,6 +119,10 @@ Method resolve_method(std::string_view name);
 // keyframes.
 Scene with_method(Scene scene, Method method);
 
+// "no SAM exists between these poses: ... (poses 0 and 1, method SAM)": the
+// reason of the error that refuses a pose motion whose SAM does not exist.
+std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method);
+
 // The pose scene with its method replaced (command-line override). Throws
 // SceneError when the scene has keyframes, the method takes another number of
 // poses, or a SAM it needs does not exist.
