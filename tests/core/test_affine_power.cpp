@@ -384,6 +384,44 @@ TEST(AffinePower, HomogeneousLogAgreesWithEigen) {
             1e-15);
 }
 
+// The identities on each case and on both sides of each boundary.
+TEST(AffinePower, IdentitiesOnEveryCaseAndBoundary) {
+  const double half = limits::kHalfTurn, unit = limits::kUnitEigenvalue;
+  const std::vector<Matrix2d> linear = {
+      rotation(1.0), 2.0 * rotation(2.9), rotation(kPi - 1e-9),                    // G1
+      mat(2.0, 0.3, 0.0, 0.5), mat(2.0, 1.0, 0.0, 2.0), 3.0 * Matrix2d::Identity(),  // G2
+      mat(2.0, 1.0, 1e-9, 2.0), mat(2.0, 1.0, -1e-9, 2.0),                          // G1 | G2
+      Matrix2d::Identity(), mat(1.0, 4.0, 0.0, 1.0), mat(1.0, 0.0, 0.0, 3.0),      // S1
+      mat(1.0 + 0.5 * unit, 0.0, 0.0, 3.0), mat(1.0 + 2.0 * unit, 0.0, 0.0, 3.0),  // S1 | G2
+      -2.0 * Matrix2d::Identity(), rotation(kPi), rotation(-kPi),                  // S2
+      -2.0 * (Matrix2d::Identity() + 0.4 * half * mat(1, 0, 0, -1)),               // S2 | G3
+      -2.0 * (Matrix2d::Identity() + 3.0 * half * mat(0, -1, 1, 0)),               // S2 | G1
+      mat(-2.0, 1.0, -1e-12, -2.0),                                                 // G1 | G3
+  };
+  for (const Matrix2d& L : linear) {
+    const Affine2 A{L, Vector2d(1.5, -0.5)};
+    const AffinePowers powers(A);
+    SCOPED_TRACE(::testing::Message() << "L = " << L << ", case " << name(powers.root_case()));
+    // Errors scale with the size of the log (~3e6 for the near-Jordan G1 | G3 case: it is
+    // ill-conditioned, not inaccurate).
+    const double k = 1.0 + powers.linear_log().norm();
+    // S2 snaps L within kHalfTurn of -rho I onto it: A^1 = A is then exact only to that.
+    const double snap = powers.root_case() == RootCase::S2 ? 2.0 * half : 0.0;
+    EXPECT_LT(relative_error(linear_exp(linear_log(L)), L), 1e-14 * k + snap);
+    EXPECT_EQ(homogeneous(powers.at(0.0)), Matrix3d::Identity());
+    EXPECT_LT(relative_error(powers.at(1.0 - 1e-15), A), 1e-13 * k);
+    for (const auto& [s, t] : {std::pair{0.3, 0.4}, std::pair{-0.5, 1.25}, std::pair{0.5, 0.5}}) {
+      EXPECT_LT(relative_error(compose(powers.at(s), powers.at(t)), powers.at(s + t)), 1e-14 * k + snap)
+          << "s = " << s << ", t = " << t;
+    }
+    if (const std::optional<Vector2d> q = fixed_point(A)) {
+      EXPECT_LT((apply(powers.at(0.37), *q) - *q).norm(), 1e-14 * k * (1.0 + q->norm()));
+    } else {
+      EXPECT_EQ(powers.root_case(), RootCase::S1);
+    }
+  }
+}
+
 TEST(AffinePower, NoRealPowerIsRefused) {
   const Affine2 A{mat(-2.0, 0.0, 0.0, -0.5), Vector2d(1.0, 0.0)};
   try {

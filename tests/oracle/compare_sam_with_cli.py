@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compare `pita eval` on SAM pose scenes with the independent oracle sam_oracle.py.
 
-usage: compare_sam_with_cli.py PATH/TO/pita [--count N] [--seed S] [-v]
+usage: compare_sam_with_cli.py PATH/TO/pita [--count N] [--seed S] [-v] [--keep DIR] [--anisotropic]
 
 Builds (fixed seed, temp dir) N random two-pose SAM scenes, B at t0 and C = A o B at t1, where
 A is a random orientation-preserving affinity with a real principal logarithm
@@ -20,6 +20,10 @@ dyadic translation, unimodular integer linear part).
 Refusals: L = diag(-2, -0.5), [[-1, 1], [0, -1]], R(pi) diag(1.5, 1/1.5) must exit 2 with
 empty stdout and "no SAM exists between these poses" on stderr; det L < 0 must exit 2 with
 "orientation-preserving".  Exit 1 on any mismatch, 0 otherwise.
+
+Not covered by default (README "EAR"): within 1e-12 |r| of -rho I pita snaps to S2 (rotation
+by +pi), so e.g. a rotation by -(pi - 1e-13) is returned as turning by +pi; and strongly
+anisotropic L (condition number r^2 >~ 1e5, --anisotropic) where pita's error grows ~ r^2 eps.
 """
 import argparse
 from fractions import Fraction
@@ -192,6 +196,19 @@ def gen_cases(rng, count):
     return cases
 
 
+def gen_anisotropic(rng):
+    """Opt-in (--anisotropic): L = diag(r, 1/r) and rotated copies, r up to 1e4 (kappa(L) = r^2).
+    Exact diagonal inputs are perfectly conditioned entrywise, but pita's closed form is only
+    normwise stable there (error ~ r^2 * eps): these fail the 1e-12 tolerance for r >~ 300."""
+    cases = []
+    for r in (10.0, 100.0, 1e3, 1e4):
+        add_case(cases, rng, "anisotropic r=%g" % r, aff([[r, 0], [0, 1 / r]], [1.0, 1.0]),
+                 aff([[1, 0], [0, 1]], [0, 0]))
+        L = mul2(rot(0.7), mul2([[r, 0], [0, 1 / r]], rot(-0.7)))
+        add_case(cases, rng, "anisotropic r=%g" % r, aff(L, [1.0, 1.0]), aff([[1, 0], [0, 1]], [0, 0]))
+    return cases
+
+
 def gen_refusals(rng):
     """(family, A, B, expected stderr text)."""
     out = []
@@ -251,10 +268,14 @@ def main():
     ap.add_argument("--seed", type=int, default=20240611)
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--keep", metavar="DIR", help="copy the failing scenes into DIR")
+    ap.add_argument("--anisotropic", action="store_true",
+                    help="also L = diag(r, 1/r), r up to 1e4 (known to exceed the tolerance for r >~ 300)")
     args = ap.parse_args()
     tstart = time.time()
     rng = random.Random(args.seed)
     cases = gen_cases(rng, args.count)
+    if args.anisotropic:
+        cases += gen_anisotropic(random.Random(args.seed + 1))
     refusals = gen_refusals(rng)
     tmp = tempfile.mkdtemp(prefix="pita-sam-oracle-")
     try:

@@ -115,17 +115,21 @@ def sqrtm_db(M, tol=None, maxit=200):
     """Principal square root by the Denman-Beavers iteration Y <- (Y + Z^-1)/2, Z <- (Z + Y^-1)/2."""
     tol = tol if tol is not None else D(10) ** (-(PREC - 4))
     Y, Z = [r[:] for r in M], eye(len(M))
+    prev = None
     for _ in range(maxit):
         Yi, Zi = inv3(Y), inv3(Z)
         Yn = mscale(D("0.5"), madd(Y, Zi))
         Zn = mscale(D("0.5"), madd(Z, Yi))
-        step = mnorm(msub(Yn, Y))
+        step = mnorm(msub(Yn, Y)) / max(ONE, mnorm(Yn))
         Y, Z = Yn, Zn
-        if step <= tol * max(ONE, mnorm(Y)):
+        # converged, or (strongly non-normal M) stagnating at the rounding level well past
+        # double precision: quadratic convergence no longer halves the step
+        if step <= tol or (prev is not None and step < D("1e-30") and step > prev / 2):
             # one more iteration to clean up the last digits
             Yi, Zi = inv3(Y), inv3(Z)
             Y = mscale(D("0.5"), madd(Y, Zi))
             return Y
+        prev = step
     raise RuntimeError("Denman-Beavers iteration did not converge")
 
 
@@ -414,6 +418,20 @@ def main():
     P = Power(M)
     check("near identity: log", mmax(msub(P.log, logm_taylor(E))))
     check("near identity: exp(log A) = A", mmax(msub(expm(P.log), M)))
+    # strongly anisotropic (kappa(L) = 1e12): diag(1e6, 1e-6) closed form, and a rotated copy
+    P = Power([[D("1e6"), 0, 1], [0, D("1e-6"), 1]])
+    for u in (D("0.25"), D("1.5"), D("-0.5")):
+        l1, l2 = exp_d(u * D("1e6").ln()), exp_d(u * D("1e-6").ln())
+        ref = [[l1, ZERO, (l1 - 1) / (D("1e6") - 1)], [ZERO, l2, (l2 - 1) / (D("1e-6") - 1)], [ZERO, ZERO, ONE]]
+        check("diag(1e6, 1e-6)", mmax(msub(P(u), ref)), mmax(ref))
+    R = [[D("0.6"), D("-0.8"), ZERO], [D("0.8"), D("0.6"), ZERO], [ZERO, ZERO, ONE]]
+    Rt = [[D("0.6"), D("0.8"), ZERO], [D("-0.8"), D("0.6"), ZERO], [ZERO, ZERO, ONE]]
+    M = mmul(R, mmul(homog([[D("1e6"), 0, 1], [0, D("1e-6"), 1]]), Rt))
+    P = Power(M)
+    check("rotated diag(1e6, 1e-6): exp(log A) = A", mmax(msub(expm(P.log), M)), mmax(M))
+    u = D("0.7")
+    check("rotated diag(1e6, 1e-6): similarity", mmax(msub(P(u), mmul(R, mmul(
+        Power([[D("1e6"), 0, 1], [0, D("1e-6"), 1]])(u), Rt)))), mmax(P(u)))
     # refusals
     for bad in ([[-2, 0, 1], [0, D("-0.5"), 0]], [[-1, 1, 0], [0, -1, 0]], [[1, 0, 0], [0, -1, 0]]):
         try:
