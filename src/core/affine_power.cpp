@@ -35,15 +35,24 @@ struct Characteristics {
   double n_max;          // the largest entry of N = L - r I
 };
 
+// p q - r s to within an ulp or two of the exact value (Kahan's algorithm
+// with fma): the determinant of a strong stretch, e.g. eigenvalues 1e3 and
+// 1e-3 with entries ~500, would otherwise lose 5 digits to cancellation.
+double cross_difference(double p, double q, double r, double s) {
+  const double rs = r * s;
+  const double error = std::fma(-r, s, rs);  // rs - r s exactly
+  return std::fma(p, q, -rs) + error;
+}
+
 Characteristics characteristics(const Matrix2d& L) {
   const double a = L(0, 0), b = L(0, 1), c = L(1, 0), d = L(1, 1);
   const double h = (a - d) / 2.0;
   Characteristics k{};
   k.r = (a + d) / 2.0;
-  k.delta = h * h + b * c;
-  k.det = a * d - b * c;
+  k.delta = cross_difference(h, h, -b, c);  // h^2 + b c
+  k.det = cross_difference(a, d, b, c);
   k.trace_E = (a - 1.0) + (d - 1.0);
-  k.det_E = (a - 1.0) * (d - 1.0) - b * c;
+  k.det_E = cross_difference(a - 1.0, d - 1.0, b, c);
   k.det_minus_one = k.trace_E + k.det_E;
   k.n_max = std::max({std::abs(h), std::abs(b), std::abs(c)});
   return k;
@@ -99,6 +108,39 @@ double sinh_sqrt_ratio(double z) {
   }
   const double w = std::sqrt(-z);
   return std::sin(w) / w;
+}
+
+// e^{tC} for C = x I + M, M traceless with M^2 = gamma I (Eq. 11, written
+// with the discriminant gamma of C so that it stays real):
+//   e^{tC} = e^{tx} (cosh(t sqrt gamma) I + t sinh(t sqrt gamma)/(t sqrt gamma) M),
+// exact as gamma -> 0 (Jordan blocks). With real eigenvalues x +- sigma far
+// apart (sigma > limits::kExpProjectors) through the spectral projectors
+// instead, e^{t(x + sigma)} P+ + e^{t(x - sigma)} P-, P+- = (I +- M/sigma)/2:
+// cosh and sinh of a large t sigma would cancel in the small eigenvalue's
+// direction (a stretch diag(1e6, 1e-6) would lose 12 digits of its 1e-6).
+Matrix2d exp_of_parts(double x, const Matrix2d& M, double gamma, double t) {
+  if (gamma > limits::kExpProjectors * limits::kExpProjectors) {
+    const double sigma = std::sqrt(gamma);
+    const Matrix2d half_M = M / (2.0 * sigma);
+    return std::exp(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
+           std::exp(t * (x - sigma)) * (0.5 * Matrix2d::Identity() - half_M);
+  }
+  const double z = t * t * gamma;
+  return std::exp(t * x) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M);
+}
+
+// e^{tC} - I, exact for small t: expm1 in each term.
+Matrix2d exp_of_parts_minus_identity(double x, const Matrix2d& M, double gamma, double t) {
+  if (gamma > limits::kExpProjectors * limits::kExpProjectors) {
+    const double sigma = std::sqrt(gamma);
+    const Matrix2d half_M = M / (2.0 * sigma);
+    return std::expm1(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
+           std::expm1(t * (x - sigma)) * (0.5 * Matrix2d::Identity() - half_M);
+  }
+  // e^{tx} ch - 1 = expm1(tx) ch + (ch - 1).
+  const double z = t * t * gamma;
+  return (std::expm1(t * x) * cosh_sqrt(z) + cosh_sqrt_minus_one(z)) * Matrix2d::Identity() +
+         std::exp(t * x) * t * sinh_sqrt_ratio(z) * M;
 }
 
 std::string eigenvalue_text(const Matrix2d& L) {
@@ -165,8 +207,8 @@ RootCase select_case(const Matrix2d& L) {
   if (!L.allFinite()) return RootCase::G3;
   const Characteristics k = characteristics(L);
   if (!(k.det > 0.0)) return RootCase::G3;
-  if (k.r < 0.0 && k.n_max <= limits::kHalfTurn * std::abs(k.r)) return RootCase::S2;
   if (k.delta < 0.0) return RootCase::G1;
+  if (k.r < 0.0 && k.n_max <= limits::kHalfTurn * std::abs(k.r)) return RootCase::S2;
   if (k.r < 0.0) return RootCase::G3;  // delta >= 0: real negative eigenvalues
   const auto [mu1, mu2] = real_unit_offsets(k);
   if (std::min(std::abs(mu1), std::abs(mu2)) <= limits::kUnitEigenvalue) return RootCase::S1;
@@ -185,8 +227,10 @@ struct LogParts {
 
 LogParts log_parts(const Matrix2d& L, RootCase kase) {
   const Characteristics k = characteristics(L);
-  // c = ln(sqrt(det L)) = ln |lambda| (G1, S2) = (ln lambda1 + ln lambda2)/2 (G2).
-  const double c = 0.5 * std::log1p(k.det_minus_one);
+  // c = ln(sqrt(det L)) = ln |lambda| (G1, S2) = (ln lambda1 + ln lambda2)/2 (G2);
+  // near the identity from det - 1 = trace E + det E, which has no cancellation there.
+  const bool near_identity = std::abs(k.trace_E) + std::abs(k.det_E) < 0.5;
+  const double c = near_identity ? 0.5 * std::log1p(k.det_minus_one) : 0.5 * std::log(k.det);
   if (kase == RootCase::S2) {
     Matrix2d J;
     J << 0.0, -kPi, kPi, 0.0;
@@ -202,9 +246,12 @@ LogParts log_parts(const Matrix2d& L, RootCase kase) {
     const double omega = std::sqrt(-k.delta);
     coefficient = std::atan2(omega, k.r) / omega;
   } else {
-    // G2 and S1, Eq. 20: y = ln((chi + 1)/(chi - 1))/2 = atanh(s/r), chi = r/s.
+    // G2 and S1, Eq. 20: y = ln((chi + 1)/(chi - 1))/2 = atanh(s/r), chi = r/s,
+    // written ln(lambda1/lambda2)/2 with lambda2 = det/lambda1: atanh(s/r) would
+    // lose (lambda1/lambda2) ulps to 1 - s/r when the eigenvalues are far apart.
     const double s = std::sqrt(k.delta);
-    coefficient = std::atanh(s / k.r) / s;
+    const double big = k.r + s;
+    coefficient = 0.5 * (std::log(big) - std::log(k.det / big)) / s;
   }
   return {c, coefficient * N, coefficient * coefficient * k.delta};
 }
@@ -219,14 +266,9 @@ Matrix2d linear_log(const Matrix2d& L) {
 }
 
 Matrix2d linear_exp(const Matrix2d& C, double t) {
-  // C = x I + M, M^2 = gamma I:  e^{tC} = e^{tx} (cosh(t sqrt gamma) I
-  // + t sinh(t sqrt gamma)/(t sqrt gamma) M)                       (Eq. 11)
   const double x = (C(0, 0) + C(1, 1)) / 2.0;
   const double h = (C(0, 0) - C(1, 1)) / 2.0;
-  const double gamma = h * h + C(0, 1) * C(1, 0);
-  const Matrix2d M = C - x * Matrix2d::Identity();
-  const double z = t * t * gamma;
-  return std::exp(t * x) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M);
+  return exp_of_parts(x, C - x * Matrix2d::Identity(), h * h + C(0, 1) * C(1, 0), t);
 }
 
 Matrix2d linear_power(const Matrix2d& L, double t) {
@@ -312,17 +354,10 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
   }
 }
 
-Matrix2d AffinePowers::power_of_linear(double t) const {
-  const double z = t * t * gamma_;
-  return std::exp(t * c_) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M_);
-}
+Matrix2d AffinePowers::power_of_linear(double t) const { return exp_of_parts(c_, M_, gamma_, t); }
 
 Matrix2d AffinePowers::power_minus_identity(double t) const {
-  // e^{tc} ch - 1 = expm1(tc) ch + (ch - 1): no cancellation for small t.
-  const double z = t * t * gamma_;
-  const double ch = cosh_sqrt(z);
-  return (std::expm1(t * c_) * ch + cosh_sqrt_minus_one(z)) * Matrix2d::Identity() +
-         std::exp(t * c_) * t * sinh_sqrt_ratio(z) * M_;
+  return exp_of_parts_minus_identity(c_, M_, gamma_, t);
 }
 
 Affine2 AffinePowers::at_small(double t) const {

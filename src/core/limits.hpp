@@ -84,14 +84,18 @@ inline constexpr double kPamSingularMiddle = 1e-12;
 // paper's appendix A.5 (Algorithm 1), with tolerances where the paper writes
 // ==, and the switches between formulas that compute the same A^t.
 
-// S2: L is within this relative distance of a uniform scaling by a negative
-// factor -rho (a rotation by pi with uniform scale): max |L - r I| entry
-// <= kHalfTurn * |r|, with r = trace/2 < 0. Such L get the log
-// log(rho) I + pi J (the rotation by +pi, READING-NOTES item 15), even when
-// their eigenvalues are two distinct negatives (no real log: G3) or complex
-// with an angle just short of -pi (G1 would give -pi). Beyond it, complex
-// eigenvalues are G1 and real negative ones are G3.
-inline constexpr double kHalfTurn = 1e-12;
+// S2: L has real negative eigenvalues (delta >= 0, r < 0) and is within this
+// relative distance of a uniform scaling by a negative factor -rho (a
+// rotation by pi with uniform scale): max |L - r I| entry <= kHalfTurn * |r|,
+// r = trace/2. Such L get the log log(rho) I + pi J (the rotation by +pi,
+// READING-NOTES item 15), although beyond exact -rho I their eigenvalues are
+// two distinct negatives or a negative Jordan block (no real log): the
+// tolerance absorbs the rounding of A = C o B^-1 (a few ulps), no more.
+// Complex eigenvalues are never snapped: a rotation by pi - 1e-15 is G1 with
+// the principal angle, and so is a rotation by -pi + 1e-15 (angle -pi + 1e-15),
+// so that A^t is continuous in A everywhere but across the branch cut itself.
+// Beyond the tolerance, real negative eigenvalues are G3.
+inline constexpr double kHalfTurn = 1e-14;
 
 // S1: an eigenvalue lambda of L with |lambda - 1| <= kUnitEigenvalue. The
 // affinity then has no unique fixed point (a pure translation, a shear, or a
@@ -130,5 +134,12 @@ inline constexpr double kDoubleEigenvalueSeries = 1e-2;
 // written with the discriminant z = t^2 gamma of tC) are summed as series
 // while |z| is below this bound.
 inline constexpr double kExpSeries = 1e-2;
+
+// e^{tC} with real eigenvalues c +- sigma of C = log L: through the spectral
+// projectors (I +- M/sigma)/2 when sigma exceeds this (the eigenvalues of L
+// differ by a factor e^{2 sigma} > 2.7), where cosh/sinh would cancel; below,
+// by cosh and sinh(sqrt z)/sqrt z, which stay exact as sigma -> 0 (Jordan
+// blocks) where the projectors would not.
+inline constexpr double kExpProjectors = 0.5;
 
 }  // namespace pita::limits

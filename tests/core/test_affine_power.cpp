@@ -107,8 +107,10 @@ TEST(SelectCase, TheFiveCasesOfAlgorithmOne) {
   EXPECT_EQ(select_case(mat(1.0, 4.0, 0.0, 1.0)), RootCase::S1);          // shear
   EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, 3.0)), RootCase::S1);          // one-directional scaling
   EXPECT_EQ(select_case(-2.0 * Matrix2d::Identity()), RootCase::S2);
-  EXPECT_EQ(select_case(rotation(kPi)), RootCase::S2);
-  EXPECT_EQ(select_case(rotation(-kPi)), RootCase::S2);
+  // cos/sin of +-pi leave +-1.2e-16 off the diagonal: complex eigenvalues, G1
+  // with the principal angle +-(pi - 1.2e-16), not snapped to S2.
+  EXPECT_EQ(select_case(rotation(kPi)), RootCase::G1);
+  EXPECT_EQ(select_case(rotation(-kPi)), RootCase::G1);
   EXPECT_EQ(select_case(mat(-2.0, 0.0, 0.0, -0.5)), RootCase::G3);
   EXPECT_EQ(select_case(mat(-1.0, 1.0, 0.0, -1.0)), RootCase::G3);  // negative Jordan block
   EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, -1.0)), RootCase::G3);   // a reflection (det < 0)
@@ -116,12 +118,16 @@ TEST(SelectCase, TheFiveCasesOfAlgorithmOne) {
 
 TEST(SelectCase, HalfTurnThresholdFromBothSides) {
   const double tol = limits::kHalfTurn;
-  // Within the tolerance: S2 whatever the perturbation.
+  // Real negative eigenvalues within the tolerance of -rho I: S2 (rounding).
   EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(1, 0, 0, -1))), RootCase::S2);
-  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(0, -1, 1, 0))), RootCase::S2);
-  // Beyond it: two distinct negative eigenvalues are G3, a rotation short of pi is G1.
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(0, 1, 0, 0))), RootCase::S2);
+  // Beyond it: two distinct negative eigenvalues, or a negative Jordan block, are G3.
   EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 3.0 * tol * mat(1, 0, 0, -1))), RootCase::G3);
-  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 3.0 * tol * mat(0, -1, 1, 0))), RootCase::G1);
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 3.0 * tol * mat(0, 1, 0, 0))), RootCase::G3);
+  // Complex eigenvalues are never snapped: a turn by -(pi - eps) keeps its principal angle.
+  EXPECT_EQ(select_case(-2.0 * (Matrix2d::Identity() + 0.4 * tol * mat(0, -1, 1, 0))), RootCase::G1);
+  const Matrix2d clockwise = linear_log(rotation(-kPi + 1e-15));
+  EXPECT_NEAR(clockwise(1, 0), -(kPi - 1e-15), 1e-15);
   // The discriminant is computed from the entries: a rotation by pi - 1e-9 is G1, not G3
   // (r^2 - det L would round to 0 and then be taken as no SAM; READING-NOTES 15).
   EXPECT_EQ(select_case(rotation(kPi - 1e-9)), RootCase::G1);
@@ -359,6 +365,23 @@ TEST(AffinePower, AcrossTheTranslationFormulaSwitches) {
   }
 }
 
+// Strong stretches: eigenvalues 1e6 and 1e-6 keep their relative accuracy
+// (atanh(s/r) and cosh/sinh of a large argument would not).
+TEST(AffinePower, StrongStretchesAreExactPerEigenvalue) {
+  const Affine2 A{mat(1e6, 0.0, 0.0, 1e-6), Vector2d(1.0, 1.0)};
+  for (const double t : {-0.5, 0.5, 1.5}) {
+    const Affine2 P = affine_power(A, t);
+    const double big = std::pow(1e6, t), small = std::pow(1e-6, t);
+    EXPECT_NEAR(P.L(0, 0) / big, 1.0, 1e-14) << t;
+    EXPECT_NEAR(P.L(1, 1) / small, 1.0, 1e-14) << t;
+    EXPECT_EQ(P.L(0, 1), 0.0);
+    EXPECT_EQ(P.L(1, 0), 0.0);
+    // Translation (lambda^t - 1)/(lambda - 1) b per axis.
+    EXPECT_NEAR(P.b(0) / ((big - 1.0) / (1e6 - 1.0)), 1.0, 1e-14) << t;
+    EXPECT_NEAR(P.b(1) / ((small - 1.0) / (1e-6 - 1.0)), 1.0, 1e-14) << t;
+  }
+}
+
 TEST(AffinePower, LargeTimesThroughSquaring) {
   const Affine2 A{mat(1.01, 0.2, 0.0, 0.99), Vector2d(1.0, 2.0)};
   for (const double t : {17.0, 100.5, -40.25}) {
@@ -393,9 +416,10 @@ TEST(AffinePower, IdentitiesOnEveryCaseAndBoundary) {
       mat(2.0, 1.0, 1e-9, 2.0), mat(2.0, 1.0, -1e-9, 2.0),                          // G1 | G2
       Matrix2d::Identity(), mat(1.0, 4.0, 0.0, 1.0), mat(1.0, 0.0, 0.0, 3.0),      // S1
       mat(1.0 + 0.5 * unit, 0.0, 0.0, 3.0), mat(1.0 + 2.0 * unit, 0.0, 0.0, 3.0),  // S1 | G2
-      -2.0 * Matrix2d::Identity(), rotation(kPi), rotation(-kPi),                  // S2
+      -2.0 * Matrix2d::Identity(), rotation(kPi), rotation(-kPi),                  // S2, G1 at +-pi
       -2.0 * (Matrix2d::Identity() + 0.4 * half * mat(1, 0, 0, -1)),               // S2 | G3
       -2.0 * (Matrix2d::Identity() + 3.0 * half * mat(0, -1, 1, 0)),               // S2 | G1
+      mat(1e6, 0.0, 0.0, 1e-6), rotation(0.3) * mat(1e3, 0.0, 0.0, 1e-3) * rotation(-0.3),  // stretches
       mat(-2.0, 1.0, -1e-12, -2.0),                                                 // G1 | G3
   };
   for (const Matrix2d& L : linear) {

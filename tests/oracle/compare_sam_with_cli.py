@@ -21,9 +21,11 @@ Refusals: L = diag(-2, -0.5), [[-1, 1], [0, -1]], R(pi) diag(1.5, 1/1.5) must ex
 empty stdout and "no SAM exists between these poses" on stderr; det L < 0 must exit 2 with
 "orientation-preserving".  Exit 1 on any mismatch, 0 otherwise.
 
-Not covered by default (README "EAR"): within 1e-12 |r| of -rho I pita snaps to S2 (rotation
-by +pi), so e.g. a rotation by -(pi - 1e-13) is returned as turning by +pi; and strongly
-anisotropic L (condition number r^2 >~ 1e5, --anisotropic) where pita's error grows ~ r^2 eps.
+Rotations by +-(pi - 1e-13) and by cos/sin of +-pi (off-diagonal +-1.2e-16) must keep their
+principal angle: pita snaps only real negative eigenvalues within 1e-14 |r| of -rho I to S2
+(README "EAR").  --anisotropic (on in ctest) adds strong stretches, L = diag(r, 1/r) and
+rotated copies up to r = 1e4, where a naive closed form loses ~r^2 ulps (pita computes its
+determinants with fma and its powers through spectral projectors there).
 """
 import argparse
 from fractions import Fraction
@@ -157,7 +159,8 @@ def gen_cases(rng, count):
     # nearly a half turn (complex eigenvalues): B identity or a translation so that the
     # linear part of C B^-1 is the exact rotation (its log is ill-conditioned otherwise)
     for th, rho in ((math.pi - 1e-9, 1.0), (-(math.pi - 1e-9), 1.0), (math.pi - 1e-9, 2.0),
-                    (math.pi - 1e-6, 0.5)):
+                    (math.pi - 1e-6, 0.5), (-(math.pi - 1e-13), 1.0), (math.pi, 1.0),
+                    (-math.pi, 1.5)):
         L = [[rho * math.cos(th), -rho * math.sin(th)], [rho * math.sin(th), rho * math.cos(th)]]
         A = aff(L, rand_t(rng))
         add_case(cases, rng, "near half turn", A, aff([[1, 0], [0, 1]], [0, 0]), exact=True)
@@ -197,9 +200,9 @@ def gen_cases(rng, count):
 
 
 def gen_anisotropic(rng):
-    """Opt-in (--anisotropic): L = diag(r, 1/r) and rotated copies, r up to 1e4 (kappa(L) = r^2).
-    Exact diagonal inputs are perfectly conditioned entrywise, but pita's closed form is only
-    normwise stable there (error ~ r^2 * eps): these fail the 1e-12 tolerance for r >~ 300."""
+    """--anisotropic: L = diag(r, 1/r) and rotated copies, r up to 1e4 (kappa(L) = r^2).
+    Exact diagonal inputs are perfectly conditioned entrywise; a closed form that is only
+    normwise stable (atanh(s/r), cosh - sinh, a x d - b x c without fma) errs by ~r^2 eps."""
     cases = []
     for r in (10.0, 100.0, 1e3, 1e4):
         add_case(cases, rng, "anisotropic r=%g" % r, aff([[r, 0], [0, 1 / r]], [1.0, 1.0]),
