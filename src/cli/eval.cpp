@@ -132,7 +132,7 @@ std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
     }
     if (!pose.L.allFinite() || !pose.b.allFinite()) {
       throw InputError(fmt::format("{}: /poses: method {} has no finite pose at t = {}: its numbers "
-                                   "overflow double precision there (t too far outside the knots)",
+                                   "overflow double precision there (t far outside the knots, or poses of extreme scales)",
                                    scene.path, id, t));
     }
     frames.push_back({t, pose});

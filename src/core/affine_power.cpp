@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <tuple>
 
@@ -24,15 +25,22 @@ std::string g6(double x) {
   return text;
 }
 
-// The quantities of A.5 read off L = [[a, b], [c, d]].
+// The quantities of A.5 read off L = [[a, b], [c, d]], computed on the scaled
+// L^ = 2^-exponent L so that no product of entries over- or underflows (the
+// poses may hold 1e+-100, so C o B^-1 may reach 1e+-200 and its determinant
+// 1e+-400). The quantities of E = L - I use exponent_E = max(exponent, 0): a
+// tiny L has E ~ -I, which needs no scaling.
 struct Characteristics {
-  double r;      // trace / 2
-  double delta;  // ((a - d)/2)^2 + b c = r^2 - det L (the discriminant)
-  double det;
-  double det_minus_one;  // det L - 1 = trace E + det E, E = L - I (exact near I)
-  double trace_E;        // 2 (r - 1)
-  double det_E;          // det(L - I) = (a - 1)(d - 1) - b c
-  double n_max;          // the largest entry of N = L - r I
+  int exponent;  // 0 unless L's largest entry is beyond 2^+-400
+  double r;      // trace / 2                                       (of L^)
+  double delta;  // ((a - d)/2)^2 + b c = r^2 - det (discriminant)  (of L^)
+  double det;    //                                                 (of L^)
+  double n_max;  // the largest entry of N = L - r I                (of L^)
+  int exponent_E;
+  double delta_E;        // delta of 2^-exponent_E L
+  double trace_E;        // trace and determinant of 2^-exponent_E (L - I)
+  double det_E;
+  double det_minus_one;  // det L - 1 = trace E + det E (exponent_E = 0; exact near I)
 };
 
 // p q - r s to within an ulp or two of the exact value (Kahan's algorithm
@@ -44,28 +52,48 @@ double cross_difference(double p, double q, double r, double s) {
   return std::fma(p, q, -rs) + error;
 }
 
+int scale_exponent(const Matrix2d& L) {
+  const double largest = L.cwiseAbs().maxCoeff();
+  if (largest == 0.0 || !std::isfinite(largest) || (largest >= 0x1p-400 && largest <= 0x1p400)) {
+    return 0;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  return exponent;
+}
+
 Characteristics characteristics(const Matrix2d& L) {
-  const double a = L(0, 0), b = L(0, 1), c = L(1, 0), d = L(1, 1);
-  const double h = (a - d) / 2.0;
   Characteristics k{};
+  k.exponent = scale_exponent(L);
+  const Matrix2d S = k.exponent == 0 ? L : Matrix2d(L * std::ldexp(1.0, -k.exponent));
+  const double a = S(0, 0), b = S(0, 1), c = S(1, 0), d = S(1, 1);
+  const double h = (a - d) / 2.0;
   k.r = (a + d) / 2.0;
   k.delta = cross_difference(h, h, -b, c);  // h^2 + b c
   k.det = cross_difference(a, d, b, c);
-  k.trace_E = (a - 1.0) + (d - 1.0);
-  k.det_E = cross_difference(a - 1.0, d - 1.0, b, c);
-  k.det_minus_one = k.trace_E + k.det_E;
   k.n_max = std::max({std::abs(h), std::abs(b), std::abs(c)});
+
+  k.exponent_E = std::max(k.exponent, 0);
+  const double scale_E = std::ldexp(1.0, -k.exponent_E);
+  const double one = scale_E;  // the identity, scaled
+  const double aE = L(0, 0) * scale_E, bE = L(0, 1) * scale_E, cE = L(1, 0) * scale_E,
+               dE = L(1, 1) * scale_E;
+  const double hE = (aE - dE) / 2.0;
+  k.delta_E = cross_difference(hE, hE, -bE, cE);
+  k.trace_E = (aE - one) + (dE - one);
+  k.det_E = cross_difference(aE - one, dE - one, bE, cE);
+  k.det_minus_one = k.trace_E + k.det_E;
   return k;
 }
 
 // The real eigenvalues of E = L - I when delta >= 0, the larger in magnitude
-// first (the other from det E / first, without cancellation).
+// first (the other from det E / first, without cancellation); unscaled.
 std::pair<double, double> real_unit_offsets(const Characteristics& k) {
-  const double s = std::sqrt(k.delta);
+  const double s = std::sqrt(k.delta_E);
   const double half_trace = k.trace_E / 2.0;
   const double big = half_trace + std::copysign(s, half_trace);
   if (big == 0.0) return {0.0, 0.0};
-  return {big, k.det_E / big};
+  return {std::ldexp(big, k.exponent_E), std::ldexp(k.det_E / big, k.exponent_E)};
 }
 
 // sum_{n>=0} u^n / (2n + 1): atanh(sqrt u)/sqrt u for u > 0, atan(sqrt -u)/sqrt -u
@@ -113,13 +141,18 @@ double sinh_sqrt_ratio(double z) {
 // e^{tC} for C = x I + M, M traceless with M^2 = gamma I (Eq. 11, written
 // with the discriminant gamma of C so that it stays real):
 //   e^{tC} = e^{tx} (cosh(t sqrt gamma) I + t sinh(t sqrt gamma)/(t sqrt gamma) M),
-// exact as gamma -> 0 (Jordan blocks). With real eigenvalues x +- sigma far
-// apart (sigma > limits::kExpProjectors) through the spectral projectors
+// exact as gamma -> 0 (Jordan blocks). With real eigenvalues x +- sigma and
+// |t sigma| > limits::kExpProjectors, through the spectral projectors
 // instead, e^{t(x + sigma)} P+ + e^{t(x - sigma)} P-, P+- = (I +- M/sigma)/2:
 // cosh and sinh of a large t sigma would cancel in the small eigenvalue's
-// direction (a stretch diag(1e6, 1e-6) would lose 12 digits of its 1e-6).
+// direction (a stretch diag(1e6, 1e-6) would lose 12 digits of its 1e-6, and
+// diag(0.5, 0.25)^100 all of them).
+bool use_projectors(double gamma, double t) {
+  return gamma > 0.0 && t * t * gamma > limits::kExpProjectors * limits::kExpProjectors;
+}
+
 Matrix2d exp_of_parts(double x, const Matrix2d& M, double gamma, double t) {
-  if (gamma > limits::kExpProjectors * limits::kExpProjectors) {
+  if (use_projectors(gamma, t)) {
     const double sigma = std::sqrt(gamma);
     const Matrix2d half_M = M / (2.0 * sigma);
     return std::exp(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
@@ -131,7 +164,7 @@ Matrix2d exp_of_parts(double x, const Matrix2d& M, double gamma, double t) {
 
 // e^{tC} - I, exact for small t: expm1 in each term.
 Matrix2d exp_of_parts_minus_identity(double x, const Matrix2d& M, double gamma, double t) {
-  if (gamma > limits::kExpProjectors * limits::kExpProjectors) {
+  if (use_projectors(gamma, t)) {
     const double sigma = std::sqrt(gamma);
     const Matrix2d half_M = M / (2.0 * sigma);
     return std::expm1(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
@@ -145,7 +178,12 @@ Matrix2d exp_of_parts_minus_identity(double x, const Matrix2d& M, double gamma, 
 
 std::string eigenvalue_text(const Matrix2d& L) {
   const Eigenvalues e = eigenvalues(L);
-  if (e.im1 == 0.0) return g6(e.re1) + " and " + g6(e.re2);
+  if (e.im1 == 0.0) {
+    if (g6(e.re1) != g6(e.re2)) return g6(e.re1) + " and " + g6(e.re2);
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g and %.17g", e.re1, e.re2);
+    return text;
+  }
   return g6(e.re1) + " +- " + g6(std::abs(e.im1)) + "i";
 }
 
@@ -154,12 +192,12 @@ std::string no_log_reason(const Matrix2d& L) {
   if (!L.allFinite()) return "the linear part has a non-finite entry";
   const Characteristics k = characteristics(L);
   if (!(k.det > 0.0)) {
-    return "the linear part has determinant " + g6(k.det) +
+    return "the linear part has determinant " + g6(std::ldexp(k.det, 2 * k.exponent)) +
            " <= 0: it is not orientation preserving, and no continuous motion of affinities "
            "joins it to the identity (Sec. 2.1)";
   }
   if (k.delta == 0.0) {
-    return "the linear part has the double negative eigenvalue " + g6(k.r) +
+    return "the linear part has the double negative eigenvalue " + g6(std::ldexp(k.r, k.exponent)) +
            " with a single eigenvector (case G3): it has no real logarithm (Sec. 5.1)";
   }
   return "the linear part has the two distinct negative eigenvalues " + eigenvalue_text(L) +
@@ -192,20 +230,22 @@ std::string_view description(RootCase kase) {
 
 Eigenvalues eigenvalues(const Matrix2d& L) {
   const Characteristics k = characteristics(L);
+  const auto unscaled = [&k](double x) { return std::ldexp(x, k.exponent); };
   if (k.delta < 0.0) {
     const double omega = std::sqrt(-k.delta);
-    return {k.r, omega, k.r, -omega};
+    return {unscaled(k.r), unscaled(omega), unscaled(k.r), -unscaled(omega)};
   }
   const double s = std::sqrt(k.delta);
   const double big = k.r + std::copysign(s, k.r);
   const double small = big == 0.0 ? 0.0 : k.det / big;
-  return big >= small ? Eigenvalues{big, 0.0, small, 0.0} : Eigenvalues{small, 0.0, big, 0.0};
+  return big >= small ? Eigenvalues{unscaled(big), 0.0, unscaled(small), 0.0}
+                      : Eigenvalues{unscaled(small), 0.0, unscaled(big), 0.0};
 }
 
+namespace {
+
 // Algorithm 1 (A.5), with the tolerances of limits.hpp where it writes ==.
-RootCase select_case(const Matrix2d& L) {
-  if (!L.allFinite()) return RootCase::G3;
-  const Characteristics k = characteristics(L);
+RootCase select_case(const Characteristics& k) {
   if (!(k.det > 0.0)) return RootCase::G3;
   if (k.delta < 0.0) return RootCase::G1;
   if (k.r < 0.0 && k.n_max <= limits::kHalfTurn * std::abs(k.r)) return RootCase::S2;
@@ -215,8 +255,6 @@ RootCase select_case(const Matrix2d& L) {
   return RootCase::G2;
 }
 
-namespace {
-
 // log L = c I + k N (N = L - r I), or c I + pi J in S2; gamma = the
 // discriminant of log L (its eigenvalues are c +- sqrt(gamma)).
 struct LogParts {
@@ -225,18 +263,22 @@ struct LogParts {
   double gamma;
 };
 
-LogParts log_parts(const Matrix2d& L, RootCase kase) {
-  const Characteristics k = characteristics(L);
+LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
   // c = ln(sqrt(det L)) = ln |lambda| (G1, S2) = (ln lambda1 + ln lambda2)/2 (G2);
   // near the identity from det - 1 = trace E + det E, which has no cancellation there.
-  const bool near_identity = std::abs(k.trace_E) + std::abs(k.det_E) < 0.5;
-  const double c = near_identity ? 0.5 * std::log1p(k.det_minus_one) : 0.5 * std::log(k.det);
+  // (On the scaled L^ = 2^-e L: ln det L = ln det L^ + 2 e ln 2.)
+  const bool near_identity =
+      k.exponent_E == 0 && std::abs(k.trace_E) + std::abs(k.det_E) < 0.5;
+  const double c = near_identity
+                       ? 0.5 * std::log1p(k.det_minus_one)
+                       : 0.5 * std::log(k.det) + k.exponent * std::numbers::ln2;
   if (kase == RootCase::S2) {
     Matrix2d J;
     J << 0.0, -kPi, kPi, 0.0;
     return {c, J, -kPi * kPi};
   }
-  const Matrix2d N = L - k.r * Matrix2d::Identity();
+  // k N is the same for L^ and L: the coefficient scales as 1/2^e, N as 2^e.
+  const Matrix2d N = L * std::ldexp(1.0, -k.exponent) - k.r * Matrix2d::Identity();
   double coefficient = 0.0;
   if (k.r > 0.0 && std::abs(k.delta) < limits::kDoubleEigenvalueSeries * k.r * k.r) {
     // Around the double eigenvalue r (delta = 0, G1 meets G2): the limit 1/r.
@@ -256,12 +298,29 @@ LogParts log_parts(const Matrix2d& L, RootCase kase) {
   return {c, coefficient * N, coefficient * coefficient * k.delta};
 }
 
+
+// (I - L) q = b, scaled by 2^-e (e = exponent_E): (one I - L^) q = 2^-e b,
+// and det(one I - L^) = det(L^ - one I) = det E^ in 2D. Precondition: 1 is
+// not an eigenvalue of L.
+Vector2d solve_fixed_point(const Affine2& A, const Characteristics& k) {
+  const double scale = std::ldexp(1.0, -k.exponent_E);
+  const Matrix2d S = A.L * scale;
+  Matrix2d adjugate;
+  adjugate << scale - S(1, 1), S(0, 1), S(1, 0), scale - S(0, 0);
+  return adjugate * (A.b * scale) / k.det_E;
+}
+
 }  // namespace
+
+RootCase select_case(const Matrix2d& L) {
+  if (!L.allFinite()) return RootCase::G3;
+  return select_case(characteristics(L));
+}
 
 Matrix2d linear_log(const Matrix2d& L) {
   const RootCase kase = select_case(L);
   if (kase == RootCase::G3) throw NoRealLogarithm(no_log_reason(L), kase);
-  const LogParts log = log_parts(L, kase);
+  const LogParts log = log_parts(L, characteristics(L), kase);
   return log.c * Matrix2d::Identity() + log.M;
 }
 
@@ -276,38 +335,37 @@ Matrix2d linear_power(const Matrix2d& L, double t) {
 }
 
 std::optional<Vector2d> fixed_point(const Affine2& A) {
-  const RootCase kase = select_case(A.L);
-  if (kase == RootCase::S1) return std::nullopt;
+  if (!A.L.allFinite()) return std::nullopt;
   const Characteristics k = characteristics(A.L);
+  const RootCase kase = select_case(k);
+  if (kase == RootCase::S1) return std::nullopt;
   if (kase == RootCase::G3 && k.det_E == 0.0) return std::nullopt;  // eigenvalue 1 (det <= 0)
-  // (I - L) q = b; det(I - L) = det(L - I) = det E in 2D.
-  Matrix2d adjugate;
-  adjugate << 1.0 - A.L(1, 1), A.L(0, 1), A.L(1, 0), 1.0 - A.L(0, 0);
-  return Vector2d(adjugate * A.b / k.det_E);
+  return solve_fixed_point(A, k);
 }
 
 AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
   if (!A.L.allFinite() || !A.b.allFinite()) {
     throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
   }
-  case_ = select_case(A.L);
+  const Characteristics k = characteristics(A.L);
+  case_ = select_case(k);
   if (case_ == RootCase::G3) throw NoRealLogarithm(no_log_reason(A.L), case_);
-  const LogParts log = log_parts(A.L, case_);
+  const LogParts log = log_parts(A.L, k, case_);
   c_ = log.c;
   M_ = log.M;
   gamma_ = log.gamma;
   C_ = c_ * Matrix2d::Identity() + M_;
 
-  const Characteristics k = characteristics(A.L);
   E_ = A.L - Matrix2d::Identity();
   trace_E_ = k.trace_E;
   det_E_ = k.det_E;
   // Spectral radius of E and distance of the nearer eigenvalue of L to 1.
   double radius = 0.0, nearest = 0.0;
   if (case_ == RootCase::S2) {
-    radius = nearest = 1.0 - k.r;  // L = r I, r < 0
+    radius = nearest = 1.0 - std::ldexp(k.r, k.exponent);  // L = r I, r < 0
   } else if (k.delta < 0.0) {
-    radius = nearest = std::sqrt(std::max(det_E_, 0.0));  // |mu|^2 = det E for mu, conj(mu)
+    // |mu|^2 = det E for mu, conj(mu).
+    radius = nearest = std::ldexp(std::sqrt(std::max(k.det_E, 0.0)), k.exponent_E);
   } else {
     std::tie(mu1_, mu2_) = real_unit_offsets(k);
     radius = std::abs(mu1_);
@@ -340,18 +398,27 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
       break;
     }
     case Translation::fixed_point: {
-      q_ = *fixed_point(A);
+      q_ = solve_fixed_point(A, k);
       v_ = -C_ * q_;  // C (L - I)^-1 b
       break;
     }
     case Translation::eigenvalues: {
       const auto l = [](double mu) { return mu == 0.0 ? 1.0 : std::log1p(mu) / mu; };
-      const double g1 = (l(mu1_) - l(mu2_)) / (mu1_ - mu2_);  // divided difference
-      const double g0 = l(mu1_) - g1 * mu1_;                  // l(E) = g0 I + g1 E
-      v_ = (g0 * Matrix2d::Identity() + g1 * E_) * A.b;
+      v_ = unit_function(l(mu1_), l(mu2_)) * A.b;
       break;
     }
   }
+}
+
+// f(E) = f(mu1) P1 + f(mu2) P2 with the spectral projectors of E = L - I,
+// P1 = (E - mu2 I)/(mu1 - mu2), P2 = (E - mu1 I)/(mu2 - mu1) (the eigenvalues
+// are real and at least 1/8 apart here). Not g0 I + g1 E: g0 = f(mu1) - g1 mu1
+// would cancel when f(mu1) >> f(mu2) (a large t).
+Matrix2d AffinePowers::unit_function(double f1, double f2) const {
+  const Matrix2d I = Matrix2d::Identity();
+  const Matrix2d P1 = (E_ - mu2_ * I) / (mu1_ - mu2_);
+  const Matrix2d P2 = (E_ - mu1_ * I) / (mu2_ - mu1_);
+  return f1 * P1 + f2 * P2;
 }
 
 Matrix2d AffinePowers::power_of_linear(double t) const { return exp_of_parts(c_, M_, gamma_, t); }
@@ -388,9 +455,7 @@ Affine2 AffinePowers::at_small(double t) const {
       break;
     case Translation::eigenvalues: {
       const auto g = [t](double mu) { return mu == 0.0 ? t : std::expm1(t * std::log1p(mu)) / mu; };
-      const double g1 = (g(mu1_) - g(mu2_)) / (mu1_ - mu2_);
-      const double g0 = g(mu1_) - g1 * mu1_;
-      result.b = (g0 * Matrix2d::Identity() + g1 * E_) * A_.b;
+      result.b = unit_function(g(mu1_), g(mu2_)) * A_.b;
       break;
     }
   }
@@ -398,6 +463,10 @@ Affine2 AffinePowers::at_small(double t) const {
 }
 
 Affine2 AffinePowers::at(double t) const {
+  if (!std::isfinite(t)) {  // no power: callers see a non-finite pose
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return Affine2{Matrix2d::Constant(nan), Vector2d::Constant(nan)};
+  }
   if (t == 0.0) return Affine2::identity();
   if (t == 1.0) return A_;
   if (translation_ != Translation::unit_series || std::abs(t) <= limits::kUnitSeriesMaxTime) {

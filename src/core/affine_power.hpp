@@ -93,6 +93,7 @@ class AffinePowers {
   explicit AffinePowers(const Affine2& A);
 
   // A^t (Eq. 9): at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t).
+  // A non-finite t gives a non-finite affinity (NaN), as an overflow does.
   Affine2 at(double t) const;
 
   RootCase root_case() const { return case_; }
@@ -111,6 +112,7 @@ class AffinePowers {
   Affine2 at_small(double t) const;         // |t| <= limits::kUnitSeriesMaxTime, or any t
   Eigen::Matrix2d power_of_linear(double t) const;          // L^t
   Eigen::Matrix2d power_minus_identity(double t) const;     // L^t - I, exact near t = 0
+  Eigen::Matrix2d unit_function(double f1, double f2) const;  // f(E) from f(mu1), f(mu2)
 
   Affine2 A_;
   RootCase case_ = RootCase::G2;

@@ -90,12 +90,13 @@ inline constexpr double kPamSingularMiddle = 1e-12;
 // r = trace/2. Such L get the log log(rho) I + pi J (the rotation by +pi,
 // READING-NOTES item 15), although beyond exact -rho I their eigenvalues are
 // two distinct negatives or a negative Jordan block (no real log): the
-// tolerance absorbs the rounding of A = C o B^-1 (a few ulps), no more.
+// tolerance absorbs the rounding of A = C o B^-1 (seen up to 1.5e-14 for
+// half turns built in doubles from scaled poses), with room to spare.
 // Complex eigenvalues are never snapped: a rotation by pi - 1e-15 is G1 with
 // the principal angle, and so is a rotation by -pi + 1e-15 (angle -pi + 1e-15),
 // so that A^t is continuous in A everywhere but across the branch cut itself.
 // Beyond the tolerance, real negative eigenvalues are G3.
-inline constexpr double kHalfTurn = 1e-14;
+inline constexpr double kHalfTurn = 1e-12;
 
 // S1: an eigenvalue lambda of L with |lambda - 1| <= kUnitEigenvalue. The
 // affinity then has no unique fixed point (a pure translation, a shear, or a

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 #include <stdexcept>
 #include <utility>
 
@@ -71,7 +72,7 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses)
     try {
       biarc_.emplace(poses_[0].pose, poses_[1].pose, poses_[2].pose);
     } catch (const NoRealLogarithm& error) {
-      throw NoSamBetweenPoses(error, 0);
+      throw NoSamBetweenPoses(error, 0, "between the control poses of the bi-arc (Sec. 5.3)");
     }
   }
   if (method == PoseMethod::bezier_sam || method == PoseMethod::biarc_sam) {
@@ -82,7 +83,10 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses)
       try {
         (void)evaluate(t);
       } catch (const NoRealLogarithm& error) {
-        throw NoSamBetweenPoses(error, 0);
+        char where[96];
+        std::snprintf(where, sizeof where, "between intermediate poses of the construction at t = %g",
+                      t);
+        throw NoSamBetweenPoses(error, 0, where);
       }
     }
   }

@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -38,14 +39,18 @@ struct TimedPose {
 
 // No SAM between poses `first` and `first + 1` of the motion (indices into
 // its poses), which the method needs.
+// `where` is empty for a pair of given poses, else it says which intermediate
+// poses of a Bezier SAM or bi-arc construction have no SAM between them.
 class NoSamBetweenPoses : public NoRealLogarithm {
  public:
-  NoSamBetweenPoses(const NoRealLogarithm& cause, std::size_t first)
-      : NoRealLogarithm(cause.what(), cause.root_case()), first_(first) {}
+  NoSamBetweenPoses(const NoRealLogarithm& cause, std::size_t first, std::string where = "")
+      : NoRealLogarithm(cause.what(), cause.root_case()), first_(first), where_(std::move(where)) {}
   std::size_t first() const { return first_; }
+  const std::string& where() const { return where_; }
 
  private:
   std::size_t first_;
+  std::string where_;
 };
 
 // The motion through the poses (as many as the method takes, knots strictly

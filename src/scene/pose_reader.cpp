@@ -112,6 +112,15 @@ std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Jso
   return points;
 }
 
+std::string pose_count_reason(PoseMethod method, std::size_t count) {
+  const PoseMethodInfo& about = info(method);
+  const int most = std::min(about.max_poses, kMaxPoses);
+  const std::string wanted = about.min_poses == most
+                                 ? fmt::format("exactly {}", about.min_poses)
+                                 : fmt::format("{} to {}", about.min_poses, most);
+  return fmt::format("method {} takes {} poses (got {})", about.id, wanted, count);
+}
+
 PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
                             const std::string& pointer) {
   std::vector<std::string_view> ids;
@@ -130,20 +139,16 @@ PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
 
 std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
                                   const std::string& pointer,
-                                  const std::array<Point, 3>& reference, int min_poses,
-                                  int max_poses, std::string_view method_id) {
+                                  const std::array<Point, 3>& reference, PoseMethod method) {
   if (!value.is_array()) {
     reader.fail(pointer, "must be an array of poses {\"t\": ..., \"matrix\": [[a, b, tx], [c, d, "
                          "ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]} (got " +
                              value_text(value) + ")");
   }
-  const auto count = static_cast<int>(std::min<std::size_t>(value.size(), 1'000'000));
-  if (count < min_poses || count > max_poses) {
-    const std::string wanted = min_poses == max_poses
-                                   ? fmt::format("exactly {}", min_poses)
-                                   : fmt::format("{} to {}", min_poses, max_poses);
-    reader.fail(pointer, fmt::format("method {} takes {} poses (got {})", method_id, wanted,
-                                     value.size()));
+  const PoseMethodInfo& about = info(method);
+  if (value.size() < static_cast<std::size_t>(about.min_poses) ||
+      value.size() > static_cast<std::size_t>(std::min(about.max_poses, kMaxPoses))) {
+    reader.fail(pointer, pose_count_reason(method, value.size()));
   }
   const Affine2 reference_frame = frame_of(reference);
   double reference_cross = 0.0;

@@ -19,11 +19,10 @@ std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Jso
 
 // "poses": an array of {"t", and "matrix": [[a, b, tx], [c, d, ty]] or
 // "triangle": [[x, y], [x, y], [x, y]]}, knots strictly increasing, each pose
-// orientation preserving; between min_poses and max_poses of them.
+// orientation preserving; as many as `method` takes (at most kMaxPoses).
 std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
                                   const std::string& pointer,
-                                  const std::array<Point, 3>& reference, int min_poses,
-                                  int max_poses, std::string_view method_id);
+                                  const std::array<Point, 3>& reference, PoseMethod method);
 
 // "shapes": an array of {"polygon": points} | {"polyline": points} |
 // {"triangle": "reference"} | {"outline": "F" | "house" | "square"}, each
@@ -34,6 +33,9 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
 
 // The builtin outlines, in the unit box [0, 1]^2.
 std::vector<Point> builtin_outline(std::string_view name);
+
+// "method SAM takes exactly 2 poses (got 3)", "method polySAM takes 2 to 1000 poses (got 1)".
+std::string pose_count_reason(PoseMethod method, std::size_t count);
 
 // The method of a pose scene or panel ("SAM", "polySAM", ...).
 PoseMethod read_pose_method(const JsonReader& reader, const Json& value,

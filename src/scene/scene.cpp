@@ -334,11 +334,9 @@ class SceneReader {
     }
     const Json* panels = member(document, "panels");
     const Json* poses = member(document, "poses");
-    const PoseMethodInfo& about = info(scene.pose_method);
     if (poses != nullptr) {
       scene.poses = detail::read_poses(reader_, *poses, "/poses", scene.reference_triangle,
-                                       about.min_poses, std::min(about.max_poses, kMaxPoses),
-                                       about.id);
+                                       scene.pose_method);
       check_motion(scene.pose_method, scene.poses, "/poses");
     } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
       fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
@@ -407,10 +405,8 @@ class SceneReader {
           panel.pose_layers = detail::read_pose_layers(reader_, *layers, at + "/layers");
         }
         if (const Json* poses = member(item, "poses")) {
-          const PoseMethodInfo& about = info(panel.pose_method);
           panel.poses = detail::read_poses(reader_, *poses, at + "/poses", scene.reference_triangle,
-                                           about.min_poses, std::min(about.max_poses, kMaxPoses),
-                                           about.id);
+                                           panel.pose_method);
           own_poses = true;
         }
       }
@@ -426,11 +422,8 @@ class SceneReader {
         }
         if (count < about.min_poses || count > about.max_poses) {
           fail(own_method ? at : poses_at,
-               fmt::format("method {} takes {} poses (got {}); give the panel its own \"poses\"",
-                           about.id,
-                           about.min_poses == about.max_poses ? fmt::format("exactly {}", about.min_poses)
-                                                              : fmt::format("{} to {}", about.min_poses, about.max_poses),
-                           count));
+               detail::pose_count_reason(panel.pose_method, panel.poses.size()) +
+                   "; give the panel its own \"poses\"");
         }
         if (own_poses || own_method) check_motion(panel.pose_method, panel.poses, poses_at);
       }
@@ -603,6 +596,9 @@ Scene with_method(Scene scene, Method method) {
 }
 
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
+  if (!error.where().empty()) {
+    return fmt::format("{} ({}, method {})", error.what(), error.where(), info(method).id);
+  }
   return fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(),
                      error.first() + 1, info(method).id);
 }
@@ -614,11 +610,12 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
                                  info(method).id));
   }
   const PoseMethodInfo& about = info(method);
+  if (scene.poses.empty()) {
+    throw SceneError(scene.path, "/poses", "the scene has no poses to interpolate");
+  }
   const auto count = static_cast<int>(scene.poses.size());
   if (count < about.min_poses || count > about.max_poses) {
-    throw SceneError(scene.path, "/poses",
-                     fmt::format("method {} takes {} to {} poses (got {})", about.id,
-                                 about.min_poses, about.max_poses, count));
+    throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, scene.poses.size()));
   }
   try {
     (void)PoseMotion(method, scene.poses);

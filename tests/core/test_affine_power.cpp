@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -380,6 +381,56 @@ TEST(AffinePower, StrongStretchesAreExactPerEigenvalue) {
     EXPECT_NEAR(P.b(0) / ((big - 1.0) / (1e6 - 1.0)), 1.0, 1e-14) << t;
     EXPECT_NEAR(P.b(1) / ((small - 1.0) / (1e-6 - 1.0)), 1.0, 1e-14) << t;
   }
+}
+
+// Far extrapolation keeps every entry's relative accuracy: a contraction
+// diag(0.5, 0.25) at t = +-100 (cosh - sinh would lose all digits of the small
+// eigenvalue's direction, and the translation would cancel), and a
+// one-directional scaling with eigenvalue 1 at t = 60 (its divided difference
+// would cancel).
+TEST(AffinePower, FarExtrapolationIsExactPerEntry) {
+  const Affine2 contraction{mat(0.5, 0.0, 0.0, 0.25), Vector2d(1.0, 1.0)};
+  for (const double t : {-100.0, -30.0, 60.0, 110.0, 300.0}) {
+    const Affine2 P = affine_power(contraction, t);
+    const double x = std::pow(0.5, t), y = std::pow(0.25, t);
+    EXPECT_NEAR(P.L(0, 0) / x, 1.0, 1e-13) << t;
+    EXPECT_NEAR(P.L(1, 1) / y, 1.0, 1e-13) << t;
+    EXPECT_NEAR(P.b(0) / ((x - 1.0) / (0.5 - 1.0)), 1.0, 1e-13) << t;  // -> the fixed point 2
+    EXPECT_NEAR(P.b(1) / ((y - 1.0) / (0.25 - 1.0)), 1.0, 1e-13) << t;
+  }
+  const Affine2 scaling{mat(1.0, 0.0, 0.0, 3.0), Vector2d(1.0, 2.0)};
+  for (const double t : {-40.0, 60.0}) {
+    const Affine2 P = affine_power(scaling, t);
+    EXPECT_NEAR(P.b(0) / t, 1.0, 1e-13) << t;
+    EXPECT_NEAR(P.b(1) / (std::pow(3.0, t) - 1.0), 1.0, 1e-13) << t;
+  }
+  // A non-finite time gives a non-finite pose (never a hang or a wrong number).
+  const AffinePowers near_identity(Affine2{Matrix2d::Identity(), Vector2d(1.0, 0.0)});
+  EXPECT_FALSE(near_identity.at(std::numeric_limits<double>::infinity()).b.allFinite());
+  EXPECT_FALSE(near_identity.at(std::nan("")).b.allFinite());
+}
+
+// Entries of 1e+-200 (C o B^-1 of poses at the scene limits 1e+-100): no
+// determinant over- or underflows on the way.
+TEST(AffinePower, ExtremeScales) {
+  for (const double scale : {1e-200, 1e-150, 1e150, 1e200}) {
+    const Affine2 A{scale * rotation(0.5), Vector2d(1.0, 2.0)};
+    const AffinePowers powers(A);
+    EXPECT_EQ(powers.root_case(), RootCase::G1) << scale;
+    const Affine2 half = powers.at(0.5);
+    // ln det L ~ +-920 carries ~1e-13 of absolute rounding into the scale.
+    const auto relative = [](const auto& x, const auto& y) { return (x - y).stableNorm() / y.stableNorm(); };
+    EXPECT_LT(relative(half.L, Matrix2d(std::sqrt(scale) * rotation(0.25))), 1e-13) << scale;
+    const Affine2 square = compose(half, half);
+    EXPECT_LT(relative(square.L, A.L), 1e-13) << scale;
+    EXPECT_LT(relative(square.b, A.b), 1e-13) << scale;
+    const std::optional<Vector2d> q = fixed_point(A);
+    ASSERT_TRUE(q.has_value());
+    EXPECT_LT((apply(A, *q) - *q).norm(), 1e-13 * (1.0 + q->norm() + scale * q->norm())) << scale;
+  }
+  EXPECT_EQ(select_case(mat(-1e200, 0.0, 0.0, -1e200)), RootCase::S2);
+  EXPECT_EQ(select_case(mat(-2e-200, 0.0, 0.0, -1e-200)), RootCase::G3);
+  EXPECT_EQ(select_case(mat(1e200, 0.0, 0.0, 1.0)), RootCase::S1);
 }
 
 TEST(AffinePower, LargeTimesThroughSquaring) {
