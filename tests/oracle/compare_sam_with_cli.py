@@ -9,7 +9,7 @@ A is a random orientation-preserving affinity with a real principal logarithm
 plus every special case explicitly: pure translation, shear, diag(1, 3) (eigenvalue 1),
 L = -2 I (half turn with scale: pita's rotation by +pi), rotation by pi - 1e-9, the Jordan
 block [[2, 1], [0, 2]], 3 I, near-identity and near-shear affinities.  Each scene is evaluated
-by one `pita eval SCENE --t ...` call at u in {0, 0.25, 0.5, 1, 1.5, -0.5, random}; every
+by one `pita eval SCENE --t ...` call at u in {0, 0.25, 0.5, 1, 1.5, -0.5, -8, 12, random}; every
 frame's 2x3 matrix must match the oracle's A^u o B (computed at ~60 digits from the poses
 exactly as written in the scene) to 1e-12 * max(1, ||oracle||_max).
 
@@ -44,7 +44,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import sam_oracle as S  # noqa: E402
 
 TOL = 1e-12
-U_FIXED = [0.0, 0.25, 0.5, 1.0, 1.5, -0.5]
+U_FIXED = [0.0, 0.25, 0.5, 1.0, 1.5, -0.5, -8.0, 12.0]
 NO_SAM = "no SAM exists between these poses"
 
 
