@@ -14,7 +14,7 @@ namespace {
 constexpr std::array<std::string_view, 3> kPoseFields = {"t", "matrix", "triangle"};
 constexpr std::array<std::string_view, 5> kShapeKinds = {"polygon", "polyline", "triangle",
                                                          "outline", "color"};
-constexpr std::array<std::string_view, 3> kOutlineNames = {"F", "house", "square"};
+constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square", "picture"};
 
 double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
   const double x = reader.number(value, pointer);
@@ -196,13 +196,31 @@ std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
   return poses;
 }
 
-std::vector<Point> builtin_outline(std::string_view name) {
+std::vector<ShapeOutline> builtin_outline(std::string_view name) {
+  const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}}; };
+  const auto open = [](std::vector<Point> points) { return ShapeOutline{std::move(points), false, {}}; };
   if (name == "F") {
-    return {{0.0, 0.0},  {0.25, 0.0}, {0.25, 0.4},  {0.6, 0.4}, {0.6, 0.6},
-            {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8},  {0.75, 1.0}, {0.0, 1.0}};
+    return {closed({{0.0, 0.0}, {0.25, 0.0}, {0.25, 0.4}, {0.6, 0.4}, {0.6, 0.6},
+                    {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8}, {0.75, 1.0}, {0.0, 1.0}})};
   }
-  if (name == "house") return {{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.6}, {0.5, 1.0}, {0.0, 0.6}};
-  return {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};  // square
+  if (name == "house") return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.6}, {0.5, 1.0}, {0.0, 0.6}})};
+  if (name == "picture") {
+    // A small framed picture (the "textured quad" of the SAM paper's Fig. 2,
+    // as line art): frame, ground, a house with a door, a tree and the sun.
+    std::vector<Point> sun;
+    for (int i = 0; i < 24; ++i) {
+      const double angle = 2.0 * 3.141592653589793 * i / 24.0;
+      sun.push_back(Point{0.8, 0.58} + 0.08 * Point{std::cos(angle), std::sin(angle)});
+    }
+    return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.75}, {0.0, 0.75}}),
+            open({{0.0, 0.15}, {1.0, 0.15}}),
+            closed({{0.12, 0.15}, {0.42, 0.15}, {0.42, 0.38}, {0.27, 0.52}, {0.12, 0.38}}),
+            open({{0.24, 0.15}, {0.24, 0.28}, {0.3, 0.28}, {0.3, 0.15}}),
+            open({{0.62, 0.15}, {0.62, 0.27}}),
+            closed({{0.53, 0.27}, {0.71, 0.27}, {0.62, 0.46}}),
+            closed(std::move(sun))};
+  }
+  return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})};  // square
 }
 
 std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
@@ -212,7 +230,7 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
     reader.fail(pointer, fmt::format("must be an array of 1 to {} shapes (got {})", kMaxShapes,
                                      value_text(value)));
   }
-  std::vector<ShapeOutline> shapes;
+  std::vector<ShapeOutline> shapes, extra;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
@@ -248,14 +266,24 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
         }
         shape.points.assign(reference.begin(), reference.end());
       } else {
-        shape.points = builtin_outline(reader.choice(*given, where, kOutlineNames, kOutlineNames));
+        // A builtin outline may have several parts: they follow this shape.
+        std::vector<ShapeOutline> parts =
+            builtin_outline(reader.choice(*given, where, kOutlineNames, kOutlineNames));
+        shape.points = std::move(parts.front().points);
+        shape.closed = parts.front().closed;
+        for (std::size_t part = 1; part < parts.size(); ++part) {
+          parts[part].color = shape.color;
+          extra.push_back(std::move(parts[part]));
+        }
       }
     }
     if (kinds == 0) {
       reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\" or "
-                      "\"outline\": \"F\" | \"house\" | \"square\"");
+                      "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\"");
     }
     shapes.push_back(std::move(shape));
+    for (ShapeOutline& part : extra) shapes.push_back(std::move(part));
+    extra.clear();
   }
   return shapes;
 }

@@ -25,14 +25,14 @@ std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
                                   const std::array<Point, 3>& reference, PoseMethod method);
 
 // "shapes": an array of {"polygon": points} | {"polyline": points} |
-// {"triangle": "reference"} | {"outline": "F" | "house" | "square"}, each
-// with an optional "color".
+// {"triangle": "reference"} | {"outline": "F" | "house" | "square" |
+// "picture"}, each with an optional "color". A "picture" is several outlines.
 std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
                                       const std::string& pointer,
                                       const std::array<Point, 3>& reference);
 
-// The builtin outlines, in the unit box [0, 1]^2.
-std::vector<Point> builtin_outline(std::string_view name);
+// The builtin outlines, in the unit box [0, 1]^2; "picture" has several parts.
+std::vector<ShapeOutline> builtin_outline(std::string_view name);
 
 // "method SAM takes exactly 2 poses (got 3)", "method polySAM takes 2 to 1000 poses (got 1)".
 std::string pose_count_reason(PoseMethod method, std::size_t count);

@@ -58,6 +58,25 @@ TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
   EXPECT_EQ(scene.shapes[0].points[1], Point(3, 1));
 }
 
+TEST(PoseScene, BuiltinOutlines) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}],
+      "shapes": [{"outline": "F"}, {"outline": "picture", "color": "red"}, {"outline": "square"}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
+  EXPECT_EQ(scene.shapes[0].points.size(), 10u);
+  EXPECT_FALSE(scene.shapes[0].color.has_value());
+  for (std::size_t i = 1; i <= 7; ++i) {
+    ASSERT_TRUE(scene.shapes[i].color.has_value()) << i;
+    EXPECT_EQ(*scene.shapes[i].color, *scene.shapes[1].color) << i;
+    for (const Point p : scene.shapes[i].points) {
+      EXPECT_TRUE(p.real() >= 0.0 && p.real() <= 1.0 && p.imag() >= 0.0 && p.imag() <= 0.75) << i;
+    }
+  }
+  EXPECT_FALSE(scene.shapes[2].closed);  // the ground line
+  EXPECT_EQ(scene.shapes[8].points.size(), 4u);
+}
+
 TEST(PoseScene, PanelsInheritAndOverride) {
   const Scene scene = parse_scene(R"({"method": "polySAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]},
