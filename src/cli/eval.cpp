@@ -227,7 +227,7 @@ Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
   {"method": "SAM",
    "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
              {"t": 1, "triangle": [[6.5, 0.5], [7.2, 2.9], [4.9, 1.6]]}]}
-  matrix       [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty], a d - b c > 0
+  matrix       [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty], a d - b c != 0
   triangle     the images of "reference_triangle" (default [[0, 0], [1, 0], [0, 1]])
   method       SAM (2 poses), polySAM (2 or more), bezier-SAM (3 or 4), biarc-SAM (3),
                linear (2 or more: linear interpolation of the matrices)

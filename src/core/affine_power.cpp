@@ -193,8 +193,8 @@ std::string no_log_reason(const Matrix2d& L) {
   const Characteristics k = characteristics(L);
   if (!(k.det > 0.0)) {
     return "the linear part has determinant " + g6(std::ldexp(k.det, 2 * k.exponent)) +
-           " <= 0: it is not orientation preserving, and no continuous motion of affinities "
-           "joins it to the identity (Sec. 2.1)";
+           " <= 0: it is not orientation-preserving (between poses: one is mirrored and the "
+           "other not), and no continuous motion of affinities joins it to the identity (Sec. 2.1)";
   }
   if (k.delta == 0.0) {
     return "the linear part has the double negative eigenvalue " + g6(std::ldexp(k.r, k.exponent)) +

@@ -58,6 +58,17 @@ TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
   EXPECT_EQ(scene.shapes[0].points[1], Point(3, 1));
 }
 
+// Two mirrored poses: C o B^-1 preserves orientation, so the SAM exists and
+// every frame is mirrored.
+TEST(PoseScene, MirroredPosesHaveASam) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "triangle": [[0, 0], [0, 1], [1, 0]]}, {"t": 1, "triangle": [[3, 0], [3, 2], [5, 0]]}]})",
+                                  "s.json");
+  EXPECT_LT(scene.poses[0].pose.L.determinant(), 0.0);
+  const PoseMotion motion(scene.pose_method, scene.poses);
+  EXPECT_LT(motion.at(0.5).L.determinant(), 0.0);
+}
+
 TEST(PoseScene, BuiltinOutlines) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}],
@@ -114,9 +125,15 @@ TEST(PoseScene, NoSamIsRefusedWithTheIssuesMessage) {
 
 TEST(PoseScene, BadPosesNameTheValue) {
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "matrix": [[0, 1, 0], [1, 0, 0]]}]})"),
-            "s.json: /poses/1/matrix: the linear part [[a, b], [c, d]] has determinant -1 <= 0: a pose "
-            "must be an orientation-preserving affinity (SAM paper Sec. 2.1)");
+      {"t": 1, "matrix": [[1, 2, 0], [0.5, 1, 0]]}]})"),
+            "s.json: /poses/1/matrix: the linear part [[a, b], [c, d]] has determinant 0: the pose is "
+            "singular (it flattens the plane onto a line or a point)");
+  // A pose and a mirrored one: no SAM (C o B^-1 reverses orientation).
+  const std::string mirrored = error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[0, 1, 0], [1, 0, 0]]}]})");
+  EXPECT_EQ(mirrored.rfind("s.json: /poses: no SAM exists between these poses: ", 0), 0u) << mirrored;
+  EXPECT_NE(mirrored.find("determinant -1 <= 0: it is not orientation-preserving"), std::string::npos)
+      << mirrored;
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "triangle": [[0, 0], [1, 1], [2, 2]]}]})"),
             "s.json: /poses/1/triangle: the triangle is degenerate (its points are collinear)");
