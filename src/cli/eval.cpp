@@ -116,7 +116,7 @@ std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
   const std::string_view id = info(scene.pose_method).id;
   std::optional<PoseMotion> motion;
   try {
-    motion.emplace(scene.pose_method, scene.poses);
+    motion.emplace(scene.pose_method, scene.poses, scene.subdivisions);
   } catch (const NoSamBetweenPoses& error) {
     throw InputError(fmt::format("{}: /poses: {}", scene.path, scene::no_sam_reason(error, scene.pose_method)));
   }

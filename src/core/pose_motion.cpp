@@ -11,13 +11,31 @@ namespace pita {
 
 namespace {
 
-constexpr std::array<PoseMethodInfo, 5> kPoseMethods = {{
+constexpr std::array<PoseMethodInfo, 6> kPoseMethods = {{
     {PoseMethod::sam, "SAM", "Steady Affine Morph", 2, 2},
     {PoseMethod::poly_sam, "polySAM", "polySAM (a SAM per span)", 2, 1000},
     {PoseMethod::bezier_sam, "bezier-SAM", "Bezier SAM", 3, 4},
     {PoseMethod::biarc_sam, "biarc-SAM", "SAM bi-arc retrofit", 3, 3},
     {PoseMethod::linear, "linear", "linear interpolation of the matrices", 2, 1000},
+    {PoseMethod::four_point, "four-point-SAM", "polySAM of the four-point subdivision", 3, 1000},
 }};
+
+// `steps` four-point subdivisions of timed poses, each new pose at the middle
+// time of its span.
+std::vector<TimedPose> subdivided(std::vector<TimedPose> poses, int steps) {
+  for (int step = 0; step < steps; ++step) {
+    std::vector<Affine2> affinities;
+    for (const TimedPose& p : poses) affinities.push_back(p.pose);
+    const std::vector<Affine2> finer = subdivide_four_point(affinities);
+    std::vector<TimedPose> next(finer.size());
+    for (std::size_t i = 0; i < finer.size(); ++i) {
+      const double t = i % 2 == 0 ? poses[i / 2].t : 0.5 * (poses[i / 2].t + poses[i / 2 + 1].t);
+      next[i] = {t, finer[i]};
+    }
+    poses = std::move(next);
+  }
+  return poses;
+}
 
 bool same_ignoring_case(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
@@ -48,7 +66,7 @@ std::optional<PoseMethod> find_pose_method(std::string_view name) {
   return std::nullopt;
 }
 
-PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses)
+PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subdivisions)
     : method_(method), poses_(std::move(poses)) {
   const PoseMethodInfo& about = info(method);
   if (poses_.size() < static_cast<std::size_t>(about.min_poses) ||
@@ -58,12 +76,33 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses)
   for (std::size_t i = 0; i + 1 < poses_.size(); ++i) {
     if (!(poses_[i].t < poses_[i + 1].t)) throw std::invalid_argument("knots must increase");
   }
+  span_poses_ = poses_;
+  if (method == PoseMethod::four_point) {
+    if (subdivisions < 0 || subdivisions > kMaxSubdivisions) {
+      throw std::invalid_argument("four-point-SAM: subdivisions out of range");
+    }
+    // Each step needs the SAMs between the poses of the step before.
+    for (int step = 0; step < subdivisions; ++step) {
+      try {
+        span_poses_ = subdivided(std::move(span_poses_), 1);
+      } catch (const NoRealLogarithm& error) {
+        throw NoSamBetweenPoses(error, 0,
+                                "between poses of subdivision step " + std::to_string(step + 1) +
+                                    " of the four-point scheme (Sec. 7.3)");
+      }
+    }
+  }
   // Every SAM between consecutive poses, named by its pair when it fails.
   if (method != PoseMethod::linear) {
-    for (std::size_t i = 0; i + 1 < poses_.size(); ++i) {
+    for (std::size_t i = 0; i + 1 < span_poses_.size(); ++i) {
       try {
-        spans_.emplace_back(poses_[i].pose, poses_[i + 1].pose);
+        spans_.emplace_back(span_poses_[i].pose, span_poses_[i + 1].pose);
       } catch (const NoRealLogarithm& error) {
+        if (method == PoseMethod::four_point) {
+          throw NoSamBetweenPoses(error, 0,
+                                  "between subdivided poses at t = " + std::to_string(span_poses_[i].t) +
+                                      " and " + std::to_string(span_poses_[i + 1].t));
+        }
         throw NoSamBetweenPoses(error, i);
       }
     }
@@ -101,12 +140,12 @@ Affine2 PoseMotion::evaluate(double t) const {
   switch (method_) {
     case PoseMethod::sam:
     case PoseMethod::poly_sam:
+    case PoseMethod::four_point:
     case PoseMethod::linear: {
       // The span holding t; the first and last extrapolate.
-      std::size_t i = 0;
-      while (i + 2 < poses_.size() && t >= poses_[i + 1].t) ++i;
-      const TimedPose& from = poses_[i];
-      const TimedPose& to = poses_[i + 1];
+      const std::size_t i = span_of(t);
+      const TimedPose& from = span_poses_[i];
+      const TimedPose& to = span_poses_[i + 1];
       if (t == from.t) return from.pose;
       if (t == to.t) return to.pose;
       const double u = (t - from.t) / (to.t - from.t);
@@ -132,18 +171,20 @@ Affine2 PoseMotion::evaluate(double t) const {
 Affine2 PoseMotion::at(double t) const { return evaluate(t); }
 
 std::size_t PoseMotion::span_of(double t) const {
-  std::size_t i = 0;
-  while (i + 2 < poses_.size() && t >= poses_[i + 1].t) ++i;
-  return i;
+  // The last span whose start is <= t (the first when none is).
+  const auto after = std::upper_bound(span_poses_.begin() + 1, span_poses_.end() - 1, t,
+                                      [](double x, const TimedPose& p) { return x < p.t; });
+  return static_cast<std::size_t>(after - (span_poses_.begin() + 1));
 }
 
 Affine2 PoseMotion::velocity(double t) const {
   const double first = poses_.front().t, last = poses_.back().t;
   switch (method_) {
     case PoseMethod::sam:
-    case PoseMethod::poly_sam: {
+    case PoseMethod::poly_sam:
+    case PoseMethod::four_point: {
       const std::size_t i = span_of(t);
-      const double duration = poses_[i + 1].t - poses_[i].t;
+      const double duration = span_poses_[i + 1].t - span_poses_[i].t;
       const AffinePowers& powers = spans_[i].powers();
       const Affine2 pose = evaluate(t);
       const Eigen::Matrix2d& C = powers.linear_log();
@@ -151,9 +192,9 @@ Affine2 PoseMotion::velocity(double t) const {
     }
     case PoseMethod::linear: {
       const std::size_t i = span_of(t);
-      const double duration = poses_[i + 1].t - poses_[i].t;
-      const Affine2& A = poses_[i].pose;
-      const Affine2& B = poses_[i + 1].pose;
+      const double duration = span_poses_[i + 1].t - span_poses_[i].t;
+      const Affine2& A = span_poses_[i].pose;
+      const Affine2& B = span_poses_[i + 1].pose;
       return {(B.L - A.L) / duration, (B.b - A.b) / duration};
     }
     case PoseMethod::bezier_sam:

@@ -17,7 +17,12 @@
 
 namespace pita {
 
-enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear };
+enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point };
+
+// Subdivision steps of the four-point polySAM (Sec. 7.3: "4 subdivision steps
+// suffice to produce polySAMs that appear smooth"), and the most a scene may ask.
+inline constexpr int kDefaultSubdivisions = 4;
+inline constexpr int kMaxSubdivisions = 6;
 
 struct PoseMethodInfo {
   PoseMethod method;
@@ -66,9 +71,15 @@ class NoSamBetweenPoses : public NoRealLogarithm {
 // and [t_1, t_2] onto [1/2, 1], so that it passes through the middle pose at
 // its knot. Times outside the knots extrapolate (SAM, polySAM, linear) or
 // are clamped (Bezier, bi-arc, whose arcs are not defined beyond).
+//
+// The four-point polySAM (Sec. 7.3, Fig. 13) subdivides its control poses
+// `subdivisions` times with subdivide_four_point (a new pose at the middle
+// time of each span) and is the polySAM through the result: it still passes
+// through every control pose.
 class PoseMotion {
  public:
-  PoseMotion(PoseMethod method, std::vector<TimedPose> poses);
+  PoseMotion(PoseMethod method, std::vector<TimedPose> poses,
+             int subdivisions = kDefaultSubdivisions);
 
   Affine2 at(double t) const;
 
@@ -93,7 +104,8 @@ class PoseMotion {
 
   PoseMethod method_;
   std::vector<TimedPose> poses_;
-  std::vector<SteadyAffineMorph> spans_;  // SAM, polySAM
+  std::vector<TimedPose> span_poses_;  // the polySAM's poses (SAM, polySAM, linear, four-point)
+  std::vector<SteadyAffineMorph> spans_;  // between span_poses_
   std::optional<SamBiarc> biarc_;
 };
 

@@ -46,7 +46,7 @@ class PoseBuilder {
     if (!motion_) {
       if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
       try {
-        motion_.emplace(panel_.pose_method, panel_.poses);
+        motion_.emplace(panel_.pose_method, panel_.poses, panel_.subdivisions);
       } catch (const std::exception& error) {
         fail(fmt::format("{}: {}", panel_.method_name, error.what()));
       }

@@ -230,6 +230,7 @@ struct Panel {
   std::vector<TimedPose> poses;
   std::vector<ShapeOutline> shapes;
   std::optional<std::vector<PoseLayer>> pose_layers;
+  int subdivisions = kDefaultSubdivisions;  // four-point-SAM
 };
 
 }  // namespace pita::scene

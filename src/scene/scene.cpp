@@ -40,11 +40,12 @@ constexpr std::array<std::string_view, 6> kPanelFields = {"method", "options", "
                                                           "title",  "samples", "layers"};
 
 // Pose scenes (README "Pose scenes").
-constexpr std::array<std::string_view, 12> kPoseSceneFields = {
+constexpr std::array<std::string_view, 13> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
-    "samples", "title",       "canvas", "layers", "panels",             "golden"};
-constexpr std::array<std::string_view, 6> kPosePanelFields = {"method",  "poses",  "shapes",
-                                                              "title",   "samples", "layers"};
+    "samples", "title",       "canvas", "layers", "panels",             "golden",
+    "subdivisions"};
+constexpr std::array<std::string_view, 7> kPosePanelFields = {
+    "method", "poses", "shapes", "title", "samples", "layers", "subdivisions"};
 
 // Whether a layer needs the motion (every one but "existence" and "label").
 bool needs_motion(const std::vector<PoseLayer>& layers) {
@@ -323,6 +324,9 @@ class SceneReader {
     if (const Json* samples = member(document, "samples")) {
       scene.samples = reader_.integer(*samples, "/samples", kMinSamples, kMaxSamples);
     }
+    if (const Json* subdivisions = member(document, "subdivisions")) {
+      scene.subdivisions = reader_.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
+    }
     if (const Json* title = member(document, "title")) scene.title = reader_.string(*title, "/title");
     if (const Json* canvas = member(document, "canvas")) {
       scene.canvas = detail::read_canvas(reader_, *canvas, "/canvas");
@@ -337,7 +341,7 @@ class SceneReader {
     if (poses != nullptr) {
       scene.poses = detail::read_poses(reader_, *poses, "/poses", scene.reference_triangle,
                                        scene.pose_method);
-      check_motion(scene.pose_method, scene.poses, "/poses");
+      check_motion(scene.pose_method, scene.poses, scene.subdivisions, "/poses");
     } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
       fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
                      "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");
@@ -352,10 +356,10 @@ class SceneReader {
   }
 
   // The motion must exist: every SAM it needs (NoSamBetweenPoses names the pair).
-  void check_motion(PoseMethod method, const std::vector<TimedPose>& poses,
+  void check_motion(PoseMethod method, const std::vector<TimedPose>& poses, int subdivisions,
                     const std::string& pointer) const {
     try {
-      (void)PoseMotion(method, poses);
+      (void)PoseMotion(method, poses, subdivisions);
     } catch (const NoSamBetweenPoses& error) {
       fail(pointer, no_sam_reason(error, method));
     }
@@ -367,6 +371,7 @@ class SceneReader {
     panel.method_name = scene.method_name;
     panel.poses = scene.poses;
     panel.shapes = scene.shapes;
+    panel.subdivisions = scene.subdivisions;
     panel.samples = scene.samples.value_or(kDefaultFigureSamples);
     panel.pointer = std::move(pointer);
     return panel;
@@ -398,6 +403,11 @@ class SceneReader {
         if (const Json* samples = member(item, "samples")) {
           panel.samples = reader_.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
         }
+        if (const Json* subdivisions = member(item, "subdivisions")) {
+          panel.subdivisions =
+              reader_.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
+          own_method = true;  // the motion changes: check it again
+        }
         if (const Json* shapes = member(item, "shapes")) {
           panel.shapes = detail::read_shapes(reader_, *shapes, at + "/shapes", scene.reference_triangle);
         }
@@ -425,7 +435,9 @@ class SceneReader {
                detail::pose_count_reason(panel.pose_method, panel.poses.size()) +
                    "; give the panel its own \"poses\"");
         }
-        if (own_poses || own_method) check_motion(panel.pose_method, panel.poses, poses_at);
+        if (own_poses || own_method) {
+          check_motion(panel.pose_method, panel.poses, panel.subdivisions, poses_at);
+        }
       }
       if (panel.title.empty() && own_method) panel.title = std::string(info(panel.pose_method).id);
       panels.push_back(std::move(panel));
@@ -618,7 +630,7 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
     throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, scene.poses.size()));
   }
   try {
-    (void)PoseMotion(method, scene.poses);
+    (void)PoseMotion(method, scene.poses, scene.subdivisions);
   } catch (const NoSamBetweenPoses& error) {
     throw SceneError(scene.path, "/poses", no_sam_reason(error, method));
   }

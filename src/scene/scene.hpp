@@ -58,6 +58,7 @@ struct Scene {
   std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
   std::vector<ShapeOutline> shapes;        // default: the reference triangle
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
+  int subdivisions = kDefaultSubdivisions; // four-point-SAM: steps, [0, kMaxSubdivisions]
 
   // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores it.
   std::string title;                // "" = none; drawn above the panels

@@ -127,3 +127,47 @@ TEST(PoseMotion, RefusesTheMissingSamAndNamesThePair) {
 
 }  // namespace
 }  // namespace pita
+
+namespace pita {
+namespace {
+
+// The four-point polySAM (Sec. 7.3, Fig. 13).
+TEST(PoseMotion, FourPointPolySam) {
+  const std::vector<TimedPose> controls = {
+      {0.0, pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)},
+      {1.0, pose(0.4, -1.2, 1.2, 0.4, 3.0, 4.0)},
+      {2.0, pose(-1.2, -0.6, 0.5, -1.1, 7.0, 3.5)},
+      {3.0, pose(-0.9, 0.5, -0.3, -1.0, 9.0, -1.0)}};
+  // Through every control pose, whatever the number of steps.
+  for (const int steps : {0, 1, 2, 4}) {
+    const PoseMotion motion(PoseMethod::four_point, controls, steps);
+    for (const TimedPose& control : controls) {
+      EXPECT_LT(distance(motion.at(control.t), control.pose), 1e-12) << steps << " at " << control.t;
+    }
+  }
+  // No step: the polySAM.
+  const PoseMotion none(PoseMethod::four_point, controls, 0);
+  const PoseMotion poly(PoseMethod::poly_sam, controls);
+  for (const double t : {0.3, 1.5, 2.7}) EXPECT_LT(distance(none.at(t), poly.at(t)), 1e-15);
+  // Each step shrinks the velocity jump at the control poses.
+  const auto jump = [&](int steps) {
+    const PoseMotion motion(PoseMethod::four_point, controls, steps);
+    const Affine2 before = motion.velocity(1.0 - 1e-9), after = motion.velocity(1.0);
+    return distance(before, after);
+  };
+  // (measured: 10.1, 6.1, 3.6, 2.1, 1.2, 0.68: about 1.75 times smaller per step,
+  // towards a C1 limit)
+  for (int k = 0; k < 5; ++k) EXPECT_LT(jump(k + 1), jump(k) / 1.5) << k;
+  // A regular pattern stays one SAM: controls M^i B give M^t B at every t.
+  const Affine2 M = pose(0.9, -0.3, 0.3, 0.9, 1.0, 0.5), B = pose(1.0, 0.2, 0.0, 1.0, 0.0, 0.0);
+  const AffinePowers powers(M);
+  std::vector<TimedPose> regular;
+  for (int i = 0; i < 4; ++i) regular.push_back({static_cast<double>(i), compose(powers.at(i), B)});
+  const PoseMotion smooth(PoseMethod::four_point, regular, 3);
+  for (const double t : {0.1, 0.75, 1.5, 2.9}) {
+    EXPECT_LT(distance(smooth.at(t), compose(powers.at(t), B)), 1e-11) << t;
+  }
+}
+
+}  // namespace
+}  // namespace pita

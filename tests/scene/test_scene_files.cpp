@@ -131,14 +131,14 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(scene.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
                                    "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden"}));
+                                   "golden", "subdivisions"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
             (std::set<std::string>{"polygon", "polyline", "triangle", "outline", "color"}));
   std::vector<std::string> methods;
   for (const PoseMethodInfo& method : all_pose_methods()) methods.emplace_back(method.id);
-  EXPECT_EQ(definitions.at("poseMethod").at("enum").get<std::vector<std::string>>(), methods);
+  EXPECT_EQ(definitions.at("poseMethod").at("examples").get<std::vector<std::string>>(), methods);
   const std::vector<std::pair<std::string, std::set<std::string>>> layers = {
       {"shapes", {"type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"}},
       {"poses", {"type", "colors", "width", "fill_opacity"}},
@@ -157,7 +157,8 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   types.push_back("label");
   EXPECT_EQ(definitions.at("poseLayer").at("properties").at("type").at("enum"), nlohmann::json(types));
   EXPECT_EQ(keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
-            (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers"}));
+            (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers",
+                                   "subdivisions"}));
 }
 
 TEST(SceneSchema, ListsEveryMethodForAutocomplete) {

@@ -414,6 +414,7 @@ const std::vector<std::string>& good_scenes() {
           {"t": 1, "matrix": [[0.5, -1, 6], [1, 0.5, 1]]}
         ],
         "samples": 5,
+        "subdivisions": 2,
         "canvas": {"width": 900, "height": 600, "view": "shared"},
         "layers": [
           {"type": "paths", "samples": 64, "range": [0, 1], "color": "gray", "width": 0.5, "opacity": 0.5, "dash": [2, 2]},
@@ -425,6 +426,7 @@ const std::vector<std::string>& good_scenes() {
         ],
         "panels": [
           "linear",
+          {"method": "four-point-sam", "subdivisions": 3},
           {"method": "biarc-SAM", "title": "bi-arc", "samples": 9},
           {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[2, 0, 1], [0, 2, 1]]}],
            "shapes": [{"outline": "square"}]},
