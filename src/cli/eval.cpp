@@ -230,7 +230,8 @@ Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
   matrix       [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty], a d - b c != 0
   triangle     the images of "reference_triangle" (default [[0, 0], [1, 0], [0, 1]])
   method       SAM (2 poses), polySAM (2 or more), bezier-SAM (3 or 4), biarc-SAM (3),
-               linear (2 or more: linear interpolation of the matrices)
+               linear (2 or more: linear interpolation of the matrices), four-point-SAM
+               (3 or more; "subdivisions": 0-6 steps, default 4)
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]}, ...]}
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
