@@ -1,0 +1,27 @@
+// The Average Relative Acceleration (ARA) of an affine motion, the SAM
+// paper's measure of unsteadiness (Sec. 1 and 2.4): the mean, over points of
+// the moving shape and over time, of the magnitude of the acceleration by
+// which a point's velocity expressed in the moving frame,
+//     w(u) = L(u)^-1 (L'(u) p + b'(u))        (p in reference coordinates),
+// changes over time. A motion is steady (a SAM, Eq. 1) exactly when w is
+// constant (Sec. 6.1), so its ARA is 0.
+#pragma once
+
+#include <span>
+
+#include <Eigen/Core>
+
+#include "core/pose_motion.hpp"
+
+namespace pita {
+
+// ARA of `motion` over its knots, time normalised to u in [0, 1] (so the
+// measure does not depend on the time unit), averaged over `points`
+// (reference coordinates) and over `time_samples` times at the middles of
+// equal intervals of u (never at a knot, where a polySAM's velocity jumps).
+// dw/du by central differences of the exact (or fourth-order) velocity.
+double average_relative_acceleration(const PoseMotion& motion,
+                                     std::span<const Eigen::Vector2d> points,
+                                     int time_samples = 64);
+
+}  // namespace pita

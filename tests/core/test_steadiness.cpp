@@ -1,0 +1,46 @@
+// ARA (core/steadiness.hpp): 0 for a SAM and for each span of a polySAM,
+// clearly positive for the unsteady motions (SAM paper Sec. 2.4).
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "core/steadiness.hpp"
+
+namespace pita {
+namespace {
+
+Affine2 pose(double a, double b, double c, double d, double x, double y) {
+  Affine2 A;
+  A.L << a, b, c, d;
+  A.b << x, y;
+  return A;
+}
+
+// The poses of scenes/sam-fig02-linear-and-sam.json (triangles mapped from
+// the unit triangle) and a middle pose for the three-pose motions.
+const Affine2 kB = pose(2.2, 0.6, 0.3, 1.6, 0.0, 0.0);
+const Affine2 kC = pose(0.7, -1.6, 2.4, 1.1, 6.5, 0.5);
+const Affine2 kMiddle = pose(1.4, -0.9, 1.6, 1.2, 3.5, 1.5);
+const std::vector<Eigen::Vector2d> kTriangle = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}};
+
+TEST(Steadiness, SamIsSteadyOthersAreNot) {
+  const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kB}, {1.0, kC}}), kTriangle);
+  const double linear =
+      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kB}, {1.0, kC}}), kTriangle);
+  const std::vector<TimedPose> three = {{0.0, kB}, {0.5, kMiddle}, {1.0, kC}};
+  const double poly = average_relative_acceleration(PoseMotion(PoseMethod::poly_sam, three), kTriangle);
+  const double bezier = average_relative_acceleration(PoseMotion(PoseMethod::bezier_sam, three), kTriangle);
+  const double biarc = average_relative_acceleration(PoseMotion(PoseMethod::biarc_sam, three), kTriangle);
+  EXPECT_LT(sam, 1e-6);
+  EXPECT_LT(poly, 1e-6);  // steady on each span; the jumps at the knots are not sampled
+  EXPECT_GT(linear, 0.1);
+  EXPECT_GT(bezier, 0.01);
+  EXPECT_GT(biarc, 0.01);
+  // Not a matter of the time unit: the same motion over [0, 10].
+  const double linear_slow =
+      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kB}, {10.0, kC}}), kTriangle);
+  EXPECT_NEAR(linear_slow, linear, 1e-6 * linear);
+}
+
+}  // namespace
+}  // namespace pita
