@@ -119,6 +119,8 @@ std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
     motion.emplace(scene.pose_method, scene.poses, scene.subdivisions);
   } catch (const NoSamBetweenPoses& error) {
     throw InputError(fmt::format("{}: /poses: {}", scene.path, scene::no_sam_reason(error, scene.pose_method)));
+  } catch (const std::invalid_argument& error) {
+    throw InputError(fmt::format("{}: /poses: {}", scene.path, error.what()));
   }
   std::vector<scene::PoseFrame> frames;
   frames.reserve(times.size());

@@ -193,8 +193,8 @@ std::string no_log_reason(const Matrix2d& L) {
   const Characteristics k = characteristics(L);
   if (!(k.det > 0.0)) {
     return "the linear part has determinant " + g6(std::ldexp(k.det, 2 * k.exponent)) +
-           " <= 0: it is not orientation-preserving (between poses: one is mirrored and the "
-           "other not), and no continuous motion of affinities joins it to the identity (Sec. 2.1)";
+           " <= 0: it is not orientation-preserving, and no continuous motion of affinities "
+           "joins it to the identity (Sec. 2.1)";
   }
   if (k.delta == 0.0) {
     return "the linear part has the double negative eigenvalue " + g6(std::ldexp(k.r, k.exponent)) +
@@ -394,20 +394,25 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
         q = q_next;
         if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) < 1e-18 * (std::abs(g0) + 1e-300)) break;
       }
-      v_ = (g0 * Matrix2d::Identity() + g1 * E_) * A.b;
+      log_ratio_ = g0 * Matrix2d::Identity() + g1 * E_;
       break;
     }
     case Translation::fixed_point: {
-      q_ = solve_fixed_point(A, k);
-      v_ = -C_ * q_;  // C (L - I)^-1 b
+      // (I - L)^-1 on the scaled matrix (solve_fixed_point), and C (L - I)^-1.
+      const double scale = std::ldexp(1.0, -k.exponent_E);
+      const Matrix2d S = A.L * scale;
+      inverse_I_minus_L_ << scale - S(1, 1), S(0, 1), S(1, 0), scale - S(0, 0);
+      inverse_I_minus_L_ *= scale / k.det_E;
+      log_ratio_ = -C_ * inverse_I_minus_L_;
       break;
     }
     case Translation::eigenvalues: {
       const auto l = [](double mu) { return mu == 0.0 ? 1.0 : std::log1p(mu) / mu; };
-      v_ = unit_function(l(mu1_), l(mu2_)) * A.b;
+      log_ratio_ = unit_function(l(mu1_), l(mu2_));
       break;
     }
   }
+  v_ = log_ratio_ * A.b;
 }
 
 // f(E) = f(mu1) P1 + f(mu2) P2 with the spectral projectors of E = L - I,
@@ -427,7 +432,7 @@ Matrix2d AffinePowers::power_minus_identity(double t) const {
   return exp_of_parts_minus_identity(c_, M_, gamma_, t);
 }
 
-Affine2 AffinePowers::at_small(double t) const {
+Affine2 AffinePowers::at_small(double t, const Vector2d& b) const {
   Affine2 result;
   result.L = power_of_linear(t);
   switch (translation_) {
@@ -446,31 +451,34 @@ Affine2 AffinePowers::at_small(double t) const {
         const double term = std::abs(binomial) * (std::abs(p) + std::abs(q) * scale);
         if (term < 1e-18 * (std::abs(g0) + std::abs(g1) * scale)) break;
       }
-      result.b = (g0 * Matrix2d::Identity() + g1 * E_) * A_.b;
+      result.b = (g0 * Matrix2d::Identity() + g1 * E_) * b;
       break;
     }
     case Translation::fixed_point:
-      // Eq. 9: A^t(p) = L^t (p - q) + q, so the translation is (I - L^t) q.
-      result.b = -power_minus_identity(t) * q_;
+      // Eq. 9: A^t(p) = L^t (p - q) + q, so the translation is (I - L^t) q,
+      // q = (I - L)^-1 b the fixed point.
+      result.b = -power_minus_identity(t) * (inverse_I_minus_L_ * b);
       break;
     case Translation::eigenvalues: {
       const auto g = [t](double mu) { return mu == 0.0 ? t : std::expm1(t * std::log1p(mu)) / mu; };
-      result.b = unit_function(g(mu1_), g(mu2_)) * A_.b;
+      result.b = unit_function(g(mu1_), g(mu2_)) * b;
       break;
     }
   }
   return result;
 }
 
-Affine2 AffinePowers::at(double t) const {
+Affine2 AffinePowers::at(double t) const { return power_with_translation(t, A_.b); }
+
+Affine2 AffinePowers::power_with_translation(double t, const Vector2d& b) const {
   if (!std::isfinite(t)) {  // no power: callers see a non-finite pose
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return Affine2{Matrix2d::Constant(nan), Vector2d::Constant(nan)};
   }
   if (t == 0.0) return Affine2::identity();
-  if (t == 1.0) return A_;
+  if (t == 1.0) return Affine2{A_.L, b};
   if (translation_ != Translation::unit_series || std::abs(t) <= limits::kUnitSeriesMaxTime) {
-    return at_small(t);
+    return at_small(t, b);
   }
   // A^t = (A^{t/2^k})^{2^k}, each factor within the series' range.
   int halvings = 0;
@@ -479,7 +487,7 @@ Affine2 AffinePowers::at(double t) const {
     step /= 2.0;
     ++halvings;
   }
-  Affine2 result = at_small(step);
+  Affine2 result = at_small(step, b);
   for (int i = 0; i < halvings; ++i) result = compose(result, result);
   return result;
 }
@@ -491,6 +499,13 @@ AffinePowers SteadyAffineMorph::checked(const Affine2& B, const Affine2& C) {
   try {
     return AffinePowers(A);
   } catch (const NoRealLogarithm& error) {
+    if (!(A.L.determinant() > 0.0) && A.L.allFinite()) {
+      throw NoRealLogarithm(std::string("no SAM exists between these poses: one is mirrored and "
+                                        "the other is not (") +
+                                error.what() +
+                                "); no middle pose can help: mirror both poses or neither",
+                            error.root_case());
+    }
     throw NoRealLogarithm(std::string("no SAM exists between these poses: A = C o B^-1 has no "
                                       "real power (") +
                               error.what() +
@@ -501,7 +516,25 @@ AffinePowers SteadyAffineMorph::checked(const Affine2& B, const Affine2& C) {
 }
 
 SteadyAffineMorph::SteadyAffineMorph(const Affine2& B, const Affine2& C)
-    : B_(B), powers_(checked(B, C)) {}
+    : B_(B), C_(C), powers_(checked(B, C)), translation_change_(C.b - B.b) {}
+
+// A^u o B = [L^u L_B | b_B + g_u(L) (b_C - b_B)], L the linear part of A and
+// g_u(L) = (L^u - I)(L - I)^-1: the translation of A^u o B written without
+// A's own translation b_C - L b_B, which is huge when B is small (a motion
+// from a pose 1e-8 the size of the other) and would cancel in L^u b_B + g_u b.
+Affine2 SteadyAffineMorph::at(double u) const {
+  if (u == 0.0) return B_;
+  if (u == 1.0) return C_;
+  const Affine2 power = powers_.power_with_translation(u, translation_change_);
+  return Affine2{power.L * B_.L, B_.b + power.b};
+}
+
+Affine2 SteadyAffineMorph::velocity(double u) const {
+  // d/du: L' = log(L) L(u); b' = L^u l(L) (b_C - b_B), l(L) = log(L) (L - I)^-1.
+  const Affine2 power = powers_.power_with_translation(u, translation_change_);
+  return Affine2{powers_.linear_log() * power.L * B_.L,
+                 power.L * powers_.log_translation(translation_change_)};
+}
 
 Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t) {
   return SteadyAffineMorph(B, C).at(t);

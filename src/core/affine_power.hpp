@@ -96,6 +96,10 @@ class AffinePowers {
   // A non-finite t gives a non-finite affinity (NaN), as an overflow does.
   Affine2 at(double t) const;
 
+  // The power of [L | b], the affinity with A's linear part and another
+  // translation b: [L^t | g_t(L) b], g_t(L) = (L^t - I)(L - I)^-1.
+  Affine2 power_with_translation(double t, const Eigen::Vector2d& b) const;
+
   RootCase root_case() const { return case_; }
   const Affine2& affinity() const { return A_; }
 
@@ -103,13 +107,16 @@ class AffinePowers {
   // field x -> log(L) x + v of the SAM, the same at every time (Sec. 2.3 (6)).
   const Eigen::Matrix2d& linear_log() const { return C_; }
   Eigen::Vector2d velocity_translation() const { return v_; }
+  // The translation of log [L | b] for another translation b: l(L) b with
+  // l(lambda) = ln(lambda)/(lambda - 1).
+  Eigen::Vector2d log_translation(const Eigen::Vector2d& b) const { return log_ratio_ * b; }
 
  private:
   // How g_t(L) = (L^t - I)(L - I)^-1, the translation part of A^t applied to
   // b, is computed (limits.hpp, "EAR").
   enum class Translation { unit_series, fixed_point, eigenvalues };
 
-  Affine2 at_small(double t) const;         // |t| <= limits::kUnitSeriesMaxTime, or any t
+  Affine2 at_small(double t, const Eigen::Vector2d& b) const;  // |t| <= kUnitSeriesMaxTime, or any t
   Eigen::Matrix2d power_of_linear(double t) const;          // L^t
   Eigen::Matrix2d power_minus_identity(double t) const;     // L^t - I, exact near t = 0
   Eigen::Matrix2d unit_function(double f1, double f2) const;  // f(E) from f(mu1), f(mu2)
@@ -125,7 +132,8 @@ class AffinePowers {
   Eigen::Matrix2d E_;        // L - I
   double trace_E_ = 0.0, det_E_ = 0.0;
   double mu1_ = 0.0, mu2_ = 0.0;  // the eigenvalues of E (Translation::eigenvalues: real)
-  Eigen::Vector2d q_;        // the fixed point (Translation::fixed_point)
+  Eigen::Matrix2d inverse_I_minus_L_;  // (I - L)^-1 (Translation::fixed_point)
+  Eigen::Matrix2d log_ratio_;          // l(L) = log(L) (L - I)^-1
 };
 
 // A^t (builds AffinePowers; use the class for many t).
@@ -137,13 +145,17 @@ Affine2 affine_power(const Affine2& A, double t);
 class SteadyAffineMorph {
  public:
   SteadyAffineMorph(const Affine2& B, const Affine2& C);
-  Affine2 at(double t) const { return compose(powers_.at(t), B_); }
+  // A^u o B; exactly B at u = 0 and C at u = 1.
+  Affine2 at(double u) const;
+  // d/du of at(u), as (dL/du, db/du) (Sec. 2.3 (6): log(A) applied to the pose).
+  Affine2 velocity(double u) const;
   const AffinePowers& powers() const { return powers_; }
 
  private:
   static AffinePowers checked(const Affine2& B, const Affine2& C);
-  Affine2 B_;
+  Affine2 B_, C_;
   AffinePowers powers_;
+  Eigen::Vector2d translation_change_;  // b_C - b_B
 };
 
 Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t);

@@ -87,8 +87,17 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subd
         span_poses_ = subdivided(std::move(span_poses_), 1);
       } catch (const NoRealLogarithm& error) {
         throw NoSamBetweenPoses(error, 0,
-                                "between poses of subdivision step " + std::to_string(step + 1) +
-                                    " of the four-point scheme (Sec. 7.3)");
+                                "between poses made by subdivision step " + std::to_string(step + 1) +
+                                    " of the four-point scheme (Sec. 7.3); at most " +
+                                    std::to_string(step) + " \"subdivisions\" work here");
+      }
+    }
+    for (std::size_t i = 0; i + 1 < span_poses_.size(); ++i) {
+      if (!(span_poses_[i].t < span_poses_[i + 1].t)) {
+        throw std::invalid_argument(
+            "four-point-SAM: two knots are too close for " + std::to_string(subdivisions) +
+            " subdivisions (the middle time of a span rounds onto a knot near t = " +
+            std::to_string(span_poses_[i].t) + ")");
       }
     }
   }
@@ -185,10 +194,8 @@ Affine2 PoseMotion::velocity(double t) const {
     case PoseMethod::four_point: {
       const std::size_t i = span_of(t);
       const double duration = span_poses_[i + 1].t - span_poses_[i].t;
-      const AffinePowers& powers = spans_[i].powers();
-      const Affine2 pose = evaluate(t);
-      const Eigen::Matrix2d& C = powers.linear_log();
-      return {C * pose.L / duration, (C * pose.b + powers.velocity_translation()) / duration};
+      const Affine2 rate = spans_[i].velocity((t - span_poses_[i].t) / duration);
+      return {rate.L / duration, rate.b / duration};
     }
     case PoseMethod::linear: {
       const std::size_t i = span_of(t);

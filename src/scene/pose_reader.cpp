@@ -87,12 +87,15 @@ Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::stri
   }
   // A pose may reverse orientation (a mirrored shape); the SAM between two
   // poses needs C o B^-1 to preserve it, which the motion checks. A pose must
-  // be invertible: |det| above 1e-14 of |L|_F^2 (|det| = |L|_F^2 / 2 for a
-  // similarity).
+  // be invertible, numerically: |det| above 1e-16 of |L|_F^2, which is about
+  // the ratio of its singular values (|det| = |L|_F^2 / 2 for a similarity):
+  // a matrix singular but for rounding, such as [[0.1, 0.3], [0.2, 0.6]], is
+  // below; a stretch diag(1e7, 1e-7) (ratio 1e-14) is above.
   const double det = A.L.determinant();
-  if (!(std::abs(det) > 1e-14 * A.L.squaredNorm()) || !std::isfinite(det)) {
-    reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {}: the pose "
-                                     "is singular (it flattens the plane onto a line or a point)",
+  if (!(std::abs(det) > 1e-16 * A.L.squaredNorm()) || !std::isfinite(det)) {
+    reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {} (its "
+                                     "singular values differ by more than 1e16): the pose is "
+                                     "singular, it flattens the plane onto a line or a point",
                                      number_text(det)));
   }
   return A;

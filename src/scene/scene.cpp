@@ -362,6 +362,8 @@ class SceneReader {
       (void)PoseMotion(method, poses, subdivisions);
     } catch (const NoSamBetweenPoses& error) {
       fail(pointer, no_sam_reason(error, method));
+    } catch (const std::invalid_argument& error) {
+      fail(pointer, error.what());
     }
   }
 
@@ -633,6 +635,8 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
     (void)PoseMotion(method, scene.poses, scene.subdivisions);
   } catch (const NoSamBetweenPoses& error) {
     throw SceneError(scene.path, "/poses", no_sam_reason(error, method));
+  } catch (const std::invalid_argument& error) {
+    throw SceneError(scene.path, "/poses", error.what());
   }
   scene.pose_method = method;
   scene.method_name = std::string(about.id);

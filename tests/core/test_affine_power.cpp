@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -576,6 +577,26 @@ TEST(SteadyAffineMorph, VelocityConstantInTheLocalFrame) {
       return Matrix3d(linear(t).inverse() * (linear(t + h) - linear(t - h)) / (2.0 * h));
     };
     EXPECT_GT((linear_local(0.75) - linear_local(0.25)).norm(), 1e-4 * (1.0 + linear_local(0.25).norm()));
+  }
+}
+
+// From a pose 1e-50 the size of the other: A = C o B^-1 has a huge
+// translation, which the SAM's translation b_B + g_u(L)(b_C - b_B) never forms.
+// Closed form for B = [s R(theta) | b_B], C = identity: L_A = R(-theta)/s, and
+// in complex numbers the translation is (1 - g_u(lambda)) b_B, lambda = e^{-i theta}/s.
+TEST(SteadyAffineMorph, FromATinyPose) {
+  for (const double s : {1e-8, 1e-50}) {
+    const double theta = 0.4;
+    const Affine2 B{s * rotation(theta), Vector2d(3.0, 4.0)};
+    const SteadyAffineMorph sam(B, Affine2::identity());
+    for (const double u : {0.5, 1.5}) {
+      const std::complex<double> lambda = std::polar(1.0 / s, -theta);
+      const std::complex<double> g = (std::pow(lambda, u) - 1.0) / (lambda - 1.0);
+      const std::complex<double> b = (1.0 - g) * std::complex<double>(3.0, 4.0);
+      const Affine2 pose = sam.at(u);
+      EXPECT_LT(std::abs(std::complex<double>(pose.b.x(), pose.b.y()) - b), 1e-13 * std::abs(b))
+          << "s = " << s << ", u = " << u;
+    }
   }
 }
 

@@ -126,14 +126,26 @@ TEST(PoseScene, NoSamIsRefusedWithTheIssuesMessage) {
 TEST(PoseScene, BadPosesNameTheValue) {
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[1, 2, 0], [0.5, 1, 0]]}]})"),
-            "s.json: /poses/1/matrix: the linear part [[a, b], [c, d]] has determinant 0: the pose is "
-            "singular (it flattens the plane onto a line or a point)");
+            "s.json: /poses/1/matrix: the linear part [[a, b], [c, d]] has determinant 0 (its singular "
+            "values differ by more than 1e16): the pose is singular, it flattens the plane onto a "
+            "line or a point");
+  // A strong stretch is not singular.
+  EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[1e7, 0, 0], [0, 1e-7, 0]]}]})"),
+            "(no error)");
+  // Knots closer than the four-point subdivision can split.
+  const std::string close = error_of(R"({"method": "four-point-SAM", "subdivisions": 1, "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0.5, -1, 2], [1.2, 0.7, -1]]},
+      {"t": 1.0000000000000002, "matrix": [[0.4, -1, 2], [1.2, 0.7, -1]]}, {"t": 3, "matrix": [[1, 0, 5], [0, 1, 0]]}]})");
+  EXPECT_EQ(close.rfind("s.json: /poses: four-point-SAM: two knots are too close for 1 subdivisions", 0), 0u)
+      << close;
   // A pose and a mirrored one: no SAM (C o B^-1 reverses orientation).
   const std::string mirrored = error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[0, 1, 0], [1, 0, 0]]}]})");
   EXPECT_EQ(mirrored.rfind("s.json: /poses: no SAM exists between these poses: ", 0), 0u) << mirrored;
-  EXPECT_NE(mirrored.find("determinant -1 <= 0: it is not orientation-preserving"), std::string::npos)
-      << mirrored;
+  EXPECT_NE(mirrored.find("one is mirrored and the other is not"), std::string::npos) << mirrored;
+  EXPECT_NE(mirrored.find("determinant -1 <= 0"), std::string::npos) << mirrored;
+  EXPECT_NE(mirrored.find("no middle pose can help"), std::string::npos) << mirrored;
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "triangle": [[0, 0], [1, 1], [2, 2]]}]})"),
             "s.json: /poses/1/triangle: the triangle is degenerate (its points are collinear)");
