@@ -151,12 +151,18 @@ bool use_projectors(double gamma, double t) {
   return gamma > 0.0 && t * t * gamma > limits::kExpProjectors * limits::kExpProjectors;
 }
 
+// f(x + sigma) P+ + f(x - sigma) P-: a function of C = x I + M through its
+// spectral projectors P+- = (I +- M/sigma)/2 (real eigenvalues x +- sigma).
+template <typename Function>
+Matrix2d spectral(double x, const Matrix2d& M, double sigma, Function f) {
+  const Matrix2d half_M = M / (2.0 * sigma);
+  return f(x + sigma) * (0.5 * Matrix2d::Identity() + half_M) +
+         f(x - sigma) * (0.5 * Matrix2d::Identity() - half_M);
+}
+
 Matrix2d exp_of_parts(double x, const Matrix2d& M, double gamma, double t) {
   if (use_projectors(gamma, t)) {
-    const double sigma = std::sqrt(gamma);
-    const Matrix2d half_M = M / (2.0 * sigma);
-    return std::exp(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
-           std::exp(t * (x - sigma)) * (0.5 * Matrix2d::Identity() - half_M);
+    return spectral(x, M, std::sqrt(gamma), [t](double lambda) { return std::exp(t * lambda); });
   }
   const double z = t * t * gamma;
   return std::exp(t * x) * (cosh_sqrt(z) * Matrix2d::Identity() + t * sinh_sqrt_ratio(z) * M);
@@ -165,10 +171,7 @@ Matrix2d exp_of_parts(double x, const Matrix2d& M, double gamma, double t) {
 // e^{tC} - I, exact for small t: expm1 in each term.
 Matrix2d exp_of_parts_minus_identity(double x, const Matrix2d& M, double gamma, double t) {
   if (use_projectors(gamma, t)) {
-    const double sigma = std::sqrt(gamma);
-    const Matrix2d half_M = M / (2.0 * sigma);
-    return std::expm1(t * (x + sigma)) * (0.5 * Matrix2d::Identity() + half_M) +
-           std::expm1(t * (x - sigma)) * (0.5 * Matrix2d::Identity() - half_M);
+    return spectral(x, M, std::sqrt(gamma), [t](double lambda) { return std::expm1(t * lambda); });
   }
   // e^{tx} ch - 1 = expm1(tx) ch + (ch - 1).
   const double z = t * t * gamma;
