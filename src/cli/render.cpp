@@ -79,7 +79,8 @@ Scene fields for figures (see README "Figures" and schema/scene.schema.json):
   panels ["P1", {"method": "P2", "keyframes": [...], "title": "..."}, ...]
 Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
   shapes [{"outline": "F"} | {"triangle": "reference"} | {"polygon": [[x, y], ...]}],
-  layers [{"type": "shapes" | "poses" | "velocities" | "paths" | "existence" | "label", ...}],
+  layers [{"type": "shapes" | "poses" | "velocities" | "paths" | "existence" | "patch" |
+           "label", ...}],
   panels ["linear", {"method": "biarc-SAM", "poses": [...], "title": "..."}, ...]
 
 Examples:

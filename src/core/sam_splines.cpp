@@ -26,6 +26,15 @@ Affine2 left_control(const Affine2& A, const Affine2& B, const Affine2& C) {
   return sam_moved(sam(A, 0.75, B), C, 0.25, B);
 }
 
+Affine2 sam_patch(const Affine2& A, const Affine2& B, const Affine2& C, const Affine2& D, double u,
+                  double v) {
+  return sam(sam(A, u, B), v, sam(C, u, D));
+}
+
+Affine2 regular_patch_corner(const Affine2& A, const Affine2& B, const Affine2& C) {
+  return sam_moved(C, A, 1.0, B);
+}
+
 SamBiarc::SamBiarc(const Affine2& A, const Affine2& B, const Affine2& C)
     : A_(A), B_(B), C_(C), left_(left_control(A, B, C)), right_(left_control(C, B, A)) {}
 

@@ -44,6 +44,17 @@ class SamBiarc {
   Affine2 A_, B_, C_, left_, right_;
 };
 
+// The SAM patch (Sec. 7.3, Fig. 11) with control poses A (top left), B (top
+// right), C (bottom left), D (bottom right): rows of SAMs A-B and C-D, and a
+// SAM between the poses of each column, SAM(SAM(A, u, B), v, SAM(C, u, D)).
+Affine2 sam_patch(const Affine2& A, const Affine2& B, const Affine2& C, const Affine2& D, double u,
+                  double v);
+
+// The corner that makes a SAM patch regular in both directions (Sec. 7.3):
+// D = SAM(C, A, 1, B) = (B o A^-1) o C. Then the patch is G^u H^v A with
+// G = B o A^-1, H = C o A^-1: every row is the same regular pattern.
+Affine2 regular_patch_corner(const Affine2& A, const Affine2& B, const Affine2& C);
+
 // The polySAM through timed poses (knots strictly increasing): the SAM from
 // pose i to pose i+1 on [knots[i], knots[i+1]]; outside the knots the first
 // or last SAM extrapolates (Sec. 5.3).

@@ -8,6 +8,7 @@
 
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
+#include "core/sam_splines.hpp"
 #include "scene/sampling.hpp"
 
 namespace pita::render {
@@ -165,6 +166,42 @@ class PoseBuilder {
 
   void add(const scene::ExistenceLayer& layer) {
     for (Item& item : existence_drawing(layer, layer_).items) drawing_.items.push_back(std::move(item));
+  }
+
+  // Fig. 11: the shapes at sam_patch(A, B, C, D, i/(columns-1), j/(rows-1)).
+  void add(const scene::PatchLayer& layer) {
+    const std::vector<TimedPose>& poses = panel_.poses;
+    const std::size_t needed = layer.regular ? 3 : 4;
+    if (poses.size() < needed) {
+      fail(fmt::format("a patch takes the panel's first {} poses as corners (top left, top right, "
+                       "bottom left{}); the panel has {}",
+                       needed, layer.regular ? "" : ", bottom right", poses.size()));
+    }
+    const Affine2 &A = poses[0].pose, &B = poses[1].pose, &C = poses[2].pose;
+    try {
+      const Affine2 D = layer.regular ? regular_patch_corner(A, B, C) : poses[3].pose;
+      int index = 0;
+      for (int j = 0; j < layer.rows; ++j) {
+        const double v = static_cast<double>(j) / (layer.rows - 1);
+        for (int i = 0; i < layer.columns; ++i, ++index) {
+          const double u = static_cast<double>(i) / (layer.columns - 1);
+          const Affine2 pose = sam_patch(A, B, C, D, u, v);
+          if (!pose.L.allFinite() || !pose.b.allFinite()) fail("the patch overflows");
+          for (const scene::ShapeOutline& shape : panel_.shapes) {
+            LineStyle line = layer.line;
+            if (shape.color) line.color = *shape.color;
+            std::vector<Point> points = mapped(pose, shape);
+            if (layer.fill && shape.closed) {
+              push(index, FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity, line});
+            } else {
+              push(index, Polyline{std::move(points), shape.closed, line});
+            }
+          }
+        }
+      }
+    } catch (const NoRealLogarithm& error) {
+      fail(fmt::format("the patch needs a SAM that does not exist: {}", error.what()));
+    }
   }
 
   void add(const scene::LabelLayer& layer) {

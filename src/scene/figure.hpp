@@ -193,6 +193,15 @@ struct PathsLayer {  // "paths": the trajectory of each vertex of each shape
   LineStyle line{Color{0.55, 0.55, 0.55, 1.0}, 0.8, 1.0, {}};
 };
 
+struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses as corners
+  int columns = 5;                       // shapes per row, [2, 100]
+  int rows = 4;                          // shapes per column, [2, 100]
+  bool regular = false;                  // replace the 4th pose by SAM(C, A, 1, B)
+  LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
+  std::optional<Color> fill;
+  double fill_opacity = 0.25;
+};
+
 // "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)
 // classified by EAR's case selection on a grid of cells over a in [-pi, pi],
 // s in (0, 1]; cells without a SAM (G3) are filled; the boundary of Eq. 4,
@@ -207,7 +216,7 @@ struct ExistenceLayer {
 };
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

@@ -402,8 +402,11 @@ constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "r
                                                           "width", "opacity", "dash"};
 constexpr std::array<std::string_view, 7> kExistenceFields = {
     "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
-constexpr std::array<std::span<const std::string_view>, 6> kPoseLayerFields = {
-    kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields};
+constexpr std::array<std::string_view, 10> kPatchFields = {
+    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity"};
+constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
+    kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
+    kPatchFields};
 
 // A line style given as an object {"color", "width", "opacity", "dash"}.
 void read_line_object(const Fields& fields, std::string_view key, LineStyle& line) {
@@ -508,7 +511,17 @@ PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std
       read_line_object(fields, "trapezoid", layer.trapezoid);
       return layer;
     }
-    default: return read_label(fields);
+    case 5: return read_label(fields);
+    default: {
+      PatchLayer layer;
+      fields.integer("columns", 2, 100, layer.columns);
+      fields.integer("rows", 2, 100, layer.rows);
+      fields.boolean("regular", layer.regular);
+      read_line(fields, layer.line);
+      fields.color("fill", layer.fill);
+      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+      return layer;
+    }
   }
 }
 

@@ -25,8 +25,8 @@ std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
                                const std::string& pointer);
 
 // The layer types of pose scenes (README "Pose scenes").
-inline constexpr std::array<std::string_view, 6> kPoseLayerTypes = {
-    "shapes", "poses", "velocities", "paths", "existence", "label"};
+inline constexpr std::array<std::string_view, 7> kPoseLayerTypes = {
+    "shapes", "poses", "velocities", "paths", "existence", "label", "patch"};
 
 // "layers" of a pose scene or panel.
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,

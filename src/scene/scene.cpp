@@ -50,7 +50,8 @@ constexpr std::array<std::string_view, 7> kPosePanelFields = {
 // Whether a layer needs the motion (every one but "existence" and "label").
 bool needs_motion(const std::vector<PoseLayer>& layers) {
   return std::any_of(layers.begin(), layers.end(), [](const PoseLayer& layer) {
-    return !std::holds_alternative<ExistenceLayer>(layer) && !std::holds_alternative<LabelLayer>(layer);
+    return !std::holds_alternative<ExistenceLayer>(layer) && !std::holds_alternative<LabelLayer>(layer) &&
+           !std::holds_alternative<PatchLayer>(layer);
   });
 }
 

@@ -171,3 +171,33 @@ TEST(PoseMotion, FourPointPolySam) {
 
 }  // namespace
 }  // namespace pita
+
+namespace pita {
+namespace {
+
+// The SAM patch (Sec. 7.3, Fig. 11).
+TEST(SamPatch, CornersAndRegularRows) {
+  const Affine2 A = pose(1.0, 0.0, 0.0, 1.0, 0.0, 5.0), B = pose(0.5, -0.9, 0.9, 0.5, 8.0, 6.0),
+                C = pose(1.2, 0.3, 0.0, 0.8, 0.5, 0.0), D = pose(0.3, -1.1, 1.0, 0.6, 9.0, 0.0);
+  EXPECT_LT(distance(sam_patch(A, B, C, D, 0.0, 0.0), A), 1e-15);
+  EXPECT_LT(distance(sam_patch(A, B, C, D, 1.0, 0.0), B), 1e-12);
+  EXPECT_LT(distance(sam_patch(A, B, C, D, 0.0, 1.0), C), 1e-12);
+  EXPECT_LT(distance(sam_patch(A, B, C, D, 1.0, 1.0), D), 1e-12);
+  // Regular: every row is the pattern G^u (G = B o A^-1) applied to its first pose.
+  const Affine2 regular_D = regular_patch_corner(A, B, C);
+  EXPECT_LT(distance(regular_D, compose(compose(B, inverse(A)), C)), 1e-12);
+  const AffinePowers G(compose(B, inverse(A)));
+  for (const double v : {0.0, 0.4, 1.0}) {
+    const Affine2 first = sam_patch(A, B, C, regular_D, 0.0, v);
+    for (const double u : {0.25, 0.5, 1.0}) {
+      EXPECT_LT(distance(sam_patch(A, B, C, regular_D, u, v), compose(G.at(u), first)), 1e-11)
+          << "u = " << u << ", v = " << v;
+    }
+  }
+  // Not so for a general fourth corner.
+  const Affine2 first = sam_patch(A, B, C, D, 0.0, 0.5);
+  EXPECT_GT(distance(sam_patch(A, B, C, D, 0.5, 0.5), compose(G.at(0.5), first)), 1e-3);
+}
+
+}  // namespace
+}  // namespace pita

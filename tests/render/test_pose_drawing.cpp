@@ -114,6 +114,33 @@ TEST(PoseDrawing, PosesLayerDrawsEachControlPose) {
   EXPECT_LT(std::abs(last.contours[0][1] - through(homogeneous(scene.poses[1].pose), {1.0, 0.0})), 1e-15);
 }
 
+// Fig. 11: a regular patch of 3 x 2 shapes from the first three poses; its
+// corners are the poses (and the computed fourth corner), and a patch asks
+// for enough poses.
+TEST(PoseDrawing, PatchCornersAreThePoses) {
+  scene::Scene scene = sam_scene({});
+  scene.panels[0].poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
+  scene::PatchLayer layer;
+  layer.columns = 3;
+  layer.rows = 2;
+  layer.regular = true;
+  scene.pose_layers = {layer};
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 6u);
+  const auto corner = [&](std::size_t item) {
+    return std::get<Polyline>(drawing.items[item].shape).points[1];  // image of (1, 0)
+  };
+  const auto& poses = scene.panels[0].poses;
+  EXPECT_LT(std::abs(corner(0) - through(homogeneous(poses[0].pose), {1.0, 0.0})), 1e-12);
+  EXPECT_LT(std::abs(corner(2) - through(homogeneous(poses[1].pose), {1.0, 0.0})), 1e-12);
+  EXPECT_LT(std::abs(corner(3) - through(homogeneous(poses[2].pose), {1.0, 0.0})), 1e-12);
+  const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
+                            homogeneous(poses[2].pose);
+  EXPECT_LT(std::abs(corner(5) - through(D, {1.0, 0.0})), 1e-11);
+  scene.panels[0].poses.resize(2);
+  EXPECT_THROW(pose_panel_drawing(scene, scene.panels[0]), RenderError);
+}
+
 // Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
 TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
   scene::ExistenceLayer layer;

@@ -165,7 +165,7 @@ TEST(PoseScene, BadPosesNameTheValue) {
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}], "layers": [{"type": "keyframes"}]})"),
             "s.json: /layers/0/type: layer type \"keyframes\" draws arrows (keyframe scenes); a pose "
-            "scene's layers: shapes, poses, velocities, paths, existence, label");
+            "scene's layers: shapes, poses, velocities, paths, existence, label, patch");
 }
 
 TEST(PoseScene, MethodOverride) {

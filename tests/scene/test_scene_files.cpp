@@ -145,6 +145,8 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
       {"velocities", {"type", "scale", "color", "width", "opacity", "dash", "samples", "range"}},
       {"paths", {"type", "samples", "range", "color", "width", "opacity", "dash"}},
       {"existence", {"type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"}},
+      {"patch", {"type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill",
+                 "fill_opacity"}},
   };
   std::vector<std::string> types;
   for (const auto& [type, fields] : layers) {
@@ -154,7 +156,7 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
     EXPECT_EQ(keys_of(layer.at("properties")), fields);
     EXPECT_EQ(layer.at("additionalProperties"), false);
   }
-  types.push_back("label");
+  types.insert(types.end() - 1, "label");  // in the order of figure_reader.hpp's kPoseLayerTypes
   EXPECT_EQ(definitions.at("poseLayer").at("properties").at("type").at("enum"), nlohmann::json(types));
   EXPECT_EQ(keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
             (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers",
