@@ -302,15 +302,15 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
 }
 
 
-// (I - L) q = b, scaled by 2^-e (e = exponent_E): (one I - L^) q = 2^-e b,
-// and det(one I - L^) = det(L^ - one I) = det E^ in 2D. Precondition: 1 is
-// not an eigenvalue of L.
-Vector2d solve_fixed_point(const Affine2& A, const Characteristics& k) {
+// (I - L)^-1 on the scaled matrix: 2^-e (one I - L^)^-1 with e = exponent_E,
+// one = 2^-e, and det(one I - L^) = det(L^ - one I) = det E^ in 2D.
+// Precondition: 1 is not an eigenvalue of L.
+Matrix2d inverse_of_identity_minus(const Matrix2d& L, const Characteristics& k) {
   const double scale = std::ldexp(1.0, -k.exponent_E);
-  const Matrix2d S = A.L * scale;
+  const Matrix2d S = L * scale;
   Matrix2d adjugate;
   adjugate << scale - S(1, 1), S(0, 1), S(1, 0), scale - S(0, 0);
-  return adjugate * (A.b * scale) / k.det_E;
+  return adjugate * (scale / k.det_E);
 }
 
 }  // namespace
@@ -343,7 +343,7 @@ std::optional<Vector2d> fixed_point(const Affine2& A) {
   const RootCase kase = select_case(k);
   if (kase == RootCase::S1) return std::nullopt;
   if (kase == RootCase::G3 && k.det_E == 0.0) return std::nullopt;  // eigenvalue 1 (det <= 0)
-  return solve_fixed_point(A, k);
+  return Vector2d(inverse_of_identity_minus(A.L, k) * A.b);  // (I - L) q = b
 }
 
 AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
@@ -401,12 +401,8 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
       break;
     }
     case Translation::fixed_point: {
-      // (I - L)^-1 on the scaled matrix (solve_fixed_point), and C (L - I)^-1.
-      const double scale = std::ldexp(1.0, -k.exponent_E);
-      const Matrix2d S = A.L * scale;
-      inverse_I_minus_L_ << scale - S(1, 1), S(0, 1), S(1, 0), scale - S(0, 0);
-      inverse_I_minus_L_ *= scale / k.det_E;
-      log_ratio_ = -C_ * inverse_I_minus_L_;
+      inverse_I_minus_L_ = inverse_of_identity_minus(A.L, k);
+      log_ratio_ = -C_ * inverse_I_minus_L_;  // C (L - I)^-1
       break;
     }
     case Translation::eigenvalues: {

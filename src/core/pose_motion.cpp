@@ -226,9 +226,4 @@ Affine2 PoseMotion::velocity(double t) const {
   return {};
 }
 
-std::optional<RootCase> PoseMotion::span_case(std::size_t i) const {
-  if (i >= spans_.size()) return std::nullopt;
-  return spans_[i].powers().root_case();
-}
-
 }  // namespace pita

@@ -94,8 +94,6 @@ class PoseMotion {
 
   PoseMethod method() const { return method_; }
   const std::vector<TimedPose>& poses() const { return poses_; }
-  // The EAR case of the SAM between poses i and i + 1 (SAM, polySAM).
-  std::optional<RootCase> span_case(std::size_t i) const;
 
  private:
   Affine2 evaluate(double t) const;

@@ -1,8 +1,6 @@
 #include "core/sam_splines.hpp"
 
 #include <algorithm>
-#include <stdexcept>
-#include <utility>
 
 namespace pita {
 
@@ -41,29 +39,6 @@ SamBiarc::SamBiarc(const Affine2& A, const Affine2& B, const Affine2& C)
 Affine2 SamBiarc::at(double u) const {
   if (u <= 0.5) return bezier_sam(A_, left_, B_, 2.0 * u);
   return bezier_sam(B_, right_, C_, 2.0 * u - 1.0);
-}
-
-PolySam::PolySam(std::vector<double> knots, std::vector<Affine2> poses)
-    : knots_(std::move(knots)), poses_(std::move(poses)) {
-  if (knots_.size() != poses_.size() || poses_.size() < 2) {
-    throw std::invalid_argument("a polySAM needs at least two poses, one knot each");
-  }
-  for (std::size_t i = 0; i + 1 < poses_.size(); ++i) {
-    if (!(knots_[i] < knots_[i + 1])) throw std::invalid_argument("polySAM knots must increase");
-    spans_.emplace_back(poses_[i], poses_[i + 1]);
-  }
-}
-
-std::size_t PolySam::span(double t) const {
-  const auto upper = std::upper_bound(knots_.begin() + 1, knots_.end() - 1, t);
-  return static_cast<std::size_t>(upper - (knots_.begin() + 1));
-}
-
-Affine2 PolySam::at(double t) const {
-  const std::size_t i = span(t);
-  if (t == knots_[i]) return poses_[i];
-  if (t == knots_[i + 1]) return poses_[i + 1];
-  return spans_[i].at((t - knots_[i]) / (knots_[i + 1] - knots_[i]));
 }
 
 std::vector<Affine2> subdivide_four_point(const std::vector<Affine2>& poses) {

@@ -55,22 +55,6 @@ Affine2 sam_patch(const Affine2& A, const Affine2& B, const Affine2& C, const Af
 // G = B o A^-1, H = C o A^-1: every row is the same regular pattern.
 Affine2 regular_patch_corner(const Affine2& A, const Affine2& B, const Affine2& C);
 
-// The polySAM through timed poses (knots strictly increasing): the SAM from
-// pose i to pose i+1 on [knots[i], knots[i+1]]; outside the knots the first
-// or last SAM extrapolates (Sec. 5.3).
-class PolySam {
- public:
-  PolySam(std::vector<double> knots, std::vector<Affine2> poses);
-  Affine2 at(double t) const;
-  // The index of the span holding t (clamped to the first and last).
-  std::size_t span(double t) const;
-
- private:
-  std::vector<double> knots_;
-  std::vector<Affine2> poses_;
-  std::vector<SteadyAffineMorph> spans_;
-};
-
 // One four-point subdivision step of a polySAM's control poses (Sec. 7.3):
 // n poses -> 2n - 1, the old ones kept, each new one the SAM average of two
 // parabolic predictions left(...) = SAM(SAM(A, 0.625, B), C, 0.125, B).

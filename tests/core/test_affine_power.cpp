@@ -180,6 +180,8 @@ TEST(LinearLog, ExpOfLogIsL) {
     const Matrix2d L = random.steady(3.0).L;
     const Matrix2d C = linear_log(L);
     EXPECT_LT(relative_error(linear_exp(C), L), 1e-13) << L;
+    const Matrix2d root = linear_power(L, 0.5);
+    EXPECT_LT(relative_error(Matrix2d(root * root), L), 1e-13) << L;
   }
 }
 

@@ -38,7 +38,7 @@ TEST(SamSplines, TheFigureSevenPairHasNoSam) {
 }
 
 TEST(SamSplines, PolySamInterpolatesEveryPose) {
-  const PolySam motion({0.0, 0.4, 1.0}, {kA, kB, kC});
+  const PoseMotion motion(PoseMethod::poly_sam, {{0.0, kA}, {0.4, kB}, {1.0, kC}});
   EXPECT_LT(distance(motion.at(0.0), kA), 1e-15);
   EXPECT_LT(distance(motion.at(0.4), kB), 1e-15);
   EXPECT_LT(distance(motion.at(1.0), kC), 1e-15);
@@ -60,7 +60,7 @@ TEST(SamSplines, BiarcInterpolatesAndIsSmoothAtTheMiddlePose) {
     return gap / h;
   };
   EXPECT_LT(velocity_gap([&](double u) { return biarc.at(u); }, 0.5), 1e-4);
-  const PolySam poly({0.0, 0.5, 1.0}, {kA, kB, kC});
+  const PoseMotion poly(PoseMethod::poly_sam, {{0.0, kA}, {0.5, kB}, {1.0, kC}});
   EXPECT_GT(velocity_gap([&](double u) { return poly.at(u); }, 0.5), 0.5);
 }
 

@@ -9,18 +9,12 @@
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.json");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 // A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
 std::string p6_with(const std::string& extra) {

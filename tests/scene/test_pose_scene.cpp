@@ -6,18 +6,12 @@
 #include <string>
 
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.json");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 Eigen::Vector2d image(const Affine2& A, double x, double y) { return apply(A, Eigen::Vector2d(x, y)); }
 

@@ -12,21 +12,14 @@
 #include <unistd.h>
 
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The message of the SceneError that parsing `text` throws, or "(no error)".
-std::string error_of(const std::string& text) {
-  try {
-    parse_scene(text, "s.json");
-  } catch (const SceneError& error) {
-    return error.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
 
 // A P6 scene whose middle keyframe is `middle` (JSON text).
 std::string p6_with_middle(const std::string& middle) {
