@@ -12,10 +12,13 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "core/ease.hpp"
+#include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
 #include "scene/frames.hpp"
-#include "scene/sampling.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -86,106 +89,37 @@ std::vector<double> parse_times(const std::string& text) {
   return times;
 }
 
-// "P6 (La-LP)", "SMA".
-std::string method_label(Method method) {
-  const MethodInfo& about = info(method);
-  if (about.mnemonic.empty() || about.mnemonic == about.id) return std::string(about.id);
-  return fmt::format("{} ({})", about.id, about.mnemonic);
+// The frames at the scene's uniform times (--samples N, else the scene's
+// "samples", else kDefaultSamples) or at the times given with --t.
+std::vector<double> sample_times(const motion::SceneMotion& motion, std::optional<int> samples,
+                                 const scene::Scene& scene) {
+  return motion::uniform_times(motion, samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
 }
 
-// Evenly spaced times from the first knot to the last: --samples N, else the
-// scene's "samples", else kDefaultSamples.
-std::vector<double> uniform_sample_times(std::optional<int> samples, const scene::Scene& scene) {
-  const int count = samples.value_or(scene.samples.value_or(scene::kDefaultSamples));
-  const bool poses = scene.kind == scene::SceneKind::poses;
-  const double first = poses ? scene.poses.front().t : scene.keyframes.front().t;
-  const double last = poses ? scene.poses.back().t : scene.keyframes.back().t;
-  std::vector<double> times = scene::uniform_times(first, last, count);
-  for (double t : times) {
-    if (!std::isfinite(t)) {
-      throw InputError(fmt::format("{}: the knots are too far apart to sample between them",
-                                   scene.path));
-    }
+// The eases a scene may name, from core/ease.hpp's tables.
+std::string ease_names() {
+  std::string names;
+  for (const NamedEase& named : named_eases()) names += fmt::format("\"{}\", ", named.name);
+  std::string families;
+  for (const EaseFamily& family : ease_families()) {
+    families += fmt::format("\n                  {}", family.syntax);
   }
-  return times;
+  return names + "or" + families;
 }
 
-// The poses of a pose scene's motion (README "Pose scenes").
-std::vector<scene::PoseFrame> evaluate_poses(const scene::Scene& scene,
-                                             const std::vector<double>& times) {
-  const std::string_view id = info(scene.pose_method).id;
-  std::optional<PoseMotion> motion;
-  try {
-    motion.emplace(scene.pose_method, scene.poses, scene.subdivisions);
-  } catch (const NoSamBetweenPoses& error) {
-    throw InputError(fmt::format("{}: /poses: {}", scene.path, scene::no_sam_reason(error, scene.pose_method)));
-  } catch (const std::invalid_argument& error) {
-    throw InputError(fmt::format("{}: /poses: {}", scene.path, error.what()));
-  }
-  std::vector<scene::PoseFrame> frames;
-  frames.reserve(times.size());
-  for (double t : times) {
-    Affine2 pose;
-    try {
-      pose = motion->at(t);
-    } catch (const NoRealLogarithm& error) {
-      throw InputError(fmt::format("{}: /poses: method {} is undefined at t = {}: {}", scene.path,
-                                   id, t, error.what()));
-    }
-    if (!pose.L.allFinite() || !pose.b.allFinite()) {
-      throw InputError(fmt::format("{}: /poses: method {} has no finite pose at t = {}: its numbers "
-                                   "overflow double precision there (t far outside the knots, or poses of extreme scales)",
-                                   scene.path, id, t));
-    }
-    frames.push_back({t, pose});
-  }
-  return frames;
-}
-
-std::vector<scene::Frame> evaluate(const scene::Scene& scene, const std::vector<double>& times) {
-  const std::string label = method_label(scene.method);
-  std::unique_ptr<Motion> motion;
-  try {
-    motion = make_motion(scene.method, scene.keyframes, scene.options);
-  } catch (const MotionDomainError& error) {
-    throw InputError(fmt::format("{}: /keyframes: method {} has no motion through these "
-                                 "keyframes: {}",
-                                 scene.path, label, error.what()));
-  } catch (const std::invalid_argument& error) {
-    throw InputError(fmt::format("{}: /keyframes: method {} refuses these keyframes: {}",
-                                 scene.path, label, error.what()));
-  }
-
-  std::vector<scene::Frame> frames;
-  frames.reserve(times.size());
-  for (double t : times) {
-    Arrow arrow;
-    try {
-      arrow = motion->at(t);
-    } catch (const MotionDomainError& error) {
-      throw InputError(fmt::format("{}: /keyframes: method {} is undefined at t = {}: {}",
-                                   scene.path, label, t, error.what()));
-    } catch (const std::invalid_argument& error) {
-      throw InputError(fmt::format("{}: /keyframes: method {} is undefined at t = {}: {}",
-                                   scene.path, label, t, error.what()));
-    }
-    const Point q = arrow.q();
-    if (!is_finite(arrow) || !std::isfinite(q.real()) || !std::isfinite(q.imag())) {
-      throw InputError(fmt::format(
-          "{}: /keyframes: method {} has no finite frame at t = {}: its numbers overflow double "
-          "precision there (t too far outside the knots, knots very uneven, or magnitudes of very "
-          "different sizes)",
-          scene.path, label, t));
-    }
-    frames.push_back({t, arrow});
-  }
-  return frames;
-}
-
-std::string methods_table() {
+// Every method of the registry (core/methods.hpp), arrows then poses.
+std::string methods_table(MotionKind kind) {
   std::string table;
-  for (const MethodInfo& method : all_methods()) {
-    table += fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title);
+  for (const MethodEntry& method : every_method()) {
+    if (method.kind != kind) continue;
+    const std::string count = method.min_count == method.max_count
+                                  ? std::to_string(method.min_count)
+                                  : method.max_count >= scene::kMaxPoses
+                                        ? fmt::format("{}+", method.min_count)
+                                        : fmt::format("{}-{}", method.min_count, method.max_count);
+    table += kind == MotionKind::arrows
+                 ? fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title)
+                 : fmt::format("  {:<15} {:<4} {}\n", method.id, count, method.title);
   }
   return table;
 }
@@ -213,11 +147,15 @@ Scene format (JSON; schema/scene.schema.json describes every field):
     q          end point [x, y], instead of m and w: the zero-turn arrow from p to q
     turns      integer (optional): adds 2*pi*turns to the winding
   samples      frames printed when neither --samples nor --t is given (default 9)
+  timing       optional, how scene time runs through the motion (README "Timing"):
+               {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}
+               E: )" + ease_names() + R"(
+               frames still report the scene time t they were asked for
   options      anchor (P2): "start" | "midpoint"; path_mean, magnitude_mean (SMA, P9):
                "arithmetic" | "geometric" | "harmonic"
 
 Methods:
-)" + methods_table() +
+)" + methods_table(MotionKind::arrows) +
          R"(
 SMA takes two keyframes, every other method three. Pa-Po, LS-Ca and LS-LP are the
 independent combinations of Fig. 7 outside the paper's basket.
@@ -231,9 +169,10 @@ Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
              {"t": 1, "triangle": [[6.5, 0.5], [7.2, 2.9], [4.9, 1.6]]}]}
   matrix       [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty], a d - b c != 0
   triangle     the images of "reference_triangle" (default [[0, 0], [1, 0], [0, 1]])
-  method       SAM (2 poses), polySAM (2 or more), bezier-SAM (3 or 4), biarc-SAM (3),
-               linear (2 or more: linear interpolation of the matrices), four-point-SAM
-               (3 or more; "subdivisions": 0-6 steps, default 4)
+  method       a pose method below (any case); "subdivisions": 0-6 steps of four-point-SAM
+               (default 4)
+  Pose methods (id, poses, what):
+)" + methods_table(MotionKind::poses) + R"(
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]}, ...]}
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
@@ -289,13 +228,14 @@ ExitCode run_eval(const EvalOptions& options) {
     std::optional<Method> method_override;
     std::optional<PoseMethod> pose_method_override;
     if (options.method) {
-      pose_method_override = find_pose_method(*options.method);
-      if (!pose_method_override) {
-        try {
-          method_override = scene::resolve_method(*options.method);
-        } catch (const std::invalid_argument& error) {
-          throw InputError(fmt::format("--method: {}", error.what()));
-        }
+      const MethodEntry* entry = find_method_entry(*options.method);
+      if (entry == nullptr) {
+        throw InputError(fmt::format("--method: {}", unknown_method_reason(*options.method)));
+      }
+      if (entry->kind == MotionKind::poses) {
+        pose_method_override = entry->pose_method;
+      } else {
+        method_override = entry->method;
       }
     }
     std::optional<std::vector<double>> times;
@@ -308,17 +248,17 @@ ExitCode run_eval(const EvalOptions& options) {
     if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
     std::string text;  // the whole output is built before anything is printed
+    if (scene.kind == scene::SceneKind::poses && scene.poses.empty()) {
+      throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
+    }
+    const motion::SceneMotion motion = motion::build_motion(scene);
+    const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
     if (scene.kind == scene::SceneKind::poses) {
-      if (scene.poses.empty()) {
-        throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
-      }
-      const std::vector<scene::PoseFrame> frames =
-          evaluate_poses(scene, times ? *times : uniform_sample_times(samples, scene));
+      const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, at);
       text = options.format == "csv" ? scene::pose_frames_to_csv(frames)
                                      : scene::pose_frames_to_json(scene.method_name, frames);
     } else {
-      const std::vector<scene::Frame> frames =
-          evaluate(scene, times ? *times : uniform_sample_times(samples, scene));
+      const std::vector<scene::Frame> frames = motion::sample_arrows(motion, at);
       text = options.format == "csv" ? scene::frames_to_csv(frames)
                                      : scene::frames_to_json(scene.method_name, frames);
     }
@@ -332,6 +272,9 @@ ExitCode run_eval(const EvalOptions& options) {
     std::cerr << "pita: " << error.what() << '\n';
     return ExitCode::bad_input;
   } catch (const scene::SceneError& error) {
+    std::cerr << "pita: " << error.what() << '\n';
+    return ExitCode::bad_input;
+  } catch (const motion::NoMotion& error) {
     std::cerr << "pita: " << error.what() << '\n';
     return ExitCode::bad_input;
   }

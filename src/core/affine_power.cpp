@@ -287,7 +287,7 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
     // Around the double eigenvalue r (delta = 0, G1 meets G2): the limit 1/r.
     coefficient = atanh_ratio_series(k.delta / (k.r * k.r)) / k.r;
   } else if (k.delta < 0.0) {
-    // G1, Eq. 18 with atan2 (READING-NOTES item 15): theta in (0, pi).
+    // G1, Eq. 18 with atan2 (docs/paper-notes.md N15): theta in (0, pi).
     const double omega = std::sqrt(-k.delta);
     coefficient = std::atan2(omega, k.r) / omega;
   } else {

@@ -7,7 +7,7 @@
 //     A^t(p) = L^t (p - q) + q,   L^t = e^{t log L}                  (Eq. 9)
 // and log L comes from the case selection of A.5 (Algorithm 1) on
 //     r = trace(L)/2,  delta = ((a - d)/2)^2 + b c  (the discriminant; it
-//     equals r^2 - det L, but computed from the entries, READING-NOTES 15),
+//     equals r^2 - det L, but computed from the entries, docs/paper-notes.md N15),
 //     N = L - r I (traceless, N^2 = delta I), so L = r I + N:
 //  G1  delta < 0, complex eigenvalues r +- i omega:
 //        log L = ln(rho) I + (theta/omega) N, rho = sqrt(det L),

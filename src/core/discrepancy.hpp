@@ -16,7 +16,7 @@ inline double segment_z(Point a, Point b, Point x) {
   return std::norm(segment_coordinates(a, b, x));
 }
 
-// E(A, B) (Eq. 47, last term read z(d, c, b), READING-NOTES item 5), with
+// E(A, B) (Eq. 47, last term read z(d, c, b), docs/paper-notes.md N5), with
 // a = A.p, b = A.q, c = B.p, d = B.q:
 //     E = z(a, b, c) + z(b, a, d) + z(c, d, a) + z(d, c, b)
 //       = (|c - a|^2 + |d - b|^2) (1 / A.m^2 + 1 / B.m^2).

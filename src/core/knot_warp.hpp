@@ -1,5 +1,5 @@
 // The time warp used by the PITAs whose construction assumes evenly spaced
-// knots (P4, P7, P8; READING-NOTES item 11).
+// knots (P4, P7, P8; docs/paper-notes.md N11, N17).
 //
 // Our choice. With s = (t - a)/(c - a) and beta = (b - a)/(c - a), the warp
 // u(t) sends a, b, c to 0, 1/2, 1. On [0, beta] and [beta, 1] it is quadratic,

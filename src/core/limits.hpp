@@ -6,7 +6,7 @@ namespace pita::limits {
 
 // Twirl between two arrows (Eq. 17-19), Sec. 2.5.
 // We evaluate T^t.x = a + e^{tL}(x - a) + phi_t(L) (b - a) with
-// phi_t(L) = expm1(tL) / expm1(L) (READING-NOTES item 1). When |e^L - 1| falls
+// phi_t(L) = expm1(tL) / expm1(L) (docs/paper-notes.md N1). When |e^L - 1| falls
 // below this value the fixed point f = a - (b - a)/(e^L - 1) is numerically at
 // infinity and we use the translation fallback phi_t = t (its exact limit as
 // L -> 0). Near L = 0 the fallback differs from the exact formula by at most
@@ -24,7 +24,7 @@ inline constexpr double kTwirlTranslation = 1e-12;
 // the spiral degenerates and we fall back to the parabolic motion (Eq. 11).
 inline constexpr double kLogSpiralDegenerate = 1e-12;
 
-// -Pe vector motion (P7, P8; READING-NOTES item 13): v(tau) = alpha e^{k tau} +
+// -Pe vector motion (P7, P8; docs/paper-notes.md N13): v(tau) = alpha e^{k tau} +
 // beta e^{-k tau} with cosh k = kappa = (v_a + v_c) / (2 v_b). At kappa = -1
 // (v_a + v_c = -2 v_b, e.g. A and C both pointing against B with the same
 // magnitude) sinh k = 0 and the boundary-value problem has no solution; near it
@@ -88,7 +88,7 @@ inline constexpr double kPamSingularMiddle = 1e-12;
 // relative distance of a uniform scaling by a negative factor -rho (a
 // rotation by pi with uniform scale): max |L - r I| entry <= kHalfTurn * |r|,
 // r = trace/2. Such L get the log log(rho) I + pi J (the rotation by +pi,
-// READING-NOTES item 15), although beyond exact -rho I their eigenvalues are
+// docs/paper-notes.md N15, N23), although beyond exact -rho I their eigenvalues are
 // two distinct negatives or a negative Jordan block (no real log): the
 // tolerance absorbs the rounding of A = C o B^-1 (seen up to 1.5e-14 for
 // half turns built in doubles from scaled poses), with room to spare.
@@ -107,7 +107,7 @@ inline constexpr double kUnitEigenvalue = 1e-12;
 
 // The translation part of A^t is g_t(L) b with g_t(lambda) =
 // (lambda^t - 1)/(lambda - 1) (Eq. 9 rewritten so that it stays exact at
-// lambda = 1; READING-NOTES item 15 asks for expm1). Three formulas compute
+// lambda = 1; docs/paper-notes.md N15 asks for expm1). Three formulas compute
 // g_t(L), each where it is exact to rounding:
 //  - the binomial series sum_{n>=1} C(t, n) E^{n-1}, E = L - I, while the
 //    spectral radius of E is at most kUnitSeriesRadius (near the identity:
@@ -142,5 +142,34 @@ inline constexpr double kExpSeries = 1e-2;
 // by cosh and sinh(sqrt z)/sqrt z, which stay exact as sigma -> 0 (Jordan
 // blocks) where the projectors would not.
 inline constexpr double kExpProjectors = 0.5;
+
+// ---------------------------------------------------------------- time warps
+// Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
+//
+// The speed |P'(tau)| is a fourth-order finite difference with this step, as a
+// fraction of the interval [from, to]: truncation ~ step^4 ~ 1e-12 and
+// rounding ~ 1e-16 / step ~ 1e-13, relative, for paths whose coordinates are
+// of the size of their length (far from the origin, rounding grows with
+// |P| / length).
+inline constexpr double kDerivativeStep = 1e-3;
+
+// An interval of the arc-length table is accepted when its two checks (whole
+// against halves, interpolated midpoint against the left half) agree within
+// this fraction of the total length times the interval's share of [from, to].
+inline constexpr double kArcLengthTolerance = 1e-13;
+
+// The table starts from this many equal intervals (so that no feature between
+// the first Gauss nodes is missed) and halves an interval at most this deep.
+inline constexpr int kArcLengthInitialCells = 16;
+inline constexpr int kArcLengthMaxDepth = 24;
+// At most this many intervals in all (a path whose speed is noisy at the
+// tolerance, e.g. far from the origin, stops refining there).
+inline constexpr int kArcLengthMaxCells = 1 << 14;
+
+// A path shorter than this fraction of the largest |P - P(from)| plus the
+// largest |P| (rounding of the finite differences makes a still point appear
+// to move by ~1e-13 |P|) has zero length: arc length cannot be spread over
+// time, and the scene is refused.
+inline constexpr double kArcLengthZero = 1e-10;
 
 }  // namespace pita::limits

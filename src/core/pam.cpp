@@ -170,7 +170,7 @@ PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, doubl
   w_ = B_inverse * (A.b + C.b - 2.0 * B.b);
   m_ = 0.5 * K.trace();
   // s^2 = ((K00 - K11)/2)^2 + K01 K10, not m^2 - det K, which cancels
-  // (READING-NOTES item 15).
+  // (docs/paper-notes.md N15).
   const double half_difference = 0.5 * (K(0, 0) - K(1, 1));
   s2_ = half_difference * half_difference + K(0, 1) * K(1, 0);
   N_ = K - m_ * Eigen::Matrix2d::Identity();

@@ -29,7 +29,7 @@
 // h = (L_A + L_C - 2 L_B)^-1 (b_A + b_C - 2 b_B) = M^-1 g, rewritten so that
 // they stay finite when L_A + L_C - 2 L_B is singular (K has the eigenvalue 1;
 // e.g. three pure translations, whose PAM is a parabola): Q -> tau^2 and
-// R -> tau (tau^2 - 1)/3 as kappa -> 1, the cubic of P8 (READING-NOTES item 13).
+// R -> tau (tau^2 - 1)/3 as kappa -> 1, the cubic of P8 (docs/paper-notes.md N13).
 //
 // Existence. The real M = acosh(K)^2 exists and is unique (principal acosh,
 // the branch of P8) unless K has a real eigenvalue <= -1: at -1 sinh k = 0 and

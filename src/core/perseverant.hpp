@@ -1,5 +1,5 @@
 // The perseverant (-Pe) machinery shared by P7 and P8 (Sec. 3.3, appendices E
-// and F, READING-NOTES item 13).
+// and F, docs/paper-notes.md N13).
 //
 // On the normalised time tau (tau = -1, 0, 1 at the knots) the vector of the
 // moving zero-turn arrow obeys v'' = K v with a constant complex K = k^2: its

@@ -37,13 +37,6 @@ std::vector<TimedPose> subdivided(std::vector<TimedPose> poses, int steps) {
   return poses;
 }
 
-bool same_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 Affine2 linear_mix(const Affine2& A, const Affine2& B, double u) {
   return {(1.0 - u) * A.L + u * B.L, (1.0 - u) * A.b + u * B.b};
 }
@@ -57,13 +50,6 @@ const PoseMethodInfo& info(PoseMethod method) {
     if (entry.method == method) return entry;
   }
   return kPoseMethods[0];
-}
-
-std::optional<PoseMethod> find_pose_method(std::string_view name) {
-  for (const PoseMethodInfo& entry : kPoseMethods) {
-    if (same_ignoring_case(entry.id, name)) return entry.method;
-  }
-  return std::nullopt;
 }
 
 PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subdivisions)

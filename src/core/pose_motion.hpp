@@ -34,8 +34,7 @@ struct PoseMethodInfo {
 
 std::span<const PoseMethodInfo> all_pose_methods();
 const PoseMethodInfo& info(PoseMethod method);
-// By id, any case ("sam", "polySAM"); nullopt if none.
-std::optional<PoseMethod> find_pose_method(std::string_view name);
+// Names are resolved by core/methods.hpp, the one registry of both kinds.
 
 struct TimedPose {
   double t = 0.0;

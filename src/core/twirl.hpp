@@ -9,7 +9,7 @@
 // part), we store a twirl by an anchor point a, the displacement u = T.a - a of
 // that anchor, and L:
 //     T^t . x = a + e^{tL} (x - a) + phi_t(L) u,   phi_t(L) = expm1(tL)/expm1(L)
-// (READING-NOTES item 1). This never forms the fixed point
+// (docs/paper-notes.md N1). This never forms the fixed point
 // f = a - u / (e^L - 1), so it stays exact as the twirl tends to a pure
 // translation (L -> 0), where phi_t -> t.
 #pragma once
@@ -109,7 +109,7 @@ inline Twirl inverse(const Twirl& T) {
 Twirl compose(const Twirl& S, const Twirl& T);
 
 // The fixed point f = a - u/(e^L - 1) of the twirl (Eq. 19, sign as
-// READING-NOTES item 1), or nothing when the twirl is a translation.
+// docs/paper-notes.md N1), or nothing when the twirl is a translation.
 inline std::optional<Point> fixed_point(const Twirl& T) {
   if (T.is_translation()) return std::nullopt;
   return T.anchor() - T.anchor_offset();

@@ -6,12 +6,13 @@
 
 #include <fmt/format.h>
 
-#include "core/discrepancy.hpp"
-#include "core/steady_morph.hpp"
+#include "analysis/prediction.hpp"
 #include "render/banner.hpp"
+#include "render/plot.hpp"
 #include "render/spiral.hpp"
 #include "render/strip.hpp"
-#include "scene/sampling.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
 
 namespace pita::render {
 
@@ -28,14 +29,7 @@ constexpr const char* kKeyframeNames[] = {"A", "B", "C"};
 class PanelBuilder {
  public:
   PanelBuilder(const scene::Scene& scene, const scene::Panel& panel)
-      : scene_(scene), panel_(panel) {
-    try {
-      motion_ = make_motion(panel.method, panel.keyframes, panel.options);
-    } catch (const std::exception& error) {
-      fail(panel.pointer.empty() ? "/keyframes" : panel.pointer,
-           fmt::format("{}: {}", panel.method_name, error.what()));
-    }
-  }
+      : scene_(scene), panel_(panel), motion_(built(scene, panel)) {}
 
   Drawing build() {
     const bool own = panel_.layers.has_value();
@@ -55,24 +49,23 @@ class PanelBuilder {
                       elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
 
-  Arrow frame_at(double t) const {
-    Arrow frame;
+  static motion::SceneMotion built(const scene::Scene& scene, const scene::Panel& panel) {
     try {
-      frame = motion_->at(t);
-    } catch (const std::exception& error) {
-      fail(layer_, fmt::format("no frame at t = {}: {}", t, error.what()));
+      return motion::build_motion(scene, panel);
+    } catch (const motion::NoMotion& error) {
+      throw RenderError(error.file(), error.pointer(), error.reason());
     }
-    if (!is_finite(frame)) {
-      fail(layer_, fmt::format("{} gives a non-finite frame at t = {} (the motion overflows there)",
-                               panel_.method_name, t));
-    }
-    return frame;
   }
 
+  // The frames at `times`; a frame that does not exist is the layer's error.
   std::vector<Arrow> frames(const std::vector<double>& times) const {
     std::vector<Arrow> result;
     result.reserve(times.size());
-    for (double t : times) result.push_back(frame_at(t));
+    try {
+      for (double t : times) result.push_back(motion_.arrow_at(t));
+    } catch (const motion::NoMotion& error) {
+      fail(layer_, error.reason());
+    }
     return result;
   }
 
@@ -155,45 +148,35 @@ class PanelBuilder {
     push(-1, std::move(glyphs));
   }
 
-  // The prediction of frame i (Sec. 6.1), or nullopt where it does not exist.
-  std::optional<Arrow> prediction(const scene::DiscrepancyLayer& layer,
-                                  const std::vector<double>& times,
-                                  const std::vector<Arrow>& pattern, std::size_t i) const {
-    switch (layer.predictor) {
-      case scene::Predictor::previous:
-        if (i < 1) return std::nullopt;
-        return pattern[i - 1];
-      case scene::Predictor::average:
-        if (i < 1 || i + 1 >= pattern.size()) return std::nullopt;
-        return steady_average(pattern[i - 1], pattern[i + 1]);
-      case scene::Predictor::pita: {
-        // The method through the frames just before (three, or two for SMA).
-        const Method method = layer.method.value_or(panel_.method);
-        const auto count = static_cast<std::size_t>(info(method).keyframe_count);
-        if (i < count) return std::nullopt;
-        std::vector<Keyframe> observed;
-        for (std::size_t k = i - count; k < i; ++k) observed.push_back({times[k], pattern[k]});
-        try {
-          return make_motion(method, observed, panel_.options)->at(times[i]);
-        } catch (const std::exception& error) {
-          fail(layer_, fmt::format("cannot predict the frame at t = {}: {}", times[i], error.what()));
-        }
-      }
-    }
-    return std::nullopt;
-  }
-
   void add(const scene::DiscrepancyLayer& layer) {
     const std::vector<double> times = layer_times(panel_, layer.samples, std::nullopt);
     const std::vector<Arrow> pattern = frames(times);
+    const Method method = layer.method.value_or(panel_.method);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
-      const std::optional<Arrow> predicted = prediction(layer, times, pattern, i);
-      if (!predicted) continue;
-      const double radius = layer.scale * discrepancy(pattern[i], *predicted);
+      std::optional<double> discrepancy;
+      try {
+        discrepancy = analysis::frame_discrepancy(layer.predictor, method, panel_.options, times, pattern, i);
+      } catch (const std::exception& error) {
+        fail(layer_, fmt::format("cannot predict the frame at t = {}: {}", times[i], error.what()));
+      }
+      if (!discrepancy) continue;
+      const double radius = layer.scale * *discrepancy;
       if (!std::isfinite(radius)) {
         fail(layer_, fmt::format("the discrepancy at t = {} is not finite", times[i]));
       }
       push(static_cast<int>(i), Circle{pattern[i].p, radius, layer.line, layer.fill});
+    }
+  }
+
+  void add(const scene::PlotLayer& layer) {
+    try {
+      for (Item& item : plot_items(layer, motion_, layer_times(panel_, std::nullopt, std::nullopt), layer_)) {
+        drawing_.items.push_back(std::move(item));
+      }
+    } catch (const motion::NoMotion& error) {
+      fail(layer_, error.reason());
+    } catch (const std::invalid_argument& error) {
+      fail(layer_, fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
     }
   }
 
@@ -225,7 +208,7 @@ class PanelBuilder {
 
   const scene::Scene& scene_;
   const scene::Panel& panel_;
-  std::unique_ptr<Motion> motion_;
+  motion::SceneMotion motion_;
   std::string layer_;
   Drawing drawing_;
 };
@@ -240,7 +223,7 @@ std::vector<double> layer_times(const scene::Panel& panel, const std::optional<i
                                 const std::optional<scene::TimeRange>& range) {
   const double from = range ? range->from : panel.keyframes.front().t;
   const double to = range ? range->to : panel.keyframes.back().t;
-  return scene::uniform_times(from, to, samples.value_or(panel.samples));
+  return motion::uniform_times(from, to, samples.value_or(panel.samples));
 }
 
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel) {

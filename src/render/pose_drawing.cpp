@@ -6,10 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "analysis/existence.hpp"
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
-#include "scene/sampling.hpp"
+#include "render/plot.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
 
 namespace pita::render {
 
@@ -43,38 +46,33 @@ class PoseBuilder {
                       elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
 
-  const PoseMotion& motion() {
+  // The panel's motion, built when a layer first needs it (layers such as
+  // "existence" draw without poses).
+  const motion::SceneMotion& motion() {
     if (!motion_) {
       if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
       try {
-        motion_.emplace(panel_.pose_method, panel_.poses, panel_.subdivisions);
-      } catch (const std::exception& error) {
-        fail(fmt::format("{}: {}", panel_.method_name, error.what()));
+        motion_.emplace(motion::build_motion(scene_, panel_));
+      } catch (const motion::NoMotion& error) {
+        fail(error.reason());
       }
     }
     return *motion_;
   }
 
   Affine2 pose_at(double t) {
-    Affine2 pose;
     try {
-      pose = motion().at(t);
-    } catch (const std::exception& error) {
-      fail(fmt::format("no pose at t = {}: {}", t, error.what()));
+      return motion().pose_at(t);
+    } catch (const motion::NoMotion& error) {
+      fail(error.reason());
     }
-    if (!pose.L.allFinite() || !pose.b.allFinite()) {
-      fail(fmt::format("{} gives a non-finite pose at t = {} (the motion overflows there)",
-                       panel_.method_name, t));
-    }
-    return pose;
   }
 
   std::vector<double> times(const std::optional<int>& samples,
                             const std::optional<scene::TimeRange>& range) {
-    const std::vector<TimedPose>& poses = motion().poses();
-    const double from = range ? range->from : poses.front().t;
-    const double to = range ? range->to : poses.back().t;
-    return scene::uniform_times(from, to, samples.value_or(panel_.samples));
+    const double from = range ? range->from : motion().first();
+    const double to = range ? range->to : motion().last();
+    return motion::uniform_times(from, to, samples.value_or(panel_.samples));
   }
 
   void push(int index, Shape shape) { drawing_.items.push_back({layer_, index, std::move(shape)}); }
@@ -123,13 +121,12 @@ class PoseBuilder {
   // d/du of the pose at time t, u the time normalised to the motion's
   // duration (1 from the first pose to the last): PoseMotion::velocity.
   Affine2 velocity_at(double t) {
-    const std::vector<TimedPose>& poses = motion().poses();
-    const double duration = poses.back().t - poses.front().t;
+    const double duration = motion().last() - motion().first();
     Affine2 rate;
     try {
-      rate = motion().velocity(t);
-    } catch (const std::exception& error) {
-      fail(fmt::format("no velocity at t = {}: {}", t, error.what()));
+      rate = motion().pose_velocity(t);
+    } catch (const motion::NoMotion& error) {
+      fail(error.reason());
     }
     return Affine2{rate.L * duration, rate.b * duration};
   }
@@ -204,13 +201,24 @@ class PoseBuilder {
     }
   }
 
+  void add(const scene::PlotLayer& layer) {
+    const std::vector<double> marks = times(std::nullopt, std::nullopt);
+    try {
+      for (Item& item : plot_items(layer, motion(), marks, layer_)) drawing_.items.push_back(std::move(item));
+    } catch (const motion::NoMotion& error) {
+      fail(error.reason());
+    } catch (const std::invalid_argument& error) {
+      fail(fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
+    }
+  }
+
   void add(const scene::LabelLayer& layer) {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
   }
 
   const scene::Scene& scene_;
   const scene::Panel& panel_;
-  std::optional<PoseMotion> motion_;
+  std::optional<motion::SceneMotion> motion_;
   std::string layer_;
   Drawing drawing_;
 };
@@ -229,23 +237,15 @@ Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string&
   if (layer.exists_fill) {
     push(-1, FilledPath{{rectangle(-kPi, kPi, 0.0, 1.0)}, *layer.exists_fill, 1.0, std::nullopt});
   }
-  // The cells without a SAM, row by row, runs of neighbours merged: each cell
-  // classified at its centre by EAR's case selection on R(a) diag(1/s, s).
+  // The cells without a SAM (analysis/existence.hpp), row by row, runs of
+  // neighbours merged.
   FilledPath bad{{}, layer.fill, 1.0, std::nullopt};
+  const analysis::ExistenceGrid grid = analysis::classify_existence(layer.columns, layer.rows);
   const double da = 2.0 * kPi / layer.columns, ds = 1.0 / layer.rows;
   for (int j = 0; j < layer.rows; ++j) {
-    const double s = (j + 0.5) * ds;
-    Eigen::Matrix2d scaling;
-    scaling << 1.0 / s, 0.0, 0.0, s;
     int run_start = -1;
     for (int i = 0; i <= layer.columns; ++i) {
-      bool no_sam = false;
-      if (i < layer.columns) {
-        const double a = -kPi + (i + 0.5) * da;
-        Eigen::Matrix2d rotation;
-        rotation << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
-        no_sam = select_case(rotation * scaling) == RootCase::G3;
-      }
+      const bool no_sam = i < layer.columns && grid.no_sam[static_cast<std::size_t>(j) * layer.columns + i];
       if (no_sam && run_start < 0) run_start = i;
       if (!no_sam && run_start >= 0) {
         bad.contours.push_back(rectangle(-kPi + run_start * da, -kPi + i * da, j * ds, (j + 1) * ds));
@@ -259,7 +259,7 @@ Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string&
     std::vector<Point> curve;
     for (int k = 0; k <= 400; ++k) {
       const double s = k / 400.0;
-      curve.push_back({side * std::acos(-2.0 * s / (s * s + 1.0)), h * s});
+      curve.push_back({side * analysis::existence_boundary(s), h * s});
     }
     push(-1, Polyline{std::move(curve), false, layer.boundary});
   }

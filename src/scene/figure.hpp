@@ -14,17 +14,11 @@
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
+#include "scene/limits.hpp"
+#include "scene/timing.hpp"
 
 namespace pita::scene {
 
-// Limits on what a scene may ask for (errors name the field and the bound).
-inline constexpr int kMinCanvasSide = 16;        // pixels
-inline constexpr int kMaxCanvasSide = 8192;      // pixels, per side
-inline constexpr int kMaxTrajectorySamples = 100'000;
-inline constexpr int kMaxFigureSamples = 10'000;  // frames of a drawn pattern
-inline constexpr int kMaxPanels = 64;
-inline constexpr int kMaxLayers = 64;
-inline constexpr std::size_t kMaxTextLength = 1000;  // characters of a banner or label
 
 // sRGB colour with alpha, each channel in [0, 1].
 struct Color {
@@ -61,8 +55,6 @@ struct Canvas {
   std::string font = "Sans";                 // pango family for titles, labels and legends
 };
 
-// Which point of a frame a trajectory follows.
-enum class TrackedPoint { start, end, middle };  // "p", "q", "mid"
 
 // Where a keyframe's winding spiral is centred (Fig. 1: midpoint; others: start).
 enum class SpiralCenter { start, middle };  // "start", "midpoint"
@@ -146,17 +138,26 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
   double size = 11.0;                  // pixels
 };
 
+// "plot": the distance-time function of the panel's timing (the chapter's
+// Sec. 3.2.2): the fraction of the tracked point's path covered against the
+// fraction of time, drawn in a box of the plane with its frame, the diagonal
+// of constant speed, and a dot at each of the panel's frame times.
+struct PlotLayer {
+  Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn
+  TrackedPoint point = TrackedPoint::start;
+  int samples = 200;                          // [2, kMaxTrajectorySamples]
+  LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 1.5, 1.0, {}};
+  bool marks = true;
+};
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
-                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer>;
+                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer>;
 
 // ------------------------------------------------------------ pose scenes
 // Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
 // shapes are outlines in the frame of the reference pose, drawn through the
 // pose of each frame.
 
-inline constexpr int kMaxShapes = 64;
-inline constexpr int kMaxShapePoints = 10'000;
-inline constexpr int kMaxExistenceCells = 4'000'000;  // columns x rows of "existence"
 
 // A closed outline (polygon) or open polyline in reference coordinates.
 struct ShapeOutline {
@@ -216,7 +217,7 @@ struct ExistenceLayer {
 };
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
@@ -229,6 +230,10 @@ struct Panel {
   std::vector<Keyframe> keyframes;
   int samples = 9;
   std::string pointer;                 // JSON Pointer of the panel ("" = the scene itself)
+  // JSON Pointer that errors of the panel's motion name: its own keyframes or
+  // poses, else the panel (its method with the scene's keyframes), else the
+  // scene's "/keyframes" or "/poses".
+  std::string motion_pointer = "/keyframes";
   // The panel's own "layers", drawn instead of the scene's (Fig. 1 draws
   // different trajectories per panel); nullopt: the scene's layers.
   std::optional<std::vector<Layer>> layers;
@@ -240,6 +245,9 @@ struct Panel {
   std::vector<ShapeOutline> shapes;
   std::optional<std::vector<PoseLayer>> pose_layers;
   int subdivisions = kDefaultSubdivisions;  // four-point-SAM
+
+  // "timing": the scene's unless the panel gives its own.
+  Timing timing;
 };
 
 }  // namespace pita::scene

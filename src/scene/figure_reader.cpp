@@ -10,6 +10,7 @@
 
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
 
@@ -24,9 +25,6 @@ constexpr Interval kOpacity{0.0, 1.0};
 constexpr Interval kPositive{0.0, kInfinity, /*min_open=*/true};
 constexpr Interval kFraction{0.0, 0.45};  // margin, padding
 constexpr Interval kTextSize{0.0, 200.0, /*min_open=*/true};
-constexpr std::size_t kMaxDashes = 16;
-constexpr std::size_t kMaxKeyframeColors = 16;
-constexpr int kMaxColumns = 64;
 
 constexpr std::array<std::string_view, 8> kCanvasFields = {
     "width", "height", "background", "view", "margin", "y_axis", "columns", "font"};
@@ -48,16 +46,11 @@ constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
 constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 
-// The fields of each layer type, in the order of kLayerTypes.
-constexpr std::array<std::span<const std::string_view>, 8> kLayerFields = {
-    kPatternFields, kKeyframesFields, kTrajectoryFields, kStrokeFields,
-    kBannerFields,  kDiscrepancyFields, kLabelFields,   kLegendFields};
+constexpr std::array<std::string_view, 9> kPlotFields = {
+    "type", "box", "point", "samples", "color", "width", "opacity", "dash", "marks"};
 
 constexpr std::array<std::string_view, 2> kYAxisNames = {"up", "down"};
 constexpr std::array<bool, 2> kYUp = {true, false};
-constexpr std::array<std::string_view, 3> kPointNames = {"p", "q", "mid"};
-constexpr std::array<TrackedPoint, 3> kPoints = {TrackedPoint::start, TrackedPoint::end,
-                                                 TrackedPoint::middle};
 constexpr std::array<std::string_view, 2> kSpiralCenterNames = {"start", "midpoint"};
 constexpr std::array<SpiralCenter, 2> kSpiralCenters = {SpiralCenter::start,
                                                         SpiralCenter::middle};
@@ -282,57 +275,101 @@ LegendLayer read_legend(const Fields& fields) {
   return layer;
 }
 
-// The index in kLayerTypes of the layer's "type".
-std::size_t read_layer_type(const Fields& fields) {
-  const Json& value = fields.required("type", "the layer type: " + quoted_choices(kLayerTypes));
-  const std::string pointer = fields.at("type");
-  if (!value.is_string()) {
-    fields.reader().fail(pointer, "must be " + quoted_choices(kLayerTypes) + " (got " +
-                                      value_text(value) + ")");
+// {"min": [x, y], "max": [x, y]} with min < max on both axes.
+Box read_box(const Fields& box) {
+  const JsonReader& reader = box.reader();
+  const Point min = reader.point(box.required("min", "the corner [x, y] with the least x and y"),
+                                 box.at("min"));
+  const Point max = reader.point(box.required("max", "the corner [x, y] with the greatest x and y"),
+                                 box.at("max"));
+  const std::array<double, 2> low = {min.real(), min.imag()};
+  const std::array<double, 2> high = {max.real(), max.imag()};
+  for (std::size_t axis = 0; axis < 2; ++axis) {
+    if (!(high[axis] > low[axis])) {
+      const char* name = axis == 0 ? "x" : "y";
+      reader.fail(element_pointer(box.at("max"), axis),
+                  fmt::format("max {} must be greater than min {} {} (got {})", name, name,
+                              number_text(low[axis]), number_text(high[axis])));
+    }
   }
-  const std::string name = value.get<std::string>();
-  const auto found = std::find(kLayerTypes.begin(), kLayerTypes.end(), name);
-  if (found != kLayerTypes.end()) return static_cast<std::size_t>(found - kLayerTypes.begin());
-  const std::vector<std::string> suggestions = closest_names(name, kLayerTypes);
-  std::string reason = fmt::format("unknown layer type \"{}\"", name);
-  reason += suggestions.empty() ? "; layer types: " + joined(kLayerTypes)
-                                : did_you_mean(suggestions);
-  fields.reader().fail(pointer, reason);
+  return Box{min, max};
 }
 
-// Fails at the first field that a layer of type `type` does not take: one that
-// another layer type takes says so, any other gets a "did you mean" among the
-// fields of this type.
-void check_layer_fields(const Fields& fields, std::size_t type) {
-  const std::span<const std::string_view> known = kLayerFields[type];
-  for (const auto& [key, value] : fields.object().items()) {
-    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    const bool elsewhere = std::any_of(kLayerFields.begin(), kLayerFields.end(), [&](auto names) {
-      return std::find(names.begin(), names.end(), key) != names.end();
-    });
-    if (!elsewhere) break;  // check_fields below reports it
-    fields.reader().fail(fields.at(key),
-                         fmt::format("field \"{}\" is not used by a \"{}\" layer (its fields: {})",
-                                     key, kLayerTypes[type], joined(known)));
-  }
-  fields.reader().check_fields(fields.object(), fields.pointer(), known);
+PlotLayer read_plot(const Fields& fields) {
+  PlotLayer layer;
+  const Json& box = fields.required("box", "the box {\"min\": [x, y], \"max\": [x, y]} the plot fills");
+  const std::string at = fields.at("box");
+  fields.reader().object(box, at, "a box {\"min\": [x, y], \"max\": [x, y]}");
+  fields.reader().check_fields(box, at, kBoxFields);
+  layer.box = read_box(Fields(fields.reader(), box, at));
+  fields.choice("point", kPointNames, kPoints, layer.point);
+  fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
+  read_line(fields, layer.line);
+  fields.boolean("marks", layer.marks);
+  return layer;
 }
 
-Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
+// One kind of layer: its "type", the fields it takes and how it is read. The
+// two tables below are the only lists of layer kinds; every message, the
+// schema test and the README derive theirs from them.
+template <typename LayerType>
+struct LayerKind {
+  std::string_view type;
+  std::span<const std::string_view> fields;
+  LayerType (*read)(const Fields&);
+};
+
+template <typename LayerType, std::size_t N>
+std::vector<std::string_view> type_names(const std::array<LayerKind<LayerType>, N>& kinds) {
+  std::vector<std::string_view> names;
+  for (const auto& kind : kinds) names.push_back(kind.type);
+  return names;
+}
+
+// Reads a layer of one of `kinds`; `others` are the kinds of the other kind
+// of scene, named in the message when a layer of theirs is used here.
+template <typename LayerType, std::size_t N, typename OtherType, std::size_t M>
+LayerType read_layer_of(const JsonReader& reader, const Json& value, const std::string& pointer,
+                        const std::array<LayerKind<LayerType>, N>& kinds,
+                        const std::array<LayerKind<OtherType>, M>& others, std::string_view scene_kind) {
   reader.object(value, pointer, "a layer");
   const Fields fields(reader, value, pointer);
-  const std::size_t type = read_layer_type(fields);
-  check_layer_fields(fields, type);
-  switch (type) {
-    case 0: return read_pattern(fields);
-    case 1: return read_keyframes_layer(fields);
-    case 2: return read_trajectory(fields);
-    case 3: return read_stroke(fields);
-    case 4: return read_banner(fields);
-    case 5: return read_discrepancy(fields);
-    case 6: return read_label(fields);
-    default: return read_legend(fields);
+  const std::vector<std::string_view> names = type_names(kinds);
+  const Json& type_value = fields.required("type", "the layer type: " + quoted_choices(names));
+  const std::string type_pointer = fields.at("type");
+  if (!type_value.is_string()) {
+    reader.fail(type_pointer, "must be " + quoted_choices(names) + " (got " + value_text(type_value) + ")");
   }
+  const std::string name = type_value.get<std::string>();
+  const auto found = std::find_if(kinds.begin(), kinds.end(), [&](const auto& kind) { return kind.type == name; });
+  if (found == kinds.end()) {
+    const bool other = std::any_of(others.begin(), others.end(), [&](const auto& kind) { return kind.type == name; });
+    std::string reason;
+    if (other) {
+      reason = fmt::format("layer type \"{}\" {}; {} layers: {}", name,
+                           scene_kind.empty() ? "draws poses (pose scenes)" : "draws arrows (keyframe scenes)",
+                           scene_kind.empty() ? "this scene's" : "a pose scene's", joined(names));
+    } else {
+      const std::vector<std::string> suggestions = closest_names(name, names);
+      reason = fmt::format("unknown layer type \"{}\"{}", name, scene_kind);
+      reason += suggestions.empty() ? "; layer types: " + joined(names) : did_you_mean(suggestions);
+    }
+    reader.fail(type_pointer, reason);
+  }
+  // A field that another layer kind takes says so; any other gets a "did you
+  // mean" among the fields of this kind.
+  const std::span<const std::string_view> known = found->fields;
+  for (const auto& [key, member] : value.items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const bool elsewhere = std::any_of(kinds.begin(), kinds.end(), [&](const auto& kind) {
+      return std::find(kind.fields.begin(), kind.fields.end(), key) != kind.fields.end();
+    });
+    if (!elsewhere) break;  // check_fields below reports it
+    reader.fail(fields.at(key), fmt::format("field \"{}\" is not used by a \"{}\" layer (its fields: {})",
+                                            key, found->type, joined(known)));
+  }
+  reader.check_fields(value, pointer, known);
+  return found->read(fields);
 }
 
 // "view": "auto", "shared" or {"min": [x, y], "max": [x, y]}.
@@ -353,22 +390,7 @@ void read_view(const JsonReader& reader, const Json& value, const std::string& p
                          "(got " + value_text(value) + ")");
   }
   reader.check_fields(value, pointer, kBoxFields);
-  const Fields box(reader, value, pointer);
-  const Point min = reader.point(box.required("min", "the corner [x, y] with the least x and y"),
-                                 box.at("min"));
-  const Point max = reader.point(box.required("max", "the corner [x, y] with the greatest x and y"),
-                                 box.at("max"));
-  const std::array<double, 2> low = {min.real(), min.imag()};
-  const std::array<double, 2> high = {max.real(), max.imag()};
-  for (std::size_t axis = 0; axis < 2; ++axis) {
-    if (!(high[axis] > low[axis])) {
-      const char* name = axis == 0 ? "x" : "y";
-      reader.fail(element_pointer(box.at("max"), axis),
-                  fmt::format("max {} must be greater than min {} {} (got {})", name, name,
-                              number_text(low[axis]), number_text(high[axis])));
-    }
-  }
-  canvas.view = Box{min, max};
+  canvas.view = read_box(Fields(reader, value, pointer));
   canvas.shared_fit = false;
 }
 
@@ -433,99 +455,112 @@ std::vector<Color> read_colors(const Fields& fields, std::vector<Color> defaults
   return result;
 }
 
-PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
-  reader.object(value, pointer, "a layer");
-  const Fields fields(reader, value, pointer);
-  const Json& type_value = fields.required("type", "the layer type: " + quoted_choices(kPoseLayerTypes));
-  const std::string type_pointer = fields.at("type");
-  if (!type_value.is_string()) {
-    reader.fail(type_pointer, "must be " + quoted_choices(kPoseLayerTypes) + " (got " +
-                                  value_text(type_value) + ")");
+ShapesLayer read_shapes_layer(const Fields& fields) {
+  ShapesLayer layer;
+  read_line(fields, layer.line);
+  fields.color("fill", layer.fill);
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+PosesLayer read_poses_layer(const Fields& fields) {
+  PosesLayer layer;
+  layer.colors = read_colors(fields, layer.colors);
+  fields.number("width", kLineWidth, layer.width);
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  return layer;
+}
+
+VelocitiesLayer read_velocities(const Fields& fields) {
+  VelocitiesLayer layer;
+  fields.number("scale", kPositive, layer.scale);
+  read_line(fields, layer.line);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+PathsLayer read_paths(const Fields& fields) {
+  PathsLayer layer;
+  fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
+  read_range(fields, layer.range);
+  read_line(fields, layer.line);
+  return layer;
+}
+
+ExistenceLayer read_existence(const Fields& fields) {
+  const JsonReader& reader = fields.reader();
+  ExistenceLayer layer;
+  fields.integer("columns", 2, kMaxExistenceSide, layer.columns);
+  fields.integer("rows", 2, kMaxExistenceSide, layer.rows);
+  if (static_cast<long long>(layer.columns) * layer.rows > kMaxExistenceCells) {
+    reader.fail(fields.at("rows"), fmt::format("columns x rows must be at most {} (got {} x {})",
+                                               kMaxExistenceCells, layer.columns, layer.rows));
   }
-  const std::string name = type_value.get<std::string>();
-  const auto found = std::find(kPoseLayerTypes.begin(), kPoseLayerTypes.end(), name);
-  if (found == kPoseLayerTypes.end()) {
-    std::string reason = fmt::format("unknown layer type \"{}\" for a pose scene", name);
-    if (std::find(kLayerTypes.begin(), kLayerTypes.end(), name) != kLayerTypes.end()) {
-      reason = fmt::format("layer type \"{}\" draws arrows (keyframe scenes); a pose scene's "
-                           "layers: {}",
-                           name, joined(kPoseLayerTypes));
+  fields.color("fill", layer.fill);
+  if (const Json* exists = fields.get("exists_fill")) {
+    if (exists->is_string() && exists->get<std::string>() == "none") {
+      layer.exists_fill.reset();
     } else {
-      const std::vector<std::string> suggestions = closest_names(name, kPoseLayerTypes);
-      reason += suggestions.empty() ? "; layer types: " + joined(kPoseLayerTypes)
-                                    : did_you_mean(suggestions);
-    }
-    reader.fail(type_pointer, reason);
-  }
-  const auto type = static_cast<std::size_t>(found - kPoseLayerTypes.begin());
-  reader.check_fields(value, pointer, kPoseLayerFields[type]);
-  switch (type) {
-    case 0: {
-      ShapesLayer layer;
-      read_line(fields, layer.line);
-      fields.color("fill", layer.fill);
-      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
-      read_figure_samples(fields, layer.samples);
-      read_range(fields, layer.range);
-      return layer;
-    }
-    case 1: {
-      PosesLayer layer;
-      layer.colors = read_colors(fields, layer.colors);
-      fields.number("width", kLineWidth, layer.width);
-      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
-      return layer;
-    }
-    case 2: {
-      VelocitiesLayer layer;
-      fields.number("scale", kPositive, layer.scale);
-      read_line(fields, layer.line);
-      read_figure_samples(fields, layer.samples);
-      read_range(fields, layer.range);
-      return layer;
-    }
-    case 3: {
-      PathsLayer layer;
-      fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
-      read_range(fields, layer.range);
-      read_line(fields, layer.line);
-      return layer;
-    }
-    case 4: {
-      ExistenceLayer layer;
-      fields.integer("columns", 2, 4000, layer.columns);
-      fields.integer("rows", 2, 4000, layer.rows);
-      if (static_cast<long long>(layer.columns) * layer.rows > kMaxExistenceCells) {
-        reader.fail(fields.at("rows"), fmt::format("columns x rows must be at most {} (got {} x {})",
-                                                   kMaxExistenceCells, layer.columns, layer.rows));
-      }
-      fields.color("fill", layer.fill);
-      if (const Json* exists = fields.get("exists_fill")) {
-        if (exists->is_string() && exists->get<std::string>() == "none") {
-          layer.exists_fill.reset();
-        } else {
-          layer.exists_fill = reader.color(*exists, fields.at("exists_fill"));
-        }
-      }
-      read_line_object(fields, "boundary", layer.boundary);
-      read_line_object(fields, "trapezoid", layer.trapezoid);
-      return layer;
-    }
-    case 5: return read_label(fields);
-    default: {
-      PatchLayer layer;
-      fields.integer("columns", 2, 100, layer.columns);
-      fields.integer("rows", 2, 100, layer.rows);
-      fields.boolean("regular", layer.regular);
-      read_line(fields, layer.line);
-      fields.color("fill", layer.fill);
-      fields.number("fill_opacity", kOpacity, layer.fill_opacity);
-      return layer;
+      layer.exists_fill = reader.color(*exists, fields.at("exists_fill"));
     }
   }
+  read_line_object(fields, "boundary", layer.boundary);
+  read_line_object(fields, "trapezoid", layer.trapezoid);
+  return layer;
+}
+
+PatchLayer read_patch(const Fields& fields) {
+  PatchLayer layer;
+  fields.integer("columns", 2, kMaxPatchSide, layer.columns);
+  fields.integer("rows", 2, kMaxPatchSide, layer.rows);
+  fields.boolean("regular", layer.regular);
+  read_line(fields, layer.line);
+  fields.color("fill", layer.fill);
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  return layer;
+}
+
+// The layer kinds of keyframe (arrow) scenes, in the order messages, the
+// schema and the README list them.
+constexpr std::array<LayerKind<Layer>, 9> kArrowLayerKinds{{
+    {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
+    {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
+    {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
+    {"stroke", kStrokeFields, [](const Fields& f) -> Layer { return read_stroke(f); }},
+    {"banner", kBannerFields, [](const Fields& f) -> Layer { return read_banner(f); }},
+    {"discrepancy", kDiscrepancyFields, [](const Fields& f) -> Layer { return read_discrepancy(f); }},
+    {"label", kLabelFields, [](const Fields& f) -> Layer { return read_label(f); }},
+    {"legend", kLegendFields, [](const Fields& f) -> Layer { return read_legend(f); }},
+    {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f); }},
+}};
+
+// The layer kinds of pose scenes.
+constexpr std::array<LayerKind<PoseLayer>, 8> kPoseLayerKinds{{
+    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
+    {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
+    {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
+    {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }},
+    {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); }},
+    {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
+    {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
+    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
+}};
+
+Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  return read_layer_of(reader, value, pointer, kArrowLayerKinds, kPoseLayerKinds, "");
+}
+
+PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  return read_layer_of(reader, value, pointer, kPoseLayerKinds, kArrowLayerKinds, " for a pose scene");
 }
 
 }  // namespace
+
+std::vector<std::string_view> arrow_layer_types() { return type_names(kArrowLayerKinds); }
+std::vector<std::string_view> pose_layer_types() { return type_names(kPoseLayerKinds); }
 
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer) {

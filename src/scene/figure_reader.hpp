@@ -13,9 +13,11 @@
 
 namespace pita::scene::detail {
 
-// The layer types, in the order messages and the schema list them.
-inline constexpr std::array<std::string_view, 8> kLayerTypes = {
-    "pattern", "keyframes", "trajectory", "stroke", "banner", "discrepancy", "label", "legend"};
+// The layer types of keyframe scenes and of pose scenes, in the order
+// messages and the schema list them (from figure_reader.cpp's one table of
+// layer kinds each).
+std::vector<std::string_view> arrow_layer_types();
+std::vector<std::string_view> pose_layer_types();
 
 // "canvas": every field optional, the defaults of figure.hpp otherwise.
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer);
@@ -24,9 +26,6 @@ Canvas read_canvas(const JsonReader& reader, const Json& value, const std::strin
 std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
                                const std::string& pointer);
 
-// The layer types of pose scenes (README "Pose scenes").
-inline constexpr std::array<std::string_view, 7> kPoseLayerTypes = {
-    "shapes", "poses", "velocities", "paths", "existence", "label", "patch"};
 
 // "layers" of a pose scene or panel.
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,

@@ -24,8 +24,6 @@ constexpr std::array<std::string_view, 3> kMeanNames = {"arithmetic", "geometric
 constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geometric,
                                             MeanKind::harmonic};
 
-// The registry ranks its suggestions best first; a few are enough.
-constexpr std::size_t kMaxMethodSuggestions = 3;
 
 // Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.
 std::size_t character_count(std::string_view text) {
@@ -137,17 +135,18 @@ std::string quoted_choices(std::span<const std::string_view> names) {
   return alternatives(copies);
 }
 
-std::string unknown_method_reason(std::string_view name) {
-  std::string reason = fmt::format("unknown method \"{}\"", name);
-  std::vector<std::string> suggestions = suggest_methods(name);
-  if (suggestions.size() > kMaxMethodSuggestions) suggestions.resize(kMaxMethodSuggestions);
-  if (!suggestions.empty()) return reason + did_you_mean(suggestions, /*quoted=*/false);
-  std::string known;
-  for (const MethodInfo& method : all_methods()) {
-    if (!known.empty()) known += ", ";
-    known += method.id;
+std::string unknown_method_reason(std::string_view name, MotionKind kind) {
+  if (const MethodEntry* other = find_method_entry(name)) {
+    // A method of the other kind of scene.
+    return kind == MotionKind::arrows
+               ? fmt::format("method {} interpolates poses, and this scene has keyframes (arrows): "
+                             "give it \"poses\" instead, or an arrow method such as P6",
+                             other->id)
+               : fmt::format("method {} interpolates arrows, and this is a pose scene: give it "
+                             "\"keyframes\" instead, or a pose method such as SAM",
+                             other->id);
   }
-  return reason + "; known methods: " + known;
+  return pita::unknown_method_reason(name, kind);
 }
 
 std::string keyframe_count_reason(Method method, std::size_t count) {
@@ -270,9 +269,9 @@ Color JsonReader::color(const Json& value, const std::string& pointer) const {
 
 Method JsonReader::method(const Json& value, const std::string& pointer) const {
   const std::string name = string(value, pointer);
-  const std::optional<Method> found = find_method(name);
-  if (!found) fail(pointer, unknown_method_reason(name));
-  return *found;
+  const MethodEntry* found = find_method_entry(name, MotionKind::arrows);
+  if (found == nullptr) fail(pointer, unknown_method_reason(name, MotionKind::arrows));
+  return found->method;
 }
 
 void JsonReader::choice_failed(const Json& value, const std::string& pointer,

@@ -18,6 +18,7 @@
 #include "core/arrow.hpp"
 #include "core/keyframe.hpp"
 #include "core/pitas/method_options.hpp"
+#include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "scene/figure.hpp"
 
@@ -44,8 +45,9 @@ std::string value_text(const Json& value);
 std::string joined(std::span<const std::string_view> names);          // a, b, c
 std::string quoted_choices(std::span<const std::string_view> names);  // "a", "b" or "c"
 
-// unknown method "P66"; did you mean P6 (La-LP), ...
-std::string unknown_method_reason(std::string_view name);
+// unknown method "P66"; did you mean P6 (La-LP), ... (core/methods.hpp's one
+// wording), or, for a method of the other kind, what the scene needs instead.
+std::string unknown_method_reason(std::string_view name, MotionKind kind);
 // method SMA takes exactly 2 keyframes (got 3)
 std::string keyframe_count_reason(Method method, std::size_t count);
 

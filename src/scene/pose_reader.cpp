@@ -131,11 +131,8 @@ PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
                              value_text(value) + ")");
   }
   const std::string name = value.get<std::string>();
-  if (const std::optional<PoseMethod> found = find_pose_method(name)) return *found;
-  std::string reason = fmt::format("unknown pose method \"{}\"", name);
-  const std::vector<std::string> suggestions = closest_names(name, ids);
-  reason += suggestions.empty() ? "; pose methods: " + joined(ids) : did_you_mean(suggestions);
-  reader.fail(pointer, reason);
+  if (const MethodEntry* found = find_method_entry(name, MotionKind::poses)) return found->pose_method;
+  reader.fail(pointer, unknown_method_reason(name, MotionKind::poses));
 }
 
 std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scene/figure_reader.hpp"
+#include "scene/timing_reader.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/pose_reader.hpp"
 
@@ -31,21 +32,21 @@ using detail::value_text;
 using detail::Interval;
 
 // The fields each object of a scene may have; anything else is an error.
-constexpr std::array<std::string_view, 11> kSceneFields = {
+constexpr std::array<std::string_view, 12> kSceneFields = {
     "$schema", "description", "method", "keyframes", "samples", "options",
-    "title",   "canvas",      "layers", "panels",    "golden"};
+    "title",   "canvas",      "layers", "panels",    "golden",  "timing"};
 constexpr std::array<std::string_view, 4> kGoldenFields = {"number_tolerance", "svg_tolerance",
                                                            "pixel_tolerance", "max_differing"};
-constexpr std::array<std::string_view, 6> kPanelFields = {"method", "options", "keyframes",
-                                                          "title",  "samples", "layers"};
+constexpr std::array<std::string_view, 7> kPanelFields = {
+    "method", "options", "keyframes", "title", "samples", "layers", "timing"};
 
 // Pose scenes (README "Pose scenes").
-constexpr std::array<std::string_view, 13> kPoseSceneFields = {
+constexpr std::array<std::string_view, 14> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
     "samples", "title",       "canvas", "layers", "panels",             "golden",
-    "subdivisions"};
-constexpr std::array<std::string_view, 7> kPosePanelFields = {
-    "method", "poses", "shapes", "title", "samples", "layers", "subdivisions"};
+    "subdivisions", "timing"};
+constexpr std::array<std::string_view, 8> kPosePanelFields = {
+    "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
 
 // Whether a layer needs the motion (every one but "existence" and "label").
 bool needs_motion(const std::vector<PoseLayer>& layers) {
@@ -264,6 +265,9 @@ class SceneReader {
     if (const Json* samples = member(document, "samples")) {
       scene.samples = reader_.integer(*samples, "/samples", kMinSamples, kMaxSamples);
     }
+    if (const Json* timing = member(document, "timing")) {
+      scene.timing = detail::read_timing(reader_, *timing, "/timing");
+    }
 
     // The figure (README "Figures"); `pita eval` ignores it.
     if (const Json* title = member(document, "title")) {
@@ -292,7 +296,7 @@ class SceneReader {
     if (member(document, "poses") != nullptr) return true;
     const Json* method = member(document, "method");
     return method != nullptr && method->is_string() &&
-           find_pose_method(method->get<std::string>()).has_value() &&
+           find_method_entry(method->get<std::string>(), MotionKind::poses) != nullptr &&
            member(document, "keyframes") == nullptr;
   }
 
@@ -328,6 +332,9 @@ class SceneReader {
     if (const Json* subdivisions = member(document, "subdivisions")) {
       scene.subdivisions = reader_.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
     }
+    if (const Json* timing = member(document, "timing")) {
+      scene.timing = detail::read_timing(reader_, *timing, "/timing");
+    }
     if (const Json* title = member(document, "title")) scene.title = reader_.string(*title, "/title");
     if (const Json* canvas = member(document, "canvas")) {
       scene.canvas = detail::read_canvas(reader_, *canvas, "/canvas");
@@ -342,7 +349,6 @@ class SceneReader {
     if (poses != nullptr) {
       scene.poses = detail::read_poses(reader_, *poses, "/poses", scene.reference_triangle,
                                        scene.pose_method);
-      check_motion(scene.pose_method, scene.poses, scene.subdivisions, "/poses");
     } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
       fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
                      "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");
@@ -356,18 +362,6 @@ class SceneReader {
     return scene;
   }
 
-  // The motion must exist: every SAM it needs (NoSamBetweenPoses names the pair).
-  void check_motion(PoseMethod method, const std::vector<TimedPose>& poses, int subdivisions,
-                    const std::string& pointer) const {
-    try {
-      (void)PoseMotion(method, poses, subdivisions);
-    } catch (const NoSamBetweenPoses& error) {
-      fail(pointer, no_sam_reason(error, method));
-    } catch (const std::invalid_argument& error) {
-      fail(pointer, error.what());
-    }
-  }
-
   static Panel pose_scene_panel(const Scene& scene, std::string pointer) {
     Panel panel;
     panel.pose_method = scene.pose_method;
@@ -375,8 +369,10 @@ class SceneReader {
     panel.poses = scene.poses;
     panel.shapes = scene.shapes;
     panel.subdivisions = scene.subdivisions;
+    panel.timing = scene.timing;
     panel.samples = scene.samples.value_or(kDefaultFigureSamples);
     panel.pointer = std::move(pointer);
+    panel.motion_pointer = "/poses";
     return panel;
   }
 
@@ -403,6 +399,9 @@ class SceneReader {
           own_method = true;
         }
         if (const Json* title = member(item, "title")) panel.title = reader_.string(*title, at + "/title");
+        if (const Json* timing = member(item, "timing")) {
+          panel.timing = detail::read_timing(reader_, *timing, at + "/timing");
+        }
         if (const Json* samples = member(item, "samples")) {
           panel.samples = reader_.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
         }
@@ -438,9 +437,7 @@ class SceneReader {
                detail::pose_count_reason(panel.pose_method, panel.poses.size()) +
                    "; give the panel its own \"poses\"");
         }
-        if (own_poses || own_method) {
-          check_motion(panel.pose_method, panel.poses, panel.subdivisions, poses_at);
-        }
+        panel.motion_pointer = own_poses ? poses_at : own_method ? at : std::string("/poses");
       }
       if (panel.title.empty() && own_method) panel.title = std::string(info(panel.pose_method).id);
       panels.push_back(std::move(panel));
@@ -463,8 +460,10 @@ class SceneReader {
     panel.method_name = scene.method_name;
     panel.options = scene.options;
     panel.keyframes = scene.keyframes;
+    panel.timing = scene.timing;
     panel.samples = scene.samples.value_or(kDefaultFigureSamples);
     panel.pointer = std::move(pointer);
+    panel.motion_pointer = "/keyframes";
     return panel;
   }
 
@@ -490,6 +489,7 @@ class SceneReader {
     Panel panel = scene_panel(scene, pointer);
     if (value.is_string()) {
       set_method(panel, reader_.method(value, pointer), pointer, scene);
+      panel.motion_pointer = pointer;
       return panel;
     }
     if (!value.is_object()) {
@@ -513,6 +513,9 @@ class SceneReader {
     }
     if (keyframes != nullptr) {
       panel.keyframes = reader_.keyframes(*keyframes, pointer + "/keyframes", panel.method);
+      panel.motion_pointer = pointer + "/keyframes";
+    } else if (member(value, "method") != nullptr || member(value, "options") != nullptr) {
+      panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
     }
     if (const Json* title = member(value, "title")) {
       panel.title = reader_.string(*title, pointer + "/title");
@@ -523,6 +526,9 @@ class SceneReader {
     }
     if (const Json* layers = member(value, "layers")) {
       panel.layers = detail::read_layers(reader_, *layers, pointer + "/layers");
+    }
+    if (const Json* timing = member(value, "timing")) {
+      panel.timing = detail::read_timing(reader_, *timing, pointer + "/timing");
     }
     return panel;
   }
@@ -584,16 +590,20 @@ Scene parse_scene(std::string_view text, std::string source_name) {
 }
 
 Method resolve_method(std::string_view name) {
-  if (const std::optional<Method> method = find_method(name)) return *method;
-  throw std::invalid_argument(unknown_method_reason(name));
+  if (const MethodEntry* entry = find_method_entry(name, MotionKind::arrows)) return entry->method;
+  throw std::invalid_argument(pita::unknown_method_reason(name, MotionKind::arrows));
 }
 
 Scene with_method(Scene scene, Method method) {
   if (scene.kind == SceneKind::poses) {
+    std::string pose_methods;
+    for (const MethodEntry& entry : every_method()) {
+      if (entry.kind != MotionKind::poses) continue;
+      pose_methods += (pose_methods.empty() ? "" : ", ") + std::string(entry.id);
+    }
     throw SceneError(scene.path, "/method",
-                     fmt::format("method {} interpolates arrows; this is a pose scene (methods: SAM, "
-                                 "polySAM, bezier-SAM, biarc-SAM, linear)",
-                                 info(method).id));
+                     fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})",
+                                 info(method).id, pose_methods));
   }
   const MethodInfo& about = info(method);
   if (scene.keyframes.size() != static_cast<std::size_t>(about.keyframe_count)) {
@@ -631,13 +641,6 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
   const auto count = static_cast<int>(scene.poses.size());
   if (count < about.min_poses || count > about.max_poses) {
     throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, scene.poses.size()));
-  }
-  try {
-    (void)PoseMotion(method, scene.poses, scene.subdivisions);
-  } catch (const NoSamBetweenPoses& error) {
-    throw SceneError(scene.path, "/poses", no_sam_reason(error, method));
-  } catch (const std::invalid_argument& error) {
-    throw SceneError(scene.path, "/poses", error.what());
   }
   scene.pose_method = method;
   scene.method_name = std::string(about.id);

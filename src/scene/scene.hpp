@@ -16,30 +16,16 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/registry.hpp"
 #include "scene/figure.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::scene {
 
-// Bounds of the number of uniformly spaced samples ("samples" in a scene,
-// --samples on the command line), and the default when neither is given.
-inline constexpr int kMinSamples = 2;
-inline constexpr int kMaxSamples = 1'000'000;
-inline constexpr int kDefaultSamples = 9;
 
-// Limits on keyframe values (errors name the field and the bound). Knots,
-// coordinates and magnitudes beyond 1e100 (or magnitudes below 1e-100) leave
-// the methods no room before their intermediate numbers overflow; windings
-// beyond 1e6 rad (~159 000 turns) lose the angle's precision in w + 2 pi k.
-inline constexpr double kMaxKeyframeValue = 1e100;
-inline constexpr double kMinMagnitude = 1e-100;
-inline constexpr double kMaxWinding = 1e6;
 
 // Arrow scenes ("keyframes", the PITA paper) or pose scenes ("poses", the SAM
 // paper: README "Pose scenes").
 enum class SceneKind { arrows, poses };
 
-// Limits of pose scenes: entries of matrices and coordinates within
-// kMaxKeyframeValue; at most kMaxPoses poses.
-inline constexpr int kMaxPoses = 1000;
 
 struct Scene {
   SceneKind kind = SceneKind::arrows;
@@ -50,6 +36,7 @@ struct Scene {
   MethodOptions options;      // every field set (defaults applied)
   std::vector<Keyframe> keyframes;  // as many as the method takes, knots strictly increasing
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
+  Timing timing;                    // "timing": how scene time runs through the motion
 
   // Pose scenes: method_name is the pose method's id ("SAM"); `method`,
   // `options` and `keyframes` are unused.
@@ -76,8 +63,6 @@ struct Scene {
   } golden;
 };
 
-// Frames of a drawn pattern when neither the scene nor the layer says.
-inline constexpr int kDefaultFigureSamples = 17;
 
 // What is wrong with a scene, and where. what() is
 //   "FILE: /keyframes/1/m: magnitude must be > 0 (got -2)"   (a value; the

@@ -289,7 +289,7 @@ TEST_F(Eval, MissingSceneArgument) {
 
 // ------------------------------------------------------------ motions that do not exist
 
-// P7 and P8 have no motion when v_A + v_C = -2 v_B (READING-NOTES item 13).
+// P7 and P8 have no motion when v_A + v_C = -2 v_B (docs/paper-notes.md N13).
 TEST_F(Eval, SingularConfigurationExitsTwoWithoutNumbers) {
   dir.write("singular.json", R"({"method": "P7", "keyframes": [
     {"t": 0, "p": [0, 0], "m": 1, "w": 0},

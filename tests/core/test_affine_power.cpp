@@ -131,7 +131,7 @@ TEST(SelectCase, HalfTurnThresholdFromBothSides) {
   const Matrix2d clockwise = linear_log(rotation(-kPi + 1e-15));
   EXPECT_NEAR(clockwise(1, 0), -(kPi - 1e-15), 1e-15);
   // The discriminant is computed from the entries: a rotation by pi - 1e-9 is G1, not G3
-  // (r^2 - det L would round to 0 and then be taken as no SAM; READING-NOTES 15).
+  // (r^2 - det L would round to 0 and then be taken as no SAM; docs/paper-notes.md N15).
   EXPECT_EQ(select_case(rotation(kPi - 1e-9)), RootCase::G1);
 }
 
@@ -197,7 +197,7 @@ TEST(LinearLog, AgreesWithEigenLog) {
 }
 
 TEST(LinearLog, SpecialCasesHaveTheirClosedForms) {
-  // S2: rotation by +pi with scaling 2 (READING-NOTES 15): ln 2 I + pi J.
+  // S2: rotation by +pi with scaling 2 (docs/paper-notes.md N15, N23): ln 2 I + pi J.
   EXPECT_LT(relative_error(linear_log(-2.0 * Matrix2d::Identity()), mat(std::log(2.0), -kPi, kPi, std::log(2.0))), 1e-15);
   // Shear: log [[1, k], [0, 1]] = [[0, k], [0, 0]].
   EXPECT_LT(relative_error(linear_log(mat(1.0, 4.0, 0.0, 1.0)), mat(0.0, 4.0, 0.0, 0.0)), 1e-15);

@@ -1,7 +1,7 @@
 // Fig. 10 reproduced, not assumed. For each property of Sec. 4.5-4.11, one
 // test measures it on every PITA: it must hold (to rounding) for the PITAs
 // that have it and be measurably violated, on some configuration, by each that
-// does not. The expected sets are the paper's table as READING-NOTES item 8
+// does not. The expected sets are the paper's table as docs/paper-notes.md N8
 // corrects it, plus what we measured for P4's windings and for the PITAs the
 // table does not list (P5S, P9, P10); see the issue note and README.
 #include <set>

@@ -1,5 +1,5 @@
 // P5 and P10 against generic matrix log/exp (Eigen's MatrixFunctions) as an
-// independent oracle, and the invariance violations READING-NOTES items 6-7
+// independent oracle, and the invariance violations docs/paper-notes.md N6-N7
 // document, measured.
 #include <Eigen/Dense>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -75,7 +75,7 @@ double invariance_violation(Method m, const KeyframeTriple& k, const Twirl& S) {
 }
 
 TEST(HeLp, RotationAndDilationViolateSimilarityInvarianceMeasurably) {
-  // READING-NOTES item 7 reports ~4e-3 for a rotation by 0.1 rad and ~3e-2 for
+  // docs/paper-notes.md N7 reports ~4e-3 for a rotation by 0.1 rad and ~3e-2 for
   // a dilation by 2, relative to the figure. We measure the same kind of
   // numbers on a fixed configuration (and record them in the test output).
   const KeyframeTriple k{{0.0, {{0, 0}, 1.0, 0.4}}, {0.5, {{3, 1.5}, 0.6, 2.0}}, {1.0, {{6, 0}, 1.2, 2.8}}};

@@ -1,4 +1,4 @@
-// The -Pe machinery of P7/P8 (READING-NOTES item 13).
+// The -Pe machinery of P7/P8 (docs/paper-notes.md N13).
 #include "core/perseverant.hpp"
 
 #include "core/pitas/motion.hpp"

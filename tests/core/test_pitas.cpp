@@ -80,7 +80,7 @@ Twirl any_translation(Sampler& s) { return translation(s.point(10)); }
 TEST_P(EveryPita, IsSimilarityInvariant) {
   const Method m = method();
   if (m == Method::P5 || m == Method::P10) {
-    GTEST_SKIP() << "documented exception (READING-NOTES items 6-7): see "
+    GTEST_SKIP() << "documented exception (docs/paper-notes.md N6-N7): see "
                     "PartialInvariance tests below";
   }
   for (Config c : {Config::tame, Config::uneven, Config::wild}) {
@@ -143,7 +143,7 @@ TEST_P(EveryPita, HandlesExtremeButValidKeyframes) {
 // ---- Cross-checks stated by the papers -------------------------------------
 
 TEST(CrossCheck, SteadyMiddleKeyframeGivesTheSteadyMorph) {
-  // READING-NOTES item 14 / Fig. 28: with B = M(A, C) and even knots, P4, P6,
+  // docs/paper-notes.md N14 / Fig. 28: with B = M(A, C) and even knots, P4, P6,
   // P7, P8 and P9 reproduce M(A, C, t) exactly; P5 does not.
   Sampler s(500);
   for (int i = 0; i < 100; ++i) {
@@ -190,7 +190,7 @@ TEST(CrossCheck, P6IsTheAverageOfTwoTransportedMorphs) {
 }
 
 TEST(CrossCheck, P4ControlArrowsAverageToTheMiddleKeyframe) {
-  // READING-NOTES item 3: B = M(L, R).
+  // docs/paper-notes.md N3: B = M(L, R).
   Sampler s(530);
   for (int i = 0; i < 200; ++i) {
     const KeyframeTriple k = s.triple(Config::wild);

@@ -50,7 +50,7 @@ TEST(Twirl, FixedPointIsFixedAndMatchesEq19) {
     const auto f = fixed_point(T);
     ASSERT_TRUE(f.has_value());
     EXPECT_NEAR(std::abs((T * *f) - *f), 0.0, 1e-10 * (1 + std::abs(*f)));
-    // READING-NOTES item 1: f = (B.p - lambda A.p) / (1 - lambda), lambda = m e^{iw}.
+    // docs/paper-notes.md N1: f = (B.p - lambda A.p) / (1 - lambda), lambda = m e^{iw}.
     const Complex lambda = std::polar(B.m / A.m, B.w - A.w);
     EXPECT_NEAR(std::abs(*f - (B.p - lambda * A.p) / (1.0 - lambda)), 0.0,
                 1e-10 * (1 + std::abs(*f)));

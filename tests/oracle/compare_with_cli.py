@@ -321,7 +321,7 @@ FIXED = [
     # the same inside [a, c]: P9 (Eq. D.2) with an arithmetic path keeps -LP magnitudes
     ("P9", [0.0, 0.01, 1.0], [(0j, 1.0, 0.0), (1 + 0j, 20.0, 1.0), (2 + 1j, 1.0, 0.0)],
      {"path_mean": "arithmetic"}, [0.1, 0.2, 0.5], "fixed: P9 arithmetic path, skewed knots"),
-    # Fig. 28 / READING-NOTES 14 configuration, with extrapolation (Sec. 7.5)
+    # Fig. 28 / docs/paper-notes.md N14 configuration, with extrapolation (Sec. 7.5)
     ("P6", [0.0, 0.5, 1.0], [(0j, 1.0, 0.4), (3 + 1.5j, 0.6, 2.0), (6 + 0j, 1.2, 3.5 + 2 * math.pi)],
      None, [-0.5, 0.0, 0.25, 0.5, 1.0, 1.5], "fixed: fig01 keyframes, C with one more turn"),
 ]

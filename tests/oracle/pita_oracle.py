@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Independent oracle for the pita CLI (pure Python 3, standard library only).
 
-Written from ../../../shared/papers/pita-three-keyframes.md (with the corrections of
-READING-NOTES.md) and the choices documented in /work/main/README.md, without looking at
+Written from the PITA paper (see docs/paper-notes.md; with the corrections of its
+sections N1-N16) and the choices documented in /work/main/README.md, without looking at
 src/core.  Points and vectors are complex numbers.
 
 An arrow is a tuple (p, m, w): origin p (complex), magnitude m > 0, winding w (any real).
@@ -80,7 +80,7 @@ def lagrange_weights(a, b, c, t):
 
 # --------------------------------------------------------------------------- twirls (Eq. 5-8, 17-19)
 class Twirl:
-    """The twirl T_{A,B} mapping arrow A onto arrow B (Eq. 17-19, READING-NOTES 1).
+    """The twirl T_{A,B} mapping arrow A onto arrow B (Eq. 17-19, docs/paper-notes.md N1).
 
     L = ln(B.m/A.m) + i (B.w - A.w); T^t x = A.p + e^{tL}(x - A.p) + phi_t (B.p - A.p),
     phi_t = expm1(tL)/expm1(L), or t when |e^L - 1| < TWIRL_EPS (README).
@@ -207,7 +207,7 @@ def p3(a, A, b, B, c, C, t):
 
 
 def p2(a, A, b, B, c, C, t, anchor="start"):
-    """LS-Po: Eq. 26 as corrected by READING-NOTES 2 and README."""
+    """LS-Po: Eq. 26 as corrected by docs/paper-notes.md N2 and README."""
     x, y, z = lagrange_weights(a, b, c, t)
     m = x * A[1] + y * B[1] + z * C[1]
     w = x * A[2] + y * B[2] + z * C[2]
@@ -231,7 +231,7 @@ def p2(a, A, b, B, c, C, t, anchor="start"):
 
 
 def p10(a, A, b, B, c, C, t):
-    """Pa-EL (appendix B; READING-NOTES 6: principal logs)."""
+    """Pa-EL (appendix B; docs/paper-notes.md N6: principal logs)."""
     x, y, z = lagrange_weights(a, b, c, t)
     p = x * A[0] + y * B[0] + z * C[0]
     lm = x * math.log(A[1]) + y * math.log(B[1]) + z * math.log(C[1])
@@ -241,7 +241,7 @@ def p10(a, A, b, B, c, C, t):
 
 # --------------------------------------------------------------------------- coordinated PITAs
 def p6(a, A, b, B, c, C, t):
-    """La-LP, Eq. 34 with READING-NOTES 4."""
+    """La-LP, Eq. 34 with docs/paper-notes.md N4."""
     x, y, z = lagrange_weights(a, b, c, t)
     L = sta(sma(A, B, y + z), B, C, z)
     R = sta(sma(C, B, x + y), B, A, x)
@@ -263,7 +263,7 @@ def bezier(A, B, C, t):
 
 
 def p4(a, A, b, B, c, C, t):
-    """Be-LP, Eq. 27-32 with READING-NOTES 3 and the README time warp."""
+    """Be-LP, Eq. 27-32 with docs/paper-notes.md N3 and the README time warp (N17)."""
     u = warp(a, b, c, t)
     if u <= 0.5:
         Lc = sta(sma(A, B, 0.75), C, B, 0.25)
@@ -304,7 +304,7 @@ def _exp_ratio(l):  # expm1(l)/l
 
 
 def p5s(a, A, b, B, c, C, t):
-    """Hs-LP (README, READING-NOTES 7): P5's blend of principal logs done in the frame of
+    """Hs-LP (README, docs/paper-notes.md N7): P5's blend of principal logs done in the frame of
     F = M(A, C): X' = F^-1 X (z -> (v_X/v_F) z + (p_X - p_F)/v_F), relative angles reduced
     to (-pi, pi], blended about the frame's origin F.p; D = F D', D.w = F.w + blended angle.
     (Which of centroid/no centroid and principal/actual relative angles the README means
@@ -363,7 +363,7 @@ def _kappa_delta(A, B, C):
 
 def p7(a, A, b, B, c, C, t):
     """Ra-Pe: every end point obeys x'' = k^2 (x - f), knots tau = -1, 0, 1
-    (READING-NOTES 13); x(tau) = x_b + (x_a+x_c-2x_b)/2 Q + (x_c-x_a)/2 S."""
+    (docs/paper-notes.md N13); x(tau) = x_b + (x_a+x_c-2x_b)/2 Q + (x_c-x_a)/2 S."""
     tau = 2 * warp(a, b, c, t) - 1
     delta = _kappa_delta(A, B, C)
     Q, S, _ = _qsr(delta, tau)
@@ -416,7 +416,7 @@ def evaluate(method, keyframes, t, options=None):
 def selfcheck(n=200, seed=7):
     """(Distances are relative to the frame's size.)  Properties the paper states, checked on the oracle itself (independent of the CLI):
     interpolation, symmetry (Eq. 41), similarity invariance (Eq. 40; P5/P10 excepted,
-    READING-NOTES 7), twirl_between(A, B) . A = B, P4 C1 at b, and the ODEs of P7
+    docs/paper-notes.md N7), twirl_between(A, B) . A = B, P4 C1 at b, and the ODEs of P7
     (x'' = K (x - f), one K and f for both end points) and P8 (alpha'' = e alpha,
     beta'' = g alpha) by finite differences.  Returns the worst residual per check."""
     import random

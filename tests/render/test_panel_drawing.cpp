@@ -123,7 +123,7 @@ TEST(DiscrepancyLayer, RadiusIsScaleTimesE) {
                                          {ti - h, frames[i - 1]}};
         predicted = make_motion(Method::P1, seen)->at(ti);
       }
-      // E by its closed form (READING-NOTES item 5), independent of Eq. 44-47.
+      // E by its closed form (docs/paper-notes.md N5), independent of Eq. 44-47.
       const Arrow& x = frames[i];
       const double E = (std::norm(predicted.p - x.p) + std::norm(predicted.q() - x.q())) *
                        (1.0 / (x.m * x.m) + 1.0 / (predicted.m * predicted.m));

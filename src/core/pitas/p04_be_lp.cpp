@@ -10,7 +10,7 @@ BeLp::BeLp(const KeyframeTriple& k) : k_(k) {
   const Arrow& A = k.a.arrow;
   const Arrow& B = k.b.arrow;
   const Arrow& C = k.c.arrow;
-  // READING-NOTES item 3 (the SAM paper's leftControl, its Sec. 5.3).
+  // docs/paper-notes.md N3 (the SAM paper's leftControl, its Sec. 5.3).
   left_control_ = steady_transport(steady_morph(A, B, 0.75), C, B, 0.25);
   right_control_ = steady_transport(steady_morph(C, B, 0.75), A, B, 0.25);
   a_to_l_ = twirl_between(A, left_control_);

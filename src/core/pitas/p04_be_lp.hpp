@@ -1,5 +1,5 @@
 // P4:Be-LP (Sec. 3.2, Eq. 27-32): two Bezier SMAs joined at B, with the
-// control arrows of READING-NOTES item 3:
+// control arrows of docs/paper-notes.md N3:
 //   L = T_{C->B}^{1/4} . M(A, B, 3/4),   R = T_{A->B}^{1/4} . M(C, B, 3/4),
 // so that B = M(L, R) and the motion is C1 at t = b. The Bezier parameter is
 // u = knot_warp(a, b, c, t) (knot_warp.hpp): for even knots u = (t-a)/(c-a) as

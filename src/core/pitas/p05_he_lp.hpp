@@ -1,7 +1,7 @@
 // P5:He-LP (Sec. 3.2, Eq. 33, appendices A and C): the exponential of the
 // Lagrange-weighted mean of the logs of the keyframes' homogeneous matrices,
 // taken about the centroid o of the three origins (appendix C's heuristic).
-// Logs use principal angles (READING-NOTES item 6), so P5 is not winding-aware
+// Logs use principal angles (docs/paper-notes.md N6), so P5 is not winding-aware
 // and pops when a keyframe angle crosses +-pi. It is invariant to translations
 // only (item 7): see HsLp for the similarity-invariant variant.
 //

@@ -1,4 +1,4 @@
-// P5S:Hs-LP, our similarity-invariant variant of P5 (READING-NOTES item 7):
+// P5S:Hs-LP, our similarity-invariant variant of P5 (docs/paper-notes.md N7):
 // the same blend of homogeneous logs, done in the frame of the steady average
 // F = M(A, C) instead of about the centroid. Each keyframe is expressed in F's
 // frame (F^{-1} . A), blended as P5 does (principal angles), and mapped back by

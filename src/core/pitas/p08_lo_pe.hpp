@@ -1,5 +1,5 @@
 // P8:Lo-Pe (Sec. 3.3, Eq. 37-39, appendix F), PAM restricted to
-// similarities (READING-NOTES item 13): U(tau): z -> a(tau) z + b(tau) with
+// similarities (docs/paper-notes.md N13): U(tau): z -> a(tau) z + b(tau) with
 // U'' = U o E, i.e. a'' = e a and b'' = g a. a is the -Pe vector motion and
 // b, the start point, integrates it twice:
 //   p(tau) = p_b + (p_c - p_a)/2 tau + (p_a + p_c - 2 p_b)/2 Q(tau)

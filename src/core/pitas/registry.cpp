@@ -44,37 +44,6 @@ constexpr std::array<MethodInfo, 15> kMethods{{
     {Method::LSLP, "LS-LP", "LS-LP", "log-spiral point, log-polar vector (Fig. 7)", 3, true, false},
 }};
 
-std::string lower(std::string_view s) {
-  std::string r(s);
-  for (char& ch : r) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return r;
-}
-
-// The names a method answers to, lower case.
-std::vector<std::string> names_of(const MethodInfo& m) {
-  std::vector<std::string> names{lower(m.id), lower(m.mnemonic),
-                                 lower(std::string(m.id) + ":" + std::string(m.mnemonic))};
-  if (m.id.size() > 1 && m.id[0] == 'P' && std::isdigit(static_cast<unsigned char>(m.id[1]))) {
-    names.push_back(lower(m.id.substr(1)));  // "6", "5s"
-  }
-  return names;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 std::span<const MethodInfo> all_methods() { return kMethods; }
@@ -84,35 +53,6 @@ const MethodInfo& info(Method m) {
     if (i.method == m) return i;
   }
   throw std::logic_error("unregistered method");
-}
-
-std::optional<Method> find_method(std::string_view name) {
-  const std::string key = lower(name);
-  for (const MethodInfo& m : kMethods) {
-    for (const std::string& n : names_of(m)) {
-      if (n == key) return m.method;
-    }
-  }
-  return std::nullopt;
-}
-
-std::vector<std::string> suggest_methods(std::string_view name) {
-  const std::string key = lower(name);
-  std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const MethodInfo& m : kMethods) {
-    std::size_t best = std::string::npos;
-    for (const std::string& n : names_of(m)) best = std::min(best, edit_distance(key, n));
-    if (best <= 2) {
-      scored.emplace_back(best, m.id == m.mnemonic
-                                    ? std::string(m.id)
-                                    : std::string(m.id) + " (" + std::string(m.mnemonic) + ")");
-    }
-  }
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  std::vector<std::string> out;
-  for (auto& s : scored) out.push_back(std::move(s.second));
-  return out;
 }
 
 std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const MethodOptions& o) {

@@ -1,4 +1,5 @@
-// The only place where method names and mnemonics map to motions.
+// The arrow methods: their table (ids, mnemonics, titles, keyframe counts)
+// and how each is built. core/methods.hpp resolves names over it.
 #pragma once
 
 #include <memory>
@@ -48,10 +49,8 @@ struct MethodInfo {
 std::span<const MethodInfo> all_methods();
 const MethodInfo& info(Method m);
 
-// Accepts "P6", "p6", "6", "La-LP", "la-lp", "P6:La-LP" (case-insensitive).
-std::optional<Method> find_method(std::string_view name);
-// The closest known names to a misspelt one, best first ("did you mean").
-std::vector<std::string> suggest_methods(std::string_view name);
+// Names ("P6", "la-lp", "6", ...) are resolved by core/methods.hpp, the one
+// registry of both kinds of method.
 
 // Builds the motion through the keyframes. Throws std::invalid_argument when
 // the number of keyframes is wrong or the knots are not strictly increasing,

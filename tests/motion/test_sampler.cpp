@@ -1,12 +1,12 @@
-// Uniform sample times (src/scene/sampling.cpp).
+// The sampler (src/motion/sampler.cpp): uniform times and frames.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <vector>
 
-#include "scene/sampling.hpp"
+#include "motion/sampler.hpp"
 
-namespace pita::scene {
+namespace pita::motion {
 namespace {
 
 TEST(UniformTimes, EvenlySpacedWithExactEnds) {
@@ -31,4 +31,4 @@ TEST(UniformTimes, NeedsTwoSamples) {
 }
 
 }  // namespace
-}  // namespace pita::scene
+}  // namespace pita::motion

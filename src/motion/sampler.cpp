@@ -1,0 +1,44 @@
+#include "motion/sampler.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace pita::motion {
+
+std::vector<double> uniform_times(double first, double last, int count) {
+  if (count < 2) throw std::invalid_argument("uniform_times needs at least 2 samples");
+  std::vector<double> times(static_cast<std::size_t>(count));
+  const double span = last - first;
+  const double intervals = static_cast<double>(count - 1);
+  for (int i = 0; i < count; ++i) {
+    times[static_cast<std::size_t>(i)] = first + span * static_cast<double>(i) / intervals;
+  }
+  times.back() = last;  // first + (last - first) may differ from last by an ulp
+  return times;
+}
+
+std::vector<double> uniform_times(const SceneMotion& motion, int count) {
+  std::vector<double> times = uniform_times(motion.first(), motion.last(), count);
+  for (double t : times) {
+    if (!std::isfinite(t)) {
+      throw NoMotion(motion.file(), "", "the knots are too far apart to sample between them");
+    }
+  }
+  return times;
+}
+
+std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const double> times) {
+  std::vector<Frame> frames;
+  frames.reserve(times.size());
+  for (double t : times) frames.push_back({t, motion.arrow_at(t)});
+  return frames;
+}
+
+std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times) {
+  std::vector<PoseFrame> frames;
+  frames.reserve(times.size());
+  for (double t : times) frames.push_back({t, motion.pose_at(t)});
+  return frames;
+}
+
+}  // namespace pita::motion

@@ -1,0 +1,179 @@
+#include "motion/scene_motion.hpp"
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/pitas/registry.hpp"
+
+namespace pita::motion {
+
+namespace {
+
+Point apply_to(const Affine2& A, Point p) {
+  const Eigen::Vector2d x = apply(A, Eigen::Vector2d(p.real(), p.imag()));
+  return {x.x(), x.y()};
+}
+
+const char* point_name(scene::TrackedPoint point) {
+  switch (point) {
+    case scene::TrackedPoint::start: return "p";
+    case scene::TrackedPoint::end: return "q";
+    case scene::TrackedPoint::middle: return "mid";
+  }
+  return "p";
+}
+
+// The point of a frame arc length follows: for arrows p, q or their midpoint;
+// for poses the images of the reference triangle's first two points, or of
+// their midpoint (README "Timing").
+Point tracked(const Arrow& frame, scene::TrackedPoint point) {
+  switch (point) {
+    case scene::TrackedPoint::start: return frame.p;
+    case scene::TrackedPoint::end: return frame.q();
+    case scene::TrackedPoint::middle: return 0.5 * (frame.p + frame.q());
+  }
+  return frame.p;
+}
+
+}  // namespace
+
+std::string method_label(const scene::Scene& scene, const scene::Panel& panel) {
+  if (scene.kind == scene::SceneKind::poses) return std::string(info(panel.pose_method).id);
+  const MethodInfo& about = info(panel.method);
+  if (about.mnemonic.empty() || about.mnemonic == about.id) return std::string(about.id);
+  return fmt::format("{} ({})", about.id, about.mnemonic);
+}
+
+SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
+  SceneMotion motion;
+  motion.kind_ = scene.kind;
+  motion.file_ = scene.path;
+  motion.label_ = method_label(scene, panel);
+  const bool poses = scene.kind == scene::SceneKind::poses;
+  motion.pointer_ = panel.motion_pointer;
+
+  if (poses) {
+    motion.method_id_ = std::string(info(panel.pose_method).id);
+    if (panel.poses.empty()) {
+      throw NoMotion(motion.file_, motion.pointer_, "the panel has no poses to interpolate");
+    }
+    try {
+      motion.poses_ = std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions);
+    } catch (const NoSamBetweenPoses& error) {
+      throw NoMotion(motion.file_, motion.pointer_, scene::no_sam_reason(error, panel.pose_method));
+    } catch (const std::invalid_argument& error) {
+      throw NoMotion(motion.file_, motion.pointer_, error.what());
+    }
+    for (const TimedPose& pose : panel.poses) motion.knots_.push_back(pose.t);
+  } else {
+    motion.method_id_ = std::string(info(panel.method).id);
+    try {
+      motion.arrows_ = make_motion(panel.method, panel.keyframes, panel.options);
+    } catch (const MotionDomainError& error) {
+      throw NoMotion(motion.file_, motion.pointer_,
+                     fmt::format("method {} has no motion through these keyframes: {}", motion.label_, error.what()));
+    } catch (const std::invalid_argument& error) {
+      throw NoMotion(motion.file_, motion.pointer_,
+                     fmt::format("method {} refuses these keyframes: {}", motion.label_, error.what()));
+    }
+    for (const Keyframe& key : panel.keyframes) motion.knots_.push_back(key.t);
+  }
+
+  motion.reference_ = scene.reference_triangle;
+  const scene::Timing& timing = panel.timing;
+  if (timing.is_identity()) return motion;
+  std::function<Point(double)> path;
+  if (timing.arc_length) path = motion.point_path(*timing.arc_length);
+  const std::string at = timing.arc_length ? timing.pointer + "/arc_length" : timing.pointer;
+  try {
+    motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
+  } catch (const std::exception& error) {
+    throw NoMotion(motion.file_, at,
+                   fmt::format("cannot pace {} by the arc length of {}: {}", motion.label_,
+                               point_name(timing.arc_length.value_or(scene::TrackedPoint::start)), error.what()));
+  }
+  return motion;
+}
+
+std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) const {
+  if (kind_ == scene::SceneKind::poses) {
+    const Point origin = point == scene::TrackedPoint::start ? reference_[0]
+                         : point == scene::TrackedPoint::end ? reference_[1]
+                                                             : 0.5 * (reference_[0] + reference_[1]);
+    return [pose_motion = poses_, origin](double tau) { return apply_to(pose_motion->at(tau), origin); };
+  }
+  return [arrow_motion = arrows_, point](double tau) { return tracked(arrow_motion->at(tau), point); };
+}
+
+SceneMotion build_motion(const scene::Scene& scene) {
+  scene::Panel own;
+  own.method = scene.method;
+  own.options = scene.options;
+  own.keyframes = scene.keyframes;
+  own.pose_method = scene.pose_method;
+  own.poses = scene.poses;
+  own.subdivisions = scene.subdivisions;
+  own.timing = scene.timing;
+  own.motion_pointer = scene.kind == scene::SceneKind::poses ? "/poses" : "/keyframes";
+  return build_motion(scene, own);
+}
+
+void SceneMotion::undefined(double t, const std::exception& error) const {
+  throw NoMotion(file_, pointer_, fmt::format("method {} is undefined at t = {}: {}", label_, t, error.what()));
+}
+
+Arrow SceneMotion::arrow_at(double t) const {
+  Arrow arrow;
+  try {
+    arrow = arrows_->at(warp_(t));
+  } catch (const std::exception& error) {
+    undefined(t, error);
+  }
+  const Point q = arrow.q();
+  if (!is_finite(arrow) || !std::isfinite(q.real()) || !std::isfinite(q.imag())) {
+    throw NoMotion(file_, pointer_,
+                   fmt::format("method {} has no finite frame at t = {}: its numbers overflow double "
+                               "precision there (t too far outside the knots, knots very uneven, or "
+                               "magnitudes of very different sizes)",
+                               label_, t));
+  }
+  return arrow;
+}
+
+Affine2 SceneMotion::pose_at(double t) const {
+  Affine2 pose;
+  try {
+    pose = poses_->at(warp_(t));
+  } catch (const std::exception& error) {
+    undefined(t, error);
+  }
+  if (!pose.L.allFinite() || !pose.b.allFinite()) {
+    throw NoMotion(file_, pointer_,
+                   fmt::format("method {} has no finite pose at t = {}: its numbers overflow double "
+                               "precision there (t far outside the knots, or poses of extreme scales)",
+                               label_, t));
+  }
+  return pose;
+}
+
+Affine2 SceneMotion::pose_velocity(double t) const {
+  Affine2 rate;
+  try {
+    rate = poses_->velocity(warp_(t));
+  } catch (const std::exception& error) {
+    undefined(t, error);
+  }
+  if (!warp_.is_identity()) {
+    // The warp's rate d tau / d t, by a central difference (the ease and the
+    // arc-length inverse are smooth inside each span).
+    const double h = 1e-6 * (last() - first());
+    const double slope = (warp_(t + h) - warp_(t - h)) / (2.0 * h);
+    rate = Affine2{rate.L * slope, rate.b * slope};
+  }
+  return rate;
+}
+
+}  // namespace pita::motion

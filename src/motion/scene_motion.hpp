@@ -1,0 +1,93 @@
+// The motion stage: the motion of a scene (or of one panel of it), built once
+// from the resolved scene model, arrows or poses alike, with its time warp.
+// Everything that evaluates a motion (eval, render, golden, analysis) goes
+// through here:
+//
+//   scene file -> scene model (src/scene) -> SceneMotion (built once) ->
+//   timed samples (sampler.hpp) -> layers, numbers, figures
+//
+// Times given to a SceneMotion are scene times; it evaluates the underlying
+// method at the warped time tau = warp(t) ("timing", README "Timing").
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/affine2.hpp"
+#include "core/arrow.hpp"
+#include "core/pitas/motion.hpp"
+#include "core/pose_motion.hpp"
+#include "core/time_warp.hpp"
+#include "motion/no_motion.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::motion {
+
+class SceneMotion {
+ public:
+  scene::SceneKind kind() const { return kind_; }
+  // The canonical method id ("P6", "SAM") and how messages name it ("P6 (La-LP)").
+  const std::string& method_id() const { return method_id_; }
+  const std::string& label() const { return label_; }
+  // The knots (keyframe or pose times), strictly increasing.
+  const std::vector<double>& knots() const { return knots_; }
+  double first() const { return knots_.front(); }
+  double last() const { return knots_.back(); }
+
+  // The motion's own time at scene time t.
+  double motion_time(double t) const { return warp_(t); }
+  const TimeWarp& warp() const { return warp_; }
+
+  // D(t) (arrow scenes) and A(t) (pose scenes) at scene time t. Throw
+  // NoMotion when the method is undefined there or its value is not finite.
+  Arrow arrow_at(double t) const;
+  Affine2 pose_at(double t) const;
+  // dA/dt at scene time t (pose scenes), the warp's rate included.
+  Affine2 pose_velocity(double t) const;
+
+  // The path of a point of the frame as a function of the motion's own time
+  // tau (no warp): for arrows p, q or their midpoint; for poses the images of
+  // the reference triangle's first point, second point, or their midpoint.
+  std::function<Point(double)> point_path(scene::TrackedPoint point) const;
+
+  // The method's motion without the warp (for analysis and tests).
+  const Motion& arrows() const { return *arrows_; }
+  const PoseMotion& poses() const { return *poses_; }
+
+  // File and JSON Pointer this motion's errors name.
+  const std::string& file() const { return file_; }
+  const std::string& pointer() const { return pointer_; }
+
+ private:
+  friend SceneMotion build_motion(const scene::Scene&, const scene::Panel&);
+  friend SceneMotion build_motion(const scene::Scene&);
+  SceneMotion() = default;
+  [[noreturn]] void undefined(double t, const std::exception& error) const;
+
+  scene::SceneKind kind_ = scene::SceneKind::arrows;
+  std::string method_id_, label_;
+  std::vector<double> knots_;
+  std::shared_ptr<const Motion> arrows_;
+  std::shared_ptr<const PoseMotion> poses_;
+  TimeWarp warp_;
+  std::array<Point, 3> reference_{};  // poses: the reference triangle
+  std::string file_, pointer_;
+};
+
+// The motion of `panel` (its method, keyframes or poses, options and timing).
+// The only place motions are built from a scene. Throws NoMotion: the method
+// refuses the keyframes, no SAM exists between two poses, the panel has no
+// poses, or the arc-length path has zero length (at the timing's pointer).
+SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel);
+// The scene's own motion (its method, keyframes or poses, and timing).
+SceneMotion build_motion(const scene::Scene& scene);
+
+// "P6 (La-LP)", "SMA", "SAM": a method as messages name it.
+std::string method_label(const scene::Scene& scene, const scene::Panel& panel);
+
+}  // namespace pita::motion

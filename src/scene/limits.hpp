@@ -1,0 +1,53 @@
+// Every limit on what a scene may ask for, in one place. Each error that
+// enforces one names the field (its JSON Pointer) and the bound, and
+// schema/scene.schema.json states the same bounds (tests/scene/test_limits.cpp
+// checks both sides of each). They keep every figure and evaluation within
+// bounded memory and time while leaving room far beyond the papers' figures.
+#pragma once
+
+#include <cstddef>
+
+namespace pita::scene {
+
+// ---------------------------------------------------------------- evaluation
+
+// Uniformly spaced samples ("samples" in a scene, --samples on the command
+// line), and the default when neither is given.
+inline constexpr int kMinSamples = 2;
+inline constexpr int kMaxSamples = 1'000'000;
+inline constexpr int kDefaultSamples = 9;
+
+// Keyframe values. Knots, coordinates and magnitudes beyond 1e100 (or
+// magnitudes below 1e-100) leave the methods no room before their
+// intermediate numbers overflow; windings beyond 1e6 rad (~159 000 turns) lose
+// the angle's precision in w + 2 pi k.
+inline constexpr double kMaxKeyframeValue = 1e100;
+inline constexpr double kMinMagnitude = 1e-100;
+inline constexpr double kMaxWinding = 1e6;
+
+// Pose scenes: entries of matrices and coordinates within kMaxKeyframeValue;
+// at most this many poses.
+inline constexpr int kMaxPoses = 1000;
+
+// ---------------------------------------------------------------- figures
+
+inline constexpr int kMinCanvasSide = 16;        // pixels
+inline constexpr int kMaxCanvasSide = 8192;      // pixels, per side
+inline constexpr int kMaxColumns = 64;           // "columns" of the panel grid
+inline constexpr int kMaxPanels = 64;
+inline constexpr int kMaxLayers = 64;            // per scene or panel
+inline constexpr int kMaxFigureSamples = 10'000;      // frames of a drawn pattern, stroke, banner
+inline constexpr int kMaxTrajectorySamples = 100'000; // points of a trajectory, path or plot
+inline constexpr int kDefaultFigureSamples = 17;      // frames of a pattern when nothing says
+inline constexpr std::size_t kMaxTextLength = 1000;   // characters of a banner or label
+inline constexpr std::size_t kMaxDashes = 16;         // lengths of a "dash" pattern
+inline constexpr std::size_t kMaxKeyframeColors = 16; // "colors" of a keyframes or poses layer
+
+// Pose layers and shapes.
+inline constexpr int kMaxShapes = 64;
+inline constexpr int kMaxShapePoints = 10'000;
+inline constexpr int kMaxExistenceSide = 4000;           // "columns", "rows" of "existence"
+inline constexpr int kMaxExistenceCells = 4'000'000;     // columns x rows of "existence"
+inline constexpr int kMaxPatchSide = 100;                // "columns", "rows" of "patch"
+
+}  // namespace pita::scene
