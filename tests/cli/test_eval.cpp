@@ -1,11 +1,11 @@
 // pita eval, through the real binary (src/cli/eval.cpp): exit codes, stdout
 // and stderr. Bad input exits 2 with one message naming the file, the JSON
-// Pointer and the reason, and prints nothing on stdout.
+// Pointer and the reason, and prints nothing on stdout (the bad scenes of
+// tests/data/bad/: test_bad_scenes_cli.cpp; bad options: here).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <ostream>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -143,75 +143,10 @@ TEST_F(Eval, EveryStarterSceneEvaluates) {
 }
 
 // ------------------------------------------------------------ bad scenes
-
-struct BadScene {
-  std::string name;   // test name, and the file is <name>.json
-  std::string text;   // the scene
-  std::string error;  // the whole of stderr, after "pita: <name>.json"
-};
-
-// Test names print the case, not the bytes of the struct.
-void PrintTo(const BadScene& bad, std::ostream* out) { *out << bad.name; }
-
-class EvalBadScene : public ::testing::TestWithParam<BadScene> {};
-
-TEST_P(EvalBadScene, ExitsTwoWithFilePointerAndReason) {
-  const BadScene& bad = GetParam();
-  const ScratchDir dir;
-  const std::string file = bad.name + ".json";
-  dir.write(file, bad.text);
-  const RunResult result = run_pita({"eval", file}, dir.path());
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err, "pita: " + file + bad.error + "\n");
-}
-
-const std::string kA = R"({"t": 0, "p": [0, 0], "m": 1, "w": 0})";
-const std::string kC = R"({"t": 1, "p": [2, 0], "m": 1, "w": 0})";
-std::string p6_with_middle(const std::string& middle) {
-  return R"({"method": "P6", "keyframes": [)" + kA + ", " + middle + ", " + kC + "]}";
-}
-
-INSTANTIATE_TEST_SUITE_P(
-    Classes, EvalBadScene,
-    ::testing::Values(
-        BadScene{"malformed", "{\n  \"method\": \"P6\",\n  \"keyframes\": [1, 2,]\n}",
-                 ":3:22: malformed JSON: syntax error while parsing value - unexpected ']'; "
-                 "expected '[', '{', or a literal"},
-        BadScene{"overflow", "{\"method\": \"P6\",\n \"samples\": 1e999}",
-                 ":2:13: number 1e999 is out of range (too large for a double)"},
-        BadScene{"not_an_object", "[1, 2]", ": a scene must be a JSON object (got array [1,2])"},
-        BadScene{"missing_field", p6_with_middle(R"({"p": [1, 0], "m": 1, "w": 0})"),
-                 ": /keyframes/1/t: missing required field (the knot, a time value)"},
-        BadScene{"wrong_type", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": "abc", "w": 0})"),
-                 ": /keyframes/1/m: must be a number (got string \"abc\")"},
-        BadScene{"magnitude", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": -2, "w": 1})"),
-                 ": /keyframes/1/m: magnitude must be > 0 (got -2)"},
-        BadScene{"q_and_m", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "q": [2, 2]})"),
-                 ": /keyframes/1/q: give either \"q\" or \"m\" and \"w\", not both"},
-        BadScene{"zero_length", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "q": [1, 0]})"),
-                 ": /keyframes/1/q: q equals p: a zero-length arrow has no direction"},
-        BadScene{"bad_point", p6_with_middle(R"({"t": 0.5, "p": [1], "m": 1, "w": 0})"),
-                 ": /keyframes/1/p: must be an array of two numbers [x, y] (got array [1])"},
-        BadScene{"turns", p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 1, "turns": 0.5})"),
-                 ": /keyframes/1/turns: must be an integer (got 0.5)"},
-        BadScene{"equal_knots", p6_with_middle(R"({"t": 0, "p": [1, 0], "m": 1, "w": 1})"),
-                 ": /keyframes/1/t: knot 0 equals the previous knot; knots must be strictly "
-                 "increasing"},
-        BadScene{"unordered_knots", p6_with_middle(R"({"t": 2, "p": [1, 0], "m": 1, "w": 1})"),
-                 ": /keyframes/2/t: knot 1 is less than the previous knot 2; knots must be strictly "
-                 "increasing"},
-        BadScene{"unknown_method", R"({"method": "La-LQ", "keyframes": []})",
-                 ": /method: unknown method \"La-LQ\"; did you mean P6 (La-LP), P3 (Pa-LP) or LS-LP?"},
-        BadScene{"keyframe_count", R"({"method": "SMA", "keyframes": [)" + kA + ", " + kC + ", " +
-                                       kC + "]}",
-                 ": /keyframes: method SMA takes exactly 2 keyframes (got 3)"},
-        BadScene{"samples", R"({"samples": 1000001, "method": "P6", "keyframes": [)" + kA + ", " +
-                                R"({"t": 0.5, "p": [1, 0], "m": 1, "w": 1})" + ", " + kC + "]}",
-                 ": /samples: must be an integer between 2 and 1000000 (got 1000001)"},
-        BadScene{"unknown_field", R"({"method": "P6", "keyframe": []})",
-                 ": /keyframe: unknown field \"keyframe\"; did you mean \"keyframes\"?"}),
-    [](const ::testing::TestParamInfo<BadScene>& param_info) { return param_info.param.name; });
+//
+// Every bad scene of tests/data/bad/ is run through `pita eval` and `pita
+// render` by test_bad_scenes_cli.cpp: exit code 2, nothing on stdout, and
+// "pita: FILE: POINTER: REASON" on stderr.
 
 // ------------------------------------------------------------ bad options
 

@@ -1,6 +1,7 @@
 // The figure part of a scene (src/scene/figure_reader.cpp and the panels of
-// src/scene/scene.cpp): title, canvas, layers and panels, their defaults, and
-// the pointer and reason of every kind of error.
+// src/scene/scene.cpp): title, canvas, layers and panels, and their defaults.
+// The pointer and reason of every kind of error: the canvas-*, layers-*,
+// panels-* and title-* files of tests/data/bad/ (test_bad_scenes.cpp).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -9,12 +10,9 @@
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
-#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
-
-using test::error_of;
 
 // A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
 std::string p6_with(const std::string& extra) {
@@ -32,10 +30,6 @@ T only_layer(const std::string& layer) {
   EXPECT_EQ(scene.layers.size(), 1U);
   EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
   return std::get<T>(scene.layers.at(0));
-}
-
-std::string layer_error(const std::string& layer) {
-  return error_of(p6_with(R"(, "layers": [)" + layer + "]"));
 }
 
 Color rgb(double r, double g, double b, double a = 1.0) { return Color{r, g, b, a}; }
@@ -142,52 +136,6 @@ TEST(Canvas, ViewAutoAndShared) {
   EXPECT_FALSE(fit.canvas.shared_fit);
   EXPECT_FALSE(fit.canvas.view.has_value());
   EXPECT_TRUE(fit.canvas.y_up);
-}
-
-TEST(CanvasError, Messages) {
-  EXPECT_EQ(error_of(p6_with(R"(, "title": null)")), "s.json: /title: must be a string (got null)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": 3)")),
-            "s.json: /canvas: the canvas must be an object (got 3)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"hieght": 3})")),
-            "s.json: /canvas/hieght: unknown field \"hieght\"; did you mean \"height\"?");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"width": 8193})")),
-            "s.json: /canvas/width: must be an integer between 16 and 8192 (got 8193)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"height": "600"})")),
-            "s.json: /canvas/height: must be an integer (got string \"600\")");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"margin": -0.1})")),
-            "s.json: /canvas/margin: must be between 0 and 0.45 (got -0.1)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"y_axis": "Up"})")),
-            "s.json: /canvas/y_axis: must be \"up\" or \"down\" (got string \"Up\")");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"columns": 65})")),
-            "s.json: /canvas/columns: must be an integer between 1 and 64 (got 65)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"font": ""})")),
-            "s.json: /canvas/font: must not be empty");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": "nnoe"})")),
-            "s.json: /canvas/background: unknown color \"nnoe\"; did you mean \"none\" "
-            "(transparent)?");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": "#fff0"})")),
-            "s.json: /canvas/background: \"#fff0\" is not a color: \"#\" must be followed by 3, 6 "
-            "or 8 hex digits (\"#rgb\", \"#rrggbb\" or \"#rrggbbaa\")");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"background": false})")),
-            "s.json: /canvas/background: must be a color: a string \"#rgb\", \"#rrggbb\", "
-            "\"#rrggbbaa\" or a name such as \"red\" (got false)");
-}
-
-TEST(CanvasError, View) {
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": "fit"})")),
-            "s.json: /canvas/view: must be \"auto\", \"shared\" or a box {\"min\": [x, y], "
-            "\"max\": [x, y]} (got string \"fit\")");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0]}})")),
-            "s.json: /canvas/view/max: missing required field (the corner [x, y] with the "
-            "greatest x and y)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 1], "maxx": 1}})")),
-            "s.json: /canvas/view/maxx: unknown field \"maxx\"; did you mean \"max\"?");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [0, 1]}})")),
-            "s.json: /canvas/view/max/0: max x must be greater than min x 0 (got 0)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, 2], "max": [1, 1]}})")),
-            "s.json: /canvas/view/max/1: max y must be greater than min y 2 (got 1)");
-  EXPECT_EQ(error_of(p6_with(R"(, "canvas": {"view": {"min": [0, "a"], "max": [1, 1]}})")),
-            "s.json: /canvas/view/min/1: must be a number (got string \"a\")");
 }
 
 // ------------------------------------------------------------ layers
@@ -350,117 +298,6 @@ TEST(Layers, KeepTheirOrder) {
   EXPECT_EQ(scene.layers[3].index(), 7U);
 }
 
-TEST(LayerError, TypeAndFields) {
-  EXPECT_EQ(error_of(p6_with(R"(, "layers": {})")),
-            "s.json: /layers: must be an array of layers (got object {})");
-  EXPECT_EQ(layer_error("[]"), "s.json: /layers/0: a layer must be an object (got array [])");
-  EXPECT_EQ(layer_error(R"({"color": "red"})"),
-            "s.json: /layers/0/type: missing required field (the layer type: \"pattern\", "
-            "\"keyframes\", \"trajectory\", \"stroke\", \"banner\", \"discrepancy\", \"label\" or "
-            "\"legend\")");
-  EXPECT_EQ(layer_error(R"({"type": "patern"})"),
-            "s.json: /layers/0/type: unknown layer type \"patern\"; did you mean \"pattern\"?");
-  EXPECT_EQ(layer_error(R"({"type": "arrows"})"),
-            "s.json: /layers/0/type: unknown layer type \"arrows\"; layer types: pattern, "
-            "keyframes, trajectory, stroke, banner, discrepancy, label, legend");
-  EXPECT_EQ(layer_error(R"({"type": 1})"),
-            "s.json: /layers/0/type: must be \"pattern\", \"keyframes\", \"trajectory\", "
-            "\"stroke\", \"banner\", \"discrepancy\", \"label\" or \"legend\" (got 1)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "text": "hi"})"),
-            "s.json: /layers/0/text: field \"text\" is not used by a \"pattern\" layer (its "
-            "fields: type, color, width, opacity, dash, extended, samples, range)");
-  EXPECT_EQ(layer_error(R"({"type": "keyframes", "color": "red"})"),
-            "s.json: /layers/0/color: field \"color\" is not used by a \"keyframes\" layer (its "
-            "fields: type, colors, width, opacity, winding, spiral_center, extended)");
-  EXPECT_EQ(layer_error(R"({"type": "stroke", "colour": "red"})"),
-            "s.json: /layers/0/colour: unknown field \"colour\"; known fields: type, fill, "
-            "opacity, outline, samples, range");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "colour": "red"})"),
-            "s.json: /layers/0/colour: unknown field \"colour\"; did you mean \"color\"?");
-  EXPECT_EQ(layer_error(R"({"type": "legend", "corners": "top-left"})"),
-            "s.json: /layers/0/corners: unknown field \"corners\"; did you mean \"corner\"?");
-  // The type is read first, wherever it is written.
-  EXPECT_EQ(layer_error(R"({"text": "A", "type": "label", "at": [0, 0], "fill": "red"})"),
-            "s.json: /layers/0/fill: field \"fill\" is not used by a \"label\" layer (its fields: "
-            "type, text, at, size, color)");
-  std::string many;
-  for (int i = 0; i <= kMaxLayers; ++i) many += std::string(i > 0 ? "," : "") + R"({"type": "legend"})";
-  EXPECT_EQ(error_of(p6_with(R"(, "layers": [)" + many + "]")),
-            "s.json: /layers: must have at most 64 layers (got 65)");
-}
-
-TEST(LayerError, Values) {
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "width": 0})"),
-            "s.json: /layers/0/width: must be > 0 and <= 100 (got 0)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "opacity": 2})"),
-            "s.json: /layers/0/opacity: must be between 0 and 1 (got 2)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": 3})"),
-            "s.json: /layers/0/dash: must be an array of at most 16 dash lengths > 0 (got 3)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": [1, -1]})"),
-            "s.json: /layers/0/dash/1: must be > 0 (got -1)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "dash": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]})"),
-            "s.json: /layers/0/dash: must have at most 16 dash lengths (got 17)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "extended": 1})"),
-            "s.json: /layers/0/extended: must be true or false (got 1)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "samples": 10001})"),
-            "s.json: /layers/0/samples: must be an integer between 2 and 10000 (got 10001)");
-  EXPECT_EQ(layer_error(R"({"type": "trajectory", "samples": 1})"),
-            "s.json: /layers/0/samples: must be an integer between 2 and 100000 (got 1)");
-  EXPECT_EQ(layer_error(R"({"type": "pattern", "range": [1, 1]})"),
-            "s.json: /layers/0/range/1: the end of a range must be greater than its start 1 (got 1)");
-  EXPECT_EQ(layer_error(R"({"type": "stroke", "range": 1})"),
-            "s.json: /layers/0/range: must be an array of two times [from, to] (got 1)");
-  EXPECT_EQ(layer_error(R"({"type": "stroke", "range": [0, null]})"),
-            "s.json: /layers/0/range/1: must be a number (got null)");
-  EXPECT_EQ(layer_error(R"({"type": "stroke", "outline": {"width": 200}})"),
-            "s.json: /layers/0/outline/width: must be > 0 and <= 100 (got 200)");
-  EXPECT_EQ(layer_error(R"({"type": "stroke", "outline": {"fill": "red"}})"),
-            "s.json: /layers/0/outline/fill: unknown field \"fill\"; known fields: color, width, "
-            "opacity, dash");
-  EXPECT_EQ(layer_error(R"({"type": "banner", "outline": true, "text": "A"})"),
-            "s.json: /layers/0/outline: an outline must be an object (got true)");
-  EXPECT_EQ(layer_error(R"({"type": "keyframes", "colors": "red"})"),
-            "s.json: /layers/0/colors: must be an array of 1 to 16 colors (got string \"red\")");
-  EXPECT_EQ(layer_error(R"({"type": "keyframes", "colors": ["red", "bleu"]})"),
-            "s.json: /layers/0/colors/1: unknown color \"bleu\"; did you mean \"blue\"?");
-  EXPECT_EQ(layer_error(R"({"type": "keyframes", "spiral_center": "middle"})"),
-            "s.json: /layers/0/spiral_center: must be \"start\" or \"midpoint\" (got string "
-            "\"middle\")");
-  EXPECT_EQ(layer_error(R"({"type": "trajectory", "point": "end"})"),
-            "s.json: /layers/0/point: must be \"p\", \"q\" or \"mid\" (got string \"end\")");
-  EXPECT_EQ(layer_error(R"({"type": "banner"})"),
-            "s.json: /layers/0/text: missing required field (the text to draw)");
-  EXPECT_EQ(layer_error(R"({"type": "banner", "text": ""})"),
-            "s.json: /layers/0/text: must not be empty");
-  EXPECT_EQ(layer_error(R"({"type": "banner", "text": ")" + std::string(1001, 'a') + "\"}"),
-            "s.json: /layers/0/text: must be at most 1000 characters long (got 1001)");
-  EXPECT_EQ(layer_error(R"({"type": "banner", "text": "A", "padding": 0.5})"),
-            "s.json: /layers/0/padding: must be between 0 and 0.45 (got 0.5)");
-  EXPECT_EQ(layer_error(R"({"type": "banner", "text": "A", "font": ""})"),
-            "s.json: /layers/0/font: must not be empty");
-  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "predictor": "pitta"})"),
-            "s.json: /layers/0/predictor: must be \"previous\", \"average\" or \"pita\" (got "
-            "string \"pitta\")");
-  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "method": "P66"})"),
-            "s.json: /layers/0/method: unknown method \"P66\"; did you mean P6 (La-LP), P1 "
-            "(Pa-Ca) or P2 (LS-Po)?");
-  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "scale": -1})"),
-            "s.json: /layers/0/scale: must be > 0 (got -1)");
-  EXPECT_EQ(layer_error(R"({"type": "discrepancy", "fill": "none"})"),
-            "s.json: /layers/0/fill: unknown color \"none\"; a color is \"#rgb\", \"#rrggbb\", "
-            "\"#rrggbbaa\" or one of black, white, red, green, blue, gray, grey, orange, purple, "
-            "brown, magenta, cyan, yellow");
-  EXPECT_EQ(layer_error(R"({"type": "label", "at": [0, 0]})"),
-            "s.json: /layers/0/text: missing required field (the text to draw)");
-  EXPECT_EQ(layer_error(R"({"type": "label", "text": "A"})"),
-            "s.json: /layers/0/at: missing required field (the point [x, y] of the text)");
-  EXPECT_EQ(layer_error(R"({"type": "label", "text": "A", "at": [0, 0], "size": 201})"),
-            "s.json: /layers/0/size: must be > 0 and <= 200 (got 201)");
-  EXPECT_EQ(layer_error(R"({"type": "legend", "corner": "top_left"})"),
-            "s.json: /layers/0/corner: must be \"top-left\", \"top-right\", \"bottom-left\" or "
-            "\"bottom-right\" (got string \"top_left\")");
-}
-
 // ------------------------------------------------------------ panels
 
 TEST(Panels, MethodNames) {
@@ -548,63 +385,6 @@ TEST(Panels, SamplesDefaultWithoutTheScenesSamples) {
   const Scene scene = p6(R"(, "panels": ["P1", {"samples": 4}])");
   EXPECT_EQ(scene.panels.at(0).samples, kDefaultFigureSamples);
   EXPECT_EQ(scene.panels.at(1).samples, 4);
-}
-
-TEST(PanelError, Messages) {
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [])")),
-            "s.json: /panels: must have between 1 and 64 panels (got 0)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": {"method": "P1"})")),
-            "s.json: /panels: must be an array of panels, each a method name or an object (got "
-            "object {\"method\":\"P1\"})");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", null])")),
-            "s.json: /panels/1: a panel must be a method name or an object (got null)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", "P66"])")),
-            "s.json: /panels/1: unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 "
-            "(LS-Po)?");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"metod": "P1"}])")),
-            "s.json: /panels/0/metod: unknown field \"metod\"; did you mean \"method\"?");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"type": "pattern"}])")),
-            "s.json: /panels/0/type: unknown field \"type\"; known fields: method, options, "
-            "keyframes, title, samples, layers");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": 2}])")),
-            "s.json: /panels/0/method: must be a string (got 2)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"title": false}])")),
-            "s.json: /panels/0/title: must be a string (got false)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"samples": 1}])")),
-            "s.json: /panels/0/samples: must be an integer between 2 and 10000 (got 1)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"options": {"anchor": "end"}}])")),
-            "s.json: /panels/0/options/anchor: must be \"start\" or \"midpoint\" (got string "
-            "\"end\")");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"layers": [{"type": "banner"}]}])")),
-            "s.json: /panels/0/layers/0/text: missing required field (the text to draw)");
-}
-
-TEST(PanelError, KeyframesAreCheckedLikeTheScenes) {
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", "P2", "P3", "SMA"])")),
-            "s.json: /panels/3: method SMA takes exactly 2 keyframes (got 3) from the scene; give "
-            "the panel its own \"keyframes\"");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": "SMA", "title": "x"}])")),
-            "s.json: /panels/0/method: method SMA takes exactly 2 keyframes (got 3) from the "
-            "scene; give the panel its own \"keyframes\"");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}]}])")),
-            "s.json: /panels/0/keyframes: method P6 (La-LP) takes exactly 3 keyframes (got 1)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"method": "SMA", "keyframes": [
-                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "m": 1, "w": 0},
-                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
-            "s.json: /panels/0/keyframes: method SMA takes exactly 2 keyframes (got 3)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P1", {"keyframes": [
-                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "m": 0, "w": 0},
-                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
-            "s.json: /panels/1/keyframes/1/m: magnitude must be > 0 (got 0)");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [
-                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [0, 0], "m": 1, "w": 0},
-                {"t": 1, "p": [0, 0], "m": 1, "w": 0}]}])")),
-            "s.json: /panels/0/keyframes/2/t: knot 1 is less than the previous knot 2; knots must "
-            "be strictly increasing");
-  EXPECT_EQ(error_of(p6_with(R"(, "panels": [{"keyframes": [
-                {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [0, 0], "q": [0, 0]},
-                {"t": 2, "p": [0, 0], "m": 1, "w": 0}]}])")),
-            "s.json: /panels/0/keyframes/1/q: q equals p: a zero-length arrow has no direction");
 }
 
 }  // namespace
