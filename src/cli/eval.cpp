@@ -251,6 +251,7 @@ ExitCode run_eval(const EvalOptions& options) {
     if (scene.kind == scene::SceneKind::poses && scene.poses.empty()) {
       throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
     }
+    motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     const motion::SceneMotion motion = motion::build_motion(scene);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
     if (scene.kind == scene::SceneKind::poses) {

@@ -65,17 +65,23 @@ double sample_cell(const ArcLengthTable::Path& path, double a, double b, double 
 }  // namespace
 
 double ArcLengthTable::speed(const Path& path, double tau, double from, double to, double width) {
+  // Central difference of order 8 with step kDerivativeStep * width; within
+  // four steps of an end (where a clamped motion would be sampled beyond its
+  // knots), a one-sided difference of order 4 with a tenth of that step.
   const double h = limits::kDerivativeStep * width;
   Complex derivative;
-  if (tau - 2.0 * h < from) {  // forward, order 4
-    derivative = (-25.0 * path(tau) + 48.0 * path(tau + h) - 36.0 * path(tau + 2.0 * h) +
-                  16.0 * path(tau + 3.0 * h) - 3.0 * path(tau + 4.0 * h)) / (12.0 * h);
-  } else if (tau + 2.0 * h > to) {  // backward, order 4
-    derivative = (25.0 * path(tau) - 48.0 * path(tau - h) + 36.0 * path(tau - 2.0 * h) -
-                  16.0 * path(tau - 3.0 * h) + 3.0 * path(tau - 4.0 * h)) / (12.0 * h);
-  } else {  // central, order 4
-    derivative = (path(tau - 2.0 * h) - 8.0 * path(tau - h) + 8.0 * path(tau + h) -
-                  path(tau + 2.0 * h)) / (12.0 * h);
+  if (tau - 4.0 * h >= from && tau + 4.0 * h <= to) {
+    static constexpr double c[4] = {4.0 / 5.0, -1.0 / 5.0, 4.0 / 105.0, -1.0 / 280.0};
+    for (int k = 0; k < 4; ++k) {
+      derivative += c[k] * (path(tau + (k + 1) * h) - path(tau - (k + 1) * h));
+    }
+    derivative /= h;
+  } else {
+    const double g = 0.1 * h;
+    const double side = tau - from < to - tau ? 1.0 : -1.0;  // forward near `from`, backward near `to`
+    const double s = side * g;
+    derivative = (-25.0 * path(tau) + 48.0 * path(tau + s) - 36.0 * path(tau + 2.0 * s) +
+                  16.0 * path(tau + 3.0 * s) - 3.0 * path(tau + 4.0 * s)) / (12.0 * s);
   }
   return std::abs(derivative);
 }

@@ -4,10 +4,10 @@
 // docs/paper-notes.md N20).
 //
 // The path is any function of the motion's time, P(tau), tau in [from, to].
-// Its speed |P'(tau)| is taken by a central difference of order 4 whose step
-// is kDerivativeStep of the interval (one-sided of order 4 within two steps of
-// an end, so that motions clamped outside their knots are never sampled
-// there). Each table interval keeps the speeds at its 8 Gauss-Legendre nodes;
+// Its speed |P'(tau)| is taken by a central difference of order 8 whose step
+// is kDerivativeStep of the table interval (one-sided of order 4 within four
+// steps of an end, so that motions clamped outside their knots are never
+// sampled there). Each table interval keeps the speeds at its 8 Gauss-Legendre nodes;
 // the length to any tau inside it integrates their interpolating polynomial,
 // so inverting the table costs no further evaluation of the motion.
 //

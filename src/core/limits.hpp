@@ -146,22 +146,26 @@ inline constexpr double kExpProjectors = 0.5;
 // ---------------------------------------------------------------- time warps
 // Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
 //
-// The speed |P'(tau)| is a fourth-order finite difference with this step, as a
-// fraction of the interval [from, to]: truncation ~ step^4 ~ 1e-12 and
-// rounding ~ 1e-16 / step ~ 1e-13, relative, for paths whose coordinates are
-// of the size of their length (far from the origin, rounding grows with
-// |P| / length).
-inline constexpr double kDerivativeStep = 1e-3;
+// The speed |P'(tau)| is an eighth-order central difference with this step, as
+// a fraction of the table interval being sampled: truncation ~ (step)^8 ~ 1e-16
+// and rounding ~ 1e-16 |P| / (step width |P'|), relative, so about 1e-12 for
+// paths whose coordinates are of the size of their length (far from the
+// origin, rounding grows with |P| / length). Within four steps of an end
+// (motions clamped outside their knots must not be sampled beyond them) a
+// one-sided difference of order 4 with a tenth of the step.
+inline constexpr double kDerivativeStep = 1e-2;
 
 // An interval of the arc-length table is accepted when its two checks (whole
 // against halves, interpolated midpoint against the left half) agree within
 // this fraction of the total length times the interval's share of [from, to].
-inline constexpr double kArcLengthTolerance = 1e-13;
+inline constexpr double kArcLengthTolerance = 1e-12;
 
 // The table starts from this many equal intervals (so that no feature between
-// the first Gauss nodes is missed) and halves an interval at most this deep.
+// the first Gauss nodes is missed) and halves an interval at most this deep
+// (beyond, the finite differences' rounding would grow faster than the
+// quadrature improves).
 inline constexpr int kArcLengthInitialCells = 16;
-inline constexpr int kArcLengthMaxDepth = 24;
+inline constexpr int kArcLengthMaxDepth = 8;
 // At most this many intervals in all (a path whose speed is noisy at the
 // tolerance, e.g. far from the origin, stops refining there).
 inline constexpr int kArcLengthMaxCells = 1 << 14;

@@ -121,6 +121,12 @@ SceneMotion build_motion(const scene::Scene& scene) {
   return build_motion(scene, own);
 }
 
+void check_motions(const scene::Scene& scene) {
+  for (const scene::Panel& panel : scene.panels) {
+    if (scene.kind == scene::SceneKind::arrows || !panel.poses.empty()) (void)build_motion(scene, panel);
+  }
+}
+
 void SceneMotion::undefined(double t, const std::exception& error) const {
   throw NoMotion(file_, pointer_, fmt::format("method {} is undefined at t = {}: {}", label_, t, error.what()));
 }

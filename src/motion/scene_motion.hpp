@@ -87,6 +87,11 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel);
 // The scene's own motion (its method, keyframes or poses, and timing).
 SceneMotion build_motion(const scene::Scene& scene);
 
+// Builds the motion of every panel that draws one (pose panels without poses
+// draw none), so that a scene is judged alike by every command. Throws
+// NoMotion for the first that does not exist.
+void check_motions(const scene::Scene& scene);
+
 // "P6 (La-LP)", "SMA", "SAM": a method as messages name it.
 std::string method_label(const scene::Scene& scene, const scene::Panel& panel);
 

@@ -53,8 +53,8 @@ class PoseBuilder {
       if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
       try {
         motion_.emplace(motion::build_motion(scene_, panel_));
-      } catch (const motion::NoMotion& error) {
-        fail(error.reason());
+      } catch (const motion::NoMotion& error) {  // at the poses (or panel) it blames
+        throw RenderError(error.file(), error.pointer(), error.reason());
       }
     }
     return *motion_;

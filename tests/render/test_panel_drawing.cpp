@@ -179,11 +179,13 @@ TEST(PanelDrawing, NonexistentMotionIsARenderErrorNamingTheKeyframes) {
                              {1.0, Arrow{{2, 0}, 1.0, 0.0}}};
   scene::Panel p = panel(Method::P8, keys);
   p.pointer = "/panels/2";
+  p.motion_pointer = "/panels/2";  // the panel's method with the scene's keyframes
   try {
     panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
     FAIL() << "expected a RenderError";
   } catch (const RenderError& error) {
-    EXPECT_NE(std::string(error.what()).find("test.json: /panels/2: P8"), std::string::npos)
+    EXPECT_EQ(std::string(error.what()).rfind("test.json: /panels/2: method P8 (Lo-Pe) has no motion through "
+                                              "these keyframes: ", 0), 0u)
         << error.what();
   }
 }

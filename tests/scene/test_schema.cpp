@@ -283,19 +283,15 @@ const std::vector<BadScene>& bad_scenes() {
   return corpus;
 }
 
-// Mistakes that only the parser sees: the schema lets them through.
+// Mistakes that only the parser sees: the schema lets them through. (Poses
+// between which no SAM exists are refused by the motion stage, not the parser:
+// tests/data/bad/poses-*no-sam*.json.)
 const std::vector<BadScene>& parser_only_scenes() {
   static const std::vector<BadScene> corpus = {
-      {"no SAM from a pose to its mirror image", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-        {"t": 1, "matrix": [[1, 0, 0], [0, -1, 0]]}]})", "/poses"},
       {"singular pose", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
         {"t": 1, "matrix": [[1, 2, 0], [2, 4, 0]]}]})", "/poses/1/matrix"},
-      {"no SAM between the poses", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-        {"t": 1, "matrix": [[-2, 0, 0], [0, -0.5, 0]]}]})", "/poses"},
       {"pose times not increasing", R"({"method": "SAM", "poses": [{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
         {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/1/t"},
-      {"no SAM from a triangle to its mirror image", R"({"method": "SAM", "poses": [{"t": 0, "triangle": [[0, 0], [1, 0], [0, 1]]},
-        {"t": 1, "triangle": [[0, 0], [0, 1], [1, 0]]}]})", "/poses"},
       {"range ends out of order", with_layer(R"({"type": "pattern", "range": [1, 0.5]})"),
        "/layers/0/range/1"},
       {"view min not below max", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 0]}})"),

@@ -1,6 +1,7 @@
-// Every bad scene of tests/data/bad/ (README.md there) through load_scene: it
-// must throw SceneError with exactly the pointer (or line and column) and the
-// reason of its .expect file. The same cases through the pita binary:
+// Every bad scene of tests/data/bad/ (README.md there) through load_scene and
+// the motion stage (a motion for every panel that draws one): it must be
+// refused, by a SceneError or a motion::NoMotion, with exactly the pointer (or
+// line and column) and the reason of its .expect file. The same cases through the pita binary:
 // tests/cli/test_bad_scenes_cli.cpp.
 #include <gtest/gtest.h>
 
@@ -10,9 +11,19 @@
 #include <vector>
 
 #include "../bad_scene_cases.hpp"
+#include "motion/scene_motion.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene {
+
+// What `pita eval` and `pita render` do before drawing: read the scene, then
+// build the motion of each panel that has one.
+void load_and_build(const std::filesystem::path& path) {
+  const Scene scene = load_scene(path);
+  motion::check_motions(scene);
+  (void)motion::build_motion(scene);
+}
+
 namespace {
 
 using test::BadSceneCase;
@@ -31,7 +42,7 @@ TEST_P(BadScene, IsRefusedWithItsPointerAndReason) {
   const std::optional<BadSceneExpectation> expected = test::read_bad_scene_expectation(bad.expect, problem);
   ASSERT_TRUE(expected.has_value()) << problem;
   try {
-    load_scene(bad.scene);
+    load_and_build(bad.scene);
     FAIL() << bad.scene.string() << ": no error (expected" << expected->after_file() << ")";
   } catch (const SceneError& error) {
     EXPECT_EQ(error.file(), bad.scene.string());
@@ -46,8 +57,14 @@ TEST_P(BadScene, IsRefusedWithItsPointerAndReason) {
     }
     EXPECT_EQ(error.reason(), expected->reason) << error.what();
     EXPECT_EQ(std::string(error.what()), bad.scene.string() + expected->after_file());
+  } catch (const motion::NoMotion& error) {
+    EXPECT_FALSE(expected->at_position) << error.what();
+    EXPECT_EQ(error.file(), bad.scene.string());
+    EXPECT_EQ(error.pointer(), expected->pointer) << error.what();
+    EXPECT_EQ(error.reason(), expected->reason) << error.what();
+    EXPECT_EQ(std::string(error.what()), bad.scene.string() + expected->after_file());
   } catch (const std::exception& error) {
-    FAIL() << bad.scene.string() << ": threw something other than SceneError: " << error.what();
+    FAIL() << bad.scene.string() << ": threw something other than SceneError or NoMotion: " << error.what();
   }
 }
 

@@ -1,0 +1,87 @@
+// Arc length and its inverse (src/core/arc_length.cpp) against closed forms:
+// circles, a log-spiral, a parabola, a path clamped outside its interval, and
+// the refusal of a still point (docs/paper-notes.md N20).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/arc_length.hpp"
+
+namespace pita {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(ArcLength, CircleLengthAndInverseAreExact) {
+  const double r = 2.5;
+  const ArcLengthTable table([&](double t) { return std::polar(r, t) + Point{10, -3}; }, 0.0, 2 * kPi);
+  EXPECT_NEAR(table.length(), 2 * kPi * r, 1e-11 * table.length());
+  for (int i = 0; i <= 50; ++i) {
+    const double f = i / 50.0;
+    EXPECT_NEAR(table.parameter_at(f), 2 * kPi * f, 1e-10) << f;
+    EXPECT_NEAR(table.length_at(2 * kPi * f), 2 * kPi * r * f, 1e-10) << f;
+  }
+  EXPECT_EQ(table.parameter_at(0.0), 0.0);
+  EXPECT_EQ(table.parameter_at(1.0), 2 * kPi);
+}
+
+TEST(ArcLength, LogSpiralOfManyTurnsMatchesItsClosedForm) {
+  // z(t) = e^{(a + i) t}: |z'| = sqrt(1 + a^2) e^{a t}, s(t) = sqrt(1 + a^2)(e^{a t} - 1)/a.
+  const double a = 0.15, T = 30.0;  // almost five turns, radius from 1 to 90
+  const ArcLengthTable table([&](double t) { return std::exp(Complex{a, 1.0} * t); }, 0.0, T);
+  const auto s = [&](double t) { return std::sqrt(1 + a * a) * std::expm1(a * t) / a; };
+  EXPECT_NEAR(table.length(), s(T), 1e-9 * s(T));
+  for (int i = 1; i < 40; ++i) {
+    const double f = i / 40.0;
+    const double t = std::log1p(f * s(T) * a / std::sqrt(1 + a * a)) / a;  // the exact inverse
+    EXPECT_NEAR(s(table.parameter_at(f)), f * s(T), 1e-9 * s(T)) << f;
+    EXPECT_NEAR(table.parameter_at(f), t, 1e-9 * T) << f;
+  }
+}
+
+TEST(ArcLength, ParabolaMatchesItsClosedForm) {
+  const auto s = [](double x) { return (x * std::sqrt(1 + 4 * x * x)) / 2 + std::asinh(2 * x) / 4; };
+  const ArcLengthTable table([](double x) { return Point{x, x * x}; }, -1.0, 2.0);
+  const double total = s(2.0) - s(-1.0);
+  EXPECT_NEAR(table.length(), total, 1e-11 * total);
+  for (double x : {-0.7, 0.0, 0.3, 1.9}) EXPECT_NEAR(table.length_at(x), s(x) - s(-1.0), 1e-10 * total) << x;
+}
+
+TEST(ArcLength, PathClampedOutsideItsIntervalIsMeasuredInside) {
+  // Like the Bezier SAM, which holds its end poses outside its knots.
+  const auto clamped = [](double t) { const double u = std::clamp(t, 0.0, 1.0); return Point{u, 0.0}; };
+  const ArcLengthTable table(clamped, 0.0, 1.0);
+  EXPECT_NEAR(table.length(), 1.0, 1e-12);
+  EXPECT_NEAR(table.parameter_at(0.3), 0.3, 1e-12);
+}
+
+TEST(ArcLength, PointThatStopsMidwayIsInvertedMonotonically) {
+  // x = t^3 stops at t = 0: speed 3t^2 vanishes there.
+  const ArcLengthTable table([](double t) { return Point{t * t * t, 0.0}; }, -1.0, 1.0);
+  EXPECT_NEAR(table.length(), 2.0, 1e-10);
+  double previous = -1.0;
+  for (int i = 1; i < 100; ++i) {
+    const double t = table.parameter_at(i / 100.0);
+    EXPECT_GT(t, previous);
+    EXPECT_NEAR(t * t * t, -1.0 + 2.0 * i / 100.0, 1e-9);
+    previous = t;
+  }
+}
+
+TEST(ArcLength, StillPointHasNoLength) {
+  EXPECT_THROW(ArcLengthTable([](double) { return Point{3.0, 4.0}; }, 0.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(ArcLengthTable([](double t) { return Point{t, 0.0}; }, 1.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(ArcLengthTable([](double t) { return Point{t / 0.0, 0.0}; }, 0.0, 1.0), std::invalid_argument);
+}
+
+TEST(ArcLength, TinyAndHugeScalesAreMeasuredRelatively) {
+  for (const double scale : {1e-30, 1e30}) {
+    const ArcLengthTable table([&](double t) { return scale * std::polar(1.0, t); }, 0.0, kPi);
+    EXPECT_NEAR(table.length() / scale, kPi, 1e-11) << scale;
+  }
+}
+
+}  // namespace
+}  // namespace pita

@@ -1,0 +1,84 @@
+// The one registry of methods (src/core/methods.cpp): every name of every
+// method of both kinds resolves, no name means two methods, the one wording of
+// unknown names, and the README's method tables agree with the registry.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "core/methods.hpp"
+
+namespace pita {
+namespace {
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+TEST(Methods, EveryMethodOfBothKindsIsRegisteredOnce) {
+  std::size_t arrows = 0, poses = 0;
+  std::set<std::string> ids;
+  for (const MethodEntry& entry : every_method()) {
+    (entry.kind == MotionKind::arrows ? arrows : poses)++;
+    EXPECT_TRUE(ids.insert(upper(std::string(entry.id))).second) << entry.id;
+  }
+  EXPECT_EQ(arrows, all_methods().size());
+  EXPECT_EQ(poses, all_pose_methods().size());
+}
+
+TEST(Methods, EveryNameResolvesInAnyCase) {
+  for (const MethodEntry& entry : every_method()) {
+    SCOPED_TRACE(std::string(entry.id));
+    for (const std::string& name : {std::string(entry.id), upper(std::string(entry.id)),
+                                    std::string(entry.mnemonic)}) {
+      const MethodEntry* found = find_method_entry(name);
+      ASSERT_NE(found, nullptr) << name;
+      EXPECT_EQ(found, &entry) << name;
+    }
+    EXPECT_EQ(find_method_entry(entry.id, entry.kind), &entry);
+    EXPECT_EQ(find_method_entry(entry.id, entry.kind == MotionKind::arrows ? MotionKind::poses : MotionKind::arrows),
+              nullptr);
+  }
+  EXPECT_EQ(find_method_entry("6")->method, Method::P6);
+  EXPECT_EQ(find_method_entry("5s")->method, Method::P5S);
+  EXPECT_EQ(find_method_entry("P6:La-LP")->method, Method::P6);
+  EXPECT_EQ(find_method_entry("lo-pe")->method, Method::P8);
+  EXPECT_EQ(find_method_entry("POLYSAM")->pose_method, PoseMethod::poly_sam);
+  EXPECT_EQ(find_method_entry("four-point-sam")->pose_method, PoseMethod::four_point);
+  EXPECT_EQ(find_method_entry("P66"), nullptr);
+}
+
+TEST(Methods, UnknownNamesHaveOneWording) {
+  EXPECT_EQ(unknown_method_reason("P66", MotionKind::arrows),
+            "unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?");
+  EXPECT_EQ(unknown_method_reason("polysan", MotionKind::poses), "unknown method \"polysan\"; did you mean polySAM?");
+  const std::string none = unknown_method_reason("zzzzzz", MotionKind::poses);
+  EXPECT_EQ(none, "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM");
+}
+
+TEST(Methods, LabelsAsMessagesNameThem) {
+  EXPECT_EQ(method_label(entry_of(Method::P6)), "P6 (La-LP)");
+  EXPECT_EQ(method_label(entry_of(Method::SMA)), "SMA");
+  EXPECT_EQ(method_label(entry_of(PoseMethod::bezier_sam)), "bezier-SAM");
+}
+
+// The README's method tables list every method of the registry, once each
+// (README "Methods" for arrows, "Pose scenes" for poses).
+TEST(Methods, ReadmeListsEveryMethod) {
+  std::ifstream in(std::string(PITA_SOURCE_DIR) + "/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str();
+  ASSERT_FALSE(readme.empty());
+  for (const MethodEntry& entry : every_method()) {
+    const std::string cell = entry.kind == MotionKind::arrows ? "| " + std::string(entry.id) + " |"
+                                                              : "`" + std::string(entry.id) + "`";
+    EXPECT_NE(readme.find(cell), std::string::npos) << "README does not list " << entry.id << " as " << cell;
+  }
+}
+
+}  // namespace
+}  // namespace pita

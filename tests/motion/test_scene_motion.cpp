@@ -1,0 +1,191 @@
+// The motion stage (src/motion/scene_motion.cpp): one build per scene or
+// panel for arrows and poses, the typed NoMotion error with its pointer, and
+// timing applied on top of the method.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <string>
+
+#include "core/ease.hpp"
+#include "core/pitas/registry.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::motion {
+namespace {
+
+const std::string kKeyframes = R"("keyframes": [
+    {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.25, "p": [3, 1.5], "m": 0.6, "w": 2},
+    {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
+
+scene::Scene arrows(const std::string& extra = "", const std::string& method = "P6") {
+  return scene::parse_scene("{\"method\": \"" + method + "\", " + kKeyframes + extra + "}", "s.json");
+}
+
+std::string error_of(const scene::Scene& scene) {
+  try {
+    (void)build_motion(scene);
+  } catch (const NoMotion& error) {
+    return error.pointer() + " | " + error.reason();
+  }
+  return "(no error)";
+}
+
+TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
+  const scene::Scene scene = arrows();
+  const SceneMotion motion = build_motion(scene);
+  EXPECT_EQ(motion.kind(), scene::SceneKind::arrows);
+  EXPECT_EQ(motion.method_id(), "P6");
+  EXPECT_EQ(motion.label(), "P6 (La-LP)");
+  EXPECT_EQ(motion.knots(), (std::vector<double>{0.0, 0.25, 1.0}));
+  const auto direct = make_motion(Method::P6, scene.keyframes);
+  for (double t : {-0.5, 0.0, 0.1, 0.25, 0.7, 1.0, 1.3}) {
+    const Arrow a = motion.arrow_at(t), b = direct->at(t);
+    EXPECT_EQ(a.p, b.p);
+    EXPECT_EQ(a.m, b.m);
+    EXPECT_EQ(a.w, b.w);
+  }
+}
+
+TEST(SceneMotion, EaseOverTheMotionWarpsTheMethodsTime) {
+  const scene::Scene scene = arrows(R"(, "timing": {"ease": "ease-in"})");
+  const SceneMotion motion = build_motion(scene);
+  const auto direct = make_motion(Method::P6, scene.keyframes);
+  const Ease in = *find_named_ease("ease-in");
+  for (double t : {0.1, 0.25, 0.5, 0.9}) {
+    const Arrow a = motion.arrow_at(t), b = direct->at(ease(in, t));
+    EXPECT_EQ(a.p, b.p) << t;
+    EXPECT_EQ(a.w, b.w) << t;
+  }
+  // The keyframes at the ends are kept; the middle one is not reached at its knot.
+  EXPECT_EQ(motion.arrow_at(0.0).p, direct->at(0.0).p);
+  EXPECT_EQ(motion.arrow_at(1.0).w, direct->at(1.0).w);
+  EXPECT_NEAR(std::abs(motion.arrow_at(0.0).p - scene.keyframes[0].arrow.p), 0.0, 1e-15);
+  EXPECT_GT(std::abs(motion.arrow_at(0.25).p - scene.keyframes[1].arrow.p), 1e-3);
+  // Outside the knots the warp is the identity.
+  EXPECT_EQ(motion.arrow_at(1.5).p, direct->at(1.5).p);
+}
+
+TEST(SceneMotion, PerSpanReachesEveryKeyframeAtItsKnot) {
+  const scene::Scene scene = arrows(R"(, "timing": {"ease": "sine", "arc_length": "mid", "per": "span"})");
+  const SceneMotion motion = build_motion(scene);
+  for (const Keyframe& key : scene.keyframes) {
+    const Arrow a = motion.arrow_at(key.t);
+    EXPECT_NEAR(std::abs(a.p - key.arrow.p), 0.0, 1e-12) << key.t;
+    EXPECT_NEAR(a.w, key.arrow.w, 1e-12) << key.t;
+  }
+}
+
+TEST(SceneMotion, ArcLengthSpacesTheTrackedPointEvenly) {
+  const SceneMotion motion = build_motion(arrows(R"(, "timing": {"arc_length": "q"})"));
+  const std::vector<double> times = uniform_times(motion, 21);
+  const std::vector<Frame> frames = sample_arrows(motion, times);
+  // The length of q's path between consecutive frames, measured independently
+  // of the table: a polyline of 4000 chords of the unwarped method per step.
+  const auto direct = make_motion(Method::P6, arrows().keyframes);
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < times.size(); ++i) {
+    const double from = motion.motion_time(times[i - 1]), to = motion.motion_time(times[i]);
+    double length = 0.0;
+    Point previous = direct->at(from).q();
+    for (int k = 1; k <= 4000; ++k) {
+      const Point next = direct->at(from + (to - from) * k / 4000.0).q();
+      length += std::abs(next - previous);
+      previous = next;
+    }
+    steps.push_back(length);
+  }
+  const double mean = std::accumulate(steps.begin(), steps.end(), 0.0) / steps.size();
+  for (std::size_t i = 0; i < steps.size(); ++i) EXPECT_NEAR(steps[i] / mean, 1.0, 1e-6) << "step " << i;
+  EXPECT_EQ(frames[0].t, 0.0);  // frames report the scene time they were asked for
+  EXPECT_EQ(frames[20].t, 1.0);
+  EXPECT_EQ(frames[5].t, times[5]);
+}
+
+TEST(SceneMotion, NoMotionNamesTheKeyframesAndTheMethod) {
+  // P7 at kappa = -1: A and C both against B with its magnitude.
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P7", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 3.141592653589793}, {"t": 0.5, "p": [1, 0], "m": 1, "w": 0},
+      {"t": 1, "p": [2, 0], "m": 1, "w": 3.141592653589793}]})", "s.json");
+  const std::string error = error_of(scene);
+  EXPECT_EQ(error.rfind("/keyframes | method P7 (Ra-Pe) has no motion through these keyframes: ", 0), 0u) << error;
+}
+
+TEST(SceneMotion, ArcLengthOfAStillPointIsRefusedAtItsPointer) {
+  // Every keyframe starts at the origin: P1's point p never moves.
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "p"}})", "s.json");
+  EXPECT_EQ(error_of(scene), "/timing/arc_length | cannot pace P1 (Pa-Ca) by the arc length of p: the path "
+                             "has zero length: the point does not move");
+  EXPECT_NO_THROW((void)build_motion(scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "q"}})", "s.json")));
+}
+
+TEST(SceneMotion, PanelsGetTheirOwnMotionAndPointer) {
+  const scene::Scene scene = scene::parse_scene("{\"method\": \"P6\", " + kKeyframes + R"(,
+      "panels": ["P1", {"method": "P3", "timing": {"ease": "ease-out"}},
+                 {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 1], "m": 2, "w": 1}]}]})",
+                                                "s.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  EXPECT_EQ(build_motion(scene, scene.panels[0]).method_id(), "P1");
+  EXPECT_EQ(build_motion(scene, scene.panels[0]).pointer(), "/panels/0");
+  const SceneMotion eased = build_motion(scene, scene.panels[1]);
+  EXPECT_FALSE(eased.warp().is_identity());
+  EXPECT_TRUE(build_motion(scene, scene.panels[0]).warp().is_identity());
+  const SceneMotion sma = build_motion(scene, scene.panels[2]);
+  EXPECT_EQ(sma.pointer(), "/panels/2/keyframes");
+  EXPECT_EQ(sma.knots(), (std::vector<double>{0.0, 2.0}));
+}
+
+TEST(SceneMotion, TimingAtTheTopIsEveryPanelsDefault) {
+  const scene::Scene scene = scene::parse_scene("{\"method\": \"P6\", " + kKeyframes +
+                                                    R"(, "timing": {"ease": "sine"}, "panels": ["P1", "P6"]})",
+                                                "s.json");
+  for (const scene::Panel& panel : scene.panels) EXPECT_EQ(panel.timing.ease, *find_named_ease("sine"));
+}
+
+TEST(SceneMotion, PosesAreBuiltOnceWithTheirTiming) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "polySAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 0]]},
+      {"t": 3, "matrix": [[2, 0, 4], [0, 2, 1]]}], "timing": {"arc_length": "p", "per": "span"}})",
+                                                "s.json");
+  const SceneMotion motion = build_motion(scene);
+  EXPECT_EQ(motion.kind(), scene::SceneKind::poses);
+  EXPECT_EQ(motion.method_id(), "polySAM");
+  for (const TimedPose& pose : scene.poses) {
+    EXPECT_LT((motion.pose_at(pose.t).L - pose.pose.L).norm(), 1e-12);
+    EXPECT_LT((motion.pose_at(pose.t).b - pose.pose.b).norm(), 1e-12);
+  }
+  // The image of the reference triangle's first point moves evenly within each span.
+  const auto path = motion.point_path(scene::TrackedPoint::start);
+  const Point at_quarter = path(motion.motion_time(0.25)), at_half = path(motion.motion_time(0.5));
+  const Point start = path(0.0);
+  EXPECT_NEAR(std::abs(at_half - start) / std::abs(at_quarter - start), 2.0, 0.05);
+  EXPECT_NO_THROW((void)motion.pose_velocity(0.5));
+}
+
+TEST(SceneMotion, NoSamBetweenPosesIsANoMotionAtThePoses) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[-2, 0, 3], [0, -0.5, 1]]}]})",
+                                                "s.json");
+  const std::string error = error_of(scene);
+  EXPECT_EQ(error.rfind("/poses | no SAM exists between these poses: ", 0), 0u) << error;
+}
+
+TEST(SceneMotion, NonFiniteFramesAreNoMotionNotNaN) {
+  const SceneMotion motion = build_motion(arrows());
+  try {
+    (void)motion.arrow_at(1e300);
+    FAIL() << "no error";
+  } catch (const NoMotion& error) {
+    EXPECT_EQ(error.pointer(), "/keyframes");
+    EXPECT_NE(error.reason().find("no finite frame at t = 1e+300"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace pita::motion
