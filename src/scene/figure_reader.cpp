@@ -559,8 +559,14 @@ PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std
 
 }  // namespace
 
-std::vector<std::string_view> arrow_layer_types() { return type_names(kArrowLayerKinds); }
-std::vector<std::string_view> pose_layer_types() { return type_names(kPoseLayerKinds); }
+template <typename LayerType, std::size_t N>
+std::vector<LayerKindInfo> kind_infos(const std::array<LayerKind<LayerType>, N>& kinds) {
+  std::vector<LayerKindInfo> infos;
+  for (const auto& kind : kinds) infos.push_back({kind.type, kind.fields});
+  return infos;
+}
+std::vector<LayerKindInfo> arrow_layer_kinds() { return kind_infos(kArrowLayerKinds); }
+std::vector<LayerKindInfo> pose_layer_kinds() { return kind_infos(kPoseLayerKinds); }
 
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,8 +17,12 @@ namespace pita::scene::detail {
 // The layer types of keyframe scenes and of pose scenes, in the order
 // messages and the schema list them (from figure_reader.cpp's one table of
 // layer kinds each).
-std::vector<std::string_view> arrow_layer_types();
-std::vector<std::string_view> pose_layer_types();
+struct LayerKindInfo {
+  std::string_view type;
+  std::span<const std::string_view> fields;  // "type" included
+};
+std::vector<LayerKindInfo> arrow_layer_kinds();
+std::vector<LayerKindInfo> pose_layer_kinds();
 
 // "canvas": every field optional, the defaults of figure.hpp otherwise.
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer);

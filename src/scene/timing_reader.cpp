@@ -31,26 +31,20 @@ std::vector<std::string_view> ease_names() {
   return names;
 }
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 std::string_view trim(std::string_view text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
   return text;
 }
 
-// "cubic-bezier(x1, y1, x2, y2)" (CSS syntax, any case and spacing).
+// "cubic-bezier(x1, y1, x2, y2)" (CSS syntax, any spacing).
 Ease read_cubic_bezier(const JsonReader& reader, const std::string& text, const std::string& pointer) {
   const std::string usage =
       "must be \"cubic-bezier(x1, y1, x2, y2)\" with four numbers, x1 and x2 in [0, 1]";
   const std::string_view whole = trim(text);
   const std::size_t open = whole.find('(');
   if (open == std::string_view::npos || whole.back() != ')' ||
-      lower(trim(whole.substr(0, open))) != kCubicBezier) {
+      trim(whole.substr(0, open)) != kCubicBezier) {
     reader.fail(pointer, fmt::format("{} (got \"{}\")", usage, text));
   }
   std::string_view inside = whole.substr(open + 1, whole.size() - open - 2);
@@ -127,7 +121,7 @@ Ease read_ease(const JsonReader& reader, const Json& value, const std::string& p
                                      value_text(value)));
   }
   const std::string text = value.get<std::string>();
-  if (const std::optional<Ease> named = find_named_ease(lower(trim(text)))) return *named;
+  if (const std::optional<Ease> named = find_named_ease(trim(text))) return *named;
   if (text.find('(') != std::string::npos) return read_cubic_bezier(reader, text, pointer);
   const std::vector<std::string_view> names = ease_names();
   const std::vector<std::string> close = closest_names(text, names);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/pitas/registry.hpp"
+#include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene {
@@ -64,7 +65,8 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& schema = definitions.at("arrowScene");
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "samples",
-                                   "options", "title", "canvas", "layers", "panels", "golden"}));
+                                   "options", "title", "canvas", "layers", "panels", "golden",
+                                   "timing"}));
   EXPECT_EQ(schema.at("required"), (nlohmann::json{"method", "keyframes"}));
   const nlohmann::json& keyframe = definitions.at("keyframe");
   EXPECT_EQ(keys_of(keyframe.at("properties")),
@@ -95,32 +97,22 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(definitions.at("trajectoryLayer").at("properties").at("samples").at("maximum"),
             kMaxTrajectorySamples);
 
-  const std::vector<std::pair<std::string, std::set<std::string>>> layers = {
-      {"pattern", {"type", "color", "width", "opacity", "dash", "extended", "samples", "range"}},
-      {"keyframes", {"type", "colors", "width", "opacity", "winding", "spiral_center", "extended"}},
-      {"trajectory", {"type", "point", "samples", "range", "color", "width", "opacity", "dash"}},
-      {"stroke", {"type", "fill", "opacity", "outline", "samples", "range"}},
-      {"banner",
-       {"type", "text", "font", "fill", "opacity", "outline", "padding", "samples", "range"}},
-      {"discrepancy",
-       {"type", "predictor", "method", "scale", "color", "width", "opacity", "dash", "fill",
-        "samples"}},
-      {"label", {"type", "text", "at", "size", "color"}},
-      {"legend", {"type", "corner", "size"}},
-  };
+  // Every layer kind of the reader's one table (figure_reader.cpp), with its fields.
   std::vector<std::string> types;
-  for (const auto& [type, fields] : layers) {
+  for (const detail::LayerKindInfo& kind : detail::arrow_layer_kinds()) {
+    const std::string type(kind.type);
     SCOPED_TRACE(type);
     types.push_back(type);
     const nlohmann::json& layer = definitions.at(type + "Layer");
-    EXPECT_EQ(keys_of(layer.at("properties")), fields);
+    EXPECT_EQ(keys_of(layer.at("properties")), std::set<std::string>(kind.fields.begin(), kind.fields.end()));
     EXPECT_EQ(layer.at("additionalProperties"), false);
     EXPECT_EQ(layer.at("properties").at("type").at("const"), type);
   }
   EXPECT_EQ(definitions.at("layer").at("properties").at("type").at("enum"), nlohmann::json(types));
   const nlohmann::json& panel = definitions.at("panel").at("else");
   EXPECT_EQ(keys_of(panel.at("properties")),
-            (std::set<std::string>{"method", "options", "keyframes", "title", "samples", "layers"}));
+            (std::set<std::string>{"method", "options", "keyframes", "title", "samples", "layers",
+                                   "timing"}));
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }
 
@@ -131,7 +123,7 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(scene.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
                                    "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden", "subdivisions"}));
+                                   "golden", "subdivisions", "timing"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
@@ -139,28 +131,19 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   std::vector<std::string> methods;
   for (const PoseMethodInfo& method : all_pose_methods()) methods.emplace_back(method.id);
   EXPECT_EQ(definitions.at("poseMethod").at("examples").get<std::vector<std::string>>(), methods);
-  const std::vector<std::pair<std::string, std::set<std::string>>> layers = {
-      {"shapes", {"type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"}},
-      {"poses", {"type", "colors", "width", "fill_opacity"}},
-      {"velocities", {"type", "scale", "color", "width", "opacity", "dash", "samples", "range"}},
-      {"paths", {"type", "samples", "range", "color", "width", "opacity", "dash"}},
-      {"existence", {"type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"}},
-      {"patch", {"type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill",
-                 "fill_opacity"}},
-  };
   std::vector<std::string> types;
-  for (const auto& [type, fields] : layers) {
+  for (const detail::LayerKindInfo& kind : detail::pose_layer_kinds()) {
+    const std::string type(kind.type);
     SCOPED_TRACE(type);
     types.push_back(type);
     const nlohmann::json& layer = definitions.at(type + "Layer");
-    EXPECT_EQ(keys_of(layer.at("properties")), fields);
+    EXPECT_EQ(keys_of(layer.at("properties")), std::set<std::string>(kind.fields.begin(), kind.fields.end()));
     EXPECT_EQ(layer.at("additionalProperties"), false);
   }
-  types.insert(types.end() - 1, "label");  // in the order of figure_reader.hpp's kPoseLayerTypes
   EXPECT_EQ(definitions.at("poseLayer").at("properties").at("type").at("enum"), nlohmann::json(types));
   EXPECT_EQ(keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
             (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers",
-                                   "subdivisions"}));
+                                   "subdivisions", "timing"}));
 }
 
 TEST(SceneSchema, ListsEveryMethodForAutocomplete) {

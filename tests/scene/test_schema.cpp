@@ -384,12 +384,18 @@ const std::vector<std::string>& good_scenes() {
           {"type": "keyframes", "colors": ["red", "green", "blue", "#abc"], "width": 3, "opacity": 1,
            "winding": false, "spiral_center": "midpoint", "extended": true},
           {"type": "label", "text": "A", "at": [0, -0.5], "size": 14, "color": "brown"},
-          {"type": "legend", "corner": "bottom-right", "size": 10}
+          {"type": "legend", "corner": "bottom-right", "size": 10},
+          {"type": "plot", "box": {"min": [0, -2], "max": [1, -1]}, "point": "q", "samples": 50, "color": "blue",
+           "width": 1, "opacity": 0.9, "dash": [], "marks": false}
         ],
+        "timing": {"ease": "ease-in-out", "arc_length": "mid", "per": "span"},
         "panels": [
           "P1",
           "la-lp",
-          {"method": "P2", "options": {"anchor": "start"}, "title": "", "samples": 33},
+          {"method": "P2", "options": {"anchor": "start"}, "title": "", "samples": 33,
+           "timing": {"ease": "cubic-bezier(0.1, -0.2, 0.7, 1.3) "}},
+          {"method": "P3", "timing": {"ease": {"sine": {"k1": 0.2, "k2": 0.8}}}},
+          {"method": "P4", "timing": {"ease": {"parabolic": {"t1": 0.1, "t2": 0.9}}, "per": "motion"}},
           {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 1},
                          {"t": 2, "p": [2, 0], "m": 1, "w": 2}],
            "layers": [{"type": "trajectory", "point": "q"}]},
@@ -411,6 +417,7 @@ const std::vector<std::string>& good_scenes() {
         ],
         "samples": 5,
         "subdivisions": 2,
+        "timing": {"ease": "sine", "arc_length": "p"},
         "canvas": {"width": 900, "height": 600, "view": "shared"},
         "layers": [
           {"type": "paths", "samples": 64, "range": [0, 1], "color": "gray", "width": 0.5, "opacity": 0.5, "dash": [2, 2]},
@@ -418,10 +425,12 @@ const std::vector<std::string>& good_scenes() {
            "samples": 9, "range": [0, 1]},
           {"type": "velocities", "scale": 0.2, "color": "red", "width": 1, "opacity": 1, "dash": [1, 1], "samples": 5, "range": [0, 1]},
           {"type": "poses", "colors": ["green", "orange", "red"], "width": 2, "fill_opacity": 0.3},
-          {"type": "label", "text": "F", "at": [0, -1], "size": 12, "color": "black"}
+          {"type": "label", "text": "F", "at": [0, -1], "size": 12, "color": "black"},
+          {"type": "plot", "box": {"min": [0, -3], "max": [2, -2]}}
         ],
         "panels": [
           "linear",
+          {"method": "polySAM", "timing": {"ease": "ease", "per": "span"}},
           {"method": "four-point-sam", "subdivisions": 3},
           {"method": "biarc-SAM", "title": "bi-arc", "samples": 9},
           {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[2, 0, 1], [0, 2, 1]]}],
