@@ -1,0 +1,66 @@
+// The "plot" layer (src/render/plot.cpp): the distance-time curve placed in
+// its box, the diagonal, the marks at the frame times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "motion/scene_motion.hpp"
+#include "render/plot.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render {
+namespace {
+
+scene::Scene p6(const std::string& timing) {
+  return scene::parse_scene(R"({"method": "P6", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2},
+      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])" + timing + "}", "s.json");
+}
+
+TEST(Plot, CurveRunsFromTheBoxsLowCornerToItsHighCorner) {
+  const motion::SceneMotion motion = motion::build_motion(p6(R"(, "timing": {"ease": "sine", "arc_length": "p"})"));
+  scene::PlotLayer layer;
+  layer.box = {Point{2.0, -3.0}, Point{6.0, -1.0}};
+  layer.samples = 101;
+  const std::vector<Item> items = plot_items(layer, motion, {0.0, 0.25, 0.5, 0.75, 1.0}, "/layers/3");
+  const Polyline* curve = nullptr;
+  int dots = 0;
+  for (const Item& item : items) {
+    EXPECT_EQ(item.layer, "/layers/3");
+    if (const auto* line = std::get_if<Polyline>(&item.shape); line && line->points.size() == 101) curve = line;
+    if (std::holds_alternative<Circle>(item.shape)) ++dots;
+  }
+  ASSERT_NE(curve, nullptr);
+  EXPECT_NEAR(std::abs(curve->points.front() - Point{2.0, -3.0}), 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(curve->points.back() - Point{6.0, -1.0}), 0.0, 1e-12);
+  // Arc length under the sine ease: the curve is the ease itself, (1 - cos(pi x))/2.
+  for (std::size_t i = 0; i < curve->points.size(); i += 10) {
+    const double x = (curve->points[i].real() - 2.0) / 4.0, y = (curve->points[i].imag() + 3.0) / 2.0;
+    EXPECT_NEAR(y, (1.0 - std::cos(M_PI * x)) / 2.0, 1e-9) << x;
+  }
+  EXPECT_EQ(dots, 5);
+}
+
+TEST(Plot, MarksCanBeLeftOut) {
+  const motion::SceneMotion motion = motion::build_motion(p6(""));
+  scene::PlotLayer layer;
+  layer.marks = false;
+  for (const Item& item : plot_items(layer, motion, {0.0, 0.5, 1.0}, "/layers/0")) {
+    EXPECT_FALSE(std::holds_alternative<Circle>(item.shape));
+  }
+}
+
+TEST(Plot, StillPointCannotBePlotted) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}]})", "s.json");
+  const motion::SceneMotion motion = motion::build_motion(scene);
+  EXPECT_THROW(plot_items(scene::PlotLayer{}, motion, {0.0}, "/layers/0"), std::invalid_argument);
+  scene::PlotLayer of_q;
+  of_q.point = scene::TrackedPoint::end;
+  EXPECT_NO_THROW(plot_items(of_q, motion, {0.0}, "/layers/0"));
+}
+
+}  // namespace
+}  // namespace pita::render
