@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Dense>
+
 #include "core/limits.hpp"
 
 namespace pita {
@@ -23,31 +25,25 @@ constexpr std::array<double, 8> kWeights{0.10122853629037625915, 0.2223810344533
                                          0.36268378337836198297, 0.31370664587788728734,
                                          0.22238103445337447054, 0.10122853629037625915};
 
-// Barycentric weights of the nodes, 1 / prod_{k != j} (x_j - x_k).
-std::array<double, 8> barycentric_weights() {
-  std::array<double, 8> lambda{};
-  for (std::size_t j = 0; j < 8; ++j) {
-    double product = 1.0;
-    for (std::size_t k = 0; k < 8; ++k) {
-      if (k != j) product *= kNodes[j] - kNodes[k];
-    }
-    lambda[j] = 1.0 / product;
+// The inverse of the Vandermonde matrix V_jk = x_j^k of the nodes: the
+// coefficients of the polynomial of degree 7 through values at the nodes are
+// V^-1 values (on [-1, 1] the monomials are well enough conditioned for 8
+// Gauss nodes: cond(V) ~ 1e2).
+Eigen::Matrix<double, 8, 8> inverse_vandermonde() {
+  Eigen::Matrix<double, 8, 8> V;
+  for (int j = 0; j < 8; ++j) {
+    double power = 1.0;
+    for (int k = 0; k < 8; ++k, power *= kNodes[static_cast<std::size_t>(j)]) V(j, k) = power;
   }
-  return lambda;
+  return V.inverse();
 }
-const std::array<double, 8> kBarycentric = barycentric_weights();
+const Eigen::Matrix<double, 8, 8> kInverseVandermonde = inverse_vandermonde();
 
-// The interpolating polynomial of `values` (at the nodes) at x in [-1, 1].
-double interpolate(const double (&values)[8], double x) {
-  double numerator = 0.0, denominator = 0.0;
-  for (std::size_t j = 0; j < 8; ++j) {
-    const double dx = x - kNodes[j];
-    if (dx == 0.0) return values[j];
-    const double term = kBarycentric[j] / dx;
-    numerator += term * values[j];
-    denominator += term;
-  }
-  return numerator / denominator;
+// The coefficients a_k of the speed's interpolating polynomial sum a_k x^k.
+void interpolate(const double (&speeds)[8], double (&coefficients)[8]) {
+  const Eigen::Map<const Eigen::Matrix<double, 8, 1>> values(speeds);
+  Eigen::Map<Eigen::Matrix<double, 8, 1>> a(coefficients);
+  a = kInverseVandermonde * values;
 }
 
 // The speeds at the nodes of [a, b] and their Gauss-Legendre integral.
@@ -130,14 +126,12 @@ ArcLengthTable::ArcLengthTable(const Path& path, double from, double to) : from_
 
 void ArcLengthTable::refine(const Path& path, double a, double b, const double (&speeds)[8],
                             double length, double tolerance, int depth) {
-  const auto keep = [&] {
-    Cell cell;
-    cell.from = a;
-    cell.to = b;
-    cell.length = length;
-    std::copy(std::begin(speeds), std::end(speeds), std::begin(cell.speeds));
-    cells_.push_back(cell);
-  };
+  Cell whole;
+  whole.from = a;
+  whole.to = b;
+  whole.length = length;
+  interpolate(speeds, whole.coefficients);
+  const auto keep = [&] { cells_.push_back(whole); };
   const double middle = 0.5 * (a + b);
   if (depth >= limits::kArcLengthMaxDepth || cells_.size() >= static_cast<std::size_t>(limits::kArcLengthMaxCells) || !(a < middle && middle < b)) {
     keep();
@@ -146,10 +140,6 @@ void ArcLengthTable::refine(const Path& path, double a, double b, const double (
   double left[8], right[8];
   const double left_length = sample_cell(path, a, middle, from_, to_, left);
   const double right_length = sample_cell(path, middle, b, from_, to_, right);
-  Cell whole;
-  whole.from = a;
-  whole.to = b;
-  std::copy(std::begin(speeds), std::end(speeds), std::begin(whole.speeds));
   const bool halves_agree = std::abs(left_length + right_length - length) <= tolerance;
   const bool interpolant_agrees = std::abs(partial(whole, middle) - left_length) <= tolerance;
   if (halves_agree && interpolant_agrees) {
@@ -162,18 +152,24 @@ void ArcLengthTable::refine(const Path& path, double a, double b, const double (
 
 double ArcLengthTable::speed_in(const Cell& cell, double tau) const {
   const double x = (2.0 * tau - cell.from - cell.to) / (cell.to - cell.from);
-  return interpolate(cell.speeds, x);
+  double sum = 0.0;
+  for (int k = 7; k >= 0; --k) sum = sum * x + cell.coefficients[k];
+  return sum;
 }
 
 double ArcLengthTable::partial(const Cell& cell, double tau) const {
   if (tau <= cell.from) return 0.0;
   if (tau >= cell.to) return cell.length;
-  // Gauss-Legendre on [from, tau] of the cell's interpolated speed (exact
-  // for that polynomial of degree 7).
-  const double half = 0.5 * (tau - cell.from), middle = 0.5 * (tau + cell.from);
-  double sum = 0.0;
-  for (std::size_t j = 0; j < 8; ++j) sum += kWeights[j] * speed_in(cell, middle + half * kNodes[j]);
-  return half * sum;
+  // The integral from -1 to x of the speed polynomial, times the half width
+  // (exact for that polynomial): sum a_k (x^{k+1} - (-1)^{k+1}) / (k + 1).
+  const double x = (2.0 * tau - cell.from - cell.to) / (cell.to - cell.from);
+  double at_x = 0.0, at_minus_one = 0.0;
+  for (int k = 7; k >= 0; --k) {
+    const double c = cell.coefficients[k] / (k + 1);
+    at_x = (at_x + c) * x;
+    at_minus_one = (at_minus_one + c) * -1.0;
+  }
+  return 0.5 * (cell.to - cell.from) * (at_x - at_minus_one);
 }
 
 double ArcLengthTable::length_at(double tau) const {

@@ -15,7 +15,7 @@
 // with the sum over its halves, and its interpolated length to the midpoint
 // agrees with the left half's, both within kArcLengthTolerance of the total
 // length times the interval's share of [from, to]; so lengths and their
-// inverse are right to about 1e-12 of the path length (the tests check
+// inverse are right to about 1e-11 of the path length (the tests check
 // 1e-9 against closed forms: circles, log-spirals, parabolas).
 #pragma once
 
@@ -57,7 +57,8 @@ class ArcLengthTable {
     double from = 0.0, to = 0.0;
     double start_length = 0.0;  // s at `from`
     double length = 0.0;
-    double speeds[8] = {};      // at the Gauss-Legendre nodes of [from, to]
+    double coefficients[8] = {};  // of the speed's polynomial in x in [-1, 1] over [from, to],
+                                  // interpolating it at the 8 Gauss-Legendre nodes
   };
   double partial(const Cell& cell, double tau) const;     // length from cell.from to tau
   double speed_in(const Cell& cell, double tau) const;    // the interpolated speed

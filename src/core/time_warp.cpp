@@ -32,8 +32,8 @@ const ArcLengthTable* TimeWarp::table(std::size_t span) const {
   return span < tables_.size() ? tables_[span].get() : nullptr;
 }
 
-double TimeWarp::operator()(double t) const {
-  if (identity_ || !(t > knots_.front() && t < knots_.back())) return t;
+double TimeWarp::warped(double t) const {
+  if (!(t > knots_.front() && t < knots_.back())) return t;
   // The span of t: the last knot at or before it.
   const std::size_t i = static_cast<std::size_t>(
       std::upper_bound(knots_.begin(), knots_.end(), t) - knots_.begin() - 1);

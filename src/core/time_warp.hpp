@@ -34,13 +34,15 @@ class TimeWarp {
   TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots,
            const ArcLengthTable::Path* path = nullptr);
 
-  double operator()(double t) const;
+  double operator()(double t) const { return identity_ ? t : warped(t); }
   bool is_identity() const { return identity_; }
   // The arc-length table of span i (every span of per = span, else the one
   // of the whole range); nullptr without arc length.
   const ArcLengthTable* table(std::size_t span) const;
 
  private:
+  double warped(double t) const;
+
   bool identity_ = true;
   Ease ease_;
   std::vector<double> knots_;  // t_0, t_n (per = motion) or every knot (per = span)

@@ -138,8 +138,12 @@ Arrow SceneMotion::arrow_at(double t) const {
   } catch (const std::exception& error) {
     undefined(t, error);
   }
-  const Point q = arrow.q();
-  if (!is_finite(arrow) || !std::isfinite(q.real()) || !std::isfinite(q.imag())) {
+  // q = p + m e^{iw} is finite when p, m and w are and neither |p| nor m is
+  // near the largest double; only then is it worth computing.
+  const bool finite = is_finite(arrow) && ((std::abs(arrow.p.real()) < 1e300 && std::abs(arrow.p.imag()) < 1e300 &&
+                                            arrow.m < 1e300) ||
+                                           (std::isfinite(arrow.q().real()) && std::isfinite(arrow.q().imag())));
+  if (!finite) {
     throw NoMotion(file_, pointer_,
                    fmt::format("method {} has no finite frame at t = {}: its numbers overflow double "
                                "precision there (t too far outside the knots, knots very uneven, or "
