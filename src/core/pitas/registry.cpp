@@ -26,22 +26,42 @@ namespace {
 
 // winding_aware is what tests/core/test_fig10.cpp measures (W row of Fig. 10,
 // plus P4 and P9, which are built from winding-aware steady morphs).
+template <typename Pita>
+std::unique_ptr<Motion> build(const KeyframeTriple& k, const MethodOptions&) {
+  return std::make_unique<Pita>(k);
+}
+
 constexpr std::array<MethodInfo, 15> kMethods{{
-    {Method::P1, "P1", "Pa-Ca", "parabolic point, Cartesian vector", 3, false},
-    {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true},
-    {Method::P3, "P3", "Pa-LP", "parabolic point, log-polar vector", 3, true},
-    {Method::P4, "P4", "Be-LP", "Bezier of steady morphs (BiSAM), log-polar vector", 3, true},
-    {Method::P5, "P5", "He-LP", "homogeneous exponential about the centroid", 3, false},
-    {Method::P5S, "P5S", "Hs-LP", "homogeneous exponential in the frame of M(A, C)", 3, false},
-    {Method::P6, "P6", "La-LP", "Lagrange form with steady morphs and transports", 3, true},
-    {Method::P7, "P7", "Ra-Pe", "radially perseverant point, perseverant vector", 3, false},
-    {Method::P8, "P8", "Lo-Pe", "locally perseverant (PAM on similarities)", 3, false},
-    {Method::P9, "P9", "Ne-LP", "Neville form with steady morphs", 3, true},
-    {Method::P10, "P10", "Pa-EL", "parabolic point, exponential of log linear parts", 3, false},
-    {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true},
-    {Method::PaPo, "Pa-Po", "Pa-Po", "parabolic point, polar vector (Fig. 7)", 3, true, false},
-    {Method::LSCa, "LS-Ca", "LS-Ca", "log-spiral point, Cartesian vector (Fig. 7)", 3, false, false},
-    {Method::LSLP, "LS-LP", "LS-LP", "log-spiral point, log-polar vector (Fig. 7)", 3, true, false},
+    {Method::P1, "P1", "Pa-Ca", "parabolic point, Cartesian vector", 3, false, true, build<PaCa>},
+    {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true, true,
+     [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
+       return std::make_unique<LsPo>(k, o.anchor);
+     }},
+    {Method::P3, "P3", "Pa-LP", "parabolic point, log-polar vector", 3, true, true, build<PaLp>},
+    {Method::P4, "P4", "Be-LP", "Bezier of steady morphs (BiSAM), log-polar vector", 3, true, true, build<BeLp>},
+    {Method::P5, "P5", "He-LP", "homogeneous exponential about the centroid", 3, false, true, build<HeLp>},
+    {Method::P5S, "P5S", "Hs-LP", "homogeneous exponential in the frame of M(A, C)", 3, false, true, build<HsLp>},
+    {Method::P6, "P6", "La-LP", "Lagrange form with steady morphs and transports", 3, true, true, build<LaLp>},
+    {Method::P7, "P7", "Ra-Pe", "radially perseverant point, perseverant vector", 3, false, true, build<RaPe>},
+    {Method::P8, "P8", "Lo-Pe", "locally perseverant (PAM on similarities)", 3, false, true, build<LoPe>},
+    {Method::P9, "P9", "Ne-LP", "Neville form with steady morphs", 3, true, true,
+     [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
+       return std::make_unique<NeLp>(k, o.path_mean, o.magnitude_mean);
+     }},
+    {Method::P10, "P10", "Pa-EL", "parabolic point, exponential of log linear parts", 3, false, true, build<PaEl>},
+    {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true, true, nullptr},
+    {Method::PaPo, "Pa-Po", "Pa-Po", "parabolic point, polar vector (Fig. 7)", 3, true, false,
+     [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
+       return std::make_unique<IndependentPita>(k, PointMotion::parabola, VectorMotion::polar);
+     }},
+    {Method::LSCa, "LS-Ca", "LS-Ca", "log-spiral point, Cartesian vector (Fig. 7)", 3, false, false,
+     [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
+       return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::cartesian);
+     }},
+    {Method::LSLP, "LS-LP", "LS-LP", "log-spiral point, log-polar vector (Fig. 7)", 3, true, false,
+     [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
+       return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::log_polar);
+     }},
 }};
 
 }  // namespace
@@ -56,24 +76,9 @@ const MethodInfo& info(Method m) {
 }
 
 std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const MethodOptions& o) {
-  switch (m) {
-    case Method::P1: return std::make_unique<PaCa>(k);
-    case Method::P2: return std::make_unique<LsPo>(k, o.anchor);
-    case Method::P3: return std::make_unique<PaLp>(k);
-    case Method::P4: return std::make_unique<BeLp>(k);
-    case Method::P5: return std::make_unique<HeLp>(k);
-    case Method::P5S: return std::make_unique<HsLp>(k);
-    case Method::P6: return std::make_unique<LaLp>(k);
-    case Method::P7: return std::make_unique<RaPe>(k);
-    case Method::P8: return std::make_unique<LoPe>(k);
-    case Method::P9: return std::make_unique<NeLp>(k, o.path_mean, o.magnitude_mean);
-    case Method::P10: return std::make_unique<PaEl>(k);
-    case Method::PaPo: return std::make_unique<IndependentPita>(k, PointMotion::parabola, VectorMotion::polar);
-    case Method::LSCa: return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::cartesian);
-    case Method::LSLP: return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::log_polar);
-    case Method::SMA: break;
-  }
-  throw std::invalid_argument("SMA interpolates two keyframes, not three");
+  const MethodInfo& about = info(m);
+  if (about.make == nullptr) throw std::invalid_argument("SMA interpolates two keyframes, not three");
+  return about.make(k, o);
 }
 
 std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,

@@ -43,6 +43,9 @@ struct MethodInfo {
   bool winding_aware;         // measured, see tests/core/test_fig10.cpp
   bool in_basket = true;      // one of the paper's PITAs (P1-P10, P5S) or SMA; false for
                               // the other independent combinations of Fig. 7
+  // Builds the PITA through three timed keyframes (nullptr for SMA, which
+  // make_motion builds from two).
+  std::unique_ptr<Motion> (*make)(const KeyframeTriple&, const MethodOptions&) = nullptr;
 };
 
 // Every method, in display order.
