@@ -1,7 +1,7 @@
 // The motion stage. Run: build/pita_bench --benchmark_filter='Stage|ArcLength|Eased'
 //   BM_StageFrame/P6:    D(t) through motion::SceneMotion (no timing): the
 //                        stage's cost over BM_Frame/P6
-//   BM_EasedFrame/<ease>: D(t) of P6 under an ease (no arc length)
+//   BM_EasedFrame/<ease>: the same under an ease (no arc length)
 //   BM_ArcLength1000/P6: 1000 frames of P6 paced by the arc length of p,
 //                        building the arc-length table included
 #include <benchmark/benchmark.h>
@@ -23,21 +23,9 @@ scene::Scene p6_scene(const std::string& timing) {
                             "bench.json");
 }
 
-void BM_StageFrame(benchmark::State& state) {
-  const scene::Scene scene = p6_scene("");
-  const motion::SceneMotion motion = motion::build_motion(scene);
-  double t = 0.0;
-  for (auto _ : state) {
-    t += 1.0 / 1024.0;
-    if (t > 1.0) t -= 1.0;
-    benchmark::DoNotOptimize(motion.arrow_at(t));
-  }
-  state.SetItemsProcessed(state.iterations());
-}
-BENCHMARK(BM_StageFrame)->Name("BM_StageFrame/P6");
-
+// D(t) of P6 through the stage, under `ease` (nullptr: no timing).
 void BM_EasedFrame(benchmark::State& state, const char* ease) {
-  const scene::Scene scene = p6_scene(std::string(R"(, "timing": {"ease": )") + ease + "}");
+  const scene::Scene scene = p6_scene(ease ? std::string(R"(, "timing": {"ease": )") + ease + "}" : "");
   const motion::SceneMotion motion = motion::build_motion(scene);
   double t = 0.0;
   for (auto _ : state) {
@@ -47,6 +35,7 @@ void BM_EasedFrame(benchmark::State& state, const char* ease) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+BENCHMARK_CAPTURE(BM_EasedFrame, none, nullptr)->Name("BM_StageFrame/P6");
 BENCHMARK_CAPTURE(BM_EasedFrame, ease_in_out, R"("ease-in-out")");
 BENCHMARK_CAPTURE(BM_EasedFrame, sine, R"("sine")");
 BENCHMARK_CAPTURE(BM_EasedFrame, parabolic, R"({"parabolic": {"t1": 0.3, "t2": 0.7}})");

@@ -108,18 +108,7 @@ std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) 
   return [arrow_motion = arrows_, point](double tau) { return tracked(arrow_motion->at(tau), point); };
 }
 
-SceneMotion build_motion(const scene::Scene& scene) {
-  scene::Panel own;
-  own.method = scene.method;
-  own.options = scene.options;
-  own.keyframes = scene.keyframes;
-  own.pose_method = scene.pose_method;
-  own.poses = scene.poses;
-  own.subdivisions = scene.subdivisions;
-  own.timing = scene.timing;
-  own.motion_pointer = scene.kind == scene::SceneKind::poses ? "/poses" : "/keyframes";
-  return build_motion(scene, own);
-}
+SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene, scene::scene_panel(scene)); }
 
 void check_motions(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {

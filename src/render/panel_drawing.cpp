@@ -18,10 +18,6 @@ namespace pita::render {
 
 namespace {
 
-std::string located(const std::string& file, const std::string& pointer,
-                    const std::string& reason) {
-  return pointer.empty() ? file + ": " + reason : file + ": " + pointer + ": " + reason;
-}
 
 // Names of the keyframes in legends, as the paper writes them.
 constexpr const char* kKeyframeNames[] = {"A", "B", "C"};
@@ -217,7 +213,7 @@ class PanelBuilder {
 
 RenderError::RenderError(const std::string& file, const std::string& pointer,
                          const std::string& reason)
-    : std::runtime_error(located(file, pointer, reason)) {}
+    : std::runtime_error(scene::located(file, pointer, reason)) {}
 
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {

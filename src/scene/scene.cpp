@@ -356,24 +356,10 @@ class SceneReader {
     if (panels != nullptr) {
       scene.panels = read_pose_panels(*panels, "/panels", scene);
     } else {
-      scene.panels = {pose_scene_panel(scene, "")};
+      scene.panels = {scene_panel(scene, "")};
     }
     if (const Json* golden = member(document, "golden")) read_golden(*golden, scene.golden);
     return scene;
-  }
-
-  static Panel pose_scene_panel(const Scene& scene, std::string pointer) {
-    Panel panel;
-    panel.pose_method = scene.pose_method;
-    panel.method_name = scene.method_name;
-    panel.poses = scene.poses;
-    panel.shapes = scene.shapes;
-    panel.subdivisions = scene.subdivisions;
-    panel.timing = scene.timing;
-    panel.samples = scene.samples.value_or(kDefaultFigureSamples);
-    panel.pointer = std::move(pointer);
-    panel.motion_pointer = "/poses";
-    return panel;
   }
 
   std::vector<Panel> read_pose_panels(const Json& value, const std::string& pointer,
@@ -386,7 +372,7 @@ class SceneReader {
     for (std::size_t i = 0; i < value.size(); ++i) {
       const std::string at = element_pointer(pointer, i);
       const Json& item = value[i];
-      Panel panel = pose_scene_panel(scene, at);
+      Panel panel = scene_panel(scene, at);
       bool own_method = false, own_poses = false;
       if (item.is_string()) {
         panel.pose_method = detail::read_pose_method(reader_, item, at);
@@ -451,20 +437,6 @@ class SceneReader {
 
   static const Json* member(const Json& object, const std::string& key) {
     return JsonReader::member(object, key);
-  }
-
-  // The panel that draws the scene itself.
-  static Panel scene_panel(const Scene& scene, std::string pointer) {
-    Panel panel;
-    panel.method = scene.method;
-    panel.method_name = scene.method_name;
-    panel.options = scene.options;
-    panel.keyframes = scene.keyframes;
-    panel.timing = scene.timing;
-    panel.samples = scene.samples.value_or(kDefaultFigureSamples);
-    panel.pointer = std::move(pointer);
-    panel.motion_pointer = "/keyframes";
-    return panel;
   }
 
   std::vector<Panel> read_panels(const Json& value, const std::string& pointer,
@@ -548,12 +520,30 @@ class SceneReader {
   JsonReader reader_;
 };
 
+
+}  // namespace
+
 std::string located(const std::string& file, const std::string& pointer,
                     const std::string& reason) {
   return pointer.empty() ? file + ": " + reason : file + ": " + pointer + ": " + reason;
 }
 
-}  // namespace
+Panel scene_panel(const Scene& scene, std::string pointer) {
+  Panel panel;
+  panel.method = scene.method;
+  panel.method_name = scene.method_name;
+  panel.options = scene.options;
+  panel.keyframes = scene.keyframes;
+  panel.pose_method = scene.pose_method;
+  panel.poses = scene.poses;
+  panel.shapes = scene.shapes;
+  panel.subdivisions = scene.subdivisions;
+  panel.timing = scene.timing;
+  panel.samples = scene.samples.value_or(kDefaultFigureSamples);
+  panel.pointer = std::move(pointer);
+  panel.motion_pointer = scene.kind == SceneKind::poses ? "/poses" : "/keyframes";
+  return panel;
+}
 
 SceneError::SceneError(std::string file, std::string pointer, std::string reason)
     : std::runtime_error(located(file, pointer, reason)),

@@ -87,6 +87,15 @@ class SceneError : public std::runtime_error {
   int column_ = 0;
 };
 
+// "FILE: POINTER: reason", or "FILE: reason" for the whole document (""): how
+// every error about a scene is worded (SceneError, the motion stage's
+// NoMotion, render errors).
+std::string located(const std::string& file, const std::string& pointer, const std::string& reason);
+
+// The panel that is the scene itself: its method, keyframes or poses, shapes,
+// options, timing and samples (a scene without "panels" draws this one).
+Panel scene_panel(const Scene& scene, std::string pointer = "");
+
 // Reads and checks the scene file at `path`. Throws SceneError (also when the
 // file cannot be read); the error names the file as `path` is spelt.
 Scene load_scene(const std::filesystem::path& path);
