@@ -37,15 +37,6 @@ TEST(SamSplines, TheFigureSevenPairHasNoSam) {
   EXPECT_NO_THROW(SteadyAffineMorph(kB, kC));
 }
 
-TEST(SamSplines, PolySamInterpolatesEveryPose) {
-  const PoseMotion motion(PoseMethod::poly_sam, {{0.0, kA}, {0.4, kB}, {1.0, kC}});
-  EXPECT_LT(distance(motion.at(0.0), kA), 1e-15);
-  EXPECT_LT(distance(motion.at(0.4), kB), 1e-15);
-  EXPECT_LT(distance(motion.at(1.0), kC), 1e-15);
-  EXPECT_LT(distance(motion.at(0.2), sam(kA, 0.5, kB)), 1e-14);
-  EXPECT_LT(distance(motion.at(0.7), sam(kB, 0.5, kC)), 1e-14);
-}
-
 TEST(SamSplines, BiarcInterpolatesAndIsSmoothAtTheMiddlePose) {
   const SamBiarc biarc(kA, kB, kC);
   EXPECT_LT(distance(biarc.at(0.0), kA), 1e-12);
@@ -86,86 +77,6 @@ TEST(SamSplines, SubdivisionKeepsARegularPatternRegular) {
   ASSERT_EQ(finer.size(), 9u);
   for (std::size_t j = 0; j < finer.size(); ++j) {
     EXPECT_LT(distance(finer[j], compose(powers.at(static_cast<double>(j) / 2.0), P0)), 1e-11) << j;
-  }
-}
-
-}  // namespace
-}  // namespace pita
-
-namespace pita {
-namespace {
-
-// PoseMotion::velocity against central differences of PoseMotion::at.
-TEST(PoseMotion, VelocityIsTheDerivative) {
-  const std::vector<TimedPose> poses = {{0.0, kA}, {0.4, kB}, {1.0, kC}};
-  for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam,
-                                  PoseMethod::biarc_sam}) {
-    const PoseMotion motion(method, poses);
-    for (const double t : {0.1, 0.3, 0.55, 0.9}) {
-      const double h = 1e-6;
-      const Affine2 before = motion.at(t - h), after = motion.at(t + h);
-      const Affine2 expected{(after.L - before.L) / (2.0 * h), (after.b - before.b) / (2.0 * h)};
-      EXPECT_LT(distance(motion.velocity(t), expected), 1e-6 * (1.0 + expected.L.norm() + expected.b.norm()))
-          << info(method).id << " at t = " << t;
-    }
-  }
-  const PoseMotion sam(PoseMethod::sam, {{0.0, kA}, {2.0, kB}});
-  EXPECT_LT(distance(sam.at(0.0), kA), 1e-15);
-  EXPECT_LT(distance(sam.at(2.0), kB), 1e-15);
-  const PoseMotion biarc(PoseMethod::biarc_sam, poses);
-  EXPECT_LT(distance(biarc.at(0.4), kB), 1e-15);  // through the middle pose at its knot
-}
-
-TEST(PoseMotion, RefusesTheMissingSamAndNamesThePair) {
-  try {
-    PoseMotion motion(PoseMethod::poly_sam, {{0.0, kB}, {0.5, kA}, {1.0, kC}});
-    FAIL() << "no SAM from A to C expected";
-  } catch (const NoSamBetweenPoses& error) {
-    EXPECT_EQ(error.first(), 1u);
-  }
-}
-
-}  // namespace
-}  // namespace pita
-
-namespace pita {
-namespace {
-
-// The four-point polySAM (Sec. 7.3, Fig. 13).
-TEST(PoseMotion, FourPointPolySam) {
-  const std::vector<TimedPose> controls = {
-      {0.0, pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)},
-      {1.0, pose(0.4, -1.2, 1.2, 0.4, 3.0, 4.0)},
-      {2.0, pose(-1.2, -0.6, 0.5, -1.1, 7.0, 3.5)},
-      {3.0, pose(-0.9, 0.5, -0.3, -1.0, 9.0, -1.0)}};
-  // Through every control pose, whatever the number of steps.
-  for (const int steps : {0, 1, 2, 4}) {
-    const PoseMotion motion(PoseMethod::four_point, controls, steps);
-    for (const TimedPose& control : controls) {
-      EXPECT_LT(distance(motion.at(control.t), control.pose), 1e-12) << steps << " at " << control.t;
-    }
-  }
-  // No step: the polySAM.
-  const PoseMotion none(PoseMethod::four_point, controls, 0);
-  const PoseMotion poly(PoseMethod::poly_sam, controls);
-  for (const double t : {0.3, 1.5, 2.7}) EXPECT_LT(distance(none.at(t), poly.at(t)), 1e-15);
-  // Each step shrinks the velocity jump at the control poses.
-  const auto jump = [&](int steps) {
-    const PoseMotion motion(PoseMethod::four_point, controls, steps);
-    const Affine2 before = motion.velocity(1.0 - 1e-9), after = motion.velocity(1.0);
-    return distance(before, after);
-  };
-  // (measured: 10.1, 6.1, 3.6, 2.1, 1.2, 0.68: about 1.75 times smaller per step,
-  // towards a C1 limit)
-  for (int k = 0; k < 5; ++k) EXPECT_LT(jump(k + 1), jump(k) / 1.5) << k;
-  // A regular pattern stays one SAM: controls M^i B give M^t B at every t.
-  const Affine2 M = pose(0.9, -0.3, 0.3, 0.9, 1.0, 0.5), B = pose(1.0, 0.2, 0.0, 1.0, 0.0, 0.0);
-  const AffinePowers powers(M);
-  std::vector<TimedPose> regular;
-  for (int i = 0; i < 4; ++i) regular.push_back({static_cast<double>(i), compose(powers.at(i), B)});
-  const PoseMotion smooth(PoseMethod::four_point, regular, 3);
-  for (const double t : {0.1, 0.75, 1.5, 2.9}) {
-    EXPECT_LT(distance(smooth.at(t), compose(powers.at(t), B)), 1e-11) << t;
   }
 }
 

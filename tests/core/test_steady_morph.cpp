@@ -1,7 +1,6 @@
 // Steady morph, steady average and steady transport (Sec. 2.5-2.7).
 #include "core/steady_morph.hpp"
 
-#include "core/mean_morph.hpp"
 #include "core/steady_transport.hpp"
 #include "test_support.hpp"
 
@@ -79,58 +78,6 @@ TEST(SteadyTransport, MovesByTheMorphSimilarity) {
     EXPECT_TRUE(arrows_near(steady_transport(A, A, B, t), steady_morph(A, B, t), 1e-12, 10.0, false));
     EXPECT_TRUE(arrows_near(steady_transport(C, 1.0, A, 3.0, B, 1.0 + 2.0 * t),
                             steady_transport(C, A, B, t), 1e-12, 10.0, false));
-  }
-}
-
-TEST(MeanMorph, GeometricMeansGiveTheSteadyMorph) {
-  Sampler s(16);
-  for (int i = 0; i < 200; ++i) {
-    const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
-    const double t = s.uniform(-0.5, 1.5);
-    EXPECT_TRUE(arrows_near(mean_morph(A, B, t, MeanKind::geometric, MeanKind::geometric),
-                            steady_morph(A, B, t), 1e-9, 10.0, false));
-  }
-}
-
-TEST(MeanMorph, VariantsInterpolateWithTheirMeans) {
-  Sampler s(17);
-  for (const MeanKind path : {MeanKind::arithmetic, MeanKind::harmonic}) {
-    for (const MeanKind mag : {MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic}) {
-      for (int i = 0; i < 50; ++i) {
-        const Arrow A = s.arrow(Config::tame), B = s.arrow(Config::tame);
-        EXPECT_TRUE(arrows_near(mean_morph(A, B, 0.0, path, mag), A, 1e-12, 10.0, false));
-        EXPECT_TRUE(arrows_near(mean_morph(A, B, 1.0, path, mag), B, 1e-10, 10.0, false));
-        const Arrow mid = mean_morph(A, B, 0.5, path, mag);
-        const double expected_m = mag == MeanKind::arithmetic ? 0.5 * (A.m + B.m)
-                                  : mag == MeanKind::geometric ? std::sqrt(A.m * B.m)
-                                                               : 2.0 / (1.0 / A.m + 1.0 / B.m);
-        EXPECT_NEAR(mid.m, expected_m, 1e-12 * expected_m);
-        // The radius about the SMA's fixed point follows the path mean.
-        const Point f = *fixed_point(twirl_between(A, B));
-        const double ra = std::abs(A.p - f), rb = std::abs(B.p - f);
-        const double expected_r = path == MeanKind::arithmetic ? 0.5 * (ra + rb)
-                                                               : 2.0 / (1.0 / ra + 1.0 / rb);
-        EXPECT_NEAR(std::abs(mid.p - f), expected_r, 1e-9 * (1 + expected_r));
-      }
-    }
-  }
-}
-
-}  // namespace
-}  // namespace pita::test
-
-namespace pita::test {
-namespace {
-
-// Found by the independent oracle (tests/oracle): the magnitude must keep its
-// relative precision far from the keyframes, whatever the path mean.
-TEST(MeanMorph, MagnitudeKeepsRelativePrecision) {
-  const Arrow A{{0.0, 0.0}, 1.0, 0.0}, B{{1.0, 0.0}, 20.0, 1.0};
-  for (MeanKind path : {MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic}) {
-    const double m = mean_morph(A, B, -12.0, path, MeanKind::geometric).m;
-    EXPECT_NEAR(m / std::pow(20.0, -12.0), 1.0, 1e-13);
-    EXPECT_NEAR(mean_morph(A, B, 0.25, path, MeanKind::arithmetic).m, 1.0 + 0.25 * 19.0, 1e-14);
-    EXPECT_NEAR(mean_morph(A, B, 0.25, path, MeanKind::harmonic).m, 1.0 / (0.75 + 0.25 / 20.0), 1e-14);
   }
 }
 

@@ -1,5 +1,5 @@
-// Lagrange weights (Eq. 10), Neville ratios (Eq. 14) and the knot warp.
-#include "core/knot_warp.hpp"
+// Lagrange weights (Eq. 10) and Neville ratios (Eq. 14), both header-only
+// (core/lagrange_weights.hpp, core/neville_ratios.hpp).
 #include "core/lagrange_weights.hpp"
 #include "core/neville_ratios.hpp"
 #include "test_support.hpp"
@@ -35,42 +35,6 @@ TEST(NevilleRatios, ReproduceTheLagrangeInterpolant) {
     const auto lerp = [](Point x, Point y, double u) { return x + u * (y - x); };
     const Point neville = lerp(lerp(pa, pb, n.q), lerp(pb, pc, n.r), n.s);
     EXPECT_NEAR(std::abs(neville - lagrange(lagrange_weights(a, b, c, t), pa, pb, pc)), 0.0, 1e-11);
-  }
-}
-
-TEST(KnotWarp, SendsKnotsToZeroHalfOne) {
-  for (double beta : {0.1, 0.3, 0.5, 0.66, 0.9}) {
-    EXPECT_NEAR(knot_warp(2.0, 2.0 + 3.0 * beta, 5.0, 2.0), 0.0, 1e-15);
-    EXPECT_NEAR(knot_warp(2.0, 2.0 + 3.0 * beta, 5.0, 2.0 + 3.0 * beta), 0.5, 1e-15);
-    EXPECT_NEAR(knot_warp(2.0, 2.0 + 3.0 * beta, 5.0, 5.0), 1.0, 1e-15);
-  }
-}
-
-TEST(KnotWarp, IsIdentityForEvenKnots) {
-  for (double t : {-1.0, 0.0, 0.3, 0.5, 0.77, 1.0, 2.5}) {
-    EXPECT_NEAR(knot_warp(0.0, 0.5, 1.0, t), t, 1e-15);
-  }
-}
-
-TEST(KnotWarp, IsIncreasingC1AndSymmetric) {
-  for (double beta : {0.05, 0.2, 0.4, 0.66, 0.95}) {
-    const auto u = [&](double s) { return knot_warp(0.0, beta, 1.0, s); };
-    double prev = u(-1.0);
-    for (int i = 1; i <= 3000; ++i) {
-      const double s = -1.0 + 3.0 * i / 3000.0;
-      EXPECT_GT(u(s), prev) << "beta=" << beta << " s=" << s;
-      prev = u(s);
-      // Symmetry: u(1 - s; 1 - beta) = 1 - u(s; beta) (Eq. 41 for P4, P7, P8).
-      EXPECT_NEAR(knot_warp(0.0, 1.0 - beta, 1.0, 1.0 - s), 1.0 - u(s), 1e-12);
-    }
-    // C1 at 0, beta and 1: one-sided slopes agree to O(h).
-    const double h = 1e-7;
-    for (double s0 : {0.0, beta, 1.0}) {
-      const double left = (u(s0) - u(s0 - h)) / h;
-      const double right = (u(s0 + h) - u(s0)) / h;
-      EXPECT_NEAR(left, right, 1e-5 * (1 + std::abs(left))) << "beta=" << beta << " at " << s0;
-    }
-    EXPECT_NEAR((u(beta + h) - u(beta - h)) / (2 * h), 1.0, 1e-4);  // kink in u'' at beta
   }
 }
 

@@ -35,4 +35,19 @@ inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<sce
   return s;
 }
 
+// Eight panels (P1-P8) of the same keyframes, four columns, titled.
+inline scene::Scene eight_panels() {
+  std::vector<scene::Panel> panels;
+  for (Method m : {Method::P1, Method::P2, Method::P3, Method::P4, Method::P5, Method::P6,
+                   Method::P7, Method::P8}) {
+    panels.push_back(panel(m, three_keyframes()));
+  }
+  scene::Scene s = scene_with({scene::PatternLayer{}, scene::KeyframesLayer{}}, panels);
+  s.title = "Eight PITAs";
+  s.canvas.width = 1200;
+  s.canvas.height = 900;
+  s.canvas.columns = 4;
+  return s;
+}
+
 }  // namespace pita::render::test

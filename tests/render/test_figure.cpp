@@ -1,12 +1,12 @@
-// Whole figures: layout, output formats, determinism.
+// Whole figures (src/render/figure.cpp): output formats, sizes, determinism.
+// Where the panels go is test_layout.cpp.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <string>
 
 #include "render/figure.hpp"
-#include "render/layout.hpp"
-#include "render/panel_drawing.hpp"
+#include "render/panel_drawing.hpp"  // RenderError
 #include "render_support.hpp"
 
 namespace pita::render::test {
@@ -16,52 +16,6 @@ std::uint32_t big_endian(const std::string& bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (std::size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
   return v;
-}
-
-scene::Scene eight_panels() {
-  std::vector<scene::Panel> panels;
-  for (Method m : {Method::P1, Method::P2, Method::P3, Method::P4, Method::P5, Method::P6,
-                   Method::P7, Method::P8}) {
-    panels.push_back(panel(m, three_keyframes()));
-  }
-  scene::Scene s = scene_with({scene::PatternLayer{}, scene::KeyframesLayer{}}, panels);
-  s.title = "Eight PITAs";
-  s.canvas.width = 1200;
-  s.canvas.height = 900;
-  s.canvas.columns = 4;
-  return s;
-}
-
-TEST(Layout, GridOfPanelsBelowTheTitle) {
-  const scene::Scene s = eight_panels();
-  const Figure f = build_figure(s);
-  ASSERT_EQ(f.placements.size(), 8u);
-  for (std::size_t i = 0; i < 8; ++i) {
-    const Rect& cell = f.placements[i].cell;
-    EXPECT_DOUBLE_EQ(cell.width, 300.0);
-    const double column = static_cast<double>(i % 4), row = static_cast<double>(i / 4);
-    EXPECT_DOUBLE_EQ(cell.x, 300.0 * column);
-    EXPECT_DOUBLE_EQ(cell.y, kTitleBand + (900.0 - kTitleBand) / 2 * row);
-  }
-}
-
-TEST(Layout, ViewFitsTheDrawingInsideThePlot) {
-  const scene::Scene s = eight_panels();
-  const Figure f = build_figure(s);
-  for (std::size_t i = 0; i < 8; ++i) {
-    const PanelPlacement& p = f.placements[i];
-    const auto box = bounds(f.drawings[i]);
-    ASSERT_TRUE(box);
-    for (Point corner : {box->min, box->max, Point{box->min.real(), box->max.imag()}}) {
-      const Point c = p.transform(corner);
-      EXPECT_GE(c.real(), p.plot.x - 1e-9);
-      EXPECT_LE(c.real(), p.plot.x + p.plot.width + 1e-9);
-      EXPECT_GE(c.imag(), p.plot.y - 1e-9);
-      EXPECT_LE(c.imag(), p.plot.y + p.plot.height + 1e-9);
-    }
-    // y up: a point above maps higher on the canvas (smaller y).
-    EXPECT_LT(p.transform({0.0, 1.0}).imag(), p.transform({0.0, 0.0}).imag());
-  }
 }
 
 TEST(Output, PngHasTheRequestedSize) {

@@ -1,5 +1,7 @@
 // Scene parsing and validation (src/scene/scene.cpp): good scenes, the parts of
-// SceneError, methods and files. The bad scenes are files of tests/data/bad/,
+// SceneError, methods and files, pose panels. Keyframes are read by
+// json_reader.cpp (test_json_reader.cpp), poses by pose_reader.cpp
+// (test_pose_reader.cpp). The bad scenes are files of tests/data/bad/,
 // run by test_bad_scenes.cpp. Every error test asserts the whole message: file,
 // JSON Pointer and reason.
 #include <gtest/gtest.h>
@@ -8,20 +10,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <numbers>
 #include <string>
 
 #include <unistd.h>
 
 #include "scene/scene.hpp"
-#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-using test::error_of;
 
 // A P6 scene whose middle keyframe is `middle` (JSON text).
 std::string p6_with_middle(const std::string& middle) {
@@ -70,40 +66,6 @@ TEST(Scene, DefaultsApplied) {
   EXPECT_EQ(scene.options.anchor, Anchor::start);
   EXPECT_EQ(scene.options.path_mean, MeanKind::geometric);
   EXPECT_EQ(scene.options.magnitude_mean, MeanKind::geometric);
-}
-
-TEST(Scene, ReadsEndPointFormAsZeroTurnArrow) {
-  const Scene scene = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [4, 5]})"), "s.json");
-  const Arrow& arrow = scene.keyframes[1].arrow;
-  EXPECT_EQ(arrow.p, make_point(1, 1));
-  EXPECT_DOUBLE_EQ(arrow.m, 5.0);
-  EXPECT_DOUBLE_EQ(arrow.w, std::atan2(4.0, 3.0));
-  EXPECT_NEAR(arrow.q().real(), 4.0, 1e-15);
-  EXPECT_NEAR(arrow.q().imag(), 5.0, 1e-15);
-}
-
-TEST(Scene, EndPointFormWindingIsPrincipal) {
-  // Pointing left: w = pi exactly (in (-pi, pi]); pointing down-left: negative.
-  const Scene left = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [0, 1]})"), "s.json");
-  EXPECT_EQ(left.keyframes[1].arrow.w, kPi);
-  const Scene down = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [0, 0]})"), "s.json");
-  EXPECT_DOUBLE_EQ(down.keyframes[1].arrow.w, -3.0 * kPi / 4.0);
-}
-
-TEST(Scene, TurnsAddWholeTurnsToEitherForm) {
-  const Scene polar =
-      parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0.5, "turns": 2})"), "s.json");
-  EXPECT_DOUBLE_EQ(polar.keyframes[1].arrow.w, 0.5 + 4.0 * kPi);
-  EXPECT_EQ(polar.keyframes[1].arrow.m, 2.0);
-
-  const Scene end = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [1, 2], "turns": -1})"), "s.json");
-  EXPECT_DOUBLE_EQ(end.keyframes[1].arrow.w, kPi / 2.0 - 2.0 * kPi);
-  EXPECT_EQ(end.keyframes[1].arrow.turns(), -1);
-
-  // 3.0 is an integer, as JSON Schema's "integer" says.
-  const Scene integral =
-      parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0, "turns": 3.0})"), "s.json");
-  EXPECT_DOUBLE_EQ(integral.keyframes[1].arrow.w, 6.0 * kPi);
 }
 
 TEST(Scene, ReadsSamplesAndOptions) {
@@ -163,12 +125,6 @@ TEST(SceneError, ErrorCarriesItsParts) {
   }
 }
 
-// Just inside the limits of keyframe values is fine (the cases beyond them are
-// tests/data/bad/keyframes-m-subnormal.json, keyframes-w-too-large.json, ...).
-TEST(SceneError, KeyframeValuesJustInsideTheLimitsAreAccepted) {
-  EXPECT_EQ(error_of(p6_with_middle(R"({"t": 0.5, "p": [1, 0], "m": 1e-100, "w": 1e6})")), "(no error)");
-}
-
 // ------------------------------------------------------------ methods and files
 
 TEST(Scene, ResolveMethod) {
@@ -223,6 +179,37 @@ TEST(Scene, LoadSceneNamesTheFileAsGiven) {
               path.string() + ": /keyframes: method P6 (La-LP) takes exactly 3 keyframes (got 0)");
   }
   std::filesystem::remove(path);
+}
+
+// ------------------------------------------------------------ pose scenes
+//
+// What the scene makes of its pose panels and method overrides; reading the
+// poses themselves is test_pose_reader.cpp.
+
+TEST(PoseScene, PanelsInheritAndOverride) {
+  const Scene scene = parse_scene(R"({"method": "polySAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]},
+      {"t": 2, "matrix": [[-1, 0, 4], [0, -1, 0]]}],
+      "panels": ["linear", {"method": "biarc-SAM", "samples": 5},
+                 {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+                                             {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  EXPECT_EQ(scene.panels[0].pose_method, PoseMethod::linear);
+  EXPECT_EQ(scene.panels[0].poses.size(), 3u);
+  EXPECT_EQ(scene.panels[1].pose_method, PoseMethod::biarc_sam);
+  EXPECT_EQ(scene.panels[1].samples, 5);
+  EXPECT_EQ(scene.panels[2].poses.size(), 2u);
+  EXPECT_EQ(scene.panels[2].title, "SAM");
+}
+
+TEST(PoseScene, MethodOverride) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]}]})",
+                                  "s.json");
+  EXPECT_EQ(with_pose_method(scene, PoseMethod::linear).method_name, "linear");
+  EXPECT_THROW(with_pose_method(scene, PoseMethod::biarc_sam), SceneError);  // 3 poses
+  EXPECT_THROW(with_method(scene, Method::P6), SceneError);
 }
 
 }  // namespace

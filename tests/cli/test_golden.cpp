@@ -1,5 +1,5 @@
-// `pita check` and `pita update-goldens` through the real binary, on scenes
-// and goldens made in a scratch directory.
+// `pita check` and `pita update-goldens` (src/cli/golden.cpp) through the real
+// binary, on scenes and goldens made in a scratch directory.
 #include <gtest/gtest.h>
 
 #include <filesystem>

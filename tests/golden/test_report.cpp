@@ -1,0 +1,103 @@
+// The report of `pita check --report DIR` (src/golden/report.cpp): one
+// index.html listing every scene, and the expected, actual and diff images
+// (and SVGs) of the scenes that differ, written as given.
+#include "golden/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace pita::golden {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Report : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pita-test-report-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string read(const std::string& name) const {
+    std::ifstream in(dir_ / name, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+
+  fs::path dir_;
+};
+
+FileCheck file(FileKind kind, Verdict verdict, std::string expected, std::string actual,
+               std::string diff = "") {
+  return FileCheck{kind, "golden/x/x" + std::string(suffix(kind)), verdict, "detail <" + std::string(suffix(kind)) + ">",
+                   std::move(expected), std::move(actual), std::move(diff)};
+}
+
+TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
+  ReportEntry same{SceneCheck{"scenes/same.json", "same",
+                              {file(FileKind::data, Verdict::match, "d", "d"),
+                               file(FileKind::svg, Verdict::match, "s", "s"),
+                               file(FileKind::png, Verdict::match, "P", "P")}},
+                   ""};
+  ReportEntry moved{SceneCheck{"scenes/moved.json", "moved",
+                               {file(FileKind::data, Verdict::differs, "d1", "d2"),
+                                file(FileKind::svg, Verdict::differs, "<svg>1</svg>", "<svg>2</svg>"),
+                                file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")}},
+                    ""};
+  ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}}, "bad.json: /method: unknown \"P66\""};
+  write_report(dir_, {same, moved, bad});
+
+  const std::string html = read("index.html");
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("<p>3 scene(s) checked, 2 differ or could not be checked.</p>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td><a href=\"#same\">same</a></td><td class=\"match\">match</td></tr>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td><a href=\"#moved\">moved</a></td><td class=\"DIFFERS\">DIFFERS</td></tr>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td class=\"ERROR\">ERROR</td>"), std::string::npos) << html;
+  // Names, paths and messages are escaped.
+  EXPECT_NE(html.find("bad&lt;&amp;&gt;"), std::string::npos) << html;
+  EXPECT_NE(html.find("<p class=\"ERROR\">bad.json: /method: unknown &quot;P66&quot;</p>"), std::string::npos) << html;
+  EXPECT_NE(html.find("detail &lt;.svg&gt;"), std::string::npos) << html;
+  EXPECT_EQ(html.find("bad<&>"), std::string::npos);
+  EXPECT_EQ(html.substr(html.size() - 15), "</body></html>\n");
+
+  // The differing scene's files, byte for byte; nothing for the others.
+  EXPECT_EQ(read("moved.expected.png"), "EXPECTED");
+  EXPECT_EQ(read("moved.actual.png"), "ACTUAL");
+  EXPECT_EQ(read("moved.diff.png"), "DIFF");
+  EXPECT_EQ(read("moved.expected.svg"), "<svg>1</svg>");
+  EXPECT_EQ(read("moved.actual.svg"), "<svg>2</svg>");
+  EXPECT_NE(html.find("<img src=\"moved.diff.png\""), std::string::npos) << html;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+  EXPECT_EQ(names.size(), 6u);  // index.html and the five files of "moved"
+}
+
+// A new scene: no golden, so no expected image; the actual one is written.
+TEST_F(Report, MissingGoldenHasNoExpectedImage) {
+  ReportEntry fresh{SceneCheck{"scenes/new.json", "new",
+                               {file(FileKind::data, Verdict::missing, "", "d"),
+                                file(FileKind::svg, Verdict::missing, "", "<svg/>"),
+                                file(FileKind::png, Verdict::missing, "", "ACTUAL")}},
+                    ""};
+  write_report(dir_, {fresh});
+  const std::string html = read("index.html");
+  EXPECT_NE(html.find("<td><em>none</em><br>expected (golden)</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td><em>none</em><br>differing pixels in red</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td class=\"MISSING\">MISSING</td>"), std::string::npos) << html;
+  EXPECT_FALSE(fs::exists(dir_ / "new.expected.png"));
+  EXPECT_EQ(read("new.actual.png"), "ACTUAL");
+  EXPECT_EQ(read("new.actual.svg"), "<svg/>");
+  EXPECT_FALSE(fs::exists(dir_ / "new.expected.svg"));
+}
+
+}  // namespace
+}  // namespace pita::golden

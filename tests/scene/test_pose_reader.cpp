@@ -1,0 +1,224 @@
+// Reading pose scenes (src/scene/pose_reader.cpp; SAM paper, README "Pose
+// scenes"): poses given as matrices or triangles, the reference triangle,
+// shapes and builtin outlines, pose methods; what it refuses is in
+// tests/data/bad/ (poses-*), a few refusals are asserted whole here. The
+// schema side of the same cases is in test_schema.cpp.
+#include "scene/pose_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <string>
+
+#include "scene/scene.hpp"
+#include "scene_test_support.hpp"
+
+namespace pita::scene {
+namespace {
+
+using detail::Json;
+using detail::JsonReader;
+using test::error_of;
+
+const JsonReader kReader("s.json");
+const std::array<Point, 3> kUnitTriangle = {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
+
+// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
+template <typename Read>
+std::string failure(Read&& read) {
+  try {
+    read();
+  } catch (const SceneError& error) {
+    return error.pointer() + ": " + error.reason();
+  }
+  return "(no error)";
+}
+
+Eigen::Vector2d image(const Affine2& A, double x, double y) { return apply(A, Eigen::Vector2d(x, y)); }
+
+TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
+  const Scene scene = parse_scene(R"({"method": "sam", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[1, 2, 3], [-4, 5, 6]]}]})",
+                                  "s.json");
+  EXPECT_EQ(scene.kind, SceneKind::poses);
+  EXPECT_EQ(scene.method_name, "SAM");
+  ASSERT_EQ(scene.poses.size(), 2u);
+  EXPECT_EQ(scene.poses[1].t, 2.0);
+  // [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty].
+  EXPECT_EQ(image(scene.poses[1].pose, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
+  EXPECT_EQ(image(scene.poses[1].pose, 0.0, 1.0), Eigen::Vector2d(5.0, 11.0));
+  // Defaults: the reference triangle as the shape; shapes and poses drawn.
+  ASSERT_EQ(scene.shapes.size(), 1u);
+  EXPECT_EQ(scene.shapes[0].points.size(), 3u);
+  ASSERT_EQ(scene.pose_layers.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
+  EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
+  ASSERT_EQ(scene.panels.size(), 1u);
+  EXPECT_EQ(scene.panels[0].poses.size(), 2u);
+}
+
+TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "reference_triangle": [[1, 1], [3, 1], [1, 2]],
+      "poses": [{"t": 0, "triangle": [[1, 1], [3, 1], [1, 2]]},
+                {"t": 1, "triangle": [[5, 5], [5, 9], [3.5, 5]]}]})",
+                                  "s.json");
+  const Affine2& first = scene.poses[0].pose;
+  EXPECT_LT((first.L - Eigen::Matrix2d::Identity()).norm() + first.b.norm(), 1e-15);
+  const Affine2& second = scene.poses[1].pose;
+  EXPECT_LT((image(second, 1, 1) - Eigen::Vector2d(5, 5)).norm(), 1e-14);
+  EXPECT_LT((image(second, 3, 1) - Eigen::Vector2d(5, 9)).norm(), 1e-14);
+  EXPECT_LT((image(second, 1, 2) - Eigen::Vector2d(3.5, 5)).norm(), 1e-14);
+  // "triangle": "reference" is the reference triangle's outline.
+  ASSERT_EQ(scene.shapes[0].points.size(), 3u);
+  EXPECT_EQ(scene.shapes[0].points[1], Point(3, 1));
+}
+
+// Two mirrored poses: C o B^-1 preserves orientation, so the SAM exists and
+// every frame is mirrored.
+TEST(PoseScene, MirroredPosesHaveASam) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "triangle": [[0, 0], [0, 1], [1, 0]]}, {"t": 1, "triangle": [[3, 0], [3, 2], [5, 0]]}]})",
+                                  "s.json");
+  EXPECT_LT(scene.poses[0].pose.L.determinant(), 0.0);
+  const PoseMotion motion(scene.pose_method, scene.poses);
+  EXPECT_LT(motion.at(0.5).L.determinant(), 0.0);
+}
+
+TEST(PoseScene, BuiltinOutlines) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}],
+      "shapes": [{"outline": "F"}, {"outline": "picture", "color": "red"}, {"outline": "square"}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
+  EXPECT_EQ(scene.shapes[0].points.size(), 10u);
+  EXPECT_FALSE(scene.shapes[0].color.has_value());
+  for (std::size_t i = 1; i <= 7; ++i) {
+    ASSERT_TRUE(scene.shapes[i].color.has_value()) << i;
+    EXPECT_EQ(*scene.shapes[i].color, *scene.shapes[1].color) << i;
+    for (const Point p : scene.shapes[i].points) {
+      EXPECT_TRUE(p.real() >= 0.0 && p.real() <= 1.0 && p.imag() >= 0.0 && p.imag() <= 0.75) << i;
+    }
+  }
+  EXPECT_FALSE(scene.shapes[2].closed);  // the ground line
+  EXPECT_EQ(scene.shapes[8].points.size(), 4u);
+}
+
+// The refusals (no SAM, singular or degenerate poses, knots too close, ...)
+// are the poses-* files of tests/data/bad/ (test_bad_scenes.cpp). Their good
+// neighbours are here.
+
+// Poses without a SAM between the first and the last: through a middle pose,
+// the polySAM and the bi-arc exist.
+TEST(PoseScene, MiddlePoseGivesPolySamAndBiarc) {
+  const std::string three = R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 0.5, "matrix": [[0, -0.8, 4.5], [1.25, 0, 3.5]]}, {"t": 1, "matrix": [[-1.6, 0, 9.5], [0, -0.6, 1]]}])";
+  EXPECT_EQ(error_of(R"({"method": "polySAM", "poses": )" + three + "}"), "(no error)");
+  EXPECT_EQ(error_of(R"({"method": "biarc-SAM", "poses": )" + three + "}"), "(no error)");
+}
+
+// A strong stretch is not singular.
+TEST(PoseScene, StrongStretchIsNotSingular) {
+  EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[1e7, 0, 0], [0, 1e-7, 0]]}]})"),
+            "(no error)");
+}
+
+TEST(PoseReader, PoseCountReasonSaysExactlyOrARange) {
+  EXPECT_EQ(detail::pose_count_reason(PoseMethod::sam, 3), "method SAM takes exactly 2 poses (got 3)");
+  EXPECT_EQ(detail::pose_count_reason(PoseMethod::poly_sam, 1), "method polySAM takes 2 to 1000 poses (got 1)");
+  EXPECT_EQ(detail::pose_count_reason(PoseMethod::bezier_sam, 5), "method bezier-SAM takes 3 to 4 poses (got 5)");
+}
+
+TEST(PoseReader, PoseMethodsByNameAndArrowMethodsRefused) {
+  EXPECT_EQ(detail::read_pose_method(kReader, Json("polySAM"), "/method"), PoseMethod::poly_sam);
+  EXPECT_EQ(detail::read_pose_method(kReader, Json("linear"), "/method"), PoseMethod::linear);
+  EXPECT_EQ(failure([] { detail::read_pose_method(kReader, Json("P6"), "/method"); }),
+            "/method: method P6 interpolates arrows, and this is a pose scene: give it "
+            "\"keyframes\" instead, or a pose method such as SAM");
+  const std::string not_a_name = failure([] { detail::read_pose_method(kReader, Json(3), "/method"); });
+  EXPECT_EQ(not_a_name.rfind("/method: must be a pose method: \"SAM\", ", 0), 0u) << not_a_name;
+  EXPECT_NE(not_a_name.find(" (got 3)"), std::string::npos) << not_a_name;
+}
+
+// A triangle pose is the affinity that maps the reference triangle onto it:
+// with the unit reference triangle, its columns are the edges from the first point.
+TEST(PoseReader, TrianglePoseMapsTheReferenceOntoTheTriangle) {
+  const std::vector<TimedPose> poses = detail::read_poses(
+      kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+                               {"t": 1.5, "triangle": [[2, 1], [4, 1], [2, 4]]}])"),
+      "/poses", kUnitTriangle, PoseMethod::sam);
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_EQ(poses[1].t, 1.5);
+  Eigen::Matrix2d L;
+  L << 2.0, 0.0, 0.0, 3.0;
+  EXPECT_LT((poses[1].pose.L - L).norm(), 1e-15);
+  EXPECT_LT((poses[1].pose.b - Eigen::Vector2d(2.0, 1.0)).norm(), 1e-15);
+}
+
+TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
+  EXPECT_EQ(failure([] {
+              detail::read_poses(kReader, Json::parse(R"([{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
+                                                          {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
+                                 "/poses", kUnitTriangle, PoseMethod::sam);
+            }),
+            "/poses/1/t: times must increase strictly: 1 follows 1");
+  EXPECT_EQ(failure([] {
+              detail::read_poses(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 2, 0], [2, 4, 0]]},
+                                                          {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
+                                 "/poses", kUnitTriangle, PoseMethod::sam);
+            }),
+            "/poses/0/matrix: the linear part [[a, b], [c, d]] has determinant 0 (its singular values "
+            "differ by more than 1e16): the pose is singular, it flattens the plane onto a line or a point");
+  EXPECT_EQ(failure([] {
+              detail::read_poses(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]],
+                                                           "triangle": [[0, 0], [1, 0], [0, 1]]},
+                                                          {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
+                                 "/poses", kUnitTriangle, PoseMethod::sam);
+            }),
+            "/poses/0/triangle: give either \"matrix\" or \"triangle\", not both");
+  EXPECT_EQ(failure([] {
+              detail::read_reference_triangle(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
+                                              "/reference_triangle");
+            }),
+            "/reference_triangle: the reference triangle is degenerate (its points are collinear)");
+}
+
+TEST(PoseReader, BuiltinOutlinesLieInTheUnitBox) {
+  const auto inside = [](const std::vector<ShapeOutline>& parts) {
+    for (const ShapeOutline& part : parts) {
+      for (const Point p : part.points) {
+        if (p.real() < 0.0 || p.real() > 1.0 || p.imag() < 0.0 || p.imag() > 1.0) return false;
+      }
+    }
+    return true;
+  };
+  const std::vector<ShapeOutline> square = detail::builtin_outline("square");
+  ASSERT_EQ(square.size(), 1u);
+  EXPECT_EQ(square[0].points, (std::vector<Point>{{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}}));
+  EXPECT_TRUE(square[0].closed);
+  EXPECT_EQ(detail::builtin_outline("F")[0].points.size(), 10u);
+  EXPECT_EQ(detail::builtin_outline("house")[0].points.size(), 5u);
+  const std::vector<ShapeOutline> picture = detail::builtin_outline("picture");
+  EXPECT_EQ(picture.size(), 7u);
+  for (const char* name : {"F", "house", "square", "picture"}) EXPECT_TRUE(inside(detail::builtin_outline(name))) << name;
+}
+
+TEST(PoseReader, ShapesKeepTheirKindColourAndOrder) {
+  const std::vector<ShapeOutline> shapes = detail::read_shapes(
+      kReader, Json::parse(R"([{"polyline": [[0, 0], [2, 1]], "color": "#ff0000"},
+                               {"triangle": "reference"}, {"outline": "picture"}, {"polygon": [[0, 0], [1, 0], [0, 2]]}])"),
+      "/shapes", kUnitTriangle);
+  ASSERT_EQ(shapes.size(), 1u + 1u + 7u + 1u);  // the picture's parts follow it
+  EXPECT_FALSE(shapes[0].closed);
+  EXPECT_EQ(shapes[0].points, (std::vector<Point>{{0.0, 0.0}, {2.0, 1.0}}));
+  ASSERT_TRUE(shapes[0].color.has_value());
+  EXPECT_EQ(shapes[0].color->r, 1.0);
+  EXPECT_EQ(shapes[1].points, (std::vector<Point>(kUnitTriangle.begin(), kUnitTriangle.end())));
+  EXPECT_TRUE(shapes[9].closed);
+  EXPECT_EQ(shapes[9].points.back(), (Point{0.0, 2.0}));
+  EXPECT_EQ(failure([] { detail::read_shapes(kReader, Json::parse(R"([{"triangle": "mine"}])"), "/shapes", kUnitTriangle); }),
+            "/shapes/0/triangle: must be \"reference\" (the reference triangle; got string \"mine\")");
+}
+
+}  // namespace
+}  // namespace pita::scene
