@@ -5,7 +5,7 @@
 // Also interpolation, symmetry (Eq. 41) and similarity invariance (Eq. 40).
 #include <gtest/gtest.h>
 
-#include "test_support.hpp"
+#include "../test_support.hpp"
 
 namespace pita::test {
 namespace {
