@@ -1,5 +1,7 @@
-// Scene parsing and validation (src/scene/scene.cpp): good scenes, the parts of
-// SceneError, methods and files, pose panels. Keyframes are read by
+// Scene parsing (src/scene/scene.cpp): the parts of SceneError, method
+// overrides, files. Arrow scenes are read by arrow_scene_reader.cpp
+// (test_arrow_scene_reader.cpp), pose scenes by pose_scene_reader.cpp, panels
+// by panel_reader.cpp, the text by json_text.cpp. Keyframes are read by
 // json_reader.cpp (test_json_reader.cpp), poses by pose_reader.cpp
 // (test_pose_reader.cpp). The bad scenes are files of tests/data/bad/,
 // run by test_bad_scenes.cpp. Every error test asserts the whole message: file,
@@ -33,77 +35,6 @@ std::string p6_with(const std::string& extra) {
 }
 
 // ------------------------------------------------------------ good scenes
-
-TEST(Scene, ReadsMagnitudeWindingForm) {
-  const Scene scene = parse_scene(R"({
-    "$schema": "../schema/scene.schema.json",
-    "description": "three arrows",
-    "method": "P6",
-    "keyframes": [
-      {"t": 0,   "p": [0, 0],   "m": 1,   "w": 0.4},
-      {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
-      {"t": 1,   "p": [6, 0],   "m": 1.2, "w": -3.5}
-    ]
-  })",
-                                  "s.json");
-  EXPECT_EQ(scene.path, "s.json");
-  EXPECT_EQ(scene.description, "three arrows");
-  EXPECT_EQ(scene.method_name, "P6");
-  EXPECT_EQ(scene.method, Method::P6);
-  EXPECT_FALSE(scene.samples.has_value());
-  ASSERT_EQ(scene.keyframes.size(), 3u);
-  EXPECT_EQ(scene.keyframes[1].t, 0.5);
-  EXPECT_EQ(scene.keyframes[1].arrow.p, make_point(3, 1.5));
-  EXPECT_EQ(scene.keyframes[1].arrow.m, 0.6);
-  EXPECT_EQ(scene.keyframes[1].arrow.w, 2.0);
-  EXPECT_EQ(scene.keyframes[2].arrow.w, -3.5);  // windings are never reduced
-}
-
-TEST(Scene, DefaultsApplied) {
-  const Scene scene = parse_scene(p6_with(""), "s.json");
-  EXPECT_EQ(scene.description, "");
-  EXPECT_FALSE(scene.samples.has_value());
-  EXPECT_EQ(scene.options.anchor, Anchor::start);
-  EXPECT_EQ(scene.options.path_mean, MeanKind::geometric);
-  EXPECT_EQ(scene.options.magnitude_mean, MeanKind::geometric);
-}
-
-TEST(Scene, ReadsSamplesAndOptions) {
-  const Scene scene = parse_scene(
-      p6_with(R"(, "samples": 1000000, "options": {"anchor": "midpoint", "path_mean": "arithmetic",
-                  "magnitude_mean": "harmonic"})"),
-      "s.json");
-  EXPECT_EQ(scene.samples, 1000000);
-  EXPECT_EQ(scene.options.anchor, Anchor::midpoint);
-  EXPECT_EQ(scene.options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(scene.options.magnitude_mean, MeanKind::harmonic);
-  EXPECT_EQ(parse_scene(p6_with(R"(, "samples": 2)"), "s.json").samples, 2);
-}
-
-TEST(Scene, MethodNamesAreResolvedToCanonicalIds) {
-  const std::string keyframes =
-      R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [1, 1], "m": 1, "w": 0},
-                       {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})";
-  const Scene mnemonic = parse_scene(R"({"method": "la-lp", )" + keyframes, "s.json");
-  EXPECT_EQ(mnemonic.method, Method::P6);
-  EXPECT_EQ(mnemonic.method_name, "P6");
-  const Scene number = parse_scene(R"({"method": "5s", )" + keyframes, "s.json");
-  EXPECT_EQ(number.method_name, "P5S");
-}
-
-TEST(Scene, SmaTakesTwoKeyframes) {
-  const Scene scene = parse_scene(R"({"method": "SMA", "keyframes": [
-    {"t": 0, "p": [0, 0], "m": 2, "w": 0.3}, {"t": 1, "p": [4, 1], "m": 0.5, "w": 4.3}]})",
-                                  "s.json");
-  EXPECT_EQ(scene.method, Method::SMA);
-  EXPECT_EQ(scene.keyframes.size(), 2u);
-}
-
-// ------------------------------------------------------------ bad scenes
-//
-// Every bad scene is a file of tests/data/bad/ with the pointer (or line and
-// column) and the reason it must give: tests/scene/test_bad_scenes.cpp runs
-// them. Here: the parts of SceneError, and the limits' good side.
 
 TEST(SceneError, ErrorCarriesItsParts) {
   try {
@@ -185,23 +116,6 @@ TEST(Scene, LoadSceneNamesTheFileAsGiven) {
 //
 // What the scene makes of its pose panels and method overrides; reading the
 // poses themselves is test_pose_reader.cpp.
-
-TEST(PoseScene, PanelsInheritAndOverride) {
-  const Scene scene = parse_scene(R"({"method": "polySAM", "poses": [
-      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]},
-      {"t": 2, "matrix": [[-1, 0, 4], [0, -1, 0]]}],
-      "panels": ["linear", {"method": "biarc-SAM", "samples": 5},
-                 {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-                                             {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
-                                  "s.json");
-  ASSERT_EQ(scene.panels.size(), 3u);
-  EXPECT_EQ(scene.panels[0].pose_method, PoseMethod::linear);
-  EXPECT_EQ(scene.panels[0].poses.size(), 3u);
-  EXPECT_EQ(scene.panels[1].pose_method, PoseMethod::biarc_sam);
-  EXPECT_EQ(scene.panels[1].samples, 5);
-  EXPECT_EQ(scene.panels[2].poses.size(), 2u);
-  EXPECT_EQ(scene.panels[2].title, "SAM");
-}
 
 TEST(PoseScene, MethodOverride) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [

@@ -1,0 +1,191 @@
+// "panels": the grid of a figure, each panel overriding the scene's method,
+// keyframes or poses, options, shapes, timing, samples and layers.
+#include "scene/scene_readers.hpp"
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "scene/figure_reader.hpp"
+#include "scene/pose_reader.hpp"
+#include "scene/timing_reader.hpp"
+
+namespace pita::scene::detail {
+
+namespace {
+constexpr std::array<std::string_view, 7> kPanelFields = {
+    "method", "options", "keyframes", "title", "samples", "layers", "timing"};
+constexpr std::array<std::string_view, 8> kPosePanelFields = {
+    "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
+
+// A panel given by its method is titled "P6 La-LP" ("SMA" for SMA).
+std::string method_title(Method method) {
+  const MethodInfo& about = info(method);
+  std::string title(about.id);
+  if (!about.mnemonic.empty() && about.mnemonic != about.id) {
+    title += ' ';
+    title += about.mnemonic;
+  }
+  return title;
+}
+
+// ------------------------------------------------------------ JSON parsing
+
+// 1-based line and column of the byte at `index` (columns count bytes, as
+// nlohmann's own messages do).
+
+// The panel draws the scene's keyframes with `method`, which must take as many.
+void set_method(const JsonReader& reader, Panel& panel, Method method, const std::string& pointer,
+                const Scene& scene) {
+  if (scene.keyframes.size() != static_cast<std::size_t>(info(method).keyframe_count)) {
+    reader.fail(pointer, keyframe_count_reason(method, scene.keyframes.size()) +
+                      " from the scene; give the panel its own \"keyframes\"");
+  }
+  panel.method = method;
+  panel.method_name = std::string(info(method).id);
+  panel.title = method_title(method);
+}
+
+
+// A panel is a method name ("P2") or an object whose fields override the scene's.
+Panel read_panel(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene) {
+  Panel panel = scene_panel(scene, pointer);
+  if (value.is_string()) {
+    set_method(reader, panel, reader.method(value, pointer), pointer, scene);
+    panel.motion_pointer = pointer;
+    return panel;
+  }
+  if (!value.is_object()) {
+    reader.fail(pointer, "a panel must be a method name or an object (got " + value_text(value) + ")");
+  }
+  reader.check_fields(value, pointer, kPanelFields);
+  const Json* keyframes = JsonReader::member(value, "keyframes");
+  if (const Json* method = JsonReader::member(value, "method")) {
+    const std::string at = pointer + "/method";
+    const Method found = reader.method(*method, at);
+    if (keyframes == nullptr) {
+      set_method(reader, panel, found, at, scene);
+    } else {
+      panel.method = found;
+      panel.method_name = std::string(info(found).id);
+      panel.title = method_title(found);
+    }
+  }
+  if (const Json* options = JsonReader::member(value, "options")) {
+    panel.options = reader.options(*options, pointer + "/options", scene.options);
+  }
+  if (keyframes != nullptr) {
+    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method);
+    panel.motion_pointer = pointer + "/keyframes";
+  } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
+    panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
+  }
+  if (const Json* title = JsonReader::member(value, "title")) {
+    panel.title = reader.string(*title, pointer + "/title");
+  }
+  if (const Json* samples = JsonReader::member(value, "samples")) {
+    panel.samples = reader.integer(*samples, pointer + "/samples", kMinSamples,
+                                    kMaxFigureSamples);
+  }
+  if (const Json* layers = JsonReader::member(value, "layers")) {
+    panel.layers = detail::read_layers(reader, *layers, pointer + "/layers");
+  }
+  if (const Json* timing = JsonReader::member(value, "timing")) {
+    panel.timing = detail::read_timing(reader, *timing, pointer + "/timing");
+  }
+  return panel;
+}
+
+}  // namespace
+
+std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
+                               const Scene& scene) {
+  if (!value.is_array()) {
+    reader.fail(pointer, "must be an array of panels, each a method name or an object (got " +
+                      value_text(value) + ")");
+  }
+  if (value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
+    reader.fail(pointer, fmt::format("must have between 1 and {} panels (got {})", kMaxPanels,
+                              value.size()));
+  }
+  std::vector<Panel> panels;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    panels.push_back(read_panel(reader, value[i], element_pointer(pointer, i), scene));
+  }
+  return panels;
+}
+
+
+std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
+                                    const Scene& scene) {
+  if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
+    reader.fail(pointer, fmt::format("must be an array of 1 to {} panels (got {})", kMaxPanels,
+                              value_text(value)));
+  }
+  std::vector<Panel> panels;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = element_pointer(pointer, i);
+    const Json& item = value[i];
+    Panel panel = scene_panel(scene, at);
+    bool own_method = false, own_poses = false;
+    if (item.is_string()) {
+      panel.pose_method = detail::read_pose_method(reader, item, at);
+      own_method = true;
+    } else {
+      reader.object(item, at, "a panel (a pose method name or an object)");
+      reader.check_fields(item, at, kPosePanelFields);
+      if (const Json* method = JsonReader::member(item, "method")) {
+        panel.pose_method = detail::read_pose_method(reader, *method, at + "/method");
+        own_method = true;
+      }
+      if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");
+      if (const Json* timing = JsonReader::member(item, "timing")) {
+        panel.timing = detail::read_timing(reader, *timing, at + "/timing");
+      }
+      if (const Json* samples = JsonReader::member(item, "samples")) {
+        panel.samples = reader.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
+      }
+      if (const Json* subdivisions = JsonReader::member(item, "subdivisions")) {
+        panel.subdivisions =
+            reader.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
+        own_method = true;  // the motion changes: check it again
+      }
+      if (const Json* shapes = JsonReader::member(item, "shapes")) {
+        panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
+      }
+      if (const Json* layers = JsonReader::member(item, "layers")) {
+        panel.pose_layers = detail::read_pose_layers(reader, *layers, at + "/layers");
+      }
+      if (const Json* poses = JsonReader::member(item, "poses")) {
+        panel.poses = detail::read_poses(reader, *poses, at + "/poses", scene.reference_triangle,
+                                         panel.pose_method);
+        own_poses = true;
+      }
+    }
+    panel.method_name = std::string(info(panel.pose_method).id);
+    const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
+    if (needs_motion(layers)) {
+      const PoseMethodInfo& about = info(panel.pose_method);
+      const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
+      const auto count = static_cast<int>(panel.poses.size());
+      if (panel.poses.empty()) {
+        reader.fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
+                 "scene \"poses\"");
+      }
+      if (count < about.min_poses || count > about.max_poses) {
+        reader.fail(own_method ? at : poses_at,
+             detail::pose_count_reason(panel.pose_method, panel.poses.size()) +
+                 "; give the panel its own \"poses\"");
+      }
+      panel.motion_pointer = own_poses ? poses_at : own_method ? at : std::string("/poses");
+    }
+    if (panel.title.empty() && own_method) panel.title = std::string(info(panel.pose_method).id);
+    panels.push_back(std::move(panel));
+  }
+  return panels;
+}
+
+}  // namespace pita::scene::detail

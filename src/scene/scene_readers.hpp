@@ -1,0 +1,35 @@
+// The readers of a scene document, one concept per file (internal to
+// src/scene/): arrow scenes (arrow_scene_reader.cpp), pose scenes
+// (pose_scene_reader.cpp), panels of both (panel_reader.cpp) and the golden
+// tolerances (golden_reader.cpp). scene.cpp parses the text (json_text.cpp)
+// and chooses the reader.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/json_reader.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::scene::detail {
+
+// Whether any of these pose layers draws a motion (every one but
+// "existence", "label" and "patch"), so that the panel needs poses.
+bool needs_motion(const std::vector<PoseLayer>& layers);
+
+// A pose scene has "poses", or a pose method such as "SAM" and no "keyframes".
+bool is_pose_scene(const Json& document);
+
+Scene read_arrow_scene(const JsonReader& reader, const Json& document);
+Scene read_pose_scene(const JsonReader& reader, const Json& document);
+
+// "panels" of an arrow scene (each a method name or an object) and of a pose scene.
+std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
+                               const Scene& scene);
+std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
+                                    const Scene& scene);
+
+// "golden": {"number_tolerance", "svg_tolerance", "pixel_tolerance", "max_differing"}.
+void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenTolerances& out);
+
+}  // namespace pita::scene::detail

@@ -1,0 +1,72 @@
+// Panels (src/scene/panel_reader.cpp): what a panel inherits from the scene
+// and what it overrides, for arrow and pose scenes, and the pointer its
+// motion's errors name.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace pita::scene {
+namespace {
+
+const std::string kKeyframes = R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+
+TEST(PoseScene, PanelsInheritAndOverride) {
+  const Scene scene = parse_scene(R"({"method": "polySAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]},
+      {"t": 2, "matrix": [[-1, 0, 4], [0, -1, 0]]}],
+      "panels": ["linear", {"method": "biarc-SAM", "samples": 5},
+                 {"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+                                             {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  EXPECT_EQ(scene.panels[0].pose_method, PoseMethod::linear);
+  EXPECT_EQ(scene.panels[0].poses.size(), 3u);
+  EXPECT_EQ(scene.panels[1].pose_method, PoseMethod::biarc_sam);
+  EXPECT_EQ(scene.panels[1].samples, 5);
+  EXPECT_EQ(scene.panels[2].poses.size(), 2u);
+  EXPECT_EQ(scene.panels[2].title, "SAM");
+}
+
+TEST(PanelReader, ArrowPanelsInheritAndOverride) {
+  const Scene scene = parse_scene(R"({"method": "P6", "options": {"anchor": "midpoint"}, "samples": 5, )" + kKeyframes + R"(,
+      "panels": ["P2", {"method": "P3", "title": "three", "samples": 7},
+                 {"options": {"path_mean": "arithmetic"}},
+                 {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 0], "m": 1, "w": 1}]}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  EXPECT_EQ(scene.panels[0].method, Method::P2);
+  EXPECT_EQ(scene.panels[0].title, "P2 LS-Po");
+  EXPECT_EQ(scene.panels[0].samples, 5);
+  EXPECT_EQ(scene.panels[0].options.anchor, scene.options.anchor);
+  EXPECT_EQ(scene.panels[1].title, "three");
+  EXPECT_EQ(scene.panels[1].samples, 7);
+  EXPECT_EQ(scene.panels[2].method, Method::P6);
+  EXPECT_EQ(scene.panels[2].options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(scene.panels[2].options.anchor, scene.options.anchor);  // the fields not given stay the scene's
+  EXPECT_EQ(scene.panels[3].keyframes.size(), 2u);
+  EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
+}
+
+TEST(PanelReader, MotionPointerNamesWhatTheMotionIsBuiltFrom) {
+  const Scene scene = parse_scene(R"({"method": "P6", )" + kKeyframes + R"(,
+      "panels": ["P1", {"title": "same"}, {"method": "P8"}, {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+        {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]}]})",
+                                  "s.json");
+  EXPECT_EQ(scene.panels[0].motion_pointer, "/panels/0");             // its method, the scene's keyframes
+  EXPECT_EQ(scene.panels[1].motion_pointer, "/keyframes");            // the scene's motion
+  EXPECT_EQ(scene.panels[2].motion_pointer, "/panels/2");
+  EXPECT_EQ(scene.panels[3].motion_pointer, "/panels/3/keyframes");   // its own keyframes
+  const Scene poses = parse_scene(R"({"method": "polySAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]}], "panels": ["SAM", {"title": "x"},
+      {"poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
+                                  "s.json");
+  EXPECT_EQ(poses.panels[0].motion_pointer, "/panels/0");
+  EXPECT_EQ(poses.panels[1].motion_pointer, "/poses");
+  EXPECT_EQ(poses.panels[2].motion_pointer, "/panels/2/poses");
+}
+
+}  // namespace
+}  // namespace pita::scene

@@ -1,0 +1,46 @@
+// Pose scenes (src/scene/pose_scene_reader.cpp): which documents are pose
+// scenes, their defaults, and that a pose scene without poses may still draw
+// layers that need none.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "scene/scene.hpp"
+#include "scene/scene_readers.hpp"
+
+namespace pita::scene {
+namespace {
+
+TEST(PoseSceneReader, PoseScenesAreRecognisedByPosesOrAPoseMethod) {
+  EXPECT_TRUE(detail::is_pose_scene(detail::Json::parse(R"({"poses": []})")));
+  EXPECT_TRUE(detail::is_pose_scene(detail::Json::parse(R"({"method": "polysam"})")));
+  EXPECT_FALSE(detail::is_pose_scene(detail::Json::parse(R"({"method": "SAM", "keyframes": []})")));
+  EXPECT_FALSE(detail::is_pose_scene(detail::Json::parse(R"({"method": "P6"})")));
+}
+
+TEST(PoseSceneReader, DefaultsApplied) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "triangle": [[1, 0], [2, 0], [1, 1]]}]})", "s.json");
+  EXPECT_EQ(scene.kind, SceneKind::poses);
+  EXPECT_EQ(scene.method_name, "SAM");
+  ASSERT_EQ(scene.shapes.size(), 1u);  // the reference triangle
+  EXPECT_EQ(scene.shapes[0].points.size(), 3u);
+  ASSERT_EQ(scene.pose_layers.size(), 2u);  // shapes, then poses
+  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
+  EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
+  EXPECT_EQ(scene.subdivisions, kDefaultSubdivisions);
+  EXPECT_EQ(scene.poses[1].pose.b, Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
+  ASSERT_EQ(scene.panels.size(), 1u);
+  EXPECT_EQ(scene.panels[0].motion_pointer, "/poses");
+}
+
+TEST(PoseSceneReader, LayersThatNeedNoPosesNeedNoPoses) {
+  EXPECT_NO_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "existence"}, {"type": "label", "text": "x", "at": [0, 0]}]})", "s.json"));
+  EXPECT_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "shapes"}]})", "s.json"), SceneError);
+  EXPECT_TRUE(detail::needs_motion({ShapesLayer{}}));
+  EXPECT_TRUE(detail::needs_motion({PlotLayer{}}));
+  EXPECT_FALSE(detail::needs_motion({ExistenceLayer{}, LabelLayer{}, PatchLayer{}}));
+}
+
+}  // namespace
+}  // namespace pita::scene
