@@ -160,7 +160,7 @@ inline constexpr double kDerivativeStep = 1e-2;
 // this fraction of the total length times the interval's share of [from, to]:
 // ten times above the finite differences' rounding (so refinement stops), a
 // tenth of the 1e-9 of the path length that lengths must be right to.
-inline constexpr double kArcLengthTolerance = 1e-10;
+inline constexpr double kArcLengthTolerance = 1e-11;
 
 // The table starts from this many equal intervals (so that no feature between
 // the first Gauss nodes is missed) and halves an interval at most this deep

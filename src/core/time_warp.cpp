@@ -40,8 +40,12 @@ double TimeWarp::warped(double t) const {
   const double from = knots_[i], to = knots_[i + 1];
   if (t == from) return t;
   const double y = ease(ease_, (t - from) / (to - from));
+  // An ease may overshoot (CSS cubic-bezier with y outside [0, 1]): without
+  // arc length the motion is then evaluated beyond the span (extrapolated);
+  // with it, the fraction is clamped to the path over the span, whose table
+  // covers that span only (docs/paper-notes.md N20).
   if (!tables_.empty()) return tables_[i]->parameter_at(y);
-  if (y >= 1.0) return to;
+  if (y == 1.0) return to;
   return from + y * (to - from);
 }
 

@@ -9,7 +9,9 @@
 // i.e. p = P(U(S(t))) as in the chapter's Sec. 3.2.2. With per = span the same
 // is done on each [t_i, t_{i+1}] on its own, so every keyframe is still
 // reached at its knot. Outside [t_0, t_n] the warp is the identity
-// (extrapolation is unchanged); so is the linear ease without arc length.
+// (extrapolation is unchanged); so is the linear ease without arc length. An
+// ease that overshoots (y outside [0, 1]) evaluates the motion beyond the
+// span without arc length, and is clamped to the span's path with it.
 #pragma once
 
 #include <memory>

@@ -24,10 +24,16 @@ Eq. 3.19 with the normaliser of N16); {"parabolic": {"t1", "t2"}} (chapter Eq. 3
 v0 = 2/(t2 - t1 + 1), N16).
 
 Arc length: adaptive Gauss-Legendre (12 nodes, panels halved until two levels agree to 1e-14
-of the length) of the speed |P'(tau)|, P' by an 8th-order central difference of the oracle's
-motion with a step of 1/16 of the panel (at most 2e-3 of the knot range), one-sided within 4
-steps of the knots for P4, P7, P8, whose knot warp is only C1 there; inverted by safeguarded
-Newton (bisection fallback) inside the panel holding the target.
+of the length, or to the differences' rounding noise) of the speed |P'(tau)|, P' by an
+8th-order central difference of the oracle's motion with a step of 1/16 of the panel (between
+2e-3/64 and 2e-3 of the knot range), one-sided within 4 steps of the knots for P4, P7, P8,
+whose knot warp is only C1 there; inverted by safeguarded Newton (bisection fallback) inside
+the panel holding the target.  Checked (selfcheck) against closed forms (circle, ellipse, the
+log-spiral of SMA) and Richardson-extrapolated polylines, to ~1e-13 of the length.
+
+The overshoot reading (y not clamped) is the specification's; Timing(clamp_overshoot=True) and
+Timing(clamp_arc_overshoot=True) give clamped readings, for comparison only
+(compare_timing_with_cli.py --clamp-overshoot / --clamp-arc-overshoot).
 
 Run `python3 timing_oracle.py` for the self-check (exit 1 if a check fails).
 """
@@ -36,7 +42,9 @@ import math
 import os
 import re
 import sys
+from fractions import Fraction
 
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import pita_oracle as O  # noqa: E402
 
@@ -58,8 +66,9 @@ def ease_cubic(x):
 
 class CubicBezier:
     """CSS cubic-bezier(x1, y1, x2, y2): the Bezier curve through (0,0), (x1,y1), (x2,y2),
-    (1,1); ease(x) = y(s) where x(s) = x.  x1, x2 in [0, 1] make x(s) nondecreasing, so s is
-    found by bisection on [0, 1] down to adjacent doubles, then one Newton polish."""
+    (1,1); ease(x) = y(s) where x(s) = x.  x1, x2 in [0, 1] make x(s) increasing, so s is
+    found by bisection on [0, 1] to 2^-64 with exact (integer) sign tests, and y(s) is
+    evaluated exactly and rounded once."""
 
     def __init__(self, x1, y1, x2, y2):
         if not (0 <= x1 <= 1 and 0 <= x2 <= 1):
@@ -76,36 +85,49 @@ class CubicBezier:
         r = 1 - s
         return 3 * r * r * p1 + 6 * r * s * (p2 - p1) + 3 * s * s * (1 - p2)
 
+    def _ints(self, x):
+        """x1, x2, x and the y's as integers over one power-of-two denominator D."""
+        fs = [Fraction(v) for v in self.c] + [Fraction(x)]
+        D = 1
+        for f in fs:
+            D = max(D, f.denominator)  # all powers of two: the largest is their LCM
+        return [f.numerator * (D // f.denominator) for f in fs], D
+
+    def solve_s_exact(self, x, bits=64):
+        """s with x(s) = x, as an integer k over 2^bits: bisection whose sign tests are
+        exact (integer arithmetic on the doubles x1, x2, x), so that the answer is right to
+        2^-bits even where x'(s) = 0 (x1 = 1, x2 = 0 at s = 1/2: there a double-precision
+        test x(s) < x would leave s uncertain by ~eps^(1/3))."""
+        (a1, _, a2, _, ax), D = self._ints(x)
+        N = 1 << bits
+        lo, hi = 0, N  # x(lo/N) < x <= x(hi/N)
+        while hi - lo > 1:
+            k = (lo + hi) >> 1
+            r = N - k
+            if 3 * r * r * k * a1 + 3 * r * k * k * a2 + k * k * k * D < ax * N * N * N:
+                lo = k
+            else:
+                hi = k
+        return hi, N
+
     def solve_s(self, x):
-        x1, _, x2, _ = self.c
         if x <= 0:
             return 0.0
         if x >= 1:
             return 1.0
-        lo, hi = 0.0, 1.0
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid <= lo or mid >= hi:
-                break
-            if self._b(mid, x1, x2) < x:
-                lo = mid
-            else:
-                hi = mid
-        s = 0.5 * (lo + hi)
-        d = self._db(s, x1, x2)
-        if d > 1e-3:
-            s2 = s - (self._b(s, x1, x2) - x) / d
-            if lo - 1e-15 <= s2 <= hi + 1e-15:
-                s = s2
-        return s
+        k, N = self.solve_s_exact(x)
+        return k / N
 
     def __call__(self, x):
-        _, y1, _, y2 = self.c
-        if x == 0:
+        if x <= 0:
             return 0.0
-        if x == 1:
+        if x >= 1:
             return 1.0
-        return self._b(self.solve_s(x), y1, y2)
+        k, N = self.solve_s_exact(x)
+        (_, b1, _, b2, _), D = self._ints(x)
+        r = N - k
+        # y(s) = 3 (1-s)^2 s y1 + 3 (1-s) s^2 y2 + s^3, exactly, rounded once
+        return float(Fraction(3 * r * r * k * b1 + 3 * r * k * k * b2 + k * k * k * D, D * N * N * N))
 
 
 CSS_NAMED = {
@@ -259,9 +281,10 @@ class ArcLength:
     sum over its halves to rtol of the whole length, or to the rounding noise the finite
     differences put into that panel (NOISE * eps * max|P| * width / step), whichever is larger.
     The speed on a panel of width W is taken with the step min(hmax, W * HREL) (not below
-    hmax / 4096), so that a panel refined around a narrow burst of speed also refines its
-    derivative.  breaks: times where P is only C1 (one-sided stencils there, and no panel
-    straddles them)."""
+    hmax / 64: smaller steps turn the motion's rounding, a few ulps of its largest
+    intermediate terms, into a bias of the speed), so that a panel refined around a narrow
+    burst of speed also refines its derivative.  breaks: times where P is only C1 (one-sided
+    stencils there, and no panel straddles them)."""
 
     HREL = 1.0 / 16
     NOISE = 16.0
@@ -288,7 +311,7 @@ class ArcLength:
         self.length = s
 
     def step(self, a, b):
-        return min(self.hmax, max(self.hmax / 4096, abs(b - a) * self.HREL))
+        return min(self.hmax, max(self.hmax / 256, abs(b - a) * self.HREL))
 
     def speed(self, u, h=None):
         self.calls += 1
@@ -458,7 +481,10 @@ class Timing:
         if t < ks[0] or t > ks[-1]:
             return t
         lo, hi = self.range_of(t)
-        x = (t - lo) / (hi - lo)
+        return self.tau_of_x(lo, hi, (t - lo) / (hi - lo))
+
+    def tau_of_x(self, lo, hi, x):
+        """The motion time for the fraction x of the range [lo, hi]."""
         y = self.ease(x)
         if self.clamp_overshoot or (self.clamp_arc_overshoot and self.arc is not None):
             y = min(1.0, max(0.0, y))
@@ -541,6 +567,10 @@ def selfcheck():
             s = f.solve_s(x)
             worst = max(worst, abs(CubicBezier._b(s, f.c[0], f.c[2]) - x))
         check("bezier x(s(x)) = x  %s" % spec, worst, 4e-16)
+    # x1 = 1, x2 = 0: x'(s) = 0 at s = 1/2, so ease(1/2) = y(1/2) exactly
+    f = make_ease("cubic-bezier(1, -0.203783, 0, 0.631073)")
+    check("bezier with x'(1/2) = 0: ease(0.5) = 0.375 (y1 + y2) + 0.125",
+          abs(f(0.5) - (0.375 * (-0.203783 + 0.631073) + 0.125)), 1e-16)
     # C1 joins and monotonicity of sine cap / parabolic (numerical derivative across joins)
     for f, joins in ((SineCap(0.2, 0.7), (0.2, 0.7)), (SineCap(0.35, 0.35), (0.35,)),
                      (Parabolic(0.2, 0.7), (0.2, 0.7)), (Parabolic(0.4, 0.4), (0.4,))):
