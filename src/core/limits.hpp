@@ -158,8 +158,8 @@ inline constexpr double kDerivativeStep = 1e-2;
 // An interval of the arc-length table is accepted when its two checks (whole
 // against halves, interpolated midpoint against the left half) agree within
 // this fraction of the total length times the interval's share of [from, to]:
-// ten times above the finite differences' rounding (so refinement stops), a
-// tenth of the 1e-9 of the path length that lengths must be right to.
+// above the finite differences' rounding (~1e-12, so refinement stops) and a
+// hundredth of the 1e-9 of the path length that lengths must be right to.
 inline constexpr double kArcLengthTolerance = 1e-11;
 
 // The table starts from this many equal intervals (so that no feature between

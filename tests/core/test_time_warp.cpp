@@ -74,6 +74,20 @@ TEST(TimeWarp, ArcLengthOfAStillSpanIsRefused) {
   EXPECT_THROW(TimeWarp(Ease{}, WarpSpan::span, {0.0, 1.0, 2.0}, &path), std::invalid_argument);
 }
 
+TEST(TimeWarp, OvershootExtrapolatesWithoutArcLengthAndClampsWithIt) {
+  const Ease back = cubic_bezier_ease(0.2, 1.5, 0.8, 1.5);  // y above 1 in the middle
+  const TimeWarp warp(back, WarpSpan::motion, {0.0, 2.0});
+  EXPECT_GT(ease(back, 0.6), 1.0);
+  EXPECT_DOUBLE_EQ(warp(1.2), 2.0 * ease(back, 0.6));  // beyond the last knot
+  const ArcLengthTable::Path path = [](double tau) { return Point{tau, 0.0}; };
+  const TimeWarp paced(back, WarpSpan::motion, {0.0, 2.0}, &path);
+  EXPECT_EQ(paced(1.2), 2.0);
+  const Ease under = cubic_bezier_ease(0.3, -0.8, 0.7, 0.5);
+  EXPECT_LT(ease(under, 0.25), 0.0);
+  EXPECT_LT(TimeWarp(under, WarpSpan::motion, {0.0, 2.0})(0.5), 0.0);
+  EXPECT_EQ(TimeWarp(under, WarpSpan::motion, {0.0, 2.0}, &path)(0.5), 0.0);
+}
+
 TEST(TimeWarp, KnotsMustIncrease) {
   EXPECT_THROW(TimeWarp(Ease{}, WarpSpan::motion, {0.0}), std::invalid_argument);
   EXPECT_THROW(TimeWarp(Ease{}, WarpSpan::motion, {0.0, 0.0}), std::invalid_argument);
