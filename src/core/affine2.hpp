@@ -3,7 +3,8 @@
 // is an affinity; an arrow is the special case of a similarity (affine_of).
 //
 // The verbs are the ones every value type of the core shares (STYLE.md):
-// apply, compose, inverse.
+// apply, compose, inverse here; pow, log, exp in affine_power.hpp (EAR). Twirl
+// (twirl.hpp) has the same six.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,7 @@
 #include "core/affine_power.hpp"
 
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -537,6 +539,19 @@ Affine2 SteadyAffineMorph::velocity(double u) const {
 
 Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t) {
   return SteadyAffineMorph(B, C).at(t);
+}
+
+Affine2 log(const Affine2& A) {
+  const AffinePowers powers(A);
+  return {powers.linear_log(), powers.velocity_translation()};
+}
+
+Affine2 exp(const Affine2& generator) {
+  Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+  H.topLeftCorner<2, 2>() = generator.L;
+  H.topRightCorner<2, 1>() = generator.b;
+  const Eigen::Matrix3d E = H.exp();  // Eigen's scaling and squaring Pade (MatrixFunctions)
+  return {E.topLeftCorner<2, 2>(), E.topRightCorner<2, 1>()};
 }
 
 }  // namespace pita

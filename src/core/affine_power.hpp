@@ -139,6 +139,23 @@ class AffinePowers {
 // A^t (builds AffinePowers; use the class for many t).
 Affine2 affine_power(const Affine2& A, double t);
 
+// ------------------------------------------------------------ shared verbs
+// The verbs every value type of the core shares (STYLE.md): apply, compose,
+// inverse (affine2.hpp), and pow, log, exp here. A generator (an element of
+// the Lie algebra, the velocity field x -> C x + v) is written as an
+// affinity-shaped pair {C, v}, as velocities are.
+
+// A^t by EAR; throws NoRealLogarithm in G3.
+inline Affine2 pow(const Affine2& A, double t) { return affine_power(A, t); }
+
+// The homogeneous log of A, {log L, v} (A.2-A.5: the SAM's constant velocity
+// field, Sec. 2.3 (6)); throws NoRealLogarithm in G3.
+Affine2 log(const Affine2& A);
+
+// exp of a generator {C, v}: [e^C | phi(C) v], phi(C) = sum C^k / (k + 1)!,
+// the exponential of the homogeneous matrix [[C, v], [0, 0]]. exp(t log A) = A^t.
+Affine2 exp(const Affine2& generator);
+
 // The Steady Affine Morph from pose B (time 0) to pose C (time 1):
 // A^t o B with A = C o B^-1 (Sec. 2.2). Throws NoRealLogarithm with the
 // message "no SAM exists between these poses: ..." when A has no real power.

@@ -115,6 +115,33 @@ inline std::optional<Point> fixed_point(const Twirl& T) {
   return T.anchor() - T.anchor_offset();
 }
 
+// ------------------------------------------------------------ shared verbs
+// The verbs every value type of the core shares (STYLE.md, as Sophus's groups
+// do): apply, compose, inverse, pow above, and log / exp below.
+
+// T . x and T . A, spelled as the verb. (Points are std::complex, so an
+// unqualified call also finds std::apply by ADL: write pita::apply.)
+inline Point apply(const Twirl& T, Point x) { return T * x; }
+inline Arrow apply(const Twirl& T, const Arrow& A) { return T * A; }
+
+// The generator of a twirl: the velocity field x -> L x + v of the steady
+// motion T^t (a similarity's Lie algebra element, L = ln m + i w).
+struct TwirlLog {
+  Complex L{};
+  Vector v{};
+};
+
+// log T: T . x = e^L x + c with c = T . 0, and v = L c / (e^L - 1), whose
+// limit c (a translation) is used where |e^L - 1| < kTwirlTranslation, as
+// pow does. In the isolated whole-turn case of Sec. 4.1 (e^L = 1, L != 0,
+// distinct origins) no generator exists: the fallback gives the translation
+// by c, and exp(log T) is not T there.
+TwirlLog log(const Twirl& T);
+
+// exp G: the twirl x -> e^L x + ((e^L - 1)/L) v, anchored at the origin;
+// exp(t log T) = T^t.
+Twirl exp(const TwirlLog& G);
+
 // The twirl T_{A,B} that maps arrow A onto arrow B (Eq. 17-19): ratio B.m/A.m,
 // winding B.w - A.w, anchor A.p, displacement B.p - A.p.
 inline Twirl twirl_between(const Arrow& A, const Arrow& B) {

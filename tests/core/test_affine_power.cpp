@@ -615,5 +615,36 @@ TEST(SteadyAffineMorph, NoSamBetweenPosesIsSaidClearly) {
   }
 }
 
+TEST(AffineVerbs, ExpOfLogIsTheAffinityAndExpOfTLogIsItsPower) {
+  // log by EAR's closed forms, exp by Eigen's Pade on the homogeneous matrix:
+  // two independent computations that must agree.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int i = 0; i < 200; ++i) {
+    Affine2 A;
+    A.L << 1.0 + u(rng), u(rng), u(rng), 1.0 + u(rng);
+    A.b << 3.0 * u(rng), 3.0 * u(rng);
+    if (select_case(A.L) == RootCase::G3) continue;
+    const Affine2 G = log(A);
+    const Affine2 back = exp(G);
+    EXPECT_LT((back.L - A.L).norm(), 1e-12 * (1.0 + A.L.norm())) << i;
+    EXPECT_LT((back.b - A.b).norm(), 1e-12 * (1.0 + A.b.norm())) << i;
+    for (const double t : {-0.5, 0.3, 1.7}) {
+      const Affine2 power = pow(A, t), via = exp(Affine2{t * G.L, t * G.b});
+      EXPECT_LT((power.L - via.L).norm(), 1e-11 * (1.0 + power.L.norm())) << i << " t " << t;
+      EXPECT_LT((power.b - via.b).norm(), 1e-11 * (1.0 + power.b.norm())) << i << " t " << t;
+    }
+    // compose and inverse are the group's: A o A^-1 = identity.
+    const Affine2 one = compose(A, inverse(A));
+    EXPECT_LT((one.L - Matrix2d::Identity()).norm(), 1e-12);
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  Affine2 half_turn;
+  half_turn.L << -1.0, 0.0, 0.0, -2.0;  // distinct negative eigenvalues: G3
+  EXPECT_THROW(log(half_turn), NoRealLogarithm);
+}
+
 }  // namespace
 }  // namespace pita

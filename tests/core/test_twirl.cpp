@@ -124,5 +124,30 @@ TEST(Twirl, FullTurnWithoutFixedPointSpinsAboutTheMovingOrigin) {
   EXPECT_TRUE(arrows_near(apply_power(T, 1.0, A), B, 1e-12, 4.0, false));
 }
 
+TEST(Twirl, ExpOfLogIsTheTwirlAndExpOfTLogIsItsPower) {
+  const Arrow A{{1.0, 2.0}, 0.8, 0.3}, B{{-2.0, 0.5}, 1.9, 2.6};
+  const Twirl T = twirl_between(A, B);
+  const TwirlLog G = log(T);
+  for (const Point x : {Point{0.0, 0.0}, Point{3.0, -1.0}, A.p}) {
+    EXPECT_NEAR(std::abs(pita::apply(exp(G), x) - pita::apply(T, x)), 0.0, 1e-13) << x;
+    for (const double t : {-0.7, 0.25, 0.5, 1.8}) {
+      EXPECT_NEAR(std::abs(pita::apply(exp(TwirlLog{t * G.L, t * G.v}), x) - apply_power(T, t, x)), 0.0, 1e-12)
+          << "t = " << t << ", x = " << x;
+    }
+  }
+  // The generator's velocity field vanishes at the fixed point (Eq. 19).
+  const Point f = *fixed_point(T);
+  EXPECT_NEAR(std::abs(G.L * f + G.v), 0.0, 1e-13);
+}
+
+TEST(Twirl, LogOfATranslationIsItsDisplacement) {
+  const Twirl T = translation(Vector{3.0, -4.0});
+  const TwirlLog G = log(T);
+  EXPECT_EQ(G.L, Complex{});
+  EXPECT_NEAR(std::abs(G.v - Vector{3.0, -4.0}), 0.0, 1e-15);
+  EXPECT_NEAR(std::abs(pita::apply(exp(G), Point{1.0, 1.0}) - Point{4.0, -3.0}), 0.0, 1e-15);
+  EXPECT_EQ(pita::apply(inverse(T), pita::apply(T, Point{2.0, 5.0})), Point(2.0, 5.0));
+}
+
 }  // namespace
 }  // namespace pita::test
