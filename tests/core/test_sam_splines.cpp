@@ -9,27 +9,20 @@
 
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
+#include "pose_test_support.hpp"
 
 namespace pita {
 namespace {
 
+using test::distance;
+using test::pose;
+
 using Eigen::Matrix2d;
 using Eigen::Vector2d;
 
-Affine2 pose(double a, double b, double c, double d, double x, double y) {
-  Affine2 A;
-  A.L << a, b, c, d;
-  A.b << x, y;
-  return A;
-}
-
-double distance(const Affine2& X, const Affine2& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); }
-
-// Fig. 7's situation: no SAM from A to C (C o A^-1 has two negative
-// eigenvalues), but SAMs A-B and B-C exist.
-const Affine2 kA = pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0);
-const Affine2 kB = pose(0.0, -1.6, 0.6, 0.0, 3.0, 3.0);
-const Affine2 kC = pose(-1.8, 0.0, 0.0, -0.55, 6.0, 0.0);
+const Affine2& kA = test::kFig7A;
+const Affine2& kB = test::kFig7B;
+const Affine2& kC = test::kFig7C;
 
 TEST(SamSplines, TheFigureSevenPairHasNoSam) {
   EXPECT_THROW(SteadyAffineMorph(kA, kC), NoRealLogarithm);

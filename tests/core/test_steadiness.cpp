@@ -5,16 +5,13 @@
 #include <vector>
 
 #include "core/steadiness.hpp"
+#include "pose_test_support.hpp"
 
 namespace pita {
 namespace {
 
-Affine2 pose(double a, double b, double c, double d, double x, double y) {
-  Affine2 A;
-  A.L << a, b, c, d;
-  A.b << x, y;
-  return A;
-}
+using test::distance;
+using test::pose;
 
 // The poses of scenes/sam-fig02-linear-and-sam.json (triangles mapped from
 // the unit triangle) and a middle pose for the three-pose motions.

@@ -54,6 +54,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import pita_oracle as O  # noqa: E402
 import timing_oracle as T  # noqa: E402
+from compare_with_cli import encode  # noqa: E402  (keyframes in the three JSON forms)
 
 TOL = 1e-8
 ARC_REL = 1e-11
@@ -164,25 +165,6 @@ def gen_times(rng, knots, n_in=14, n_out=3):
     return ts
 
 
-def encode(rng, knots, arrows):
-    """Keyframe JSON (m/w, m/w + turns, or q) and the arrows as the CLI reads them."""
-    kfs, out = [], []
-    for t, (p, m, w) in zip(knots, arrows):
-        r = rng.random()
-        if r < 0.15:
-            q = p + m * cmath.exp(1j * w)
-            kfs.append({"t": t, "p": [p.real, p.imag], "q": [q.real, q.imag]})
-            v = q - p
-            out.append((p, abs(v), cmath.phase(v)))
-        elif r < 0.3:
-            k = rng.randint(-2, 2)
-            w0 = w - 2 * math.pi * k
-            kfs.append({"t": t, "p": [p.real, p.imag], "m": m, "w": w0, "turns": k})
-            out.append((p, m, w0 + 2 * math.pi * k))
-        else:
-            kfs.append({"t": t, "p": [p.real, p.imag], "m": m, "w": w})
-            out.append((p, m, w))
-    return kfs, out
 
 
 # --------------------------------------------------------------------------- crafted cases

@@ -7,6 +7,19 @@
 
 namespace pita::scene::test {
 
+// A P6 scene whose middle keyframe is `middle` (JSON text).
+inline std::string p6_with_middle(const std::string& middle) {
+  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
+         R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})";
+}
+
+// A valid P6 scene with `extra` members added at the top level (",\"samples\": 3").
+inline std::string p6_with(const std::string& extra) {
+  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
+         extra + "}";
+}
+
 // The message of the SceneError that parsing `text` (as "s.json") throws, or "(no error)".
 inline std::string error_of(const std::string& text) {
   try {

@@ -6,22 +6,13 @@
 #include <string>
 
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-// A P6 scene whose middle keyframe is `middle` (JSON text).
-std::string p6_with_middle(const std::string& middle) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
-         R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})";
-}
-
-// A valid P6 scene with `extra` members added at the top level (",\"samples\": 3").
-std::string p6_with(const std::string& extra) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
-         extra + "}";
-}
+using test::p6_with;
+using test::p6_with_middle;
 
 TEST(Scene, ReadsMagnitudeWindingForm) {
   const Scene scene = parse_scene(R"({

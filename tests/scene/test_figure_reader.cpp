@@ -10,16 +10,13 @@
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-// A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
-std::string p6_with(const std::string& extra) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
-         extra + "}";
-}
+using test::p6_with;
+using test::p6_with_middle;
 
 Scene p6(const std::string& extra) { return parse_scene(p6_with(extra), "s.json"); }
 

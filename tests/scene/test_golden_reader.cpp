@@ -4,14 +4,13 @@
 #include <string>
 
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-std::string p6_with(const std::string& extra) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" + extra + "}";
-}
+using test::p6_with;
+using test::p6_with_middle;
 
 TEST(GoldenReader, EveryToleranceIsReadAndTheRestStayUnset) {
   const Scene all = parse_scene(p6_with(R"(, "golden": {"number_tolerance": 1e-6, "svg_tolerance": 0.5,

@@ -19,6 +19,9 @@
 namespace pita::scene {
 namespace {
 
+using test::p6_with;
+using test::p6_with_middle;
+
 using detail::Interval;
 using detail::Json;
 using detail::JsonReader;
@@ -26,12 +29,6 @@ using test::error_of;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// A P6 scene whose middle keyframe is `middle` (JSON text).
-std::string p6_with_middle(const std::string& middle) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
-         R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})";
-}
 
 // "pointer: reason" of the SceneError that `read` throws, or "(no error)".
 template <typename Read>

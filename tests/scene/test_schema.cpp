@@ -26,9 +26,13 @@
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
+
+using test::p6_with;
+using test::p6_with_middle;
 
 const std::filesystem::path kSourceDir = PITA_SOURCE_DIR;
 
@@ -107,13 +111,6 @@ std::string error_message(const std::string& text) {
     return error.what();
   }
   return "(no error)";
-}
-
-// A valid P6 scene with `extra` top-level members (", \"title\": \"x\"").
-std::string p6_with(const std::string& extra) {
-  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
-         extra + "}";
 }
 
 // A P6 scene whose only layer is `layer` (JSON text).
