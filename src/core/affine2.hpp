@@ -24,6 +24,13 @@ struct Affine2 {
 // The image of point x: L x + b.
 inline Eigen::Vector2d apply(const Affine2& A, const Eigen::Vector2d& x) { return A.L * x + A.b; }
 
+// The image of a point of the plane (a complex number), as the drawing layers
+// and the motion stage need it.
+inline Point apply(const Affine2& A, Point p) {
+  const Eigen::Vector2d x = apply(A, Eigen::Vector2d(p.real(), p.imag()));
+  return {x.x(), x.y()};
+}
+
 // A o B: first B, then A (x -> A(B(x))), the order of homogeneous matrices.
 inline Affine2 compose(const Affine2& A, const Affine2& B) { return {A.L * B.L, A.L * B.b + A.b}; }
 

@@ -144,13 +144,18 @@ std::string unknown_method_reason(std::string_view name, std::optional<MotionKin
     }
     return reason + "?";
   }
-  std::string known;
-  for (const MethodEntry& entry : registry()) {
-    if (!of_kind(entry, kind)) continue;
-    if (!known.empty()) known += ", ";
-    known += entry.id;
-  }
+  const std::string known = kind ? method_ids(*kind) : method_ids(MotionKind::arrows) + ", " + method_ids(MotionKind::poses);
   return reason + "; known methods: " + known;
+}
+
+std::string method_ids(MotionKind kind) {
+  std::string ids;
+  for (const MethodEntry& entry : registry()) {
+    if (entry.kind != kind) continue;
+    if (!ids.empty()) ids += ", ";
+    ids += entry.id;
+  }
+  return ids;
 }
 
 }  // namespace pita

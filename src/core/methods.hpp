@@ -49,6 +49,10 @@ const MethodEntry& entry_of(PoseMethod method);
 std::vector<std::string> suggest_methods(std::string_view name, std::optional<MotionKind> kind = std::nullopt,
                                          std::size_t most = 3);
 
+// "SAM, polySAM, bezier-SAM, ...": the ids of every method of `kind`, in
+// registry order (for messages).
+std::string method_ids(MotionKind kind);
+
 // The one wording of an unknown method:
 //   unknown method "P66"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?
 //   unknown method "zz"; known methods: P1, P2, ...

@@ -12,11 +12,6 @@ namespace pita::motion {
 
 namespace {
 
-Point apply_to(const Affine2& A, Point p) {
-  const Eigen::Vector2d x = apply(A, Eigen::Vector2d(p.real(), p.imag()));
-  return {x.x(), x.y()};
-}
-
 const char* point_name(scene::TrackedPoint point) {
   switch (point) {
     case scene::TrackedPoint::start: return "p";
@@ -103,7 +98,7 @@ std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) 
     const Point origin = point == scene::TrackedPoint::start ? reference_[0]
                          : point == scene::TrackedPoint::end ? reference_[1]
                                                              : 0.5 * (reference_[0] + reference_[1]);
-    return [pose_motion = poses_, origin](double tau) { return apply_to(pose_motion->at(tau), origin); };
+    return [pose_motion = poses_, origin](double tau) { return pita::apply(pose_motion->at(tau), origin); };
   }
   return [arrow_motion = arrows_, point](double tau) { return tracked(arrow_motion->at(tau), point); };
 }

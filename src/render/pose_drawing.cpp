@@ -20,11 +20,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Point apply_to(const Affine2& A, Point p) {
-  const Eigen::Vector2d x = apply(A, Eigen::Vector2d(p.real(), p.imag()));
-  return {x.x(), x.y()};
-}
-
 class PoseBuilder {
  public:
   PoseBuilder(const scene::Scene& scene, const scene::Panel& panel) : scene_(scene), panel_(panel) {}
@@ -80,7 +75,7 @@ class PoseBuilder {
   std::vector<Point> mapped(const Affine2& pose, const scene::ShapeOutline& shape) const {
     std::vector<Point> points;
     points.reserve(shape.points.size());
-    for (const Point p : shape.points) points.push_back(apply_to(pose, p));
+    for (const Point p : shape.points) points.push_back(pita::apply(pose, p));
     return points;
   }
 
@@ -138,8 +133,8 @@ class PoseBuilder {
       const Affine2 velocity = velocity_at(ts[i]);
       for (const scene::ShapeOutline& shape : panel_.shapes) {
         for (const Point p : shape.points) {
-          const Point from = apply_to(pose, p);
-          const Point rate = apply_to(velocity, p);  // (dL/du) p + db/du
+          const Point from = pita::apply(pose, p);
+          const Point rate = pita::apply(velocity, p);  // (dL/du) p + db/du
           push(static_cast<int>(i), ArrowShape{from, from + layer.scale * rate, layer.line});
         }
       }
@@ -155,7 +150,7 @@ class PoseBuilder {
       for (const Point p : shape.points) {
         std::vector<Point> path;
         path.reserve(poses.size());
-        for (const Affine2& pose : poses) path.push_back(apply_to(pose, p));
+        for (const Affine2& pose : poses) path.push_back(pita::apply(pose, p));
         push(-1, Polyline{std::move(path), false, layer.line});
       }
     }

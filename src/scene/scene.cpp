@@ -100,14 +100,9 @@ Method resolve_method(std::string_view name) {
 
 Scene with_method(Scene scene, Method method) {
   if (scene.kind == SceneKind::poses) {
-    std::string pose_methods;
-    for (const MethodEntry& entry : every_method()) {
-      if (entry.kind != MotionKind::poses) continue;
-      pose_methods += (pose_methods.empty() ? "" : ", ") + std::string(entry.id);
-    }
     throw SceneError(scene.path, "/method",
                      fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})",
-                                 info(method).id, pose_methods));
+                                 info(method).id, method_ids(MotionKind::poses)));
   }
   const MethodInfo& about = info(method);
   if (scene.keyframes.size() != static_cast<std::size_t>(about.keyframe_count)) {
