@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/failure.hpp"
 #include "core/ease.hpp"
 #include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
@@ -184,8 +185,9 @@ Examples:
   pita eval scenes/sam-fig01-regular-patterns.json --method linear --format csv
 
 Exit codes: 0 success, 2 bad input or usage (the message on stderr names the file,
-the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout),
-3 the frames could not be written to standard output.
+the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout;
+also out of memory), 3 the frames could not be written to standard output (a closed
+pipe included), 4 an internal error (a bug in pita).
 )";
 }
 
@@ -272,12 +274,10 @@ ExitCode run_eval(const EvalOptions& options) {
   } catch (const InputError& error) {
     std::cerr << "pita: " << error.what() << '\n';
     return ExitCode::bad_input;
-  } catch (const scene::SceneError& error) {
-    std::cerr << "pita: " << error.what() << '\n';
-    return ExitCode::bad_input;
-  } catch (const motion::NoMotion& error) {
-    std::cerr << "pita: " << error.what() << '\n';
-    return ExitCode::bad_input;
+  } catch (...) {
+    const Failure failure = current_failure(options.scene_path);
+    std::cerr << "pita: " << failure.message << '\n';
+    return failure.code;
   }
 }
 

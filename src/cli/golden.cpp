@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/failure.hpp"
 #include "golden/check.hpp"
 #include "golden/report.hpp"
 #include "render/output_file.hpp"
@@ -117,7 +118,7 @@ ExitCode run_check(const GoldenOptions& options) {
     std::cerr << "pita: check: no scenes given and no scenes/*.json here\n";
     return ExitCode::bad_input;
   }
-  bool bad_input = false, differs = false;
+  ExitCode result = ExitCode::success;
   std::vector<golden::ReportEntry> report;
   for (const fs::path& scene : scenes) {
     golden::ReportEntry entry;
@@ -125,20 +126,17 @@ ExitCode run_check(const GoldenOptions& options) {
     entry.check.name = golden::scene_name(scene);
     try {
       entry.check = golden::check_scene(scene, options.golden_dir, tolerances_of(options, scene));
-    } catch (const scene::SceneError& e) {
-      entry.error = e.what();
-    } catch (const render::RenderError& e) {
-      entry.error = e.what();
-    } catch (const golden::GoldenError& e) {
-      entry.error = e.what();
+    } catch (...) {
+      const Failure failure = current_failure(scene.string());
+      entry.error = failure.message;
+      result = worse(result, failure.code);
     }
     if (!entry.error.empty()) {
-      bad_input = true;
       std::cerr << "pita: " << entry.error << '\n';
     } else if (entry.check.matches()) {
       std::cout << "ok    " << scene.string() << '\n';
     } else {
-      differs = true;
+      result = worse(result, ExitCode::golden_mismatch);
       std::cerr << "FAIL  " << scene.string() << '\n';
       for (const golden::FileCheck& f : entry.check.files) {
         if (f.verdict == golden::Verdict::match) continue;
@@ -151,13 +149,13 @@ ExitCode run_check(const GoldenOptions& options) {
     try {
       golden::write_report(*options.report_dir, report);
       std::cerr << "report: " << (fs::path(*options.report_dir) / "index.html").string() << '\n';
-    } catch (const std::exception& e) {
-      std::cerr << "pita: --report " << *options.report_dir << ": " << e.what() << '\n';
-      return ExitCode::failure;
+    } catch (...) {
+      const Failure failure = current_failure("--report " + *options.report_dir);
+      std::cerr << "pita: --report " << *options.report_dir << ": " << failure.message << '\n';
+      return worse(result, failure.code);
     }
   }
-  if (bad_input) return ExitCode::bad_input;
-  return differs ? ExitCode::golden_mismatch : ExitCode::success;
+  return result;
 }
 
 ExitCode run_update_goldens(const GoldenOptions& options) {
@@ -200,15 +198,10 @@ ExitCode run_update_goldens(const GoldenOptions& options) {
         }
         std::cout << path.string() << ": " << status << '\n';
       }
-    } catch (const scene::SceneError& e) {
-      std::cerr << "pita: " << e.what() << '\n';
-      result = ExitCode::bad_input;
-    } catch (const render::RenderError& e) {
-      std::cerr << "pita: " << e.what() << '\n';
-      result = ExitCode::bad_input;
-    } catch (const std::runtime_error& e) {
-      std::cerr << "pita: " << e.what() << '\n';
-      if (result == ExitCode::success) result = ExitCode::failure;
+    } catch (...) {
+      const Failure failure = current_failure(scene.string());
+      std::cerr << "pita: " << failure.message << '\n';
+      result = worse(result, failure.code);
     }
   }
   return result;

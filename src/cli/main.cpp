@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/eval.hpp"
+#include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
 #include "cli/render.hpp"
@@ -42,7 +43,8 @@ int main(int argc, char** argv) {
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
       "Exit codes: 0 success, 1 a figure differs from its golden (check), 2 bad input or\n"
-      "usage, 3 an output could not be written.");
+      "usage (also work beyond the budget, or out of memory), 3 an output could not be\n"
+      "written, 4 an internal error (a bug: please report it), 128+N killed by signal N.");
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);
@@ -83,9 +85,12 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }
-  } catch (const std::exception& error) {
-    std::cerr << "pita: internal error: " << error.what() << '\n';
-    return to_int(ExitCode::failure);
+  } catch (...) {  // each subcommand names its input; this is the last resort
+    const pita::cli::Failure failure = pita::cli::current_failure(app.get_subcommands().empty()
+                                                                      ? std::string("pita")
+                                                                      : app.get_subcommands().front()->get_name());
+    std::cerr << "pita: " << failure.message << '\n';
+    return to_int(failure.code);
   }
   std::cerr << "pita: missing subcommand, for example: pita eval scenes/fig01-eight-pitas.json\n"
                "Run 'pita --help' for usage.\n";

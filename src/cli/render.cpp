@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/failure.hpp"
+#include "render/budget.hpp"
 #include "render/figure.hpp"
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
@@ -72,6 +74,10 @@ Each file is written to a temporary file and renamed into place: a failed
 scene leaves no file behind, and the other scenes are still rendered.
 Output is deterministic: the same scene gives the same bytes.
 
+A figure's work is estimated before anything is drawn (panels x layers x
+frames, trajectory and banner points, existence cells, PNG pixels) and refused
+above a budget, naming the field that dominates; --budget F allows F times it.
+
 Scene fields for figures (see README "Figures" and schema/scene.schema.json):
   title, canvas {width, height, background, view, margin, y_axis, columns, font},
   layers [{"type": "pattern" | "keyframes" | "trajectory" | "stroke" | "banner" |
@@ -89,7 +95,9 @@ Examples:
   pita render scenes/fig25-strokes.json -o out --format pdf
   pita render scenes/sam-fig07-no-sam-biarc.json -o fig7.png
 
-Exit codes: 0 success, 2 bad input or usage, 3 an output could not be written.
+Exit codes: 0 success, 2 bad input or usage (also beyond the budget, out of memory),
+3 an output could not be written, 4 an internal error (a bug), 128+N interrupted by
+signal N (unfinished temporary files removed).
 )";
 }
 
@@ -118,6 +126,14 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
                                "PNG resolution: scale = DPI / 96")
                          ->type_name("DPI");
   scale->excludes(dpi);
+  render->add_option("--budget", options->budget,
+                     fmt::format("Allow F times the default work budget of a figure ({:.0f} million "
+                                 "drawn points, {:.0f} million PNG pixels; about 5 s and 400 MB "
+                                 "each); at most {:g}",
+                                 render::kDefaultBudgetUnits / 1e6,
+                                 render::kDefaultBudgetPixels / 1e6, render::kMaxBudgetFactor))
+      ->check(CLI::Range(1e-3, render::kMaxBudgetFactor))
+      ->type_name("F");
   return options;
 }
 
@@ -170,25 +186,20 @@ ExitCode run_render(const RenderOptions& options) {
   for (const std::string& path : options.scene_paths) {
     try {
       const scene::Scene scene = scene::load_scene(path);
-      const render::Figure figure = render::build_figure(scene);
+      const render::Figure figure = render::build_figure(scene, options.budget);
       // Every format is rendered before any is written: a bad scene writes nothing.
       std::vector<std::pair<fs::path, std::string>> files;
       for (const Target& target : targets_for(options, path, formats, single_file)) {
-        files.emplace_back(target.path, render::render_figure(scene, figure, target.format, scale));
+        files.emplace_back(target.path, render::render_figure(scene, figure, target.format, scale, options.budget));
       }
       for (const auto& [file, bytes] : files) {
         render::write_file_atomically(file, bytes);
         std::cout << "wrote " << file.string() << '\n';
       }
-    } catch (const scene::SceneError& error) {
-      std::cerr << "pita: " << error.what() << '\n';
-      result = ExitCode::bad_input;
-    } catch (const render::RenderError& error) {
-      std::cerr << "pita: " << error.what() << '\n';
-      result = ExitCode::bad_input;
-    } catch (const std::runtime_error& error) {  // writing failed
-      std::cerr << "pita: " << error.what() << '\n';
-      if (result == ExitCode::success) result = ExitCode::failure;
+    } catch (...) {
+      const Failure failure = current_failure(path);
+      std::cerr << "pita: " << failure.message << '\n';
+      result = worse(result, failure.code);
     }
   }
   return result;

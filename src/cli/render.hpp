@@ -24,6 +24,7 @@ struct RenderOptions {
   std::optional<std::string> formats;  // --format svg,png,pdf as typed
   std::optional<double> scale;         // --scale (PNG)
   std::optional<double> dpi;           // --dpi (PNG): scale = dpi / 96
+  double budget = 1.0;                 // --budget: times the default work budget
 };
 
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app);

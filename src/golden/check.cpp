@@ -1,12 +1,10 @@
 #include "golden/check.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include <fmt/format.h>
 
 #include "golden/figure_data.hpp"
 #include "render/figure.hpp"
+#include "scene/json_text.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::golden {
@@ -15,12 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Golden files are input like scenes: read with a size limit (SceneError).
 std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw GoldenError(path.string() + ": cannot read the golden file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return scene::read_input_file(path, kMaxGoldenFileBytes, "golden file");
 }
 
 const std::string& output(const Outputs& outputs, FileKind kind) {
@@ -33,12 +28,7 @@ const std::string& output(const Outputs& outputs, FileKind kind) {
 }
 
 Json parse_data(const std::string& text, const fs::path& path) {
-  try {
-    return Json::parse(text);
-  } catch (const Json::exception& error) {
-    throw GoldenError(fmt::format("{}: the golden data file is not valid JSON ({})", path.string(),
-                                  error.what()));
-  }
+  return read_figure_data(text, path.string());
 }
 
 }  // namespace
@@ -75,8 +65,10 @@ bool SceneCheck::matches() const {
   return true;
 }
 
-FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string& actual,
-                       const Tolerances& tolerances) {
+namespace {
+
+FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const std::string& actual,
+                                 const Tolerances& tolerances) {
   FileCheck check{kind, golden, Verdict::match, "", "", actual, ""};
   std::error_code error;
   if (!fs::exists(golden, error)) {
@@ -91,9 +83,9 @@ FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string&
   }
   switch (kind) {
     case FileKind::data: {
-      const NumberComparison c = compare_numbers(parse_data(check.expected, golden),
-                                                 parse_data(actual, "(fresh rendering)"),
-                                                 tolerances.numbers);
+      const Json expected = parse_data(check.expected, golden);  // the golden's errors first
+      const NumberComparison c =
+          compare_numbers(expected, parse_data(actual, "(fresh rendering)"), tolerances.numbers);
       check.verdict = c.matches ? Verdict::match : Verdict::differs;
       check.detail = c.matches ? fmt::format("within tolerance (worst {:.2g} of the extent)", c.relative)
                                : describe(c, tolerances.numbers);
@@ -128,6 +120,17 @@ FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string&
     }
   }
   return check;
+}
+
+}  // namespace
+
+FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string& actual,
+                       const Tolerances& tolerances) {
+  try {
+    return compare_file_unchecked(kind, golden, actual, tolerances);
+  } catch (const scene::SceneError& e) {  // the golden file's size, JSON text or nesting
+    throw GoldenError(e.what());
+  }
 }
 
 SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,

@@ -3,6 +3,7 @@
 // rendering, made in memory, with them.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@ namespace pita::golden {
 // antialiasing by a level or two); the numbers are what catch a moved frame.
 inline constexpr int kDefaultChannelTolerance = 16;     // of 255
 inline constexpr double kDefaultDifferingShare = 0.002;  // of the pixels
+
+// Golden files are read as hostile input: at most this many bytes each
+// (a figure within the render budget writes far less).
+inline constexpr std::size_t kMaxGoldenFileBytes = std::size_t{256} << 20;
 
 struct Tolerances {
   double numbers = kDefaultNumberTolerance;  // relative to the panel's extent
@@ -71,8 +76,8 @@ SceneCheck check_scene(const std::filesystem::path& scene_path,
                        const std::filesystem::path& golden_dir, const Tolerances& tolerances);
 
 // How a fresh output differs from its golden, in a line ("unchanged", "new",
-// "changed: 312 pixels (0.03%)", ...). Throws GoldenError for an unreadable
-// golden.
+// "changed: 312 pixels (0.03%)", ...). Throws GoldenError, naming the file,
+// for a golden that cannot be read, is too large, or has the wrong shape.
 FileCheck compare_file(FileKind kind, const std::filesystem::path& golden, const std::string& actual,
                        const Tolerances& tolerances);
 

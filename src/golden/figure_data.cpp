@@ -2,6 +2,11 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "golden/image_compare.hpp"
+#include "scene/json_text.hpp"
+
 namespace pita::golden {
 
 namespace {
@@ -33,7 +38,61 @@ struct ItemData {
   }
 };
 
+// What read_figure_data requires, with the pointer of the first thing wrong.
+class DataShape {
+ public:
+  explicit DataShape(const std::string& file) : file_(file) {}
+
+  void document(const Json& data) const {
+    if (!data.is_object()) fail("", "the golden data must be a JSON object");
+    const Json& panels = member(data, "", "panels");
+    if (!panels.is_array()) fail("/panels", "must be an array of panels");
+    for (std::size_t i = 0; i < panels.size(); ++i) panel(panels[i], "/panels/" + std::to_string(i));
+  }
+
+ private:
+  void panel(const Json& p, const std::string& at) const {
+    if (!p.is_object()) fail(at, "a panel must be an object");
+    if (!member(p, at, "pointer").is_string()) fail(at + "/pointer", "must be a string");
+    const Json& extent = member(p, at, "extent");
+    if (!extent.is_number() || !(extent.get<double>() >= 0.0) || !std::isfinite(extent.get<double>())) {
+      fail(at + "/extent", "must be a finite number >= 0");
+    }
+    const Json& items = member(p, at, "items");
+    if (!items.is_array()) fail(at + "/items", "must be an array of drawn shapes");
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      const std::string item_at = at + "/items/" + std::to_string(k);
+      const Json& item = items[k];
+      if (!item.is_object()) fail(item_at, "a drawn shape must be an object");
+      if (const auto layer = item.find("layer"); layer != item.end() && !layer->is_string()) {
+        fail(item_at + "/layer", "must be a string");
+      }
+      if (const auto index = item.find("index"); index != item.end() && !index->is_number_integer()) {
+        fail(item_at + "/index", "must be an integer");
+      }
+    }
+  }
+
+  const Json& member(const Json& object, const std::string& at, const char* key) const {
+    const auto found = object.find(key);
+    if (found == object.end()) fail(at, fmt::format("missing field \"{}\"", key));
+    return *found;
+  }
+
+  [[noreturn]] void fail(const std::string& pointer, const std::string& reason) const {
+    throw GoldenError(scene::located(file_, pointer, reason));
+  }
+
+  const std::string& file_;
+};
+
 }  // namespace
+
+Json read_figure_data(std::string_view text, const std::string& file) {
+  Json data = scene::parse_json(text, file);
+  DataShape(file).document(data);
+  return data;
+}
 
 Json figure_data(const std::string& scene_name, const scene::Scene& scene,
                  const render::Figure& figure) {

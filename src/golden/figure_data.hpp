@@ -15,6 +15,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -31,5 +32,13 @@ Json figure_data(const std::string& scene_name, const scene::Scene& scene,
 // The data as text: one item per line, numbers in the shortest form that
 // reads back exactly, ending with a newline.
 std::string figure_data_text(const Json& data);
+
+// A golden data file's text read back, as hostile input: the scene reader's
+// JSON checks (nesting depth, NUL bytes, members given twice; SceneError at a
+// line and column), then the shape above: "panels" an array of objects with a
+// string "pointer", a finite "extent" >= 0 and an array of "items", each an
+// object whose "layer" (if any) is a string and "index" (if any) an integer.
+// A wrong shape throws GoldenError "FILE: POINTER: what is wrong".
+Json read_figure_data(std::string_view text, const std::string& file);
 
 }  // namespace pita::golden

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <memory>
 
+#include <fmt/format.h>
+
 namespace pita::golden {
 
 namespace {
@@ -34,11 +36,37 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
   return CAIRO_STATUS_SUCCESS;
 }
 
-// Decodes a PNG into an ARGB32 image surface.
-Surface decode(std::string_view png, const char* which) {
-  if (png.size() < 8 || std::memcmp(png.data(), "\x89PNG\r\n\x1a\n", 8) != 0) {
+std::uint32_t big_endian(std::string_view bytes, std::size_t at) {
+  std::uint32_t v = 0;
+  for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
+  return v;
+}
+
+struct PngSize {
+  std::uint32_t width = 0, height = 0;
+};
+
+// The size a PNG declares in its IHDR chunk (PNG spec 11.2.2: the signature,
+// then the first chunk's length, "IHDR", width and height, big-endian), read
+// before anything is decoded: a few bytes can declare billions of pixels.
+PngSize declared_size(std::string_view png, const char* which) {
+  if (png.size() < 24 || std::memcmp(png.data(), "\x89PNG\r\n\x1a\n", 8) != 0 ||
+      std::memcmp(png.data() + 12, "IHDR", 4) != 0) {
     throw GoldenError(std::string("the ") + which + " image is not a PNG file");
   }
+  const PngSize size{big_endian(png, 16), big_endian(png, 20)};
+  if (size.width == 0 || size.height == 0 || size.width > kMaxImageSide ||
+      size.height > kMaxImageSide) {
+    throw GoldenError(fmt::format("the {} PNG declares {}x{} pixels; images are compared up to "
+                                  "{}x{} (not decoded)",
+                                  which, size.width, size.height, kMaxImageSide, kMaxImageSide));
+  }
+  return size;
+}
+
+// Decodes a PNG into an ARGB32 image surface.
+Surface decode(std::string_view png, const char* which) {
+  declared_size(png, which);
   Reader reader{png};
   Surface decoded(cairo_image_surface_create_from_png_stream(read_chunk, &reader));
   if (cairo_surface_status(decoded.get()) != CAIRO_STATUS_SUCCESS) {
@@ -103,11 +131,13 @@ constexpr std::uint32_t kRed = 0xFFFF0000u;
 
 ImageComparison compare_png(std::string_view expected_png, std::string_view actual_png,
                             const ImageTolerance& tolerance) {
-  const Surface expected = decode(expected_png, "expected");
+  // Sizes first, from the headers: the expected image is decoded only when
+  // it has the actual image's size.
+  const PngSize declared = declared_size(expected_png, "expected");
   const Surface actual = decode(actual_png, "actual");
   ImageComparison c;
-  c.expected_width = cairo_image_surface_get_width(expected.get());
-  c.expected_height = cairo_image_surface_get_height(expected.get());
+  c.expected_width = static_cast<int>(declared.width);
+  c.expected_height = static_cast<int>(declared.height);
   c.actual_width = cairo_image_surface_get_width(actual.get());
   c.actual_height = cairo_image_surface_get_height(actual.get());
   c.same_size = c.expected_width == c.actual_width && c.expected_height == c.actual_height;
@@ -130,6 +160,11 @@ ImageComparison compare_png(std::string_view expected_png, std::string_view actu
     return c;
   }
 
+  const Surface expected = decode(expected_png, "expected");
+  if (cairo_image_surface_get_width(expected.get()) != c.expected_width ||
+      cairo_image_surface_get_height(expected.get()) != c.expected_height) {
+    throw GoldenError("the expected PNG decodes to another size than its header declares");
+  }
   const int w = c.expected_width, h = c.expected_height;
   Surface diff(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
   cairo_surface_flush(diff.get());

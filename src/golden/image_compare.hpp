@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -25,6 +26,10 @@ struct ImageComparison {
   // saturated red (sizes differ: the actual image inside a red border).
   std::string diff_png;
 };
+
+// Larger images are refused from their header, before decoding (a 16384^2
+// ARGB image is 1 GiB).
+inline constexpr std::uint32_t kMaxImageSide = 16384;
 
 // A golden (or fresh) file that cannot be read or decoded.
 class GoldenError : public std::runtime_error {

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "render/budget.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
 #include "render/panel_drawing.hpp"
@@ -116,9 +117,10 @@ std::string_view extension(Format format) {
   return "";
 }
 
-Figure build_figure(const scene::Scene& scene) {
+Figure build_figure(const scene::Scene& scene, double budget) {
   Figure figure;
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
+  check_budget(scene, estimate_cost(scene), budget);
   for (const scene::Panel& panel : scene.panels) {
     Drawing drawing = scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel)
                                                             : panel_drawing(scene, panel);
@@ -139,7 +141,7 @@ Figure build_figure(const scene::Scene& scene) {
 }
 
 std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
-                          double scale) {
+                          double scale, double budget) {
   const double width = scene.canvas.width, height = scene.canvas.height;
   std::string bytes;
   SurfacePtr surface;
@@ -166,6 +168,8 @@ std::string render_figure(const scene::Scene& scene, const Figure& figure, Forma
                                       "pixels per side",
                                       width, height, scale, kMaxPngSide));
       }
+      check_pixel_budget(scene, scale, budget);
+      check_ink_budget(scene, figure, scale, budget);
       surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(w),
                                                static_cast<int>(h)));
       break;

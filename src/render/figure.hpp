@@ -29,13 +29,16 @@ struct Figure {
   std::vector<Drawing> drawings;
   std::vector<PanelPlacement> placements;
 };
-// Throws RenderError (render/panel_drawing.hpp).
-Figure build_figure(const scene::Scene& scene);
+// Throws RenderError (render/panel_drawing.hpp), also, before drawing
+// anything, when the figure's estimated work exceeds `budget` times the
+// default budget (render/budget.hpp).
+Figure build_figure(const scene::Scene& scene, double budget = 1.0);
 
 // The file's bytes. `scale` multiplies the PNG's pixel size (SVG and PDF are
 // vector: 1 canvas pixel = 1 unit). The same scene gives the same bytes.
-// Throws RenderError.
+// Throws RenderError, also when a PNG has more pixels than `budget` times the
+// default pixel budget.
 std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
-                          double scale = 1.0);
+                          double scale = 1.0, double budget = 1.0);
 
 }  // namespace pita::render

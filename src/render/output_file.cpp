@@ -20,14 +20,14 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   std::string temp = (dir / name).string();
   const int fd = mkstemp(temp.data());
   if (fd < 0) {
-    throw std::runtime_error(path.string() + ": cannot create a temporary file in " + dir.string() +
+    throw OutputError(path.string() + ": cannot create a temporary file in " + dir.string() +
                              " (" + std::strerror(errno) + ")");
   }
   const auto fail = [&](const char* what) {
     const int saved = errno;
     close(fd);
     std::remove(temp.c_str());
-    throw std::runtime_error(path.string() + ": " + what + " (" + std::strerror(saved) + ")");
+    throw OutputError(path.string() + ": " + what + " (" + std::strerror(saved) + ")");
   };
   std::size_t written = 0;
   while (written < bytes.size()) {
@@ -44,12 +44,12 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
   fchmod(fd, 0666 & ~mask);
   if (close(fd) != 0) {
     std::remove(temp.c_str());
-    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+    throw OutputError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
   }
   if (std::rename(temp.c_str(), path.c_str()) != 0) {
     const int saved = errno;
     std::remove(temp.c_str());
-    throw std::runtime_error(path.string() + ": cannot rename the finished file into place (" +
+    throw OutputError(path.string() + ": cannot rename the finished file into place (" +
                              std::strerror(saved) + ")");
   }
 }

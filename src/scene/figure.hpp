@@ -229,6 +229,9 @@ struct Panel {
   MethodOptions options;
   std::vector<Keyframe> keyframes;
   int samples = 9;
+  // Where `samples` came from: "/panels/2/samples", the scene's "/samples",
+  // or "" for the default (what the render budget's messages name).
+  std::string samples_pointer;
   std::string pointer;                 // JSON Pointer of the panel ("" = the scene itself)
   // JSON Pointer that errors of the panel's motion name: its own keyframes or
   // poses, else the panel (its method with the scene's keyframes), else the

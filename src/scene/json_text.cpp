@@ -1,8 +1,12 @@
-// The JSON text of a scene: parsed with nlohmann, with the checks the DOM
-// cannot make afterwards (a NUL byte, a member given twice, numbers beyond a
-// double, positions of syntax errors as line and column).
+// The JSON text of a scene: read with a size limit, scanned for its nesting
+// depth, parsed with nlohmann, with the checks the DOM cannot make afterwards
+// (a NUL byte, a member given twice, numbers beyond a double, positions of
+// syntax errors as line and column).
 #include "scene/json_text.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <set>
 #include <string>
 #include <string_view>
@@ -10,9 +14,12 @@
 
 #include <fmt/format.h>
 
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
-namespace pita::scene::detail {
+namespace pita::scene {
+
+using Json = nlohmann::ordered_json;
 
 namespace {
 
@@ -127,7 +134,70 @@ class DuplicateKeyFinder {
   std::vector<Frame> stack_;
 };
 
+// The first place where arrays and objects nest deeper than kMaxJsonDepth, as
+// a byte index, or npos. A linear scan that knows strings and escapes and
+// nothing else: it runs before the parser, whose DOM building (and nlohmann's
+// ordered_map copies) recurse once per level and overflow the stack on deep
+// enough input (issue 11: 85 000 levels). Syntax errors are left to the parser.
+std::size_t too_deep_at(std::string_view text) {
+  std::size_t depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') {
+        ++i;
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    switch (c) {
+      case '"': in_string = true; break;
+      case '[':
+      case '{':
+        if (++depth > kMaxJsonDepth) return i;
+        break;
+      case ']':
+      case '}':
+        if (depth > 0) --depth;
+        break;
+      default: break;
+    }
+  }
+  return std::string_view::npos;
+}
+
 }  // namespace
+
+std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes,
+                            std::string_view what) {
+  const std::string name = path.string();
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored)) {
+    throw SceneError(name, "", fmt::format("cannot read the {}: it is a directory", what));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw SceneError(name, "", fmt::format("cannot open the {} ({})", what, std::strerror(errno)));
+  }
+  // Read in chunks up to one byte past the limit: an endless stream (a
+  // device, a pipe) is refused as soon as it is too long.
+  std::string text;
+  char chunk[1 << 16];
+  while (in && text.size() <= max_bytes) {
+    in.read(chunk, static_cast<std::streamsize>(
+                       std::min<std::size_t>(sizeof chunk, max_bytes + 1 - text.size())));
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) throw SceneError(name, "", fmt::format("cannot read the {}", what));
+  if (text.size() > max_bytes) {
+    throw SceneError(name, "",
+                     fmt::format("the {} is larger than the limit of {} MiB", what,
+                                 max_bytes / (1024 * 1024)));
+  }
+  return text;
+}
 
 Json parse_json(std::string_view text, const std::string& file) {
   // nlohmann stops at a NUL byte as if the text ended there.
@@ -136,6 +206,13 @@ Json parse_json(std::string_view text, const std::string& file) {
     throw SceneError(file, line, column,
                      "the file contains a NUL byte: a scene is UTF-8 text (is this file UTF-16 "
                      "or binary?)");
+  }
+  if (const std::size_t deep = too_deep_at(text); deep != std::string_view::npos) {
+    const auto [line, column] = line_and_column(text, deep);
+    throw SceneError(file, line, column,
+                     fmt::format("arrays and objects nest deeper than {} levels (no scene "
+                                 "needs more than about 8)",
+                                 kMaxJsonDepth));
   }
   try {
     return Json::parse(text, DuplicateKeyFinder());
@@ -158,6 +235,4 @@ Json parse_json(std::string_view text, const std::string& file) {
   }
 }
 
-// ----------------------------------------------------------- scene reading
-
-}  // namespace pita::scene::detail
+}  // namespace pita::scene

@@ -9,6 +9,15 @@
 
 namespace pita::scene {
 
+// ---------------------------------------------------------------- files
+
+// A scene file's size: the largest legitimate scene (64 shapes of 10 000
+// points) is about 25 MB of JSON.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{32} << 20;
+// Arrays and objects inside one another: scenes need about 8 levels. Checked
+// before the document is built (json_text.cpp), also for golden data files.
+inline constexpr std::size_t kMaxJsonDepth = 256;
+
 // ---------------------------------------------------------------- evaluation
 
 // Uniformly spaced samples ("samples" in a scene, --samples on the command

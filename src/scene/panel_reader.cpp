@@ -89,6 +89,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
   if (const Json* samples = JsonReader::member(value, "samples")) {
     panel.samples = reader.integer(*samples, pointer + "/samples", kMinSamples,
                                     kMaxFigureSamples);
+    panel.samples_pointer = pointer + "/samples";
   }
   if (const Json* layers = JsonReader::member(value, "layers")) {
     panel.layers = detail::read_layers(reader, *layers, pointer + "/layers");
@@ -147,6 +148,7 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
       }
       if (const Json* samples = JsonReader::member(item, "samples")) {
         panel.samples = reader.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
+        panel.samples_pointer = at + "/samples";
       }
       if (const Json* subdivisions = JsonReader::member(item, "subdivisions")) {
         panel.subdivisions =

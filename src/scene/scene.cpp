@@ -2,11 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -16,6 +12,7 @@
 
 #include "scene/json_reader.hpp"
 #include "scene/json_text.hpp"
+#include "scene/limits.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/scene_readers.hpp"
 
@@ -49,6 +46,7 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.subdivisions = scene.subdivisions;
   panel.timing = scene.timing;
   panel.samples = scene.samples.value_or(kDefaultFigureSamples);
+  panel.samples_pointer = scene.samples ? "/samples" : "";
   panel.pointer = std::move(pointer);
   panel.motion_pointer = scene.kind == SceneKind::poses ? "/poses" : "/keyframes";
   return panel;
@@ -68,23 +66,11 @@ SceneError::SceneError(std::string file, int line, int column, std::string reaso
       column_(column) {}
 
 Scene load_scene(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw SceneError(name, "", "cannot read the scene file: it is a directory");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw SceneError(name, "", fmt::format("cannot open the scene file ({})", std::strerror(errno)));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(name, "", "cannot read the scene file");
-  return parse_scene(text.str(), name);
+  return parse_scene(read_input_file(path, kMaxSceneFileBytes, "scene file"), path.string());
 }
 
 Scene parse_scene(std::string_view text, std::string source_name) {
-  const Json document = detail::parse_json(text, source_name);
+  const Json document = parse_json(text, source_name);
   const JsonReader reader(std::move(source_name));
   if (!document.is_object()) {
     reader.fail("", "a scene must be a JSON object (got " + value_text(document) + ")");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +22,7 @@ namespace pita::test {
 
 struct RunResult {
   int exit_code = -1;  // 128 + signal number when killed by a signal
+  bool signaled = false;  // killed by a signal (not an exit with a status)
   std::string out;
   std::string err;
 };
@@ -58,8 +60,10 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
-// Runs `pita args...` with `directory` as working directory.
-inline RunResult run_pita(const std::vector<std::string>& args, const std::filesystem::path& directory) {
+// Runs `pita args...` with `directory` as working directory, and with at
+// most `address_space` bytes of virtual memory when given (ulimit -v).
+inline RunResult run_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
+                          std::size_t address_space = 0) {
   // The captured streams go to a directory of their own, so that they never
   // collide with the files of the test.
   const ScratchDir capture;
@@ -84,6 +88,10 @@ inline RunResult run_pita(const std::vector<std::string>& args, const std::files
     if (out < 0 || err < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) {
       ::_exit(126);
     }
+    if (address_space > 0) {
+      const rlimit limit{address_space, address_space};
+      if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
+    }
     ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }
@@ -93,6 +101,7 @@ inline RunResult run_pita(const std::vector<std::string>& args, const std::files
   }
   RunResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.signaled = WIFSIGNALED(status);
   result.out = read_file(out_path);
   result.err = read_file(err_path);
   return result;

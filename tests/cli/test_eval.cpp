@@ -251,5 +251,74 @@ TEST_F(Eval, NonFiniteFrameExitsTwoAndPrintsNothing) {
   EXPECT_EQ(result.err.find("nan"), std::string::npos) << result.err;
 }
 
+// ------------------------------------------------------------ resources (issue 11)
+
+// `pita eval /dev/zero` read until memory ran out ("internal error:
+// std::bad_alloc", exit 3): an endless file is refused at the size limit.
+TEST_F(Eval, EndlessFileIsRefusedAtTheSizeLimit) {
+  const RunResult result = run({"eval", "/dev/zero"});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err, "pita: /dev/zero: the scene file is larger than the limit of 32 MiB\n");
+}
+
+TEST_F(Eval, DeepNestingIsAnErrorNotACrash) {
+  dir.write("deep.json", "{\"keyframes\": " + std::string(100'000, '[') + std::string(100'000, ']') +
+                             ", \"method\": \"P6\"}");
+  const RunResult result = run({"eval", "deep.json"});
+  EXPECT_FALSE(result.signaled) << result.err;
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err.rfind("pita: deep.json:1:", 0), 0u) << result.err;
+  EXPECT_NE(result.err.find("nest deeper than 256 levels"), std::string::npos) << result.err;
+}
+
+// Out of memory names the scene and is exit 2 ("internal error", exit 3
+// before): a million frames under a small memory limit.
+TEST_F(Eval, OutOfMemoryNamesTheScene) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "ulimit -v and AddressSanitizer do not mix";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+  GTEST_SKIP() << "ulimit -v and AddressSanitizer do not mix";
+#endif
+#endif
+  const RunResult result =
+      run_pita({"eval", "scene.json", "--samples", "1000000"}, dir.path(), std::size_t{120} << 20);
+  EXPECT_FALSE(result.signaled) << result.err;
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: scene.json: out of memory", 0), 0u) << result.err;
+}
+
+// A reader that goes away (`pita eval ... | head -c1`) killed pita with
+// SIGPIPE (status 141, no message); the README promises exit 3 and a message.
+TEST_F(Eval, ClosedPipeIsExitThreeWithAMessage) {
+  int fds[2];
+  ASSERT_EQ(::pipe(fds), 0);
+  const ScratchDir capture;
+  const std::string err_path = (capture.path() / "stderr").string();
+  const std::string scene = (dir.path() / "scene.json").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (err < 0 || ::dup2(fds[1], 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    ::close(fds[0]);
+    ::execl(PITA_BINARY, PITA_BINARY, "eval", scene.c_str(), "--samples", "100000",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  ::close(fds[1]);
+  char first = 0;
+  EXPECT_EQ(::read(fds[0], &first, 1), 1);  // head -c1
+  ::close(fds[0]);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 3);
+  EXPECT_EQ(read_file(err_path).rfind("pita: cannot write the frames to standard output", 0), 0u)
+      << read_file(err_path);
+}
+
 }  // namespace
 }  // namespace pita::test

@@ -85,6 +85,51 @@ TEST_F(Check, CorruptedGoldenPngIsBadInput) {
   EXPECT_NE(r.err.find("golden/fig/fig.png: the expected PNG cannot be decoded"), std::string::npos) << r.err;
 }
 
+// Golden files as hostile input (tests/data/bad-goldens/README.md): each case
+// replaces one golden of a fresh set; `check` must refuse it with exit 2,
+// naming the golden file and what is wrong, and never crash.
+TEST_F(Check, HostileGoldensAreBadInputNamingTheFile) {
+  const fs::path cases = fs::path(PITA_SOURCE_DIR) / "tests/data/bad-goldens";
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(cases)) {
+    const std::string file = entry.path().filename().string();
+    if (entry.path().extension() != ".expect") continue;
+    const std::string name = entry.path().stem().string();
+    std::string replaced;
+    for (const char* kind : {".data.json", ".png", ".svg"}) {
+      if (fs::exists(cases / (name + kind))) replaced = std::string("fig") + kind;
+    }
+    SCOPED_TRACE(file);
+    ASSERT_FALSE(replaced.empty()) << "no golden file for " << file;
+    std::string expect = read_file(entry.path());
+    ASSERT_EQ(expect.rfind("error: ", 0), 0u) << expect;
+    expect = expect.substr(7, expect.find('\n') - 7);
+    const fs::path target = dir.path() / "golden/fig" / replaced;
+    const std::string original = read_file(target);
+    fs::copy_file(cases / (name + fs::path(replaced).string().substr(3)), target,
+                  fs::copy_options::overwrite_existing);
+    const RunResult r = run({"check", "fig.json"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("golden/fig/" + replaced), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(expect), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    dir.write("golden/fig/" + replaced, original);
+    ++count;
+  }
+  EXPECT_GE(count, 20);
+}
+
+// Issue 11: 85 000 nested arrays in a golden data file crashed `check`
+// (stack overflow in the JSON DOM); now refused before the DOM is built.
+TEST_F(Check, DeeplyNestedGoldenDataIsRefusedNotACrash) {
+  dir.write("golden/fig/fig.data.json",
+            "{\"panels\": " + std::string(100'000, '[') + std::string(100'000, ']') + ", \"x\": 1}");
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("golden/fig/fig.data.json:1:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("nest deeper than 256 levels"), std::string::npos) << r.err;
+}
+
 TEST_F(Check, BadSceneIsBadInput) {
   dir.write("fig.json", R"({"method": "P6", "keyframes": []})");
   const RunResult r = run({"check", "fig.json"});

@@ -1,0 +1,44 @@
+#include "cli/failure.hpp"
+
+#include <exception>
+#include <new>
+
+#include "golden/image_compare.hpp"
+#include "motion/no_motion.hpp"
+#include "render/output_file.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::cli {
+
+Failure current_failure(const std::string& input) {
+  try {
+    throw;
+  } catch (const scene::SceneError& e) {
+    return {ExitCode::bad_input, e.what()};
+  } catch (const motion::NoMotion& e) {
+    return {ExitCode::bad_input, e.what()};
+  } catch (const render::RenderError& e) {
+    return {ExitCode::bad_input, e.what()};
+  } catch (const golden::GoldenError& e) {
+    return {ExitCode::bad_input, e.what()};
+  } catch (const render::OutputError& e) {
+    return {ExitCode::failure, e.what()};
+  } catch (const std::bad_alloc&) {
+    // Within the render budget a figure needs well under 1 GB: the machine
+    // (or a ulimit) has less, or --budget was raised.
+    return {ExitCode::bad_input,
+            input + ": out of memory (the input needs more memory than is available: lower its "
+                    "sizes, the --budget, or raise the memory limit)"};
+  } catch (const std::exception& e) {
+    return {ExitCode::internal_error,
+            input + ": internal error, a bug in pita (please report it with this input): " +
+                e.what()};
+  } catch (...) {
+    return {ExitCode::internal_error,
+            input + ": internal error, a bug in pita (please report it with this input): an "
+                    "unknown exception"};
+  }
+}
+
+}  // namespace pita::cli

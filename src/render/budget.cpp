@@ -1,0 +1,286 @@
+#include "render/budget.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "render/figure.hpp"
+#include "render/panel_drawing.hpp"
+#include "render/spiral.hpp"
+
+namespace pita::render {
+
+namespace {
+
+// A layer's estimate: overloads for every layer type of both scene kinds, so
+// that a new layer type without a cost does not compile.
+class LayerCost {
+ public:
+  LayerCost(const scene::Scene& scene, const scene::Panel& panel, std::string layer,
+            FigureCost& cost)
+      : scene_(scene), panel_(panel), layer_(std::move(layer)), cost_(cost) {}
+
+  // ------------------------------------------------------------ arrow layers
+  void operator()(const scene::PatternLayer& l) { frames(l.samples, "a pattern", kShapeUnits + 2); }
+  void operator()(const scene::StrokeLayer& l) { frames(l.samples, "a stroke", kShapeUnits + 4); }
+  void operator()(const scene::DiscrepancyLayer& l) {
+    frames(l.samples, "discrepancy circles", kShapeUnits + 8);
+  }
+  void operator()(const scene::BannerLayer& l) {
+    // The glyph outlines, split into short edges, then the strip's quads.
+    add(layer_ + "/text", fmt::format("{} characters of a banner", l.text.size()),
+        400.0 * static_cast<double>(l.text.size()));
+    frames(l.samples, "a banner's strip", 4);
+  }
+  void operator()(const scene::KeyframesLayer&) {
+    double units = 0.0;
+    for (const Keyframe& key : panel_.keyframes) {
+      const double turns = std::abs(key.arrow.w) / (2.0 * std::numbers::pi);
+      units += 4 * kShapeUnits +
+               std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+    }
+    add(layer_, "keyframe arrows and winding spirals", units);
+  }
+  void operator()(const scene::TrajectoryLayer& l) {
+    add(layer_ + "/samples", fmt::format("{} points of a trajectory", l.samples),
+        kShapeUnits + l.samples);
+  }
+  void operator()(const scene::LabelLayer& l) {
+    add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
+  }
+  void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
+  void operator()(const scene::PlotLayer& l) {
+    add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
+        8 * kShapeUnits + l.samples);
+    if (l.marks) frames(std::nullopt, "a plot's marks", kShapeUnits + 8);
+  }
+
+  // ------------------------------------------------------------- pose layers
+  void operator()(const scene::ShapesLayer& l) {
+    frames(l.samples, "shapes", shapes_units());
+  }
+  void operator()(const scene::PosesLayer&) {
+    add(layer_, "the shapes at the poses",
+        static_cast<double>(panel_.poses.size()) * shapes_units());
+  }
+  void operator()(const scene::VelocitiesLayer& l) {
+    frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));
+  }
+  void operator()(const scene::PathsLayer& l) {
+    add(layer_ + "/samples", fmt::format("{} points of each vertex's path", l.samples),
+        shape_points() * (kShapeUnits + l.samples));
+  }
+  void operator()(const scene::PatchLayer& l) {
+    add(layer_ + "/columns", fmt::format("{} x {} shapes of a patch", l.columns, l.rows),
+        static_cast<double>(l.columns) * l.rows * shapes_units());
+  }
+  void operator()(const scene::ExistenceLayer& l) {
+    // Each cell is one classification by EAR (about 0.1 us), drawn in runs.
+    add(layer_ + "/columns", fmt::format("{} x {} cells of an existence map", l.columns, l.rows),
+        static_cast<double>(l.columns) * l.rows / 8.0 + 64 * kShapeUnits);
+  }
+
+ private:
+  // A layer drawn at each of its frames: `per_frame` units each.
+  void frames(const std::optional<int>& samples, const char* what, double per_frame) {
+    const int n = samples.value_or(panel_.samples);
+    std::string pointer = samples ? layer_ + "/samples" : panel_.samples_pointer;
+    if (!samples && panel_.samples_pointer == "/samples" && n > scene::kMaxFigureSamples) {
+      throw RenderError(scene_.path, "/samples",
+                        fmt::format("{} frames for the figure's layers exceeds the figure limit of "
+                                    "{} (the top-level \"samples\", up to {}, is also what `pita "
+                                    "eval` prints: give the panels or layers their own \"samples\")",
+                                    n, scene::kMaxFigureSamples, scene::kMaxSamples));
+    }
+    if (pointer.empty()) pointer = layer_;
+    add(pointer, fmt::format("{} frames of {}", n, what), n * per_frame);
+  }
+
+  double shape_points() const {
+    double points = 0.0;
+    for (const scene::ShapeOutline& shape : panel_.shapes) points += static_cast<double>(shape.points.size());
+    return points;
+  }
+  double shapes_units() const {
+    return static_cast<double>(panel_.shapes.size()) * kShapeUnits + shape_points();
+  }
+
+  void add(std::string pointer, std::string what, double units) {
+    cost_.units += units;
+    cost_.parts.push_back({std::move(pointer), layer_, std::move(what), units});
+  }
+
+  const scene::Scene& scene_;
+  const scene::Panel& panel_;
+  std::string layer_;
+  FigureCost& cost_;
+};
+
+template <typename LayerType>
+void add_layers(const scene::Scene& scene, const scene::Panel& panel,
+                const std::optional<std::vector<LayerType>>& own,
+                const std::vector<LayerType>& scene_layers, FigureCost& cost) {
+  const std::vector<LayerType>& layers = own ? *own : scene_layers;
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const std::string pointer = (own ? panel.pointer : std::string()) + "/layers/" + std::to_string(i);
+    std::visit(LayerCost(scene, panel, pointer, cost), layers[i]);
+  }
+}
+
+std::string count_text(double units) {
+  if (units >= 1e9) return fmt::format("{:.3g} billion", units / 1e9);
+  if (units >= 1e6) return fmt::format("{:.3g} million", units / 1e6);
+  return fmt::format("{:.0f}", units);
+}
+
+}  // namespace
+
+FigureCost estimate_cost(const scene::Scene& scene) {
+  FigureCost cost;
+  for (const scene::Panel& panel : scene.panels) {
+    // The title and frame of each panel.
+    cost.units += 8 * kShapeUnits;
+    if (scene.kind == scene::SceneKind::poses) {
+      add_layers(scene, panel, panel.pose_layers, scene.pose_layers, cost);
+    } else {
+      add_layers(scene, panel, panel.layers, scene.layers, cost);
+    }
+  }
+  return cost;
+}
+
+void check_budget(const scene::Scene& scene, const FigureCost& cost, double factor) {
+  const double budget = kDefaultBudgetUnits * factor;
+  if (cost.units <= budget) return;
+  // The field that dominates: the most specific pointer whose parts add up to
+  // at least half the cost. A field first ("/layers/0/samples", or "/samples"
+  // feeding every panel), else a list of layers ("/layers": 64 layers drawn in
+  // each of 64 panels), else the panels.
+  const auto group = [&](auto key_of) {
+    std::map<std::string, std::pair<double, std::vector<const CostPart*>>> groups;
+    for (const CostPart& part : cost.parts) {
+      auto& [units, parts] = groups[key_of(part)];
+      units += part.units;
+      parts.push_back(&part);
+    }
+    return *std::max_element(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
+      return a.second.first < b.second.first;
+    });
+  };
+  const auto largest = [](const std::vector<const CostPart*>& parts) {
+    return *std::max_element(parts.begin(), parts.end(),
+                             [](const CostPart* a, const CostPart* b) { return a->units < b->units; });
+  };
+  std::string pointer, what;
+  double units = 0.0;
+  if (const auto [field, share] = group([](const CostPart& p) { return p.pointer; });
+      share.first >= 0.5 * cost.units) {
+    pointer = field;
+    units = share.first;
+    what = share.second.size() == 1 ? share.second.front()->what
+                                    : fmt::format("{} in each of {} places",
+                                                  share.second.front()->what, share.second.size());
+  } else if (const auto [list, in_list] = group([](const CostPart& p) {
+               return p.layer.substr(0, p.layer.rfind("/layers/")) + "/layers";
+             });
+             in_list.first >= 0.5 * cost.units) {
+    pointer = list;
+    units = in_list.first;
+    what = fmt::format("{} layer drawings, the largest {}", in_list.second.size(),
+                       largest(in_list.second)->what);
+  } else {
+    pointer = scene.panels.size() > 1 ? "/panels" : "";
+    units = cost.units;
+    what = fmt::format("{} panels, the largest part {}", scene.panels.size(),
+                       largest(group([](const CostPart& p) { return p.pointer; }).second.second)->what);
+  }
+  throw RenderError(scene.path, pointer,
+                    fmt::format("{}: the figure would draw about {} points, beyond the budget of "
+                                "{} ({:.0f}% of it from here); lower this, or raise the budget "
+                                "with `pita render --budget F` (F times the default)",
+                                what, count_text(cost.units), count_text(budget),
+                                100.0 * units / cost.units));
+}
+
+void check_pixel_budget(const scene::Scene& scene, double scale, double factor) {
+  const double pixels = std::round(scene.canvas.width * scale) * std::round(scene.canvas.height * scale);
+  const double budget = kDefaultBudgetPixels * factor;
+  if (pixels <= budget) return;
+  throw RenderError(scene.path, "/canvas",
+                    fmt::format("a PNG of {} pixels ({}x{} at scale {}) is beyond the budget of {} "
+                                "pixels; lower the scale, or raise the budget with `pita render "
+                                "--budget F`",
+                                count_text(pixels), scene.canvas.width, scene.canvas.height, scale,
+                                count_text(budget)));
+}
+
+namespace {
+
+// Canvas length of a polyline's segments, each at most `clip` long.
+double clipped_length(const std::vector<Point>& points, bool closed, const ViewTransform& view,
+                      double clip) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    length += std::min(std::abs(points[i] - points[i - 1]) * view.scale, clip);
+  }
+  if (closed && points.size() > 2) length += std::min(std::abs(points.back() - points.front()) * view.scale, clip);
+  return length;
+}
+
+struct Ink {
+  const ViewTransform& view;
+  double clip;
+  double operator()(const Polyline& s) const { return clipped_length(s.points, s.closed, view, clip); }
+  double operator()(const FilledPath& s) const {
+    // A fill costs its area, at most the panel's; an outline its length.
+    double length = clip;
+    if (s.outline) {
+      for (const auto& contour : s.contours) length += clipped_length(contour, true, view, clip);
+    }
+    return length;
+  }
+  double operator()(const Circle& s) const {
+    return std::min(2.0 * std::numbers::pi * s.radius * view.scale, 4.0 * clip);
+  }
+  double operator()(const ArrowShape& s) const {
+    return 2.0 * std::min(std::abs(s.to - s.from) * view.scale, clip);
+  }
+  double operator()(const Label&) const { return 0.0; }
+};
+
+}  // namespace
+
+std::vector<std::pair<std::string, double>> ink_by_layer(const Figure& figure) {
+  std::map<std::string, double> ink;
+  for (std::size_t i = 0; i < figure.drawings.size() && i < figure.placements.size(); ++i) {
+    const PanelPlacement& placement = figure.placements[i];
+    const double clip = std::hypot(placement.cell.width, placement.cell.height);
+    for (const Item& item : figure.drawings[i].items) {
+      ink[item.layer] += std::visit(Ink{placement.transform, clip}, item.shape);
+    }
+  }
+  return {ink.begin(), ink.end()};
+}
+
+void check_ink_budget(const scene::Scene& scene, const Figure& figure, double scale, double factor) {
+  const auto layers = ink_by_layer(figure);
+  double total = 0.0;
+  for (const auto& [layer, ink] : layers) total += ink * scale;
+  const double budget = kDefaultBudgetInk * factor;
+  if (total <= budget) return;
+  const auto worst = std::max_element(layers.begin(), layers.end(),
+                                      [](const auto& a, const auto& b) { return a.second < b.second; });
+  throw RenderError(scene.path, worst->first,
+                    fmt::format("the PNG would stroke about {} pixels of lines ({:.0f}% of them "
+                                "drawn by this layer), beyond the budget of {}; lower the scale, "
+                                "the samples or the shapes' sizes, or raise the budget with `pita "
+                                "render --budget F`",
+                                count_text(total), 100.0 * worst->second * scale / total,
+                                count_text(budget)));
+}
+
+}  // namespace pita::render
