@@ -2,6 +2,7 @@
 // (an options struct, setup_<name>, run_<name>); main maps every failure to an
 // ExitCode. CLI11's own parse errors would exit 100-127: they exit 2 here.
 #include <algorithm>
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <string_view>
@@ -14,6 +15,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
 #include "cli/render.hpp"
+#include "render/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
 
 #ifndef PITA_VERSION
@@ -23,6 +25,12 @@
 int main(int argc, char** argv) {
   using pita::cli::ExitCode;
   using pita::cli::to_int;
+
+  // SIGINT, SIGTERM, SIGHUP: remove the temporary files in flight, exit 128 + signal.
+  pita::render::install_interrupt_cleanup();
+  // A closed pipe (pita eval ... | head) is a write error (EPIPE) that the code
+  // reports with exit 3, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App app{
       "pita: planar interpolation of three arrows and steady affine morphs. Computes the motions "
@@ -42,7 +50,8 @@ int main(int argc, char** argv) {
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
       "Exit codes: 0 success, 1 a figure differs from its golden (check), 2 bad input or\n"
-      "usage, 3 an output could not be written.");
+      "usage, 3 an output could not be written, 128+N interrupted by signal N (unfinished\n"
+      "outputs removed).");
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);
