@@ -2,6 +2,7 @@
 // (an options struct, setup_<name>, run_<name>); main maps every failure to an
 // ExitCode. CLI11's own parse errors would exit 100-127: they exit 2 here.
 #include <algorithm>
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
 #include "cli/render.hpp"
+#include "render/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
 
 #ifndef PITA_VERSION
@@ -24,6 +26,12 @@
 int main(int argc, char** argv) {
   using pita::cli::ExitCode;
   using pita::cli::to_int;
+
+  // SIGINT, SIGTERM, SIGHUP: remove the temporary files in flight, exit 128 + signal.
+  pita::render::install_interrupt_cleanup();
+  // A closed pipe (pita eval ... | head) is a write error (EPIPE) that the code
+  // reports with exit 3, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
 
   CLI::App app{
       "pita: planar interpolation of three arrows and steady affine morphs. Computes the motions "
@@ -44,7 +52,8 @@ int main(int argc, char** argv) {
       "for figures.\n"
       "Exit codes: 0 success, 1 a figure differs from its golden (check), 2 bad input or\n"
       "usage (also work beyond the budget, or out of memory), 3 an output could not be\n"
-      "written, 4 an internal error (a bug: please report it), 128+N killed by signal N.");
+      "written, 4 an internal error (a bug: please report it), 128+N interrupted by\n"
+      "signal N (unfinished outputs removed).");
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);

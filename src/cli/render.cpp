@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 
 #include <CLI/CLI.hpp>
@@ -53,6 +54,9 @@ struct Target {
   fs::path path;
 };
 
+// In a directory, a file is named by the scene file's stem only (its last path
+// component less the extension: never a path, and nothing from inside the
+// JSON), so that it cannot land outside OUT whatever the scene's path is.
 std::vector<Target> targets_for(const RenderOptions& options, const std::string& scene_path,
                                 const std::vector<render::Format>& formats, bool single_file) {
   if (single_file) return {{formats.front(), options.output}};
@@ -64,14 +68,44 @@ std::vector<Target> targets_for(const RenderOptions& options, const std::string&
   return targets;
 }
 
+// Two scenes that would write the same file (a/x.json and b/x.json, or one
+// scene given twice) are refused before anything is written: the second would
+// silently replace the first, and numbering one of them would make the names
+// unpredictable for scripts.
+void refuse_shared_outputs(const RenderOptions& options, const std::vector<render::Format>& formats) {
+  // The first format is enough: every scene writes the same formats.
+  std::map<fs::path, const std::string*> writer;
+  for (const std::string& path : options.scene_paths) {
+    const fs::path target = targets_for(options, path, formats, false).front().path;
+    const auto [it, inserted] = writer.emplace(target, &path);
+    if (inserted) continue;
+    const std::string& first = *it->second;
+    std::error_code ignored;
+    if (first == path || fs::equivalent(first, path, ignored)) {
+      throw UsageError(fmt::format("{} is given twice: it would write {} twice{}", path, target.string(),
+                                   first == path ? "" : fmt::format(" (also as {})", first)));
+    }
+    throw UsageError(fmt::format("{} and {} would both write {} (outputs are named by the scene "
+                                 "file's name); rename one, or render them into different directories",
+                                 first, path, target.string()));
+  }
+}
+
 std::string footer() {
   return R"(
 OUT is a file when it ends in .svg, .png or .pdf (one scene; the format is its
 extension), otherwise a directory (created if needed) that receives
 OUT/<scene name>.<format> for each --format (default svg).
 
-Each file is written to a temporary file and renamed into place: a failed
-scene leaves no file behind, and the other scenes are still rendered.
+<scene name> is the scene file's name without its directory and extension:
+files never land outside OUT (a symlink OUT is followed). Two scenes with the
+same name (a/x.json and b/x.json), or one scene given twice, are refused with
+exit 2 before anything is written.
+
+Each file is written to a temporary file and renamed into place, a scene's
+formats all or none: a failed scene leaves no file behind (its older files
+stay as they were), and the other scenes are still rendered. SIGINT, SIGTERM
+and SIGHUP remove the unfinished temporary files and exit with 128 + signal.
 Output is deterministic: the same scene gives the same bytes.
 
 A figure's work is estimated before anything is drawn (panels x layers x
@@ -96,8 +130,8 @@ Examples:
   pita render scenes/sam-fig07-no-sam-biarc.json -o fig7.png
 
 Exit codes: 0 success, 2 bad input or usage (also beyond the budget, out of memory),
-3 an output could not be written, 4 an internal error (a bug), 128+N interrupted by
-signal N (unfinished temporary files removed).
+3 an output could not be written, 4 an internal error (a bug), 128 + N interrupted by
+signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; unfinished temporary files removed).
 )";
 }
 
@@ -169,6 +203,7 @@ ExitCode run_render(const RenderOptions& options) {
                                    render::kMaxScale, scale));
     }
     if (!single_file) {
+      refuse_shared_outputs(options, formats);
       std::error_code error;
       fs::create_directories(options.output, error);
       if (error || !fs::is_directory(options.output)) {
@@ -192,10 +227,11 @@ ExitCode run_render(const RenderOptions& options) {
       for (const Target& target : targets_for(options, path, formats, single_file)) {
         files.emplace_back(target.path, render::render_figure(scene, figure, target.format, scale, options.budget));
       }
-      for (const auto& [file, bytes] : files) {
-        render::write_file_atomically(file, bytes);
-        std::cout << "wrote " << file.string() << '\n';
-      }
+      // All formats or none (render/output_file.hpp).
+      render::write_files_atomically(files);
+      for (const auto& [file, bytes] : files) std::cout << "wrote " << file.string() << '\n';
+      // Flushed, so that an interrupted run still lists what it wrote.
+      std::cout.flush();
     } catch (...) {
       const Failure failure = current_failure(path);
       std::cerr << "pita: " << failure.message << '\n';

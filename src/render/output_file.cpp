@@ -7,51 +7,144 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "render/interrupt.hpp"
 
 namespace pita::render {
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
-  std::string name = path.filename().string();
-  name.insert(0, 1, '.');
-  name.append(".XXXXXX");
-  std::string temp = (dir / name).string();
-  const int fd = mkstemp(temp.data());
-  if (fd < 0) {
-    throw OutputError(path.string() + ": cannot create a temporary file in " + dir.string() +
-                             " (" + std::strerror(errno) + ")");
-  }
-  const auto fail = [&](const char* what) {
-    const int saved = errno;
-    close(fd);
-    std::remove(temp.c_str());
-    throw OutputError(path.string() + ": " + what + " (" + std::strerror(saved) + ")");
-  };
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      fail("cannot write");
+namespace {
+
+namespace fs = std::filesystem;
+
+OutputError error(const fs::path& path, const std::string& what, int errnum) {
+  return OutputError(path.string() + ": " + what + " (" + std::strerror(errnum) + ")");
+}
+
+// The hidden temporary of one target. Its name is registered with the
+// interrupt cleanup before mkstemp creates it (mkstemp fills in the XXXXXX in
+// the registered slot itself), and released only once the file is renamed
+// into place or removed: a signal at any moment leaves no temporary behind.
+class Temporary {
+ public:
+  explicit Temporary(const fs::path& target) : target_(target) {
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : ".";
+    std::string name = target.filename().string();
+    name.insert(0, 1, '.');
+    name.append(".XXXXXX");
+    const std::string pattern = (dir / name).string();
+    const std::string cannot = "cannot create a temporary file in " + dir.string();
+    slot_ = register_in_flight(pattern);
+    if (slot_ < 0) {
+      if (pattern.size() >= kInFlightPathMax) throw error(target, cannot, ENAMETOOLONG);
+      throw OutputError(target.string() + ": " + cannot + " (more than " +
+                               std::to_string(kInFlightSlots) + " files in flight)");
     }
-    written += static_cast<std::size_t>(n);
+    fd_ = ::mkstemp(slot_path(slot_));
+    if (fd_ < 0) {
+      const int saved = errno;
+      release_in_flight(slot_);
+      throw error(target, cannot, saved);
+    }
+    temp_ = slot_path(slot_);
   }
-  // mkstemp creates 0600; outputs are ordinary files (0644 less the umask).
-  const mode_t mask = umask(0);
-  umask(mask);
-  fchmod(fd, 0666 & ~mask);
-  if (close(fd) != 0) {
-    std::remove(temp.c_str());
-    throw OutputError(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  Temporary(const Temporary&) = delete;
+  Temporary& operator=(const Temporary&) = delete;
+  ~Temporary() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(temp_.c_str());
+    release_in_flight(slot_);
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    const int saved = errno;
-    std::remove(temp.c_str());
-    throw OutputError(path.string() + ": cannot rename the finished file into place (" +
-                             std::strerror(saved) + ")");
+
+  // Every byte, then the ordinary permissions (mkstemp creates 0600; outputs
+  // are 0666 less the umask), then close, whose error may be the first news
+  // of a full disk on some file systems.
+  void write(std::string_view bytes, mode_t mode) {
+    std::size_t written = 0;
+    while (written < bytes.size()) {
+      const ssize_t n = ::write(fd_, bytes.data() + written, bytes.size() - written);
+      if (n < 0) {
+        if (errno == EINTR) continue;
+        throw error(target_, "cannot write", errno);
+      }
+      written += static_cast<std::size_t>(n);
+    }
+    ::fchmod(fd_, mode);
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) throw error(target_, "cannot write", errno);
   }
+
+  // The rename fails on a directory in the way (EISDIR): found before any
+  // file of the set is renamed, so that the old files stay as they were.
+  void check_target() const {
+    struct stat status {};
+    if (::lstat(target_.c_str(), &status) == 0 && S_ISDIR(status.st_mode)) {
+      throw error(target_, "cannot rename the finished file into place", EISDIR);
+    }
+  }
+
+  void commit() {
+    if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
+      throw error(target_, "cannot rename the finished file into place", errno);
+    }
+    committed_ = true;
+  }
+
+  const fs::path& target() const { return target_; }
+
+ private:
+  fs::path target_;
+  std::string temp_;
+  int slot_ = -1;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+struct View {
+  const fs::path& path;
+  std::string_view bytes;
+};
+
+void write_all_or_none(const std::vector<View>& files) {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  std::vector<std::unique_ptr<Temporary>> temporaries;
+  // The destructors remove every temporary not renamed, whatever throws.
+  for (const View& file : files) temporaries.push_back(std::make_unique<Temporary>(file.path));
+  for (std::size_t i = 0; i < files.size(); ++i) temporaries[i]->write(files[i].bytes, 0666 & ~mask);
+  for (const auto& temporary : temporaries) temporary->check_target();
+  for (std::size_t i = 0; i < temporaries.size(); ++i) {
+    try {
+      temporaries[i]->commit();
+    } catch (const std::runtime_error& failure) {
+      // The old versions of the files already renamed are gone: remove the new
+      // ones too, so that the set is none rather than a mix.
+      std::string message = failure.what();
+      for (std::size_t k = 0; k < i; ++k) {
+        ::unlink(temporaries[k]->target().c_str());
+        message += (k == 0 ? "; removed " : ", ") + temporaries[k]->target().string();
+      }
+      if (i > 0) message += ", written with it";
+      throw OutputError(message);
+    }
+  }
+}
+
+}  // namespace
+
+void write_file_atomically(const fs::path& path, std::string_view bytes) {
+  write_all_or_none({View{path, bytes}});
+}
+
+void write_files_atomically(std::span<const std::pair<fs::path, std::string>> files) {
+  std::vector<View> views;
+  views.reserve(files.size());
+  for (const auto& [path, bytes] : files) views.push_back(View{path, bytes});
+  write_all_or_none(views);
 }
 
 }  // namespace pita::render

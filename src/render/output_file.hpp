@@ -1,10 +1,16 @@
-// Writing an output so that nothing half-written is ever seen: the bytes go
-// to a temporary file beside the target, which is then renamed into place.
+// Writing outputs so that nothing half-written is ever seen: the bytes go to a
+// hidden temporary file beside the target (.name.ext.XXXXXX, in the same
+// directory so that the rename is atomic), which is then renamed into place.
+// The temporaries are registered with the interrupt cleanup (interrupt.hpp):
+// SIGINT, SIGTERM or SIGHUP removes them.
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <stdexcept>
+#include <string>
 #include <string_view>
+#include <utility>
 
 namespace pita::render {
 
@@ -17,5 +23,14 @@ class OutputError : public std::runtime_error {
 
 // Throws OutputError with the path and the system's reason.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// The files of a set (a scene's formats) are written all or none: every
+// temporary is created and written first, and only then are they renamed into
+// place, the commit step. A failure before the commit (no space, a directory
+// in the way of a target) removes every temporary and leaves the old files
+// untouched. Should a rename still fail during the commit, the files of the
+// set already renamed are removed too, so that no partial set remains.
+// Throws OutputError naming the file that failed and the reason.
+void write_files_atomically(std::span<const std::pair<std::filesystem::path, std::string>> files);
 
 }  // namespace pita::render

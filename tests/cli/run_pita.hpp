@@ -1,10 +1,12 @@
 // Runs the real pita binary (PITA_BINARY) in a scratch directory and captures
-// its exit code, stdout and stderr.
+// its exit code, stdout and stderr; or starts it (start_pita), to signal it
+// while it runs, and waits for it (finish_pita).
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,9 +15,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pita::test {
@@ -60,15 +64,38 @@ class ScratchDir {
   std::filesystem::path path_;
 };
 
-// Runs `pita args...` with `directory` as working directory, and with at
-// most `address_space` bytes of virtual memory when given (ulimit -v).
-inline RunResult run_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
+// A pita process started by start_pita and not yet waited for.
+struct Started {
+  pid_t pid = -1;
+  std::unique_ptr<ScratchDir> capture;  // its stdout and stderr
+
+  Started() = default;
+  Started(Started&& other) noexcept : pid(std::exchange(other.pid, -1)), capture(std::move(other.capture)) {}
+  Started& operator=(Started&&) = delete;
+  // A test that stops before finish_pita (a failed ASSERT) must not leave pita
+  // running: a shim may hold it forever.
+  ~Started() {
+    if (pid > 0) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, nullptr, 0);
+    }
+  }
+};
+
+// Starts `pita args...` with `directory` as working directory, `environment`
+// ("NAME=value") set over the test's own and `ignored_signals` ignored (as
+// nohup does), with at most `address_space` bytes of virtual memory when
+// given (ulimit -v), without waiting for it.
+inline Started start_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
+                          const std::vector<std::string>& environment = {},
+                          const std::vector<int>& ignored_signals = {},
                           std::size_t address_space = 0) {
   // The captured streams go to a directory of their own, so that they never
   // collide with the files of the test.
-  const ScratchDir capture;
-  const std::string out_path = (capture.path() / "stdout").string();
-  const std::string err_path = (capture.path() / "stderr").string();
+  Started started;
+  started.capture = std::make_unique<ScratchDir>();
+  const std::string out_path = (started.capture->path() / "stdout").string();
+  const std::string err_path = (started.capture->path() / "stderr").string();
   const std::string binary = PITA_BINARY;
   const std::string cwd = directory.string();
 
@@ -78,33 +105,76 @@ inline RunResult run_pita(const std::vector<std::string>& args, const std::files
   std::vector<char*> argv;
   for (std::string& arg : argv_strings) argv.push_back(arg.data());
   argv.push_back(nullptr);
+  // The test's environment, less the variables that `environment` sets anew.
+  const auto name_of = [](const std::string& entry) { return entry.substr(0, entry.find('=')); };
+  std::vector<std::string> env_strings;
+  for (char** entry = environ; *entry != nullptr; ++entry) {
+    const std::string inherited = *entry;
+    bool replaced = false;
+    for (const std::string& set : environment) replaced = replaced || name_of(set) == name_of(inherited);
+    if (!replaced) env_strings.push_back(inherited);
+  }
+  env_strings.insert(env_strings.end(), environment.begin(), environment.end());
+  std::vector<char*> envp;
+  for (std::string& entry : env_strings) envp.push_back(entry.data());
+  envp.push_back(nullptr);
 
-  const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
+  started.pid = ::fork();
+  if (started.pid < 0) throw std::runtime_error("fork failed");
+  if (started.pid == 0) {
     // Child: only async-signal-safe calls from here on.
     const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (out < 0 || err < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) {
       ::_exit(126);
     }
+    for (const int sig : ignored_signals) ::signal(sig, SIG_IGN);
     if (address_space > 0) {
       const rlimit limit{address_space, address_space};
       if (::setrlimit(RLIMIT_AS, &limit) != 0) ::_exit(126);
     }
-    ::execv(binary.c_str(), argv.data());
+    ::execve(binary.c_str(), argv.data(), envp.data());
     ::_exit(127);
   }
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
+  return started;
+}
+
+// Waits for a started pita. `status`, when given, receives the raw wait status
+// (WIFEXITED tells an exit from a death by signal, which exit_code merges).
+inline RunResult finish_pita(Started& started, int* status = nullptr) {
+  int raw = 0;
+  while (::waitpid(started.pid, &raw, 0) < 0) {
     if (errno != EINTR) throw std::runtime_error("waitpid failed");
   }
+  started.pid = -1;
+  if (status != nullptr) *status = raw;
   RunResult result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.signaled = WIFSIGNALED(status);
-  result.out = read_file(out_path);
-  result.err = read_file(err_path);
+  result.exit_code = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  result.signaled = WIFSIGNALED(raw);
+  result.out = read_file(started.capture->path() / "stdout");
+  result.err = read_file(started.capture->path() / "stderr");
+  started.capture.reset();
   return result;
+}
+
+// `environment` and what start_pita needs to load the rename shim
+// (tests/cli/preload/rename_hook.cpp, PITA_RENAME_HOOK): it holds pita before
+// a rename, or fails one, as its variables in `environment` say.
+inline std::vector<std::string> with_rename_hook(std::vector<std::string> environment) {
+  environment.push_back(std::string("LD_PRELOAD=") + PITA_RENAME_HOOK);
+  // A sanitizer build wants its runtime first among the libraries; the shim does not mind.
+  const char* asan = std::getenv("ASAN_OPTIONS");
+  const std::string options = asan != nullptr && *asan != '\0' ? std::string(asan) + ":" : "";
+  environment.push_back("ASAN_OPTIONS=" + options + "verify_asan_link_order=0");
+  return environment;
+}
+
+// Runs `pita args...` with `directory` as working directory, and with at
+// most `address_space` bytes of virtual memory when given (ulimit -v).
+inline RunResult run_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
+                          std::size_t address_space = 0) {
+  Started started = start_pita(args, directory, {}, {}, address_space);
+  return finish_pita(started);
 }
 
 }  // namespace pita::test

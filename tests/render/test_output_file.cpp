@@ -1,6 +1,7 @@
 // Writing outputs atomically (src/render/output_file.cpp): the bytes arrive
-// whole, replace what was there, leave no temporary file behind, get the
-// ordinary permissions, and a failure names the path and the reason.
+// whole, replace what was there, leave no temporary file behind (nor one
+// registered for the interrupt cleanup), get the ordinary permissions, a set
+// of files is written all or none, and a failure names the path and the reason.
 #include "render/output_file.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,10 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include "render/interrupt.hpp"
 
 namespace pita::render {
 namespace {
@@ -90,6 +95,58 @@ TEST_F(OutputFile, DirectoryInTheWayIsRefusedAndCleanedUp) {
         << what;
   }
   EXPECT_EQ(entries(), 1u);  // only the directory
+}
+
+// Nothing stays registered for the interrupt cleanup after a write, whether it
+// succeeded or not: a later signal must not remove a finished output.
+TEST_F(OutputFile, NothingStaysInFlight) {
+  write_file_atomically(dir_ / "figure.svg", "<svg/>");
+  EXPECT_EQ(remove_in_flight(), 0u);
+  EXPECT_THROW(write_file_atomically(dir_ / "no" / "figure.svg", "<svg/>"), std::runtime_error);
+  EXPECT_EQ(remove_in_flight(), 0u);
+  fs::create_directory(dir_ / "busy.svg");
+  EXPECT_THROW(write_file_atomically(dir_ / "busy.svg", "<svg/>"), std::runtime_error);
+  EXPECT_EQ(remove_in_flight(), 0u);
+  EXPECT_TRUE(fs::exists(dir_ / "figure.svg"));
+}
+
+using Files = std::vector<std::pair<fs::path, std::string>>;
+
+TEST_F(OutputFile, WritesASetWhole) {
+  const Files files = {
+      {dir_ / "x.svg", "<svg/>"}, {dir_ / "x.png", std::string("\x89PNG\0", 5)}, {dir_ / "x.pdf", "%PDF-"}};
+  write_files_atomically(files);
+  for (const auto& [path, bytes] : files) EXPECT_EQ(read(path), bytes) << path;
+  EXPECT_EQ(entries(), 3u);
+  EXPECT_EQ(remove_in_flight(), 0u);
+  write_files_atomically(Files{});  // an empty set writes nothing
+  EXPECT_EQ(entries(), 3u);
+}
+
+// A directory in the way of the PNG: the SVG of the same set is not replaced
+// either (the old one stays), and no temporary remains.
+TEST_F(OutputFile, OneFailureLeavesTheWholeSetAsItWas) {
+  write_file_atomically(dir_ / "x.svg", "old");
+  fs::create_directory(dir_ / "x.png");
+  const Files files = {{dir_ / "x.svg", "<svg/>"}, {dir_ / "x.png", "png"}};
+  try {
+    write_files_atomically(files);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& error) {
+    EXPECT_EQ(std::string(error.what()),
+              (dir_ / "x.png").string() + ": cannot rename the finished file into place (Is a directory)");
+  }
+  EXPECT_EQ(read(dir_ / "x.svg"), "old");
+  EXPECT_EQ(entries(), 2u);  // x.svg and the directory x.png
+  EXPECT_EQ(remove_in_flight(), 0u);
+}
+
+// The second file's temporary cannot be created: the first one's is removed.
+TEST_F(OutputFile, AFailedTemporaryRemovesTheOthers) {
+  const Files files = {{dir_ / "x.svg", "<svg/>"}, {dir_ / "missing" / "x.png", "png"}};
+  EXPECT_THROW(write_files_atomically(files), std::runtime_error);
+  EXPECT_EQ(entries(), 0u);
+  EXPECT_EQ(remove_in_flight(), 0u);
 }
 
 }  // namespace
