@@ -24,6 +24,14 @@
 
 namespace pita::test {
 
+// Fig. 1's keyframes as scene fields (method P6), and as a whole scene: the
+// good scene of the CLI tests.
+inline const std::string kFigureOneFields = R"("method": "P6", "keyframes": [
+  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+  {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
+  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
+inline const std::string kFigureOneScene = "{" + kFigureOneFields + "}";
+
 struct RunResult {
   int exit_code = -1;  // 128 + signal number when killed by a signal
   bool signaled = false;  // killed by a signal (not an exit with a status)

@@ -15,10 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kGoodScene = R"({"method": "P6", "keyframes": [
-  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
-  {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
-  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
+const std::string& kGoodScene = kFigureOneScene;
 
 const std::string kBadScene = R"({"method": "P6", "keyframes": [
   {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},

@@ -30,10 +30,7 @@ constexpr bool kAddressSanitizer = false;
 
 constexpr std::size_t kOneGiB = std::size_t{1} << 30;
 
-const std::string kKeyframes = R"("method": "P6", "keyframes": [
-  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
-  {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
-  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
+const std::string& kKeyframes = kFigureOneFields;
 const std::string kPoses = R"("method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
   {"t": 1, "matrix": [[0, -1, 3], [1, 0, 0]]}])";
 

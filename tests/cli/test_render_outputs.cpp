@@ -16,10 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = R"({"method": "P6", "keyframes": [
-  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
-  {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
-  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
+const std::string& kScene = kFigureOneScene;
 
 // Every file and symlink under `root`, relative to it, symlinks not followed.
 std::set<std::string> entries_under(const fs::path& root) {
