@@ -45,11 +45,13 @@ bool wait_for(Condition condition, std::chrono::milliseconds limit) {
   return true;
 }
 
-// Whether `pid` has a handler for `sig` (the SigCgt mask of /proc/PID/status).
-bool catches(pid_t pid, int sig) {
+// Whether `pid` has a handler for `sig` (the SigCgt mask of /proc/PID/status),
+// or has ended already (a zombie: nothing left to wait for).
+bool catches_or_ended(pid_t pid, int sig) {
   std::ifstream status("/proc/" + std::to_string(pid) + "/status");
   std::string line;
   while (std::getline(status, line)) {
+    if (line.rfind("State:", 0) == 0 && line.find('Z') != std::string::npos) return true;
     if (line.rfind("SigCgt:", 0) != 0) continue;
     const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
     return (mask >> (sig - 1)) & 1u;
@@ -180,7 +182,7 @@ TEST(InterruptTiming, ARenderKilledAtAnyMomentLeavesWholeFilesOnly) {
   for (int delay_ms = 0; !finished && delay_ms <= 120000; delay_ms = delay_ms ? 2 * delay_ms : 25) {
     fs::remove_all(dir.path() / "out");
     Started started = start_pita({"render", "big.json", "-o", "out", "--format", "svg,pdf"}, dir.path());
-    const bool ready = wait_for([&] { return catches(started.pid, SIGTERM); }, 10s);
+    const bool ready = wait_for([&] { return catches_or_ended(started.pid, SIGTERM); }, 10s);
     if (!ready) ::kill(started.pid, SIGKILL);
     int status = 0;
     if (ready) {
