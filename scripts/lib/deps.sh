@@ -1,9 +1,14 @@
 # Sourced by the scripts in scripts/: installs the Debian 12 packages pita
-# needs when any is missing, then configures and builds into build/.
+# needs when any is missing, then configures and builds into build/ (or, for
+# scripts/test.sh --sanitize and scripts/fuzz.sh, into build-sanitize/).
 # Nothing is downloaded from anywhere but Debian's package archive.
 
 PITA_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 PITA_BUILD="${PITA_BUILD:-$PITA_ROOT/build}"
+# The sanitizer and fuzzing build (clang, ASan + UBSan, the libFuzzer targets).
+PITA_SANITIZE_BUILD="${PITA_SANITIZE_BUILD:-$PITA_ROOT/build-sanitize}"
+# Parallel compile and test jobs (default: every core).
+PITA_JOBS="${PITA_JOBS:-$(nproc)}"
 
 # One package per need; the comment says which.
 PITA_PACKAGES=(
@@ -22,9 +27,16 @@ PITA_PACKAGES=(
   libbenchmark-dev     # benchmarks
 )
 
+# Only for scripts/test.sh --sanitize and scripts/fuzz.sh.
+PITA_SANITIZE_PACKAGES=(
+  clang                # the sanitizer build: libFuzzer is clang's
+  libclang-rt-14-dev   # the ASan, UBSan, LSan and libFuzzer run-times
+)
+
+# Installs what is missing of PITA_PACKAGES and of the packages given.
 pita_install_dependencies() {
   local missing=()
-  for p in "${PITA_PACKAGES[@]}"; do
+  for p in "${PITA_PACKAGES[@]}" "$@"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
       missing+=("$p")
     fi
@@ -58,5 +70,22 @@ pita_build() {
     cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja \
       -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" >/dev/null || return 1
   fi
-  cmake --build "$PITA_BUILD" -j "$(nproc)"
+  cmake --build "$PITA_BUILD" -j "$PITA_JOBS"
+}
+
+# Configures (first time) and builds the sanitizer build: clang, Debug at -O1
+# (assertions on), -fsanitize=address,undefined on every target, and the
+# libFuzzer targets of fuzz/ (CMake options PITA_SANITIZE and PITA_FUZZ).
+# Then exports the sanitizer options that CMake wrote for this build
+# (ASAN_OPTIONS, UBSAN_OPTIONS, LSAN_OPTIONS with scripts/sanitizers/lsan.supp).
+pita_build_sanitize() {
+  pita_install_dependencies "${PITA_SANITIZE_PACKAGES[@]}" || return 1
+  if [ ! -f "$PITA_SANITIZE_BUILD/build.ninja" ]; then
+    cmake -S "$PITA_ROOT" -B "$PITA_SANITIZE_BUILD" -G Ninja \
+      -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+      -DPITA_SANITIZE=ON -DPITA_FUZZ=ON -DPITA_BUILD_BENCHMARKS=OFF >/dev/null || return 1
+  fi
+  # shellcheck source=/dev/null
+  source "$PITA_SANITIZE_BUILD/sanitizer-env.sh" || return 1
+  cmake --build "$PITA_SANITIZE_BUILD" -j "$PITA_JOBS"
 }

@@ -361,7 +361,8 @@ LayerType read_layer_of(const JsonReader& reader, const Json& value, const std::
   const std::span<const std::string_view> known = found->fields;
   for (const auto& [key, member] : value.items()) {
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    const bool elsewhere = std::any_of(kinds.begin(), kinds.end(), [&](const auto& kind) {
+    // (key captured by name: clang before 16 cannot capture a structured binding)
+    const bool elsewhere = std::any_of(kinds.begin(), kinds.end(), [&key = key](const auto& kind) {
       return std::find(kind.fields.begin(), kind.fields.end(), key) != kind.fields.end();
     });
     if (!elsewhere) break;  // check_fields below reports it

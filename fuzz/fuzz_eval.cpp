@@ -1,0 +1,94 @@
+// A parsed scene -> what `pita eval` does with it (src/cli/eval.cpp), through
+// the library: the method override (--method, chosen by a hash of the input),
+// every panel's motion, the uniform frames (the scene's "samples") written as
+// JSON and CSV, and frames at extrapolated times (--t). Refusals are
+// SceneError and motion::NoMotion; a frame that is returned must be finite.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/methods.hpp"
+#include "fuzz_support.hpp"
+#include "motion/no_motion.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
+#include "scene/frames.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+using namespace pita;
+
+constexpr const char* kFile = "fuzz.json";
+
+void check_frames(const std::vector<scene::Frame>& frames, std::size_t count) {
+  PITA_FUZZ_CHECK(frames.size() == count);
+  for (const scene::Frame& f : frames) {
+    PITA_FUZZ_CHECK(std::isfinite(f.t) && std::isfinite(f.arrow.p.real()) &&
+                    std::isfinite(f.arrow.p.imag()) && std::isfinite(f.arrow.m) && std::isfinite(f.arrow.w));
+  }
+}
+
+void check_frames(const std::vector<scene::PoseFrame>& frames, std::size_t count) {
+  PITA_FUZZ_CHECK(frames.size() == count);
+  for (const scene::PoseFrame& f : frames) {
+    PITA_FUZZ_CHECK(std::isfinite(f.t) && f.pose.L.allFinite() && f.pose.b.allFinite());
+  }
+}
+
+// The frames at `times`, written as `pita eval` writes them.
+void evaluate(const scene::Scene& s, const motion::SceneMotion& motion, std::span<const double> times) {
+  if (s.kind == scene::SceneKind::poses) {
+    const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, times);
+    check_frames(frames, times.size());
+    PITA_FUZZ_CHECK(!scene::pose_frames_to_json(s.method_name, frames).empty());
+    PITA_FUZZ_CHECK(!scene::pose_frames_to_csv(frames).empty());
+  } else {
+    const std::vector<scene::Frame> frames = motion::sample_arrows(motion, times);
+    check_frames(frames, times.size());
+    PITA_FUZZ_CHECK(!scene::frames_to_json(s.method_name, frames).empty());
+    PITA_FUZZ_CHECK(!scene::frames_to_csv(frames).empty());
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text = fuzz::text_of(data, size);
+  try {
+    scene::Scene s = scene::parse_scene(text, kFile);
+    // --method: one input in four overrides the scene's method.
+    const std::uint64_t choice = fuzz::hash_of(text);
+    const std::span<const MethodEntry> methods = every_method();
+    if (choice % 4 == 0 && !methods.empty()) {
+      const MethodEntry& entry = methods[(choice / 4) % methods.size()];
+      s = entry.kind == MotionKind::poses ? scene::with_pose_method(std::move(s), entry.pose_method)
+                                          : scene::with_method(std::move(s), entry.method);
+    }
+    if (s.kind == scene::SceneKind::poses && s.poses.empty()) return 0;  // eval refuses it
+    motion::check_motions(s);
+    const motion::SceneMotion motion = motion::build_motion(s);
+    const std::vector<double> uniform =
+        motion::uniform_times(motion, s.samples.value_or(scene::kDefaultSamples));
+    PITA_FUZZ_CHECK(uniform.size() == static_cast<std::size_t>(s.samples.value_or(scene::kDefaultSamples)));
+    evaluate(s, motion, uniform);
+    // --t: times outside the knots extrapolate; a frame that is not finite is NoMotion.
+    const double first = motion.first(), span = motion.last() - motion.first();
+    for (const double x : {-1.0, -1e-3, 0.37, 1.0 + 1e-3, 3.0}) {
+      const double t = first + x * span;
+      try {
+        evaluate(s, motion, std::span<const double>(&t, 1));
+      } catch (const motion::NoMotion& error) {
+        PITA_FUZZ_CHECK(error.file() == kFile);
+      }
+    }
+  } catch (const scene::SceneError& error) {
+    PITA_FUZZ_CHECK(error.file() == kFile);
+  } catch (const motion::NoMotion& error) {
+    PITA_FUZZ_CHECK(error.file() == kFile);
+  }
+  return 0;
+}

@@ -1,0 +1,57 @@
+// Bytes -> the scene reader (scene::parse_scene: JSON text, checks, defaults,
+// panels, layers, timing). A scene it accepts must be as documented (README
+// "Scene format"); anything it refuses must be a SceneError naming the file.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "fuzz_support.hpp"
+#include "scene/scene.hpp"
+
+namespace {
+
+constexpr const char* kFile = "fuzz.json";
+
+bool finite(const pita::Keyframe& k) {
+  return std::isfinite(k.t) && std::isfinite(k.arrow.p.real()) && std::isfinite(k.arrow.p.imag()) &&
+         std::isfinite(k.arrow.m) && std::isfinite(k.arrow.w);
+}
+
+void check_keyframes(const std::vector<pita::Keyframe>& keyframes) {
+  for (std::size_t i = 0; i < keyframes.size(); ++i) {
+    PITA_FUZZ_CHECK(finite(keyframes[i]));
+    PITA_FUZZ_CHECK(keyframes[i].arrow.m > 0.0);
+    if (i > 0) PITA_FUZZ_CHECK(keyframes[i - 1].t < keyframes[i].t);
+  }
+}
+
+void check_poses(const std::vector<pita::TimedPose>& poses) {
+  PITA_FUZZ_CHECK(poses.size() <= static_cast<std::size_t>(pita::scene::kMaxPoses));
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    PITA_FUZZ_CHECK(std::isfinite(poses[i].t));
+    PITA_FUZZ_CHECK(poses[i].pose.L.allFinite() && poses[i].pose.b.allFinite());
+    if (i > 0) PITA_FUZZ_CHECK(poses[i - 1].t < poses[i].t);
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace pita;
+  try {
+    const scene::Scene s = scene::parse_scene(fuzz::text_of(data, size), kFile);
+    PITA_FUZZ_CHECK(s.path == kFile);
+    PITA_FUZZ_CHECK(!s.panels.empty() && s.panels.size() <= static_cast<std::size_t>(scene::kMaxPanels));
+    if (s.samples) PITA_FUZZ_CHECK(*s.samples >= scene::kMinSamples && *s.samples <= scene::kMaxSamples);
+    check_keyframes(s.keyframes);
+    check_poses(s.poses);
+    for (const scene::Panel& panel : s.panels) {
+      check_keyframes(panel.keyframes);
+      check_poses(panel.poses);
+    }
+  } catch (const scene::SceneError& error) {
+    PITA_FUZZ_CHECK(error.file() == kFile);  // every refusal names the file
+  }
+  return 0;
+}

@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""Writes the seed corpus of every fuzz target into OUT_DIR/<target>/ (scripts/fuzz.sh;
+nothing of it is kept in git): the scenes of scenes/ and tests/data/bad/ for the scene
+targets, trimmed copies of the golden data files golden/*/*.data.json (a few panels,
+items and points each: the structure without the bulk), and affinities of every EAR case.
+The regression inputs of tests/data/fuzz/<target>/ are a corpus of their own.
+
+    fuzz/make_seeds.py OUT_DIR
+"""
+import json
+import shutil
+import struct
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SCENE_TARGETS = ["fuzz_scene_reader", "fuzz_eval", "fuzz_render"]
+
+
+def scene_seeds(out):
+    files = sorted(ROOT.glob("scenes/*.json")) + sorted(ROOT.glob("tests/data/bad/*.json"))
+    for target in SCENE_TARGETS:
+        folder = out / target
+        folder.mkdir(parents=True, exist_ok=True)
+        for f in files:
+            prefix = "scene-" if f.parent.name == "scenes" else "bad-"
+            shutil.copyfile(f, folder / (prefix + f.name))
+
+
+def trimmed(value, depth=0):
+    """The first few elements of every array: a panel or two, a few items, a few points."""
+    keep = 2 if depth < 2 else 4
+    if isinstance(value, list):
+        return [trimmed(v, depth + 1) for v in value[:keep]]
+    if isinstance(value, dict):
+        return {k: trimmed(v, depth + 1) for k, v in value.items()}
+    return value
+
+
+def golden_seeds(out):
+    folder = out / "fuzz_golden_data"
+    folder.mkdir(parents=True, exist_ok=True)
+    for f in sorted(ROOT.glob("golden/*/*.data.json")):
+        data = json.loads(f.read_text())
+        (folder / f.name).write_text(json.dumps(trimmed(data)) + "\n")
+
+
+def affine_seeds(out):
+    """mode 1 (a grid of multiples of 1/64, fuzz_affine_power.cpp): L, b, t."""
+    folder = out / "fuzz_affine_power"
+    folder.mkdir(parents=True, exist_ok=True)
+    cases = {
+        "identity": [1, 0, 0, 1], "g1-rotation": [0, -1, 1, 0], "g1-near-half-turn": [-1, -0.015625, 0.015625, -1],
+        "g2-stretch": [4, 0, 0, 0.25], "g2-jordan": [2, 1, 0, 2], "s1-shear": [1, 3, 0, 1],
+        "s1-one-direction": [1, 0, 0, 3], "s2-half-turn": [-0.5, 0, 0, -0.5], "g3-negative": [-1, 0, 0, -3],
+        "g3-jordan": [-2, 1, 0, -2], "mirror": [1, 0, 0, -1], "singular": [1, 2, 2, 4],
+    }
+    for name, L in cases.items():
+        for t in (0.5, -2.0, 3.25):
+            values = L + [1.5, -2.0, t]
+            data = bytes([1, 100]) + b"".join(struct.pack(">h", round(v * 64)) for v in values)
+            (folder / f"{name}-t{t}.bin").write_bytes(data)
+    # mode 2 at 10^+-200 and mode 0 (raw doubles), a NaN among them.
+    for exponent in (0, 200):
+        values = [0.5, -1.25, 1.25, 0.5, 1, 2, 0.5]
+        data = bytes([2, exponent]) + b"".join(struct.pack(">h", round(v * 64)) for v in values)
+        (folder / f"scaled-{exponent}.bin").write_bytes(data)
+    raw = [1e200, -3e199, 2e199, 1e200, 1.0, float("nan"), 0.5]
+    (folder / "raw.bin").write_bytes(bytes([0, 0]) + b"".join(struct.pack("<d", v) for v in raw))
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    if out.exists():
+        shutil.rmtree(out)
+    scene_seeds(out)
+    golden_seeds(out)
+    affine_seeds(out)
+
+
+if __name__ == "__main__":
+    main()
