@@ -263,7 +263,8 @@ ExitCode run_eval(const EvalOptions& options) {
     } else {
       const std::vector<scene::Frame> frames = motion::sample_arrows(motion, at);
       text = options.format == "csv" ? scene::frames_to_csv(frames)
-                                     : scene::frames_to_json(scene.method_name, frames);
+                                     : scene::frames_to_json(scene.method_name, frames,
+                                                             motion.chain() ? info(*motion.chain()).name : "");
     }
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
       std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno)

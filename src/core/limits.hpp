@@ -178,4 +178,10 @@ inline constexpr int kArcLengthMaxCells = 1 << 14;
 // time, and the scene is refused.
 inline constexpr double kArcLengthZero = 1e-10;
 
+// Keyframe tracks (core/chains/chain.hpp): Neville's recursion costs
+// (n - 2)(n - 3)/2 steady blends per frame and, like every global polynomial
+// interpolation, swings ever wider as n grows; past this many keyframes use
+// the local "blend" chain.
+inline constexpr int kMaxNevilleKeyframes = 64;
+
 }  // namespace pita::limits

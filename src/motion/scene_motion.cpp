@@ -38,8 +38,19 @@ Point tracked(const Arrow& frame, scene::TrackedPoint point) {
 std::string method_label(const scene::Scene& scene, const scene::Panel& panel) {
   if (scene.kind == scene::SceneKind::poses) return std::string(info(panel.pose_method).id);
   const MethodInfo& about = info(panel.method);
-  if (about.mnemonic.empty() || about.mnemonic == about.id) return std::string(about.id);
-  return fmt::format("{} ({})", about.id, about.mnemonic);
+  std::string label = about.mnemonic.empty() || about.mnemonic == about.id
+                          ? std::string(about.id)
+                          : fmt::format("{} ({})", about.id, about.mnemonic);
+  if (const std::optional<Chain> chain = chain_of(panel)) label += fmt::format(", {} chain", info(*chain).name);
+  return label;
+}
+
+std::optional<Chain> chain_of(const scene::Panel& panel) {
+  if (panel.chain) return panel.chain;
+  if (panel.keyframes.size() > static_cast<std::size_t>(info(panel.method).keyframe_count)) {
+    return default_chain(panel.method);
+  }
+  return std::nullopt;
 }
 
 SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
@@ -66,7 +77,8 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   } else {
     motion.method_id_ = std::string(info(panel.method).id);
     try {
-      motion.arrows_ = make_motion(panel.method, panel.keyframes, panel.options);
+      motion.chain_ = chain_of(panel);
+      motion.arrows_ = make_motion(panel.method, panel.keyframes, panel.options, panel.chain);
     } catch (const MotionDomainError& error) {
       throw NoMotion(motion.file_, motion.pointer_,
                      fmt::format("method {} has no motion through these keyframes: {}", motion.label_, error.what()));

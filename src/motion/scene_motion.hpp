@@ -34,6 +34,9 @@ class SceneMotion {
   // The canonical method id ("P6", "SAM") and how messages name it ("P6 (La-LP)").
   const std::string& method_id() const { return method_id_; }
   const std::string& label() const { return label_; }
+  // Arrow scenes: the chain that extends the method past its own keyframe
+  // count (core/chains/chain.hpp), nullopt when the method is used alone.
+  std::optional<Chain> chain() const { return chain_; }
   // The knots (keyframe or pose times), strictly increasing.
   const std::vector<double>& knots() const { return knots_; }
   double first() const { return knots_.front(); }
@@ -72,6 +75,7 @@ class SceneMotion {
   scene::SceneKind kind_ = scene::SceneKind::arrows;
   std::string method_id_, label_;
   std::vector<double> knots_;
+  std::optional<Chain> chain_;
   std::shared_ptr<const Motion> arrows_;
   std::shared_ptr<const PoseMotion> poses_;
   TimeWarp warp_;
@@ -92,7 +96,11 @@ SceneMotion build_motion(const scene::Scene& scene);
 // NoMotion for the first that does not exist.
 void check_motions(const scene::Scene& scene);
 
-// "P6 (La-LP)", "SMA", "SAM": a method as messages name it.
+// The chain the panel's arrow motion uses: its "chain", else the method's
+// default when the panel has more keyframes than the method takes, else none.
+std::optional<Chain> chain_of(const scene::Panel& panel);
+
+// "P6 (La-LP)", "SMA", "SAM", "P6 (La-LP), blend chain": a method as messages name it.
 std::string method_label(const scene::Scene& scene, const scene::Panel& panel);
 
 }  // namespace pita::motion

@@ -14,9 +14,9 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 12> kSceneFields = {
-    "$schema", "description", "method", "keyframes", "samples", "options",
-    "title",   "canvas",      "layers", "panels",    "golden",  "timing"};
+constexpr std::array<std::string_view, 13> kSceneFields = {
+    "$schema", "description", "method", "keyframes", "chain",  "samples", "options",
+    "title",   "canvas",      "layers", "panels",    "golden", "timing"};
 }  // namespace
 
 Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
@@ -41,6 +41,10 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   const Json* keyframes = JsonReader::member(document, "keyframes");
   if (keyframes == nullptr) reader.fail("/keyframes", "missing required field (an array of keyframes)");
   scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method);
+  if (const Json* chain = JsonReader::member(document, "chain")) {
+    scene.chain = reader.chain(*chain, "/chain");
+    reader.check_chain(scene.method, scene.chain, scene.keyframes.size(), "/chain");
+  }
 
   if (const Json* samples = JsonReader::member(document, "samples")) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);

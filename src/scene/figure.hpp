@@ -228,6 +228,7 @@ struct Panel {
   std::string method_name;             // canonical id, "P6"
   MethodOptions options;
   std::vector<Keyframe> keyframes;
+  std::optional<Chain> chain;          // the scene's unless the panel gives "chain"
   int samples = 9;
   // Where `samples` came from: "/panels/2/samples", the scene's "/samples",
   // or "" for the default (what the render budget's messages name).

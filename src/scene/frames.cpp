@@ -28,11 +28,13 @@ std::string json_point(Point point) {
 
 }  // namespace
 
-std::string frames_to_json(std::string_view method_id, std::span<const Frame> frames) {
+std::string frames_to_json(std::string_view method_id, std::span<const Frame> frames, std::string_view chain) {
   // Written by hand around nlohmann's scalars so that keys keep this order and
   // each frame gets a line of its own (nlohmann prints either one line or one
   // value per line).
-  std::string text = "{\"method\": " + Json(std::string(method_id)).dump() + ", \"frames\": [";
+  std::string text = "{\"method\": " + Json(std::string(method_id)).dump();
+  if (!chain.empty()) text += ", \"chain\": " + Json(std::string(chain)).dump();
+  text += ", \"frames\": [";
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const Frame& frame = frames[i];
     require_finite(frame);

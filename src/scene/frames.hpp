@@ -24,7 +24,7 @@ struct Frame {
 // One frame per line, keys in that order, every number in the shortest form
 // that reads back to the same double. Ends with a newline. Throws
 // std::invalid_argument if a frame is not finite (JSON has no NaN or inf).
-std::string frames_to_json(std::string_view method_id, std::span<const Frame> frames);
+std::string frames_to_json(std::string_view method_id, std::span<const Frame> frames, std::string_view chain = "");
 
 // The header "t,px,py,m,w,qx,qy", then one line per frame, numbers written
 // with "{:.17g}" (17 significant digits read back exactly). Throws

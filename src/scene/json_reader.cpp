@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/scene.hpp"
@@ -155,8 +156,8 @@ std::string keyframe_count_reason(Method method, std::size_t count) {
   if (!about.mnemonic.empty() && about.mnemonic != about.id) {
     name += fmt::format(" ({})", about.mnemonic);
   }
-  return fmt::format("method {} takes exactly {} keyframes (got {})", name, about.keyframe_count,
-                     count);
+  return fmt::format("method {} takes at least {} keyframes (got {}); more are chained (\"chain\")", name,
+                     about.keyframe_count, count);
 }
 
 // ---------------------------------------------------------------- reader
@@ -279,6 +280,31 @@ void JsonReader::choice_failed(const Json& value, const std::string& pointer,
   fail(pointer, "must be " + quoted_choices(names) + " (got " + value_text(value) + ")");
 }
 
+Chain JsonReader::chain(const Json& value, const std::string& pointer) const {
+  if (value.is_string()) {
+    if (const ChainInfo* found = find_chain(value.get<std::string>())) return found->chain;
+  }
+  std::vector<std::string_view> names;
+  for (const ChainInfo& about : all_chains()) names.push_back(about.name);
+  choice_failed(value, pointer, names);
+}
+
+void JsonReader::check_chain(Method method, std::optional<Chain> chain, std::size_t count,
+                             const std::string& pointer) const {
+  if (!chain) return;
+  if (*chain == Chain::blend && info(method).keyframe_count != 3) {
+    fail(pointer, fmt::format("chain \"blend\" blends a method through three keyframes, and {} interpolates "
+                              "two: use \"spiral\", \"bezier-spiral\" or \"neville\", or method P9 (an SMA "
+                              "of SMAs) for the blend of consecutive spirals",
+                              info(method).id));
+  }
+  if (*chain == Chain::neville && count > static_cast<std::size_t>(limits::kMaxNevilleKeyframes)) {
+    fail(pointer, fmt::format("chain \"neville\" takes at most {} keyframes (got {}): it is global, so its "
+                              "cost per frame grows as n^2; use \"blend\", which is local",
+                              limits::kMaxNevilleKeyframes, count));
+  }
+}
+
 MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
                                   MethodOptions base) const {
   if (!value.is_object()) fail(pointer, "must be an object (got " + value_text(value) + ")");
@@ -300,8 +326,11 @@ std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string
   if (!value.is_array()) {
     fail(pointer, "must be an array of keyframes (got " + value_text(value) + ")");
   }
-  if (value.size() != static_cast<std::size_t>(info(method).keyframe_count)) {
+  if (value.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
     fail(pointer, keyframe_count_reason(method, value.size()));
+  }
+  if (value.size() > static_cast<std::size_t>(kMaxKeyframes)) {
+    fail(pointer, fmt::format("at most {} keyframes (got {})", kMaxKeyframes, value.size()));
   }
   std::vector<Keyframe> result;
   for (std::size_t i = 0; i < value.size(); ++i) {

@@ -109,7 +109,15 @@ class JsonReader {
   // "options": the fields given replace those of `base`.
   MethodOptions options(const Json& value, const std::string& pointer, MethodOptions base) const;
 
-  // "keyframes": as many as `method` takes, knots strictly increasing.
+  // "chain": one of core/chains/chain.hpp's names.
+  Chain chain(const Json& value, const std::string& pointer) const;
+  // Refuses (at `pointer`, the "chain" field or the keyframes) a chain that
+  // cannot extend `method` over `count` keyframes: "blend" on the SMA,
+  // "neville" beyond limits::kMaxNevilleKeyframes.
+  void check_chain(Method method, std::optional<Chain> chain, std::size_t count, const std::string& pointer) const;
+
+  // "keyframes": at least as many as `method` takes (a track of more is
+  // chained), at most kMaxKeyframes, knots strictly increasing.
   std::vector<Keyframe> keyframes(const Json& value, const std::string& pointer,
                                   Method method) const;
 

@@ -37,6 +37,9 @@ inline constexpr double kMaxWinding = 1e6;
 // Pose scenes: entries of matrices and coordinates within kMaxKeyframeValue;
 // at most this many poses.
 inline constexpr int kMaxPoses = 1000;
+// Arrow scenes: keyframes of a track (the chains of core/chains/chain.hpp;
+// "neville" takes at most limits::kMaxNevilleKeyframes of them).
+inline constexpr int kMaxKeyframes = 1000;
 
 // ---------------------------------------------------------------- figures
 

@@ -16,8 +16,8 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 7> kPanelFields = {
-    "method", "options", "keyframes", "title", "samples", "layers", "timing"};
+constexpr std::array<std::string_view, 8> kPanelFields = {
+    "method", "options", "keyframes", "chain", "title", "samples", "layers", "timing"};
 constexpr std::array<std::string_view, 8> kPosePanelFields = {
     "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
 
@@ -40,7 +40,7 @@ std::string method_title(Method method) {
 // The panel draws the scene's keyframes with `method`, which must take as many.
 void set_method(const JsonReader& reader, Panel& panel, Method method, const std::string& pointer,
                 const Scene& scene) {
-  if (scene.keyframes.size() != static_cast<std::size_t>(info(method).keyframe_count)) {
+  if (scene.keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
     reader.fail(pointer, keyframe_count_reason(method, scene.keyframes.size()) +
                       " from the scene; give the panel its own \"keyframes\"");
   }
@@ -55,6 +55,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
   Panel panel = scene_panel(scene, pointer);
   if (value.is_string()) {
     set_method(reader, panel, reader.method(value, pointer), pointer, scene);
+    reader.check_chain(panel.method, panel.chain, panel.keyframes.size(), pointer);
     panel.motion_pointer = pointer;
     return panel;
   }
@@ -82,6 +83,19 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     panel.motion_pointer = pointer + "/keyframes";
   } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
     panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
+  }
+  if (const Json* chain = JsonReader::member(value, "chain")) {
+    panel.chain = reader.chain(*chain, pointer + "/chain");
+  }
+  // The panel's method, chain and keyframes together (any of them may be the
+  // scene's): the pointer names the panel's own field when it has one.
+  {
+    const Json* chain = JsonReader::member(value, "chain");
+    const std::string at = chain != nullptr                            ? pointer + "/chain"
+                           : JsonReader::member(value, "method") != nullptr ? pointer + "/method"
+                           : keyframes != nullptr                      ? pointer + "/keyframes"
+                                                                       : pointer;
+    reader.check_chain(panel.method, panel.chain, panel.keyframes.size(), at);
   }
   if (const Json* title = JsonReader::member(value, "title")) {
     panel.title = reader.string(*title, pointer + "/title");

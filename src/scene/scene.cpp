@@ -40,6 +40,7 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.method_name = scene.method_name;
   panel.options = scene.options;
   panel.keyframes = scene.keyframes;
+  panel.chain = scene.chain;
   panel.pose_method = scene.pose_method;
   panel.poses = scene.poses;
   panel.shapes = scene.shapes;
@@ -91,9 +92,11 @@ Scene with_method(Scene scene, Method method) {
                                  info(method).id, method_ids(MotionKind::poses)));
   }
   const MethodInfo& about = info(method);
-  if (scene.keyframes.size() != static_cast<std::size_t>(about.keyframe_count)) {
+  if (scene.keyframes.size() < static_cast<std::size_t>(about.keyframe_count)) {
     throw SceneError(scene.path, "/keyframes", keyframe_count_reason(method, scene.keyframes.size()));
   }
+  const JsonReader reader(scene.path);
+  reader.check_chain(method, scene.chain, scene.keyframes.size(), "/chain");
   scene.method = method;
   scene.method_name = std::string(about.id);
   // The panel that is the scene itself follows it; panels of their own keep theirs.

@@ -34,7 +34,11 @@ struct Scene {
   std::string method_name;    // canonical id of the method, "P6"
   Method method = Method::P6;
   MethodOptions options;      // every field set (defaults applied)
-  std::vector<Keyframe> keyframes;  // as many as the method takes, knots strictly increasing
+  std::vector<Keyframe> keyframes;  // at least as many as the method takes, knots strictly increasing
+  // "chain": how a track of more keyframes than the method takes is built
+  // (core/chains/chain.hpp); unset: default_chain(method) when there are
+  // more, the method itself when there are as many.
+  std::optional<Chain> chain;
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
   Timing timing;                    // "timing": how scene time runs through the motion
 
@@ -110,8 +114,8 @@ Scene parse_scene(std::string_view text, std::string source_name);
 Method resolve_method(std::string_view name);
 
 // The scene with its method replaced by `method` (command-line override).
-// Throws SceneError at /keyframes when the method takes another number of
-// keyframes.
+// Throws SceneError at /keyframes when the method takes more keyframes than
+// the scene has, and at /chain when the scene's chain cannot extend it.
 Scene with_method(Scene scene, Method method);
 
 // "no SAM exists between these poses: ... (poses 0 and 1, method SAM)": the

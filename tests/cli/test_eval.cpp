@@ -165,10 +165,20 @@ TEST_F(Eval, UnknownMethodOptionSuggests) {
 }
 
 TEST_F(Eval, MethodOverrideMustFitTheKeyframeCount) {
-  const RunResult result = run({"eval", "scene.json", "--method", "SMA"});
+  dir.write("two.json", R"({"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 1, "p": [1, 0], "m": 1, "w": 0}]})");
+  const RunResult result = run({"eval", "two.json", "--method", "P6"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err, "pita: scene.json: /keyframes: method SMA takes exactly 2 keyframes (got 3)\n");
+  EXPECT_EQ(result.err,
+            "pita: two.json: /keyframes: method P6 (La-LP) takes at least 3 keyframes (got 2); more are chained "
+            "(\"chain\")\n");
+}
+
+TEST_F(Eval, MethodOverrideOnThreeKeyframesWithSmaIsASpiralChain) {
+  const RunResult result = run({"eval", "scene.json", "--method", "SMA", "--format", "json"});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find(R"("method": "SMA", "chain": "spiral")"), std::string::npos) << result.out;
 }
 
 TEST_F(Eval, SamplesOutOfRange) {

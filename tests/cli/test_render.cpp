@@ -114,7 +114,7 @@ TEST(Render, BadFigureFieldsWriteNothing) {
       {R"("layers": [{"type": "patern"}])", "/layers/0/type"},
       {R"("layers": [{"type": "banner"}])", "/layers/0/text"},
       {R"("layers": [{"type": "pattern", "color": "#12"}])", "/layers/0/color"},
-      {R"("panels": ["P7", "SMA"])", "/panels/1"},
+      {R"("chain": "blend", "panels": ["P7", "SMA"])", "/panels/1"},
       {R"("layers": [{"type": "stroke", "samples": 1}])", "/layers/0/samples"},
   };
   for (const auto& [field, pointer] : cases) {

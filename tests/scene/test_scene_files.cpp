@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/chains/chain.hpp"
+
 #include "core/pitas/registry.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
@@ -64,9 +66,13 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& definitions = document.at("definitions");
   const nlohmann::json& schema = definitions.at("arrowScene");
   EXPECT_EQ(keys_of(schema.at("properties")),
-            (std::set<std::string>{"$schema", "description", "method", "keyframes", "samples",
+            (std::set<std::string>{"$schema", "description", "method", "keyframes", "chain", "samples",
                                    "options", "title", "canvas", "layers", "panels", "golden",
                                    "timing"}));
+  // The chains are core/chains/chain.hpp's table, in its order.
+  nlohmann::json chains = nlohmann::json::array();
+  for (const ChainInfo& about : all_chains()) chains.push_back(std::string(about.name));
+  EXPECT_EQ(definitions.at("chain").at("enum"), chains);
   EXPECT_EQ(schema.at("required"), (nlohmann::json{"method", "keyframes"}));
   const nlohmann::json& keyframe = definitions.at("keyframe");
   EXPECT_EQ(keys_of(keyframe.at("properties")),
@@ -111,7 +117,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(definitions.at("layer").at("properties").at("type").at("enum"), nlohmann::json(types));
   const nlohmann::json& panel = definitions.at("panel").at("else");
   EXPECT_EQ(keys_of(panel.at("properties")),
-            (std::set<std::string>{"method", "options", "keyframes", "title", "samples", "layers",
+            (std::set<std::string>{"method", "options", "keyframes", "chain", "title", "samples", "layers",
                                    "timing"}));
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }

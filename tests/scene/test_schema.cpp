@@ -142,6 +142,10 @@ std::string many(const std::string& item, int count) {
 
 const std::vector<BadScene>& bad_scenes() {
   static const std::vector<BadScene> corpus = {
+      // Keyframe tracks.
+      {"unknown chain", p6_with(R"(, "chain": "cubic")"), "/chain"},
+      {"blend chain on the SMA", R"({"method": "SMA", "chain": "blend", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+        {"t": 1, "p": [1, 0], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]})", "/chain"},
       // Pose scenes (SAM paper).
       {"unknown pose scene field", sam_with(R"(, "keyframe": [])"), "/keyframe"},
       {"pose matrix 3x3", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
@@ -243,10 +247,10 @@ const std::vector<BadScene>& bad_scenes() {
        p6_with(R"(, "panels": [{"keyframes": )" +
                three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": -1, "w": 0})") + "}]"),
        "/panels/0/keyframes/1/m"},
-      {"panel SMA given three keyframes",
-       p6_with(R"(, "panels": [{"method": "SMA", "keyframes": )" +
+      {"panel SMA given a blend chain",
+       p6_with(R"(, "panels": [{"method": "SMA", "chain": "blend", "keyframes": )" +
                three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
-       "/panels/0/keyframes"},
+       "/panels/0/chain"},
       // Colors.
       {"hex color of 5 digits", p6_with(R"(, "canvas": {"background": "#12345"})"),
        "/canvas/background"},
@@ -293,15 +297,24 @@ const std::vector<BadScene>& parser_only_scenes() {
        "/layers/0/range/1"},
       {"view min not below max", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 0]}})"),
        "/canvas/view/max/1"},
-      {"panel method that does not take the scene's keyframes", p6_with(R"(, "panels": ["SMA"])"),
+      {"panel method that the scene's chain cannot extend", p6_with(R"(, "chain": "blend", "panels": ["SMA"])"),
        "/panels/0"},
-      {"panel object method that does not take the scene's keyframes",
-       p6_with(R"(, "panels": [{"method": "SMA", "title": "steady"}])"), "/panels/0/method"},
-      {"panel keyframes that do not fit the scene's method",
-       R"({"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-         {"t": 1, "p": [1, 0], "m": 1, "w": 0}], "panels": [{"keyframes": )" +
-           three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0})") + "}]}",
+      {"panel object method that the scene's chain cannot extend",
+       p6_with(R"(, "chain": "blend", "panels": [{"method": "SMA", "title": "steady"}])"), "/panels/0/method"},
+      {"panel keyframes fewer than the scene's method takes",
+       p6_with(R"(, "panels": [{"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+         {"t": 1, "p": [1, 0], "m": 1, "w": 0}]}])"),
        "/panels/0/keyframes"},
+      {"neville chain over more keyframes than it takes", R"({"method": "P6", "chain": "neville", "keyframes": [)" +
+           [] {
+             std::string keys;
+             for (int i = 0; i < 65; ++i) {
+               keys += (i > 0 ? ", " : "") + std::string(R"({"t": )") + std::to_string(i) +
+                       R"(, "p": [0, 0], "m": 1, "w": 0})";
+             }
+             return keys;
+           }() + "]}",
+       "/chain"},
       {"panel knots not increasing",
        p6_with(R"(, "panels": [{"keyframes": )" +
                three_keyframes(R"({"t": 1, "p": [1, 1], "m": 1, "w": 0})") + "}]"),

@@ -81,11 +81,13 @@ std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const Metho
   return about.make(k, o);
 }
 
+Chain default_chain(Method m) { return info(m).keyframe_count == 2 ? Chain::spiral : Chain::blend; }
+
 std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
-                                    const MethodOptions& options) {
+                                    const MethodOptions& options, std::optional<Chain> chain) {
   const MethodInfo& mi = info(m);
-  if (static_cast<int>(keyframes.size()) != mi.keyframe_count) {
-    throw std::invalid_argument(std::string(mi.id) + " takes " +
+  if (static_cast<int>(keyframes.size()) < mi.keyframe_count) {
+    throw std::invalid_argument(std::string(mi.id) + " takes at least " +
                                 std::to_string(mi.keyframe_count) + " keyframes, got " +
                                 std::to_string(keyframes.size()));
   }
@@ -96,14 +98,18 @@ std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframe
                                   " must have finite values and a magnitude > 0");
     }
     if (i > 0 && !(keyframes[i - 1].t < k.t)) {
-      throw std::invalid_argument("knots must be strictly increasing");
+      throw std::invalid_argument("knots must be strictly increasing (keyframe " + std::to_string(i) + ")");
     }
   }
-  if (m == Method::SMA) {
-    return std::make_unique<SteadyMorphMotion>(keyframes[0], keyframes[1], options.path_mean,
-                                               options.magnitude_mean);
-  }
-  return make_pita(m, KeyframeTriple{keyframes[0], keyframes[1], keyframes[2]}, options);
+  const WindowMotion sma = [&options](std::span<const Keyframe> pair) -> std::unique_ptr<Motion> {
+    return std::make_unique<SteadyMorphMotion>(pair[0], pair[1], options.path_mean, options.magnitude_mean);
+  };
+  const WindowMotion window = [m, &options, &sma](std::span<const Keyframe> keys) -> std::unique_ptr<Motion> {
+    if (keys.size() == 2) return sma(keys);
+    return make_pita(m, KeyframeTriple{keys[0], keys[1], keys[2]}, options);
+  };
+  if (!chain && static_cast<int>(keyframes.size()) == mi.keyframe_count) return window(keyframes);
+  return make_chain(chain.value_or(default_chain(m)), keyframes, window, mi.keyframe_count, sma, mi.winding_aware);
 }
 
 }  // namespace pita

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/chains/chain.hpp"
 #include "core/keyframe.hpp"
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/motion.hpp"
@@ -55,11 +56,20 @@ const MethodInfo& info(Method m);
 // Names ("P6", "la-lp", "6", ...) are resolved by core/methods.hpp, the one
 // registry of both kinds of method.
 
-// Builds the motion through the keyframes. Throws std::invalid_argument when
-// the number of keyframes is wrong or the knots are not strictly increasing,
-// and MotionDomainError when the motion does not exist for these keyframes.
+// Builds the motion through the keyframes: the method itself when there are
+// as many as it takes (keyframe_count) and no chain is asked for, else the
+// chain through all of them (core/chains/chain.hpp; default_chain when
+// `chain` is unset). Throws std::invalid_argument when there are fewer
+// keyframes than the method takes, a keyframe is not finite or has no
+// magnitude, the knots are not strictly increasing, or the chain cannot be
+// built; MotionDomainError when the method does not exist for some window.
 std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
-                                    const MethodOptions& options = {});
+                                    const MethodOptions& options = {},
+                                    std::optional<Chain> chain = std::nullopt);
+
+// The chain a track of more keyframes than the method takes uses unless told:
+// "spiral" for the SMA, "blend" for the three-keyframe methods.
+Chain default_chain(Method m);
 
 // The PITA through three timed keyframes with any distinct knots, unchecked
 // (the order-independence property, Eq. 42, swaps knots). Not for SMA.

@@ -42,9 +42,10 @@ TEST(Registry, MakeMotionChecksCountKnotsAndValues) {
     make_motion(Method::P6, two);
     FAIL() << "P6 built from two keyframes";
   } catch (const std::invalid_argument& error) {
-    EXPECT_STREQ(error.what(), "P6 takes 3 keyframes, got 2");
+    EXPECT_STREQ(error.what(), "P6 takes at least 3 keyframes, got 2");
   }
-  EXPECT_THROW(make_motion(Method::SMA, three), std::invalid_argument);
+  EXPECT_THROW(make_motion(Method::SMA, std::span(two).first(1)), std::invalid_argument);
+  EXPECT_NO_THROW(make_motion(Method::SMA, three));  // a spiral chain (core/chains/chain.hpp)
   EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {0.0, B}, {1.0, C}}),
                std::invalid_argument);
   EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {1.0, B}, {0.5, C}}),
