@@ -184,4 +184,18 @@ inline constexpr double kArcLengthZero = 1e-10;
 // the local "blend" chain.
 inline constexpr int kMaxNevilleKeyframes = 64;
 
+// ---------------------------------------------------------------- point curves
+// The Neville-type curves through n timed points (point_curves.hpp: the
+// uniform and centripetal Neville interpolations and the log-spiral blend of
+// PITA Sec. 7.6, Fig. 29; docs/paper-notes.md N34) evaluate a triangle of
+// n (n - 1) / 2 blends at every time, and the Neville polynomials have degree
+// n - 1. At most this many points: 2016 blends per evaluation, a bound on work
+// (a scene cannot make one frame cost more than that). It is not a promise of
+// accuracy: at evenly spaced parameters a polynomial of degree n - 1 amplifies
+// rounding of its points by up to the Lebesgue constant, about
+// 2^n / (e n ln n), which passes 1e7 (the curve then good to only 1e-9 of its
+// size) near 32 points; beyond that the polynomial curves are of no use, and
+// the limit only keeps them cheap.
+inline constexpr int kMaxNevillePoints = 64;
+
 }  // namespace pita::limits
