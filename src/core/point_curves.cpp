@@ -87,10 +87,16 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
     case PointCurve::pita: {
       if (!track) throw std::invalid_argument("pita needs an arrow track to build its curve from");
       // Eq. 48-49: X at knots t_0..t_{n-2}, Y at t_1..t_{n-1}, both through the
-      // zero-turn edge arrows e_i = p_i p_{i+1}.
+      // edge arrows e_i = p_i p_{i+1}. e_0 is the zero-turn arrow; each next
+      // edge turns from the previous one by the principal angle between them,
+      // so the windings depend on the shape only and a rotation of all the
+      // points rotates the curve (docs/paper-notes.md N34).
       std::vector<Keyframe> first, second;
+      Arrow previous;
       for (std::size_t i = 0; i + 1 < n; ++i) {
-        const Arrow edge = zero_turn_arrow(points_[i].p, points_[i + 1].p);
+        Arrow edge = zero_turn_arrow(points_[i].p, points_[i + 1].p);
+        if (i > 0) edge.w = previous.w + principal_angle(edge.w - previous.w);
+        previous = edge;
         first.push_back({points_[i].t, edge});
         second.push_back({points_[i + 1].t, edge});
       }

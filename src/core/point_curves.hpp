@@ -67,10 +67,10 @@ using ArrowTrackFactory = std::function<std::unique_ptr<Motion>(std::span<const 
 // through every point: at t_k (0 < k < n-1) X = e_k starts at p_k and
 // Y = e_{k-1} ends at p_k; at t_0, s = 0 and X = e_0 starts at p_0; at
 // t_{n-1}, s = 1 and Y = e_{n-2} ends at p_{n-1}. For n = 4 at knots 0, 1/3,
-// 2/3, 1 with a PITA P_x as the track it is Eq. 48-50 exactly. The windings of
-// the edge arrows are principal angles, so a winding-aware track sees a
-// rotation of the whole configuration that takes one edge across the
-// direction pi as a change of turns.
+// 2/3, 1 with a PITA P_x as the track it is Eq. 48-50 exactly. The first edge
+// is a zero-turn arrow and each next one turns from the previous by the
+// principal angle between them (in (-pi, pi]), so the windings depend on the
+// shape alone and the curve is similarity-invariant with the track.
 //
 // neville-uniform, neville-centripetal. Scene time maps to the curve
 // parameter piecewise linearly through (t_i, u_i), and beyond the end knots
