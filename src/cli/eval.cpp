@@ -256,7 +256,13 @@ ExitCode run_eval(const EvalOptions& options) {
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     const motion::SceneMotion motion = motion::build_motion(scene);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
-    if (scene.kind == scene::SceneKind::poses) {
+    if (motion.has_points()) {
+      std::vector<scene::PointFrame> frames;
+      for (const double t : at) frames.push_back({t, motion.point_at(t)});
+      text = options.format == "csv" ? scene::point_frames_to_csv(frames)
+                                     : scene::point_frames_to_json(scene.method_name, frames,
+                                                                   motion.chain() ? info(*motion.chain()).name : "");
+    } else if (scene.kind == scene::SceneKind::poses) {
       const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, at);
       text = options.format == "csv" ? scene::pose_frames_to_csv(frames)
                                      : scene::pose_frames_to_json(scene.method_name, frames);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <functional>
+#include <span>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -47,10 +48,32 @@ std::string method_label(const scene::Scene& scene, const scene::Panel& panel) {
 
 std::optional<Chain> chain_of(const scene::Panel& panel) {
   if (panel.chain) return panel.chain;
-  if (panel.keyframes.size() > static_cast<std::size_t>(info(panel.method).keyframe_count)) {
+  // A curve through n points chains its n - 1 edge arrows.
+  const std::size_t count = panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1;
+  if (count > static_cast<std::size_t>(info(panel.method).keyframe_count)) {
     return default_chain(panel.method);
   }
   return std::nullopt;
+}
+
+PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& panel, PointCurve curve) {
+  const std::string label = method_label(scene, panel);
+  const ArrowTrackFactory track = [&panel](std::span<const Keyframe> keys) {
+    return make_motion(panel.method, keys, panel.options, panel.chain);
+  };
+  try {
+    return PointCurveMotion(curve, panel.points, track);
+  } catch (const MotionDomainError& error) {
+    throw NoMotion(scene.path, panel.motion_pointer,
+                   fmt::format("method {} has no motion through the edges of these points: {}", label, error.what()));
+  } catch (const std::invalid_argument& error) {
+    // The core's messages start with the curve's name; say it once.
+    std::string_view reason = error.what();
+    const std::string prefix = std::string(info(curve).name) + ": ";
+    if (reason.starts_with(prefix)) reason.remove_prefix(prefix.size());
+    throw NoMotion(scene.path, panel.motion_pointer,
+                   fmt::format("the {} curve cannot pass through these points: {}", info(curve).name, reason));
+  }
 }
 
 SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
@@ -61,6 +84,17 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   const bool poses = scene.kind == scene::SceneKind::poses;
   motion.pointer_ = panel.motion_pointer;
 
+  if (!poses && !panel.points.empty()) {
+    motion.method_id_ = std::string(info(panel.method).id);
+    motion.chain_ = chain_of(panel);
+    if (!panel.timing.is_identity()) {
+      throw NoMotion(motion.file_, panel.timing.pointer,
+                     "timing paces keyframes and poses; a panel of \"points\" has none");
+    }
+    motion.points_ = std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita));
+    for (const TimedPoint& point : panel.points) motion.knots_.push_back(point.t);
+    return motion;
+  }
   if (poses) {
     motion.method_id_ = std::string(info(panel.pose_method).id);
     if (panel.poses.empty()) {
@@ -127,7 +161,27 @@ void SceneMotion::undefined(double t, const std::exception& error) const {
   throw NoMotion(file_, pointer_, fmt::format("method {} is undefined at t = {}: {}", label_, t, error.what()));
 }
 
+Point SceneMotion::point_at(double t) const {
+  Point point;
+  try {
+    point = points_->at(t);
+  } catch (const std::exception& error) {
+    undefined(t, error);
+  }
+  if (!std::isfinite(point.real()) || !std::isfinite(point.imag())) {
+    throw NoMotion(file_, pointer_,
+                   fmt::format("the curve of {} through these points has no finite point at t = {}: its numbers "
+                               "overflow double precision there (t too far outside the knots, or knots very uneven)",
+                               label_, t));
+  }
+  return point;
+}
+
 Arrow SceneMotion::arrow_at(double t) const {
+  if (!arrows_) {
+    throw NoMotion(file_, pointer_,
+                   "this panel has timed \"points\", not keyframes: draw it with a \"point-trajectory\" layer");
+  }
   Arrow arrow;
   try {
     arrow = arrows_->at(warp_(t));

@@ -21,6 +21,7 @@
 #include "core/affine2.hpp"
 #include "core/arrow.hpp"
 #include "core/pitas/motion.hpp"
+#include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
 #include "core/time_warp.hpp"
 #include "motion/no_motion.hpp"
@@ -34,6 +35,12 @@ class SceneMotion {
   // The canonical method id ("P6", "SAM") and how messages name it ("P6 (La-LP)").
   const std::string& method_id() const { return method_id_; }
   const std::string& label() const { return label_; }
+  // Arrow scenes of timed "points" (PITA Sec. 7.6): the PITA curve through
+  // them (Eq. 48-50 with the panel's method and chain) at scene time t.
+  // arrow_at throws NoMotion for them.
+  bool has_points() const { return static_cast<bool>(points_); }
+  Point point_at(double t) const;
+
   // Arrow scenes: the chain that extends the method past its own keyframe
   // count (core/chains/chain.hpp), nullopt when the method is used alone.
   std::optional<Chain> chain() const { return chain_; }
@@ -78,6 +85,7 @@ class SceneMotion {
   std::optional<Chain> chain_;
   std::shared_ptr<const Motion> arrows_;
   std::shared_ptr<const PoseMotion> poses_;
+  std::shared_ptr<const PointCurveMotion> points_;
   TimeWarp warp_;
   std::array<Point, 3> reference_{};  // poses: the reference triangle
   std::string file_, pointer_;
@@ -99,6 +107,11 @@ void check_motions(const scene::Scene& scene);
 // The chain the panel's arrow motion uses: its "chain", else the method's
 // default when the panel has more keyframes than the method takes, else none.
 std::optional<Chain> chain_of(const scene::Panel& panel);
+
+// The curve `curve` through the panel's timed points; for PointCurve::pita the
+// tracks are the panel's method, options and chain (docs/paper-notes.md N34).
+// Throws NoMotion (at the panel's points) when the curve cannot be built.
+PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& panel, PointCurve curve);
 
 // "P6 (La-LP)", "SMA", "SAM", "P6 (La-LP), blend chain": a method as messages name it.
 std::string method_label(const scene::Scene& scene, const scene::Panel& panel);

@@ -49,6 +49,10 @@ class LayerCost {
     add(layer_ + "/samples", fmt::format("{} points of a trajectory", l.samples),
         kShapeUnits + l.samples);
   }
+  void operator()(const scene::PointTrajectoryLayer& l) {
+    add(layer_ + "/samples", fmt::format("{} points of a point trajectory", l.samples),
+        kShapeUnits + l.samples + (l.dots ? static_cast<double>(panel_.points.size()) * kShapeUnits : 0.0));
+  }
   void operator()(const scene::LabelLayer& l) {
     add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
   }

@@ -19,8 +19,11 @@ namespace pita::render {
 namespace {
 
 
-// Names of the keyframes in legends, as the paper writes them.
-constexpr const char* kKeyframeNames[] = {"A", "B", "C"};
+// Names of the keyframes in legends, as the paper writes them (A, B, C, then
+// on through the alphabet for longer tracks).
+std::string keyframe_name(std::size_t i) {
+  return i < 26 ? std::string(1, static_cast<char>('A' + i)) : fmt::format("K{}", i);
+}
 
 class PanelBuilder {
  public:
@@ -32,6 +35,13 @@ class PanelBuilder {
     const std::vector<scene::Layer>& layers = own ? *panel_.layers : scene_.layers;
     for (std::size_t i = 0; i < layers.size(); ++i) {
       layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
+      const bool for_points = std::holds_alternative<scene::PointTrajectoryLayer>(layers[i]) ||
+                              std::holds_alternative<scene::LabelLayer>(layers[i]) ||
+                              std::holds_alternative<scene::LegendLayer>(layers[i]);
+      if (!panel_.points.empty() && !for_points) {
+        fail(layer_, "this layer draws a motion of keyframes, and the panel has timed \"points\": draw them "
+                     "with \"point-trajectory\" (labels and legends are fine too)");
+      }
       std::visit([this](const auto& layer) { add(layer); }, layers[i]);
     }
     return std::move(drawing_);
@@ -180,6 +190,51 @@ class PanelBuilder {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
   }
 
+  void add(const scene::PointTrajectoryLayer& layer) {
+    if (panel_.points.empty()) {
+      fail(layer_, "a point-trajectory draws a curve through timed \"points\"; this panel has keyframes");
+    }
+    const double from = layer.range ? layer.range->from : panel_.points.front().t;
+    const double to = layer.range ? layer.range->to : panel_.points.back().t;
+    std::vector<Point> path;
+    path.reserve(static_cast<std::size_t>(layer.samples));
+    if (layer.curve == PointCurve::pita) {
+      try {
+        for (const double t : motion::uniform_times(from, to, layer.samples)) path.push_back(motion_.point_at(t));
+      } catch (const motion::NoMotion& error) {
+        fail(layer_, error.reason());
+      }
+    } else {
+      std::optional<PointCurveMotion> curve;
+      try {
+        curve.emplace(motion::point_curve(scene_, panel_, layer.curve));
+      } catch (const motion::NoMotion& error) {
+        fail(layer_ + "/curve", error.reason());
+      }
+      for (const double t : motion::uniform_times(from, to, layer.samples)) {
+        const Point x = curve->at(t);
+        if (!std::isfinite(x.real()) || !std::isfinite(x.imag())) {
+          fail(layer_ + "/curve", fmt::format("the {} curve has no finite point at t = {} (its numbers overflow "
+                                              "there: knots very uneven, or t far outside them)",
+                                              info(layer.curve).name, t));
+        }
+        path.push_back(x);
+      }
+    }
+    push(-1, Polyline{std::move(path), false, layer.line});
+    if (!layer.dots) return;
+    // Dots at the timed points, sized by the points' spread.
+    Point low = panel_.points.front().p, high = low;
+    for (const TimedPoint& point : panel_.points) {
+      low = {std::min(low.real(), point.p.real()), std::min(low.imag(), point.p.imag())};
+      high = {std::max(high.real(), point.p.real()), std::max(high.imag(), point.p.imag())};
+    }
+    const double radius = 0.012 * std::max(std::abs(high - low), 1e-300);
+    for (std::size_t i = 0; i < panel_.points.size(); ++i) {
+      push(static_cast<int>(i), Circle{panel_.points[i].p, radius, layer.line, layer.line.color});
+    }
+  }
+
   void add(const scene::LegendLayer& layer) {
     Legend legend{layer.corner, layer.size, {}};
     scene::KeyframesLayer colors;  // the colours of the first keyframes layer, else the defaults
@@ -191,8 +246,13 @@ class PanelBuilder {
     }
     for (std::size_t i = 0; i < panel_.keyframes.size(); ++i) {
       legend.entries.push_back({colors.colors[i % colors.colors.size()],
-                                fmt::format("{}  t = {}", kKeyframeNames[i % 3],
-                                            panel_.keyframes[i].t)});
+                                fmt::format("{}  t = {}", keyframe_name(i), panel_.keyframes[i].t)});
+    }
+    // A panel of points: one entry per curve drawn, in its colour.
+    for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+      const auto* curve = std::get_if<scene::PointTrajectoryLayer>(&other);
+      if (curve == nullptr || curve->curve == PointCurve::pita) continue;
+      legend.entries.push_back({curve->line.color, std::string(info(curve->curve).name)});
     }
     const MethodInfo& about = info(panel_.method);
     legend.entries.push_back({Color{0.2, 0.2, 0.2, 1.0},

@@ -8,15 +8,49 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
+
 #include "scene/figure_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 13> kSceneFields = {
-    "$schema", "description", "method", "keyframes", "chain",  "samples", "options",
-    "title",   "canvas",      "layers", "panels",    "golden", "timing"};
+
+// Layers fit what the panel has: a panel of timed points draws
+// point-trajectory (and labels, legends); a panel of keyframes draws the rest.
+// The Neville-type curves take at most limits::kMaxNevillePoints points.
+void check_point_layers(const JsonReader& reader, const Scene& scene) {
+  for (const Panel& panel : scene.panels) {
+    const bool own = panel.layers.has_value();
+    const std::vector<Layer>& layers = own ? *panel.layers : scene.layers;
+    const std::string where = own ? panel.pointer : std::string();
+    const std::string in_panel = !own && !panel.pointer.empty() ? " (in the panel at " + panel.pointer + ")" : "";
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      const std::string at = where + "/layers/" + std::to_string(i);
+      const auto* curve = std::get_if<PointTrajectoryLayer>(&layers[i]);
+      const bool anywhere = std::holds_alternative<LabelLayer>(layers[i]) || std::holds_alternative<LegendLayer>(layers[i]);
+      if (panel.points.empty() && curve != nullptr) {
+        reader.fail(at + "/type", "a point-trajectory draws a curve through timed \"points\"; this panel has "
+                                  "keyframes" + in_panel);
+      }
+      if (!panel.points.empty() && curve == nullptr && !anywhere) {
+        reader.fail(at + "/type", "this layer draws a motion of keyframes, and the panel has timed \"points\": "
+                                  "draw them with \"point-trajectory\" (labels and legends are fine too)" + in_panel);
+      }
+      if (curve != nullptr && curve->curve != PointCurve::pita &&
+          panel.points.size() > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
+        reader.fail(at + "/curve", fmt::format("the {} curve takes at most {} points (got {}){}",
+                                               info(curve->curve).name, limits::kMaxNevillePoints,
+                                               panel.points.size(), in_panel));
+      }
+    }
+  }
+}
+
+constexpr std::array<std::string_view, 14> kSceneFields = {
+    "$schema", "description", "method", "keyframes", "points", "chain",  "samples",
+    "options", "title",       "canvas", "layers",    "panels", "golden", "timing"};
 }  // namespace
 
 Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
@@ -39,11 +73,25 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
 
   const Json* keyframes = JsonReader::member(document, "keyframes");
-  if (keyframes == nullptr) reader.fail("/keyframes", "missing required field (an array of keyframes)");
-  scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method);
+  const Json* points = JsonReader::member(document, "points");
+  if (keyframes != nullptr && points != nullptr) {
+    reader.fail("/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
+  }
+  if (keyframes == nullptr && points == nullptr) {
+    reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
+  }
+  if (keyframes != nullptr) scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method);
+  if (points != nullptr) {
+    scene.points = reader.points(*points, "/points");
+    if (JsonReader::member(document, "timing") != nullptr) {
+      reader.fail("/timing", "timing paces keyframes and poses; a scene of \"points\" has none");
+    }
+  }
+  // A curve through n points chains n - 1 edge arrows (docs/paper-notes.md N34).
+  const std::size_t track = points != nullptr ? scene.points.size() - 1 : scene.keyframes.size();
   if (const Json* chain = JsonReader::member(document, "chain")) {
     scene.chain = reader.chain(*chain, "/chain");
-    reader.check_chain(scene.method, scene.chain, scene.keyframes.size(), "/chain");
+    reader.check_chain(scene.method, scene.chain, track, "/chain");
   }
 
   if (const Json* samples = JsonReader::member(document, "samples")) {
@@ -62,6 +110,8 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
     scene.layers = detail::read_layers(reader, *layers, "/layers");
+  } else if (!scene.points.empty()) {
+    scene.layers = {PointTrajectoryLayer{}};
   } else {
     scene.layers = {PatternLayer{}, KeyframesLayer{}};
   }
@@ -71,6 +121,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     scene.panels = {scene_panel(scene, "")};
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
+  check_point_layers(reader, scene);
   return scene;
 }
 

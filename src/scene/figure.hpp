@@ -13,6 +13,7 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
+#include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
 #include "scene/limits.hpp"
 #include "scene/timing.hpp"
@@ -150,8 +151,20 @@ struct PlotLayer {
   bool marks = true;
 };
 
+// "point-trajectory": a curve through the panel's timed "points" (PITA Sec. 7.6,
+// Fig. 29): the PITA-based curve of Eq. 48-50 with the panel's method and
+// chain, or one of the curves it is compared with (core/point_curves.hpp).
+struct PointTrajectoryLayer {
+  PointCurve curve = PointCurve::pita;
+  int samples = 512;                   // [2, kMaxTrajectorySamples]
+  std::optional<TimeRange> range;      // default: first to last point's knot
+  LineStyle line{Color{0.1, 0.1, 0.1, 1.0}, 1.5, 1.0, {}};
+  bool dots = true;                    // a dot at each timed point
+};
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
-                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer>;
+                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
+                           PointTrajectoryLayer>;
 
 // ------------------------------------------------------------ pose scenes
 // Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
@@ -229,6 +242,9 @@ struct Panel {
   MethodOptions options;
   std::vector<Keyframe> keyframes;
   std::optional<Chain> chain;          // the scene's unless the panel gives "chain"
+  // "points": timed points instead of keyframes (PITA Sec. 7.6), at least 4;
+  // drawn by point-trajectory layers. Empty when the panel has keyframes.
+  std::vector<TimedPoint> points;
   int samples = 9;
   // Where `samples` came from: "/panels/2/samples", the scene's "/samples",
   // or "" for the default (what the render budget's messages name).

@@ -46,6 +46,8 @@ constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
 constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 
+constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
+    "type", "curve", "samples", "range", "color", "width", "opacity", "dash", "dots"};
 constexpr std::array<std::string_view, 9> kPlotFields = {
     "type", "box", "point", "samples", "color", "width", "opacity", "dash", "marks"};
 
@@ -217,6 +219,24 @@ TrajectoryLayer read_trajectory(const Fields& fields) {
   fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
   read_range(fields, layer.range);
   read_line(fields, layer.line);
+  return layer;
+}
+
+PointTrajectoryLayer read_point_trajectory(const Fields& fields) {
+  PointTrajectoryLayer layer;
+  if (const Json* curve = fields.get("curve")) {
+    const PointCurveInfo* found = curve->is_string() ? find_point_curve(curve->get<std::string>()) : nullptr;
+    if (found == nullptr) {
+      std::vector<std::string_view> names;
+      for (const PointCurveInfo& about : all_point_curves()) names.push_back(about.name);
+      fields.reader().fail(fields.at("curve"), "must be " + quoted_choices(names) + " (got " + value_text(*curve) + ")");
+    }
+    layer.curve = found->curve;
+  }
+  fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
+  read_range(fields, layer.range);
+  read_line(fields, layer.line);
+  fields.boolean("dots", layer.dots);
   return layer;
 }
 
@@ -526,7 +546,7 @@ PatchLayer read_patch(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 9> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 10> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -536,6 +556,8 @@ constexpr std::array<LayerKind<Layer>, 9> kArrowLayerKinds{{
     {"label", kLabelFields, [](const Fields& f) -> Layer { return read_label(f); }},
     {"legend", kLegendFields, [](const Fields& f) -> Layer { return read_legend(f); }},
     {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f); }},
+    {"point-trajectory", kPointTrajectoryFields,
+     [](const Fields& f) -> Layer { return read_point_trajectory(f); }},
 }};
 
 // The layer kinds of pose scenes.

@@ -63,6 +63,39 @@ std::string frames_to_csv(std::span<const Frame> frames) {
 
 namespace {
 
+void require_finite(const PointFrame& frame) {
+  if (!std::isfinite(frame.t) || !std::isfinite(frame.p.real()) || !std::isfinite(frame.p.imag())) {
+    throw std::invalid_argument(fmt::format("point at t = {} is not finite", frame.t));
+  }
+}
+
+}  // namespace
+
+std::string point_frames_to_json(std::string_view method_id, std::span<const PointFrame> frames,
+                                 std::string_view chain) {
+  std::string text = "{\"method\": " + Json(std::string(method_id)).dump();
+  if (!chain.empty()) text += ", \"chain\": " + Json(std::string(chain)).dump();
+  text += ", \"curve\": \"pita\", \"frames\": [";
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    require_finite(frames[i]);
+    text += i == 0 ? "\n  " : ",\n  ";
+    text += "{\"t\": " + json_number(frames[i].t) + ", \"p\": " + json_point(frames[i].p) + "}";
+  }
+  text += frames.empty() ? "]}\n" : "\n]}\n";
+  return text;
+}
+
+std::string point_frames_to_csv(std::span<const PointFrame> frames) {
+  std::string text = "t,x,y\n";
+  for (const PointFrame& frame : frames) {
+    require_finite(frame);
+    text += fmt::format("{:.17g},{:.17g},{:.17g}\n", frame.t, frame.p.real(), frame.p.imag());
+  }
+  return text;
+}
+
+namespace {
+
 void require_finite(const PoseFrame& frame) {
   if (!std::isfinite(frame.t) || !frame.pose.L.allFinite() || !frame.pose.b.allFinite()) {
     throw std::invalid_argument(fmt::format("frame at t = {} is not finite", frame.t));

@@ -280,6 +280,34 @@ void JsonReader::choice_failed(const Json& value, const std::string& pointer,
   fail(pointer, "must be " + quoted_choices(names) + " (got " + value_text(value) + ")");
 }
 
+std::vector<TimedPoint> JsonReader::points(const Json& value, const std::string& pointer) const {
+  if (!value.is_array() || value.size() < static_cast<std::size_t>(kMinPoints) ||
+      value.size() > static_cast<std::size_t>(kMaxPoints)) {
+    fail(pointer, fmt::format("must be an array of {} to {} timed points {{\"t\": knot, \"p\": [x, y]}} (got {})",
+                              kMinPoints, kMaxPoints, value_text(value)));
+  }
+  std::vector<TimedPoint> result;
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string at = element_pointer(pointer, i);
+    const Json& item = value[i];
+    if (!item.is_object()) fail(at, "a timed point must be an object {\"t\": knot, \"p\": [x, y]} (got " + value_text(item) + ")");
+    static constexpr std::array<std::string_view, 2> kPointFields = {"t", "p"};
+    check_fields(item, at, kPointFields);
+    const Json* knot = member(item, "t");
+    if (knot == nullptr) fail(at + "/t", "missing required field (the knot, a time value)");
+    const Json* where = member(item, "p");
+    if (where == nullptr) fail(at + "/p", "missing required field (the point [x, y])");
+    TimedPoint next{number(*knot, at + "/t"), point(*where, at + "/p")};
+    if (std::abs(next.t) > kMaxKeyframeValue) {
+      fail(at + "/t", fmt::format("knot must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(next.t)));
+    }
+    check_coordinates(next.p, at + "/p");
+    if (i > 0) check_knot_order(result.back().t, next.t, at + "/t");
+    result.push_back(next);
+  }
+  return result;
+}
+
 Chain JsonReader::chain(const Json& value, const std::string& pointer) const {
   if (value.is_string()) {
     if (const ChainInfo* found = find_chain(value.get<std::string>())) return found->chain;

@@ -109,6 +109,10 @@ class JsonReader {
   // "options": the fields given replace those of `base`.
   MethodOptions options(const Json& value, const std::string& pointer, MethodOptions base) const;
 
+  // "points": kMinPoints..kMaxPoints objects {"t", "p"}, knots strictly
+  // increasing, coordinates within kMaxKeyframeValue.
+  std::vector<TimedPoint> points(const Json& value, const std::string& pointer) const;
+
   // "chain": one of core/chains/chain.hpp's names.
   Chain chain(const Json& value, const std::string& pointer) const;
   // Refuses (at `pointer`, the "chain" field or the keyframes) a chain that

@@ -40,6 +40,9 @@ inline constexpr int kMaxPoses = 1000;
 // Arrow scenes: keyframes of a track (the chains of core/chains/chain.hpp;
 // "neville" takes at most limits::kMaxNevilleKeyframes of them).
 inline constexpr int kMaxKeyframes = 1000;
+// "points" (the PITA curve through them chains kMaxKeyframes edge arrows).
+inline constexpr int kMinPoints = 4;
+inline constexpr int kMaxPoints = kMaxKeyframes + 1;
 
 // ---------------------------------------------------------------- figures
 

@@ -16,8 +16,8 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 8> kPanelFields = {
-    "method", "options", "keyframes", "chain", "title", "samples", "layers", "timing"};
+constexpr std::array<std::string_view, 9> kPanelFields = {
+    "method", "options", "keyframes", "points", "chain", "title", "samples", "layers", "timing"};
 constexpr std::array<std::string_view, 8> kPosePanelFields = {
     "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
 
@@ -40,7 +40,7 @@ std::string method_title(Method method) {
 // The panel draws the scene's keyframes with `method`, which must take as many.
 void set_method(const JsonReader& reader, Panel& panel, Method method, const std::string& pointer,
                 const Scene& scene) {
-  if (scene.keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
+  if (scene.points.empty() && scene.keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
     reader.fail(pointer, keyframe_count_reason(method, scene.keyframes.size()) +
                       " from the scene; give the panel its own \"keyframes\"");
   }
@@ -55,7 +55,8 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
   Panel panel = scene_panel(scene, pointer);
   if (value.is_string()) {
     set_method(reader, panel, reader.method(value, pointer), pointer, scene);
-    reader.check_chain(panel.method, panel.chain, panel.keyframes.size(), pointer);
+    reader.check_chain(panel.method, panel.chain,
+                       panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1, pointer);
     panel.motion_pointer = pointer;
     return panel;
   }
@@ -78,9 +79,18 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
   if (const Json* options = JsonReader::member(value, "options")) {
     panel.options = reader.options(*options, pointer + "/options", scene.options);
   }
+  const Json* points = JsonReader::member(value, "points");
+  if (keyframes != nullptr && points != nullptr) {
+    reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
+  }
   if (keyframes != nullptr) {
     panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method);
+    panel.points.clear();
     panel.motion_pointer = pointer + "/keyframes";
+  } else if (points != nullptr) {
+    panel.points = reader.points(*points, pointer + "/points");
+    panel.keyframes.clear();
+    panel.motion_pointer = pointer + "/points";
   } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
     panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
   }
@@ -95,7 +105,8 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
                            : JsonReader::member(value, "method") != nullptr ? pointer + "/method"
                            : keyframes != nullptr                      ? pointer + "/keyframes"
                                                                        : pointer;
-    reader.check_chain(panel.method, panel.chain, panel.keyframes.size(), at);
+    reader.check_chain(panel.method, panel.chain,
+                       panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1, at);
   }
   if (const Json* title = JsonReader::member(value, "title")) {
     panel.title = reader.string(*title, pointer + "/title");

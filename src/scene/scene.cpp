@@ -41,6 +41,7 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.options = scene.options;
   panel.keyframes = scene.keyframes;
   panel.chain = scene.chain;
+  panel.points = scene.points;
   panel.pose_method = scene.pose_method;
   panel.poses = scene.poses;
   panel.shapes = scene.shapes;
@@ -49,7 +50,7 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.samples = scene.samples.value_or(kDefaultFigureSamples);
   panel.samples_pointer = scene.samples ? "/samples" : "";
   panel.pointer = std::move(pointer);
-  panel.motion_pointer = scene.kind == SceneKind::poses ? "/poses" : "/keyframes";
+  panel.motion_pointer = scene.kind == SceneKind::poses ? "/poses" : !scene.points.empty() ? "/points" : "/keyframes";
   return panel;
 }
 
@@ -92,11 +93,12 @@ Scene with_method(Scene scene, Method method) {
                                  info(method).id, method_ids(MotionKind::poses)));
   }
   const MethodInfo& about = info(method);
-  if (scene.keyframes.size() < static_cast<std::size_t>(about.keyframe_count)) {
+  if (scene.points.empty() && scene.keyframes.size() < static_cast<std::size_t>(about.keyframe_count)) {
     throw SceneError(scene.path, "/keyframes", keyframe_count_reason(method, scene.keyframes.size()));
   }
   const JsonReader reader(scene.path);
-  reader.check_chain(method, scene.chain, scene.keyframes.size(), "/chain");
+  reader.check_chain(method, scene.chain, scene.points.empty() ? scene.keyframes.size() : scene.points.size() - 1,
+                     "/chain");
   scene.method = method;
   scene.method_name = std::string(about.id);
   // The panel that is the scene itself follows it; panels of their own keep theirs.

@@ -39,6 +39,9 @@ struct Scene {
   // (core/chains/chain.hpp); unset: default_chain(method) when there are
   // more, the method itself when there are as many.
   std::optional<Chain> chain;
+  // "points": at least 4 timed points instead of keyframes (Sec. 7.6, Fig. 29);
+  // then `keyframes` is empty.
+  std::vector<TimedPoint> points;
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
   Timing timing;                    // "timing": how scene time runs through the motion
 

@@ -202,3 +202,37 @@ TEST_F(EvalChains, PerSpanTimingStillReachesEveryKeyframeAtItsKnot) {
 
 }  // namespace
 }  // namespace pita::test
+
+namespace pita::test {
+namespace {
+
+// Fig. 29's scene through the binary: Eq. 48-50's four conditions
+// p(0) = a, p(1/3) = b, p(2/3) = c, p(1) = d for every method P1-P8 (the
+// scene's points, read back from the file), and the CSV form.
+TEST(EvalPoints, Fig29PassesItsFourPointsWithEveryPita) {
+  const std::filesystem::path scene = std::filesystem::path(PITA_SOURCE_DIR) / "scenes/fig29-four-points.json";
+  const Json document = Json::parse(read_file(scene));
+  const Json& points = document.at("points");
+  ASSERT_EQ(points.size(), 4u);
+  std::string times;
+  for (const Json& point : points) times += (times.empty() ? "" : ",") + point.at("t").dump();
+  ScratchDir dir;
+  for (const std::string method : {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"}) {
+    const RunResult run = run_pita({"eval", scene.string(), "--method", method, "--t", times}, dir.path());
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Json out = Json::parse(run.out);
+    EXPECT_EQ(out.at("curve"), "pita");
+    ASSERT_EQ(out.at("frames").size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Json& frame = out.at("frames")[i];
+      EXPECT_NEAR(frame.at("p")[0].get<double>(), points[i].at("p")[0].get<double>(), 1e-12) << method << " " << i;
+      EXPECT_NEAR(frame.at("p")[1].get<double>(), points[i].at("p")[1].get<double>(), 1e-12) << method << " " << i;
+    }
+  }
+  const RunResult csv = run_pita({"eval", scene.string(), "--samples", "3", "--format", "csv"}, dir.path());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')), "t,x,y");
+}
+
+}  // namespace
+}  // namespace pita::test

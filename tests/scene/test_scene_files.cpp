@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/chains/chain.hpp"
+#include "core/point_curves.hpp"
 
 #include "core/pitas/registry.hpp"
 #include "scene/figure_reader.hpp"
@@ -66,14 +68,19 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& definitions = document.at("definitions");
   const nlohmann::json& schema = definitions.at("arrowScene");
   EXPECT_EQ(keys_of(schema.at("properties")),
-            (std::set<std::string>{"$schema", "description", "method", "keyframes", "chain", "samples",
+            (std::set<std::string>{"$schema", "description", "method", "keyframes", "points", "chain", "samples",
                                    "options", "title", "canvas", "layers", "panels", "golden",
                                    "timing"}));
   // The chains are core/chains/chain.hpp's table, in its order.
   nlohmann::json chains = nlohmann::json::array();
   for (const ChainInfo& about : all_chains()) chains.push_back(std::string(about.name));
   EXPECT_EQ(definitions.at("chain").at("enum"), chains);
-  EXPECT_EQ(schema.at("required"), (nlohmann::json{"method", "keyframes"}));
+  EXPECT_EQ(schema.at("required"), (nlohmann::json{"method"}));
+  EXPECT_EQ(schema.at("oneOf"), nlohmann::json::parse(R"([{"required": ["keyframes"]}, {"required": ["points"]}])"));
+  // The point curves are core/point_curves.hpp's table, in its order.
+  nlohmann::json curves = nlohmann::json::array();
+  for (const PointCurveInfo& about : all_point_curves()) curves.push_back(std::string(about.name));
+  EXPECT_EQ(definitions.at("pointTrajectoryLayer").at("properties").at("curve").at("enum"), curves);
   const nlohmann::json& keyframe = definitions.at("keyframe");
   EXPECT_EQ(keys_of(keyframe.at("properties")),
             (std::set<std::string>{"t", "p", "m", "w", "q", "turns"}));
@@ -109,7 +116,16 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
     const std::string type(kind.type);
     SCOPED_TRACE(type);
     types.push_back(type);
-    const nlohmann::json& layer = definitions.at(type + "Layer");
+    // "point-trajectory" is described by "pointTrajectoryLayer".
+    std::string camel;
+    for (std::size_t i = 0; i < type.size(); ++i) {
+      if (type[i] == '-' && i + 1 < type.size()) {
+        camel += static_cast<char>(std::toupper(static_cast<unsigned char>(type[++i])));
+      } else {
+        camel += type[i];
+      }
+    }
+    const nlohmann::json& layer = definitions.at(camel + "Layer");
     EXPECT_EQ(keys_of(layer.at("properties")), std::set<std::string>(kind.fields.begin(), kind.fields.end()));
     EXPECT_EQ(layer.at("additionalProperties"), false);
     EXPECT_EQ(layer.at("properties").at("type").at("const"), type);
@@ -117,7 +133,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(definitions.at("layer").at("properties").at("type").at("enum"), nlohmann::json(types));
   const nlohmann::json& panel = definitions.at("panel").at("else");
   EXPECT_EQ(keys_of(panel.at("properties")),
-            (std::set<std::string>{"method", "options", "keyframes", "chain", "title", "samples", "layers",
+            (std::set<std::string>{"method", "options", "keyframes", "points", "chain", "title", "samples", "layers",
                                    "timing"}));
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }
@@ -185,10 +201,15 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
     if (sam) name = name.substr(4);
     // The interpolation chapter's figures (Fig. 3.NN), for time warps.
     if (name.rfind("chapter-", 0) == 0) name = name.substr(8);
+    // The course project on drawn targets, and keyframe tracks beyond the
+    // papers' three keyframes (docs/paper-notes.md N32, N33).
+    if (name.rfind("project-", 0) == 0) name = name.substr(8);
+    if (name.rfind("tracks-", 0) == 0) name = name.substr(7);
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
     EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) &&
                 name[5] == '-')
-        << path.stem() << " is not named figNN-*.json (or sam-figNN-*.json, chapter-figNN-*.json)";
+        << path.stem()
+        << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-figNN-*.json)";
     EXPECT_EQ(load_scene(path).kind == SceneKind::poses, sam)
         << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
