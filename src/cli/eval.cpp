@@ -125,6 +125,13 @@ std::string methods_table(MotionKind kind) {
   return table;
 }
 
+// "blend" | "neville" | ...: the chains of core/chains/chain.hpp's table.
+std::string chain_list() {
+  std::string list;
+  for (const ChainInfo& about : all_chains()) list += fmt::format("{}\"{}\"", list.empty() ? "" : " | ", about.name);
+  return list;
+}
+
 std::string eval_footer() {
   return R"(
 Scene format (JSON; schema/scene.schema.json describes every field):
@@ -141,12 +148,17 @@ Scene format (JSON; schema/scene.schema.json describes every field):
     "options": {"anchor": "start", "path_mean": "geometric", "magnitude_mean": "geometric"}
   }
   method       a method below, by id ("P6") or mnemonic ("La-LP"), any case
-  keyframes    3 keyframes (2 for SMA); knots "t" strictly increasing
+  keyframes    3 or more keyframes (2 or more for SMA); knots "t" strictly increasing
     t          knot (time value)
     p          start point [x, y]
     m, w       magnitude (> 0) and winding (any real angle in radians, not reduced)
     q          end point [x, y], instead of m and w: the zero-turn arrow from p to q
     turns      integer (optional): adds 2*pi*turns to the winding
+  chain        how a track of more keyframes than the method takes is built:
+               )" + chain_list() + R"(
+               (default "blend", "spiral" for SMA; README "Keyframe tracks")
+  points       instead of keyframes: 4 or more {"t", "p": [x, y]}; the motion is the
+               point of Eq. 48-50 (README "Timed points"), printed as t, x, y
   samples      frames printed when neither --samples nor --t is given (default 9)
   timing       optional, how scene time runs through the motion (README "Timing"):
                {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}
@@ -158,11 +170,12 @@ Scene format (JSON; schema/scene.schema.json describes every field):
 Methods:
 )" + methods_table(MotionKind::arrows) +
          R"(
-SMA takes two keyframes, every other method three. Pa-Po, LS-Ca and LS-LP are the
+SMA takes two keyframes, every other method three; more are chained. Pa-Po, LS-Ca and LS-LP are the
 independent combinations of Fig. 7 outside the paper's basket.
 
 Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, "q": [x, y]}, ...]}
-with one frame per line, or CSV with the header t,px,py,m,w,qx,qy.
+with one frame per line ("chain": "blend" after "method" for a chained track), or CSV
+with the header t,px,py,m,w,qx,qy. Scenes of points print {"t": .., "p": [x, y]} (CSV t,x,y).
 
 Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
   {"method": "SAM",

@@ -13,6 +13,7 @@
 #include "render/figure.hpp"
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -91,8 +92,23 @@ void refuse_shared_outputs(const RenderOptions& options, const std::vector<rende
   }
 }
 
+// "pattern" | "keyframes" | ...: the layer kinds of the reader's one table,
+// wrapped after `width` characters with `indent` spaces.
+std::string layer_kind_list(const std::vector<scene::detail::LayerKindInfo>& kinds) {
+  std::string text, line;
+  for (std::size_t i = 0; i < kinds.size(); ++i) {
+    const std::string item = fmt::format("\"{}\"{}", kinds[i].type, i + 1 < kinds.size() ? " | " : "");
+    if (line.size() + item.size() > 70) {
+      text += line.substr(0, line.find_last_not_of(' ') + 1) + "\n           ";
+      line.clear();
+    }
+    line += item;
+  }
+  return text + line;
+}
+
 std::string footer() {
-  return R"(
+  std::string text = R"(
 OUT is a file when it ends in .svg, .png or .pdf (one scene; the format is its
 extension), otherwise a directory (created if needed) that receives
 OUT/<scene name>.<format> for each --format (default svg).
@@ -114,13 +130,14 @@ above a budget, naming the field that dominates; --budget F allows F times it.
 
 Scene fields for figures (see README "Figures" and schema/scene.schema.json):
   title, canvas {width, height, background, view, margin, y_axis, columns, font},
-  layers [{"type": "pattern" | "keyframes" | "trajectory" | "stroke" | "banner" |
-           "discrepancy" | "label" | "legend", ...}],
-  panels ["P1", {"method": "P2", "keyframes": [...], "title": "..."}, ...]
+  layers [{"type": @ARROW_LAYERS@, ...}],
+  panels ["P1", {"method": "P2", "keyframes": [...], "chain": "blend", "title": "..."}, ...]
+  keyframes: 3 or more (SMA: 2 or more), chained by "chain" (README "Keyframe tracks");
+  points [{"t": 0, "p": [x, y]}, ...] instead of keyframes: 4 or more timed points,
+  drawn by "point-trajectory" layers
 Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
   shapes [{"outline": "F"} | {"triangle": "reference"} | {"polygon": [[x, y], ...]}],
-  layers [{"type": "shapes" | "poses" | "velocities" | "paths" | "existence" | "patch" |
-           "label", ...}],
+  layers [{"type": @POSE_LAYERS@, ...}],
   panels ["linear", {"method": "biarc-SAM", "poses": [...], "title": "..."}, ...]
 
 Examples:
@@ -133,6 +150,13 @@ Exit codes: 0 success, 2 bad input or usage (also beyond the budget, out of memo
 3 an output could not be written, 4 an internal error (a bug), 128 + N interrupted by
 signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; unfinished temporary files removed).
 )";
+  // The layer kinds come from the reader's one table of them.
+  const auto substitute = [&text](const std::string& key, const std::string& value) {
+    text.replace(text.find(key), key.size(), value);
+  };
+  substitute("@ARROW_LAYERS@", layer_kind_list(scene::detail::arrow_layer_kinds()));
+  substitute("@POSE_LAYERS@", layer_kind_list(scene::detail::pose_layer_kinds()));
+  return text;
 }
 
 }  // namespace
