@@ -269,6 +269,13 @@ ExitCode run_eval(const EvalOptions& options) {
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     const motion::SceneMotion motion = motion::build_motion(scene);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
+    const double work = static_cast<double>(at.size()) * motion::frame_cost(scene::scene_panel(scene));
+    if (work > scene::kMaxEvalWork) {
+      throw InputError(fmt::format(
+          "{}: {}: {} frames of the {} cost about {:.3g} frames of the method, above the limit of {:.0g}: ask for "
+          "fewer frames, or use the local \"blend\" chain",
+          scene.path, scene.chain ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
+    }
     if (motion.has_points()) {
       std::vector<scene::PointFrame> frames;
       for (const double t : at) frames.push_back({t, motion.point_at(t)});

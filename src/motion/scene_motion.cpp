@@ -56,6 +56,13 @@ std::optional<Chain> chain_of(const scene::Panel& panel) {
   return std::nullopt;
 }
 
+double frame_cost(const scene::Panel& panel) {
+  const std::optional<Chain> chain = chain_of(panel);
+  const std::size_t count = panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1;
+  const double track = chain ? chain_frame_cost(*chain, count) : 1.0;
+  return panel.points.empty() ? track : 2.0 * track;
+}
+
 PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& panel, PointCurve curve) {
   const std::string label = method_label(scene, panel);
   const ArrowTrackFactory track = [&panel](std::span<const Keyframe> keys) {

@@ -104,6 +104,11 @@ SceneMotion build_motion(const scene::Scene& scene);
 // NoMotion for the first that does not exist.
 void check_motions(const scene::Scene& scene);
 
+// What one frame of the panel's motion costs, in frames of a plain method
+// (chain_frame_cost; a curve through points evaluates two tracks): what the
+// work limits of `pita eval` and `pita render` weigh frames by.
+double frame_cost(const scene::Panel& panel);
+
 // The chain the panel's arrow motion uses: its "chain", else the method's
 // default when the panel has more keyframes than the method takes, else none.
 std::optional<Chain> chain_of(const scene::Panel& panel);

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "render/spiral.hpp"
@@ -47,11 +48,14 @@ class LayerCost {
   }
   void operator()(const scene::TrajectoryLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a trajectory", l.samples),
-        kShapeUnits + l.samples);
+        kShapeUnits + l.samples * motion::frame_cost(panel_));
   }
   void operator()(const scene::PointTrajectoryLayer& l) {
+    // The Neville-type curves blend n(n - 1)/2 times per point.
+    const double n = static_cast<double>(panel_.points.size());
+    const double per_point = l.curve == PointCurve::pita ? motion::frame_cost(panel_) : 1.0 + n * (n - 1.0) / 2.0;
     add(layer_ + "/samples", fmt::format("{} points of a point trajectory", l.samples),
-        kShapeUnits + l.samples + (l.dots ? static_cast<double>(panel_.points.size()) * kShapeUnits : 0.0));
+        kShapeUnits + l.samples * per_point + (l.dots ? n * kShapeUnits : 0.0));
   }
   void operator()(const scene::LabelLayer& l) {
     add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
@@ -101,7 +105,9 @@ class LayerCost {
                                     n, scene::kMaxFigureSamples, scene::kMaxSamples));
     }
     if (pointer.empty()) pointer = layer_;
-    add(pointer, fmt::format("{} frames of {}", n, what), n * per_frame);
+    // A frame of a chained track evaluates its method several times
+    // (motion::frame_cost); one unit is about one method frame.
+    add(pointer, fmt::format("{} frames of {}", n, what), n * (per_frame + motion::frame_cost(panel_) - 1.0));
   }
 
   double shape_points() const {

@@ -24,6 +24,10 @@ inline constexpr std::size_t kMaxJsonDepth = 256;
 // line), and the default when neither is given.
 inline constexpr int kMinSamples = 2;
 inline constexpr int kMaxSamples = 1'000'000;
+// `pita eval`'s work: frames printed times what one frame costs in frames of
+// a plain method (motion::frame_cost; a neville chain over 64 keyframes costs
+// about 1950), at most this many (about 6 s on one core).
+inline constexpr double kMaxEvalWork = 1e8;
 inline constexpr int kDefaultSamples = 9;
 
 // Keyframe values. Knots, coordinates and magnitudes beyond 1e100 (or

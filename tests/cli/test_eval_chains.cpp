@@ -236,3 +236,35 @@ TEST(EvalPoints, Fig29PassesItsFourPointsWithEveryPita) {
 
 }  // namespace
 }  // namespace pita::test
+
+namespace pita::test {
+namespace {
+
+// Work is weighed by what a frame costs: a neville chain over 64 keyframes
+// costs ~1950 method frames per frame, so a million frames are refused before
+// any is computed (exit 2, naming /chain), as is a figure that would draw
+// 10 000 of them.
+TEST(EvalChainsWork, NevilleFramesAreWeighedByTheirCost) {
+  ScratchDir dir;
+  std::string keys;
+  for (int i = 0; i < 64; ++i) {
+    keys += fmt::format(R"({}{{"t": {}, "p": [{}, {}], "m": 1, "w": {}}})", i ? ", " : "", i, i, (i * i) % 5, 0.1 * i);
+  }
+  dir.write("n64.json", R"({"method": "P6", "chain": "neville", "keyframes": [)" + keys + "]}");
+  const RunResult many = run_pita({"eval", "n64.json", "--samples", "1000000"}, dir.path());
+  EXPECT_EQ(many.exit_code, 2);
+  EXPECT_EQ(many.out, "");
+  EXPECT_NE(many.err.find("n64.json: /chain: 1000000 frames of the P6 (La-LP), neville chain cost about"),
+            std::string::npos)
+      << many.err;
+  const RunResult few = run_pita({"eval", "n64.json", "--samples", "20"}, dir.path());
+  EXPECT_EQ(few.exit_code, 0) << few.err;
+  dir.write("fig.json", R"({"method": "P6", "chain": "neville", "samples": 10000, "keyframes": [)" + keys + "]}");
+  const RunResult figure = run_pita({"render", "fig.json", "-o", "out.svg"}, dir.path());
+  EXPECT_EQ(figure.exit_code, 2) << figure.err;
+  EXPECT_NE(figure.err.find("fig.json: /samples"), std::string::npos) << figure.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out.svg"));
+}
+
+}  // namespace
+}  // namespace pita::test

@@ -54,6 +54,17 @@ std::string chain_names() {
   return names;
 }
 
+double chain_frame_cost(Chain chain, std::size_t count) {
+  const double n = static_cast<double>(count);
+  switch (chain) {
+    case Chain::blend: return 3.0;
+    case Chain::neville: return std::max(n - 2.0, 1.0) + std::max((n - 2.0) * (n - 3.0) / 2.0, 0.0);
+    case Chain::spiral: return 1.0;
+    case Chain::bezier_spiral: return 2.0;
+  }
+  return 1.0;
+}
+
 std::size_t span_of(std::span<const double> knots, double t) {
   if (knots.size() < 2) return 0;
   // The last knot <= t, clamped to the spans there are (NaN lands in span 0).

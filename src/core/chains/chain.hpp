@@ -71,6 +71,11 @@ std::unique_ptr<Motion> make_chain(Chain chain, std::span<const Keyframe> keyfra
 // turn.
 Arrow steady_blend(const Arrow& X, Arrow Y, double s, bool winding_aware);
 
+// What one frame of the chain over `count` keyframes costs, in frames of the
+// method itself (for work budgets): blend 3 (two windows and a blend),
+// neville (n - 2) windows and (n - 2)(n - 3)/2 blends, spiral 1, bezier-spiral 2.
+double chain_frame_cost(Chain chain, std::size_t count);
+
 // Index i of the span [t_i, t_{i+1}] that holds t, clamped to [0, n - 2]
 // (t before the first knot is in span 0, after the last in span n - 2).
 std::size_t span_of(std::span<const double> knots, double t);
