@@ -3,4 +3,4 @@
 # the tests, build/pita_bench).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
-pita_build
+pita_build_tests

@@ -22,6 +22,6 @@ if [ "$sanitize" -eq 1 ]; then
   pita_build_sanitize
   ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS"
 else
-  pita_build
+  pita_build_tests
   ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS"
 fi

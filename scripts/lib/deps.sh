@@ -10,21 +10,28 @@ PITA_SANITIZE_BUILD="${PITA_SANITIZE_BUILD:-$PITA_ROOT/build-sanitize}"
 # Parallel compile and test jobs (default: every core).
 PITA_JOBS="${PITA_JOBS:-$(nproc)}"
 
-# One package per need; the comment says which.
-PITA_PACKAGES=(
+# One package per need; the comment says which. What scripts/run.sh (the main
+# job: build pita, render every scene) needs, and nothing more. The README's
+# "Quick start" states how many there are; tests/setup/check_packages.sh
+# fails when this list and that number disagree.
+PITA_RUN_PACKAGES=(
   build-essential cmake ninja-build pkg-config  # compiler and build
   libcli11-dev         # command line
   nlohmann-json3-dev   # scenes
   libfmt-dev           # formatting
-  libeigen3-dev        # matrices (tests' oracles, affine motions)
+  libeigen3-dev        # matrices (affine motions)
   libcairo2-dev        # figures: SVG, PNG, PDF
   libpango1.0-dev      # figures: text (banners, titles)
   fonts-dejavu-core    # figures: the fonts the scenes and goldens use (DejaVu Sans, Serif)
-  libgtest-dev libgmock-dev  # tests
-  libvalijson-dev      # tests: the scene schema checked by an independent validator
+)
+
+# What scripts/test.sh adds: the tests and the benchmark.
+PITA_TEST_PACKAGES=(
+  libgtest-dev libgmock-dev   # tests
+  libbenchmark-dev            # benchmarks
   libxml2-utils librsvg2-bin  # tests: SVG read back by xmllint and rsvg-convert
-  python3              # tests: the independent oracle (tests/oracle)
-  libbenchmark-dev     # benchmarks
+  python3                     # tests: the independent oracles (tests/oracle)
+  python3-jsonschema          # tests: the scene schema checked by an independent validator
 )
 
 # Only for scripts/test.sh --sanitize and scripts/fuzz.sh.
@@ -33,10 +40,11 @@ PITA_SANITIZE_PACKAGES=(
   libclang-rt-14-dev   # the ASan, UBSan, LSan and libFuzzer run-times
 )
 
-# Installs what is missing of PITA_PACKAGES and of the packages given.
+# Installs what is missing of PITA_RUN_PACKAGES and of the packages given,
+# without Debian's "recommends" (they would bring desktop stacks along).
 pita_install_dependencies() {
   local missing=()
-  for p in "${PITA_PACKAGES[@]}" "$@"; do
+  for p in "${PITA_RUN_PACKAGES[@]}" "$@"; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
       missing+=("$p")
     fi
@@ -55,21 +63,32 @@ pita_install_dependencies() {
       return 1
     fi
   fi
-  if ! { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"; } >&2; then
+  if ! { $sudo apt-get update -qq && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"; } >&2; then
     echo "pita: apt-get could not install: ${missing[*]}" >&2
     echo "      install them by hand (apt-get install ${missing[*]}) and run this again." >&2
     return 1
   fi
 }
 
-# Configures (first time) and builds every target: build/pita, the tests and
-# the benchmark. Release unless PITA_BUILD_TYPE says otherwise.
+# The main job's build (scripts/run.sh): installs PITA_RUN_PACKAGES only,
+# configures build/ the first time (tests and benchmark only if their
+# libraries happen to be there) and builds build/pita. Release unless
+# PITA_BUILD_TYPE says otherwise.
 pita_build() {
   pita_install_dependencies || return 1
   if [ ! -f "$PITA_BUILD/build.ninja" ]; then
     cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja \
       -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" >/dev/null || return 1
   fi
+  cmake --build "$PITA_BUILD" -j "$PITA_JOBS" --target pita
+}
+
+# The test build (scripts/test.sh): adds PITA_TEST_PACKAGES, configures build/
+# with the tests and the benchmark required, and builds every target.
+pita_build_tests() {
+  pita_install_dependencies "${PITA_TEST_PACKAGES[@]}" || return 1
+  cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" \
+    -DPITA_BUILD_TESTS=ON -DPITA_BUILD_BENCHMARKS=ON -DPITA_REQUIRE_TESTS=ON >/dev/null || return 1
   cmake --build "$PITA_BUILD" -j "$PITA_JOBS"
 }
 
@@ -79,11 +98,11 @@ pita_build() {
 # Then exports the sanitizer options that CMake wrote for this build
 # (ASAN_OPTIONS, UBSAN_OPTIONS, LSAN_OPTIONS with scripts/sanitizers/lsan.supp).
 pita_build_sanitize() {
-  pita_install_dependencies "${PITA_SANITIZE_PACKAGES[@]}" || return 1
+  pita_install_dependencies "${PITA_TEST_PACKAGES[@]}" "${PITA_SANITIZE_PACKAGES[@]}" || return 1
   if [ ! -f "$PITA_SANITIZE_BUILD/build.ninja" ]; then
     cmake -S "$PITA_ROOT" -B "$PITA_SANITIZE_BUILD" -G Ninja \
       -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
-      -DPITA_SANITIZE=ON -DPITA_FUZZ=ON -DPITA_BUILD_BENCHMARKS=OFF >/dev/null || return 1
+      -DPITA_SANITIZE=ON -DPITA_FUZZ=ON -DPITA_BUILD_BENCHMARKS=OFF -DPITA_REQUIRE_TESTS=ON >/dev/null || return 1
   fi
   # shellcheck source=/dev/null
   source "$PITA_SANITIZE_BUILD/sanitizer-env.sh" || return 1

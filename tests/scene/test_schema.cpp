@@ -1,5 +1,5 @@
 // The published schema (schema/scene.schema.json, JSON Schema draft 7) against
-// the parser (src/scene/), with an independent validator, valijson (tests
+// the parser (src/scene/), with an independent validator, Python's jsonschema (tests
 // only: pita itself never reads the schema):
 //  - every starter scene in scenes/ is valid;
 //  - every bad scene of the corpus below is refused by both, and the parser
@@ -12,17 +12,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <optional>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
-#include <valijson/adapters/nlohmann_json_adapter.hpp>
-#include <valijson/schema.hpp>
-#include <valijson/schema_parser.hpp>
-#include <valijson/validation_results.hpp>
-#include <valijson/validator.hpp>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
@@ -42,48 +42,68 @@ nlohmann::json read_json(const std::filesystem::path& path) {
   return nlohmann::json::parse(in);
 }
 
-// The schema, parsed once by valijson.
-const valijson::Schema& scene_schema() {
-  static const valijson::Schema* schema = [] {
-    auto* parsed = new valijson::Schema;
-    const nlohmann::json document = read_json(kSourceDir / "schema/scene.schema.json");
-    valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
-    const valijson::adapters::NlohmannJsonAdapter adapter(document);
-    parser.populateSchema(adapter, *parsed);
-    return parsed;
-  }();
-  return *schema;
-}
-
-// valijson's path of a value, "<root>[layers][0][text]", as a JSON Pointer,
-// "/layers/0/text" (the keys of our scenes need no escaping).
-std::string pointer_of(const std::vector<std::string>& context) {
-  std::string pointer;
-  for (const std::string& part : context) {
-    if (part.size() >= 2 && part.front() == '[' && part.back() == ']') {
-      pointer += '/' + part.substr(1, part.size() - 2);
-    }
-  }
-  return pointer;
-}
-
 struct SchemaVerdict {
   bool valid = true;
   std::string errors;                 // one line per error: "POINTER: description"
   std::vector<std::string> pointers;  // where each error is
 };
 
-// What valijson finds wrong with `document`.
+// The independent validator (Python's jsonschema, Draft 7:
+// tests/scene/validate_schema.py), one process for the whole test run: a
+// document per line in, a verdict per line out.
+class Validator {
+ public:
+  Validator() {
+    int to_child[2], from_child[2];
+    if (::pipe(to_child) != 0 || ::pipe(from_child) != 0) throw std::runtime_error("pipe failed");
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::dup2(to_child[0], 0);
+      ::dup2(from_child[1], 1);
+      ::close(to_child[1]);
+      ::close(from_child[0]);
+      const std::string script = (kSourceDir / "tests/scene/validate_schema.py").string();
+      const std::string schema = (kSourceDir / "schema/scene.schema.json").string();
+      ::execl(PITA_PYTHON, PITA_PYTHON, script.c_str(), schema.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ::close(to_child[0]);
+    ::close(from_child[1]);
+    in_ = ::fdopen(to_child[1], "w");
+    out_ = ::fdopen(from_child[0], "r");
+  }
+  // A verdict, or nullopt when the validator does not answer.
+  std::optional<nlohmann::json> ask(const nlohmann::json& document) {
+    const std::string line = document.dump() + "\n";
+    if (std::fwrite(line.data(), 1, line.size(), in_) != line.size() || std::fflush(in_) != 0) return std::nullopt;
+    std::string answer;
+    int c = 0;
+    while ((c = std::fgetc(out_)) != EOF && c != '\n') answer += static_cast<char>(c);
+    nlohmann::json verdict = nlohmann::json::parse(answer, nullptr, false);
+    if (!verdict.is_object()) return std::nullopt;
+    return verdict;
+  }
+
+ private:
+  pid_t pid_ = -1;
+  FILE* in_ = nullptr;
+  FILE* out_ = nullptr;
+};
+
+// What the validator finds wrong with `document`.
 SchemaVerdict validate(const nlohmann::json& document) {
-  valijson::Validator validator;
-  valijson::ValidationResults results;
-  const valijson::adapters::NlohmannJsonAdapter adapter(document);
+  static Validator validator;  // left running; it ends with the test process's pipe
   SchemaVerdict verdict;
-  verdict.valid = validator.validate(scene_schema(), adapter, &results);
-  valijson::ValidationResults::Error error;
-  while (results.popError(error)) {
-    verdict.pointers.push_back(pointer_of(error.context));
-    verdict.errors += verdict.pointers.back() + ": " + error.description + "\n";
+  const std::optional<nlohmann::json> answer = validator.ask(document);
+  if (!answer) {
+    ADD_FAILURE() << "the schema validator did not answer (is python3-jsonschema installed? scripts/test.sh "
+                     "installs it)";
+    return {false, "no verdict", {}};
+  }
+  verdict.valid = answer->at("valid").get<bool>();
+  for (const nlohmann::json& error : answer->at("errors")) {
+    verdict.pointers.push_back(error.at("pointer").get<std::string>());
+    verdict.errors += verdict.pointers.back() + ": " + error.at("message").get<std::string>() + "\n";
   }
   return verdict;
 }
