@@ -56,8 +56,9 @@ class Validator {
   Validator() {
     int to_child[2], from_child[2];
     if (::pipe(to_child) != 0 || ::pipe(from_child) != 0) throw std::runtime_error("pipe failed");
-    pid_ = ::fork();
-    if (pid_ == 0) {
+    const pid_t child = ::fork();
+    if (child < 0) throw std::runtime_error("fork failed");
+    if (child == 0) {
       ::dup2(to_child[0], 0);
       ::dup2(from_child[1], 1);
       ::close(to_child[1]);
@@ -85,7 +86,6 @@ class Validator {
   }
 
  private:
-  pid_t pid_ = -1;
   FILE* in_ = nullptr;
   FILE* out_ = nullptr;
 };
