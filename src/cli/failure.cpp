@@ -3,6 +3,7 @@
 #include <exception>
 #include <new>
 
+#include "animate/timeline.hpp"
 #include "golden/image_compare.hpp"
 #include "motion/no_motion.hpp"
 #include "render/output_file.hpp"
@@ -17,6 +18,8 @@ Failure current_failure(const std::string& input) {
   } catch (const scene::SceneError& e) {
     return {ExitCode::bad_input, e.what()};
   } catch (const motion::NoMotion& e) {
+    return {ExitCode::bad_input, e.what()};
+  } catch (const animate::AnimationError& e) {
     return {ExitCode::bad_input, e.what()};
   } catch (const render::RenderError& e) {
     return {ExitCode::bad_input, e.what()};

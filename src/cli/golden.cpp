@@ -174,11 +174,10 @@ ExitCode run_update_goldens(const GoldenOptions& options) {
     try {
       const golden::Outputs outputs = golden::render_outputs(scene);
       const std::string name = golden::scene_name(scene);
-      for (const golden::FileKind kind : golden::kFileKinds) {
-        const std::string& bytes = kind == golden::FileKind::data  ? outputs.data
-                                   : kind == golden::FileKind::svg ? outputs.svg
-                                                                   : outputs.png;
-        const fs::path path = golden::golden_path(options.golden_dir, name, kind);
+      for (const golden::GoldenFile& file : golden::golden_files(outputs)) {
+        const golden::FileKind kind = file.kind;
+        const std::string& bytes = *file.bytes;
+        const fs::path path = golden::golden_path(options.golden_dir, name, file.suffix);
         std::string status;
         try {
           const golden::FileCheck c = golden::compare_file(kind, path, bytes, exact);

@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/animate.hpp"
 #include "cli/eval.hpp"
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
@@ -47,6 +48,7 @@ int main(int argc, char** argv) {
       "  pita eval scenes/fig01-eight-pitas.json            print the frames as JSON\n"
       "  pita render scenes/fig01-eight-pitas.json -o fig01.png\n"
       "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n"
+      "  pita animate scenes/fig23-image-motion.json -o fig23.svg   an animated SVG\n"
       "  pita check                                         every figure against golden/\n\n"
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
@@ -57,6 +59,7 @@ int main(int argc, char** argv) {
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);
+  const auto animate_options = pita::cli::setup_animate(app);
   const auto check_options = pita::cli::setup_check(app);
   const auto update_options = pita::cli::setup_update_goldens(app);
 
@@ -90,6 +93,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
     if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
+    if (app.got_subcommand("animate")) return to_int(pita::cli::run_animate(*animate_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));

@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "animate/frame.hpp"
+#include "animate/timeline.hpp"
 #include "cli/failure.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
@@ -192,6 +194,13 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
                                  render::kDefaultBudgetPixels / 1e6, render::kMaxBudgetFactor))
       ->check(CLI::Range(1e-3, render::kMaxBudgetFactor))
       ->type_name("F");
+  render->add_option_function<double>(
+             "--at", [options](double t) { options->at = t; },
+             "Draw the scene's animation at time T (a scene time; tau in [0, 1] for an animated "
+             "pattern): the frame `pita animate` draws at T")
+      ->type_name("T");
+  render->add_flag("--allow-absolute-paths", options->allow_absolute_paths,
+                   "Allow images given by absolute paths");
   return options;
 }
 
@@ -244,8 +253,17 @@ ExitCode run_render(const RenderOptions& options) {
   ExitCode result = ExitCode::success;
   for (const std::string& path : options.scene_paths) {
     try {
-      const scene::Scene scene = scene::load_scene(path);
-      const render::Figure figure = render::build_figure(scene, options.budget);
+      const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths});
+      render::Figure figure;
+      if (options.at) {
+        // One frame of the animation, in the view all its frames share.
+        const animate::Timeline timeline = animate::make_timeline(scene);
+        render::check_budget(scene, render::estimate_cost(scene), options.budget);
+        render::check_images(scene);
+        figure = animate::frame_figure(scene, timeline, *options.at, animate::animation_layout(scene, timeline));
+      } else {
+        figure = render::build_figure(scene, options.budget);
+      }
       // Every format is rendered before any is written: a bad scene writes nothing.
       std::vector<std::pair<fs::path, std::string>> files;
       for (const Target& target : targets_for(options, path, formats, single_file)) {

@@ -25,6 +25,8 @@ struct RenderOptions {
   std::optional<double> scale;         // --scale (PNG)
   std::optional<double> dpi;           // --dpi (PNG): scale = dpi / 96
   double budget = 1.0;                 // --budget: times the default work budget
+  std::optional<double> at;            // --at T: the animation's frame at T (README "Animation")
+  bool allow_absolute_paths = false;   // --allow-absolute-paths: images by absolute paths
 };
 
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app);

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "animate/frame.hpp"
+#include "animate/output.hpp"
+#include "animate/timeline.hpp"
 #include "golden/figure_data.hpp"
 #include "render/figure.hpp"
 #include "scene/json_text.hpp"
@@ -46,6 +49,17 @@ fs::path golden_path(const fs::path& golden_dir, const std::string& name, FileKi
   return golden_dir / name / (name + std::string(suffix(kind)));
 }
 
+fs::path golden_path(const fs::path& golden_dir, const std::string& name, const std::string& suffix) {
+  return golden_dir / name / (name + suffix);
+}
+
+std::vector<GoldenFile> golden_files(const Outputs& outputs) {
+  std::vector<GoldenFile> files;
+  for (const FileKind kind : kFileKinds) files.push_back({kind, std::string(suffix(kind)), &output(outputs, kind)});
+  for (const auto& [frame_suffix, bytes] : outputs.frames) files.push_back({FileKind::png, frame_suffix, &bytes});
+  return files;
+}
+
 std::string scene_name(const fs::path& scene_path) { return scene_path.stem().string(); }
 
 Outputs render_outputs(const fs::path& scene_path) {
@@ -55,6 +69,15 @@ Outputs render_outputs(const fs::path& scene_path) {
   out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
   out.svg = render::render_figure(scene, figure, render::Format::svg);
   out.png = render::render_figure(scene, figure, render::Format::png);
+  if (scene.has_animation) {
+    const animate::Timeline timeline = animate::make_timeline(scene);
+    const auto placements = animate::animation_layout(scene, timeline);
+    for (const int k : {0, timeline.frames / 2, timeline.frames - 1}) {
+      const render::Figure frame = animate::frame_figure(scene, timeline, timeline.time(k), placements);
+      out.frames.emplace_back("." + animate::frame_file_name(k, timeline.frames, render::Format::png),
+                              render::render_figure(scene, frame, render::Format::png));
+    }
+  }
   return out;
 }
 
@@ -137,9 +160,9 @@ SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
                        const Tolerances& tolerances) {
   const Outputs outputs = render_outputs(scene_path);
   SceneCheck result{scene_path.string(), scene_name(scene_path), {}};
-  for (const FileKind kind : kFileKinds) {
-    result.files.push_back(compare_file(kind, golden_path(golden_dir, result.name, kind),
-                                        output(outputs, kind), tolerances));
+  for (const GoldenFile& file : golden_files(outputs)) {
+    result.files.push_back(compare_file(file.kind, golden_path(golden_dir, result.name, file.suffix),
+                                        *file.bytes, tolerances));
   }
   return result;
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "golden/image_compare.hpp"
@@ -30,19 +31,34 @@ struct Tolerances {
 };
 
 // The three golden files of a scene, as bytes.
+// Scenes with an "animation" also keep a few frames of it (README
+// "Animation"): frames 1, N/2 + 1 and N of the scene's own timeline, as
+// drawn by `pita render --at t_k`, in <name>.frame-0001.png, ...
 struct Outputs {
   std::string data;  // figure_data_text
   std::string svg;
   std::string png;
+  std::vector<std::pair<std::string, std::string>> frames;  // (suffix ".frame-0061.png", PNG bytes)
 };
+
 
 enum class FileKind { data, svg, png };
 inline constexpr FileKind kFileKinds[] = {FileKind::data, FileKind::svg, FileKind::png};
 std::string_view suffix(FileKind kind);  // ".data.json", ".svg", ".png"
 
+// Every golden file of the outputs: the three of kFileKinds, then the frames.
+struct GoldenFile {
+  FileKind kind;
+  std::string suffix;         // ".png", ".frame-0061.png"
+  const std::string* bytes;   // into the Outputs
+};
+
 // golden_dir/<name>/<name><suffix>
 std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name,
                                   FileKind kind);
+std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name,
+                                  const std::string& suffix);
+std::vector<GoldenFile> golden_files(const Outputs& outputs);
 
 // The scene's name: its file name without ".json".
 std::string scene_name(const std::filesystem::path& scene_path);

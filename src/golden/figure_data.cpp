@@ -36,6 +36,11 @@ struct ItemData {
   void operator()(const render::Label& s) const {
     item["label"] = Json{{"text", s.text}, {"at", point(s.at)}};
   }
+  // An image by its file's name as the scene gives it and its corners.
+  void operator()(const render::Image& s) const {
+    const auto corners = render::image_corners(s);
+    item["image"] = Json{{"file", s.name}, {"corners", points({corners.begin(), corners.end()})}};
+  }
 };
 
 // What read_figure_data requires, with the pointer of the first thing wrong.

@@ -61,6 +61,7 @@ class LayerCost {
     add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
   }
   void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
+  void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
   void operator()(const scene::PlotLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
         8 * kShapeUnits + l.samples);
@@ -260,6 +261,8 @@ struct Ink {
     return 2.0 * std::min(std::abs(s.to - s.from) * view.scale, clip);
   }
   double operator()(const Label&) const { return 0.0; }
+  // An image costs like a fill: its area, at most the panel's.
+  double operator()(const Image&) const { return clip; }
 };
 
 }  // namespace

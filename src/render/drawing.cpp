@@ -39,6 +39,9 @@ struct BoundsBuilder {
     add(s.to);
   }
   void operator()(const Label& s) { add(s.at); }
+  void operator()(const Image& s) {
+    for (const Point corner : image_corners(s)) add(corner);
+  }
 };
 
 bool finite(Point p) { return std::isfinite(p.real()) && std::isfinite(p.imag()); }
@@ -53,9 +56,19 @@ struct FiniteCheck {
   bool operator()(const Circle& s) const { return finite(s.center) && std::isfinite(s.radius); }
   bool operator()(const ArrowShape& s) const { return finite(s.from) && finite(s.to); }
   bool operator()(const Label& s) const { return finite(s.at); }
+  bool operator()(const Image& s) const {
+    const auto corners = image_corners(s);
+    return s.to_world.L.allFinite() && s.to_world.b.allFinite() && std::all_of(corners.begin(), corners.end(), finite);
+  }
 };
 
 }  // namespace
+
+std::array<Point, 4> image_corners(const Image& image) {
+  const double w = image.width, h = image.height;
+  return {pita::apply(image.to_world, Point{0.0, 0.0}), pita::apply(image.to_world, Point{w, 0.0}),
+          pita::apply(image.to_world, Point{w, h}), pita::apply(image.to_world, Point{0.0, h})};
+}
 
 std::optional<scene::Box> bounds(const Drawing& drawing) {
   BoundsBuilder builder;

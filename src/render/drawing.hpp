@@ -4,11 +4,13 @@
 // tests check the geometry here, and golden files record it.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "core/affine2.hpp"
 #include "core/arrow.hpp"
 #include "scene/figure.hpp"
 
@@ -56,7 +58,18 @@ struct Label {
   Color color;
 };
 
-using Shape = std::variant<Polyline, FilledPath, Circle, ArrowShape, Label>;
+// A raster image (a PNG of "shapes", PITA Sec. 7.1) placed on the plane:
+// pixel (u, v) of the file, v down, lands at to_world(u, v). The painter
+// reads the file through cairo (render/image_cache.hpp).
+struct Image {
+  std::string path;       // the file to read
+  std::string name;       // as the scene spells it
+  int width = 0, height = 0;
+  Affine2 to_world;       // pixel coordinates -> world
+  double opacity = 1.0;
+};
+
+using Shape = std::variant<Polyline, FilledPath, Circle, ArrowShape, Label, Image>;
 
 // A shape and where it comes from: the JSON Pointer of its layer
 // ("/layers/2") and the frame (or keyframe) index it belongs to, -1 if none.
@@ -64,6 +77,10 @@ struct Item {
   std::string layer;
   int index = -1;
   Shape shape;
+  // Drawn anew at each frame of an animation (the frame D(t), the shapes it
+  // carries, a moving pattern); false: the same in every frame (the animated
+  // SVG draws it once).
+  bool moving = false;
 };
 
 // The legend of a panel, painted in pixel space.
@@ -85,6 +102,9 @@ struct Drawing {
 // The smallest box holding every point of the drawing (circles and labels by
 // their centre or anchor only); nullopt for an empty drawing.
 std::optional<scene::Box> bounds(const Drawing& drawing);
+
+// The image's corners on the plane: pixels (0, 0), (w, 0), (w, h), (0, h).
+std::array<Point, 4> image_corners(const Image& image);
 
 // True when every coordinate and radius of the drawing is finite.
 bool is_finite(const Drawing& drawing);

@@ -12,7 +12,9 @@
 
 #include <fmt/format.h>
 
+#include "motion/moving_keyframes.hpp"
 #include "render/budget.hpp"
+#include "render/image_cache.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
 #include "render/panel_drawing.hpp"
@@ -40,7 +42,9 @@ bool finite_transform(const ViewTransform& t) {
          std::isfinite(t.world_center.imag());
 }
 
-void paint(cairo_t* cr, const scene::Scene& scene, const Figure& figure) {
+}  // namespace
+
+void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) {
   const scene::Canvas& canvas = scene.canvas;
   if (canvas.background) {
     const scene::Color& c = *canvas.background;
@@ -62,6 +66,8 @@ void paint(cairo_t* cr, const scene::Scene& scene, const Figure& figure) {
     paint_drawing(cr, figure.drawings[i], place, canvas.font);
   }
 }
+
+namespace {
 
 void check(cairo_status_t status, const scene::Scene& scene) {
   if (status != CAIRO_STATUS_SUCCESS) {
@@ -117,26 +123,68 @@ std::string_view extension(Format format) {
   return "";
 }
 
-Figure build_figure(const scene::Scene& scene, double budget) {
-  Figure figure;
+std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelection* selection) {
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
-  check_budget(scene, estimate_cost(scene), budget);
+  std::vector<Drawing> drawings;
   for (const scene::Panel& panel : scene.panels) {
-    Drawing drawing = scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel)
-                                                            : panel_drawing(scene, panel);
+    Drawing drawing = scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel, selection)
+                                                            : panel_drawing(scene, panel, selection);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,
                         "the figure has non-finite coordinates (the motion overflows)");
     }
-    figure.drawings.push_back(std::move(drawing));
+    drawings.push_back(std::move(drawing));
   }
-  figure.placements = layout_panels(scene, figure.drawings);
-  for (std::size_t i = 0; i < figure.placements.size(); ++i) {
-    if (!finite_transform(figure.placements[i].transform)) {
+  return drawings;
+}
+
+void check_images(const scene::Scene& scene) {
+  for (const scene::Panel& panel : scene.panels) {
+    for (const scene::ShapeOutline& shape : panel.shapes) {
+      if (shape.image) cached_image(shape.image->path, shape.image->given);
+    }
+  }
+}
+
+std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings) {
+  std::vector<PanelPlacement> placements = layout_panels(scene, drawings);
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    if (!finite_transform(placements[i].transform)) {
       throw RenderError(scene.path, scene.panels[i].pointer,
                         "the figure's extent is too large to draw (coordinates overflow)");
     }
   }
+  return placements;
+}
+
+Figure build_figure(const scene::Scene& scene, double budget) {
+  Figure figure;
+  if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
+  check_images(scene);
+  if (!motion::has_moving_keyframes(scene)) {
+    check_budget(scene, estimate_cost(scene), budget);
+    figure.drawings = frame_drawings(scene, nullptr);
+  } else {
+    // Moving keyframes (Sec. 7.4, Fig. 27): the figure overlays the pattern
+    // at each tau of "overlay", in order; the legends are drawn once.
+    const std::vector<double>& overlay = scene.animation.overlay;
+    for (std::size_t k = 0; k < overlay.size(); ++k) {
+      const scene::Scene at = motion::scene_at(scene, overlay[k]);
+      FigureCost cost = estimate_cost(at);
+      cost.units *= static_cast<double>(overlay.size());
+      for (CostPart& part : cost.parts) part.units *= static_cast<double>(overlay.size());
+      if (k == 0) check_budget(at, cost, budget);
+      std::vector<Drawing> drawings = frame_drawings(at, nullptr);
+      if (k == 0) {
+        figure.drawings = std::move(drawings);
+        continue;
+      }
+      for (std::size_t i = 0; i < drawings.size(); ++i) {
+        for (Item& item : drawings[i].items) figure.drawings[i].items.push_back(std::move(item));
+      }
+    }
+  }
+  figure.placements = checked_layout(scene, figure.drawings);
   return figure;
 }
 
@@ -179,7 +227,7 @@ std::string render_figure(const scene::Scene& scene, const Figure& figure, Forma
   {
     ContextPtr cr(cairo_create(surface.get()));
     if (format == Format::png) cairo_scale(cr.get(), scale, scale);
-    paint(cr.get(), scene, figure);
+    paint_figure(cr.get(), scene, figure);
     check(cairo_status(cr.get()), scene);
   }
   if (format == Format::png) {

@@ -8,7 +8,10 @@
 #include <vector>
 
 #include "render/drawing.hpp"
+#include <cairo.h>
+
 #include "render/layout.hpp"
+#include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {
@@ -31,8 +34,25 @@ struct Figure {
 };
 // Throws RenderError (render/panel_drawing.hpp), also, before drawing
 // anything, when the figure's estimated work exceeds `budget` times the
-// default budget (render/budget.hpp).
+// default budget (render/budget.hpp), or an image cannot be decoded. A scene
+// whose keyframes move (PITA Sec. 7.4) overlays its figure at each tau of
+// its animation's "overlay".
 Figure build_figure(const scene::Scene& scene, double budget = 1.0);
+
+// Every panel's drawing, without layout or budget; with a selection, one
+// frame of an animation (render/panel_drawing.hpp). Throws RenderError.
+std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelection* selection);
+
+// Decodes every image of the scene's shapes (once per thread): a corrupt PNG
+// is refused before anything is drawn. Throws RenderError.
+void check_images(const scene::Scene& scene);
+
+// layout_panels, refusing placements that overflow. Throws RenderError.
+std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings);
+
+// Paints the figure (background, titles, panels) on `cr`, whose user units are
+// canvas pixels.
+void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure);
 
 // The file's bytes. `scale` multiplies the PNG's pixel size (SVG and PDF are
 // vector: 1 canvas pixel = 1 unit). The same scene gives the same bytes.

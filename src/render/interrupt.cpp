@@ -46,7 +46,16 @@ void write_all(const char* text) {
   }
 }
 
+// Deferred mode (DeferredInterrupts): the first signal is only recorded.
+std::atomic<int> deferring{0};
+std::atomic<int> pending{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
 extern "C" void on_interrupt(int sig) {
+  if (deferring.load() > 0) {
+    int expected = 0;
+    if (pending.compare_exchange_strong(expected, sig)) return;  // the owner cleans up and exits
+  }
   const bool removed = remove_in_flight() > 0;
   write_all("pita: interrupted (");
   write_all(signal_name(sig));
@@ -91,6 +100,19 @@ std::size_t remove_in_flight() noexcept {
     ++count;
   }
   return count;
+}
+
+DeferredInterrupts::DeferredInterrupts() { deferring.fetch_add(1); }
+DeferredInterrupts::~DeferredInterrupts() { deferring.fetch_sub(1); }
+
+int pending_interrupt() { return pending.load(); }
+
+void exit_interrupted(int sig) {
+  const bool removed = remove_in_flight() > 0;
+  write_all("pita: interrupted (");
+  write_all(signal_name(sig));
+  write_all(removed ? "); removed unfinished outputs\n" : "); removed unfinished outputs\n");
+  ::_exit(128 + sig);
 }
 
 void install_interrupt_cleanup() {

@@ -49,4 +49,25 @@ std::size_t remove_in_flight() noexcept;
 // shell) stays ignored.
 void install_interrupt_cleanup();
 
+// Work that cleans up after itself (an animation's frames are written by
+// several threads into a temporary directory, and ffmpeg runs beside pita):
+// while a DeferredInterrupts lives, the first SIGINT, SIGTERM or SIGHUP is
+// only recorded (pending_interrupt() returns it); the owner notices it between
+// frames, stops its threads and ffmpeg, removes what it wrote and calls
+// exit_interrupted(). A second signal ends the process at once, as outside.
+class DeferredInterrupts {
+ public:
+  DeferredInterrupts();
+  ~DeferredInterrupts();
+  DeferredInterrupts(const DeferredInterrupts&) = delete;
+  DeferredInterrupts& operator=(const DeferredInterrupts&) = delete;
+};
+
+// The signal recorded while deferring, 0 when none.
+int pending_interrupt();
+
+// Removes the registered temporaries, says "pita: interrupted (SIGTERM);
+// removed unfinished outputs" and exits with 128 + sig.
+[[noreturn]] void exit_interrupted(int sig);
+
 }  // namespace pita::render

@@ -2,6 +2,8 @@
 
 #include <pango/pangocairo.h>
 
+#include "render/image_cache.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -94,6 +96,22 @@ struct ShapePainter {
     paint_text(cr, s.text, font, s.size, s.color, at.real(), at.imag() - 0.6 * s.size,
                TextAlign::left);
   }
+  void operator()(const Image& s) const {
+    const Affine2 to_canvas = image_to_canvas(s, view);
+    if (!(std::abs(to_canvas.L.determinant()) > 0.0)) return;  // collapsed to a line
+    cairo_surface_t* pixels = cached_image(s.path, s.name);
+    cairo_save(cr);
+    cairo_matrix_t matrix;
+    cairo_matrix_init(&matrix, to_canvas.L(0, 0), to_canvas.L(1, 0), to_canvas.L(0, 1), to_canvas.L(1, 1),
+                      to_canvas.b(0), to_canvas.b(1));
+    cairo_transform(cr, &matrix);
+    cairo_rectangle(cr, 0.0, 0.0, s.width, s.height);
+    cairo_clip(cr);
+    cairo_set_source_surface(cr, pixels, 0.0, 0.0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
+    cairo_paint_with_alpha(cr, s.opacity);
+    cairo_restore(cr);
+  }
 };
 
 void unref(gpointer object) { g_object_unref(object); }
@@ -121,6 +139,15 @@ void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std
 }
 
 }  // namespace
+
+Affine2 image_to_canvas(const Image& image, const ViewTransform& view) {
+  // canvas = C (world - world_center) + canvas_center, C = diag(s, -s) (y up) or diag(s, s).
+  Affine2 to_canvas;
+  to_canvas.L << view.scale, 0.0, 0.0, view.y_up ? -view.scale : view.scale;
+  to_canvas.b << view.canvas_center.real() - view.scale * view.world_center.real(),
+      view.canvas_center.imag() + (view.y_up ? view.scale : -view.scale) * view.world_center.imag();
+  return compose(to_canvas, image.to_world);
+}
 
 void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
                 const Color& color, double x, double y, TextAlign align) {

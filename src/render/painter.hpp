@@ -18,6 +18,9 @@ inline constexpr double kHeadPerWidth = 4.0;
 void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
                    const std::string& font);
 
+// Pixel coordinates of the image's file -> canvas pixels under `view`.
+Affine2 image_to_canvas(const Image& image, const ViewTransform& view);
+
 enum class TextAlign { left, center, right };
 // Draws `text` with its box's top at y, aligned on x.
 void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,

@@ -7,7 +7,9 @@
 #include <fmt/format.h>
 
 #include "analysis/prediction.hpp"
+#include "core/carrier.hpp"
 #include "render/banner.hpp"
+#include "render/carried_shapes.hpp"
 #include "render/plot.hpp"
 #include "render/spiral.hpp"
 #include "render/strip.hpp"
@@ -27,8 +29,8 @@ std::string keyframe_name(std::size_t i) {
 
 class PanelBuilder {
  public:
-  PanelBuilder(const scene::Scene& scene, const scene::Panel& panel)
-      : scene_(scene), panel_(panel), motion_(built(scene, panel)) {}
+  PanelBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
+      : scene_(scene), panel_(panel), selection_(selection), motion_(built(scene, panel)) {}
 
   Drawing build() {
     const bool own = panel_.layers.has_value();
@@ -77,12 +79,40 @@ class PanelBuilder {
 
   void push(int index, Shape shape) { drawing_.items.push_back({layer_, index, std::move(shape)}); }
 
+  // The times of a layer that draws a sequence of frames: an animation
+  // frame's trail and time, else the layer's samples over its range.
+  std::vector<double> sequence_times(const std::optional<int>& samples, const std::optional<scene::TimeRange>& range) const {
+    if (selection_ == nullptr) return layer_times(panel_, samples, range);
+    std::vector<double> times = selection_->trail;
+    times.push_back(selection_->t);
+    return times;
+  }
+  double fade(std::size_t i, std::size_t count) const {
+    return selection_ != nullptr ? trail_fade(i, count) : 1.0;
+  }
+
   void add(const scene::PatternLayer& layer) {
-    const std::vector<Arrow> pattern = frames(layer_times(panel_, layer.samples, layer.range));
+    const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
     for (std::size_t i = 0; i < pattern.size(); ++i) {
       const Arrow& frame = pattern[i];
       const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};
-      push(static_cast<int>(i), Polyline{{s.from, s.to}, false, layer.line});
+      LineStyle line = layer.line;
+      line.opacity *= fade(i, pattern.size());
+      push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
+      drawing_.items.back().moving = selection_ != nullptr;
+    }
+  }
+
+  // "shapes" (Sec. 7.1): the scene's shapes at each frame, carried by the
+  // similarity that takes the handle onto D(t) (core/carrier.hpp).
+  void add(const scene::ShapesLayer& layer) {
+    const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
+    for (std::size_t i = 0; i < pattern.size(); ++i) {
+      for (Shape& shape : carried_shapes(panel_.shapes, carrier(panel_.handle, pattern[i]), layer,
+                                         scene_.canvas.y_up, fade(i, pattern.size()))) {
+        push(static_cast<int>(i), std::move(shape));
+        drawing_.items.back().moving = selection_ != nullptr;
+      }
     }
   }
 
@@ -186,6 +216,16 @@ class PanelBuilder {
     }
   }
 
+  void add(const scene::HandleLayer& layer) {
+    if (layer.shapes) {
+      scene::ShapesLayer style;
+      for (Shape& shape : carried_shapes(panel_.shapes, Affine2::identity(), style, scene_.canvas.y_up)) {
+        push(-1, std::move(shape));
+      }
+    }
+    push(-1, ArrowShape{panel_.handle.p, panel_.handle.q(), LineStyle{layer.color, layer.width, 1.0, {}}});
+  }
+
   void add(const scene::LabelLayer& layer) {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
   }
@@ -264,6 +304,7 @@ class PanelBuilder {
 
   const scene::Scene& scene_;
   const scene::Panel& panel_;
+  const FrameSelection* selection_ = nullptr;
   motion::SceneMotion motion_;
   std::string layer_;
   Drawing drawing_;
@@ -282,8 +323,12 @@ std::vector<double> layer_times(const scene::Panel& panel, const std::optional<i
   return motion::uniform_times(from, to, samples.value_or(panel.samples));
 }
 
-Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel) {
-  return PanelBuilder(scene, panel).build();
+double trail_fade(std::size_t i, std::size_t count) {
+  return static_cast<double>(i + 1) / static_cast<double>(count);
+}
+
+Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
+  return PanelBuilder(scene, panel, selection).build();
 }
 
 }  // namespace pita::render

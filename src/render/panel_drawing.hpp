@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "render/drawing.hpp"
 #include "scene/scene.hpp"
@@ -17,9 +18,24 @@ class RenderError : public std::runtime_error {
   RenderError(const std::string& file, const std::string& pointer, const std::string& reason);
 };
 
+// One frame of an animation ("what": "motion", README "Animation"): the
+// layers that draw a sequence of frames ("pattern", "shapes") draw the frame
+// at scene time `t` and, fading behind it, the frames at the `trail` times
+// (oldest first); their items are marked `moving`. Every other layer is drawn
+// as in the static figure.
+struct FrameSelection {
+  double t = 0.0;
+  std::vector<double> trail;
+};
+
+// The opacity factor of entry i of trail + {t} (count entries, the last is t
+// itself at 1): (i + 1) / count.
+double trail_fade(std::size_t i, std::size_t count);
+
 // The shapes of every layer of `scene` for `panel`, in drawing order. Throws
 // RenderError.
-Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel);
+Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
+                      const FrameSelection* selection = nullptr);
 
 // The times a pattern-like layer samples: `samples` (else the panel's) evenly
 // over `range` (else [a, c], the first and last knots).

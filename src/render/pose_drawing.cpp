@@ -10,6 +10,7 @@
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
+#include "render/carried_shapes.hpp"
 #include "render/plot.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
@@ -22,7 +23,8 @@ constexpr double kPi = std::numbers::pi;
 
 class PoseBuilder {
  public:
-  PoseBuilder(const scene::Scene& scene, const scene::Panel& panel) : scene_(scene), panel_(panel) {}
+  PoseBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
+      : scene_(scene), panel_(panel), selection_(selection) {}
 
   Drawing build() {
     const bool own = panel_.pose_layers.has_value();
@@ -80,18 +82,20 @@ class PoseBuilder {
   }
 
   void add(const scene::ShapesLayer& layer) {
-    const std::vector<double> ts = times(layer.samples, layer.range);
+    // An animation frame draws the shapes at its time (and its trail), else
+    // at every frame of the layer.
+    std::vector<double> ts;
+    if (selection_ != nullptr) {
+      ts = selection_->trail;
+      ts.push_back(selection_->t);
+    } else {
+      ts = times(layer.samples, layer.range);
+    }
     for (std::size_t i = 0; i < ts.size(); ++i) {
-      const Affine2 pose = pose_at(ts[i]);
-      for (const scene::ShapeOutline& shape : panel_.shapes) {
-        LineStyle line = layer.line;
-        if (shape.color) line.color = *shape.color;
-        std::vector<Point> points = mapped(pose, shape);
-        if (layer.fill && shape.closed) {
-          push(static_cast<int>(i), FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity, line});
-        } else {
-          push(static_cast<int>(i), Polyline{std::move(points), shape.closed, line});
-        }
+      const double fade = selection_ != nullptr ? trail_fade(i, ts.size()) : 1.0;
+      for (Shape& shape : carried_shapes(panel_.shapes, pose_at(ts[i]), layer, scene_.canvas.y_up, fade)) {
+        push(static_cast<int>(i), std::move(shape));
+        drawing_.items.back().moving = selection_ != nullptr;
       }
     }
   }
@@ -213,6 +217,7 @@ class PoseBuilder {
 
   const scene::Scene& scene_;
   const scene::Panel& panel_;
+  const FrameSelection* selection_ = nullptr;
   std::optional<motion::SceneMotion> motion_;
   std::string layer_;
   Drawing drawing_;
@@ -272,8 +277,8 @@ Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string&
   return drawing;
 }
 
-Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel) {
-  return PoseBuilder(scene, panel).build();
+Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
+  return PoseBuilder(scene, panel, selection).build();
 }
 
 }  // namespace pita::render

@@ -11,7 +11,10 @@ namespace pita::render {
 
 // The shapes of every pose layer of `scene` for `panel`, in drawing order.
 // Throws RenderError.
-Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel);
+// With a selection (an animation frame), the "shapes" layers draw the shapes
+// at the selection's time and trail only.
+Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
+                           const FrameSelection* selection = nullptr);
 
 // The "existence" layer alone (Fig. 6 of the SAM paper): exposed for tests.
 // Cells are rectangles [a0, a1] x [h s0, h s1] with h = kExistenceHeight.

@@ -1,6 +1,7 @@
 // Arrow scenes: timed keyframes (the PITA paper; README "Scene format").
 #include "scene/scene_readers.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <string_view>
@@ -10,7 +11,9 @@
 
 #include "core/limits.hpp"
 
+#include "scene/animation_reader.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -48,9 +51,24 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
   }
 }
 
-constexpr std::array<std::string_view, 14> kSceneFields = {
-    "$schema", "description", "method", "keyframes", "points", "chain",  "samples",
-    "options", "title",       "canvas", "layers",    "panels", "golden", "timing"};
+constexpr std::array<std::string_view, 17> kSceneFields = {
+    "$schema", "description", "method", "keyframes", "points", "chain",  "samples", "options", "title",
+    "canvas",  "layers",      "panels", "golden",    "timing", "shapes", "handle",  "animation"};
+
+// A "shapes" layer draws the scene's shapes, which it must have.
+void check_shape_layers(const JsonReader& reader, const Scene& scene) {
+  if (!scene.shapes.empty()) return;
+  for (const Panel& panel : scene.panels) {
+    const bool own = panel.layers.has_value();
+    const std::vector<Layer>& layers = own ? *panel.layers : scene.layers;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      if (std::holds_alternative<ShapesLayer>(layers[i])) {
+        reader.fail((own ? panel.pointer : std::string()) + "/layers/" + std::to_string(i) + "/type",
+                    "a \"shapes\" layer draws the scene's \"shapes\" carried by the handle, and the scene has none");
+      }
+    }
+  }
+}
 }  // namespace
 
 Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
@@ -80,7 +98,17 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   if (keyframes == nullptr && points == nullptr) {
     reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
   }
-  if (keyframes != nullptr) scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method);
+  if (keyframes != nullptr) {
+    scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method, &scene.keyframes_to);
+  }
+  // Shapes carried by the frames (Sec. 7.1): drawn in the handle's frame.
+  if (const Json* shapes = JsonReader::member(document, "shapes")) {
+    scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
+  }
+  if (const Json* handle = JsonReader::member(document, "handle")) {
+    if (points != nullptr) reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
+    scene.handle = reader.arrow(*handle, "/handle");
+  }
   if (points != nullptr) {
     scene.points = reader.points(*points, "/points");
     if (JsonReader::member(document, "timing") != nullptr) {
@@ -122,6 +150,15 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
   check_point_layers(reader, scene);
+  check_shape_layers(reader, scene);
+  const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
+                                  [](const Panel& panel) { return !panel.keyframes_to.empty(); });
+  if (const Json* animation = JsonReader::member(document, "animation")) {
+    scene.animation = detail::read_animation(reader, *animation, "/animation", moving);
+    scene.has_animation = true;
+  } else {
+    scene.animation = detail::default_animation(moving);
+  }
   return scene;
 }
 

@@ -162,30 +162,76 @@ struct PointTrajectoryLayer {
   bool dots = true;                    // a dot at each timed point
 };
 
-using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
-                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer>;
-
-// ------------------------------------------------------------ pose scenes
-// Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
-// shapes are outlines in the frame of the reference pose, drawn through the
-// pose of each frame.
-
-
 // A closed outline (polygon) or open polyline in reference coordinates.
+// A raster image placed in the shapes' frame (PITA Sec. 7.1): a PNG file read
+// by cairo when drawn. The scene reader has checked that the file exists, is a
+// PNG of at most kMaxImageSide pixels a side, and lies in the scene's folder
+// tree (README "Shapes and images").
+struct ImageRef {
+  std::string path;   // the file to open (the scene's folder joined with `given`)
+  std::string given;  // as the scene spells it (what messages and goldens show)
+  int width = 0;      // pixels, from the PNG header
+  int height = 0;
+};
+
+// A closed outline (polygon), an open polyline, or an image, in the frame of
+// the shapes (reference coordinates of a pose scene; the handle's frame of an
+// arrow scene). An image's points are the corners of its box, counter-
+// clockwise from (x0, y0); it is drawn upright in that box.
 struct ShapeOutline {
   std::vector<Point> points;             // at least 2
   bool closed = true;
   std::optional<Color> color;            // nullopt: the layer's colour
+  std::optional<ImageRef> image;         // set: an image in the box of `points`
 };
 
-struct ShapesLayer {  // "shapes": the shapes at each frame (a pattern of shapes)
+// "shapes": the shapes at each frame (a pattern of shapes). In pose scenes
+// each frame maps them by the pose A(t); in arrow scenes by the carrier
+// similarity that takes the handle onto D(t) (PITA Sec. 7.1).
+struct ShapesLayer {
   LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
   std::optional<Color> fill;             // filled with fill_opacity when given
   double fill_opacity = 0.25;
   std::optional<int> samples;            // default: the panel's samples
   std::optional<TimeRange> range;        // default: first to last knot
 };
+
+// "handle" (PITA Sec. 7.1, Fig. 23): the picture X where it was drawn, in
+// its own frame, and the handle arrow E over it.
+struct HandleLayer {
+  Color color{0.85, 0.0, 0.0, 1.0};
+  double width = 2.0;
+  bool shapes = true;                  // draw the shapes (images, outlines) under the handle
+};
+
+using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
+                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
+                           PointTrajectoryLayer, ShapesLayer, HandleLayer>;
+
+// "animation" (README "Animation"): how `pita animate` and `pita render --at`
+// play the scene. Command-line flags override these fields.
+struct Animation {
+  enum class What { motion, pattern };
+  double duration = 4.0;   // seconds, > 0
+  double fps = 30.0;       // (0, kMaxFps]
+  std::optional<int> frames;  // [kMinAnimationFrames, kMaxAnimationFrames]; default round(duration * fps)
+  bool loop = true;
+  // "motion": one frame D(t) (and the shapes it carries) runs over the knots;
+  // "pattern": the whole figure changes with tau in [0, 1] as its moving
+  // keyframes move (PITA Sec. 7.4). Default: "pattern" when a keyframe
+  // moves, else "motion".
+  What what = What::motion;
+  int trail = 0;           // "motion": how many earlier frames fade behind, [0, kMaxTrail]
+  // The values of tau that a static figure of moving keyframes overlays
+  // (Fig. 27), each in [0, 1]; default [0].
+  std::vector<double> overlay{0.0};
+};
+
+// ------------------------------------------------------------ pose scenes
+// Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
+// shapes are outlines in the frame of the reference pose, drawn through the
+// pose of each frame.
+
 
 struct PosesLayer {  // "poses": the shapes at the control poses
   std::vector<Color> colors{Color{0.85, 0.0, 0.0, 1.0}, Color{0.0, 0.6, 0.0, 1.0},
@@ -242,6 +288,13 @@ struct Panel {
   MethodOptions options;
   std::vector<Keyframe> keyframes;
   std::optional<Chain> chain;          // the scene's unless the panel gives "chain"
+  // Moving keyframes (PITA Sec. 7.4): keyframe i runs from keyframes[i].arrow
+  // (tau = 0) to keyframes_to[i] (tau = 1) by the steady morph SMA. Empty when
+  // no keyframe moves; else as long as `keyframes`.
+  std::vector<Arrow> keyframes_to;
+  // The arrow drawn over the shapes (Sec. 7.1): each frame carries the shapes
+  // by the similarity taking it onto D(t). Default: the first keyframe.
+  Arrow handle;
   // "points": timed points instead of keyframes (PITA Sec. 7.6), at least 4;
   // drawn by point-trajectory layers. Empty when the panel has keyframes.
   std::vector<TimedPoint> points;
@@ -262,7 +315,7 @@ struct Panel {
   // this panel (the scene's unless overridden), its shapes and layers.
   PoseMethod pose_method = PoseMethod::sam;
   std::vector<TimedPose> poses;
-  std::vector<ShapeOutline> shapes;
+  std::vector<ShapeOutline> shapes;      // also arrow scenes: carried by the handle
   std::optional<std::vector<PoseLayer>> pose_layers;
   int subdivisions = kDefaultSubdivisions;  // four-point-SAM
 

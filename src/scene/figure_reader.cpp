@@ -46,6 +46,7 @@ constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
 constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 
+constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
     "type", "curve", "samples", "range", "color", "width", "opacity", "dash", "dots"};
 constexpr std::array<std::string_view, 9> kPlotFields = {
@@ -219,6 +220,14 @@ TrajectoryLayer read_trajectory(const Fields& fields) {
   fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
   read_range(fields, layer.range);
   read_line(fields, layer.line);
+  return layer;
+}
+
+HandleLayer read_handle_layer(const Fields& fields) {
+  HandleLayer layer;
+  fields.color("color", layer.color);
+  fields.number("width", kLineWidth, layer.width);
+  fields.boolean("shapes", layer.shapes);
   return layer;
 }
 
@@ -546,7 +555,7 @@ PatchLayer read_patch(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 10> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 12> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -558,6 +567,8 @@ constexpr std::array<LayerKind<Layer>, 10> kArrowLayerKinds{{
     {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f); }},
     {"point-trajectory", kPointTrajectoryFields,
      [](const Fields& f) -> Layer { return read_point_trajectory(f); }},
+    {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f); }},
+    {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
 }};
 
 // The layer kinds of pose scenes.

@@ -16,6 +16,8 @@ namespace pita::scene::detail {
 namespace {
 
 constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
+constexpr std::array<std::string_view, 3> kMovingKeyframeFields = {"t", "from", "to"};
+constexpr std::array<std::string_view, 5> kArrowFields = {"p", "m", "w", "q", "turns"};
 constexpr std::array<std::string_view, 3> kOptionFields = {"anchor", "path_mean",
                                                            "magnitude_mean"};
 
@@ -350,7 +352,7 @@ MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
 }
 
 std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string& pointer,
-                                            Method method) const {
+                                            Method method, std::vector<Arrow>* targets) const {
   if (!value.is_array()) {
     fail(pointer, "must be an array of keyframes (got " + value_text(value) + ")");
   }
@@ -361,13 +363,50 @@ std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string
     fail(pointer, fmt::format("at most {} keyframes (got {})", kMaxKeyframes, value.size()));
   }
   std::vector<Keyframe> result;
+  std::vector<Arrow> to;
+  bool moving = false;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
-    const Keyframe next = keyframe(value[i], at);
+    const Json* from = value[i].is_object() ? member(value[i], "from") : nullptr;
+    const Json* target = value[i].is_object() ? member(value[i], "to") : nullptr;
+    Keyframe next;
+    if (from != nullptr || target != nullptr) {
+      // A moving keyframe (Sec. 7.4): {"t", "from": ARROW, "to": ARROW}.
+      if (targets == nullptr) fail(at + (from ? "/from" : "/to"), "moving keyframes are not allowed here");
+      check_fields(value[i], at, kMovingKeyframeFields);
+      if (from == nullptr) fail(at + "/from", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+      if (target == nullptr) fail(at + "/to", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+      const Json* knot = member(value[i], "t");
+      if (knot == nullptr) fail(at + "/t", "missing required field (the knot, a time value)");
+      next.t = number(*knot, at + "/t");
+      if (std::abs(next.t) > kMaxKeyframeValue) {
+        fail(at + "/t", fmt::format("knot must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(next.t)));
+      }
+      next.arrow = arrow(*from, at + "/from");
+      to.push_back(arrow(*target, at + "/to"));
+      moving = true;
+    } else {
+      next = keyframe(value[i], at);
+      to.push_back(next.arrow);
+    }
     if (i > 0) check_knot_order(result.back().t, next.t, at + "/t");
     result.push_back(next);
   }
+  if (targets != nullptr) {
+    targets->clear();
+    if (moving) *targets = std::move(to);
+  }
   return result;
+}
+
+Arrow JsonReader::arrow(const Json& value, const std::string& pointer) const {
+  if (!value.is_object()) {
+    fail(pointer, "an arrow must be an object {\"p\", and \"q\" or \"m\" and \"w\"} (got " + value_text(value) + ")");
+  }
+  check_fields(value, pointer, kArrowFields);
+  Json keyframe_form = value;
+  keyframe_form["t"] = 0.0;
+  return keyframe(keyframe_form, pointer).arrow;
 }
 
 // A keyframe is {"t", "p", and either "q" or "m" and "w"; "turns" optional}.

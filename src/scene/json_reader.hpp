@@ -21,6 +21,7 @@
 #include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "scene/figure.hpp"
+#include "scene/read_options.hpp"
 
 namespace pita::scene::detail {
 
@@ -63,9 +64,11 @@ struct Interval {
 
 class JsonReader {
  public:
-  explicit JsonReader(std::string file) : file_(std::move(file)) {}
+  explicit JsonReader(std::string file, ReadOptions options = {})
+      : file_(std::move(file)), options_(options) {}
 
   const std::string& file() const { return file_; }
+  const ReadOptions& options() const { return options_; }
 
   [[noreturn]] void fail(const std::string& pointer, std::string reason) const;
 
@@ -122,8 +125,13 @@ class JsonReader {
 
   // "keyframes": at least as many as `method` takes (a track of more is
   // chained), at most kMaxKeyframes, knots strictly increasing.
+  // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4) read `from` as the
+  // keyframe; when any moves, `targets` receives every keyframe's `to` (a
+  // keyframe that does not move is its own target), else stays empty.
   std::vector<Keyframe> keyframes(const Json& value, const std::string& pointer,
-                                  Method method) const;
+                                  Method method, std::vector<Arrow>* targets = nullptr) const;
+  // An arrow: {"p", and "q" or "m" and "w"; "turns" optional}.
+  Arrow arrow(const Json& value, const std::string& pointer) const;
 
  private:
   [[noreturn]] void choice_failed(const Json& value, const std::string& pointer,
@@ -134,6 +142,7 @@ class JsonReader {
   void check_coordinates(Point x, const std::string& pointer) const;
 
   std::string file_;
+  ReadOptions options_;
 };
 
 }  // namespace pita::scene::detail

@@ -69,4 +69,17 @@ inline constexpr int kMaxExistenceSide = 4000;           // "columns", "rows" of
 inline constexpr int kMaxExistenceCells = 4'000'000;     // columns x rows of "existence"
 inline constexpr int kMaxPatchSide = 100;                // "columns", "rows" of "patch"
 
+// Images in "shapes" (PITA Sec. 7.1): PNG files of at most this many pixels a
+// side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per scene.
+inline constexpr int kMaxImageSide = 8192;
+inline constexpr int kMaxImages = 16;
+
+// "animation" and `pita animate` (README "Animation").
+inline constexpr double kMaxFps = 240.0;
+inline constexpr int kMinAnimationFrames = 2;
+inline constexpr int kMaxAnimationFrames = 100'000;
+inline constexpr double kMaxAnimationDuration = 86'400.0;  // a day of video, in seconds
+inline constexpr int kMaxTrail = 100;                      // "trail": earlier frames shown
+inline constexpr int kMaxOverlay = 64;                     // "overlay": taus of a static figure
+
 }  // namespace pita::scene

@@ -16,8 +16,8 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 9> kPanelFields = {
-    "method", "options", "keyframes", "points", "chain", "title", "samples", "layers", "timing"};
+constexpr std::array<std::string_view, 10> kPanelFields = {
+    "method", "options", "keyframes", "points", "chain", "title", "samples", "layers", "timing", "handle"};
 constexpr std::array<std::string_view, 8> kPosePanelFields = {
     "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
 
@@ -84,12 +84,14 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
   }
   if (keyframes != nullptr) {
-    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method);
+    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method, &panel.keyframes_to);
+    panel.handle = scene.handle.value_or(panel.keyframes.front().arrow);
     panel.points.clear();
     panel.motion_pointer = pointer + "/keyframes";
   } else if (points != nullptr) {
     panel.points = reader.points(*points, pointer + "/points");
     panel.keyframes.clear();
+    panel.keyframes_to.clear();
     panel.motion_pointer = pointer + "/points";
   } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
     panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
@@ -107,6 +109,10 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
                                                                        : pointer;
     reader.check_chain(panel.method, panel.chain,
                        panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1, at);
+  }
+  if (const Json* handle = JsonReader::member(value, "handle")) {
+    if (!panel.points.empty()) reader.fail(pointer + "/handle", "a handle carries shapes with keyframe arrows; this panel has \"points\"");
+    panel.handle = reader.arrow(*handle, pointer + "/handle");
   }
   if (const Json* title = JsonReader::member(value, "title")) {
     panel.title = reader.string(*title, pointer + "/title");

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "scene/did_you_mean.hpp"
+#include "scene/image_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene::detail {
@@ -12,8 +13,8 @@ namespace pita::scene::detail {
 namespace {
 
 constexpr std::array<std::string_view, 3> kPoseFields = {"t", "matrix", "triangle"};
-constexpr std::array<std::string_view, 5> kShapeKinds = {"polygon", "polyline", "triangle",
-                                                         "outline", "color"};
+constexpr std::array<std::string_view, 7> kShapeKinds = {"polygon", "polyline", "triangle", "outline",
+                                                         "image",   "box",      "color"};
 constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square", "picture"};
 
 double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -187,8 +188,8 @@ std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
 }
 
 std::vector<ShapeOutline> builtin_outline(std::string_view name) {
-  const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}}; };
-  const auto open = [](std::vector<Point> points) { return ShapeOutline{std::move(points), false, {}}; };
+  const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}, {}}; };
+  const auto open = [](std::vector<Point> points) { return ShapeOutline{std::move(points), false, {}, {}}; };
   if (name == "F") {
     return {closed({{0.0, 0.0}, {0.25, 0.0}, {0.25, 0.4}, {0.6, 0.4}, {0.6, 0.6},
                     {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8}, {0.75, 1.0}, {0.0, 1.0}})};
@@ -221,6 +222,7 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
                                      value_text(value)));
   }
   std::vector<ShapeOutline> shapes, extra;
+  int images = 0;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
@@ -231,13 +233,44 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
       shape.color = reader.color(*color, at + "/color");
     }
     int kinds = 0;
-    for (const std::string_view kind : {"polygon", "polyline", "triangle", "outline"}) {
+    if (const Json* box = JsonReader::member(item, "box"); box != nullptr && JsonReader::member(item, "image") == nullptr) {
+      reader.fail(at + "/box", "\"box\" places an \"image\"; this shape has none");
+    }
+    for (const std::string_view kind : {"polygon", "polyline", "triangle", "outline", "image"}) {
       const Json* given = JsonReader::member(item, std::string(kind));
       if (given == nullptr) continue;
       const std::string where = at + "/" + std::string(kind);
       if (++kinds > 1) {
-        reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\" or "
-                           "\"outline\"; give only one");
+        reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\", "
+                           "\"outline\" or \"image\"; give only one");
+      }
+      if (kind == "image") {
+        // {"image": "picture.png", "box": [[x0, y0], [x1, y1]]} (PITA Sec. 7.1).
+        if (++images > kMaxImages) {
+          reader.fail(where, fmt::format("at most {} images in a scene", kMaxImages));
+        }
+        const std::string file = reader.string(*given, where);
+        try {
+          shape.image = check_image_file(reader.file(), file, reader.options());
+        } catch (const std::invalid_argument& error) {
+          reader.fail(where, error.what());
+        }
+        const Json* box = JsonReader::member(item, "box");
+        if (box == nullptr) {
+          reader.fail(at + "/box", "missing required field (where the image goes: [[x0, y0], [x1, y1]], its "
+                                   "lower-left and upper-right corners)");
+        }
+        if (!box->is_array() || box->size() != 2) {
+          reader.fail(at + "/box", "must be [[x0, y0], [x1, y1]] (got " + value_text(*box) + ")");
+        }
+        const Point low = bounded_point(reader, (*box)[0], at + "/box/0");
+        const Point high = bounded_point(reader, (*box)[1], at + "/box/1");
+        if (!(low.real() < high.real() && low.imag() < high.imag())) {
+          reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1");
+        }
+        shape.points = {low, Point{high.real(), low.imag()}, high, Point{low.real(), high.imag()}};
+        shape.closed = true;
+        continue;
       }
       if (kind == "polygon" || kind == "polyline") {
         if (!given->is_array() || given->size() < 2 ||
@@ -268,8 +301,8 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
       }
     }
     if (kinds == 0) {
-      reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\" or "
-                      "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\"");
+      reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\", "
+                      "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\", or \"image\" and \"box\"");
     }
     shapes.push_back(std::move(shape));
     for (ShapeOutline& part : extra) shapes.push_back(std::move(part));

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/animation_reader.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
@@ -16,10 +17,10 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 14> kPoseSceneFields = {
+constexpr std::array<std::string_view, 15> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
     "samples", "title",       "canvas", "layers", "panels",             "golden",
-    "subdivisions", "timing"};
+    "subdivisions", "timing", "animation"};
 
 }  // namespace
 
@@ -65,7 +66,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   } else {
     scene.shapes = {ShapeOutline{std::vector<Point>(scene.reference_triangle.begin(),
                                                     scene.reference_triangle.end()),
-                                 true, std::nullopt}};
+                                 true, std::nullopt, std::nullopt}};
   }
   if (const Json* samples = JsonReader::member(document, "samples")) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
@@ -100,6 +101,10 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
     scene.panels = {scene_panel(scene, "")};
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
+  if (const Json* animation = JsonReader::member(document, "animation")) {
+    scene.animation = detail::read_animation(reader, *animation, "/animation", false);
+    scene.has_animation = true;
+  }
   return scene;
 }
 

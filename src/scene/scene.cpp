@@ -40,6 +40,8 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.method_name = scene.method_name;
   panel.options = scene.options;
   panel.keyframes = scene.keyframes;
+  panel.keyframes_to = scene.keyframes_to;
+  if (!scene.keyframes.empty()) panel.handle = scene.handle.value_or(scene.keyframes.front().arrow);
   panel.chain = scene.chain;
   panel.points = scene.points;
   panel.pose_method = scene.pose_method;
@@ -67,13 +69,13 @@ SceneError::SceneError(std::string file, int line, int column, std::string reaso
       line_(line),
       column_(column) {}
 
-Scene load_scene(const std::filesystem::path& path) {
-  return parse_scene(read_input_file(path, kMaxSceneFileBytes, "scene file"), path.string());
+Scene load_scene(const std::filesystem::path& path, const ReadOptions& options) {
+  return parse_scene(read_input_file(path, kMaxSceneFileBytes, "scene file"), path.string(), options);
 }
 
-Scene parse_scene(std::string_view text, std::string source_name) {
+Scene parse_scene(std::string_view text, std::string source_name, const ReadOptions& options) {
   const Json document = parse_json(text, source_name);
-  const JsonReader reader(std::move(source_name));
+  const JsonReader reader(std::move(source_name), options);
   if (!document.is_object()) {
     reader.fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
   }

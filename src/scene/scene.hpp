@@ -17,6 +17,7 @@
 #include "core/pitas/registry.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
+#include "scene/read_options.hpp"
 
 namespace pita::scene {
 
@@ -35,6 +36,14 @@ struct Scene {
   Method method = Method::P6;
   MethodOptions options;      // every field set (defaults applied)
   std::vector<Keyframe> keyframes;  // at least as many as the method takes, knots strictly increasing
+  // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4): keyframes[i].arrow
+  // is "from", keyframes_to[i] is "to". Empty when no keyframe moves.
+  std::vector<Arrow> keyframes_to;
+  // "handle" (Sec. 7.1): the arrow over the shapes; nullopt: the first keyframe.
+  std::optional<Arrow> handle;
+  // "animation": how `pita animate` and `pita render --at` play the scene.
+  Animation animation;
+  bool has_animation = false;       // the scene gave "animation"
   // "chain": how a track of more keyframes than the method takes is built
   // (core/chains/chain.hpp); unset: default_chain(method) when there are
   // more, the method itself when there are as many.
@@ -50,7 +59,7 @@ struct Scene {
   PoseMethod pose_method = PoseMethod::sam;
   std::vector<TimedPose> poses;            // empty when no layer needs a motion
   std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
-  std::vector<ShapeOutline> shapes;        // default: the reference triangle
+  std::vector<ShapeOutline> shapes;        // default: the reference triangle (arrow scenes: none)
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
   int subdivisions = kDefaultSubdivisions; // four-point-SAM: steps, [0, kMaxSubdivisions]
 
@@ -105,11 +114,12 @@ Panel scene_panel(const Scene& scene, std::string pointer = "");
 
 // Reads and checks the scene file at `path`. Throws SceneError (also when the
 // file cannot be read); the error names the file as `path` is spelt.
-Scene load_scene(const std::filesystem::path& path);
+Scene load_scene(const std::filesystem::path& path, const ReadOptions& options = {});
 
 // Checks the scene given as JSON text; `source_name` names it in errors and
 // becomes Scene::path. Throws SceneError.
-Scene parse_scene(std::string_view text, std::string source_name);
+// Image paths are found relative to the folder of `source_name`.
+Scene parse_scene(std::string_view text, std::string source_name, const ReadOptions& options = {});
 
 // The method named `name` (any spelling pita::find_method accepts). Throws
 // std::invalid_argument with a message such as

@@ -1,0 +1,38 @@
+// One frame of an animation as a figure (README "Animation"), and the view
+// every frame shares: frame k of `pita animate` is exactly the figure that
+// `pita render --at t_k` draws.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "animate/timeline.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::animate {
+
+// The placements of every frame: the layout of the drawings that cover the
+// whole animation (the static figure, and frames at 33 times spread over the
+// timeline; for "pattern", the figure at 33 values of tau), so that the view
+// does not jump from frame to frame. A canvas "view" is used as given.
+std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline);
+
+// The figure at time t (a scene time for "motion", tau for "pattern") with the
+// shared placements. "motion": the layers that draw frames ("pattern",
+// "shapes") draw D(t) (or A(t)) and the timeline's trail; the rest is the
+// static figure. "pattern": the whole figure through the keyframes at tau,
+// every item but the labels moving. Throws RenderError.
+render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline, double t,
+                            const std::vector<render::PanelPlacement>& placements);
+
+// What frames.json records of frame k: {"frame": k + 1, "file", "t", and the
+// first panel's "D": {"p", "m", "w", "q"} (arrow scenes, "motion"), "A":
+// [[a, b, tx], [c, d, ty]] (pose scenes), or "keyframes": [...] at tau
+// ("pattern")}.
+nlohmann::ordered_json frame_record(const scene::Scene& scene, const Timeline& timeline, int k,
+                                    const std::string& file);
+
+}  // namespace pita::animate

@@ -1,0 +1,389 @@
+#include "animate/output.hpp"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cairo.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "animate/frame.hpp"
+#include "animate/frame_runner.hpp"
+#include "animate/progress.hpp"
+#include "animate/svg_animation.hpp"
+#include "render/budget.hpp"
+#include "render/interrupt.hpp"
+#include "render/output_file.hpp"
+#include "render/panel_drawing.hpp"
+
+extern char** environ;
+
+namespace pita::animate {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+[[noreturn]] void output_failed(const fs::path& path, const std::string& reason) {
+  throw render::OutputError(fmt::format("{}: cannot write: {}", path.string(), reason));
+}
+
+// A temporary beside `target` (".name.XXXXXX"), registered with the interrupt
+// cleanup until released.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const fs::path& target) : target_(target) {
+    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    const std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+    slot_ = render::register_in_flight(pattern);
+    if (slot_ < 0) output_failed(target, "too many outputs in flight, or the path is too long");
+    const int fd = ::mkstemp(render::slot_path(slot_));
+    if (fd < 0) {
+      const std::string reason = std::strerror(errno);
+      render::release_in_flight(slot_);
+      output_failed(target, reason);
+    }
+    ::close(fd);
+    path_ = render::slot_path(slot_);
+  }
+  ~TemporaryFile() {
+    if (slot_ >= 0) {
+      ::unlink(path_.c_str());
+      render::release_in_flight(slot_);
+    }
+  }
+  const std::string& path() const { return path_; }
+  void commit() {
+    if (::rename(path_.c_str(), target_.c_str()) != 0) output_failed(target_, std::strerror(errno));
+    render::release_in_flight(slot_);
+    slot_ = -1;
+  }
+
+ private:
+  fs::path target_;
+  std::string path_;
+  int slot_ = -1;
+};
+
+// ------------------------------------------------------------ frames
+
+std::string png_frame(const scene::Scene& scene, const render::Figure& figure, const Request& request) {
+  return render::render_figure(scene, figure, render::Format::png, request.scale, request.budget);
+}
+
+// The raw pixels of a frame for ffmpeg: cairo's ARGB32 rows (B, G, R, A in
+// memory), `width` x `height`, no padding.
+std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, int width, int height, double scale) {
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
+      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height), &cairo_surface_destroy);
+  {
+    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), &cairo_destroy);
+    cairo_scale(cr.get(), scale, scale);
+    render::paint_figure(cr.get(), scene, figure);
+  }
+  cairo_surface_flush(surface.get());
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
+    throw render::RenderError(scene.path, "", "cairo could not draw a frame");
+  }
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  const unsigned char* data = cairo_image_surface_get_data(surface.get());
+  std::string bytes;
+  bytes.reserve(static_cast<std::size_t>(width) * height * 4);
+  for (int y = 0; y < height; ++y) {
+    bytes.append(reinterpret_cast<const char*>(data + static_cast<std::ptrdiff_t>(y) * stride),
+                 static_cast<std::size_t>(width) * 4);
+  }
+  return bytes;
+}
+
+// ------------------------------------------------------------ directory
+
+bool is_frame_directory(const fs::path& path) {
+  std::error_code error;
+  if (!fs::is_directory(path, error)) return false;
+  if (fs::is_empty(path, error)) return true;
+  return fs::exists(path / "frames.json", error);
+}
+
+void write_bytes(const fs::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) output_failed(path, std::strerror(errno));
+}
+
+fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                         const std::vector<render::PanelPlacement>& placements) {
+  const fs::path target = request.out;
+  std::error_code error;
+  if (fs::exists(target, error) && !is_frame_directory(target)) {
+    output_failed(target, "it exists and is not a frame directory that pita wrote (no frames.json): remove it or "
+                          "give another OUT");
+  }
+  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (target.filename().empty()) parent = target.parent_path().parent_path().empty() ? fs::path(".") : target.parent_path().parent_path();
+  const fs::path name = target.filename().empty() ? target.parent_path().filename() : target.filename();
+  fs::create_directories(parent, error);
+  std::string pattern = (parent / ("." + name.string() + ".XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
+  const fs::path temporary = pattern;
+  const fs::path final_path = parent / name;
+  struct Cleanup {
+    fs::path path;
+    ~Cleanup() {
+      if (!path.empty()) {
+        std::error_code ignored;
+        fs::remove_all(path, ignored);
+      }
+    }
+  } cleanup{temporary};
+
+  Progress progress("frames", timeline.frames, request.progress);
+  Json records = Json::array();
+  try {
+    run_frames(
+        timeline.frames, request.threads,
+        [&](int k) {
+          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements);
+          return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
+        },
+        [&](int k, std::string&& bytes) {
+          const std::string file = frame_file_name(k, timeline.frames, request.frame_format);
+          write_bytes(temporary / file, bytes);
+          records.push_back(frame_record(scene, timeline, k, file));
+          progress.update(k + 1);
+        });
+  } catch (const Interrupted& interrupted) {
+    fs::remove_all(temporary, error);
+    cleanup.path.clear();
+    render::exit_interrupted(interrupted.signal);
+  }
+  Json index{{"scene", scene.path},
+             {"what", what_name(timeline.what)},
+             {"frames", timeline.frames},
+             {"fps", timeline.fps},
+             {"duration", timeline.seconds()},
+             {"loop", timeline.loop},
+             {"first", timeline.first},
+             {"last", timeline.last},
+             {"width", static_cast<int>(std::round(scene.canvas.width * (request.frame_format == render::Format::png ? request.scale : 1.0)))},
+             {"height", static_cast<int>(std::round(scene.canvas.height * (request.frame_format == render::Format::png ? request.scale : 1.0)))},
+             {"frame_list", std::move(records)}};
+  write_bytes(temporary / "frames.json", index.dump(1) + "\n");
+  if (const int sig = render::pending_interrupt()) {
+    fs::remove_all(temporary, error);
+    cleanup.path.clear();
+    render::exit_interrupted(sig);
+  }
+  // Into place: a new directory is renamed; an older one is swapped with the
+  // new one atomically (renameat2 RENAME_EXCHANGE), then removed.
+  if (!fs::exists(final_path, error)) {
+    if (::rename(temporary.c_str(), final_path.c_str()) != 0) output_failed(target, std::strerror(errno));
+  } else {
+    if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, final_path.c_str(), RENAME_EXCHANGE) != 0) {
+      output_failed(target, std::strerror(errno));
+    }
+    // `temporary` now holds the older frames.
+    return target;
+  }
+  cleanup.path.clear();
+  return target;
+}
+
+// ------------------------------------------------------------ video
+
+fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                     const std::vector<render::PanelPlacement>& placements) {
+  const std::string ffmpeg = find_ffmpeg();
+  if (ffmpeg.empty()) {
+    throw AnimationError(fmt::format("-o {}: writing video needs ffmpeg, which is not installed (install the Debian "
+                                     "package: apt-get install ffmpeg), or write an animated .svg or a directory "
+                                     "of frames instead",
+                                     request.out.string()));
+  }
+  const int width = static_cast<int>(std::round(scene.canvas.width * request.scale));
+  const int height = static_cast<int>(std::round(scene.canvas.height * request.scale));
+  render::check_pixel_budget(scene, request.scale, request.budget);
+  TemporaryFile temporary(request.out);
+  const bool webm = request.kind == OutputKind::webm;
+  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
+                                   "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
+                                   "-framerate", fmt::format("{:.17g}", timeline.fps), "-i", "pipe:0", "-an",
+                                   // yuv420p needs even sides.
+                                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-pix_fmt", "yuv420p"};
+  if (webm) {
+    for (const char* a : {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"}) args.emplace_back(a);
+  } else {
+    for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
+  }
+  args.push_back(temporary.path());
+
+  int pipe_fds[2];
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) output_failed(request.out, std::strerror(errno));
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
+  // ffmpeg in its own process group: a terminal's Ctrl-C reaches pita, which
+  // stops it (and removes the file) itself.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t child = -1;
+  const int spawned = ::posix_spawn(&child, ffmpeg.c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  ::close(pipe_fds[0]);
+  if (spawned != 0) {
+    ::close(pipe_fds[1]);
+    throw AnimationError(fmt::format("-o {}: cannot run {}: {}", request.out.string(), ffmpeg, std::strerror(spawned)));
+  }
+  // Writes to a dead ffmpeg fail with EPIPE instead of killing pita.
+  struct sigaction ignore {}, previous {};
+  ignore.sa_handler = SIG_IGN;
+  ::sigaction(SIGPIPE, &ignore, &previous);
+  int pipe_out = pipe_fds[1];
+  const auto stop_child = [&](bool kill_it) {
+    if (pipe_out >= 0) ::close(pipe_out);
+    pipe_out = -1;
+    if (kill_it) ::kill(child, SIGKILL);
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    ::sigaction(SIGPIPE, &previous, nullptr);
+    return status;
+  };
+
+  Progress progress("video", timeline.frames, request.progress);
+  bool broken = false;
+  try {
+    run_frames(
+        timeline.frames, request.threads,
+        [&](int k) {
+          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements);
+          return raw_frame(scene, figure, width, height, request.scale);
+        },
+        [&](int k, std::string&& bytes) {
+          std::size_t done = 0;
+          while (done < bytes.size() && !broken) {
+            const ssize_t n = ::write(pipe_out, bytes.data() + done, bytes.size() - done);
+            if (n < 0 && errno == EINTR) {
+              if (render::pending_interrupt()) throw Interrupted{render::pending_interrupt()};
+              continue;
+            }
+            if (n <= 0) {
+              broken = true;
+              break;
+            }
+            done += static_cast<std::size_t>(n);
+          }
+          if (broken) throw render::OutputError(fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)",
+                                                            request.out.string()));
+          progress.update(k + 1);
+        });
+  } catch (const Interrupted& interrupted) {
+    stop_child(true);
+    ::unlink(temporary.path().c_str());
+    render::exit_interrupted(interrupted.signal);
+  } catch (...) {
+    stop_child(true);
+    throw;
+  }
+  const int status = stop_child(false);
+  if (const int sig = render::pending_interrupt()) {
+    ::unlink(temporary.path().c_str());
+    render::exit_interrupted(sig);
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    output_failed(request.out, fmt::format("ffmpeg failed ({})", WIFEXITED(status)
+                                                                      ? fmt::format("exit status {}", WEXITSTATUS(status))
+                                                                      : fmt::format("signal {}", WTERMSIG(status))));
+  }
+  temporary.commit();
+  return request.out;
+}
+
+}  // namespace
+
+OutputKind output_kind(const std::string& out) {
+  const fs::path path(out);
+  if (!path.has_filename() || !path.has_extension()) return OutputKind::directory;
+  const std::string extension = lower(path.extension().string());
+  if (extension == ".svg") return OutputKind::svg;
+  if (extension == ".mp4") return OutputKind::mp4;
+  if (extension == ".webm") return OutputKind::webm;
+  throw AnimationError(fmt::format("-o {}: \"{}\" is not an output pita animates into: give OUT.svg (an animated SVG), "
+                                   "OUT.mp4 or OUT.webm (a video), or a directory (no extension, or ending in \"/\") "
+                                   "for a sequence of frames",
+                                   out, path.extension().string()));
+}
+
+std::string frame_file_name(int k, int count, render::Format format) {
+  const int digits = std::max(4, static_cast<int>(std::to_string(count).size()));
+  return fmt::format("frame-{:0{}}.{}", k + 1, digits, render::extension(format));
+}
+
+std::string find_ffmpeg() {
+  if (const char* given = std::getenv("PITA_FFMPEG")) return ::access(given, X_OK) == 0 ? given : "";
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = dirs.find(':', start);
+    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/ffmpeg";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return "";
+}
+
+std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
+  render::check_budget(scene, render::estimate_cost(scene), request.budget);
+  render::check_images(scene);
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
+  // The first frame before any output exists: a scene that cannot be drawn
+  // fails here, having written nothing.
+  frame_figure(scene, timeline, timeline.time(0), placements);
+  const render::DeferredInterrupts deferred;
+  switch (request.kind) {
+    case OutputKind::svg: {
+      Progress progress("frames", timeline.frames, request.progress);
+      const std::string svg = animated_svg(scene, timeline, [&](int k) {
+        if (const int sig = render::pending_interrupt()) render::exit_interrupted(sig);
+        progress.update(k + 1);
+      });
+      if (const int sig = render::pending_interrupt()) render::exit_interrupted(sig);
+      render::write_file_atomically(request.out, svg);
+      return {request.out};
+    }
+    case OutputKind::directory: return {write_directory(scene, timeline, request, placements)};
+    case OutputKind::mp4:
+    case OutputKind::webm: return {write_video(scene, timeline, request, placements)};
+  }
+  return {};
+}
+
+}  // namespace pita::animate

@@ -1,0 +1,51 @@
+// Where `pita animate` writes (README "Animation"), chosen by OUT:
+//   OUT.svg            one animated SVG (svg_animation.hpp);
+//   OUT.mp4, OUT.webm  a video, raw frames piped into Debian's ffmpeg;
+//   OUT (no extension, or ending in "/")  a directory of frames
+//                      frame-0001.png ... (or .svg) and frames.json.
+// Everything is written to a temporary beside OUT and renamed into place: a
+// failed or interrupted run (SIGINT, SIGTERM, SIGHUP) leaves no partial output
+// and an older OUT as it was.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "animate/timeline.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::animate {
+
+enum class OutputKind { svg, directory, mp4, webm };
+
+// The kind of OUT. Throws AnimationError for an extension pita does not write
+// (".gif", ".png": frames go into a directory).
+OutputKind output_kind(const std::string& out);
+
+struct Request {
+  std::filesystem::path out;
+  OutputKind kind = OutputKind::directory;
+  render::Format frame_format = render::Format::png;  // directory frames: png or svg
+  double scale = 1.0;                                 // PNG and video pixels per canvas pixel
+  double budget = 1.0;                                // render --budget
+  bool progress = true;                               // a bar on a terminal's stderr
+  int threads = 1;
+};
+
+// Renders every frame and writes OUT. Returns the paths written (OUT; for a
+// directory, OUT itself). Throws AnimationError or RenderError (exit 2),
+// OutputError (exit 3), and on a signal removes its temporaries and exits
+// with 128 + signal (render/interrupt.hpp).
+std::vector<std::filesystem::path> write_animation(const scene::Scene& scene, const Timeline& timeline,
+                                                   const Request& request);
+
+// The frame files' names: frame-0001.png, with at least 4 digits (more when
+// the count needs them), numbered from 1.
+std::string frame_file_name(int k, int count, render::Format format);
+
+// ffmpeg's path: $PITA_FFMPEG if set, else "ffmpeg" found on PATH; "" if none.
+std::string find_ffmpeg();
+
+}  // namespace pita::animate

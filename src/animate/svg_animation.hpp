@@ -1,0 +1,23 @@
+// The animated SVG of `pita animate OUT.svg` (README "Animation"): one file
+// that plays in any browser by SMIL alone (no script). What every frame shares
+// is drawn once by cairo (the background, titles, the layers that do not
+// move, legends), as two nested <svg> documents below and above the frames;
+// each frame is a group of what moves, shown during its 1/fps seconds by a
+// discrete <animate> of its visibility. Images are embedded once in <defs>
+// and placed by <use transform>.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "animate/timeline.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::animate {
+
+// The animated SVG's text. `progress(k)` is called after frame k (0-based).
+// Throws RenderError as the frames do.
+std::string animated_svg(const scene::Scene& scene, const Timeline& timeline,
+                         const std::function<void(int)>& progress = {});
+
+}  // namespace pita::animate

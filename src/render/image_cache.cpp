@@ -1,0 +1,36 @@
+#include "render/image_cache.hpp"
+
+#include <map>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "render/panel_drawing.hpp"
+
+namespace pita::render {
+
+namespace {
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+
+}  // namespace
+
+cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
+  thread_local std::map<std::string, std::unique_ptr<cairo_surface_t, SurfaceDeleter>> cache;
+  auto it = cache.find(path);
+  if (it == cache.end()) {
+    std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(cairo_image_surface_create_from_png(path.c_str()));
+    const cairo_status_t status = cairo_surface_status(surface.get());
+    if (status != CAIRO_STATUS_SUCCESS) {
+      throw RenderError(path, "", fmt::format("cannot read the image \"{}\": {}", name,
+                                              status == CAIRO_STATUS_READ_ERROR ? "not a valid PNG (truncated or corrupt)"
+                                                                                : cairo_status_to_string(status)));
+    }
+    it = cache.emplace(path, std::move(surface)).first;
+  }
+  return it->second.get();
+}
+
+}  // namespace pita::render
