@@ -75,15 +75,16 @@ void check(cairo_status_t status, const scene::Scene& scene) {
   }
 }
 
-// cairo numbers SVG surfaces ("surface5") with a counter global to the
-// process, so the second figure rendered by one process would differ from the
-// same figure rendered alone. Renumber them 1, 2, ... in order of appearance.
-// (Text is drawn as glyph outlines, so "surface" occurs only in cairo's ids.)
-std::string canonical_svg_ids(const std::string& svg) {
+// cairo numbers SVG surfaces ("surface5") and embedded images ("image176")
+// with counters global to the process, so the second figure rendered by one
+// process would differ from the same figure rendered alone. Renumber them 1,
+// 2, ... in order of appearance. (Text is drawn as glyph outlines, so these
+// words followed by digits occur only in cairo's ids.)
+// Only where an id is named: after id=" or #, never inside embedded data.
+std::string canonical_ids(const std::string& svg, std::string_view kPrefix) {
   std::map<std::string, std::string> renamed;
   std::string out;
   out.reserve(svg.size());
-  static constexpr std::string_view kPrefix = "surface";
   std::size_t at = 0;
   while (true) {
     const std::size_t found = svg.find(kPrefix, at);
@@ -91,7 +92,8 @@ std::string canonical_svg_ids(const std::string& svg) {
     std::size_t end = found + kPrefix.size();
     while (end < svg.size() && std::isdigit(static_cast<unsigned char>(svg[end]))) ++end;
     out.append(svg, at, found + kPrefix.size() - at);
-    if (end > found + kPrefix.size()) {
+    const bool named = (found >= 4 && svg.compare(found - 4, 4, "id=\"") == 0) || (found >= 1 && svg[found - 1] == '#');
+    if (named && end > found + kPrefix.size()) {
       const std::string number = svg.substr(found + kPrefix.size(), end - found - kPrefix.size());
       const auto [it, inserted] = renamed.emplace(number, std::to_string(renamed.size() + 1));
       out += it->second;
@@ -100,6 +102,10 @@ std::string canonical_svg_ids(const std::string& svg) {
   }
   out.append(svg, at, std::string::npos);
   return out;
+}
+
+std::string canonical_svg_ids(const std::string& svg) {
+  return canonical_ids(canonical_ids(svg, "surface"), "image");
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ double drawn_units(const Drawing& drawing) {
     double operator()(const Circle&) const { return 8; }
     double operator()(const ArrowShape&) const { return 2; }
     double operator()(const Label& s) const { return static_cast<double>(s.text.size()); }
+    double operator()(const Image&) const { return 4; }
   };
   double units = 0;
   for (const Item& item : drawing.items) units += kShapeUnits + std::visit(Points{}, item.shape);

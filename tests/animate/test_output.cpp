@@ -1,0 +1,82 @@
+// What `pita animate` writes, by OUT (src/animate/output.cpp). The command's
+// behaviour end to end (files, ffmpeg, interrupts) is in tests/cli/test_animate.cpp.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "animate/output.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::animate {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Output, KindByExtension) {
+  EXPECT_EQ(output_kind("a.svg"), OutputKind::svg);
+  EXPECT_EQ(output_kind("dir/a.SVG"), OutputKind::svg);
+  EXPECT_EQ(output_kind("a.mp4"), OutputKind::mp4);
+  EXPECT_EQ(output_kind("a.webm"), OutputKind::webm);
+  EXPECT_EQ(output_kind("frames"), OutputKind::directory);
+  EXPECT_EQ(output_kind("frames.d/"), OutputKind::directory);
+  EXPECT_THROW(output_kind("a.gif"), AnimationError);
+  EXPECT_THROW(output_kind("a.png"), AnimationError);
+  try {
+    output_kind("movie.avi");
+  } catch (const AnimationError& error) {
+    EXPECT_NE(std::string(error.what()).find("\".avi\""), std::string::npos) << error.what();
+  }
+}
+
+TEST(Output, FrameFilesAreNumberedFromOneWithAtLeastFourDigits) {
+  EXPECT_EQ(frame_file_name(0, 120, render::Format::png), "frame-0001.png");
+  EXPECT_EQ(frame_file_name(119, 120, render::Format::svg), "frame-0120.svg");
+  EXPECT_EQ(frame_file_name(0, 100000, render::Format::png), "frame-000001.png");
+}
+
+TEST(Output, DirectoryOfFramesWithTheirTimes) {
+  const fs::path dir = fs::temp_directory_path() / ("pita-test-output-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const scene::Scene scene = scene::load_scene(fs::path(PITA_SOURCE_DIR) / "scenes" / "fig24-animation-frames.json");
+  const Timeline timeline = make_timeline(scene, {std::nullopt, std::nullopt, 5});
+  Request request;
+  request.out = dir / "frames";
+  request.kind = OutputKind::directory;
+  request.progress = false;
+  request.threads = 2;
+  write_animation(scene, timeline, request);
+  std::ifstream in(dir / "frames" / "frames.json");
+  const nlohmann::json index = nlohmann::json::parse(in);
+  EXPECT_EQ(index["frames"], 5);
+  ASSERT_EQ(index["frame_list"].size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    const auto& record = index["frame_list"][static_cast<std::size_t>(k)];
+    EXPECT_EQ(record["t"].get<double>(), timeline.time(k));
+    EXPECT_TRUE(fs::is_regular_file(dir / "frames" / record["file"].get<std::string>()));
+  }
+  // nothing else beside it: the temporary directory was renamed into place
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  // again: the older directory is replaced, an extra file in it gone
+  std::ofstream(dir / "frames" / "stray.txt") << "x";
+  write_animation(scene, timeline, request);
+  EXPECT_FALSE(fs::exists(dir / "frames" / "stray.txt"));
+  entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  fs::remove_all(dir);
+}
+
+TEST(Output, FfmpegCanBeMissing) {
+  ::setenv("PITA_FFMPEG", "/nonexistent/ffmpeg", 1);
+  EXPECT_EQ(find_ffmpeg(), "");
+  ::unsetenv("PITA_FFMPEG");
+}
+
+}  // namespace
+}  // namespace pita::animate
