@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The README's main command: installs what is missing, builds, then renders
-# every scene in scenes/ into out/<scene>.svg and out/<scene>.png, and prints
-# its frames into out/<scene>.frames.json, two scenes at a time (one per
-# core). Each output is written to a temporary file and renamed into place, so
+# every scene in scenes/ into out/<scene>.svg and out/<scene>.png, prints
+# its frames into out/<scene>.frames.json, and plays each scene that has an
+# "animation" into out/<scene>.anim.svg (an animated SVG), two scenes at a
+# time (one per core). Each output is written to a temporary file and renamed into place, so
 # out/ never holds a half-written file. Exit 0 only if every scene succeeded.
 #
 #   scripts/run.sh [OUT_DIR]      (default: out/)
@@ -27,7 +28,8 @@ eval_one() {
   local tmp
   tmp="$(mktemp "$PITA_OUT/.$name.XXXXXX")"
   if "$PITA_BIN" render "$scene" -o "$PITA_OUT" --format svg,png &&
-     "$PITA_BIN" eval "$scene" >"$tmp"; then
+     "$PITA_BIN" eval "$scene" >"$tmp" &&
+     { ! grep -q '"animation"' "$scene" || "$PITA_BIN" animate "$scene" -o "$PITA_OUT/$name.anim.svg" --quiet; }; then
     mv -f "$tmp" "$PITA_OUT/$name.frames.json"
     echo "wrote $PITA_OUT/$name.frames.json"
   else

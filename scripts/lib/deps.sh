@@ -32,6 +32,8 @@ PITA_TEST_PACKAGES=(
   libxml2-utils librsvg2-bin  # tests: SVG read back by xmllint and rsvg-convert
   python3                     # tests: the independent oracles (tests/oracle)
   python3-jsonschema          # tests: the scene schema checked by an independent validator
+  ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
+  chromium                    # tests: the animated SVG played in a real browser (headless)
 )
 
 # Only for scripts/test.sh --sanitize and scripts/fuzz.sh.

@@ -7,7 +7,7 @@
 //                                               last is the first again),
 // where [first, last] is [t_0, t_n], the first and last knots of the scene's
 // panels ("what": "motion"), or [0, 1], the parameter tau of the moving
-// keyframes ("what": "pattern", PITA Sec. 7.4). Times are scene times: the
+// keyframes ("what": "pattern", PITA Sec. 7.4; docs/paper-notes.md N35). Times are scene times: the
 // scene's "timing" (eases, arc length) shapes how the motion runs through them.
 #pragma once
 

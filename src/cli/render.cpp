@@ -142,8 +142,20 @@ Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
   layers [{"type": @POSE_LAYERS@, ...}],
   panels ["linear", {"method": "biarc-SAM", "poses": [...], "title": "..."}, ...]
 
+--at T draws one frame of the scene's animation (README "Animation"): at scene
+time T ("what": "motion": the pattern layers draw D(T) and its trail, the shapes
+layers the shapes it carries), or at tau = T for keyframes that move ("what":
+"pattern"); in the view every frame of `pita animate` shares, so that frame k
+of `pita animate` equals `pita render --at t_k`.
+
+Arrow scenes may carry shapes and PNG images with the frames (PITA Sec. 7.1):
+  shapes [{"polygon": ...} | {"outline": "F"} | {"image": "x.png", "box": [[x0, y0], [x1, y1]]}],
+  handle {"p": [x, y], "q": [x, y]} (default: the first keyframe), drawn by "shapes" layers;
+  image paths are relative to the scene's folder (--allow-absolute-paths for absolute ones).
+
 Examples:
   pita render scenes/fig01-eight-pitas.json -o fig01.png --scale 2
+  pita render scenes/fig23-image-motion.json --at 0.5 -o frame.png
   pita render scenes/*.json -o out --format svg,png
   pita render scenes/fig25-strokes.json -o out --format pdf
   pita render scenes/sam-fig07-no-sam-biarc.json -o fig7.png

@@ -1,6 +1,7 @@
 // Animated patterns (PITA Sec. 7.4): keyframes that move, each by the steady
 // morph SMA from its "from" arrow (tau = 0) to its "to" arrow (tau = 1). The
-// pattern at tau is the panel's method through the keyframes at tau.
+// pattern at tau is the panel's method through the keyframes at tau
+// (docs/paper-notes.md N35).
 #pragma once
 
 #include "scene/scene.hpp"
