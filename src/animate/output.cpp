@@ -360,7 +360,32 @@ std::string find_ffmpeg() {
   return "";
 }
 
+void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
+  const bool vector = request.kind == OutputKind::svg ||
+                      (request.kind == OutputKind::directory && request.frame_format == render::Format::svg);
+  if (vector) {
+    if (timeline.frames > kMaxVectorFrames * request.budget) {
+      throw AnimationError(fmt::format("--frames: {} frames of vector output exceed the limit of {:.0f} (the file "
+                                       "grows with every frame); use fewer frames, PNG frames or a video, or raise "
+                                       "the limit with --budget F",
+                                       timeline.frames, kMaxVectorFrames * request.budget));
+    }
+    return;
+  }
+  const double pixels = static_cast<double>(timeline.frames) * std::round(scene.canvas.width * request.scale) *
+                        std::round(scene.canvas.height * request.scale);
+  if (pixels > kMaxPixelFrames * request.budget) {
+    throw AnimationError(fmt::format("--frames: {} frames of {} x {} pixels ({:.3g} pixels in all) exceed the "
+                                     "animation budget of {:.3g} pixels (about 4 minutes on 2 cores); use fewer "
+                                     "frames or a smaller --scale, or raise the budget with --budget F",
+                                     timeline.frames, std::round(scene.canvas.width * request.scale),
+                                     std::round(scene.canvas.height * request.scale), pixels,
+                                     kMaxPixelFrames * request.budget));
+  }
+}
+
 std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
+  check_total_work(scene, timeline, request);
   render::check_budget(scene, render::estimate_cost(scene), request.budget);
   render::check_images(scene);
   const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);

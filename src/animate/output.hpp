@@ -20,6 +20,17 @@ namespace pita::animate {
 
 enum class OutputKind { svg, directory, mp4, webm };
 
+// The total work of an animation, beyond one frame's budget (render/budget.hpp):
+// raster frames (PNG, video) at most kMaxPixelFrames pixels in all (about 4
+// minutes on 2 cores), vector frames (the animated SVG, SVG frames) at most
+// kMaxVectorFrames frames; --budget F multiplies both.
+inline constexpr double kMaxPixelFrames = 1e10;
+inline constexpr double kMaxVectorFrames = 5000;
+
+// Throws AnimationError naming --frames (or the scene's animation) when the
+// request exceeds the limits above.
+void check_total_work(const scene::Scene& scene, const Timeline& timeline, const struct Request& request);
+
 // The kind of OUT. Throws AnimationError for an extension pita does not write
 // (".gif", ".png": frames go into a directory).
 OutputKind output_kind(const std::string& out);

@@ -74,7 +74,7 @@ Outputs render_outputs(const fs::path& scene_path) {
     const auto placements = animate::animation_layout(scene, timeline);
     for (const int k : {0, timeline.frames / 2, timeline.frames - 1}) {
       const render::Figure frame = animate::frame_figure(scene, timeline, timeline.time(k), placements);
-      out.frames.emplace_back("." + animate::frame_file_name(k, timeline.frames, render::Format::png),
+      out.frames.emplace_back(fmt::format(".{}", animate::frame_file_name(k, timeline.frames, render::Format::png)),
                               render::render_figure(scene, frame, render::Format::png));
     }
   }

@@ -19,7 +19,7 @@ std::vector<Shape> carried_shapes(const std::vector<scene::ShapeOutline>& shapes
   drawn.reserve(shapes.size());
   for (const scene::ShapeOutline& shape : shapes) {
     if (shape.image) {
-      drawn.push_back(Image{shape.image->path, shape.image->given, shape.image->width, shape.image->height,
+      drawn.emplace_back(Image{shape.image->path, shape.image->given, shape.image->width, shape.image->height,
                             compose(map, image_placement(shape, y_up)), fade});
       continue;
     }
@@ -30,9 +30,14 @@ std::vector<Shape> carried_shapes(const std::vector<scene::ShapeOutline>& shapes
     points.reserve(shape.points.size());
     for (const Point p : shape.points) points.push_back(pita::apply(map, p));
     if (layer.fill && shape.closed) {
-      drawn.push_back(FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity * fade, line});
+      FilledPath filled;
+      filled.contours.push_back(std::move(points));
+      filled.fill = *layer.fill;
+      filled.opacity = layer.fill_opacity * fade;
+      filled.outline = line;
+      drawn.emplace_back(std::move(filled));
     } else {
-      drawn.push_back(Polyline{std::move(points), shape.closed, line});
+      drawn.emplace_back(Polyline{std::move(points), shape.closed, line});
     }
   }
   return drawn;

@@ -72,6 +72,26 @@ TEST(Output, DirectoryOfFramesWithTheirTimes) {
   fs::remove_all(dir);
 }
 
+TEST(Output, TotalWorkIsLimited) {
+  const scene::Scene scene = scene::load_scene(fs::path(PITA_SOURCE_DIR) / "scenes" / "fig24-animation-frames.json");
+  Request png;
+  png.kind = OutputKind::directory;
+  // 900 x 640 pixels a frame: 17 361 frames fit in 1e10 pixels, 17 362 do not
+  EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 17361}), png));
+  EXPECT_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 17362}), png), AnimationError);
+  png.budget = 2.0;
+  EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 30000}), png));
+  Request svg;
+  svg.kind = OutputKind::svg;
+  EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 5000}), svg));
+  try {
+    check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 5001}), svg);
+    ADD_FAILURE() << "5001 SVG frames accepted";
+  } catch (const AnimationError& error) {
+    EXPECT_NE(std::string(error.what()).find("--frames"), std::string::npos);
+  }
+}
+
 TEST(Output, FfmpegCanBeMissing) {
   ::setenv("PITA_FFMPEG", "/nonexistent/ffmpeg", 1);
   EXPECT_EQ(find_ffmpeg(), "");
