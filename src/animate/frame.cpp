@@ -75,7 +75,10 @@ Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, co
     Json keys = Json::array();
     for (const Keyframe& key : at.panels.front().keyframes) {
       Json entry{{"t", key.t}};
-      for (auto& [name, value] : arrow_json(key.arrow).items()) entry[name] = value;
+      // Named: a range-for over arrow_json(...).items() would iterate a
+      // destroyed temporary (only the items() proxy lives on).
+      const Json arrow = arrow_json(key.arrow);
+      for (const auto& [name, value] : arrow.items()) entry[name] = value;
       keys.push_back(std::move(entry));
     }
     record["keyframes"] = std::move(keys);

@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -46,6 +47,14 @@ std::string lower(std::string text) {
   throw render::OutputError(fmt::format("{}: cannot write: {}", path.string(), reason));
 }
 
+// The ordinary permissions of a new file or directory (0666 or 0777 less the
+// umask): mkstemp creates 0600 and mkdtemp 0700, which the rename would keep.
+mode_t ordinary_mode(mode_t full) {
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return full & ~mask;
+}
+
 // A temporary beside `target` (".name.XXXXXX"), registered with the interrupt
 // cleanup until released.
 class TemporaryFile {
@@ -72,6 +81,7 @@ class TemporaryFile {
   }
   const std::string& path() const { return path_; }
   void commit() {
+    ::chmod(path_.c_str(), ordinary_mode(0666));
     if (::rename(path_.c_str(), target_.c_str()) != 0) output_failed(target_, std::strerror(errno));
     render::release_in_flight(slot_);
     slot_ = -1;
@@ -195,6 +205,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   }
   // Into place: a new directory is renamed; an older one is swapped with the
   // new one atomically (renameat2 RENAME_EXCHANGE), then removed.
+  ::chmod(temporary.c_str(), ordinary_mode(0777));
   if (!fs::exists(final_path, error)) {
     if (::rename(temporary.c_str(), final_path.c_str()) != 0) output_failed(target, std::strerror(errno));
   } else {
