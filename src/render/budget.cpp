@@ -1,5 +1,7 @@
 #include "render/budget.hpp"
 
+#include "motion/moving_keyframes.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -160,6 +162,13 @@ FigureCost estimate_cost(const scene::Scene& scene) {
     } else {
       add_layers(scene, panel, panel.layers, scene.layers, cost);
     }
+  }
+  // Moving keyframes (Sec. 7.4): the static figure overlays the pattern at
+  // each tau of the animation's "overlay".
+  if (motion::has_moving_keyframes(scene) && scene.animation.overlay.size() > 1) {
+    const double copies = static_cast<double>(scene.animation.overlay.size());
+    cost.units *= copies;
+    for (CostPart& part : cost.parts) part.units *= copies;
   }
   return cost;
 }

@@ -176,10 +176,7 @@ Figure build_figure(const scene::Scene& scene, double budget) {
     const std::vector<double>& overlay = scene.animation.overlay;
     for (std::size_t k = 0; k < overlay.size(); ++k) {
       const scene::Scene at = motion::scene_at(scene, overlay[k]);
-      FigureCost cost = estimate_cost(at);
-      cost.units *= static_cast<double>(overlay.size());
-      for (CostPart& part : cost.parts) part.units *= static_cast<double>(overlay.size());
-      if (k == 0) check_budget(at, cost, budget);
+      if (k == 0) check_budget(scene, estimate_cost(scene), budget);  // all the overlaid copies
       std::vector<Drawing> drawings = frame_drawings(at, nullptr);
       if (k == 0) {
         figure.drawings = std::move(drawings);
