@@ -21,6 +21,12 @@ namespace pita::test {
 
 inline const std::filesystem::path kBadScenesDir = std::filesystem::path(PITA_SOURCE_DIR) / "tests/data/bad";
 
+// Folders of files that cases name, beside the cases (images/: the PNG and
+// not-PNG files of the images-* cases; pita looks for images relative to the
+// scene's folder). tests/cli/test_bad_scenes_cli.cpp copies them beside each
+// case it runs.
+inline const std::vector<std::string> kBadSceneFixtureFolders = {"images"};
+
 // Fewer cases than this means the folder was not found or not read: the
 // tests must not pass on an empty list.
 inline constexpr std::size_t kMinBadScenes = 50;
@@ -89,7 +95,8 @@ inline std::string bad_scene_test_name(const ::testing::TestParamInfo<BadSceneCa
 }
 
 // What is wrong with the folder: a .json without its .expect or the other way
-// round, another kind of file, too few cases. Empty when all is well.
+// round, another kind of file, a folder other than the fixture folders, too
+// few cases. Empty when all is well.
 inline std::vector<std::string> bad_scene_folder_problems() {
   std::vector<std::string> problems;
   if (!std::filesystem::is_directory(kBadScenesDir)) {
@@ -108,6 +115,11 @@ inline std::vector<std::string> bad_scene_folder_problems() {
     } else if (path.extension() == ".expect") {
       if (!std::filesystem::exists(std::filesystem::path(path).replace_extension(".json"))) {
         problems.push_back(file + ": no " + path.stem().string() + ".json beside it");
+      }
+    } else if (entry.is_directory()) {
+      if (std::find(kBadSceneFixtureFolders.begin(), kBadSceneFixtureFolders.end(), file) ==
+          kBadSceneFixtureFolders.end()) {
+        problems.push_back(file + ": a folder other than the fixtures' (images/)");
       }
     } else if (file != "README.md") {
       problems.push_back(file + ": neither a .json case nor its .expect");

@@ -24,7 +24,8 @@ Animation default_animation(bool moving) {
   return animation;
 }
 
-Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving) {
+Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving,
+                         bool poses) {
   reader.object(value, pointer, "the animation");
   reader.check_fields(value, pointer, kAnimationFields);
   Animation animation = default_animation(moving);
@@ -48,6 +49,10 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
   if (const Json* loop = JsonReader::member(value, "loop")) animation.loop = reader.boolean(*loop, pointer + "/loop");
   if (const Json* what = JsonReader::member(value, "what")) {
     animation.what = reader.choice(*what, pointer + "/what", kWhatNames, kWhats);
+    if (animation.what == Animation::What::pattern && poses) {
+      reader.fail(pointer + "/what", "\"pattern\" animates a pattern whose keyframes move, and a pose scene has no "
+                                     "keyframes: animate the \"motion\"");
+    }
     if (animation.what == Animation::What::pattern && !moving) {
       reader.fail(pointer + "/what",
                   "\"pattern\" animates a pattern whose keyframes move, and no keyframe moves: give keyframes "
@@ -63,6 +68,7 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
       reader.fail(at, fmt::format("must be an array of 1 to {} values of tau in [0, 1] (got {})", kMaxOverlay,
                                   value_text(*overlay)));
     }
+    if (poses) reader.fail(at, "\"overlay\" shows moving keyframes at several tau, and a pose scene has no keyframes");
     if (!moving) reader.fail(at, "\"overlay\" shows moving keyframes at several tau, and no keyframe moves");
     animation.overlay.clear();
     for (std::size_t i = 0; i < overlay->size(); ++i) {

@@ -11,8 +11,10 @@ namespace pita::scene::detail {
 
 // {"duration", "fps", "frames", "loop", "what", "trail", "overlay"}, every
 // field optional. `moving`: whether any keyframe of the scene moves ("what"
-// then defaults to "pattern", and "pattern" needs it).
-Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving);
+// then defaults to "pattern", and "pattern" needs it). `poses`: a pose scene
+// (nothing moves; the messages say so).
+Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving,
+                         bool poses = false);
 
 // The default animation of a scene without "animation".
 Animation default_animation(bool moving);

@@ -55,15 +55,16 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
     }
     const fs::path candidate = fs::weakly_canonical(root / path, error);
     if (error || !inside(root, candidate)) {
-      throw std::invalid_argument(fmt::format("\"{}\" lies outside the scene's folder {} (images must be in the "
+      throw std::invalid_argument(fmt::format("image \"{}\" lies outside the scene's folder (images must be in the "
                                               "scene's folder or below it: no \"..\" and no symbolic link out)",
-                                              given, root.string()));
+                                              given));
     }
     resolved = folder / path;
   }
   const fs::file_status status = fs::status(resolved, error);
   if (error || !fs::exists(status)) {
-    throw std::invalid_argument(fmt::format("image \"{}\" does not exist (looked for {})", given, resolved.string()));
+    throw std::invalid_argument(fmt::format("image \"{}\" does not exist{}", given,
+                                            path.is_absolute() ? "" : " (image paths are relative to the scene's folder)"));
   }
   if (!fs::is_regular_file(status)) {
     throw std::invalid_argument(fmt::format("image \"{}\" is not a regular file", given));

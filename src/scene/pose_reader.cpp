@@ -266,7 +266,7 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
         const Point low = bounded_point(reader, (*box)[0], at + "/box/0");
         const Point high = bounded_point(reader, (*box)[1], at + "/box/1");
         if (!(low.real() < high.real() && low.imag() < high.imag())) {
-          reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1");
+          reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1 (got " + value_text(*box) + ")");
         }
         shape.points = {low, Point{high.real(), low.imag()}, high, Point{low.real(), high.imag()}};
         shape.closed = true;

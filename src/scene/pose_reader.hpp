@@ -26,7 +26,9 @@ std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
 
 // "shapes": an array of {"polygon": points} | {"polyline": points} |
 // {"triangle": "reference"} | {"outline": "F" | "house" | "square" |
-// "picture"}, each with an optional "color". A "picture" is several outlines.
+// "picture"} | {"image": path, "box": [[x0, y0], [x1, y1]]}, each with an
+// optional "color". A "picture" is several outlines; an image's file is
+// checked by check_image_file (image_file.hpp).
 std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
                                       const std::string& pointer,
                                       const std::array<Point, 3>& reference);

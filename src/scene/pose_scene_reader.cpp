@@ -102,7 +102,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
   if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation(reader, *animation, "/animation", false);
+    scene.animation = detail::read_animation(reader, *animation, "/animation", false, true);
     scene.has_animation = true;
   }
   return scene;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -12,6 +13,7 @@ namespace pita::scene {
 namespace {
 
 using test::p6_with;
+using test::error_of;
 using test::p6_with_middle;
 
 TEST(Scene, ReadsMagnitudeWindingForm) {
@@ -77,6 +79,79 @@ TEST(Scene, SmaTakesTwoKeyframes) {
                                   "s.json");
   EXPECT_EQ(scene.method, Method::SMA);
   EXPECT_EQ(scene.keyframes.size(), 2u);
+}
+
+// ------------------------------------------------------------ handles and shapes
+// PITA Sec. 7.1: "shapes" carried by the frames, drawn in the frame of the
+// "handle" (default: the first keyframe); moving keyframes (Sec. 7.4).
+
+TEST(Scene, HandleAndShapesAreRead) {
+  const Scene scene = parse_scene(
+      p6_with(R"(, "handle": {"p": [5, 5], "q": [5, 7]}, "shapes": [{"outline": "square", "color": "red"}],
+                 "layers": [{"type": "shapes", "fill": "blue"}, {"type": "handle", "width": 3, "shapes": false}])"),
+      "s.json");
+  ASSERT_TRUE(scene.handle.has_value());
+  EXPECT_EQ(scene.handle->p, make_point(5, 5));
+  EXPECT_EQ(scene.handle->m, 2.0);
+  ASSERT_EQ(scene.shapes.size(), 1u);
+  EXPECT_EQ(scene.shapes[0].points.size(), 4u);
+  ASSERT_EQ(scene.panels.size(), 1u);
+  EXPECT_EQ(scene.panels[0].handle.p, make_point(5, 5));
+  EXPECT_EQ(scene.panels[0].shapes.size(), 1u);
+  ASSERT_EQ(scene.layers.size(), 2u);
+  ASSERT_TRUE(std::holds_alternative<ShapesLayer>(scene.layers[0]));
+  EXPECT_TRUE(std::get<ShapesLayer>(scene.layers[0]).fill.has_value());
+  ASSERT_TRUE(std::holds_alternative<HandleLayer>(scene.layers[1]));
+  EXPECT_EQ(std::get<HandleLayer>(scene.layers[1]).width, 3.0);
+  EXPECT_FALSE(std::get<HandleLayer>(scene.layers[1]).shapes);
+}
+
+TEST(Scene, HandleDefaultsToTheFirstKeyframe) {
+  const Scene scene = parse_scene(p6_with(R"(, "shapes": [{"outline": "F"}])"), "s.json");
+  EXPECT_FALSE(scene.handle.has_value());
+  ASSERT_EQ(scene.panels.size(), 1u);
+  EXPECT_EQ(scene.panels[0].handle.p, scene.keyframes[0].arrow.p);
+  EXPECT_EQ(scene.panels[0].handle.m, scene.keyframes[0].arrow.m);
+  EXPECT_EQ(scene.panels[0].handle.w, scene.keyframes[0].arrow.w);
+  // Arrow scenes have no shapes unless they give them (pose scenes default to
+  // the reference triangle).
+  EXPECT_TRUE(parse_scene(p6_with(""), "s.json").shapes.empty());
+}
+
+TEST(Scene, MovingKeyframesGiveTargetsToEveryPanel) {
+  const Scene scene = parse_scene(R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, -1], "m": 2, "w": 1}},
+      {"t": 1, "p": [2, 0], "m": 1, "w": 0}], "panels": ["P2", {"title": "same"}]})",
+                                  "s.json");
+  ASSERT_EQ(scene.keyframes_to.size(), 3u);
+  EXPECT_EQ(scene.keyframes[1].arrow.p, make_point(1, 1));  // "from"
+  EXPECT_EQ(scene.keyframes_to[1].p, make_point(1, -1));    // "to"
+  EXPECT_EQ(scene.keyframes_to[0].p, scene.keyframes[0].arrow.p);
+  for (const Panel& panel : scene.panels) {
+    ASSERT_EQ(panel.keyframes_to.size(), 3u) << panel.pointer;
+    EXPECT_EQ(panel.keyframes_to[1].m, 2.0) << panel.pointer;
+  }
+  EXPECT_TRUE(parse_scene(p6_with(""), "s.json").keyframes_to.empty());
+}
+
+TEST(Scene, ShapesLayersNeedShapes) {
+  EXPECT_EQ(error_of(p6_with(R"(, "layers": [{"type": "pattern"}, {"type": "shapes"}])")),
+            "s.json: /layers/1/type: a \"shapes\" layer draws the scene's \"shapes\" carried by the handle, and the "
+            "scene has none");
+  EXPECT_EQ(error_of(p6_with(R"(, "panels": ["P2", {"layers": [{"type": "shapes"}]}])")),
+            "s.json: /panels/1/layers/0/type: a \"shapes\" layer draws the scene's \"shapes\" carried by the "
+            "handle, and the scene has none");
+  // A handle layer draws the handle alone when there are no shapes.
+  EXPECT_EQ(error_of(p6_with(R"(, "layers": [{"type": "handle"}])")), "(no error)");
+  EXPECT_EQ(error_of(p6_with(R"(, "shapes": [{"outline": "F"}], "layers": [{"type": "shapes"}])")), "(no error)");
+}
+
+TEST(Scene, HandlesNeedKeyframes) {
+  const std::string points = R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
+  EXPECT_EQ(error_of(R"({"method": "P6", "points": )" + points + R"(, "handle": {"p": [0, 0], "q": [1, 0]}})"),
+            "s.json: /handle: a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
+  EXPECT_EQ(error_of(p6_with(R"(, "handle": {"p": [1, 1], "q": [1, 1]})")),
+            "s.json: /handle/q: q equals p: a zero-length arrow has no direction");
 }
 
 // ------------------------------------------------------------ bad scenes

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -211,6 +212,84 @@ TEST(Keyframes, TurnsAddWholeTurnsToEitherForm) {
   const Scene integral =
       parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0, "turns": 3.0})"), "s.json");
   EXPECT_DOUBLE_EQ(integral.keyframes[1].arrow.w, 6.0 * kPi);
+}
+
+// Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4): "from" is the
+// keyframe, "to" its target; a keyframe that does not move is its own target.
+TEST(Keyframes, MovingKeyframesReadFromAndTo) {
+  const Json track = Json::parse(R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0.5},
+      {"t": 0.5, "from": {"p": [1, 1], "m": 2, "w": 1}, "to": {"p": [3, 4], "q": [3, 6], "turns": 1}},
+      {"t": 1, "p": [2, 0], "q": [2, -1]}])");
+  std::vector<Arrow> targets;
+  const std::vector<Keyframe> keyframes = kReader.keyframes(track, "/keyframes", Method::P6, &targets);
+  ASSERT_EQ(keyframes.size(), 3u);
+  ASSERT_EQ(targets.size(), 3u);
+  EXPECT_EQ(keyframes[1].t, 0.5);
+  EXPECT_EQ(keyframes[1].arrow.p, make_point(1, 1));
+  EXPECT_EQ(keyframes[1].arrow.m, 2.0);
+  EXPECT_EQ(keyframes[1].arrow.w, 1.0);
+  EXPECT_EQ(targets[1].p, make_point(3, 4));
+  EXPECT_EQ(targets[1].m, 2.0);
+  EXPECT_DOUBLE_EQ(targets[1].w, kPi / 2.0 + 2.0 * kPi);
+  // The keyframes that do not move are their own targets.
+  for (const std::size_t i : {std::size_t{0}, std::size_t{2}}) {
+    EXPECT_EQ(targets[i].p, keyframes[i].arrow.p) << i;
+    EXPECT_EQ(targets[i].m, keyframes[i].arrow.m) << i;
+    EXPECT_EQ(targets[i].w, keyframes[i].arrow.w) << i;
+  }
+  EXPECT_EQ(targets[0].w, 0.5);
+  EXPECT_DOUBLE_EQ(targets[2].w, -kPi / 2.0);
+
+  // No keyframe moves: no targets (and any earlier ones are cleared).
+  const Json still = Json::parse(R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 0}])");
+  EXPECT_EQ(kReader.keyframes(still, "/keyframes", Method::SMA, &targets).size(), 2u);
+  EXPECT_TRUE(targets.empty());
+}
+
+TEST(Keyframes, MovingKeyframesAreCheckedLikeKeyframes) {
+  const auto refusal = [](const std::string& middle) {
+    const Json track = Json::parse(R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
+                                   R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])");
+    std::vector<Arrow> targets;
+    return failure([&] { kReader.keyframes(track, "/keyframes", Method::P6, &targets); });
+  };
+  const std::string arrow = R"({"p": [1, 1], "m": 1, "w": 0})";
+  EXPECT_EQ(refusal(R"({"t": 0.5, "from": )" + arrow + "}"),
+            "/keyframes/1/to: missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+  EXPECT_EQ(refusal(R"({"t": 0.5, "to": )" + arrow + "}"),
+            "/keyframes/1/from: missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+  EXPECT_EQ(refusal(R"({"from": )" + arrow + R"(, "to": )" + arrow + "}"),
+            "/keyframes/1/t: missing required field (the knot, a time value)");
+  EXPECT_EQ(refusal(R"({"t": 0.5, "p": [1, 1], "from": )" + arrow + R"(, "to": )" + arrow + "}"),
+            "/keyframes/1/p: unknown field \"p\"; known fields: t, from, to");
+  EXPECT_EQ(refusal(R"({"t": 0.5, "from": [1, 1], "to": )" + arrow + "}"),
+            "/keyframes/1/from: an arrow must be an object {\"p\", and \"q\" or \"m\" and \"w\"} (got array [1,1])");
+  EXPECT_EQ(refusal(R"({"t": 0.5, "from": )" + arrow + R"(, "to": {"p": [1, 1], "m": 0, "w": 0}})"),
+            "/keyframes/1/to/m: magnitude must be > 0 (got 0)");
+  EXPECT_EQ(refusal(R"({"t": 0.5, "from": {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, "to": )" + arrow + "}"),
+            "/keyframes/1/from/t: unknown field \"t\"; known fields: p, m, w, q, turns");
+  EXPECT_EQ(refusal(R"({"t": 0, "from": )" + arrow + R"(, "to": )" + arrow + "}"),
+            "/keyframes/1/t: knot 0 equals the previous knot; knots must be strictly increasing");
+}
+
+TEST(JsonReader, ArrowsAreKeyframesWithoutAKnot) {
+  const Arrow polar = kReader.arrow(Json::parse(R"({"p": [1, 2], "m": 3, "w": 0.5, "turns": -1})"), "/handle");
+  EXPECT_EQ(polar.p, make_point(1, 2));
+  EXPECT_EQ(polar.m, 3.0);
+  EXPECT_DOUBLE_EQ(polar.w, 0.5 - 2.0 * kPi);
+  const Arrow end = kReader.arrow(Json::parse(R"({"p": [0, 0], "q": [0, 2]})"), "/handle");
+  EXPECT_EQ(end.m, 2.0);
+  EXPECT_EQ(end.w, kPi / 2.0);
+  EXPECT_EQ(failure([] { kReader.arrow(Json::parse(R"({"p": [1, 1], "q": [1, 1]})"), "/handle"); }),
+            "/handle/q: q equals p: a zero-length arrow has no direction");
+  EXPECT_EQ(failure([] { kReader.arrow(Json::parse(R"({"p": [0, 0], "m": 0, "w": 0})"), "/handle"); }),
+            "/handle/m: magnitude must be > 0 (got 0)");
+  EXPECT_EQ(failure([] { kReader.arrow(Json::parse(R"({"p": [0, 0]})"), "/handle"); }),
+            "/handle: missing the arrow: give \"q\", or \"m\" and \"w\"");
+  EXPECT_EQ(failure([] { kReader.arrow(Json::parse(R"({"t": 0, "p": [0, 0], "q": [1, 0]})"), "/handle"); }),
+            "/handle/t: unknown field \"t\"; known fields: p, m, w, q, turns");
+  EXPECT_EQ(failure([] { kReader.arrow(Json::parse("3"), "/handle"); }),
+            "/handle: an arrow must be an object {\"p\", and \"q\" or \"m\" and \"w\"} (got 3)");
 }
 
 // Just inside the limits of keyframe values is fine (the cases beyond them are

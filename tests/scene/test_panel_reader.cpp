@@ -6,6 +6,7 @@
 #include <string>
 
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
@@ -66,6 +67,48 @@ TEST(PanelReader, MotionPointerNamesWhatTheMotionIsBuiltFrom) {
   EXPECT_EQ(poses.panels[0].motion_pointer, "/panels/0");
   EXPECT_EQ(poses.panels[1].motion_pointer, "/poses");
   EXPECT_EQ(poses.panels[2].motion_pointer, "/panels/2/poses");
+}
+
+// A panel's handle (PITA Sec. 7.1): its own "handle", else the scene's, else
+// the panel's first keyframe ("from" when it moves).
+TEST(PanelReader, HandleDefaultsToTheScenesThenToThePanelsFirstKeyframe) {
+  const std::string panels = R"(, "panels": ["P2",
+      {"keyframes": [{"t": 0, "from": {"p": [7, 7], "m": 3, "w": 1}, "to": {"p": [8, 8], "m": 3, "w": 1}},
+                     {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]},
+      {"handle": {"p": [4, 4], "m": 0.5, "w": 2}},
+      {"handle": {"p": [4, 4], "m": 0.5, "w": 2}, "keyframes": [{"t": 0, "p": [9, 9], "m": 1, "w": 0},
+                     {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]}])";
+  const std::string keyframes = R"("keyframes": [{"t": 0, "p": [-1, 0], "m": 1.5, "w": 0.25},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+
+  // The scene has no handle.
+  const Scene scene = parse_scene(R"({"method": "P6", )" + keyframes + panels + "}", "s.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  EXPECT_EQ(scene.panels[0].handle.p, make_point(-1, 0));  // the scene's first keyframe
+  EXPECT_EQ(scene.panels[0].handle.m, 1.5);
+  EXPECT_EQ(scene.panels[0].handle.w, 0.25);
+  EXPECT_EQ(scene.panels[1].handle.p, make_point(7, 7));   // the panel's first keyframe, "from"
+  EXPECT_EQ(scene.panels[1].handle.m, 3.0);
+  EXPECT_EQ(scene.panels[2].handle.p, make_point(4, 4));   // its own
+  EXPECT_EQ(scene.panels[2].handle.w, 2.0);
+  EXPECT_EQ(scene.panels[3].handle.p, make_point(4, 4));   // its own, over its keyframes
+  ASSERT_EQ(scene.panels[1].keyframes_to.size(), 3u);
+  EXPECT_EQ(scene.panels[1].keyframes_to[0].p, make_point(8, 8));
+  EXPECT_TRUE(scene.panels[0].keyframes_to.empty());
+
+  // The scene's handle is every panel's that gives none, whatever its keyframes.
+  const Scene handled = parse_scene(
+      R"({"method": "P6", "handle": {"p": [0, 5], "q": [1, 5]}, )" + keyframes + panels + "}", "s.json");
+  EXPECT_EQ(handled.panels[0].handle.p, make_point(0, 5));
+  EXPECT_EQ(handled.panels[1].handle.p, make_point(0, 5));
+  EXPECT_EQ(handled.panels[1].handle.m, 1.0);
+  EXPECT_EQ(handled.panels[2].handle.p, make_point(4, 4));
+  EXPECT_EQ(handled.panels[3].handle.p, make_point(4, 4));
+
+  // Not over points.
+  EXPECT_EQ(test::error_of(R"({"method": "P6", )" + keyframes + R"(, "panels": [{"points": [{"t": 0, "p": [0, 0]},
+      {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}], "handle": {"p": [0, 0], "q": [1, 0]}}]})"),
+            "s.json: /panels/0/handle: a handle carries shapes with keyframe arrows; this panel has \"points\"");
 }
 
 }  // namespace

@@ -8,8 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <filesystem>
 #include <string>
+#include <vector>
 
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
 
@@ -218,6 +221,67 @@ TEST(PoseReader, ShapesKeepTheirKindColourAndOrder) {
   EXPECT_EQ(shapes[9].points.back(), (Point{0.0, 2.0}));
   EXPECT_EQ(failure([] { detail::read_shapes(kReader, Json::parse(R"([{"triangle": "mine"}])"), "/shapes", kUnitTriangle); }),
             "/shapes/0/triangle: must be \"reference\" (the reference triangle; got string \"mine\")");
+}
+
+// An image shape {"image", "box"} (PITA Sec. 7.1): its points are the box's
+// corners counter-clockwise from (x0, y0); the file is found beside the
+// scene file (here the repository's scenes/images/picture.png, 160 x 120).
+TEST(PoseReader, ImageShapesAreTheirBoxAndFile) {
+  const JsonReader reader((std::filesystem::path(PITA_SOURCE_DIR) / "scenes" / "s.json").string());
+  const std::vector<ShapeOutline> shapes = detail::read_shapes(
+      reader, Json::parse(R"([{"image": "images/picture.png", "box": [[1, 2], [5, 4]], "color": "red"},
+                               {"outline": "square"}])"),
+      "/shapes", kUnitTriangle);
+  ASSERT_EQ(shapes.size(), 2u);
+  ASSERT_TRUE(shapes[0].image.has_value());
+  EXPECT_EQ(shapes[0].image->given, "images/picture.png");
+  EXPECT_EQ(shapes[0].image->width, 160);
+  EXPECT_EQ(shapes[0].image->height, 120);
+  EXPECT_TRUE(std::filesystem::equivalent(shapes[0].image->path,
+                                          std::filesystem::path(PITA_SOURCE_DIR) / "scenes/images/picture.png"));
+  EXPECT_TRUE(shapes[0].closed);
+  EXPECT_EQ(shapes[0].points, (std::vector<Point>{{1.0, 2.0}, {5.0, 2.0}, {5.0, 4.0}, {1.0, 4.0}}));
+  ASSERT_TRUE(shapes[0].color.has_value());
+  EXPECT_FALSE(shapes[1].image.has_value());
+
+  const auto refusal = [&reader](const std::string& shape) {
+    return failure([&] { detail::read_shapes(reader, Json::parse("[" + shape + "]"), "/shapes", kUnitTriangle); });
+  };
+  EXPECT_EQ(refusal(R"({"image": "images/picture.png"})"),
+            "/shapes/0/box: missing required field (where the image goes: [[x0, y0], [x1, y1]], its lower-left and "
+            "upper-right corners)");
+  EXPECT_EQ(refusal(R"({"image": "images/picture.png", "box": [[1, 0], [0, 1]]})"),
+            "/shapes/0/box: the box must have x0 < x1 and y0 < y1 (got array [[1,0],[0,1]])");
+  EXPECT_EQ(refusal(R"({"image": "images/picture.png", "box": [[0, 1], [1, 1]]})"),
+            "/shapes/0/box: the box must have x0 < x1 and y0 < y1 (got array [[0,1],[1,1]])");
+  EXPECT_EQ(refusal(R"({"image": "images/picture.png", "box": [[0, 0], [1, 1], [2, 2]]})"),
+            "/shapes/0/box: must be [[x0, y0], [x1, y1]] (got array [[0,0],[1,1],[2,2]])");
+  EXPECT_EQ(refusal(R"({"box": [[0, 0], [1, 1]]})"), "/shapes/0/box: \"box\" places an \"image\"; this shape has none");
+  EXPECT_EQ(refusal(R"({"image": "images/missing.png", "box": [[0, 0], [1, 1]]})"),
+            "/shapes/0/image: image \"images/missing.png\" does not exist (image paths are relative to the scene's "
+            "folder)");
+  EXPECT_EQ(refusal(R"({"outline": "F", "image": "images/picture.png", "box": [[0, 0], [1, 1]]})"),
+            "/shapes/0/image: a shape is one of \"polygon\", \"polyline\", \"triangle\", \"outline\" or "
+            "\"image\"; give only one");
+  std::string seventeen;
+  for (int i = 0; i <= kMaxImages; ++i) {
+    seventeen += std::string(i > 0 ? ", " : "") + R"({"image": "images/picture.png", "box": [[0, 0], [1, 1]]})";
+  }
+  EXPECT_EQ(refusal(seventeen), "/shapes/16/image: at most 16 images in a scene");
+}
+
+// Pose scenes take image shapes too, found beside the scene file.
+TEST(PoseScene, ImageShapes) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "images/picture.png", "box": [[0, 0], [1, 0.75]]}]})",
+                                  (std::filesystem::path(PITA_SOURCE_DIR) / "scenes" / "s.json").string());
+  ASSERT_EQ(scene.shapes.size(), 1u);
+  ASSERT_TRUE(scene.shapes[0].image.has_value());
+  EXPECT_EQ(scene.shapes[0].image->width, 160);
+  EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "/etc/passwd", "box": [[0, 0], [1, 1]]}]})"),
+            "s.json: /shapes/0/image: \"/etc/passwd\" is an absolute path; images are found relative to the scene's "
+            "folder (pass --allow-absolute-paths to allow absolute ones)");
 }
 
 }  // namespace

@@ -70,7 +70,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "points", "chain", "samples",
                                    "options", "title", "canvas", "layers", "panels", "golden",
-                                   "timing"}));
+                                   "timing", "shapes", "handle", "animation"}));
   // The chains are core/chains/chain.hpp's table, in its order.
   nlohmann::json chains = nlohmann::json::array();
   for (const ChainInfo& about : all_chains()) chains.push_back(std::string(about.name));
@@ -85,6 +85,28 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(keys_of(keyframe.at("properties")),
             (std::set<std::string>{"t", "p", "m", "w", "q", "turns"}));
   EXPECT_EQ(keyframe.at("additionalProperties"), false);
+  // A handle, and the "from" and "to" of a moving keyframe: a keyframe without its knot.
+  const nlohmann::json& arrow = definitions.at("arrow");
+  EXPECT_EQ(keys_of(arrow.at("properties")), (std::set<std::string>{"p", "m", "w", "q", "turns"}));
+  EXPECT_EQ(arrow.at("additionalProperties"), false);
+  EXPECT_EQ(arrow.at("oneOf"), keyframe.at("oneOf"));
+  const nlohmann::json& moving = definitions.at("movingKeyframe");
+  EXPECT_EQ(keys_of(moving.at("properties")), (std::set<std::string>{"t", "from", "to"}));
+  EXPECT_EQ(moving.at("required"), (nlohmann::json{"t", "from", "to"}));
+  EXPECT_EQ(moving.at("additionalProperties"), false);
+  // "animation": the fields and bounds of animation_reader.cpp and limits.hpp.
+  const nlohmann::json& animation = definitions.at("animation");
+  EXPECT_EQ(keys_of(animation.at("properties")),
+            (std::set<std::string>{"duration", "fps", "frames", "loop", "what", "trail", "overlay"}));
+  EXPECT_EQ(animation.at("additionalProperties"), false);
+  EXPECT_EQ(animation.at("properties").at("duration").at("maximum"), kMaxAnimationDuration);
+  EXPECT_EQ(animation.at("properties").at("fps").at("maximum"), kMaxFps);
+  EXPECT_EQ(animation.at("properties").at("frames").at("minimum"), kMinAnimationFrames);
+  EXPECT_EQ(animation.at("properties").at("frames").at("maximum"), kMaxAnimationFrames);
+  EXPECT_EQ(animation.at("properties").at("trail").at("maximum"), kMaxTrail);
+  EXPECT_EQ(animation.at("properties").at("overlay").at("maxItems"), kMaxOverlay);
+  EXPECT_EQ(animation.at("properties").at("what").at("enum"), (nlohmann::json{"motion", "pattern"}));
+  EXPECT_EQ(schema.at("properties").at("shapes").at("maxItems"), kMaxShapes);
   const nlohmann::json& options = definitions.at("options");
   EXPECT_EQ(keys_of(options.at("properties")),
             (std::set<std::string>{"anchor", "path_mean", "magnitude_mean"}));
@@ -134,7 +156,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& panel = definitions.at("panel").at("else");
   EXPECT_EQ(keys_of(panel.at("properties")),
             (std::set<std::string>{"method", "options", "keyframes", "points", "chain", "title", "samples", "layers",
-                                   "timing"}));
+                                   "timing", "handle"}));
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }
 
@@ -145,11 +167,11 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(scene.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
                                    "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden", "subdivisions", "timing"}));
+                                   "golden", "subdivisions", "timing", "animation"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
-            (std::set<std::string>{"polygon", "polyline", "triangle", "outline", "color"}));
+            (std::set<std::string>{"polygon", "polyline", "triangle", "outline", "image", "box", "color"}));
   std::vector<std::string> methods;
   for (const PoseMethodInfo& method : all_pose_methods()) methods.emplace_back(method.id);
   EXPECT_EQ(definitions.at("poseMethod").at("examples").get<std::vector<std::string>>(), methods);

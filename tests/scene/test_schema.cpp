@@ -148,6 +148,21 @@ std::string sam_with(const std::string& extra) {
     {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}])" + extra + "}";
 }
 
+// A P6 scene whose middle keyframe moves, with `extra` top-level members.
+std::string moving_with(const std::string& extra) {
+  return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, -1], "m": 2, "w": 1}},
+    {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" + extra + "}";
+}
+
+// A P6 scene with one shape, `shape` (JSON text).
+std::string with_shape(const std::string& shape) { return p6_with(R"(, "shapes": [)" + shape + "]"); }
+
+// A P6 scene with "animation": `animation` (JSON text).
+std::string with_animation(const std::string& animation) { return p6_with(R"(, "animation": )" + animation); }
+
+const std::string kFourPoints = R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
+
 struct BadScene {
   std::string what;     // the class of mistake
   std::string text;     // the scene
@@ -300,6 +315,69 @@ const std::vector<BadScene>& bad_scenes() {
        with_layer(R"({"type": "banner", "text": ")" + std::string(kMaxTextLength + 1, 'x') + "\"}"),
        "/layers/0/text"},
       {"label without point", with_layer(R"({"type": "label", "text": "A"})"), "/layers/0/at"},
+      // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4).
+      {"moving keyframe without \"to\"", p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}})"),
+       "/keyframes/1/to"},
+      {"moving keyframe without \"from\"", p6_with_middle(R"({"t": 0.5, "to": {"p": [1, 1], "m": 1, "w": 0}})"),
+       "/keyframes/1/from"},
+      {"moving keyframe with \"p\"",
+       p6_with_middle(R"({"t": 0.5, "p": [1, 1], "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, 1], "m": 1, "w": 0}})"),
+       "/keyframes/1/p"},
+      {"moving keyframe's \"from\" not an object",
+       p6_with_middle(R"({"t": 0.5, "from": [1, 1], "to": {"p": [1, 1], "m": 1, "w": 0}})"), "/keyframes/1/from"},
+      {"moving keyframe's \"to\" with a knot",
+       p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"t": 1, "p": [1, 1], "m": 1, "w": 0}})"),
+       "/keyframes/1/to/t"},
+      {"panel moving keyframe without \"to\"",
+       p6_with(R"(, "panels": [{"keyframes": )" +
+               three_keyframes(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}})") + "}]"),
+       "/panels/0/keyframes/1/to"},
+      // Handles (Sec. 7.1).
+      {"handle not an object", p6_with(R"(, "handle": [[0, 0], [1, 0]])"), "/handle"},
+      {"handle magnitude zero", p6_with(R"(, "handle": {"p": [0, 0], "m": 0, "w": 0})"), "/handle/m"},
+      {"handle with a knot", p6_with(R"(, "handle": {"t": 0, "p": [0, 0], "q": [1, 0]})"), "/handle/t"},
+      {"handle without its start", p6_with(R"(, "handle": {"q": [1, 0]})"), "/handle/p"},
+      {"handle with points", R"({"method": "P6", "points": )" + kFourPoints + R"(, "handle": {"p": [0, 0], "q": [1, 0]}})",
+       "/handle"},
+      {"panel handle magnitude negative", p6_with(R"(, "panels": [{"handle": {"p": [0, 0], "m": -1, "w": 0}}])"),
+       "/panels/0/handle/m"},
+      {"panel handle with points",
+       p6_with(R"(, "panels": [{"points": )" + kFourPoints + R"(, "handle": {"p": [0, 0], "q": [1, 0]}}])"),
+       "/panels/0/handle"},
+      {"unknown handle layer field", with_layer(R"({"type": "handle", "colour": "red"})"), "/layers/0/colour"},
+      {"handle layer shapes not a boolean", with_layer(R"({"type": "handle", "shapes": "yes"})"),
+       "/layers/0/shapes"},
+      {"field of a shapes layer in a handle layer", with_layer(R"({"type": "handle", "fill": "red"})"),
+       "/layers/0/fill"},
+      {"handle layer in a pose scene", sam_with(R"(, "layers": [{"type": "handle"}])"), "/layers/0/type"},
+      // Shapes and images.
+      {"no shapes", p6_with(R"(, "shapes": [])"), "/shapes"},
+      {"unknown shape kind", with_shape(R"({"circle": [0, 0]})"), "/shapes/0/circle"},
+      {"empty image path", with_shape(R"({"image": "", "box": [[0, 0], [1, 1]]})"), "/shapes/0/image"},
+      {"image path not a string", with_shape(R"({"image": 3, "box": [[0, 0], [1, 1]]})"), "/shapes/0/image"},
+      {"box without image", with_shape(R"({"box": [[0, 0], [1, 1]]})"), "/shapes/0/box"},
+      {"box beside a polygon", with_shape(R"({"polygon": [[0, 0], [1, 0]], "box": [[0, 0], [1, 1]]})"),
+       "/shapes/0/box"},
+      {"image and polygon", with_shape(R"({"polygon": [[0, 0], [1, 0]], "image": "", "box": [[0, 0], [1, 1]]})"),
+       "/shapes/0/image"},
+      // Animation.
+      {"animation not an object", with_animation("true"), "/animation"},
+      {"unknown animation field", with_animation(R"({"duration": 2, "speed": 2})"), "/animation/speed"},
+      {"fps zero", with_animation(R"({"fps": 0})"), "/animation/fps"},
+      {"fps above 240", with_animation(R"({"fps": 300})"), "/animation/fps"},
+      {"duration zero", with_animation(R"({"duration": 0})"), "/animation/duration"},
+      {"duration negative", with_animation(R"({"duration": -2})"), "/animation/duration"},
+      {"frames one", with_animation(R"({"frames": 1})"), "/animation/frames"},
+      {"frames too many", with_animation(R"({"frames": 100001})"), "/animation/frames"},
+      {"frames not an integer", with_animation(R"({"frames": 2.5})"), "/animation/frames"},
+      {"loop not a boolean", with_animation(R"({"loop": "yes"})"), "/animation/loop"},
+      {"unknown what", with_animation(R"({"what": "motions"})"), "/animation/what"},
+      {"trail negative", with_animation(R"({"trail": -1})"), "/animation/trail"},
+      {"trail too long", with_animation(R"({"trail": 101})"), "/animation/trail"},
+      {"overlay value above 1", moving_with(R"(, "animation": {"overlay": [0, 1.5]})"), "/animation/overlay/1"},
+      {"overlay empty", moving_with(R"(, "animation": {"overlay": []})"), "/animation/overlay"},
+      {"pattern animation of a pose scene", sam_with(R"(, "animation": {"what": "pattern"})"), "/animation/what"},
+      {"overlay in a pose scene", sam_with(R"(, "animation": {"overlay": [0.5]})"), "/animation/overlay"},
   };
   return corpus;
 }
@@ -342,6 +420,19 @@ const std::vector<BadScene>& parser_only_scenes() {
       {"unknown panel method", p6_with(R"(, "panels": ["P66"])"), "/panels/0"},
       {"unknown discrepancy method", with_layer(R"({"type": "discrepancy", "method": "P66"})"),
        "/layers/0/method"},
+      {"handle of zero length", p6_with(R"(, "handle": {"p": [1, 1], "q": [1, 1]})"), "/handle/q"},
+      {"moving keyframe's target of zero length",
+       p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, 1], "q": [1, 1]}})"),
+       "/keyframes/1/to/q"},
+      {"image file that does not exist", with_shape(R"({"image": "no-such-image.png", "box": [[0, 0], [1, 1]]})"),
+       "/shapes/0/image"},
+      {"absolute image path", with_shape(R"({"image": "/etc/passwd", "box": [[0, 0], [1, 1]]})"), "/shapes/0/image"},
+      {"image path out of the scene's folder",
+       with_shape(R"({"image": "../scenes/images/picture.png", "box": [[0, 0], [1, 1]]})"), "/shapes/0/image"},
+      {"shapes layer in a scene without shapes", with_layer(R"({"type": "shapes"})"), "/layers/0/type"},
+      {"pattern animation without moving keyframes", with_animation(R"({"what": "pattern"})"), "/animation/what"},
+      {"overlay without moving keyframes", with_animation(R"({"overlay": [0, 1]})"), "/animation/overlay"},
+      {"duration x fps under 2 frames", with_animation(R"({"duration": 0.01, "fps": 30})"), "/animation/duration"},
   };
   return corpus;
 }
@@ -470,6 +561,38 @@ const std::vector<std::string>& good_scenes() {
         ],
         "golden": {"pixel_tolerance": 20}
       })",
+      // Moving keyframes, a handle carrying shapes, the shapes and handle
+      // layers, panel handles and every animation field. (Image shapes need a
+      // file beside the scene: scenes/fig23-image-motion.json.)
+      R"({
+        "$schema": "../schema/scene.schema.json",
+        "method": "P6",
+        "keyframes": [
+          {"t": 0, "p": [0, 0], "m": 1, "w": 0},
+          {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0.5}, "to": {"p": [1, -1], "q": [2, -1], "turns": 1}},
+          {"t": 1, "from": {"p": [2, 0], "q": [3, 0]}, "to": {"p": [2, 1], "m": 2, "w": -1}}
+        ],
+        "handle": {"p": [0, 0], "q": [1, 0]},
+        "shapes": [{"outline": "F", "color": "red"}, {"polygon": [[0, 0], [1, 0], [1, 1]]}, {"polyline": [[0, 0], [1, 1]]},
+                   {"triangle": "reference"}],
+        "layers": [
+          {"type": "shapes", "color": "blue", "width": 1, "opacity": 1, "dash": [], "fill": "#88aaff", "fill_opacity": 0.2,
+           "samples": 9, "range": [0, 1]},
+          {"type": "handle", "color": "red", "width": 2, "shapes": false},
+          {"type": "pattern"}
+        ],
+        "panels": [
+          {"title": "own handle", "handle": {"p": [0, 0], "m": 2, "w": 1, "turns": 0}},
+          {"keyframes": [{"t": 0, "from": {"p": [0, 0], "m": 1, "w": 0}, "to": {"p": [0, 1], "m": 1, "w": 0}},
+                         {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}],
+           "handle": {"p": [0, 0], "q": [0, 1]}},
+          "P2"
+        ],
+        "animation": {"duration": 2.5, "fps": 24, "frames": 60, "loop": false, "what": "pattern", "trail": 3,
+                      "overlay": [0, 0.5, 1]}
+      })",
+      p6_with(R"(, "animation": {"duration": 0.05, "fps": 30, "what": "motion", "trail": 100, "loop": true})"),
+      sam_with(R"(, "animation": {"duration": 3, "fps": 240, "frames": 100000, "loop": true, "what": "motion", "trail": 0})"),
       // A pose scene without poses: only layers that need none.
       R"({"method": "SAM", "layers": [{"type": "existence"}]})",
       // Transparent background, shared view, empty layers.
