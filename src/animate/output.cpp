@@ -95,10 +95,6 @@ class TemporaryFile {
 
 // ------------------------------------------------------------ frames
 
-std::string png_frame(const scene::Scene& scene, const render::Figure& figure, const Request& request) {
-  return render::render_figure(scene, figure, render::Format::png, request.scale, request.budget);
-}
-
 // The raw pixels of a frame for ffmpeg: cairo's ARGB32 rows (B, G, R, A in
 // memory), `width` x `height`, no padding.
 std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, int width, int height, double scale) {

@@ -36,8 +36,8 @@ other layers stay. "pattern": keyframes {"t", "from", "to"} move by steady morph
 as tau runs over [0, 1], and the whole figure follows (PITA Sec. 7.4).
 Frame k (0-based) of N is at t_0 + (t_n - t_0) k / (N - 1), or k / N when the
 animation loops; the scene's "timing" shapes how the motion runs through them.
-Frame k equals `pita render SCENE --at t_k` pixel for pixel (with --fps, --duration
-or --frames, a "trail" follows the new frame step, which render --at does not take).
+Frame k equals `pita render SCENE --at t_k` pixel for pixel (give render the same
+--fps, --duration or --frames: they space the frames of a "trail").
 
 Frames are drawn in parallel (PITA_THREADS, default every core) and streamed:
 memory does not grow with the number of frames. Everything is written to a

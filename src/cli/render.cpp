@@ -146,7 +146,8 @@ Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
 time T ("what": "motion": the pattern layers draw D(T) and its trail, the shapes
 layers the shapes it carries), or at tau = T for keyframes that move ("what":
 "pattern"); in the view every frame of `pita animate` shares, so that frame k
-of `pita animate` equals `pita render --at t_k`.
+of `pita animate` equals `pita render --at t_k` (given the same --fps, --duration
+and --frames, which space the frames of a "trail").
 
 Arrow scenes may carry shapes and PNG images with the frames (PITA Sec. 7.1):
   shapes [{"polygon": ...} | {"outline": "F"} | {"image": "x.png", "box": [[x0, y0], [x1, y1]]}],
@@ -211,6 +212,16 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
              "Draw the scene's animation at time T (a scene time; tau in [0, 1] for an animated "
              "pattern): the frame `pita animate` draws at T")
       ->type_name("T");
+  CLI::Option* fps = render->add_option_function<double>("--fps", [options](double v) { options->fps = v; },
+                                                         "With --at: the animation's frames per second, as for `pita animate`")
+                        ->type_name("F");
+  CLI::Option* duration = render->add_option_function<double>("--duration", [options](double v) { options->duration = v; },
+                                                              "With --at: the animation's duration in seconds")
+                             ->type_name("S");
+  CLI::Option* frames = render->add_option_function<int>("--frames", [options](int v) { options->frames = v; },
+                                                         "With --at: the animation's number of frames")
+                           ->type_name("N");
+  for (CLI::Option* clock : {fps, duration, frames}) clock->needs("--at");
   render->add_flag("--allow-absolute-paths", options->allow_absolute_paths,
                    "Allow images given by absolute paths");
   return options;
@@ -269,7 +280,7 @@ ExitCode run_render(const RenderOptions& options) {
       render::Figure figure;
       if (options.at) {
         // One frame of the animation, in the view all its frames share.
-        const animate::Timeline timeline = animate::make_timeline(scene);
+        const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
         render::check_budget(scene, render::estimate_cost(scene), options.budget);
         render::check_images(scene);
         figure = animate::frame_figure(scene, timeline, *options.at, animate::animation_layout(scene, timeline));

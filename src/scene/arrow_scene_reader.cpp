@@ -103,6 +103,10 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   // Shapes carried by the frames (Sec. 7.1): drawn in the handle's frame.
   if (const Json* shapes = JsonReader::member(document, "shapes")) {
+    if (points != nullptr) {
+      reader.fail("/shapes", "shapes are carried by keyframe arrows (a \"handle\" and \"shapes\" layers); a scene of "
+                             "\"points\" has none to carry them");
+    }
     scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
   }
   if (const Json* handle = JsonReader::member(document, "handle")) {

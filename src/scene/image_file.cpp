@@ -54,7 +54,10 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
       throw std::invalid_argument(fmt::format("cannot resolve the scene's folder {} ({})", folder.string(), error.message()));
     }
     const fs::path candidate = fs::weakly_canonical(root / path, error);
-    if (error || !inside(root, candidate)) {
+    if (error) {
+      throw std::invalid_argument(fmt::format("image \"{}\" cannot be resolved ({})", given, error.message()));
+    }
+    if (!inside(root, candidate)) {
       throw std::invalid_argument(fmt::format("image \"{}\" lies outside the scene's folder (images must be in the "
                                               "scene's folder or below it: no \"..\" and no symbolic link out)",
                                               given));

@@ -259,10 +259,10 @@ TEST(AnimateFrameFormats, SvgFrames) {
 
 // ------------------------------------------------------------ 2. frame k == render --at t_k
 
-// `frames`: --frames, or 0 for the scene's own timeline. A scene with a
-// "trail" (fig23, the SAM scene) is animated on its own timeline: its trail
-// is spaced by the animation's frame step, and `render --at` knows only the
-// scene's own (it takes no --fps, --duration, --frames).
+// `frames`: --frames given to animate only, or 0 for the scene's own
+// timeline. A scene with a "trail" (fig23, the SAM scene) spaces its trail by
+// the animation's frame step: on another timeline, `render --at` is given the
+// same --frames (in `extra`) to draw the same trail.
 struct AtCase {
   const char* name;
   fs::path scene;
@@ -305,7 +305,8 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(AtCase{"fig23_image_motion", kFig23, 0, {0, 1, 3, 60, 119}, {"--scale", "0.5"}},
                       AtCase{"fig27_pattern", kFig27, 7, {0, 3, 6}, {"--scale", "0.5"}},
                       AtCase{"fig27_pattern_own_timeline", kFig27, 0, {0, 45, 89}, {"--scale", "0.25"}},
-                      AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}}),
+                      AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}},
+                      AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}}),
     [](const ::testing::TestParamInfo<AtCase>& param) { return param.param.name; });
 
 // ------------------------------------------------------------ 3. animated SVG
