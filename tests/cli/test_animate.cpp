@@ -555,7 +555,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"gif_output", {}, "a.gif", "-o out/a.gif"},
                       BadCase{"pdf_frames", {"--format", "pdf"}, "frames", "--format"},
                       BadCase{"png_format_for_svg_output", {"--format", "png"}, "a.svg", "--format"},
-                      BadCase{"scale_zero", {"--scale", "0"}, "frames", "--scale"}),
+                      BadCase{"scale_zero", {"--scale", "0"}, "frames", "--scale"},
+                      // total work: 5001 frames of vector output, 20 834 frames of 800 x 600 pixels
+                      BadCase{"svg_frames_beyond_the_limit", {"--frames", "5001"}, "a.svg", "--frames: 5001 frames of vector output"},
+                      BadCase{"pixels_beyond_the_budget", {"--frames", "20834"}, "frames", "--frames: 20834 frames of 800 x 600 pixels"}),
     [](const ::testing::TestParamInfo<BadCase>& param) { return param.param.name; });
 
 // A scene whose image is missing (fig23 copied without its images/): exit 2
@@ -667,8 +670,10 @@ TEST_P(AnimateInterrupt, LeavesNothingAndExits128PlusSignal) {
   dir.write("out/keep.txt", "other work");
   const auto start = std::chrono::steady_clock::now();
   // The SVG is built in memory, 4 times faster than PNG frames: more of them.
+  // (12 000 vector frames exceed the default limit of 5000: --budget 3 allows them.)
   const std::string frames = c.out.ends_with(".svg") ? "12000" : "3000";
-  Started started = start_pita({"animate", kFig23.string(), "-o", "out/" + c.out, "--frames", frames}, dir.path());
+  Started started = start_pita({"animate", kFig23.string(), "-o", "out/" + c.out, "--frames", frames, "--budget", "3"},
+                               dir.path());
   std::string temporary;
   if (!c.out.ends_with(".svg")) {
     ASSERT_TRUE(wait_until([&] { return !hidden_in(dir.path() / "out").empty(); }, 60s))
