@@ -35,17 +35,11 @@ std::string rgb(const scene::Color& c) {
   return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
 }
 
+// Text in XML (g_markup_escape_text: &, <, >, quotes).
 std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
+  gchar* escaped = g_markup_escape_text(text.c_str(), static_cast<gssize>(text.size()));
+  std::string out(escaped);
+  g_free(escaped);
   return out;
 }
 
@@ -55,7 +49,10 @@ std::string stroke(const LineStyle& line) {
   if (opacity < 1.0) text += fmt::format(" stroke-opacity=\"{:.3g}\"", opacity);
   if (!line.dash.empty()) {
     text += " stroke-dasharray=\"";
-    for (std::size_t i = 0; i < line.dash.size(); ++i) text += (i ? "," : "") + num(line.dash[i]);
+    for (std::size_t i = 0; i < line.dash.size(); ++i) {
+      if (i > 0) text += ',';
+      text += num(line.dash[i]);
+    }
     text += "\"";
   }
   return text;

@@ -30,4 +30,15 @@ inline std::string error_of(const std::string& text) {
   return "(no error)";
 }
 
+// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
+template <typename Read>
+std::string failure(Read&& read) {
+  try {
+    read();
+  } catch (const SceneError& error) {
+    return error.pointer() + ": " + error.reason();
+  }
+  return "(no error)";
+}
+
 }  // namespace pita::scene::test

@@ -22,16 +22,7 @@ using test::p6_with;
 
 const JsonReader kReader("s.json");
 
-// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
-template <typename Read>
-std::string failure(Read&& read) {
-  try {
-    read();
-  } catch (const SceneError& error) {
-    return error.pointer() + ": " + error.reason();
-  }
-  return "(no error)";
-}
+using test::failure;
 
 Animation read(const std::string& text, bool moving = false) {
   return detail::read_animation(kReader, Json::parse(text), "/animation", moving);

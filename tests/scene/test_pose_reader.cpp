@@ -26,16 +26,7 @@ using test::error_of;
 const JsonReader kReader("s.json");
 const std::array<Point, 3> kUnitTriangle = {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
 
-// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
-template <typename Read>
-std::string failure(Read&& read) {
-  try {
-    read();
-  } catch (const SceneError& error) {
-    return error.pointer() + ": " + error.reason();
-  }
-  return "(no error)";
-}
+using test::failure;
 
 Eigen::Vector2d image(const Affine2& A, double x, double y) { return apply(A, Eigen::Vector2d(x, y)); }
 
