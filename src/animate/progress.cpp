@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include <fmt/format.h>
 
@@ -10,8 +11,11 @@ namespace pita::animate {
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
 
+// A terminal inside CI (CI=true, as CI services set it) stays quiet too.
 Progress::Progress(std::string label, int total, bool enabled)
-    : label_(std::move(label)), total_(total), shown_(enabled && stderr_is_terminal()) {}
+    : label_(std::move(label)),
+      total_(total),
+      shown_(enabled && stderr_is_terminal() && (std::getenv("CI") == nullptr || *std::getenv("CI") == '\0')) {}
 
 Progress::~Progress() {
   if (drawn_) std::fputs("\n", stderr);

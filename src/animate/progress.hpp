@@ -1,6 +1,6 @@
 // A progress bar for long work (README "Animation"): drawn on stderr only
-// when stderr is a terminal and not silenced (--quiet), so that CI logs and
-// pipes stay clean.
+// when stderr is a terminal, not silenced (--quiet) and not in CI (the
+// environment variable CI set), so that CI logs and pipes stay clean.
 #pragma once
 
 #include <chrono>

@@ -730,22 +730,26 @@ TEST(AnimateInterruptOverOlder, TheEarlierFramesStay) {
 // ------------------------------------------------------------ 8. progress bar
 
 // On a terminal (util-linux `script` gives pita a pty) stderr shows the bar;
-// --quiet silences it. stdout goes to a file, so that the pty carries stderr
-// only. (Without a terminal stderr stays empty: the tests above.)
+// --quiet silences it, and so does CI=true (a CI service's terminal). stdout
+// goes to a file, so that the pty carries stderr only. (Without a terminal
+// stderr stays empty: the tests above.)
 TEST(AnimateProgressBar, ShownOnATerminalOnly) {
   if (!have_program("script")) GTEST_SKIP() << "util-linux `script` is not installed: no pty to test the bar on";
   const ScratchDir dir;
-  const auto on_pty = [&](const std::string& flags) {
-    const std::string inner = fmt::format("{} animate {} -o frames --frames 12 {} >stdout.txt", quoted(PITA_BINARY),
-                                          quoted(kFig23.string()), flags);
+  const auto on_pty_env = [&](const std::string& env, const std::string& flags) {
+    const std::string inner = fmt::format("env {} {} animate {} -o frames --frames 12 {} >stdout.txt", env,
+                                          quoted(PITA_BINARY), quoted(kFig23.string()), flags);
     return run_command("cd " + quoted(dir.path().string()) + " && script -qec " + quoted(inner) + " /dev/null");
   };
-  const CommandResult shown = on_pty("");
+  const CommandResult in_ci = on_pty_env("CI=true", "");
+  EXPECT_EQ(in_ci.exit_code, 0) << in_ci.out;
+  EXPECT_EQ(in_ci.out.find("%)"), std::string::npos) << "a bar in CI: " << in_ci.out;
+  const CommandResult shown = on_pty_env("-u CI", "");
   EXPECT_EQ(shown.exit_code, 0) << shown.out;
   EXPECT_NE(shown.out.find("frames ["), std::string::npos) << shown.out;
   EXPECT_NE(shown.out.find("12/12 (100%)"), std::string::npos) << shown.out;
   EXPECT_NE(read_file(dir.path() / "stdout.txt").find("wrote frames (12 frames"), std::string::npos);
-  const CommandResult quiet = on_pty("-q");
+  const CommandResult quiet = on_pty_env("-u CI", "-q");
   EXPECT_EQ(quiet.exit_code, 0) << quiet.out;
   EXPECT_EQ(quiet.out.find("frames ["), std::string::npos) << quiet.out;
   EXPECT_EQ(quiet.out.find("%)"), std::string::npos) << quiet.out;
