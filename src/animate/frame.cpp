@@ -32,7 +32,7 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
   std::vector<render::Drawing> cover;
   if (timeline.what == What::pattern) {
     for (int i = 0; i < kLayoutSamples; ++i) {
-      const scene::Scene at = motion::scene_at(scene, static_cast<double>(i) / (kLayoutSamples - 1));
+      const scene::Scene at = motion::scene_at(scene, timeline.tau(static_cast<double>(i) / (kLayoutSamples - 1)));
       if (i == 0) {
         cover = render::frame_drawings(at, nullptr);
       } else {
@@ -54,7 +54,7 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
                             const std::vector<render::PanelPlacement>& placements) {
   render::Figure figure;
   if (timeline.what == What::pattern) {
-    figure.drawings = render::frame_drawings(motion::scene_at(scene, t), nullptr);
+    figure.drawings = render::frame_drawings(motion::scene_at(scene, timeline.tau(t)), nullptr);
     for (render::Drawing& drawing : figure.drawings) {
       for (render::Item& item : drawing.items) item.moving = !std::holds_alternative<render::Label>(item.shape);
     }
@@ -66,14 +66,15 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
   return figure;
 }
 
-Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, const std::string& file) {
-  const double t = timeline.time(k);
-  Json record{{"frame", k + 1}, {"file", file}, {"t", t}};
-  const scene::Panel& panel = scene.panels.front();
+namespace {
+
+// What one panel shows at time t: its keyframes at tau ("pattern"), else D(t),
+// A(t) or the point of a curve through timed points.
+void add_panel_state(Json& into, const scene::Scene& scene, const scene::Panel& panel, const Timeline& timeline,
+                     double t) {
   if (timeline.what == What::pattern) {
-    const scene::Scene at = motion::scene_at(scene, t);
     Json keys = Json::array();
-    for (const Keyframe& key : at.panels.front().keyframes) {
+    for (const Keyframe& key : panel.keyframes) {
       Json entry{{"t", key.t}};
       // Named: a range-for over arrow_json(...).items() would iterate a
       // destroyed temporary (only the items() proxy lives on).
@@ -81,17 +82,38 @@ Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, co
       for (const auto& [name, value] : arrow.items()) entry[name] = value;
       keys.push_back(std::move(entry));
     }
-    record["keyframes"] = std::move(keys);
-    return record;
+    into["keyframes"] = std::move(keys);
+    return;
   }
   const motion::SceneMotion motion = motion::build_motion(scene, panel);
   if (scene.kind == scene::SceneKind::poses) {
     const Affine2 A = motion.pose_at(t);
-    record["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}), Json::array({A.L(1, 0), A.L(1, 1), A.b(1)})});
+    into["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}), Json::array({A.L(1, 0), A.L(1, 1), A.b(1)})});
   } else if (motion.has_points()) {
-    record["p"] = point(motion.point_at(t));
+    into["p"] = point(motion.point_at(t));
   } else {
-    record["D"] = arrow_json(motion.arrow_at(t));
+    into["D"] = arrow_json(motion.arrow_at(t));
+  }
+}
+
+}  // namespace
+
+Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, const std::string& file) {
+  const double t = timeline.time(k);
+  Json record{{"frame", k + 1}, {"file", file}, {"t", t}};
+  const bool pattern = timeline.what == What::pattern;
+  if (pattern) record["tau"] = timeline.tau(t);
+  const scene::Scene at = pattern ? motion::scene_at(scene, timeline.tau(t)) : scene;
+  // The first panel's state at the top level, every panel's under "panels".
+  add_panel_state(record, at, at.panels.front(), timeline, t);
+  if (at.panels.size() > 1) {
+    Json panels = Json::array();
+    for (const scene::Panel& panel : at.panels) {
+      Json entry{{"pointer", panel.pointer}, {"title", panel.title}};
+      add_panel_state(entry, at, panel, timeline, t);
+      panels.push_back(std::move(entry));
+    }
+    record["panels"] = std::move(panels);
   }
   return record;
 }

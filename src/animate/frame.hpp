@@ -28,10 +28,11 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
 render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline, double t,
                             const std::vector<render::PanelPlacement>& placements);
 
-// What frames.json records of frame k: {"frame": k + 1, "file", "t", and the
-// first panel's "D": {"p", "m", "w", "q"} (arrow scenes, "motion"), "A":
-// [[a, b, tx], [c, d, ty]] (pose scenes), or "keyframes": [...] at tau
-// ("pattern")}.
+// What frames.json records of frame k: {"frame": k + 1, "file", "t" (and
+// "tau" = ease(t) for "pattern"), and the first panel's state: "D": {"p", "m",
+// "w", "q"} (arrow scenes), "A": [[a, b, tx], [c, d, ty]] (pose scenes), "p"
+// (timed points) or "keyframes": [...] at tau ("pattern"); with several panels
+// also "panels": [{"pointer", "title", and the same state}, ...]}.
 nlohmann::ordered_json frame_record(const scene::Scene& scene, const Timeline& timeline, int k,
                                     const std::string& file);
 

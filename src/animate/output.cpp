@@ -11,6 +11,8 @@
 
 #include <cairo.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -122,11 +124,29 @@ std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, i
 
 // ------------------------------------------------------------ directory
 
+// A directory that pita's frame writer made: empty, or holding only
+// frame-NNNN.png/.svg files and a frames.json of ours (with "frame_list"). Only
+// such a directory is ever replaced.
 bool is_frame_directory(const fs::path& path) {
   std::error_code error;
-  if (!fs::is_directory(path, error)) return false;
-  if (fs::is_empty(path, error)) return true;
-  return fs::exists(path / "frames.json", error);
+  if (!fs::is_directory(fs::symlink_status(path, error))) return false;
+  bool has_index = false;
+  for (const fs::directory_entry& entry : fs::directory_iterator(path, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!entry.is_regular_file(error) || entry.is_symlink(error)) return false;
+    if (name == "frames.json") {
+      std::ifstream in(entry.path());
+      const Json index = Json::parse(in, nullptr, false);
+      if (index.is_discarded() || !index.is_object() || !index.contains("frame_list")) return false;
+      has_index = true;
+      continue;
+    }
+    const bool frame = name.starts_with("frame-") && (name.ends_with(".png") || name.ends_with(".svg")) &&
+                       std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+    if (!frame) return false;
+  }
+  if (error) return false;
+  return has_index || fs::is_empty(path, error);
 }
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
@@ -140,13 +160,19 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
                          const std::vector<render::PanelPlacement>& placements) {
   const fs::path target = request.out;
   std::error_code error;
-  if (fs::exists(target, error) && !is_frame_directory(target)) {
-    output_failed(target, "it exists and is not a frame directory that pita wrote (no frames.json): remove it or "
-                          "give another OUT");
+  // OUT/ names the directory OUT.
+  const fs::path directory = target.filename().empty() ? target.parent_path() : target;
+  const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
+  const fs::path name = directory.filename();
+  const fs::file_status status = fs::symlink_status(directory, error);
+  if (fs::exists(status) && !fs::is_directory(status)) {
+    output_failed(target, fs::is_symlink(status) ? "it is a symbolic link; give the directory itself"
+                                                 : "it exists and is not a directory (frames go into a directory)");
   }
-  fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-  if (target.filename().empty()) parent = target.parent_path().parent_path().empty() ? fs::path(".") : target.parent_path().parent_path();
-  const fs::path name = target.filename().empty() ? target.parent_path().filename() : target.filename();
+  if (fs::exists(status) && !is_frame_directory(directory)) {
+    output_failed(target, "it exists and is not a frame directory that pita wrote (only frame-NNNN files and "
+                          "pita's frames.json): remove it or give another OUT");
+  }
   fs::create_directories(parent, error);
   std::string pattern = (parent / ("." + name.string() + ".XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
@@ -334,7 +360,12 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
 }  // namespace
 
 OutputKind output_kind(const std::string& out) {
+  if (out.empty()) throw AnimationError("-o: the output is empty: give OUT.svg, OUT.mp4, OUT.webm or a directory");
   const fs::path path(out);
+  const fs::path last = path.filename().empty() ? path.parent_path().filename() : path.filename();
+  if (last.empty() || last == "." || last == "..") {
+    throw AnimationError(fmt::format("-o {}: not a directory pita can write frames into", out));
+  }
   if (!path.has_filename() || !path.has_extension()) return OutputKind::directory;
   const std::string extension = lower(path.extension().string());
   if (extension == ".svg") return OutputKind::svg;

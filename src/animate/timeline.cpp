@@ -72,6 +72,12 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
       timeline.frames = static_cast<int>(count);
     }
   }
+  if (!(timeline.seconds() <= scene::kMaxAnimationDuration)) {
+    throw AnimationError(fmt::format("{}: {} frames at {:g} frames per second play {:g} s; an animation plays at most "
+                                     "{:g} s",
+                                     overrides.fps ? "--fps" : "/animation/fps", timeline.frames, timeline.fps,
+                                     timeline.seconds(), scene::kMaxAnimationDuration));
+  }
   if (!(timeline.fps > 0.0 && timeline.fps <= scene::kMaxFps)) {
     throw AnimationError(fmt::format("--frames / --duration: {} frames in {:g} s is {:g} frames per second; at most {:g}",
                                      timeline.frames, duration, timeline.fps, scene::kMaxFps));
@@ -79,6 +85,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   if (timeline.what == scene::Animation::What::pattern) {
     timeline.first = 0.0;
     timeline.last = 1.0;
+    timeline.tau_ease = scene.timing.ease;
   } else {
     bool any = false;
     for (const scene::Panel& panel : scene.panels) {

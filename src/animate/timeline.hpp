@@ -8,7 +8,8 @@
 // where [first, last] is [t_0, t_n], the first and last knots of the scene's
 // panels ("what": "motion"), or [0, 1], the parameter tau of the moving
 // keyframes ("what": "pattern", PITA Sec. 7.4; docs/paper-notes.md N35). Times are scene times: the
-// scene's "timing" (eases, arc length) shapes how the motion runs through them.
+// scene's "timing" (eases, arc length) shapes how the motion runs through them;
+// for "pattern" its ease maps t to the keyframes' tau.
 #pragma once
 
 #include <optional>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ease.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
@@ -42,6 +44,12 @@ struct Timeline {
   int trail = 0;
   double first = 0.0;    // time of frame 0
   double last = 1.0;     // end of the time range
+  // "pattern": the scene's timing ease, applied to the animation time t in
+  // [0, 1] to give the keyframes' tau (linear without "timing").
+  Ease tau_ease;
+
+  // "pattern": tau = ease(t), the parameter of the moving keyframes at time t.
+  double tau(double t) const { return ease(tau_ease, t); }
 
   // t_k (above); k in [0, N).
   double time(int k) const;

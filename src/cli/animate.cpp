@@ -1,5 +1,6 @@
 #include "cli/animate.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -105,6 +106,9 @@ ExitCode run_animate(const AnimateOptions& options) {
         throw animate::AnimationError(fmt::format("--format: \"{}\" is not a frame format (png or svg)", *options.format));
       }
       request.frame_format = *format;
+    }
+    if (!std::isfinite(options.budget)) {
+      throw animate::AnimationError(fmt::format("--budget: must be a number (got {})", options.budget));
     }
     if (!(options.scale >= render::kMinScale && options.scale <= render::kMaxScale)) {
       throw animate::AnimationError(fmt::format("--scale: must be between {} and {} (got {})", render::kMinScale,

@@ -6,6 +6,7 @@
 #include "animate/timeline.hpp"
 #include "golden/image_compare.hpp"
 #include "motion/no_motion.hpp"
+#include "render/image_cache.hpp"
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
@@ -21,6 +22,8 @@ Failure current_failure(const std::string& input) {
     return {ExitCode::bad_input, e.what()};
   } catch (const animate::AnimationError& e) {
     return {ExitCode::bad_input, e.what()};
+  } catch (const render::ImageError& e) {
+    return {ExitCode::bad_input, input + ": " + e.what()};
   } catch (const render::RenderError& e) {
     return {ExitCode::bad_input, e.what()};
   } catch (const golden::GoldenError& e) {

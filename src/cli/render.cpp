@@ -1,5 +1,6 @@
 #include "cli/render.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -16,6 +17,7 @@
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -250,6 +252,11 @@ ExitCode run_render(const RenderOptions& options) {
       formats = {*by_extension};
     } else if (formats.empty()) {
       formats = {render::Format::svg};
+    }
+    if (!std::isfinite(options.budget)) throw UsageError(fmt::format("--budget: must be a number (got {})", options.budget));
+    if (options.at && !(std::abs(*options.at) <= scene::kMaxKeyframeValue)) {
+      throw UsageError(fmt::format("--at: the time must be a finite number within +-{:g} (got {})",
+                                   scene::kMaxKeyframeValue, *options.at));
     }
     if (options.dpi) scale = *options.dpi / kCssDpi;
     if (options.scale) scale = *options.scale;

@@ -147,7 +147,12 @@ std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelect
 void check_images(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {
     for (const scene::ShapeOutline& shape : panel.shapes) {
-      if (shape.image) cached_image(shape.image->path, shape.image->given);
+      if (!shape.image) continue;
+      try {
+        cached_image(shape.image->path, shape.image->given);
+      } catch (const ImageError& error) {  // named by the scene and the image's pointer
+        throw RenderError(scene.path, shape.image->pointer, error.what());
+      }
     }
   }
 }

@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "render/panel_drawing.hpp"
 
 namespace pita::render {
 
@@ -24,7 +23,7 @@ cairo_surface_t* cached_image(const std::string& path, const std::string& name) 
     std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(cairo_image_surface_create_from_png(path.c_str()));
     const cairo_status_t status = cairo_surface_status(surface.get());
     if (status != CAIRO_STATUS_SUCCESS) {
-      throw RenderError(path, "", fmt::format("cannot read the image \"{}\": {}", name,
+      throw ImageError(fmt::format("cannot read the image \"{}\": {}", name,
                                               status == CAIRO_STATUS_READ_ERROR ? "not a valid PNG (truncated or corrupt)"
                                                                                 : cairo_status_to_string(status)));
     }

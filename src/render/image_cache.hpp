@@ -6,12 +6,21 @@
 
 #include <cairo.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace pita::render {
 
-// The decoded image at `path`, owned by the cache. Throws RenderError naming
-// the file when cairo cannot read or decode it (a truncated or corrupt PNG).
+// An image that cairo cannot read or decode (a truncated or corrupt PNG):
+// what() is the reason, naming the image as the scene spells it.
+class ImageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The decoded image at `path`, owned by the cache. Throws ImageError.
+// (check_images in render/figure.hpp decodes every image of a scene first and
+// names the scene and the pointer.)
 cairo_surface_t* cached_image(const std::string& path, const std::string& name);
 
 }  // namespace pita::render

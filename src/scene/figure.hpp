@@ -172,6 +172,7 @@ struct ImageRef {
   std::string given;  // as the scene spells it (what messages and goldens show)
   int width = 0;      // pixels, from the PNG header
   int height = 0;
+  std::string pointer;  // JSON Pointer of "image" in the scene (what decoding errors name)
 };
 
 // A closed outline (polygon), an open polyline, or an image, in the frame of

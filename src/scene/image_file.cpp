@@ -90,7 +90,7 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
     throw std::invalid_argument(fmt::format("image \"{}\" is {} x {} pixels; images may have 1 to {} pixels a side",
                                             given, width, height, kMaxImageSide));
   }
-  return ImageRef{resolved.string(), given, static_cast<int>(width), static_cast<int>(height)};
+  return ImageRef{resolved.string(), given, static_cast<int>(width), static_cast<int>(height), ""};
 }
 
 }  // namespace pita::scene

@@ -70,9 +70,13 @@ inline constexpr int kMaxExistenceCells = 4'000'000;     // columns x rows of "e
 inline constexpr int kMaxPatchSide = 100;                // "columns", "rows" of "patch"
 
 // Images in "shapes" (PITA Sec. 7.1): PNG files of at most this many pixels a
-// side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per scene.
+// side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per list
+// of shapes, and at most kMaxImagePixels pixels in all.
 inline constexpr int kMaxImageSide = 8192;
 inline constexpr int kMaxImages = 16;
+// Pixels of all the images of one list of shapes together: decoded, 4 bytes
+// each, once per drawing thread (256 MiB a thread at most).
+inline constexpr double kMaxImagePixels = 8192.0 * 8192.0;
 
 // "animation" and `pita animate` (README "Animation").
 inline constexpr double kMaxFps = 240.0;

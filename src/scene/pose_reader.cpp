@@ -223,6 +223,7 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
   }
   std::vector<ShapeOutline> shapes, extra;
   int images = 0;
+  double image_pixels = 0.0;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
@@ -254,6 +255,14 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
           shape.image = check_image_file(reader.file(), file, reader.options());
         } catch (const std::invalid_argument& error) {
           reader.fail(where, error.what());
+        }
+        shape.image->pointer = where;
+        image_pixels += static_cast<double>(shape.image->width) * shape.image->height;
+        if (image_pixels > kMaxImagePixels) {
+          reader.fail(where, fmt::format("the images of these shapes have {:.0f} pixels in all, more than the limit of "
+                                         "{:.0f} (8192 x 8192: each is decoded in memory, 4 bytes a pixel, once per "
+                                         "drawing thread)",
+                                         image_pixels, kMaxImagePixels));
         }
         const Json* box = JsonReader::member(item, "box");
         if (box == nullptr) {

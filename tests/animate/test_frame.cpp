@@ -101,6 +101,21 @@ TEST(Frame, PatternFrameMovesEverythingButLabels) {
   EXPECT_TRUE(found);
 }
 
+TEST(Frame, RecordGivesEveryPanel) {
+  const scene::Scene scene = scene::load_scene(kScenes / "fig23-image-motion.json");
+  const Timeline timeline = make_timeline(scene);
+  const auto record = frame_record(scene, timeline, 30, "frame-0031.png");
+  ASSERT_EQ(record["panels"].size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Arrow D = motion::build_motion(scene, scene.panels[i]).arrow_at(record["t"].get<double>());
+    EXPECT_EQ(record["panels"][i]["pointer"], scene.panels[i].pointer);
+    EXPECT_EQ(record["panels"][i]["D"]["w"].get<double>(), D.w) << i;
+  }
+  EXPECT_EQ(record["D"], record["panels"][0]["D"]);
+  // (a) and (d) differ only by the ease: at a quarter of the way they are apart
+  EXPECT_NE(record["panels"][0]["D"]["p"], record["panels"][3]["D"]["p"]);
+}
+
 TEST(Frame, RecordGivesTimeAndFrame) {
   const scene::Scene scene = scene::parse_scene(kSquare, "square.json");
   const Timeline timeline = make_timeline(scene);

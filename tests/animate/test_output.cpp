@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "animate/output.hpp"
+#include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
@@ -62,13 +63,17 @@ TEST(Output, DirectoryOfFramesWithTheirTimes) {
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 1u);
-  // again: the older directory is replaced, an extra file in it gone
-  std::ofstream(dir / "frames" / "stray.txt") << "x";
-  write_animation(scene, timeline, request);
-  EXPECT_FALSE(fs::exists(dir / "frames" / "stray.txt"));
+  // again, fewer frames: the older directory is replaced, its extra frames gone
+  write_animation(scene, make_timeline(scene, {std::nullopt, std::nullopt, 3}), request);
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame-0004.png"));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame-0003.png"));
   entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++entries;
   EXPECT_EQ(entries, 1u);
+  // a file of the user's in it: not pita's own directory any more, refused and kept
+  std::ofstream(dir / "frames" / "notes.txt") << "x";
+  EXPECT_THROW(write_animation(scene, timeline, request), render::OutputError);
+  EXPECT_TRUE(fs::exists(dir / "frames" / "notes.txt"));
   fs::remove_all(dir);
 }
 

@@ -89,6 +89,34 @@ TEST(Timeline, PatternRunsOverTau) {
   EXPECT_EQ(timeline.time(2), 0.5);
 }
 
+TEST(Timeline, PatternTauFollowsTheScenesEase) {
+  const scene::Scene scene = scene::parse_scene(
+      R"({"method": "P6", "keyframes": [{"t": 0, "from": {"p": [0, 0], "m": 1, "w": 0}, "to": {"p": [0, 1], "m": 1, "w": 0}},
+          {"t": 5, "p": [1, 1], "m": 1, "w": 0.5}, {"t": 9, "p": [2, 0], "m": 1, "w": 1}], "timing": {"ease": "ease-in-out"}})",
+      "pattern.json");
+  const Timeline timeline = make_timeline(scene);
+  EXPECT_EQ(timeline.tau(0.0), 0.0);
+  EXPECT_NEAR(timeline.tau(1.0), 1.0, 1e-15);
+  EXPECT_NEAR(timeline.tau(0.5), 0.5, 1e-12);  // CSS ease-in-out is symmetric
+  EXPECT_LT(timeline.tau(0.2), 0.2);           // slow in
+  EXPECT_GT(timeline.tau(0.8), 0.8);           // slow out
+  // without timing, tau is the time itself
+  const Timeline plain = make_timeline(scene::parse_scene(
+      R"({"method": "P6", "keyframes": [{"t": 0, "from": {"p": [0, 0], "m": 1, "w": 0}, "to": {"p": [0, 1], "m": 1, "w": 0}},
+          {"t": 5, "p": [1, 1], "m": 1, "w": 0.5}, {"t": 9, "p": [2, 0], "m": 1, "w": 1}]})",
+      "plain.json"));
+  EXPECT_EQ(plain.tau(0.3), 0.3);
+}
+
+TEST(Timeline, ASlowFpsCannotPlayForAges) {
+  try {
+    make_timeline(scene_with(""), {1e-300, std::nullopt, 2});
+    ADD_FAILURE() << "accepted";
+  } catch (const AnimationError& error) {
+    EXPECT_NE(std::string(error.what()).find("--fps"), std::string::npos) << error.what();
+  }
+}
+
 TEST(Timeline, PoseScenesRunOverTheirPoses) {
   const scene::Scene scene = scene::parse_scene(
       R"({"method": "SAM", "poses": [{"t": 0.5, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1.5, "matrix": [[0, -1, 2], [1, 0, 0]]}]})",

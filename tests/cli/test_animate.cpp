@@ -599,13 +599,12 @@ TEST(AnimateFrameDirectory, AForeignDirectoryIsRefusedAndLeftAlone) {
   EXPECT_EQ(names_in(dir.path() / "out"), (std::set<std::string>{"file", "frames"}));
 }
 
-// A frame directory of an earlier run is replaced whole: its extra frames and
-// files are gone, and no temporary (the older frames, swapped out) remains.
+// A frame directory of an earlier run is replaced whole: its extra frames are
+// gone, and no temporary (the older frames, swapped out) remains.
 TEST(AnimateFrameDirectory, AnEarlierRunIsReplaced) {
   const ScratchDir dir;
   const RunResult first = run_pita({"animate", kFig23.string(), "-o", "out/frames", "--frames", "5"}, dir.path());
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  dir.write("out/frames/extra.txt", "stale");
   const RunResult second = run_pita({"animate", kFig23.string(), "-o", "out/frames/", "--frames", "3"}, dir.path());
   ASSERT_EQ(second.exit_code, 0) << second.err;
   EXPECT_EQ(names_in(dir.path() / "out/frames"),
@@ -620,6 +619,73 @@ TEST(AnimateFrameDirectory, AnEarlierRunIsReplaced) {
   EXPECT_EQ(names_in(dir.path() / "out/empty"),
             (std::set<std::string>{"frame-0001.png", "frame-0002.png", "frames.json"}));
   EXPECT_EQ(names_in(dir.path() / "out"), (std::set<std::string>{"empty", "frames"}));
+}
+
+// Only what pita's frame writer makes is ever replaced: a frame directory with
+// a file of the user's in it, a folder holding some other frames.json, and a
+// file named with a trailing slash are refused (exit 3) and left as they were.
+TEST(AnimateFrameDirectory, NothingButPitasOwnFramesIsReplaced) {
+  const ScratchDir dir;
+  ASSERT_EQ(run_pita({"animate", kFig23.string(), "-o", "out/frames", "--frames", "2"}, dir.path()).exit_code, 0);
+  dir.write("out/frames/notes.txt", "mine");
+  const RunResult user_file = run_pita({"animate", kFig23.string(), "-o", "out/frames", "--frames", "2"}, dir.path());
+  EXPECT_EQ(user_file.exit_code, 3) << user_file.err;
+  EXPECT_EQ(read_file(dir.path() / "out/frames/notes.txt"), "mine");
+  EXPECT_TRUE(fs::exists(dir.path() / "out/frames/frame-0002.png"));
+
+  fs::create_directories(dir.path() / "proj/src");
+  dir.write("proj/frames.json", "{}");
+  dir.write("proj/src/main.c", "code");
+  const RunResult project = run_pita({"animate", kFig23.string(), "-o", "proj", "--frames", "2"}, dir.path());
+  EXPECT_EQ(project.exit_code, 3) << project.err;
+  EXPECT_EQ(read_file(dir.path() / "proj/src/main.c"), "code");
+  EXPECT_EQ(read_file(dir.path() / "proj/frames.json"), "{}");
+
+  dir.write("victim.txt", "precious");
+  const RunResult slash = run_pita({"animate", kFig23.string(), "-o", "victim.txt/", "--frames", "2"}, dir.path());
+  EXPECT_EQ(slash.exit_code, 3) << slash.err;
+  EXPECT_NE(slash.err.find("not a directory"), std::string::npos) << slash.err;
+  EXPECT_EQ(read_file(dir.path() / "victim.txt"), "precious");
+  EXPECT_TRUE(hidden_in(dir.path()).empty()) << joined(hidden_in(dir.path()));
+}
+
+// A PNG whose header is good but whose data is cut short passes the reader's
+// checks and fails when cairo decodes it: exit 2 naming the scene and the
+// image's pointer, before any output exists.
+TEST(AnimateBadScene, ACorruptImageIsNamedByItsPointer) {
+  const ScratchDir dir;
+  const std::string png = read_file(fs::path(PITA_SOURCE_DIR) / "scenes/images/picture.png");
+  fs::create_directories(dir.path() / "images");
+  dir.write("images/picture.png", png.substr(0, png.size() / 2));
+  dir.write("fig23.json", read_file(kFig23));
+  for (const char* out : {"frames", "a.svg"}) {
+    const RunResult r = run_pita({"animate", "fig23.json", "-o", out, "--frames", "2"}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("fig23.json: /shapes/0/image: cannot read the image"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.path() / out));
+  }
+  const RunResult render = run_pita({"render", "fig23.json", "-o", "x.png"}, dir.path());
+  EXPECT_EQ(render.exit_code, 2) << render.err;
+  EXPECT_NE(render.err.find("/shapes/0/image"), std::string::npos) << render.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "x.png"));
+}
+
+// Flags that are not numbers, or numbers that make no animation.
+TEST(AnimateBadInput, NonsenseNumbersAreNamed) {
+  const ScratchDir dir;
+  const auto refused = [&](std::vector<std::string> args, const std::string& flag) {
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(flag), std::string::npos) << r.err;
+  };
+  refused({"animate", kFig23.string(), "-o", "a.svg", "--fps", "1e-300", "--frames", "2"}, "--fps");
+  refused({"animate", kFig23.string(), "-o", "a.svg", "--budget", "nan"}, "--budget");
+  refused({"animate", kFig23.string(), "-o", ""}, "-o");
+  refused({"animate", kFig23.string(), "-o", "."}, "-o");
+  refused({"render", kFig23.string(), "-o", "a.png", "--at", "nan"}, "--at");
+  refused({"render", kFig23.string(), "-o", "a.png", "--at", "inf"}, "--at");
+  refused({"render", kFig23.string(), "-o", "a.png", "--budget", "nan"}, "--budget");
+  EXPECT_TRUE(names_in(dir.path()).empty()) << joined(hidden_in(dir.path()));
 }
 
 // ------------------------------------------------------------ 7. interrupted runs

@@ -97,7 +97,7 @@ TEST(SceneMotion, ArcLengthSpacesTheTrackedPointEvenly) {
     }
     steps.push_back(length);
   }
-  const double mean = std::accumulate(steps.begin(), steps.end(), 0.0) / steps.size();
+  const double mean = std::accumulate(steps.begin(), steps.end(), 0.0) / static_cast<double>(steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) EXPECT_NEAR(steps[i] / mean, 1.0, 1e-6) << "step " << i;
   EXPECT_EQ(frames[0].t, 0.0);  // frames report the scene time they were asked for
   EXPECT_EQ(frames[20].t, 1.0);

@@ -19,7 +19,7 @@ const std::filesystem::path kPicture = std::filesystem::path(PITA_SOURCE_DIR) / 
 scene::ShapeOutline image_in(Point low, Point high) {
   scene::ShapeOutline shape;
   shape.points = {low, Point{high.real(), low.imag()}, high, Point{low.real(), high.imag()}};
-  shape.image = scene::ImageRef{kPicture.string(), "picture.png", 160, 120};
+  shape.image = scene::ImageRef{kPicture.string(), "picture.png", 160, 120, "/shapes/1/image"};
   return shape;
 }
 

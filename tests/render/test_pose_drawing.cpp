@@ -44,7 +44,7 @@ scene::Scene sam_scene(std::vector<scene::PoseLayer> layers, PoseMethod method =
   s.pose_method = method;
   s.method_name = std::string(info(method).id);
   s.poses = {{0.0, affinity(1.0, 0.2, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(-0.5, -1.4, 5.0, 1.1, 0.3, 2.0)}};
-  s.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt}};
+  s.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
   s.pose_layers = std::move(layers);
   scene::Panel panel;
   panel.pose_method = method;
