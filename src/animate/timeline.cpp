@@ -65,7 +65,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
       if (!(count >= scene::kMinAnimationFrames && count <= scene::kMaxAnimationFrames)) {
         throw AnimationError(fmt::format("{}: {:g} s at {:g} frames per second gives {:g} frames; an animation has "
                                          "{} to {} frames",
-                                         overrides.duration ? "--duration" : overrides.fps ? "--fps" : "/animation",
+                                         overrides.duration ? "--duration" : overrides.fps ? "--fps" : scene.path + ": /animation",
                                          duration, timeline.fps, count, scene::kMinAnimationFrames,
                                          scene::kMaxAnimationFrames));
       }
@@ -75,7 +75,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   if (!(timeline.seconds() <= scene::kMaxAnimationDuration)) {
     throw AnimationError(fmt::format("{}: {} frames at {:g} frames per second play {:g} s; an animation plays at most "
                                      "{:g} s",
-                                     overrides.fps ? "--fps" : "/animation/fps", timeline.frames, timeline.fps,
+                                     overrides.fps ? "--fps" : scene.path + ": /animation/fps", timeline.frames, timeline.fps,
                                      timeline.seconds(), scene::kMaxAnimationDuration));
   }
   if (!(timeline.fps > 0.0 && timeline.fps <= scene::kMaxFps)) {

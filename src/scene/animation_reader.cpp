@@ -46,6 +46,12 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
                               animation.duration, animation.fps, count, kMinAnimationFrames, kMaxAnimationFrames));
     }
   }
+  if (animation.frames && *animation.frames / animation.fps > kMaxAnimationDuration) {
+    reader.fail(pointer + "/fps", fmt::format("{} frames at {:g} frames per second play {:g} s; an animation plays at "
+                                              "most {:g} s",
+                                              *animation.frames, animation.fps, *animation.frames / animation.fps,
+                                              kMaxAnimationDuration));
+  }
   if (const Json* loop = JsonReader::member(value, "loop")) animation.loop = reader.boolean(*loop, pointer + "/loop");
   if (const Json* what = JsonReader::member(value, "what")) {
     animation.what = reader.choice(*what, pointer + "/what", kWhatNames, kWhats);
