@@ -231,6 +231,11 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
               "times outside the knots extrapolate")
           ->type_name("T1,T2,...");
   samples->excludes(times);
+  eval->add_option_function<int>(
+          "--panel", [options](const int& index) { options->panel = index; },
+          "Evaluate the motion of this panel of the scene (0 = the first entry of \"panels\") instead of the "
+          "scene's own")
+      ->type_name("N");
   eval->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"json", "csv"}))
       ->type_name("FORMAT")
@@ -267,9 +272,17 @@ ExitCode run_eval(const EvalOptions& options) {
       throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
     }
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
-    const motion::SceneMotion motion = motion::build_motion(scene);
+    scene::Panel panel = scene::scene_panel(scene);
+    if (options.panel) {
+      if (*options.panel < 0 || static_cast<std::size_t>(*options.panel) >= scene.panels.size()) {
+        throw InputError(fmt::format("--panel: {} has {} panel{} (0 to {}); got {}", scene.path, scene.panels.size(),
+                                     scene.panels.size() == 1 ? "" : "s", scene.panels.size() - 1, *options.panel));
+      }
+      panel = scene.panels[static_cast<std::size_t>(*options.panel)];
+    }
+    const motion::SceneMotion motion = motion::build_motion(scene, panel);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
-    const double work = static_cast<double>(at.size()) * motion::frame_cost(scene::scene_panel(scene));
+    const double work = static_cast<double>(at.size()) * motion::frame_cost(panel);
     if (work > scene::kMaxEvalWork) {
       throw InputError(fmt::format(
           "{}: {}: {} frames of the {} cost about {:.3g} frames of the method, above the limit of {:.0g}: ask for "

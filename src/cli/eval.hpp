@@ -22,6 +22,7 @@ struct EvalOptions {
   std::optional<std::string> samples;  // --samples, as typed
   std::optional<std::string> times;    // --t, as typed: "0,0.25,1.5"
   std::string format = "json";         // --format: json or csv
+  std::optional<int> panel;            // --panel: the motion of this panel (0-based)
 };
 
 // Declares the eval subcommand on `app`; app.parse() fills the returned options.

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/animate.hpp"
+#include "cli/audit.hpp"
 #include "cli/eval.hpp"
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   const auto animate_options = pita::cli::setup_animate(app);
   const auto check_options = pita::cli::setup_check(app);
   const auto update_options = pita::cli::setup_update_goldens(app);
+  const auto audit_options = pita::cli::setup_audit(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -94,6 +96,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
     if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
     if (app.got_subcommand("animate")) return to_int(pita::cli::run_animate(*animate_options));
+    if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));

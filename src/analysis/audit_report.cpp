@@ -1,0 +1,175 @@
+#include "analysis/audit_report.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "analysis/paper_table.hpp"
+
+namespace pita::analysis {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string id(Method m) { return std::string(info(m).id); }
+std::string id(Property p) { return std::string(info(p).id); }
+
+Json arrow_json(const Keyframe& k) {
+  return Json{{"t", k.t}, {"p", {k.arrow.p.real(), k.arrow.p.imag()}}, {"m", k.arrow.m}, {"w", k.arrow.w}};
+}
+
+Json keyframes_json(const KeyframeTriple& k) { return Json::array({arrow_json(k.a), arrow_json(k.b), arrow_json(k.c)}); }
+
+
+std::string where(const AuditReport& report, const AuditCell& cell) {
+  if (cell.worst_config < 0) return "";
+  return report.configs[static_cast<std::size_t>(cell.worst_config)].name;
+}
+
+Json cell_json(const AuditReport& report, const AuditCell& cell, const std::string& counterexample) {
+  Json j{{"method", id(cell.method)}, {"property", id(cell.property)}, {"holds", cell.holds}};
+  j["violation"] = std::isfinite(cell.value) ? Json(cell.value) : Json(nullptr);
+  j["measured"] = cell.measured;
+  if (cell.worst_config >= 0) {
+    Json config{{"index", cell.worst_config}, {"name", where(report, cell)}, {"keyframes", keyframes_json(cell.worst.original)}};
+    if (cell.worst.counterpart) config["counterpart"] = keyframes_json(*cell.worst.counterpart);
+    if (cell.worst.t) config["t"] = *cell.worst.t;
+    config["relation"] = cell.worst.relation;
+    Json parameters = Json::object();
+    for (const auto& [name, value] : cell.worst.parameters) parameters[name] = value;
+    config["parameters"] = parameters;
+    if (!cell.worst.note.empty()) config["note"] = cell.worst.note;
+    j["configuration"] = config;
+  }
+  if (!counterexample.empty()) j["counterexample"] = counterexample;
+  return j;
+}
+
+}  // namespace
+
+std::string counterexample_name(const AuditCell& cell) { return id(cell.method) + "-" + id(cell.property) + ".json"; }
+
+std::string format_audit(const AuditReport& report, AuditFormat format, const std::vector<std::string>& counterexamples) {
+  const auto file_of = [&](std::size_t i) { return i < counterexamples.size() ? counterexamples[i] : std::string(); };
+  if (format == AuditFormat::json) {
+    Json j;
+    j["seed"] = report.options.seed;
+    j["configs"] = report.options.configs;
+    j["crafted"] = static_cast<int>(crafted_configs().size());
+    j["methods"] = Json::array();
+    for (Method m : report.methods) j["methods"].push_back(id(m));
+    j["properties"] = Json::array();
+    for (Property p : report.properties) {
+      const PropertyInfo& pi = info(p);
+      j["properties"].push_back(Json{{"id", pi.id}, {"letter", pi.letter}, {"section", pi.section},
+                                     {"measure", pi.measure}, {"holds_when", pi.reaction ? "smallest value > threshold"
+                                                                                         : "largest value <= threshold"},
+                                     {"threshold", pi.threshold}});
+    }
+    j["cells"] = Json::array();
+    for (std::size_t i = 0; i < report.cells.size(); ++i) j["cells"].push_back(cell_json(report, report.cells[i], file_of(i)));
+    Json paper;
+    paper["source"] = "PITA paper, Fig. 10 and Sec. 3.3, 4.1-4.11 (P1-P8 only)";
+    paper["table"] = Json::array();
+    for (const PrintedRow& row : printed_table()) {
+      Json methods = Json::array();
+      for (Method m : row.printed) methods.push_back(id(m));
+      paper["table"].push_back(Json{{"property", id(row.property)}, {"printed", methods}, {"source", row.source}});
+    }
+    paper["disagreements"] = Json::array();
+    for (const Disagreement& d : disagreements(report)) {
+      paper["disagreements"].push_back(Json{{"method", id(d.method)}, {"property", id(d.property)},
+                                            {"printed", d.printed}, {"measured", d.measured}, {"reason", d.reason}});
+    }
+    j["paper"] = paper;
+    return j.dump(2) + "\n";
+  }
+  std::string out;
+  if (format == AuditFormat::csv) {
+    out = "method,property,holds,violation,measured,config,t,counterexample\n";
+    for (std::size_t i = 0; i < report.cells.size(); ++i) {
+      const AuditCell& c = report.cells[i];
+      out += fmt::format("{},{},{},{:.6g},{},\"{}\",{},{}\n", id(c.method), id(c.property), c.holds ? "true" : "false",
+                         c.value, c.measured, where(report, c), c.worst.t ? fmt::format("{:.17g}", *c.worst.t) : "",
+                         file_of(i));
+    }
+    return out;
+  }
+  // Markdown: Fig. 10's layout, methods as rows, then the numbers.
+  out += fmt::format("# pita audit: seed {}, {} random configurations (+{} crafted)\n\n", report.options.seed,
+                     report.options.configs, crafted_configs().size());
+  out += "| method |";
+  for (Property p : report.properties) out += fmt::format(" {} |", id(p));
+  out += "\n|---|";
+  for (std::size_t i = 0; i < report.properties.size(); ++i) out += "---|";
+  out += "\n";
+  for (Method m : report.methods) {
+    out += fmt::format("| {} |", id(m));
+    for (Property p : report.properties) {
+      const AuditCell& c = report.cell(m, p);
+      const std::optional<bool> said = printed(m, p);
+      const bool differs = said && *said != c.holds;
+      out += fmt::format(" {}{} {:.1e} |", c.holds ? "yes" : "**no**", differs ? " (≠ paper)" : "", c.value);
+    }
+    out += "\n";
+  }
+  out += "\nyes/no: the property holds / fails; the number is the worst measured value (the README's \"pita audit\" "
+         "says what each measures); \"≠ paper\": Fig. 10 or the text says otherwise.\n";
+  const std::vector<Disagreement> diffs = disagreements(report);
+  if (!diffs.empty()) {
+    out += "\n## Where the measurement disagrees with the paper\n\n";
+    for (const Disagreement& d : diffs) {
+      out += fmt::format("- {} {}: printed {}, measured {}. {}\n", id(d.method), id(d.property),
+                         d.printed ? "yes" : "no", d.measured ? "yes" : "no", d.reason);
+    }
+  }
+  out += "\n## Counterexamples\n\n";
+  for (std::size_t i = 0; i < report.cells.size(); ++i) {
+    const AuditCell& c = report.cells[i];
+    if (c.holds || c.worst_config < 0) continue;
+    out += fmt::format("- {} {}: {:.3g} on {}{}{}\n", id(c.method), id(c.property), c.value, where(report, c),
+                       c.worst.t ? fmt::format(" at t = {:.6g}", *c.worst.t) : "",
+                       file_of(i).empty() ? "" : fmt::format(" ({})", file_of(i)));
+  }
+  return out;
+}
+
+std::string counterexample_scene(const AuditReport& report, const AuditCell& cell) {
+  if (cell.holds || cell.worst_config < 0) return "";
+  const PropertyInfo& p = info(cell.property);
+  const Probe& w = cell.worst;
+  std::string check = w.relation;
+  for (const auto& [name, value] : w.parameters) check += fmt::format("; {} = {:.17g}", name, value);
+  // Scenes keep knots increasing, so the swapped keyframes of Eq. 42 cannot
+  // be a panel: the description gives them (docs/paper-notes.md N36).
+  const bool two = w.counterpart.has_value() && cell.property != Property::order_independent;
+  std::string replay = "pita eval THIS.json --t T gives the original's frames";
+  if (two) replay += ", pita eval THIS.json --panel 1 --t T the counterpart's";
+  if (cell.property == Property::order_independent && w.counterpart) {
+    replay += fmt::format("; the counterpart takes (b, B) first and (a, A) second, P(b, B, a, A, c, C, t), which a "
+                          "scene cannot hold (its knots must increase): keyframes {}",
+                          keyframes_json(*w.counterpart).dump());
+  }
+  Json j;
+  j["description"] = fmt::format(
+      "pita audit (seed {}, {} configurations): {} is not {} (PITA Sec. {}). Measured {:.6g} on configuration {} "
+      "({}){}; {} (threshold {:g}). Compared: {}. Replay: {}.",
+      report.options.seed, report.options.configs, id(cell.method), p.id, p.section, cell.value, cell.worst_config,
+      where(report, cell), w.t ? fmt::format(" at t = {:.17g}", *w.t) : "", p.measure, p.threshold, check, replay);
+  j["title"] = fmt::format("{} is not {}: {:.3g}", id(cell.method), p.id, cell.value);
+  j["method"] = id(cell.method);
+  j["keyframes"] = keyframes_json(w.original);
+  j["samples"] = 17;
+  j["canvas"] = Json{{"width", two ? 1000 : 600}, {"height", 500}, {"columns", two ? 2 : 1}};
+  j["layers"] = Json::array({Json{{"type", "trajectory"}, {"point", "p"}, {"color", "gray"}}, Json{{"type", "pattern"}},
+                             Json{{"type", "keyframes"}}});
+  Json panels = Json::array();
+  panels.push_back(Json{{"title", "original"}, {"keyframes", keyframes_json(w.original)}});
+  if (two) panels.push_back(Json{{"title", "counterpart"}, {"keyframes", keyframes_json(*w.counterpart)}});
+  j["panels"] = panels;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace pita::analysis

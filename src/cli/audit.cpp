@@ -1,0 +1,193 @@
+#include "cli/audit.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <stdexcept>
+#include <system_error>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "analysis/audit.hpp"
+#include "analysis/audit_report.hpp"
+#include "animate/progress.hpp"
+#include "cli/failure.hpp"
+#include "core/methods.hpp"
+#include "render/figure.hpp"
+#include "render/output_file.hpp"
+#include "render/property_table.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::cli {
+
+namespace {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+std::vector<Method> parse_methods(const std::string& list) {
+  std::vector<Method> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = list.find(',', start);
+    std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    while (!name.empty() && name.front() == ' ') name.erase(name.begin());
+    while (!name.empty() && name.back() == ' ') name.pop_back();
+    if (name.empty()) throw UsageError("--methods: an empty name (give comma-separated methods, e.g. P1,P6,P8)");
+    const MethodEntry* entry = find_method_entry(name, MotionKind::arrows);
+    if (entry == nullptr) throw UsageError("--methods: " + unknown_method_reason(name, MotionKind::arrows));
+    if (entry->min_count != 3) {
+      throw UsageError(fmt::format("--methods: {} takes {} keyframes; the properties of Sec. 4 are defined for the "
+                                   "methods through three",
+                                   method_label(*entry), entry->min_count));
+    }
+    if (std::find(out.begin(), out.end(), entry->method) == out.end()) out.push_back(entry->method);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+constexpr const char* kFooter = R"(
+Measures, for each method and each property of the PITA paper's Sec. 4 (its Fig. 10),
+the worst value over the crafted edge cases and N random configurations (tame, wild and
+near-singular in turn) drawn from the seed, and says whether the property holds. The
+output is the same for the same seed, whatever --jobs. The README's "pita audit" says
+what each number measures.
+
+--counterexamples DIR writes, for each cell that fails, DIR/<method>-<property>.json, a
+scene whose panel 0 is the configuration and panel 1 its transformed, swapped or tweaked
+counterpart (replay: pita eval FILE --t T and pita eval FILE --panel 1 --t T), and
+DIR/<method>-<property>.svg, the two drawn side by side.
+-o TABLE.svg|png|pdf draws the table in the layout of Fig. 10.
+
+Examples:
+  pita audit
+  pita audit --methods P1,P6,P8 --configs 50 --format json
+  pita audit --seed 7 --counterexamples cx -o fig10.svg
+
+Exit codes: 0 success, 2 bad usage (unknown method, --configs outside 1..1000000, a
+folder that cannot be created), 3 an output could not be written.
+)";
+
+}  // namespace
+
+std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
+  auto options = std::make_shared<AuditCliOptions>();
+  CLI::App* audit = app.add_subcommand("audit", "Measure the properties of Sec. 4 (Fig. 10) for every method");
+  audit->footer(kFooter);
+  audit->add_option_function<std::string>(
+          "--methods", [options](const std::string& list) { options->methods = list; },
+          "Comma-separated methods (default: every arrow method through three keyframes)")
+      ->type_name("LIST");
+  audit->add_option("--configs", options->configs, "Random configurations per cell (1 to 1000000)")
+      ->type_name("N")
+      ->capture_default_str();
+  audit->add_option("--seed", options->seed, "Seed of the random configurations")->type_name("S")->capture_default_str();
+  audit->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
+      ->type_name("J")
+      ->check(CLI::Range(1, 1024));
+  audit->add_option("--format", options->format, "Format of the table on standard output")
+      ->check(CLI::IsMember({"md", "csv", "json"}))
+      ->type_name("FORMAT")
+      ->capture_default_str();
+  audit->add_option_function<std::string>(
+          "--counterexamples", [options](const std::string& dir) { options->counterexamples = dir; },
+          "Write a scene and a figure for each cell that fails into this folder")
+      ->type_name("DIR");
+  audit->add_option_function<std::string>(
+          "-o,--output", [options](const std::string& path) { options->output = path; },
+          "Draw the table as a figure (.svg, .png or .pdf)")
+      ->type_name("TABLE");
+  audit->add_flag("-q,--quiet", options->quiet, "No progress bar");
+  return options;
+}
+
+ExitCode run_audit_command(const AuditCliOptions& options) {
+  namespace fs = std::filesystem;
+  try {
+    analysis::AuditOptions audit;
+    if (options.methods) audit.methods = parse_methods(*options.methods);
+    if (options.configs < 1 || options.configs > analysis::kMaxAuditConfigs) {
+      throw UsageError(fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs,
+                                   options.configs));
+    }
+    audit.configs = options.configs;
+    audit.seed = options.seed;
+    audit.jobs = options.jobs;
+    std::optional<render::Format> table_format;
+    if (options.output) {
+      const std::string extension = fs::path(*options.output).extension().string();
+      table_format = render::format_from_name(extension.empty() ? "" : extension.substr(1));
+      if (!table_format) {
+        throw UsageError(fmt::format("-o: {}: the table is drawn as .svg, .png or .pdf", *options.output));
+      }
+    }
+    // The counterexample folder is made before the work, so that a folder
+    // that cannot be made costs nothing (and nothing is written).
+    if (options.counterexamples) {
+      std::error_code error;
+      fs::create_directories(*options.counterexamples, error);
+      if (error || !fs::is_directory(*options.counterexamples)) {
+        throw UsageError(fmt::format("--counterexamples: cannot create the folder {} ({})", *options.counterexamples,
+                                     error ? error.message() : "a file is in the way"));
+      }
+    }
+    const analysis::AuditFormat format = options.format == "csv"    ? analysis::AuditFormat::csv
+                                         : options.format == "json" ? analysis::AuditFormat::json
+                                                                    : analysis::AuditFormat::md;
+    const std::size_t methods = audit.methods.empty() ? analysis::default_audit_methods().size() : audit.methods.size();
+    animate::Progress progress("audit", static_cast<int>(methods * analysis::all_properties().size()), !options.quiet);
+    std::mutex progress_lock;
+    audit.progress = [&](int done, int /*total*/) {
+      const std::lock_guard<std::mutex> lock(progress_lock);
+      progress.update(done);
+    };
+    const analysis::AuditReport report = analysis::run_audit(audit);
+
+    std::vector<std::string> files(report.cells.size());
+    if (options.counterexamples) {
+      std::vector<std::pair<fs::path, std::string>> outputs;
+      for (std::size_t i = 0; i < report.cells.size(); ++i) {
+        const std::string scene = analysis::counterexample_scene(report, report.cells[i]);
+        if (scene.empty()) continue;
+        const fs::path json = fs::path(*options.counterexamples) / analysis::counterexample_name(report.cells[i]);
+        files[i] = json.string();
+        // The scene must read back as a scene: the figure is drawn from it.
+        const scene::Scene parsed = scene::parse_scene(scene, json.string());
+        const render::Figure figure = render::build_figure(parsed);
+        fs::path svg = json;
+        svg.replace_extension(".svg");
+        // Each scene with its figure, as a pair (both or neither).
+        outputs.clear();
+        outputs.emplace_back(json, scene);
+        outputs.emplace_back(svg, render::render_figure(parsed, figure, render::Format::svg));
+        render::write_files_atomically(outputs);
+      }
+    }
+    if (table_format) {
+      render::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
+    }
+    const std::string text = analysis::format_audit(report, format, files);
+    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+      std::cerr << "pita: cannot write the audit to standard output (" << std::strerror(errno) << ")\n";
+      return ExitCode::failure;
+    }
+    return ExitCode::success;
+  } catch (const UsageError& error) {
+    std::cerr << "pita: " << error.what() << '\n';
+    return ExitCode::bad_input;
+  } catch (...) {
+    const Failure failure = current_failure("pita audit");
+    std::cerr << "pita: " << failure.message << '\n';
+    return failure.code;
+  }
+}
+
+}  // namespace pita::cli

@@ -1,0 +1,34 @@
+// pita audit [--methods LIST] [--configs N] [--seed S] [--jobs J] [--format md|csv|json]
+//            [--counterexamples DIR] [-o TABLE.svg|png|pdf] [--quiet]
+//
+// PITA Fig. 10 measured (README "pita audit"): analysis/audit.hpp does the
+// work, analysis/audit_report.hpp the text, render/property_table.hpp the figure.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cli/exit_code.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace pita::cli {
+
+struct AuditCliOptions {
+  std::optional<std::string> methods;  // comma-separated names, as typed
+  int configs = 200;
+  unsigned long long seed = 1;
+  int jobs = 0;
+  std::string format = "md";
+  std::optional<std::string> counterexamples;
+  std::optional<std::string> output;
+  bool quiet = false;
+};
+
+std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app);
+ExitCode run_audit_command(const AuditCliOptions& options);
+
+}  // namespace pita::cli

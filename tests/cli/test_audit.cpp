@@ -1,0 +1,161 @@
+// pita audit from the outside: formats, counterexamples that replay through
+// pita eval, the table figure, and bad usage (exit 2, nothing written).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include <fmt/format.h>
+
+#include "run_pita.hpp"
+
+namespace pita::test {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+TEST(Audit, JsonHasEveryCellAndThePapersTable) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"audit", "--methods", "P1,P4,P5", "--configs", "20", "--format", "json", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["methods"], Json::array({"P1", "P4", "P5"}));
+  EXPECT_EQ(j["cells"].size(), 3 * j["properties"].size());
+  bool p5_similarity = false, p4_disagreement = false;
+  for (const Json& cell : j["cells"]) {
+    if (cell["method"] == "P5" && cell["property"] == "similarity-invariant") {
+      p5_similarity = true;
+      EXPECT_FALSE(cell["holds"].get<bool>());
+      EXPECT_GT(cell["violation"].get<double>(), 1e-4);
+    }
+  }
+  for (const Json& d : j["paper"]["disagreements"]) {
+    if (d["method"] == "P4" && d["property"] == "winding-aware") p4_disagreement = !d["reason"].get<std::string>().empty();
+  }
+  EXPECT_TRUE(p5_similarity);
+  EXPECT_TRUE(p4_disagreement);
+  EXPECT_TRUE(r.err.empty()) << r.err;  // no progress bar off a terminal
+}
+
+TEST(Audit, MarkdownAndCsv) {
+  ScratchDir dir;
+  const RunResult md = run_pita({"audit", "--methods", "P8", "--configs", "5"}, dir.path());
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("| P8 |"), std::string::npos);
+  EXPECT_NE(md.out.find("locally-perseverant"), std::string::npos);
+  const RunResult csv = run_pita({"audit", "--methods", "P8", "--configs", "5", "--format", "csv"}, dir.path());
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  EXPECT_EQ(csv.out.rfind("method,property,holds,violation,measured,config,t,counterexample\n", 0), 0u);
+  EXPECT_EQ(std::count(csv.out.begin(), csv.out.end(), '\n'), 14);  // header + 13 properties
+}
+
+TEST(Audit, SameSeedSameOutput) {
+  ScratchDir dir;
+  const std::vector<std::string> args{"audit", "--methods", "P2,P6", "--configs", "15", "--seed", "4", "--format", "json"};
+  auto one = args, two = args;
+  one.insert(one.end(), {"--jobs", "1"});
+  two.insert(two.end(), {"--jobs", "2"});
+  const RunResult a = run_pita(one, dir.path()), b = run_pita(two, dir.path());
+  ASSERT_EQ(a.exit_code, 0);
+  EXPECT_EQ(a.out, b.out);
+}
+
+std::vector<std::pair<double, std::complex<double>>> eval_p(const fs::path& dir, const std::string& scene, double t,
+                                                           bool panel_one, std::complex<double>* q) {
+  std::vector<std::string> args{"eval", scene, "--t", fmt::format("{:.17g}", t)};
+  if (panel_one) args.insert(args.end(), {"--panel", "1"});
+  const RunResult r = run_pita(args, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const Json f = Json::parse(r.out)["frames"][0];
+  const std::complex<double> p{f["p"][0].get<double>(), f["p"][1].get<double>()};
+  *q = {f["q"][0].get<double>(), f["q"][1].get<double>()};
+  return {{t, p}};
+}
+
+TEST(Audit, SimilarityCounterexampleReplaysThroughEval) {
+  // Independent of the audit's code: read S from the report, evaluate both
+  // panels with pita eval, apply S by hand and measure the distance.
+  ScratchDir dir;
+  const RunResult r = run_pita({"audit", "--methods", "P5", "--configs", "20", "--format", "json", "--counterexamples",
+                                "cx"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  for (const Json& cell : j["cells"]) {
+    if (cell["property"] != "similarity-invariant") continue;
+    const std::string file = cell["counterexample"];
+    ASSERT_TRUE(fs::exists(dir.path() / file));
+    ASSERT_TRUE(fs::exists((dir.path() / file).replace_extension(".svg")));
+    const Json& c = cell["configuration"];
+    const double t = c["t"], scale = c["parameters"]["scale"], rotation = c["parameters"]["rotation"];
+    const std::complex<double> shift{c["parameters"]["translation.x"].get<double>(),
+                                     c["parameters"]["translation.y"].get<double>()};
+    const auto S = [&](std::complex<double> x) { return scale * std::polar(1.0, rotation) * x + shift; };
+    std::complex<double> q0, q1;
+    const auto p0 = eval_p(dir.path(), file, t, false, &q0)[0].second;
+    const auto p1 = eval_p(dir.path(), file, t, true, &q1)[0].second;
+    // The extent of the moved keyframes: the largest distance from B's origin.
+    const Json& k = c["counterpart"];
+    const std::complex<double> b{k[1]["p"][0].get<double>(), k[1]["p"][1].get<double>()};
+    double extent = 0;
+    for (const Json& x : k) {
+      const std::complex<double> p{x["p"][0].get<double>(), x["p"][1].get<double>()};
+      const double m = x["m"], w = x["w"];
+      extent = std::max({extent, std::abs(p - b), std::abs(p + std::polar(m, w) - b), m});
+    }
+    const double measured = std::max(std::abs(S(p0) - p1), std::abs(S(q0) - q1)) / extent;
+    EXPECT_NEAR(measured, cell["violation"].get<double>(), 1e-6 * cell["violation"].get<double>() + 1e-9);
+    return;
+  }
+  FAIL() << "no similarity cell for P5";
+}
+
+TEST(Audit, DrawsTheTable) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"audit", "--methods", "P1,P2", "--configs", "5", "-o", "table.svg"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string svg = read_file(dir.path() / "table.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir.path() / "table.svg"));
+}
+
+TEST(Audit, BadUsageExitsTwoAndWritesNothing) {
+  ScratchDir dir;
+  dir.write("file", "x");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"audit", "--methods", "P66", "-o", "t.svg"}, "did you mean"},
+      {{"audit", "--methods", "SMA", "-o", "t.svg"}, "takes 2 keyframes"},
+      {{"audit", "--methods", "SAM", "-o", "t.svg"}, "unknown method"},
+      {{"audit", "--configs", "0", "-o", "t.svg"}, "--configs"},
+      {{"audit", "--configs", "1000001", "-o", "t.svg"}, "--configs"},
+      {{"audit", "--configs", "5", "-o", "t.txt"}, ".svg, .png or .pdf"},
+      {{"audit", "--configs", "5", "--counterexamples", "file/cx", "-o", "t.svg"}, "cannot create the folder"},
+  };
+  for (const auto& [args, message] : cases) {
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << args[2];
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_FALSE(fs::exists(dir.path() / "t.svg"));
+  }
+}
+
+TEST(Eval, PanelOutOfRangeIsBadInput) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "8"},
+                               dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--panel: "), std::string::npos) << r.err;
+  const RunResult ok = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "7",
+                                 "--t", "0.4"},
+                                dir.path());
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_NE(ok.out.find("\"P6\""), std::string::npos);  // panel 7 is P6 at ratio 0.40
+}
+
+}  // namespace
+}  // namespace pita::test
