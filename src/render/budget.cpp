@@ -64,6 +64,13 @@ class LayerCost {
   }
   void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
   void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
+  void operator()(const scene::PropertyTableLayer& l) {
+    // About 10 units (27 us) per property, method and configuration, crafted
+    // ones included (pita_bench BM_Audit/1: 1.0 s of CPU for 14 x 13 x 207).
+    const double methods = l.methods.empty() ? 14.0 : static_cast<double>(l.methods.size());
+    add(layer_ + "/configs", fmt::format("{} configurations of a property table", l.configs),
+        10.0 * 13.0 * methods * (l.configs + 7.0));
+  }
   void operator()(const scene::PlotLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
         8 * kShapeUnits + l.samples);

@@ -6,11 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "analysis/audit.hpp"
 #include "analysis/prediction.hpp"
 #include "core/carrier.hpp"
 #include "render/banner.hpp"
 #include "render/carried_shapes.hpp"
 #include "render/plot.hpp"
+#include "render/property_table.hpp"
 #include "render/spiral.hpp"
 #include "render/strip.hpp"
 #include "motion/sampler.hpp"
@@ -213,6 +215,34 @@ class PanelBuilder {
       fail(layer_, error.reason());
     } catch (const std::invalid_argument& error) {
       fail(layer_, fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
+    }
+  }
+
+  void add(const scene::PropertyTableLayer& layer) {
+    analysis::AuditOptions options;
+    options.methods = layer.methods;
+    options.configs = layer.configs;
+    options.seed = static_cast<std::uint64_t>(layer.seed);
+    options.jobs = 1;  // figures are drawn in parallel already
+    const PropertyTable table = property_table(analysis::run_audit(options));
+    for (const Item& item : table.drawing.items) {
+      // The table is laid out with y down; on mathematical axes it is mirrored
+      // back so that it reads top to bottom.
+      const auto place = [&](Point x) {
+        return layer.at + (scene_.canvas.y_up ? Point{x.real(), -x.imag()} : x);
+      };
+      Shape shape = item.shape;
+      std::visit([&](auto& s) {
+        using S = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<S, Polyline>) {
+          for (Point& x : s.points) x = place(x);
+        } else if constexpr (std::is_same_v<S, FilledPath>) {
+          for (auto& contour : s.contours) for (Point& x : contour) x = place(x);
+        } else if constexpr (std::is_same_v<S, Label>) {
+          s.at = place(s.at);
+        }
+      }, shape);
+      push(-1, std::move(shape));
     }
   }
 

@@ -31,6 +31,14 @@ std::string letters(const std::vector<Method>& methods) {
   return out.empty() ? "none" : out;
 }
 
+// One significant digit; rounding noise (below 1e-9) as "<1e-9", so that
+// the figure does not change with the last bits of a compiler's arithmetic.
+std::string value_text(double v) {
+  if (v == 0.0) return "0";
+  if (std::abs(v) < 1e-9) return "<1e-9";
+  return fmt::format("{:.0e}", v);
+}
+
 }  // namespace
 
 PropertyTable property_table(const analysis::AuditReport& report) {
@@ -61,7 +69,7 @@ PropertyTable property_table(const analysis::AuditReport& report) {
       const double x = x0 + kMethodWidth + kColumnWidth * static_cast<double>(j);
       push(FilledPath{{rectangle(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
       const std::optional<bool> said = analysis::printed(m, report.properties[j]);
-      push(Label{fmt::format("{} {:.0e}", c.holds ? "yes" : "no", c.value), {x + 5.0, y + kRowHeight / 2}, 11.0, kInk});
+      push(Label{fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), {x + 5.0, y + kRowHeight / 2}, 11.0, kInk});
       if (said && *said != c.holds) {
         push(Polyline{rectangle(x + 2.0, y + 2.0, kColumnWidth - 4.0, kRowHeight - 4.0), true,
                       LineStyle{kDiffers, 2.0, 1.0, {}}});
@@ -84,6 +92,10 @@ PropertyTable property_table(const analysis::AuditReport& report) {
   push(Label{fmt::format("Measured by pita audit: seed {}, {} random configurations and {} crafted. "
                          "Ringed: the paper prints otherwise (P1-P8).",
                          report.options.seed, report.options.configs, analysis::crafted_configs().size()),
+             {x0, y}, 12.0, kInk});
+  y += 18.0;
+  push(Label{"The number is the worst value measured: the largest deviation, or, for winding-aware and "
+             "knot-controlled, the smallest reaction.",
              {x0, y}, 12.0, kInk});
   y += 24.0;
   for (const analysis::PrintedRow& row : analysis::printed_table()) {

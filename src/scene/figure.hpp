@@ -205,9 +205,22 @@ struct HandleLayer {
   bool shapes = true;                  // draw the shapes (images, outlines) under the handle
 };
 
+// "property-table" (PITA Fig. 10): the properties of Sec. 4 measured as
+// `pita audit` does (analysis/audit.hpp) for `methods`, drawn as a table whose
+// top-left corner is `at`, one world unit per pixel at scale 1 (README
+// "pita audit": give the canvas a view that shows it so). It ignores the
+// panel's keyframes.
+struct PropertyTableLayer {
+  std::vector<Method> methods;  // empty: every arrow method through three keyframes
+  int configs = 200;            // random configurations, [1, kMaxTableConfigs]
+  int seed = 1;                 // [0, 2^31 - 1]
+  Point at{0.0, 0.0};
+};
+inline constexpr int kMaxTableConfigs = 2000;
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer, ShapesLayer, HandleLayer>;
+                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer>;
 
 // "animation" (README "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.

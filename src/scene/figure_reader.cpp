@@ -52,6 +52,8 @@ constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
 constexpr std::array<std::string_view, 9> kPlotFields = {
     "type", "box", "point", "samples", "color", "width", "opacity", "dash", "marks"};
 
+constexpr std::array<std::string_view, 5> kPropertyTableFields = {"type", "methods", "configs", "seed", "at"};
+
 constexpr std::array<std::string_view, 2> kYAxisNames = {"up", "down"};
 constexpr std::array<bool, 2> kYUp = {true, false};
 constexpr std::array<std::string_view, 2> kSpiralCenterNames = {"start", "midpoint"};
@@ -324,6 +326,30 @@ Box read_box(const Fields& box) {
   return Box{min, max};
 }
 
+PropertyTableLayer read_property_table(const Fields& fields) {
+  PropertyTableLayer layer;
+  if (const Json* methods = fields.get("methods")) {
+    const std::string at = fields.at("methods");
+    if (!methods->is_array() || methods->empty()) {
+      fields.reader().fail(at, "must be a non-empty array of method names (for example [\"P1\", \"P6\"])");
+    }
+    for (std::size_t i = 0; i < methods->size(); ++i) {
+      const std::string item = at + "/" + std::to_string(i);
+      const Method m = fields.reader().method((*methods)[i], item);
+      if (info(m).keyframe_count != 3) {
+        fields.reader().fail(item, fmt::format("{} takes {} keyframes; the properties of Sec. 4 are measured for the "
+                                               "methods through three",
+                                               info(m).id, info(m).keyframe_count));
+      }
+      layer.methods.push_back(m);
+    }
+  }
+  fields.integer("configs", 1, kMaxTableConfigs, layer.configs);
+  fields.integer("seed", 0, 2147483647, layer.seed);
+  if (const Json* at = fields.get("at")) layer.at = fields.reader().point(*at, fields.at("at"));
+  return layer;
+}
+
 PlotLayer read_plot(const Fields& fields) {
   PlotLayer layer;
   const Json& box = fields.required("box", "the box {\"min\": [x, y], \"max\": [x, y]} the plot fills");
@@ -555,7 +581,7 @@ PatchLayer read_patch(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 12> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 13> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -569,6 +595,7 @@ constexpr std::array<LayerKind<Layer>, 12> kArrowLayerKinds{{
      [](const Fields& f) -> Layer { return read_point_trajectory(f); }},
     {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f); }},
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
+    {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); }},
 }};
 
 // The layer kinds of pose scenes.

@@ -144,7 +144,7 @@ TEST(Audit, BadUsageExitsTwoAndWritesNothing) {
   }
 }
 
-TEST(Eval, PanelOutOfRangeIsBadInput) {
+TEST(EvalPanel, OutOfRangeIsBadInputAndInRangeEvaluatesThatPanel) {
   ScratchDir dir;
   const RunResult r = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "8"},
                                dir.path());
