@@ -102,14 +102,20 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subd
     const Affine2& to = poses_[1].pose;
     const Point centre = (reference[0] + reference[1] + reference[2]) / 3.0;
     const Eigen::Vector2d c(centre.real(), centre.imag());
-    try {
-      if (method == PoseMethod::rarap) morph_.emplace(RarapMorph(from, to, c));
-      if (method == PoseMethod::asap) morph_.emplace(SpiralResidueMorph(from, to, c));
-      if (method == PoseMethod::tsb) morph_.emplace(TriangleSpiralBlend(from, to, reference));
-    } catch (const std::invalid_argument& error) {
-      throw std::invalid_argument(std::string(about.id) + ": " + error.what() +
-                                  "; the two poses have opposite orientations");
+    // All three need C o B^-1 to preserve orientation (ARAP interpolates no
+    // reflection; TSB's triangle would flatten on the way).
+    const double det = compose(to, inverse(from)).L.determinant();
+    if (!(det > 0.0)) {
+      char reason[200];
+      std::snprintf(reason, sizeof reason,
+                    "%s: one pose is mirrored and the other is not (C o B^-1 has determinant %g <= 0); "
+                    "the morph interpolates no reflection: mirror both poses or neither",
+                    std::string(about.id).c_str(), det);
+      throw std::invalid_argument(reason);
     }
+    if (method == PoseMethod::rarap) morph_.emplace(RarapMorph(from, to, c));
+    if (method == PoseMethod::asap) morph_.emplace(SpiralResidueMorph(from, to, c));
+    if (method == PoseMethod::tsb) morph_.emplace(TriangleSpiralBlend(from, to, reference));
     return;
   }
   // Every SAM between consecutive poses, named by its pair when it fails.
