@@ -1,6 +1,7 @@
 #include "core/arap_decomposition.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <Eigen/LU>
@@ -36,7 +37,8 @@ ArapDecomposition arap_decomposition(const Eigen::Matrix2d& L) {
   d.beta = 0.5 * (sum - difference);   // R(beta) = V, in (-pi, pi)
   // alpha + beta = atan2(H, E), already in (-pi, pi]: the angle of the polar
   // rotation (L + cof L = 2 [[E, -H], [H, E]]), with no turn to remove.
-  d.angle = sum;
+  // A half turn (L = -s I, H = +-0) is the turn by +pi, also when H is -0.
+  d.angle = sum == -std::numbers::pi ? std::numbers::pi : sum;
   const Eigen::Matrix2d B = rotation(-d.beta) * d.singular.asDiagonal() * rotation(d.beta);
   d.stretch = 0.5 * (B + B.transpose());  // symmetric against rounding
   return d;

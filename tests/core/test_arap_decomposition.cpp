@@ -67,6 +67,13 @@ TEST(ArapDecomposition, RecoversRotationAndStretch) {
   }
 }
 
+// The half turn L = -2 I turns by +pi, whatever the signs of its zeros.
+TEST(ArapDecomposition, HalfTurnIsPlusPi) {
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, 0.0, -2.0)).angle, kPi);
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, -0.0, -2.0)).angle, kPi);
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, -0.0, 0.0, -2.0)).angle, kPi);
+}
+
 TEST(ArapDecomposition, RefusesReflectionsAndSingularParts) {
   EXPECT_THROW(arap_decomposition(matrix(1.0, 0.0, 0.0, -1.0)), std::invalid_argument);
   EXPECT_THROW(arap_decomposition(matrix(1.0, 2.0, 2.0, 4.0)), std::invalid_argument);
