@@ -11,13 +11,16 @@ namespace pita {
 
 namespace {
 
-constexpr std::array<PoseMethodInfo, 6> kPoseMethods = {{
+constexpr std::array<PoseMethodInfo, 9> kPoseMethods = {{
     {PoseMethod::sam, "SAM", "Steady Affine Morph", 2, 2},
     {PoseMethod::poly_sam, "polySAM", "polySAM (a SAM per span)", 2, 1000},
     {PoseMethod::bezier_sam, "bezier-SAM", "Bezier SAM", 3, 4},
     {PoseMethod::biarc_sam, "biarc-SAM", "SAM bi-arc retrofit", 3, 3},
     {PoseMethod::linear, "linear", "linear interpolation of the matrices", 2, 1000},
     {PoseMethod::four_point, "four-point-SAM", "polySAM of the four-point subdivision", 3, 1000},
+    {PoseMethod::rarap, "rARAP", "ARAP with the barycentre moved on a line (Fig. 2b)", 2, 2},
+    {PoseMethod::asap, "ASAP", "log spiral with a linear residue (Fig. 2c)", 2, 2},
+    {PoseMethod::tsb, "TSB", "blend of the triangle sides' log spirals (Fig. 2d)", 2, 2},
 }};
 
 // `steps` four-point subdivisions of timed poses, each new pose at the middle
@@ -41,7 +44,13 @@ Affine2 linear_mix(const Affine2& A, const Affine2& B, double u) {
   return {(1.0 - u) * A.L + u * B.L, (1.0 - u) * A.b + u * B.b};
 }
 
+bool is_fig2_morph(PoseMethod method) {
+  return method == PoseMethod::rarap || method == PoseMethod::asap || method == PoseMethod::tsb;
+}
+
 }  // namespace
+
+std::array<Point, 3> default_reference_triangle() { return {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}}; }
 
 std::span<const PoseMethodInfo> all_pose_methods() { return kPoseMethods; }
 
@@ -52,7 +61,8 @@ const PoseMethodInfo& info(PoseMethod method) {
   return kPoseMethods[0];
 }
 
-PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subdivisions)
+PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subdivisions,
+                       const std::array<Point, 3>& reference)
     : method_(method), poses_(std::move(poses)) {
   const PoseMethodInfo& about = info(method);
   if (poses_.size() < static_cast<std::size_t>(about.min_poses) ||
@@ -86,6 +96,27 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subd
             std::to_string(span_poses_[i].t) + ")");
       }
     }
+  }
+  if (is_fig2_morph(method)) {
+    const Affine2& from = poses_[0].pose;
+    const Affine2& to = poses_[1].pose;
+    const Point centre = (reference[0] + reference[1] + reference[2]) / 3.0;
+    const Eigen::Vector2d c(centre.real(), centre.imag());
+    // All three need C o B^-1 to preserve orientation (ARAP interpolates no
+    // reflection; TSB's triangle would flatten on the way).
+    const double det = compose(to, inverse(from)).L.determinant();
+    if (!(det > 0.0)) {
+      char reason[200];
+      std::snprintf(reason, sizeof reason,
+                    "%s: one pose is mirrored and the other is not (C o B^-1 has determinant %g <= 0); "
+                    "the morph interpolates no reflection: mirror both poses or neither",
+                    std::string(about.id).c_str(), det);
+      throw std::invalid_argument(reason);
+    }
+    if (method == PoseMethod::rarap) morph_.emplace(RarapMorph(from, to, c));
+    if (method == PoseMethod::asap) morph_.emplace(SpiralResidueMorph(from, to, c));
+    if (method == PoseMethod::tsb) morph_.emplace(TriangleSpiralBlend(from, to, reference));
+    return;
   }
   // Every SAM between consecutive poses, named by its pair when it fails.
   if (method != PoseMethod::linear) {
@@ -159,6 +190,14 @@ Affine2 PoseMotion::evaluate(double t) const {
       if (tc == b) return poses_[1].pose;
       return biarc_->at(u);
     }
+    case PoseMethod::rarap:
+    case PoseMethod::asap:
+    case PoseMethod::tsb: {
+      if (t == poses_[0].t) return poses_[0].pose;
+      if (t == poses_[1].t) return poses_[1].pose;
+      const double u = (t - poses_[0].t) / (poses_[1].t - poses_[0].t);
+      return std::visit([u](const auto& morph) { return morph.at(u); }, *morph_);
+    }
   }
   return poses_.front().pose;
 }
@@ -189,6 +228,14 @@ Affine2 PoseMotion::velocity(double t) const {
       const Affine2& A = span_poses_[i].pose;
       const Affine2& B = span_poses_[i + 1].pose;
       return {(B.L - A.L) / duration, (B.b - A.b) / duration};
+    }
+    case PoseMethod::rarap:
+    case PoseMethod::asap:
+    case PoseMethod::tsb: {
+      const double duration = poses_[1].t - poses_[0].t;
+      const double u = (t - poses_[0].t) / duration;
+      const Affine2 rate = std::visit([u](const auto& morph) { return morph.velocity(u); }, *morph_);
+      return {rate.L / duration, rate.b / duration};
     }
     case PoseMethod::bezier_sam:
     case PoseMethod::biarc_sam: {

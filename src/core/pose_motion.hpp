@@ -1,9 +1,12 @@
 // The motions of a pose scene (SAM paper): timed affine poses interpolated by
 // a SAM, a polySAM, a Bezier SAM, the SAM bi-arc, or linear interpolation of
 // the matrices (the "linear" column of Fig. 2: every vertex moves on a
-// straight line at constant speed). What registry.hpp is to the PITAs.
+// straight line at constant speed), and the other morphs Fig. 2 compares
+// with SAM (Sec. 2.4): rARAP, ASAP (log spiral and linear residue) and TSB
+// (blend of the sides' log spirals). What registry.hpp is to the PITAs.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -13,11 +16,17 @@
 
 #include "core/affine2.hpp"
 #include "core/affine_power.hpp"
+#include "core/rarap_morph.hpp"
 #include "core/sam_splines.hpp"
+#include "core/spiral_residue_morph.hpp"
+#include "core/triangle_spiral_blend.hpp"
 
 namespace pita {
 
-enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point };
+enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point, rarap, asap, tsb };
+
+// The reference triangle of a pose scene when it gives none: (0,0), (1,0), (0,1).
+std::array<Point, 3> default_reference_triangle();
 
 // Subdivision steps of the four-point polySAM (Sec. 7.3: "4 subdivision steps
 // suffice to produce polySAMs that appear smooth"), and the most a scene may ask.
@@ -71,6 +80,11 @@ class NoSamBetweenPoses : public NoRealLogarithm {
 // its knot. Times outside the knots extrapolate (SAM, polySAM, linear) or
 // are clamped (Bezier, bi-arc, whose arcs are not defined beyond).
 //
+// rARAP, ASAP and TSB (Fig. 2 b-d, two poses, extrapolated outside the knots)
+// need the reference triangle: rARAP and ASAP move its barycentre, TSB blends
+// the spirals of its sides (docs/paper-notes.md N39); they throw
+// std::invalid_argument when the two poses have opposite orientations.
+//
 // The four-point polySAM (Sec. 7.3, Fig. 13) subdivides its control poses
 // `subdivisions` times with subdivide_four_point (a new pose at the middle
 // time of each span) and is the polySAM through the result: it still passes
@@ -78,14 +92,15 @@ class NoSamBetweenPoses : public NoRealLogarithm {
 class PoseMotion {
  public:
   PoseMotion(PoseMethod method, std::vector<TimedPose> poses,
-             int subdivisions = kDefaultSubdivisions);
+             int subdivisions = kDefaultSubdivisions,
+             const std::array<Point, 3>& reference = default_reference_triangle());
 
   Affine2 at(double t) const;
 
   // The derivative dA/dt as an affinity-shaped pair (dL/dt, db/dt), so that
   // the velocity of the point A(t) p0 is apply(velocity(t), p0). Exact for
-  // SAM and polySAM ((log A_span) A(t) / span duration, Sec. 2.3 (6)) and for
-  // linear; for the Bezier SAM and the bi-arc a fourth-order central
+  // SAM and polySAM ((log A_span) A(t) / span duration, Sec. 2.3 (6)), for
+  // linear, rARAP, ASAP and TSB; for the Bezier SAM and the bi-arc a fourth-order central
   // difference (one-sided second order at the ends). At an interior knot,
   // where a polySAM's velocity jumps, the outgoing one; at the last, the
   // incoming one.
@@ -104,6 +119,7 @@ class PoseMotion {
   std::vector<TimedPose> span_poses_;  // the polySAM's poses (SAM, polySAM, linear, four-point)
   std::vector<SteadyAffineMorph> spans_;  // between span_poses_
   std::optional<SamBiarc> biarc_;
+  std::optional<std::variant<RarapMorph, SpiralResidueMorph, TriangleSpiralBlend>> morph_;  // Fig. 2 b-d
 };
 
 }  // namespace pita

@@ -99,6 +99,16 @@ inline Point apply_power(const Twirl& T, double t, Point x) {
   return T.anchor() + e.exp * (x - T.anchor()) + T.anchor_motion(t, e.expm1);
 }
 
+// d/dt (T^t . x), the velocity of point x under the steady motion T^t:
+// L e^{tL} (x - f) = L e^{tL} ((x - a) + (a - f)), and, when the twirl is a
+// translation (limits.hpp), L e^{tL} (x - a) + u, the derivative of the
+// fallback phi_t = t.
+inline Vector power_velocity(const Twirl& T, double t, Point x) {
+  const Complex rate = T.log() * std::exp(t * T.log());
+  if (T.is_translation()) return rate * (x - T.anchor()) + T.displacement();
+  return rate * ((x - T.anchor()) + T.anchor_offset());
+}
+
 // T^{-1}: maps T.a back to a.
 inline Twirl inverse(const Twirl& T) {
   // T^{-1} . y = a + e^{-L}(y - a - u); anchored at a' = a + u, it sends a' to a.

@@ -108,7 +108,8 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
       throw NoMotion(motion.file_, motion.pointer_, "the panel has no poses to interpolate");
     }
     try {
-      motion.poses_ = std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions);
+      motion.poses_ = std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions,
+                                                         scene.reference_triangle);
     } catch (const NoSamBetweenPoses& error) {
       throw NoMotion(motion.file_, motion.pointer_, scene::no_sam_reason(error, panel.pose_method));
     } catch (const std::invalid_argument& error) {

@@ -1,8 +1,10 @@
 #include "render/pose_drawing.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -10,6 +12,7 @@
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
+#include "core/steadiness.hpp"
 #include "render/carried_shapes.hpp"
 #include "render/plot.hpp"
 #include "motion/sampler.hpp"
@@ -213,6 +216,30 @@ class PoseBuilder {
 
   void add(const scene::LabelLayer& layer) {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  }
+
+  // The ARA (core/steadiness.hpp) of the panel's motion over a regular grid
+  // of the shapes' bounding box in reference coordinates, printed.
+  void add(const scene::AraLayer& layer) {
+    if (panel_.shapes.empty()) fail("an ara layer samples the panel's shapes, and the panel has none");
+    Point low = panel_.shapes.front().points.front(), high = low;
+    for (const scene::ShapeOutline& shape : panel_.shapes) {
+      for (const Point p : shape.points) {
+        low = {std::min(low.real(), p.real()), std::min(low.imag(), p.imag())};
+        high = {std::max(high.real(), p.real()), std::max(high.imag(), p.imag())};
+      }
+    }
+    std::vector<Eigen::Vector2d> points;
+    for (int i = 0; i < layer.grid; ++i) {
+      for (int j = 0; j < layer.grid; ++j) {
+        const double x = low.real() + (high.real() - low.real()) * i / (layer.grid - 1);
+        const double y = low.imag() + (high.imag() - low.imag()) * j / (layer.grid - 1);
+        points.emplace_back(x, y);
+      }
+    }
+    const double ara = average_relative_acceleration(motion().poses(), points);
+    if (!std::isfinite(ara)) fail("the ARA of this motion is not finite (a pose on the way is singular)");
+    push(-1, Label{fmt::format("ARA = {:.{}f}", ara, layer.digits), layer.at, layer.size, layer.color});
   }
 
   const scene::Scene& scene_;

@@ -289,8 +289,24 @@ struct ExistenceLayer {
   LineStyle trapezoid{Color{0.0, 0.0, 0.0, 1.0}, 2.0, 1.0, {}};
 };
 
+// "ara": the panel's measured unsteadiness printed as a text, "ARA = 0.042"
+// (SAM paper Sec. 2.4, Fig. 2): core/steadiness.hpp's average relative
+// acceleration of the panel's motion (its method, without the timing), over a
+// grid x grid regular sampling of the bounding box of the panel's shapes in
+// reference coordinates (the paper's "dense regular sampling of a vicinity of
+// the moving shape").
+struct AraLayer {
+  Point at;                            // required: where the text goes
+  double size = 12.0;                  // pixels
+  Color color{0.0, 0.0, 0.0, 1.0};
+  int digits = 3;                      // decimals, [0, kMaxAraDigits]
+  int grid = 11;                       // points per side, [2, kMaxAraGrid]
+};
+inline constexpr int kMaxAraDigits = 9;
+inline constexpr int kMaxAraGrid = 100;
+
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

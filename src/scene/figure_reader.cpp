@@ -482,6 +482,7 @@ constexpr std::array<std::string_view, 7> kExistenceFields = {
     "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
 constexpr std::array<std::string_view, 10> kPatchFields = {
     "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity"};
+constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
     kPatchFields};
@@ -579,6 +580,16 @@ PatchLayer read_patch(const Fields& fields) {
   return layer;
 }
 
+AraLayer read_ara(const Fields& fields) {
+  AraLayer layer;
+  layer.at = fields.reader().point(fields.required("at", "the point [x, y] of the text"), fields.at("at"));
+  fields.number("size", kTextSize, layer.size);
+  fields.color("color", layer.color);
+  fields.integer("digits", 0, kMaxAraDigits, layer.digits);
+  fields.integer("grid", 2, kMaxAraGrid, layer.grid);
+  return layer;
+}
+
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
 constexpr std::array<LayerKind<Layer>, 13> kArrowLayerKinds{{
@@ -599,7 +610,7 @@ constexpr std::array<LayerKind<Layer>, 13> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 8> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 9> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
@@ -608,6 +619,7 @@ constexpr std::array<LayerKind<PoseLayer>, 8> kPoseLayerKinds{{
     {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
+    {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {

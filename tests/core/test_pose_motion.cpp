@@ -149,6 +149,36 @@ TEST(PoseMotion, BezierAndBiarcAreClampedOutsideTheKnots) {
   }
 }
 
+// The morphs Fig. 2 compares with SAM, through PoseMotion: scene times mapped
+// onto [0, 1], exact poses at the knots, velocity by the chain rule, the
+// reference triangle passed on (TSB blends its sides), opposite orientations
+// refused.
+TEST(PoseMotion, Fig2MorphsThroughTimedPoses) {
+  const Affine2 from = pose(2.2, 0.6, 0.3, 1.6, 0.0, 0.0);
+  const Affine2 to = pose(0.7, -1.6, 2.4, 1.1, 6.5, 0.5);
+  const std::array<Point, 3> reference{Point{0.0, 0.0}, Point{2.0, 0.0}, Point{0.5, 1.5}};
+  for (const PoseMethod method : {PoseMethod::rarap, PoseMethod::asap, PoseMethod::tsb}) {
+    SCOPED_TRACE(info(method).id);
+    const PoseMotion motion(method, {{2.0, from}, {5.0, to}}, kDefaultSubdivisions, reference);
+    EXPECT_EQ(distance(motion.at(2.0), from), 0.0);
+    EXPECT_EQ(distance(motion.at(5.0), to), 0.0);
+    for (const double t : {2.5, 3.5, 4.9}) {
+      const double h = 1e-6;
+      const Affine2 before = motion.at(t - h), after = motion.at(t + h);
+      const Affine2 expected{(after.L - before.L) / (2.0 * h), (after.b - before.b) / (2.0 * h)};
+      EXPECT_LT(distance(motion.velocity(t), expected), 1e-6 * (1.0 + expected.L.norm() + expected.b.norm()))
+          << "t = " << t;
+    }
+    EXPECT_THROW(PoseMotion(method, {{0.0, from}, {1.0, pose(1.0, 0.0, 0.0, -1.0, 0.0, 0.0)}}),
+                 std::invalid_argument);
+    EXPECT_THROW(PoseMotion(method, {{0.0, from}, {1.0, to}, {2.0, from}}), std::invalid_argument);
+  }
+  // The reference triangle matters to TSB (its sides) and rARAP (its barycentre).
+  const PoseMotion unit(PoseMethod::tsb, {{0.0, from}, {1.0, to}});
+  const PoseMotion other(PoseMethod::tsb, {{0.0, from}, {1.0, to}}, kDefaultSubdivisions, reference);
+  EXPECT_GT(distance(unit.at(0.5), other.at(0.5)), 1e-3);
+}
+
 TEST(PoseMethods, TableNamesEachMethodOnceWithItsPoseCounts) {
   std::set<std::string> ids;
   for (const PoseMethodInfo& entry : all_pose_methods()) {
@@ -156,7 +186,11 @@ TEST(PoseMethods, TableNamesEachMethodOnceWithItsPoseCounts) {
     EXPECT_EQ(&info(entry.method), &entry) << entry.id;
     EXPECT_LE(entry.min_poses, entry.max_poses) << entry.id;
   }
-  EXPECT_EQ(ids.size(), 6u);
+  EXPECT_EQ(ids.size(), 9u);
+  for (const PoseMethod method : {PoseMethod::rarap, PoseMethod::asap, PoseMethod::tsb}) {
+    EXPECT_EQ(info(method).min_poses, 2);
+    EXPECT_EQ(info(method).max_poses, 2);
+  }
   EXPECT_EQ(info(PoseMethod::sam).id, "SAM");
   EXPECT_EQ(info(PoseMethod::sam).min_poses, 2);
   EXPECT_EQ(info(PoseMethod::sam).max_poses, 2);

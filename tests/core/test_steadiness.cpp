@@ -39,5 +39,22 @@ TEST(Steadiness, SamIsSteadyOthersAreNot) {
   EXPECT_NEAR(linear_slow, linear, 1e-6 * linear);
 }
 
+// Fig. 2 (Sec. 2.4): SAM's ARA is 0 and each of the four morphs it is compared
+// with is unsteady, on the scene's poses and on another generic pair. (The
+// paper's poses are not published; its numbers are not expected here.)
+TEST(Steadiness, Fig2SamIsTheOnlySteadyMorph) {
+  const Affine2 other_from = pose(1.0, 0.4, -0.2, 0.8, -1.0, 2.0);
+  const Affine2 other_to = pose(-0.9, -1.3, 1.7, -0.4, 3.0, -2.5);
+  for (const auto& [from, to] : {std::pair{kB, kC}, std::pair{other_from, other_to}}) {
+    const std::vector<TimedPose> two = {{0.0, from}, {1.0, to}};
+    const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, two), kTriangle);
+    EXPECT_LT(sam, 1e-6);
+    for (const PoseMethod method : {PoseMethod::linear, PoseMethod::rarap, PoseMethod::asap, PoseMethod::tsb}) {
+      SCOPED_TRACE(info(method).id);
+      EXPECT_GT(average_relative_acceleration(PoseMotion(method, two), kTriangle), 1e-3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pita

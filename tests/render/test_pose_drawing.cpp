@@ -180,5 +180,26 @@ TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
   }
 }
 
+// "ara" prints the ARA of the panel's motion. Linear interpolation from the
+// identity to the scaling by 2 (over [0, 2]): w(u) = p / (1 + u), so
+// |dw/du| = |p| / (1 + u)^2, whose mean over u in [0, 1] is |p| / 2; on the
+// 2 x 2 grid of the corners of the box [-1, 1]^2, |p| = sqrt 2: ARA = 0.707.
+// A SAM prints 0.
+TEST(PoseDrawing, AraLayerPrintsTheMeasuredUnsteadiness) {
+  scene::AraLayer layer;
+  layer.at = {3.0, -1.0};
+  layer.grid = 2;
+  scene::Scene scene = sam_scene({layer}, PoseMethod::linear);
+  scene.panels[0].poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
+  scene.panels[0].shapes = {scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 1u);
+  const auto& label = std::get<Label>(drawing.items[0].shape);
+  EXPECT_EQ(label.text, "ARA = 0.707");
+  EXPECT_EQ(label.at, Point(3.0, -1.0));
+  const scene::Scene sam = sam_scene({layer}, PoseMethod::sam);
+  EXPECT_EQ(std::get<Label>(pose_panel_drawing(sam, sam.panels[0]).items[0].shape).text, "ARA = 0.000");
+}
+
 }  // namespace
 }  // namespace pita::render
