@@ -16,6 +16,7 @@
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
+#include "cli/measure.hpp"
 #include "cli/render.hpp"
 #include "render/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   const auto animate_options = pita::cli::setup_animate(app);
   const auto check_options = pita::cli::setup_check(app);
   const auto update_options = pita::cli::setup_update_goldens(app);
+  const auto measure_options = pita::cli::setup_measure(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -95,6 +97,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
     if (app.got_subcommand("animate")) return to_int(pita::cli::run_animate(*animate_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
+    if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }
