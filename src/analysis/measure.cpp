@@ -261,7 +261,9 @@ AreaStats area_stats(const std::vector<double>& times, const std::vector<double>
   for (const double d : dets) scale = std::max(scale, std::abs(d));
   // Relative rounding of a determinant: moves below this never count.
   constexpr double kAreaTolerance = 1e-9;
-  const double sign = stats.last >= stats.first ? 1.0 : -1.0;
+  // The trend: rising unless the area clearly falls (equal ends, to rounding,
+  // count as rising, so that a dip is measured at its bottom).
+  const double sign = stats.last >= stats.first - kAreaTolerance * scale ? 1.0 : -1.0;
   // The largest move against the trend: max over i < j of sign (d_i - d_j).
   double best_so_far = sign * dets.front();
   for (std::size_t j = 0; j < dets.size(); ++j) {
