@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 
 #include "analysis/existence.hpp"
+#include "analysis/measure.hpp"
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
 #include "render/carried_shapes.hpp"
+#include "render/measure_text.hpp"
 #include "render/plot.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
@@ -213,6 +215,15 @@ class PoseBuilder {
 
   void add(const scene::LabelLayer& layer) {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  }
+
+  // "measures": ARA and area monotonicity (or any name) of the panel's motion.
+  void add(const scene::MeasuresLayer& layer) {
+    if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
+    (void)motion();  // the panel's poses must give a motion (its error otherwise)
+    const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+    if (measures.no_motion) fail(*measures.no_motion);
+    add_measure_text(layer, measure_lines(measures, layer.show), drawing_, layer_);
   }
 
   const scene::Scene& scene_;

@@ -205,9 +205,24 @@ struct HandleLayer {
   bool shapes = true;                  // draw the shapes (images, outlines) under the handle
 };
 
+// "measures": the numbers of `pita measure` (analysis/measure.hpp) for the
+// panel's motion, one line per name of `show`, at a point of the plane or in
+// a corner of the panel.
+struct MeasuresLayer {
+  // Names (README "pita measure"): "discrepancy-max", "path-length",
+  // "turning", "winding-range", "overreaction", "pop", "ara", "area", or
+  // "gain:K.x" / "jump:K.x" for one keyframe parameter ("gain:B.q" takes
+  // the larger of B.q.x and B.q.y). Checked by the reader.
+  std::vector<std::string> show{"overreaction", "pop"};
+  std::optional<Point> at;                              // world point; nullopt: `corner`
+  LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
+  double size = 11.0;                                   // pixels
+  Color color{0.1, 0.1, 0.1, 1.0};
+};
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer, ShapesLayer, HandleLayer>;
+                           PointTrajectoryLayer, ShapesLayer, HandleLayer, MeasuresLayer>;
 
 // "animation" (README "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.
@@ -277,7 +292,7 @@ struct ExistenceLayer {
 };
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, MeasuresLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
