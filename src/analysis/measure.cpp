@@ -88,6 +88,14 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
   }
 }
 
+// The largest change of orientation, modulo 2 pi (a frame's turns do not
+// show; the tweak is small).
+double largest_turn(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
+  double turn = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) turn = std::max(turn, std::abs(principal_angle(x[i].w - y[i].w)));
+  return turn;
+}
+
 double largest_change(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
   double change = 0.0;
   for (std::size_t i = 0; i < x.size(); ++i) change = std::max(change, frame_distance(x[i], y[i]));
@@ -177,6 +185,7 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
         continue;
       }
       reaction.gain = largest_change(*plus, *minus) / extent / (2.0 * options.gain_step);
+      reaction.turn = largest_turn(*plus, *minus) / (2.0 * options.gain_step);
       reaction.jump = largest_change(*pop_plus, *pop_minus) / extent;
       const double predicted = 2.0 * options.pop_step * reaction.gain;
       reaction.pop = reaction.jump > kPopAbsolute && reaction.jump > kPopRatio * predicted;

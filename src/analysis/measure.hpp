@@ -64,6 +64,8 @@ struct PathStats {
 struct ParameterReaction {
   std::string name;      // "B.q.x", "A.m", "C.t"
   double gain = 0.0;     // max_t |dD(t)| / extent per unit normalised tweak
+  double turn = 0.0;     // max_t |dD(t).w| (radians) per unit normalised tweak: the
+                         // orientation's overreaction, large for short frames (Fig. 19)
   double jump = 0.0;     // max_t |D+(t) - D-(t)| / extent under +-pop_step
   bool pop = false;
   bool defined = true;   // false: a tweak leaves the method's domain (counted as a pop)

@@ -81,8 +81,9 @@ std::string json_motion(const MotionMeasures& m) {
     s += "\"parameters\": [";
     for (std::size_t i = 0; i < m.parameters.size(); ++i) {
       const auto& p = m.parameters[i];
-      s += fmt::format("{}\n       {{\"name\": {}, \"defined\": {}, \"gain\": {}, \"jump\": {}, \"pop\": {}}}",
-                       i ? "," : "", json_string(p.name), p.defined, number(p.gain), number(p.jump), p.pop);
+      s += fmt::format("{}\n       {{\"name\": {}, \"defined\": {}, \"gain\": {}, \"turn\": {}, \"jump\": {}, \"pop\": {}}}",
+                       i ? "," : "", json_string(p.name), p.defined, number(p.gain), number(p.turn), number(p.jump),
+                       p.pop);
     }
     s += "]}";
     s += fmt::format(",\n     \"pop\": {{\"detected\": {}", m.pops);

@@ -68,18 +68,19 @@ std::string line(const analysis::MotionMeasures& m, const std::string& name) {
                             : fmt::format("area not monotone (dip {} at t = {})", number(m.area->excursion),
                                           number(m.area->t_of_excursion));
   }
-  const bool gain = name.starts_with("gain:");
-  if (gain || name.starts_with("jump:")) {
+  const std::string kind = name.substr(0, 4);  // "gain", "jump", "turn"
+  if (name.size() > 5 && name[4] == ':' && (kind == "gain" || kind == "jump" || kind == "turn")) {
     const std::string parameter = name.substr(5);
     const auto found = parameters(m, parameter);
-    if (found.empty()) return fmt::format("{} {}: -", gain ? "gain" : "jump", parameter);
+    if (found.empty()) return fmt::format("{} {}: -", kind, parameter);
     double value = 0.0;
     bool pop = false;
     for (const auto* p : found) {
-      value = std::max(value, gain ? p->gain : p->jump);
+      value = std::max(value, kind == "gain" ? p->gain : kind == "jump" ? p->jump : p->turn);
       pop = pop || p->pop;
     }
-    return fmt::format("{} {}: {}{}", gain ? "gain" : "jump", parameter, number(value), pop ? " (pop)" : "");
+    return fmt::format("{} {}: {}{}{}", kind, parameter, number(value), kind == "turn" ? " rad" : "",
+                       pop ? " (pop)" : "");
   }
   return name + ": -";
 }

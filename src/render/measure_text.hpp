@@ -15,6 +15,7 @@ namespace pita::render {
 // One line per name of `show` (scene::MeasuresLayer::show), for example
 //   "pop: C.p.y jumps 0.83 (x extent)"  or  "pop: none (largest jump 2.1e-09)"
 //   "gain B.q: 1.36"                    (the larger of B.q.x and B.q.y)
+//   "turn B.q: 12.5 rad"                (orientation change per unit tweak)
 // A name that does not apply to the motion (ARA of arrows) gives "ara: -".
 std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures, std::span<const std::string> show);
 

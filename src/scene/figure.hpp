@@ -211,7 +211,7 @@ struct HandleLayer {
 struct MeasuresLayer {
   // Names (README "pita measure"): "discrepancy-max", "path-length",
   // "turning", "winding-range", "overreaction", "pop", "ara", "area", or
-  // "gain:K.x" / "jump:K.x" for one keyframe parameter ("gain:B.q" takes
+  // "gain:K.x" / "turn:K.x" / "jump:K.x" for one keyframe parameter ("gain:B.q" takes
   // the larger of B.q.x and B.q.y). Checked by the reader.
   std::vector<std::string> show{"overreaction", "pop"};
   std::optional<Point> at;                              // world point; nullopt: `corner`

@@ -312,7 +312,7 @@ LegendLayer read_legend(const Fields& fields) {
 // "gain:B.q", "jump:C.p.y": a keyframe (A..Z or K27..) and one of its
 // parameters p, q (optionally .x or .y), m, w, t.
 bool is_parameter_measure(std::string_view name) {
-  for (const std::string_view prefix : {std::string_view("gain:"), std::string_view("jump:")}) {
+  for (const std::string_view prefix : {std::string_view("gain:"), std::string_view("jump:"), std::string_view("turn:")}) {
     if (!name.starts_with(prefix)) continue;
     std::string_view rest = name.substr(prefix.size());
     std::size_t key = 0;
@@ -348,8 +348,8 @@ MeasuresLayer read_measures(const Fields& fields) {
       if (!known && !is_parameter_measure(name)) {
         const std::vector<std::string> close = closest_names(name, kMeasureNames);
         reader.fail(item_at, close.empty()
-                                 ? fmt::format("unknown measure \"{}\"; measures: {}, or \"gain:K.x\" and "
-                                               "\"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, p.x, "
+                                 ? fmt::format("unknown measure \"{}\"; measures: {}, or \"gain:K.x\", "
+                                               "\"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, p.x, "
                                                "p.y, q.x, q.y, m, w, t",
                                                name, quoted_choices(kMeasureNames))
                                  : fmt::format("unknown measure \"{}\"{}", name, did_you_mean(close)));

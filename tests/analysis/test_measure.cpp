@@ -220,3 +220,33 @@ TEST(Measure, ExtentIsTheDiameterOfTheEndpoints) {
 
 }  // namespace
 }  // namespace pita::analysis
+
+namespace pita::analysis {
+namespace {
+
+TEST(Measure, TurnGainOfShortFramesOfP1) {
+  // Fig. 19: -Ca interpolates the vectors v(t) = sum L_i(t) v_i; moving B.q
+  // up by delta adds L_b(t) (0, delta) to v(t), which turns it by
+  // L_b v_x delta / |v|^2. With v_A = v_C = (0, 2.4), v_B = (0.15, -0.8) the
+  // frames near t = 1/4 and 3/4 are short and turn fast.
+  const MotionMeasures m = measure_text(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "q": [0, 2.4]}, {"t": 0.5, "p": [3, 1], "q": [3.15, 0.2]},
+      {"t": 1, "p": [6, 0], "q": [6, 2.4]}]})");
+  ASSERT_FALSE(m.no_motion);
+  const double extent = std::hypot(6.0, 2.4);  // from A.p to C.q
+  EXPECT_NEAR(m.extent, extent, 1e-12);
+  double expected = 0.0;
+  for (int i = 0; i <= 64; ++i) {
+    const double t = i / 64.0;
+    const double la = (t - 0.5) * (t - 1.0) / 0.5, lb = -t * (t - 1.0) / 0.25, lc = t * (t - 0.5) / 0.5;
+    const Complex v = la * Complex{0, 2.4} + lb * Complex{0.15, -0.8} + lc * Complex{0, 2.4};
+    expected = std::max(expected, std::abs(lb * v.real()) / std::norm(v) * extent);
+  }
+  EXPECT_GT(expected, 40.0);  // 0.75 / 0.1125 x extent at t = 1/4
+  EXPECT_NEAR(reaction(m, "B.q.y").turn, expected, 1e-4 * expected);
+  // The frames themselves move little: B's Lagrange weight, at most 1.
+  EXPECT_NEAR(reaction(m, "B.q.y").gain, 1.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace pita::analysis
