@@ -22,7 +22,9 @@ analysis::MotionMeasures arrows_measured() {
   m.path_q = analysis::PathStats{7.0, 2.0};
   m.winding_min = -0.5;
   m.winding_max = 3.25;
-  m.parameters = {{"B.q.x", 1.5, 3e-9, false, true}, {"B.q.y", 2.25, 0.75, true, true}, {"C.t", 0.5, 1e-9, false, true}};
+  m.parameters = {{.name = "B.q.x", .gain = 1.5, .turn = 0.5, .jump = 3e-9},
+                  {.name = "B.q.y", .gain = 2.25, .turn = 4.5, .jump = 0.75, .pop = true},
+                  {.name = "C.t", .gain = 0.5, .turn = 0.25, .jump = 1e-9}};
   m.most_sensitive = 1;
   m.largest_jump = 1;
   m.pops = true;
@@ -31,7 +33,8 @@ analysis::MotionMeasures arrows_measured() {
 
 TEST(MeasureText, OneLinePerNameWithTheNumbers) {
   const std::vector<std::string> show{"discrepancy-max", "path-length", "turning", "winding-range",
-                                      "overreaction",    "pop",         "gain:B.q", "jump:C.t", "ara"};
+                                      "overreaction",    "pop",         "gain:B.q", "jump:C.t", "ara",
+                                      "turn:B.q"};
   const std::vector<std::string> lines = measure_lines(arrows_measured(), show);
   ASSERT_EQ(lines.size(), show.size());
   EXPECT_EQ(lines[0], "E max: previous 1.5, average 0.0125, pita -");
@@ -43,6 +46,7 @@ TEST(MeasureText, OneLinePerNameWithTheNumbers) {
   EXPECT_EQ(lines[6], "gain B.q: 2.25 (pop)");  // the larger of B.q.x and B.q.y
   EXPECT_EQ(lines[7], "jump C.t: 1e-09");
   EXPECT_EQ(lines[8], "ARA: -");  // not a pose motion
+  EXPECT_EQ(lines[9], "turn B.q: 4.5 rad (pop)");
 }
 
 TEST(MeasureText, PoseLinesAndNoPop) {
