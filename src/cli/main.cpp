@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
       "  pita render scenes/fig01-eight-pitas.json -o fig01.png\n"
       "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n"
       "  pita animate scenes/fig23-image-motion.json -o fig23.svg   an animated SVG\n"
+      "  pita measure scenes/fig12-pops.json                discrepancy, overreaction, pops\n"
       "  pita check                                         every figure against golden/\n\n"
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
