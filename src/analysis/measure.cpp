@@ -288,6 +288,15 @@ AreaStats area_stats(const std::vector<double>& times, const std::vector<double>
   return stats;
 }
 
+double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
+  const double frame = motion::frame_cost(panel);
+  const double keys = static_cast<double>(panel.keyframes.size());
+  const double tweaks = 4.0 * static_cast<double>(kParameters.size()) * keys;
+  return tweaks * (2.0 * keys + options.tweak_samples * frame) +
+         (options.path_samples + 3.0 + 3.0 * panel.samples) * frame +
+         static_cast<double>(panel.poses.size()) * (options.path_samples + 64.0);
+}
+
 MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel, const MeasureOptions& options) {
   MotionMeasures out;
   out.pointer = panel.pointer;

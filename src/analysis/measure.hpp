@@ -115,6 +115,13 @@ PathStats path_stats(std::span<const Point> points);
 // Area monotonicity of det L(t) at the given samples.
 AreaStats area_stats(const std::vector<double>& times, const std::vector<double>& dets);
 
+// What measure_panel costs, in frames of a plain method (motion::frame_cost):
+// per keyframe parameter four tweaked motions, each built (about two frames
+// per keyframe: a copy of the panel and the track's preparation) and sampled
+// tweak_samples times, plus the dense path and the
+// pattern's three predictors. What `pita measure` and the render budget weigh.
+double measure_cost(const scene::Panel& panel, const MeasureOptions& options = {});
+
 // Measures of the panel's motion; never throws NoMotion (no_motion is set).
 MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel,
                              const MeasureOptions& options = {});

@@ -316,6 +316,18 @@ or usage, 3 the report could not be written to standard output, 4 an internal er
 ExitCode run_measure(const MeasureOptions& options) {
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path);
+    double work = 0.0;
+    for (const scene::Panel& panel : scene.panels) work += analysis::measure_cost(panel);
+    if (work > scene::kMaxEvalWork) {
+      std::cerr << "pita: "
+                << scene::located(scene.path, scene.panels.size() > 1 ? "/panels" : "/keyframes",
+                                  fmt::format("measuring these motions costs about {:.3g} frames of a method, above "
+                                              "the limit of {:.0g}: fewer keyframes or panels, or the local \"blend\" "
+                                              "chain",
+                                              work, scene::kMaxEvalWork))
+                << '\n';
+      return ExitCode::bad_input;
+    }
     const std::vector<MotionMeasures> all = analysis::measure_scene(scene);
     const std::string text = options.format == "json"  ? to_json(scene.path, all)
                              : options.format == "csv" ? to_csv(all)

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/measure.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
@@ -64,11 +65,7 @@ class LayerCost {
   }
   void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
   void operator()(const scene::MeasuresLayer&) {
-    // analysis::measure_panel: four tweaked motions of 65 frames per keyframe
-    // parameter (7 each), 2051 path frames, the pattern's three predictors.
-    const double keys = static_cast<double>(std::max(panel_.keyframes.size(), panel_.poses.size()));
-    const double frames = keys * 7.0 * 4.0 * 65.0 + 2051.0 + 3.0 * panel_.samples;
-    add(layer_, "the measures of the motion", 8 * kShapeUnits + frames * motion::frame_cost(panel_));
+    add(layer_, "the measures of the motion", 8 * kShapeUnits + analysis::measure_cost(panel_));
   }
   void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
   void operator()(const scene::PlotLayer& l) {

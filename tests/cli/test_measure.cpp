@@ -130,6 +130,22 @@ TEST_F(Measure, BadInputExitsTwoWithNothingOnStdout) {
   EXPECT_EQ(format.out, "");
 }
 
+TEST_F(Measure, WorkBeyondTheLimitIsRefused) {
+  // 64 keyframes through the neville chain: each frame blends ~2e3 frames
+  // of P6, and measuring tweaks every keyframe: far above 1e8 frames.
+  std::string keys;
+  for (int i = 0; i < 64; ++i) {
+    keys += (i ? ", " : "") + std::string(R"({"t": )") + std::to_string(i) + R"(, "p": [)" + std::to_string(i) +
+            ", " + std::to_string(i % 3) + R"(], "m": 1, "w": 0})";
+  }
+  dir.write("long.json", R"({"method": "P6", "chain": "neville", "keyframes": [)" + keys + "]}");
+  const RunResult result = run({"measure", "long.json"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.rfind("pita: long.json: /keyframes: measuring these motions costs about ", 0), 0u) << result.err;
+  EXPECT_NE(result.err.find("above the limit of 1e+08"), std::string::npos) << result.err;
+}
+
 TEST_F(Measure, EverySceneOfScenesIsMeasured) {
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PITA_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".json") continue;
