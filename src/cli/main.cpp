@@ -17,6 +17,7 @@
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
+#include "cli/measure.hpp"
 #include "cli/render.hpp"
 #include "render/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
       "  pita render scenes/fig01-eight-pitas.json -o fig01.png\n"
       "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n"
       "  pita animate scenes/fig23-image-motion.json -o fig23.svg   an animated SVG\n"
+      "  pita measure scenes/fig12-pops.json                discrepancy, overreaction, pops\n"
       "  pita check                                         every figure against golden/\n"
       "  pita audit -o fig10.svg                            Fig. 10's properties, measured\n\n"
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
@@ -65,6 +67,7 @@ int main(int argc, char** argv) {
   const auto check_options = pita::cli::setup_check(app);
   const auto update_options = pita::cli::setup_update_goldens(app);
   const auto audit_options = pita::cli::setup_audit(app);
+  const auto measure_options = pita::cli::setup_measure(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -99,6 +102,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("animate")) return to_int(pita::cli::run_animate(*animate_options));
     if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
+    if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/measure.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
@@ -63,6 +64,9 @@ class LayerCost {
     add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
   }
   void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
+  void operator()(const scene::MeasuresLayer&) {
+    add(layer_, "the measures of the motion", 8 * kShapeUnits + analysis::measure_cost(panel_));
+  }
   void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
   void operator()(const scene::PropertyTableLayer& l) {
     // About 10 units (27 us) per property, method and configuration, crafted

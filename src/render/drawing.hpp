@@ -92,6 +92,7 @@ struct Legend {
   scene::LegendLayer::Corner corner = scene::LegendLayer::Corner::top_left;
   double size = 11.0;
   std::vector<LegendEntry> entries;
+  bool swatches = true;  // false: text only, flush with the corner's side (a "measures" layer)
 };
 
 struct Drawing {

@@ -126,6 +126,14 @@ void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std
   const double pad = 6.0, width = swatch + 9.0 * legend.size;
   const double x = right ? area.x + area.width - width - pad : area.x + pad;
   double y = bottom ? area.y + area.height - height - pad : area.y + pad;
+  if (!legend.swatches) {  // text only, aligned on the corner's side
+    for (const LegendEntry& entry : legend.entries) {
+      paint_text(cr, entry.text, font, legend.size, entry.color, right ? area.x + area.width - pad : area.x + pad,
+                 y + 0.5 * line_height - 0.65 * legend.size, right ? TextAlign::right : TextAlign::left);
+      y += line_height;
+    }
+    return;
+  }
   for (const LegendEntry& entry : legend.entries) {
     const double mid = y + 0.5 * line_height;
     cairo_move_to(cr, x, mid);

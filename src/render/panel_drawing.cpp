@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 
 #include "analysis/audit.hpp"
+#include "analysis/measure.hpp"
 #include "analysis/prediction.hpp"
 #include "core/carrier.hpp"
 #include "render/banner.hpp"
 #include "render/carried_shapes.hpp"
+#include "render/measure_text.hpp"
 #include "render/plot.hpp"
 #include "render/property_table.hpp"
 #include "render/spiral.hpp"
@@ -41,7 +43,8 @@ class PanelBuilder {
       layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
       const bool for_points = std::holds_alternative<scene::PointTrajectoryLayer>(layers[i]) ||
                               std::holds_alternative<scene::LabelLayer>(layers[i]) ||
-                              std::holds_alternative<scene::LegendLayer>(layers[i]);
+                              std::holds_alternative<scene::LegendLayer>(layers[i]) ||
+                              std::holds_alternative<scene::MeasuresLayer>(layers[i]);
       if (!panel_.points.empty() && !for_points) {
         fail(layer_, "this layer draws a motion of keyframes, and the panel has timed \"points\": draw them "
                      "with \"point-trajectory\" (labels and legends are fine too)");
@@ -258,6 +261,14 @@ class PanelBuilder {
 
   void add(const scene::LabelLayer& layer) {
     push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  }
+
+  // "measures": the numbers of `pita measure` for this panel's motion.
+  void add(const scene::MeasuresLayer& layer) {
+    if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
+    const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+    if (measures.no_motion) fail(layer_, *measures.no_motion);
+    add_measure_text(layer, measure_lines(measures, layer.show), drawing_, layer_);
   }
 
   void add(const scene::PointTrajectoryLayer& layer) {

@@ -9,11 +9,13 @@
 #include <fmt/format.h>
 
 #include "analysis/existence.hpp"
+#include "analysis/measure.hpp"
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
 #include "core/steadiness.hpp"
 #include "render/carried_shapes.hpp"
+#include "render/measure_text.hpp"
 #include "render/plot.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
@@ -240,6 +242,15 @@ class PoseBuilder {
     const double ara = average_relative_acceleration(motion().poses(), points);
     if (!std::isfinite(ara)) fail("the ARA of this motion is not finite (a pose on the way is singular)");
     push(-1, Label{fmt::format("ARA = {:.{}f}", ara, layer.digits), layer.at, layer.size, layer.color});
+  }
+
+  // "measures": ARA and area monotonicity (or any name) of the panel's motion.
+  void add(const scene::MeasuresLayer& layer) {
+    if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
+    (void)motion();  // the panel's poses must give a motion (its error otherwise)
+    const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+    if (measures.no_motion) fail(*measures.no_motion);
+    add_measure_text(layer, measure_lines(measures, layer.show), drawing_, layer_);
   }
 
   const scene::Scene& scene_;

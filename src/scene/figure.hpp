@@ -218,9 +218,24 @@ struct PropertyTableLayer {
 };
 inline constexpr int kMaxTableConfigs = 2000;
 
+// "measures": the numbers of `pita measure` (analysis/measure.hpp) for the
+// panel's motion, one line per name of `show`, at a point of the plane or in
+// a corner of the panel.
+struct MeasuresLayer {
+  // Names (README "pita measure"): "discrepancy-max", "path-length",
+  // "turning", "winding-range", "overreaction", "pop", "ara", "area", or
+  // "gain:K.x" / "turn:K.x" / "jump:K.x" for one keyframe parameter ("gain:B.q" takes
+  // the larger of B.q.x and B.q.y). Checked by the reader.
+  std::vector<std::string> show{"overreaction", "pop"};
+  std::optional<Point> at;                              // world point; nullopt: `corner`
+  LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
+  double size = 11.0;                                   // pixels
+  Color color{0.1, 0.1, 0.1, 1.0};
+};
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer>;
+                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer, MeasuresLayer>;
 
 // "animation" (README "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.
@@ -306,7 +321,7 @@ inline constexpr int kMaxAraDigits = 9;
 inline constexpr int kMaxAraGrid = 100;
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

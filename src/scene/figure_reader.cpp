@@ -45,6 +45,11 @@ constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
     "type", "predictor", "method", "scale", "color", "width", "opacity", "dash", "fill", "samples"};
 constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
+constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
+// The names a "measures" layer shows (README "pita measure"), besides
+// "gain:K.x" and "jump:K.x".
+constexpr std::array<std::string_view, 8> kMeasureNames = {
+    "discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "ara", "area"};
 
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
@@ -303,6 +308,72 @@ LegendLayer read_legend(const Fields& fields) {
   LegendLayer layer;
   fields.choice("corner", kCornerNames, kCorners, layer.corner);
   fields.number("size", kTextSize, layer.size);
+  return layer;
+}
+
+// "gain:B.q", "jump:C.p.y": a keyframe (A..Z or K27..) and one of its
+// parameters p, q (optionally .x or .y), m, w, t.
+bool is_parameter_measure(std::string_view name) {
+  for (const std::string_view prefix : {std::string_view("gain:"), std::string_view("jump:"), std::string_view("turn:")}) {
+    if (!name.starts_with(prefix)) continue;
+    std::string_view rest = name.substr(prefix.size());
+    std::size_t key = 0;
+    if (rest.size() > 1 && rest[0] == 'K' && rest[1] >= '0' && rest[1] <= '9') {
+      key = 1;
+      while (key < rest.size() && rest[key] >= '0' && rest[key] <= '9') ++key;
+    } else if (!rest.empty() && rest[0] >= 'A' && rest[0] <= 'Z') {
+      key = 1;
+    }
+    if (key == 0) return false;
+    rest.remove_prefix(key);
+    for (const std::string_view parameter : {".p", ".q", ".p.x", ".p.y", ".q.x", ".q.y", ".m", ".w", ".t"}) {
+      if (rest == parameter) return true;
+    }
+  }
+  return false;
+}
+
+MeasuresLayer read_measures(const Fields& fields) {
+  MeasuresLayer layer;
+  const JsonReader& reader = fields.reader();
+  if (const Json* show = fields.get("show")) {
+    const std::string at = fields.at("show");
+    if (!show->is_array() || show->empty() || show->size() > kMeasureNames.size() + 8) {
+      reader.fail(at, fmt::format("must be a list of 1 to {} measure names (got {})", kMeasureNames.size() + 8,
+                                  value_text(*show)));
+    }
+    layer.show.clear();
+    for (std::size_t i = 0; i < show->size(); ++i) {
+      const std::string item_at = at + "/" + std::to_string(i);
+      const std::string name = reader.string((*show)[i], item_at);
+      const bool known = std::find(kMeasureNames.begin(), kMeasureNames.end(), name) != kMeasureNames.end();
+      if (!known && !is_parameter_measure(name)) {
+        const std::vector<std::string> close = closest_names(name, kMeasureNames);
+        reader.fail(item_at, close.empty()
+                                 ? fmt::format("unknown measure \"{}\"; measures: {}, or \"gain:K.x\", "
+                                               "\"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, p.x, "
+                                               "p.y, q.x, q.y, m, w, t",
+                                               name, quoted_choices(kMeasureNames))
+                                 : fmt::format("unknown measure \"{}\"{}", name, did_you_mean(close)));
+      }
+      layer.show.push_back(name);
+    }
+  }
+  if (const Json* where = fields.get("at")) {
+    if (where->is_string()) {
+      const std::string corner = where->get<std::string>();
+      const auto found = std::find(kCornerNames.begin(), kCornerNames.end(), corner);
+      if (found == kCornerNames.end()) {
+        reader.fail(fields.at("at"), fmt::format("must be a point [x, y] or a corner, {} (got {})",
+                                                 quoted_choices(kCornerNames), value_text(*where)));
+      }
+      layer.corner = kCorners[static_cast<std::size_t>(found - kCornerNames.begin())];
+    } else {
+      layer.at = reader.point(*where, fields.at("at"));
+    }
+  }
+  fields.number("size", kTextSize, layer.size);
+  fields.color("color", layer.color);
   return layer;
 }
 
@@ -592,7 +663,7 @@ AraLayer read_ara(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 13> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 14> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -607,10 +678,11 @@ constexpr std::array<LayerKind<Layer>, 13> kArrowLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f); }},
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
     {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); }},
+    {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f); }},
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 9> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 10> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
@@ -620,6 +692,7 @@ constexpr std::array<LayerKind<PoseLayer>, 9> kPoseLayerKinds{{
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
+    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {

@@ -285,6 +285,27 @@ TEST(Layers, LabelAndLegend) {
             LegendLayer::Corner::bottom_right);
 }
 
+TEST(Layers, Measures) {
+  const MeasuresLayer defaults = only_layer<MeasuresLayer>(R"({"type": "measures"})");
+  EXPECT_EQ(defaults.show, (std::vector<std::string>{"overreaction", "pop"}));
+  EXPECT_FALSE(defaults.at.has_value());
+  EXPECT_EQ(defaults.corner, LegendLayer::Corner::bottom_left);
+  const MeasuresLayer placed = only_layer<MeasuresLayer>(
+      R"({"type": "measures", "show": ["ara", "gain:B.q", "jump:K27.p.x"], "at": [1, 2], "size": 9, "color": "#0000ff"})");
+  EXPECT_EQ(placed.show, (std::vector<std::string>{"ara", "gain:B.q", "jump:K27.p.x"}));
+  ASSERT_TRUE(placed.at.has_value());
+  EXPECT_EQ(*placed.at, (Point{1.0, 2.0}));
+  EXPECT_EQ(placed.size, 9.0);
+  EXPECT_EQ(placed.color, rgb(0, 0, 1));
+  EXPECT_EQ(only_layer<MeasuresLayer>(R"({"type": "measures", "at": "top-right"})").corner,
+            LegendLayer::Corner::top_right);
+  // Malformed parameter names (tests/data/bad/layers-measures-* for the messages).
+  for (const char* bad : {"gain:", "gain:b.q", "gain:B", "gain:B.q.z", "jump:K2x.p", "gain:AB.q", "size:B.q"}) {
+    EXPECT_THROW(p6(std::string(R"(, "layers": [{"type": "measures", "show": [")") + bad + R"("]}])"), SceneError)
+        << bad;
+  }
+}
+
 TEST(Layers, KeepTheirOrder) {
   const Scene scene = p6(R"(, "layers": [{"type": "legend"}, {"type": "stroke"},
       {"type": "pattern"}, {"type": "legend"}])");

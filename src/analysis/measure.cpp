@@ -1,0 +1,350 @@
+#include "analysis/measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/LU>
+#include <fmt/format.h>
+
+#include "analysis/prediction.hpp"
+#include "core/discrepancy.hpp"
+#include "core/steadiness.hpp"
+#include "motion/sampler.hpp"
+
+namespace pita::analysis {
+
+namespace {
+
+// "A", "B", ..., "Z", then "K27", "K28", ...: keyframe names (Sec. 1).
+std::string keyframe_name(std::size_t index) {
+  if (index < 26) return std::string(1, static_cast<char>('A' + index));
+  return fmt::format("K{}", index + 1);
+}
+
+// The seven parameters of a keyframe (docs/paper-notes.md N37): p.x, p.y
+// translate the arrow (m, w kept: a drag near p, Sec. 6.3); q.x, q.y move the
+// tip with p kept (a drag near q; w follows continuously); m is scaled by
+// e^delta; w turns by delta radians; t is the knot.
+enum class Parameter { px, py, qx, qy, m, w, t };
+constexpr std::array<Parameter, 7> kParameters{Parameter::px, Parameter::py, Parameter::qx, Parameter::qy,
+                                               Parameter::m,  Parameter::w,  Parameter::t};
+constexpr std::array<const char*, 7> kParameterNames{"p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
+
+// Keyframe `key` with parameter `which` moved by the normalised `delta`.
+Keyframe tweaked(Keyframe key, Parameter which, double delta, double extent, double duration) {
+  Arrow& arrow = key.arrow;
+  switch (which) {
+    case Parameter::px: arrow.p += Complex{delta * extent, 0.0}; break;
+    case Parameter::py: arrow.p += Complex{0.0, delta * extent}; break;
+    case Parameter::qx:
+    case Parameter::qy: {
+      const Vector before = arrow.vector();
+      const Vector after = before + (which == Parameter::qx ? Complex{delta * extent, 0.0}
+                                                             : Complex{0.0, delta * extent});
+      arrow.m = std::abs(after);
+      arrow.w += std::arg(after / before);  // the winding follows the tip continuously
+      break;
+    }
+    case Parameter::m: arrow.m *= std::exp(delta); break;
+    case Parameter::w: arrow.w += delta; break;
+    case Parameter::t: key.t += delta * duration; break;
+  }
+  return key;
+}
+
+double frame_distance(const Arrow& x, const Arrow& y) {
+  return std::max(std::abs(x.p - y.p), std::abs(x.q() - y.q()));
+}
+
+// The frames of the panel with keyframe `index`'s parameter moved by delta,
+// at `times`; nullopt when that motion does not exist.
+std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, const scene::Panel& panel,
+                                                 std::size_t index, Parameter which, double delta,
+                                                 double extent, double duration,
+                                                 const std::vector<double>& times) {
+  scene::Panel moved = panel;
+  // The method's own motion: the timing only paces it (docs/paper-notes.md N37).
+  moved.timing = scene::Timing{};
+  moved.keyframes[index] = tweaked(panel.keyframes[index], which, delta, extent, duration);
+  const auto& keys = moved.keyframes;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    if (!(keys[i].t > keys[i - 1].t)) return std::nullopt;
+  }
+  try {
+    const motion::SceneMotion tweaked_motion = motion::build_motion(scene, moved);
+    // A knot tweak compares the patterns: uniform times over the new knots
+    // (else moving an end knot would count as shifting every frame's time).
+    const std::vector<double> at =
+        which == Parameter::t ? motion::uniform_times(keys.front().t, keys.back().t, static_cast<int>(times.size()))
+                              : times;
+    std::vector<Arrow> frames;
+    frames.reserve(at.size());
+    for (const double t : at) frames.push_back(tweaked_motion.arrow_at(t));
+    return frames;
+  } catch (const motion::NoMotion&) {
+    return std::nullopt;
+  }
+}
+
+// The largest change of orientation, modulo 2 pi (a frame's turns do not
+// show; the tweak is small).
+double largest_turn(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
+  double turn = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) turn = std::max(turn, std::abs(principal_angle(x[i].w - y[i].w)));
+  return turn;
+}
+
+double largest_change(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
+  double change = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) change = std::max(change, frame_distance(x[i], y[i]));
+  return change;
+}
+
+void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& motion, MotionMeasures& out) {
+  const std::vector<double> times = motion::uniform_times(motion, panel.samples);
+  std::vector<Arrow> frames;
+  for (const motion::Frame& frame : motion::sample_arrows(motion, times)) frames.push_back(frame.arrow);
+  constexpr std::array<std::pair<scene::Predictor, const char*>, 3> kPredictors{
+      {{scene::Predictor::previous, "previous"}, {scene::Predictor::average, "average"}, {scene::Predictor::pita, "pita"}}};
+  for (const auto& [predictor, name] : kPredictors) {
+    DiscrepancyStats stats;
+    stats.predictor = name;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      std::optional<double> e;
+      try {
+        e = frame_discrepancy(predictor, panel.method, panel.options, times, frames, i);
+      } catch (const std::exception&) {
+        continue;  // the predicting motion does not exist through these frames
+      }
+      if (!e || !std::isfinite(*e)) continue;
+      if (stats.frames == 0 || *e > stats.max) {
+        stats.max = *e;
+        stats.t_of_max = times[i];
+      }
+      sum += *e;
+      ++stats.frames;
+    }
+    if (stats.frames > 0) stats.mean = sum / stats.frames;
+    out.discrepancy.push_back(stats);
+  }
+}
+
+// Dense arrows over the motion's own time, one step past each end.
+std::vector<Arrow> dense_arrows(const motion::SceneMotion& motion, int samples) {
+  const double first = motion.first(), step = (motion.last() - first) / samples;
+  std::vector<Arrow> arrows;
+  arrows.reserve(static_cast<std::size_t>(samples) + 3);
+  for (int i = -1; i <= samples + 1; ++i) {
+    const double tau = i == samples ? motion.last() : first + step * i;
+    arrows.push_back(motion.arrows().at(tau));
+  }
+  return arrows;
+}
+
+void measure_paths(const motion::SceneMotion& motion, const MeasureOptions& options, MotionMeasures& out) {
+  const std::vector<Arrow> arrows = dense_arrows(motion, options.path_samples);
+  std::vector<Point> p, q;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < arrows.size(); ++i) {
+    if (!is_finite(arrows[i])) throw std::domain_error("a frame is not finite");
+    p.push_back(arrows[i].p);
+    q.push_back(arrows[i].q());
+    if (i > 0 && i + 1 < arrows.size()) {
+      lo = std::min(lo, arrows[i].w);
+      hi = std::max(hi, arrows[i].w);
+    }
+  }
+  out.path_p = path_stats(p);
+  out.path_q = path_stats(q);
+  out.winding_min = lo;
+  out.winding_max = hi;
+}
+
+void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, const motion::SceneMotion& motion,
+                       const MeasureOptions& options, MotionMeasures& out) {
+  // Motion times (the timing is left out, docs/paper-notes.md N37).
+  const std::vector<double> times = motion::uniform_times(motion.first(), motion.last(), options.tweak_samples);
+  const double extent = out.extent, duration = motion.last() - motion.first();
+  double best_gain = -1.0, best_jump = -1.0;
+  for (std::size_t k = 0; k < panel.keyframes.size(); ++k) {
+    for (std::size_t j = 0; j < kParameters.size(); ++j) {
+      ParameterReaction reaction;
+      reaction.name = keyframe_name(k) + "." + kParameterNames[j];
+      const auto plus = tweaked_frames(scene, panel, k, kParameters[j], options.gain_step, extent, duration, times);
+      const auto minus = tweaked_frames(scene, panel, k, kParameters[j], -options.gain_step, extent, duration, times);
+      const auto pop_plus = tweaked_frames(scene, panel, k, kParameters[j], options.pop_step, extent, duration, times);
+      const auto pop_minus = tweaked_frames(scene, panel, k, kParameters[j], -options.pop_step, extent, duration, times);
+      if (!plus || !minus || !pop_plus || !pop_minus) {
+        reaction.defined = false;  // a tweak leaves the method's domain: a pop of its own kind
+        reaction.pop = true;
+        out.pops = true;
+        out.parameters.push_back(reaction);
+        continue;
+      }
+      reaction.gain = largest_change(*plus, *minus) / extent / (2.0 * options.gain_step);
+      reaction.turn = largest_turn(*plus, *minus) / (2.0 * options.gain_step);
+      reaction.jump = largest_change(*pop_plus, *pop_minus) / extent;
+      const double predicted = 2.0 * options.pop_step * reaction.gain;
+      reaction.pop = reaction.jump > kPopAbsolute && reaction.jump > kPopRatio * predicted;
+      out.pops = out.pops || reaction.pop;
+      if (reaction.gain > best_gain) {
+        best_gain = reaction.gain;
+        out.most_sensitive = static_cast<int>(out.parameters.size());
+      }
+      if (reaction.jump > best_jump) {
+        best_jump = reaction.jump;
+        out.largest_jump = static_cast<int>(out.parameters.size());
+      }
+      out.parameters.push_back(reaction);
+    }
+  }
+}
+
+// The points whose relative acceleration ARA averages: the vertices of the
+// panel's shapes (image boxes included), else the reference triangle.
+std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
+  std::vector<Eigen::Vector2d> points;
+  for (const scene::ShapeOutline& shape : panel.shapes) {
+    for (const Point& x : shape.points) points.emplace_back(x.real(), x.imag());
+  }
+  if (points.empty()) {
+    for (const Point& x : scene.reference_triangle) points.emplace_back(x.real(), x.imag());
+  }
+  return points;
+}
+
+void measure_poses(const scene::Scene& scene, const scene::Panel& panel, const motion::SceneMotion& motion,
+                   const MeasureOptions& options, MotionMeasures& out) {
+  const std::vector<Eigen::Vector2d> points = ara_points(scene, panel);
+  out.ara = average_relative_acceleration(motion.poses(), points);
+  std::vector<double> times, dets;
+  const double first = motion.first(), step = (motion.last() - first) / options.path_samples;
+  for (int i = 0; i <= options.path_samples; ++i) {
+    const double tau = i == options.path_samples ? motion.last() : first + step * i;
+    times.push_back(tau);
+    dets.push_back(motion.poses().at(tau).L.determinant());
+  }
+  out.area = area_stats(times, dets);
+  if (!std::isfinite(*out.ara)) throw std::domain_error("ARA is not finite");
+}
+
+}  // namespace
+
+double keyframe_extent(const std::vector<Keyframe>& keyframes) {
+  std::vector<Point> ends;
+  for (const Keyframe& key : keyframes) {
+    ends.push_back(key.arrow.p);
+    ends.push_back(key.arrow.q());
+  }
+  double diameter = 0.0;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    for (std::size_t j = i + 1; j < ends.size(); ++j) diameter = std::max(diameter, std::abs(ends[i] - ends[j]));
+  }
+  return diameter;
+}
+
+PathStats path_stats(std::span<const Point> points) {
+  PathStats stats;
+  const std::size_t n = points.size();
+  if (n < 3) return stats;
+  for (std::size_t i = 1; i + 2 < n; ++i) stats.length += std::abs(points[i + 1] - points[i]);
+  std::optional<Vector> previous;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const Vector tangent = points[i + 1] - points[i - 1];
+    if (std::abs(tangent) == 0.0) continue;
+    if (previous) stats.turning += std::abs(std::arg(tangent / *previous));
+    previous = tangent;
+  }
+  return stats;
+}
+
+AreaStats area_stats(const std::vector<double>& times, const std::vector<double>& dets) {
+  AreaStats stats;
+  if (dets.empty()) return stats;
+  stats.first = dets.front();
+  stats.last = dets.back();
+  double scale = 0.0;
+  for (const double d : dets) scale = std::max(scale, std::abs(d));
+  // Relative rounding of a determinant: moves below this never count.
+  constexpr double kAreaTolerance = 1e-9;
+  // The trend: rising unless the area clearly falls (equal ends, to rounding,
+  // count as rising, so that a dip is measured at its bottom).
+  const double sign = stats.last >= stats.first - kAreaTolerance * scale ? 1.0 : -1.0;
+  // The largest move against the trend: max over i < j of sign (d_i - d_j).
+  double best_so_far = sign * dets.front();
+  for (std::size_t j = 0; j < dets.size(); ++j) {
+    best_so_far = std::max(best_so_far, sign * dets[j]);
+    const double against = best_so_far - sign * dets[j];
+    if (against > stats.excursion) {
+      stats.excursion = against;
+      stats.t_of_excursion = times[j];
+    }
+  }
+  if (scale > 0.0) stats.excursion /= scale;
+  stats.monotone = stats.excursion <= kAreaTolerance;
+  return stats;
+}
+
+double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
+  const double frame = motion::frame_cost(panel);
+  const double keys = static_cast<double>(panel.keyframes.size());
+  const double tweaks = 4.0 * static_cast<double>(kParameters.size()) * keys;
+  return tweaks * (2.0 * keys + options.tweak_samples * frame) +
+         (options.path_samples + 3.0 + 3.0 * panel.samples) * frame +
+         static_cast<double>(panel.poses.size()) * (options.path_samples + 64.0);
+}
+
+MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel, const MeasureOptions& options) {
+  MotionMeasures out;
+  out.pointer = panel.pointer;
+  out.title = panel.title;
+  out.method = motion::method_label(scene, panel);
+  out.kind = scene.kind == scene::SceneKind::poses ? "poses" : panel.points.empty() ? "arrows" : "points";
+  out.samples = panel.samples;
+  try {
+    const motion::SceneMotion motion = motion::build_motion(scene, panel);
+    if (scene.kind == scene::SceneKind::poses) {
+      measure_poses(scene, panel, motion, options, out);
+    } else if (motion.has_points()) {
+      // A curve through timed points (Sec. 7.6): its path only.
+      const double first = motion.first(), step = (motion.last() - first) / options.path_samples;
+      std::vector<Point> p;
+      for (int i = -1; i <= options.path_samples + 1; ++i) {
+        p.push_back(motion.point_at(i == options.path_samples ? motion.last() : first + step * i));
+      }
+      out.path_p = path_stats(p);
+    } else {
+      out.extent = keyframe_extent(panel.keyframes);
+      measure_discrepancy(panel, motion, out);
+      measure_paths(motion, options, out);
+      measure_reactions(scene, panel, motion, options, out);
+    }
+  } catch (const motion::NoMotion& error) {
+    out.no_motion = error.what();
+  } catch (const std::exception& error) {
+    out.no_motion = scene::located(scene.path, panel.motion_pointer,
+                                   fmt::format("method {} cannot be measured: {}", out.method, error.what()));
+  }
+  if (out.no_motion) {  // nothing half measured
+    const MotionMeasures header = out;
+    out = MotionMeasures{};
+    out.pointer = header.pointer;
+    out.title = header.title;
+    out.method = header.method;
+    out.kind = header.kind;
+    out.samples = header.samples;
+    out.no_motion = header.no_motion;
+  }
+  return out;
+}
+
+std::vector<MotionMeasures> measure_scene(const scene::Scene& scene, const MeasureOptions& options) {
+  std::vector<MotionMeasures> all;
+  for (const scene::Panel& panel : scene.panels) all.push_back(measure_panel(scene, panel, options));
+  return all;
+}
+
+}  // namespace pita::analysis

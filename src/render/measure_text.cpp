@@ -1,0 +1,109 @@
+#include "render/measure_text.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace pita::render {
+
+namespace {
+
+std::string number(double x) { return fmt::format("{:.3g}", x); }
+
+// The parameters named `name` ("B.q.x") or under it ("B.q": B.q.x, B.q.y).
+std::vector<const analysis::ParameterReaction*> parameters(const analysis::MotionMeasures& m,
+                                                           const std::string& name) {
+  std::vector<const analysis::ParameterReaction*> found;
+  for (const analysis::ParameterReaction& p : m.parameters) {
+    if (p.name == name || p.name.starts_with(name + ".")) found.push_back(&p);
+  }
+  return found;
+}
+
+std::string line(const analysis::MotionMeasures& m, const std::string& name) {
+  const bool arrows = m.kind == "arrows";
+  if (name == "discrepancy-max") {
+    if (m.discrepancy.empty()) return "E max: -";
+    std::string values;
+    for (const analysis::DiscrepancyStats& d : m.discrepancy) {
+      values += fmt::format("{}{} {}", values.empty() ? "" : ", ", d.predictor, d.frames ? number(d.max) : "-");
+    }
+    return "E max: " + values;
+  }
+  if (name == "path-length") {
+    if (!m.path_p) return "length: -";
+    return m.path_q ? fmt::format("length p {}, q {}", number(m.path_p->length), number(m.path_q->length))
+                    : fmt::format("length {}", number(m.path_p->length));
+  }
+  if (name == "turning") {
+    if (!m.path_p) return "turning: -";
+    return m.path_q ? fmt::format("turning p {}, q {} rad", number(m.path_p->turning), number(m.path_q->turning))
+                    : fmt::format("turning {} rad", number(m.path_p->turning));
+  }
+  if (name == "winding-range") {
+    if (!m.winding_min) return "winding: -";
+    return fmt::format("winding [{}, {}]", number(*m.winding_min), number(*m.winding_max));
+  }
+  if (name == "overreaction") {
+    if (m.most_sensitive < 0) return "overreaction: -";
+    const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
+    return fmt::format("most sensitive: {} (gain {})", best.name, number(best.gain));
+  }
+  if (name == "pop") {
+    if (!arrows) return "pop: -";
+    if (m.largest_jump < 0) {
+      for (const auto& p : m.parameters) {
+        if (!p.defined) return fmt::format("pop: {} leaves the domain", p.name);
+      }
+      return "pop: -";
+    }
+    const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
+    return m.pops ? fmt::format("pop: {} jumps {}", worst.name, number(worst.jump))
+                  : fmt::format("no pop (largest jump {})", number(worst.jump));
+  }
+  if (name == "ara") return m.ara ? fmt::format("ARA {}", number(*m.ara)) : "ARA: -";
+  if (name == "area") {
+    if (!m.area) return "area: -";
+    return m.area->monotone ? std::string("area monotone")
+                            : fmt::format("area not monotone (dip {} at t = {})", number(m.area->excursion),
+                                          number(m.area->t_of_excursion));
+  }
+  const std::string kind = name.substr(0, 4);  // "gain", "jump", "turn"
+  if (name.size() > 5 && name[4] == ':' && (kind == "gain" || kind == "jump" || kind == "turn")) {
+    const std::string parameter = name.substr(5);
+    const auto found = parameters(m, parameter);
+    if (found.empty()) return fmt::format("{} {}: -", kind, parameter);
+    double value = 0.0;
+    bool pop = false;
+    for (const auto* p : found) {
+      value = std::max(value, kind == "gain" ? p->gain : kind == "jump" ? p->jump : p->turn);
+      pop = pop || p->pop;
+    }
+    return fmt::format("{} {}: {}{}{}", kind, parameter, number(value), kind == "turn" ? " rad" : "",
+                       pop ? " (pop)" : "");
+  }
+  return name + ": -";
+}
+
+}  // namespace
+
+std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures, std::span<const std::string> show) {
+  std::vector<std::string> lines;
+  for (const std::string& name : show) lines.push_back(line(measures, name));
+  return lines;
+}
+
+void add_measure_text(const scene::MeasuresLayer& layer, const std::vector<std::string>& lines, Drawing& drawing,
+                      const std::string& layer_pointer) {
+  if (layer.at) {
+    std::string text;
+    for (const std::string& line : lines) text += (text.empty() ? "" : "\n") + line;
+    drawing.items.push_back({layer_pointer, -1, Label{text, *layer.at, layer.size, layer.color}});
+    return;
+  }
+  Legend legend{layer.corner, layer.size, {}, false};
+  for (const std::string& line : lines) legend.entries.push_back({layer.color, line});
+  drawing.legends.push_back(std::move(legend));
+}
+
+}  // namespace pita::render

@@ -1,0 +1,27 @@
+// The text of a "measures" layer: the numbers of `pita measure`
+// (analysis/measure.hpp) as short lines, one per name the layer shows.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "analysis/measure.hpp"
+#include "render/drawing.hpp"
+#include "scene/figure.hpp"
+
+namespace pita::render {
+
+// One line per name of `show` (scene::MeasuresLayer::show), for example
+//   "pop: C.p.y jumps 0.83 (x extent)"  or  "pop: none (largest jump 2.1e-09)"
+//   "gain B.q: 1.36"                    (the larger of B.q.x and B.q.y)
+//   "turn B.q: 12.5 rad"                (orientation change per unit tweak)
+// A name that does not apply to the motion (ARA of arrows) gives "ara: -".
+std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures, std::span<const std::string> show);
+
+// Adds the lines to the drawing as the layer places them: one label (lines
+// joined) at the layer's world point, else a text-only legend in its corner.
+void add_measure_text(const scene::MeasuresLayer& layer, const std::vector<std::string>& lines, Drawing& drawing,
+                      const std::string& layer_pointer);
+
+}  // namespace pita::render

@@ -1,0 +1,102 @@
+// The "measures" layer (src/render/measure_text.cpp): the lines it prints for
+// given numbers, and where a panel's drawing puts them (a label at a world
+// point, or a text-only legend in a corner).
+#include <gtest/gtest.h>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "render/measure_text.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::render {
+namespace {
+
+analysis::MotionMeasures arrows_measured() {
+  analysis::MotionMeasures m;
+  m.kind = "arrows";
+  m.discrepancy = {{"previous", 8, 1.5, 0.7, 0.25}, {"average", 7, 0.0125, 0.01, 0.5}, {"pita", 0, 0.0, 0.0, 0.0}};
+  m.path_p = analysis::PathStats{6.5, 1.25};
+  m.path_q = analysis::PathStats{7.0, 2.0};
+  m.winding_min = -0.5;
+  m.winding_max = 3.25;
+  m.parameters = {{.name = "B.q.x", .gain = 1.5, .turn = 0.5, .jump = 3e-9},
+                  {.name = "B.q.y", .gain = 2.25, .turn = 4.5, .jump = 0.75, .pop = true},
+                  {.name = "C.t", .gain = 0.5, .turn = 0.25, .jump = 1e-9}};
+  m.most_sensitive = 1;
+  m.largest_jump = 1;
+  m.pops = true;
+  return m;
+}
+
+TEST(MeasureText, OneLinePerNameWithTheNumbers) {
+  const std::vector<std::string> show{"discrepancy-max", "path-length", "turning", "winding-range",
+                                      "overreaction",    "pop",         "gain:B.q", "jump:C.t", "ara",
+                                      "turn:B.q"};
+  const std::vector<std::string> lines = measure_lines(arrows_measured(), show);
+  ASSERT_EQ(lines.size(), show.size());
+  EXPECT_EQ(lines[0], "E max: previous 1.5, average 0.0125, pita -");
+  EXPECT_EQ(lines[1], "length p 6.5, q 7");
+  EXPECT_EQ(lines[2], "turning p 1.25, q 2 rad");
+  EXPECT_EQ(lines[3], "winding [-0.5, 3.25]");
+  EXPECT_EQ(lines[4], "most sensitive: B.q.y (gain 2.25)");
+  EXPECT_EQ(lines[5], "pop: B.q.y jumps 0.75");
+  EXPECT_EQ(lines[6], "gain B.q: 2.25 (pop)");  // the larger of B.q.x and B.q.y
+  EXPECT_EQ(lines[7], "jump C.t: 1e-09");
+  EXPECT_EQ(lines[8], "ARA: -");  // not a pose motion
+  EXPECT_EQ(lines[9], "turn B.q: 4.5 rad (pop)");
+}
+
+TEST(MeasureText, PoseLinesAndNoPop) {
+  analysis::MotionMeasures m;
+  m.kind = "poses";
+  m.ara = 4.25;
+  m.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
+  const std::vector<std::string> show{"ara", "area", "pop"};
+  EXPECT_EQ(measure_lines(m, show), (std::vector<std::string>{"ARA 4.25", "area not monotone (dip 0.125 at t = 0.5)",
+                                                              "pop: -"}));
+  analysis::MotionMeasures calm = arrows_measured();
+  calm.pops = false;
+  calm.largest_jump = 0;
+  const std::vector<std::string> pop{"pop"};
+  EXPECT_EQ(measure_lines(calm, pop).front(), "no pop (largest jump 3e-09)");
+}
+
+scene::Scene scene_with_layer(const std::string& layer) {
+  return scene::parse_scene(R"({"method": "P2", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 1}, {"t": 0.5, "p": [2, 0], "m": 0.8, "w": 1.6},
+      {"t": 1, "p": [0.5, 0], "m": 1.2, "w": 2.2}], "layers": [)" + layer + "]}", "s.json");
+}
+
+TEST(MeasureText, LabelAtAWorldPoint) {
+  // P2 on a branch cut (tests/core/test_fig10.cpp pop_config): the label says it pops.
+  const scene::Scene scene = scene_with_layer(R"({"type": "measures", "show": ["pop", "gain:C.p"], "at": [1, -2],
+      "size": 14, "color": "#ff0000"})");
+  const Drawing drawing = panel_drawing(scene, scene.panels.front());
+  ASSERT_EQ(drawing.items.size(), 1u);
+  const auto* label = std::get_if<Label>(&drawing.items.front().shape);
+  ASSERT_NE(label, nullptr);
+  EXPECT_EQ(label->at, (Point{1.0, -2.0}));
+  EXPECT_EQ(label->size, 14.0);
+  EXPECT_EQ(label->color, (scene::Color{1.0, 0.0, 0.0, 1.0}));
+  EXPECT_EQ(label->text.rfind("pop: ", 0), 0u) << label->text;
+  EXPECT_NE(label->text.find("jumps"), std::string::npos) << label->text;
+  EXPECT_NE(label->text.find("\ngain C.p: "), std::string::npos) << label->text;
+  EXPECT_TRUE(drawing.legends.empty());
+}
+
+TEST(MeasureText, TextOnlyLegendInACorner) {
+  const scene::Scene scene = scene_with_layer(R"({"type": "measures", "at": "top-right"})");
+  const Drawing drawing = panel_drawing(scene, scene.panels.front());
+  EXPECT_TRUE(drawing.items.empty());
+  ASSERT_EQ(drawing.legends.size(), 1u);
+  EXPECT_FALSE(drawing.legends.front().swatches);
+  EXPECT_EQ(drawing.legends.front().corner, scene::LegendLayer::Corner::top_right);
+  ASSERT_EQ(drawing.legends.front().entries.size(), 2u);  // default: overreaction, pop
+  EXPECT_EQ(drawing.legends.front().entries[0].text.rfind("most sensitive: ", 0), 0u);
+}
+
+}  // namespace
+}  // namespace pita::render
