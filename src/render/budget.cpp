@@ -64,6 +64,9 @@ class LayerCost {
   }
   void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
   void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
+  // Each frame evaluates a stencil of five or six more frames (frame_derivatives).
+  void operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }
+  void operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
   void operator()(const scene::PlotLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
         8 * kShapeUnits + l.samples);
