@@ -174,7 +174,7 @@ struct VectorsLayer {
   bool tail_at_point = true;                   // "at_point": "tail" (from the point) or "head" (onto it)
   double scale = 0.1;                          // > 0; default by `of` (reader)
   Color color_p{0.0, 0.0, 0.0, 1.0};           // "colors": [at p, at q]; default by `of` (reader)
-  Color color_q{0.545, 0.271, 0.075, 1.0};
+  Color color_q{139.0 / 255.0, 69.0 / 255.0, 19.0 / 255.0, 1.0};  // brown, #8b4513
   LineStyle line{Color{}, 1.2, 1.0, {}};        // width, opacity, dash (colour from color_p/q)
   bool heads = true;                           // arrowheads
   std::optional<int> samples;
@@ -189,7 +189,7 @@ enum class CenterKind { global, acceleration, velocity };  // "center"
 struct FixedPointsLayer {
   CenterKind center = CenterKind::acceleration;
   TrackedPoint point = TrackedPoint::start;
-  LineStyle line{Color{1.0, 0.549, 0.0, 1.0}, 1.0, 1.0, {}};
+  LineStyle line{Color{1.0, 140.0 / 255.0, 0.0, 1.0}, 1.0, 1.0, {}};  // orange, #ff8c00
   bool dots = true;                            // a dot at each center
   std::optional<int> samples;
   std::optional<TimeRange> range;

@@ -326,7 +326,7 @@ VectorsLayer read_vectors(const Fields& fields) {
   fields.choice("of", kVectorKindNames, kVectorKinds, layer.of);
   if (layer.of == VectorKind::velocity) {
     layer.scale = 0.25;
-    layer.color_p = layer.color_q = Color{0.0, 0.392, 0.0, 1.0};  // #006400
+    layer.color_p = layer.color_q = Color{0.0, 100.0 / 255.0, 0.0, 1.0};  // #006400
   }
   int at = 3;
   fields.choice("at", kVectorAtNames, kVectorAts, at);
