@@ -284,7 +284,7 @@ class PanelBuilder {
       // f at infinity (P7 degenerate to P1's parabola): nothing to draw.
       if (!global) return;
     }
-    const double dot = 0.01 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
+    const double dot = 0.025 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
     int index = 0;
     for (const analysis::FrameDerivatives& d : derivatives(times)) {
       std::optional<Point> center = global;
