@@ -33,7 +33,7 @@ FrameDerivatives frame_derivatives(const motion::SceneMotion& motion, double t) 
   const std::vector<double>& knots = motion.knots();
   const Piece piece = piece_of(knots, t);
   const double length = std::isfinite(piece.hi - piece.lo) ? piece.hi - piece.lo : knots.back() - knots.front();
-  const double h = length / kDerivativeStepsPerSpan;
+  const double h = length / limits::kDerivativeStepsPerSpan;
   std::vector<double> nodes;
   if (t - 2.0 * h >= piece.lo && t + 2.0 * h <= piece.hi) {
     for (int j = -2; j <= 2; ++j) nodes.push_back(t + j * h);

@@ -16,6 +16,7 @@
 #include <optional>
 
 #include "core/arrow.hpp"
+#include "core/limits.hpp"
 #include "motion/scene_motion.hpp"
 
 namespace pita::analysis {
@@ -26,9 +27,6 @@ struct FrameDerivatives {
   Vector dp, dq;       // their velocities, per unit of scene time
   Vector ddp, ddq;     // their accelerations, per unit of scene time squared
 };
-
-// Steps per knot span of the stencils.
-inline constexpr double kDerivativeStepsPerSpan = 256.0;
 
 // D and its first two derivatives at scene time t. Throws motion::NoMotion
 // when the motion is undefined at a node of the stencil.

@@ -24,8 +24,7 @@ namespace pita {
 
 // The zero of the affine field x -> dp + (dv / v)(x - p): p - dp v / dv.
 // nullopt when the field is (nearly) a pure translation: dv = 0, or the zero
-// lies farther than kFarCenter |v| from p, or is not finite.
-inline constexpr double kFarCenter = 1e6;
+// lies farther than limits::kFarCenter |v| from p, or is not finite.
 std::optional<Point> field_zero(Point p, Vector v, Vector dp, Vector dv);
 
 // c_v and c_a above from p, q and their derivatives.

@@ -32,7 +32,7 @@ TEST(InstantCenter, RotationAndScalingAboutAPoint) {
 
 TEST(InstantCenter, TranslationHasNone) {
   EXPECT_FALSE(velocity_center({0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}, {2.0, 1.0}));
-  // Nearly a translation: the zero lies beyond kFarCenter |v|.
+  // Nearly a translation: the zero lies beyond limits::kFarCenter |v|.
   EXPECT_FALSE(velocity_center({0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}, {2.0 + 1e-9, 1.0}));
   EXPECT_TRUE(velocity_center({0.0, 0.0}, {1.0, 0.0}, {2.0, 1.0}, {2.0 + 1e-3, 1.0}));
 }
