@@ -137,6 +137,18 @@ TEST(FixedPointsLayer, VelocityCenterOfASteadyMotionIsItsFixedPoint) {
   for (const Polyline& line : lines) EXPECT_LT(std::abs(line.points[1] - f), 1e-7);
 }
 
+TEST(FixedPointsLayer, NoCenterForATranslatingFrame) {
+  // Equal keyframe vectors: kappa = 1, P7 is P1's parabola with f at infinity,
+  // and the frame only translates (v' = v'' = 0): no segment is drawn.
+  const std::vector<Keyframe> keys = {{0.0, Arrow{{0.0, 0.0}, 1.0, 0.5}}, {0.5, Arrow{{2.0, 1.0}, 1.0, 0.5}},
+                                      {1.0, Arrow{{4.0, 0.0}, 1.0, 0.5}}};
+  for (const scene::CenterKind center : {scene::CenterKind::global, scene::CenterKind::acceleration, scene::CenterKind::velocity}) {
+    scene::FixedPointsLayer layer;
+    layer.center = center;
+    EXPECT_TRUE(draw(Method::P7, {layer}, 9, keys).items.empty()) << static_cast<int>(center);
+  }
+}
+
 TEST(FixedPointsLayer, GlobalIsP7sOnly) {
   scene::FixedPointsLayer layer;
   layer.center = scene::CenterKind::global;
