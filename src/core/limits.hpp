@@ -198,4 +198,16 @@ inline constexpr int kMaxNevilleKeyframes = 64;
 // the limit only keeps them cheap.
 inline constexpr int kMaxNevillePoints = 64;
 
+// ---------------------------------------------------- derivatives of D(t)
+// Velocities and accelerations of arrow motions (analysis/frame_derivatives.hpp,
+// docs/paper-notes.md N40) are fourth-order differences with the step
+// h = (knot span) / kDerivativeStepsPerSpan: truncation ~ (h |L|)^4 / 30
+// (about 1e-10 of the value for a turn of 1 rad per span), rounding of
+// a second derivative ~ 1e-16 |x| / h^2 (about 1e-11).
+inline constexpr double kDerivativeStepsPerSpan = 256.0;
+// An instantaneous center (core/instant_center.hpp) farther than this many
+// arrow lengths |v| from p is taken as none: the motion is then a translation
+// to within rounding, and a segment to the center would fill the figure.
+inline constexpr double kFarCenter = 1e6;
+
 }  // namespace pita::limits

@@ -75,6 +75,9 @@ class LayerCost {
     add(layer_ + "/configs", fmt::format("{} configurations of a property table", l.configs),
         10.0 * 13.0 * methods * (l.configs + 7.0));
   }
+  // Each frame evaluates a stencil of five or six more frames (frame_derivatives).
+  void operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }
+  void operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
   void operator()(const scene::PlotLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
         8 * kShapeUnits + l.samples);

@@ -8,6 +8,7 @@
 
 #include "analysis/audit.hpp"
 #include "analysis/measure.hpp"
+#include "analysis/frame_derivatives.hpp"
 #include "analysis/prediction.hpp"
 #include "core/carrier.hpp"
 #include "render/banner.hpp"
@@ -257,6 +258,82 @@ class PanelBuilder {
       }
     }
     push(-1, ArrowShape{panel_.handle.p, panel_.handle.q(), LineStyle{layer.color, layer.width, 1.0, {}}});
+  }
+
+  // The derivatives of D at `times`; a stencil node where the motion does not
+  // exist is the layer's error.
+  std::vector<analysis::FrameDerivatives> derivatives(const std::vector<double>& times) const {
+    std::vector<analysis::FrameDerivatives> result;
+    result.reserve(times.size());
+    try {
+      for (double t : times) result.push_back(analysis::frame_derivatives(motion_, t));
+    } catch (const motion::NoMotion& error) {
+      fail(layer_, error.reason());
+    }
+    return result;
+  }
+
+  // "vectors" (Figs. 9, 14, 15): scale x dx/du or d2x/du2, u = (t - a)/(c - a).
+  void add(const scene::VectorsLayer& layer) {
+    const std::vector<double> times = layer_times(panel_, layer.samples, layer.range);
+    const double span = motion_.last() - motion_.first();
+    const bool velocity = layer.of == scene::VectorKind::velocity;
+    const double factor = layer.scale * (velocity ? span : span * span);
+    int index = 0;
+    for (const analysis::FrameDerivatives& d : derivatives(times)) {
+      const auto vector = [&](Point at, Vector rate, const Color& color) {
+        const Vector drawn = factor * rate;
+        if (!std::isfinite(drawn.real()) || !std::isfinite(drawn.imag())) {
+          fail(layer_, fmt::format("the {} at t = {} is not finite", velocity ? "velocity" : "acceleration", d.t));
+        }
+        const Point from = layer.tail_at_point ? at : at - drawn;
+        const Point to = layer.tail_at_point ? at + drawn : at;
+        LineStyle line = layer.line;
+        line.color = color;
+        if (layer.heads) {
+          push(index, ArrowShape{from, to, line});
+        } else {
+          push(index, Polyline{{from, to}, false, line});
+        }
+      };
+      if (layer.at_p) vector(d.p, velocity ? d.dp : d.ddp, layer.color_p);
+      if (layer.at_q) vector(d.q, velocity ? d.dq : d.ddq, layer.color_q);
+      ++index;
+    }
+  }
+
+  // "fixed-points" (Fig. 9): segments from D(t).p (q, mid) to P7's global
+  // fixed point or to the instantaneous center at t (core/instant_center.hpp).
+  void add(const scene::FixedPointsLayer& layer) {
+    const std::vector<double> times = layer_times(panel_, layer.samples, layer.range);
+    std::optional<Point> global;
+    if (layer.center == scene::CenterKind::global) {
+      if (panel_.method != Method::P7 || motion_.chain()) {
+        fail(layer_ + "/center", fmt::format("\"global\" is P7's fixed point (Eq. 35-36); the panel's method is {}: "
+                                             "use \"acceleration\" or \"velocity\" (instantaneous centers)",
+                                             motion::method_label(scene_, panel_)));
+      }
+      global = motion_.arrows().global_fixed_point();
+      // f at infinity (P7 degenerate to P1's parabola): nothing to draw.
+      if (!global) return;
+    }
+    const double dot = 0.025 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
+    int index = 0;
+    for (const analysis::FrameDerivatives& d : derivatives(times)) {
+      std::optional<Point> center = global;
+      if (layer.center == scene::CenterKind::acceleration) center = analysis::acceleration_center(d);
+      if (layer.center == scene::CenterKind::velocity) center = analysis::velocity_center(d);
+      if (center) {
+        const Point from = layer.point == scene::TrackedPoint::start ? d.p
+                           : layer.point == scene::TrackedPoint::end ? d.q
+                                                                     : 0.5 * (d.p + d.q);
+        push(index, Polyline{{from, *center}, false, layer.line});
+        if (layer.dots && (!global || index == 0)) {
+          push(index, Circle{*center, dot, layer.line, layer.line.color});
+        }
+      }
+      ++index;
+    }
   }
 
   void add(const scene::LabelLayer& layer) {

@@ -162,6 +162,39 @@ struct PointTrajectoryLayer {
   bool dots = true;                    // a dot at each timed point
 };
 
+// "vectors" (PITA Figs. 9, 14, 15; docs/paper-notes.md N40): at each frame
+// the velocity or the acceleration of D(t).p and D(t).q as arrows, drawn
+// `scale` x the derivative by the normalised time u = (t - a)/(c - a) (as
+// the pose scenes' "velocities"). Not to be confused with those: this one
+// draws the arrow's two points, of arrow scenes.
+enum class VectorKind { velocity, acceleration };  // "of"
+struct VectorsLayer {
+  VectorKind of = VectorKind::acceleration;
+  bool at_p = true, at_q = true;               // "at": "both", "p" or "q"
+  bool tail_at_point = true;                   // "at_point": "tail" (from the point) or "head" (onto it)
+  double scale = 0.1;                          // > 0; default by `of` (reader)
+  Color color_p{0.0, 0.0, 0.0, 1.0};           // "colors": [at p, at q]; default by `of` (reader)
+  Color color_q{139.0 / 255.0, 69.0 / 255.0, 19.0 / 255.0, 1.0};  // brown, #8b4513
+  LineStyle line{Color{}, 1.2, 1.0, {}};        // width, opacity, dash (colour from color_p/q)
+  bool heads = true;                           // arrowheads
+  std::optional<int> samples;
+  std::optional<TimeRange> range;
+};
+
+// "fixed-points" (PITA Fig. 9; docs/paper-notes.md N40): at each frame a
+// segment from D(t).p (or q, mid) to a center of the motion: P7's global
+// fixed point f (Eq. 35-36), or the instantaneous center where the
+// acceleration (default) or the velocity of the plane's moving points is zero.
+enum class CenterKind { global, acceleration, velocity };  // "center"
+struct FixedPointsLayer {
+  CenterKind center = CenterKind::acceleration;
+  TrackedPoint point = TrackedPoint::start;
+  LineStyle line{Color{1.0, 140.0 / 255.0, 0.0, 1.0}, 1.0, 1.0, {}};  // orange, #ff8c00
+  bool dots = true;                            // a dot at each center
+  std::optional<int> samples;
+  std::optional<TimeRange> range;
+};
+
 // A closed outline (polygon) or open polyline in reference coordinates.
 // A raster image placed in the shapes' frame (PITA Sec. 7.1): a PNG file read
 // by cairo when drawn. The scene reader has checked that the file exists, is a
@@ -235,7 +268,8 @@ struct MeasuresLayer {
 
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer, MeasuresLayer>;
+                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer, MeasuresLayer,
+                           VectorsLayer, FixedPointsLayer>;
 
 // "animation" (README "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.

@@ -58,6 +58,10 @@ constexpr std::array<std::string_view, 9> kPlotFields = {
     "type", "box", "point", "samples", "color", "width", "opacity", "dash", "marks"};
 
 constexpr std::array<std::string_view, 5> kPropertyTableFields = {"type", "methods", "configs", "seed", "at"};
+constexpr std::array<std::string_view, 12> kVectorsFields = {
+    "type", "of", "at", "at_point", "scale", "colors", "width", "opacity", "dash", "heads", "samples", "range"};
+constexpr std::array<std::string_view, 10> kFixedPointsFields = {
+    "type", "center", "point", "color", "width", "opacity", "dash", "dots", "samples", "range"};
 
 constexpr std::array<std::string_view, 2> kYAxisNames = {"up", "down"};
 constexpr std::array<bool, 2> kYUp = {true, false};
@@ -377,6 +381,63 @@ MeasuresLayer read_measures(const Fields& fields) {
   return layer;
 }
 
+constexpr std::array<std::string_view, 2> kVectorKindNames = {"velocity", "acceleration"};
+constexpr std::array<VectorKind, 2> kVectorKinds = {VectorKind::velocity, VectorKind::acceleration};
+constexpr std::array<std::string_view, 3> kVectorAtNames = {"both", "p", "q"};
+constexpr std::array<int, 3> kVectorAts = {3, 1, 2};  // bit 1: p, bit 2: q
+constexpr std::array<std::string_view, 2> kAtPointNames = {"tail", "head"};
+constexpr std::array<bool, 2> kTailAtPoint = {true, false};
+constexpr std::array<std::string_view, 3> kCenterNames = {"global", "acceleration", "velocity"};
+constexpr std::array<CenterKind, 3> kCenters = {CenterKind::global, CenterKind::acceleration,
+                                                CenterKind::velocity};
+
+// "vectors": the defaults follow the paper's figures: accelerations at p
+// black and at q brown (Figs. 9, 14), velocities dark green (Fig. 15).
+VectorsLayer read_vectors(const Fields& fields) {
+  VectorsLayer layer;
+  fields.choice("of", kVectorKindNames, kVectorKinds, layer.of);
+  if (layer.of == VectorKind::velocity) {
+    layer.scale = 0.25;
+    layer.color_p = layer.color_q = Color{0.0, 100.0 / 255.0, 0.0, 1.0};  // #006400
+  }
+  int at = 3;
+  fields.choice("at", kVectorAtNames, kVectorAts, at);
+  layer.at_p = (at & 1) != 0;
+  layer.at_q = (at & 2) != 0;
+  fields.choice("at_point", kAtPointNames, kTailAtPoint, layer.tail_at_point);
+  fields.number("scale", kPositive, layer.scale);
+  if (const Json* colors = fields.get("colors")) {
+    const std::string pointer = fields.at("colors");
+    if (!colors->is_array() || colors->empty() || colors->size() > 2) {
+      fields.reader().fail(pointer, "must be an array of 1 or 2 colors: [at p, at q] (got " +
+                                        value_text(*colors) + ")");
+    }
+    layer.color_p = fields.reader().color((*colors)[0], element_pointer(pointer, 0));
+    layer.color_q = colors->size() == 2 ? fields.reader().color((*colors)[1], element_pointer(pointer, 1))
+                                        : layer.color_p;
+  }
+  fields.number("width", kLineWidth, layer.line.width);
+  fields.number("opacity", kOpacity, layer.line.opacity);
+  if (const Json* dash = fields.get("dash")) {
+    layer.line.dash = read_dash(fields.reader(), *dash, fields.at("dash"));
+  }
+  fields.boolean("heads", layer.heads);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
+FixedPointsLayer read_fixed_points(const Fields& fields) {
+  FixedPointsLayer layer;
+  fields.choice("center", kCenterNames, kCenters, layer.center);
+  fields.choice("point", kPointNames, kPoints, layer.point);
+  read_line(fields, layer.line);
+  fields.boolean("dots", layer.dots);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
 // {"min": [x, y], "max": [x, y]} with min < max on both axes.
 Box read_box(const Fields& box) {
   const JsonReader& reader = box.reader();
@@ -663,7 +724,7 @@ AraLayer read_ara(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 14> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 16> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -679,6 +740,8 @@ constexpr std::array<LayerKind<Layer>, 14> kArrowLayerKinds{{
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
     {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f); }},
+    {"vectors", kVectorsFields, [](const Fields& f) -> Layer { return read_vectors(f); }},
+    {"fixed-points", kFixedPointsFields, [](const Fields& f) -> Layer { return read_fixed_points(f); }},
 }};
 
 // The layer kinds of pose scenes.

@@ -4,6 +4,7 @@
 // outside [a, c] extrapolate, Sec. 7.5).
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -16,6 +17,10 @@ class Motion {
   virtual ~Motion() = default;
   // D(t). May throw MotionDomainError for isolated singular configurations.
   virtual Arrow at(double t) const = 0;
+  // The global fixed point of a radially-perseverant motion (P7, Eq. 35-36:
+  // every point's acceleration is S (x - f)); nullopt for the other motions
+  // and when f is at infinity (docs/paper-notes.md N40).
+  virtual std::optional<Point> global_fixed_point() const { return std::nullopt; }
 };
 
 // Thrown when a motion does not exist for the given keyframes (for example the

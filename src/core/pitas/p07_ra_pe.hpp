@@ -28,6 +28,7 @@ class RaPe final : public Motion {
  public:
   // f of Eq. E.12, or nothing when P7 degenerates to P1's parabola (kappa = 1).
   std::optional<Point> fixed_point() const;
+  std::optional<Point> global_fixed_point() const override { return fixed_point(); }
 };
 
 }  // namespace pita
