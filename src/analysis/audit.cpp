@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 #include <fmt/format.h>
@@ -100,25 +102,31 @@ AuditReport run_audit(const AuditOptions& options) {
   const std::size_t jobs = std::min<std::size_t>(options.jobs > 0 ? static_cast<std::size_t>(options.jobs) : cores, total);
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
-  std::atomic<bool> stopped{false};
+  // The first exception of any thread (an interruption, or out of memory) is
+  // rethrown here once every thread has stopped; the others then stop early.
+  std::atomic<bool> failed{false};
+  std::exception_ptr first_error;
+  std::mutex error_lock;
   const auto work = [&] {
     try {
-      for (std::size_t i = next++; i < total; i = next++) {
+      for (std::size_t i = next++; i < total && !failed; i = next++) {
         const Method m = report.methods[i / report.properties.size()];
         const Property p = report.properties[i % report.properties.size()];
         report.cells[i] = measure_cell(m, p, report.configs, options.seed, options.stop);
         const int finished = ++done;
         if (options.progress) options.progress(finished, static_cast<int>(total));
       }
-    } catch (const AuditStopped&) {
-      stopped = true;
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(error_lock);
+      if (!first_error) first_error = std::current_exception();
+      failed = true;
     }
   };
   std::vector<std::thread> threads;
   for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(work);
   work();
   for (std::thread& t : threads) t.join();
-  if (stopped) throw AuditStopped{};
+  if (first_error) std::rethrow_exception(first_error);
   return report;
 }
 

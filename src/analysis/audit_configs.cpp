@@ -127,6 +127,16 @@ std::vector<AuditConfig> crafted_configs() {
   // A wild configuration of Sec. 6.6: large winding differences and magnitude ratios.
   out.push_back(crafted("wild, windings -6..9 and magnitudes 0.05..20",
                         {key(0.0, 0, 0, 0.05, -6.0), key(0.4, 3, 2, 20.0, 2.0), key(1.0, 7, -1, 1.0, 9.0)}));
+  // Wild windings where P9's Neville step M(X(t), Y(t), s) passes close to a
+  // singular steady morph just after b: its frames spike to 40 times the
+  // extent within 1e-4 of the span (seed 42's wild #70; docs/paper-notes.md N36).
+  out.push_back(crafted("wild, P9's Neville step near a singular steady morph",
+                        {{-0.97198279966561074, Arrow{{-3.9447201213883254, -1.3859142052162801}, 0.42658816675212369,
+                                                      -17.610701059432373}},
+                         {-0.63010701541990588, Arrow{{-1.9201251662525176, 2.0951239954909129}, 0.18901055069773637,
+                                                      19.073163757885197}},
+                         {0.35239283002170696, Arrow{{-3.3103836393360475, -0.080703286568803989}, 0.022066145814316755,
+                                                     13.093670576051522}}}));
   for (std::size_t i = 0; i < out.size(); ++i) out[i].index = static_cast<int>(i);
   return out;
 }

@@ -23,6 +23,19 @@ Json arrow_json(const Keyframe& k) {
 Json keyframes_json(const KeyframeTriple& k) { return Json::array({arrow_json(k.a), arrow_json(k.b), arrow_json(k.c)}); }
 
 
+// A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a newline.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+bool finite_time(const Probe& probe) { return probe.t && std::isfinite(*probe.t); }
+
 std::string where(const AuditReport& report, const AuditCell& cell) {
   if (cell.worst_config < 0) return "";
   return report.configs[static_cast<std::size_t>(cell.worst_config)].name;
@@ -35,7 +48,7 @@ Json cell_json(const AuditReport& report, const AuditCell& cell, const std::stri
   if (cell.worst_config >= 0) {
     Json config{{"index", cell.worst_config}, {"name", where(report, cell)}, {"keyframes", keyframes_json(cell.worst.original)}};
     if (cell.worst.counterpart) config["counterpart"] = keyframes_json(*cell.worst.counterpart);
-    if (cell.worst.t) config["t"] = *cell.worst.t;
+    if (finite_time(cell.worst)) config["t"] = *cell.worst.t;
     config["relation"] = cell.worst.relation;
     Json parameters = Json::object();
     for (const auto& [name, value] : cell.worst.parameters) parameters[name] = value;
@@ -91,9 +104,10 @@ std::string format_audit(const AuditReport& report, AuditFormat format, const st
     out = "method,property,holds,violation,measured,config,t,counterexample\n";
     for (std::size_t i = 0; i < report.cells.size(); ++i) {
       const AuditCell& c = report.cells[i];
-      out += fmt::format("{},{},{},{:.6g},{},\"{}\",{},{}\n", id(c.method), id(c.property), c.holds ? "true" : "false",
-                         c.value, c.measured, where(report, c), c.worst.t ? fmt::format("{:.17g}", *c.worst.t) : "",
-                         file_of(i));
+      const bool timed = c.worst.t && std::isfinite(*c.worst.t);
+      out += fmt::format("{},{},{},{:.6g},{},{},{},{}\n", id(c.method), id(c.property), c.holds ? "true" : "false",
+                         c.value, c.measured, csv_field(where(report, c)),
+                         timed ? fmt::format("{:.17g}", *c.worst.t) : "", csv_field(file_of(i)));
     }
     return out;
   }
@@ -130,7 +144,7 @@ std::string format_audit(const AuditReport& report, AuditFormat format, const st
     const AuditCell& c = report.cells[i];
     if (c.holds || c.worst_config < 0) continue;
     out += fmt::format("- {} {}: {:.3g} on {}{}{}\n", id(c.method), id(c.property), c.value, where(report, c),
-                       c.worst.t ? fmt::format(" at t = {:.6g}", *c.worst.t) : "",
+                       finite_time(c.worst) ? fmt::format(" at t = {:.6g}", *c.worst.t) : "",
                        file_of(i).empty() ? "" : fmt::format(" ({})", file_of(i)));
   }
   return out;
@@ -157,7 +171,8 @@ std::string counterexample_scene(const AuditReport& report, const AuditCell& cel
       "pita audit (seed {}, {} configurations): {} is not {} (PITA Sec. {}). Measured {:.6g} on configuration {} "
       "({}){}; {} (threshold {:g}). Compared: {}. Replay: {}.",
       report.options.seed, report.options.configs, id(cell.method), p.id, p.section, cell.value, cell.worst_config,
-      where(report, cell), w.t ? fmt::format(" at t = {:.17g}", *w.t) : "", p.measure, p.threshold, check, replay);
+      where(report, cell), finite_time(w) ? fmt::format(" at t = {:.17g}", *w.t) : "", p.measure, p.threshold, check,
+      replay);
   j["title"] = fmt::format("{} is not {}: {:.3g}", id(cell.method), p.id, cell.value);
   j["method"] = id(cell.method);
   j["keyframes"] = keyframes_json(w.original);

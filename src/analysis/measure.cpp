@@ -187,6 +187,14 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
       reaction.gain = largest_change(*plus, *minus) / extent / (2.0 * options.gain_step);
       reaction.turn = largest_turn(*plus, *minus) / (2.0 * options.gain_step);
       reaction.jump = largest_change(*pop_plus, *pop_minus) / extent;
+      if (!std::isfinite(reaction.gain) || !std::isfinite(reaction.turn) || !std::isfinite(reaction.jump)) {
+        reaction.gain = reaction.turn = reaction.jump = 0.0;
+        reaction.defined = false;  // a tweak gives frames that are not finite: a pop of its own kind
+        reaction.pop = true;
+        out.pops = true;
+        out.parameters.push_back(reaction);
+        continue;
+      }
       const double predicted = 2.0 * options.pop_step * reaction.gain;
       reaction.pop = reaction.jump > kPopAbsolute && reaction.jump > kPopRatio * predicted;
       out.pops = out.pops || reaction.pop;
@@ -251,10 +259,15 @@ PathStats path_stats(std::span<const Point> points) {
   const std::size_t n = points.size();
   if (n < 3) return stats;
   for (std::size_t i = 1; i + 2 < n; ++i) stats.length += std::abs(points[i + 1] - points[i]);
+  // Tangents at the level of rounding (a path that hardly moves) have no
+  // direction: they are skipped, not summed as noise.
+  double reach = 0.0;
+  for (const Point& x : points) reach = std::max(reach, std::abs(x - points.front()));
+  const double tiny = 1e-9 * reach;
   std::optional<Vector> previous;
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const Vector tangent = points[i + 1] - points[i - 1];
-    if (std::abs(tangent) == 0.0) continue;
+    if (!(std::abs(tangent) > tiny)) continue;
     if (previous) stats.turning += std::abs(std::arg(tangent / *previous));
     previous = tangent;
   }

@@ -14,8 +14,12 @@ const std::vector<PrintedRow>& printed_table() {
       {Property::exists, kPrintedPitas, "Sec. 4.1 (all chosen PITAs)",
        "the paper excepts isolated singular cases; so do we (branch cuts are measured by pop-free only)"},
       {Property::smooth, kPrintedPitas, "Sec. 4.2 (all chosen PITAs are infinitely differentiable)",
-       "P4 joins two Bezier halves at b, C1 but not C2 there (Eq. 27-29, notes N3); with uneven knots the knot warp "
-       "that P4, P7 and P8 need is only C1 at b (notes N17)"},
+       "measured: the second derivative jumps at a time inside (a, c)",
+       {{M::P4, "P4 joins two Bezier halves at b, C1 but not C2 there (Eq. 27-29, notes N3)"},
+        {M::P7, "with uneven knots the knot warp that P7 needs (the construction assumes even knots) is only C1 at b "
+                "(notes N17)"},
+        {M::P8, "with uneven knots the knot warp that P8 needs (the construction assumes even knots) is only C1 at b "
+                "(notes N17)"}}},
       {Property::similarity_invariant, kPrintedPitas, "Sec. 4.3 (all chosen PITAs)",
        "P5 built as appendix C says is translation-invariant only: the blend of matrix logs does not commute with "
        "rotations or dilations (notes N7); P5S is the similarity-invariant variant"},
@@ -60,7 +64,11 @@ std::vector<Disagreement> disagreements(const AuditReport& report) {
     if (!said || *said == cell.holds) continue;
     std::string reason;
     for (const PrintedRow& row : printed_table()) {
-      if (row.property == cell.property) reason = row.reason;
+      if (row.property != cell.property) continue;
+      reason = row.reason;
+      for (const auto& [method, why] : row.method_reasons) {
+        if (method == cell.method) reason = why;
+      }
     }
     if (reason.empty()) reason = "not explained by the reading notes: see the counterexample";
     out.push_back({cell.method, cell.property, *said, cell.holds, reason});

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "analysis/audit.hpp"
@@ -19,6 +20,8 @@ struct PrintedRow {
   // Why a measurement may differ from the print: the reading notes'
   // correction, or what the measurement shows.
   std::string_view reason;
+  // Reasons that concern one method only (they replace `reason` for it).
+  std::vector<std::pair<Method, std::string_view>> method_reasons = {};
 };
 
 // One row per property (the order of all_properties()).

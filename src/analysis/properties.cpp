@@ -94,15 +94,31 @@ std::unique_ptr<Motion> try_motion(Method m, const KeyframeTriple& k) {
   }
 }
 
+// The largest value seen and where; a NaN, once seen, stays the worst.
 struct Worst {
   double value = 0.0;
   double t = kNaN;
+  bool any = false;
   void take(double v, double at) {
-    if (!(v <= value)) value = v, t = at;  // NaN counts as worst
+    if (!any || std::isnan(v) || (!std::isnan(value) && v > value)) value = v, t = at;
+    any = true;
   }
 };
 
-// max_t |X(t) - map(Y)(t')| over the extent; `y_time` maps the original's t.
+// The size distances are divided by: the configuration's extent, or the
+// motion's own reach from B's origin when it goes further (near a singular
+// configuration a frame may be far out, and rounding grows with it).
+double motion_scale(const Motion& D, const KeyframeTriple& k) {
+  double scale = extent(k);
+  for (double t : sample_times(k)) {
+    const Arrow x = D.at(t);
+    const double reach = std::max(std::abs(x.p - k.b.arrow.p), std::abs(x.q() - k.b.arrow.p));
+    if (std::isfinite(reach)) scale = std::max(scale, reach);
+  }
+  return scale;
+}
+
+// max_t |X(t) - map(Y)(t')| over `scale`; `y_time` maps the original's t.
 Worst compare(const Motion& X, const Motion& Y, const KeyframeTriple& k, double scale,
               const std::function<Arrow(const Arrow&)>& expect = nullptr,
               const std::function<double(double)>& y_time = nullptr) {
@@ -154,7 +170,7 @@ Probe probe_exists(Method m, const KeyframeTriple& k) {
 Probe probe_smooth(Method m, const KeyframeTriple& k) {
   const auto D = try_motion(m, k);
   if (!D) return not_built(k, "no motion");
-  const double span = k.c.t - k.a.t, ext = extent(k);
+  const double span = k.c.t - k.a.t, ext = motion_scale(*D, k);
   Probe p;
   p.original = k;
   p.relation = "second derivatives of p and q from the left and from the right agree";
@@ -184,7 +200,7 @@ Probe probe_similarity(Method m, const KeyframeTriple& k, AuditRandom& r) {
   const KeyframeTriple ks = map_arrows(k, [&](const Arrow& A) { return apply(S, A); });
   const auto D = try_motion(m, k), DS = try_motion(m, ks);
   if (!D || !DS) return not_built(k, "no motion");
-  const Worst w = compare(*D, *DS, k, extent(ks), [&](const Arrow& A) { return apply(S, A); });
+  const Worst w = compare(*D, *DS, k, motion_scale(*DS, ks), [&](const Arrow& A) { return apply(S, A); });
   Probe p{w.value, w.t, k, ks, "frames of the counterpart = S applied to frames of the original, at the same t",
           {{"translation.x", S.translation.real()}, {"translation.y", S.translation.imag()}, {"scale", S.scale},
            {"rotation", S.rotation}}, ""};
@@ -200,7 +216,7 @@ Probe probe_symmetric(Method m, const KeyframeTriple& k) {
   const auto D = try_motion(m, k), R = try_motion(m, r);
   if (!D || !R) return not_built(k, "no motion");
   const double a = k.a.t, c = k.c.t;
-  const Worst w = compare(*D, *R, k, extent(k), nullptr, [&](double t) { return a + c - t; });
+  const Worst w = compare(*D, *R, k, motion_scale(*D, k), nullptr, [&](double t) { return a + c - t; });
   return {w.value, w.t, k, r, "frame of the original at t = frame of the counterpart at a + c - t", {}, ""};
 }
 
@@ -212,7 +228,7 @@ Probe probe_handle(Method m, const KeyframeTriple& k, AuditRandom& r) {
   const KeyframeTriple kg = map_arrows(k, [&](const Arrow& A) { return compose_handle(A, G); });
   const auto D = try_motion(m, k), DG = try_motion(m, kg);
   if (!D || !DG) return not_built(k, "no motion");
-  const Worst w = compare(*D, *DG, k, extent(kg), [&](const Arrow& A) { return compose_handle(A, G); });
+  const Worst w = compare(*D, *DG, k, motion_scale(*DG, kg), [&](const Arrow& A) { return compose_handle(A, G); });
   return {w.value, w.t, k, kg,
           "frames of the counterpart (keyframes X o G) = frames of the original composed with G: "
           "p + vector(p_G), magnitude m m_G, winding w + w_G",
@@ -283,9 +299,10 @@ Probe probe_pop(Method m, const KeyframeTriple& k) {
       if (!L || !H || !L10 || !H10) continue;
       any = true;
       Worst w;
+      const double scale = motion_scale(*L, k);
       for (double t : sample_times(k)) {
         const double big = frame_distance(L->at(t), H->at(t)), small = frame_distance(L10->at(t), H10->at(t));
-        w.take(std::max(0.0, small - 0.1 * big) / extent(k), t);
+        w.take(std::max(0.0, small - 0.1 * big) / scale, t);
       }
       if (w.value > best.value) {
         best = {w.value, w.t, lo, hi,
@@ -347,7 +364,7 @@ Probe probe_order(Method m, const KeyframeTriple& k) {
   const KeyframeTriple swapped{k.b, k.a, k.c};
   const auto D = try_motion(m, k), S = try_motion(m, swapped);
   if (!D || !S) return not_built(k, "no motion");
-  const Worst w = compare(*D, *S, k, extent(k));
+  const Worst w = compare(*D, *S, k, std::max(motion_scale(*D, k), motion_scale(*S, k)));
   return {w.value, w.t, k, swapped, "P(b, B, a, A, c, C, t) = P(a, A, b, B, c, C, t): the same frames at the same t", {}, ""};
 }
 
@@ -361,7 +378,7 @@ Probe probe_affine(Method m, const KeyframeTriple& k, AuditRandom& r) {
   const auto D = try_motion(m, zk), DU = try_motion(m, uk);
   if (!D || !DU) return not_built(k, "no motion");
   Worst w;
-  const double ext = extent(uk);
+  const double ext = motion_scale(*DU, uk);
   for (double t : sample_times(k)) {
     const Arrow x = D->at(t), y = DU->at(t);
     w.take(std::max(std::abs(y.p - U(x.p)), std::abs(y.q() - U(x.q()))) / ext, t);

@@ -1,6 +1,9 @@
 #include "cli/audit.hpp"
 
 #include <cerrno>
+#include <charconv>
+#include <cstdint>
+#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -89,7 +92,9 @@ std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   audit->add_option("--configs", options->configs, "Random configurations per cell (1 to 1000000)")
       ->type_name("N")
       ->capture_default_str();
-  audit->add_option("--seed", options->seed, "Seed of the random configurations")->type_name("S")->capture_default_str();
+  audit->add_option("--seed", options->seed, "Seed of the random configurations (an integer, 0 to 2^64 - 1)")
+      ->type_name("S")
+      ->capture_default_str();
   audit->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
       ->type_name("J")
       ->check(CLI::Range(1, 1024));
@@ -119,7 +124,16 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
                                    options.configs));
     }
     audit.configs = options.configs;
-    audit.seed = options.seed;
+    {
+      std::uint64_t seed = 0;
+      const std::string& text = options.seed;
+      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+      if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
+        throw UsageError(fmt::format("--seed: must be an integer from 0 to {} (got \"{}\")",
+                                     std::numeric_limits<std::uint64_t>::max(), text));
+      }
+      audit.seed = seed;
+    }
     audit.jobs = options.jobs;
     std::optional<render::Format> table_format;
     if (options.output) {
@@ -127,6 +141,15 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
       table_format = render::format_from_name(extension.empty() ? "" : extension.substr(1));
       if (!table_format) {
         throw UsageError(fmt::format("-o: {}: the table is drawn as .svg, .png or .pdf", *options.output));
+      }
+    }
+    // Where the table goes must exist before the work starts (exit 3 else).
+    if (options.output) {
+      const fs::path folder = fs::path(*options.output).parent_path();
+      std::error_code error;
+      if (!folder.empty() && !fs::is_directory(folder, error)) {
+        std::cerr << "pita: -o: " << *options.output << ": the folder " << folder.string() << " does not exist\n";
+        return ExitCode::failure;
       }
     }
     // The counterexample folder is made before the work, so that a folder
@@ -151,6 +174,9 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     };
     const analysis::AuditReport report = analysis::run_audit(audit);
 
+    if (table_format) {
+      render::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
+    }
     std::vector<std::string> files(report.cells.size());
     if (options.counterexamples) {
       std::vector<std::pair<fs::path, std::string>> outputs;
@@ -170,9 +196,6 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
         outputs.emplace_back(svg, render::render_figure(parsed, figure, render::Format::svg));
         render::write_files_atomically(outputs);
       }
-    }
-    if (table_format) {
-      render::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
     }
     const std::string text = analysis::format_audit(report, format, files);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {

@@ -20,7 +20,7 @@ namespace pita::cli {
 struct AuditCliOptions {
   std::optional<std::string> methods;  // comma-separated names, as typed
   int configs = 200;
-  unsigned long long seed = 1;
+  std::string seed = "1";  // as typed; 0 to 2^64 - 1
   int jobs = 0;
   std::string format = "md";
   std::optional<std::string> counterexamples;

@@ -273,6 +273,10 @@ ExitCode run_eval(const EvalOptions& options) {
     }
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     scene::Panel panel = scene::scene_panel(scene);
+    if (options.panel && options.method) {
+      throw InputError("--panel and --method: a panel evaluates with its own method; give --method without "
+                       "--panel for the scene's motion, or change the panel's \"method\"");
+    }
     if (options.panel) {
       if (*options.panel < 0 || static_cast<std::size_t>(*options.panel) >= scene.panels.size()) {
         throw InputError(fmt::format("--panel: {} has {} panel{} (0 to {}); got {}", scene.path, scene.panels.size(),
@@ -293,16 +297,16 @@ ExitCode run_eval(const EvalOptions& options) {
       std::vector<scene::PointFrame> frames;
       for (const double t : at) frames.push_back({t, motion.point_at(t)});
       text = options.format == "csv" ? scene::point_frames_to_csv(frames)
-                                     : scene::point_frames_to_json(scene.method_name, frames,
+                                     : scene::point_frames_to_json(panel.method_name, frames,
                                                                    motion.chain() ? info(*motion.chain()).name : "");
     } else if (scene.kind == scene::SceneKind::poses) {
       const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, at);
       text = options.format == "csv" ? scene::pose_frames_to_csv(frames)
-                                     : scene::pose_frames_to_json(scene.method_name, frames);
+                                     : scene::pose_frames_to_json(panel.method_name, frames);
     } else {
       const std::vector<scene::Frame> frames = motion::sample_arrows(motion, at);
       text = options.format == "csv" ? scene::frames_to_csv(frames)
-                                     : scene::frames_to_json(scene.method_name, frames,
+                                     : scene::frames_to_json(panel.method_name, frames,
                                                              motion.chain() ? info(*motion.chain()).name : "");
     }
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {

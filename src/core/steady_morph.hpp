@@ -8,7 +8,12 @@ namespace pita {
 
 // M(A, B, t) = T_{A,B}^t . A (Eq. 20): M(A, B, 0) = A, M(A, B, 1) = B; any
 // real t extrapolates along the same log-spiral motion.
+// Evaluated from the nearer end: M(A, B, t) = M(B, A, 1 - t) (the SMA is
+// symmetric, windings included), so that M(A, B, 1) is B itself and a far
+// extrapolated A (P9's Neville steps, docs/paper-notes.md N36) does not
+// swamp the frames near B with its rounding.
 inline Arrow steady_morph(const Arrow& A, const Arrow& B, double t) {
+  if (t > 0.5) return apply_power(twirl_between(B, A), 1.0 - t, B);
   return apply_power(twirl_between(A, B), t, A);
 }
 

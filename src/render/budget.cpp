@@ -1,5 +1,7 @@
 #include "render/budget.hpp"
 
+#include "analysis/audit_configs.hpp"
+
 #include "motion/moving_keyframes.hpp"
 
 #include <algorithm>
@@ -70,10 +72,10 @@ class LayerCost {
   void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
   void operator()(const scene::PropertyTableLayer& l) {
     // About 10 units (27 us) per property, method and configuration, crafted
-    // ones included (pita_bench BM_Audit/1: 1.0 s of CPU for 14 x 13 x 207).
+    // ones included (pita_bench BM_Audit/1: about 1 s of CPU for 14 x 13 x 208).
     const double methods = l.methods.empty() ? 14.0 : static_cast<double>(l.methods.size());
     add(layer_ + "/configs", fmt::format("{} configurations of a property table", l.configs),
-        10.0 * 13.0 * methods * (l.configs + 7.0));
+        10.0 * 13.0 * methods * (l.configs + static_cast<double>(analysis::crafted_configs().size())));
   }
   // Each frame evaluates a stencil of five or six more frames (frame_derivatives).
   void operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }

@@ -11,7 +11,8 @@ namespace pita::render {
 
 namespace {
 
-constexpr double kRowHeight = 26.0, kMethodWidth = 70.0, kColumnWidth = 86.0, kMargin = 20.0, kHeader = 64.0;
+constexpr double kRowHeight = 24.0, kPropertyWidth = 170.0, kColumnWidth = 74.0, kPaperWidth = 130.0, kMargin = 20.0,
+                 kHeader = 30.0;
 
 const Color kHolds{0.80, 0.93, 0.80, 1.0};
 const Color kFails{0.97, 0.80, 0.78, 1.0};
@@ -42,75 +43,81 @@ std::string value_text(double v) {
 }  // namespace
 
 PropertyTable property_table(const analysis::AuditReport& report) {
+  // Fig. 10's layout: a row per property with its letter (its left half),
+  // then, per PITA, the letters of the properties it has (its right half,
+  // "the inverse"). The measured verdicts fill the grid; the last column
+  // says which PITAs the paper gives each property.
   PropertyTable t;
   Drawing& d = t.drawing;
   const auto push = [&](Shape s) { d.items.push_back(Item{"/audit", -1, std::move(s), false}); };
   const double x0 = kMargin, y0 = kMargin;
-  const double table_w = kMethodWidth + kColumnWidth * static_cast<double>(report.properties.size());
-  // Column headers: the property's name on two lines, its letter in Fig. 10.
-  for (std::size_t j = 0; j < report.properties.size(); ++j) {
-    const analysis::PropertyInfo& p = info(report.properties[j]);
-    const double x = x0 + kMethodWidth + kColumnWidth * static_cast<double>(j) + 4.0;
-    std::string name(p.id);
-    const std::size_t dash = name.find('-');
-    const std::string first = dash == std::string::npos ? name : name.substr(0, dash + 1);
-    const std::string second = dash == std::string::npos ? "" : name.substr(dash + 1);
-    push(Label{first, {x, y0 + 14.0}, 11.0, kInk});
-    push(Label{second, {x, y0 + 30.0}, 11.0, kInk});
-    push(Label{p.letter.empty() ? std::string("Sec. ") + std::string(p.section.substr(0, p.section.find(','))) : std::string(p.letter),
-               {x, y0 + 48.0}, 11.0, kDiffers});
+  const std::size_t rows = report.properties.size(), columns = report.methods.size();
+  const double grid_x = x0 + kPropertyWidth;
+  const double paper_x = grid_x + kColumnWidth * static_cast<double>(columns);
+  const double table_w = kPropertyWidth + kColumnWidth * static_cast<double>(columns) + kPaperWidth;
+  const auto row_y = [&](std::size_t i) { return y0 + kHeader + kRowHeight * static_cast<double>(i); };
+  // Column headers: the methods, and the paper's column.
+  for (std::size_t j = 0; j < columns; ++j) {
+    push(Label{std::string(info(report.methods[j]).id),
+               {grid_x + kColumnWidth * static_cast<double>(j) + 6.0, y0 + kHeader / 2}, 13.0, kInk});
   }
-  for (std::size_t i = 0; i < report.methods.size(); ++i) {
-    const Method m = report.methods[i];
-    const double y = y0 + kHeader + kRowHeight * static_cast<double>(i);
-    push(Label{std::string(info(m).id), {x0 + 6.0, y + kRowHeight / 2}, 13.0, kInk});
-    for (std::size_t j = 0; j < report.properties.size(); ++j) {
-      const analysis::AuditCell& c = report.cell(m, report.properties[j]);
-      const double x = x0 + kMethodWidth + kColumnWidth * static_cast<double>(j);
+  push(Label{"the paper (P1-P8)", {paper_x + 6.0, y0 + kHeader / 2}, 12.0, kInk});
+  for (std::size_t i = 0; i < rows; ++i) {
+    const analysis::Property property = report.properties[i];
+    const analysis::PropertyInfo& p = info(property);
+    const double y = row_y(i);
+    push(Label{p.letter.empty() ? std::string("-") : std::string(p.letter), {x0 + 4.0, y + kRowHeight / 2}, 12.0,
+               kDiffers});
+    push(Label{std::string(p.id), {x0 + 22.0, y + kRowHeight / 2}, 12.0, kInk});
+    for (std::size_t j = 0; j < columns; ++j) {
+      const Method m = report.methods[j];
+      const analysis::AuditCell& c = report.cell(m, property);
+      const double x = grid_x + kColumnWidth * static_cast<double>(j);
       push(FilledPath{{rectangle(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
-      const std::optional<bool> said = analysis::printed(m, report.properties[j]);
-      push(Label{fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), {x + 5.0, y + kRowHeight / 2}, 11.0, kInk});
+      push(Label{fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), {x + 4.0, y + kRowHeight / 2},
+                 10.0, kInk});
+      const std::optional<bool> said = analysis::printed(m, property);
       if (said && *said != c.holds) {
         push(Polyline{rectangle(x + 2.0, y + 2.0, kColumnWidth - 4.0, kRowHeight - 4.0), true,
                       LineStyle{kDiffers, 2.0, 1.0, {}}});
       }
     }
+    for (const analysis::PrintedRow& row : analysis::printed_table()) {
+      if (row.property == property) push(Label{letters(row.printed), {paper_x + 6.0, y + kRowHeight / 2}, 11.0, kInk});
+    }
+  }
+  // The inverse (Fig. 10's right half): per method, the letters it has.
+  const double inverse_y = row_y(rows);
+  push(Label{"has (H W P K O A L)", {x0 + 4.0, inverse_y + kRowHeight / 2}, 12.0, kInk});
+  for (std::size_t j = 0; j < columns; ++j) {
+    std::string has;
+    for (const analysis::Property property : report.properties) {
+      const analysis::PropertyInfo& p = info(property);
+      if (p.letter.empty() || !report.cell(report.methods[j], property).holds) continue;
+      if (has.find(p.letter) == std::string::npos) has += p.letter;
+    }
+    push(Label{has.empty() ? std::string("-") : has,
+               {grid_x + kColumnWidth * static_cast<double>(j) + 6.0, inverse_y + kRowHeight / 2}, 12.0, kInk});
   }
   // The grid.
-  const double rows_h = kRowHeight * static_cast<double>(report.methods.size());
   const LineStyle grid{Color{0.4, 0.4, 0.4, 1.0}, 0.8, 1.0, {}};
-  for (std::size_t i = 0; i <= report.methods.size(); ++i) {
-    const double y = y0 + kHeader + kRowHeight * static_cast<double>(i);
-    push(Polyline{{{x0, y}, {x0 + table_w, y}}, false, grid});
+  for (std::size_t i = 0; i <= rows + 1; ++i) {
+    push(Polyline{{{x0, row_y(i)}, {x0 + table_w, row_y(i)}}, false, grid});
   }
-  for (std::size_t j = 0; j <= report.properties.size(); ++j) {
-    const double x = x0 + kMethodWidth + kColumnWidth * static_cast<double>(j);
-    push(Polyline{{{x, y0 + kHeader}, {x, y0 + kHeader + rows_h}}, false, grid});
+  for (std::size_t j = 0; j <= columns; ++j) {
+    const double x = grid_x + kColumnWidth * static_cast<double>(j);
+    push(Polyline{{{x, row_y(0)}, {x, row_y(rows + 1)}}, false, grid});
   }
-  // The paper's list of PITAs per property beside the measured one.
-  double y = y0 + kHeader + rows_h + 28.0;
-  push(Label{fmt::format("Measured by pita audit: seed {}, {} random configurations and {} crafted. "
-                         "Ringed: the paper prints otherwise (P1-P8).",
+  double y = row_y(rows + 1) + 26.0;
+  push(Label{fmt::format("Measured by pita audit: seed {}, {} random configurations and {} crafted. Green: holds; red: "
+                         "fails; ringed: the paper prints otherwise.",
                          report.options.seed, report.options.configs, analysis::crafted_configs().size()),
              {x0, y}, 12.0, kInk});
   y += 18.0;
   push(Label{"The number is the worst value measured: the largest deviation, or, for winding-aware and "
-             "knot-controlled, the smallest reaction.",
+             "knot-controlled, the smallest reaction (README \"pita audit\").",
              {x0, y}, 12.0, kInk});
-  y += 24.0;
-  for (const analysis::PrintedRow& row : analysis::printed_table()) {
-    std::vector<Method> measured;
-    bool present = false;
-    for (analysis::Property p : report.properties) present = present || p == row.property;
-    if (!present) continue;
-    for (Method m : report.methods) {
-      if (report.cell(m, row.property).holds) measured.push_back(m);
-    }
-    push(Label{fmt::format("{}: paper {}; measured {}", info(row.property).id, letters(row.printed), letters(measured)),
-               {x0, y}, 11.0, kInk});
-    y += 18.0;
-  }
-  t.width = std::max(table_w, 760.0) + 2 * kMargin;
+  t.width = table_w + 2 * kMargin;
   t.height = y + kMargin;
   return t;
 }
