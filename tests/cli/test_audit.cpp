@@ -155,6 +155,37 @@ TEST(EvalPanel, OutOfRangeIsBadInputAndInRangeEvaluatesThatPanel) {
                                 dir.path());
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\"P6\""), std::string::npos);  // panel 7 is P6 at ratio 0.40
+  // Panel 0 is P1: its frames are labelled P1, and equal those of --method P1.
+  const RunResult first = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel",
+                                    "0", "--t", "0.3"},
+                                   dir.path());
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.out.find("\"method\": \"P1\""), std::string::npos) << first.out;
+  const RunResult refused = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json",
+                                      "--panel", "0", "--method", "P8"},
+                                     dir.path());
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--panel and --method"), std::string::npos) << refused.err;
+  EXPECT_TRUE(refused.out.empty());
+}
+
+TEST(Audit, SeedMustBeAnUnsignedInteger) {
+  ScratchDir dir;
+  for (const std::string seed : {"-5", "99999999999999999999999", "1e3", "x"}) {
+    const RunResult r = run_pita({"audit", "--configs", "1", "--seed", seed}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << seed;
+    EXPECT_NE(r.err.find("--seed"), std::string::npos) << r.err;
+  }
+  const RunResult r = run_pita({"audit", "--methods", "P1", "--configs", "1", "--seed", "18446744073709551615"}, dir.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+TEST(Audit, TableFolderMissingIsExitThreeBeforeTheWork) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"audit", "--configs", "1", "--counterexamples", "cx", "-o", "missing/t.svg"}, dir.path());
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  EXPECT_TRUE(!fs::exists(dir.path() / "cx") || fs::is_empty(dir.path() / "cx"));  // nothing written
 }
 
 }  // namespace

@@ -17,6 +17,24 @@ TEST(SteadyMorph, ReachesEndpoints) {
   }
 }
 
+TEST(SteadyMorph, FarExtrapolatedStartStillEndsExactlyOnB) {
+  // Evaluated from the nearer end (docs/paper-notes.md N36): M(X, B, 1) is B
+  // to the last bit, however far X is (P9 extrapolates its Neville steps to
+  // arrows 1e14 times the figure's size).
+  const Arrow B{{0.9330277525731567, 4.754893251147427}, 10.983615097998593, 4.327661974202112};
+  const Arrow X{{3.1e13, -2.2e13}, 4.0e14, -31.7};
+  const Arrow at_one = steady_morph(X, B, 1.0);
+  EXPECT_EQ(at_one.p, B.p);
+  EXPECT_EQ(at_one.m, B.m);
+  EXPECT_EQ(at_one.w, B.w);
+  // And close to B the frames are accurate relative to B, not to X: a small
+  // step from B along the morph (checked against the morph taken from X, to
+  // the rounding of X's size).
+  const Arrow near_one = steady_morph(X, B, 1.0 - 1e-9);
+  EXPECT_LT(std::abs(near_one.p - B.p), 1e7);  // 1e-9 of the way back to X
+  EXPECT_TRUE(std::isfinite(near_one.p.real()));
+}
+
 TEST(SteadyMorph, IsSymmetric) {
   // Eq. 22: M(a, A, b, B, t) = M(b, B, a, A, t).
   Sampler s(11);
