@@ -58,6 +58,17 @@ double frame_distance(const Arrow& x, const Arrow& y) {
   return std::max(std::abs(x.p - y.p), std::abs(x.q() - y.q()));
 }
 
+double knot_min(const std::vector<Keyframe>& keys) {
+  double least = keys.front().t;
+  for (const Keyframe& k : keys) least = std::min(least, k.t);
+  return least;
+}
+double knot_max(const std::vector<Keyframe>& keys) {
+  double greatest = keys.front().t;
+  for (const Keyframe& k : keys) greatest = std::max(greatest, k.t);
+  return greatest;
+}
+
 // The frames of the panel with keyframe `index`'s parameter moved by delta,
 // at `times`; nullopt when that motion does not exist.
 std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, const scene::Panel& panel,
@@ -69,15 +80,21 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
   moved.timing = scene::Timing{};
   moved.keyframes[index] = tweaked(panel.keyframes[index], which, delta, extent, duration);
   const auto& keys = moved.keyframes;
-  for (std::size_t i = 1; i < keys.size(); ++i) {
-    if (!(keys[i].t > keys[i - 1].t)) return std::nullopt;
+  // The tweaked knot keeps its place among the others (increasing, or the
+  // order of keyframes "as-given", docs/paper-notes.md N41).
+  for (std::size_t j = 0; j < keys.size(); ++j) {
+    if (j == index) continue;
+    if ((keys[index].t > keys[j].t) != (panel.keyframes[index].t > panel.keyframes[j].t) ||
+        keys[index].t == keys[j].t) {
+      return std::nullopt;
+    }
   }
   try {
     const motion::SceneMotion tweaked_motion = motion::build_motion(scene, moved);
     // A knot tweak compares the patterns: uniform times over the new knots
     // (else moving an end knot would count as shifting every frame's time).
     const std::vector<double> at =
-        which == Parameter::t ? motion::uniform_times(keys.front().t, keys.back().t, static_cast<int>(times.size()))
+        which == Parameter::t ? motion::uniform_times(knot_min(keys), knot_max(keys), static_cast<int>(times.size()))
                               : times;
     std::vector<Arrow> frames;
     frames.reserve(at.size());

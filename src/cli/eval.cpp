@@ -165,7 +165,9 @@ Scene format (JSON; schema/scene.schema.json describes every field):
                E: )" + ease_names() + R"(
                frames still report the scene time t they were asked for
   options      anchor (P2): "start" | "midpoint"; path_mean, magnitude_mean (SMA, P9):
-               "arithmetic" | "geometric" | "harmonic"
+               "arithmetic" | "geometric" | "harmonic"; knots: "increasing" (default) |
+               "as-given" (three keyframes handed to the method in the order given,
+               knots distinct in any order: order-independence, Sec. 4)
 
 Methods:
 )" + methods_table(MotionKind::arrows) +

@@ -1,5 +1,6 @@
 #include "motion/scene_motion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <span>
@@ -129,6 +130,9 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
                      fmt::format("method {} refuses these keyframes: {}", motion.label_, error.what()));
     }
     for (const Keyframe& key : panel.keyframes) motion.knots_.push_back(key.t);
+    // Knots "as-given" may come in any order (docs/paper-notes.md N41); the
+    // motion runs from the least to the greatest.
+    std::sort(motion.knots_.begin(), motion.knots_.end());
   }
 
   motion.reference_ = scene.reference_triangle;

@@ -436,8 +436,11 @@ RenderError::RenderError(const std::string& file, const std::string& pointer,
 
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {
-  const double from = range ? range->from : panel.keyframes.front().t;
-  const double to = range ? range->to : panel.keyframes.back().t;
+  // The least and greatest knots (keyframes "as-given" may come in any order).
+  const auto [first, last] = std::minmax_element(panel.keyframes.begin(), panel.keyframes.end(),
+                                                 [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
+  const double from = range ? range->from : first->t;
+  const double to = range ? range->to : last->t;
   return motion::uniform_times(from, to, samples.value_or(panel.samples));
 }
 

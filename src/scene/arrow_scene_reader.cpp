@@ -99,7 +99,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
   }
   if (keyframes != nullptr) {
-    scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method, &scene.keyframes_to);
+    scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method, &scene.keyframes_to, scene.options.knots);
   }
   // Shapes carried by the frames (Sec. 7.1): drawn in the handle's frame.
   if (const Json* shapes = JsonReader::member(document, "shapes")) {

@@ -18,14 +18,16 @@ namespace {
 constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
 constexpr std::array<std::string_view, 3> kMovingKeyframeFields = {"t", "from", "to"};
 constexpr std::array<std::string_view, 5> kArrowFields = {"p", "m", "w", "q", "turns"};
-constexpr std::array<std::string_view, 3> kOptionFields = {"anchor", "path_mean",
-                                                           "magnitude_mean"};
+constexpr std::array<std::string_view, 4> kOptionFields = {"anchor", "path_mean", "magnitude_mean",
+                                                           "knots"};
 
 constexpr std::array<std::string_view, 2> kAnchorNames = {"start", "midpoint"};
 constexpr std::array<Anchor, 2> kAnchors = {Anchor::start, Anchor::midpoint};
 constexpr std::array<std::string_view, 3> kMeanNames = {"arithmetic", "geometric", "harmonic"};
 constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geometric,
                                             MeanKind::harmonic};
+constexpr std::array<std::string_view, 2> kKnotOrderNames = {"increasing", "as-given"};
+constexpr std::array<KnotOrder, 2> kKnotOrders = {KnotOrder::increasing, KnotOrder::as_given};
 
 
 // Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.
@@ -348,11 +350,14 @@ MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
   if (const Json* mean = member(value, "magnitude_mean")) {
     base.magnitude_mean = choice(*mean, pointer + "/magnitude_mean", kMeanNames, kMeans);
   }
+  if (const Json* knots = member(value, "knots")) {
+    base.knots = choice(*knots, pointer + "/knots", kKnotOrderNames, kKnotOrders);
+  }
   return base;
 }
 
 std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string& pointer,
-                                            Method method, std::vector<Arrow>* targets) const {
+                                            Method method, std::vector<Arrow>* targets, KnotOrder order) const {
   if (!value.is_array()) {
     fail(pointer, "must be an array of keyframes (got " + value_text(value) + ")");
   }
@@ -389,8 +394,24 @@ std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string
       next = keyframe(value[i], at);
       to.push_back(next.arrow);
     }
-    if (i > 0) check_knot_order(result.back().t, next.t, at + "/t");
+    if (order == KnotOrder::increasing) {
+      if (i > 0) check_knot_order(result.back().t, next.t, at + "/t");
+    } else {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (result[j].t == next.t) {
+          fail(at + "/t", fmt::format("knot {} equals the knot of keyframe {}; with \"knots\": \"as-given\" the "
+                                      "knots may come in any order but must be distinct",
+                                      number_text(next.t), j));
+        }
+      }
+    }
     result.push_back(next);
+  }
+  if (order == KnotOrder::as_given && (result.size() != 3 || info(method).keyframe_count != 3)) {
+    fail(pointer, fmt::format("with \"knots\": \"as-given\" the method takes the keyframes in the order given, "
+                              "one window of three (order-independence, PITA Sec. 4): give exactly three keyframes "
+                              "to a three-keyframe method (got {} for {})",
+                              result.size(), info(method).id));
   }
   if (targets != nullptr) {
     targets->clear();

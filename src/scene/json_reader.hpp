@@ -124,12 +124,15 @@ class JsonReader {
   void check_chain(Method method, std::optional<Chain> chain, std::size_t count, const std::string& pointer) const;
 
   // "keyframes": at least as many as `method` takes (a track of more is
-  // chained), at most kMaxKeyframes, knots strictly increasing.
+  // chained), at most kMaxKeyframes, knots strictly increasing; with
+  // KnotOrder::as_given exactly three for a three-keyframe method, knots
+  // distinct in any order (docs/paper-notes.md N41).
   // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4) read `from` as the
   // keyframe; when any moves, `targets` receives every keyframe's `to` (a
   // keyframe that does not move is its own target), else stays empty.
   std::vector<Keyframe> keyframes(const Json& value, const std::string& pointer,
-                                  Method method, std::vector<Arrow>* targets = nullptr) const;
+                                  Method method, std::vector<Arrow>* targets = nullptr,
+                                  KnotOrder order = KnotOrder::increasing) const;
   // An arrow: {"p", and "q" or "m" and "w"; "turns" optional}.
   Arrow arrow(const Json& value, const std::string& pointer) const;
 

@@ -84,7 +84,8 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
   }
   if (keyframes != nullptr) {
-    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method, &panel.keyframes_to);
+    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method, &panel.keyframes_to,
+                                       panel.options.knots);
     panel.handle = scene.handle.value_or(panel.keyframes.front().arrow);
     panel.points.clear();
     panel.motion_pointer = pointer + "/keyframes";

@@ -114,6 +114,57 @@ TEST(Audit, SimilarityCounterexampleReplaysThroughEval) {
   FAIL() << "no similarity cell for P5";
 }
 
+TEST(Audit, OrderCounterexampleReplaysThroughEval) {
+  // P2 is not order-independent: its counterpart panel keeps the swapped
+  // keyframes in the order given ("knots": "as-given"). Replayed by pita eval,
+  // the two panels differ by the reported violation (times a length no less
+  // than the configuration's extent), and each still passes through its
+  // keyframes, whatever their order.
+  ScratchDir dir;
+  const RunResult r = run_pita({"audit", "--methods", "P2", "--configs", "20", "--format", "json", "--counterexamples",
+                                "cx"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  for (const Json& cell : j["cells"]) {
+    if (cell["property"] != "order-independent") continue;
+    ASSERT_FALSE(cell["holds"].get<bool>());
+    const std::string file = cell["counterexample"];
+    const Json scene = Json::parse(read_file(dir.path() / file));
+    EXPECT_EQ(scene["panels"][1]["options"]["knots"], "as-given");
+    const Json& c = cell["configuration"];
+    const Json& k = c["keyframes"];
+    const Json& swapped = c["counterpart"];
+    EXPECT_EQ(swapped[0], k[1]);  // (b, B) first
+    EXPECT_EQ(swapped[1], k[0]);  // (a, A) second
+    const double t = c["t"];
+    std::complex<double> q0, q1;
+    const auto p0 = eval_p(dir.path(), file, t, false, &q0)[0].second;
+    const auto p1 = eval_p(dir.path(), file, t, true, &q1)[0].second;
+    const std::complex<double> b{k[1]["p"][0].get<double>(), k[1]["p"][1].get<double>()};
+    double extent = 0;
+    for (const Json& x : k) {
+      const std::complex<double> p{x["p"][0].get<double>(), x["p"][1].get<double>()};
+      const double m = x["m"], w = x["w"];
+      extent = std::max({extent, std::abs(p - b), std::abs(p + std::polar(m, w) - b), m});
+    }
+    const double distance = std::max(std::abs(p0 - p1), std::abs(q0 - q1));
+    const double violation = cell["violation"];
+    EXPECT_GT(distance / extent, 1e-3);
+    EXPECT_GE(distance / violation, extent * (1 - 1e-9));
+    // The counterpart passes through each of its keyframes at its own knot.
+    for (const Json& x : swapped) {
+      std::complex<double> q;
+      const auto p = eval_p(dir.path(), file, x["t"].get<double>(), true, &q)[0].second;
+      const std::complex<double> want{x["p"][0].get<double>(), x["p"][1].get<double>()};
+      EXPECT_LT(std::abs(p - want), 1e-9 * extent) << x.dump();
+      EXPECT_LT(std::abs(q - want - std::polar(x["m"].get<double>(), x["w"].get<double>())), 1e-9 * extent);
+    }
+    return;
+  }
+  FAIL() << "no order-independence cell for P2";
+}
+
 TEST(Audit, DrawsTheTable) {
   ScratchDir dir;
   const RunResult r = run_pita({"audit", "--methods", "P1,P2", "--configs", "5", "-o", "table.svg"}, dir.path());

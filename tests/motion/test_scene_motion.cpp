@@ -49,6 +49,35 @@ TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
   }
 }
 
+// Keyframes "as-given" reach the method in the order written (Eq. 42's
+// P(b, B, a, A, c, C, t), docs/paper-notes.md N41): the motion still passes
+// through each keyframe at its knot and runs from the least knot to the
+// greatest; an order-independent method (P1, Fig. 10) gives the same frames as
+// the sorted scene, one that is not (P6) does not.
+TEST(SceneMotion, KnotsAsGivenKeepTheOrderWritten) {
+  const std::string swapped = R"("options": {"knots": "as-given"}, "keyframes": [
+    {"t": 0.25, "p": [3, 1.5], "m": 0.6, "w": 2}, {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+    {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
+  for (const std::string method : {"P1", "P6"}) {
+    const scene::Scene as_given = scene::parse_scene("{\"method\": \"" + method + "\", " + swapped + "}", "s.json");
+    const SceneMotion motion = build_motion(as_given);
+    EXPECT_EQ(motion.knots(), (std::vector<double>{0.0, 0.25, 1.0}));
+    for (const Keyframe& k : as_given.keyframes) {
+      const Arrow a = motion.arrow_at(k.t);
+      EXPECT_LT(std::abs(a.p - k.arrow.p), 1e-12) << method;
+      EXPECT_LT(std::abs(a.q() - k.arrow.q()), 1e-12) << method;
+    }
+    const SceneMotion sorted = build_motion(arrows("", method));
+    double apart = 0;
+    for (double t : {0.1, 0.4, 0.7}) apart = std::max(apart, std::abs(motion.arrow_at(t).p - sorted.arrow_at(t).p));
+    if (method == "P1") {
+      EXPECT_LT(apart, 1e-12);
+    } else {
+      EXPECT_GT(apart, 1e-2);
+    }
+  }
+}
+
 TEST(SceneMotion, EaseOverTheMotionWarpsTheMethodsTime) {
   const scene::Scene scene = arrows(R"(, "timing": {"ease": "ease-in"})");
   const SceneMotion motion = build_motion(scene);

@@ -91,15 +91,31 @@ std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframe
                                 std::to_string(mi.keyframe_count) + " keyframes, got " +
                                 std::to_string(keyframes.size()));
   }
+  const bool as_given = options.knots == KnotOrder::as_given;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {
     const Keyframe& k = keyframes[i];
     if (!std::isfinite(k.t) || !is_finite(k.arrow) || !(k.arrow.m > 0.0)) {
       throw std::invalid_argument("keyframe " + std::to_string(i) +
                                   " must have finite values and a magnitude > 0");
     }
-    if (i > 0 && !(keyframes[i - 1].t < k.t)) {
+    if (!as_given && i > 0 && !(keyframes[i - 1].t < k.t)) {
       throw std::invalid_argument("knots must be strictly increasing (keyframe " + std::to_string(i) + ")");
     }
+    for (std::size_t j = 0; as_given && j < i; ++j) {
+      if (keyframes[j].t == k.t) {
+        throw std::invalid_argument("knots must be distinct (keyframes " + std::to_string(j) + " and " +
+                                    std::to_string(i) + ")");
+      }
+    }
+  }
+  if (as_given) {
+    // The keyframes in the order given, as P(a, A, b, B, c, C, t) takes them
+    // (docs/paper-notes.md N41): one window, no chain.
+    if (mi.keyframe_count != 3 || keyframes.size() != 3 || chain) {
+      throw std::invalid_argument("knots \"as-given\" hands exactly three keyframes to a three-keyframe method, "
+                                  "without a chain");
+    }
+    return make_pita(m, KeyframeTriple{keyframes[0], keyframes[1], keyframes[2]}, options);
   }
   const WindowMotion sma = [&options](std::span<const Keyframe> pair) -> std::unique_ptr<Motion> {
     return std::make_unique<SteadyMorphMotion>(pair[0], pair[1], options.path_mean, options.magnitude_mean);
