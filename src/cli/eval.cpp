@@ -295,22 +295,8 @@ ExitCode run_eval(const EvalOptions& options) {
           "fewer frames, or use the local \"blend\" chain",
           scene.path, scene.chain ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
     }
-    if (motion.has_points()) {
-      std::vector<scene::PointFrame> frames;
-      for (const double t : at) frames.push_back({t, motion.point_at(t)});
-      text = options.format == "csv" ? scene::point_frames_to_csv(frames)
-                                     : scene::point_frames_to_json(panel.method_name, frames,
-                                                                   motion.chain() ? info(*motion.chain()).name : "");
-    } else if (scene.kind == scene::SceneKind::poses) {
-      const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, at);
-      text = options.format == "csv" ? scene::pose_frames_to_csv(frames)
-                                     : scene::pose_frames_to_json(panel.method_name, frames);
-    } else {
-      const std::vector<scene::Frame> frames = motion::sample_arrows(motion, at);
-      text = options.format == "csv" ? scene::frames_to_csv(frames)
-                                     : scene::frames_to_json(panel.method_name, frames,
-                                                             motion.chain() ? info(*motion.chain()).name : "");
-    }
+    text = motion::frames_text(panel, motion, at, options.format == "csv" ? motion::FramesFormat::csv
+                                                                         : motion::FramesFormat::json);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
       std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno)
                 << ")\n";

@@ -18,6 +18,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/golden.hpp"
 #include "cli/measure.hpp"
+#include "cli/sweep.hpp"
 #include "cli/render.hpp"
 #include "render/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
@@ -53,7 +54,8 @@ int main(int argc, char** argv) {
       "  pita animate scenes/fig23-image-motion.json -o fig23.svg   an animated SVG\n"
       "  pita measure scenes/fig12-pops.json                discrepancy, overreaction, pops\n"
       "  pita check                                         every figure against golden/\n"
-      "  pita audit -o fig10.svg                            Fig. 10's properties, measured\n\n"
+      "  pita audit -o fig10.svg                            Fig. 10's properties, measured\n"
+      "  pita sweep SCENE --vary /keyframes/1/t=0.2:0.8:7 -o out   a parameter sweep\n\n"
       "Run 'pita eval --help' for the scene format and the methods, 'pita render --help'\n"
       "for figures.\n"
       "Exit codes: 0 success, 1 a figure differs from its golden (check), 2 bad input or\n"
@@ -68,6 +70,7 @@ int main(int argc, char** argv) {
   const auto update_options = pita::cli::setup_update_goldens(app);
   const auto audit_options = pita::cli::setup_audit(app);
   const auto measure_options = pita::cli::setup_measure(app);
+  const auto sweep_options = pita::cli::setup_sweep(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -103,6 +106,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));
+    if (app.got_subcommand("sweep")) return to_int(pita::cli::run_sweep_command(*sweep_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/chains/chain.hpp"
+
 namespace pita::motion {
 
 std::vector<double> uniform_times(double first, double last, int count) {
@@ -39,6 +41,24 @@ std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const d
   frames.reserve(times.size());
   for (double t : times) frames.push_back({t, motion.pose_at(t)});
   return frames;
+}
+
+std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, std::span<const double> times,
+                        FramesFormat format) {
+  const bool csv = format == FramesFormat::csv;
+  const std::string chain = motion.chain() ? std::string(info(*motion.chain()).name) : "";
+  if (motion.has_points()) {
+    std::vector<scene::PointFrame> frames;
+    frames.reserve(times.size());
+    for (const double t : times) frames.push_back({t, motion.point_at(t)});
+    return csv ? scene::point_frames_to_csv(frames) : scene::point_frames_to_json(panel.method_name, frames, chain);
+  }
+  if (motion.kind() == scene::SceneKind::poses) {
+    const std::vector<PoseFrame> frames = sample_poses(motion, times);
+    return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
+  }
+  const std::vector<Frame> frames = sample_arrows(motion, times);
+  return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(panel.method_name, frames, chain);
 }
 
 }  // namespace pita::motion

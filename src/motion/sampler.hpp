@@ -4,6 +4,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <vector>
 
 #include "core/affine2.hpp"
@@ -32,5 +33,13 @@ using PoseFrame = scene::PoseFrame;
 // extrapolate). Throw NoMotion as SceneMotion does.
 std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const double> times);
 std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times);
+
+enum class FramesFormat { json, csv };
+
+// What `pita eval` prints for `motion` (the motion of `panel`) at `times`:
+// arrows, timed points or poses, as JSON or CSV (scene/frames.hpp). Throws
+// NoMotion as SceneMotion does.
+std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, std::span<const double> times,
+                        FramesFormat format);
 
 }  // namespace pita::motion

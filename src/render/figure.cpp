@@ -104,11 +104,11 @@ std::string canonical_ids(const std::string& svg, std::string_view kPrefix) {
   return out;
 }
 
+}  // namespace
+
 std::string canonical_svg_ids(const std::string& svg) {
   return canonical_ids(canonical_ids(svg, "surface"), "image");
 }
-
-}  // namespace
 
 std::optional<Format> format_from_name(std::string_view name) {
   std::string lower(name);

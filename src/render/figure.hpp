@@ -54,6 +54,11 @@ std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std:
 // canvas pixels.
 void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure);
 
+// cairo numbers SVG surfaces and images with counters global to the process:
+// renumbered 1, 2, ... in order of appearance, so that an SVG does not depend
+// on what the process drew before it.
+std::string canonical_svg_ids(const std::string& svg);
+
 // The file's bytes. `scale` multiplies the PNG's pixel size (SVG and PDF are
 // vector: 1 canvas pixel = 1 unit). The same scene gives the same bytes.
 // Throws RenderError, also when a PNG has more pixels than `budget` times the

@@ -1,0 +1,156 @@
+#include "sweep/manifest.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace pita::sweep {
+
+namespace {
+
+// One CSV record from `text` at `pos` (fields may be quoted and hold commas
+// and line breaks); false at the end of the text.
+bool next_record(const std::string& text, std::size_t& pos, std::vector<std::string>& fields) {
+  fields.clear();
+  if (pos >= text.size()) return false;
+  std::string field;
+  bool quoted = false;
+  while (pos < text.size()) {
+    const char c = text[pos++];
+    if (quoted) {
+      if (c == '"') {
+        if (pos < text.size() && text[pos] == '"') {
+          field += '"';
+          ++pos;
+        } else {
+          quoted = false;
+        }
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.push_back(std::move(field));
+      field.clear();
+    } else if (c == '\n') {
+      break;
+    } else if (c != '\r') {
+      field += c;
+    }
+  }
+  fields.push_back(std::move(field));
+  return true;
+}
+
+std::vector<std::string> split_outputs(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t at = text.find(';', start);
+    out.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+    if (at == std::string::npos) break;
+    start = at + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string csv_field(std::string_view text) {
+  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows) {
+  std::string out = "index";
+  for (const std::string& p : pointers) {
+    out += ',';
+    out += csv_field(p);
+  }
+  out += ",status,outputs,hash";
+  for (const std::string_view m : kMetricColumns) out += fmt::format(",{}", m);
+  out += '\n';
+  for (const Row& row : rows) {
+    out += std::to_string(row.index);
+    const auto field = [&out](std::string_view text) {
+      out += ',';
+      out += csv_field(text);
+    };
+    for (const std::string& v : row.values) field(v);
+    std::string outputs;
+    for (const std::string& o : row.outputs) {
+      if (!outputs.empty()) outputs += ';';
+      outputs += o;
+    }
+    field(row.status);
+    field(outputs);
+    field(row.hash);
+    for (const std::string& m : row.metrics) field(m);
+    out += '\n';
+  }
+  return out;
+}
+
+std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
+                                              const std::vector<std::string>& pointers) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  std::size_t pos = 0;
+  std::vector<std::string> fields;
+  const std::size_t width = 4 + pointers.size() + kMetricColumns.size();
+  if (!next_record(text, pos, fields) || fields.size() != width || fields[0] != "index" ||
+      !std::equal(pointers.begin(), pointers.end(), fields.begin() + 1)) {
+    std::string expected = "index";
+    for (const std::string& p : pointers) expected += "," + p;
+    throw std::runtime_error(fmt::format("{}: not the manifest of this sweep (its header does not start with {}); "
+                                         "use another -o folder, or remove it",
+                                         path.string(), expected));
+  }
+  std::vector<Row> rows;
+  int line = 1;
+  while (next_record(text, pos, fields)) {
+    ++line;
+    if (fields.size() == 1 && fields[0].empty()) continue;
+    if (fields.size() != width) {
+      throw std::runtime_error(fmt::format("{}:{}: {} fields, expected {}", path.string(), line, fields.size(), width));
+    }
+    Row row;
+    try {
+      row.index = std::stoll(fields[0]);
+    } catch (const std::exception&) {
+      throw std::runtime_error(fmt::format("{}:{}: the index \"{}\" is not a number", path.string(), line, fields[0]));
+    }
+    std::size_t k = 1;
+    for (std::size_t i = 0; i < pointers.size(); ++i) row.values.push_back(fields[k++]);
+    row.status = fields[k++];
+    row.outputs = split_outputs(fields[k++]);
+    row.hash = fields[k++];
+    for (std::string& m : row.metrics) m = fields[k++];
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string variant_file(const std::string& name, std::int64_t index, std::int64_t variants,
+                         const std::string& extension) {
+  const std::size_t width = std::to_string(std::max<std::int64_t>(variants - 1, 0)).size();
+  return fmt::format("{}-{:0{}}.{}", name, index, width, extension);
+}
+
+std::string manifest_name(std::optional<std::pair<int, int>> shard) {
+  return shard ? fmt::format("manifest.{}-of-{}.csv", shard->first, shard->second) : "manifest.csv";
+}
+
+}  // namespace pita::sweep

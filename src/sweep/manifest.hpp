@@ -1,0 +1,55 @@
+// DIR/manifest.csv: one row per variant of a sweep (README "pita sweep"):
+//   index, one column per varied pointer (its value), status ("ok" or the
+//   error with its pointer), outputs (";"-separated file names in DIR), hash
+//   (the variant's content hash), then the metric columns of kMetricColumns.
+// Read back by a resumed sweep (what to skip) and by --merge (the shards).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pita::sweep {
+
+// The metrics of the scene's own motion (pita measure, README "pita measure"):
+// empty where they do not apply (pose metrics on arrows and the reverse).
+inline constexpr std::array<std::string_view, 16> kMetricColumns = {
+    "path_length_p", "path_length_q", "turning_p", "turning_q", "winding_min", "winding_max",
+    "discrepancy_max", "discrepancy_max_previous", "discrepancy_max_average", "discrepancy_t_of_max",
+    "most_sensitive", "gain", "pop_jump", "pops", "ara", "area_monotone"};
+
+struct Row {
+  std::int64_t index = 0;
+  std::vector<std::string> values;   // one per axis, as value_text prints them
+  std::string status;                // "ok", or the error
+  std::vector<std::string> outputs;  // file names in DIR
+  std::string hash;
+  std::array<std::string, kMetricColumns.size()> metrics{};
+  bool ok() const { return status == "ok"; }
+};
+
+// The CSV text of `rows` (sorted by index) under a header naming `pointers`.
+std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows);
+
+// Reads a manifest written by manifest_csv; nullopt when the file does not
+// exist. Throws std::runtime_error naming the file and line when it is not a
+// manifest of these pointers.
+std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
+                                              const std::vector<std::string>& pointers);
+
+// "manifest.csv", or "manifest.K-of-N.csv" for shard K of N.
+std::string manifest_name(std::optional<std::pair<int, int>> shard);
+
+// DIR/<name>-<index>.<extension>, the index zero-padded to the width of the
+// largest index so that the files sort in order: fig01-007.svg.
+std::string variant_file(const std::string& name, std::int64_t index, std::int64_t variants,
+                         const std::string& extension);
+
+// RFC 4180 quoting of one field (quotes, commas, line breaks).
+std::string csv_field(std::string_view text);
+
+}  // namespace pita::sweep

@@ -1,0 +1,290 @@
+#include "sweep/sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <fmt/format.h>
+
+#include "render/figure.hpp"
+#include "render/output_file.hpp"
+#include "render/painter.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::sweep {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string html(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// The first output of the row with one of `extensions`, in that order of preference.
+std::string output_with(const Row& row, std::initializer_list<std::string_view> extensions) {
+  for (const std::string_view ext : extensions) {
+    for (const std::string& f : row.outputs) {
+      const std::size_t dot = f.rfind('.');
+      if (dot != std::string::npos && std::string_view(f).substr(dot + 1) == ext && !f.ends_with(".scene.json")) {
+        return f;
+      }
+    }
+  }
+  return "";
+}
+
+// The sort script: columns by name, numbers compared as numbers, empty last;
+// "#sort=NAME&order=desc" in the address sorts on load.
+constexpr std::string_view kScript = R"(<script>
+const grid = document.getElementById("grid"), by = document.getElementById("sort"), order = document.getElementById("order");
+function key(cell, column) { return cell.dataset[column] ?? ""; }
+function sortCells() {
+  const column = by.value, sign = order.value === "desc" ? -1 : 1;
+  const cells = Array.from(grid.children);
+  cells.sort((a, b) => {
+    const x = key(a, column), y = key(b, column);
+    if (x === "" || y === "") return (x === "") - (y === "") || Number(a.dataset.index) - Number(b.dataset.index);
+    const nx = Number(x), ny = Number(y);
+    const c = !isNaN(nx) && !isNaN(ny) ? nx - ny : x.localeCompare(y);
+    return sign * c || Number(a.dataset.index) - Number(b.dataset.index);
+  });
+  for (const cell of cells) grid.appendChild(cell);
+}
+by.addEventListener("change", sortCells);
+order.addEventListener("change", sortCells);
+const wanted = new URLSearchParams(location.hash.slice(1));
+if (wanted.has("sort")) {
+  const option = Array.from(by.options).find(o => o.textContent === wanted.get("sort"));
+  if (option) by.value = option.value;
+  if (wanted.get("order") === "desc") order.value = "desc";
+  sortCells();
+}
+</script>
+)";
+
+}  // namespace
+
+void write_index_html(const SheetInput& input, const std::vector<Row>& rows) {
+  std::string out = fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>pita sweep: {0}</title>\n"
+      "<style>body{{font-family:sans-serif;margin:1em}} #grid{{display:flex;flex-wrap:wrap;gap:8px}} "
+      "figure{{margin:0;width:220px;border:1px solid #ccc;padding:4px}} figure img{{width:100%;height:auto;"
+      "background:#fff}} figure.failed{{border-color:#c00;background:#fee}} figcaption{{font-size:12px;"
+      "word-break:break-all}}</style></head>\n<body>\n<h1>pita sweep of {0}</h1>\n",
+      html(input.name));
+  std::int64_t failed = 0;
+  for (const Row& r : rows) failed += r.ok() ? 0 : 1;
+  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", rows.size(),
+                     input.variants, failed, html(input.base_path));
+  for (std::size_t k = 0; k < input.pointers.size(); ++k) {
+    out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", html(input.pointers[k]));
+  }
+  out += ". <a href=\"manifest.csv\">manifest.csv</a></p>\n";
+  // The columns one may sort by: index, the varied values, the metrics.
+  out += "<p><label>Sort by <select id=\"sort\"><option value=\"index\">index</option>";
+  for (std::size_t k = 0; k < input.pointers.size(); ++k) {
+    out += fmt::format("<option value=\"v{}\">{}</option>", k, html(input.pointers[k]));
+  }
+  for (std::size_t m = 0; m < kMetricColumns.size(); ++m) {
+    out += fmt::format("<option value=\"m{}\">{}</option>", m, kMetricColumns[m]);
+  }
+  out += "</select></label> <select id=\"order\"><option value=\"asc\">ascending</option>"
+         "<option value=\"desc\">descending</option></select></p>\n<div id=\"grid\">\n";
+  for (const Row& row : rows) {
+    out += fmt::format("<figure class=\"{}\" data-index=\"{}\"", row.ok() ? "ok" : "failed", row.index);
+    for (std::size_t k = 0; k < row.values.size(); ++k) out += fmt::format(" data-v{}=\"{}\"", k, html(row.values[k]));
+    std::string tip;
+    for (std::size_t m = 0; m < kMetricColumns.size(); ++m) {
+      if (row.metrics[m].empty()) continue;
+      out += fmt::format(" data-m{}=\"{}\"", m, html(row.metrics[m]));
+      tip += fmt::format("{}{} = {}", tip.empty() ? "" : "\n", kMetricColumns[m], row.metrics[m]);
+    }
+    out += fmt::format(" title=\"{}\">", html(tip));
+    const std::string thumb = output_with(row, {"png", "svg"});
+    const std::string full = output_with(row, {"svg", "png", "pdf"});
+    if (!thumb.empty()) {
+      out += fmt::format("<a href=\"{0}\"><img loading=\"lazy\" src=\"{1}\" alt=\"variant {2}\"></a>", html(full),
+                         html(thumb), row.index);
+    } else if (!full.empty()) {
+      out += fmt::format("<a href=\"{}\">figure</a>", html(full));
+    }
+    out += fmt::format("<figcaption>#{}", row.index);
+    for (std::size_t k = 0; k < row.values.size() && k < input.pointers.size(); ++k) {
+      out += fmt::format("<br>{} = {}", html(input.pointers[k]), html(row.values[k]));
+    }
+    if (!row.ok()) out += fmt::format("<br><b>failed</b>: {}", html(row.status));
+    if (row.ok() && !row.metrics[6].empty()) out += fmt::format("<br>E max = {}", html(row.metrics[6]));
+    if (row.ok() && !row.metrics[14].empty()) out += fmt::format("<br>ARA = {}", html(row.metrics[14]));
+    out += "</figcaption></figure>\n";
+  }
+  out += "</div>\n";
+  out += kScript;
+  out += "</body></html>\n";
+  render::write_file_atomically(input.dir / "index.html", out);
+}
+
+namespace {
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using Context = std::unique_ptr<cairo_t, ContextDeleter>;
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+constexpr double kLabel = 16;   // caption height under a cell
+constexpr double kTitle = 36;   // the sheet's title
+constexpr double kFontSize = 11;
+const scene::Color kInk{0.1, 0.1, 0.1, 1.0};
+const scene::Color kFailed{0.8, 0.0, 0.0, 1.0};
+
+}  // namespace
+
+std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>& rows) {
+  if (input.variants > kMaxContactCells) {
+    return fmt::format("contact.svg and contact.png not drawn: {} variants is more than {} on one picture (see "
+                       "index.html)",
+                       input.variants, kMaxContactCells);
+  }
+  if (input.variants == 0) return "";
+  // Two axes of a product: a row per value of the first, a column per value
+  // of the second; otherwise the variants in index order, row by row.
+  const bool two_d = !input.zip && input.axis_sizes.size() == 2;
+  const auto n = static_cast<std::size_t>(input.variants);
+  const std::size_t columns = two_d ? input.axis_sizes[1] : static_cast<std::size_t>(std::ceil(std::sqrt(n)));
+  const std::size_t rows_count = two_d ? input.axis_sizes[0] : (n + columns - 1) / columns;
+  const double cell_w = std::clamp(2400.0 / static_cast<double>(columns), 120.0, 320.0);
+  // The cell's shape from the first variant that has a figure.
+  double aspect = 0.75;
+  std::vector<const Row*> by_index(n, nullptr);
+  for (const Row& r : rows) {
+    if (r.index >= 0 && static_cast<std::size_t>(r.index) < n) by_index[static_cast<std::size_t>(r.index)] = &r;
+  }
+  const double cell_h = cell_w * aspect;
+  const double left = two_d ? 110.0 : 8.0;
+  const double top = kTitle + (two_d ? kLabel + 4 : 0.0);
+  const double width = left + static_cast<double>(columns) * (cell_w + 8) + 8;
+  const double height = top + static_cast<double>(rows_count) * (cell_h + kLabel + 8) + 8;
+
+  std::string svg_bytes, png_bytes;
+  Surface svg(cairo_svg_surface_create_for_stream(append, &svg_bytes, width, height));
+  cairo_svg_surface_set_document_unit(svg.get(), CAIRO_SVG_UNIT_PX);
+  Surface png(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(std::ceil(width)),
+                                         static_cast<int>(std::ceil(height))));
+  Context contexts[2] = {Context(cairo_create(svg.get())), Context(cairo_create(png.get()))};
+  const auto each = [&](auto&& paint) {
+    for (Context& c : contexts) {
+      cairo_save(c.get());
+      paint(c.get());
+      cairo_restore(c.get());
+    }
+  };
+  each([&](cairo_t* cr) {
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    std::string title = fmt::format("pita sweep of {}: ", input.name);
+    for (std::size_t k = 0; k < input.pointers.size(); ++k) title += (k ? ", " : "") + input.pointers[k];
+    if (two_d) title += fmt::format("  (rows: {}, columns: {})", input.pointers[0], input.pointers[1]);
+    render::paint_text(cr, title, "Sans Bold", 14, kInk, 8, 8, render::TextAlign::left);
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t r = i / columns, c = i % columns;
+    const double x = left + static_cast<double>(c) * (cell_w + 8), y = top + static_cast<double>(r) * (cell_h + kLabel + 8);
+    const Row* row = by_index[i];
+    std::string label = fmt::format("#{}", i);
+    if (row != nullptr && !two_d) {
+      for (const std::string& v : row->values) label += " " + v;
+    }
+    if (two_d && row != nullptr) {
+      if (c == 0) {
+        each([&](cairo_t* cr) {
+          render::paint_text(cr, row->values[0], "Sans", kFontSize, kInk, left - 8, y + cell_h / 2 - 6,
+                             render::TextAlign::right);
+        });
+      }
+      if (r == 0) {
+        each([&](cairo_t* cr) {
+          render::paint_text(cr, row->values[1], "Sans", kFontSize, kInk, x + cell_w / 2, kTitle,
+                             render::TextAlign::center);
+        });
+      }
+    }
+    std::optional<render::Figure> figure;
+    std::optional<scene::Scene> scene;
+    std::string failure = row == nullptr ? "missing" : row->ok() ? "" : "failed";
+    if (failure.empty()) {
+      try {
+        scene = scene::parse_scene(read_text(input.dir / variant_file(input.name, row->index, input.variants,
+                                                                      "scene.json")),
+                                   input.base_path);
+        figure = render::build_figure(*scene);
+      } catch (const std::exception&) {
+        failure = "not drawn";
+      }
+    }
+    each([&](cairo_t* cr) {
+      cairo_rectangle(cr, x - 0.5, y - 0.5, cell_w + 1, cell_h + 1);
+      cairo_set_source_rgb(cr, 0.8, 0.8, 0.8);
+      cairo_set_line_width(cr, 1);
+      cairo_stroke(cr);
+      if (figure) {
+        const double s = std::min(cell_w / scene->canvas.width, cell_h / scene->canvas.height);
+        cairo_rectangle(cr, x, y, cell_w, cell_h);
+        cairo_clip(cr);
+        cairo_translate(cr, x + (cell_w - s * scene->canvas.width) / 2, y + (cell_h - s * scene->canvas.height) / 2);
+        cairo_scale(cr, s, s);
+        render::paint_figure(cr, *scene, *figure);
+      } else {
+        render::paint_text(cr, failure, "Sans Bold", 14, kFailed, x + cell_w / 2, y + cell_h / 2 - 8,
+                           render::TextAlign::center);
+      }
+    });
+    each([&](cairo_t* cr) {
+      render::paint_text(cr, label, "Sans", kFontSize, failure.empty() ? kInk : kFailed, x, y + cell_h + 2,
+                         render::TextAlign::left);
+    });
+  }
+  for (Context& c : contexts) c.reset();
+  cairo_surface_flush(png.get());
+  if (cairo_surface_write_to_png_stream(png.get(), append, &png_bytes) != CAIRO_STATUS_SUCCESS) {
+    return "contact.png not drawn: cairo could not encode it";
+  }
+  cairo_surface_finish(svg.get());
+  if (cairo_surface_status(svg.get()) != CAIRO_STATUS_SUCCESS) return "contact.svg not drawn: cairo failed";
+  const std::vector<std::pair<fs::path, std::string>> files = {{input.dir / "contact.svg", render::canonical_svg_ids(svg_bytes)},
+                                                               {input.dir / "contact.png", png_bytes}};
+  render::write_files_atomically(files);
+  return "";
+}
+
+}  // namespace pita::sweep

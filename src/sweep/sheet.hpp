@@ -1,0 +1,39 @@
+// The pictures of a whole sweep (README "pita sweep"): DIR/index.html, a
+// contact sheet of thumbnails linked to the full figures and sortable by any
+// metric column, and DIR/contact.svg / contact.png, every variant's figure
+// on one picture (rows and columns for a two-parameter sweep).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sweep/manifest.hpp"
+
+namespace pita::sweep {
+
+// A contact picture holds at most this many variants; a larger sweep gets
+// the HTML index only (said in the summary).
+inline constexpr std::int64_t kMaxContactCells = 400;
+
+struct SheetInput {
+  std::filesystem::path dir;
+  std::string name;                   // the scene's stem
+  std::string base_path;              // variants read as this file (relative images)
+  std::vector<std::string> pointers;  // the varied pointers
+  std::vector<std::size_t> axis_sizes;
+  bool zip = false;
+  std::int64_t variants = 0;
+  bool figures = false;               // the sweep wrote figures (svg, png or pdf)
+};
+
+// DIR/index.html from the manifest rows (sorted by index). Atomic.
+void write_index_html(const SheetInput& input, const std::vector<Row>& rows);
+
+// DIR/contact.svg and DIR/contact.png, each variant's figure redrawn from its
+// scene file DIR/<name>-<index>.scene.json; a failed or missing variant is an
+// empty cell marked so. Returns "" or why nothing was drawn. Atomic.
+std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>& rows);
+
+}  // namespace pita::sweep

@@ -1,0 +1,72 @@
+// pita sweep (README "pita sweep"): the variants of a scene, each with values
+// set at JSON Pointers, run in-process on a pool of threads; their figures
+// and frames, a manifest with metrics, a contact sheet and an HTML index.
+// Resumable (a variant whose outputs exist under the same content hash is
+// skipped), interruptible (SIGINT/SIGTERM leave complete files and a manifest
+// of what finished), and sharded for batch clusters (--shard K/N, --merge).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "sweep/grid.hpp"
+
+namespace pita::sweep {
+
+// What a sweep may write for each variant.
+enum class OutputKind { svg, png, pdf, csv, json };
+
+struct SweepOptions {
+  std::string scene_path;
+  std::vector<std::string> vary;  // POINTER=SPEC, as typed
+  bool zip = false;
+  std::string output;             // DIR
+  std::vector<OutputKind> formats = {OutputKind::svg};
+  int jobs = 1;
+  std::optional<std::pair<int, int>> shard;  // K, N
+  bool force = false;
+  bool quiet = false;
+  std::string version;            // pita's version: part of every content hash
+};
+
+struct SweepSummary {
+  std::int64_t variants = 0;   // in this run (this shard's)
+  std::int64_t ok = 0;         // written now
+  std::int64_t skipped = 0;    // resumed: already done
+  std::int64_t failed = 0;     // invalid or without motion
+  bool write_failed = false;   // an output could not be written (exit 3)
+  std::vector<std::string> failures;  // "variant 7 (/keyframes/1/m = -1): ..."
+  std::vector<std::string> notes;     // what else was (not) written
+};
+
+// "svg,png,csv" -> kinds; throws SweepUsageError.
+std::vector<OutputKind> parse_output_kinds(const std::string& text);
+// "K/N" -> (K, N), 0 <= K < N; throws SweepUsageError.
+std::pair<int, int> parse_shard(const std::string& text);
+
+// Runs the sweep. Throws SweepUsageError (exit 2), scene::SceneError (a bad
+// base scene, exit 2), render::OutputError (the manifest could not be
+// written, exit 3). An interruption writes the manifest of what finished
+// and exits with 128 + the signal.
+SweepSummary run_sweep(const SweepOptions& options);
+
+struct MergeSummary {
+  std::int64_t variants = 0;
+  std::int64_t rows = 0;
+  std::int64_t failed = 0;
+  std::vector<std::int64_t> missing;
+  std::vector<std::string> parts;  // the manifest parts joined
+  std::vector<std::string> notes;
+};
+
+// Joins DIR/manifest.K-of-N.csv into DIR/manifest.csv and writes index.html
+// and contact.*. Throws SweepUsageError when DIR holds no sweep.
+MergeSummary merge_sweep(const std::string& dir, bool quiet);
+
+// "0-3, 7, 9-11": indices as ranges.
+std::string index_ranges(const std::vector<std::int64_t>& indices);
+
+}  // namespace pita::sweep

@@ -1,0 +1,177 @@
+#include "sweep/variant.hpp"
+
+#include <fmt/format.h>
+
+#include "scene/did_you_mean.hpp"
+#include "scene/json_text.hpp"
+#include "scene/limits.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::sweep {
+
+namespace {
+
+bool is_index(const std::string& token) {
+  return !token.empty() && token.find_first_not_of("0123456789") == std::string::npos &&
+         (token.size() == 1 || token.front() != '0');
+}
+
+std::string escaped(const std::string& token) {
+  std::string out;
+  for (const char c : token) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+// The tokens of a JSON Pointer, unescaped.
+std::vector<std::string> tokens_of(const std::string& pointer) {
+  std::vector<std::string> tokens;
+  Json::json_pointer p(pointer);
+  while (!p.empty()) {
+    tokens.insert(tokens.begin(), p.back());
+    p.pop_back();
+  }
+  return tokens;
+}
+
+// The pointer that exists and is nearest to `tokens`: each missing member
+// replaced by the closest existing name, a missing element by the last one,
+// as far as the document goes.
+std::string nearest_pointer(const Json& document, const std::vector<std::string>& tokens) {
+  const Json* at = &document;
+  std::string nearest;
+  for (const std::string& token : tokens) {
+    if (at->is_object()) {
+      if (at->contains(token)) {
+        nearest += "/" + escaped(token);
+        at = &(*at)[token];
+        continue;
+      }
+      std::vector<std::string> names;
+      for (const auto& [key, value] : at->items()) names.push_back(key);
+      std::vector<std::string_view> views(names.begin(), names.end());
+      const std::vector<std::string> close = scene::closest_names(token, views);
+      if (close.empty()) break;
+      nearest += "/" + escaped(close.front());
+      at = &(*at)[close.front()];
+    } else if (at->is_array() && !at->empty()) {
+      const std::size_t last = at->size() - 1;
+      const std::size_t i = is_index(token) ? std::min<std::size_t>(std::stoull(token.substr(0, 18)), last) : last;
+      nearest += "/" + std::to_string(i);
+      at = &(*at)[i];
+    } else {
+      break;
+    }
+  }
+  return nearest.empty() ? "\"\" (the whole scene)" : nearest;
+}
+
+// Sets `value` at `tokens`, creating missing members as objects; throws
+// SweepUsageError when an element is missing or a step is not a container.
+void set_at(Json& document, const Axis& axis, const std::vector<std::string>& tokens, const Json& value,
+            const Json& base) {
+  Json* at = &document;
+  std::string walked;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& token = tokens[i];
+    const bool last = i + 1 == tokens.size();
+    if (at->is_object()) {
+      if (last) {
+        (*at)[token] = value;
+        return;
+      }
+      if (!at->contains(token)) (*at)[token] = Json::object();
+      at = &(*at)[token];
+    } else if (at->is_array()) {
+      if (!is_index(token) || token.size() > 18 || std::stoull(token) >= at->size()) {
+        throw SweepUsageError(fmt::format("--vary {}={}: {} has no element \"{}\" ({} element{}); the nearest "
+                                          "pointer that exists is {}",
+                                          axis.pointer, axis.spec, walked.empty() ? "the scene" : walked, token,
+                                          at->size(), at->size() == 1 ? "" : "s",
+                                          nearest_pointer(base, tokens_of(axis.pointer))));
+      }
+      const std::size_t index = std::stoull(token);
+      if (last) {
+        (*at)[index] = value;
+        return;
+      }
+      at = &(*at)[index];
+    } else {
+      throw SweepUsageError(fmt::format("--vary {}={}: {} is {}, not an object or array, so it has no \"{}\"; the "
+                                        "nearest pointer that exists is {}",
+                                        axis.pointer, axis.spec, walked.empty() ? "the scene" : walked,
+                                        std::string(at->type_name()), token,
+                                        nearest_pointer(base, tokens_of(axis.pointer))));
+    }
+    walked += "/" + escaped(token);
+  }
+}
+
+}  // namespace
+
+BaseScene load_base(const std::string& path, const Grid& grid) {
+  BaseScene base;
+  base.path = path;
+  const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
+  (void)scene::parse_scene(text, path);  // a bad base scene is bad input (exit 2), named by the reader
+  base.document = Json::parse(text);
+  if (grid.size() == 0) return base;
+  // Every pointer settable, and the first variant read: a member the scene
+  // may not have is refused there, at a pointer the sweep created.
+  const std::vector<Json> first = grid.values(0);
+  Json document = base.document;
+  for (std::size_t k = 0; k < grid.axes().size(); ++k) {
+    set_at(document, grid.axes()[k], tokens_of(grid.axes()[k].pointer), first[k], base.document);
+  }
+  try {
+    (void)scene::parse_scene(variant_text(document), path);
+  } catch (const scene::SceneError& error) {
+    if (error.reason().starts_with("unknown field")) {
+      for (const Axis& axis : grid.axes()) {
+        const bool created = !base.document.contains(Json::json_pointer(axis.pointer));
+        const bool under = axis.pointer == error.pointer() || axis.pointer.starts_with(error.pointer() + "/");
+        if (created && under) {
+          throw SweepUsageError(fmt::format("--vary {}={}: {} is not in {} and the scene may not have it: {}; the "
+                                            "nearest pointer that exists is {}",
+                                            axis.pointer, axis.spec, axis.pointer, path, error.reason(),
+                                            nearest_pointer(base.document, tokens_of(axis.pointer))));
+        }
+      }
+    }
+    // Any other error is the first variant's own: it is a failed row.
+  }
+  return base;
+}
+
+Json variant_document(const BaseScene& base, const Grid& grid, const std::vector<Json>& values) {
+  Json document = base.document;
+  for (std::size_t k = 0; k < grid.axes().size(); ++k) {
+    set_at(document, grid.axes()[k], tokens_of(grid.axes()[k].pointer), values[k], base.document);
+  }
+  return document;
+}
+
+std::string variant_text(const Json& document) { return document.dump(2) + "\n"; }
+
+std::string content_hash(const std::string& text, const std::string& salt) {
+  std::uint64_t h = 14695981039346656037ULL;
+  const auto mix = [&h](std::string_view bytes) {
+    for (const unsigned char c : bytes) {
+      h ^= c;
+      h *= 1099511628211ULL;
+    }
+  };
+  mix(text);
+  mix(std::string_view("\0", 1));
+  mix(salt);
+  return fmt::format("{:016x}", h);
+}
+
+}  // namespace pita::sweep

@@ -1,0 +1,282 @@
+// pita sweep from the outside: every variant equals the hand-edited scene run
+// through pita render and pita eval; failed variants are rows; resume, --force,
+// shards and --merge, an interrupted sweep resumed; bad usage (exit 2, nothing
+// written); the HTML index sorted in a real browser.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include <fmt/format.h>
+
+#include "run_pita.hpp"
+
+namespace pita::test {
+namespace {
+
+using Json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+const std::string kFig13 = std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json";
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+// The first field of each data row of a manifest (no field here is quoted
+// before the status).
+std::vector<std::string> column(const std::string& manifest, std::size_t k) {
+  std::vector<std::string> out;
+  const std::vector<std::string> lines = lines_of(manifest);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::size_t start = 0;
+    for (std::size_t j = 0; j < k; ++j) start = lines[i].find(',', start) + 1;
+    out.push_back(lines[i].substr(start, lines[i].find(',', start) - start));
+  }
+  return out;
+}
+
+TEST(Sweep, EachVariantIsTheHandEditedScene) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.3:0.6:2", "--vary", "/method=P1,La-LP",
+                                "-o", "out", "--format", "svg,csv,json", "-q"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("4 variants: 4 written"), std::string::npos) << r.out;
+  const Json base = Json::parse(read_file(kFig13));
+  const std::vector<std::pair<double, std::string>> expected = {{0.3, "P1"}, {0.3, "La-LP"}, {0.6, "P1"}, {0.6, "La-LP"}};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(i);
+    // The scene a user would write by hand, next to the base so that it reads alike.
+    Json edited = base;
+    edited["keyframes"][1]["t"] = expected[i].first;
+    edited["method"] = expected[i].second;
+    const fs::path hand = dir.path() / fmt::format("hand-{}.json", i);
+    std::ofstream(hand) << edited.dump(1);
+    const RunResult svg = run_pita({"render", hand.string(), "-o", fmt::format("hand-{}.svg", i)}, dir.path());
+    ASSERT_EQ(svg.exit_code, 0) << svg.err;
+    EXPECT_EQ(read_file(dir.path() / fmt::format("out/fig13-knot-ratio-{}.svg", i)),
+              read_file(dir.path() / fmt::format("hand-{}.svg", i)));
+    for (const std::string format : {"csv", "json"}) {
+      const RunResult frames = run_pita({"eval", hand.string(), "--format", format}, dir.path());
+      ASSERT_EQ(frames.exit_code, 0) << frames.err;
+      EXPECT_EQ(read_file(dir.path() / fmt::format("out/fig13-knot-ratio-{}.{}", i, format)), frames.out);
+    }
+    // The variant's own scene file is the same scene.
+    EXPECT_EQ(Json::parse(read_file(dir.path() / fmt::format("out/fig13-knot-ratio-{}.scene.json", i))), edited);
+  }
+  const std::string manifest = read_file(dir.path() / "out/manifest.csv");
+  EXPECT_EQ(lines_of(manifest).front().rfind("index,/keyframes/1/t,/method,status,outputs,hash,path_length_p", 0), 0u);
+  EXPECT_EQ(column(manifest, 1), (std::vector<std::string>{"0.3", "0.3", "0.6", "0.6"}));
+  EXPECT_EQ(column(manifest, 3), (std::vector<std::string>(4, "ok")));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/index.html"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/contact.png"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/contact.svg"));
+}
+
+TEST(Sweep, PathLengthMetricIsTheEvaluatedPath) {
+  // Independent of pita measure: the polyline through 2001 frames of pita eval.
+  ScratchDir dir;
+  dir.write("s.json", kFigureOneScene);
+  const RunResult r = run_pita({"sweep", "s.json", "--vary", "/keyframes/2/m=1.2", "-o", "out", "--format", "csv", "-q"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const RunResult frames = run_pita({"eval", "s.json", "--samples", "2001", "--format", "csv"}, dir.path());
+  double length = 0, x0 = 0, y0 = 0;
+  const std::vector<std::string> lines = lines_of(frames.out);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    double t, x, y;
+    ASSERT_EQ(std::sscanf(lines[i].c_str(), "%lf,%lf,%lf", &t, &x, &y), 3);
+    if (i > 1) length += std::hypot(x - x0, y - y0);
+    x0 = x;
+    y0 = y;
+  }
+  const double metric = std::stod(column(read_file(dir.path() / "out/manifest.csv"), 5).at(0));
+  EXPECT_NEAR(metric, length, 1e-4 * length);
+}
+
+TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
+  ScratchDir dir;
+  const RunResult r =
+      run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=-1,0.8,abc", "-o", "out", "-q"}, dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("variant 0 (/keyframes/1/m = -1)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/keyframes/1/m"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("variant 2 (/keyframes/1/m = abc)"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "out/fig13-knot-ratio-1.svg"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out/fig13-knot-ratio-0.svg"));
+  const std::vector<std::string> status = column(read_file(dir.path() / "out/manifest.csv"), 2);
+  ASSERT_EQ(status.size(), 3u);
+  EXPECT_NE(status[0], "ok");
+  EXPECT_EQ(status[1], "ok");
+}
+
+TEST(Sweep, ResumesSkipsWhatIsDoneAndForceRedoesIt) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.2:0.8:4", "-o", "out", "-q"};
+  ASSERT_EQ(run_pita(args, dir.path()).exit_code, 0);
+  const std::string first = read_file(dir.path() / "out/manifest.csv");
+  RunResult again = run_pita(args, dir.path());
+  EXPECT_NE(again.out.find("0 written, 4 resumed"), std::string::npos) << again.out;
+  fs::remove(dir.path() / "out/fig13-knot-ratio-2.svg");
+  again = run_pita(args, dir.path());
+  EXPECT_NE(again.out.find("1 written, 3 resumed"), std::string::npos) << again.out;
+  EXPECT_TRUE(fs::exists(dir.path() / "out/fig13-knot-ratio-2.svg"));
+  EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), first);
+  std::vector<std::string> forced = args;
+  forced.push_back("--force");
+  again = run_pita(forced, dir.path());
+  EXPECT_NE(again.out.find("4 written, 0 resumed"), std::string::npos) << again.out;
+  // Other values at the same indices: new hashes, so every variant is redone.
+  std::vector<std::string> changed = args;
+  changed[3] = "/keyframes/1/t=0.3:0.7:4";
+  again = run_pita(changed, dir.path());
+  EXPECT_NE(again.out.find("4 written, 0 resumed"), std::string::npos) << again.out;
+}
+
+TEST(Sweep, ShardsMergeIntoTheUnshardedRun) {
+  ScratchDir dir;
+  const std::vector<std::string> base = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.2:0.8:4", "--vary",
+                                         "/method=P1,P6", "--format", "svg,csv", "-q"};
+  auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_pita(a, dir.path());
+  };
+  ASSERT_EQ(with({"-o", "whole"}).exit_code, 0);
+  ASSERT_EQ(with({"-o", "parts", "--shard", "0/3"}).exit_code, 0);
+  ASSERT_EQ(with({"-o", "parts", "--shard", "2/3"}).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir.path() / "parts/manifest.csv"));
+  RunResult merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
+  EXPECT_EQ(merged.exit_code, 1);
+  EXPECT_NE(merged.err.find("missing: 1, 4, 7"), std::string::npos) << merged.err;
+  ASSERT_EQ(with({"-o", "parts", "--shard", "1/3"}).exit_code, 0);
+  merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(read_file(dir.path() / "parts/manifest.csv"), read_file(dir.path() / "whole/manifest.csv"));
+  EXPECT_EQ(read_file(dir.path() / "parts/contact.svg"), read_file(dir.path() / "whole/contact.svg"));
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_EQ(read_file(dir.path() / fmt::format("parts/fig13-knot-ratio-{}.csv", i)),
+              read_file(dir.path() / fmt::format("whole/fig13-knot-ratio-{}.csv", i)));
+  }
+  EXPECT_EQ(run_pita({"sweep", "--merge", "whole"}, dir.path()).exit_code, 2);  // no parts there
+}
+
+TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:300", "-o", "out",
+                                         "--format", "svg", "--jobs", "2", "-q"};
+  Started started = start_pita(args, dir.path());
+  const fs::path first = dir.path() / "out/fig13-knot-ratio-000.svg";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(first) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(started.pid, SIGTERM);
+  const RunResult r = finish_pita(started);
+  ASSERT_EQ(r.exit_code, 128 + SIGTERM) << "finished before the signal: " << r.out << r.err;
+  const std::string partial = read_file(dir.path() / "out/manifest.csv");
+  const std::size_t rows = lines_of(partial).size() - 1;
+  EXPECT_GE(rows, 1u);
+  EXPECT_LT(rows, 300u);
+  for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "out")) {
+    EXPECT_NE(e.path().filename().string().front(), '.') << "a temporary is left: " << e.path();
+  }
+  for (const std::string& index : column(partial, 0)) {
+    EXPECT_TRUE(fs::exists(dir.path() / fmt::format("out/fig13-knot-ratio-{:03}.svg", std::stoi(index))));
+  }
+  const RunResult resumed = run_pita(args, dir.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find(fmt::format("{} resumed", rows)), std::string::npos) << resumed.out;
+  std::vector<std::string> fresh = args;
+  fresh[5] = "fresh";
+  ASSERT_EQ(run_pita(fresh, dir.path()).exit_code, 0);
+  EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), read_file(dir.path() / "fresh/manifest.csv"));
+}
+
+TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
+  ScratchDir dir;
+  dir.write("file", "x");
+  dir.write("bad.json", "{\"method\": \"P6\"}");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--vary", "/keyframes/7/t=0:1:3"}, "nearest pointer that exists is /keyframes/2/t"},
+      {{"--vary", "/keyframs/1/t=0:1:3"}, "did you mean \"keyframes\""},
+      {{"--vary", "/keyframes/1/t=0:1"}, "SPEC must be"},
+      {{"--vary", "/keyframes/1/t=0:1:0"}, "must be >= 1"},
+      {{"--vary", "/keyframes/1/t=0:1:5000", "--vary", "/keyframes/1/m=1:2:5000"}, "more than the limit"},
+      {{"--vary", "/keyframes/1/t=0:1:3", "--vary", "/method=P1,P2", "--zip"}, "--zip"},
+      {{"--vary", "/keyframes/1/t=0:1:3", "--shard", "3/3"}, "--shard"},
+      {{"--vary", "/keyframes/1/t=0:1:3", "--format", "gif"}, "--format"},
+      {{"--vary", "/keyframes/1/t=0:1:3", "--jobs", "0"}, "--jobs"},
+      {{}, "--vary"},
+  };
+  for (const auto& [extra, message] : cases) {
+    std::vector<std::string> args = {"sweep", kFig13, "-o", "out"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << fmt::format("{}", fmt::join(extra, " "));
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.path() / "out")) << fmt::format("{}", fmt::join(extra, " "));
+  }
+  const RunResult folder = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0:1:3", "-o", "file/out"}, dir.path());
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("cannot create the output folder"), std::string::npos) << folder.err;
+  const RunResult scene = run_pita({"sweep", "bad.json", "--vary", "/method=P1", "-o", "out"}, dir.path());
+  EXPECT_EQ(scene.exit_code, 2);
+  EXPECT_NE(scene.err.find("bad.json: /keyframes"), std::string::npos) << scene.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(SweepChromium, IndexSortsByAMetricColumn) {
+  const std::string chromium = fs::exists("/usr/bin/chromium") ? "/usr/bin/chromium" : "";
+  if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium)";
+  ScratchDir dir;
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:6", "-o", "out", "-q"}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The expected order: the manifest's rows by discrepancy_max, largest first.
+  const std::string manifest = read_file(dir.path() / "out/manifest.csv");
+  const std::vector<std::string> index = column(manifest, 0), e = column(manifest, 11);  // discrepancy_max
+  std::vector<std::size_t> order(index.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::stod(e[a]) > std::stod(e[b]); });
+  std::vector<std::string> want;
+  for (const std::size_t i : order) want.push_back(index[i]);
+  ASSERT_NE(want.front(), "0");  // the sort moves something
+  const std::string command = fmt::format(
+      "timeout 120 {} --headless --no-sandbox --disable-gpu --user-data-dir={} --dump-dom "
+      "'file://{}#sort=discrepancy_max&order=desc' 2>/dev/null",
+      chromium, (dir.path() / "profile").string(), (dir.path() / "out/index.html").string());
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string dom;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) dom.append(buffer, n);
+  EXPECT_EQ(::pclose(pipe), 0);
+  std::vector<std::string> shown;
+  const std::regex cell("<figure class=\"[a-z]+\" data-index=\"([0-9]+)\"");
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), cell); it != std::sregex_iterator(); ++it) {
+    shown.push_back((*it)[1]);
+  }
+  EXPECT_EQ(shown, want) << dom.substr(0, 2000);
+}
+
+}  // namespace
+}  // namespace pita::test

@@ -1,0 +1,63 @@
+// The manifest (src/sweep/manifest.cpp): written and read back field for
+// field, quoting included; file names; a foreign manifest is refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "sweep/manifest.hpp"
+
+namespace pita::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(Manifest, RoundTripsQuotedFields) {
+  Row a;
+  a.index = 0;
+  a.values = {"0.5", "P6"};
+  a.status = "ok";
+  a.outputs = {"s-0.scene.json", "s-0.svg"};
+  a.hash = "0123456789abcdef";
+  a.metrics[0] = "1.5";
+  a.metrics[10] = "B.t";
+  Row b = a;
+  b.index = 7;
+  b.values = {"a,b", "say \"hi\"\nthere"};
+  b.status = "s.json: /keyframes/1/m: magnitude must be > 0 (got -1)";
+  b.outputs.clear();
+  b.metrics = {};
+  const std::vector<std::string> pointers = {"/keyframes/1/t", "/method"};
+  const fs::path file = fs::temp_directory_path() / "pita-test-manifest.csv";
+  std::ofstream(file, std::ios::binary) << manifest_csv(pointers, {a, b});
+  const auto rows = read_manifest(file, pointers);
+  ASSERT_TRUE(rows.has_value());
+  ASSERT_EQ(rows->size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const Row& want = i == 0 ? a : b;
+    const Row& got = (*rows)[i];
+    EXPECT_EQ(got.index, want.index);
+    EXPECT_EQ(got.values, want.values);
+    EXPECT_EQ(got.status, want.status);
+    EXPECT_EQ(got.outputs, want.outputs);
+    EXPECT_EQ(got.hash, want.hash);
+    EXPECT_EQ(got.metrics, want.metrics);
+  }
+  EXPECT_FALSE((*rows)[1].ok());
+  // Another sweep's manifest (other pointers) is refused, not misread.
+  EXPECT_THROW((void)read_manifest(file, {"/keyframes/0/t", "/method"}), std::runtime_error);
+  EXPECT_FALSE(read_manifest(file.string() + ".none", pointers).has_value());
+  fs::remove(file);
+}
+
+TEST(Manifest, NamesSortInIndexOrder) {
+  EXPECT_EQ(variant_file("fig01", 7, 1000, "svg"), "fig01-007.svg");
+  EXPECT_EQ(variant_file("fig01", 999, 1000, "scene.json"), "fig01-999.scene.json");
+  EXPECT_EQ(variant_file("x", 0, 1, "csv"), "x-0.csv");
+  EXPECT_EQ(variant_file("x", 3, 11, "csv"), "x-03.csv");
+  EXPECT_EQ(manifest_name(std::nullopt), "manifest.csv");
+  EXPECT_EQ(manifest_name(std::pair{2, 5}), "manifest.2-of-5.csv");
+}
+
+}  // namespace
+}  // namespace pita::sweep
