@@ -34,6 +34,8 @@ PITA_TEST_PACKAGES=(
   python3-jsonschema          # tests: the scene schema checked by an independent validator
   ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
   chromium                    # tests: the animated SVG played in a real browser (headless)
+  parallel                    # tests: the GNU parallel recipe of pita sweep (README "pita sweep")
+  time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
 )
 
 # Only for scripts/test.sh --sanitize and scripts/fuzz.sh.

@@ -34,7 +34,7 @@ receives, for variant i: <scene>-<i>.scene.json (the variant itself) and
 frames pita eval prints), then manifest.csv (a row per variant: the values,
 status, outputs, content hash and metrics of pita measure), index.html (a sortable
 contact sheet) and contact.svg / contact.png (every figure on one picture, rows
-and columns for two parameters; up to 400 variants).
+and columns for two parameters; up to 256 variants).
 
 Resumable: a variant whose outputs exist and whose manifest row has the same
 content hash is skipped (--force redoes it). SIGINT or SIGTERM lets the running
@@ -92,18 +92,25 @@ std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
 ExitCode run_sweep_command(const SweepCommand& command) {
   try {
     if (command.merge) {
-      if (command.scene_path || !command.vary.empty() || command.output || command.shard) {
-        throw sweep::SweepUsageError("--merge DIR takes no scene, --vary, -o or --shard: the shards' folder holds "
-                                     "the sweep's definition");
+      if (command.scene_path || !command.vary.empty() || command.output || command.shard || command.zip ||
+          command.jobs || command.force || command.formats != "svg") {
+        throw sweep::SweepUsageError("--merge DIR takes no scene, --vary, --zip, -o, --format, --jobs, --shard or "
+                                     "--force: the shards' folder holds the sweep's definition");
       }
       const sweep::MergeSummary merged = sweep::merge_sweep(*command.merge, command.quiet);
-      for (const std::string& note : merged.notes) std::cerr << "pita: " << note << '\n';
+      if (!command.quiet) {
+        for (const std::string& note : merged.notes) std::cerr << "pita: " << note << '\n';
+      }
       std::cout << fmt::format("merged {} ({} rows of {} variants, {} failed) into {}/manifest.csv\n",
                                fmt::join(merged.parts, ", "), merged.rows, merged.variants, merged.failed,
                                *command.merge);
-      if (!merged.missing.empty()) {
-        std::cerr << fmt::format("pita: {} variant{} missing: {} (run their shards again)\n", merged.missing.size(),
-                                 merged.missing.size() == 1 ? "" : "s", sweep::index_ranges(merged.missing));
+      if (merged.missing_count > 0) {
+        std::cerr << fmt::format("pita: {} variant{} missing: {}{} (run their shards again)\n", merged.missing_count,
+                                 merged.missing_count == 1 ? "" : "s", sweep::index_ranges(merged.missing),
+                                 merged.missing.size() < static_cast<std::size_t>(merged.missing_count) &&
+                                         merged.missing.size() >= 1000
+                                     ? ", ..."
+                                     : "");
         return ExitCode::golden_mismatch;
       }
       return merged.failed > 0 ? ExitCode::golden_mismatch : ExitCode::success;
@@ -130,7 +137,9 @@ ExitCode run_sweep_command(const SweepCommand& command) {
       std::cerr << fmt::format("pita: ... and {} more failed variants (manifest.csv lists them all)\n",
                                summary.failures.size() - kMaxListed);
     }
-    for (const std::string& note : summary.notes) std::cerr << "pita: " << note << '\n';
+    if (!command.quiet) {
+      for (const std::string& note : summary.notes) std::cerr << "pita: " << note << '\n';
+    }
     std::cout << fmt::format("{} variants: {} written, {} resumed, {} failed; see {}/{}\n", summary.variants,
                              summary.ok, summary.skipped, summary.failed, options.output,
                              options.shard ? fmt::format("manifest.{}-of-{}.csv", options.shard->first,

@@ -110,8 +110,14 @@ struct View {
 };
 
 void write_all_or_none(const std::vector<View>& files) {
-  const mode_t mask = ::umask(0);
-  ::umask(mask);
+  // umask(2) can only be read by setting it: done once (a thread-safe static),
+  // never while other threads write (a sweep's pool, an animation's frames),
+  // which would see the 0 set in between and create files of mode 666.
+  static const mode_t mask = [] {
+    const mode_t m = ::umask(0);
+    ::umask(m);
+    return m;
+  }();
   std::vector<std::unique_ptr<Temporary>> temporaries;
   // The destructors remove every temporary not renamed, whatever throws.
   for (const View& file : files) temporaries.push_back(std::make_unique<Temporary>(file.path));

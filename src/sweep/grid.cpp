@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <set>
 
 #include <fmt/format.h>
@@ -57,6 +58,30 @@ std::vector<std::string_view> split(std::string_view text, char separator) {
   }
 }
 
+// The items of a list, split at commas outside JSON strings ("a,b" is one item).
+std::vector<std::string_view> split_list(std::string_view text, std::string_view argument) {
+  std::vector<std::string_view> items;
+  std::size_t start = 0;
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (quoted) {
+      if (text[i] == '\\') {
+        ++i;
+      } else if (text[i] == '"') {
+        quoted = false;
+      }
+    } else if (text[i] == '"') {
+      quoted = true;
+    } else if (text[i] == ',') {
+      items.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  if (quoted) throw SweepUsageError(fmt::format("--vary {}: a quoted value is not closed", argument));
+  items.push_back(text.substr(start));
+  return items;
+}
+
 Json list_item(std::string_view item) {
   double v = 0;
   if (parse_double(item, v) && std::isfinite(v)) return number_value(v);
@@ -90,7 +115,8 @@ Axis parse_axis(std::string_view argument) {
   if (spec.empty()) throw SweepUsageError(fmt::format("--vary {}: the SPEC after '=' is empty", argument));
   const std::vector<std::string_view> colon = split(spec, ':');
   const bool geometric = colon.size() == 4 && colon[0] == "log";
-  if (colon.size() == 3 || geometric) {
+  const bool has_quotes = spec.find('"') != std::string_view::npos;  // a list of JSON strings
+  if (!has_quotes && (colon.size() == 3 || geometric)) {
     const std::size_t k = geometric ? 1 : 0;
     const double a = finite_number(colon[k], argument, "a");
     const double b = finite_number(colon[k + 1], argument, "b");
@@ -99,18 +125,34 @@ Axis parse_axis(std::string_view argument) {
       throw SweepUsageError(fmt::format("--vary {}: log:a:b:n needs a and b of one sign and not 0 (got {} and {})",
                                         argument, a, b));
     }
+    // Every value between the ends must be a finite number too.
+    if (!std::isfinite(b - a) || (geometric && !(std::isfinite(b / a) && b / a != 0.0))) {
+      throw SweepUsageError(fmt::format("--vary {}: the values between {} and {} are not all finite numbers",
+                                        argument, a, b));
+    }
     axis.kind = geometric ? Axis::Kind::geometric : Axis::Kind::linear;
     axis.a = a;
     axis.b = b;
     axis.n = n;
     return axis;
   }
-  if (colon.size() != 1 && spec.find(',') == std::string_view::npos) {
+  if (colon.size() != 1 && spec.find(',') == std::string_view::npos && !has_quotes) {
     throw SweepUsageError(fmt::format("--vary {}: SPEC must be a:b:n, log:a:b:n or a list v1,v2,... (got \"{}\")",
                                       argument, spec));
   }
-  for (const std::string_view item : split(spec, ',')) {
+  for (const std::string_view item : split_list(spec, argument)) {
     if (item.empty()) throw SweepUsageError(fmt::format("--vary {}: an empty value in the list \"{}\"", argument, spec));
+    if (item.front() == '"') {
+      // A JSON string: any text, commas and quotes included ("1" is a string).
+      try {
+        const Json parsed = Json::parse(item);
+        if (!parsed.is_string()) throw std::runtime_error("not a string");
+        axis.items.push_back(parsed);
+      } catch (const std::exception&) {
+        throw SweepUsageError(fmt::format("--vary {}: {} is not a JSON string", argument, item));
+      }
+      continue;
+    }
     axis.items.push_back(list_item(item));
   }
   return axis;
@@ -126,7 +168,8 @@ Json Axis::value(std::size_t i) const {
   const double v = kind == Kind::geometric ? a * std::pow(b / a, u) : a + (b - a) * u;
   // Rounded to 15 significant digits, so that 0.1:0.9:5 sets 0.3, not
   // 0.30000000000000004 (the step's rounding is not the user's value).
-  return number_value(std::stod(fmt::format("{:.15g}", v)));
+  const std::string rounded = fmt::format("{:.15g}", v);
+  return number_value(std::strtod(rounded.c_str(), nullptr));  // strtod: no exception for subnormals
 }
 
 Grid::Grid(std::vector<Axis> axes, bool zip) : axes_(std::move(axes)), zip_(zip) {

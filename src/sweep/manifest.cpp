@@ -70,7 +70,9 @@ std::string csv_field(std::string_view text) {
   return out + "\"";
 }
 
-std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows) {
+namespace {
+
+std::string header(const std::vector<std::string>& pointers) {
   std::string out = "index";
   for (const std::string& p : pointers) {
     out += ',';
@@ -79,24 +81,39 @@ std::string manifest_csv(const std::vector<std::string>& pointers, const std::ve
   out += ",status,outputs,hash";
   for (const std::string_view m : kMetricColumns) out += fmt::format(",{}", m);
   out += '\n';
-  for (const Row& row : rows) {
-    out += std::to_string(row.index);
-    const auto field = [&out](std::string_view text) {
-      out += ',';
-      out += csv_field(text);
-    };
-    for (const std::string& v : row.values) field(v);
-    std::string outputs;
-    for (const std::string& o : row.outputs) {
-      if (!outputs.empty()) outputs += ';';
-      outputs += o;
-    }
-    field(row.status);
-    field(outputs);
-    field(row.hash);
-    for (const std::string& m : row.metrics) field(m);
-    out += '\n';
+  return out;
+}
+
+void append_row(std::string& out, const Row& row) {
+  out += std::to_string(row.index);
+  const auto field = [&out](std::string_view text) {
+    out += ',';
+    out += csv_field(text);
+  };
+  for (const std::string& v : row.values) field(v);
+  std::string outputs;
+  for (const std::string& o : row.outputs) {
+    if (!outputs.empty()) outputs += ';';
+    outputs += o;
   }
+  field(row.status);
+  field(outputs);
+  field(row.hash);
+  for (const std::string& m : row.metrics) field(m);
+  out += '\n';
+}
+
+}  // namespace
+
+std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows) {
+  std::string out = header(pointers);
+  for (const Row& row : rows) append_row(out, row);
+  return out;
+}
+
+std::string manifest_csv(const std::vector<std::string>& pointers, const std::map<std::int64_t, Row>& rows) {
+  std::string out = header(pointers);
+  for (const auto& [index, row] : rows) append_row(out, row);
   return out;
 }
 
@@ -145,8 +162,8 @@ std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
 
 std::string variant_file(const std::string& name, std::int64_t index, std::int64_t variants,
                          const std::string& extension) {
-  const std::size_t width = std::to_string(std::max<std::int64_t>(variants - 1, 0)).size();
-  return fmt::format("{}-{:0{}}.{}", name, index, width, extension);
+  (void)variants;
+  return fmt::format("{}-{}.{}", name, index, extension);
 }
 
 std::string manifest_name(std::optional<std::pair<int, int>> shard) {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,7 @@ struct Row {
 
 // The CSV text of `rows` (sorted by index) under a header naming `pointers`.
 std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows);
+std::string manifest_csv(const std::vector<std::string>& pointers, const std::map<std::int64_t, Row>& rows);
 
 // Reads a manifest written by manifest_csv; nullopt when the file does not
 // exist. Throws std::runtime_error naming the file and line when it is not a
@@ -44,8 +46,8 @@ std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
 // "manifest.csv", or "manifest.K-of-N.csv" for shard K of N.
 std::string manifest_name(std::optional<std::pair<int, int>> shard);
 
-// DIR/<name>-<index>.<extension>, the index zero-padded to the width of the
-// largest index so that the files sort in order: fig01-007.svg.
+// DIR/<name>-<index>.<extension>: fig01-eight-pitas-7.svg (the index as it
+// is, so that a script finds variant i without knowing the sweep's size).
 std::string variant_file(const std::string& name, std::int64_t index, std::int64_t variants,
                          const std::string& extension);
 

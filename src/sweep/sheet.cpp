@@ -1,6 +1,7 @@
 #include "sweep/sheet.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -20,6 +21,20 @@ namespace pita::sweep {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A file name as a relative URL: percent-encoded but for unreserved characters.
+std::string url(std::string_view name) {
+  std::string out;
+  for (const char c : name) {
+    const auto u = static_cast<unsigned char>(c);
+    if (std::isalnum(u) || c == '-' || c == '_' || c == '.' || c == '~') {
+      out += c;
+    } else {
+      out += fmt::format("%{:02X}", u);
+    }
+  }
+  return out;
+}
 
 std::string html(std::string_view text) {
   std::string out;
@@ -79,7 +94,7 @@ if (wanted.has("sort")) {
 
 }  // namespace
 
-void write_index_html(const SheetInput& input, const std::vector<Row>& rows) {
+void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>& rows) {
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>pita sweep: {0}</title>\n"
       "<style>body{{font-family:sans-serif;margin:1em}} #grid{{display:flex;flex-wrap:wrap;gap:8px}} "
@@ -88,7 +103,7 @@ void write_index_html(const SheetInput& input, const std::vector<Row>& rows) {
       "word-break:break-all}}</style></head>\n<body>\n<h1>pita sweep of {0}</h1>\n",
       html(input.name));
   std::int64_t failed = 0;
-  for (const Row& r : rows) failed += r.ok() ? 0 : 1;
+  for (const auto& [index, r] : rows) failed += r.ok() ? 0 : 1;
   out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", rows.size(),
                      input.variants, failed, html(input.base_path));
   for (std::size_t k = 0; k < input.pointers.size(); ++k) {
@@ -105,7 +120,7 @@ void write_index_html(const SheetInput& input, const std::vector<Row>& rows) {
   }
   out += "</select></label> <select id=\"order\"><option value=\"asc\">ascending</option>"
          "<option value=\"desc\">descending</option></select></p>\n<div id=\"grid\">\n";
-  for (const Row& row : rows) {
+  for (const auto& [index, row] : rows) {
     out += fmt::format("<figure class=\"{}\" data-index=\"{}\"", row.ok() ? "ok" : "failed", row.index);
     for (std::size_t k = 0; k < row.values.size(); ++k) out += fmt::format(" data-v{}=\"{}\"", k, html(row.values[k]));
     std::string tip;
@@ -118,10 +133,10 @@ void write_index_html(const SheetInput& input, const std::vector<Row>& rows) {
     const std::string thumb = output_with(row, {"png", "svg"});
     const std::string full = output_with(row, {"svg", "png", "pdf"});
     if (!thumb.empty()) {
-      out += fmt::format("<a href=\"{0}\"><img loading=\"lazy\" src=\"{1}\" alt=\"variant {2}\"></a>", html(full),
-                         html(thumb), row.index);
+      out += fmt::format("<a href=\"{0}\"><img loading=\"lazy\" src=\"{1}\" alt=\"variant {2}\"></a>", url(full),
+                         url(thumb), row.index);
     } else if (!full.empty()) {
-      out += fmt::format("<a href=\"{}\">figure</a>", html(full));
+      out += fmt::format("<a href=\"{}\">figure</a>", url(full));
     }
     out += fmt::format("<figcaption>#{}", row.index);
     for (std::size_t k = 0; k < row.values.size() && k < input.pointers.size(); ++k) {
@@ -170,7 +185,7 @@ const scene::Color kFailed{0.8, 0.0, 0.0, 1.0};
 
 }  // namespace
 
-std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>& rows) {
+std::string write_contact_sheet(const SheetInput& input, const std::map<std::int64_t, Row>& rows) {
   if (input.variants > kMaxContactCells) {
     return fmt::format("contact.svg and contact.png not drawn: {} variants is more than {} on one picture (see "
                        "index.html)",
@@ -179,16 +194,34 @@ std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>&
   if (input.variants == 0) return "";
   // Two axes of a product: a row per value of the first, a column per value
   // of the second; otherwise the variants in index order, row by row.
-  const bool two_d = !input.zip && input.axis_sizes.size() == 2;
+  // (Axes of one value do not count: 1 x 12 is a one-parameter sweep.) A
+  // grid wider than kMaxContactColumns falls back to rows of the index order.
+  std::vector<std::size_t> varying;
+  for (std::size_t k = 0; k < input.axis_sizes.size(); ++k) {
+    if (input.axis_sizes[k] > 1) varying.push_back(k);
+  }
   const auto n = static_cast<std::size_t>(input.variants);
-  const std::size_t columns = two_d ? input.axis_sizes[1] : static_cast<std::size_t>(std::ceil(std::sqrt(n)));
-  const std::size_t rows_count = two_d ? input.axis_sizes[0] : (n + columns - 1) / columns;
+  const bool two_d = !input.zip && varying.size() == 2 && input.axis_sizes[varying[1]] <= kMaxContactColumns;
+  const std::size_t row_axis = two_d ? varying[0] : 0, column_axis = two_d ? varying[1] : 0;
+  const std::size_t columns = two_d ? input.axis_sizes[column_axis] : static_cast<std::size_t>(std::ceil(std::sqrt(n)));
+  const std::size_t rows_count = two_d ? input.axis_sizes[row_axis] : (n + columns - 1) / columns;
   const double cell_w = std::clamp(2400.0 / static_cast<double>(columns), 120.0, 320.0);
   // The cell's shape from the first variant that has a figure.
   double aspect = 0.75;
   std::vector<const Row*> by_index(n, nullptr);
-  for (const Row& r : rows) {
+  for (const auto& [index, r] : rows) {
     if (r.index >= 0 && static_cast<std::size_t>(r.index) < n) by_index[static_cast<std::size_t>(r.index)] = &r;
+  }
+  for (const Row* row : by_index) {
+    if (row == nullptr || !row->ok()) continue;
+    try {
+      const scene::Scene first = scene::parse_scene(
+          read_text(input.dir / variant_file(input.name, row->index, input.variants, "scene.json")), input.base_path);
+      aspect = std::clamp(static_cast<double>(first.canvas.height) / first.canvas.width, 0.25, 2.0);
+    } catch (const std::exception&) {
+      continue;
+    }
+    break;
   }
   const double cell_h = cell_w * aspect;
   const double left = two_d ? 110.0 : 8.0;
@@ -214,7 +247,7 @@ std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>&
     cairo_paint(cr);
     std::string title = fmt::format("pita sweep of {}: ", input.name);
     for (std::size_t k = 0; k < input.pointers.size(); ++k) title += (k ? ", " : "") + input.pointers[k];
-    if (two_d) title += fmt::format("  (rows: {}, columns: {})", input.pointers[0], input.pointers[1]);
+    if (two_d) title += fmt::format("  (rows: {}, columns: {})", input.pointers[row_axis], input.pointers[column_axis]);
     render::paint_text(cr, title, "Sans Bold", 14, kInk, 8, 8, render::TextAlign::left);
   });
   for (std::size_t i = 0; i < n; ++i) {
@@ -223,18 +256,18 @@ std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>&
     const Row* row = by_index[i];
     std::string label = fmt::format("#{}", i);
     if (row != nullptr && !two_d) {
-      for (const std::string& v : row->values) label += " " + v;
+      for (std::size_t k = 0; k < row->values.size(); ++k) label += (k == 0 ? ": " : ", ") + row->values[k];
     }
     if (two_d && row != nullptr) {
       if (c == 0) {
         each([&](cairo_t* cr) {
-          render::paint_text(cr, row->values[0], "Sans", kFontSize, kInk, left - 8, y + cell_h / 2 - 6,
+          render::paint_text(cr, row->values[row_axis], "Sans", kFontSize, kInk, left - 8, y + cell_h / 2 - 6,
                              render::TextAlign::right);
         });
       }
       if (r == 0) {
         each([&](cairo_t* cr) {
-          render::paint_text(cr, row->values[1], "Sans", kFontSize, kInk, x + cell_w / 2, kTitle,
+          render::paint_text(cr, row->values[column_axis], "Sans", kFontSize, kInk, x + cell_w / 2, kTitle,
                              render::TextAlign::center);
         });
       }
@@ -275,16 +308,25 @@ std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>&
     });
   }
   for (Context& c : contexts) c.reset();
-  cairo_surface_flush(png.get());
-  if (cairo_surface_write_to_png_stream(png.get(), append, &png_bytes) != CAIRO_STATUS_SUCCESS) {
-    return "contact.png not drawn: cairo could not encode it";
-  }
+  std::vector<std::pair<fs::path, std::string>> files;
+  std::string why;
   cairo_surface_finish(svg.get());
-  if (cairo_surface_status(svg.get()) != CAIRO_STATUS_SUCCESS) return "contact.svg not drawn: cairo failed";
-  const std::vector<std::pair<fs::path, std::string>> files = {{input.dir / "contact.svg", render::canonical_svg_ids(svg_bytes)},
-                                                               {input.dir / "contact.png", png_bytes}};
+  if (cairo_surface_status(svg.get()) == CAIRO_STATUS_SUCCESS) {
+    files.emplace_back(input.dir / "contact.svg", render::canonical_svg_ids(svg_bytes));
+  } else {
+    why = fmt::format("contact.svg not drawn: cairo: {}", cairo_status_to_string(cairo_surface_status(svg.get())));
+  }
+  cairo_surface_flush(png.get());
+  const cairo_status_t png_status = cairo_surface_status(png.get()) != CAIRO_STATUS_SUCCESS
+                                        ? cairo_surface_status(png.get())
+                                        : cairo_surface_write_to_png_stream(png.get(), append, &png_bytes);
+  if (png_status == CAIRO_STATUS_SUCCESS) {
+    files.emplace_back(input.dir / "contact.png", png_bytes);
+  } else {
+    why += fmt::format("{}contact.png not drawn: cairo: {}", why.empty() ? "" : "; ", cairo_status_to_string(png_status));
+  }
   render::write_files_atomically(files);
-  return "";
+  return why;
 }
 
 }  // namespace pita::sweep

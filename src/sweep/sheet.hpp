@@ -15,7 +15,9 @@ namespace pita::sweep {
 
 // A contact picture holds at most this many variants; a larger sweep gets
 // the HTML index only (said in the summary).
-inline constexpr std::int64_t kMaxContactCells = 400;
+inline constexpr std::int64_t kMaxContactCells = 256;
+// Columns of a two-parameter grid: a wider second axis is laid out in rows.
+inline constexpr std::size_t kMaxContactColumns = 40;
 
 struct SheetInput {
   std::filesystem::path dir;
@@ -29,11 +31,11 @@ struct SheetInput {
 };
 
 // DIR/index.html from the manifest rows (sorted by index). Atomic.
-void write_index_html(const SheetInput& input, const std::vector<Row>& rows);
+void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>& rows);
 
 // DIR/contact.svg and DIR/contact.png, each variant's figure redrawn from its
 // scene file DIR/<name>-<index>.scene.json; a failed or missing variant is an
 // empty cell marked so. Returns "" or why nothing was drawn. Atomic.
-std::string write_contact_sheet(const SheetInput& input, const std::vector<Row>& rows);
+std::string write_contact_sheet(const SheetInput& input, const std::map<std::int64_t, Row>& rows);
 
 }  // namespace pita::sweep

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <regex>
+#include <system_error>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -38,6 +40,10 @@ constexpr std::string_view kSweepFile = "sweep.json";
 // A running sweep rewrites its manifest this often, so that even a killed
 // process (SIGKILL, a lost node) leaves a manifest of most of what finished.
 constexpr auto kManifestInterval = std::chrono::seconds(5);
+// Failed variants listed in the summary (the manifest has them all), and
+// ranges of missing variants --merge reports.
+constexpr std::size_t kMaxFailuresKept = 1000;
+constexpr std::size_t kMaxRangesKept = 1000;
 
 struct KindInfo {
   OutputKind kind;
@@ -112,6 +118,8 @@ struct Definition {
   bool zip = false;
   std::vector<std::string> formats;
   std::int64_t variants = 0;
+  std::string salt;   // what else the content hashes cover (formats, pita's version)
+  Json base;          // the base scene's document: --merge rebuilds each variant's hash from it
 };
 
 std::string definition_json(const Definition& d) {
@@ -125,6 +133,8 @@ std::string definition_json(const Definition& d) {
   j["zip"] = d.zip;
   j["formats"] = d.formats;
   j["variants"] = d.variants;
+  j["salt"] = d.salt;
+  j["base"] = d.base;
   return j.dump(2) + "\n";
 }
 
@@ -148,7 +158,10 @@ Definition read_definition(const fs::path& dir) {
     d.zip = j.at("zip").get<bool>();
     d.formats = j.at("formats").get<std::vector<std::string>>();
     d.variants = j.at("variants").get<std::int64_t>();
-    if (d.name.empty() || d.name.find('/') != std::string::npos || d.variants < 0) throw std::runtime_error("bad name");
+    d.salt = j.at("salt").get<std::string>();
+    d.base = j.at("base");
+    if (d.name.empty() || d.name.find('/') != std::string::npos) throw std::runtime_error("bad name");
+    if (d.variants < 0 || d.variants > kMaxVariants) throw std::runtime_error("bad variant count");
     return d;
   } catch (const std::exception& error) {
     throw SweepUsageError(fmt::format("--merge {}: {} is not a sweep definition ({})", dir.string(),
@@ -176,7 +189,7 @@ SheetInput sheet_input(const fs::path& dir, const Definition& d) {
 }
 
 // Writes the manifest, index and contact sheet of `rows` (an unsharded run, or a merge).
-void write_reports(const fs::path& dir, const Definition& d, const std::vector<Row>& rows,
+void write_reports(const fs::path& dir, const Definition& d, const std::map<std::int64_t, Row>& rows,
                    std::vector<std::string>& notes) {
   const SheetInput input = sheet_input(dir, d);
   render::write_file_atomically(dir / "manifest.csv", manifest_csv(input.pointers, rows));
@@ -212,11 +225,13 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
   const std::string text = variant_text(variant_document(job.base, job.grid, values));
   row.hash = content_hash(text, job.salt);
   const std::int64_t variants = job.grid.size();
+  const std::string scene_file = variant_file(job.name, index, variants, "scene.json");
   try {
+    // Read as if it were the base scene's file (relative image paths), named
+    // in messages as the variant's own file.
     const scene::Scene scene = scene::parse_scene(text, job.base.path);
     motion::check_motions(scene);
     std::vector<std::pair<fs::path, std::string>> files;
-    const std::string scene_file = variant_file(job.name, index, variants, "scene.json");
     files.emplace_back(job.dir / scene_file, text);
     row.outputs.push_back(scene_file);
     std::optional<render::Figure> figure;
@@ -244,10 +259,20 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     row.outputs.clear();
     write_failed = true;
   } catch (const std::exception& error) {
-    row.status = error.what();
+    std::string message = error.what();
+    const std::string prefix = job.base.path + ": ";
+    if (message.starts_with(prefix)) message = scene_file + ": " + message.substr(prefix.size());
+    row.status = message;
     row.outputs.clear();
     row.metrics = {};
     remove_outputs(job.dir, job.name, index, variants);
+    // The failed variant's scene stays, to reproduce the error by hand.
+    try {
+      render::write_file_atomically(job.dir / scene_file, text);
+      row.outputs.push_back(scene_file);
+    } catch (const render::OutputError&) {
+      write_failed = true;
+    }
   }
   return row;
 }
@@ -290,32 +315,26 @@ std::vector<OutputKind> parse_output_kinds(const std::string& text) {
 
 std::pair<int, int> parse_shard(const std::string& text) {
   const std::size_t slash = text.find('/');
-  int k = -1, n = -1;
-  try {
-    std::size_t used_k = 0, used_n = 0;
-    if (slash == std::string::npos) throw std::invalid_argument("no slash");
-    k = std::stoi(text.substr(0, slash), &used_k);
-    n = std::stoi(text.substr(slash + 1), &used_n);
-    if (used_k != slash || used_n != text.size() - slash - 1) throw std::invalid_argument("trailing");
-  } catch (const std::exception&) {
+  const auto digits = [](std::string_view t) {
+    return !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string_view::npos;
+  };
+  if (slash == std::string::npos || !digits(std::string_view(text).substr(0, slash)) ||
+      !digits(std::string_view(text).substr(slash + 1))) {
     throw SweepUsageError(fmt::format("--shard: expected K/N with whole numbers 0 <= K < N, for example 0/4 "
                                       "(got \"{}\")",
                                       text));
   }
-  if (n < 1 || k < 0 || k >= n) {
+  const int k = std::stoi(text.substr(0, slash)), n = std::stoi(text.substr(slash + 1));
+  if (n < 1 || k >= n) {
     throw SweepUsageError(fmt::format("--shard {}: K must be in 0..N-1 and N >= 1 (got K = {}, N = {})", text, k, n));
   }
   return {k, n};
 }
 
-std::string index_ranges(const std::vector<std::int64_t>& indices) {
+std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>>& ranges) {
   std::string out;
-  for (std::size_t i = 0; i < indices.size();) {
-    std::size_t j = i;
-    while (j + 1 < indices.size() && indices[j + 1] == indices[j] + 1) ++j;
-    out += fmt::format("{}{}", out.empty() ? "" : ", ",
-                       j == i ? std::to_string(indices[i]) : fmt::format("{}-{}", indices[i], indices[j]));
-    i = j + 1;
+  for (const auto& [first, last] : ranges) {
+    out += fmt::format("{}{}", out.empty() ? "" : ", ", first == last ? std::to_string(first) : fmt::format("{}-{}", first, last));
   }
   return out;
 }
@@ -346,10 +365,11 @@ SweepSummary run_sweep(const SweepOptions& options) {
   definition.zip = grid.zip();
   for (const OutputKind k : options.formats) definition.formats.emplace_back(name_of(k));
   definition.variants = grid.size();
-  render::write_file_atomically(dir / kSweepFile, definition_json(definition));
+  definition.salt = "pita " + options.version;
+  for (const std::string& f : definition.formats) definition.salt += " " + f;
+  definition.base = base.document;
 
-  std::string salt = "pita " + options.version;
-  for (const std::string& f : definition.formats) salt += " " + f;
+  const std::string& salt = definition.salt;
   const Job job{options, grid, base, dir, definition.name, salt};
   const std::vector<std::string> pointers = pointers_of(definition);
   const std::string manifest = manifest_name(options.shard);
@@ -358,68 +378,101 @@ SweepSummary run_sweep(const SweepOptions& options) {
   const std::int64_t mine = variants > shard_k ? (variants - shard_k + shard_n - 1) / shard_n : 0;
 
   // Resume: rows of an earlier run whose variant is unchanged and whose
-  // outputs are all there are kept; the others are done again.
+  // outputs are all there are kept; the others are done again. A manifest of
+  // another sweep (other pointers) is refused before anything is written.
   std::map<std::int64_t, Row> table;
   SweepSummary summary;
   summary.variants = mine;
-  if (!options.force) {
-    if (auto old = read_manifest(dir / manifest, pointers)) {
-      for (Row& row : *old) {
-        if (row.index < 0 || row.index >= variants || row.index % shard_n != shard_k || !row.ok()) continue;
-        if (!outputs_exist(dir, row)) continue;
-        const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
-        if (content_hash(text, salt) != row.hash) continue;
-        table.emplace(row.index, std::move(row));
-      }
+  std::optional<std::vector<Row>> old;
+  try {
+    old = read_manifest(dir / manifest, pointers);
+  } catch (const std::runtime_error& error) {
+    if (!options.force) {
+      throw SweepUsageError(fmt::format("-o {}: {} (or --force to start this sweep over there)", options.output,
+                                        error.what()));
     }
   }
+  if (old && !options.force) {
+    for (Row& row : *old) {
+      if (row.index < 0 || row.index >= variants || row.index % shard_n != shard_k || !row.ok()) continue;
+      if (!outputs_exist(dir, row)) continue;
+      const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
+      if (content_hash(text, salt) != row.hash) continue;
+      table.emplace(row.index, std::move(row));
+    }
+  }
+  old.reset();
   summary.skipped = static_cast<std::int64_t>(table.size());
+  render::write_file_atomically(dir / kSweepFile, definition_json(definition));
 
   std::mutex mutex;
   std::condition_variable finished;
   std::atomic<std::int64_t> next{0};
   std::atomic<bool> stop{false};
-  std::int64_t done = summary.skipped;
+  std::int64_t done = 0;  // in this run (resumed variants are not counted)
   int running = 0;
   bool write_failed = false;
-  const auto write_manifest = [&] {
-    std::vector<Row> rows;
-    {
-      const std::lock_guard lock(mutex);
-      rows.reserve(table.size());
-      for (const auto& [index, row] : table) rows.push_back(row);
-    }
-    render::write_file_atomically(dir / manifest, manifest_csv(pointers, rows));
+  const auto manifest_text = [&] {
+    const std::lock_guard lock(mutex);
+    return manifest_csv(pointers, table);
   };
 
-  animate::Progress progress("pita sweep", static_cast<int>(std::min<std::int64_t>(mine, INT32_MAX)), !options.quiet,
-                             true);
+  const auto work = static_cast<int>(std::min<std::int64_t>(mine - summary.skipped, INT32_MAX));
+  animate::Progress progress("pita sweep", work, !options.quiet, true);
   {
     const render::DeferredInterrupts deferred;
     const int threads = static_cast<int>(std::min<std::int64_t>(options.jobs, std::max<std::int64_t>(mine, 1)));
     std::vector<std::thread> pool;
-    running = threads;
-    for (int t = 0; t < threads; ++t) {
-      pool.emplace_back([&] {
-        bool failed_write = false;
-        while (!stop.load() && render::pending_interrupt() == 0) {
-          const std::int64_t j = next.fetch_add(1);
-          const std::int64_t index = shard_k + j * shard_n;
-          if (j >= mine) break;
-          {
-            const std::lock_guard lock(mutex);
-            if (table.contains(index)) continue;  // resumed
-          }
-          Row row = run_variant(job, index, failed_write);
+    // Joins whatever was started, also when the main thread throws.
+    struct Joiner {
+      std::vector<std::thread>& pool;
+      std::atomic<bool>& stop;
+      ~Joiner() {
+        stop = true;
+        for (std::thread& t : pool) {
+          if (t.joinable()) t.join();
+        }
+      }
+    } joiner{pool, stop};
+    const auto worker = [&] {
+      bool failed_write = false;
+      while (!stop.load() && render::pending_interrupt() == 0) {
+        const std::int64_t j = next.fetch_add(1);
+        if (j >= mine) break;
+        const std::int64_t index = shard_k + j * shard_n;
+        {
           const std::lock_guard lock(mutex);
-          table[index] = std::move(row);
-          ++done;
+          if (table.contains(index)) continue;  // resumed
+        }
+        Row row;
+        try {
+          row = run_variant(job, index, failed_write);
+        } catch (const std::exception& error) {
+          // Nothing a variant does may end the sweep: it is a failed row.
+          row.index = index;
+          row.values.assign(pointers.size(), "");
+          row.status = fmt::format("internal error: {}", error.what());
         }
         const std::lock_guard lock(mutex);
-        write_failed = write_failed || failed_write;
-        --running;
-        finished.notify_all();
-      });
+        table[index] = std::move(row);
+        ++done;
+      }
+      const std::lock_guard lock(mutex);
+      write_failed = write_failed || failed_write;
+      --running;
+      finished.notify_all();
+    };
+    for (int t = 0; t < threads; ++t) {
+      try {
+        pool.emplace_back(worker);
+        const std::lock_guard lock(mutex);
+        ++running;
+      } catch (const std::system_error& error) {
+        if (pool.empty()) {
+          throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options.jobs, error.what()));
+        }
+        break;  // fewer threads than asked
+      }
     }
     auto last_write = std::chrono::steady_clock::now();
     std::unique_lock lock(mutex);
@@ -430,7 +483,11 @@ SweepSummary run_sweep(const SweepOptions& options) {
       progress.update(static_cast<int>(std::min<std::int64_t>(now_done, INT32_MAX)));
       if (render::pending_interrupt() != 0) stop = true;
       if (std::chrono::steady_clock::now() - last_write > kManifestInterval) {
-        write_manifest();
+        try {
+          render::write_file_atomically(dir / manifest, manifest_text());
+        } catch (const render::OutputError&) {
+          // Said at the end, where the manifest is written once more.
+        }
         last_write = std::chrono::steady_clock::now();
       }
       lock.lock();
@@ -440,31 +497,31 @@ SweepSummary run_sweep(const SweepOptions& options) {
     if (const int sig = render::pending_interrupt()) {
       // Complete files only (each variant's set is written all or none), and
       // the manifest of every variant that finished: rerunning completes it.
-      write_manifest();
+      try {
+        render::write_file_atomically(dir / manifest, manifest_text());
+      } catch (const render::OutputError&) {
+      }
       render::exit_interrupted(sig);
     }
   }
   progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
   summary.write_failed = write_failed;
 
-  std::vector<Row> rows;
-  rows.reserve(table.size());
-  for (auto& [index, row] : table) {
+  for (const auto& [index, row] : table) {
     if (row.ok()) {
       ++summary.ok;
     } else {
       ++summary.failed;
-      summary.failures.push_back(failure_line(pointers, row));
+      if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
     }
-    rows.push_back(std::move(row));
   }
   summary.ok -= summary.skipped;
   if (options.shard) {
-    render::write_file_atomically(dir / manifest, manifest_csv(pointers, rows));
+    render::write_file_atomically(dir / manifest, manifest_csv(pointers, table));
     summary.notes.push_back(fmt::format("shard {}/{}: join the shards with pita sweep --merge {}", shard_k, shard_n,
                                         options.output));
   } else {
-    write_reports(dir, definition, rows, summary.notes);
+    write_reports(dir, definition, table, summary.notes);
   }
   return summary;
 }
@@ -474,16 +531,24 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
   const fs::path dir(dir_text);
   const Definition definition = read_definition(dir);
   const std::vector<std::string> pointers = pointers_of(definition);
+  // The sweep again, from its definition: each row of the parts must be its
+  // variant (same values, same content hash), else it is another sweep's.
+  std::vector<Axis> axes;
+  for (const auto& [pointer, spec] : definition.axes) axes.push_back(parse_axis(pointer + "=" + spec));
+  const Grid grid(std::move(axes), definition.zip);
+  if (grid.size() != definition.variants) {
+    throw SweepUsageError(fmt::format("--merge {}: {} does not add up ({} variants, its axes make {})", dir_text,
+                                      kSweepFile, definition.variants, grid.size()));
+  }
+  const BaseScene base{definition.scene, definition.base};
   MergeSummary summary;
   summary.variants = definition.variants;
   std::map<std::int64_t, Row> table;
   std::vector<fs::path> parts;
   std::error_code error;
+  static const std::regex kPart(R"(manifest\.[0-9]+-of-[0-9]+\.csv)");
   for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
-    const std::string file = entry.path().filename().string();
-    if (file.starts_with("manifest.") && file.ends_with(".csv") && file.find("-of-") != std::string::npos) {
-      parts.push_back(entry.path());
-    }
+    if (std::regex_match(entry.path().filename().string(), kPart)) parts.push_back(entry.path());
   }
   std::sort(parts.begin(), parts.end());
   if (parts.empty()) {
@@ -496,27 +561,41 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
     try {
       rows = read_manifest(part, pointers);
     } catch (const std::runtime_error& e) {
-      throw SweepUsageError(fmt::format("--merge: {}", e.what()));
+      summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
+      continue;
     }
     summary.parts.push_back(part.filename().string());
     for (Row& row : *rows) {
       if (row.index < 0 || row.index >= definition.variants) continue;
+      const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
+      if (row.hash != content_hash(text, definition.salt)) {
+        ++summary.foreign;
+        continue;
+      }
       auto found = table.find(row.index);
       // A row that succeeded wins over a failed one of another part.
       if (found == table.end() || (!found->second.ok() && row.ok())) table[row.index] = std::move(row);
     }
   }
-  std::vector<Row> rows;
+  if (summary.foreign > 0) {
+    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
+                                        "{}'s) and were ignored",
+                                        summary.foreign, kSweepFile));
+  }
   std::int64_t expected = 0;
-  for (auto& [index, row] : table) {
-    while (expected < index) summary.missing.push_back(expected++);
+  const auto missing = [&](std::int64_t from, std::int64_t to) {  // [from, to)
+    if (from >= to) return;
+    summary.missing_count += to - from;
+    if (summary.missing.size() < kMaxRangesKept) summary.missing.emplace_back(from, to - 1);
+  };
+  for (const auto& [index, row] : table) {
+    missing(expected, index);
     expected = index + 1;
     if (!row.ok()) ++summary.failed;
-    rows.push_back(std::move(row));
   }
-  while (expected < definition.variants) summary.missing.push_back(expected++);
-  summary.rows = static_cast<std::int64_t>(rows.size());
-  write_reports(dir, definition, rows, summary.notes);
+  missing(expected, definition.variants);
+  summary.rows = static_cast<std::int64_t>(table.size());
+  write_reports(dir, definition, table, summary.notes);
   return summary;
 }
 

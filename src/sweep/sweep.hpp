@@ -57,7 +57,9 @@ struct MergeSummary {
   std::int64_t variants = 0;
   std::int64_t rows = 0;
   std::int64_t failed = 0;
-  std::vector<std::int64_t> missing;
+  std::int64_t foreign = 0;        // rows of another sweep, ignored
+  std::int64_t missing_count = 0;  // variants in no part
+  std::vector<std::pair<std::int64_t, std::int64_t>> missing;  // their first ranges [first, last]
   std::vector<std::string> parts;  // the manifest parts joined
   std::vector<std::string> notes;
 };
@@ -66,7 +68,7 @@ struct MergeSummary {
 // and contact.*. Throws SweepUsageError when DIR holds no sweep.
 MergeSummary merge_sweep(const std::string& dir, bool quiet);
 
-// "0-3, 7, 9-11": indices as ranges.
-std::string index_ranges(const std::vector<std::int64_t>& indices);
+// "0-3, 7, 9-11": ranges [first, last] as text.
+std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>>& ranges);
 
 }  // namespace pita::sweep

@@ -87,7 +87,17 @@ void set_at(Json& document, const Axis& axis, const std::vector<std::string>& to
         (*at)[token] = value;
         return;
       }
-      if (!at->contains(token)) (*at)[token] = Json::object();
+      if (!at->contains(token)) {
+        // A missing member is created as an object; an array cannot be made
+        // up, element by element, from a pointer.
+        if (is_index(tokens[i + 1]) || tokens[i + 1] == "-") {
+          throw SweepUsageError(fmt::format("--vary {}={}: {} has no \"{}\", and a pointer cannot create an array; "
+                                            "the nearest pointer that exists is {}",
+                                            axis.pointer, axis.spec, walked.empty() ? "the scene" : walked, token,
+                                            nearest_pointer(base, tokens_of(axis.pointer))));
+        }
+        (*at)[token] = Json::object();
+      }
       at = &(*at)[token];
     } else if (at->is_array()) {
       if (!is_index(token) || token.size() > 18 || std::stoull(token) >= at->size()) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -179,12 +180,67 @@ TEST(Sweep, ShardsMergeIntoTheUnshardedRun) {
   EXPECT_EQ(run_pita({"sweep", "--merge", "whole"}, dir.path()).exit_code, 2);  // no parts there
 }
 
+TEST(Sweep, MergeIgnoresTheRowsOfAnotherSweep) {
+  // Shards of an earlier sweep left in the folder (other values, other N)
+  // must not be merged into this one.
+  ScratchDir dir;
+  const auto run = [&](const std::string& spec, const std::vector<std::string>& extra) {
+    std::vector<std::string> a = {"sweep", kFig13, "--vary", "/keyframes/1/m=" + spec, "--format", "csv", "-q"};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_pita(a, dir.path());
+  };
+  ASSERT_EQ(run("0.5:1.5:5", {"-o", "d", "--shard", "0/2"}).exit_code, 0);
+  ASSERT_EQ(run("0.5:1.5:5", {"-o", "d", "--shard", "1/2"}).exit_code, 0);
+  for (const std::string k : {"0", "1", "2"}) ASSERT_EQ(run("0.6,0.7,0.8,0.9,1", {"-o", "d", "--shard", k + "/3"}).exit_code, 0);
+  ASSERT_EQ(run("0.6,0.7,0.8,0.9,1", {"-o", "whole"}).exit_code, 0);
+  const RunResult merged = run_pita({"sweep", "--merge", "d"}, dir.path());
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_NE(merged.err.find("belong to another sweep"), std::string::npos) << merged.err;
+  EXPECT_EQ(read_file(dir.path() / "d/manifest.csv"), read_file(dir.path() / "whole/manifest.csv"));
+}
+
+TEST(Sweep, AFolderOfAnotherSweepIsRefusedUnlessForced) {
+  ScratchDir dir;
+  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5:1.5:3", "-o", "d", "-q"}, dir.path()).exit_code, 0);
+  const std::string definition = read_file(dir.path() / "d/sweep.json");
+  const RunResult other = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.3,0.5", "-o", "d", "-q"}, dir.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("not the manifest of this sweep"), std::string::npos) << other.err;
+  EXPECT_EQ(read_file(dir.path() / "d/sweep.json"), definition);  // nothing written
+  const RunResult forced =
+      run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.3,0.5", "-o", "d", "-q", "--force"}, dir.path());
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+}
+
+TEST(Sweep, TinyValuesListsOfStringsAndFileModes) {
+  ScratchDir dir;
+  const mode_t old = ::umask(022);
+  // Subnormal values between the ends are numbers like any other.
+  const RunResult tiny = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/w=0:1e-307:40", "-o", "tiny", "--format",
+                                   "csv,json", "--jobs", "2", "-q"},
+                                  dir.path());
+  ::umask(old);
+  EXPECT_EQ(tiny.exit_code, 0) << tiny.err;
+  // Two threads write at once: every file gets the umask's mode, 0644.
+  for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "tiny")) {
+    EXPECT_EQ(e.status().permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read)
+        << e.path();
+  }
+  // JSON strings in a list: commas and quotes inside, a string that looks like a number.
+  const RunResult titles = run_pita({"sweep", kFig13, "--vary", R"(/title="a, \"b\"",c,"1")", "-o", "t", "-q"},
+                                    dir.path());
+  ASSERT_EQ(titles.exit_code, 0) << titles.err << titles.out;
+  EXPECT_EQ(Json::parse(read_file(dir.path() / "t/fig13-knot-ratio-0.scene.json"))["title"], "a, \"b\"");
+  EXPECT_EQ(Json::parse(read_file(dir.path() / "t/fig13-knot-ratio-2.scene.json"))["title"], "1");
+}
+
 TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   ScratchDir dir;
-  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:300", "-o", "out",
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out",
                                          "--format", "svg", "--jobs", "2", "-q"};
   Started started = start_pita(args, dir.path());
-  const fs::path first = dir.path() / "out/fig13-knot-ratio-000.svg";
+  const fs::path first = dir.path() / "out/fig13-knot-ratio-0.svg";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!fs::exists(first) && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -195,12 +251,12 @@ TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   const std::string partial = read_file(dir.path() / "out/manifest.csv");
   const std::size_t rows = lines_of(partial).size() - 1;
   EXPECT_GE(rows, 1u);
-  EXPECT_LT(rows, 300u);
+  EXPECT_LT(rows, 150u);
   for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "out")) {
     EXPECT_NE(e.path().filename().string().front(), '.') << "a temporary is left: " << e.path();
   }
   for (const std::string& index : column(partial, 0)) {
-    EXPECT_TRUE(fs::exists(dir.path() / fmt::format("out/fig13-knot-ratio-{:03}.svg", std::stoi(index))));
+    EXPECT_TRUE(fs::exists(dir.path() / fmt::format("out/fig13-knot-ratio-{}.svg", index)));
   }
   const RunResult resumed = run_pita(args, dir.path());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
@@ -217,7 +273,10 @@ TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
   dir.write("bad.json", "{\"method\": \"P6\"}");
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
       {{"--vary", "/keyframes/7/t=0:1:3"}, "nearest pointer that exists is /keyframes/2/t"},
-      {{"--vary", "/keyframs/1/t=0:1:3"}, "did you mean \"keyframes\""},
+      {{"--vary", "/keyframs/1/t=0:1:3"}, "nearest pointer that exists is /keyframes/1/t"},
+      {{"--vary", "/keyframes/1/tt=0:1:3"}, "did you mean \"t\""},
+      {{"--vary", "/keyframes/1/w=log:1e-300:1e300:5"}, "not all finite"},
+      {{"--vary", "/keyframes/1/t=0:1:3", "--vary", "/keyframes/1/t=2,3"}, "varied twice"},
       {{"--vary", "/keyframes/1/t=0:1"}, "SPEC must be"},
       {{"--vary", "/keyframes/1/t=0:1:0"}, "must be >= 1"},
       {{"--vary", "/keyframes/1/t=0:1:5000", "--vary", "/keyframes/1/m=1:2:5000"}, "more than the limit"},

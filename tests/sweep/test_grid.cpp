@@ -57,9 +57,22 @@ TEST(Grid, ListsHoldNumbersStringsAndLiterals) {
   EXPECT_EQ(all(parse_axis("/method=P6")), std::vector<Json>{Json("P6")});
 }
 
+TEST(Grid, QuotedItemsAreJsonStrings) {
+  const std::vector<Json> v = all(parse_axis(R"(/title="a, b","say \"hi\"","1",plain,"x:y:3")"));
+  ASSERT_EQ(v.size(), 5u);
+  EXPECT_EQ(v[0], Json("a, b"));
+  EXPECT_EQ(v[1], Json("say \"hi\""));
+  EXPECT_EQ(v[2], Json("1"));
+  EXPECT_EQ(v[3], Json("plain"));
+  EXPECT_EQ(v[4], Json("x:y:3"));
+  EXPECT_THROW((void)parse_axis(R"(/title="open)"), SweepUsageError);
+  EXPECT_THROW((void)parse_axis(R"(/title="a"b)"), SweepUsageError);
+}
+
 TEST(Grid, MalformedSpecsAreUsageErrors) {
   for (const char* bad : {"/x", "x=1:2:3", "/x=", "/x=1:2", "/x=1:2:0", "/x=1:2:-4", "/x=1:2:2.5", "/x=a:2:3",
-                          "/x=1:inf:3", "/x=log:0:1:3", "/x=log:-1:1:3", "/x=1,,2", "/x=1:2:3:4", "/x=1:2:20000000",
+                          "/x=1:inf:3", "/x=log:0:1:3", "/x=log:-1:1:3", "/x=1,,2", "/x=1:2:3:4", "/x=1:2:20000000", "/x=-1e308:1e308:3",
+                          "/x=log:1e-300:1e300:5",
                           "/x~2=1,2"}) {
     EXPECT_THROW((void)parse_axis(bad), SweepUsageError) << bad;
   }

@@ -41,8 +41,11 @@ TEST(Variant, PointersThatCannotBeSetNameTheNearestOne) {
   EXPECT_NE(usage_error({"/keyframes/7/t=1,2"}).find("nearest pointer that exists is /keyframes/2/t"),
             std::string::npos);
   const std::string typo = usage_error({"/keyframs/1/t=1,2"});
-  EXPECT_NE(typo.find("did you mean \"keyframes\""), std::string::npos) << typo;
-  EXPECT_NE(typo.find("/keyframes/1/t"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("nearest pointer that exists is /keyframes/1/t"), std::string::npos) << typo;
+  // A missing member inside an existing object: the reader's "did you mean".
+  EXPECT_NE(usage_error({"/optoins=1,2"}).find("did you mean \"options\""), std::string::npos);
+  // Arrays are never made up: /points/0/t on a scene without points.
+  EXPECT_NE(usage_error({"/points/0/t=1,2"}).find("cannot create an array"), std::string::npos);
   EXPECT_NE(usage_error({"/keyframes/1/tt=1,2"}).find("did you mean \"t\""), std::string::npos);
   EXPECT_NE(usage_error({"/keyframes/1/t/x=1,2"}).find("not an object or array"), std::string::npos);
   EXPECT_EQ(usage_error({"/keyframes/1/t=1,2"}), "(accepted)");

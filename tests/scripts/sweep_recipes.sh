@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The two recipes of README "pita sweep" for more than one machine, run here:
+#  - scripts/slurm-sweep.sbatch: --submit calls sbatch for the job array and the
+#    dependent merge (a stand-in sbatch on PATH records the calls); each array
+#    task, run as Slurm would run it (SLURM_ARRAY_TASK_ID/COUNT set), then the
+#    merge give the manifest of the unsharded sweep;
+#  - the GNU parallel one-liner gives it too.
+# Usage: sweep_recipes.sh PITA_BINARY SOURCE_DIR
+set -euo pipefail
+pita="$1"
+root="$2"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+scene="$root/scenes/fig13-knot-ratio.json"
+args=(--vary /keyframes/1/t=0.2:0.8:5 --vary /method=P1,P6 --format svg,csv)
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$pita" sweep "$scene" "${args[@]}" -o whole -q >/dev/null
+
+# --submit: the calls it makes (a stand-in sbatch prints job ids).
+mkdir bin
+cat >bin/sbatch <<'FAKE'
+#!/usr/bin/env bash
+echo "$*" >>"$SBATCH_LOG"
+n=$(wc -l <"$SBATCH_LOG")
+echo "$((1000 + n));cluster"
+FAKE
+chmod +x bin/sbatch
+export SBATCH_LOG="$work/sbatch.log"
+PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 3 "$scene" slurm "${args[@]}" >submit.out
+grep -q -- "--parsable --array=0-2 $root/scripts/slurm-sweep.sbatch $scene slurm --vary /keyframes/1/t=0.2:0.8:5" sbatch.log ||
+  fail "the array job: $(cat sbatch.log)"
+grep -q -- "--dependency=afterok:1001 --wrap $pita sweep --merge slurm" sbatch.log || fail "the merge job: $(cat sbatch.log)"
+grep -q "job array 1001 (3 tasks) and the merge as job 1002" submit.out || fail "$(cat submit.out)"
+if PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" "$scene" slurm "${args[@]}" 2>err.txt; then
+  fail "outside an array the script must refuse"
+fi
+grep -q "not inside a Slurm job array" err.txt || fail "$(cat err.txt)"
+
+# The array's tasks as Slurm runs them, in any order, then the merge.
+for k in 2 0 1; do
+  SLURM_ARRAY_TASK_ID=$k SLURM_ARRAY_TASK_COUNT=3 PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" \
+    "$scene" slurm "${args[@]}" >/dev/null
+done
+"$pita" sweep --merge slurm >/dev/null
+cmp whole/manifest.csv slurm/manifest.csv || fail "Slurm shards merged differ from the unsharded sweep"
+cmp whole/contact.svg slurm/contact.svg || fail "the Slurm contact sheet differs"
+
+# GNU parallel, the README's one-liner.
+command -v parallel >/dev/null || fail "GNU parallel is not installed (Debian package parallel, in PITA_TEST_PACKAGES)"
+parallel --will-cite -j 2 "$pita" sweep "$scene" "${args[@]}" -o par --shard {}/4 -q ::: 0 1 2 3 >/dev/null &&
+  "$pita" sweep --merge par >/dev/null
+cmp whole/manifest.csv par/manifest.csv || fail "GNU parallel shards merged differ from the unsharded sweep"
+echo "ok: Slurm array + merge and GNU parallel + merge reproduce the unsharded sweep"
