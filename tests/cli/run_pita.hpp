@@ -46,6 +46,19 @@ inline std::string read_file(const std::filesystem::path& path) {
   return text.str();
 }
 
+// The lines of `text`, without their '\n' (no empty last line).
+inline std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
 // A fresh directory under the system temporary folder, removed at the end.
 class ScratchDir {
  public:

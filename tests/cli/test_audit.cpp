@@ -76,6 +76,19 @@ std::vector<std::pair<double, std::complex<double>>> eval_p(const fs::path& dir,
   return {{t, p}};
 }
 
+// The audit's unit of length for keyframes [A, B, C] as JSON: the largest
+// distance of an arrow's end from B's origin, or a magnitude.
+double extent_of(const Json& k) {
+  const std::complex<double> b{k[1]["p"][0].get<double>(), k[1]["p"][1].get<double>()};
+  double extent = 0;
+  for (const Json& x : k) {
+    const std::complex<double> p{x["p"][0].get<double>(), x["p"][1].get<double>()};
+    const double m = x["m"], w = x["w"];
+    extent = std::max({extent, std::abs(p - b), std::abs(p + std::polar(m, w) - b), m});
+  }
+  return extent;
+}
+
 TEST(Audit, SimilarityCounterexampleReplaysThroughEval) {
   // Independent of the audit's code: read S from the report, evaluate both
   // panels with pita eval, apply S by hand and measure the distance.
@@ -99,14 +112,7 @@ TEST(Audit, SimilarityCounterexampleReplaysThroughEval) {
     const auto p0 = eval_p(dir.path(), file, t, false, &q0)[0].second;
     const auto p1 = eval_p(dir.path(), file, t, true, &q1)[0].second;
     // The extent of the moved keyframes: the largest distance from B's origin.
-    const Json& k = c["counterpart"];
-    const std::complex<double> b{k[1]["p"][0].get<double>(), k[1]["p"][1].get<double>()};
-    double extent = 0;
-    for (const Json& x : k) {
-      const std::complex<double> p{x["p"][0].get<double>(), x["p"][1].get<double>()};
-      const double m = x["m"], w = x["w"];
-      extent = std::max({extent, std::abs(p - b), std::abs(p + std::polar(m, w) - b), m});
-    }
+    const double extent = extent_of(c["counterpart"]);
     const double measured = std::max(std::abs(S(p0) - p1), std::abs(S(q0) - q1)) / extent;
     EXPECT_NEAR(measured, cell["violation"].get<double>(), 1e-6 * cell["violation"].get<double>() + 1e-9);
     return;
@@ -141,13 +147,7 @@ TEST(Audit, OrderCounterexampleReplaysThroughEval) {
     std::complex<double> q0, q1;
     const auto p0 = eval_p(dir.path(), file, t, false, &q0)[0].second;
     const auto p1 = eval_p(dir.path(), file, t, true, &q1)[0].second;
-    const std::complex<double> b{k[1]["p"][0].get<double>(), k[1]["p"][1].get<double>()};
-    double extent = 0;
-    for (const Json& x : k) {
-      const std::complex<double> p{x["p"][0].get<double>(), x["p"][1].get<double>()};
-      const double m = x["m"], w = x["w"];
-      extent = std::max({extent, std::abs(p - b), std::abs(p + std::polar(m, w) - b), m});
-    }
+    const double extent = extent_of(k);
     const double distance = std::max(std::abs(p0 - p1), std::abs(q0 - q1));
     const double violation = cell["violation"];
     EXPECT_GT(distance / extent, 1e-3);

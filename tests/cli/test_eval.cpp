@@ -43,18 +43,6 @@ std::vector<double> times_of(const Json& document) {
   return times;
 }
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    lines.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return lines;
-}
-
 // ------------------------------------------------------------ good input
 
 TEST_F(Eval, GoodSceneGivesJsonFramesInKeyOrder) {

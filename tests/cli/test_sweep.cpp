@@ -29,18 +29,6 @@ namespace fs = std::filesystem;
 
 const std::string kFig13 = std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json";
 
-std::vector<std::string> lines_of(const std::string& text) {
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    const std::size_t end = text.find('\n', start);
-    lines.push_back(text.substr(start, end - start));
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return lines;
-}
-
 // The first field of each data row of a manifest (no field here is quoted
 // before the status).
 std::vector<std::string> column(const std::string& manifest, std::size_t k) {
