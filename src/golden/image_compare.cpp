@@ -9,14 +9,13 @@
 
 #include <fmt/format.h>
 
+#include "render/cairo_handles.hpp"
+
 namespace pita::golden {
 
 namespace {
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using Surface = render::SurfacePtr;
 
 struct Reader {
   std::string_view bytes;
@@ -31,10 +30,7 @@ cairo_status_t read_chunk(void* closure, unsigned char* data, unsigned int lengt
   return CAIRO_STATUS_SUCCESS;
 }
 
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
+constexpr auto append = render::append_to_string;
 
 std::uint32_t big_endian(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;

@@ -14,6 +14,7 @@
 
 #include "motion/moving_keyframes.hpp"
 #include "render/budget.hpp"
+#include "render/cairo_handles.hpp"
 #include "render/image_cache.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
@@ -23,19 +24,7 @@ namespace pita::render {
 
 namespace {
 
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+constexpr auto append = append_to_string;
 
 bool finite_transform(const ViewTransform& t) {
   return std::isfinite(t.scale) && std::isfinite(t.world_center.real()) &&

@@ -5,22 +5,15 @@
 
 #include <fmt/format.h>
 
+#include "render/cairo_handles.hpp"
 
 namespace pita::render {
 
-namespace {
-
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-
-}  // namespace
-
 cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
-  thread_local std::map<std::string, std::unique_ptr<cairo_surface_t, SurfaceDeleter>> cache;
+  thread_local std::map<std::string, SurfacePtr> cache;
   auto it = cache.find(path);
   if (it == cache.end()) {
-    std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(cairo_image_surface_create_from_png(path.c_str()));
+    SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
     const cairo_status_t status = cairo_surface_status(surface.get());
     if (status != CAIRO_STATUS_SUCCESS) {
       throw ImageError(fmt::format("cannot read the image \"{}\": {}", name,

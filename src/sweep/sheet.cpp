@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "render/figure.hpp"
+#include "render/cairo_handles.hpp"
 #include "render/output_file.hpp"
 #include "render/painter.hpp"
 #include "scene/scene.hpp"
@@ -155,19 +156,9 @@ void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>
 
 namespace {
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using Surface = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using Context = std::unique_ptr<cairo_t, ContextDeleter>;
-
-cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
+using Surface = render::SurfacePtr;
+using Context = render::ContextPtr;
+constexpr auto append = render::append_to_string;
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "scene/did_you_mean.hpp"
+#include "scene/json_reader.hpp"
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
@@ -14,20 +15,6 @@ namespace {
 bool is_index(const std::string& token) {
   return !token.empty() && token.find_first_not_of("0123456789") == std::string::npos &&
          (token.size() == 1 || token.front() != '0');
-}
-
-std::string escaped(const std::string& token) {
-  std::string out;
-  for (const char c : token) {
-    if (c == '~') {
-      out += "~0";
-    } else if (c == '/') {
-      out += "~1";
-    } else {
-      out += c;
-    }
-  }
-  return out;
 }
 
 // The tokens of a JSON Pointer, unescaped.
@@ -50,7 +37,7 @@ std::string nearest_pointer(const Json& document, const std::vector<std::string>
   for (const std::string& token : tokens) {
     if (at->is_object()) {
       if (at->contains(token)) {
-        nearest += "/" + escaped(token);
+        nearest = scene::detail::member_pointer(nearest, token);
         at = &(*at)[token];
         continue;
       }
@@ -59,7 +46,7 @@ std::string nearest_pointer(const Json& document, const std::vector<std::string>
       std::vector<std::string_view> views(names.begin(), names.end());
       const std::vector<std::string> close = scene::closest_names(token, views);
       if (close.empty()) break;
-      nearest += "/" + escaped(close.front());
+      nearest = scene::detail::member_pointer(nearest, close.front());
       at = &(*at)[close.front()];
     } else if (at->is_array() && !at->empty()) {
       const std::size_t last = at->size() - 1;
@@ -120,7 +107,7 @@ void set_at(Json& document, const Axis& axis, const std::vector<std::string>& to
                                         std::string(at->type_name()), token,
                                         nearest_pointer(base, tokens_of(axis.pointer))));
     }
-    walked += "/" + escaped(token);
+    walked = scene::detail::member_pointer(walked, token);
   }
 }
 
