@@ -117,6 +117,69 @@ TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
   EXPECT_EQ(status[1], "ok");
 }
 
+TEST(Sweep, NoSamIsAFailedRowAndPoseMetricsAreFilled) {
+  ScratchDir dir;
+  dir.write("poses.json", R"({"method": "SAM", "shapes": [{"outline": "F"}], "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 1], [0, 0.5, 1]]}]})");
+  // (-2, -0.5) gives two distinct negative eigenvalues: no SAM (no real logarithm).
+  const RunResult r = run_pita({"sweep", "poses.json", "--vary", "/poses/1/matrix/0/0=2,-2", "--vary",
+                                "/poses/1/matrix/1/1=0.5,-0.5", "--zip", "-o", "out", "--format", "csv", "-q"},
+                               dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("variant 1 (/poses/1/matrix/0/0 = -2, /poses/1/matrix/1/1 = -0.5): poses-1.scene.json: /poses: "
+                       "no SAM exists"),
+            std::string::npos)
+      << r.err;
+  const std::string manifest = read_file(dir.path() / "out/manifest.csv");
+  EXPECT_EQ(column(manifest, 3).at(0), "ok");
+  // Row 0 is a SAM: ARA (SAM paper Sec. 2.4) is 0 to rounding, and the area monotone.
+  const std::vector<std::string> header = [&] {
+    std::vector<std::string> h;
+    std::string line = lines_of(manifest).front();
+    for (std::size_t at = 0; at != std::string::npos;) {
+      const std::size_t comma = line.find(',', at);
+      h.push_back(line.substr(at, comma == std::string::npos ? comma : comma - at));
+      at = comma == std::string::npos ? comma : comma + 1;
+    }
+    return h;
+  }();
+  const auto at = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  EXPECT_LT(std::abs(std::stod(column(manifest, at("ara")).at(0))), 1e-9);
+  EXPECT_EQ(column(manifest, at("area_monotone")).at(0), "yes");
+  EXPECT_TRUE(fs::exists(dir.path() / "out/poses-1.scene.json"));  // kept, to reproduce the error
+  EXPECT_FALSE(fs::exists(dir.path() / "out/poses-1.csv"));
+}
+
+TEST(Sweep, ProgressBarOnATerminalLinesOffIt) {
+  if (::access("/usr/bin/script", X_OK) != 0) GTEST_SKIP() << "script(1) is not installed (util-linux)";
+  ScratchDir dir;
+  // A terminal (script(1) gives pita one), CI unset: the bar, redrawn with \r.
+  const std::string command = fmt::format(
+      "cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty' /dev/null 2>&1",
+      dir.path().string(), PITA_BINARY, kFig13);
+  FILE* pipe = ::popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string shown;
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) shown.append(buffer, n);
+  EXPECT_EQ(::pclose(pipe), 0) << shown;
+  EXPECT_NE(shown.find("\rpita sweep ["), std::string::npos) << shown;
+  EXPECT_NE(shown.find("20/20 (100%)"), std::string::npos) << shown;
+  // -q: no bar even there.
+  const std::string quiet = fmt::format(
+      "cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty2 -q' /dev/null 2>&1",
+      dir.path().string(), PITA_BINARY, kFig13);
+  pipe = ::popen(quiet.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  shown.clear();
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) shown.append(buffer, n);
+  EXPECT_EQ(::pclose(pipe), 0) << shown;
+  EXPECT_EQ(shown.find("pita sweep ["), std::string::npos) << shown;
+}
+
 TEST(Sweep, ResumesSkipsWhatIsDoneAndForceRedoesIt) {
   ScratchDir dir;
   const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.2:0.8:4", "-o", "out", "-q"};
