@@ -1,5 +1,6 @@
 #include "cli/render.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -182,10 +183,13 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* render = app.add_subcommand("render", "Draw the figures of scenes as SVG, PNG or PDF");
   render->footer(footer());
-  render->add_option("SCENE", options->scene_paths, "Scene files (JSON)")->required();
+  // Required unless --list: checked in run_render, with CLI11's words.
+  render->add_option("SCENE", options->scene_paths, "Scene files (JSON)");
   render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")
-      ->required()
       ->type_name("OUT");
+  render->add_flag("--list", options->list,
+                   "Print every scene (of the SCENE files and folders given, else of ./scenes) with its title and "
+                   "description, and render nothing");
   render->add_option_function<std::string>(
           "--format", [options](const std::string& list) { options->formats = list; },
           "Formats to write into the OUT directory, comma-separated: svg,png,pdf (default svg)")
@@ -229,7 +233,60 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   return options;
 }
 
+namespace {
+
+// --list: name, title and description of each scene, sorted by name.
+ExitCode list_scenes(const RenderOptions& options) {
+  std::vector<fs::path> files;
+  const std::vector<std::string> given =
+      options.scene_paths.empty() ? std::vector<std::string>{"scenes"} : options.scene_paths;
+  for (const std::string& path : given) {
+    std::error_code error;
+    if (fs::is_directory(path, error)) {
+      std::vector<fs::path> found;
+      for (const fs::directory_entry& entry : fs::directory_iterator(path, error)) {
+        if (entry.path().extension() == ".json") found.push_back(entry.path());
+      }
+      std::sort(found.begin(), found.end());
+      files.insert(files.end(), found.begin(), found.end());
+    } else {
+      files.emplace_back(path);
+    }
+  }
+  if (files.empty()) {
+    std::cerr << "pita: --list: no scene files (*.json) in " << fmt::format("{}", fmt::join(given, ", ")) << '\n';
+    return ExitCode::bad_input;
+  }
+  ExitCode result = ExitCode::success;
+  std::string text;
+  for (const fs::path& file : files) {
+    try {
+      const scene::Scene scene = scene::load_scene(file, {options.allow_absolute_paths});
+      text += fmt::format("{}\n", file.stem().string());
+      if (!scene.title.empty()) text += fmt::format("    {}\n", scene.title);
+      if (!scene.description.empty()) text += fmt::format("    {}\n", scene.description);
+    } catch (...) {
+      const Failure failure = current_failure(file.string());
+      std::cerr << "pita: " << failure.message << '\n';
+      result = worse(result, failure.code);
+    }
+  }
+  std::cout << text;
+  return result;
+}
+
+}  // namespace
+
 ExitCode run_render(const RenderOptions& options) {
+  if (options.list) return list_scenes(options);
+  if (options.scene_paths.empty()) {
+    std::cerr << "pita: SCENE is required\nRun 'pita render --help' for usage.\n";
+    return ExitCode::bad_input;
+  }
+  if (options.output.empty()) {
+    std::cerr << "pita: --output is required\nRun 'pita render --help' for usage.\n";
+    return ExitCode::bad_input;
+  }
   std::vector<render::Format> formats;
   double scale = 1.0;
   bool single_file = false;

@@ -30,11 +30,14 @@ struct RenderOptions {
   std::optional<double> duration;      // `pita animate` takes them (they space a trail's frames)
   std::optional<int> frames;
   bool allow_absolute_paths = false;   // --allow-absolute-paths: images by absolute paths
+  bool list = false;                   // --list: print each scene's name, title and description
 };
 
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app);
 
 // Renders every scene, even after one fails; exit 2 if any scene was bad.
+// With --list, prints the scenes (the files given, the *.json of the folders
+// given, else of ./scenes) with their titles and descriptions instead.
 ExitCode run_render(const RenderOptions& options);
 
 }  // namespace pita::cli

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "run_pita.hpp"
 
 namespace pita::test {
@@ -124,6 +126,37 @@ TEST(Render, BadFigureFieldsWriteNothing) {
     EXPECT_NE(r.err.find("bad.json: " + pointer), std::string::npos) << field << ": " << r.err;
     EXPECT_TRUE(!fs::exists(dir.path() / "out") || fs::is_empty(dir.path() / "out")) << field;
   }
+}
+
+TEST(Render, ListPrintsEveryScenesTitleAndDescription) {
+  const ScratchDir dir;
+  const fs::path scenes = fs::path(PITA_SOURCE_DIR) / "scenes";
+  const RunResult r = run_pita({"render", "--list", scenes.string()}, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::size_t count = 0;
+  for (const auto& entry : fs::directory_iterator(scenes)) {
+    if (entry.path().extension() != ".json") continue;
+    ++count;
+    const nlohmann::json scene = nlohmann::json::parse(read_file(entry.path()));
+    const std::string name = entry.path().stem().string() + "\n";
+    const std::size_t at = r.out.find(name);
+    ASSERT_NE(at, std::string::npos) << name;
+    if (scene.contains("description")) {
+      EXPECT_NE(r.out.find("    " + scene["description"].get<std::string>() + "\n", at), std::string::npos) << name;
+    }
+  }
+  EXPECT_GE(count, 30u);
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+  // Without --list, SCENE and -o are required as before.
+  const RunResult bare = run_pita({"render"}, dir.path());
+  EXPECT_EQ(bare.exit_code, 2);
+  EXPECT_EQ(bare.err.rfind("pita: SCENE is required\n", 0), 0u) << bare.err;
+  const RunResult no_output = run_pita({"render", "x.json"}, dir.path());
+  EXPECT_EQ(no_output.exit_code, 2);
+  EXPECT_NE(no_output.err.find("--output is required"), std::string::npos) << no_output.err;
+  // An empty folder has nothing to list.
+  fs::create_directory(dir.path() / "empty");
+  EXPECT_EQ(run_pita({"render", "--list", "empty"}, dir.path()).exit_code, 2);
 }
 
 TEST(Render, EveryStarterSceneRenders) {
