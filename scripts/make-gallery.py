@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""The README's figure gallery: a thumbnail of each scene's golden PNG, linked,
+with the scene's title, between the markers <!-- gallery:begin --> and
+<!-- gallery:end --> of README.md.
+
+  scripts/make-gallery.py           rewrite the gallery in README.md
+  scripts/make-gallery.py --check   exit 1 if it is not up to date (ctest docs.gallery)
+"""
+import json
+import pathlib
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+BEGIN, END = "<!-- gallery:begin -->", "<!-- gallery:end -->"
+COLUMNS = 3
+
+
+def gallery() -> str:
+    cells = []
+    for scene in sorted((ROOT / "scenes").glob("*.json")):
+        name = scene.stem
+        title = json.loads(scene.read_text()).get("title", name).replace("|", "\\|")
+        png = f"golden/{name}/{name}.png"
+        if not (ROOT / png).exists():
+            raise SystemExit(f"make-gallery: {png} is missing: write the goldens first (pita update-goldens)")
+        cells.append(f'<a href="{png}"><img src="{png}" width="260" alt="{name}"></a><br>`{name}`: {title}')
+    rows = ["| " + " | ".join([""] * COLUMNS) + " |", "|" + "---|" * COLUMNS]
+    for i in range(0, len(cells), COLUMNS):
+        chunk = cells[i:i + COLUMNS] + [""] * (COLUMNS - len(cells[i:i + COLUMNS]))
+        rows.append("| " + " | ".join(chunk) + " |")
+    return "\n".join([BEGIN, *rows, END])
+
+
+def main() -> int:
+    readme = ROOT / "README.md"
+    text = readme.read_text()
+    if BEGIN not in text or END not in text:
+        print(f"make-gallery: README.md has no {BEGIN} ... {END} section", file=sys.stderr)
+        return 1
+    start, end = text.index(BEGIN), text.index(END) + len(END)
+    updated = text[:start] + gallery() + text[end:]
+    if "--check" in sys.argv[1:]:
+        if updated != text:
+            print("make-gallery: README.md's gallery is out of date (a scene or its title changed): run "
+                  "scripts/make-gallery.py", file=sys.stderr)
+            return 1
+        return 0
+    readme.write_text(updated)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
