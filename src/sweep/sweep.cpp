@@ -462,12 +462,18 @@ SweepSummary run_sweep(const SweepOptions& options) {
       --running;
       finished.notify_all();
     };
+    {
+      const std::lock_guard lock(mutex);
+      running = threads;  // before any starts: a worker that ends at once counts down from here
+    }
     for (int t = 0; t < threads; ++t) {
       try {
         pool.emplace_back(worker);
-        const std::lock_guard lock(mutex);
-        ++running;
       } catch (const std::system_error& error) {
+        {
+          const std::lock_guard lock(mutex);
+          running -= threads - t;
+        }
         if (pool.empty()) {
           throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options.jobs, error.what()));
         }
