@@ -63,6 +63,11 @@ class Temporary {
   // are 0666 less the umask), then close, whose error may be the first news
   // of a full disk on some file systems.
   void write(std::string_view bytes, mode_t mode) {
+    append(bytes);
+    finish(mode);
+  }
+
+  void append(std::string_view bytes) {
     std::size_t written = 0;
     while (written < bytes.size()) {
       const ssize_t n = ::write(fd_, bytes.data() + written, bytes.size() - written);
@@ -72,6 +77,9 @@ class Temporary {
       }
       written += static_cast<std::size_t>(n);
     }
+  }
+
+  void finish(mode_t mode) {
     ::fchmod(fd_, mode);
     const int fd = fd_;
     fd_ = -1;
@@ -109,19 +117,25 @@ struct View {
   std::string_view bytes;
 };
 
-void write_all_or_none(const std::vector<View>& files) {
-  // umask(2) can only be read by setting it: done once (a thread-safe static),
-  // never while other threads write (a sweep's pool, an animation's frames),
-  // which would see the 0 set in between and create files of mode 666.
+// 0666 less the umask. umask(2) can only be read by setting it: done once (a
+// thread-safe static), never while other threads write (a sweep's pool, an
+// animation's frames), which would see the 0 set in between and create files
+// of mode 666.
+mode_t output_mode() {
   static const mode_t mask = [] {
     const mode_t m = ::umask(0);
     ::umask(m);
     return m;
   }();
+  return 0666 & ~mask;
+}
+
+void write_all_or_none(const std::vector<View>& files) {
+  const mode_t mode = output_mode();
   std::vector<std::unique_ptr<Temporary>> temporaries;
   // The destructors remove every temporary not renamed, whatever throws.
   for (const View& file : files) temporaries.push_back(std::make_unique<Temporary>(file.path));
-  for (std::size_t i = 0; i < files.size(); ++i) temporaries[i]->write(files[i].bytes, 0666 & ~mask);
+  for (std::size_t i = 0; i < files.size(); ++i) temporaries[i]->write(files[i].bytes, mode);
   for (const auto& temporary : temporaries) temporary->check_target();
   for (std::size_t i = 0; i < temporaries.size(); ++i) {
     try {
@@ -141,6 +155,31 @@ void write_all_or_none(const std::vector<View>& files) {
 }
 
 }  // namespace
+
+struct StreamingOutput::Impl {
+  explicit Impl(const fs::path& path) : temporary(path) {}
+  Temporary temporary;
+  std::string buffer;
+};
+
+StreamingOutput::StreamingOutput(const fs::path& path) : impl_(std::make_unique<Impl>(path)) {}
+StreamingOutput::~StreamingOutput() = default;
+
+void StreamingOutput::write(std::string_view bytes) {
+  impl_->buffer.append(bytes);
+  if (impl_->buffer.size() >= kBufferBytes) {
+    impl_->temporary.append(impl_->buffer);
+    impl_->buffer.clear();
+  }
+}
+
+void StreamingOutput::commit() {
+  impl_->temporary.append(impl_->buffer);
+  impl_->buffer.clear();
+  impl_->temporary.finish(output_mode());
+  impl_->temporary.check_target();
+  impl_->temporary.commit();
+}
 
 void write_file_atomically(const fs::path& path, std::string_view bytes) {
   write_all_or_none({View{path, bytes}});

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -32,5 +33,25 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 // set already renamed are removed too, so that no partial set remains.
 // Throws OutputError naming the file that failed and the reason.
 void write_files_atomically(std::span<const std::pair<std::filesystem::path, std::string>> files);
+
+// One file written piece by piece (a manifest of millions of rows) without
+// holding it in memory, atomically like the others: into a registered hidden
+// temporary, renamed into place by commit(). Destroyed without commit(), it
+// leaves no file and the old one untouched. Throws OutputError.
+class StreamingOutput {
+ public:
+  explicit StreamingOutput(const std::filesystem::path& path);
+  ~StreamingOutput();
+  StreamingOutput(const StreamingOutput&) = delete;
+  StreamingOutput& operator=(const StreamingOutput&) = delete;
+  void write(std::string_view bytes);  // buffered (kBufferBytes)
+  void commit();
+
+  static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace pita::render

@@ -11,41 +11,6 @@ namespace pita::sweep {
 
 namespace {
 
-// One CSV record from `text` at `pos` (fields may be quoted and hold commas
-// and line breaks); false at the end of the text.
-bool next_record(const std::string& text, std::size_t& pos, std::vector<std::string>& fields) {
-  fields.clear();
-  if (pos >= text.size()) return false;
-  std::string field;
-  bool quoted = false;
-  while (pos < text.size()) {
-    const char c = text[pos++];
-    if (quoted) {
-      if (c == '"') {
-        if (pos < text.size() && text[pos] == '"') {
-          field += '"';
-          ++pos;
-        } else {
-          quoted = false;
-        }
-      } else {
-        field += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      fields.push_back(std::move(field));
-      field.clear();
-    } else if (c == '\n') {
-      break;
-    } else if (c != '\r') {
-      field += c;
-    }
-  }
-  fields.push_back(std::move(field));
-  return true;
-}
-
 std::vector<std::string> split_outputs(const std::string& text) {
   std::vector<std::string> out;
   std::size_t start = 0;
@@ -70,9 +35,7 @@ std::string csv_field(std::string_view text) {
   return out + "\"";
 }
 
-namespace {
-
-std::string header(const std::vector<std::string>& pointers) {
+std::string manifest_header(const std::vector<std::string>& pointers) {
   std::string out = "index";
   for (const std::string& p : pointers) {
     out += ',';
@@ -103,31 +66,29 @@ void append_row(std::string& out, const Row& row) {
   out += '\n';
 }
 
-}  // namespace
-
 std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows) {
-  std::string out = header(pointers);
+  std::string out = manifest_header(pointers);
   for (const Row& row : rows) append_row(out, row);
   return out;
 }
 
 std::string manifest_csv(const std::vector<std::string>& pointers, const std::map<std::int64_t, Row>& rows) {
-  std::string out = header(pointers);
+  std::string out = manifest_header(pointers);
   for (const auto& [index, row] : rows) append_row(out, row);
   return out;
 }
 
-std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
-                                              const std::vector<std::string>& pointers) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  std::size_t pos = 0;
+std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& path,
+                                                  const std::vector<std::string>& pointers, bool headless) {
+  ManifestReader reader;
+  reader.in_ = std::make_unique<std::ifstream>(path, std::ios::binary);
+  if (!*reader.in_) return std::nullopt;
+  reader.path_ = path.string();
+  reader.pointers_ = pointers.size();
+  if (headless) return reader;
   std::vector<std::string> fields;
   const std::size_t width = 4 + pointers.size() + kMetricColumns.size();
-  if (!next_record(text, pos, fields) || fields.size() != width || fields[0] != "index" ||
+  if (!reader.record(fields) || fields.size() != width || fields[0] != "index" ||
       !std::equal(pointers.begin(), pointers.end(), fields.begin() + 1)) {
     std::string expected = "index";
     for (const std::string& p : pointers) expected += "," + p;
@@ -135,28 +96,81 @@ std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
                                          "use another -o folder, or remove it",
                                          path.string(), expected));
   }
-  std::vector<Row> rows;
-  int line = 1;
-  while (next_record(text, pos, fields)) {
-    ++line;
-    if (fields.size() == 1 && fields[0].empty()) continue;
-    if (fields.size() != width) {
-      throw std::runtime_error(fmt::format("{}:{}: {} fields, expected {}", path.string(), line, fields.size(), width));
+  return reader;
+}
+
+bool ManifestReader::record(std::vector<std::string>& fields) {
+  fields.clear();
+  std::istream& in = *in_;
+  if (in.peek() == std::char_traits<char>::eof()) return false;
+  std::string field;
+  bool quoted = false;
+  char c = 0;
+  bool ended = false;
+  while (in.get(c)) {
+    if (quoted) {
+      if (c == '"') {
+        if (in.peek() == '"') {
+          field += '"';
+          in.get(c);
+        } else {
+          quoted = false;
+        }
+      } else {
+        field += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.push_back(std::move(field));
+      field.clear();
+    } else if (c == '\n') {
+      ended = true;
+      break;
+    } else if (c != '\r') {
+      field += c;
     }
-    Row row;
+  }
+  fields.push_back(std::move(field));
+  complete_ = ended;
+  ++line_;
+  return true;
+}
+
+bool ManifestReader::next(Row& row) {
+  std::vector<std::string> fields;
+  const std::size_t width = 4 + pointers_ + kMetricColumns.size();
+  while (record(fields)) {
+    if (fields.size() == 1 && fields[0].empty()) continue;
+    // A journal's last line may be cut short by a killed process: not a row.
+    if (!complete_ && fields.size() != width) return false;
+    if (fields.size() != width) {
+      throw std::runtime_error(fmt::format("{}:{}: {} fields, expected {}", path_, line_, fields.size(), width));
+    }
+    row = Row{};
     try {
       row.index = std::stoll(fields[0]);
     } catch (const std::exception&) {
-      throw std::runtime_error(fmt::format("{}:{}: the index \"{}\" is not a number", path.string(), line, fields[0]));
+      throw std::runtime_error(fmt::format("{}:{}: the index \"{}\" is not a number", path_, line_, fields[0]));
     }
     std::size_t k = 1;
-    for (std::size_t i = 0; i < pointers.size(); ++i) row.values.push_back(fields[k++]);
+    for (std::size_t i = 0; i < pointers_; ++i) row.values.push_back(fields[k++]);
     row.status = fields[k++];
     row.outputs = split_outputs(fields[k++]);
     row.hash = fields[k++];
     for (std::string& m : row.metrics) m = fields[k++];
-    rows.push_back(std::move(row));
+    return true;
   }
+  return false;
+}
+
+std::optional<std::vector<Row>> read_manifest(const std::filesystem::path& path,
+                                              const std::vector<std::string>& pointers) {
+  std::optional<ManifestReader> reader = ManifestReader::open(path, pointers);
+  if (!reader) return std::nullopt;
+  std::vector<Row> rows;
+  Row row;
+  while (reader->next(row)) rows.push_back(std::move(row));
   return rows;
 }
 

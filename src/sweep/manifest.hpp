@@ -8,7 +8,9 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <istream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,6 +38,33 @@ struct Row {
 // The CSV text of `rows` (sorted by index) under a header naming `pointers`.
 std::string manifest_csv(const std::vector<std::string>& pointers, const std::vector<Row>& rows);
 std::string manifest_csv(const std::vector<std::string>& pointers, const std::map<std::int64_t, Row>& rows);
+
+// The header line, and one row's line (appended to `out`).
+std::string manifest_header(const std::vector<std::string>& pointers);
+void append_row(std::string& out, const Row& row);
+
+// Reads a manifest row by row, without holding it: what a sweep of millions
+// of variants resumes and merges from.
+class ManifestReader {
+ public:
+  // nullopt when the file does not exist. Throws std::runtime_error naming the
+  // file when its header is not that of these pointers; `headless`: a journal,
+  // rows only.
+  static std::optional<ManifestReader> open(const std::filesystem::path& path, const std::vector<std::string>& pointers,
+                                            bool headless = false);
+  // The next row; false at the end (or at a last line cut short). Throws
+  // std::runtime_error naming the file and line of a malformed row.
+  bool next(Row& row);
+
+ private:
+  ManifestReader() = default;
+  bool record(std::vector<std::string>& fields);
+  std::unique_ptr<std::istream> in_;
+  std::string path_;
+  std::size_t pointers_ = 0;
+  int line_ = 0;
+  bool complete_ = true;
+};
 
 // Reads a manifest written by manifest_csv; nullopt when the file does not
 // exist. Throws std::runtime_error naming the file and line when it is not a

@@ -4,7 +4,9 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include <cairo-svg.h>
@@ -95,7 +97,18 @@ if (wanted.has("sort")) {
 
 }  // namespace
 
-void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>& rows) {
+std::string write_index_html(const SheetInput& input) {
+  // Two passes over the manifest: the counts for the heading, then the cards.
+  std::int64_t count = 0, failed = 0;
+  {
+    std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
+    Row r;
+    while (reader && reader->next(r)) {
+      ++count;
+      failed += r.ok() ? 0 : 1;
+    }
+  }
+  render::StreamingOutput file(input.dir / "index.html");
   std::string out = fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>pita sweep: {0}</title>\n"
       "<style>body{{font-family:sans-serif;margin:1em}} #grid{{display:flex;flex-wrap:wrap;gap:8px}} "
@@ -103,9 +116,7 @@ void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>
       "background:#fff}} figure.failed{{border-color:#c00;background:#fee}} figcaption{{font-size:12px;"
       "word-break:break-all}}</style></head>\n<body>\n<h1>pita sweep of {0}</h1>\n",
       html(input.name));
-  std::int64_t failed = 0;
-  for (const auto& [index, r] : rows) failed += r.ok() ? 0 : 1;
-  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", rows.size(),
+  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", count,
                      input.variants, failed, html(input.base_path));
   for (std::size_t k = 0; k < input.pointers.size(); ++k) {
     out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", html(input.pointers[k]));
@@ -121,7 +132,17 @@ void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>
   }
   out += "</select></label> <select id=\"order\"><option value=\"asc\">ascending</option>"
          "<option value=\"desc\">descending</option></select></p>\n<div id=\"grid\">\n";
-  for (const auto& [index, row] : rows) {
+  std::string left_out;
+  if (count > kMaxIndexCards) {
+    left_out = fmt::format("index.html shows the first {} of {} variants (manifest.csv has them all)", kMaxIndexCards,
+                           count);
+    out += fmt::format("<p><b>{}</b></p>\n", html(left_out));
+  }
+  std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
+  Row row;
+  for (std::int64_t cards = 0; reader && cards < kMaxIndexCards && reader->next(row); ++cards) {
+    file.write(out);
+    out.clear();
     out += fmt::format("<figure class=\"{}\" data-index=\"{}\"", row.ok() ? "ok" : "failed", row.index);
     for (std::size_t k = 0; k < row.values.size(); ++k) out += fmt::format(" data-v{}=\"{}\"", k, html(row.values[k]));
     std::string tip;
@@ -151,7 +172,9 @@ void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>
   out += "</div>\n";
   out += kScript;
   out += "</body></html>\n";
-  render::write_file_atomically(input.dir / "index.html", out);
+  file.write(out);
+  file.commit();
+  return left_out;
 }
 
 namespace {
@@ -176,13 +199,19 @@ const scene::Color kFailed{0.8, 0.0, 0.0, 1.0};
 
 }  // namespace
 
-std::string write_contact_sheet(const SheetInput& input, const std::map<std::int64_t, Row>& rows) {
+std::string write_contact_sheet(const SheetInput& input) {
   if (input.variants > kMaxContactCells) {
     return fmt::format("contact.svg and contact.png not drawn: {} variants is more than {} on one picture (see "
                        "index.html)",
                        input.variants, kMaxContactCells);
   }
   if (input.variants == 0) return "";
+  std::map<std::int64_t, Row> rows;  // at most kMaxContactCells
+  {
+    std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
+    Row r;
+    while (reader && reader->next(r)) rows[r.index] = r;
+  }
   // Two axes of a product: a row per value of the first, a column per value
   // of the second; otherwise the variants in index order, row by row.
   // (Axes of one value do not count: 1 x 12 is a one-parameter sweep.) A

@@ -30,12 +30,18 @@ struct SheetInput {
   bool figures = false;               // the sweep wrote figures (svg, png or pdf)
 };
 
-// DIR/index.html from the manifest rows (sorted by index). Atomic.
-void write_index_html(const SheetInput& input, const std::map<std::int64_t, Row>& rows);
+// Cards in index.html: a larger sweep lists its first variants there and
+// says so (manifest.csv has them all).
+inline constexpr std::int64_t kMaxIndexCards = 10'000;
 
-// DIR/contact.svg and DIR/contact.png, each variant's figure redrawn from its
-// scene file DIR/<name>-<index>.scene.json; a failed or missing variant is an
-// empty cell marked so. Returns "" or why nothing was drawn. Atomic.
-std::string write_contact_sheet(const SheetInput& input, const std::map<std::int64_t, Row>& rows);
+// DIR/index.html from DIR/manifest.csv, read row by row. Atomic. Returns ""
+// or what was left out.
+std::string write_index_html(const SheetInput& input);
+
+// DIR/contact.svg and DIR/contact.png from DIR/manifest.csv, each variant's
+// figure redrawn from its scene file DIR/<name>-<index>.scene.json; a failed
+// or missing variant is an empty cell marked so. Returns "" or why nothing
+// was drawn. Atomic.
+std::string write_contact_sheet(const SheetInput& input);
 
 }  // namespace pita::sweep

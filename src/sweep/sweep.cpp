@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cerrno>
 #include <condition_variable>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -188,16 +191,57 @@ SheetInput sheet_input(const fs::path& dir, const Definition& d) {
   return s;
 }
 
-// Writes the manifest, index and contact sheet of `rows` (an unsharded run, or a merge).
-void write_reports(const fs::path& dir, const Definition& d, const std::map<std::int64_t, Row>& rows,
-                   std::vector<std::string>& notes) {
+// index.html and contact.* from DIR/manifest.csv (an unsharded run, or a merge).
+void write_reports(const fs::path& dir, const Definition& d, std::vector<std::string>& notes) {
   const SheetInput input = sheet_input(dir, d);
-  render::write_file_atomically(dir / "manifest.csv", manifest_csv(input.pointers, rows));
-  write_index_html(input, rows);
+  if (std::string why = write_index_html(input); !why.empty()) notes.push_back(std::move(why));
   if (input.figures) {
-    const std::string why = write_contact_sheet(input, rows);
-    if (!why.empty()) notes.push_back(why);
+    if (std::string why = write_contact_sheet(input); !why.empty()) notes.push_back(std::move(why));
   }
+}
+
+// A manifest written from sources of rows, each sorted by index, without
+// holding them: of the rows of one index, an accepted one of a later source
+// wins (ok rows before failed ones when `prefer_ok`). `accept(row, source)`
+// filters; `on_row` sees each row written.
+template <typename Accept, typename OnRow>
+void merge_sources(const fs::path& path, const std::vector<std::string>& pointers,
+                   std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, bool prefer_ok) {
+  render::StreamingOutput out(path);
+  out.write(manifest_header(pointers));
+  std::vector<std::optional<Row>> heads(sources.size());
+  const auto advance = [&](std::size_t s) {
+    heads[s].reset();
+    Row row;
+    while (sources[s].next(row)) {
+      if (accept(row, s)) {
+        heads[s] = std::move(row);
+        return;
+      }
+    }
+  };
+  for (std::size_t s = 0; s < sources.size(); ++s) advance(s);
+  std::string line;
+  while (true) {
+    std::optional<std::int64_t> least;
+    for (const auto& head : heads) {
+      if (head && (!least || head->index < *least)) least = head->index;
+    }
+    if (!least) break;
+    std::optional<std::size_t> best;
+    for (std::size_t s = 0; s < heads.size(); ++s) {
+      if (!heads[s] || heads[s]->index != *least) continue;
+      if (!best || !prefer_ok || heads[s]->ok() || !heads[*best]->ok()) best = s;
+    }
+    on_row(*heads[*best]);
+    line.clear();
+    append_row(line, *heads[*best]);
+    out.write(line);
+    for (std::size_t s = 0; s < heads.size(); ++s) {
+      if (heads[s] && heads[s]->index == *least) advance(s);
+    }
+  }
+  out.commit();
 }
 
 // Removes what an earlier run wrote for a variant that now fails, so that no
@@ -373,37 +417,80 @@ SweepSummary run_sweep(const SweepOptions& options) {
   const Job job{options, grid, base, dir, definition.name, salt};
   const std::vector<std::string> pointers = pointers_of(definition);
   const std::string manifest = manifest_name(options.shard);
+  const fs::path manifest_path = dir / manifest;
+  // Rows are appended here as they finish, in index order: what a killed
+  // process leaves, and what the next run folds into the manifest.
+  const fs::path journal_path = dir / ("." + manifest + ".journal");
   const auto [shard_k, shard_n] = options.shard.value_or(std::pair<int, int>{0, 1});
   const std::int64_t variants = grid.size();
   const std::int64_t mine = variants > shard_k ? (variants - shard_k + shard_n - 1) / shard_n : 0;
+  const auto position = [&](std::int64_t index) { return (index - shard_k) / shard_n; };
+  const auto in_shard = [&](std::int64_t index) {
+    return index >= 0 && index < variants && index % shard_n == shard_k;
+  };
 
-  // Resume: rows of an earlier run whose variant is unchanged and whose
-  // outputs are all there are kept; the others are done again. A manifest of
-  // another sweep (other pointers) is refused before anything is written.
-  std::map<std::int64_t, Row> table;
+  // Resume: a row of an earlier run (its manifest, or the journal of a killed
+  // run) is kept when its variant is unchanged (same content hash), it is ok
+  // and its outputs all exist; the others are done again. Nothing but one
+  // byte per variant is held. A manifest of another sweep (other pointers) is
+  // refused before anything is written.
+  const auto valid = [&](const Row& row) {
+    if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir, row)) return false;
+    return content_hash(variant_text(variant_document(base, grid, grid.values(row.index))), salt) == row.hash;
+  };
+  std::vector<char> kept(static_cast<std::size_t>(mine), 0);
   SweepSummary summary;
   summary.variants = mine;
-  std::optional<std::vector<Row>> old;
-  try {
-    old = read_manifest(dir / manifest, pointers);
-  } catch (const std::runtime_error& error) {
-    if (!options.force) {
+  bool have_manifest = false;
+  if (!options.force) {
+    std::optional<ManifestReader> old;
+    try {
+      old = ManifestReader::open(manifest_path, pointers);
+    } catch (const std::runtime_error& error) {
       throw SweepUsageError(fmt::format("-o {}: {} (or --force to start this sweep over there)", options.output,
                                         error.what()));
     }
-  }
-  if (old && !options.force) {
-    for (Row& row : *old) {
-      if (row.index < 0 || row.index >= variants || row.index % shard_n != shard_k || !row.ok()) continue;
-      if (!outputs_exist(dir, row)) continue;
-      const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
-      if (content_hash(text, salt) != row.hash) continue;
-      table.emplace(row.index, std::move(row));
+    std::optional<ManifestReader> journal = ManifestReader::open(journal_path, pointers, true);
+    have_manifest = old.has_value();
+    for (auto* reader : {old ? &*old : nullptr, journal ? &*journal : nullptr}) {
+      if (reader == nullptr) continue;
+      Row row;
+      try {
+        while (reader->next(row)) {
+          if (valid(row) && !kept[static_cast<std::size_t>(position(row.index))]) {
+            kept[static_cast<std::size_t>(position(row.index))] = 1;
+            ++summary.skipped;
+          }
+        }
+      } catch (const std::runtime_error& error) {
+        throw SweepUsageError(fmt::format("-o {}: {} (or --force to start this sweep over there)", options.output,
+                                          error.what()));
+      }
+    }
+    if (journal) {
+      // Fold the killed run's journal into the manifest, then start a new one.
+      std::vector<ManifestReader> sources;
+      if (auto m = ManifestReader::open(manifest_path, pointers)) sources.push_back(std::move(*m));
+      if (auto j = ManifestReader::open(journal_path, pointers, true)) sources.push_back(std::move(*j));
+      merge_sources(manifest_path, pointers, sources, [&](const Row& row, std::size_t) { return valid(row); },
+                    [](const Row&) {}, false);
+      have_manifest = true;
     }
   }
-  old.reset();
-  summary.skipped = static_cast<std::int64_t>(table.size());
+  std::error_code ignored;
+  fs::remove(journal_path, ignored);
   render::write_file_atomically(dir / kSweepFile, definition_json(definition));
+
+  std::FILE* journal = std::fopen(journal_path.c_str(), "w");
+  if (journal == nullptr) {
+    throw render::OutputError(fmt::format("{}: cannot write ({})", journal_path.string(), std::strerror(errno)));
+  }
+  struct Closer {
+    std::FILE*& file;
+    ~Closer() {
+      if (file != nullptr) std::fclose(file);
+    }
+  } closer{journal};
 
   std::mutex mutex;
   std::condition_variable finished;
@@ -412,9 +499,33 @@ SweepSummary run_sweep(const SweepOptions& options) {
   std::int64_t done = 0;  // in this run (resumed variants are not counted)
   int running = 0;
   bool write_failed = false;
-  const auto manifest_text = [&] {
-    const std::lock_guard lock(mutex);
-    return manifest_csv(pointers, table);
+  // Rows finish out of order; they are journaled in order, as soon as every
+  // earlier one is (the few that wait are all that is held).
+  std::map<std::int64_t, Row> waiting;
+  std::int64_t next_journaled = 0;
+  std::string line;
+  const auto journal_ready = [&] {  // under the mutex
+    while (next_journaled < mine) {
+      const auto j = static_cast<std::size_t>(next_journaled);
+      if (kept[j] == 0) {
+        const auto it = waiting.find(next_journaled);
+        if (it == waiting.end()) break;
+        const Row& row = it->second;
+        if (row.ok()) {
+          ++summary.ok;
+        } else {
+          ++summary.failed;
+          if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
+        }
+        line.clear();
+        append_row(line, row);
+        if (std::fwrite(line.data(), 1, line.size(), journal) != line.size() || std::fflush(journal) != 0) {
+          write_failed = true;
+        }
+        waiting.erase(it);
+      }
+      ++next_journaled;
+    }
   };
 
   const auto work = static_cast<int>(std::min<std::int64_t>(mine - summary.skipped, INT32_MAX));
@@ -439,11 +550,8 @@ SweepSummary run_sweep(const SweepOptions& options) {
       while (!stop.load() && render::pending_interrupt() == 0) {
         const std::int64_t j = next.fetch_add(1);
         if (j >= mine) break;
+        if (kept[static_cast<std::size_t>(j)] != 0) continue;  // resumed
         const std::int64_t index = shard_k + j * shard_n;
-        {
-          const std::lock_guard lock(mutex);
-          if (table.contains(index)) continue;  // resumed
-        }
         Row row;
         try {
           row = run_variant(job, index, failed_write);
@@ -454,8 +562,9 @@ SweepSummary run_sweep(const SweepOptions& options) {
           row.status = fmt::format("internal error: {}", error.what());
         }
         const std::lock_guard lock(mutex);
-        table[index] = std::move(row);
+        waiting.emplace(j, std::move(row));
         ++done;
+        journal_ready();
       }
       const std::lock_guard lock(mutex);
       write_failed = write_failed || failed_write;
@@ -480,7 +589,6 @@ SweepSummary run_sweep(const SweepOptions& options) {
         break;  // fewer threads than asked
       }
     }
-    auto last_write = std::chrono::steady_clock::now();
     std::unique_lock lock(mutex);
     while (running > 0) {
       finished.wait_for(lock, std::chrono::milliseconds(100));
@@ -488,46 +596,46 @@ SweepSummary run_sweep(const SweepOptions& options) {
       lock.unlock();
       progress.update(static_cast<int>(std::min<std::int64_t>(now_done, INT32_MAX)));
       if (render::pending_interrupt() != 0) stop = true;
-      if (std::chrono::steady_clock::now() - last_write > kManifestInterval) {
-        try {
-          render::write_file_atomically(dir / manifest, manifest_text());
-        } catch (const render::OutputError&) {
-          // Said at the end, where the manifest is written once more.
-        }
-        last_write = std::chrono::steady_clock::now();
-      }
       lock.lock();
     }
     lock.unlock();
     for (std::thread& thread : pool) thread.join();
-    if (const int sig = render::pending_interrupt()) {
-      // Complete files only (each variant's set is written all or none), and
-      // the manifest of every variant that finished: rerunning completes it.
-      try {
-        render::write_file_atomically(dir / manifest, manifest_text());
-      } catch (const render::OutputError&) {
-      }
-      render::exit_interrupted(sig);
-    }
   }
   progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
-  summary.write_failed = write_failed;
+  std::fclose(journal);
+  journal = nullptr;
 
-  for (const auto& [index, row] : table) {
-    if (row.ok()) {
-      ++summary.ok;
-    } else {
-      ++summary.failed;
-      if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
+  // The manifest: the rows kept from before and the journal's, in order (an
+  // interrupted run's rows that were still waiting for an earlier one are
+  // left out: their variants are done again). Then the journal goes.
+  const int sig = render::pending_interrupt();
+  {
+    std::vector<ManifestReader> sources;
+    if (have_manifest) {
+      if (auto m = ManifestReader::open(manifest_path, pointers)) sources.push_back(std::move(*m));
     }
+    const std::size_t journal_source = sources.size();
+    if (auto j = ManifestReader::open(journal_path, pointers, true)) sources.push_back(std::move(*j));
+    const auto accept = [&](const Row& row, std::size_t source) {
+      if (!in_shard(row.index)) return false;
+      // Rows from before: only those kept, the others were done again.
+      return source == journal_source || kept[static_cast<std::size_t>(position(row.index))] != 0;
+    };
+    try {
+      merge_sources(manifest_path, pointers, sources, accept, [](const Row&) {}, false);
+    } catch (const render::OutputError&) {
+      if (sig != 0) render::exit_interrupted(sig);  // the journal stays: the next run folds it
+      throw;
+    }
+    fs::remove(journal_path, ignored);
   }
-  summary.ok -= summary.skipped;
+  if (sig != 0) render::exit_interrupted(sig);
+  summary.write_failed = write_failed;
   if (options.shard) {
-    render::write_file_atomically(dir / manifest, manifest_csv(pointers, table));
     summary.notes.push_back(fmt::format("shard {}/{}: join the shards with pita sweep --merge {}", shard_k, shard_n,
                                         options.output));
   } else {
-    write_reports(dir, definition, table, summary.notes);
+    write_reports(dir, definition, summary.notes);
   }
   return summary;
 }
@@ -549,7 +657,6 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
   const BaseScene base{definition.scene, definition.base};
   MergeSummary summary;
   summary.variants = definition.variants;
-  std::map<std::int64_t, Row> table;
   std::vector<fs::path> parts;
   std::error_code error;
   static const std::regex kPart(R"(manifest\.[0-9]+-of-[0-9]+\.csv)");
@@ -562,46 +669,49 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
                                       "-o {} first)",
                                       dir_text, dir_text));
   }
+  std::vector<ManifestReader> sources;
   for (const fs::path& part : parts) {
-    std::optional<std::vector<Row>> rows;
     try {
-      rows = read_manifest(part, pointers);
+      if (auto reader = ManifestReader::open(part, pointers)) {
+        sources.push_back(std::move(*reader));
+        summary.parts.push_back(part.filename().string());
+      }
     } catch (const std::runtime_error& e) {
       summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
-      continue;
-    }
-    summary.parts.push_back(part.filename().string());
-    for (Row& row : *rows) {
-      if (row.index < 0 || row.index >= definition.variants) continue;
-      const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
-      if (row.hash != content_hash(text, definition.salt)) {
-        ++summary.foreign;
-        continue;
-      }
-      auto found = table.find(row.index);
-      // A row that succeeded wins over a failed one of another part.
-      if (found == table.end() || (!found->second.ok() && row.ok())) table[row.index] = std::move(row);
     }
   }
-  if (summary.foreign > 0) {
-    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
-                                        "{}'s) and were ignored",
-                                        summary.foreign, kSweepFile));
-  }
+  const auto accept = [&](const Row& row, std::size_t) {
+    if (row.index < 0 || row.index >= definition.variants) return false;
+    const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
+    if (row.hash == content_hash(text, definition.salt)) return true;
+    ++summary.foreign;
+    return false;
+  };
   std::int64_t expected = 0;
   const auto missing = [&](std::int64_t from, std::int64_t to) {  // [from, to)
     if (from >= to) return;
     summary.missing_count += to - from;
     if (summary.missing.size() < kMaxRangesKept) summary.missing.emplace_back(from, to - 1);
   };
-  for (const auto& [index, row] : table) {
-    missing(expected, index);
-    expected = index + 1;
+  const auto on_row = [&](const Row& row) {
+    missing(expected, row.index);
+    expected = row.index + 1;
+    ++summary.rows;
     if (!row.ok()) ++summary.failed;
+  };
+  try {
+    merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, true);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
+    throw SweepUsageError(fmt::format("--merge: {}", e.what()));
   }
   missing(expected, definition.variants);
-  summary.rows = static_cast<std::int64_t>(table.size());
-  write_reports(dir, definition, table, summary.notes);
+  if (summary.foreign > 0) {
+    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
+                                        "{}'s) and were ignored",
+                                        summary.foreign, kSweepFile));
+  }
+  write_reports(dir, definition, summary.notes);
   return summary;
 }
 

@@ -318,6 +318,39 @@ TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), read_file(dir.path() / "fresh/manifest.csv"));
 }
 
+TEST(Sweep, AKilledSweepResumesFromItsJournal) {
+  // SIGKILL leaves no chance to write the manifest: the rows journaled so far
+  // (a hidden file, in index order) are what the next run resumes from.
+  ScratchDir dir;
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out",
+                                         "--format", "csv", "--jobs", "1", "-q"};
+  Started started = start_pita(args, dir.path());
+  const fs::path journal = dir.path() / "out/.manifest.csv.journal";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  const auto journaled = [&] {
+    if (!fs::exists(journal)) return false;
+    const std::string text = read_file(journal);
+    return std::count(text.begin(), text.end(), '\n') >= 3;
+  };
+  while (!journaled() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(started.pid, SIGKILL);
+  const RunResult r = finish_pita(started);
+  ASSERT_EQ(r.exit_code, 128 + SIGKILL) << "finished before the signal";
+  ASSERT_TRUE(fs::exists(journal));
+  const std::string text = read_file(journal);
+  const auto rows = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  const RunResult resumed = run_pita(args, dir.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.out.find(fmt::format("{} resumed", rows)), std::string::npos) << resumed.out;
+  EXPECT_FALSE(fs::exists(journal));
+  std::vector<std::string> fresh = args;
+  fresh[5] = "fresh";
+  ASSERT_EQ(run_pita(fresh, dir.path()).exit_code, 0);
+  EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), read_file(dir.path() / "fresh/manifest.csv"));
+}
+
 TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
   ScratchDir dir;
   dir.write("file", "x");
