@@ -31,7 +31,21 @@ class LayerCost {
       : scene_(scene), panel_(panel), layer_(std::move(layer)), cost_(cost) {}
 
   // ------------------------------------------------------------ arrow layers
-  void operator()(const scene::PatternLayer& l) { frames(l.samples, "a pattern", kShapeUnits + 2); }
+  void operator()(const scene::PatternLayer& l) {
+    double per_frame = kShapeUnits + 2;
+    if (l.coils) {
+      // A coil per frame: its turns bounded by the keyframes' largest winding,
+      // scaled by how far the range reaches beyond the knots, plus one turn.
+      double w = 0.0;
+      for (const Keyframe& key : panel_.keyframes) w = std::max(w, std::abs(key.arrow.w));
+      const double span = panel_.keyframes.back().t - panel_.keyframes.front().t;
+      const double reach =
+          l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
+      const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
+      per_frame += kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+    }
+    frames(l.samples, "a pattern", per_frame);
+  }
   void operator()(const scene::StrokeLayer& l) { frames(l.samples, "a stroke", kShapeUnits + 4); }
   void operator()(const scene::DiscrepancyLayer& l) {
     frames(l.samples, "discrepancy circles", kShapeUnits + 8);

@@ -87,6 +87,7 @@ struct Item {
 struct LegendEntry {
   Color color;
   std::string text;
+  std::vector<double> dash = {};  // the swatch's dash pattern (a dashed trajectory); empty = solid
 };
 struct Legend {
   scene::LegendLayer::Corner corner = scene::LegendLayer::Corner::top_left;

@@ -138,7 +138,7 @@ void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std
     const double mid = y + 0.5 * line_height;
     cairo_move_to(cr, x, mid);
     cairo_line_to(cr, x + swatch, mid);
-    set_line(cr, LineStyle{entry.color, 2.0, 1.0, {}});
+    set_line(cr, LineStyle{entry.color, 2.0, 1.0, entry.dash});
     cairo_stroke(cr);
     paint_text(cr, entry.text, font, legend.size, Color{0.1, 0.1, 0.1, 1.0}, x + swatch + 5.0,
                mid - 0.65 * legend.size, TextAlign::left);

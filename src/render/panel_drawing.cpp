@@ -32,6 +32,16 @@ std::string keyframe_name(std::size_t i) {
   return i < 26 ? std::string(1, static_cast<char>('A' + i)) : fmt::format("K{}", i);
 }
 
+// A trajectory's legend text.
+std::string trajectory_name(scene::TrackedPoint point) {
+  switch (point) {
+    case scene::TrackedPoint::start: return "path of p";
+    case scene::TrackedPoint::end: return "path of q";
+    case scene::TrackedPoint::middle: return "path of the midpoint";
+  }
+  return "path";
+}
+
 class PanelBuilder {
  public:
   PanelBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
@@ -105,6 +115,12 @@ class PanelBuilder {
       LineStyle line = layer.line;
       line.opacity *= fade(i, pattern.size());
       push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
+      drawing_.items.back().moving = selection_ != nullptr;
+      if (!layer.coils) continue;
+      // The frame's winding, drawn as the keyframes layer draws A's, B's, C's.
+      std::vector<Point> coil = winding_spiral(frame.p, frame.m, frame.w);
+      if (coil.empty()) continue;
+      push(static_cast<int>(i), Polyline{std::move(coil), false, line});
       drawing_.items.back().moving = selection_ != nullptr;
     }
   }
@@ -412,11 +428,25 @@ class PanelBuilder {
       if (curve == nullptr || curve->curve == PointCurve::pita) continue;
       legend.entries.push_back({curve->line.color, std::string(info(curve->curve).name)});
     }
+    // The method in the colour of the first pattern layer (its frames), else
+    // dark grey; after it the trajectories drawn, in their colour and dash.
+    Color method_color{0.2, 0.2, 0.2, 1.0};
+    bool pattern_seen = false;
+    std::vector<LegendEntry> paths;
+    for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+      if (const auto* path = std::get_if<scene::TrajectoryLayer>(&other)) {
+        paths.push_back({path->line.color, trajectory_name(path->point), path->line.dash});
+      } else if (const auto* pattern = std::get_if<scene::PatternLayer>(&other); pattern && !pattern_seen) {
+        method_color = pattern->line.color;
+        pattern_seen = true;
+      }
+    }
     const MethodInfo& about = info(panel_.method);
-    legend.entries.push_back({Color{0.2, 0.2, 0.2, 1.0},
+    legend.entries.push_back({method_color,
                               about.id == about.mnemonic
                                   ? std::string(about.id)
                                   : fmt::format("{} {}", about.id, about.mnemonic)});
+    legend.entries.insert(legend.entries.end(), paths.begin(), paths.end());
     drawing_.legends.push_back(std::move(legend));
   }
 

@@ -77,6 +77,7 @@ struct TimeRange {
 struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   LineStyle line{Color{0.2, 0.2, 0.2, 1.0}, 0.8, 1.0, {}};
   bool extended = false;               // draw from p - (q - p) to q (Sec. 2.1)
+  bool coils = false;                  // each frame's winding as a spiral at p (Fig. 3)
   std::optional<int> samples;          // default: the panel's samples
   std::optional<TimeRange> range;      // default: [a, c]
 };

@@ -31,8 +31,8 @@ constexpr std::array<std::string_view, 8> kCanvasFields = {
 constexpr std::array<std::string_view, 2> kBoxFields = {"min", "max"};
 constexpr std::array<std::string_view, 4> kLineFields = {"color", "width", "opacity", "dash"};
 
-constexpr std::array<std::string_view, 8> kPatternFields = {
-    "type", "color", "width", "opacity", "dash", "extended", "samples", "range"};
+constexpr std::array<std::string_view, 9> kPatternFields = {
+    "type", "color", "width", "opacity", "dash", "extended", "coils", "samples", "range"};
 constexpr std::array<std::string_view, 7> kKeyframesFields = {
     "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
 constexpr std::array<std::string_view, 8> kTrajectoryFields = {
@@ -199,6 +199,7 @@ PatternLayer read_pattern(const Fields& fields) {
   PatternLayer layer;
   read_line(fields, layer.line);
   fields.boolean("extended", layer.extended);
+  fields.boolean("coils", layer.coils);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
   return layer;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "core/discrepancy.hpp"
 #include "core/steady_morph.hpp"
@@ -59,6 +60,60 @@ TEST(PatternLayer, ExtendedFormHasPAtItsMidpoint) {
     EXPECT_NEAR(std::abs(0.5 * (lines[i]->points[0] + lines[i]->points[1]) - frames[i].p), 0.0, 1e-12);
     EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12);
   }
+}
+
+TEST(PatternLayer, CoilsShowEachFramesWindingEvolvingLinearly) {
+  // Fig. 3: under the steady morph the winding goes linearly from A.w to B.w
+  // (Eq. 21), so the coil of frame i turns through A.w + t_i (B.w - A.w).
+  const Arrow A{{0.0, 0.0}, 2.0, 0.3}, B{{4.0, 1.0}, 0.6, 3.6 + 2.0 * std::numbers::pi};
+  const scene::Panel p = panel(Method::SMA, {{0.0, A}, {1.0, B}}, 9);
+  scene::PatternLayer layer;
+  layer.coils = true;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  const auto frames = frames_of(p, 9);
+  ASSERT_EQ(lines.size(), 18u);  // a segment and a coil per frame
+  for (std::size_t i = 0; i < 9; ++i) {
+    const Polyline& coil = *lines[2 * i + 1];
+    const double t = static_cast<double>(i) / 8.0;
+    double turned = 0.0;
+    for (std::size_t k = 1; k < coil.points.size(); ++k) {
+      turned += std::arg((coil.points[k] - frames[i].p) / (coil.points[k - 1] - frames[i].p));
+    }
+    EXPECT_NEAR(turned, A.w + t * (B.w - A.w), 1e-9) << i;
+    // It starts 0.1 m from p (render/spiral.hpp), m = A.m^(1-t) B.m^t.
+    const double m = std::pow(A.m, 1.0 - t) * std::pow(B.m, t);
+    EXPECT_NEAR(std::abs(coil.points.front() - frames[i].p), 0.1 * m, 1e-12) << i;
+    EXPECT_EQ(d.items[2 * i + 1].index, static_cast<int>(i));
+  }
+  // Without the option, the frames only.
+  EXPECT_EQ(shapes<Polyline>(panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p)).size(), 9u);
+}
+
+TEST(LegendLayer, MethodInThePatternsColourThenTheTrajectoriesDrawn) {
+  const scene::Panel p = panel(Method::P6, three_keyframes());
+  scene::TrajectoryLayer path;
+  path.line.color = Color{0.5, 0.5, 0.5, 1.0};
+  path.line.dash = {4.0, 3.0};
+  scene::PatternLayer frames;
+  frames.line.color = Color{0.1, 0.3, 0.8, 1.0};
+  const Drawing d = panel_drawing(
+      scene_with({path, frames, scene::KeyframesLayer{}, scene::LegendLayer{}}, {p}), p);
+  ASSERT_EQ(d.legends.size(), 1u);
+  const auto& entries = d.legends[0].entries;
+  ASSERT_EQ(entries.size(), 5u);  // A, B, C, the method, the path of p
+  EXPECT_EQ(entries[0].text, "A  t = 0");
+  EXPECT_EQ(entries[3].text, "P6 La-LP");
+  EXPECT_EQ(entries[3].color.b, 0.8);
+  EXPECT_EQ(entries[3].color.g, 0.3);
+  EXPECT_EQ(entries[4].text, "path of p");
+  EXPECT_EQ(entries[4].color.r, 0.5);
+  EXPECT_EQ(entries[4].dash, (std::vector<double>{4.0, 3.0}));
+  EXPECT_TRUE(entries[3].dash.empty());
+  // No pattern layer: the method in dark grey, as before.
+  const Drawing plain = panel_drawing(scene_with({scene::KeyframesLayer{}, scene::LegendLayer{}}, {p}), p);
+  ASSERT_EQ(plain.legends.at(0).entries.size(), 4u);
+  EXPECT_EQ(plain.legends[0].entries[3].color.r, 0.2);
 }
 
 TEST(PatternLayer, RangeExtrapolatesBeyondTheKnots) {

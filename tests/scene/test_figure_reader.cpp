@@ -140,9 +140,10 @@ TEST(Canvas, ViewAutoAndShared) {
 TEST(Layers, Pattern) {
   const PatternLayer layer = only_layer<PatternLayer>(
       R"({"type": "pattern", "color": "#ff0000", "width": 2.5, "opacity": 0.5, "dash": [3, 1.5],
-          "extended": true, "samples": 40, "range": [-0.5, 2]})");
+          "extended": true, "coils": true, "samples": 40, "range": [-0.5, 2]})");
   expect_same_line(layer.line, LineStyle{rgb(1, 0, 0), 2.5, 0.5, {3, 1.5}});
   EXPECT_TRUE(layer.extended);
+  EXPECT_TRUE(layer.coils);
   EXPECT_EQ(layer.samples, 40);
   ASSERT_TRUE(layer.range.has_value());
   EXPECT_EQ(layer.range->from, -0.5);
@@ -157,6 +158,7 @@ TEST(Layers, LineFieldsOverrideOnlyWhatIsGiven) {
   EXPECT_FALSE(pattern.samples.has_value());
   EXPECT_FALSE(pattern.range.has_value());
   EXPECT_FALSE(pattern.extended);
+  EXPECT_FALSE(pattern.coils);
 
   const TrajectoryLayer trajectory =
       only_layer<TrajectoryLayer>(R"({"type": "trajectory", "color": "blue"})");
