@@ -191,6 +191,8 @@ class PoseBuilder {
           for (const scene::ShapeOutline& shape : panel_.shapes) {
             LineStyle line = layer.line;
             if (shape.color) line.color = *shape.color;
+            const bool corner = i == layer.columns - 1 && j == layer.rows - 1;
+            if (corner && layer.corner) line = *layer.corner;  // F_D highlighted
             std::vector<Point> points = mapped(pose, shape);
             if (layer.fill && shape.closed) {
               push(index, FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity, line});

@@ -612,8 +612,9 @@ constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "r
                                                           "width", "opacity", "dash"};
 constexpr std::array<std::string_view, 7> kExistenceFields = {
     "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
-constexpr std::array<std::string_view, 10> kPatchFields = {
-    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity"};
+constexpr std::array<std::string_view, 11> kPatchFields = {
+    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
+    "corner"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
@@ -709,6 +710,11 @@ PatchLayer read_patch(const Fields& fields) {
   read_line(fields, layer.line);
   fields.color("fill", layer.fill);
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  if (fields.get("corner") != nullptr) {  // unset members keep the patch's line
+    LineStyle corner = layer.line;
+    read_line_object(fields, "corner", corner);
+    layer.corner = corner;
+  }
   return layer;
 }
 

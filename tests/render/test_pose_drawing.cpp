@@ -141,6 +141,32 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
   EXPECT_THROW(pose_panel_drawing(scene, scene.panels[0]), RenderError);
 }
 
+// Fig. 11: "corner" draws the bottom-right shape, the computed F_D of a
+// regular patch, with its own line; every other shape keeps the patch's.
+TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
+  scene::Scene scene = sam_scene({});
+  scene.panels[0].poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
+  scene::PatchLayer layer;
+  layer.columns = 4;
+  layer.rows = 3;
+  layer.regular = true;
+  const scene::Color red{0.9, 0.0, 0.0, 1.0};
+  layer.corner = scene::LineStyle{red, 3.5, 1.0, {}};
+  scene.pose_layers = {layer};
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 12u);
+  for (std::size_t k = 0; k < drawing.items.size(); ++k) {
+    const scene::LineStyle& line = std::get<Polyline>(drawing.items[k].shape).line;
+    const bool corner = k == 11;
+    EXPECT_EQ(line.width, corner ? 3.5 : layer.line.width) << k;
+    EXPECT_EQ(line.color.r, corner ? red.r : layer.line.color.r) << k;
+  }
+  const auto& poses = scene.panels[0].poses;
+  const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
+                            homogeneous(poses[2].pose);
+  EXPECT_LT(std::abs(std::get<Polyline>(drawing.items[11].shape).points[2] - through(D, {0.0, 1.0})), 1e-11);
+}
+
 // Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
 TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
   scene::ExistenceLayer layer;
