@@ -301,6 +301,9 @@ struct PosesLayer {  // "poses": the shapes at the control poses
                             Color{0.0, 0.0, 0.85, 1.0}};  // one per pose, cycled
   double width = 2.0;
   double fill_opacity = 0.15;
+  // Four-point SAM (SAM Fig. 13): the control poses inserted by the panel's
+  // last subdivision step, drawn in this colour (docs/paper-notes.md N43).
+  std::optional<Color> inserted;
 };
 
 struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each frame

@@ -604,8 +604,8 @@ std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& va
 
 constexpr std::array<std::string_view, 9> kShapesFields = {
     "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"};
-constexpr std::array<std::string_view, 4> kPosesFields = {"type", "colors", "width",
-                                                          "fill_opacity"};
+constexpr std::array<std::string_view, 5> kPosesFields = {"type", "colors", "width",
+                                                          "fill_opacity", "inserted"};
 constexpr std::array<std::string_view, 8> kVelocitiesFields = {
     "type", "scale", "color", "width", "opacity", "dash", "samples", "range"};
 constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "range", "color",
@@ -660,6 +660,9 @@ PosesLayer read_poses_layer(const Fields& fields) {
   layer.colors = read_colors(fields, layer.colors);
   fields.number("width", kLineWidth, layer.width);
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  if (fields.get("inserted") != nullptr) {
+    layer.inserted = fields.reader().color(*fields.get("inserted"), fields.at("inserted"));
+  }
   return layer;
 }
 
