@@ -104,9 +104,13 @@ class LayerCost {
   void operator()(const scene::ShapesLayer& l) {
     frames(l.samples, "shapes", shapes_units());
   }
-  void operator()(const scene::PosesLayer&) {
+  void operator()(const scene::PosesLayer& l) {
+    // With "inserted", a four-point panel's last step adds n 2^(steps-1) poses.
+    const double inserted = l.inserted && panel_.subdivisions > 0
+                                ? std::ldexp(static_cast<double>(panel_.poses.size()), panel_.subdivisions - 1)
+                                : 0.0;
     add(layer_, "the shapes at the poses",
-        static_cast<double>(panel_.poses.size()) * shapes_units());
+        (static_cast<double>(panel_.poses.size()) + inserted) * shapes_units());
   }
   void operator()(const scene::VelocitiesLayer& l) {
     frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));

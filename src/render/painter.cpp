@@ -94,7 +94,7 @@ struct ShapePainter {
   void operator()(const Label& s) const {
     const Point at = view(s.at);
     paint_text(cr, s.text, font, s.size, s.color, at.real(), at.imag() - 0.6 * s.size,
-               TextAlign::left);
+               TextAlign::left, is_markup(s.text));
   }
   void operator()(const Image& s) const {
     const Affine2 to_canvas = image_to_canvas(s, view);
@@ -157,8 +157,14 @@ Affine2 image_to_canvas(const Image& image, const ViewTransform& view) {
   return compose(to_canvas, image.to_world);
 }
 
+bool is_markup(const std::string& text) {
+  if (text.find('<') == std::string::npos) return false;
+  return pango_parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr,
+                            nullptr) != FALSE;
+}
+
 void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
-                const Color& color, double x, double y, TextAlign align) {
+                const Color& color, double x, double y, TextAlign align, bool markup) {
   std::unique_ptr<PangoLayout, decltype(&unref)> layout(pango_cairo_create_layout(cr), &unref);
   cairo_font_options_t* options = cairo_font_options_create();
   cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
@@ -170,7 +176,11 @@ void paint_text(cairo_t* cr, const std::string& text, const std::string& font, d
   pango_font_description_set_absolute_size(description, size * PANGO_SCALE);
   pango_layout_set_font_description(layout.get(), description);
   pango_font_description_free(description);
-  pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
+  if (markup) {
+    pango_layout_set_markup(layout.get(), text.c_str(), static_cast<int>(text.size()));
+  } else {
+    pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
+  }
   int width = 0, height = 0;
   pango_layout_get_pixel_size(layout.get(), &width, &height);
   const double left = align == TextAlign::left     ? x

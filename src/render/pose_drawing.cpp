@@ -108,17 +108,35 @@ class PoseBuilder {
   void add(const scene::PosesLayer& layer) {
     const std::vector<TimedPose>& poses = panel_.poses;
     if (poses.empty()) fail("this layer draws the poses, and the panel has no poses");
-    for (std::size_t i = 0; i < poses.size(); ++i) {
-      const Color color = layer.colors[i % layer.colors.size()];
+    const auto draw = [&](int index, const Affine2& pose, Color color) {
       const LineStyle line{color, layer.width, 1.0, {}};
       for (const scene::ShapeOutline& shape : panel_.shapes) {
-        std::vector<Point> points = mapped(poses[i].pose, shape);
+        std::vector<Point> points = mapped(pose, shape);
         if (shape.closed) {
-          push(static_cast<int>(i), FilledPath{{std::move(points)}, color, layer.fill_opacity, line});
+          push(index, FilledPath{{std::move(points)}, color, layer.fill_opacity, line});
         } else {
-          push(static_cast<int>(i), Polyline{std::move(points), false, line});
+          push(index, Polyline{std::move(points), false, line});
         }
       }
+    };
+    // SAM Fig. 13's green blocks: the poses the last of the panel's four-point
+    // subdivision steps inserts, every other one of the subdivided sequence
+    // (subdivide_four_point keeps the old poses at the even places; N43).
+    if (layer.inserted && panel_.pose_method == PoseMethod::four_point && panel_.subdivisions > 0) {
+      (void)motion();  // the panel's motion, or its error, first
+      std::vector<Affine2> controls;
+      for (const TimedPose& pose : poses) controls.push_back(pose.pose);
+      try {
+        for (int step = 0; step < panel_.subdivisions; ++step) controls = subdivide_four_point(controls);
+      } catch (const NoRealLogarithm& error) {
+        fail(fmt::format("the four-point subdivision needs a SAM that does not exist: {}", error.what()));
+      }
+      for (std::size_t k = 1; k < controls.size(); k += 2) {
+        draw(static_cast<int>(poses.size() + k / 2), controls[k], *layer.inserted);
+      }
+    }
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      draw(static_cast<int>(i), poses[i].pose, layer.colors[i % layer.colors.size()]);
     }
   }
 
@@ -191,6 +209,8 @@ class PoseBuilder {
           for (const scene::ShapeOutline& shape : panel_.shapes) {
             LineStyle line = layer.line;
             if (shape.color) line.color = *shape.color;
+            const bool corner = i == layer.columns - 1 && j == layer.rows - 1;
+            if (corner && layer.corner) line = *layer.corner;  // F_D highlighted
             std::vector<Point> points = mapped(pose, shape);
             if (layer.fill && shape.closed) {
               push(index, FilledPath{{std::move(points)}, *layer.fill, layer.fill_opacity, line});

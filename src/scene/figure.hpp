@@ -302,6 +302,9 @@ struct PosesLayer {  // "poses": the shapes at the control poses
                             Color{0.0, 0.0, 0.85, 1.0}};  // one per pose, cycled
   double width = 2.0;
   double fill_opacity = 0.15;
+  // Four-point SAM (SAM Fig. 13): the control poses inserted by the panel's
+  // last subdivision step, drawn in this colour (docs/paper-notes.md N43).
+  std::optional<Color> inserted;
 };
 
 struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each frame
@@ -324,6 +327,7 @@ struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses
   LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
   std::optional<Color> fill;
   double fill_opacity = 0.25;
+  std::optional<LineStyle> corner;       // the bottom-right shape's line (Fig. 11's F_D), if given
 };
 
 // "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)

@@ -605,16 +605,17 @@ std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& va
 
 constexpr std::array<std::string_view, 9> kShapesFields = {
     "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"};
-constexpr std::array<std::string_view, 4> kPosesFields = {"type", "colors", "width",
-                                                          "fill_opacity"};
+constexpr std::array<std::string_view, 5> kPosesFields = {"type", "colors", "width",
+                                                          "fill_opacity", "inserted"};
 constexpr std::array<std::string_view, 8> kVelocitiesFields = {
     "type", "scale", "color", "width", "opacity", "dash", "samples", "range"};
 constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "range", "color",
                                                           "width", "opacity", "dash"};
 constexpr std::array<std::string_view, 7> kExistenceFields = {
     "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
-constexpr std::array<std::string_view, 10> kPatchFields = {
-    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity"};
+constexpr std::array<std::string_view, 11> kPatchFields = {
+    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
+    "corner"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
@@ -660,6 +661,9 @@ PosesLayer read_poses_layer(const Fields& fields) {
   layer.colors = read_colors(fields, layer.colors);
   fields.number("width", kLineWidth, layer.width);
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  if (fields.get("inserted") != nullptr) {
+    layer.inserted = fields.reader().color(*fields.get("inserted"), fields.at("inserted"));
+  }
   return layer;
 }
 
@@ -710,6 +714,11 @@ PatchLayer read_patch(const Fields& fields) {
   read_line(fields, layer.line);
   fields.color("fill", layer.fill);
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  if (fields.get("corner") != nullptr) {  // unset members keep the patch's line
+    LineStyle corner = layer.line;
+    read_line_object(fields, "corner", corner);
+    layer.corner = corner;
+  }
   return layer;
 }
 

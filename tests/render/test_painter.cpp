@@ -166,6 +166,32 @@ TEST(Painter, TextIsAlignedOnItsX) {
   EXPECT_NEAR((center_first + center_last) / 2.0, 150.0, 4.0);
 }
 
+// Labels: markup only when the text has a tag and parses; "F<sub>A</sub>"
+// drawn as markup is narrower than its 14 characters drawn as written, and
+// its subscript reaches lower than the F.
+TEST(Painter, LabelsTakeMarkupOnlyWhenItParses) {
+  EXPECT_TRUE(is_markup("F<sub>A</sub>"));
+  EXPECT_FALSE(is_markup("F_A"));
+  EXPECT_FALSE(is_markup("a < b"));
+  EXPECT_FALSE(is_markup("F<sub>A"));
+  EXPECT_FALSE(is_markup("x <= 1 & y"));
+  const auto ink = [](bool markup) {
+    const Surface canvas(400, 60);
+    paint_text(canvas.cr(), "F<sub>A</sub>", "Sans", 20.0, kBlueColor, 10.0, 10.0, TextAlign::left, markup);
+    return canvas.ink_columns();
+  };
+  const auto [markup_first, markup_last] = ink(true);
+  const auto [plain_first, plain_last] = ink(false);
+  EXPECT_LT(markup_last - markup_first, 45);   // "F" and a small "A"
+  EXPECT_GT(plain_last - plain_first, 100);    // fourteen characters
+  // Drawn through a Label, the same text is markup.
+  const Surface canvas(400, 60);
+  paint_drawing(canvas.cr(), with(Label{"F<sub>A</sub>", {-10.0, 0.0}, 20.0, kBlueColor}),
+                placement(0.0, 0.0, 400.0, 60.0), "Sans");
+  const auto [label_first, label_last] = canvas.ink_columns();
+  EXPECT_LT(label_last - label_first, 45);
+}
+
 // A top-right legend of size 11 in a 200 x 100 cell: 121 pixels wide, 6 from
 // the edges, its first swatch a 2-pixel line along y = 14.25 from x = 73 to 95.
 TEST(Painter, LegendSitsInItsCorner) {

@@ -141,6 +141,69 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
   EXPECT_THROW(pose_panel_drawing(scene, scene.panels[0]), RenderError);
 }
 
+// Fig. 11: "corner" draws the bottom-right shape, the computed F_D of a
+// regular patch, with its own line; every other shape keeps the patch's.
+TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
+  scene::Scene scene = sam_scene({});
+  scene.panels[0].poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
+  scene::PatchLayer layer;
+  layer.columns = 4;
+  layer.rows = 3;
+  layer.regular = true;
+  const scene::Color red{0.9, 0.0, 0.0, 1.0};
+  layer.corner = scene::LineStyle{red, 3.5, 1.0, {}};
+  scene.pose_layers = {layer};
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 12u);
+  for (std::size_t k = 0; k < drawing.items.size(); ++k) {
+    const scene::LineStyle& line = std::get<Polyline>(drawing.items[k].shape).line;
+    const bool corner = k == 11;
+    EXPECT_EQ(line.width, corner ? 3.5 : layer.line.width) << k;
+    EXPECT_EQ(line.color.r, corner ? red.r : layer.line.color.r) << k;
+  }
+  const auto& poses = scene.panels[0].poses;
+  const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
+                            homogeneous(poses[2].pose);
+  EXPECT_LT(std::abs(std::get<Polyline>(drawing.items[11].shape).points[2] - through(D, {0.0, 1.0})), 1e-11);
+}
+
+// Fig. 13: "inserted" adds the poses of the last four-point subdivision step,
+// which the polySAM through the subdivided poses (PoseMotion) passes through
+// at the odd multiples of a quarter of each span after two steps; other
+// methods insert nothing.
+TEST(PoseDrawing, PosesLayerDrawsTheInsertedPoses) {
+  scene::PosesLayer layer;
+  layer.colors = {scene::Color{0.8, 0.0, 0.0, 1.0}};
+  const scene::Color green{0.0, 0.6, 0.0, 1.0};
+  layer.inserted = green;
+  scene::Scene scene = sam_scene({layer}, PoseMethod::four_point);
+  std::vector<TimedPose> poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)},
+                                  {1.0, affinity(0.9, -0.4, 3.0, 0.4, 0.9, 2.0)},
+                                  {2.0, affinity(0.6, -0.9, 6.0, 0.8, 0.7, 1.0)},
+                                  {3.0, affinity(0.2, -1.2, 8.0, 1.1, 0.1, -1.0)}};
+  scene.panels[0].poses = poses;
+  scene.panels[0].subdivisions = 2;
+  const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 4u + 6u);
+  const PoseMotion motion(PoseMethod::four_point, poses, 2);
+  for (std::size_t k = 0; k < 6; ++k) {
+    const auto& block = std::get<FilledPath>(drawing.items[k].shape);
+    EXPECT_EQ(block.fill.g, green.g);
+    const double t = 0.25 + 0.5 * static_cast<double>(k);  // 0.25, 0.75, 1.25, ...
+    for (const Point p : {Point{1.0, 0.0}, Point{0.0, 1.0}}) {
+      const std::size_t vertex = p.real() > 0.5 ? 1 : 2;
+      EXPECT_LT(std::abs(block.contours[0][vertex] - through(homogeneous(motion.at(t)), p)), 1e-12) << t;
+    }
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& block = std::get<FilledPath>(drawing.items[6 + i].shape);
+    EXPECT_EQ(block.fill.r, 0.8);
+    EXPECT_LT(std::abs(block.contours[0][1] - through(homogeneous(poses[i].pose), {1.0, 0.0})), 1e-15);
+  }
+  scene.panels[0].pose_method = PoseMethod::poly_sam;
+  EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 4u);
+}
+
 // Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
 TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
   scene::ExistenceLayer layer;
