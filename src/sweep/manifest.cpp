@@ -142,8 +142,9 @@ bool ManifestReader::next(Row& row) {
   const std::size_t width = 4 + pointers_ + kMetricColumns.size();
   while (record(fields)) {
     if (fields.size() == 1 && fields[0].empty()) continue;
-    // A journal's last line may be cut short by a killed process: not a row.
-    if (!complete_ && fields.size() != width) return false;
+    // Every row ends with a line break: a last line without one was cut short
+    // by a killed process (a journal), and is not a row.
+    if (!complete_) return false;
     if (fields.size() != width) {
       throw std::runtime_error(fmt::format("{}:{}: {} fields, expected {}", path_, line_, fields.size(), width));
     }

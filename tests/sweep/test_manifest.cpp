@@ -50,6 +50,33 @@ TEST(Manifest, RoundTripsQuotedFields) {
   fs::remove(file);
 }
 
+TEST(Manifest, ALastLineCutShortIsNotARow) {
+  // What a killed sweep may leave at the end of its journal: the row's fields
+  // all there but the last one cut, and no line break.
+  Row a;
+  a.index = 3;
+  a.values = {"0.5"};
+  a.status = "ok";
+  a.hash = "0123456789abcdef";
+  a.metrics[15] = "yes";
+  std::string text;
+  append_row(text, a);
+  a.index = 4;
+  std::string cut;
+  append_row(cut, a);
+  cut.resize(cut.size() - 2);  // "...,ye"
+  const fs::path file = fs::temp_directory_path() / "pita-test-journal";
+  std::ofstream(file, std::ios::binary) << text << cut;
+  std::optional<ManifestReader> reader = ManifestReader::open(file, {"/keyframes/1/t"}, true);
+  ASSERT_TRUE(reader.has_value());
+  Row row;
+  ASSERT_TRUE(reader->next(row));
+  EXPECT_EQ(row.index, 3);
+  EXPECT_EQ(row.metrics[15], "yes");
+  EXPECT_FALSE(reader->next(row));
+  fs::remove(file);
+}
+
 TEST(Manifest, NamesAreTheSceneAndTheIndex) {
   EXPECT_EQ(variant_file("fig01", 7, 1000, "svg"), "fig01-7.svg");
   EXPECT_EQ(variant_file("fig01", 999, 1000, "scene.json"), "fig01-999.scene.json");
