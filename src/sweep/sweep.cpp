@@ -421,7 +421,9 @@ SweepSummary run_sweep(const SweepOptions& options) {
   // Rows are appended here as they finish, in index order: what a killed
   // process leaves, and what the next run folds into the manifest.
   const fs::path journal_path = dir / ("." + manifest + ".journal");
-  const auto [shard_k, shard_n] = options.shard.value_or(std::pair<int, int>{0, 1});
+  // Plain variables, not a structured binding: lambdas capture them (clang 14).
+  const int shard_k = options.shard ? options.shard->first : 0;
+  const int shard_n = options.shard ? options.shard->second : 1;
   const std::int64_t variants = grid.size();
   const std::int64_t mine = variants > shard_k ? (variants - shard_k + shard_n - 1) / shard_n : 0;
   const auto position = [&](std::int64_t index) { return (index - shard_k) / shard_n; };
