@@ -42,7 +42,8 @@ void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) 
   }
   if (!scene.title.empty()) {
     paint_text(cr, scene.title, canvas.font, kTitleSize, Color{0.05, 0.05, 0.05, 1.0},
-               0.5 * canvas.width, 0.5 * (kTitleBand - 1.3 * kTitleSize), TextAlign::center);
+               0.5 * canvas.width, 0.5 * (kTitleBand - 1.3 * kTitleSize), TextAlign::center,
+               is_markup(scene.title));
   }
   for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
     const PanelPlacement& place = figure.placements[i];
@@ -50,7 +51,8 @@ void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) 
     if (!title.empty()) {
       paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0},
                  place.title.x + 0.5 * place.title.width,
-                 place.title.y + 0.5 * (kPanelTitleBand - 1.3 * kPanelTitleSize), TextAlign::center);
+                 place.title.y + 0.5 * (kPanelTitleBand - 1.3 * kPanelTitleSize), TextAlign::center,
+                 is_markup(title));
     }
     paint_drawing(cr, figure.drawings[i], place, canvas.font);
   }

@@ -42,6 +42,12 @@ std::string trajectory_name(scene::TrackedPoint point) {
   return "path";
 }
 
+// A method as legends name it: "P6 La-LP", "SMA".
+std::string method_name(Method method) {
+  const MethodInfo& about = info(method);
+  return about.id == about.mnemonic ? std::string(about.id) : fmt::format("{} {}", about.id, about.mnemonic);
+}
+
 class PanelBuilder {
  public:
   PanelBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
@@ -81,12 +87,14 @@ class PanelBuilder {
     }
   }
 
-  // The frames at `times`; a frame that does not exist is the layer's error.
-  std::vector<Arrow> frames(const std::vector<double>& times) const {
+  // The frames at `times` (of the panel's motion, or of a layer's own); a
+  // frame that does not exist is the layer's error.
+  std::vector<Arrow> frames(const std::vector<double>& times) const { return frames(motion_, times); }
+  std::vector<Arrow> frames(const motion::SceneMotion& motion, const std::vector<double>& times) const {
     std::vector<Arrow> result;
     result.reserve(times.size());
     try {
-      for (double t : times) result.push_back(motion_.arrow_at(t));
+      for (double t : times) result.push_back(motion.arrow_at(t));
     } catch (const motion::NoMotion& error) {
       fail(layer_, error.reason());
     }
@@ -107,14 +115,36 @@ class PanelBuilder {
     return selection_ != nullptr ? trail_fade(i, count) : 1.0;
   }
 
+  // A pattern layer with its own "method" or "options" draws the motion of
+  // a copy of the panel that has them (N57); its errors are the layer's.
+  motion::SceneMotion layer_motion(const scene::PatternLayer& layer) const {
+    scene::Panel own = panel_;
+    if (layer.method) {
+      own.method = *layer.method;
+      own.method_name = std::string(info(*layer.method).id);
+    }
+    own.options = layer.options.over(panel_.options);
+    try {
+      return motion::build_motion(scene_, own);
+    } catch (const motion::NoMotion& error) {
+      fail(layer_ + (layer.method ? "/method" : "/options"), error.reason());
+    }
+  }
+
   void add(const scene::PatternLayer& layer) {
-    const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
+    const bool own = layer.method.has_value() || !layer.options.empty();
+    const std::vector<double> times = sequence_times(layer.samples, layer.range);
+    const std::vector<Arrow> pattern = own ? frames(layer_motion(layer), times) : frames(times);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
       const Arrow& frame = pattern[i];
       const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};
       LineStyle line = layer.line;
       line.opacity *= fade(i, pattern.size());
-      push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
+      if (layer.heads) {
+        push(static_cast<int>(i), ArrowShape{s.from, s.to, line});
+      } else {
+        push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
+      }
       drawing_.items.back().moving = selection_ != nullptr;
       if (!layer.coils) continue;
       // The frame's winding, drawn as the keyframes layer draws A's, B's, C's.
@@ -430,22 +460,29 @@ class PanelBuilder {
     }
     // The method in the colour of the first pattern layer (its frames), else
     // dark grey; after it the trajectories drawn, in their colour and dash.
+    // Overlaid patterns (a "label", or their own "method" or "options") get
+    // an entry each, named by the label, else by their method.
     Color method_color{0.2, 0.2, 0.2, 1.0};
     bool pattern_seen = false;
-    std::vector<LegendEntry> paths;
+    std::vector<LegendEntry> paths, overlays;
     for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+      const auto* pattern = std::get_if<scene::PatternLayer>(&other);
       if (const auto* path = std::get_if<scene::TrajectoryLayer>(&other)) {
         paths.push_back({path->line.color, trajectory_name(path->point), path->line.dash});
-      } else if (const auto* pattern = std::get_if<scene::PatternLayer>(&other); pattern && !pattern_seen) {
+      } else if (pattern != nullptr && (!pattern->label.empty() || pattern->method || !pattern->options.empty())) {
+        overlays.push_back({pattern->line.color,
+                            pattern->label.empty() ? method_name(pattern->method.value_or(panel_.method))
+                                                   : pattern->label,
+                            pattern->line.dash});
+      } else if (pattern != nullptr && !pattern_seen) {
         method_color = pattern->line.color;
         pattern_seen = true;
       }
     }
-    const MethodInfo& about = info(panel_.method);
-    legend.entries.push_back({method_color,
-                              about.id == about.mnemonic
-                                  ? std::string(about.id)
-                                  : fmt::format("{} {}", about.id, about.mnemonic)});
+    if (overlays.empty() || pattern_seen) {
+      legend.entries.push_back({method_color, method_name(panel_.method)});
+    }
+    legend.entries.insert(legend.entries.end(), overlays.begin(), overlays.end());
     legend.entries.insert(legend.entries.end(), paths.begin(), paths.end());
     drawing_.legends.push_back(std::move(legend));
   }

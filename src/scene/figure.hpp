@@ -74,10 +74,32 @@ struct TimeRange {
   double to = 1.0;
 };
 
+// A layer's "options": the panel's method options it changes, each left
+// unset keeps the panel's (docs/paper-notes.md N57).
+struct MethodOptionsPatch {
+  std::optional<Anchor> anchor;
+  std::optional<MeanKind> path_mean;
+  std::optional<MeanKind> magnitude_mean;
+
+  bool empty() const { return !anchor && !path_mean && !magnitude_mean; }
+  MethodOptions over(MethodOptions base) const {
+    if (anchor) base.anchor = *anchor;
+    if (path_mean) base.path_mean = *path_mean;
+    if (magnitude_mean) base.magnitude_mean = *magnitude_mean;
+    return base;
+  }
+};
+
 struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   LineStyle line{Color{0.2, 0.2, 0.2, 1.0}, 0.8, 1.0, {}};
+  // Overlays (Fig. 4): the frames of another method, or of the panel's with
+  // other options, through the panel's keyframes; "label" names it in legends.
+  std::optional<Method> method;
+  MethodOptionsPatch options;
+  std::string label;
   bool extended = false;               // draw from p - (q - p) to q (Sec. 2.1)
   bool coils = false;                  // each frame's winding as a spiral at p (Fig. 3)
+  bool heads = false;                  // each frame as an arrow, head at q (Figs. 7, 28)
   std::optional<int> samples;          // default: the panel's samples
   std::optional<TimeRange> range;      // default: [a, c]
 };

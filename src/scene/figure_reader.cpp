@@ -31,8 +31,9 @@ constexpr std::array<std::string_view, 8> kCanvasFields = {
 constexpr std::array<std::string_view, 2> kBoxFields = {"min", "max"};
 constexpr std::array<std::string_view, 4> kLineFields = {"color", "width", "opacity", "dash"};
 
-constexpr std::array<std::string_view, 9> kPatternFields = {
-    "type", "color", "width", "opacity", "dash", "extended", "coils", "samples", "range"};
+constexpr std::array<std::string_view, 13> kPatternFields = {
+    "type", "color", "width", "opacity", "dash", "extended", "coils", "heads", "samples", "range",
+    "method", "options", "label"};
 constexpr std::array<std::string_view, 7> kKeyframesFields = {
     "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
 constexpr std::array<std::string_view, 8> kTrajectoryFields = {
@@ -195,13 +196,36 @@ void read_figure_samples(const Fields& fields, std::optional<int>& out) {
   fields.integer("samples", 2, kMaxFigureSamples, out);
 }
 
+// A layer's "options": those of the panel's method options a layer may change.
+// The knot order is not one of them: it decides how the panel's keyframes
+// were read (N41).
+MethodOptionsPatch read_options_patch(const Fields& fields, const Json& value) {
+  const std::string pointer = fields.at("options");
+  if (value.is_object() && JsonReader::member(value, "knots") != nullptr) {
+    fields.reader().fail(pointer + "/knots", "the knot order belongs to the panel's keyframes; give it in the "
+                                             "panel's or the scene's \"options\"");
+  }
+  const MethodOptions read = fields.reader().options(value, pointer, MethodOptions{});
+  MethodOptionsPatch patch;
+  if (JsonReader::member(value, "anchor") != nullptr) patch.anchor = read.anchor;
+  if (JsonReader::member(value, "path_mean") != nullptr) patch.path_mean = read.path_mean;
+  if (JsonReader::member(value, "magnitude_mean") != nullptr) patch.magnitude_mean = read.magnitude_mean;
+  return patch;
+}
+
 PatternLayer read_pattern(const Fields& fields) {
   PatternLayer layer;
   read_line(fields, layer.line);
   fields.boolean("extended", layer.extended);
   fields.boolean("coils", layer.coils);
+  fields.boolean("heads", layer.heads);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
+  if (const Json* method = fields.get("method")) layer.method = fields.reader().method(*method, fields.at("method"));
+  if (const Json* options = fields.get("options")) layer.options = read_options_patch(fields, *options);
+  if (const Json* label = fields.get("label")) {
+    layer.label = fields.reader().text(*label, fields.at("label"), kMaxTextLength);
+  }
   return layer;
 }
 

@@ -2,6 +2,7 @@
 // motions themselves and the paper's definitions, not against saved output.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -126,6 +127,107 @@ TEST(PatternLayer, RangeExtrapolatesBeyondTheKnots) {
   const auto lines = shapes<Polyline>(d);
   const Arrow predicted = make_motion(Method::P8, p.keyframes)->at(1.5);
   EXPECT_NEAR(std::abs(lines.back()->points[0] - predicted.p), 0.0, 1e-12);
+}
+
+// Fig. 4 (N57): a pattern layer with its own options draws the panel's
+// method with those options changed, the others kept.
+TEST(PatternLayer, OverlayDrawsItsOwnOptionsOverThePanels) {
+  const Arrow A{{0.0, 0.0}, 1.6, 1.7}, B{{5.0, 0.0}, 0.4, 1.2};
+  scene::Panel p = panel(Method::SMA, {{0.0, A}, {1.0, B}}, 9);
+  p.options.path_mean = MeanKind::arithmetic;
+  scene::PatternLayer overlay;
+  overlay.options.magnitude_mean = MeanKind::harmonic;
+  const Drawing d = panel_drawing(scene_with({overlay}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  ASSERT_EQ(lines.size(), 9u);
+  // The same frames as a panel given both options.
+  scene::Panel both = p;
+  both.options.magnitude_mean = MeanKind::harmonic;
+  const auto frames = frames_of(both, 9);
+  for (std::size_t i = 0; i < 9; ++i) {
+    EXPECT_NEAR(std::abs(lines[i]->points[0] - frames[i].p), 0.0, 1e-12) << i;
+    EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12) << i;
+  }
+  // Independently: at t = 1/2 the magnitude is the harmonic mean of 1.6 and
+  // 0.4, 2 / (1/1.6 + 1/0.4) = 0.64, and p the arithmetic mean (2.5, 0).
+  EXPECT_NEAR(std::abs(lines[4]->points[1] - lines[4]->points[0]), 0.64, 1e-12);
+  EXPECT_NEAR(std::abs(lines[4]->points[0] - Point(2.5, 0.0)), 0.0, 1e-12);
+  // The panel's own pattern is unchanged: magnitude WGM, sqrt(1.6 * 0.4) = 0.8.
+  const Drawing own = panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
+  const auto plain = shapes<Polyline>(own);
+  EXPECT_NEAR(std::abs(plain[4]->points[1] - plain[4]->points[0]), 0.8, 1e-12);
+}
+
+TEST(PatternLayer, OverlayOfAnotherMethodThroughThePanelsKeyframes) {
+  const scene::Panel p = panel(Method::P6, three_keyframes(), 7);
+  scene::PatternLayer overlay;
+  overlay.method = Method::P1;
+  const Drawing d = panel_drawing(scene_with({overlay}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  const auto frames = frames_of(panel(Method::P1, three_keyframes(), 7), 7);
+  ASSERT_EQ(lines.size(), 7u);
+  double apart = 0.0;  // and not P6's: the keyframes were chosen so they differ
+  const auto p6 = frames_of(p, 7);
+  for (std::size_t i = 0; i < 7; ++i) {
+    EXPECT_NEAR(std::abs(lines[i]->points[0] - frames[i].p), 0.0, 1e-12) << i;
+    EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12) << i;
+    apart = std::max(apart, std::abs(lines[i]->points[1] - p6[i].q()));
+  }
+  EXPECT_GT(apart, 1e-3);
+}
+
+TEST(PatternLayer, OverlayWhoseMethodCannotTakeTheKeyframesIsTheLayersError) {
+  scene::Panel p = panel(Method::P6, three_keyframes());
+  p.pointer = "/panels/1";
+  scene::PatternLayer overlay;
+  overlay.method = Method::SMA;  // two keyframes, the panel has three
+  p.layers = std::vector<scene::Layer>{scene::KeyframesLayer{}, overlay};
+  try {
+    panel_drawing(scene_with({}, {p}), p);
+    FAIL() << "expected a RenderError";
+  } catch (const RenderError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("test.json: /panels/1/layers/1/method: ", 0), 0u) << error.what();
+  }
+}
+
+TEST(PatternLayer, HeadsDrawEachFrameAsAnArrowFromPToQ) {
+  const scene::Panel p = panel(Method::P3, three_keyframes(), 5);
+  scene::PatternLayer layer;
+  layer.heads = true;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto arrows = shapes<ArrowShape>(d);
+  const auto frames = frames_of(p, 5);
+  ASSERT_EQ(arrows.size(), 5u);
+  EXPECT_TRUE(shapes<Polyline>(d).empty());
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_NEAR(std::abs(arrows[i]->from - frames[i].p), 0.0, 1e-12) << i;
+    EXPECT_NEAR(std::abs(arrows[i]->to - frames[i].q()), 0.0, 1e-12) << i;
+  }
+}
+
+TEST(LegendLayer, OverlaidPatternsGetAnEntryEach) {
+  const scene::Panel p = panel(Method::SMA, {{0.0, Arrow{{0, 0}, 1.0, 0.0}}, {1.0, Arrow{{2, 0}, 0.5, 1.0}}});
+  std::vector<scene::Layer> layers;
+  const std::array<MeanKind, 3> means{MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic};
+  for (std::size_t i = 0; i < 3; ++i) {
+    scene::PatternLayer overlay;
+    overlay.options.magnitude_mean = means[i];
+    overlay.line.color = Color{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0, 1.0};
+    overlay.label = "magnitude " + std::to_string(i);
+    layers.push_back(overlay);
+  }
+  scene::PatternLayer other;
+  other.method = Method::SMA;  // no label: named by its method
+  layers.push_back(other);
+  layers.push_back(scene::LegendLayer{});
+  const Drawing d = panel_drawing(scene_with(layers, {p}), p);
+  const auto& entries = d.legends.at(0).entries;
+  ASSERT_EQ(entries.size(), 6u);  // A, B, three labelled overlays, the unlabelled one; no panel entry
+  EXPECT_EQ(entries[2].text, "magnitude 0");
+  EXPECT_EQ(entries[2].color.r, 1.0);
+  EXPECT_EQ(entries[4].text, "magnitude 2");
+  EXPECT_EQ(entries[4].color.b, 1.0);
+  EXPECT_EQ(entries[5].text, "SMA");
 }
 
 TEST(StrokeLayer, QuadCornersAreTheFramesEndpoints) {
