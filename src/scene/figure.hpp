@@ -80,6 +80,10 @@ struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   bool coils = false;                  // each frame's winding as a spiral at p (Fig. 3)
   std::optional<int> samples;          // default: the panel's samples
   std::optional<TimeRange> range;      // default: [a, c]
+  std::vector<double> times;           // set: exactly these times (Fig. 5's D(1/4)), not samples/range
+  std::optional<Method> method;        // set: the frames of this method through the panel's
+                                       // keyframes (Fig. 5 overlays four vector motions)
+  bool dots = false;                   // a dot at each frame's p instead of its segment (Fig. 6)
 };
 
 struct KeyframesLayer {  // "keyframes": A, B, C as arrows with heads and winding spirals
