@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "analysis/audit.hpp"
+#include "analysis/comparison.hpp"
+#include "core/methods.hpp"
 #include "analysis/measure.hpp"
 #include "analysis/frame_derivatives.hpp"
 #include "analysis/prediction.hpp"
@@ -40,6 +42,12 @@ std::string trajectory_name(scene::TrackedPoint point) {
     case scene::TrackedPoint::middle: return "path of the midpoint";
   }
   return "path";
+}
+
+// A printed comparison: a value below 1e-12 in magnitude is rounding noise,
+// whose digits differ between compilers, so it is printed as "< 1e-12".
+std::string rounding_or_value(double value) {
+  return std::abs(value) < 1e-12 ? std::string("< 1e-12") : fmt::format("{:.3g}", value);
 }
 
 // A method as legends name it: "P6 La-LP", "SMA".
@@ -133,14 +141,20 @@ class PanelBuilder {
 
   void add(const scene::PatternLayer& layer) {
     const bool own = layer.method.has_value() || !layer.options.empty();
-    const std::vector<double> times = sequence_times(layer.samples, layer.range);
+    // "times": exactly those (an animation frame still draws its own time).
+    const std::vector<double> times =
+        layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times;
     const std::vector<Arrow> pattern = own ? frames(layer_motion(layer), times) : frames(times);
+    // A dot's radius: a fixed share of the first keyframe's magnitude.
+    const double dot = 0.015 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
       const Arrow& frame = pattern[i];
       const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};
       LineStyle line = layer.line;
       line.opacity *= fade(i, pattern.size());
-      if (layer.heads) {
+      if (layer.dots) {
+        push(static_cast<int>(i), Circle{frame.p, dot, line, line.color});
+      } else if (layer.heads) {
         push(static_cast<int>(i), ArrowShape{s.from, s.to, line});
       } else {
         push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
@@ -389,9 +403,38 @@ class PanelBuilder {
   // "measures": the numbers of `pita measure` for this panel's motion.
   void add(const scene::MeasuresLayer& layer) {
     if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
-    const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
-    if (measures.no_motion) fail(layer_, *measures.no_motion);
-    add_measure_text(layer, measure_lines(measures, layer.show), drawing_, layer_);
+    // "angle:M@t" and "handle-shift" compare with another motion
+    // (analysis/comparison.hpp); the others are `pita measure`'s.
+    std::vector<std::string> lines(layer.show.size());
+    std::vector<std::string> others;
+    for (std::size_t i = 0; i < layer.show.size(); ++i) {
+      const std::string& name = layer.show[i];
+      try {
+        if (name == "handle-shift") {
+          lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(scene_, panel_)));
+        } else if (name.starts_with("angle:")) {
+          const std::size_t at = name.find('@');
+          const MethodEntry* other = find_method_entry(name.substr(6, at - 6), MotionKind::arrows);
+          const double t = std::stod(name.substr(at + 1));
+          const double angle = analysis::vector_angle(scene_, panel_, other->method, t);
+          lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", panel_.method_name, other->id,
+                                 name.substr(at + 1), rounding_or_value(angle));
+        } else {
+          others.push_back(name);
+        }
+      } catch (const motion::NoMotion& error) {
+        fail(layer_, error.reason());
+      }
+    }
+    if (!others.empty()) {
+      const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+      if (measures.no_motion) fail(layer_, *measures.no_motion);
+      const std::vector<std::string> measured = measure_lines(measures, others);
+      for (std::size_t i = 0, k = 0; i < lines.size(); ++i) {
+        if (lines[i].empty()) lines[i] = measured[k++];
+      }
+    }
+    add_measure_text(layer, lines, drawing_, layer_);
   }
 
   void add(const scene::PointTrajectoryLayer& layer) {

@@ -92,8 +92,8 @@ struct MethodOptionsPatch {
 
 struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   LineStyle line{Color{0.2, 0.2, 0.2, 1.0}, 0.8, 1.0, {}};
-  // Overlays (Fig. 4): the frames of another method, or of the panel's with
-  // other options, through the panel's keyframes; "label" names it in legends.
+  // Overlays (Figs. 4, 5): the frames of another method, or of the panel's
+  // with other options, through the panel's keyframes; "label" names it in legends.
   std::optional<Method> method;
   MethodOptionsPatch options;
   std::string label;
@@ -102,6 +102,8 @@ struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   bool heads = false;                  // each frame as an arrow, head at q (Figs. 7, 28)
   std::optional<int> samples;          // default: the panel's samples
   std::optional<TimeRange> range;      // default: [a, c]
+  std::vector<double> times;           // set: exactly these times (Fig. 5's D(1/4)), not samples/range
+  bool dots = false;                   // a dot at each frame's p instead of its segment (Fig. 6)
 };
 
 struct KeyframesLayer {  // "keyframes": A, B, C as arrows with heads and winding spirals

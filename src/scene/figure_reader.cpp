@@ -1,6 +1,7 @@
 #include "scene/figure_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <span>
@@ -8,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "core/methods.hpp"
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/timing_reader.hpp"
@@ -31,9 +33,9 @@ constexpr std::array<std::string_view, 8> kCanvasFields = {
 constexpr std::array<std::string_view, 2> kBoxFields = {"min", "max"};
 constexpr std::array<std::string_view, 4> kLineFields = {"color", "width", "opacity", "dash"};
 
-constexpr std::array<std::string_view, 13> kPatternFields = {
-    "type", "color", "width", "opacity", "dash", "extended", "coils", "heads", "samples", "range",
-    "method", "options", "label"};
+constexpr std::array<std::string_view, 15> kPatternFields = {
+    "type", "color", "width", "opacity", "dash", "extended", "coils", "heads", "dots", "samples", "range",
+    "times", "method", "options", "label"};
 constexpr std::array<std::string_view, 7> kKeyframesFields = {
     "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
 constexpr std::array<std::string_view, 8> kTrajectoryFields = {
@@ -48,9 +50,10 @@ constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", 
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
 // The names a "measures" layer shows (README "pita measure"), besides
-// "gain:K.x" and "jump:K.x".
-constexpr std::array<std::string_view, 8> kMeasureNames = {
-    "discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "ara", "area"};
+// "gain:K.x", "turn:K.x", "jump:K.x" and "angle:M@t" (analysis/comparison.hpp).
+constexpr std::array<std::string_view, 9> kMeasureNames = {
+    "discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "ara", "area",
+    "handle-shift"};
 
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
@@ -221,11 +224,22 @@ PatternLayer read_pattern(const Fields& fields) {
   fields.boolean("heads", layer.heads);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
+  if (const Json* times = fields.get("times")) {
+    const std::string pointer = fields.at("times");
+    if (!times->is_array() || times->empty() || times->size() > static_cast<std::size_t>(kMaxFigureSamples)) {
+      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples,
+                                                value_text(*times)));
+    }
+    for (std::size_t i = 0; i < times->size(); ++i) {
+      layer.times.push_back(fields.reader().number((*times)[i], element_pointer(pointer, i)));
+    }
+  }
   if (const Json* method = fields.get("method")) layer.method = fields.reader().method(*method, fields.at("method"));
   if (const Json* options = fields.get("options")) layer.options = read_options_patch(fields, *options);
   if (const Json* label = fields.get("label")) {
     layer.label = fields.reader().text(*label, fields.at("label"), kMaxTextLength);
   }
+  fields.boolean("dots", layer.dots);
   return layer;
 }
 
@@ -362,6 +376,24 @@ bool is_parameter_measure(std::string_view name) {
   return false;
 }
 
+// "angle:Pa-Po@0.25": an arrow method (registry name) and a finite time.
+bool is_angle_measure(std::string_view name) {
+  if (!name.starts_with("angle:")) return false;
+  const std::size_t at = name.find('@');
+  if (at == std::string_view::npos) return false;
+  const MethodEntry* entry = find_method_entry(name.substr(6, at - 6), MotionKind::arrows);
+  if (entry == nullptr) return false;
+  const std::string time(name.substr(at + 1));
+  if (time.empty()) return false;
+  std::size_t used = 0;
+  try {
+    const double t = std::stod(time, &used);
+    return used == time.size() && std::isfinite(t);
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 MeasuresLayer read_measures(const Fields& fields) {
   MeasuresLayer layer;
   const JsonReader& reader = fields.reader();
@@ -376,12 +408,12 @@ MeasuresLayer read_measures(const Fields& fields) {
       const std::string item_at = at + "/" + std::to_string(i);
       const std::string name = reader.string((*show)[i], item_at);
       const bool known = std::find(kMeasureNames.begin(), kMeasureNames.end(), name) != kMeasureNames.end();
-      if (!known && !is_parameter_measure(name)) {
+      if (!known && !is_parameter_measure(name) && !is_angle_measure(name)) {
         const std::vector<std::string> close = closest_names(name, kMeasureNames);
         reader.fail(item_at, close.empty()
                                  ? fmt::format("unknown measure \"{}\"; measures: {}, or \"gain:K.x\", "
                                                "\"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, p.x, "
-                                               "p.y, q.x, q.y, m, w, t",
+                                               "p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method",
                                                name, quoted_choices(kMeasureNames))
                                  : fmt::format("unknown measure \"{}\"{}", name, did_you_mean(close)));
       }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "core/discrepancy.hpp"
@@ -60,6 +61,47 @@ TEST(PatternLayer, ExtendedFormHasPAtItsMidpoint) {
   for (std::size_t i = 0; i < frames.size(); ++i) {
     EXPECT_NEAR(std::abs(0.5 * (lines[i]->points[0] + lines[i]->points[1]) - frames[i].p), 0.0, 1e-12);
     EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12);
+  }
+}
+
+TEST(PatternLayer, TimesAndMethodDrawAnotherMethodsFramesAtThoseTimes) {
+  // Fig. 5: keyframes at a common origin; the layer draws Pa-Po (parabola,
+  // polar Lagrange) at t = 1/4 and 3/4 while the panel's method is P6. Pa-
+  // keeps p at 0 and -Po blends m and w by the Lagrange weights of Eq. 9.
+  const std::array<double, 3> m = {0.6, 2.4, 1.2}, w = {0.1, 1.6, 3.3};
+  std::vector<Keyframe> keys;
+  for (std::size_t i = 0; i < 3; ++i) keys.push_back({0.5 * static_cast<double>(i), Arrow{{0.0, 0.0}, m[i], w[i]}});
+  const scene::Panel p = panel(Method::P6, keys, 9);
+  scene::PatternLayer layer;
+  layer.times = {0.25, 0.75};
+  layer.method = Method::PaPo;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  const auto lines = shapes<Polyline>(d);
+  ASSERT_EQ(lines.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double t = layer.times[k];
+    const std::array<double, 3> L = {(t - 0.5) * (t - 1.0) / 0.5, t * (t - 1.0) / -0.25, t * (t - 0.5) / 0.5};
+    const double mt = L[0] * m[0] + L[1] * m[1] + L[2] * m[2];
+    const double wt = L[0] * w[0] + L[1] * w[1] + L[2] * w[2];
+    EXPECT_NEAR(std::abs(lines[k]->points[0]), 0.0, 1e-12) << t;
+    EXPECT_NEAR(std::abs(lines[k]->points[1] - std::polar(mt, wt)), 0.0, 1e-12) << t;
+  }
+}
+
+TEST(PatternLayer, DotsDrawEachFramesStartPoint) {
+  // Fig. 6: a dot (filled circle) at D(t_i).p, no segment.
+  const scene::Panel p = panel(Method::P2, three_keyframes(), 7);
+  scene::PatternLayer layer;
+  layer.dots = true;
+  const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
+  EXPECT_TRUE(shapes<Polyline>(d).empty());
+  const auto dots = shapes<Circle>(d);
+  const auto frames = frames_of(p, 7);
+  ASSERT_EQ(dots.size(), 7u);
+  for (std::size_t i = 0; i < 7; ++i) {
+    EXPECT_NEAR(std::abs(dots[i]->center - frames[i].p), 0.0, 1e-12) << i;
+    EXPECT_GT(dots[i]->radius, 0.0);
+    EXPECT_TRUE(dots[i]->fill.has_value());
   }
 }
 

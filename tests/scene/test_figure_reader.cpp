@@ -150,6 +150,19 @@ TEST(Layers, Pattern) {
   EXPECT_EQ(layer.range->to, 2);
 }
 
+TEST(Layers, PatternTimesMethodDots) {
+  const PatternLayer layer = only_layer<PatternLayer>(
+      R"({"type": "pattern", "times": [0.25, -1, 3], "method": "pa-po", "dots": true})");
+  EXPECT_EQ(layer.times, (std::vector<double>{0.25, -1, 3}));
+  ASSERT_TRUE(layer.method.has_value());
+  EXPECT_EQ(*layer.method, Method::PaPo);
+  EXPECT_TRUE(layer.dots);
+  const PatternLayer plain = only_layer<PatternLayer>(R"({"type": "pattern"})");
+  EXPECT_TRUE(plain.times.empty());
+  EXPECT_FALSE(plain.method.has_value());
+  EXPECT_FALSE(plain.dots);
+}
+
 TEST(Layers, LineFieldsOverrideOnlyWhatIsGiven) {
   const PatternLayer pattern = only_layer<PatternLayer>(R"({"type": "pattern", "width": 3})");
   LineStyle expected = PatternLayer{}.line;
@@ -302,7 +315,12 @@ TEST(Layers, Measures) {
   EXPECT_EQ(only_layer<MeasuresLayer>(R"({"type": "measures", "at": "top-right"})").corner,
             LegendLayer::Corner::top_right);
   // Malformed parameter names (tests/data/bad/layers-measures-* for the messages).
-  for (const char* bad : {"gain:", "gain:b.q", "gain:B", "gain:B.q.z", "jump:K2x.p", "gain:AB.q", "size:B.q"}) {
+  // The comparisons (analysis/comparison.hpp): an arrow method and a finite time.
+  EXPECT_EQ(only_layer<MeasuresLayer>(R"({"type": "measures", "show": ["angle:Pa-Po@0.25", "angle:p1@-1e-1", "handle-shift"]})").show,
+            (std::vector<std::string>{"angle:Pa-Po@0.25", "angle:p1@-1e-1", "handle-shift"}));
+  for (const char* bad : {"gain:", "gain:b.q", "gain:B", "gain:B.q.z", "jump:K2x.p", "gain:AB.q", "size:B.q",
+                          "angle:P3", "angle:P3@", "angle:P99@0.5", "angle:SAM@0.5", "angle:P3@0.5x", "angle:P3@1e999",
+                          "angle:@0.5"}) {
     EXPECT_THROW(p6(std::string(R"(, "layers": [{"type": "measures", "show": [")") + bad + R"("]}])"), SceneError)
         << bad;
   }

@@ -1,0 +1,34 @@
+// Two measures that compare a panel's motion with another motion through
+// related keyframes, printed by the "measures" layer (README "Figure fields"):
+//   - "angle:M@t" (PITA Fig. 5): the angle between the panel's D(t).w and the
+//     D(t).w of method M through the same keyframes (0 for -Po against -LP:
+//     both take the winding from the same Lagrange blend, Sec. 3.1);
+//   - "handle-shift" (PITA Sec. 4.5, Fig. 11): how far the shapes carried by
+//     the panel's handle and keyframes land from where the scene's handle and
+//     keyframes carry them under the same method (0 for a handle-invariant
+//     PITA when the two handles mark the same key-shapes).
+#pragma once
+
+#include "core/pitas/registry.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::analysis {
+
+// Times at which "handle-shift" compares the carried shapes: dense against
+// the patterns the figures draw (9 to 17 frames), cheap (two motions).
+inline constexpr int kHandleShiftSamples = 129;
+
+// The signed angle arg(D_M(t).w / D(t).w) in (-pi, pi] from the panel's
+// frame vector at scene time t to that of `other` (the panel's keyframes,
+// options and timing with `other` as the method). Throws motion::NoMotion.
+double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method other, double t);
+
+// max over kHandleShiftSamples times of [first knot, last knot] and over the
+// points of the panel's shapes x of |S(t) x - S0(t) x|, world units, where
+// S(t) takes the panel's handle onto the panel's D(t) and S0(t) takes the
+// scene's handle onto D0(t), the panel's method (and options, timing) through
+// the scene's keyframes (PITA Sec. 4.5; core/carrier.hpp). 0 when the panel
+// has no shapes. Throws motion::NoMotion.
+double handle_shift(const scene::Scene& scene, const scene::Panel& panel);
+
+}  // namespace pita::analysis

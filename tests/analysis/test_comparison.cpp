@@ -1,0 +1,158 @@
+// The comparisons of analysis/comparison.cpp against closed forms: Fig. 5's
+// angles between vector motions (Lagrange weights by hand) and Fig. 11's
+// handle shift (0 for handle-invariant methods, the Pa-LP shift by hand).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "analysis/comparison.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::analysis {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Quadratic Lagrange weights of knots 0, 1/2, 1 at t (Eq. 9).
+std::array<double, 3> lagrange(double t) {
+  return {(t - 0.5) * (t - 1.0) / 0.5, t * (t - 1.0) / -0.25, t * (t - 0.5) / 0.5};
+}
+
+// Three keyframes at the common origin (Fig. 5), even knots.
+constexpr std::array<double, 3> kM = {0.6, 2.4, 1.2};
+constexpr std::array<double, 3> kW = {0.1, 1.6, 3.3};
+
+scene::Scene common_origin(const std::string& method) {
+  return scene::parse_scene(fmt::format(R"({{"method": "{}", "keyframes": [
+      {{"t": 0, "p": [0, 0], "m": {}, "w": {}}}, {{"t": 0.5, "p": [0, 0], "m": {}, "w": {}}},
+      {{"t": 1, "p": [0, 0], "m": {}, "w": {}}}]}})",
+                                        method, kM[0], kW[0], kM[1], kW[1], kM[2], kW[2]),
+                            "test.json");
+}
+
+TEST(Comparison, PolarAndLogPolarVectorsAreParallel) {
+  // -Po and -LP blend the winding w by the same Lagrange weights (Sec. 3.1):
+  // D(t).w has the same direction at every t, only the magnitude differs.
+  const scene::Scene scene = common_origin("P3");
+  for (const double t : {0.1, 0.25, 0.75, 0.9}) {
+    EXPECT_NEAR(vector_angle(scene, scene.panels.front(), Method::PaPo, t), 0.0, 1e-12) << t;
+  }
+  // Extrapolated to t = 1.3 the Lagrange blend of the magnitudes is
+  // 0.48 * 0.6 - 1.56 * 2.4 + 2.08 * 1.2 = -0.96 < 0: -Po's vector points
+  // backwards, still on the same line (angle pi); -LP's magnitude stays > 0.
+  EXPECT_NEAR(std::abs(vector_angle(scene, scene.panels.front(), Method::PaPo, 1.3)), kPi, 1e-12);
+}
+
+TEST(Comparison, CartesianAgainstLogPolarMatchesTheLagrangeBlends) {
+  const scene::Scene scene = common_origin("P3");
+  const double t = 0.25;
+  const std::array<double, 3> L = lagrange(t);
+  std::complex<double> cartesian = 0.0;
+  double winding = 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    cartesian += L[i] * std::polar(kM[i], kW[i]);  // -Ca: zero-turn vectors (all in (-pi, pi] here)
+    winding += L[i] * kW[i];                       // -LP: the winding
+  }
+  const double expected = std::remainder(std::arg(cartesian) - winding, 2.0 * kPi);
+  const double measured = vector_angle(scene, scene.panels.front(), Method::P1, t);
+  EXPECT_NEAR(measured, expected, 1e-12);
+  EXPECT_GT(std::abs(measured), 0.1);  // the configuration separates them
+}
+
+// Fig. 11's configuration: an F-shaped polygon, the red handle = keyframe A
+// on its stem (the scene's handle), and the orange handle E' on its top bar
+// with the keyframes A', B', C' that mark the same key-shapes:
+// K' = S_K(E') with S_K the similarity taking A onto K, winding w_K + angle(E') - angle(A).
+struct Key {
+  double t;
+  std::complex<double> p;
+  double m, w;
+};
+constexpr std::array<double, 3> kT = {0.0, 0.5, 1.0};
+const std::array<Key, 3> kRed = {Key{0.0, {0.15, 0.1}, 1.1, kPi / 2}, Key{0.5, {3.6, 2.4}, 0.7, -0.4},
+                                 Key{1.0, {6.8, -0.4}, 1.4, 2.6}};
+const std::complex<double> kEp{0.3, 1.3}, kEq{0.9, 1.3};
+
+std::array<Key, 3> orange() {
+  std::array<Key, 3> keys{};
+  const std::complex<double> a = std::polar(kRed[0].m, kRed[0].w);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::complex<double> r = std::polar(kRed[i].m, kRed[i].w) / a;
+    const std::complex<double> p = kRed[i].p + r * (kEp - kRed[0].p);
+    const std::complex<double> q = kRed[i].p + r * (kEq - kRed[0].p);
+    keys[i] = Key{kT[i], p, std::abs(q - p), kRed[i].w + std::arg((kEq - kEp) / a)};
+  }
+  return keys;
+}
+
+std::string keys_json(const std::array<Key, 3>& keys) {
+  std::string out;
+  for (const Key& k : keys) {
+    out += fmt::format(R"({}{{"t": {}, "p": [{:.17g}, {:.17g}], "m": {:.17g}, "w": {:.17g}}})", out.empty() ? "" : ", ",
+                       k.t, k.p.real(), k.p.imag(), k.m, k.w);
+  }
+  return "[" + out + "]";
+}
+
+const char* const kF = R"([[0, 0], [0, 1.35], [0.9, 1.35], [0.9, 1.08], [0.27, 1.08], [0.27, 0.765],
+                           [0.72, 0.765], [0.72, 0.495], [0.27, 0.495], [0.27, 0]])";
+
+double shift(const std::string& method) {
+  const std::string text = fmt::format(
+      R"({{"method": "{}", "keyframes": {}, "shapes": [{{"polygon": {}}}],
+          "panels": [{{"method": "{}", "keyframes": {}, "handle": {{"p": [{}, {}], "q": [{}, {}]}}}}]}})",
+      method, keys_json(kRed), kF, method, keys_json(orange()), kEp.real(), kEp.imag(), kEq.real(), kEq.imag());
+  const scene::Scene scene = scene::parse_scene(text, "test.json");
+  return handle_shift(scene, scene.panels.front());
+}
+
+TEST(Comparison, HandleInvariantMethodsDoNotShift) {
+  // Fig. 10 / Sec. 4.5: P1 and P6 are handle-invariant (P1 is affine in the
+  // keyframes' points; P6's steady morphs commute with the similarity).
+  EXPECT_LT(shift("P1"), 1e-12);
+  EXPECT_LT(shift("P6"), 1e-12);
+}
+
+TEST(Comparison, P2P3P5AreNotHandleInvariant) {
+  // "All chosen PITAs are handle-invariant, except for P235 (Fig. 11)."
+  for (const char* method : {"P2", "P3", "P5"}) EXPECT_GT(shift(method), 1e-2) << method;
+}
+
+TEST(Comparison, PaLpShiftAtOneTimeByHand) {
+  // P3 (Pa-LP): p(t) Lagrange of the points, w(t) exp of Lagrange of (log m, w).
+  // The shapes' point x goes to D.p + D.w / E.w (x - E.p) for each handle;
+  // at t = 1/4 (one of the 129 times) the shift of the F's corners bounds
+  // the measured maximum from below.
+  const auto frame = [](const std::array<Key, 3>& keys, double t) {
+    const std::array<double, 3> L = lagrange(t);
+    std::complex<double> p = 0.0;
+    double log_m = 0.0, w = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      p += L[i] * keys[i].p;
+      log_m += L[i] * std::log(keys[i].m);
+      w += L[i] * keys[i].w;
+    }
+    return std::pair{p, std::polar(std::exp(log_m), w)};
+  };
+  const double t = 0.25;
+  const auto [p0, v0] = frame(kRed, t);
+  const auto [p1, v1] = frame(orange(), t);
+  const std::complex<double> e0 = std::polar(kRed[0].m, kRed[0].w), e1 = kEq - kEp;
+  double by_hand = 0.0;
+  for (const std::complex<double> x : {std::complex<double>{0, 0}, {0, 1.35}, {0.9, 1.35}, {0.27, 0}}) {
+    const std::complex<double> a = p0 + v0 / e0 * (x - kRed[0].p);
+    const std::complex<double> b = p1 + v1 / e1 * (x - kEp);
+    by_hand = std::max(by_hand, std::abs(a - b));
+  }
+  EXPECT_GT(by_hand, 1e-2);
+  EXPECT_GE(shift("P3"), by_hand - 1e-12);
+}
+
+}  // namespace
+}  // namespace pita::analysis
