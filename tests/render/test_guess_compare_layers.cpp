@@ -135,8 +135,11 @@ TEST(CompareLayer, FigB30P3EqualsP10UntilATweakOfAwMakesP10Pop) {
       largest = std::max(largest, endpoint_gap(p3[k].back(), p10[k].back()));
     }
     printed.push_back(printed_value(printed_lines(panel_drawing(scene, panel)), "max |P3 \u2212 P10|"));
-    if (k == 1) expect_printed(printed[k], largest, "right");
-    if (k == 0) EXPECT_LT(largest, 1e-12);
+    if (k == 1) {
+      expect_printed(printed[k], largest, "right");
+    } else {
+      EXPECT_LT(largest, 1e-12);
+    }
   }
   // Left: identical, to rounding. Right: A.w crossed pi; P3 barely moved
   // (continuous in A.w) while P10 jumped by about its whole extent.
