@@ -94,6 +94,11 @@ class LayerCost {
   // Each frame evaluates a stencil of five or six more frames (frame_derivatives).
   void operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }
   void operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
+  void operator()(const scene::GuessesLayer& l) {
+    add(layer_ + "/guesses", fmt::format("{} guessed arrows", l.guesses.size()),
+        static_cast<double>(l.guesses.size()) * (2 * kShapeUnits + motion::frame_cost(panel_)));
+  }
+  void operator()(const scene::CompareLayer& l) { frames(l.samples, "a compared pattern", kShapeUnits + 1); }
   void operator()(const scene::PlotLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
         8 * kShapeUnits + l.samples);

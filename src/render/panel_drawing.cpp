@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "analysis/arrow_distance.hpp"
 #include "analysis/audit.hpp"
 #include "analysis/comparison.hpp"
 #include "core/methods.hpp"
@@ -13,6 +14,7 @@
 #include "analysis/frame_derivatives.hpp"
 #include "analysis/prediction.hpp"
 #include "core/carrier.hpp"
+#include "core/discrepancy.hpp"
 #include "render/banner.hpp"
 #include "render/carried_shapes.hpp"
 #include "render/measure_text.hpp"
@@ -435,6 +437,74 @@ class PanelBuilder {
       }
     }
     add_measure_text(layer, lines, drawing_, layer_);
+  }
+
+  // Printed lines of a layer, at its world point (one label) or in its corner
+  // (a text-only legend, each line in its colour).
+  void add_lines(const std::vector<LegendEntry>& lines, const std::optional<Point>& at,
+                 scene::LegendLayer::Corner corner, double size, const Color& color) {
+    if (at) {
+      std::string text;
+      for (const LegendEntry& line : lines) text += (text.empty() ? "" : "\n") + line.text;
+      push(-1, Label{text, *at, size, color});
+      return;
+    }
+    drawing_.legends.push_back(Legend{corner, size, lines, false});
+  }
+
+  // "guesses" (Sec. 6.1, 6.3; Figs. 16, 18): each drawn arrow G at its time t,
+  // the frame D(t) under it, and per measure shown a line
+  //   "E(L, D(2)) = 0.0123"  (Eq. 47 as corrected, docs/paper-notes.md N5)
+  //   "d(L, D(2)) = 0.42"    (max(|dp|, |dq|), docs/paper-notes.md N53).
+  void add(const scene::GuessesLayer& layer) {
+    std::vector<LegendEntry> lines;
+    for (std::size_t i = 0; i < layer.guesses.size(); ++i) {
+      const scene::Guess& guess = layer.guesses[i];
+      const Arrow frame = frames({guess.t}).front();
+      const int index = static_cast<int>(i);
+      push(index, ArrowShape{frame.p, frame.q(), LineStyle{layer.frame_color, layer.width, 1.0, {}}});
+      push(index, ArrowShape{guess.arrow.p, guess.arrow.q(), LineStyle{guess.color, layer.width, 1.0, {}}});
+      for (const scene::GuessMeasure measure : layer.show) {
+        const bool discrepancy = measure == scene::GuessMeasure::discrepancy;
+        const double value = discrepancy ? pita::discrepancy(guess.arrow, frame)
+                                         : analysis::endpoint_distance(guess.arrow, frame);
+        if (!std::isfinite(value)) fail(layer_, fmt::format("the {} of {} is not finite", discrepancy ? "discrepancy" : "distance", guess.name));
+        lines.push_back({guess.color, fmt::format("{}({}, D({:g})) = {:.3g}", discrepancy ? "E" : "d", guess.name,
+                                                  guess.t, value)});
+      }
+    }
+    if (selection_ == nullptr) add_lines(lines, layer.at, layer.corner, layer.size, layer.color);
+  }
+
+  // "compare" (appendix B, Fig. B.30): the pattern of another method through
+  // the panel's keyframes over the panel's own, and the printed line
+  // "max |P3 - P10| = 2.1e-15", the largest endpoint distance between frames
+  // at the same times (analysis/arrow_distance.hpp).
+  void add(const scene::CompareLayer& layer) {
+    const std::vector<double> times = sequence_times(layer.samples, std::nullopt);
+    const std::vector<Arrow> own = frames(times);
+    scene::Panel other_panel = panel_;
+    other_panel.method = layer.method;
+    other_panel.method_name = layer.method_name;
+    std::vector<Arrow> other;
+    try {
+      const motion::SceneMotion motion = motion::build_motion(scene_, other_panel);
+      for (const double t : times) other.push_back(motion.arrow_at(t));
+    } catch (const motion::NoMotion& error) {
+      fail(layer_ + "/method", error.reason());
+    }
+    for (std::size_t i = 0; i < other.size(); ++i) {
+      LineStyle line = layer.line;
+      line.opacity *= fade(i, other.size());
+      push(static_cast<int>(i), Polyline{{other[i].p, other[i].q()}, false, line});
+    }
+    const double distance = analysis::pattern_distance(own, other);
+    if (!std::isfinite(distance)) fail(layer_, "the distance between the two patterns is not finite");
+    const Color text{0.1, 0.1, 0.1, 1.0};
+    if (selection_ == nullptr) {
+      add_lines({{text, fmt::format("max |{} \u2212 {}| = {:.3g}", panel_.method_name, layer.method_name, distance)}},
+                layer.at, layer.corner, layer.size, text);
+    }
   }
 
   void add(const scene::PointTrajectoryLayer& layer) {

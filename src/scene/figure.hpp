@@ -291,10 +291,53 @@ struct MeasuresLayer {
   Color color{0.1, 0.1, 0.1, 1.0};
 };
 
+// One arrow a user drew for a time t (PITA Sec. 6.1, 6.3): the in-betweener's
+// guesses L and R of Fig. 16, the editing target E of Fig. 18.
+struct Guess {
+  double t = 0.0;
+  Arrow arrow;                         // as drawn: {"p", "q"} or {"p", "m", "w"}
+  std::string name;                    // what the printed lines call it ("L"); default "G1", "G2", ...
+  Color color;                         // default brown, magenta, orange, cycled
+};
+
+// What a "guesses" layer prints for each guess G at t: the discrepancy
+// E(G, D(t)) (Eq. 47, docs/paper-notes.md N5) or the distance
+// max(|G.p - D(t).p|, |G.q - D(t).q|) (docs/paper-notes.md N53).
+enum class GuessMeasure { discrepancy, distance };
+
+// "guesses" (PITA Figs. 16, 18; docs/paper-notes.md N53): each guess as an
+// arrow in its colour, the panel's frame D(t) at its time as an arrow in
+// `frame_color`, and one printed line per guess and measure.
+struct GuessesLayer {
+  std::vector<Guess> guesses;                          // required, 1..kMaxGuesses
+  std::vector<GuessMeasure> show{GuessMeasure::discrepancy};
+  double width = 2.0;                                  // of the guesses and the frames
+  Color frame_color{0.1, 0.1, 0.1, 1.0};
+  std::optional<Point> at;                             // world point of the text; nullopt: `corner`
+  LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
+  double size = 11.0;                                  // pixels
+  Color color{0.1, 0.1, 0.1, 1.0};                     // of the text
+};
+inline constexpr int kMaxGuesses = 16;
+
+// "compare" (PITA appendix B, Fig. B.30; docs/paper-notes.md N54): the
+// pattern of another method through the panel's keyframes, drawn over the
+// panel's, and the printed largest distance between their frames at the same
+// times, max_i max(|dp|, |dq|).
+struct CompareLayer {
+  Method method = Method::P10;                         // required
+  std::string method_name = "P10";
+  LineStyle line{Color{0.9, 0.45, 0.0, 1.0}, 1.2, 1.0, {4.0, 3.0}};
+  std::optional<int> samples;                          // default: the panel's samples
+  std::optional<Point> at;                             // world point of the text; nullopt: `corner`
+  LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
+  double size = 11.0;                                  // pixels
+};
+
 using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
                            BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
                            PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer, MeasuresLayer,
-                           VectorsLayer, FixedPointsLayer>;
+                           VectorsLayer, FixedPointsLayer, GuessesLayer, CompareLayer>;
 
 // "animation" (README "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.

@@ -55,6 +55,14 @@ constexpr std::array<std::string_view, 9> kMeasureNames = {
     "discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "ara", "area",
     "handle-shift"};
 
+constexpr std::array<std::string_view, 8> kGuessesFields = {
+    "type", "guesses", "show", "width", "frame_color", "at", "size", "color"};
+constexpr std::array<std::string_view, 8> kGuessFields = {"t", "p", "q", "m", "w", "turns", "name", "color"};
+constexpr std::array<std::string_view, 2> kGuessMeasureNames = {"discrepancy", "distance"};
+constexpr std::array<GuessMeasure, 2> kGuessMeasures = {GuessMeasure::discrepancy, GuessMeasure::distance};
+constexpr std::array<std::string_view, 9> kCompareFields = {
+    "type", "method", "color", "width", "opacity", "dash", "samples", "at", "size"};
+
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
     "type", "curve", "samples", "range", "color", "width", "opacity", "dash", "dots"};
@@ -394,6 +402,87 @@ bool is_angle_measure(std::string_view name) {
   }
 }
 
+// "at": a world point [x, y], or a corner of the panel ("top-left", ...).
+void read_text_place(const Fields& fields, std::optional<Point>& at, LegendLayer::Corner& corner) {
+  const Json* where = fields.get("at");
+  if (where == nullptr) return;
+  if (where->is_string()) {
+    const std::string name = where->get<std::string>();
+    const auto found = std::find(kCornerNames.begin(), kCornerNames.end(), name);
+    if (found == kCornerNames.end()) {
+      fields.reader().fail(fields.at("at"), fmt::format("must be a point [x, y] or a corner, {} (got {})",
+                                                        quoted_choices(kCornerNames), value_text(*where)));
+    }
+    corner = kCorners[static_cast<std::size_t>(found - kCornerNames.begin())];
+  } else {
+    at = fields.reader().point(*where, fields.at("at"));
+  }
+}
+
+// "guesses" (Figs. 16, 18): arrows drawn for given times, with their names
+// and colours (brown, magenta, orange by default, as the paper draws L, R, E).
+GuessesLayer read_guesses(const Fields& fields) {
+  static const std::array<Color, 3> kGuessColors = {Color{0.55, 0.27, 0.07, 1.0}, Color{0.85, 0.0, 0.85, 1.0},
+                                                    Color{1.0, 0.55, 0.0, 1.0}};
+  GuessesLayer layer;
+  const JsonReader& reader = fields.reader();
+  const Json& list = fields.required("guesses", "the arrows drawn, [{\"t\", \"p\", \"q\"}, ...]");
+  const std::string at = fields.at("guesses");
+  if (!list.is_array() || list.empty() || list.size() > static_cast<std::size_t>(kMaxGuesses)) {
+    reader.fail(at, fmt::format("must be an array of 1 to {} arrows {{\"t\", \"p\", \"q\"}} (got {})", kMaxGuesses,
+                                value_text(list)));
+  }
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string item_at = element_pointer(at, i);
+    const Json& item = list[i];
+    reader.object(item, item_at, "a guess");
+    reader.check_fields(item, item_at, kGuessFields);
+    Guess guess;
+    const Fields guess_fields(reader, item, item_at);
+    guess.t = reader.number(guess_fields.required("t", "the time of the guessed frame"), guess_fields.at("t"));
+    Json arrow_form = item;
+    arrow_form.erase("t");
+    arrow_form.erase("name");
+    arrow_form.erase("color");
+    guess.arrow = reader.arrow(arrow_form, item_at);
+    guess.name = fmt::format("G{}", i + 1);
+    guess_fields.text("name", kMaxTextLength, guess.name);
+    guess.color = kGuessColors[i % kGuessColors.size()];
+    guess_fields.color("color", guess.color);
+    layer.guesses.push_back(std::move(guess));
+  }
+  if (const Json* show = fields.get("show")) {
+    const std::string show_at = fields.at("show");
+    if (!show->is_array() || show->empty() || show->size() > kGuessMeasureNames.size()) {
+      reader.fail(show_at, fmt::format("must be a list of 1 to {} of {} (got {})", kGuessMeasureNames.size(),
+                                       quoted_choices(kGuessMeasureNames), value_text(*show)));
+    }
+    layer.show.clear();
+    for (std::size_t i = 0; i < show->size(); ++i) {
+      layer.show.push_back(reader.choice((*show)[i], element_pointer(show_at, i), kGuessMeasureNames, kGuessMeasures));
+    }
+  }
+  fields.number("width", kLineWidth, layer.width);
+  fields.color("frame_color", layer.frame_color);
+  read_text_place(fields, layer.at, layer.corner);
+  fields.number("size", kTextSize, layer.size);
+  fields.color("color", layer.color);
+  return layer;
+}
+
+// "compare" (Fig. B.30): another method's pattern over the panel's.
+CompareLayer read_compare(const Fields& fields) {
+  CompareLayer layer;
+  layer.method = fields.reader().method(fields.required("method", "the method compared with the panel's"),
+                                        fields.at("method"));
+  layer.method_name = std::string(info(layer.method).id);
+  read_line(fields, layer.line);
+  read_figure_samples(fields, layer.samples);
+  read_text_place(fields, layer.at, layer.corner);
+  fields.number("size", kTextSize, layer.size);
+  return layer;
+}
+
 MeasuresLayer read_measures(const Fields& fields) {
   MeasuresLayer layer;
   const JsonReader& reader = fields.reader();
@@ -420,19 +509,7 @@ MeasuresLayer read_measures(const Fields& fields) {
       layer.show.push_back(name);
     }
   }
-  if (const Json* where = fields.get("at")) {
-    if (where->is_string()) {
-      const std::string corner = where->get<std::string>();
-      const auto found = std::find(kCornerNames.begin(), kCornerNames.end(), corner);
-      if (found == kCornerNames.end()) {
-        reader.fail(fields.at("at"), fmt::format("must be a point [x, y] or a corner, {} (got {})",
-                                                 quoted_choices(kCornerNames), value_text(*where)));
-      }
-      layer.corner = kCorners[static_cast<std::size_t>(found - kCornerNames.begin())];
-    } else {
-      layer.at = reader.point(*where, fields.at("at"));
-    }
-  }
+  read_text_place(fields, layer.at, layer.corner);
   fields.number("size", kTextSize, layer.size);
   fields.color("color", layer.color);
   return layer;
@@ -790,7 +867,7 @@ AraLayer read_ara(const Fields& fields) {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
-constexpr std::array<LayerKind<Layer>, 16> kArrowLayerKinds{{
+constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
     {"pattern", kPatternFields, [](const Fields& f) -> Layer { return read_pattern(f); }},
     {"keyframes", kKeyframesFields, [](const Fields& f) -> Layer { return read_keyframes_layer(f); }},
     {"trajectory", kTrajectoryFields, [](const Fields& f) -> Layer { return read_trajectory(f); }},
@@ -808,6 +885,8 @@ constexpr std::array<LayerKind<Layer>, 16> kArrowLayerKinds{{
     {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f); }},
     {"vectors", kVectorsFields, [](const Fields& f) -> Layer { return read_vectors(f); }},
     {"fixed-points", kFixedPointsFields, [](const Fields& f) -> Layer { return read_fixed_points(f); }},
+    {"guesses", kGuessesFields, [](const Fields& f) -> Layer { return read_guesses(f); }},
+    {"compare", kCompareFields, [](const Fields& f) -> Layer { return read_compare(f); }},
 }};
 
 // The layer kinds of pose scenes.

@@ -227,11 +227,15 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
     // papers' three keyframes (docs/paper-notes.md N32, N33).
     if (name.rfind("project-", 0) == 0) name = name.substr(8);
     if (name.rfind("tracks-", 0) == 0) name = name.substr(7);
+    // The PITA paper's appendix figures, named by their appendix: appB-fig30-*.json.
+    if (name.size() > 5 && name.rfind("app", 0) == 0 && name[3] >= 'A' && name[3] <= 'Z' && name[4] == '-') {
+      name = name.substr(5);
+    }
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
     EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) &&
                 name[5] == '-')
         << path.stem()
-        << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-figNN-*.json)";
+        << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, appX-figNN-*.json)";
     EXPECT_EQ(load_scene(path).kind == SceneKind::poses, sam)
         << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
