@@ -110,7 +110,9 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(schema.at("properties").at("shapes").at("maxItems"), kMaxShapes);
   const nlohmann::json& options = definitions.at("options");
   EXPECT_EQ(keys_of(options.at("properties")),
-            (std::set<std::string>{"anchor", "path_mean", "magnitude_mean", "knots"}));
+            (std::set<std::string>{"anchor", "path_mean", "magnitude_mean", "knots", "permutation", "symmetrize"}));
+  EXPECT_EQ(options.at("properties").at("permutation").at("enum"),
+            (nlohmann::json{"ABC", "ACB", "BAC", "BCA", "CAB", "CBA"}));
   EXPECT_EQ(options.at("additionalProperties"), false);
   const nlohmann::json& samples = schema.at("properties").at("samples");
   EXPECT_EQ(samples.at("minimum"), kMinSamples);
