@@ -326,5 +326,22 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
   }
 }
 
+// Fig. D.36: P9 with WGM lies between its WAM and WHM variants.
+TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appD-fig36-neville-means.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  EXPECT_EQ(scene.panels[0].options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(scene.panels[1].options.path_mean, MeanKind::geometric);
+  EXPECT_EQ(scene.panels[2].options.magnitude_mean, MeanKind::harmonic);
+  const auto am = panel_motion(scene.panels[0]), gm = panel_motion(scene.panels[1]), hm = panel_motion(scene.panels[2]);
+  const double am_gm = largest_gap([&](double t) { return am->at(t); }, [&](double t) { return gm->at(t); });
+  const double gm_hm = largest_gap([&](double t) { return gm->at(t); }, [&](double t) { return hm->at(t); });
+  const double am_hm = largest_gap([&](double t) { return am->at(t); }, [&](double t) { return hm->at(t); });
+  EXPECT_TRUE(title_says(scene.panels[0], fmt::format("d(WAM, WGM) = {:.2g}", am_gm))) << am_gm;
+  EXPECT_TRUE(title_says(scene.panels[1], fmt::format("d(WAM, WHM) = {:.2g}", am_hm))) << am_hm;
+  EXPECT_TRUE(title_says(scene.panels[2], fmt::format("d(WGM, WHM) = {:.2g}", gm_hm))) << gm_hm;
+  EXPECT_GT(am_hm, std::max(am_gm, gm_hm));
+}
+
 }  // namespace
 }  // namespace pita::scene
