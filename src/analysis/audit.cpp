@@ -63,7 +63,7 @@ AuditCell measure_cell(Method method, Property property, const std::vector<Audit
 std::vector<Method> default_audit_methods() {
   std::vector<Method> out;
   for (const MethodInfo& m : all_methods()) {
-    if (m.keyframe_count == 3) out.push_back(m.method);
+    if (m.keyframe_count == 3 && !m.appendix_variant) out.push_back(m.method);
   }
   return out;
 }

@@ -56,7 +56,8 @@ struct AuditReport {
 };
 
 // Every arrow method that takes three keyframes: P1-P10, P5S and the
-// independent combinations of Fig. 7 (the registry's order).
+// independent combinations of Fig. 7 (the registry's order), not the
+// appendices' variants (He-G, La-T1, La-T2, Ne-M), which --methods can name.
 std::vector<Method> default_audit_methods();
 
 // Runs the audit. Deterministic for a given seed and configuration count,

@@ -167,13 +167,16 @@ Scene format (JSON; schema/scene.schema.json describes every field):
   options      anchor (P2): "start" | "midpoint"; path_mean, magnitude_mean (SMA, P9):
                "arithmetic" | "geometric" | "harmonic"; knots: "increasing" (default) |
                "as-given" (three keyframes handed to the method in the order given,
-               knots distinct in any order: order-independence, Sec. 4)
+               knots distinct in any order: order-independence, Sec. 4); permutation
+               (La-T1, La-T2, Ne-M): "ABC" (default) | "ACB" | "BAC" | "BCA" | "CAB" | "CBA";
+               symmetrize (La-T1, La-T2, Ne-M): true averages with the time reverse
 
 Methods:
 )" + methods_table(MotionKind::arrows) +
          R"(
 SMA takes two keyframes, every other method three; more are chained. Pa-Po, LS-Ca and LS-LP are the
-independent combinations of Fig. 7 outside the paper's basket.
+independent combinations of Fig. 7 outside the paper's basket; He-G, La-T1, La-T2 and Ne-M are the
+non-chosen candidates of appendices C and D.
 
 Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, "q": [x, y]}, ...]}
 with one frame per line ("chain": "blend" after "method" for a chained track), or CSV

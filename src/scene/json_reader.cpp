@@ -18,8 +18,8 @@ namespace {
 constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
 constexpr std::array<std::string_view, 3> kMovingKeyframeFields = {"t", "from", "to"};
 constexpr std::array<std::string_view, 5> kArrowFields = {"p", "m", "w", "q", "turns"};
-constexpr std::array<std::string_view, 4> kOptionFields = {"anchor", "path_mean", "magnitude_mean",
-                                                           "knots"};
+constexpr std::array<std::string_view, 6> kOptionFields = {"anchor", "path_mean", "magnitude_mean",
+                                                           "knots", "permutation", "symmetrize"};
 
 constexpr std::array<std::string_view, 2> kAnchorNames = {"start", "midpoint"};
 constexpr std::array<Anchor, 2> kAnchors = {Anchor::start, Anchor::midpoint};
@@ -28,6 +28,9 @@ constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geom
                                             MeanKind::harmonic};
 constexpr std::array<std::string_view, 2> kKnotOrderNames = {"increasing", "as-given"};
 constexpr std::array<KnotOrder, 2> kKnotOrders = {KnotOrder::increasing, KnotOrder::as_given};
+constexpr std::array<std::string_view, 6> kPermutationNames = {"ABC", "ACB", "BAC", "BCA", "CAB", "CBA"};
+constexpr std::array<Permutation, 6> kPermutations = {Permutation::ABC, Permutation::ACB, Permutation::BAC,
+                                                      Permutation::BCA, Permutation::CAB, Permutation::CBA};
 
 
 // Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.
@@ -352,6 +355,12 @@ MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
   }
   if (const Json* knots = member(value, "knots")) {
     base.knots = choice(*knots, pointer + "/knots", kKnotOrderNames, kKnotOrders);
+  }
+  if (const Json* permutation = member(value, "permutation")) {
+    base.permutation = choice(*permutation, pointer + "/permutation", kPermutationNames, kPermutations);
+  }
+  if (const Json* symmetrize = member(value, "symmetrize")) {
+    base.symmetrize = boolean(*symmetrize, pointer + "/symmetrize");
   }
   return base;
 }

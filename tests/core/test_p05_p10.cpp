@@ -39,6 +39,53 @@ TEST(HeLp, MatchesGenericMatrixLogAndExp) {
   }
 }
 
+// He-G: H(t) of appendix C about the global origin, with no centroid shift
+// (Fig. C.31), against the same oracle about g = 0.
+TEST(HeG, MatchesGenericMatrixLogAndExpAboutTheGlobalOrigin) {
+  Sampler s(601);
+  for (int i = 0; i < 200; ++i) {
+    const KeyframeTriple k = s.triple(Config::uneven);
+    const Point g{};
+    const Eigen::Matrix3d LA = homogeneous(k.a.arrow, g).log(), LB = homogeneous(k.b.arrow, g).log(),
+                          LC = homogeneous(k.c.arrow, g).log();
+    const auto H = motion(Method::HeG, k);
+    for (double t : sample_times(k)) {
+      const LagrangeWeights l = lagrange_weights(k.a.t, k.b.t, k.c.t, t);
+      const Eigen::Matrix3d M = (l.x * LA + l.y * LB + l.z * LC).exp();  // Eq. 33, about g
+      EXPECT_TRUE(arrows_near(H->at(t), arrow_of(M, g), 1e-9, extent(k), true)) << i << " t=" << t;
+    }
+  }
+}
+
+// Appendix C: translating the keyframes moves P5's pattern rigidly with them,
+// but changes H(t)'s; with the centroid at the global origin the two agree.
+TEST(HeG, TranslationChangesHButNotP5) {
+  Sampler s(602);
+  double smallest_change = 1e300;
+  for (int i = 0; i < 50; ++i) {
+    const KeyframeTriple k = s.triple(Config::tame);
+    const Twirl shift = translation({s.uniform(2.0, 6.0), s.uniform(-3.0, 3.0)});
+    const KeyframeTriple moved = transformed(shift, k);
+    const auto p5 = motion(Method::P5, k), p5_moved = motion(Method::P5, moved);
+    const auto h = motion(Method::HeG, k), h_moved = motion(Method::HeG, moved);
+    double p5_change = 0.0, h_change = 0.0;
+    for (double t : sample_times(k)) {
+      p5_change = std::max(p5_change, frame_distance(p5_moved->at(t), shift * p5->at(t)) / extent(k));
+      h_change = std::max(h_change, frame_distance(h_moved->at(t), shift * h->at(t)) / extent(k));
+    }
+    EXPECT_LE(p5_change, 1e-12) << i;
+    smallest_change = std::min(smallest_change, h_change);
+    // Centred on the global origin, H(t) is P5.
+    const Point o = (k.a.arrow.p + k.b.arrow.p + k.c.arrow.p) / 3.0;
+    const KeyframeTriple centred = transformed(translation(-o), k);
+    const auto h_centred = motion(Method::HeG, centred), p5_centred = motion(Method::P5, centred);
+    for (double t : sample_times(k)) {
+      EXPECT_TRUE(arrows_near(h_centred->at(t), p5_centred->at(t), 1e-12, extent(k), false));
+    }
+  }
+  EXPECT_GT(smallest_change, 1e-3);
+}
+
 TEST(PaEl, MatchesGenericMatrixLogAndExp) {
   Sampler s(610);
   for (int i = 0; i < 200; ++i) {
@@ -92,6 +139,22 @@ TEST(HeLp, RotationAndDilationViolateSimilarityInvarianceMeasurably) {
   EXPECT_LT(invariance_violation(Method::P5S, k, twirl(o, 1.0, 0.1)), 1e-12);
   EXPECT_LT(invariance_violation(Method::P5S, k, twirl(o, 2.0, 0.0)), 1e-12);
   EXPECT_LT(invariance_violation(Method::P5S, k, twirl({3, -2}, 0.7, 2.9)), 1e-12);
+}
+
+// Appendix C says H(t) is not affected by rotations or dilations about the
+// global origin g. With H(S.A) = S H(A), the log of S H(A) is not log S +
+// log H(A) unless the translation is zero, so it is: docs/paper-notes.md N56.
+TEST(HeG, RotationsAndDilationsAboutTheGlobalOriginChangeIt) {
+  const KeyframeTriple k{{0.0, {{1, 0.5}, 1.0, -0.4}}, {0.5, {{2.5, 2.5}, 0.7, 1.6}}, {1.0, {{4.5, 1}, 1.2, 2.9}}};
+  const double rotation = invariance_violation(Method::HeG, k, twirl({0, 0}, 1.0, -0.3));
+  const double dilation = invariance_violation(Method::HeG, k, twirl({0, 0}, 1.7, 0.0));
+  std::printf("He-G about g: rotation -0.3 rad %.3g, dilation x1.7 %.3g (relative to the figure)\n", rotation,
+              dilation);
+  EXPECT_GT(rotation, 1e-3);
+  EXPECT_GT(dilation, 1e-3);
+  // Keyframes at the origin (zero translations): then the logs commute with S.
+  const KeyframeTriple at_g{{0.0, {{0, 0}, 1.0, -0.4}}, {0.5, {{0, 0}, 0.7, 1.6}}, {1.0, {{0, 0}, 1.2, 2.6}}};
+  EXPECT_LT(invariance_violation(Method::HeG, at_g, twirl({0, 0}, 1.7, -0.3)), 1e-12);
 }
 
 TEST(PaEl, RotationAcrossPiViolatesSimilarityInvariance) {

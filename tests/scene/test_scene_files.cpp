@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "core/chains/chain.hpp"
@@ -109,7 +110,9 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(schema.at("properties").at("shapes").at("maxItems"), kMaxShapes);
   const nlohmann::json& options = definitions.at("options");
   EXPECT_EQ(keys_of(options.at("properties")),
-            (std::set<std::string>{"anchor", "path_mean", "magnitude_mean", "knots"}));
+            (std::set<std::string>{"anchor", "path_mean", "magnitude_mean", "knots", "permutation", "symmetrize"}));
+  EXPECT_EQ(options.at("properties").at("permutation").at("enum"),
+            (nlohmann::json{"ABC", "ACB", "BAC", "BCA", "CAB", "CBA"}));
   EXPECT_EQ(options.at("additionalProperties"), false);
   const nlohmann::json& samples = schema.at("properties").at("samples");
   EXPECT_EQ(samples.at("minimum"), kMinSamples);
@@ -239,6 +242,107 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
     EXPECT_EQ(load_scene(path).kind == SceneKind::poses, sam)
         << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
+}
+
+// The numbers the appendix figures print in their titles, recomputed from
+// the panels' motions: max over t in [0, 1] (201 samples) of the larger of
+// |dp| and |dq| between two frame functions.
+template <class F, class G>
+double largest_gap(F&& f, G&& g) {
+  double d = 0.0;
+  for (int i = 0; i <= 200; ++i) {
+    const double t = i / 200.0;
+    const Arrow x = f(t), y = g(t);
+    d = std::max({d, std::abs(x.p - y.p), std::abs(x.q() - y.q())});
+  }
+  return d;
+}
+
+std::unique_ptr<Motion> panel_motion(const Panel& panel) {
+  return make_motion(panel.method, panel.keyframes, panel.options, panel.chain);
+}
+
+bool title_says(const Panel& panel, const std::string& text) {
+  return panel.title.find(text) != std::string::npos;
+}
+
+// Fig. C.31: translating the keyframes by (6, 0) moves P5 rigidly and changes
+// He-G; each right panel prints its change.
+TEST(SceneFiles, AppendixC31PrintsTheMeasuredChanges) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appC-fig31-homogeneous-origin.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  const Vector shift{6.0, 0.0};
+  for (std::size_t i : {0u, 2u}) {
+    const Panel& before = scene.panels[i];
+    const Panel& after = scene.panels[i + 1];
+    ASSERT_EQ(before.method, after.method);
+    for (std::size_t k = 0; k < 3; ++k) {
+      ASSERT_EQ(after.keyframes[k].arrow.p, before.keyframes[k].arrow.p + shift);
+    }
+    const auto x = panel_motion(before), y = panel_motion(after);
+    const double d = largest_gap([&](double t) { return y->at(t); },
+                                 [&](double t) { Arrow a = x->at(t); a.p += shift; return a; });
+    if (before.method == Method::P5) {
+      EXPECT_LT(d, 1e-12);
+      EXPECT_TRUE(title_says(after, "d < 1e-12")) << after.title;
+    } else {
+      EXPECT_EQ(before.method, Method::HeG);
+      EXPECT_GT(d, 0.1);
+      EXPECT_TRUE(title_says(after, fmt::format("d = {:.2g}", d))) << after.title << " vs " << d;
+    }
+  }
+}
+
+// Fig. D.35: the average of M_ACB and M_BAC is close to M_ABC (e), much closer
+// than M_ACB and M_BAC are to each other (f).
+TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appD-fig35-neville-variants.json");
+  ASSERT_EQ(scene.panels.size(), 8u);
+  for (std::size_t row : {0u, 4u}) {
+    const auto abc = panel_motion(scene.panels[row]), acb = panel_motion(scene.panels[row + 1]),
+               bac = panel_motion(scene.panels[row + 2]), average = panel_motion(scene.panels[row + 3]);
+    EXPECT_EQ(scene.panels[row].options.permutation, Permutation::ABC);
+    EXPECT_TRUE(scene.panels[row + 3].options.symmetrize);
+    const double e = largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return average->at(t); });
+    const double f = largest_gap([&](double t) { return acb->at(t); }, [&](double t) { return bac->at(t); });
+    EXPECT_LT(e, f / 3.0);
+    EXPECT_TRUE(title_says(scene.panels[row + 3], fmt::format("e = {:.2g}, f = {:.2g}", e, f)))
+        << scene.panels[row + 3].title << " vs " << e << ", " << f;
+  }
+}
+
+// Fig. D.37: P6 and P9 are close for the tame configuration, not for the
+// challenging one; the P9 panels print d.
+TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appD-fig37-p6-versus-p9.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  double tame = 0.0;
+  for (std::size_t i : {0u, 2u}) {
+    ASSERT_EQ(scene.panels[i].method, Method::P6);
+    ASSERT_EQ(scene.panels[i + 1].method, Method::P9);
+    const auto p6 = panel_motion(scene.panels[i]), p9 = panel_motion(scene.panels[i + 1]);
+    const double d = largest_gap([&](double t) { return p6->at(t); }, [&](double t) { return p9->at(t); });
+    EXPECT_TRUE(title_says(scene.panels[i + 1], fmt::format("d = {:.2g}", d))) << scene.panels[i + 1].title << " vs " << d;
+    if (i == 0) tame = d;
+    else EXPECT_GT(d, 5.0 * tame);
+  }
+}
+
+// Fig. D.36: P9 with WGM lies between its WAM and WHM variants.
+TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appD-fig36-neville-means.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  EXPECT_EQ(scene.panels[0].options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(scene.panels[1].options.path_mean, MeanKind::geometric);
+  EXPECT_EQ(scene.panels[2].options.magnitude_mean, MeanKind::harmonic);
+  const auto am = panel_motion(scene.panels[0]), gm = panel_motion(scene.panels[1]), hm = panel_motion(scene.panels[2]);
+  const double am_gm = largest_gap([&](double t) { return am->at(t); }, [&](double t) { return gm->at(t); });
+  const double gm_hm = largest_gap([&](double t) { return gm->at(t); }, [&](double t) { return hm->at(t); });
+  const double am_hm = largest_gap([&](double t) { return am->at(t); }, [&](double t) { return hm->at(t); });
+  EXPECT_TRUE(title_says(scene.panels[0], fmt::format("d(WAM, WGM) = {:.2g}", am_gm))) << am_gm;
+  EXPECT_TRUE(title_says(scene.panels[1], fmt::format("d(WAM, WHM) = {:.2g}", am_hm))) << am_hm;
+  EXPECT_TRUE(title_says(scene.panels[2], fmt::format("d(WGM, WHM) = {:.2g}", gm_hm))) << gm_hm;
+  EXPECT_GT(am_hm, std::max(am_gm, gm_hm));
 }
 
 }  // namespace

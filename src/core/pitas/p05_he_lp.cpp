@@ -5,10 +5,11 @@
 
 namespace pita {
 
-HeLp::HeLp(const KeyframeTriple& k) : k_(k) {
+HeLp::HeLp(const KeyframeTriple& k, HomogeneousCenter center) : k_(k) {
   const Arrow* arrows[3] = {&k.a.arrow, &k.b.arrow, &k.c.arrow};
-  // Appendix C: (1) translate the keyframes by o -> g, the centroid of origins.
-  centroid_ = (k.a.arrow.p + k.b.arrow.p + k.c.arrow.p) / 3.0;
+  // Appendix C: (1) translate the keyframes by o -> g, the centroid of origins
+  // (not at all for H(t) about the global origin, He-G).
+  centroid_ = center == HomogeneousCenter::centroid ? (k.a.arrow.p + k.b.arrow.p + k.c.arrow.p) / 3.0 : Point{};
   for (int i = 0; i < 3; ++i) {
     const SimilarityLog s = similarity_log(arrows[i]->p - centroid_, arrows[i]->m, arrows[i]->w);
     log_[i] = s.linear;

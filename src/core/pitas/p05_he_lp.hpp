@@ -14,9 +14,14 @@
 
 namespace pita {
 
+// Where the logs are taken: about the centroid of the origins (P5, appendix
+// C's heuristic) or about the global origin g (H(t) of prior art [22], the
+// He-G variant of Fig. C.31, which translations change; docs/paper-notes.md N56).
+enum class HomogeneousCenter { centroid, global_origin };
+
 class HeLp final : public Motion {
  public:
-  explicit HeLp(const KeyframeTriple& k);
+  explicit HeLp(const KeyframeTriple& k, HomogeneousCenter center = HomogeneousCenter::centroid);
   Arrow at(double t) const override;
 
  private:

@@ -18,6 +18,7 @@
 #include "core/pitas/p08_lo_pe.hpp"
 #include "core/pitas/p09_ne_lp.hpp"
 #include "core/pitas/independent.hpp"
+#include "core/pitas/appendix_d_variants.hpp"
 #include "core/pitas/p10_pa_el.hpp"
 #include "core/pitas/sma.hpp"
 
@@ -31,7 +32,7 @@ std::unique_ptr<Motion> build(const KeyframeTriple& k, const MethodOptions&) {
   return std::make_unique<Pita>(k);
 }
 
-constexpr std::array<MethodInfo, 15> kMethods{{
+constexpr std::array<MethodInfo, 19> kMethods{{
     {Method::P1, "P1", "Pa-Ca", "parabolic point, Cartesian vector", 3, false, true, build<PaCa>},
     {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true, true,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
@@ -62,6 +63,26 @@ constexpr std::array<MethodInfo, 15> kMethods{{
      [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
        return std::make_unique<IndependentPita>(k, PointMotion::log_spiral, VectorMotion::log_polar);
      }},
+    {Method::HeG, "He-G", "He-G", "homogeneous exponential about the global origin (app. C)", 3, false, false,
+     [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
+       return std::make_unique<HeLp>(k, HomogeneousCenter::global_origin);
+     },
+     true},
+    {Method::LaT1, "La-T1", "La-T1", "Lagrange half T1 of Eq. 34, keyframes permuted (app. D.1)", 3, true, false,
+     [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
+       return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t1, o.permutation, o.symmetrize);
+     },
+     true},
+    {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of Eq. D.1, keyframes permuted (app. D.1)", 3, true, false,
+     [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
+       return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t2, o.permutation, o.symmetrize);
+     },
+     true},
+    {Method::NeM, "Ne-M", "Ne-M", "Neville form M of Eq. D.2, keyframes permuted (app. D.2)", 3, true, false,
+     [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
+       return std::make_unique<AppendixDVariant>(k, AppendixDForm::neville, o.permutation, o.symmetrize);
+     },
+     true},
 }};
 
 }  // namespace

@@ -33,6 +33,11 @@ enum class Method {
   PaPo,  // parabolic point, polar vector
   LSCa,  // log-spiral point, Cartesian vector
   LSLP,  // log-spiral point, log-polar vector
+  // The non-chosen candidates of appendices C and D (docs/paper-notes.md N55, N56).
+  HeG,   // H(t) of appendix C about the global origin (Fig. C.31)
+  LaT1,  // T1 of Eq. 34 in a permutation of the keyframes (Fig. D.32, D.33)
+  LaT2,  // T2 of Eq. D.1 in a permutation of the keyframes
+  NeM,   // M of Eq. D.2 in a permutation of the keyframes (Fig. D.35)
 };
 
 struct MethodInfo {
@@ -47,6 +52,9 @@ struct MethodInfo {
   // Builds the PITA through three timed keyframes (nullptr for SMA, which
   // make_motion builds from two).
   std::unique_ptr<Motion> (*make)(const KeyframeTriple&, const MethodOptions&) = nullptr;
+  // One of the appendices' non-chosen candidates (He-G, La-T1, La-T2, Ne-M):
+  // not measured by pita audit unless named (default_audit_methods).
+  bool appendix_variant = false;
 };
 
 // Every method, in display order.

@@ -25,9 +25,10 @@ TEST(Registry, TableListsEachMethodOnce) {
     EXPECT_EQ(entry.keyframe_count, entry.method == Method::SMA ? 2 : 3) << entry.id;
     if (!entry.in_basket) ++outside_basket;
   }
-  // P1-P10, P5S, SMA and the three other combinations of Fig. 7.
-  EXPECT_EQ(ids.size(), 15u);
-  EXPECT_EQ(outside_basket, 3u);
+  // P1-P10, P5S, SMA, the three other combinations of Fig. 7 and the four
+  // variants of appendices C and D.
+  EXPECT_EQ(ids.size(), 19u);
+  EXPECT_EQ(outside_basket, 7u);
   EXPECT_EQ(all_methods().front().method, Method::P1);  // display order
   EXPECT_EQ(info(Method::P6).id, "P6");
   EXPECT_EQ(info(Method::P6).mnemonic, "La-LP");
