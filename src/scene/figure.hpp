@@ -80,12 +80,16 @@ struct MethodOptionsPatch {
   std::optional<Anchor> anchor;
   std::optional<MeanKind> path_mean;
   std::optional<MeanKind> magnitude_mean;
+  std::optional<Permutation> permutation;
+  std::optional<bool> symmetrize;
 
-  bool empty() const { return !anchor && !path_mean && !magnitude_mean; }
+  bool empty() const { return !anchor && !path_mean && !magnitude_mean && !permutation && !symmetrize; }
   MethodOptions over(MethodOptions base) const {
     if (anchor) base.anchor = *anchor;
     if (path_mean) base.path_mean = *path_mean;
     if (magnitude_mean) base.magnitude_mean = *magnitude_mean;
+    if (permutation) base.permutation = *permutation;
+    if (symmetrize) base.symmetrize = *symmetrize;
     return base;
   }
 };

@@ -221,6 +221,8 @@ MethodOptionsPatch read_options_patch(const Fields& fields, const Json& value) {
   if (JsonReader::member(value, "anchor") != nullptr) patch.anchor = read.anchor;
   if (JsonReader::member(value, "path_mean") != nullptr) patch.path_mean = read.path_mean;
   if (JsonReader::member(value, "magnitude_mean") != nullptr) patch.magnitude_mean = read.magnitude_mean;
+  if (JsonReader::member(value, "permutation") != nullptr) patch.permutation = read.permutation;
+  if (JsonReader::member(value, "symmetrize") != nullptr) patch.symmetrize = read.symmetrize;
   return patch;
 }
 
