@@ -210,4 +210,13 @@ inline constexpr double kDerivativeStepsPerSpan = 256.0;
 // to within rounding, and a segment to the center would fill the figure.
 inline constexpr double kFarCenter = 1e6;
 
+// ------------------------------------------------------ grazing points
+// The grazing point of a moving edge (core/grazing_point.hpp, SAM paper
+// Eq. 8) is s = -n.v(from) / n.(dL d) along the edge. When the edge's
+// direction does not turn (a translation, or a stretch along the edge) the
+// denominator vanishes and every point of its line grazes, or none; a point
+// farther than this many edge lengths from the edge's start is taken as
+// none (it would fill the figure, like kFarCenter's centers).
+inline constexpr double kFarGrazingPoint = 1e6;
+
 }  // namespace pita::limits

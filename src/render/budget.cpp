@@ -135,6 +135,13 @@ class LayerCost {
     add(layer_ + "/grid", fmt::format("{} x {} points of an ARA", l.grid, l.grid),
         static_cast<double>(l.grid) * l.grid * 64 * 4 / 16 + kShapeUnits);
   }
+  void operator()(const scene::SweptLayer& l) {
+    // The copies of the edge; the envelope and the paths of the ends and of
+    // the grazing points, each a pose and a velocity per trace time.
+    frames(l.samples, "copies of a swept edge", kShapeUnits + 2);
+    add(layer_ + "/trace_samples", fmt::format("{} times of a swept edge's envelope and paths", l.trace_samples),
+        static_cast<double>(l.trace_samples) * (4 + l.instants) + (l.instants + 4) * kShapeUnits);
+  }
   void operator()(const scene::ExistenceLayer& l) {
     // Each cell is one classification by EAR (about 0.1 us), drawn in runs.
     add(layer_ + "/columns", fmt::format("{} x {} cells of an existence map", l.columns, l.rows),

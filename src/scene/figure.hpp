@@ -430,8 +430,33 @@ struct AraLayer {
 inline constexpr int kMaxAraDigits = 9;
 inline constexpr int kMaxAraGrid = 100;
 
+// "swept": SAM paper Fig. 10 (Sec. 7.2, Eq. 8): an edge given in reference
+// coordinates, carried by the panel's motion; its copies at the layer's
+// frames, the paths of its ends, the envelope (the grazing points A(t) x(s(t))
+// with s(t) in [0, 1], core/grazing_point.hpp), and the paths of the points
+// of the edge grazing at `instants` evenly spread times, each with a dot
+// where it grazes (Fig. 10's green trajectories). nullopt hides a part.
+// With `claim_at`, it prints how far the grazing parameter moves along the
+// edge over the layer's range (constant under a SAM).
+struct SweptLayer {
+  std::array<Point, 2> edge{};           // required, reference coordinates
+  std::optional<int> samples;            // copies of the edge (the panel's samples)
+  std::optional<TimeRange> range;
+  int trace_samples = 512;               // times of the envelope and the paths, [2, kMaxTrajectorySamples]
+  int instants = 3;                      // grazing paths, [0, kMaxSweptInstants]
+  std::optional<LineStyle> segments = LineStyle{Color{0.35, 0.35, 0.35, 1.0}, 0.8, 1.0, {}};
+  std::optional<LineStyle> ends = LineStyle{Color{0.55, 0.55, 0.55, 1.0}, 0.8, 1.0, {4.0, 3.0}};
+  std::optional<LineStyle> envelope = LineStyle{Color{0.8, 0.1, 0.1, 1.0}, 2.5, 1.0, {}};
+  std::optional<LineStyle> grazing = LineStyle{Color{0.0, 0.62, 0.0, 1.0}, 1.5, 1.0, {}};
+  std::optional<Point> claim_at;         // where the measured claim goes; nullopt: not printed
+  double size = 12.0;                    // pixels
+  Color color{0.0, 0.0, 0.0, 1.0};       // of the claim
+};
+inline constexpr int kMaxSweptInstants = 64;
+
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer>;
+                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
+                               SweptLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

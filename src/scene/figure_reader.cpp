@@ -752,6 +752,9 @@ constexpr std::array<std::string_view, 11> kPatchFields = {
     "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
     "corner"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
+constexpr std::array<std::string_view, 13> kSweptFields = {
+    "type", "edge", "samples", "range", "trace_samples", "instants", "segments", "ends", "envelope",
+    "grazing", "claim_at", "size", "color"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
     kPatchFields};
@@ -867,6 +870,49 @@ AraLayer read_ara(const Fields& fields) {
   return layer;
 }
 
+// A part of a "swept" layer: a line style object over `line`, or false to hide it.
+void read_optional_line(const Fields& fields, std::string_view key, std::optional<LineStyle>& line) {
+  const Json* value = fields.get(key);
+  if (value == nullptr) return;
+  if (value->is_boolean() && !value->get<bool>()) {
+    line.reset();
+    return;
+  }
+  if (!value->is_object()) {
+    fields.reader().fail(fields.at(key),
+                         "must be a line style {\"color\", \"width\", \"opacity\", \"dash\"} or false (got " +
+                             value_text(*value) + ")");
+  }
+  LineStyle style = line.value_or(LineStyle{});
+  read_line_object(fields, key, style);
+  line = style;
+}
+
+SweptLayer read_swept(const Fields& fields) {
+  SweptLayer layer;
+  const Json& edge = fields.required("edge", "the edge [[x, y], [x, y]] in reference coordinates");
+  const std::string pointer = fields.at("edge");
+  if (!edge.is_array() || edge.size() != 2) {
+    fields.reader().fail(pointer, "must be an array of two points [[x, y], [x, y]] (got " + value_text(edge) + ")");
+  }
+  for (std::size_t i = 0; i < 2; ++i) layer.edge[i] = fields.reader().point(edge[i], element_pointer(pointer, i));
+  if (layer.edge[0] == layer.edge[1]) {
+    fields.reader().fail(element_pointer(pointer, 1), "the edge's two ends must differ");
+  }
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  fields.integer("trace_samples", 2, kMaxTrajectorySamples, layer.trace_samples);
+  fields.integer("instants", 0, kMaxSweptInstants, layer.instants);
+  read_optional_line(fields, "segments", layer.segments);
+  read_optional_line(fields, "ends", layer.ends);
+  read_optional_line(fields, "envelope", layer.envelope);
+  read_optional_line(fields, "grazing", layer.grazing);
+  if (const Json* at = fields.get("claim_at")) layer.claim_at = fields.reader().point(*at, fields.at("claim_at"));
+  fields.number("size", kTextSize, layer.size);
+  fields.color("color", layer.color);
+  return layer;
+}
+
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
 constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
@@ -892,7 +938,7 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 10> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 11> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
@@ -903,6 +949,7 @@ constexpr std::array<LayerKind<PoseLayer>, 10> kPoseLayerKinds{{
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
+    {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {

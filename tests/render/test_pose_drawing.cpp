@@ -4,7 +4,9 @@
 // matrix power and log, Eq. 4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include <Eigen/Core>
@@ -262,6 +264,71 @@ TEST(PoseDrawing, AraLayerPrintsTheMeasuredUnsteadiness) {
   EXPECT_EQ(label.at, Point(3.0, -1.0));
   const scene::Scene sam = sam_scene({layer}, PoseMethod::sam);
   EXPECT_EQ(std::get<Label>(pose_panel_drawing(sam, sam.panels[0]).items[0].shape).text, "ARA = 0.000");
+}
+
+// "swept" (SAM Fig. 10, Sec. 7.2): the printed grazing parameter. For the
+// SAM it is checked against the grazing condition solved with Eigen's log of
+// the homogeneous matrix (the velocity field x -> log(A) x); for rARAP
+// against the characteristic points of the poses alone, where the edge's
+// lines at t - h and t + h meet. The drawing has the copies, the ends' paths,
+// one envelope run and a path with a dot per instant.
+TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
+  const Affine2 last = affinity(-0.6, -0.5, 3.0, 0.45, -0.5, 3.0);
+  const Eigen::Vector2d from(-0.6, 1.2), to(2.4, 1.2), d = to - from;
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+  scene::SweptLayer layer;
+  layer.edge = {Point(-0.6, 1.2), Point(2.4, 1.2)};
+  layer.claim_at = Point(0.0, -1.0);
+  layer.trace_samples = 129;
+  const auto drawn = [&](PoseMethod method) {
+    scene::Scene scene = sam_scene({layer}, method);
+    scene.reference_triangle = {Point(-0.6, 0.9), Point(2.4, 0.9), Point(0.9, 1.8)};
+    scene.panels[0].poses = {{0.0, Affine2::identity()}, {1.0, last}};
+    return pose_panel_drawing(scene, scene.panels[0]);
+  };
+  const auto count = [](const Drawing& drawing, auto kind) {
+    return std::count_if(drawing.items.begin(), drawing.items.end(), [](const Item& item) {
+      return std::holds_alternative<decltype(kind)>(item.shape);
+    });
+  };
+
+  const Drawing sam = drawn(PoseMethod::sam);
+  EXPECT_EQ(count(sam, Polyline{}), 5 + 2 + 1 + 3);
+  EXPECT_EQ(count(sam, Circle{}), 3);
+  ASSERT_EQ(count(sam, Label{}), 1);
+  const std::string& text = std::get<Label>(sam.items.back().shape).text;
+  double s = 0.0;
+  int times = 0;
+  ASSERT_EQ(std::sscanf(text.c_str(), "grazing parameter s = %lf at all %d times", &s, &times), 2) << text;
+  EXPECT_EQ(times, 129);
+  EXPECT_NE(text.find("(spread < 1e-12): constant"), std::string::npos) << text;
+  const Eigen::Matrix3d H = homogeneous(last).log();  // the SAM's velocity field
+  const Eigen::Vector2d v0 = H.topLeftCorner<2, 2>() * from + H.topRightCorner<2, 1>();
+  const Eigen::Vector2d v1 = H.topLeftCorner<2, 2>() * d;
+  EXPECT_NEAR(s, -cross(d, v0) / cross(d, v1), 1e-5);  // printed to 5 decimals
+
+  const Drawing rarap = drawn(PoseMethod::rarap);
+  const std::string& moving = std::get<Label>(rarap.items.back().shape).text;
+  double low = 0.0, high = 0.0;
+  ASSERT_EQ(std::sscanf(moving.c_str(), "grazing parameter s ranges from %lf to %lf over %d times", &low, &high, &times),
+            3)
+      << moving;
+  EXPECT_EQ(times, 129);
+  const PoseMotion motion(PoseMethod::rarap, {{0.0, Affine2::identity()}, {1.0, last}}, 4,
+                          {Point(-0.6, 0.9), Point(2.4, 0.9), Point(0.9, 1.8)});
+  double expected_low = 1e300, expected_high = -1e300;
+  for (int i = 0; i < 129; ++i) {
+    const double t = std::clamp(i / 128.0, 1e-5, 1.0 - 1e-5), h = 1e-5;
+    const Affine2 P = motion.at(t - h), Q = motion.at(t + h), A = motion.at(t);
+    const Eigen::Vector2d p = apply(P, from), dp = P.L * d, q = apply(Q, from), dq = Q.L * d;
+    const Eigen::Vector2d meet = p + cross(q - p, dq) / cross(dp, dq) * dp;
+    const double here = (meet - apply(A, from)).dot(A.L * d) / (A.L * d).squaredNorm();
+    expected_low = std::min(expected_low, here);
+    expected_high = std::max(expected_high, here);
+  }
+  EXPECT_NEAR(low, expected_low, 1e-4);
+  EXPECT_NEAR(high, expected_high, 1e-4);
+  EXPECT_GT(high - low, 0.3);
 }
 
 }  // namespace
