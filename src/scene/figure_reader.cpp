@@ -10,6 +10,7 @@
 
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -617,6 +618,9 @@ constexpr std::array<std::string_view, 11> kPatchFields = {
     "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
     "corner"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
+constexpr std::array<std::string_view, 12> kCompareFields = {
+    "type", "method", "at", "power", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples",
+    "range"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
     kPatchFields};
@@ -732,6 +736,30 @@ AraLayer read_ara(const Fields& fields) {
   return layer;
 }
 
+CompareLayer read_compare(const Fields& fields) {
+  const JsonReader& reader = fields.reader();
+  CompareLayer layer;
+  layer.method = read_pose_method(reader, fields.required("method", "the pose method to compare with"),
+                                  fields.at("method"));
+  if (const Json* at = fields.get("at")) {
+    const std::string pointer = fields.at("at");
+    if (!at->is_array() || at->empty() || at->size() > kMaxCompareTimes) {
+      reader.fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxCompareTimes,
+                                       value_text(*at)));
+    }
+    for (std::size_t i = 0; i < at->size(); ++i) {
+      layer.at.push_back(reader.number((*at)[i], element_pointer(pointer, i)));
+    }
+  }
+  fields.integer("power", 1, kMaxComparePower, layer.power);
+  read_line(fields, layer.line);
+  fields.color("fill", layer.fill);
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
 constexpr std::array<LayerKind<Layer>, 16> kArrowLayerKinds{{
@@ -755,7 +783,7 @@ constexpr std::array<LayerKind<Layer>, 16> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 10> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 11> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
@@ -766,6 +794,7 @@ constexpr std::array<LayerKind<PoseLayer>, 10> kPoseLayerKinds{{
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
+    {"compare", kCompareFields, [](const Fields& f) -> PoseLayer { return read_compare(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
