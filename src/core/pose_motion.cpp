@@ -11,7 +11,7 @@ namespace pita {
 
 namespace {
 
-constexpr std::array<PoseMethodInfo, 9> kPoseMethods = {{
+constexpr std::array<PoseMethodInfo, 10> kPoseMethods = {{
     {PoseMethod::sam, "SAM", "Steady Affine Morph", 2, 2},
     {PoseMethod::poly_sam, "polySAM", "polySAM (a SAM per span)", 2, 1000},
     {PoseMethod::bezier_sam, "bezier-SAM", "Bezier SAM", 3, 4},
@@ -21,6 +21,7 @@ constexpr std::array<PoseMethodInfo, 9> kPoseMethods = {{
     {PoseMethod::rarap, "rARAP", "ARAP with the barycentre moved on a line (Fig. 2b)", 2, 2},
     {PoseMethod::asap, "ASAP", "log spiral with a linear residue (Fig. 2c)", 2, 2},
     {PoseMethod::tsb, "TSB", "blend of the triangle sides' log spirals (Fig. 2d)", 2, 2},
+    {PoseMethod::alexa, "Alexa", "Alexa's log-matrix blend e^((1-u) log B + u log C) (Figs. 4, 5)", 2, 2},
 }};
 
 // `steps` four-point subdivisions of timed poses, each new pose at the middle
@@ -96,6 +97,14 @@ PoseMotion::PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subd
             std::to_string(span_poses_[i].t) + ")");
       }
     }
+  }
+  if (method == PoseMethod::alexa) {
+    try {
+      morph_.emplace(LogMatrixBlend(poses_[0].pose, poses_[1].pose));
+    } catch (const NoRealLogarithm& error) {
+      throw NoSamBetweenPoses(error, 0);
+    }
+    return;
   }
   if (is_fig2_morph(method)) {
     const Affine2& from = poses_[0].pose;
@@ -192,7 +201,8 @@ Affine2 PoseMotion::evaluate(double t) const {
     }
     case PoseMethod::rarap:
     case PoseMethod::asap:
-    case PoseMethod::tsb: {
+    case PoseMethod::tsb:
+    case PoseMethod::alexa: {
       if (t == poses_[0].t) return poses_[0].pose;
       if (t == poses_[1].t) return poses_[1].pose;
       const double u = (t - poses_[0].t) / (poses_[1].t - poses_[0].t);
@@ -231,7 +241,8 @@ Affine2 PoseMotion::velocity(double t) const {
     }
     case PoseMethod::rarap:
     case PoseMethod::asap:
-    case PoseMethod::tsb: {
+    case PoseMethod::tsb:
+    case PoseMethod::alexa: {
       const double duration = poses_[1].t - poses_[0].t;
       const double u = (t - poses_[0].t) / duration;
       const Affine2 rate = std::visit([u](const auto& morph) { return morph.velocity(u); }, *morph_);

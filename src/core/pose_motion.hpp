@@ -3,7 +3,8 @@
 // the matrices (the "linear" column of Fig. 2: every vertex moves on a
 // straight line at constant speed), and the other morphs Fig. 2 compares
 // with SAM (Sec. 2.4): rARAP, ASAP (log spiral and linear residue) and TSB
-// (blend of the sides' log spirals). What registry.hpp is to the PITAs.
+// (blend of the sides' log spirals), and Alexa's log-matrix blend that Sec.
+// 3.3.2 and Figs. 4, 5 compare with SAM. What registry.hpp is to the PITAs.
 #pragma once
 
 #include <array>
@@ -16,6 +17,7 @@
 
 #include "core/affine2.hpp"
 #include "core/affine_power.hpp"
+#include "core/log_matrix_blend.hpp"
 #include "core/rarap_morph.hpp"
 #include "core/sam_splines.hpp"
 #include "core/spiral_residue_morph.hpp"
@@ -23,7 +25,7 @@
 
 namespace pita {
 
-enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point, rarap, asap, tsb };
+enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point, rarap, asap, tsb, alexa };
 
 // The reference triangle of a pose scene when it gives none: (0,0), (1,0), (0,1).
 std::array<Point, 3> default_reference_triangle();
@@ -85,6 +87,11 @@ class NoSamBetweenPoses : public NoRealLogarithm {
 // the spirals of its sides (docs/paper-notes.md N39); they throw
 // std::invalid_argument when the two poses have opposite orientations.
 //
+// Alexa (Sec. 3.3.2, Figs. 4, 5; two poses, extrapolated outside the knots)
+// is e^{(1-u) log B + u log C} of the absolute poses (core/log_matrix_blend.hpp,
+// docs/paper-notes.md N45); it throws NoSamBetweenPoses (first 0) when either
+// pose has no real logarithm.
+//
 // The four-point polySAM (Sec. 7.3, Fig. 13) subdivides its control poses
 // `subdivisions` times with subdivide_four_point (a new pose at the middle
 // time of each span) and is the polySAM through the result: it still passes
@@ -100,7 +107,7 @@ class PoseMotion {
   // The derivative dA/dt as an affinity-shaped pair (dL/dt, db/dt), so that
   // the velocity of the point A(t) p0 is apply(velocity(t), p0). Exact for
   // SAM and polySAM ((log A_span) A(t) / span duration, Sec. 2.3 (6)), for
-  // linear, rARAP, ASAP and TSB; for the Bezier SAM and the bi-arc a fourth-order central
+  // linear, rARAP, ASAP, TSB and Alexa (the Frechet derivative of exp); for the Bezier SAM and the bi-arc a fourth-order central
   // difference (one-sided second order at the ends). At an interior knot,
   // where a polySAM's velocity jumps, the outgoing one; at the last, the
   // incoming one.
@@ -119,7 +126,8 @@ class PoseMotion {
   std::vector<TimedPose> span_poses_;  // the polySAM's poses (SAM, polySAM, linear, four-point)
   std::vector<SteadyAffineMorph> spans_;  // between span_poses_
   std::optional<SamBiarc> biarc_;
-  std::optional<std::variant<RarapMorph, SpiralResidueMorph, TriangleSpiralBlend>> morph_;  // Fig. 2 b-d
+  std::optional<std::variant<RarapMorph, SpiralResidueMorph, TriangleSpiralBlend, LogMatrixBlend>>
+      morph_;  // Fig. 2 b-d, Alexa
 };
 
 }  // namespace pita

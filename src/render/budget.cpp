@@ -109,6 +109,14 @@ class LayerCost {
   void operator()(const scene::ShapesLayer& l) {
     frames(l.samples, "shapes", shapes_units());
   }
+  void operator()(const scene::VersusLayer& l) {
+    if (!l.at.empty()) {
+      add(layer_ + "/at", fmt::format("{} frames of compared shapes", l.at.size()),
+          static_cast<double>(l.at.size()) * (shapes_units() + l.power));
+      return;
+    }
+    frames(l.samples, "compared shapes", shapes_units() + l.power);
+  }
   void operator()(const scene::PosesLayer& l) {
     // With "inserted", a four-point panel's last step adds n 2^(steps-1) poses.
     const double inserted = l.inserted && panel_.subdivisions > 0

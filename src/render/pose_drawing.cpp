@@ -107,6 +107,61 @@ class PoseBuilder {
     }
   }
 
+  // SAM Figs. 4, 5: the shapes under another method's motion through the
+  // panel's poses, each pose raised to `power` as a displacement from the
+  // first pose (figure.hpp, VersusLayer).
+  void add(const scene::VersusLayer& layer) {
+    const PoseMethodInfo& about = info(layer.method);
+    const auto count = static_cast<int>(panel_.poses.size());
+    if (count < about.min_poses || count > about.max_poses) {
+      fail(count_reason(layer.method, panel_.poses.size()));
+    }
+    scene::Panel other = panel_;
+    other.pose_method = layer.method;
+    other.method_name = std::string(about.id);
+    std::optional<motion::SceneMotion> motion;
+    try {
+      motion.emplace(motion::build_motion(scene_, other));
+    } catch (const motion::NoMotion& error) {
+      fail(fmt::format("method {}: {}", about.id, error.reason()));
+    }
+    std::vector<double> ts = layer.at;
+    if (selection_ != nullptr) {
+      ts = selection_->trail;
+      ts.push_back(selection_->t);
+    } else if (ts.empty()) {
+      const double from = layer.range ? layer.range->from : motion->first();
+      const double to = layer.range ? layer.range->to : motion->last();
+      ts = motion::uniform_times(from, to, layer.samples.value_or(panel_.samples));
+    }
+    const scene::ShapesLayer style{layer.line, layer.fill, layer.fill_opacity, std::nullopt, std::nullopt};
+    const Affine2 first = panel_.poses.front().pose;
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      Affine2 pose;
+      try {
+        pose = motion->pose_at(ts[i]);
+      } catch (const motion::NoMotion& error) {
+        fail(fmt::format("method {}: {}", about.id, error.reason()));
+      }
+      // (D(t) o D(t0)^-1)^k o D(t0), by k - 1 compositions.
+      const Affine2 step = compose(pose, inverse(first));
+      for (int k = 1; k < layer.power; ++k) pose = compose(step, pose);
+      const double fade = selection_ != nullptr ? trail_fade(i, ts.size()) : 1.0;
+      for (Shape& shape : carried_shapes(panel_.shapes, pose, style, scene_.canvas.y_up, fade)) {
+        push(static_cast<int>(i), std::move(shape));
+        drawing_.items.back().moving = selection_ != nullptr;
+      }
+    }
+  }
+
+  static std::string count_reason(PoseMethod method, std::size_t count) {
+    const PoseMethodInfo& about = info(method);
+    const std::string wanted = about.min_poses == about.max_poses
+                                   ? fmt::format("exactly {}", about.min_poses)
+                                   : fmt::format("at least {}", about.min_poses);
+    return fmt::format("method {} takes {} poses (the panel has {})", about.id, wanted, count);
+  }
+
   void add(const scene::PosesLayer& layer) {
     const std::vector<TimedPose>& poses = panel_.poses;
     if (poses.empty()) fail("this layer draws the poses, and the panel has no poses");

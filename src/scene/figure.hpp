@@ -454,9 +454,29 @@ struct SweptLayer {
 };
 inline constexpr int kMaxSweptInstants = 64;
 
+// "versus": the shapes carried by the panel's poses interpolated by another
+// pose method, over the panel's own motion (SAM paper Fig. 4: the mid-way
+// poses of SAM and of Alexa's blend, and their squares; Fig. 5: the two
+// motions overlaid). With `power` k each drawn pose D(t) becomes
+// (D(t) o D(t0)^-1)^k o D(t0), t0 the first knot: the displacement from the
+// first pose applied k times (k = 2 at t = 1/2 is Fig. 4's "squared" pose,
+// which is the last pose exactly when the motion is steady).
+struct VersusLayer {
+  PoseMethod method = PoseMethod::sam;   // required
+  std::vector<double> at;                // the times drawn; empty: `samples` over `range`
+  int power = 1;                         // [1, kMaxComparePower]
+  LineStyle line{Color{0.0, 0.0, 0.85, 1.0}, 1.0, 1.0, {}};
+  std::optional<Color> fill;             // filled with fill_opacity when given
+  double fill_opacity = 0.25;
+  std::optional<int> samples;            // default: the panel's samples
+  std::optional<TimeRange> range;        // default: first to last knot
+};
+inline constexpr int kMaxComparePower = 16;
+inline constexpr std::size_t kMaxCompareTimes = 64;
+
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
                                ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
-                               SweptLayer>;
+                               SweptLayer, VersusLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

@@ -12,6 +12,7 @@
 #include "core/methods.hpp"
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -755,6 +756,9 @@ constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "c
 constexpr std::array<std::string_view, 13> kSweptFields = {
     "type", "edge", "samples", "range", "trace_samples", "instants", "segments", "ends", "envelope",
     "grazing", "claim_at", "size", "color"};
+constexpr std::array<std::string_view, 12> kVersusFields = {
+    "type", "method", "at", "power", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples",
+    "range"};
 constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
     kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
     kPatchFields};
@@ -913,6 +917,30 @@ SweptLayer read_swept(const Fields& fields) {
   return layer;
 }
 
+VersusLayer read_versus(const Fields& fields) {
+  const JsonReader& reader = fields.reader();
+  VersusLayer layer;
+  layer.method = read_pose_method(reader, fields.required("method", "the pose method to compare with"),
+                                  fields.at("method"));
+  if (const Json* at = fields.get("at")) {
+    const std::string pointer = fields.at("at");
+    if (!at->is_array() || at->empty() || at->size() > kMaxCompareTimes) {
+      reader.fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxCompareTimes,
+                                       value_text(*at)));
+    }
+    for (std::size_t i = 0; i < at->size(); ++i) {
+      layer.at.push_back(reader.number((*at)[i], element_pointer(pointer, i)));
+    }
+  }
+  fields.integer("power", 1, kMaxComparePower, layer.power);
+  read_line(fields, layer.line);
+  fields.color("fill", layer.fill);
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  read_figure_samples(fields, layer.samples);
+  read_range(fields, layer.range);
+  return layer;
+}
+
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
 // schema and the README list them.
 constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
@@ -938,7 +966,7 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 11> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 12> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
@@ -950,6 +978,7 @@ constexpr std::array<LayerKind<PoseLayer>, 11> kPoseLayerKinds{{
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
     {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }},
+    {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {

@@ -56,7 +56,7 @@ TEST(Methods, UnknownNamesHaveOneWording) {
             "unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?");
   EXPECT_EQ(unknown_method_reason("polysan", MotionKind::poses), "unknown method \"polysan\"; did you mean polySAM?");
   const std::string none = unknown_method_reason("zzzzzz", MotionKind::poses);
-  EXPECT_EQ(none, "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, rARAP, ASAP, TSB");
+  EXPECT_EQ(none, "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, rARAP, ASAP, TSB, Alexa");
 }
 
 TEST(Methods, LabelsAsMessagesNameThem) {

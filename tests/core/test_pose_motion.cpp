@@ -186,8 +186,8 @@ TEST(PoseMethods, TableNamesEachMethodOnceWithItsPoseCounts) {
     EXPECT_EQ(&info(entry.method), &entry) << entry.id;
     EXPECT_LE(entry.min_poses, entry.max_poses) << entry.id;
   }
-  EXPECT_EQ(ids.size(), 9u);
-  for (const PoseMethod method : {PoseMethod::rarap, PoseMethod::asap, PoseMethod::tsb}) {
+  EXPECT_EQ(ids.size(), 10u);
+  for (const PoseMethod method : {PoseMethod::rarap, PoseMethod::asap, PoseMethod::tsb, PoseMethod::alexa}) {
     EXPECT_EQ(info(method).min_poses, 2);
     EXPECT_EQ(info(method).max_poses, 2);
   }

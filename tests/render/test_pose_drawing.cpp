@@ -206,6 +206,58 @@ TEST(PoseDrawing, PosesLayerDrawsTheInsertedPoses) {
   EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 4u);
 }
 
+// SAM Figs. 4, 5: "compare" draws another method's motion through the
+// panel's poses; with "power" 2 at t = 1/2 the squared mid-way pose X^2 o B.
+// On the paper's poses B = Rotate(90 deg), C = Translate(6, 0), Alexa's
+// squared mid-way pose is the translation by 12 sqrt(2)/pi (Sec. 3.3.2), the
+// SAM's is C; an independent check with Eigen's generic 3x3 log and exp.
+TEST(PoseDrawing, CompareLayerDrawsAnotherMethodAndItsPowers) {
+  scene::VersusLayer layer;
+  layer.method = PoseMethod::alexa;
+  layer.at = {0.5};
+  layer.power = 2;
+  scene::Scene scene = sam_scene({layer});
+  const Affine2 B = affinity(0.0, -1.0, 0.0, 1.0, 0.0, 0.0), C = affinity(1.0, 0.0, 6.0, 0.0, 1.0, 0.0);
+  scene.panels[0].poses = {{0.0, B}, {1.0, C}};
+  const Drawing squared = pose_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(squared.items.size(), 1u);
+  const auto& triangle = std::get<Polyline>(squared.items[0].shape);  // no fill: outlines
+  const double shift = 12.0 * std::sqrt(2.0) / kPi;
+  EXPECT_LT(std::abs(triangle.points[0] - Point{shift, 0.0}), 1e-13);
+  EXPECT_LT(std::abs(triangle.points[1] - Point{shift + 1.0, 0.0}), 1e-13);
+  EXPECT_LT(std::abs(triangle.points[2] - Point{shift, 1.0}), 1e-13);
+  // Power 1: the mid-way pose e^{(log B + log C)/2}, by Eigen's generic log/exp.
+  layer.power = 1;
+  scene.pose_layers = {layer};
+  const Drawing middle = pose_panel_drawing(scene, scene.panels[0]);
+  const Eigen::Matrix3d expected = (0.5 * (homogeneous(B).log() + homogeneous(C).log())).exp();
+  const auto& mid = std::get<Polyline>(middle.items.at(0).shape);
+  EXPECT_LT(std::abs(mid.points[1] - through(expected, {1.0, 0.0})), 1e-12);
+  // SAM squared at the middle: the last pose.
+  layer.method = PoseMethod::sam;
+  layer.power = 2;
+  scene.pose_layers = {layer};
+  const Drawing sam = pose_panel_drawing(scene, scene.panels[0]);
+  EXPECT_LT(std::abs(std::get<Polyline>(sam.items.at(0).shape).points[1] - Point{7.0, 0.0}), 1e-13);
+  // Samples over the knots when no "at" is given; a method that needs other
+  // pose counts is refused, naming the layer.
+  layer.at.clear();
+  layer.power = 1;
+  scene.pose_layers = {layer};
+  EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 5u);
+  layer.method = PoseMethod::biarc_sam;
+  scene.pose_layers = {layer};
+  try {
+    (void)pose_panel_drawing(scene, scene.panels[0]);
+    FAIL() << "biarc-SAM takes 3 poses";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("/layers/0"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("method biarc-SAM takes exactly 3 poses (the panel has 2)"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 // Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
 TEST(PoseDrawing, ExistenceRegionIsEquationFour) {
   scene::ExistenceLayer layer;

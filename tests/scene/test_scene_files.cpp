@@ -3,19 +3,25 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
+#include <numbers>
+#include <optional>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/affine_power.hpp"
 #include "core/chains/chain.hpp"
+#include "core/pose_motion.hpp"
 #include "core/point_curves.hpp"
 
 #include "core/pitas/registry.hpp"
@@ -343,6 +349,116 @@ TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
   EXPECT_TRUE(title_says(scene.panels[1], fmt::format("d(WAM, WHM) = {:.2g}", am_hm))) << am_hm;
   EXPECT_TRUE(title_says(scene.panels[2], fmt::format("d(WGM, WHM) = {:.2g}", gm_hm))) << gm_hm;
   EXPECT_GT(am_hm, std::max(am_gm, gm_hm));
+}
+// The texts of a pose panel's label layers (the panel's own layers, else the scene's).
+std::vector<std::string> label_texts(const Scene& scene, const Panel& panel) {
+  std::vector<std::string> texts;
+  for (const PoseLayer& layer : panel.pose_layers ? *panel.pose_layers : scene.pose_layers) {
+    if (const auto* label = std::get_if<LabelLayer>(&layer)) texts.push_back(label->text);
+  }
+  return texts;
+}
+
+bool some_text_has(const std::vector<std::string>& texts, const std::string& part) {
+  return std::any_of(texts.begin(), texts.end(),
+                     [&](const std::string& text) { return text.find(part) != std::string::npos; });
+}
+
+// "-3.000" as the labels print it (a minus sign, three decimals).
+std::string printed(double value) {
+  std::string text = fmt::format("{:.3f}", value);
+  if (text == "-0.000") text = "0.000";
+  if (text.front() == '-') text = "\u2212" + text.substr(1);
+  return text;
+}
+
+// SAM Fig. 4 (docs/paper-notes.md N46): the numbers the figure prints,
+// recomputed from the scene's poses with core's SAM and Alexa, against the
+// paper's closed forms.
+TEST(SceneFiles, SamFig04PrintsItsMeasuredNumbers) {
+  const Scene scene = load_scene(kSourceDir / "scenes/sam-fig04-alexa-midway.json");
+  ASSERT_EQ(scene.panels.size(), 1u);
+  const Panel& panel = scene.panels.front();
+  ASSERT_EQ(panel.poses.size(), 2u);
+  const Affine2 B = panel.poses[0].pose, C = panel.poses[1].pose;
+  const PoseMotion sam(PoseMethod::sam, panel.poses), alexa(PoseMethod::alexa, panel.poses);
+  const double middle = 0.5 * (panel.poses[0].t + panel.poses[1].t);
+  const Affine2 x_sam = compose(sam.at(middle), inverse(B)), x_alexa = compose(alexa.at(middle), inverse(B));
+  const std::optional<Eigen::Vector2d> q = fixed_point(x_sam);
+  ASSERT_TRUE(q.has_value());
+  const Affine2 sam_squared = compose(compose(x_sam, x_sam), B);
+  const Affine2 alexa_squared = compose(compose(x_alexa, x_alexa), B);
+  // The paper's closed forms (Sec. 3.3.2).
+  EXPECT_LT((*q - Eigen::Vector2d(3.0, -3.0)).norm(), 1e-13);
+  EXPECT_LT((sam_squared.b - C.b).norm() + (sam_squared.L - C.L).norm(), 1e-13);
+  EXPECT_NEAR(alexa_squared.b.x(), 12.0 * std::sqrt(2.0) / std::numbers::pi, 1e-13);
+  EXPECT_NEAR(alexa_squared.b.y(), 0.0, 1e-13);
+  EXPECT_LT((alexa_squared.L - Eigen::Matrix2d::Identity()).norm(), 1e-13);
+  // Printed as measured.
+  const std::vector<std::string> texts = label_texts(scene, panel);
+  EXPECT_TRUE(some_text_has(texts, fmt::format("q = ({}, {})", printed(q->x()), printed(q->y()))));
+  EXPECT_TRUE(some_text_has(texts, fmt::format("X_SAM² ∘ B: translation ({}, {})", printed(sam_squared.b.x()),
+                                               printed(sam_squared.b.y()))));
+  EXPECT_TRUE(some_text_has(texts, fmt::format("X_Alexa² ∘ B: translation ({}, {})",
+                                               printed(alexa_squared.b.x()), printed(alexa_squared.b.y()))))
+      << printed(alexa_squared.b.x());
+}
+
+// SAM Fig. 5 (N46): the barycentre steps the figure prints, at the panel's
+// equal time steps: all equal for SAM (a rigid SAM turns about its fixed
+// point), uneven for Alexa.
+TEST(SceneFiles, SamFig05PrintsItsMeasuredSteps) {
+  const Scene scene = load_scene(kSourceDir / "scenes/sam-fig05-sam-vs-alexa.json");
+  ASSERT_EQ(scene.panels.size(), 1u);
+  const Panel& panel = scene.panels.front();
+  ASSERT_EQ(panel.poses.size(), 2u);
+  ASSERT_EQ(panel.shapes.size(), 1u);  // the reference triangle
+  Point centre{0.0, 0.0};
+  for (const Point p : panel.shapes.front().points) centre += p;
+  centre /= static_cast<double>(panel.shapes.front().points.size());
+  const auto steps = [&](PoseMethod method) {
+    const PoseMotion motion(method, panel.poses);
+    const double t0 = panel.poses[0].t, t1 = panel.poses[1].t;
+    std::vector<double> lengths;
+    for (int i = 0; i + 1 < panel.samples; ++i) {
+      const double a = t0 + (t1 - t0) * i / (panel.samples - 1);
+      const double b = t0 + (t1 - t0) * (i + 1) / (panel.samples - 1);
+      lengths.push_back(std::abs(pita::apply(motion.at(b), centre) - pita::apply(motion.at(a), centre)));
+    }
+    return std::pair{*std::min_element(lengths.begin(), lengths.end()),
+                     *std::max_element(lengths.begin(), lengths.end())};
+  };
+  const auto [sam_min, sam_max] = steps(PoseMethod::sam);
+  const auto [alexa_min, alexa_max] = steps(PoseMethod::alexa);
+  // Steady, and rigid to the 6 decimals of the scene's second triangle (a
+  // turn of the first): equal steps to about 1e-6.
+  EXPECT_LT(sam_max - sam_min, 1e-5);
+  EXPECT_GT(alexa_max, 1.5 * alexa_min);    // not: the caption's uneven spacing
+  const std::vector<std::string> texts = label_texts(scene, panel);
+  EXPECT_TRUE(some_text_has(texts, fmt::format("SAM: barycentre steps {} to {}", printed(sam_min), printed(sam_max))))
+      << printed(sam_min) << " " << printed(sam_max);
+  EXPECT_TRUE(some_text_has(texts, fmt::format("Alexa: barycentre steps {} to {}", printed(alexa_min),
+                                               printed(alexa_max))))
+      << printed(alexa_min) << " " << printed(alexa_max);
+}
+
+// SAM Fig. 3 (N46): the starting and ending poses of the columns are poses
+// of two SAMs, at tau = j/(n-1) for column j.
+TEST(SceneFiles, SamFig03PairsArePosesOfTwoSams) {
+  const Scene scene = load_scene(kSourceDir / "scenes/sam-fig03-series.json");
+  const std::size_t n = scene.panels.size();
+  ASSERT_GE(n, 5u);
+  const Affine2 P0 = scene.panels.front().poses[0].pose, P1 = scene.panels.back().poses[0].pose;
+  const Affine2 Q0 = scene.panels.front().poses[1].pose, Q1 = scene.panels.back().poses[1].pose;
+  const auto distance = [](const Affine2& X, const Affine2& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); };
+  for (std::size_t j = 0; j < n; ++j) {
+    const double tau = static_cast<double>(j) / static_cast<double>(n - 1);
+    const Panel& panel = scene.panels[j];
+    ASSERT_EQ(panel.poses.size(), 2u) << j;
+    EXPECT_LT(distance(panel.poses[0].pose, steady_affine_morph(P0, P1, tau)), 1e-10) << "column " << j;
+    EXPECT_LT(distance(panel.poses[1].pose, steady_affine_morph(Q0, Q1, tau)), 1e-10) << "column " << j;
+    EXPECT_NO_THROW(SteadyAffineMorph(panel.poses[0].pose, panel.poses[1].pose)) << "column " << j;
+  }
 }
 
 }  // namespace
