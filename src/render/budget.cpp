@@ -100,9 +100,12 @@ class LayerCost {
   }
   void operator()(const scene::CompareLayer& l) { frames(l.samples, "a compared pattern", kShapeUnits + 1); }
   void operator()(const scene::PlotLayer& l) {
+    // An area plot builds and samples one motion per method.
+    const double curves = l.of == scene::PlotOf::area ? static_cast<double>(std::max<std::size_t>(1, l.methods.size())) : 1.0;
+    const double per_point = l.of == scene::PlotOf::area ? motion::frame_cost(panel_) : 1.0;
     add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
-        8 * kShapeUnits + l.samples);
-    if (l.marks) frames(std::nullopt, "a plot's marks", kShapeUnits + 8);
+        8 * kShapeUnits + curves * l.samples * per_point);
+    if (l.marks) frames(std::nullopt, "a plot's marks", curves * (kShapeUnits + 8));
   }
 
   // ------------------------------------------------------------- pose layers
@@ -127,6 +130,15 @@ class LayerCost {
   }
   void operator()(const scene::VelocitiesLayer& l) {
     frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));
+  }
+  void operator()(const scene::FieldLayer& l) {
+    // An arrow per node; per curve 257 powers, and 33 x 5 more for the check.
+    const double nodes = static_cast<double>(l.columns) * l.rows;
+    const double curves = l.curves > 0 ? std::ceil(l.columns / static_cast<double>(l.curves)) *
+                                             std::ceil(l.rows / static_cast<double>(l.curves))
+                                       : 0.0;
+    add(layer_ + "/columns", fmt::format("{} x {} arrows of a field", l.columns, l.rows),
+        nodes * (kShapeUnits + 2) + curves * (kShapeUnits + 257 + 33 * 5));
   }
   void operator()(const scene::PathsLayer& l) {
     add(layer_ + "/samples", fmt::format("{} points of each vertex's path", l.samples),

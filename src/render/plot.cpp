@@ -1,5 +1,9 @@
 #include "render/plot.hpp"
 
+#include <algorithm>
+
+#include <fmt/format.h>
+
 #include "analysis/distance_time.hpp"
 #include "motion/sampler.hpp"
 
@@ -36,6 +40,66 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
   const Color text{0.2, 0.2, 0.2, 1.0};
   push(-1, Label{"time", place({0.5, -0.12}), 10.0, text});
   push(-1, Label{"distance", place({-0.02, 1.08}), 10.0, text});
+  return items;
+}
+
+std::string area_summary(const std::string& name, const analysis::AreaCurve& curve) {
+  const double start = curve.areas.front(), end = curve.areas.back();
+  if (curve.stats.monotone) {
+    return fmt::format("{}: area monotone ({}), end/start = {:.4g}", name, end >= start ? "rising" : "falling",
+                       end / start);
+  }
+  // The interior extremum: the largest area when it exceeds both ends, else the smallest.
+  const bool bump = curve.largest > std::max(start, end);
+  return fmt::format("{}: area not monotone, {} at t = {:.3g} ({:.4g} x start)", name,
+                     bump ? "largest" : "smallest", bump ? curve.t_of_largest : curve.t_of_smallest,
+                     (bump ? curve.largest : curve.smallest) / start);
+}
+
+std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series,
+                                  double first, double last, const std::string& pointer) {
+  const Point low = layer.box.min, high = layer.box.max;
+  const double width = high.real() - low.real(), height = high.imag() - low.imag();
+  const auto place = [&](Point unit) {
+    return Point{low.real() + unit.real() * width, low.imag() + unit.imag() * height};
+  };
+  std::vector<Item> items;
+  const auto push = [&](int index, Shape shape) { items.push_back({pointer, index, std::move(shape)}); };
+  const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
+  push(-1, Polyline{{place({0, 0}), place({1, 0}), place({1, 1}), place({0, 1})}, true, frame});
+
+  double smallest = series.front().curve.smallest, largest = series.front().curve.largest;
+  for (const AreaSeries& one : series) {
+    smallest = std::min(smallest, one.curve.smallest);
+    largest = std::max(largest, one.curve.largest);
+  }
+  // A constant area (an area-preserving SAM) is drawn at mid-height.
+  const double span = largest - smallest;
+  const auto unit = [&](double t, double area) {
+    const double y = span > 1e-12 * largest ? (area - smallest) / span : 0.5;
+    return place({(t - first) / (last - first), y});
+  };
+  const Color text{0.2, 0.2, 0.2, 1.0};
+  for (std::size_t k = 0; k < series.size(); ++k) {
+    const AreaSeries& one = series[k];
+    LineStyle line = layer.line;
+    line.color = one.color;
+    std::vector<Point> curve;
+    for (std::size_t i = 0; i < one.curve.times.size(); ++i) curve.push_back(unit(one.curve.times[i], one.curve.areas[i]));
+    push(-1, Polyline{std::move(curve), false, line});
+    if (layer.marks) {
+      const double radius = 0.012 * std::min(width, height);
+      for (std::size_t i = 0; i < one.marks.times.size(); ++i) {
+        push(static_cast<int>(i), Circle{unit(one.marks.times[i], one.marks.areas[i]), radius,
+                                         LineStyle{one.color, 0.8, 1.0, {}}, one.color});
+      }
+    }
+    push(-1, Label{area_summary(one.name, one.curve), place({0.0, -0.2 - 0.1 * static_cast<double>(k)}), 11.0,
+                   one.color});
+  }
+  push(-1, Label{"time", place({0.45, -0.08}), 10.0, text});
+  push(-1, Label{fmt::format("|det L| = {:.4g}", largest), place({0.01, 1.05}), 10.0, text});
+  push(-1, Label{fmt::format("|det L| = {:.4g}", smallest), place({0.01, 0.04}), 10.0, text});
   return items;
 }
 

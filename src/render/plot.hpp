@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/area_time.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/drawing.hpp"
 #include "scene/figure.hpp"
@@ -17,5 +18,25 @@ namespace pita::render {
 // when the tracked point does not move (the distance has no unit).
 std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneMotion& motion,
                              const std::vector<double>& marks, const std::string& pointer);
+
+// One curve of an area plot ("of": "area", SAM Fig. 9): a method's name, its
+// colour, its area at the plot's samples and at the panel's frame times.
+struct AreaSeries {
+  std::string name;
+  Color color;
+  analysis::AreaCurve curve;
+  analysis::AreaCurve marks;
+};
+
+// The area plot's items: its frame, each series' area against the fraction
+// of time, between the smallest and the largest area of all series (printed
+// at the axis's ends), the marks when the layer asks for them, and under the
+// box one line per series with its measured monotonicity.
+std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series,
+                                  double first, double last, const std::string& pointer);
+
+// The line printed for one series: "SAM: area monotone (falling), end/start = 0.5"
+// or "rARAP: area not monotone, largest at t = 0.5 (1.2 x start)".
+std::string area_summary(const std::string& name, const analysis::AreaCurve& curve);
 
 }  // namespace pita::render

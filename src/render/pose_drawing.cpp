@@ -8,12 +8,15 @@
 
 #include <fmt/format.h>
 
+#include "analysis/area_time.hpp"
 #include "analysis/existence.hpp"
 #include "analysis/measure.hpp"
 #include "analysis/swept_edge.hpp"
+#include "analysis/velocity_field.hpp"
 #include "core/affine_power.hpp"
 #include "core/grazing_point.hpp"
 #include "core/pose_motion.hpp"
+#include "core/sam_velocity_field.hpp"
 #include "core/sam_splines.hpp"
 #include "core/steadiness.hpp"
 #include "render/carried_shapes.hpp"
@@ -27,6 +30,10 @@ namespace pita::render {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// The most white a "lightness": "area" shapes layer mixes in (at the largest area).
+constexpr double kAreaLightness = 0.8;
+// Points per integral curve of a "field" layer.
+constexpr int kFieldCurveSamples = 257;
 
 class PoseBuilder {
  public:
@@ -98,9 +105,26 @@ class PoseBuilder {
     } else {
       ts = times(layer.samples, layer.range);
     }
+    // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's
+    // area, from none at the smallest to kAreaLightness at the largest.
+    std::vector<double> areas;
+    if (layer.lightness_by_area) {
+      for (const double t : ts) areas.push_back(std::abs(pose_at(t).L.determinant()));
+    }
+    const auto [smallest, largest] = areas.empty() ? std::pair{0.0, 0.0} : std::pair{
+        *std::min_element(areas.begin(), areas.end()), *std::max_element(areas.begin(), areas.end())};
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double fade = selection_ != nullptr ? trail_fade(i, ts.size()) : 1.0;
-      for (Shape& shape : carried_shapes(panel_.shapes, pose_at(ts[i]), layer, scene_.canvas.y_up, fade)) {
+      scene::ShapesLayer style = layer;
+      if (!areas.empty() && largest > smallest) {
+        const double white = kAreaLightness * (areas[i] - smallest) / (largest - smallest);
+        const auto lighten = [white](Color c) {
+          return Color{c.r + (1.0 - c.r) * white, c.g + (1.0 - c.g) * white, c.b + (1.0 - c.b) * white, c.a};
+        };
+        style.line.color = lighten(style.line.color);
+        if (style.fill) style.fill = lighten(*style.fill);
+      }
+      for (Shape& shape : carried_shapes(panel_.shapes, pose_at(ts[i]), style, scene_.canvas.y_up, fade)) {
         push(static_cast<int>(i), std::move(shape));
         drawing_.items.back().moving = selection_ != nullptr;
       }
@@ -282,7 +306,39 @@ class PoseBuilder {
     }
   }
 
+  // "of": "area" (SAM Fig. 9, N48): each method's motion on the panel's poses.
+  void add_area_plot(const scene::PlotLayer& layer) {
+    (void)motion();  // the panel's own motion, or its error, first
+    const std::vector<double> marks = times(std::nullopt, std::nullopt);
+    const std::vector<double> samples = times(layer.samples, std::nullopt);
+    std::vector<PoseMethod> methods = layer.methods;
+    if (methods.empty()) methods.push_back(panel_.pose_method);
+    std::vector<AreaSeries> series;
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const PoseMethodInfo& about = info(methods[k]);
+      const auto count = static_cast<int>(panel_.poses.size());
+      if (count < about.min_poses || count > about.max_poses) {
+        fail(fmt::format("methods/{}: {} takes {} to {} poses; the panel has {}", k, about.id, about.min_poses,
+                         about.max_poses, count));
+      }
+      scene::Panel other = panel_;
+      other.pose_method = methods[k];
+      other.method_name = std::string(about.id);
+      try {
+        const motion::SceneMotion moving = motion::build_motion(scene_, other);
+        series.push_back({std::string(about.id), layer.colors[k % layer.colors.size()],
+                          analysis::area_over_time(moving, samples), analysis::area_over_time(moving, marks)});
+      } catch (const motion::NoMotion& error) {
+        fail(fmt::format("methods/{}: {}", k, error.reason()));
+      }
+    }
+    for (Item& item : area_plot_items(layer, series, motion().first(), motion().last(), layer_)) {
+      drawing_.items.push_back(std::move(item));
+    }
+  }
+
   void add(const scene::PlotLayer& layer) {
+    if (layer.of == scene::PlotOf::area) return add_area_plot(layer);
     const std::vector<double> marks = times(std::nullopt, std::nullopt);
     try {
       for (Item& item : plot_items(layer, motion(), marks, layer_)) drawing_.items.push_back(std::move(item));
@@ -290,6 +346,67 @@ class PoseBuilder {
       fail(error.reason());
     } catch (const std::invalid_argument& error) {
       fail(fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
+    }
+  }
+
+  // SAM Fig. 8 (Eq. 7, N47): the field of the panel's SAM at the nodes of a
+  // grid, its integral curves through every `curves`-th node, the fixed point,
+  // and the measured agreement of the curves with the field.
+  void add(const scene::FieldLayer& layer) {
+    if (panel_.pose_method != PoseMethod::sam) {
+      fail(fmt::format("a field layer draws the stationary velocity field of a SAM; the panel's method is {}",
+                       panel_.method_name));
+    }
+    const double first = motion().first(), last = motion().last();
+    std::optional<SamVelocityField> field;
+    try {
+      field.emplace(SamVelocityField::between(panel_.poses.front().pose, panel_.poses.back().pose));
+    } catch (const NoRealLogarithm& error) {
+      fail(error.what());
+    }
+    // u = (t - first) / (last - first): the field per unit of u, as "velocities".
+    const auto node = [&](int i, int j) {
+      const Point low = layer.box.min, high = layer.box.max;
+      return Eigen::Vector2d(low.real() + (high.real() - low.real()) * i / (layer.columns - 1),
+                             low.imag() + (high.imag() - low.imag()) * j / (layer.rows - 1));
+    };
+    const auto point = [](const Eigen::Vector2d& x) { return Point{x.x(), x.y()}; };
+    for (int j = 0; j < layer.rows; ++j) {
+      for (int i = 0; i < layer.columns; ++i) {
+        const Eigen::Vector2d x = node(i, j);
+        push(-1, ArrowShape{point(x), point(x + layer.scale * field->at(x)), layer.line});
+      }
+    }
+    std::vector<Eigen::Vector2d> starts;
+    if (layer.curves > 0) {
+      for (int j = 0; j < layer.rows; j += layer.curves) {
+        for (int i = 0; i < layer.columns; i += layer.curves) starts.push_back(node(i, j));
+      }
+    }
+    const double from = layer.range ? layer.range->from : first, to = layer.range ? layer.range->to : last;
+    std::vector<double> us;
+    for (const double t : motion::uniform_times(from, to, kFieldCurveSamples)) us.push_back((t - first) / (last - first));
+    for (const Eigen::Vector2d& x0 : starts) {
+      std::vector<Point> curve;
+      for (const double u : us) curve.push_back(point(field->trajectory(x0, u)));
+      push(-1, Polyline{std::move(curve), false, layer.curve});
+    }
+    const double side = std::min(layer.box.max.real() - layer.box.min.real(), layer.box.max.imag() - layer.box.min.imag());
+    if (layer.fixed_point && field->fixed_point()) {
+      const Point q = point(*field->fixed_point());
+      push(-1, Circle{q, 0.012 * side, LineStyle{Color{0, 0, 0, 1}, 1.0, 1.0, {}}, Color{0, 0, 0, 1}});
+      push(-1, Label{"q", q + Point{0.02 * side, 0.02 * side}, 12.0, Color{0, 0, 0, 1}});
+    }
+    if (selection_ == nullptr && !starts.empty()) {
+      // Every curve, at 33 times of its range: velocity by finite differences
+      // against the field at the same point (analysis/velocity_field.hpp).
+      std::vector<double> checked;
+      for (std::size_t k = 0; k < us.size(); k += us.size() / 32) checked.push_back(us[k]);
+      const analysis::FieldCheck check = analysis::check_integral_curves(*field, starts, checked);
+      push(-1, Label{fmt::format("stationary field: |x'(u) - v(x(u))| / max|v| = {:.1e} on {} curve points",
+                                 check.deviation, check.samples),
+                     Point{layer.box.min.real(), layer.box.min.imag() - 0.09 * side}, 13.0,
+                     Color{0.1, 0.1, 0.1, 1.0}});
     }
   }
 

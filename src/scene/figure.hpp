@@ -172,13 +172,24 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
 // Sec. 3.2.2): the fraction of the tracked point's path covered against the
 // fraction of time, drawn in a box of the plane with its frame, the diagonal
 // of constant speed, and a dot at each of the panel's frame times.
+// With "of": "area" (pose scenes; SAM paper Fig. 9, docs/paper-notes.md N48)
+// it draws instead the area of the moving shapes, |det L(t)| times their
+// reference area, over time, for each of `methods` (default the panel's) on
+// the panel's poses, divided by the largest area met, with each curve's
+// monotonicity printed under the box (analysis::area_stats, as `pita measure`).
+enum class PlotOf { distance, area };
 struct PlotLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn
+  PlotOf of = PlotOf::distance;
+  std::vector<PoseMethod> methods;            // "area": empty = the panel's method
+  std::vector<Color> colors{Color{0.0, 0.45, 0.0, 1.0}, Color{0.75, 0.1, 0.1, 1.0},
+                            Color{0.1, 0.3, 0.7, 1.0}};  // "area": one per method, cycled
   TrackedPoint point = TrackedPoint::start;
   int samples = 200;                          // [2, kMaxTrajectorySamples]
   LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 1.5, 1.0, {}};
   bool marks = true;
 };
+inline constexpr std::size_t kMaxPlotMethods = 8;
 
 // "point-trajectory": a curve through the panel's timed "points" (PITA Sec. 7.6,
 // Fig. 29): the PITA-based curve of Eq. 48-50 with the panel's method and
@@ -257,6 +268,10 @@ struct ShapesLayer {
   double fill_opacity = 0.25;
   std::optional<int> samples;            // default: the panel's samples
   std::optional<TimeRange> range;        // default: first to last knot
+  // "lightness": "area" (pose scenes; SAM paper Fig. 9, docs/paper-notes.md
+  // N48): each frame's line and fill mixed with white in proportion to its
+  // area among the layer's frames (the smallest as given, the largest lightest).
+  bool lightness_by_area = false;
 };
 
 // "handle" (PITA Sec. 7.1, Fig. 23): the picture X where it was drawn, in
@@ -385,6 +400,25 @@ struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each f
   std::optional<TimeRange> range;
 };
 
+// "field" (SAM paper Fig. 8, Eq. 7; docs/paper-notes.md N47): the stationary
+// velocity field of the panel's SAM (two poses) as arrows at the nodes of a
+// grid over `box`, drawn `scale` x the velocity per unit of the normalised
+// time u (as "velocities"), and the trajectories through every `curves`-th
+// node, its integral curves, over `range` (scene times; default the knots).
+// The measured agreement of the curves with the field is printed under the box.
+struct FieldLayer {
+  Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required
+  int columns = 15;                            // nodes per row, [2, kMaxFieldSide]
+  int rows = 11;                               // nodes per column, [2, kMaxFieldSide]
+  double scale = 0.15;                         // > 0
+  LineStyle line{Color{0.25, 0.25, 0.25, 1.0}, 0.8, 1.0, {}};
+  int curves = 0;                              // every curves-th node in both directions; 0: none
+  LineStyle curve{Color{0.2, 0.45, 0.8, 1.0}, 0.8, 1.0, {}};
+  std::optional<TimeRange> range;
+  bool fixed_point = true;                     // a dot at the field's zero (A's fixed point)
+};
+inline constexpr int kMaxFieldSide = 100;
+
 struct PathsLayer {  // "paths": the trajectory of each vertex of each shape
   int samples = 256;
   std::optional<TimeRange> range;
@@ -476,7 +510,7 @@ inline constexpr std::size_t kMaxCompareTimes = 64;
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
                                ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
-                               SweptLayer, VersusLayer>;
+                               SweptLayer, VersusLayer, FieldLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

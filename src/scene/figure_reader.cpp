@@ -67,8 +67,10 @@ constexpr std::array<std::string_view, 9> kCompareFields = {
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
     "type", "curve", "samples", "range", "color", "width", "opacity", "dash", "dots"};
-constexpr std::array<std::string_view, 9> kPlotFields = {
-    "type", "box", "point", "samples", "color", "width", "opacity", "dash", "marks"};
+constexpr std::array<std::string_view, 12> kPlotFields = {
+    "type", "box", "of", "methods", "colors", "point", "samples", "color", "width", "opacity", "dash", "marks"};
+constexpr std::array<std::string_view, 2> kPlotOfNames = {"distance", "area"};
+constexpr std::array<PlotOf, 2> kPlotOfs = {PlotOf::distance, PlotOf::area};
 
 constexpr std::array<std::string_view, 5> kPropertyTableFields = {"type", "methods", "configs", "seed", "at"};
 constexpr std::array<std::string_view, 12> kVectorsFields = {
@@ -619,7 +621,10 @@ PropertyTableLayer read_property_table(const Fields& fields) {
   return layer;
 }
 
-PlotLayer read_plot(const Fields& fields) {
+std::vector<Color> read_colors(const Fields& fields, std::vector<Color> defaults);
+
+// "plot"; `poses`: in a pose scene, where "of": "area" and its methods are read.
+PlotLayer read_plot(const Fields& fields, bool poses) {
   PlotLayer layer;
   const Json& box = fields.required("box", "the box {\"min\": [x, y], \"max\": [x, y]} the plot fills");
   const std::string at = fields.at("box");
@@ -630,6 +635,27 @@ PlotLayer read_plot(const Fields& fields) {
   fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
   read_line(fields, layer.line);
   fields.boolean("marks", layer.marks);
+  fields.choice("of", kPlotOfNames, kPlotOfs, layer.of);
+  if (layer.of == PlotOf::area && !poses) {
+    fields.reader().fail(fields.at("of"), "\"area\" plots the area of a pose scene's shapes; an arrow scene's "
+                                          "plot is of \"distance\"");
+  }
+  for (const std::string_view key : {std::string_view("methods"), std::string_view("colors")}) {
+    if (layer.of != PlotOf::area && fields.get(key) != nullptr) {
+      fields.reader().fail(fields.at(key), "is read only with \"of\": \"area\"");
+    }
+  }
+  if (const Json* methods = fields.get("methods")) {
+    const std::string where = fields.at("methods");
+    if (!methods->is_array() || methods->empty() || methods->size() > kMaxPlotMethods) {
+      fields.reader().fail(where, fmt::format("must be an array of 1 to {} pose methods (got {})", kMaxPlotMethods,
+                                           value_text(*methods)));
+    }
+    for (std::size_t i = 0; i < methods->size(); ++i) {
+      layer.methods.push_back(detail::read_pose_method(fields.reader(), (*methods)[i], element_pointer(where, i)));
+    }
+  }
+  if (layer.of == PlotOf::area) layer.colors = read_colors(fields, layer.colors);
   return layer;
 }
 
@@ -739,8 +765,13 @@ std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& va
 
 // ------------------------------------------------------------ pose layers
 
-constexpr std::array<std::string_view, 9> kShapesFields = {
-    "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"};
+constexpr std::array<std::string_view, 10> kShapesFields = {
+    "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range", "lightness"};
+constexpr std::array<std::string_view, 2> kLightnessNames = {"constant", "area"};
+constexpr std::array<bool, 2> kLightnessByArea = {false, true};
+constexpr std::array<std::string_view, 13> kFieldFields = {
+    "type", "box", "columns", "rows", "scale", "color", "width", "opacity", "dash", "curves", "curve", "range",
+    "fixed_point"};
 constexpr std::array<std::string_view, 5> kPosesFields = {"type", "colors", "width",
                                                           "fill_opacity", "inserted"};
 constexpr std::array<std::string_view, 8> kVelocitiesFields = {
@@ -788,13 +819,19 @@ std::vector<Color> read_colors(const Fields& fields, std::vector<Color> defaults
   return result;
 }
 
-ShapesLayer read_shapes_layer(const Fields& fields) {
+// "shapes"; `poses`: in a pose scene, where "lightness": "area" is read.
+ShapesLayer read_shapes_layer(const Fields& fields, bool poses) {
   ShapesLayer layer;
   read_line(fields, layer.line);
   fields.color("fill", layer.fill);
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
+  fields.choice("lightness", kLightnessNames, kLightnessByArea, layer.lightness_by_area);
+  if (layer.lightness_by_area && !poses) {
+    fields.reader().fail(fields.at("lightness"), "\"area\" shades a pose scene's shapes by their area; an arrow "
+                                                 "scene's carry a similarity (use \"constant\")");
+  }
   return layer;
 }
 
@@ -815,6 +852,24 @@ VelocitiesLayer read_velocities(const Fields& fields) {
   read_line(fields, layer.line);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
+  return layer;
+}
+
+FieldLayer read_field(const Fields& fields) {
+  FieldLayer layer;
+  const Json& box = fields.required("box", "the box {\"min\": [x, y], \"max\": [x, y]} the grid covers");
+  const std::string at = fields.at("box");
+  fields.reader().object(box, at, "a box {\"min\": [x, y], \"max\": [x, y]}");
+  fields.reader().check_fields(box, at, kBoxFields);
+  layer.box = read_box(Fields(fields.reader(), box, at));
+  fields.integer("columns", 2, kMaxFieldSide, layer.columns);
+  fields.integer("rows", 2, kMaxFieldSide, layer.rows);
+  fields.number("scale", kPositive, layer.scale);
+  read_line(fields, layer.line);
+  fields.integer("curves", 0, kMaxFieldSide, layer.curves);
+  read_line_object(fields, "curve", layer.curve);
+  read_range(fields, layer.range);
+  fields.boolean("fixed_point", layer.fixed_point);
   return layer;
 }
 
@@ -952,10 +1007,10 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
     {"discrepancy", kDiscrepancyFields, [](const Fields& f) -> Layer { return read_discrepancy(f); }},
     {"label", kLabelFields, [](const Fields& f) -> Layer { return read_label(f); }},
     {"legend", kLegendFields, [](const Fields& f) -> Layer { return read_legend(f); }},
-    {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f); }},
+    {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f, false); }},
     {"point-trajectory", kPointTrajectoryFields,
      [](const Fields& f) -> Layer { return read_point_trajectory(f); }},
-    {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f); }},
+    {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f, false); }},
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
     {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f); }},
@@ -966,19 +1021,20 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 12> kPoseLayerKinds{{
-    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f); }},
+constexpr std::array<LayerKind<PoseLayer>, 13> kPoseLayerKinds{{
+    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); }},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
     {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }},
     {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); }},
     {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
-    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f); }},
+    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
     {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }},
     {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); }},
+    {"field", kFieldFields, [](const Fields& f) -> PoseLayer { return read_field(f); }},
 }};
 
 Layer read_layer(const JsonReader& reader, const Json& value, const std::string& pointer) {
