@@ -44,6 +44,11 @@ class LayerCost {
       const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
       per_frame += kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
     }
+    if (!l.times.empty()) {  // exactly these frames, not samples over a range
+      add(layer_ + "/times", fmt::format("{} frames of a pattern", l.times.size()),
+          static_cast<double>(l.times.size()) * (per_frame + motion::frame_cost(panel_) - 1.0));
+      return;
+    }
     frames(l.samples, "a pattern", per_frame);
   }
   void operator()(const scene::StrokeLayer& l) { frames(l.samples, "a stroke", kShapeUnits + 4); }

@@ -190,10 +190,15 @@ TEST(PatternLayer, OverlayDrawsItsOwnOptionsOverThePanels) {
     EXPECT_NEAR(std::abs(lines[i]->points[0] - frames[i].p), 0.0, 1e-12) << i;
     EXPECT_NEAR(std::abs(lines[i]->points[1] - frames[i].q()), 0.0, 1e-12) << i;
   }
-  // Independently: at t = 1/2 the magnitude is the harmonic mean of 1.6 and
-  // 0.4, 2 / (1/1.6 + 1/0.4) = 0.64, and p the arithmetic mean (2.5, 0).
+  // Independently (Sec. 2.7): at t = 1/2 the magnitude is the harmonic mean
+  // of 1.6 and 0.4, 2 / (1/1.6 + 1/0.4) = 0.64, and p has turned by half the
+  // twirl's angle about its fixed point f, its radius scaled by the
+  // arithmetic mean of 1 and the twirl's ratio: (1 + 0.25) / 2.
   EXPECT_NEAR(std::abs(lines[4]->points[1] - lines[4]->points[0]), 0.64, 1e-12);
-  EXPECT_NEAR(std::abs(lines[4]->points[0] - Point(2.5, 0.0)), 0.0, 1e-12);
+  const std::complex<double> z = 0.25 * std::polar(1.0, B.w - A.w);  // T_{A,B}: scale and turn
+  const Point f = (B.p - z * A.p) / (1.0 - z);
+  const Point p_half = f + (A.p - f) * std::polar(0.5 * (1.0 + 0.25), 0.5 * (B.w - A.w));
+  EXPECT_NEAR(std::abs(lines[4]->points[0] - p_half), 0.0, 1e-12);
   // The panel's own pattern is unchanged: magnitude WGM, sqrt(1.6 * 0.4) = 0.8.
   const Drawing own = panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
   const auto plain = shapes<Polyline>(own);
@@ -219,10 +224,10 @@ TEST(PatternLayer, OverlayOfAnotherMethodThroughThePanelsKeyframes) {
 }
 
 TEST(PatternLayer, OverlayWhoseMethodCannotTakeTheKeyframesIsTheLayersError) {
-  scene::Panel p = panel(Method::P6, three_keyframes());
+  scene::Panel p = panel(Method::SMA, {{0.0, Arrow{{0, 0}, 1.0, 0.0}}, {1.0, Arrow{{2, 0}, 0.5, 1.0}}});
   p.pointer = "/panels/1";
   scene::PatternLayer overlay;
-  overlay.method = Method::SMA;  // two keyframes, the panel has three
+  overlay.method = Method::P6;  // three keyframes, the panel has two
   p.layers = std::vector<scene::Layer>{scene::KeyframesLayer{}, overlay};
   try {
     panel_drawing(scene_with({}, {p}), p);

@@ -22,6 +22,7 @@
 #include "core/affine_power.hpp"
 #include "core/chains/chain.hpp"
 #include "core/pose_motion.hpp"
+#include "core/steady_morph.hpp"
 #include "core/point_curves.hpp"
 
 #include "core/pitas/registry.hpp"
@@ -300,21 +301,72 @@ TEST(SceneFiles, AppendixC31PrintsTheMeasuredChanges) {
 }
 
 // Fig. D.35: the average of M_ACB and M_BAC is close to M_ABC (e), much closer
-// than M_ACB and M_BAC are to each other (f).
+// than M_ACB and M_BAC are to each other (f). Each panel overlays the four
+// as pattern layers: the panel's own (M_ABC), then three with their options.
 TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig35-neville-variants.json");
-  ASSERT_EQ(scene.panels.size(), 8u);
-  for (std::size_t row : {0u, 4u}) {
-    const auto abc = panel_motion(scene.panels[row]), acb = panel_motion(scene.panels[row + 1]),
-               bac = panel_motion(scene.panels[row + 2]), average = panel_motion(scene.panels[row + 3]);
-    EXPECT_EQ(scene.panels[row].options.permutation, Permutation::ABC);
-    EXPECT_TRUE(scene.panels[row + 3].options.symmetrize);
+  ASSERT_EQ(scene.panels.size(), 2u);
+  for (const Panel& panel : scene.panels) {
+    ASSERT_TRUE(panel.layers.has_value());
+    std::vector<MethodOptions> drawn;
+    for (const Layer& layer : *panel.layers) {
+      if (const auto* pattern = std::get_if<PatternLayer>(&layer)) {
+        EXPECT_FALSE(pattern->method.has_value());
+        drawn.push_back(pattern->options.over(panel.options));
+      }
+    }
+    ASSERT_EQ(drawn.size(), 4u);
+    EXPECT_EQ(panel.method, Method::NeM);
+    EXPECT_EQ(drawn[0].permutation, Permutation::ABC);
+    EXPECT_FALSE(drawn[0].symmetrize);
+    EXPECT_EQ(drawn[1].permutation, Permutation::ACB);
+    EXPECT_EQ(drawn[2].permutation, Permutation::BAC);
+    EXPECT_TRUE(drawn[3].symmetrize);
+    const auto motion = [&](const MethodOptions& options) {
+      return make_motion(panel.method, panel.keyframes, options, panel.chain);
+    };
+    const auto abc = motion(drawn[0]), acb = motion(drawn[1]), bac = motion(drawn[2]), average = motion(drawn[3]);
+    // M_ABC is P9, independently of the variant code.
+    const auto p9 = make_motion(Method::P9, panel.keyframes);
+    EXPECT_LT(largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return p9->at(t); }), 1e-9);
     const double e = largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return average->at(t); });
     const double f = largest_gap([&](double t) { return acb->at(t); }, [&](double t) { return bac->at(t); });
     EXPECT_LT(e, f / 3.0);
-    EXPECT_TRUE(title_says(scene.panels[row + 3], fmt::format("e = {:.2g}, f = {:.2g}", e, f)))
-        << scene.panels[row + 3].title << " vs " << e << ", " << f;
+    EXPECT_TRUE(title_says(panel, fmt::format("e = {:.2g}, f = {:.2g}", e, f))) << panel.title << " vs " << e << ", " << f;
   }
+}
+
+// Fig. D.34: P9's construction. L and R (the right panel's keyframes) are the
+// timed SMAs M(a, A, b, B) and M(b, B, c, C) at t = 1/4 (Eq. 20, by core's
+// steady_morph, not by the motion stage), and the SMA from L to R at 1/4 is
+// P9's D(1/4), as the title prints.
+TEST(SceneFiles, AppendixD34BuildsP9FromTwoSteadyMorphs) {
+  const Scene scene = load_scene(kSourceDir / "scenes/appD-fig34-p9-construction.json");
+  ASSERT_EQ(scene.panels.size(), 3u);
+  const Panel &left = scene.panels[0], &middle = scene.panels[1], &right = scene.panels[2];
+  ASSERT_EQ(left.keyframes.size(), 2u);
+  ASSERT_EQ(middle.keyframes.size(), 2u);
+  ASSERT_EQ(right.keyframes.size(), 2u);
+  const Keyframe &A = left.keyframes[0], &B = left.keyframes[1], &C = middle.keyframes[1];
+  ASSERT_EQ(middle.keyframes[0].arrow.p, B.arrow.p);
+  const double t = A.t + 0.25 * (C.t - A.t);
+  const Arrow L = steady_morph(A.t, A.arrow, B.t, B.arrow, t);
+  const Arrow R = steady_morph(B.t, B.arrow, C.t, C.arrow, t);
+  const auto gap = [](const Arrow& x, const Arrow& y) {
+    return std::max({std::abs(x.p - y.p), std::abs(x.q() - y.q()), std::abs(x.w - y.w)});
+  };
+  EXPECT_LT(gap(right.keyframes[0].arrow, L), 1e-14);
+  EXPECT_LT(gap(right.keyframes[1].arrow, R), 1e-14);
+  EXPECT_EQ(right.keyframes[0].t, A.t);
+  EXPECT_EQ(right.keyframes[1].t, C.t);
+  const std::vector<Keyframe> abc{A, B, C};
+  const Arrow p9 = make_motion(Method::P9, abc)->at(t);
+  const Arrow built = steady_morph(A.t, L, C.t, R, t);
+  EXPECT_LT(gap(built, p9), 1e-12);
+  EXPECT_TRUE(title_says(right, "d < 1e-12")) << right.title;
+  // And not trivially: L, R and D(1/4) are three different arrows.
+  EXPECT_GT(gap(L, p9), 0.1);
+  EXPECT_GT(gap(R, p9), 0.1);
 }
 
 // Fig. D.37: P6 and P9 are close for the tame configuration, not for the
