@@ -9,18 +9,41 @@
 
 namespace pita::render {
 
+namespace {
+
+// A plot's box in world coordinates: `place` maps the unit square onto it,
+// `push` collects the layer's items, and the box is framed at once.
+class PlotBox {
+ public:
+  PlotBox(const scene::PlotLayer& layer, const std::string& pointer)
+      : low_(layer.box.min),
+        width_(layer.box.max.real() - low_.real()),
+        height_(layer.box.max.imag() - low_.imag()),
+        pointer_(pointer) {
+    const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
+    push(-1, Polyline{{place({0, 0}), place({1, 0}), place({1, 1}), place({0, 1})}, true, frame});
+  }
+  Point place(Point unit) const {
+    return Point{low_.real() + unit.real() * width_, low_.imag() + unit.imag() * height_};
+  }
+  void push(int index, Shape shape) { items_.push_back({pointer_, index, std::move(shape)}); }
+  double smaller_side() const { return std::min(width_, height_); }
+  std::vector<Item> items() && { return std::move(items_); }
+
+ private:
+  Point low_;
+  double width_, height_;
+  std::string pointer_;
+  std::vector<Item> items_;
+};
+
+}  // namespace
+
 std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneMotion& motion,
                              const std::vector<double>& marks, const std::string& pointer) {
-  const Point low = layer.box.min, high = layer.box.max;
-  const double width = high.real() - low.real(), height = high.imag() - low.imag();
-  const auto place = [&](Point unit) {
-    return Point{low.real() + unit.real() * width, low.imag() + unit.imag() * height};
-  };
-  std::vector<Item> items;
-  const auto push = [&](int index, Shape shape) { items.push_back({pointer, index, std::move(shape)}); };
-
-  const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
-  push(-1, Polyline{{place({0, 0}), place({1, 0}), place({1, 1}), place({0, 1})}, true, frame});
+  PlotBox box(layer, pointer);
+  const auto place = [&box](Point unit) { return box.place(unit); };
+  const auto push = [&box](int index, Shape shape) { box.push(index, std::move(shape)); };
   push(-1, Polyline{{place({0, 0}), place({1, 1})}, false,
                     LineStyle{Color{0.6, 0.6, 0.6, 1.0}, 0.8, 1.0, {4.0, 3.0}}});
 
@@ -31,7 +54,7 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
 
   if (layer.marks) {
     const std::vector<Point> dots = analysis::distance_time(motion, layer.point, marks);
-    const double radius = 0.015 * std::min(width, height);
+    const double radius = 0.015 * box.smaller_side();
     for (std::size_t i = 0; i < dots.size(); ++i) {
       push(static_cast<int>(i), Circle{place(dots[i]), radius, LineStyle{layer.line.color, 0.8, 1.0, {}},
                                        layer.line.color});
@@ -40,7 +63,7 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
   const Color text{0.2, 0.2, 0.2, 1.0};
   push(-1, Label{"time", place({0.5, -0.12}), 10.0, text});
   push(-1, Label{"distance", place({-0.02, 1.08}), 10.0, text});
-  return items;
+  return std::move(box).items();
 }
 
 std::string area_summary(const std::string& name, const analysis::AreaCurve& curve) {
@@ -58,15 +81,9 @@ std::string area_summary(const std::string& name, const analysis::AreaCurve& cur
 
 std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series,
                                   double first, double last, const std::string& pointer) {
-  const Point low = layer.box.min, high = layer.box.max;
-  const double width = high.real() - low.real(), height = high.imag() - low.imag();
-  const auto place = [&](Point unit) {
-    return Point{low.real() + unit.real() * width, low.imag() + unit.imag() * height};
-  };
-  std::vector<Item> items;
-  const auto push = [&](int index, Shape shape) { items.push_back({pointer, index, std::move(shape)}); };
-  const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
-  push(-1, Polyline{{place({0, 0}), place({1, 0}), place({1, 1}), place({0, 1})}, true, frame});
+  PlotBox box(layer, pointer);
+  const auto place = [&box](Point unit) { return box.place(unit); };
+  const auto push = [&box](int index, Shape shape) { box.push(index, std::move(shape)); };
 
   double smallest = series.front().curve.smallest, largest = series.front().curve.largest;
   for (const AreaSeries& one : series) {
@@ -88,7 +105,7 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
     for (std::size_t i = 0; i < one.curve.times.size(); ++i) curve.push_back(unit(one.curve.times[i], one.curve.areas[i]));
     push(-1, Polyline{std::move(curve), false, line});
     if (layer.marks) {
-      const double radius = 0.012 * std::min(width, height);
+      const double radius = 0.012 * box.smaller_side();
       for (std::size_t i = 0; i < one.marks.times.size(); ++i) {
         push(static_cast<int>(i), Circle{unit(one.marks.times[i], one.marks.areas[i]), radius,
                                          LineStyle{one.color, 0.8, 1.0, {}}, one.color});
@@ -100,7 +117,7 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
   push(-1, Label{"time", place({0.45, -0.08}), 10.0, text});
   push(-1, Label{fmt::format("|det L| = {:.4g}", largest), place({0.01, 1.05}), 10.0, text});
   push(-1, Label{fmt::format("|det L| = {:.4g}", smallest), place({0.01, 0.04}), 10.0, text});
-  return items;
+  return std::move(box).items();
 }
 
 }  // namespace pita::render

@@ -2,6 +2,9 @@
 #pragma once
 
 #include <string>
+#include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 
@@ -39,6 +42,15 @@ std::string failure(Read&& read) {
     return error.pointer() + ": " + error.reason();
   }
   return "(no error)";
+}
+
+// The single layer of a P6 scene whose "layers" is [`layer`] (JSON text), as a T.
+template <typename T>
+T only_layer(const std::string& layer) {
+  const Scene scene = parse_scene(p6_with(R"(, "layers": [)" + layer + "]"), "s.json");
+  EXPECT_EQ(scene.layers.size(), 1U);
+  EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
+  return std::get<T>(scene.layers.at(0));
 }
 
 }  // namespace pita::scene::test

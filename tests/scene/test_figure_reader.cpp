@@ -15,19 +15,11 @@
 namespace pita::scene {
 namespace {
 
+using test::only_layer;
 using test::p6_with;
 using test::p6_with_middle;
 
 Scene p6(const std::string& extra) { return parse_scene(p6_with(extra), "s.json"); }
-
-// The only layer of a P6 scene whose "layers" is [layer].
-template <typename T>
-T only_layer(const std::string& layer) {
-  const Scene scene = p6(R"(, "layers": [)" + layer + "]");
-  EXPECT_EQ(scene.layers.size(), 1U);
-  EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
-  return std::get<T>(scene.layers.at(0));
-}
 
 Color rgb(double r, double g, double b, double a = 1.0) { return Color{r, g, b, a}; }
 

@@ -14,15 +14,9 @@ namespace pita::scene {
 namespace {
 
 using test::error_of;
+using test::only_layer;
 using test::p6_with;
 
-template <typename T>
-T only_layer(const std::string& layer) {
-  const Scene scene = parse_scene(p6_with(R"(, "layers": [)" + layer + "]"), "s.json");
-  EXPECT_EQ(scene.layers.size(), 1U);
-  EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
-  return std::get<T>(scene.layers.at(0));
-}
 
 TEST(GuessesLayerReader, NamesAndColoursByPositionByDefault) {
   const GuessesLayer layer = only_layer<GuessesLayer>(
