@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 
 #include "core/carrier.hpp"
 #include "core/methods.hpp"
@@ -24,11 +25,16 @@ scene::Panel with_method(scene::Panel panel, Method method) {
 double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method other, double t) {
   const Arrow mine = motion::build_motion(scene, panel).arrow_at(t);
   const Arrow theirs = motion::build_motion(scene, with_method(panel, other)).arrow_at(t);
+  double largest = 0.0;
+  for (const Keyframe& k : panel.keyframes) largest = std::max(largest, k.arrow.m);
+  const double floor = kAngleVectorFloor * largest;
+  if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   return std::arg(theirs.vector() / mine.vector());
 }
 
 double handle_shift(const scene::Scene& scene, const scene::Panel& panel) {
-  if (panel.shapes.empty()) return 0.0;
   scene::Panel reference = scene::scene_panel(scene);
   reference.method = panel.method;
   reference.method_name = panel.method_name;

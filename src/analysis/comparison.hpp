@@ -18,17 +18,25 @@ namespace pita::analysis {
 // the patterns the figures draw (9 to 17 frames), cheap (two motions).
 inline constexpr int kHandleShiftSamples = 129;
 
+// Below this fraction of the largest keyframe magnitude a frame vector has no
+// direction to speak of: rounding alone turns it (P1 passes through a zero
+// vector at t = (1 - 1/sqrt 2)/2 for some keyframes, docs/paper-notes.md N66).
+inline constexpr double kAngleVectorFloor = 1e-12;
+
 // The signed angle arg(D_M(t).w / D(t).w) in (-pi, pi] from the panel's
 // frame vector at scene time t to that of `other` (the panel's keyframes,
-// options and timing with `other` as the method). Throws motion::NoMotion.
+// options and timing with `other` as the method); NaN when either vector is
+// shorter than kAngleVectorFloor times the largest keyframe magnitude (the
+// angle is undefined). Throws motion::NoMotion.
 double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method other, double t);
 
 // max over kHandleShiftSamples times of [first knot, last knot] and over the
 // points of the panel's shapes x of |S(t) x - S0(t) x|, world units, where
 // S(t) takes the panel's handle onto the panel's D(t) and S0(t) takes the
 // scene's handle onto D0(t), the panel's method (and options, timing) through
-// the scene's keyframes (PITA Sec. 4.5; core/carrier.hpp). 0 when the panel
-// has no shapes. Throws motion::NoMotion.
+// the scene's keyframes (PITA Sec. 4.5; core/carrier.hpp). The panel must
+// have shapes (the caller refuses a panel without: there is nothing to
+// carry). Throws motion::NoMotion.
 double handle_shift(const scene::Scene& scene, const scene::Panel& panel);
 
 }  // namespace pita::analysis

@@ -7,9 +7,12 @@ namespace pita::analysis {
 
 namespace {
 
-// Steps of the bisection that ends a run of the envelope where s leaves
-// [0, 1]: 60 halvings reach the time's rounding for any span.
-constexpr int kCrossingSteps = 60;
+// How close to 0 or 1 the s found at the end of a bisection must be to be
+// snapped to that bound: s is continuous there (it is on the edge on one
+// side, and a pole lies beyond a crossing), so after kCrossingSteps halvings
+// it is within rounding of the bound; otherwise s left the edge where the
+// grazing point stops being defined, and the run ends at that s.
+constexpr double kSnapToBound = 1e-6;
 
 Eigen::Vector2d edge_point(const Edge& edge, double s) { return edge.from + s * (edge.to - edge.from); }
 
@@ -23,18 +26,24 @@ Eigen::Vector2d grazing_point_at(const PoseTrack& motion, const Edge& edge, doub
   return apply(motion.pose(t), edge_point(edge, s));
 }
 
-// The time between `inside` (s on the edge) and `outside` (s defined, off the
-// edge) where s crosses the bound it leaves by, with that bound's point.
-std::optional<Eigen::Vector2d> crossing(const PoseTrack& motion, const Edge& edge, double inside, double outside,
-                                        double s_outside) {
-  const double bound = s_outside > 1.0 ? 1.0 : 0.0;
+// Where the run leaves the edge between `inside` (s on the edge) and
+// `outside` (s off it, or undefined): bisection on on_edge, then the grazing
+// point at the last time inside.
+Eigen::Vector2d crossing(const PoseTrack& motion, const Edge& edge, double inside, double outside, double s_inside) {
   for (int step = 0; step < kCrossingSteps; ++step) {
     const double middle = 0.5 * (inside + outside);
     const std::optional<double> s = grazing_at(motion, edge, middle);
-    if (!s) return std::nullopt;  // no grazing point on the way: end at the last sample
-    ((*s - bound) * (s_outside - bound) > 0.0 ? outside : inside) = middle;
+    if (on_edge(s)) {
+      inside = middle;
+      s_inside = *s;
+    } else {
+      outside = middle;
+    }
   }
-  return grazing_point_at(motion, edge, inside, bound);
+  for (const double bound : {0.0, 1.0}) {
+    if (std::abs(s_inside - bound) < kSnapToBound) s_inside = bound;
+  }
+  return grazing_point_at(motion, edge, inside, s_inside);
 }
 
 }  // namespace
@@ -67,21 +76,20 @@ std::vector<std::vector<Eigen::Vector2d>> envelope(const PoseTrack& motion, cons
   std::vector<std::vector<Eigen::Vector2d>> runs;
   std::vector<Eigen::Vector2d> run;
   const std::size_t n = trace.times.size();
+  int crossings = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!on_edge(trace.s[i])) continue;
-    // Entering: from a defined s off the edge, start at the crossing.
-    if (run.empty() && i > 0 && trace.s[i - 1]) {
-      if (auto start = crossing(motion, edge, trace.times[i], trace.times[i - 1], *trace.s[i - 1])) {
-        run.push_back(*start);
-      }
+    // Entering: from off the edge, start where the run enters.
+    if (run.empty() && i > 0 && crossings < kMaxEnvelopeCrossings) {
+      run.push_back(crossing(motion, edge, trace.times[i], trace.times[i - 1], *trace.s[i]));
+      ++crossings;
     }
     run.push_back(grazing_point_at(motion, edge, trace.times[i], *trace.s[i]));
     const bool last = i + 1 == n || !on_edge(trace.s[i + 1]);
     if (!last) continue;
-    if (i + 1 < n && trace.s[i + 1]) {
-      if (auto end = crossing(motion, edge, trace.times[i], trace.times[i + 1], *trace.s[i + 1])) {
-        run.push_back(*end);
-      }
+    if (i + 1 < n && crossings < kMaxEnvelopeCrossings) {
+      run.push_back(crossing(motion, edge, trace.times[i], trace.times[i + 1], *trace.s[i]));
+      ++crossings;
     }
     runs.push_back(std::move(run));
     run.clear();

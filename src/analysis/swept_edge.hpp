@@ -47,10 +47,21 @@ struct GrazingRange {
 };
 GrazingRange grazing_range(const GrazingTrace& trace);
 
+// Steps of the bisection that ends a run of the envelope between two trace
+// times: 60 halvings reach the time's rounding for any span.
+inline constexpr int kCrossingSteps = 60;
+// At most this many run ends are refined by bisection (the others end at
+// their last sample): the work stays bounded for any trace (render/budget.cpp
+// counts kMaxEnvelopeCrossings x kCrossingSteps evaluations).
+inline constexpr int kMaxEnvelopeCrossings = 64;
+
 // The envelope: the grazing points A(t) x(s(t)) where s(t) is in [0, 1] (on
-// the edge), one polyline per run of the trace's times; a run ending where
-// s(t) leaves [0, 1] between two samples is extended to the crossing time
-// (bisection, 60 steps). World coordinates.
+// the edge), one polyline per run of the trace's times. A run that leaves the
+// edge between two samples is extended to where it leaves, found by
+// bisection on "s is defined and on the edge" (so a pole of s, where the
+// denominator of Eq. 8 changes sign, is never taken for a crossing: s passes
+// 0 or 1 continuously before it), the point's s snapped to the bound it
+// reaches (docs/paper-notes.md N67). World coordinates.
 std::vector<std::vector<Eigen::Vector2d>> envelope(const PoseTrack& motion, const Edge& edge,
                                                    const GrazingTrace& trace);
 

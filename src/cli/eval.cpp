@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <span>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -132,6 +133,24 @@ std::string chain_list() {
   return list;
 }
 
+// "\"start\" (default) | \"midpoint\"": an option's values, the first the default.
+std::string choices(std::span<const std::string_view> names) {
+  std::string list;
+  for (const std::string_view name : names) {
+    list += fmt::format("{}\"{}\"{}", list.empty() ? "" : " | ", name, list.empty() ? " (default)" : "");
+  }
+  return list;
+}
+
+// "La-T1, La-T2, Ne-M": the methods that read an option themselves.
+std::string readers(MethodOption option) {
+  std::string list;
+  for (const MethodInfo& about : all_methods()) {
+    if (reads_option(about.method, option, false)) list += fmt::format("{}{}", list.empty() ? "" : ", ", about.id);
+  }
+  return list;
+}
+
 std::string eval_footer() {
   return R"(
 Scene format (JSON; schema/scene.schema.json describes every field):
@@ -164,12 +183,14 @@ Scene format (JSON; schema/scene.schema.json describes every field):
                {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}
                E: )" + ease_names() + R"(
                frames still report the scene time t they were asked for
-  options      anchor (P2): "start" | "midpoint"; path_mean, magnitude_mean (SMA, P9):
-               "arithmetic" | "geometric" | "harmonic"; knots: "increasing" (default) |
-               "as-given" (three keyframes handed to the method in the order given,
-               knots distinct in any order: order-independence, Sec. 4); permutation
-               (La-T1, La-T2, Ne-M): "ABC" (default) | "ACB" | "BAC" | "BCA" | "CAB" | "CBA";
-               symmetrize (La-T1, La-T2, Ne-M): true averages with the time reverse
+  options      anchor ()" + readers(kAnchorOption) + "): " + choices(kAnchorNames) + R"(;
+               path_mean, magnitude_mean ()" + readers(kPathMeanOption) + R"(, and every chain's
+               steady morphs): )" + choices(kMeanNames) + R"(;
+               knots (every three-keyframe method): )" + choices(kKnotOrderNames) + R"(
+               ("as-given": three keyframes handed to the method in the order given,
+               knots distinct in any order: order-independence, Sec. 4);
+               permutation ()" + readers(kPermutationOption) + R"(): )" + choices(kPermutationNames) + R"(;
+               symmetrize ()" + readers(kSymmetrizeOption) + R"(): true averages with the time reverse
 
 Methods:
 )" + methods_table(MotionKind::arrows) +

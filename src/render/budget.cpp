@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "analysis/measure.hpp"
+#include "analysis/swept_edge.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
@@ -162,10 +163,12 @@ class LayerCost {
   }
   void operator()(const scene::SweptLayer& l) {
     // The copies of the edge; the envelope and the paths of the ends and of
-    // the grazing points, each a pose and a velocity per trace time.
+    // the grazing points, each a pose and a velocity per trace time, and the
+    // bisections that end the envelope's runs (analysis/swept_edge.hpp).
     frames(l.samples, "copies of a swept edge", kShapeUnits + 2);
     add(layer_ + "/trace_samples", fmt::format("{} times of a swept edge's envelope and paths", l.trace_samples),
-        static_cast<double>(l.trace_samples) * (4 + l.instants) + (l.instants + 4) * kShapeUnits);
+        static_cast<double>(l.trace_samples) * (4 + l.instants) + (l.instants + 4) * kShapeUnits +
+            static_cast<double>(analysis::kMaxEnvelopeCrossings) * analysis::kCrossingSteps);
   }
   void operator()(const scene::ExistenceLayer& l) {
     // Each cell is one classification by EAR (about 0.1 us), drawn in runs.

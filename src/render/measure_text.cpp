@@ -20,76 +20,82 @@ std::vector<const analysis::ParameterReaction*> parameters(const analysis::Motio
   return found;
 }
 
-std::string line(const analysis::MotionMeasures& m, const std::string& name) {
-  const bool arrows = m.kind == "arrows";
-  if (name == "discrepancy-max") {
-    if (m.discrepancy.empty()) return "E max: -";
-    std::string values;
-    for (const analysis::DiscrepancyStats& d : m.discrepancy) {
-      values += fmt::format("{}{} {}", values.empty() ? "" : ", ", d.predictor, d.frames ? number(d.max) : "-");
-    }
-    return "E max: " + values;
-  }
-  if (name == "path-length") {
-    if (!m.path_p) return "length: -";
-    return m.path_q ? fmt::format("length p {}, q {}", number(m.path_p->length), number(m.path_q->length))
-                    : fmt::format("length {}", number(m.path_p->length));
-  }
-  if (name == "turning") {
-    if (!m.path_p) return "turning: -";
-    return m.path_q ? fmt::format("turning p {}, q {} rad", number(m.path_p->turning), number(m.path_q->turning))
-                    : fmt::format("turning {} rad", number(m.path_p->turning));
-  }
-  if (name == "winding-range") {
-    if (!m.winding_min) return "winding: -";
-    return fmt::format("winding [{}, {}]", number(*m.winding_min), number(*m.winding_max));
-  }
-  if (name == "overreaction") {
-    if (m.most_sensitive < 0) return "overreaction: -";
-    const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
-    return fmt::format("most sensitive: {} (gain {})", best.name, number(best.gain));
-  }
-  if (name == "pop") {
-    if (!arrows) return "pop: -";
-    if (m.largest_jump < 0) {
-      for (const auto& p : m.parameters) {
-        if (!p.defined) return fmt::format("pop: {} leaves the domain", p.name);
+std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& name) {
+  using scene::MeasureKind;
+  switch (name.kind) {
+    case MeasureKind::discrepancy_max: {
+      if (m.discrepancy.empty()) return "E max: -";
+      std::string values;
+      for (const analysis::DiscrepancyStats& d : m.discrepancy) {
+        values += fmt::format("{}{} {}", values.empty() ? "" : ", ", d.predictor, d.frames ? number(d.max) : "-");
       }
-      return "pop: -";
+      return "E max: " + values;
     }
-    const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
-    return m.pops ? fmt::format("pop: {} jumps {}", worst.name, number(worst.jump))
-                  : fmt::format("no pop (largest jump {})", number(worst.jump));
-  }
-  if (name == "ara") return m.ara ? fmt::format("ARA {}", number(*m.ara)) : "ARA: -";
-  if (name == "area") {
-    if (!m.area) return "area: -";
-    return m.area->monotone ? std::string("area monotone")
-                            : fmt::format("area not monotone (dip {} at t = {})", number(m.area->excursion),
-                                          number(m.area->t_of_excursion));
-  }
-  const std::string kind = name.substr(0, 4);  // "gain", "jump", "turn"
-  if (name.size() > 5 && name[4] == ':' && (kind == "gain" || kind == "jump" || kind == "turn")) {
-    const std::string parameter = name.substr(5);
-    const auto found = parameters(m, parameter);
-    if (found.empty()) return fmt::format("{} {}: -", kind, parameter);
-    double value = 0.0;
-    bool pop = false;
-    for (const auto* p : found) {
-      value = std::max(value, kind == "gain" ? p->gain : kind == "jump" ? p->jump : p->turn);
-      pop = pop || p->pop;
+    case MeasureKind::path_length:
+      if (!m.path_p) return "length: -";
+      return m.path_q ? fmt::format("length p {}, q {}", number(m.path_p->length), number(m.path_q->length))
+                      : fmt::format("length {}", number(m.path_p->length));
+    case MeasureKind::turning:
+      if (!m.path_p) return "turning: -";
+      return m.path_q ? fmt::format("turning p {}, q {} rad", number(m.path_p->turning), number(m.path_q->turning))
+                      : fmt::format("turning {} rad", number(m.path_p->turning));
+    case MeasureKind::winding_range:
+      if (!m.winding_min) return "winding: -";
+      return fmt::format("winding [{}, {}]", number(*m.winding_min), number(*m.winding_max));
+    case MeasureKind::overreaction: {
+      if (m.most_sensitive < 0) return "overreaction: -";
+      const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
+      return fmt::format("most sensitive: {} (gain {})", best.name, number(best.gain));
     }
-    return fmt::format("{} {}: {}{}{}", kind, parameter, number(value), kind == "turn" ? " rad" : "",
-                       pop ? " (pop)" : "");
+    case MeasureKind::pop: {
+      if (m.kind != "arrows") return "pop: -";
+      if (m.largest_jump < 0) {
+        for (const auto& p : m.parameters) {
+          if (!p.defined) return fmt::format("pop: {} leaves the domain", p.name);
+        }
+        return "pop: -";
+      }
+      const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
+      return m.pops ? fmt::format("pop: {} jumps {}", worst.name, number(worst.jump))
+                    : fmt::format("no pop (largest jump {})", number(worst.jump));
+    }
+    case MeasureKind::ara:
+      return m.ara ? fmt::format("ARA {}", number(*m.ara)) : "ARA: -";
+    case MeasureKind::area:
+      if (!m.area) return "area: -";
+      return m.area->monotone ? std::string("area monotone")
+                              : fmt::format("area not monotone (dip {} at t = {})", number(m.area->excursion),
+                                            number(m.area->t_of_excursion));
+    case MeasureKind::gain:
+    case MeasureKind::turn:
+    case MeasureKind::jump: {
+      const std::string_view kind = name.kind == MeasureKind::gain ? "gain" : name.kind == MeasureKind::turn ? "turn" : "jump";
+      const auto found = parameters(m, name.parameter);
+      if (found.empty()) return fmt::format("{} {}: -", kind, name.parameter);
+      double value = 0.0;
+      bool pop = false;
+      for (const auto* p : found) {
+        value = std::max(value, name.kind == MeasureKind::gain ? p->gain
+                                : name.kind == MeasureKind::turn ? p->turn
+                                                                 : p->jump);
+        pop = pop || p->pop;
+      }
+      return fmt::format("{} {}: {}{}{}", kind, name.parameter, number(value),
+                         name.kind == MeasureKind::turn ? " rad" : "", pop ? " (pop)" : "");
+    }
+    case MeasureKind::handle_shift:
+    case MeasureKind::angle:
+      break;  // compared with another motion by the panel's drawing, not measured here
   }
-  return name + ": -";
+  return name.text + ": -";
 }
 
 }  // namespace
 
-std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures, std::span<const std::string> show) {
+std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures,
+                                       std::span<const scene::MeasureName> show) {
   std::vector<std::string> lines;
-  for (const std::string& name : show) lines.push_back(line(measures, name));
+  for (const scene::MeasureName& name : show) lines.push_back(line(measures, name));
   return lines;
 }
 

@@ -16,8 +16,11 @@ namespace pita::render {
 //   "pop: C.p.y jumps 0.83 (x extent)"  or  "pop: none (largest jump 2.1e-09)"
 //   "gain B.q: 1.36"                    (the larger of B.q.x and B.q.y)
 //   "turn B.q: 12.5 rad"                (orientation change per unit tweak)
-// A name that does not apply to the motion (ARA of arrows) gives "ara: -".
-std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures, std::span<const std::string> show);
+// A number the motion lacks gives "ARA: -" (the reader refuses names the
+// scene's kind does not measure, scene/measure_name.hpp); "handle-shift" and
+// "angle:M@t" compare with another motion and are the panel drawing's.
+std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures,
+                                       std::span<const scene::MeasureName> show);
 
 // Adds the lines to the drawing as the layer places them: one label (lines
 // joined) at the layer's world point, else a text-only legend in its corner.

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/arrow_distance.hpp"
 #include "analysis/audit.hpp"
@@ -134,6 +135,19 @@ class PanelBuilder {
       own.method_name = std::string(info(*layer.method).id);
     }
     own.options = layer.options.over(panel_.options);
+    // An option the layer's method does not read would change nothing: refused.
+    const bool chained =
+        own.chain.has_value() || own.keyframes.size() > static_cast<std::size_t>(info(own.method).keyframe_count);
+    for (const MethodOptionKey& key : kMethodOptionKeys) {
+      if ((layer.options.given & key.option) == 0U || reads_option(own.method, key.option, chained)) continue;
+      std::vector<std::string> readers;
+      for (const MethodInfo& method : all_methods()) {
+        if (reads_option(method.method, key.option, false)) readers.emplace_back(method.id);
+      }
+      fail(layer_ + "/options/" + std::string(key.name),
+           fmt::format("{} does not read \"{}\", so it would change nothing here; {} read{} it", method_name(own.method),
+                       key.name, fmt::join(readers, ", "), readers.size() == 1 ? "s" : ""));
+    }
     try {
       return motion::build_motion(scene_, own);
     } catch (const motion::NoMotion& error) {
@@ -408,19 +422,25 @@ class PanelBuilder {
     // "angle:M@t" and "handle-shift" compare with another motion
     // (analysis/comparison.hpp); the others are `pita measure`'s.
     std::vector<std::string> lines(layer.show.size());
-    std::vector<std::string> others;
+    std::vector<scene::MeasureName> others;
     for (std::size_t i = 0; i < layer.show.size(); ++i) {
-      const std::string& name = layer.show[i];
+      const scene::MeasureName& name = layer.show[i];
+      const std::string at = layer_ + "/show/" + std::to_string(i);
       try {
-        if (name == "handle-shift") {
+        if (name.kind == scene::MeasureKind::handle_shift) {
+          if (panel_.shapes.empty()) {
+            fail(at, "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
+                     "give the scene or the panel \"shapes\" (README \"Shapes\")");
+          }
           lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(scene_, panel_)));
-        } else if (name.starts_with("angle:")) {
-          const std::size_t at = name.find('@');
-          const MethodEntry* other = find_method_entry(name.substr(6, at - 6), MotionKind::arrows);
-          const double t = std::stod(name.substr(at + 1));
-          const double angle = analysis::vector_angle(scene_, panel_, other->method, t);
-          lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", panel_.method_name, other->id,
-                                 name.substr(at + 1), rounding_or_value(angle));
+        } else if (name.kind == scene::MeasureKind::angle) {
+          const double angle = analysis::vector_angle(scene_, panel_, name.method, name.t);
+          if (!std::isfinite(angle)) {
+            fail(at, fmt::format("the angle at t = {} is undefined: the frame vector of {} or of {} vanishes there",
+                                 name.t, panel_.method_name, entry_of(name.method).id));
+          }
+          lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", panel_.method_name, entry_of(name.method).id,
+                                 name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
         } else {
           others.push_back(name);
         }

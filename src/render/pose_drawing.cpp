@@ -170,6 +170,13 @@ class PoseBuilder {
       // (D(t) o D(t0)^-1)^k o D(t0), by k - 1 compositions.
       const Affine2 step = compose(pose, inverse(first));
       for (int k = 1; k < layer.power; ++k) pose = compose(step, pose);
+      // The power multiplies the step: a large one can overflow where the
+      // pose itself did not (no NaN reaches a figure).
+      if (!pose.L.allFinite() || !pose.b.allFinite()) {
+        fail(fmt::format("method {}: the pose at t = {} to the power {} is not finite (it overflows); use a "
+                         "smaller \"power\" or times nearer the first pose",
+                         about.id, ts[i], layer.power));
+      }
       const double fade = selection_ != nullptr ? trail_fade(i, ts.size()) : 1.0;
       for (Shape& shape : carried_shapes(panel_.shapes, pose, style, scene_.canvas.y_up, fade)) {
         push(static_cast<int>(i), std::move(shape));

@@ -16,6 +16,7 @@
 #include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
 #include "scene/limits.hpp"
+#include "scene/measure_name.hpp"
 #include "scene/timing.hpp"
 
 namespace pita::scene {
@@ -77,21 +78,11 @@ struct TimeRange {
 // A layer's "options": the panel's method options it changes, each left
 // unset keeps the panel's (docs/paper-notes.md N57).
 struct MethodOptionsPatch {
-  std::optional<Anchor> anchor;
-  std::optional<MeanKind> path_mean;
-  std::optional<MeanKind> magnitude_mean;
-  std::optional<Permutation> permutation;
-  std::optional<bool> symmetrize;
+  MethodOptions values;  // the options given (the others are not read)
+  unsigned given = 0;    // their MethodOption bits (core/pitas/method_options.hpp)
 
-  bool empty() const { return !anchor && !path_mean && !magnitude_mean && !permutation && !symmetrize; }
-  MethodOptions over(MethodOptions base) const {
-    if (anchor) base.anchor = *anchor;
-    if (path_mean) base.path_mean = *path_mean;
-    if (magnitude_mean) base.magnitude_mean = *magnitude_mean;
-    if (permutation) base.permutation = *permutation;
-    if (symmetrize) base.symmetrize = *symmetrize;
-    return base;
-  }
+  bool empty() const { return given == 0; }
+  MethodOptions over(const MethodOptions& base) const { return with_options(base, values, given); }
 };
 
 struct PatternLayer {  // "pattern": the frames D(t_i) as segments
@@ -175,8 +166,10 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
 // With "of": "area" (pose scenes; SAM paper Fig. 9, docs/paper-notes.md N48)
 // it draws instead the area of the moving shapes, |det L(t)| times their
 // reference area, over time, for each of `methods` (default the panel's) on
-// the panel's poses, divided by the largest area met, with each curve's
-// monotonicity printed under the box (analysis::area_stats, as `pita measure`).
+// the panel's poses, scaled so that the smallest and the largest area met by
+// any curve span the box's height (a constant area sits at mid-height), with
+// each curve's summary printed under the box: monotone and end/start, or its
+// interior extremum (render/plot.cpp).
 enum class PlotOf { distance, area };
 struct PlotLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn
@@ -295,15 +288,17 @@ struct PropertyTableLayer {
 };
 inline constexpr int kMaxTableConfigs = 2000;
 
+// The most names a "measures" layer shows (the schema's maxItems).
+inline constexpr std::size_t kMaxMeasures = 17;
+
 // "measures": the numbers of `pita measure` (analysis/measure.hpp) for the
 // panel's motion, one line per name of `show`, at a point of the plane or in
 // a corner of the panel.
 struct MeasuresLayer {
-  // Names (README "pita measure"): "discrepancy-max", "path-length",
-  // "turning", "winding-range", "overreaction", "pop", "ara", "area", or
-  // "gain:K.x" / "turn:K.x" / "jump:K.x" for one keyframe parameter ("gain:B.q" takes
-  // the larger of B.q.x and B.q.y). Checked by the reader.
-  std::vector<std::string> show{"overreaction", "pop"};
+  // The names (scene/measure_name.hpp, the one table; README "Layers"), parsed
+  // and checked against the scene's kind by the reader. Default:
+  // default_measures() of the scene's kind.
+  std::vector<MeasureName> show;
   std::optional<Point> at;                              // world point; nullopt: `corner`
   LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
   double size = 11.0;                                   // pixels

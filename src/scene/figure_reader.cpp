@@ -50,11 +50,6 @@ constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
 constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
-// The names a "measures" layer shows (README "pita measure"), besides
-// "gain:K.x", "turn:K.x", "jump:K.x" and "angle:M@t" (analysis/comparison.hpp).
-constexpr std::array<std::string_view, 9> kMeasureNames = {
-    "discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "ara", "area",
-    "handle-shift"};
 
 constexpr std::array<std::string_view, 8> kGuessesFields = {
     "type", "guesses", "show", "width", "frame_color", "at", "size", "color"};
@@ -212,20 +207,19 @@ void read_figure_samples(const Fields& fields, std::optional<int>& out) {
 
 // A layer's "options": those of the panel's method options a layer may change.
 // The knot order is not one of them: it decides how the panel's keyframes
-// were read (N41).
+// were read (N41). Whether the layer's method reads each is checked where
+// the layer is drawn (it depends on the panel's keyframes and chain).
 MethodOptionsPatch read_options_patch(const Fields& fields, const Json& value) {
   const std::string pointer = fields.at("options");
   if (value.is_object() && JsonReader::member(value, "knots") != nullptr) {
     fields.reader().fail(pointer + "/knots", "the knot order belongs to the panel's keyframes; give it in the "
                                              "panel's or the scene's \"options\"");
   }
-  const MethodOptions read = fields.reader().options(value, pointer, MethodOptions{});
   MethodOptionsPatch patch;
-  if (JsonReader::member(value, "anchor") != nullptr) patch.anchor = read.anchor;
-  if (JsonReader::member(value, "path_mean") != nullptr) patch.path_mean = read.path_mean;
-  if (JsonReader::member(value, "magnitude_mean") != nullptr) patch.magnitude_mean = read.magnitude_mean;
-  if (JsonReader::member(value, "permutation") != nullptr) patch.permutation = read.permutation;
-  if (JsonReader::member(value, "symmetrize") != nullptr) patch.symmetrize = read.symmetrize;
+  patch.values = fields.reader().options(value, pointer, MethodOptions{});
+  for (const MethodOptionKey& key : kMethodOptionKeys) {
+    if (JsonReader::member(value, std::string(key.name)) != nullptr) patch.given |= key.option;
+  }
   return patch;
 }
 
@@ -239,6 +233,13 @@ PatternLayer read_pattern(const Fields& fields) {
   read_range(fields, layer.range);
   if (const Json* times = fields.get("times")) {
     const std::string pointer = fields.at("times");
+    for (const std::string_view other : {std::string_view("samples"), std::string_view("range")}) {
+      if (fields.get(other) != nullptr) {
+        fields.reader().fail(pointer, fmt::format("draws the frames at exactly these times, and \"{}\" chooses "
+                                                  "times too: give \"times\" or \"samples\" and \"range\"",
+                                                  other));
+      }
+    }
     if (!times->is_array() || times->empty() || times->size() > static_cast<std::size_t>(kMaxFigureSamples)) {
       fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples,
                                                 value_text(*times)));
@@ -253,6 +254,10 @@ PatternLayer read_pattern(const Fields& fields) {
     layer.label = fields.reader().text(*label, fields.at("label"), kMaxTextLength);
   }
   fields.boolean("dots", layer.dots);
+  if (layer.dots && layer.heads) {
+    fields.reader().fail(fields.at("dots"), "draws each frame as the dot of its point p, and \"heads\" draws it "
+                                            "as an arrow: choose one");
+  }
   return layer;
 }
 
@@ -367,46 +372,6 @@ LegendLayer read_legend(const Fields& fields) {
   return layer;
 }
 
-// "gain:B.q", "jump:C.p.y": a keyframe (A..Z or K27..) and one of its
-// parameters p, q (optionally .x or .y), m, w, t.
-bool is_parameter_measure(std::string_view name) {
-  for (const std::string_view prefix : {std::string_view("gain:"), std::string_view("jump:"), std::string_view("turn:")}) {
-    if (!name.starts_with(prefix)) continue;
-    std::string_view rest = name.substr(prefix.size());
-    std::size_t key = 0;
-    if (rest.size() > 1 && rest[0] == 'K' && rest[1] >= '0' && rest[1] <= '9') {
-      key = 1;
-      while (key < rest.size() && rest[key] >= '0' && rest[key] <= '9') ++key;
-    } else if (!rest.empty() && rest[0] >= 'A' && rest[0] <= 'Z') {
-      key = 1;
-    }
-    if (key == 0) return false;
-    rest.remove_prefix(key);
-    for (const std::string_view parameter : {".p", ".q", ".p.x", ".p.y", ".q.x", ".q.y", ".m", ".w", ".t"}) {
-      if (rest == parameter) return true;
-    }
-  }
-  return false;
-}
-
-// "angle:Pa-Po@0.25": an arrow method (registry name) and a finite time.
-bool is_angle_measure(std::string_view name) {
-  if (!name.starts_with("angle:")) return false;
-  const std::size_t at = name.find('@');
-  if (at == std::string_view::npos) return false;
-  const MethodEntry* entry = find_method_entry(name.substr(6, at - 6), MotionKind::arrows);
-  if (entry == nullptr) return false;
-  const std::string time(name.substr(at + 1));
-  if (time.empty()) return false;
-  std::size_t used = 0;
-  try {
-    const double t = std::stod(time, &used);
-    return used == time.size() && std::isfinite(t);
-  } catch (const std::exception&) {
-    return false;
-  }
-}
-
 // "at": a world point [x, y], or a corner of the panel ("top-left", ...).
 void read_text_place(const Fields& fields, std::optional<Point>& at, LegendLayer::Corner& corner) {
   const Json* where = fields.get("at");
@@ -488,30 +453,25 @@ CompareLayer read_compare(const Fields& fields) {
   return layer;
 }
 
-MeasuresLayer read_measures(const Fields& fields) {
+// "measures"; `poses`: in a pose scene (the names it may show differ,
+// scene/measure_name.hpp).
+MeasuresLayer read_measures(const Fields& fields, bool poses) {
   MeasuresLayer layer;
   const JsonReader& reader = fields.reader();
+  const MeasureScene scene = poses ? MeasureScene::poses : MeasureScene::arrows;
+  layer.show = default_measures(scene);
   if (const Json* show = fields.get("show")) {
     const std::string at = fields.at("show");
-    if (!show->is_array() || show->empty() || show->size() > kMeasureNames.size() + 8) {
-      reader.fail(at, fmt::format("must be a list of 1 to {} measure names (got {})", kMeasureNames.size() + 8,
+    if (!show->is_array() || show->empty() || show->size() > kMaxMeasures) {
+      reader.fail(at, fmt::format("must be a list of 1 to {} measure names (got {})", kMaxMeasures,
                                   value_text(*show)));
     }
     layer.show.clear();
     for (std::size_t i = 0; i < show->size(); ++i) {
-      const std::string item_at = at + "/" + std::to_string(i);
-      const std::string name = reader.string((*show)[i], item_at);
-      const bool known = std::find(kMeasureNames.begin(), kMeasureNames.end(), name) != kMeasureNames.end();
-      if (!known && !is_parameter_measure(name) && !is_angle_measure(name)) {
-        const std::vector<std::string> close = closest_names(name, kMeasureNames);
-        reader.fail(item_at, close.empty()
-                                 ? fmt::format("unknown measure \"{}\"; measures: {}, or \"gain:K.x\", "
-                                               "\"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, p.x, "
-                                               "p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method",
-                                               name, quoted_choices(kMeasureNames))
-                                 : fmt::format("unknown measure \"{}\"{}", name, did_you_mean(close)));
-      }
-      layer.show.push_back(name);
+      const std::string item_at = element_pointer(at, i);
+      auto parsed = parse_measure(reader.string((*show)[i], item_at), scene);
+      if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(item_at, *reason);
+      layer.show.push_back(std::move(std::get<MeasureName>(parsed)));
     }
   }
   read_text_place(fields, layer.at, layer.corner);
@@ -1013,7 +973,7 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f, false); }},
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); }},
     {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); }},
-    {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f); }},
+    {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f, false); }},
     {"vectors", kVectorsFields, [](const Fields& f) -> Layer { return read_vectors(f); }},
     {"fixed-points", kFixedPointsFields, [](const Fields& f) -> Layer { return read_fixed_points(f); }},
     {"guesses", kGuessesFields, [](const Fields& f) -> Layer { return read_guesses(f); }},
@@ -1031,7 +991,7 @@ constexpr std::array<LayerKind<PoseLayer>, 13> kPoseLayerKinds{{
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
-    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f); }},
+    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f, true); }},
     {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }},
     {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); }},
     {"field", kFieldFields, [](const Fields& f) -> PoseLayer { return read_field(f); }},

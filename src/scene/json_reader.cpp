@@ -18,19 +18,8 @@ namespace {
 constexpr std::array<std::string_view, 6> kKeyframeFields = {"t", "p", "m", "w", "q", "turns"};
 constexpr std::array<std::string_view, 3> kMovingKeyframeFields = {"t", "from", "to"};
 constexpr std::array<std::string_view, 5> kArrowFields = {"p", "m", "w", "q", "turns"};
-constexpr std::array<std::string_view, 6> kOptionFields = {"anchor", "path_mean", "magnitude_mean",
-                                                           "knots", "permutation", "symmetrize"};
-
-constexpr std::array<std::string_view, 2> kAnchorNames = {"start", "midpoint"};
-constexpr std::array<Anchor, 2> kAnchors = {Anchor::start, Anchor::midpoint};
-constexpr std::array<std::string_view, 3> kMeanNames = {"arithmetic", "geometric", "harmonic"};
-constexpr std::array<MeanKind, 3> kMeans = {MeanKind::arithmetic, MeanKind::geometric,
-                                            MeanKind::harmonic};
-constexpr std::array<std::string_view, 2> kKnotOrderNames = {"increasing", "as-given"};
-constexpr std::array<KnotOrder, 2> kKnotOrders = {KnotOrder::increasing, KnotOrder::as_given};
-constexpr std::array<std::string_view, 6> kPermutationNames = {"ABC", "ACB", "BAC", "BCA", "CAB", "CBA"};
-constexpr std::array<Permutation, 6> kPermutations = {Permutation::ABC, Permutation::ACB, Permutation::BAC,
-                                                      Permutation::BCA, Permutation::CAB, Permutation::CBA};
+// The keys of "options" and their values: core/pitas/method_options.hpp.
+constexpr auto kOptionFields = method_option_names();
 
 
 // Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.

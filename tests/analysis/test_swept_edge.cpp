@@ -13,16 +13,12 @@
 #include "analysis/swept_edge.hpp"
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
+#include "../core/pose_test_support.hpp"
 
 namespace pita::analysis {
 namespace {
 
-Affine2 affinity(double a, double b, double tx, double c, double d, double ty) {
-  Affine2 A;
-  A.L << a, b, c, d;
-  A.b << tx, ty;
-  return A;
-}
+using pita::test::affinity;
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -157,6 +153,30 @@ TEST(SweptEdge, EnvelopeEndsWhereTheGrazingPointLeavesTheEdge) {
     }
   }
   EXPECT_GE(checked, 1);  // the configuration leaves the edge at least once
+}
+
+// A pole of s (the denominator of Eq. 8 changes sign) between a sample on
+// the edge and one off it: the run must end where s passes 1 before the
+// pole, not at the pole or at the last sample. The edge stays put (pose I)
+// while its line is turned by L'(t) = [[0, 0], [t - 1/2, 0]] and pushed by
+// c' = (0, -0.2): s(t) = 0.2 / (t - 1/2), so s = 1 at t = 0.7 exactly.
+TEST(SweptEdge, EnvelopeEndIsFoundPastAPoleOfTheGrazingParameter) {
+  const PoseTrack track{[](double) { return Affine2::identity(); },
+                        [](double t) { return affinity(0.0, 0.0, 0.0, t - 0.5, 0.0, -0.2); }};
+  const Edge edge{Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.0)};
+  GrazingTrace trace;
+  for (const double t : {0.3, 0.75, 1.0}) {
+    trace.times.push_back(t);
+    trace.s.push_back(grazing_parameter(track.pose(t), track.velocity(t), edge));
+  }
+  ASSERT_TRUE(trace.s[0].has_value());
+  EXPECT_NEAR(*trace.s[0], -1.0, 1e-15);  // off the edge, beyond the pole at t = 1/2
+  EXPECT_NEAR(*trace.s[1], 0.8, 1e-15);
+  const auto runs = envelope(track, edge, trace);
+  ASSERT_EQ(runs.size(), 1u);
+  ASSERT_EQ(runs[0].size(), 3u);
+  EXPECT_LT((runs[0].front() - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-12);  // s = 1 at t = 0.7
+  EXPECT_LT((runs[0].back() - Eigen::Vector2d(0.4, 0.0)).norm(), 1e-15);   // s(1) = 0.4, the last sample
 }
 
 }  // namespace

@@ -13,6 +13,12 @@ inline Affine2 pose(double a, double b, double c, double d, double x, double y) 
   return A;
 }
 
+// The same, written as the rows of its 2 x 3 matrix [[a, b, tx], [c, d, ty]]
+// (as scenes write "matrix").
+inline Affine2 affinity(double a, double b, double tx, double c, double d, double ty) {
+  return pose(a, b, c, d, tx, ty);
+}
+
 // |L_X - L_Y| + |b_X - b_Y| (Frobenius and Euclidean norms).
 inline double distance(const Affine2& X, const Affine2& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); }
 

@@ -12,16 +12,12 @@
 #include "core/affine_power.hpp"
 #include "core/grazing_point.hpp"
 #include "core/pose_motion.hpp"
+#include "pose_test_support.hpp"
 
 namespace pita {
 namespace {
 
-Affine2 affinity(double a, double b, double tx, double c, double d, double ty) {
-  Affine2 A;
-  A.L << a, b, c, d;
-  A.b << tx, ty;
-  return A;
-}
+using pita::test::affinity;
 
 // The rotation by `angle` about `centre`, scaled by `scale`.
 Affine2 spiral_about(const Eigen::Vector2d& centre, double angle, double scale) {

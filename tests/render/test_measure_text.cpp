@@ -3,12 +3,15 @@
 // point, or a text-only legend in a corner).
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 #include "render/measure_text.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/measure_name.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {
@@ -31,10 +34,24 @@ analysis::MotionMeasures arrows_measured() {
   return m;
 }
 
+// The names as the reader parses them (scene/measure_name.hpp), of either
+// scene kind: the lines do not depend on it.
+std::vector<scene::MeasureName> parsed(std::initializer_list<std::string_view> names) {
+  std::vector<scene::MeasureName> out;
+  for (const std::string_view name : names) {
+    auto measure = scene::parse_measure(name, scene::MeasureScene::arrows);
+    if (!std::holds_alternative<scene::MeasureName>(measure)) {
+      measure = scene::parse_measure(name, scene::MeasureScene::poses);
+    }
+    out.push_back(std::get<scene::MeasureName>(measure));
+  }
+  return out;
+}
+
 TEST(MeasureText, OneLinePerNameWithTheNumbers) {
-  const std::vector<std::string> show{"discrepancy-max", "path-length", "turning", "winding-range",
+  const std::vector<scene::MeasureName> show = parsed({"discrepancy-max", "path-length", "turning", "winding-range",
                                       "overreaction",    "pop",         "gain:B.q", "jump:C.t", "ara",
-                                      "turn:B.q"};
+                                      "turn:B.q"});
   const std::vector<std::string> lines = measure_lines(arrows_measured(), show);
   ASSERT_EQ(lines.size(), show.size());
   EXPECT_EQ(lines[0], "E max: previous 1.5, average 0.0125, pita -");
@@ -54,13 +71,13 @@ TEST(MeasureText, PoseLinesAndNoPop) {
   m.kind = "poses";
   m.ara = 4.25;
   m.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
-  const std::vector<std::string> show{"ara", "area", "pop"};
+  const std::vector<scene::MeasureName> show = parsed({"ara", "area", "pop"});
   EXPECT_EQ(measure_lines(m, show), (std::vector<std::string>{"ARA 4.25", "area not monotone (dip 0.125 at t = 0.5)",
                                                               "pop: -"}));
   analysis::MotionMeasures calm = arrows_measured();
   calm.pops = false;
   calm.largest_jump = 0;
-  const std::vector<std::string> pop{"pop"};
+  const std::vector<scene::MeasureName> pop = parsed({"pop"});
   EXPECT_EQ(measure_lines(calm, pop).front(), "no pop (largest jump 3e-09)");
 }
 
@@ -96,6 +113,38 @@ TEST(MeasureText, TextOnlyLegendInACorner) {
   EXPECT_EQ(drawing.legends.front().corner, scene::LegendLayer::Corner::top_right);
   ASSERT_EQ(drawing.legends.front().entries.size(), 2u);  // default: overreaction, pop
   EXPECT_EQ(drawing.legends.front().entries[0].text.rfind("most sensitive: ", 0), 0u);
+}
+
+// The pointer and reason of the RenderError drawing `scene`'s first panel throws.
+std::string drawing_error(const scene::Scene& scene) {
+  try {
+    (void)panel_drawing(scene, scene.panels.front());
+  } catch (const RenderError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(MeasuresLayer, HandleShiftWithoutShapesIsRefused) {
+  // Nothing is carried, so nothing can shift: not "< 1e-12".
+  const scene::Scene scene = scene_with_layer(R"({"type": "measures", "show": ["pop", "handle-shift"]})");
+  const std::string error = drawing_error(scene);
+  EXPECT_NE(error.find("/layers/0/show/1"), std::string::npos) << error;
+  EXPECT_NE(error.find("the panel has no shapes"), std::string::npos) << error;
+}
+
+TEST(MeasuresLayer, UndefinedAngleIsRefusedNotPrintedAsNan) {
+  // P1's vector blend 1 - 2 * 4t(1 - t) vanishes at t = (1 - 1/sqrt 2)/2
+  // (tests/analysis/test_comparison.cpp): the angle there has no value.
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 1, "w": 3.141592653589793},
+      {"t": 1, "p": [0, 0], "m": 1, "w": 0}], "layers": [
+      {"type": "measures", "show": ["angle:P3@0.3", "angle:P3@0.14644660940672624"]}]})",
+                                                "s.json");
+  const std::string error = drawing_error(scene);
+  EXPECT_NE(error.find("/layers/0/show/1"), std::string::npos) << error;
+  EXPECT_NE(error.find("is undefined"), std::string::npos) << error;
+  EXPECT_EQ(error.find("nan"), std::string::npos) << error;
 }
 
 }  // namespace

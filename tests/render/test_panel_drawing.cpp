@@ -178,7 +178,8 @@ TEST(PatternLayer, OverlayDrawsItsOwnOptionsOverThePanels) {
   scene::Panel p = panel(Method::SMA, {{0.0, A}, {1.0, B}}, 9);
   p.options.path_mean = MeanKind::arithmetic;
   scene::PatternLayer overlay;
-  overlay.options.magnitude_mean = MeanKind::harmonic;
+  overlay.options.values.magnitude_mean = MeanKind::harmonic;
+  overlay.options.given = kMagnitudeMeanOption;
   const Drawing d = panel_drawing(scene_with({overlay}, {p}), p);
   const auto lines = shapes<Polyline>(d);
   ASSERT_EQ(lines.size(), 9u);
@@ -237,6 +238,38 @@ TEST(PatternLayer, OverlayWhoseMethodCannotTakeTheKeyframesIsTheLayersError) {
   }
 }
 
+// An option the overlay's method does not read would draw the panel's frames
+// again under a legend entry that claims a difference: refused at the option.
+TEST(PatternLayer, OverlayOptionItsMethodDoesNotReadIsRefused) {
+  scene::Panel p = panel(Method::P6, three_keyframes());
+  p.pointer = "/panels/0";
+  scene::PatternLayer overlay;
+  overlay.options.values.permutation = Permutation::CBA;
+  overlay.options.given = kPermutationOption;
+  p.layers = std::vector<scene::Layer>{overlay};
+  try {
+    panel_drawing(scene_with({}, {p}), p);
+    FAIL() << "expected a RenderError";
+  } catch (const RenderError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "test.json: /panels/0/layers/0/options/permutation: P6 La-LP does not read \"permutation\", so it "
+              "would change nothing here; La-T1, La-T2, Ne-M read it");
+  }
+  // The same option with a method that reads it is drawn.
+  overlay.method = Method::LaT1;
+  p.layers = std::vector<scene::Layer>{overlay};
+  EXPECT_EQ(shapes<Polyline>(panel_drawing(scene_with({}, {p}), p)).size(), frames_of(p, 9).size());
+  // The means: read by SMA and P9, and by a chain's steady morphs.
+  overlay = scene::PatternLayer{};
+  overlay.options.given = kPathMeanOption;
+  p.layers = std::vector<scene::Layer>{overlay};
+  EXPECT_THROW(panel_drawing(scene_with({}, {p}), p), RenderError);
+  scene::Panel chained = panel(Method::P6, {{0.0, Arrow{{0, 0}, 1.0, 0.0}}, {1.0, Arrow{{2, 0}, 0.5, 1.0}},
+                                            {2.0, Arrow{{3, 1}, 0.7, 1.5}}, {3.0, Arrow{{5, 0}, 1.0, 2.0}}});
+  chained.layers = std::vector<scene::Layer>{overlay};
+  EXPECT_NO_THROW(panel_drawing(scene_with({}, {chained}), chained));
+}
+
 TEST(PatternLayer, HeadsDrawEachFrameAsAnArrowFromPToQ) {
   const scene::Panel p = panel(Method::P3, three_keyframes(), 5);
   scene::PatternLayer layer;
@@ -258,7 +291,8 @@ TEST(LegendLayer, OverlaidPatternsGetAnEntryEach) {
   const std::array<MeanKind, 3> means{MeanKind::arithmetic, MeanKind::geometric, MeanKind::harmonic};
   for (std::size_t i = 0; i < 3; ++i) {
     scene::PatternLayer overlay;
-    overlay.options.magnitude_mean = means[i];
+    overlay.options.values.magnitude_mean = means[i];
+    overlay.options.given = kMagnitudeMeanOption;
     overlay.line.color = Color{i == 0 ? 1.0 : 0.0, i == 1 ? 1.0 : 0.0, i == 2 ? 1.0 : 0.0, 1.0};
     overlay.label = "magnitude " + std::to_string(i);
     layers.push_back(overlay);

@@ -13,18 +13,14 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "render/pose_drawing.hpp"
+#include "../core/pose_test_support.hpp"
 
 namespace pita::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using pita::test::affinity;
 
-Affine2 affinity(double a, double b, double tx, double c, double d, double ty) {
-  Affine2 A;
-  A.L << a, b, c, d;
-  A.b << tx, ty;
-  return A;
-}
+constexpr double kPi = std::numbers::pi;
 
 Eigen::Matrix3d homogeneous(const Affine2& A) {
   Eigen::Matrix3d H = Eigen::Matrix3d::Identity();
@@ -206,12 +202,12 @@ TEST(PoseDrawing, PosesLayerDrawsTheInsertedPoses) {
   EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 4u);
 }
 
-// SAM Figs. 4, 5: "compare" draws another method's motion through the
+// SAM Figs. 4, 5: "versus" draws another method's motion through the
 // panel's poses; with "power" 2 at t = 1/2 the squared mid-way pose X^2 o B.
 // On the paper's poses B = Rotate(90 deg), C = Translate(6, 0), Alexa's
 // squared mid-way pose is the translation by 12 sqrt(2)/pi (Sec. 3.3.2), the
 // SAM's is C; an independent check with Eigen's generic 3x3 log and exp.
-TEST(PoseDrawing, CompareLayerDrawsAnotherMethodAndItsPowers) {
+TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   scene::VersusLayer layer;
   layer.method = PoseMethod::alexa;
   layer.at = {0.5};
@@ -256,6 +252,27 @@ TEST(PoseDrawing, CompareLayerDrawsAnotherMethodAndItsPowers) {
               std::string::npos)
         << error.what();
   }
+}
+
+// A power multiplies the step: (1e30)^16 overflows although every pose is
+// finite. Refused at the layer, not drawn with infinities.
+TEST(PoseDrawing, VersusLayerPowerThatOverflowsIsRefused) {
+  scene::VersusLayer layer;
+  layer.method = PoseMethod::sam;
+  layer.at = {1.0};
+  layer.power = 16;
+  scene::Scene scene = sam_scene({layer});
+  scene.panels[0].poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {1.0, affinity(1e30, 0.0, 0.0, 0.0, 1e30, 0.0)}};
+  try {
+    (void)pose_panel_drawing(scene, scene.panels[0]);
+    FAIL() << "a pose of scale 1e480 was drawn";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("/layers/0"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("to the power 16 is not finite"), std::string::npos) << error.what();
+  }
+  layer.power = 8;  // 1e240: finite, drawn
+  scene.pose_layers = {layer};
+  EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 1u);
 }
 
 // Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.

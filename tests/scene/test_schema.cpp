@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -24,7 +25,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/pitas/method_options.hpp"
 #include "scene/color.hpp"
+#include "scene/measure_name.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
 
@@ -621,6 +624,61 @@ TEST(SceneSchemaValidation, ColorNamesMatchTheParser) {
               std::string::npos)
         << named.name;
   }
+}
+
+// The one table of measure names (scene/measure_name.cpp) and the schema's
+// list, in the same order; the prefixes of the names with an argument are the
+// schema's patterns'.
+TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
+  const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
+  const nlohmann::json& items =
+      schema.at("definitions").at("measuresLayer").at("properties").at("show").at("items").at("anyOf");
+  std::vector<std::string> plain, parameters;
+  std::string angle;
+  for (const MeasureEntry& entry : measure_entries()) {
+    if (!entry.argument) {
+      plain.emplace_back(entry.name);
+    } else if (entry.kind == MeasureKind::angle) {
+      angle = std::string(entry.name);
+    } else {
+      parameters.emplace_back(entry.name.substr(0, entry.name.size() - 1));
+    }
+  }
+  EXPECT_EQ(items.at(0).at("enum"), nlohmann::json(plain));
+  std::string alternatives;
+  for (const std::string& name : parameters) alternatives += (alternatives.empty() ? "" : "|") + name;
+  EXPECT_EQ(items.at(1).at("pattern").get<std::string>().rfind("^(" + alternatives + "):", 0), 0u);
+  EXPECT_EQ(items.at(2).at("pattern").get<std::string>().rfind("^" + angle, 0), 0u);
+  EXPECT_EQ(items.size(), 3u);
+}
+
+// The one table of method options and their values (core/pitas/method_options.hpp)
+// and the schema's "options".
+TEST(SceneSchemaValidation, OptionNamesMatchTheParser) {
+  const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
+  const nlohmann::json& options = schema.at("definitions").at("options").at("properties");
+  std::vector<std::string> keys;
+  for (const MethodOptionKey& key : kMethodOptionKeys) keys.emplace_back(key.name);
+  std::vector<std::string> in_schema;
+  for (const auto& [key, value] : options.items()) in_schema.push_back(key);
+  std::vector<std::string> sorted = keys;
+  std::sort(sorted.begin(), sorted.end());
+  std::sort(in_schema.begin(), in_schema.end());
+  EXPECT_EQ(in_schema, sorted);
+  const auto names = [](std::span<const std::string_view> values) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const std::string_view value : values) out.push_back(std::string(value));
+    return out;
+  };
+  EXPECT_EQ(options.at("anchor").at("enum"), names(kAnchorNames));
+  EXPECT_EQ(schema.at("definitions").at("mean").at("enum"), names(kMeanNames));
+  EXPECT_EQ(options.at("knots").at("enum"), names(kKnotOrderNames));
+  EXPECT_EQ(options.at("permutation").at("enum"), names(kPermutationNames));
+  // The defaults: the first name, as MethodOptions{} has it.
+  EXPECT_EQ(options.at("anchor").at("default"), std::string(kAnchorNames[0]));
+  EXPECT_EQ(options.at("permutation").at("default"), std::string(kPermutationNames[0]));
+  EXPECT_EQ(MethodOptions{}.permutation, kPermutations[0]);
+  EXPECT_EQ(MethodOptions{}.anchor, kAnchors[0]);
 }
 
 }  // namespace

@@ -19,18 +19,6 @@ std::array<int, 3> permutation_slots(Permutation p) {
   return {0, 1, 2};
 }
 
-std::string_view permutation_name(Permutation p) {
-  switch (p) {
-    case Permutation::ABC: return "ABC";
-    case Permutation::ACB: return "ACB";
-    case Permutation::BAC: return "BAC";
-    case Permutation::BCA: return "BCA";
-    case Permutation::CAB: return "CAB";
-    case Permutation::CBA: return "CBA";
-  }
-  return "ABC";
-}
-
 Permutation time_reverse(Permutation p) {
   switch (p) {
     case Permutation::ABC: return Permutation::CBA;

@@ -30,8 +30,7 @@ enum class AppendixDForm { lagrange_t1, lagrange_t2, neville };
 // Which keyframe (0 = (a, A), 1 = (b, B), 2 = (c, C)) comes first, second and
 // third in the permutation.
 std::array<int, 3> permutation_slots(Permutation p);
-// "ABC", "BAC", ...
-std::string_view permutation_name(Permutation p);
+// Names: permutation_name (core/pitas/method_options.hpp).
 // The permutation with A and C swapped: the variant's time reverse.
 Permutation time_reverse(Permutation p);
 

@@ -37,7 +37,8 @@ constexpr std::array<MethodInfo, 19> kMethods{{
     {Method::P2, "P2", "LS-Po", "log-spiral point, polar vector", 3, true, true,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<LsPo>(k, o.anchor);
-     }},
+     },
+     false, kAnchorOption},
     {Method::P3, "P3", "Pa-LP", "parabolic point, log-polar vector", 3, true, true, build<PaLp>},
     {Method::P4, "P4", "Be-LP", "Bezier of steady morphs (BiSAM), log-polar vector", 3, true, true, build<BeLp>},
     {Method::P5, "P5", "He-LP", "homogeneous exponential about the centroid", 3, false, true, build<HeLp>},
@@ -48,9 +49,11 @@ constexpr std::array<MethodInfo, 19> kMethods{{
     {Method::P9, "P9", "Ne-LP", "Neville form with steady morphs", 3, true, true,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<NeLp>(k, o.path_mean, o.magnitude_mean);
-     }},
+     },
+     false, kPathMeanOption | kMagnitudeMeanOption},
     {Method::P10, "P10", "Pa-EL", "parabolic point, exponential of log linear parts", 3, false, true, build<PaEl>},
-    {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true, true, nullptr},
+    {Method::SMA, "SMA", "SMA", "steady morph between two arrows", 2, true, true, nullptr, false,
+     kPathMeanOption | kMagnitudeMeanOption},
     {Method::PaPo, "Pa-Po", "Pa-Po", "parabolic point, polar vector (Fig. 7)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions&) -> std::unique_ptr<Motion> {
        return std::make_unique<IndependentPita>(k, PointMotion::parabola, VectorMotion::polar);
@@ -72,17 +75,17 @@ constexpr std::array<MethodInfo, 19> kMethods{{
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t1, o.permutation, o.symmetrize);
      },
-     true},
+     true, kPermutationOption | kSymmetrizeOption},
     {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of Eq. D.1, keyframes permuted (app. D.1)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t2, o.permutation, o.symmetrize);
      },
-     true},
+     true, kPermutationOption | kSymmetrizeOption},
     {Method::NeM, "Ne-M", "Ne-M", "Neville form M of Eq. D.2, keyframes permuted (app. D.2)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::neville, o.permutation, o.symmetrize);
      },
-     true},
+     true, kPermutationOption | kSymmetrizeOption},
 }};
 
 }  // namespace
@@ -100,6 +103,13 @@ std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const Metho
   const MethodInfo& about = info(m);
   if (about.make == nullptr) throw std::invalid_argument("SMA interpolates two keyframes, not three");
   return about.make(k, o);
+}
+
+bool reads_option(Method m, MethodOption option, bool chained) {
+  const MethodInfo& about = info(m);
+  if ((about.options & option) != 0U) return true;
+  if (option == kKnotsOption) return about.keyframe_count == 3;
+  return chained && (option == kPathMeanOption || option == kMagnitudeMeanOption);
 }
 
 Chain default_chain(Method m) { return info(m).keyframe_count == 2 ? Chain::spiral : Chain::blend; }

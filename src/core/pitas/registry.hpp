@@ -55,7 +55,17 @@ struct MethodInfo {
   // One of the appendices' non-chosen candidates (He-G, La-T1, La-T2, Ne-M):
   // not measured by pita audit unless named (default_audit_methods).
   bool appendix_variant = false;
+  // The MethodOption bits the method itself reads (core/pitas/method_options.hpp);
+  // every three-keyframe method also reads the knot order, and every chain
+  // the means of its steady-morph windows (reads_option).
+  unsigned options = 0;
 };
+
+// Whether building `m` reads option `option`: its own (MethodInfo::options),
+// the knot order (three-keyframe methods), or, when `chained` (more keyframes
+// than it takes, or a chain asked for), the means of the steady morphs
+// (SMAs) that chains build between keyframes.
+bool reads_option(Method m, MethodOption option, bool chained);
 
 // Every method, in display order.
 std::span<const MethodInfo> all_methods();

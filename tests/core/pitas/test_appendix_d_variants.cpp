@@ -6,6 +6,7 @@
 #include "core/pitas/appendix_d_variants.hpp"
 
 #include <array>
+#include <numbers>
 #include <string>
 
 #include "../test_support.hpp"
@@ -135,6 +136,33 @@ TEST(AppendixD, T1PairsAreTimeReverses) {
                 1e-9)
           << permutation_name(p);
     }
+  }
+}
+
+// Fig. D.32's bottom row (scenes/appD-fig32-t1-permutations.json): C is A
+// mirrored about the line x = 2.5 through B, which points straight up, knots
+// even. The reversed keyframes of Eq. 41 are then the mirrored ones, so each
+// T1 pair is a pair of mirror images run backwards: T1_partner(t) is the
+// mirror of T1_p(a + c - t), as the scene's description says.
+TEST(AppendixD, T1PairsAreMirrorImagesInTheSymmetricConfiguration) {
+  constexpr double pi = std::numbers::pi;
+  const KeyframeTriple k{{0.0, {{0, 0}, 1.0, 0.3}}, {0.5, {{2.5, 3.0}, 0.5, pi / 2}}, {1.0, {{5, 0}, 1.0, pi - 0.3}}};
+  const auto mirror = [](const Arrow& x) {  // about x = 2.5: p and the vector reflected
+    return Arrow{{5.0 - x.p.real(), x.p.imag()}, x.m, pi - x.w};
+  };
+  const std::array<std::pair<Permutation, Permutation>, 3> pairs = {{
+      {Permutation::ABC, Permutation::CBA},
+      {Permutation::BCA, Permutation::BAC},
+      {Permutation::CAB, Permutation::ACB},
+  }};
+  for (const auto& [p, partner] : pairs) {
+    const auto x = motion(Method::LaT1, k, with(p));
+    const auto y = motion(Method::LaT1, k, with(partner));
+    EXPECT_LE(worst(k, [&](double t) { return mirror(x->at(1.0 - t)); }, [&](double t) { return y->at(t); }), 1e-12)
+        << permutation_name(p);
+    // Not trivially: the two differ as drawn (each is not its own mirror image).
+    EXPECT_GT(worst(k, [&](double t) { return x->at(t); }, [&](double t) { return y->at(t); }), 1e-3)
+        << permutation_name(p);
   }
 }
 

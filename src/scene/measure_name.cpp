@@ -1,0 +1,139 @@
+#include "scene/measure_name.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/did_you_mean.hpp"
+#include "scene/json_reader.hpp"
+
+namespace pita::scene {
+
+namespace {
+
+using detail::quoted_choices;
+
+constexpr std::array<MeasureEntry, 13> kMeasures{{
+    {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
+    {"path-length", MeasureKind::path_length, MeasureScene::arrows},
+    {"turning", MeasureKind::turning, MeasureScene::arrows},
+    {"winding-range", MeasureKind::winding_range, MeasureScene::arrows},
+    {"overreaction", MeasureKind::overreaction, MeasureScene::arrows},
+    {"pop", MeasureKind::pop, MeasureScene::arrows},
+    {"handle-shift", MeasureKind::handle_shift, MeasureScene::arrows},
+    {"ara", MeasureKind::ara, MeasureScene::poses},
+    {"area", MeasureKind::area, MeasureScene::poses},
+    {"gain:", MeasureKind::gain, MeasureScene::arrows, true},
+    {"turn:", MeasureKind::turn, MeasureScene::arrows, true},
+    {"jump:", MeasureKind::jump, MeasureScene::arrows, true},
+    {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
+}};
+
+constexpr std::array<std::string_view, 9> kParameters = {"p", "q", "p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
+
+// "B.q", "K27.p.x": a keyframe (A..Z, or K and a number) and a parameter.
+bool is_keyframe_parameter(std::string_view rest) {
+  std::size_t key = 0;
+  if (rest.size() > 1 && rest[0] == 'K' && rest[1] >= '0' && rest[1] <= '9') {
+    key = 1;
+    while (key < rest.size() && rest[key] >= '0' && rest[key] <= '9') ++key;
+  } else if (!rest.empty() && rest[0] >= 'A' && rest[0] <= 'Z') {
+    key = 1;
+  }
+  if (key == 0 || key >= rest.size() || rest[key] != '.') return false;
+  rest.remove_prefix(key + 1);
+  for (const std::string_view parameter : kParameters) {
+    if (rest == parameter) return true;
+  }
+  return false;
+}
+
+std::string_view scene_words(MeasureScene scene) {
+  return scene == MeasureScene::arrows ? "arrow (keyframe) scenes" : "pose scenes";
+}
+
+// The names a scene of `scene`'s kind may show, for messages: "pop", ...,
+// "gain:K.x", "angle:M@t".
+std::vector<std::string_view> names_of(MeasureScene scene) {
+  std::vector<std::string_view> names;
+  for (const MeasureEntry& entry : kMeasures) {
+    if (entry.scene != scene) continue;
+    if (!entry.argument) names.push_back(entry.name);
+  }
+  return names;
+}
+
+std::string unknown(std::string_view text, MeasureScene scene) {
+  const std::vector<std::string_view> names = names_of(scene);
+  const std::vector<std::string> close = closest_names(text, names);
+  if (!close.empty()) return fmt::format("unknown measure \"{}\"{}", text, did_you_mean(close));
+  std::string reason = fmt::format("unknown measure \"{}\"; {} measure {}", text, scene_words(scene),
+                                   quoted_choices(names));
+  if (scene == MeasureScene::arrows) {
+    reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
+              "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method and t a time";
+  }
+  return reason;
+}
+
+}  // namespace
+
+std::span<const MeasureEntry> measure_entries() { return kMeasures; }
+
+std::variant<MeasureName, std::string> parse_measure(std::string_view text, MeasureScene scene) {
+  const MeasureEntry* found = nullptr;
+  for (const MeasureEntry& entry : kMeasures) {
+    if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
+  }
+  if (found == nullptr) return unknown(text, scene);
+  MeasureName measure{found->kind, std::string(text), {}, {}, 0.0};
+  const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
+  if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
+    if (!is_keyframe_parameter(rest)) {
+      return fmt::format("\"{}\" must name a keyframe and a parameter, \"{}K.x\" with K a keyframe (A, B, ...) "
+                         "and x one of p, q, p.x, p.y, q.x, q.y, m, w, t",
+                         text, found->name);
+    }
+    measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::angle) {
+    const std::size_t at = rest.find('@');
+    const std::string_view method = rest.substr(0, at);
+    if (at == std::string_view::npos || method.empty()) {
+      return fmt::format("\"{}\" must be \"angle:M@t\", an arrow method M and a time t", text);
+    }
+    const MethodEntry* entry = find_method_entry(method, MotionKind::arrows);
+    if (entry == nullptr) {
+      return fmt::format("in \"{}\": {}", text, unknown_method_reason(method, MotionKind::arrows));
+    }
+    const std::string_view time = rest.substr(at + 1);
+    double t = 0.0;
+    const auto [end, error] = std::from_chars(time.data(), time.data() + time.size(), t);
+    if (time.empty() || error != std::errc() || end != time.data() + time.size() || !std::isfinite(t)) {
+      return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
+    }
+    measure.method = entry->method;
+    measure.t = t;
+  }
+  if (found->scene != scene) {
+    return fmt::format("\"{}\" is measured in {} only; {} measure {}", text, scene_words(found->scene),
+                       scene_words(scene), quoted_choices(names_of(scene)));
+  }
+  return measure;
+}
+
+std::vector<MeasureName> default_measures(MeasureScene scene) {
+  std::vector<MeasureName> out;
+  const auto add = [&](std::string_view name) { out.push_back(std::get<MeasureName>(parse_measure(name, scene))); };
+  if (scene == MeasureScene::arrows) {
+    add("overreaction");
+    add("pop");
+  } else {
+    add("ara");
+    add("area");
+  }
+  return out;
+}
+
+}  // namespace pita::scene

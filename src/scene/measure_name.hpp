@@ -1,0 +1,65 @@
+// The names a "measures" layer shows (README "Layers", `measures`): the one
+// table of them. The reader parses each name once into a MeasureName; the
+// renderer switches on its kind and never compares strings.
+//
+//   "discrepancy-max", "path-length", "turning", "winding-range",
+//   "overreaction", "pop", "handle-shift"        arrow scenes
+//   "ara", "area"                                 pose scenes
+//   "gain:K.x", "turn:K.x", "jump:K.x"           arrow scenes: one keyframe
+//       parameter, K a keyframe (A..Z, K27, ...), x one of p, q, p.x, p.y,
+//       q.x, q.y, m, w, t ("gain:B.q" is the larger of B.q.x and B.q.y)
+//   "angle:M@t"                                   arrow scenes: the angle from
+//       the panel's D(t).w to that of arrow method M (Fig. 5), t finite
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "core/methods.hpp"
+
+namespace pita::scene {
+
+enum class MeasureKind {
+  discrepancy_max, path_length, turning, winding_range, overreaction, pop, handle_shift,
+  ara, area,
+  gain, turn, jump,  // "gain:K.x" ...: one keyframe parameter
+  angle,             // "angle:M@t"
+};
+
+// Which scenes measure it: `pita measure` measures arrow motions and pose
+// motions differently (analysis/measure.hpp), and a name the scene's motion
+// has no number for is refused rather than printed as "-".
+enum class MeasureScene { arrows, poses };
+
+struct MeasureEntry {
+  std::string_view name;  // "pop"; for the kinds with an argument, the prefix "gain:"
+  MeasureKind kind;
+  MeasureScene scene;
+  bool argument = false;  // "gain:B.q", "angle:P8@0.25"
+};
+
+// Every measure, in the order messages, the schema and the README list them.
+std::span<const MeasureEntry> measure_entries();
+
+struct MeasureName {
+  MeasureKind kind = MeasureKind::overreaction;
+  std::string text;        // as written: "gain:B.q", "angle:P8@0.25"
+  std::string parameter;   // gain, turn, jump: "B.q"
+  Method method{};         // angle: the other arrow method
+  double t = 0.0;          // angle: the time
+  friend bool operator==(const MeasureName&, const MeasureName&) = default;
+};
+
+// `text` parsed for a scene of `scene`'s kind, or why it is refused (a
+// sentence without the pointer: "unknown measure \"x\"; ...", "\"ara\" is
+// measured in pose scenes only ...").
+std::variant<MeasureName, std::string> parse_measure(std::string_view text, MeasureScene scene);
+
+// The default of a layer that names none: ["overreaction", "pop"] in arrow
+// scenes, ["ara", "area"] in pose scenes.
+std::vector<MeasureName> default_measures(MeasureScene scene);
+
+}  // namespace pita::scene

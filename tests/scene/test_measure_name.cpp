@@ -1,0 +1,113 @@
+// The names of a "measures" layer (src/scene/measure_name.cpp): what each
+// parses into, which scene kind measures it, and why a name is refused.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <variant>
+
+#include "scene/measure_name.hpp"
+
+namespace pita::scene {
+namespace {
+
+MeasureName accepted(std::string_view text, MeasureScene scene = MeasureScene::arrows) {
+  auto parsed = parse_measure(text, scene);
+  if (const std::string* reason = std::get_if<std::string>(&parsed)) {
+    ADD_FAILURE() << text << " refused: " << *reason;
+    return {};
+  }
+  return std::get<MeasureName>(parsed);
+}
+
+std::string refused(std::string_view text, MeasureScene scene = MeasureScene::arrows) {
+  auto parsed = parse_measure(text, scene);
+  if (std::holds_alternative<MeasureName>(parsed)) {
+    ADD_FAILURE() << text << " was accepted";
+    return {};
+  }
+  return std::get<std::string>(parsed);
+}
+
+TEST(MeasureName, PlainNamesAndTheirKinds) {
+  EXPECT_EQ(accepted("discrepancy-max").kind, MeasureKind::discrepancy_max);
+  EXPECT_EQ(accepted("path-length").kind, MeasureKind::path_length);
+  EXPECT_EQ(accepted("turning").kind, MeasureKind::turning);
+  EXPECT_EQ(accepted("winding-range").kind, MeasureKind::winding_range);
+  EXPECT_EQ(accepted("overreaction").kind, MeasureKind::overreaction);
+  EXPECT_EQ(accepted("pop").kind, MeasureKind::pop);
+  EXPECT_EQ(accepted("handle-shift").kind, MeasureKind::handle_shift);
+  EXPECT_EQ(accepted("ara", MeasureScene::poses).kind, MeasureKind::ara);
+  EXPECT_EQ(accepted("area", MeasureScene::poses).kind, MeasureKind::area);
+  EXPECT_EQ(accepted("pop").text, "pop");
+}
+
+TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
+  for (const MeasureEntry& entry : measure_entries()) {
+    const std::string text = entry.argument ? std::string(entry.name) + (entry.kind == MeasureKind::angle ? "P6@0.5" : "A.p")
+                                            : std::string(entry.name);
+    EXPECT_EQ(accepted(text, entry.scene).kind, entry.kind) << text;
+    const MeasureScene other = entry.scene == MeasureScene::arrows ? MeasureScene::poses : MeasureScene::arrows;
+    EXPECT_NE(refused(text, other).find("only"), std::string::npos) << text;
+  }
+}
+
+TEST(MeasureName, KeyframeParameters) {
+  const MeasureName gain = accepted("gain:B.q");
+  EXPECT_EQ(gain.kind, MeasureKind::gain);
+  EXPECT_EQ(gain.parameter, "B.q");
+  EXPECT_EQ(accepted("jump:K27.p.x").parameter, "K27.p.x");
+  EXPECT_EQ(accepted("turn:C.w").kind, MeasureKind::turn);
+  for (const char* bad : {"gain:", "gain:b.q", "gain:B", "gain:B.q.z", "jump:K2x.p", "gain:AB.q", "gain:Bq"}) {
+    EXPECT_NE(refused(bad).find("must name a keyframe and a parameter"), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("size:B.q").find("unknown measure"), std::string::npos);
+}
+
+TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
+  const MeasureName angle = accepted("angle:Pa-Po@0.25");
+  EXPECT_EQ(angle.kind, MeasureKind::angle);
+  EXPECT_EQ(angle.method, Method::PaPo);  // Fig. 7's parabolic point, polar vector
+  EXPECT_EQ(angle.t, 0.25);
+  EXPECT_EQ(accepted("angle:p1@-1e-1").t, -0.1);
+  EXPECT_EQ(accepted("angle:P8@2").method, Method::P8);
+  // Only what the schema's pattern accepts: no sign "+", no spaces, no hex, finite.
+  for (const char* bad : {"angle:P3@", "angle:P3@0.5x", "angle:P3@1e999", "angle:P3@ 0.5", "angle:P3@+0.5",
+                          "angle:P3@0x1p-2", "angle:P3@nan", "angle:P3@inf", "angle:P3@-inf"}) {
+    EXPECT_NE(refused(bad).find("must be a finite number"), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("angle:P3").find("must be \"angle:M@t\""), std::string::npos);
+  EXPECT_NE(refused("angle:@0.5").find("must be \"angle:M@t\""), std::string::npos);
+  EXPECT_NE(refused("angle:P99@0.5").find("unknown method \"P99\""), std::string::npos);
+  EXPECT_NE(refused("angle:SAM@0.5").find("unknown method \"SAM\""), std::string::npos);  // a pose method
+}
+
+TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
+  EXPECT_EQ(refused("ara"), "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
+                            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
+                            "\"pop\" or \"handle-shift\"");
+  EXPECT_EQ(refused("handle-shift", MeasureScene::poses),
+            "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\" or \"area\"");
+  EXPECT_NE(refused("angle:P6@0.5", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
+  EXPECT_NE(refused("gain:A.p", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
+}
+
+TEST(MeasureName, UnknownNamesGetSuggestionsOrTheList) {
+  EXPECT_EQ(refused("pops"), "unknown measure \"pops\"; did you mean \"pop\"?");
+  EXPECT_NE(refused("zzzzzz").find("\"angle:M@t\""), std::string::npos);
+  EXPECT_EQ(refused("zzzzzz", MeasureScene::poses), "unknown measure \"zzzzzz\"; pose scenes measure \"ara\" or \"area\"");
+}
+
+TEST(MeasureName, DefaultsOfEachSceneKind) {
+  const std::vector<MeasureName> arrows = default_measures(MeasureScene::arrows);
+  ASSERT_EQ(arrows.size(), 2u);
+  EXPECT_EQ(arrows[0].kind, MeasureKind::overreaction);
+  EXPECT_EQ(arrows[1].kind, MeasureKind::pop);
+  const std::vector<MeasureName> poses = default_measures(MeasureScene::poses);
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_EQ(poses[0].kind, MeasureKind::ara);
+  EXPECT_EQ(poses[1].kind, MeasureKind::area);
+}
+
+}  // namespace
+}  // namespace pita::scene
