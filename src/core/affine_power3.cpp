@@ -112,12 +112,16 @@ Vector3d eigenvector(const Matrix3d& L, double lambda) {
   return u;
 }
 
+// |z| without hypot (its overflow care is not needed for eigenvalues of a
+// finite 3x3, and it is slow).
+double magnitude(Complex z) { return std::sqrt(z.real() * z.real() + z.imag() * z.imag()); }
+
 // Whether the three computed eigenvalues are one triple eigenvalue (rounding
 // may have made a complex pair of it, or three distinct reals).
 bool triple_cluster(const std::array<Complex, 3>& values) {
-  const double size = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2]), 1e-300});
-  const double spread = std::max({std::abs(values[0] - values[1]), std::abs(values[0] - values[2]),
-                                  std::abs(values[1] - values[2])});
+  const double size = std::max({magnitude(values[0]), magnitude(values[1]), magnitude(values[2]), 1e-300});
+  const double spread = std::max({magnitude(values[0] - values[1]), magnitude(values[0] - values[2]),
+                                  magnitude(values[1] - values[2])});
   return spread <= limits::kEigenvalueCluster * size;
 }
 
@@ -176,9 +180,11 @@ Affine3 not_a_number() {
 std::array<Complex, 3> eigenvalues(const Matrix3d& L) {
   // On 2^-e L, so that the cubic's coefficients neither over- nor underflow.
   const double largest = L.cwiseAbs().maxCoeff();
-  int exponent = 0;
-  if (largest > 0.0 && std::isfinite(largest)) std::frexp(largest, &exponent);
-  const Matrix3d S = L * std::ldexp(1.0, -exponent);
+  int exponent = 0;  // only beyond 2^+-300, where the cubic's products would not fit
+  if (largest > 0.0 && std::isfinite(largest) && (largest < 0x1p-300 || largest > 0x1p300)) {
+    std::frexp(largest, &exponent);
+  }
+  const Matrix3d S = exponent == 0 ? L : Matrix3d(L * std::ldexp(1.0, -exponent));
   // z^3 - a z^2 + b z - c: a = trace, b = the principal 2x2 minors, c = det.
   const double a = S.trace();
   const double b = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0) + S(0, 0) * S(2, 2) - S(0, 2) * S(2, 0) +
@@ -192,7 +198,7 @@ std::array<Complex, 3> eigenvalues(const Matrix3d& L) {
   const double half_sum = (a - first) / 2.0;
   const double product = first == 0.0 ? 0.0 : c / first;
   const double discriminant = half_sum * half_sum - product;
-  const auto unscaled = [exponent](double x) { return std::ldexp(x, exponent); };
+  const auto unscaled = [exponent](double x) { return exponent == 0 ? x : std::ldexp(x, exponent); };
   if (discriminant < 0.0) {
     const double imaginary = std::sqrt(-discriminant);
     return {Complex(unscaled(first)), Complex(unscaled(half_sum), unscaled(imaginary)),
@@ -211,7 +217,7 @@ std::optional<Vector3d> fixed_point(const Affine3& A) {
   for (const Complex& v : values) {
     // A triple cluster is its mean (split_guess), exact where the roots are not.
     const Complex value = triple_cluster(values) ? Complex(guess) : v;
-    if (std::abs(value - 1.0) <= limits::kUnitEigenvalue) return std::nullopt;
+    if (magnitude(value - 1.0) <= limits::kUnitEigenvalue) return std::nullopt;
   }
   const Vector3d q = (Matrix3d::Identity() - A.L).partialPivLu().solve(A.b);  // (I - L) q = b
   if (!q.allFinite()) return std::nullopt;
@@ -244,9 +250,17 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
     // ((a - d)/2)^2 + b c that a non-normal block would otherwise suffer.
     // tan 2 phi = (d - a)/(b + c); the basis stays right-handed.
     const double a = T(1, 1), b = T(1, 2), c = T(2, 1), d = T(2, 2);
-    if (((a - d) / 2.0) * ((a - d) / 2.0) + b * c < 0.0) {
-      const double phi = 0.5 * std::atan2(d - a, b + c);
-      const double co = std::cos(phi), si = std::sin(phi);
+    if (a != d && ((a - d) / 2.0) * ((a - d) / 2.0) + b * c < 0.0) {
+      // cos and sin of phi from those of 2 phi (no trigonometric calls);
+      // r >= |d - a| > 0.
+      const double x = b + c, y = d - a, r = std::sqrt(x * x + y * y);
+      double co = std::sqrt(0.5 * (1.0 + x / r)), si = 0.0;
+      if (co > 0.5) {
+        si = y / (2.0 * r * co);
+      } else {
+        si = std::copysign(std::sqrt(0.5 * (1.0 - x / r)), y);
+        co = y / (2.0 * r * si);
+      }
       const Vector3d q2 = Q_.col(1), q3 = Q_.col(2);
       Q_.col(1) = co * q2 + si * q3;
       Q_.col(2) = -si * q2 + co * q3;
@@ -298,9 +312,9 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
   log_lambda_ = std::log1p(lambda_ - 1.0);
 
   // The corner's formula (limits.hpp, "EAR in 3D").
-  const double radius = std::max({std::abs(lambda_ - 1.0), std::abs(mu1 - 1.0), std::abs(mu2 - 1.0)});
+  const double radius = std::max({std::abs(lambda_ - 1.0), magnitude(mu1 - 1.0), magnitude(mu2 - 1.0)});
   const double from_one = std::abs(lambda_ - 1.0);
-  const double from_plane = std::min(std::abs(lambda_ - mu1), std::abs(lambda_ - mu2));
+  const double from_plane = std::min(magnitude(lambda_ - mu1), magnitude(lambda_ - mu2));
   if (radius <= limits::kUnitSeriesRadius) {
     corner_ = Corner::unit_series;
   } else if (from_one >= from_plane) {
@@ -310,6 +324,10 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
     lean_solve_ = (lambda_ * Matrix2d::Identity() - M).inverse() * c_;
   }
 
+}
+
+Affine3 AffinePowers3::log() const {
+  Affine3 log;
   // log L = Q [[ln lambda, w^T ln[lambda, M]], [0, log M]] Q^T with
   // ln[lambda, M] = l(M / lambda) / lambda (transposed: the row w^T acts on the left).
   const Vector2d lean_log = relative_->log_translation(w_) / lambda_;
@@ -317,12 +335,12 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
   log_T(0, 0) = log_lambda_;
   log_T.block<1, 2>(0, 1) = lean_log.transpose();
   log_T.block<2, 2>(1, 1) = plane_->linear_log();
-  log_L_ = Q_ * log_T * Q_.transpose();
+  log.L = Q_ * log_T * Q_.transpose();
   // Its translation l(L) b: the same block formula with f = ln.
   if (corner_ == Corner::unit_series) {
     // l(I + E) b = sum_{n>=1} (-1)^{n-1} E^{n-1} b / n.
-    const Matrix3d E = A.L - Matrix3d::Identity();
-    Vector3d sum = Vector3d::Zero(), x = A.b;
+    const Matrix3d E = A_.L - Matrix3d::Identity();
+    Vector3d sum = Vector3d::Zero(), x = A_.b;
     int small_terms = 0;
     for (int n = 1; n <= 400 && small_terms < 3; ++n) {
       const Vector3d term = ((n % 2 == 1) ? 1.0 : -1.0) / n * x;
@@ -330,7 +348,7 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
       small_terms = term.norm() <= 1e-18 * sum.norm() ? small_terms + 1 : 0;
       x = E * x;
     }
-    log_b_ = sum;
+    log.b = sum;
   } else {
     const Vector2d plane_log = plane_->log_translation(c_);
     const double l_lambda = log_ratio(lambda_);
@@ -338,8 +356,9 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
                               ? (lean_log.dot(c_) - w_.dot(plane_log)) / (lambda_ - 1.0)
                               : l_lambda * w_.dot(lean_solve_) -
                                     w_.dot(plane_->log_translation(lean_solve_));
-    log_b_ = Q_ * Vector3d(l_lambda * beta_ + corner, plane_log(0), plane_log(1));
+    log.b = Q_ * Vector3d(l_lambda * beta_ + corner, plane_log(0), plane_log(1));
   }
+  return log;
 }
 
 Vector3d AffinePowers3::unit_series(double t) const {
@@ -405,10 +424,7 @@ Affine3 AffinePowers3::at(double t) const {
 
 Affine3 affine_power(const Affine3& A, double t) { return AffinePowers3(A).at(t); }
 
-Affine3 log(const Affine3& A) {
-  const AffinePowers3 powers(A);
-  return {powers.linear_log(), powers.velocity_translation()};
-}
+Affine3 log(const Affine3& A) { return AffinePowers3(A).log(); }
 
 Affine3 exp(const Affine3& generator) {
   Eigen::Matrix4d H = Eigen::Matrix4d::Zero();

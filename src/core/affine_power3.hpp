@@ -80,10 +80,10 @@ class AffinePowers3 {
 
   const Affine3& affinity() const { return A_; }
 
-  // The homogeneous log of A, [[log L, v], [0, 0]]: the SAM's constant
-  // velocity field x -> log(L) x + v.
-  const Eigen::Matrix3d& linear_log() const { return log_L_; }
-  const Eigen::Vector3d& velocity_translation() const { return log_b_; }
+  // The homogeneous log of A as {log L, v} ([[log L, v], [0, 0]]): the
+  // SAM's constant velocity field x -> log(L) x + v. Computed on demand (at()
+  // does not need it).
+  Affine3 log() const;
 
   // The split (for tests and the paper note): the eigenvalue lambda, the
   // right-handed orthonormal basis Q = [u, q2, q3].
@@ -106,8 +106,6 @@ class AffinePowers3 {
   std::optional<AffinePowers> plane_;     // [M | c]
   std::optional<AffinePowers> relative_;  // [M^T / lambda | 0]
   Corner corner_ = Corner::over_lambda_minus_one;
-  Eigen::Matrix3d log_L_;
-  Eigen::Vector3d log_b_;
 };
 
 // A^t (builds AffinePowers3; use the class for many t).
