@@ -149,18 +149,19 @@ inline constexpr double kExpProjectors = 0.5;
 // corner's series uses kUnitSeriesRadius and kUnitSeriesMaxTime, the fixed
 // point kUnitEigenvalue, as in 2D.
 //
-// Three real eigenvalues of L within this fraction of the largest magnitude
-// of each other are one triple eigenvalue, whose eigenvector is sought at
-// tr L / 3: a triple root of the characteristic cubic is only good to about
-// the cube root of rounding times |L - tr L/3 I|^(2/3) (6e-6 for a Jordan
-// block with entries ~1; we measured up to 1e-5), while the mean of the three
-// is exact to rounding. The factor 10 is room. A genuinely distinct cluster
-// within 1e-4 loses nothing: the split only needs a vector with a small
-// residual |L u - (u.L u) u|, which inverse iteration from that start
-// provides (affine_power3.cpp, eigenvector()); and the half-turn tolerance
-// kHalfTurn applies to the plane block as in 2D.
+// The three computed eigenvalues of L within this fraction of the largest
+// magnitude of each other (three reals, or a real one and a complex pair
+// that rounding made of a triple one) are one triple eigenvalue, whose
+// eigenvector is sought at tr L / 3: a triple root of the characteristic
+// cubic is only good to about the cube root of rounding times
+// |L - tr L/3 I|^(2/3) (a shear beside 1 with entry 1.3, rotated, gave roots
+// 1e-5 apart), while the mean of the three is exact to rounding. The factor
+// 10 is room. A genuinely distinct cluster within 1e-4 loses nothing: the
+// split only needs a vector with a small residual |L u - (u.L u) u|, which
+// inverse iteration from that start provides (affine_power3.cpp,
+// eigenvector()). The plane block within kHalfTurn of -rho I is set to
+// -rho I, as 2D snaps its real negative eigenvalues.
 inline constexpr double kEigenvalueCluster = 1e-4;
-
 
 // ---------------------------------------------------------------- time warps
 // Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
