@@ -38,13 +38,15 @@ std::string bash_action(const OptionModel& option, const std::vector<std::string
   return ":";  // a number or a list: nothing to offer
 }
 
-// Single-quoted for zsh, with _arguments' special characters escaped.
+// Inside a single-quoted zsh word, with the brackets of _arguments'
+// "--flag[description]" escaped (and, for `_describe`'s "name:description",
+// nothing else: only the first colon separates).
 std::string zsh_description(const std::string& text) {
   std::string out;
   for (const char c : text) {
     if (c == '\'') {
       out += "'\\''";
-    } else if (c == '[' || c == ']' || c == ':' || c == '\\') {
+    } else if (c == '[' || c == ']' || c == '\\') {
       out += '\\';
       out += c;
     } else {
@@ -178,7 +180,7 @@ std::string zsh_completion(const CLI::App& app) {
       }
       for (const std::string& name : option.names) {
         out << " \\\n        '" << name << "[" << zsh_description(option.first_line) << "]";
-        if (option.kind != ValueKind::none) out << ":" << zsh_description(option.names.back()) << ":" << zsh_action(option, methods);
+        if (option.kind != ValueKind::none) out << ":value:" << zsh_action(option, methods);
         out << "'";
       }
     }

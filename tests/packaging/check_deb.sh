@@ -28,14 +28,15 @@ fail() { echo "$*" >&2; status=1; }
 [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "Version is $(dpkg-deb -f "$deb" Version), not $version"
 [ "$(dpkg-deb -f "$deb" Architecture)" = "$arch" ] || fail "Architecture is not $arch"
 depends="$(dpkg-deb -f "$deb" Depends)"
-# What pita links against dynamically (ldd), by Debian package: each must be in Depends.
-for library in libc.so.6 libstdc++.so.6 libcairo.so.2 libpango-1.0.so.0 libfmt.so; do
-  if ldd "$build/pita" | grep -q "$library"; then
-    package="$(dpkg -S "$(ldd "$build/pita" | awk -v l="$library" 'index($1, l) == 1 { print $3; exit }')" 2>/dev/null |
-               head -1 | cut -d: -f1)"
-    if [ -n "$package" ] && ! grep -qE "(^|, )$package( |,|$)" <<< "$depends"; then
-      fail "Depends lacks $package (for $library): $depends"
-    fi
+# What pita links against dynamically (ldd), by Debian package (dpkg -S): each must be in Depends.
+for library in libc.so.6 libstdc++.so.6 libcairo.so.2 libpango-1.0.so.0 libpangocairo-1.0.so.0 libfmt.so; do
+  name="$(ldd "$build/pita" | awk -v l="$library" 'index($1, l) == 1 { print $1; exit }')"
+  [ -n "$name" ] || continue
+  package="$( (dpkg -S "*/$name" 2>/dev/null || true) | head -1 | cut -d: -f1)"
+  if [ -z "$package" ]; then
+    fail "no Debian package holds $name"
+  elif [[ ", $depends," != *", $package "* && ", $depends," != *", $package,"* ]]; then
+    fail "Depends lacks $package (for $name): $depends"
   fi
 done
 grep -q "fonts-dejavu-core" <<< "$depends" || fail "Depends lacks fonts-dejavu-core: $depends"
