@@ -36,6 +36,7 @@ PITA_TEST_PACKAGES=(
   chromium                    # tests: the animated SVG played in a real browser (headless)
   parallel                    # tests: the GNU parallel recipe of pita sweep (README "pita sweep")
   time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
+  man-db                      # tests: the man page rendered by man -l (with groff-base; tests/packaging)
 )
 
 # Only for scripts/test.sh --sanitize and scripts/fuzz.sh.

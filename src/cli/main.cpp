@@ -16,6 +16,7 @@
 #include "cli/eval.hpp"
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/generate.hpp"
 #include "cli/golden.hpp"
 #include "cli/measure.hpp"
 #include "cli/sweep.hpp"
@@ -71,6 +72,8 @@ int main(int argc, char** argv) {
   const auto audit_options = pita::cli::setup_audit(app);
   const auto measure_options = pita::cli::setup_measure(app);
   const auto sweep_options = pita::cli::setup_sweep(app);
+  // Hidden: the man page and the shell completions, generated from this App at build time.
+  const auto generate_options = pita::cli::setup_generate(app);
 
   // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
   // and suggest the closest known one.
@@ -97,6 +100,10 @@ int main(int argc, char** argv) {
     }
     std::cerr << "pita: " << error.what() << "\nRun 'pita --help' for usage.\n";
     return to_int(ExitCode::bad_input);
+  }
+
+  if (!generate_options->what.empty()) {
+    return to_int(pita::cli::run_generate(app, *generate_options, PITA_VERSION));
   }
 
   try {

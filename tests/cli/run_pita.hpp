@@ -32,6 +32,14 @@ inline const std::string kFigureOneFields = R"("method": "P6", "keyframes": [
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])";
 inline const std::string kFigureOneScene = "{" + kFigureOneFields + "}";
 
+// The pita under test: build/pita (PITA_BINARY), or the binary the environment
+// variable PITA_TEST_BINARY names: ctest packaging.cli_installed runs this
+// suite against the installed pita (tests/packaging/CMakeLists.txt).
+inline const char* pita_binary() {
+  const char* chosen = std::getenv("PITA_TEST_BINARY");
+  return chosen != nullptr && *chosen != '\0' ? chosen : PITA_BINARY;
+}
+
 struct RunResult {
   int exit_code = -1;  // 128 + signal number when killed by a signal
   bool signaled = false;  // killed by a signal (not an exit with a status)
@@ -117,7 +125,7 @@ inline Started start_pita(const std::vector<std::string>& args, const std::files
   started.capture = std::make_unique<ScratchDir>();
   const std::string out_path = (started.capture->path() / "stdout").string();
   const std::string err_path = (started.capture->path() / "stderr").string();
-  const std::string binary = PITA_BINARY;
+  const std::string binary = pita_binary();
   const std::string cwd = directory.string();
 
   std::vector<std::string> argv_strings;

@@ -804,7 +804,7 @@ TEST(AnimateProgressBar, ShownOnATerminalOnly) {
   const ScratchDir dir;
   const auto on_pty_env = [&](const std::string& env, const std::string& flags) {
     const std::string inner = fmt::format("env {} {} animate {} -o frames --frames 12 {} >stdout.txt", env,
-                                          quoted(PITA_BINARY), quoted(kFig23.string()), flags);
+                                          quoted(pita_binary()), quoted(kFig23.string()), flags);
     return run_command("cd " + quoted(dir.path().string()) + " && script -qec " + quoted(inner) + " /dev/null");
   };
   const CommandResult in_ci = on_pty_env("CI=true", "");

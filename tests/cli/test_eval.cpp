@@ -302,7 +302,7 @@ TEST_F(Eval, ClosedPipeIsExitThreeWithAMessage) {
     const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (err < 0 || ::dup2(fds[1], 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
     ::close(fds[0]);
-    ::execl(PITA_BINARY, PITA_BINARY, "eval", scene.c_str(), "--samples", "100000",
+    ::execl(pita_binary(), pita_binary(), "eval", scene.c_str(), "--samples", "100000",
             static_cast<char*>(nullptr));
     ::_exit(127);
   }

@@ -214,7 +214,7 @@ TEST(InterruptTiming, ARenderKilledAtAnyMomentLeavesWholeFilesOnly) {
 TEST(ClosedPipe, IsAWriteErrorNotSigpipe) {
   const ScratchDir dir;
   dir.write("x.json", kScene);
-  const std::string command = "cd '" + dir.path().string() + "' && ( '" + PITA_BINARY +
+  const std::string command = "cd '" + dir.path().string() + "' && ( '" + pita_binary() +
                               "' eval x.json --samples 200000 2>err; echo $? >status ) | head -c1 >/dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0);
   EXPECT_EQ(read_file(dir.path() / "status"), "3\n") << read_file(dir.path() / "err");

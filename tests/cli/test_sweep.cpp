@@ -158,7 +158,7 @@ TEST(Sweep, ProgressBarOnATerminalLinesOffIt) {
   // A terminal (script(1) gives pita one), CI unset: the bar, redrawn with \r.
   const std::string command = fmt::format(
       "cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty' /dev/null 2>&1",
-      dir.path().string(), PITA_BINARY, kFig13);
+      dir.path().string(), pita_binary(), kFig13);
   FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string shown;
@@ -171,7 +171,7 @@ TEST(Sweep, ProgressBarOnATerminalLinesOffIt) {
   // -q: no bar even there.
   const std::string quiet = fmt::format(
       "cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty2 -q' /dev/null 2>&1",
-      dir.path().string(), PITA_BINARY, kFig13);
+      dir.path().string(), pita_binary(), kFig13);
   pipe = ::popen(quiet.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   shown.clear();

@@ -1,0 +1,74 @@
+# Installing pita (README "Install"): cmake --install build --prefix P writes
+#   P/bin/pita
+#   P/include/pita/<layer>/*.hpp        the headers of core, scene, motion, analysis, render
+#   P/lib/libpita_<layer>.a             the libraries of those layers
+#   P/lib/cmake/pita/pitaConfig.cmake   with pitaConfigVersion.cmake and the exported
+#                                       targets pita::core and pita::render
+#   P/lib/pkgconfig/pita.pc             pita::core for pkg-config
+#   P/share/man/man1/pita.1             the man page, generated from the CLI at build time
+#   P/share/bash-completion/completions/pita, P/share/zsh/vendor-completions/_pita
+#   P/share/doc/pita/                   README.md, CHANGELOG.md
+# and cpack -G DEB packs the same into pita_<version>_<arch>.deb (prefix /usr).
+# Included by the top CMakeLists.txt after src/.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(PITA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pita)
+
+install(TARGETS pita RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# The libraries a program may use: core (math, Eigen only) in one export set,
+# render and the layers it stands on in another, so that a consumer of
+# pita::core needs nothing but Eigen. animate, golden, sweep and cli stay
+# inside the pita binary.
+foreach(layer core scene motion analysis render)
+  set_target_properties(pita_${layer} PROPERTIES EXPORT_NAME ${layer})
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/${layer} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/pita
+          FILES_MATCHING PATTERN "*.hpp")
+endforeach()
+install(TARGETS pita_core EXPORT pitaCoreTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS pita_scene pita_motion pita_analysis pita_render EXPORT pitaRenderTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(EXPORT pitaCoreTargets NAMESPACE pita:: DESTINATION ${PITA_INSTALL_CMAKEDIR})
+install(EXPORT pitaRenderTargets NAMESPACE pita:: DESTINATION ${PITA_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/pitaConfig.cmake.in
+                              ${CMAKE_BINARY_DIR}/pitaConfig.cmake
+                              INSTALL_DESTINATION ${PITA_INSTALL_CMAKEDIR})
+# 0.x: a minor version may break the API, so 0.2 accepts 0.2.y only.
+write_basic_package_version_file(${CMAKE_BINARY_DIR}/pitaConfigVersion.cmake
+                                 COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_BINARY_DIR}/pitaConfig.cmake ${CMAKE_BINARY_DIR}/pitaConfigVersion.cmake
+        DESTINATION ${PITA_INSTALL_CMAKEDIR})
+
+# pita.pc finds its prefix from its own place (${pcfiledir}), so the same file
+# serves cmake --install --prefix P and the .deb's /usr.
+file(RELATIVE_PATH PITA_PC_PREFIX_FROM_PCDIR /prefix/${CMAKE_INSTALL_LIBDIR}/pkgconfig /prefix)
+string(REGEX REPLACE "/$" "" PITA_PC_PREFIX_FROM_PCDIR "${PITA_PC_PREFIX_FROM_PCDIR}")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/pita.pc.in ${CMAKE_BINARY_DIR}/pita.pc @ONLY)
+install(FILES ${CMAKE_BINARY_DIR}/pita.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+
+# Written when pita is linked (src/CMakeLists.txt, cmake/PitaGenerate.cmake).
+install(FILES ${CMAKE_BINARY_DIR}/pita.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+install(FILES ${CMAKE_BINARY_DIR}/completions/pita DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
+install(FILES ${CMAKE_BINARY_DIR}/completions/_pita DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions)
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
+# The Debian package: cpack -G DEB in the build folder. Depends comes from
+# dpkg-shlibdeps (Debian dpkg-dev, which build-essential brings) on the
+# binary, plus the fonts the figures are drawn with; the development packages
+# a consumer of the libraries needs are suggested (README "Install").
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME pita)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "planar interpolation of three arrows and steady affine morphs")
+set(CPACK_PACKAGE_DESCRIPTION
+    "pita evaluates the planar interpolating three-arrow motions (PITAs P1-P10) and the steady affine morphs (SAM) of Rossignac and Vinacua, draws their figures (SVG, PNG, PDF) and checks them against goldens. The package also holds the C++ libraries pita::core (Eigen only) and pita::render, with their CMake and pkg-config files.")
+set(CPACK_PACKAGE_CONTACT "pita maintainers <pita@localhost>")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libcairo2-dev, libpango1.0-dev, libfmt-dev, nlohmann-json3-dev, pkg-config")
+include(CPack)

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# ctest packaging.deb: cpack -G DEB from the build folder makes
+# pita_<version>_<arch>.deb; its control fields carry the version and a
+# Depends from dpkg-shlibdeps (the C and C++ run-times, cairo, pango); unpacked
+# with dpkg -x into a scratch root, every file dpkg -c lists is there, the
+# pieces README "Install" names are at their places under /usr, and the
+# unpacked binary runs (--version, and eval of a scene).
+# Usage: check_deb.sh BUILD_DIR VERSION SOURCE_DIR
+set -euo pipefail
+build="$1" version="$2" source="$3"
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+
+arch="$(dpkg --print-architecture)"
+cpack --config "$build/CPackConfig.cmake" -G DEB -B "$scratch/out" >"$scratch/cpack.log" 2>&1 || {
+  cat "$scratch/cpack.log" >&2
+  exit 1
+}
+deb="$scratch/out/pita_${version}_${arch}.deb"
+if [ ! -f "$deb" ]; then
+  echo "cpack did not make pita_${version}_${arch}.deb; it made: $(ls "$scratch/out")" >&2
+  exit 1
+fi
+status=0
+fail() { echo "$*" >&2; status=1; }
+
+[ "$(dpkg-deb -f "$deb" Package)" = pita ] || fail "Package is not pita"
+[ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || fail "Version is $(dpkg-deb -f "$deb" Version), not $version"
+[ "$(dpkg-deb -f "$deb" Architecture)" = "$arch" ] || fail "Architecture is not $arch"
+depends="$(dpkg-deb -f "$deb" Depends)"
+# What pita links against dynamically (ldd), by Debian package (dpkg -S): each must be in Depends.
+for library in libc.so.6 libstdc++.so.6 libcairo.so.2 libpango-1.0.so.0 libpangocairo-1.0.so.0 libfmt.so; do
+  name="$(ldd "$build/pita" | awk -v l="$library" 'index($1, l) == 1 { print $1; exit }')"
+  [ -n "$name" ] || continue
+  package="$( (dpkg -S "*/$name" 2>/dev/null || true) | head -1 | cut -d: -f1)"
+  if [ -z "$package" ]; then
+    fail "no Debian package holds $name"
+  elif [[ ", $depends," != *", $package "* && ", $depends," != *", $package,"* ]]; then
+    fail "Depends lacks $package (for $name): $depends"
+  fi
+done
+grep -q "fonts-dejavu-core" <<< "$depends" || fail "Depends lacks fonts-dejavu-core: $depends"
+
+root="$scratch/root"
+dpkg -x "$deb" "$root"
+# Every regular file the package lists is unpacked where it says.
+while read -r mode _ _ _ _ path _; do
+  path="${path#./}"
+  case "$mode" in
+    -*) [ -f "$root/$path" ] || fail "dpkg -c lists $path, not unpacked there" ;;
+    d*) [ -d "$root/$path" ] || fail "dpkg -c lists directory $path, not unpacked there" ;;
+  esac
+done < <(dpkg -c "$deb")
+listing="$(dpkg -c "$deb" | awk '{ print $6 }' | sed 's|^\./||')"
+for path in usr/bin/pita usr/include/pita/core/arrow.hpp usr/include/pita/core/affine_power.hpp \
+            usr/lib/libpita_core.a usr/lib/libpita_render.a usr/lib/cmake/pita/pitaConfig.cmake \
+            usr/lib/cmake/pita/pitaConfigVersion.cmake usr/lib/pkgconfig/pita.pc usr/share/man/man1/pita.1 \
+            usr/share/bash-completion/completions/pita usr/share/zsh/vendor-completions/_pita \
+            usr/share/doc/pita/CHANGELOG.md; do
+  grep -qxF "$path" <<< "$listing" || fail "the package lacks $path"
+done
+# No file outside /usr, none of the build's or the tests' files.
+if grep -vE '^usr/' <<< "$listing" | grep -vxE '\.?/?' | grep .; then fail "files outside /usr"; fi
+if grep -E 'test_|gtest|bench|\.o$' <<< "$listing"; then fail "test or build files in the package"; fi
+
+[ "$("$root/usr/bin/pita" --version)" = "pita $version" ] || fail "unpacked pita --version: $("$root/usr/bin/pita" --version)"
+"$root/usr/bin/pita" eval "$source/scenes/fig01-eight-pitas.json" --samples 3 >/dev/null ||
+  fail "unpacked pita cannot evaluate scenes/fig01-eight-pitas.json"
+exit "$status"
