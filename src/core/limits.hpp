@@ -143,6 +143,26 @@ inline constexpr double kExpSeries = 1e-2;
 // blocks) where the projectors would not.
 inline constexpr double kExpProjectors = 0.5;
 
+// ------------------------------------------------------------ EAR in 3D
+// Real powers of 3D affinities (affine_power3.hpp, SAM paper appendix A.6,
+// docs/paper-notes.md N58). The 2D block reuses every threshold above; the
+// corner's series uses kUnitSeriesRadius and kUnitSeriesMaxTime, the fixed
+// point kUnitEigenvalue, as in 2D.
+//
+// The three computed eigenvalues of L within this fraction of the largest
+// magnitude of each other (three reals, or a real one and a complex pair
+// that rounding made of a triple one) are one triple eigenvalue, whose
+// eigenvector is sought at tr L / 3: a triple root of the characteristic
+// cubic is only good to about the cube root of rounding times
+// |L - tr L/3 I|^(2/3) (a shear beside 1 with entry 1.3, rotated, gave roots
+// 1e-5 apart), while the mean of the three is exact to rounding. The factor
+// 10 is room. A genuinely distinct cluster within 1e-4 loses nothing: the
+// split only needs a vector with a small residual |L u - (u.L u) u|, which
+// inverse iteration from that start provides (affine_power3.cpp,
+// eigenvector()). The plane block within kHalfTurn of -rho I is set to
+// -rho I, as 2D snaps its real negative eigenvalues.
+inline constexpr double kEigenvalueCluster = 1e-4;
+
 // ---------------------------------------------------------------- time warps
 // Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
 //
