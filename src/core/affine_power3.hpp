@@ -106,6 +106,8 @@ class AffinePowers3 {
   std::optional<AffinePowers> plane_;     // [M | c]
   std::optional<AffinePowers> relative_;  // [M^T / lambda | 0]
   Corner corner_ = Corner::over_lambda_minus_one;
+  Eigen::Matrix2d M_;               // the plane block
+  bool lean_by_sylvester_ = false;  // log(): the lean row by Sylvester (N58)
 };
 
 // A^t (builds AffinePowers3; use the class for many t).

@@ -163,6 +163,14 @@ inline constexpr double kExpProjectors = 0.5;
 // -rho I, as 2D snaps its real negative eigenvalues.
 inline constexpr double kEigenvalueCluster = 1e-4;
 
+// log(): the lean row comes from the Sylvester equation (log T commutes with
+// T) when lambda is at least this fraction of the largest eigenvalue modulus
+// away from both eigenvalues of the plane block, so that lambda I - M is well
+// conditioned; closer, the 2D EAR's l(M / lambda) / lambda, exact in the
+// confluent limit. 0.1 is a round value, checked only on the random tests of
+// test_affine_power3.cpp, not tuned (N58).
+inline constexpr double kSylvesterLeanGap = 0.1;
+
 // ---------------------------------------------------------------- time warps
 // Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
 //
