@@ -121,7 +121,8 @@ std::string methods_table(MotionKind kind) {
                                         : fmt::format("{}-{}", method.min_count, method.max_count);
     table += kind == MotionKind::arrows
                  ? fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title)
-                 : fmt::format("  {:<15} {:<4} {}\n", method.id, count, method.title);
+                 : fmt::format("  {:<15} {:<4} {:<3} {}\n", method.id, count,
+                               info(method.pose_method).in_space ? "3D" : "", method.title);
   }
   return table;
 }
@@ -217,6 +218,17 @@ Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
 
+3D pose scenes (README "3D pose scenes"): "dimension": 3, poses of space, the methods
+marked "3D" above:
+  {"dimension": 3, "method": "SAM",
+   "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+             {"t": 1, "tetrahedron": [[2, 0, 0], [2, 1, 0], [1, 0, 0], [2, 0, 1]]}]}
+  matrix       [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]], invertible
+  tetrahedron  the images of "reference_tetrahedron" (default the origin and the unit
+               points of the axes)
+  Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, c, tx], ...]}, ...]}
+  or CSV with the header t,a,b,c,tx,d,e,f,ty,g,h,i,tz. Only pita eval reads them so far.
+
 Examples:
   pita eval scenes/fig01-eight-pitas.json
   pita eval scenes/fig01-eight-pitas.json --method P8 --samples 5 --format csv
@@ -289,12 +301,14 @@ ExitCode run_eval(const EvalOptions& options) {
     std::optional<int> samples;
     if (options.samples) samples = parse_samples(*options.samples);
 
-    scene::Scene scene = scene::load_scene(options.scene_path);
+    scene::ReadOptions read;
+    read.allow_space = true;  // 3D pose scenes: evaluated here, not drawn yet
+    scene::Scene scene = scene::load_scene(options.scene_path, read);
     if (method_override) scene = scene::with_method(std::move(scene), *method_override);
     if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
     std::string text;  // the whole output is built before anything is printed
-    if (scene.kind == scene::SceneKind::poses && scene.poses.empty()) {
+    if (scene.kind == scene::SceneKind::poses && scene.poses.empty() && scene.poses3.empty()) {
       throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
     }
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`

@@ -13,6 +13,7 @@
 
 #include "cli/animate.hpp"
 #include "cli/audit.hpp"
+#include "cli/sam3d_existence.hpp"
 #include "cli/eval.hpp"
 #include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
@@ -70,6 +71,7 @@ int main(int argc, char** argv) {
   const auto check_options = pita::cli::setup_check(app);
   const auto update_options = pita::cli::setup_update_goldens(app);
   const auto audit_options = pita::cli::setup_audit(app);
+  const auto sam3d_existence_options = pita::cli::setup_sam3d_existence(*app.get_subcommand("audit"));
   const auto measure_options = pita::cli::setup_measure(app);
   const auto sweep_options = pita::cli::setup_sweep(app);
   // Hidden: the man page and the shell completions, generated from this App at build time.
@@ -110,6 +112,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("eval")) return to_int(pita::cli::run_eval(*eval_options));
     if (app.got_subcommand("render")) return to_int(pita::cli::run_render(*render_options));
     if (app.got_subcommand("animate")) return to_int(pita::cli::run_animate(*animate_options));
+    if (sam3d_existence_options->command->parsed()) {
+      return to_int(pita::cli::run_sam3d_existence(*sam3d_existence_options));
+    }
     if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));

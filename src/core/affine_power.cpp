@@ -495,24 +495,27 @@ Affine2 AffinePowers::power_with_translation(double t, const Vector2d& b) const 
 
 Affine2 affine_power(const Affine2& A, double t) { return AffinePowers(A).at(t); }
 
+NoRealLogarithm no_sam_between_poses(const NoRealLogarithm& error, bool mirrored) {
+  if (mirrored) {
+    return NoRealLogarithm(std::string("no SAM exists between these poses: one is mirrored and "
+                                       "the other is not (") +
+                               error.what() + "); no middle pose can help: mirror both poses or neither",
+                           error.root_case());
+  }
+  return NoRealLogarithm(std::string("no SAM exists between these poses: A = C o B^-1 has no "
+                                     "real power (") +
+                             error.what() +
+                             "); insert a middle pose between them and use a polySAM or a "
+                             "SAM bi-arc through it (Sec. 5.3)",
+                         error.root_case());
+}
+
 AffinePowers SteadyAffineMorph::checked(const Affine2& B, const Affine2& C) {
   const Affine2 A = compose(C, inverse(B));
   try {
     return AffinePowers(A);
   } catch (const NoRealLogarithm& error) {
-    if (!(A.L.determinant() > 0.0) && A.L.allFinite()) {
-      throw NoRealLogarithm(std::string("no SAM exists between these poses: one is mirrored and "
-                                        "the other is not (") +
-                                error.what() +
-                                "); no middle pose can help: mirror both poses or neither",
-                            error.root_case());
-    }
-    throw NoRealLogarithm(std::string("no SAM exists between these poses: A = C o B^-1 has no "
-                                      "real power (") +
-                              error.what() +
-                              "); insert a middle pose between them and use a polySAM or a "
-                              "SAM bi-arc through it (Sec. 5.3)",
-                          error.root_case());
+    throw no_sam_between_poses(error, !(A.L.determinant() > 0.0) && A.L.allFinite());
   }
 }
 

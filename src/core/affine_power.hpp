@@ -177,4 +177,10 @@ class SteadyAffineMorph {
 
 Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t);
 
+// The error of a SAM (2D or 3D) whose A = C o B^-1 has no real power (`error`
+// from EAR): "no SAM exists between these poses: ...", with the advice that
+// fits: mirror both poses or neither (`mirrored`: det A <= 0), or insert a
+// middle pose (Sec. 5.3).
+NoRealLogarithm no_sam_between_poses(const NoRealLogarithm& error, bool mirrored);
+
 }  // namespace pita

@@ -22,51 +22,15 @@
 #include "core/sam_splines.hpp"
 #include "core/spiral_residue_morph.hpp"
 #include "core/triangle_spiral_blend.hpp"
+#include "core/pose_method.hpp"
+#include "core/sam_family_motion.hpp"
 
 namespace pita {
-
-enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point, rarap, asap, tsb, alexa };
 
 // The reference triangle of a pose scene when it gives none: (0,0), (1,0), (0,1).
 std::array<Point, 3> default_reference_triangle();
 
-// Subdivision steps of the four-point polySAM (Sec. 7.3: "4 subdivision steps
-// suffice to produce polySAMs that appear smooth"), and the most a scene may ask.
-inline constexpr int kDefaultSubdivisions = 4;
-inline constexpr int kMaxSubdivisions = 6;
-
-struct PoseMethodInfo {
-  PoseMethod method;
-  std::string_view id;     // as scenes spell it: "SAM"
-  std::string_view title;  // "Steady Affine Morph"
-  int min_poses;
-  int max_poses;
-};
-
-std::span<const PoseMethodInfo> all_pose_methods();
-const PoseMethodInfo& info(PoseMethod method);
-// Names are resolved by core/methods.hpp, the one registry of both kinds.
-
-struct TimedPose {
-  double t = 0.0;
-  Affine2 pose;
-};
-
-// No SAM between poses `first` and `first + 1` of the motion (indices into
-// its poses), which the method needs.
-// `where` is empty for a pair of given poses, else it says which intermediate
-// poses of a Bezier SAM or bi-arc construction have no SAM between them.
-class NoSamBetweenPoses : public NoRealLogarithm {
- public:
-  NoSamBetweenPoses(const NoRealLogarithm& cause, std::size_t first, std::string where = "")
-      : NoRealLogarithm(cause.what(), cause.root_case()), first_(first), where_(std::move(where)) {}
-  std::size_t first() const { return first_; }
-  const std::string& where() const { return where_; }
-
- private:
-  std::size_t first_;
-  std::string where_;
-};
+using TimedPose = TimedPoseOf<Affine2>;
 
 // The motion through the poses (as many as the method takes, knots strictly
 // increasing). Throws NoSamBetweenPoses from the constructor when a SAM the
@@ -118,14 +82,10 @@ class PoseMotion {
 
  private:
   Affine2 evaluate(double t) const;
-  double bezier_parameter(double t) const;
-  std::size_t span_of(double t) const;  // outgoing span at interior knots
 
   PoseMethod method_;
   std::vector<TimedPose> poses_;
-  std::vector<TimedPose> span_poses_;  // the polySAM's poses (SAM, polySAM, linear, four-point)
-  std::vector<SteadyAffineMorph> spans_;  // between span_poses_
-  std::optional<SamBiarc> biarc_;
+  std::optional<SamFamilyMotion<Affine2>> family_;  // SAM, polySAM, Bezier, bi-arc, linear, four-point
   std::optional<std::variant<RarapMorph, SpiralResidueMorph, TriangleSpiralBlend, LogMatrixBlend>>
       morph_;  // Fig. 2 b-d, Alexa
 };

@@ -43,6 +43,13 @@ std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const d
   return frames;
 }
 
+std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::span<const double> times) {
+  std::vector<scene::PoseFrame3> frames;
+  frames.reserve(times.size());
+  for (double t : times) frames.push_back({t, motion.pose3_at(t)});
+  return frames;
+}
+
 std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, std::span<const double> times,
                         FramesFormat format) {
   const bool csv = format == FramesFormat::csv;
@@ -52,6 +59,10 @@ std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, st
     frames.reserve(times.size());
     for (const double t : times) frames.push_back({t, motion.point_at(t)});
     return csv ? scene::point_frames_to_csv(frames) : scene::point_frames_to_json(panel.method_name, frames, chain);
+  }
+  if (motion.in_space()) {
+    const std::vector<scene::PoseFrame3> frames = sample_poses3(motion, times);
+    return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
   }
   if (motion.kind() == scene::SceneKind::poses) {
     const std::vector<PoseFrame> frames = sample_poses(motion, times);

@@ -33,6 +33,7 @@ using PoseFrame = scene::PoseFrame;
 // extrapolate). Throw NoMotion as SceneMotion does.
 std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const double> times);
 std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times);
+std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::span<const double> times);
 
 enum class FramesFormat { json, csv };
 

@@ -103,7 +103,17 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
     for (const TimedPoint& point : panel.points) motion.knots_.push_back(point.t);
     return motion;
   }
-  if (poses) {
+  if (poses && panel.dimension == 3) {
+    motion.method_id_ = std::string(info(panel.pose_method).id);
+    try {
+      motion.poses3_ = std::make_shared<const PoseMotion3>(panel.pose_method, panel.poses3, panel.subdivisions);
+    } catch (const NoSamBetweenPoses& error) {
+      throw NoMotion(motion.file_, motion.pointer_, scene::no_sam_reason(error, panel.pose_method));
+    } catch (const std::invalid_argument& error) {
+      throw NoMotion(motion.file_, motion.pointer_, error.what());
+    }
+    for (const TimedPose3& pose : panel.poses3) motion.knots_.push_back(pose.t);
+  } else if (poses) {
     motion.method_id_ = std::string(info(panel.pose_method).id);
     if (panel.poses.empty()) {
       throw NoMotion(motion.file_, motion.pointer_, "the panel has no poses to interpolate");
@@ -151,7 +161,14 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   return motion;
 }
 
+void SceneMotion::require_plane() const {
+  if (poses3_) {
+    throw NoMotion(file_, "/dimension", "this is a 3D pose scene: its poses are evaluated by `pita eval`, not drawn");
+  }
+}
+
 std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) const {
+  require_plane();
   if (kind_ == scene::SceneKind::poses) {
     const Point origin = point == scene::TrackedPoint::start ? reference_[0]
                          : point == scene::TrackedPoint::end ? reference_[1]
@@ -165,7 +182,9 @@ SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene,
 
 void check_motions(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {
-    if (scene.kind == scene::SceneKind::arrows || !panel.poses.empty()) (void)build_motion(scene, panel);
+    if (scene.kind == scene::SceneKind::arrows || !panel.poses.empty() || !panel.poses3.empty()) {
+      (void)build_motion(scene, panel);
+    }
   }
 }
 
@@ -215,10 +234,13 @@ Arrow SceneMotion::arrow_at(double t) const {
   return arrow;
 }
 
-Affine2 SceneMotion::pose_at(double t) const {
-  Affine2 pose;
+// A pose motion's pose at scene time t, refused with NoMotion when the
+// method throws or the pose is not finite.
+template <class Motion>
+auto SceneMotion::finite_pose(const Motion& motion, double t) const {
+  decltype(motion.at(0.0)) pose;
   try {
-    pose = poses_->at(warp_(t));
+    pose = motion.at(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }
@@ -231,7 +253,18 @@ Affine2 SceneMotion::pose_at(double t) const {
   return pose;
 }
 
+Affine3 SceneMotion::pose3_at(double t) const {
+  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
+  return finite_pose(*poses3_, t);
+}
+
+Affine2 SceneMotion::pose_at(double t) const {
+  require_plane();
+  return finite_pose(*poses_, t);
+}
+
 Affine2 SceneMotion::pose_velocity(double t) const {
+  require_plane();
   Affine2 rate;
   try {
     rate = poses_->velocity(warp_(t));

@@ -23,6 +23,7 @@
 #include "core/pitas/motion.hpp"
 #include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
+#include "core/sam_family_motion.hpp"
 #include "core/time_warp.hpp"
 #include "motion/no_motion.hpp"
 #include "scene/scene.hpp"
@@ -57,6 +58,10 @@ class SceneMotion {
   // NoMotion when the method is undefined there or its value is not finite.
   Arrow arrow_at(double t) const;
   Affine2 pose_at(double t) const;
+  // 3D pose scenes ("dimension": 3): A(t) in space. pose_at, pose_velocity
+  // and point_path throw NoMotion for them, pose3_at for every other scene.
+  bool in_space() const { return static_cast<bool>(poses3_); }
+  Affine3 pose3_at(double t) const;
   // dA/dt at scene time t (pose scenes), the warp's rate included.
   Affine2 pose_velocity(double t) const;
 
@@ -78,6 +83,9 @@ class SceneMotion {
   friend SceneMotion build_motion(const scene::Scene&);
   SceneMotion() = default;
   [[noreturn]] void undefined(double t, const std::exception& error) const;
+  void require_plane() const;  // NoMotion for a 3D scene
+  template <class Motion>
+  auto finite_pose(const Motion& motion, double t) const;
 
   scene::SceneKind kind_ = scene::SceneKind::arrows;
   std::string method_id_, label_;
@@ -85,6 +93,7 @@ class SceneMotion {
   std::optional<Chain> chain_;
   std::shared_ptr<const Motion> arrows_;
   std::shared_ptr<const PoseMotion> poses_;
+  std::shared_ptr<const PoseMotion3> poses3_;
   std::shared_ptr<const PointCurveMotion> points_;
   TimeWarp warp_;
   std::array<Point, 3> reference_{};  // poses: the reference triangle

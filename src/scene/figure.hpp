@@ -14,6 +14,7 @@
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/point_curves.hpp"
+#include "core/sam_family_motion.hpp"
 #include "core/pose_motion.hpp"
 #include "scene/limits.hpp"
 #include "scene/measure_name.hpp"
@@ -547,6 +548,8 @@ struct Panel {
   std::vector<ShapeOutline> shapes;      // also arrow scenes: carried by the handle
   std::optional<std::vector<PoseLayer>> pose_layers;
   int subdivisions = kDefaultSubdivisions;  // four-point-SAM
+  int dimension = 2;                         // 3: the scene's poses3, no panels of its own
+  std::vector<TimedPose3> poses3;
 
   // "timing": the scene's unless the panel gives its own.
   Timing timing;

@@ -96,7 +96,8 @@ std::string point_frames_to_csv(std::span<const PointFrame> frames) {
 
 namespace {
 
-void require_finite(const PoseFrame& frame) {
+template <class Frame>
+void require_finite(const Frame& frame) {
   if (!std::isfinite(frame.t) || !frame.pose.L.allFinite() || !frame.pose.b.allFinite()) {
     throw std::invalid_argument(fmt::format("frame at t = {} is not finite", frame.t));
   }
@@ -127,6 +128,41 @@ std::string pose_frames_to_csv(std::span<const PoseFrame> frames) {
     const Affine2& A = frame.pose;
     text += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", frame.t,
                         A.L(0, 0), A.L(0, 1), A.b(0), A.L(1, 0), A.L(1, 1), A.b(1));
+  }
+  return text;
+}
+
+// The rows of a 3D pose: [a, b, c, tx] and so on.
+static std::string pose_rows3(const Affine3& A) {
+  std::string text = "[";
+  for (int row = 0; row < 3; ++row) {
+    text += fmt::format("{}[{}, {}, {}, {}]", row == 0 ? "" : ", ", json_number(A.L(row, 0)), json_number(A.L(row, 1)),
+                        json_number(A.L(row, 2)), json_number(A.b(row)));
+  }
+  return text + "]";
+}
+
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame3> frames) {
+  std::string text = "{\"method\": " + Json(std::string(method_id)).dump() + ", \"frames\": [";
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    require_finite(frames[i]);
+    text += i == 0 ? "\n  " : ",\n  ";
+    text += "{\"t\": " + json_number(frames[i].t) + ", \"matrix\": " + pose_rows3(frames[i].pose) + "}";
+  }
+  text += frames.empty() ? "]}\n" : "\n]}\n";
+  return text;
+}
+
+std::string pose_frames_to_csv(std::span<const PoseFrame3> frames) {
+  std::string text = "t,a,b,c,tx,d,e,f,ty,g,h,i,tz\n";
+  for (const PoseFrame3& frame : frames) {
+    require_finite(frame);
+    text += fmt::format("{:.17g}", frame.t);
+    for (int row = 0; row < 3; ++row) {
+      text += fmt::format(",{:.17g},{:.17g},{:.17g},{:.17g}", frame.pose.L(row, 0), frame.pose.L(row, 1),
+                          frame.pose.L(row, 2), frame.pose.b(row));
+    }
+    text += "\n";
   }
   return text;
 }

@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "core/affine2.hpp"
+#include "core/affine3.hpp"
 #include "core/arrow.hpp"
 
 namespace pita::scene {
@@ -58,5 +59,21 @@ std::string pose_frames_to_json(std::string_view method_id, std::span<const Pose
 
 // The header "t,a,b,tx,c,d,ty", then one line per frame ("{:.17g}").
 std::string pose_frames_to_csv(std::span<const PoseFrame> frames);
+
+// The pose A(t) of a 3D pose scene's motion at time t.
+struct PoseFrame3 {
+  double t = 0.0;
+  Affine3 pose;
+};
+
+// {"method": "SAM", "frames": [
+//   {"t": 0.0, "matrix": [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]]},
+//   ...
+// ]}
+// (x -> [[a, b, c], [d, e, f], [g, h, i]] x + [tx, ty, tz]), as for 2D.
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame3> frames);
+
+// The header "t,a,b,c,tx,d,e,f,ty,g,h,i,tz", then one line per frame.
+std::string pose_frames_to_csv(std::span<const PoseFrame3> frames);
 
 }  // namespace pita::scene

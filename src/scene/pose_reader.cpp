@@ -17,15 +17,6 @@ constexpr std::array<std::string_view, 7> kShapeKinds = {"polygon", "polyline", 
                                                          "image",   "box",      "color"};
 constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square", "picture"};
 
-double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
-  const double x = reader.number(value, pointer);
-  if (std::abs(x) > kMaxKeyframeValue) {
-    reader.fail(pointer, fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue,
-                                     number_text(x)));
-  }
-  return x;
-}
-
 Point bounded_point(const JsonReader& reader, const Json& value, const std::string& pointer) {
   const Point p = reader.point(value, pointer);
   for (int axis = 0; axis < 2; ++axis) {
@@ -103,6 +94,15 @@ Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::stri
 }
 
 }  // namespace
+
+double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const double x = reader.number(value, pointer);
+  if (std::abs(x) > kMaxKeyframeValue) {
+    reader.fail(pointer, fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue,
+                                     number_text(x)));
+  }
+  return x;
+}
 
 std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
                                              const std::string& pointer) {

@@ -13,6 +13,9 @@
 
 namespace pita::scene::detail {
 
+// A number of a pose or point: within +-kMaxKeyframeValue.
+double bounded(const JsonReader& reader, const Json& value, const std::string& pointer);
+
 // "reference_triangle": three points, not collinear.
 std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
                                              const std::string& pointer);

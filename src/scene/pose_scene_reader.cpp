@@ -12,15 +12,16 @@
 #include "scene/animation_reader.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
+#include "scene/space_pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 15> kPoseSceneFields = {
+constexpr std::array<std::string_view, 16> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
     "samples", "title",       "canvas", "layers", "panels",             "golden",
-    "subdivisions", "timing", "animation"};
+    "subdivisions", "timing", "animation", "dimension"};
 
 }  // namespace
 
@@ -35,6 +36,7 @@ bool needs_motion(const std::vector<PoseLayer>& layers) {
 // A pose scene has "poses", or a pose method such as "SAM".
 bool is_pose_scene(const Json& document) {
   if (JsonReader::member(document, "poses") != nullptr) return true;
+  if (JsonReader::member(document, "dimension") != nullptr) return true;
   const Json* method = JsonReader::member(document, "method");
   return method != nullptr && method->is_string() &&
          find_method_entry(method->get<std::string>(), MotionKind::poses) != nullptr &&
@@ -43,6 +45,10 @@ bool is_pose_scene(const Json& document) {
 
 
 Scene read_pose_scene(const JsonReader& reader, const Json& document) {
+  // "dimension": 2 (the default) or 3 (space_pose_reader.hpp).
+  if (const Json* dimension = JsonReader::member(document, "dimension")) {
+    if (reader.integer(*dimension, "/dimension", 2, 3) == 3) return read_space_pose_scene(reader, document);
+  }
   reader.check_fields(document, "", kPoseSceneFields);
   Scene scene;
   scene.kind = SceneKind::poses;

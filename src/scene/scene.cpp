@@ -46,6 +46,8 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.points = scene.points;
   panel.pose_method = scene.pose_method;
   panel.poses = scene.poses;
+  panel.dimension = scene.dimension;
+  panel.poses3 = scene.poses3;
   panel.shapes = scene.shapes;
   panel.subdivisions = scene.subdivisions;
   panel.timing = scene.timing;
@@ -127,12 +129,17 @@ Scene with_pose_method(Scene scene, PoseMethod method) {
                                  info(method).id));
   }
   const PoseMethodInfo& about = info(method);
-  if (scene.poses.empty()) {
+  if (scene.dimension == 3 && !about.in_space) {
+    throw SceneError(scene.path, "/dimension",
+                     fmt::format("method {} moves poses of the plane only; this is a 3D scene", about.id));
+  }
+  const std::size_t given = scene.dimension == 3 ? scene.poses3.size() : scene.poses.size();
+  if (given == 0) {
     throw SceneError(scene.path, "/poses", "the scene has no poses to interpolate");
   }
-  const auto count = static_cast<int>(scene.poses.size());
+  const auto count = static_cast<int>(given);
   if (count < about.min_poses || count > about.max_poses) {
-    throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, scene.poses.size()));
+    throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, given));
   }
   scene.pose_method = method;
   scene.method_name = std::string(about.id);

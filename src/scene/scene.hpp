@@ -15,6 +15,7 @@
 
 #include "core/keyframe.hpp"
 #include "core/pitas/registry.hpp"
+#include "core/sam_family_motion.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
 #include "scene/read_options.hpp"
@@ -62,6 +63,13 @@ struct Scene {
   std::vector<ShapeOutline> shapes;        // default: the reference triangle (arrow scenes: none)
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
   int subdivisions = kDefaultSubdivisions; // four-point-SAM: steps, [0, kMaxSubdivisions]
+  // "dimension": 3 (README "3D pose scenes"): poses of space, interpolated by
+  // the SAM family in 3D (PoseMotion3); `poses` is then empty and the scene
+  // is read only when ReadOptions::allow_space (pita eval).
+  int dimension = 2;
+  std::vector<TimedPose3> poses3;
+  std::array<Eigen::Vector3d, 4> reference_tetrahedron{Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0),
+                                                       Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)};
 
   // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores it.
   std::string title;                // "" = none; drawn above the panels

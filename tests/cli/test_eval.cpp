@@ -10,7 +10,11 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+#include <unsupported/Eigen/MatrixFunctions>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "run_pita.hpp"
 
@@ -316,6 +320,79 @@ TEST_F(Eval, ClosedPipeIsExitThreeWithAMessage) {
   EXPECT_EQ(WEXITSTATUS(status), 3);
   EXPECT_EQ(read_file(err_path).rfind("pita: cannot write the frames to standard output", 0), 0u)
       << read_file(err_path);
+}
+
+// 3D pose scenes through the binary: the CSV of `pita eval` against an
+// independent fractional power, Eigen's Schur-Pade pow of the 4x4 homogeneous
+// matrix C B^-1 in long double: A(t) = (C B^-1)^u B on each span.
+using Matrix4L = Eigen::Matrix<long double, 4, 4>;
+
+Matrix4L homogeneous_of(const std::vector<double>& rows) {  // a b c tx d e f ty g h i tz
+  Matrix4L H = Matrix4L::Identity();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 4; ++c) H(r, c) = rows[static_cast<std::size_t>(4 * r + c)];
+  }
+  return H;
+}
+
+std::string matrix_json(const std::vector<double>& rows) {
+  return fmt::format("[[{}, {}, {}, {}], [{}, {}, {}, {}], [{}, {}, {}, {}]]", rows[0], rows[1], rows[2], rows[3],
+                     rows[4], rows[5], rows[6], rows[7], rows[8], rows[9], rows[10], rows[11]);
+}
+
+TEST_F(Eval, SpacePosesMatchAnIndependentMatrixPower) {
+  // A stretch by 40 beside a turn, a shear, and a screw-like pose: three poses, two spans.
+  const std::vector<std::vector<double>> poses = {
+      {1.0, 0.2, 0.0, 0.5, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0, 0.0},
+      {0.3, -2.0, 0.4, 3.0, 1.5, 0.2, -0.3, 1.0, 0.1, 0.5, 40.0, -2.0},
+      {-0.6, -0.8, 0.0, 1.0, 0.8, -0.6, 0.0, 4.0, 0.0, 0.0, 2.5, 7.0},
+  };
+  const std::vector<double> knots = {0.0, 0.7, 2.0};
+  std::string scene = R"({"dimension": 3, "method": "polySAM", "poses": [)";
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    scene += fmt::format(R"({}{{"t": {}, "matrix": {}}})", i == 0 ? "" : ", ", knots[i], matrix_json(poses[i]));
+  }
+  dir.write("space.json", scene + "]}");
+  const RunResult result = run({"eval", "space.json", "--format", "csv", "--t", "-0.4,0,0.13,0.5,0.7,1.1,1.9,2,2.6"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::istringstream lines(result.out);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "t,a,b,c,tx,d,e,f,ty,g,h,i,tz");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    std::vector<double> values;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) values.push_back(std::stod(field));
+    ASSERT_EQ(values.size(), 13u) << line;
+    const double t = values[0];
+    const std::size_t span = t < knots[1] ? 0 : 1;
+    const long double u = (t - knots[span]) / (knots[span + 1] - knots[span]);
+    const Matrix4L B = homogeneous_of(poses[span]), C = homogeneous_of(poses[span + 1]);
+    const Matrix4L relative = C * B.inverse();
+    const Matrix4L expected = Matrix4L(relative.pow(u)) * B;
+    const Matrix4L got = homogeneous_of(std::vector<double>(values.begin() + 1, values.end()));
+    EXPECT_LE(static_cast<double>((got - expected).norm() / expected.norm()), 1e-12) << "t = " << t;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 9);
+}
+
+TEST_F(Eval, SpaceSceneWithoutASamExitsTwo) {
+  dir.write("space.json", R"({"dimension": 3, "method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+    {"t": 1, "matrix": [[-1, 0, 0, 0], [0, -3, 0, 0], [0, 0, 1, 0]]}]})");
+  const RunResult result = run({"eval", "space.json"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_NE(result.err.find("space.json: /poses: no SAM exists between these poses"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("-3"), std::string::npos) << result.err;  // the eigenvalues are named
+  // The commands that draw refuse 3D scenes for now, naming /dimension.
+  const RunResult render = run({"render", "space.json", "-o", "out"});
+  EXPECT_EQ(render.exit_code, 2);
+  EXPECT_NE(render.err.find("space.json: /dimension: 3D pose scenes are evaluated by `pita eval` only"),
+            std::string::npos)
+      << render.err;
 }
 
 }  // namespace

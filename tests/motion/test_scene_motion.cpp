@@ -216,5 +216,33 @@ TEST(SceneMotion, NonFiniteFramesAreNoMotionNotNaN) {
   }
 }
 
+// 3D pose scenes: the stage builds PoseMotion3 once; pose3_at is its pose,
+// and the plane's verbs refuse the motion with NoMotion at /dimension.
+TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
+  scene::ReadOptions options;
+  options.allow_space = true;
+  const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
+      {"t": 1, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 3, "matrix": [[4, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
+                                                "s.json", options);
+  const SceneMotion motion = build_motion(scene);
+  ASSERT_TRUE(motion.in_space());
+  EXPECT_EQ(motion.knots(), (std::vector<double>{1.0, 3.0}));
+  // x -> 4x + 3 is a scaling by 4 about x = -1; half way it scales by 2 about it.
+  const Affine3 half = motion.pose3_at(2.0);
+  EXPECT_NEAR(half.L(0, 0), 2.0, 1e-15);
+  EXPECT_NEAR(half.b(0), 1.0, 1e-15);
+  EXPECT_EQ(half.L(1, 1), 1.0);
+  try {
+    (void)motion.pose_at(2.0);
+    ADD_FAILURE() << "no error";
+  } catch (const NoMotion& error) {
+    EXPECT_NE(std::string(error.what()).find("/dimension"), std::string::npos) << error.what();
+  }
+  const std::vector<double> times = {1.0, 2.0};
+  EXPECT_EQ(sample_poses3(motion, times).size(), 2u);
+  EXPECT_NE(frames_text(scene.panels[0], motion, times, FramesFormat::csv).find("t,a,b,c,tx"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace pita::motion

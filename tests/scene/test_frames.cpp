@@ -87,5 +87,33 @@ TEST(Frames, NonFiniteFramesAreRefused) {
   }
 }
 
+// 3D poses: the rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz] of x -> L x + b.
+PoseFrame3 space_frame() {
+  PoseFrame3 frame;
+  frame.t = 0.25;
+  frame.pose.L << 1, 2, 3, 4, 5, 6, 7, 8, 9.5;
+  frame.pose.b << -1, -2, 0.1;
+  return frame;
+}
+
+TEST(SpacePoseFrames, ExactJsonAndCsv) {
+  const std::vector<PoseFrame3> frames = {space_frame()};
+  EXPECT_EQ(pose_frames_to_json("SAM", frames),
+            "{\"method\": \"SAM\", \"frames\": [\n"
+            "  {\"t\": 0.25, \"matrix\": [[1.0, 2.0, 3.0, -1.0], [4.0, 5.0, 6.0, -2.0], [7.0, 8.0, 9.5, 0.1]]}\n"
+            "]}\n");
+  EXPECT_EQ(pose_frames_to_csv(frames),
+            "t,a,b,c,tx,d,e,f,ty,g,h,i,tz\n"
+            "0.25,1,2,3,-1,4,5,6,-2,7,8,9.5,0.10000000000000001\n");
+}
+
+TEST(SpacePoseFrames, RefuseNonFiniteFrames) {
+  PoseFrame3 frame = space_frame();
+  frame.pose.L(2, 1) = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<PoseFrame3> frames = {frame};
+  EXPECT_THROW(pose_frames_to_json("SAM", frames), std::invalid_argument);
+  EXPECT_THROW(pose_frames_to_csv(frames), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pita::scene

@@ -61,7 +61,10 @@ TEST(SceneSchema, IsJsonSchemaDraft07) {
   EXPECT_EQ(schema.at("type"), "object");
   // Pose scenes (with "poses", or a pose method and no "keyframes") and arrow
   // scenes each have their schema; the other branch's errors never show.
-  EXPECT_EQ(schema.at("then").at("$ref"), "#/definitions/poseScene");
+  // Among pose scenes, "dimension": 3 selects the 3D ones.
+  EXPECT_EQ(schema.at("then").at("then").at("$ref"), "#/definitions/spacePoseScene");
+  EXPECT_EQ(schema.at("then").at("else").at("$ref"), "#/definitions/poseScene");
+  EXPECT_EQ(schema.at("definitions").at("spacePoseScene").at("additionalProperties"), false);
   EXPECT_EQ(schema.at("else").at("$ref"), "#/definitions/arrowScene");
   EXPECT_EQ(schema.at("definitions").at("arrowScene").at("additionalProperties"), false);
   EXPECT_EQ(schema.at("definitions").at("poseScene").at("additionalProperties"), false);
@@ -177,7 +180,11 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(scene.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
                                    "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden", "subdivisions", "timing", "animation"}));
+                                   "golden", "subdivisions", "timing", "animation", "dimension"}));
+  // 3D pose scenes (src/scene/space_pose_reader.cpp's kSpaceSceneFields).
+  EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
+            (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
+                                   "reference_tetrahedron", "samples", "subdivisions", "golden"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),

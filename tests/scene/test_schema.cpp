@@ -681,5 +681,60 @@ TEST(SceneSchemaValidation, OptionNamesMatchTheParser) {
   EXPECT_EQ(MethodOptions{}.anchor, kAnchors[0]);
 }
 
+// 3D pose scenes ("dimension": 3): the schema's spacePoseScene and the
+// parser as pita eval runs it (ReadOptions::allow_space; every other command
+// refuses them at /dimension). The method pattern accepts exactly the pose
+// methods the table marks in_space.
+std::string space_scene(const std::string& method, const std::string& second_pose,
+                        const std::string& extra = "") {
+  return R"({"dimension": 3, "method": ")" + method + R"(", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}, )" + second_pose + "]" + extra + "}";
+}
+
+const std::string kSpacePose = R"({"t": 1, "matrix": [[0, -1, 0, 1], [1, 0, 0, 0], [0, 0, 1, 2]]})";
+
+std::string space_error_pointer(const std::string& text) {
+  ReadOptions options;
+  options.allow_space = true;
+  try {
+    parse_scene(text, "s.json", options);
+  } catch (const SceneError& error) {
+    return error.pointer();
+  }
+  return "(no error)";
+}
+
+TEST(SceneSchemaValidation, SpaceScenesAgreeWithTheParser) {
+  for (const PoseMethodInfo& entry : all_pose_methods()) {
+    if (entry.min_poses > 2) continue;  // two poses below
+    const std::string text = space_scene(std::string(entry.id), kSpacePose);
+    const nlohmann::json document = nlohmann::json::parse(text);
+    EXPECT_EQ(validate(document).valid, entry.in_space) << entry.id;
+    EXPECT_EQ(space_error_pointer(text) == "(no error)", entry.in_space) << entry.id;
+  }
+  const std::string good = space_scene(
+      "SAM", R"({"t": 1, "tetrahedron": [[1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 0, 1]]})",
+      R"(, "reference_tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "samples": 5)");
+  EXPECT_EQ(schema_errors(nlohmann::json::parse(good)), "");
+  EXPECT_EQ(space_error_pointer(good), "(no error)");
+  EXPECT_EQ(error_pointer(good), "/dimension");  // the commands that draw refuse it
+
+  const std::vector<BadScene> bad = {
+      {"2D matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]})"), "/poses/1/matrix"},
+      {"triangle", space_scene("SAM", R"({"t": 1, "triangle": [[0, 0], [1, 0], [0, 1]]})"), "/poses/1/triangle"},
+      {"3x3 matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"),
+       "/poses/1/matrix"},
+      {"tetrahedron of three points", space_scene("SAM", R"({"t": 1, "tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]})"),
+       "/poses/1/tetrahedron"},
+      {"dimension 4", R"({"dimension": 4, "method": "SAM", "poses": []})", "/dimension"},
+      {"reference triangle in space", space_scene("SAM", kSpacePose, R"(, "reference_triangle": [[0, 0], [1, 0], [0, 1]])"),
+       "/reference_triangle"},
+  };
+  for (const BadScene& scene : bad) {
+    EXPECT_FALSE(validate(nlohmann::json::parse(scene.text)).valid) << scene.what;
+    EXPECT_EQ(space_error_pointer(scene.text), scene.pointer) << scene.what;
+  }
+}
+
 }  // namespace
 }  // namespace pita::scene

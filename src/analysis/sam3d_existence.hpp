@@ -1,0 +1,79 @@
+// Where a SAM exists in 3D: the experiment of the SAM paper's Sec. 5.2. Axes
+// through the vertices of an icosahedron subdivided twice; for each, the
+// rotations by angles in [-theta, theta]; each entry of their matrix L
+// perturbed by -p, 0 or +p in all 3^9 combinations; does every such L have a
+// real logarithm (a SAM, Culver's condition)? For each theta: the largest p
+// for which it does (docs/paper-notes.md N59).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace pita::analysis {
+
+// Whether L has a real logarithm (Culver, Sec. 5.1): det L > 0 and no
+// negative real eigenvalue of odd multiplicity, nor one in a Jordan block.
+// The eigenvalues come from the closed-form cubic; only a negative pair equal
+// to rounding (a rotation by pi) asks the exact test of EAR in 3D.
+bool has_real_logarithm(const Eigen::Matrix3d& L);
+
+// Unit vectors through the vertices of an icosahedron subdivided
+// `subdivisions` times (each edge halved, the midpoints pushed onto the unit
+// sphere), one per antipodal pair: rotations by [-theta, theta] about u and
+// about -u are the same set. 6, 21, 81, 321, ... axes.
+std::vector<Eigen::Vector3d> icosphere_axes(int subdivisions);
+
+inline constexpr int kMaxExistenceSubdivisions = 4;
+inline constexpr int kMaxExistenceAngles = 1001;
+
+struct Sam3dExistenceOptions {
+  int subdivisions = 2;  // of the icosahedron
+  int angles = 17;       // rotation angles per axis, evenly spaced over [-theta, theta]
+  double p_step = 0.01;  // the grid of p searched (the paper gives two decimals)
+  double p_max = 1.0;    // the largest p tried
+  unsigned jobs = 0;     // threads (0: one per core), parallel over axes
+};
+
+// A configuration without a SAM: the axis, the angle, the signs of the
+// perturbation (row-major, each -1, 0 or +1) and p.
+struct NoSamConfiguration {
+  Eigen::Vector3d axis;
+  double angle = 0.0;
+  Eigen::Matrix3d signs;
+  double p = 0.0;
+};
+
+// The first configuration found at (theta, p) without a SAM, or nullopt when
+// all of them have one. Parallel over axes; the threads stop at the first
+// found.
+std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3dExistenceOptions& options);
+
+struct SafePerturbation {
+  double theta = 0.0;
+  double largest_p = 0.0;                       // on the grid; 0 when p_step itself fails
+  std::optional<NoSamConfiguration> at_next;    // what fails one step above (nullopt: p_max passes)
+  std::uint64_t matrices_checked = 0;           // per (theta, p) test: axes x angles x 3^9
+};
+
+// The largest p on the grid (multiples of p_step up to p_max) such that every
+// configuration has a SAM, by bisection: assumes that a p that fails makes
+// every larger one fail (N59 says why and how it was checked).
+// `progress`, when given, is called with the fraction of the search done.
+SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOptions& options,
+                                           const std::function<void(double)>& progress = {});
+
+// The paper's stated bounds (Sec. 5.2): theta < 2 pi / 3: p < 0.29; theta <
+// pi / 2: p < 0.33; theta < pi / 4: p < 0.50.
+struct PaperExistenceBound {
+  double theta;
+  double p;
+  const char* theta_text;
+};
+std::span<const PaperExistenceBound> paper_existence_bounds();
+
+}  // namespace pita::analysis

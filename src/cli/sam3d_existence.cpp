@@ -1,0 +1,187 @@
+#include "cli/sam3d_existence.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <stdexcept>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analysis/sam3d_existence.hpp"
+#include "animate/progress.hpp"
+#include "cli/failure.hpp"
+
+namespace pita::cli {
+
+namespace {
+
+constexpr const char* kFooter = R"(
+The SAM paper's Sec. 5.2 experiment: axes through the vertices of an icosahedron
+subdivided --subdivisions times (one per antipodal pair: 81 for 2); for each, rotations
+by --angles angles evenly spaced over [-theta, theta]; every entry of their matrix L
+perturbed by -p, 0 or +p in all 3^9 combinations; does every such L have a real
+logarithm (a SAM; Culver's condition)? For each theta, the largest p (on a grid of
+--step) for which it does, found by bisection, beside the paper's stated bound, and one
+configuration without a SAM one step above. Without --theta, the paper's three angles.
+With --p, only that p is checked.
+
+Examples:
+  pita audit sam3d-existence
+  pita audit sam3d-existence --theta 2pi/3 --angles 33
+  pita audit sam3d-existence --theta pi/2 --p 0.3
+
+Exit codes: 0 success (whatever the bounds are), 2 bad usage.)";
+
+std::string matrix_text(const Eigen::Matrix3d& M) {
+  return fmt::format("[[{:g}, {:g}, {:g}], [{:g}, {:g}, {:g}], [{:g}, {:g}, {:g}]]", M(0, 0), M(0, 1), M(0, 2),
+                     M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1), M(2, 2));
+}
+
+std::string configuration_text(const analysis::NoSamConfiguration& c) {
+  return fmt::format("axis [{:.4f}, {:.4f}, {:.4f}], angle {:.4f}, p {:g}, signs {}", c.axis.x(), c.axis.y(),
+                     c.axis.z(), c.angle, c.p, matrix_text(c.signs));
+}
+
+}  // namespace
+
+double parse_angle(const std::string& text) {
+  const auto fail = [&text]() -> double {
+    throw std::invalid_argument(
+        fmt::format("\"{}\" is not an angle (radians, or a multiple of pi such as 2pi/3)", text));
+  };
+  // The whole of `part` as a finite real.
+  const auto real = [&fail](std::string_view part) {
+    const std::string digits(part);
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(digits, &used);
+    } catch (const std::exception&) {
+      return fail();
+    }
+    return used == digits.size() && std::isfinite(value) ? value : fail();
+  };
+  std::string_view s = text;
+  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+  if (s.empty()) return fail();
+  const std::size_t pi = s.find("pi");
+  if (pi == std::string_view::npos) return real(s);
+  const std::string_view prefix = s.substr(0, pi), rest = s.substr(pi + 2);
+  const double factor = prefix.empty() ? 1.0 : prefix == "-" ? -1.0 : real(prefix);
+  double divisor = 1.0;
+  if (!rest.empty()) {
+    if (rest.front() != '/') return fail();
+    divisor = real(rest.substr(1));
+    if (!(divisor > 0.0)) return fail();
+  }
+  return factor * std::numbers::pi / divisor;
+}
+
+std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit) {
+  auto options = std::make_shared<Sam3dExistenceCliOptions>();
+  CLI::App* command = audit.add_subcommand(
+      "sam3d-existence", "Where a SAM exists in 3D: the largest safe perturbation p against theta (SAM Sec. 5.2)");
+  options->command = command;
+  command->footer(kFooter);
+  command->add_option("--subdivisions", options->subdivisions, "Subdivisions of the icosahedron")
+      ->check(CLI::Range(0, analysis::kMaxExistenceSubdivisions))
+      ->type_name("N")
+      ->capture_default_str();
+  command->add_option("--angles", options->angles, "Rotation angles per axis over [-theta, theta]")
+      ->check(CLI::Range(1, analysis::kMaxExistenceAngles))
+      ->type_name("N")
+      ->capture_default_str();
+  command->add_option_function<std::string>(
+             "--theta", [options](const std::string& text) { options->theta = text; },
+             "The largest rotation angle (radians, or 2pi/3, pi/2, ...); default: the paper's three")
+      ->type_name("T");
+  command->add_option_function<double>(
+             "--p", [options](double p) { options->p = p; }, "Check only this perturbation")
+      ->check(CLI::Range(0.0, 10.0))
+      ->type_name("P");
+  command->add_option("--step", options->step, "The grid of p searched")
+      ->check(CLI::Range(1e-4, 1.0))
+      ->type_name("S")
+      ->capture_default_str();
+  command->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
+      ->check(CLI::Range(1, 1024))
+      ->type_name("J");
+  command->add_flag("-q,--quiet", options->quiet, "No progress bar");
+  return options;
+}
+
+ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
+  std::vector<double> thetas;
+  std::vector<std::string> theta_texts;
+  if (options.theta) {
+    double theta = 0.0;
+    try {
+      theta = parse_angle(*options.theta);
+    } catch (const std::invalid_argument& error) {
+      std::cerr << "pita: audit sam3d-existence: --theta: " << error.what() << '\n';
+      return ExitCode::bad_input;
+    }
+    if (!(theta >= 0.0 && theta <= std::numbers::pi)) {
+      std::cerr << "pita: audit sam3d-existence: --theta: must be between 0 and pi (got " << *options.theta
+                << ")\n";
+      return ExitCode::bad_input;
+    }
+    thetas.push_back(theta);
+    theta_texts.push_back(*options.theta);
+  } else {
+    for (const analysis::PaperExistenceBound& bound : analysis::paper_existence_bounds()) {
+      thetas.push_back(bound.theta);
+      theta_texts.emplace_back(bound.theta_text);
+    }
+  }
+  analysis::Sam3dExistenceOptions search;
+  search.subdivisions = options.subdivisions;
+  search.angles = options.angles;
+  search.p_step = options.step;
+  search.jobs = static_cast<unsigned>(options.jobs);
+  const std::size_t axes = analysis::icosphere_axes(search.subdivisions).size();
+  const auto start = std::chrono::steady_clock::now();
+  std::string text = fmt::format(
+      "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), {} angles over "
+      "[-theta, theta], 3^9 perturbations each: {} matrices per (theta, p)\n\n",
+      axes, search.subdivisions, search.angles, axes * static_cast<std::size_t>(search.angles) * 19683);
+  if (options.p) {
+    text += "| theta | p | every configuration has a SAM | a configuration without one |\n|---|---|---|---|\n";
+    for (std::size_t i = 0; i < thetas.size(); ++i) {
+      const auto failure = analysis::find_no_sam(thetas[i], *options.p, search);
+      text += fmt::format("| {} ({:.4f}) | {:g} | {} | {} |\n", theta_texts[i], thetas[i], *options.p,
+                          failure ? "no" : "yes", failure ? configuration_text(*failure) : "");
+    }
+  } else {
+    text += "| theta | largest safe p (ours) | paper's bound | | fails one step above at |\n|---|---|---|---|---|\n";
+    animate::Progress progress("sam3d-existence", static_cast<int>(thetas.size() * 100), !options.quiet);
+    for (std::size_t i = 0; i < thetas.size(); ++i) {
+      const analysis::SafePerturbation safe = analysis::largest_safe_perturbation(
+          thetas[i], search, [&](double fraction) { progress.update(static_cast<int>(100.0 * (static_cast<double>(i) + fraction))); });
+      std::string paper = "(none stated)", verdict;
+      for (const analysis::PaperExistenceBound& bound : analysis::paper_existence_bounds()) {
+        if (std::abs(bound.theta - thetas[i]) > 1e-12) continue;
+        paper = fmt::format("{:.2f}", bound.p);
+        verdict = std::abs(bound.p - safe.largest_p) <= search.p_step + 1e-12 ? "agrees"
+                                                                             : "differs: we keep our measurement";
+      }
+      text += fmt::format("| {} ({:.4f}) | {:.{}f} | {} | {} | {} |\n", theta_texts[i], thetas[i], safe.largest_p,
+                          search.p_step >= 0.01 ? 2 : 4, paper, verdict,
+                          safe.at_next ? configuration_text(*safe.at_next) : "(none up to p = 1)");
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+    std::cerr << "pita: cannot write the table to standard output\n";
+    return ExitCode::failure;
+  }
+  std::cerr << fmt::format("pita: audit sam3d-existence took {:.1f} s\n", seconds);
+  return ExitCode::success;
+}
+
+}  // namespace pita::cli

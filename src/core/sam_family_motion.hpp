@@ -1,0 +1,59 @@
+// The SAM family of pose motions (SAM paper Sec. 5.3, 7.3), in the plane and
+// in space alike: the SAM, the polySAM, the Bezier SAM, the SAM bi-arc, the
+// four-point polySAM, and linear interpolation of the matrices, over timed
+// poses of type Affine2 or Affine3 (instantiated for both in
+// sam_family_motion.cpp). The plane's PoseMotion (pose_motion.hpp) adds the
+// 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes use PoseMotion3.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/affine2.hpp"
+#include "core/affine3.hpp"
+#include "core/pose_method.hpp"
+#include "core/sam_splines.hpp"
+
+namespace pita {
+
+// Throws std::invalid_argument unless there are as many poses as `method`
+// takes and their knots strictly increase.
+template <class Pose>
+void check_poses(PoseMethod method, const std::vector<TimedPoseOf<Pose>>& poses);
+
+// The motion through the poses, for the methods with PoseMethodInfo::in_space
+// (SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM): every
+// promise of PoseMotion (pose_motion.hpp) about errors and times holds here.
+template <class Pose>
+class SamFamilyMotion {
+ public:
+  using Timed = TimedPoseOf<Pose>;
+
+  // Throws std::invalid_argument for another method, a wrong number of poses,
+  // knots that do not increase; NoSamBetweenPoses as PoseMotion does.
+  SamFamilyMotion(PoseMethod method, std::vector<Timed> poses, int subdivisions = kDefaultSubdivisions);
+
+  Pose at(double t) const;
+  // dA/dt as an affinity-shaped pair (dL/dt, db/dt); see PoseMotion::velocity.
+  Pose velocity(double t) const;
+
+  PoseMethod method() const { return method_; }
+  const std::vector<Timed>& poses() const { return poses_; }
+
+ private:
+  double bezier_parameter(double t) const;
+  std::size_t span_of(double t) const;  // outgoing span at interior knots
+
+  PoseMethod method_;
+  std::vector<Timed> poses_;
+  std::vector<Timed> span_poses_;         // the polySAM's poses (SAM, polySAM, linear, four-point)
+  std::vector<SteadyMorph<Pose>> spans_;  // between span_poses_
+  std::optional<SamBiarcOf<Pose>> biarc_;
+};
+
+using TimedPose3 = TimedPoseOf<Affine3>;
+// The motions of 3D pose scenes ("dimension": 3).
+using PoseMotion3 = SamFamilyMotion<Affine3>;
+
+}  // namespace pita

@@ -1,0 +1,143 @@
+// The 3D existence experiment (src/analysis/sam3d_existence.cpp, SAM paper
+// Sec. 5.2): the existence test against EAR in 3D and against Eigen's general
+// eigensolver, the icosahedron's axes, and the bound the search finds against
+// a closed form and a brute-force recount with the independent test.
+#include "analysis/sam3d_existence.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <random>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include "core/affine_power3.hpp"
+
+namespace pita::analysis {
+namespace {
+
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+
+constexpr double kPi = std::numbers::pi;
+
+// Independent of the code under test: Eigen's general (Hessenberg-QR)
+// eigenvalues, and Culver for 3x3 away from the measure-zero cases: a real
+// log iff no real eigenvalue is <= 0, or the two negative ones are equal
+// (then it takes a rotation by pi: not sampled below).
+bool eigen_says_real_log(const Matrix3d& L) {
+  const Eigen::Vector3cd values = Eigen::EigenSolver<Matrix3d>(L).eigenvalues();
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(values(i).imag()) <= 1e-12 * L.norm() && values(i).real() <= 0.0) return false;
+  }
+  return true;
+}
+
+TEST(Sam3dExistence, HasRealLogarithmOnTheCasesCulverNames) {
+  EXPECT_TRUE(has_real_logarithm(Matrix3d::Identity()));
+  EXPECT_TRUE(has_real_logarithm(Eigen::AngleAxisd(kPi, Vector3d(1, 2, 3).normalized()).toRotationMatrix()));
+  EXPECT_TRUE(has_real_logarithm(Vector3d(-2.0, -2.0, 0.5).asDiagonal()));   // -2 twice, two eigenvectors
+  EXPECT_FALSE(has_real_logarithm(Vector3d(-1.0, -2.0, 1.0).asDiagonal()));  // two distinct negatives
+  EXPECT_FALSE(has_real_logarithm(Vector3d(-1.0, 2.0, 1.0).asDiagonal()));   // det < 0
+  Matrix3d jordan;
+  jordan << -1, 1, 0, 0, -1, 0, 0, 0, 1;  // a negative Jordan block
+  EXPECT_FALSE(has_real_logarithm(jordan));
+  // I - p J (J all ones) has the eigenvalue 1 - 3p.
+  EXPECT_TRUE(has_real_logarithm(Matrix3d::Identity() - 0.33 * Matrix3d::Ones()));
+  EXPECT_FALSE(has_real_logarithm(Matrix3d::Identity() - 0.34 * Matrix3d::Ones()));
+}
+
+// On random matrices the closed-form test agrees with Eigen's eigensolver
+// and with whether EAR in 3D finds a log.
+TEST(Sam3dExistence, HasRealLogarithmAgreesWithEigenAndWithEar) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> normal;
+  int without = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Matrix3d L;
+    for (int k = 0; k < 9; ++k) {
+      const double x = normal(rng);
+      L(k / 3, k % 3) = x;
+    }
+    const bool ours = has_real_logarithm(L);
+    EXPECT_EQ(ours, eigen_says_real_log(L)) << L;
+    bool ear = true;
+    try {
+      (void)AffinePowers3(Affine3{L, Vector3d::Zero()});
+    } catch (const NoRealLogarithm&) {
+      ear = false;
+    }
+    EXPECT_EQ(ours, ear) << L;
+    without += ours ? 0 : 1;
+  }
+  EXPECT_GT(without, 5000);  // both answers are well represented
+  EXPECT_LT(without, 15000);
+}
+
+TEST(Sam3dExistence, IcosphereAxesAreUnitAndDistinct) {
+  EXPECT_EQ(icosphere_axes(0).size(), 6u);
+  EXPECT_EQ(icosphere_axes(1).size(), 21u);
+  const std::vector<Vector3d> axes = icosphere_axes(2);
+  ASSERT_EQ(axes.size(), 81u);  // 162 vertices, one per antipodal pair
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    EXPECT_NEAR(axes[i].norm(), 1.0, 1e-15);
+    for (std::size_t j = 0; j < i; ++j) EXPECT_LT(std::abs(axes[i].dot(axes[j])), 1.0 - 1e-6) << i << " " << j;
+  }
+}
+
+// The identity (angle 0) perturbed by -p everywhere is I - p J, without a SAM
+// for p > 1/3: no theta can allow more than 0.33 on the grid of 0.01. For
+// theta = pi/4 the search finds exactly that, and a brute-force recount with
+// Eigen's eigensolver agrees at 0.33 and 0.34.
+TEST(Sam3dExistence, QuarterTurnBoundIsTheOneThirdOfTheIdentity) {
+  Sam3dExistenceOptions options;
+  options.subdivisions = 0;
+  options.angles = 5;
+  const SafePerturbation safe = largest_safe_perturbation(kPi / 4.0, options);
+  EXPECT_NEAR(safe.largest_p, 0.33, 1e-12);
+  ASSERT_TRUE(safe.at_next.has_value());
+  EXPECT_NEAR(safe.at_next->p, 0.34, 1e-12);
+
+  const auto brute_force_all = [&](double p) {
+    for (const Vector3d& axis : icosphere_axes(options.subdivisions)) {
+      for (int j = 0; j < options.angles; ++j) {
+        const double angle = -kPi / 4.0 + (kPi / 2.0) * j / (options.angles - 1);
+        const Matrix3d R = Eigen::AngleAxisd(angle, axis).toRotationMatrix();
+        for (int pattern = 0; pattern < 19683; ++pattern) {
+          Matrix3d S;
+          int code = pattern;
+          for (int k = 0; k < 9; ++k, code /= 3) S(k / 3, k % 3) = static_cast<double>(code % 3) - 1.0;
+          if (!eigen_says_real_log(R + p * S)) return false;
+        }
+      }
+    }
+    return true;
+  };
+  EXPECT_TRUE(brute_force_all(0.33));
+  EXPECT_FALSE(brute_force_all(0.34));
+  EXPECT_FALSE(find_no_sam(kPi / 4.0, 0.33, options).has_value());
+}
+
+TEST(Sam3dExistence, FoundConfigurationHasNoSam) {
+  Sam3dExistenceOptions options;
+  options.subdivisions = 1;
+  options.angles = 9;
+  const auto failure = find_no_sam(2.0 * kPi / 3.0, 0.4, options);
+  ASSERT_TRUE(failure.has_value());
+  const Matrix3d L = Eigen::AngleAxisd(failure->angle, failure->axis).toRotationMatrix() + failure->p * failure->signs;
+  EXPECT_FALSE(eigen_says_real_log(L)) << L;
+  EXPECT_LE(std::abs(failure->angle), 2.0 * kPi / 3.0 + 1e-12);
+}
+
+TEST(Sam3dExistence, PaperBoundsAreTheThreeStated) {
+  ASSERT_EQ(paper_existence_bounds().size(), 3u);
+  EXPECT_DOUBLE_EQ(paper_existence_bounds()[0].p, 0.29);
+  EXPECT_DOUBLE_EQ(paper_existence_bounds()[1].p, 0.33);
+  EXPECT_DOUBLE_EQ(paper_existence_bounds()[2].p, 0.50);
+}
+
+}  // namespace
+}  // namespace pita::analysis
