@@ -84,14 +84,6 @@ inline std::vector<BadSceneCase> bad_scene_cases() {
   return cases;
 }
 
-// 3D pose scenes ("dimension": 3) are the cases of the group "space": pita
-// eval reads them (ReadOptions::allow_space) and must give the case's error;
-// the commands that draw refuse every 3D scene at /dimension with this reason
-// before anything else (unless the case's own error is at /dimension).
-inline bool is_space_case(const BadSceneCase& bad) { return bad.name.starts_with("space-"); }
-inline const std::string kSpaceNotDrawnReason =
-    "3D pose scenes are evaluated by `pita eval` only: drawing them (camera, polyhedra) is not built yet";
-
 // The test name of a case: its name with every character other than a
 // letter or a digit replaced by '_'.
 inline std::string bad_scene_test_name(const ::testing::TestParamInfo<BadSceneCase>& info) {

@@ -125,6 +125,7 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.threads = animate::default_threads();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
+    scene::require_plane_scene(scene, "pita animate");
     const animate::Timeline timeline =
         animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {

@@ -227,7 +227,7 @@ marked "3D" above:
   tetrahedron  the images of "reference_tetrahedron" (default the origin and the unit
                points of the axes)
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, c, tx], ...]}, ...]}
-  or CSV with the header t,a,b,c,tx,d,e,f,ty,g,h,i,tz. Only pita eval reads them so far.
+  or CSV with the header t,a,b,c,tx,d,e,f,ty,g,h,i,tz. pita render draws them (README).
 
 Examples:
   pita eval scenes/fig01-eight-pitas.json
@@ -301,9 +301,7 @@ ExitCode run_eval(const EvalOptions& options) {
     std::optional<int> samples;
     if (options.samples) samples = parse_samples(*options.samples);
 
-    scene::ReadOptions read;
-    read.allow_space = true;  // 3D pose scenes: evaluated here, not drawn yet
-    scene::Scene scene = scene::load_scene(options.scene_path, read);
+    scene::Scene scene = scene::load_scene(options.scene_path);
     if (method_override) scene = scene::with_method(std::move(scene), *method_override);
     if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 

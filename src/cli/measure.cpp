@@ -316,6 +316,7 @@ or usage, 3 the report could not be written to standard output, 4 an internal er
 ExitCode run_measure(const MeasureOptions& options) {
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path);
+    scene::require_plane_scene(scene, "pita measure");
     double work = 0.0;
     for (const scene::Panel& panel : scene.panels) work += analysis::measure_cost(panel);
     if (work > scene::kMaxEvalWork) {

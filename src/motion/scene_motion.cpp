@@ -163,7 +163,7 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
 
 void SceneMotion::require_plane() const {
   if (poses3_) {
-    throw NoMotion(file_, "/dimension", "this is a 3D pose scene: its poses are evaluated by `pita eval`, not drawn");
+    throw NoMotion(file_, "/dimension", "this is a 3D pose scene: this command works on poses of the plane only");
   }
 }
 
@@ -256,6 +256,17 @@ auto SceneMotion::finite_pose(const Motion& motion, double t) const {
 Affine3 SceneMotion::pose3_at(double t) const {
   if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
   return finite_pose(*poses3_, t);
+}
+
+Affine3 SceneMotion::pose3_velocity(double t) const {
+  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
+  Affine3 rate;
+  try {
+    rate = poses3_->velocity(t);
+  } catch (const std::exception& error) {
+    undefined(t, error);
+  }
+  return rate;
 }
 
 Affine2 SceneMotion::pose_at(double t) const {

@@ -62,6 +62,7 @@ class SceneMotion {
   // and point_path throw NoMotion for them, pose3_at for every other scene.
   bool in_space() const { return static_cast<bool>(poses3_); }
   Affine3 pose3_at(double t) const;
+  Affine3 pose3_velocity(double t) const;  // dA/dt (3D scenes have no warp)
   // dA/dt at scene time t (pose scenes), the warp's rate included.
   Affine2 pose_velocity(double t) const;
 

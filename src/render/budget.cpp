@@ -131,8 +131,8 @@ class LayerCost {
     const double inserted = l.inserted && panel_.subdivisions > 0
                                 ? std::ldexp(static_cast<double>(panel_.poses.size()), panel_.subdivisions - 1)
                                 : 0.0;
-    add(layer_, "the shapes at the poses",
-        (static_cast<double>(panel_.poses.size()) + inserted) * shapes_units());
+    const double poses = static_cast<double>(panel_.dimension == 3 ? panel_.poses3.size() : panel_.poses.size());
+    add(layer_, "the shapes at the poses", (poses + inserted) * shapes_units());
   }
   void operator()(const scene::VelocitiesLayer& l) {
     frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));
@@ -194,13 +194,26 @@ class LayerCost {
     add(pointer, fmt::format("{} frames of {}", n, what), n * (per_frame + motion::frame_cost(panel_) - 1.0));
   }
 
+  // 3D scenes draw solids: a shape per face, each vertex of each face projected.
   double shape_points() const {
     double points = 0.0;
+    if (panel_.dimension == 3) {
+      for (const scene::Solid& solid : scene_.solids) {
+        points += static_cast<double>(solid.vertices.size());
+        for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
+      }
+      return points;
+    }
     for (const scene::ShapeOutline& shape : panel_.shapes) points += static_cast<double>(shape.points.size());
     return points;
   }
   double shapes_units() const {
-    return static_cast<double>(panel_.shapes.size()) * kShapeUnits + shape_points();
+    double shapes = static_cast<double>(panel_.shapes.size());
+    if (panel_.dimension == 3) {
+      shapes = 0.0;
+      for (const scene::Solid& solid : scene_.solids) shapes += static_cast<double>(solid.faces.size());
+    }
+    return shapes * kShapeUnits + shape_points();
   }
 
   void add(std::string pointer, std::string what, double units) {

@@ -18,6 +18,7 @@
 #include "render/image_cache.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
+#include "render/space_drawing.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::render {
@@ -124,8 +125,9 @@ std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelect
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   std::vector<Drawing> drawings;
   for (const scene::Panel& panel : scene.panels) {
-    Drawing drawing = scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel, selection)
-                                                            : panel_drawing(scene, panel, selection);
+    Drawing drawing = panel.dimension == 3                    ? space_panel_drawing(scene, panel, selection)
+                      : scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel, selection)
+                                                              : panel_drawing(scene, panel, selection);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,
                         "the figure has non-finite coordinates (the motion overflows)");

@@ -648,6 +648,30 @@ double trail_fade(std::size_t i, std::size_t count) {
   return static_cast<double>(i + 1) / static_cast<double>(count);
 }
 
+std::vector<double> selected_times(const FrameSelection* selection, std::vector<double> all) {
+  if (selection == nullptr) return all;
+  std::vector<double> times = selection->trail;
+  times.push_back(selection->t);
+  return times;
+}
+
+std::vector<double> lightness_whites(const std::vector<double>& measures) {
+  constexpr double kMostWhite = 0.8;
+  std::vector<double> whites(measures.size(), 0.0);
+  if (measures.empty()) return whites;
+  const auto [smallest, largest] = std::minmax_element(measures.begin(), measures.end());
+  if (!(*largest > *smallest)) return whites;
+  for (std::size_t i = 0; i < measures.size(); ++i) {
+    whites[i] = kMostWhite * (measures[i] - *smallest) / (*largest - *smallest);
+  }
+  return whites;
+}
+
+Color lightened(Color color, double white) {
+  return Color{color.r + (1.0 - color.r) * white, color.g + (1.0 - color.g) * white,
+               color.b + (1.0 - color.b) * white, color.a};
+}
+
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
   return PanelBuilder(scene, panel, selection).build();
 }

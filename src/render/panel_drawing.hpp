@@ -32,6 +32,18 @@ struct FrameSelection {
 // itself at 1): (i + 1) / count.
 double trail_fade(std::size_t i, std::size_t count);
 
+// The times a "shapes" layer draws: an animation frame's trail and time, else
+// `all` (the layer's own samples).
+std::vector<double> selected_times(const FrameSelection* selection, std::vector<double> all);
+
+// "lightness": "area" (SAM Fig. 9, docs/paper-notes.md N48): the white mixed
+// into each frame, from none at the smallest measure (area in 2D, volume in
+// 3D) to 0.8 at the largest; all none when they are equal.
+std::vector<double> lightness_whites(const std::vector<double>& measures);
+
+// The colour mixed with white by `white` in [0, 1] (alpha kept).
+Color lightened(Color color, double white);
+
 // The shapes of every layer of `scene` for `panel`, in drawing order. Throws
 // RenderError.
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel,

@@ -30,8 +30,6 @@ namespace pita::render {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// The most white a "lightness": "area" shapes layer mixes in (at the largest area).
-constexpr double kAreaLightness = 0.8;
 // Points per integral curve of a "field" layer.
 constexpr int kFieldCurveSamples = 257;
 
@@ -98,31 +96,20 @@ class PoseBuilder {
   void add(const scene::ShapesLayer& layer) {
     // An animation frame draws the shapes at its time (and its trail), else
     // at every frame of the layer.
-    std::vector<double> ts;
-    if (selection_ != nullptr) {
-      ts = selection_->trail;
-      ts.push_back(selection_->t);
-    } else {
-      ts = times(layer.samples, layer.range);
-    }
-    // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's
-    // area, from none at the smallest to kAreaLightness at the largest.
+    const std::vector<double> ts =
+        selected_times(selection_, selection_ != nullptr ? std::vector<double>{} : times(layer.samples, layer.range));
+    // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's area.
     std::vector<double> areas;
     if (layer.lightness_by_area) {
       for (const double t : ts) areas.push_back(std::abs(pose_at(t).L.determinant()));
     }
-    const auto [smallest, largest] = areas.empty() ? std::pair{0.0, 0.0} : std::pair{
-        *std::min_element(areas.begin(), areas.end()), *std::max_element(areas.begin(), areas.end())};
+    const std::vector<double> whites = lightness_whites(areas);
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const double fade = selection_ != nullptr ? trail_fade(i, ts.size()) : 1.0;
       scene::ShapesLayer style = layer;
-      if (!areas.empty() && largest > smallest) {
-        const double white = kAreaLightness * (areas[i] - smallest) / (largest - smallest);
-        const auto lighten = [white](Color c) {
-          return Color{c.r + (1.0 - c.r) * white, c.g + (1.0 - c.g) * white, c.b + (1.0 - c.b) * white, c.a};
-        };
-        style.line.color = lighten(style.line.color);
-        if (style.fill) style.fill = lighten(*style.fill);
+      if (!whites.empty() && whites[i] > 0.0) {
+        style.line.color = lightened(style.line.color, whites[i]);
+        if (style.fill) style.fill = lightened(*style.fill, whites[i]);
       }
       for (Shape& shape : carried_shapes(panel_.shapes, pose_at(ts[i]), style, scene_.canvas.y_up, fade)) {
         push(static_cast<int>(i), std::move(shape));

@@ -510,6 +510,28 @@ using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLa
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
+// A solid of a 3D pose scene ("shapes" of README "3D pose scenes"): a
+// polyhedron given by its vertices and faces (indices into them, at least
+// three each, in order around the face), or a builtin one.
+struct Solid {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+  std::optional<Color> color;  // faces: the layer's fill otherwise
+};
+
+// How a 3D scene is seen ("camera"): from the direction (azimuth about the z
+// axis from +x, elevation above the xy plane, degrees) at `distance` from
+// the target, looking at it with z up; orthographic (parallel) or
+// perspective projection onto the image plane, whose coordinates are the
+// figure's world coordinates.
+struct Camera {
+  double azimuth = 35.0;
+  double elevation = 25.0;
+  double distance = 10.0;                 // > 0 for perspective
+  bool perspective = false;
+  std::optional<Eigen::Vector3d> target;  // default: the centre of the solids at the poses
+};
+
 struct Panel {
   std::string title;                   // "" = no title; default for a panel given by
                                        // its method: "P6 La-LP"

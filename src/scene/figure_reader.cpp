@@ -627,6 +627,7 @@ struct LayerKind {
   std::string_view type;
   std::span<const std::string_view> fields;
   LayerType (*read)(const Fields&);
+  bool in_space = false;  // pose layers that 3D scenes draw too (render/space_drawing.hpp)
 };
 
 template <typename LayerType, std::size_t N>
@@ -982,13 +983,13 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
 
 // The layer kinds of pose scenes.
 constexpr std::array<LayerKind<PoseLayer>, 13> kPoseLayerKinds{{
-    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); }},
-    {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }},
-    {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }},
-    {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }},
+    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); }, true},
+    {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }, true},
+    {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }, true},
+    {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }, true},
     {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); }},
     {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
-    {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }},
+    {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }, true},
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
     {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f, true); }},
@@ -1010,7 +1011,7 @@ PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std
 template <typename LayerType, std::size_t N>
 std::vector<LayerKindInfo> kind_infos(const std::array<LayerKind<LayerType>, N>& kinds) {
   std::vector<LayerKindInfo> infos;
-  for (const auto& kind : kinds) infos.push_back({kind.type, kind.fields});
+  for (const auto& kind : kinds) infos.push_back({kind.type, kind.fields, kind.in_space});
   return infos;
 }
 std::vector<LayerKindInfo> arrow_layer_kinds() { return kind_infos(kArrowLayerKinds); }
@@ -1019,6 +1020,26 @@ std::vector<LayerKindInfo> pose_layer_kinds() { return kind_infos(kPoseLayerKind
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer) {
   return read_layer_array<PoseLayer>(reader, value, pointer, read_pose_layer);
+}
+
+std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value,
+                                              const std::string& pointer) {
+  std::vector<PoseLayer> layers = read_pose_layers(reader, value, pointer);
+  std::vector<std::string_view> space;
+  for (const auto& kind : kPoseLayerKinds) {
+    if (kind.in_space) space.push_back(kind.type);
+  }
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    const std::string type = value[i].at("type").get<std::string>();
+    const auto kind = std::find_if(kPoseLayerKinds.begin(), kPoseLayerKinds.end(),
+                                   [&](const auto& k) { return k.type == type; });
+    if (kind != kPoseLayerKinds.end() && !kind->in_space) {
+      reader.fail(element_pointer(pointer, i) + "/type",
+                  fmt::format("layer type \"{}\" draws pose scenes of the plane only; a 3D scene's layers: {}", type,
+                              joined(space)));
+    }
+  }
+  return layers;
 }
 
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer) {

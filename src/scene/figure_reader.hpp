@@ -20,6 +20,7 @@ namespace pita::scene::detail {
 struct LayerKindInfo {
   std::string_view type;
   std::span<const std::string_view> fields;  // "type" included
+  bool in_space = false;                     // a pose layer 3D scenes draw too
 };
 std::vector<LayerKindInfo> arrow_layer_kinds();
 std::vector<LayerKindInfo> pose_layer_kinds();
@@ -35,5 +36,8 @@ std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
 // "layers" of a pose scene or panel.
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer);
+// The same, for a 3D scene: only the kinds marked in_space in the table.
+std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value,
+                                              const std::string& pointer);
 
 }  // namespace pita::scene::detail

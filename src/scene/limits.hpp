@@ -41,6 +41,12 @@ inline constexpr double kMaxWinding = 1e6;
 // Pose scenes: entries of matrices and coordinates within kMaxKeyframeValue;
 // at most this many poses.
 inline constexpr int kMaxPoses = 1000;
+// 3D scenes: solids ("shapes") and their sizes; the faces drawn per figure
+// (each frame of each layer draws every face of every solid) are bounded by
+// the render budget's frames.
+inline constexpr int kMaxSolids = 64;
+inline constexpr int kMaxSolidVertices = 10'000;
+inline constexpr int kMaxSolidFaces = 10'000;
 // Arrow scenes: keyframes of a track (the chains of core/chains/chain.hpp;
 // "neville" takes at most limits::kMaxNevilleKeyframes of them).
 inline constexpr int kMaxKeyframes = 1000;

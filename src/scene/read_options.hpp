@@ -9,9 +9,6 @@ struct ReadOptions {
   // that climb out of the scene's folder ("../x.png", or a symbolic link
   // leading out) are refused either way.
   bool allow_absolute_paths = false;
-  // 3D pose scenes ("dimension": 3) are accepted: pita eval evaluates them;
-  // the commands that draw refuse them at /dimension until 3D drawing exists.
-  bool allow_space = false;
 };
 
 }  // namespace pita::scene

@@ -64,10 +64,11 @@ struct Scene {
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
   int subdivisions = kDefaultSubdivisions; // four-point-SAM: steps, [0, kMaxSubdivisions]
   // "dimension": 3 (README "3D pose scenes"): poses of space, interpolated by
-  // the SAM family in 3D (PoseMotion3); `poses` is then empty and the scene
-  // is read only when ReadOptions::allow_space (pita eval).
+  // the SAM family in 3D (PoseMotion3); `poses` is then empty.
   int dimension = 2;
   std::vector<TimedPose3> poses3;
+  std::vector<Solid> solids;  // "shapes" of a 3D scene; default the reference tetrahedron
+  Camera camera;
   std::array<Eigen::Vector3d, 4> reference_tetrahedron{Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0),
                                                        Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)};
 
@@ -142,6 +143,10 @@ Scene with_method(Scene scene, Method method);
 // "no SAM exists between these poses: ... (poses 0 and 1, method SAM)": the
 // reason of the error that refuses a pose motion whose SAM does not exist.
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method);
+
+// Throws SceneError at /dimension when `scene` is a 3D pose scene: for the
+// commands that work on the plane only (`command` names them: "pita measure").
+void require_plane_scene(const Scene& scene, std::string_view command);
 
 // The pose scene with its method replaced (command-line override). Throws
 // SceneError when the scene has keyframes, the method takes another number of

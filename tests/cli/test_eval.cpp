@@ -387,12 +387,12 @@ TEST_F(Eval, SpaceSceneWithoutASamExitsTwo) {
   EXPECT_EQ(result.out, "");
   EXPECT_NE(result.err.find("space.json: /poses: no SAM exists between these poses"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("-3"), std::string::npos) << result.err;  // the eigenvalues are named
-  // The commands that draw refuse 3D scenes for now, naming /dimension.
+  // pita render refuses it with the same message, and writes nothing.
   const RunResult render = run({"render", "space.json", "-o", "out"});
   EXPECT_EQ(render.exit_code, 2);
-  EXPECT_NE(render.err.find("space.json: /dimension: 3D pose scenes are evaluated by `pita eval` only"),
-            std::string::npos)
+  EXPECT_NE(render.err.find("space.json: /poses: no SAM exists between these poses"), std::string::npos)
       << render.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "space.svg"));
 }
 
 }  // namespace

@@ -18,11 +18,8 @@ namespace pita::scene {
 
 // What `pita eval` and `pita render` do before drawing: read the scene, then
 // build the motion of each panel that has one.
-// (3D scenes as pita eval reads them: tests/bad_scene_cases.hpp.)
 void load_and_build(const std::filesystem::path& path) {
-  ReadOptions options;
-  options.allow_space = true;
-  const Scene scene = load_scene(path, options);
+  const Scene scene = load_scene(path);
   motion::check_motions(scene);
   (void)motion::build_motion(scene);
 }

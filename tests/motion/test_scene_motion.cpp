@@ -219,12 +219,10 @@ TEST(SceneMotion, NonFiniteFramesAreNoMotionNotNaN) {
 // 3D pose scenes: the stage builds PoseMotion3 once; pose3_at is its pose,
 // and the plane's verbs refuse the motion with NoMotion at /dimension.
 TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
-  scene::ReadOptions options;
-  options.allow_space = true;
   const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
       {"t": 1, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 3, "matrix": [[4, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
-                                                "s.json", options);
+                                                "s.json");
   const SceneMotion motion = build_motion(scene);
   ASSERT_TRUE(motion.in_space());
   EXPECT_EQ(motion.knots(), (std::vector<double>{1.0, 3.0}));

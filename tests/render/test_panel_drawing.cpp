@@ -442,3 +442,30 @@ TEST(PanelDrawing, OverflowingFramesAreRefusedNotDrawn) {
 
 }  // namespace
 }  // namespace pita::render::test
+
+namespace pita::render {
+namespace {
+
+TEST(LightnessWhites, FromNoneAtTheSmallestToFourFifthsAtTheLargest) {
+  const std::vector<double> whites = lightness_whites({2.0, 4.0, 3.0});
+  ASSERT_EQ(whites.size(), 3u);
+  EXPECT_DOUBLE_EQ(whites[0], 0.0);
+  EXPECT_DOUBLE_EQ(whites[1], 0.8);
+  EXPECT_DOUBLE_EQ(whites[2], 0.4);
+  EXPECT_EQ(lightness_whites({1.0, 1.0}), (std::vector<double>{0.0, 0.0}));
+  EXPECT_TRUE(lightness_whites({}).empty());
+  const Color c = lightened(Color{0.0, 0.5, 1.0, 0.7}, 0.5);
+  EXPECT_DOUBLE_EQ(c.r, 0.5);
+  EXPECT_DOUBLE_EQ(c.g, 0.75);
+  EXPECT_DOUBLE_EQ(c.b, 1.0);
+  EXPECT_DOUBLE_EQ(c.a, 0.7);
+}
+
+TEST(SelectedTimes, TheFrameAndItsTrailElseAll) {
+  EXPECT_EQ(selected_times(nullptr, {0.0, 1.0}), (std::vector<double>{0.0, 1.0}));
+  const FrameSelection selection{0.5, {0.3, 0.4}};
+  EXPECT_EQ(selected_times(&selection, {0.0, 1.0}), (std::vector<double>{0.3, 0.4, 0.5}));
+}
+
+}  // namespace
+}  // namespace pita::render

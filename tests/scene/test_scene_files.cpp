@@ -184,7 +184,8 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   // 3D pose scenes (src/scene/space_pose_reader.cpp's kSpaceSceneFields).
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
             (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
-                                   "reference_tetrahedron", "samples", "subdivisions", "golden"}));
+                                   "reference_tetrahedron", "samples", "subdivisions", "golden", "shapes",
+                                   "camera", "layers", "title", "canvas"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
@@ -238,6 +239,8 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
     std::string name = path.stem().string();
     const bool sam = name.rfind("sam-", 0) == 0;
     if (sam) name = name.substr(4);
+    // 3D versions of the SAM paper's figures (docs/paper-notes.md N59): sam-3d-figNN-*.json.
+    if (sam && name.rfind("3d-", 0) == 0) name = name.substr(3);
     // The interpolation chapter's figures (Fig. 3.NN), for time warps.
     if (name.rfind("chapter-", 0) == 0) name = name.substr(8);
     // The course project on drawn targets, and keyframe tracks beyond the

@@ -682,9 +682,8 @@ TEST(SceneSchemaValidation, OptionNamesMatchTheParser) {
 }
 
 // 3D pose scenes ("dimension": 3): the schema's spacePoseScene and the
-// parser as pita eval runs it (ReadOptions::allow_space; every other command
-// refuses them at /dimension). The method pattern accepts exactly the pose
-// methods the table marks in_space.
+// parser. The method pattern accepts exactly the pose methods the table
+// marks in_space.
 std::string space_scene(const std::string& method, const std::string& second_pose,
                         const std::string& extra = "") {
   return R"({"dimension": 3, "method": ")" + method + R"(", "poses": [
@@ -693,16 +692,7 @@ std::string space_scene(const std::string& method, const std::string& second_pos
 
 const std::string kSpacePose = R"({"t": 1, "matrix": [[0, -1, 0, 1], [1, 0, 0, 0], [0, 0, 1, 2]]})";
 
-std::string space_error_pointer(const std::string& text) {
-  ReadOptions options;
-  options.allow_space = true;
-  try {
-    parse_scene(text, "s.json", options);
-  } catch (const SceneError& error) {
-    return error.pointer();
-  }
-  return "(no error)";
-}
+std::string space_error_pointer(const std::string& text) { return error_pointer(text); }
 
 TEST(SceneSchemaValidation, SpaceScenesAgreeWithTheParser) {
   for (const PoseMethodInfo& entry : all_pose_methods()) {
@@ -717,7 +707,6 @@ TEST(SceneSchemaValidation, SpaceScenesAgreeWithTheParser) {
       R"(, "reference_tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "samples": 5)");
   EXPECT_EQ(schema_errors(nlohmann::json::parse(good)), "");
   EXPECT_EQ(space_error_pointer(good), "(no error)");
-  EXPECT_EQ(error_pointer(good), "/dimension");  // the commands that draw refuse it
 
   const std::vector<BadScene> bad = {
       {"2D matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]})"), "/poses/1/matrix"},

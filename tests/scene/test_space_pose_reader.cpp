@@ -18,9 +18,7 @@ namespace {
 using Eigen::Vector3d;
 
 Scene parse_space(const std::string& text) {
-  ReadOptions options;
-  options.allow_space = true;
-  return parse_scene(text, "s.json", options);
+  return parse_scene(text, "s.json");
 }
 
 TEST(SpacePoseScene, MatricesAreRowsOfTheAffinity) {
@@ -56,18 +54,8 @@ TEST(SpacePoseScene, TetrahedraMapTheReferenceTetrahedron) {
   EXPECT_LT((apply(A, Vector3d(1, 1, 5)) - Vector3d(0, 0, 4)).norm(), 1e-14);
 }
 
-// Only pita eval reads 3D scenes (ReadOptions::allow_space); "dimension": 2 is
-// the plane's scene as before.
-TEST(SpacePoseScene, OtherCommandsRefuseThemAndDimensionTwoIsThePlane) {
-  const std::string text = R"({"dimension": 3, "method": "SAM", "poses": [
-      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
-      {"t": 1, "matrix": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}]})";
-  try {
-    (void)parse_scene(text, "s.json");
-    ADD_FAILURE() << "no error";
-  } catch (const SceneError& error) {
-    EXPECT_EQ(error.pointer(), "/dimension");
-  }
+// "dimension": 2 is the plane's scene as before.
+TEST(SpacePoseScene, DimensionTwoIsThePlane) {
   const Scene plane = parse_scene(R"({"dimension": 2, "method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 1, 0]]}]})",
                                   "s.json");
