@@ -68,7 +68,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       s = entry.kind == MotionKind::poses ? scene::with_pose_method(std::move(s), entry.pose_method)
                                           : scene::with_method(std::move(s), entry.method);
     }
-    if (s.kind == scene::SceneKind::poses && s.poses.empty()) return 0;  // eval refuses it
+    if (s.kind == scene::SceneKind::poses && s.poses.empty() && s.poses3.empty()) return 0;  // eval refuses it
     motion::check_motions(s);
     const motion::SceneMotion motion = motion::build_motion(s);
     const std::vector<double> uniform =

@@ -274,6 +274,7 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     // Read as if it were the base scene's file (relative image paths), named
     // in messages as the variant's own file.
     const scene::Scene scene = scene::parse_scene(text, job.base.path);
+    scene::require_plane_scene(scene, "pita sweep");
     motion::check_motions(scene);
     std::vector<std::pair<fs::path, std::string>> files;
     files.emplace_back(job.dir / scene_file, text);

@@ -821,5 +821,18 @@ TEST(AnimateProgressBar, ShownOnATerminalOnly) {
   EXPECT_EQ(quiet.out.find("%)"), std::string::npos) << quiet.out;
 }
 
+// 3D pose scenes are not animated (nor drawn with render --at): exit 2 at /dimension.
+TEST(AnimateSpace, RefusedAtDimension) {
+  const ScratchDir dir;
+  const std::string scene = (kScenes / "sam-3d-fig13-polysam.json").string();
+  const RunResult animate = run_pita({"animate", scene, "-o", "frames"}, dir.path());
+  EXPECT_EQ(animate.exit_code, 2);
+  EXPECT_NE(animate.err.find(": /dimension: pita animate works on scenes of the plane"), std::string::npos)
+      << animate.err;
+  const RunResult at = run_pita({"render", scene, "--at", "0.5", "-o", "at.png"}, dir.path());
+  EXPECT_EQ(at.exit_code, 2);
+  EXPECT_NE(at.err.find(": /dimension: pita render --at works on scenes of the plane"), std::string::npos) << at.err;
+}
+
 }  // namespace
 }  // namespace pita::test

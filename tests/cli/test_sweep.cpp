@@ -421,5 +421,18 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   EXPECT_EQ(shown, want) << dom.substr(0, 2000);
 }
 
+// 3D pose scenes: a sweep's metrics are of the plane, so the base scene is
+// refused (exit 2, at /dimension), and nothing is written.
+TEST(Sweep, RefusesASpaceScene) {
+  const ScratchDir dir;
+  const RunResult result =
+      run_pita({"sweep", std::string(PITA_SOURCE_DIR) + "/scenes/sam-3d-fig13-polysam.json", "--vary",
+                "/camera/azimuth=-70,0", "-o", "out", "--format", "png", "-q"},
+               dir.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(": /dimension: pita sweep works on scenes of the plane"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "manifest.csv"));
+}
+
 }  // namespace
 }  // namespace pita::test
