@@ -28,6 +28,10 @@ constexpr std::array<PaperExistenceBound, 3> kPaperBounds = {{
     {kPi / 4.0, 0.50, "pi/4"},
 }};
 
+// Where has_real_logarithm trusts the sign of the discriminant: relative to
+// |L|_F^6, about 1e5 times its rounding error.
+constexpr double kDiscriminantMargin = 1e-8;
+
 // The 3^9 perturbation patterns, entry k of L gets sign (pattern / 3^k mod 3) - 1.
 constexpr int kPatterns = 19683;
 
@@ -44,6 +48,26 @@ Eigen::Matrix3d signs_of(int pattern) {
 
 bool has_real_logarithm(const Eigen::Matrix3d& L) {
   if (!L.allFinite() || !(L.determinant() > 0.0)) return false;
+  // The characteristic polynomial x^3 - c1 x^2 + c2 x - det. With det > 0
+  // and c1, c2 > 0 every eigenvalue is positive or complex: real roots of a
+  // polynomial whose coefficients alternate in sign are positive (Descartes),
+  // and beside a complex pair the real one has the sign of det. Most of the
+  // experiment's matrices end here, without the cubic's roots.
+  const double c1 = L.trace();
+  const double c2 = L(0, 0) * L(1, 1) - L(0, 1) * L(1, 0) + L(0, 0) * L(2, 2) - L(0, 2) * L(2, 0) +
+                    L(1, 1) * L(2, 2) - L(1, 2) * L(2, 1);
+  if (c1 > 0.0 && c2 > 0.0) return true;
+  // Otherwise the cubic's discriminant tells a complex pair (< 0: the real
+  // eigenvalue has det's sign, a log) from three distinct real eigenvalues
+  // (> 0: not all positive, so two distinct negative ones, no log). Near zero
+  // (degree 6 in L: relative to |L|^6, far above its rounding), the roots.
+  const double q1 = -c1, q2 = c2, q3 = -L.determinant();  // x^3 + q1 x^2 + q2 x + q3
+  const double discriminant =
+      18.0 * q1 * q2 * q3 - 4.0 * q1 * q1 * q1 * q3 + q1 * q1 * q2 * q2 - 4.0 * q2 * q2 * q2 - 27.0 * q3 * q3;
+  const double norm2 = L.squaredNorm();
+  const double margin = kDiscriminantMargin * norm2 * norm2 * norm2;
+  if (discriminant < -margin) return true;
+  if (discriminant > margin) return false;
   const std::array<std::complex<double>, 3> values = pita::eigenvalues(L);
   if (values[1].imag() != 0.0) return true;  // a complex pair beside a real one, positive as det > 0
   // Three real ones, ordered: with det > 0 either all positive or one positive
@@ -105,9 +129,13 @@ std::vector<Eigen::Vector3d> icosphere_axes(int subdivisions) {
   return axes;
 }
 
-std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3dExistenceOptions& options) {
+namespace {
+
+// The first configuration without a SAM among the rotations by `angles` about
+// every axis, perturbed by p; parallel over axes.
+std::optional<NoSamConfiguration> first_without_sam(std::span<const double> angles, double p,
+                                                    const Sam3dExistenceOptions& options) {
   const std::vector<Eigen::Vector3d> axes = icosphere_axes(options.subdivisions);
-  const int angles = std::max(1, options.angles);
   std::vector<Eigen::Matrix3d> perturbations(kPatterns);
   for (int k = 0; k < kPatterns; ++k) perturbations[static_cast<std::size_t>(k)] = p * signs_of(k);
 
@@ -117,13 +145,12 @@ std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3
   std::optional<NoSamConfiguration> first;
   const auto work = [&] {
     for (std::size_t i = next++; i < axes.size() && !found.load(std::memory_order_relaxed); i = next++) {
-      for (int j = 0; j < angles && !found.load(std::memory_order_relaxed); ++j) {
-        const double angle = angles == 1 ? theta : -theta + 2.0 * theta * j / (angles - 1);
-        const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, axes[i]).toRotationMatrix();
+      for (std::size_t j = 0; j < angles.size() && !found.load(std::memory_order_relaxed); ++j) {
+        const Eigen::Matrix3d R = Eigen::AngleAxisd(angles[j], axes[i]).toRotationMatrix();
         for (int k = 0; k < kPatterns; ++k) {
           if (has_real_logarithm(R + perturbations[static_cast<std::size_t>(k)])) continue;
           const std::lock_guard<std::mutex> lock(mutex);
-          if (!first) first = NoSamConfiguration{axes[i], angle, signs_of(k), p};
+          if (!first) first = NoSamConfiguration{axes[i], angles[j], signs_of(k), p};
           found = true;
           break;
         }
@@ -139,6 +166,20 @@ std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3
   return first;
 }
 
+// The number of grid steps of p up to p_max.
+int grid_steps(const Sam3dExistenceOptions& options) {
+  return static_cast<int>(std::floor(options.p_max / options.p_step + 1e-9));
+}
+
+}  // namespace
+
+std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3dExistenceOptions& options) {
+  const int count = std::max(1, options.angles);
+  std::vector<double> angles;
+  for (int j = 0; j < count; ++j) angles.push_back(count == 1 ? theta : -theta + 2.0 * theta * j / (count - 1));
+  return first_without_sam(angles, p, options);
+}
+
 SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOptions& options,
                                            const std::function<void(double)>& progress) {
   SafePerturbation result;
@@ -147,7 +188,7 @@ SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOpt
   result.matrices_checked = axes * static_cast<std::uint64_t>(std::max(1, options.angles)) * kPatterns;
   // Grid indices: low passes (0: p = 0, the rotations themselves, checked
   // too), high fails or is one past the grid.
-  const int steps = static_cast<int>(std::floor(options.p_max / options.p_step + 1e-9));
+  const int steps = grid_steps(options);
   int low = 0, high = steps + 1;
   std::optional<NoSamConfiguration> failure_at_high;
   if (const auto failure = find_no_sam(theta, 0.0, options)) {
@@ -171,6 +212,46 @@ SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOpt
   result.largest_p = low * options.p_step;
   result.at_next = high <= steps ? failure_at_high : std::nullopt;
   return result;
+}
+
+SafeCurve largest_safe_perturbation_curve(int steps, const Sam3dExistenceOptions& options,
+                                          const std::function<void(double)>& progress) {
+  SafeCurve curve;
+  const int top = grid_steps(options);
+  // Grid index i stands for p = i p_step; -1 for "even p = 0 fails".
+  int bound = top;  // the previous angle's largest passing index: no later angle passes above it
+  for (int k = 0; k <= steps; ++k) {
+    const double theta = std::numbers::pi * k / steps;
+    const std::array<double, 1> angle = {theta};
+    const auto passes = [&](int i) {
+      ++curve.tests;
+      return i < 0 || !first_without_sam(angle, i * options.p_step, options).has_value();
+    };
+    int low = -1, high = bound + 1;  // low passes (or is -1), high fails (or is beyond the bound)
+    if (k > 0 && passes(bound)) {
+      low = bound;
+    } else {
+      if (k > 0) high = bound;
+      // Gallop down from the bound to a passing index, then bisect.
+      for (int drop = 1;; drop *= 2) {  // ends: index -1 passes
+        const int i = std::max(-1, high - drop);
+        if (passes(i)) {
+          low = i;
+          break;
+        }
+        high = i;
+      }
+      while (high - low > 1) {
+        const int middle = (low + high) / 2;
+        (passes(middle) ? low : high) = middle;
+      }
+    }
+    bound = std::max(low, 0);
+    curve.thetas.push_back(theta);
+    curve.largest_p.push_back(std::max(low, 0) * options.p_step);
+    if (progress) progress(static_cast<double>(k + 1) / (steps + 1));
+  }
+  return curve;
 }
 
 std::span<const PaperExistenceBound> paper_existence_bounds() { return kPaperBounds; }

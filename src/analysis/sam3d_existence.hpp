@@ -67,6 +67,24 @@ struct SafePerturbation {
 SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOptions& options,
                                            const std::function<void(double)>& progress = {});
 
+// The figure's curve (README "Where a SAM exists in 3D", N61): at the angles
+// theta_k = k pi / steps, k = 0..steps, the largest p on the grid for which
+// every rotation by an angle j pi / steps with |j| <= k, about every axis,
+// perturbed, has a SAM: the experiment at theta_k with 2k + 1 angles. Only
+// angles >= 0 are checked: a rotation by -a is the transpose of the rotation
+// by a, the perturbations are closed under transposition, and a matrix and its
+// transpose have the same eigenvalues. Each angle is searched downwards from
+// the previous angle's bound (galloping, then bisection), with the same
+// monotonicity in p as largest_safe_perturbation.
+struct SafeCurve {
+  std::vector<double> thetas;     // k pi / steps
+  std::vector<double> largest_p;  // non-increasing; 0 also when p = 0 itself fails (rounding at pi)
+  std::uint64_t tests = 0;        // (angle, p) pairs checked, each axes x 3^9 matrices at most
+};
+inline constexpr int kMaxExistenceCurveSteps = 720;
+SafeCurve largest_safe_perturbation_curve(int steps, const Sam3dExistenceOptions& options,
+                                          const std::function<void(double)>& progress = {});
+
 // The paper's stated bounds (Sec. 5.2): theta < 2 pi / 3: p < 0.29; theta <
 // pi / 2: p < 0.33; theta < pi / 4: p < 0.50.
 struct PaperExistenceBound {

@@ -27,12 +27,15 @@ perturbed by -p, 0 or +p in all 3^9 combinations; does every such L have a real
 logarithm (a SAM; Culver's condition)? For each theta, the largest p (on a grid of
 --step) for which it does, found by bisection, beside the paper's stated bound, and one
 configuration without a SAM one step above. Without --theta, the paper's three angles.
-With --p, only that p is checked.
+With --p, only that p is checked. With --curve N, the curve of the figure
+scenes/sam-fig06-existence-3d.json instead: for theta = k pi/N, k = 0..N, the largest p
+for which every rotation by j pi/N, |j| <= k, perturbed, has a SAM.
 
 Examples:
   pita audit sam3d-existence
   pita audit sam3d-existence --theta 2pi/3 --angles 33
   pita audit sam3d-existence --theta pi/2 --p 0.3
+  pita audit sam3d-existence --curve 12
 
 Exit codes: 0 success (whatever the bounds are), 2 bad usage.)";
 
@@ -108,6 +111,15 @@ std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit)
       ->check(CLI::Range(1e-4, 1.0))
       ->type_name("S")
       ->capture_default_str();
+  command
+      ->add_option_function<int>(
+          "--curve", [options](int steps) { options->curve = steps; },
+          "The largest safe p at theta = k pi/N, k = 0..N (the figure's curve)")
+      ->check(CLI::Range(1, analysis::kMaxExistenceCurveSteps))
+      ->type_name("N")
+      ->excludes("--theta")
+      ->excludes("--p")
+      ->excludes("--angles");
   command->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
       ->check(CLI::Range(1, 1024))
       ->type_name("J");
@@ -150,7 +162,19 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
       "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), {} angles over "
       "[-theta, theta], 3^9 perturbations each: {} matrices per (theta, p)\n\n",
       axes, search.subdivisions, search.angles, axes * static_cast<std::size_t>(search.angles) * 19683);
-  if (options.p) {
+  if (options.curve) {
+    text = fmt::format(
+        "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), rotations by j pi/{}, "
+        "3^9 perturbations each; for each theta, every angle up to it\n\n| theta | largest safe p |\n|---|---|\n",
+        axes, search.subdivisions, *options.curve);
+    animate::Progress progress("sam3d-existence", 100, !options.quiet);
+    const analysis::SafeCurve curve = analysis::largest_safe_perturbation_curve(
+        *options.curve, search, [&](double fraction) { progress.update(static_cast<int>(100.0 * fraction)); });
+    for (std::size_t k = 0; k < curve.thetas.size(); ++k) {
+      text += fmt::format("| {}pi/{} ({:.4f}) | {:.{}f} |\n", k, *options.curve, curve.thetas[k], curve.largest_p[k],
+                          search.p_step >= 0.01 ? 2 : 4);
+    }
+  } else if (options.p) {
     text += "| theta | p | every configuration has a SAM | a configuration without one |\n|---|---|---|---|\n";
     for (std::size_t i = 0; i < thetas.size(); ++i) {
       const auto failure = analysis::find_no_sam(thetas[i], *options.p, search);

@@ -19,6 +19,7 @@ struct Sam3dExistenceCliOptions {
   std::optional<std::string> theta;  // as typed: "pi/2", "2pi/3", "1.2"
   std::optional<double> p;
   double step = 0.01;
+  std::optional<int> curve;  // the figure's curve at k pi / curve instead
   int jobs = 0;
   bool quiet = false;
 };

@@ -25,6 +25,12 @@ namespace {
 
 // A layer's estimate: overloads for every layer type of both scene kinds, so
 // that a new layer type without a cost does not compile.
+// "sam3d-existence": matrices (angle x axis x perturbation) per unit of work,
+// measured: the default layer (49 angles x 81 axes x 3^9) takes 0.85 s on two
+// cores, about 1.7 core-seconds or 680 000 units (README "Performance"); the
+// searches of p along the curve are included.
+constexpr double kSafeCurveMatricesPerUnit = 110.0;
+
 class LayerCost {
  public:
   LayerCost(const scene::Scene& scene, const scene::Panel& panel, std::string layer,
@@ -174,6 +180,12 @@ class LayerCost {
     // Each cell is one classification by EAR (about 0.1 us), drawn in runs.
     add(layer_ + "/columns", fmt::format("{} x {} cells of an existence map", l.columns, l.rows),
         static_cast<double>(l.columns) * l.rows / 8.0 + 64 * kShapeUnits);
+  }
+  void operator()(const scene::Sam3dExistenceLayer& l) {
+    const double axes = 5.0 * std::pow(4.0, l.subdivisions) + 1.0;  // one per antipodal pair of vertices
+    add(layer_ + "/steps",
+        fmt::format("{} angles x {:.0f} axes x 3^9 perturbations of the 3D existence experiment", l.steps + 1, axes),
+        (l.steps + 1.0) * axes * 19683.0 / kSafeCurveMatricesPerUnit + (2.0 * l.steps + 64.0) * kShapeUnits);
   }
 
  private:

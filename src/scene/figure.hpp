@@ -444,6 +444,24 @@ struct ExistenceLayer {
   LineStyle trapezoid{Color{0.0, 0.0, 0.0, 1.0}, 2.0, 1.0, {}};
 };
 
+// "sam3d-existence": the 3D existence experiment of the SAM paper's Sec. 5.2
+// as a plot (README "Where a SAM exists in 3D", docs/paper-notes.md N61): the
+// largest safe perturbation p against the rotation angle theta in [0, pi],
+// computed at theta = k pi / steps (analysis/sam3d_existence.hpp), drawn as a
+// staircase over x = theta, y = kSafeCurveScale p, with the paper's three
+// stated bounds beside it.
+struct Sam3dExistenceLayer {
+  int steps = 48;          // angles k pi / steps, k = 0..steps: [1, kMaxSam3dExistenceSteps]
+  int subdivisions = 2;    // of the icosahedron: [0, kMaxSam3dExistenceSubdivisions]
+  double step = 0.01;      // the grid of p
+  LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 2.0, 1.0, {}};
+  std::optional<Color> fill = Color{0.1, 0.3, 0.7, 1.0};  // under the curve, at fill_opacity; or "none"
+  double fill_opacity = 0.12;
+  bool paper = true;                                      // the paper's bounds
+  LineStyle paper_line{Color{0.85, 0.35, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};
+};
+inline constexpr double kSafeCurveScale = 5.0;  // drawn height of p = 1
+
 // "ara": the panel's measured unsteadiness printed as a text, "ARA = 0.042"
 // (SAM paper Sec. 2.4, Fig. 2): core/steadiness.hpp's average relative
 // acceleration of the panel's motion (its method, without the timing), over a
@@ -506,7 +524,7 @@ inline constexpr std::size_t kMaxCompareTimes = 64;
 
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
                                ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
-                               SweptLayer, VersusLayer, FieldLayer>;
+                               SweptLayer, VersusLayer, FieldLayer, Sam3dExistenceLayer>;
 
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.

@@ -751,9 +751,9 @@ constexpr std::array<std::string_view, 13> kSweptFields = {
 constexpr std::array<std::string_view, 12> kVersusFields = {
     "type", "method", "at", "power", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples",
     "range"};
-constexpr std::array<std::span<const std::string_view>, 7> kPoseLayerFields = {
-    kShapesFields, kPosesFields, kVelocitiesFields, kPathsFields, kExistenceFields, kLabelFields,
-    kPatchFields};
+constexpr std::array<std::string_view, 11> kSam3dExistenceFields = {
+    "type", "steps", "subdivisions", "step", "color", "width", "opacity", "dash", "fill", "fill_opacity", "paper"};
+constexpr Interval kSafeCurveStep{0.001, 0.1};
 
 // A line style given as an object {"color", "width", "opacity", "dash"}.
 void read_line_object(const Fields& fields, std::string_view key, LineStyle& line) {
@@ -861,6 +861,35 @@ ExistenceLayer read_existence(const Fields& fields) {
   }
   read_line_object(fields, "boundary", layer.boundary);
   read_line_object(fields, "trapezoid", layer.trapezoid);
+  return layer;
+}
+
+Sam3dExistenceLayer read_sam3d_existence(const Fields& fields) {
+  Sam3dExistenceLayer layer;
+  fields.integer("steps", 1, kMaxSam3dExistenceSteps, layer.steps);
+  fields.integer("subdivisions", 0, kMaxSam3dExistenceSubdivisions, layer.subdivisions);
+  fields.number("step", kSafeCurveStep, layer.step);
+  read_line(fields, layer.line);
+  if (const Json* fill = fields.get("fill")) {
+    if (fill->is_string() && fill->get<std::string>() == "none") {
+      layer.fill.reset();
+    } else {
+      layer.fill = fields.reader().color(*fill, fields.at("fill"));
+    }
+  }
+  fields.number("fill_opacity", kOpacity, layer.fill_opacity);
+  // "paper": false, or a line style for the paper's stated bounds.
+  if (const Json* paper = fields.get("paper")) {
+    if (paper->is_boolean()) {
+      layer.paper = paper->get<bool>();
+    } else if (!paper->is_object()) {
+      fields.reader().fail(fields.at("paper"), fmt::format("must be true, false or a line style {{\"color\", "
+                                                           "\"width\", \"opacity\", \"dash\"}} (got {})",
+                                                           value_text(*paper)));
+    } else {
+      read_line_object(fields, "paper", layer.paper_line);
+    }
+  }
   return layer;
 }
 
@@ -982,12 +1011,14 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
 }};
 
 // The layer kinds of pose scenes.
-constexpr std::array<LayerKind<PoseLayer>, 13> kPoseLayerKinds{{
+constexpr std::array<LayerKind<PoseLayer>, 14> kPoseLayerKinds{{
     {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); }, true},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }, true},
     {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }, true},
     {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }, true},
     {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); }},
+    {"sam3d-existence", kSam3dExistenceFields,
+     [](const Fields& f) -> PoseLayer { return read_sam3d_existence(f); }},
     {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }, true},
     {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }},

@@ -74,6 +74,8 @@ inline constexpr int kMaxShapePoints = 10'000;
 inline constexpr int kMaxExistenceSide = 4000;           // "columns", "rows" of "existence"
 inline constexpr int kMaxExistenceCells = 4'000'000;     // columns x rows of "existence"
 inline constexpr int kMaxPatchSide = 100;                // "columns", "rows" of "patch"
+inline constexpr int kMaxSam3dExistenceSteps = 720;      // "steps" of "sam3d-existence"
+inline constexpr int kMaxSam3dExistenceSubdivisions = 4; // "subdivisions" of "sam3d-existence" (1281 axes)
 
 // Images in "shapes" (PITA Sec. 7.1): PNG files of at most this many pixels a
 // side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per list

@@ -25,11 +25,12 @@ constexpr std::array<std::string_view, 16> kPoseSceneFields = {
 
 }  // namespace
 
-// Whether a layer needs the motion (every one but "existence" and "label").
+// Whether a layer needs the motion (every one but "existence",
+// "sam3d-existence", "label" and "patch").
 bool needs_motion(const std::vector<PoseLayer>& layers) {
   return std::any_of(layers.begin(), layers.end(), [](const PoseLayer& layer) {
     return !std::holds_alternative<ExistenceLayer>(layer) && !std::holds_alternative<LabelLayer>(layer) &&
-           !std::holds_alternative<PatchLayer>(layer);
+           !std::holds_alternative<PatchLayer>(layer) && !std::holds_alternative<Sam3dExistenceLayer>(layer);
   });
 }
 

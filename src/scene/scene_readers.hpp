@@ -14,7 +14,8 @@
 namespace pita::scene::detail {
 
 // Whether any of these pose layers draws a motion (every one but
-// "existence", "label" and "patch"), so that the panel needs poses.
+// "existence", "sam3d-existence", "label" and "patch"), so that the panel
+// needs poses.
 bool needs_motion(const std::vector<PoseLayer>& layers);
 
 // A pose scene has "poses", or a pose method such as "SAM" and no "keyframes".

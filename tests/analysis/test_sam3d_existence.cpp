@@ -77,6 +77,32 @@ TEST(Sam3dExistence, HasRealLogarithmAgreesWithEigenAndWithEar) {
   EXPECT_LT(without, 15000);
 }
 
+// The experiment's own kind of matrix, where the fast paths (Descartes'
+// signs, the discriminant) decide most cases: rotations by angles up to pi
+// about random axes, every entry moved by -p, 0 or +p on the 0.01 grid.
+TEST(Sam3dExistence, HasRealLogarithmAgreesWithEigenOnPerturbedRotations) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> angle(0.0, kPi);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> sign(-1, 1), hundredths(0, 60);
+  int without = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double x = normal(rng), y = normal(rng), z = normal(rng);
+    const double a = angle(rng);
+    const double p = 0.01 * hundredths(rng);
+    Matrix3d L = Eigen::AngleAxisd(a, Vector3d(x, y, z).normalized()).toRotationMatrix();
+    for (int k = 0; k < 9; ++k) {
+      const int s = sign(rng);
+      L(k / 3, k % 3) += p * s;
+    }
+    const bool ours = has_real_logarithm(L);
+    EXPECT_EQ(ours, eigen_says_real_log(L)) << "angle " << a << ", p " << p << "\n" << L;
+    without += ours ? 0 : 1;
+  }
+  EXPECT_GT(without, 1000);  // both answers are well represented (1741 of 20000 without)
+  EXPECT_LT(without, 19000);
+}
+
 TEST(Sam3dExistence, IcosphereAxesAreUnitAndDistinct) {
   EXPECT_EQ(icosphere_axes(0).size(), 6u);
   EXPECT_EQ(icosphere_axes(1).size(), 21u);
@@ -130,6 +156,54 @@ TEST(Sam3dExistence, FoundConfigurationHasNoSam) {
   const Matrix3d L = Eigen::AngleAxisd(failure->angle, failure->axis).toRotationMatrix() + failure->p * failure->signs;
   EXPECT_FALSE(eigen_says_real_log(L)) << L;
   EXPECT_LE(std::abs(failure->angle), 2.0 * kPi / 3.0 + 1e-12);
+}
+
+// The figure's curve: non-increasing, 1/3 at angle 0 (I - p J), 0 at pi (a
+// rotation by pi perturbed splits its double -1), and at every angle the
+// bound of the plain experiment at that theta with the curve's angles.
+TEST(Sam3dExistence, CurveIsTheExperimentAtEachAngle) {
+  Sam3dExistenceOptions options;
+  options.subdivisions = 0;
+  const int steps = 4;
+  const SafeCurve curve = largest_safe_perturbation_curve(steps, options);
+  ASSERT_EQ(curve.thetas.size(), 5u);
+  ASSERT_EQ(curve.largest_p.size(), 5u);
+  EXPECT_NEAR(curve.largest_p.front(), 0.33, 1e-12);
+  EXPECT_EQ(curve.largest_p.back(), 0.0);
+  for (int k = 0; k <= steps; ++k) {
+    EXPECT_NEAR(curve.thetas[k], kPi * k / steps, 1e-15);
+    if (k > 0) EXPECT_LE(curve.largest_p[k], curve.largest_p[k - 1]);
+    options.angles = 2 * k + 1;  // j pi / steps, j = -k..k
+    EXPECT_NEAR(curve.largest_p[k], largest_safe_perturbation(curve.thetas[k], options).largest_p, 1e-12) << k;
+  }
+  EXPECT_LT(curve.largest_p[3], curve.largest_p[1]);  // it does fall
+}
+
+// Independent of the search: Eigen's eigensolver over the negative angles as
+// well (the transposition argument) confirms the bound at pi/2, and that one
+// step more fails.
+TEST(Sam3dExistence, CurveAgreesWithABruteForceRecount) {
+  Sam3dExistenceOptions options;
+  options.subdivisions = 0;
+  const SafeCurve curve = largest_safe_perturbation_curve(4, options);
+  const double p = curve.largest_p[2];  // theta = pi/2
+  ASSERT_GT(p, 0.05);
+  const auto all_have_a_log = [&](double q) {
+    for (const Vector3d& axis : icosphere_axes(0)) {
+      for (int j = -2; j <= 2; ++j) {
+        const Matrix3d R = Eigen::AngleAxisd(kPi * j / 4.0, axis).toRotationMatrix();
+        for (int pattern = 0; pattern < 19683; ++pattern) {
+          Matrix3d S;
+          int code = pattern;
+          for (int k = 0; k < 9; ++k, code /= 3) S(k / 3, k % 3) = static_cast<double>(code % 3) - 1.0;
+          if (!eigen_says_real_log(R + q * S)) return false;
+        }
+      }
+    }
+    return true;
+  };
+  EXPECT_TRUE(all_have_a_log(p));
+  EXPECT_FALSE(all_have_a_log(p + 0.01));
 }
 
 TEST(Sam3dExistence, PaperBoundsAreTheThreeStated) {

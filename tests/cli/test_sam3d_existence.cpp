@@ -40,6 +40,22 @@ TEST(Sam3dExistenceCli, ChecksOneP) {
   EXPECT_NE(no.out.find("| 0.5 (0.5000) | 0.5 | no | axis ["), std::string::npos) << no.out;
 }
 
+// --curve: one row per angle k pi/N; 1/3 at 0 (I - p J), 0 at pi.
+TEST(Sam3dExistenceCli, PrintsTheFiguresCurve) {
+  const RunResult result = run_audit({"--curve", "2", "--subdivisions", "0", "-q"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("| 0pi/2 (0.0000) | 0.33 |"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("| 1pi/2 (1.5708) | "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("| 2pi/2 (3.1416) | 0.00 |"), std::string::npos) << result.out;
+  for (const std::vector<std::string>& both :
+       {std::vector<std::string>{"--curve", "2", "--theta", "pi/2"}, {"--curve", "2", "--p", "0.1"},
+        {"--curve", "0"}}) {
+    const RunResult refused = run_audit(both);
+    EXPECT_EQ(refused.exit_code, 2) << both[2];
+    EXPECT_EQ(refused.out, "");
+  }
+}
+
 TEST(Sam3dExistenceCli, BadUsageExitsTwo) {
   for (const std::string& theta : {"two", "pi/0", "4", "pi*2", "-pi/2"}) {
     const RunResult result = run_audit({"--theta", theta});

@@ -57,7 +57,7 @@ TEST(Limits, LayersAndPanels) {
   EXPECT_EQ(pointer_of(", \"panels\": [" + panels + "]"), "/panels");
 }
 
-TEST(Limits, ExistenceAndPatchSides) {
+TEST(Limits, ExistenceAndPatchSides) {  // and the 3D existence plot's steps
   const auto pose = [](const std::string& layer) {
     try {
       parse_scene(R"({"method": "SAM", "layers": [)" + layer + "]}", "s.json");
@@ -70,6 +70,11 @@ TEST(Limits, ExistenceAndPatchSides) {
   EXPECT_EQ(pose(R"({"type": "existence", "columns": )" + n(kMaxExistenceSide + 1) + "}"), "/layers/0/columns");
   EXPECT_EQ(pose(R"({"type": "existence", "columns": 4000, "rows": 1001})"), "/layers/0/rows");  // cells
   EXPECT_EQ(pose(R"({"type": "patch", "rows": )" + n(kMaxPatchSide + 1) + "}"), "/layers/0/rows");
+  EXPECT_EQ(pose(R"({"type": "sam3d-existence", "steps": )" + n(kMaxSam3dExistenceSteps) + "}"), "(no error)");
+  EXPECT_EQ(pose(R"({"type": "sam3d-existence", "steps": )" + n(kMaxSam3dExistenceSteps + 1) + "}"),
+            "/layers/0/steps");
+  EXPECT_EQ(pose(R"({"type": "sam3d-existence", "subdivisions": )" + n(kMaxSam3dExistenceSubdivisions + 1) + "}"),
+            "/layers/0/subdivisions");
 }
 
 }  // namespace

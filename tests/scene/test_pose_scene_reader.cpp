@@ -39,7 +39,29 @@ TEST(PoseSceneReader, LayersThatNeedNoPosesNeedNoPoses) {
   EXPECT_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "shapes"}]})", "s.json"), SceneError);
   EXPECT_TRUE(detail::needs_motion({ShapesLayer{}}));
   EXPECT_TRUE(detail::needs_motion({PlotLayer{}}));
-  EXPECT_FALSE(detail::needs_motion({ExistenceLayer{}, LabelLayer{}, PatchLayer{}}));
+  EXPECT_FALSE(detail::needs_motion({ExistenceLayer{}, LabelLayer{}, PatchLayer{}, Sam3dExistenceLayer{}}));
+  EXPECT_NO_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence"}]})", "s.json"));
+}
+
+TEST(PoseSceneReader, Sam3dExistenceLayerFields) {
+  const Scene scene = parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "steps": 12,
+      "subdivisions": 1, "step": 0.02, "color": "#ff0000", "fill": "none", "paper": {"width": 3}}]})",
+                                  "s.json");
+  const auto& layer = std::get<Sam3dExistenceLayer>(scene.pose_layers.at(0));
+  EXPECT_EQ(layer.steps, 12);
+  EXPECT_EQ(layer.subdivisions, 1);
+  EXPECT_DOUBLE_EQ(layer.step, 0.02);
+  EXPECT_DOUBLE_EQ(layer.line.color.r, 1.0);
+  EXPECT_FALSE(layer.fill.has_value());
+  EXPECT_TRUE(layer.paper);
+  EXPECT_DOUBLE_EQ(layer.paper_line.width, 3.0);
+  const Scene defaults = parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "paper": false}]})",
+                                     "s.json");
+  const auto& plain = std::get<Sam3dExistenceLayer>(defaults.pose_layers.at(0));
+  EXPECT_EQ(plain.steps, 48);
+  EXPECT_EQ(plain.subdivisions, 2);
+  EXPECT_TRUE(plain.fill.has_value());
+  EXPECT_FALSE(plain.paper);
 }
 
 }  // namespace

@@ -55,6 +55,20 @@ std::vector<std::filesystem::path> scene_files() {
   return files;
 }
 
+// The schema's definition of a layer kind: "point-trajectory" is described
+// by "pointTrajectoryLayer".
+std::string layer_definition(const std::string& type) {
+  std::string camel;
+  for (std::size_t i = 0; i < type.size(); ++i) {
+    if (type[i] == '-' && i + 1 < type.size()) {
+      camel += static_cast<char>(std::toupper(static_cast<unsigned char>(type[++i])));
+    } else {
+      camel += type[i];
+    }
+  }
+  return camel + "Layer";
+}
+
 TEST(SceneSchema, IsJsonSchemaDraft07) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   EXPECT_EQ(schema.at("$schema"), "http://json-schema.org/draft-07/schema#");
@@ -151,16 +165,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
     const std::string type(kind.type);
     SCOPED_TRACE(type);
     types.push_back(type);
-    // "point-trajectory" is described by "pointTrajectoryLayer".
-    std::string camel;
-    for (std::size_t i = 0; i < type.size(); ++i) {
-      if (type[i] == '-' && i + 1 < type.size()) {
-        camel += static_cast<char>(std::toupper(static_cast<unsigned char>(type[++i])));
-      } else {
-        camel += type[i];
-      }
-    }
-    const nlohmann::json& layer = definitions.at(camel + "Layer");
+    const nlohmann::json& layer = definitions.at(layer_definition(type));
     EXPECT_EQ(keys_of(layer.at("properties")), std::set<std::string>(kind.fields.begin(), kind.fields.end()));
     EXPECT_EQ(layer.at("additionalProperties"), false);
     EXPECT_EQ(layer.at("properties").at("type").at("const"), type);
@@ -198,7 +203,7 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
     const std::string type(kind.type);
     SCOPED_TRACE(type);
     types.push_back(type);
-    const nlohmann::json& layer = definitions.at(type + "Layer");
+    const nlohmann::json& layer = definitions.at(layer_definition(type));
     EXPECT_EQ(keys_of(layer.at("properties")), std::set<std::string>(kind.fields.begin(), kind.fields.end()));
     EXPECT_EQ(layer.at("additionalProperties"), false);
   }

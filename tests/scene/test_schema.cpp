@@ -199,6 +199,12 @@ const std::vector<BadScene>& bad_scenes() {
        "/layers/0/colour"},
       {"existence rows too many", sam_with(R"(, "layers": [{"type": "existence", "rows": 5000}])"),
        "/layers/0/rows"},
+      {"3D existence steps too many", sam_with(R"(, "layers": [{"type": "sam3d-existence", "steps": 721}])"),
+       "/layers/0/steps"},
+      {"3D existence step too fine", sam_with(R"(, "layers": [{"type": "sam3d-existence", "step": 0.0001}])"),
+       "/layers/0/step"},
+      {"3D existence paper not a line", sam_with(R"(, "layers": [{"type": "sam3d-existence", "paper": "yes"}])"),
+       "/layers/0/paper"},
       {"unknown pose panel field", sam_with(R"(, "panels": [{"keyframes": []}])"), "/panels/0/keyframes"},
       // Unknown fields, at every level.
       {"unknown top-level field", p6_with(R"(, "titel": "x")"), "/titel"},
@@ -598,6 +604,10 @@ const std::vector<std::string>& good_scenes() {
       sam_with(R"(, "animation": {"duration": 3, "fps": 240, "frames": 100000, "loop": true, "what": "motion", "trail": 0})"),
       // A pose scene without poses: only layers that need none.
       R"({"method": "SAM", "layers": [{"type": "existence"}]})",
+      R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "steps": 12, "subdivisions": 1, "step": 0.02,
+          "color": "blue", "width": 2, "opacity": 1, "dash": [], "fill": "none", "fill_opacity": 0.2,
+          "paper": {"color": "orange", "dash": [4, 2]}}]})",
+      R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "fill": "#88aaff", "paper": false}]})",
       // Transparent background, shared view, empty layers.
       p6_with(R"(, "canvas": {"background": "none", "view": "shared"}, "layers": [], "panels": ["P4", "La-LP"])"),
   };
