@@ -1,5 +1,6 @@
 #include "core/affine_power3.hpp"
 
+#include <Eigen/LU>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include <algorithm>
@@ -329,7 +330,7 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
 
 }
 
-Affine3 AffinePowers3::log() const {
+Affine3 AffinePowers3::split_log() const {
   Affine3 log;
   // log L = Q [[ln lambda, w^T ln[lambda, M]], [0, log M]] Q^T with
   // ln[lambda, M] = l(M / lambda) / lambda (transposed: the row w^T acts on the left).
@@ -372,6 +373,62 @@ Affine3 AffinePowers3::log() const {
     log.b = Q_ * Vector3d(l_lambda * beta_ + corner, plane_log(0), plane_log(1));
   }
   return log;
+}
+
+namespace {
+
+using Matrix4l = Eigen::Matrix<long double, 4, 4>;
+
+Matrix4l homogeneous_long(const Affine3& A, double corner) {
+  Matrix4l H = Matrix4l::Zero();
+  H.topLeftCorner<3, 3>() = A.L.cast<long double>();
+  H.topRightCorner<3, 1>() = A.b.cast<long double>();
+  H(3, 3) = corner;
+  return H;
+}
+
+// |exp(X) - H|_F / max(|H|_F, 1), exp in long double: how far a log X misses.
+long double log_residual(const Matrix4l& X, const Matrix4l& H) {
+  return (Matrix4l(X.exp()) - H).norm() / std::max(H.norm(), 1.0L);
+}
+
+}  // namespace
+
+Affine3 AffinePowers3::log() const {
+  // Newton's method on exp(X) = A, one step (N58, "refinement"): the residual
+  // R = A - exp(X) in long double, the Frechet derivative of exp at X by the
+  // block identity exp([[X, E], [0, X]]) = [[e^X, Dexp_X(E)], [0, e^X]]
+  // (Higham, Functions of Matrices, Thm. 3.6) on the 12 affine directions E,
+  // and Dexp_X(dX) = R solved for the correction. Mixed-precision iterative
+  // refinement, as for linear systems: the split's log is right to ~1e-12 on
+  // strongly non-normal L; the step brings exp(log A) to the rounding of the
+  // log itself.
+  const Affine3 X0 = split_log();
+  const Matrix4l H = homogeneous_long(A_, 1.0);
+  Matrix4l X = homogeneous_long(X0, 0.0);
+  const long double before = log_residual(X, H);
+  if (!(before > limits::kLogRefineResidual)) return X0;
+  const Matrix4l R = H - Matrix4l(X.exp());
+  using Matrix8l = Eigen::Matrix<long double, 8, 8>;
+  Eigen::Matrix<long double, 12, 12> J;
+  Eigen::Matrix<long double, 12, 1> r;
+  for (int k = 0; k < 12; ++k) {
+    Matrix8l B = Matrix8l::Zero();
+    B.topLeftCorner<4, 4>() = X;
+    B.bottomRightCorner<4, 4>() = X;
+    B(k / 4, 4 + k % 4) = 1.0L;
+    const Matrix8l E = B.exp();
+    for (int m = 0; m < 12; ++m) J(m, k) = E(m / 4, 4 + m % 4);
+    r(k) = R(k / 4, k % 4);
+  }
+  const Eigen::Matrix<long double, 12, 1> step = J.fullPivLu().solve(r);
+  if (!step.allFinite() || step.norm() > limits::kLogRefineStep * std::max(X.norm(), 1.0L)) return X0;
+  for (int m = 0; m < 12; ++m) X(m / 4, m % 4) += step(m);
+  Affine3 X1;
+  X1.L = X.topLeftCorner<3, 3>().cast<double>();
+  X1.b = X.topRightCorner<3, 1>().cast<double>();
+  // Judged after rounding to double, as it is returned.
+  return log_residual(homogeneous_long(X1, 0.0), H) < before ? X1 : X0;
 }
 
 Vector3d AffinePowers3::unit_series(double t) const {

@@ -82,8 +82,13 @@ class AffinePowers3 {
 
   // The homogeneous log of A as {log L, v} ([[log L, v], [0, 0]]): the
   // SAM's constant velocity field x -> log(L) x + v. Computed on demand (at()
-  // does not need it).
+  // does not need it). The split's log, then one Newton step in extended
+  // precision where exp of it misses A by more than 1e-13 (N58).
   Affine3 log() const;
+
+  // The log by the split alone (A.6), before log()'s refinement (for tests
+  // and the paper note).
+  Affine3 split_log() const;
 
   // The split (for tests and the paper note): the eigenvalue lambda, the
   // right-handed orthonormal basis Q = [u, q2, q3].

@@ -172,7 +172,9 @@ TEST(Sam3dExistence, CurveIsTheExperimentAtEachAngle) {
   EXPECT_EQ(curve.largest_p.back(), 0.0);
   for (int k = 0; k <= steps; ++k) {
     EXPECT_NEAR(curve.thetas[k], kPi * k / steps, 1e-15);
-    if (k > 0) EXPECT_LE(curve.largest_p[k], curve.largest_p[k - 1]);
+    if (k > 0) {
+      EXPECT_LE(curve.largest_p[k], curve.largest_p[k - 1]);
+    }
     options.angles = 2 * k + 1;  // j pi / steps, j = -k..k
     EXPECT_NEAR(curve.largest_p[k], largest_safe_perturbation(curve.thetas[k], options).largest_p, 1e-12) << k;
   }
