@@ -7,7 +7,7 @@
 //   BM_Power3Eigen:        Eigen::Matrix4d::pow(t) (Schur-Pade)
 //   BM_Log3:               log() of a prepared AffinePowers3 (a 3D SAM's velocity
 //                          field): the split's log and, where exp of it misses A
-//                          by more than 1e-13, the Newton step (N58)
+//                          by more than 1e-13, Newton steps (N58)
 //   BM_Log3Eigen:          Eigen::Matrix4d::log() (Schur-Pade)
 //   (the logs with argument 0 on the samples below, 1 on ill-conditioned ones)
 // For the logs, worst_exp_log_error is |exp(X) - H|_F / |H|_F, exp in long double.

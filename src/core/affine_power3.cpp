@@ -395,40 +395,50 @@ long double log_residual(const Matrix4l& X, const Matrix4l& H) {
 }  // namespace
 
 Affine3 AffinePowers3::log() const {
-  // Newton's method on exp(X) = A, one step (N58, "refinement"): the residual
+  // Newton's method on exp(X) = A (N58, "refinement"): the residual
   // R = A - exp(X) in long double, the Frechet derivative of exp at X by the
   // block identity exp([[X, E], [0, X]]) = [[e^X, Dexp_X(E)], [0, e^X]]
   // (Higham, Functions of Matrices, Thm. 3.6) on the 12 affine directions E,
   // and Dexp_X(dX) = R solved for the correction. Mixed-precision iterative
   // refinement, as for linear systems: the split's log is right to ~1e-12 on
-  // strongly non-normal L; the step brings exp(log A) to the rounding of the
-  // log itself.
-  const Affine3 X0 = split_log();
+  // strongly non-normal L; up to kLogRefineSteps steps, each judged after
+  // rounding to double as it is returned, bring exp(log A) to the rounding
+  // of the log itself. X stays in long double between steps.
+  const Affine3 split = split_log();
   const Matrix4l H = homogeneous_long(A_, 1.0);
-  Matrix4l X = homogeneous_long(X0, 0.0);
-  const long double before = log_residual(X, H);
-  if (!(before > limits::kLogRefineResidual)) return X0;
-  const Matrix4l R = H - Matrix4l(X.exp());
+  Affine3 best = split;
+  long double best_residual = log_residual(homogeneous_long(split, 0.0), H);
+  const Matrix4l start = homogeneous_long(split, 0.0);
+  Matrix4l X = start;
   using Matrix8l = Eigen::Matrix<long double, 8, 8>;
-  Eigen::Matrix<long double, 12, 12> J;
-  Eigen::Matrix<long double, 12, 1> r;
-  for (int k = 0; k < 12; ++k) {
-    Matrix8l B = Matrix8l::Zero();
-    B.topLeftCorner<4, 4>() = X;
-    B.bottomRightCorner<4, 4>() = X;
-    B(k / 4, 4 + k % 4) = 1.0L;
-    const Matrix8l E = B.exp();
-    for (int m = 0; m < 12; ++m) J(m, k) = E(m / 4, 4 + m % 4);
-    r(k) = R(k / 4, k % 4);
+  for (int n = 0; n < limits::kLogRefineSteps && best_residual > limits::kLogRefineResidual; ++n) {
+    const Matrix4l R = H - Matrix4l(X.exp());
+    Eigen::Matrix<long double, 12, 12> J;
+    Eigen::Matrix<long double, 12, 1> r;
+    for (int k = 0; k < 12; ++k) {
+      Matrix8l B = Matrix8l::Zero();
+      B.topLeftCorner<4, 4>() = X;
+      B.bottomRightCorner<4, 4>() = X;
+      B(k / 4, 4 + k % 4) = 1.0L;
+      const Matrix8l E = B.exp();
+      for (int m = 0; m < 12; ++m) J(m, k) = E(m / 4, 4 + m % 4);
+      r(k) = R(k / 4, k % 4);
+    }
+    const Eigen::Matrix<long double, 12, 1> step = J.fullPivLu().solve(r);
+    if (!step.allFinite()) break;
+    for (int m = 0; m < 12; ++m) X(m / 4, m % 4) += step(m);
+    // Never away from the split's branch (near a half turn Dexp is nearly singular).
+    if ((X - start).norm() > limits::kLogRefineStep * std::max(start.norm(), 1.0L)) break;
+    Affine3 rounded;
+    rounded.L = X.topLeftCorner<3, 3>().cast<double>();
+    rounded.b = X.topRightCorner<3, 1>().cast<double>();
+    const long double residual = log_residual(homogeneous_long(rounded, 0.0), H);
+    if (residual < best_residual) {
+      best = rounded;
+      best_residual = residual;
+    }
   }
-  const Eigen::Matrix<long double, 12, 1> step = J.fullPivLu().solve(r);
-  if (!step.allFinite() || step.norm() > limits::kLogRefineStep * std::max(X.norm(), 1.0L)) return X0;
-  for (int m = 0; m < 12; ++m) X(m / 4, m % 4) += step(m);
-  Affine3 X1;
-  X1.L = X.topLeftCorner<3, 3>().cast<double>();
-  X1.b = X.topRightCorner<3, 1>().cast<double>();
-  // Judged after rounding to double, as it is returned.
-  return log_residual(homogeneous_long(X1, 0.0), H) < before ? X1 : X0;
+  return best;
 }
 
 Vector3d AffinePowers3::unit_series(double t) const {

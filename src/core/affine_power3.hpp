@@ -82,7 +82,7 @@ class AffinePowers3 {
 
   // The homogeneous log of A as {log L, v} ([[log L, v], [0, 0]]): the
   // SAM's constant velocity field x -> log(L) x + v. Computed on demand (at()
-  // does not need it). The split's log, then one Newton step in extended
+  // does not need it). The split's log, then Newton steps in extended
   // precision where exp of it misses A by more than 1e-13 (N58).
   Affine3 log() const;
 

@@ -171,16 +171,24 @@ inline constexpr double kEigenvalueCluster = 1e-4;
 // test_affine_power3.cpp, not tuned (N58).
 inline constexpr double kSylvesterLeanGap = 0.1;
 
-// log() ends with one Newton step on exp(X) = A whose residual is computed in
-// long double (N58, "refinement"): taken only when exp(X) misses A by more
-// than kLogRefineResidual (relative, |.|_F / max(|H|_F, 1) on the homogeneous
-// matrices), and kept only if it is smaller than kLogRefineStep |X|_F (a
-// Newton step near a singular Frechet derivative, as at rotations by pi,
-// must not move the log to another branch) and lowers that residual. 1e-13
-// is a tenth of the 1e-12 the log is held to; the step bound is far above
-// any correction of rounding (1e-12 relative) and far below any other log.
+// log() ends with up to kLogRefineSteps Newton steps on exp(X) = A whose
+// residual is computed in long double (N58, "refinement"): taken only while
+// exp(X) misses A by more than kLogRefineResidual (relative,
+// |.|_F / max(|H|_F, 1) on the homogeneous matrices); a step that moves X
+// more than kLogRefineStep |X|_F from the split's log ends them (a Newton
+// step near a singular Frechet derivative, as at rotations by pi, must not
+// move the log to another branch), and the log kept is the one with the
+// smallest residual after rounding to double. 1e-13 is a tenth of the 1e-12
+// the log is held to; the step bound is far above any correction of
+// rounding (1e-12 relative) and far below any other log. Six steps: on
+// 3000 random affinities at condition numbers to 1.4e8 one step left 68
+// beyond 1e-12, three 18, six 5 (worst 1.65e-12; all but one within 8 times
+// the error of the correctly rounded log). The steps converge linearly, not
+// quadratically: the derivative, an exp of an 8x8 non-normal matrix, is
+// itself only good to a few digits there.
 inline constexpr double kLogRefineResidual = 1e-13;
 inline constexpr double kLogRefineStep = 1e-8;
+inline constexpr int kLogRefineSteps = 6;
 
 // ---------------------------------------------------------------- time warps
 // Arc-length reparameterisation (arc_length.hpp; the chapter's Sec. 3.2.1).
