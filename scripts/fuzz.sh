@@ -60,9 +60,12 @@ for target in "${targets[@]}"; do
     "$dir/corpus" "$work/seeds/$target" "$PITA_ROOT/tests/data/fuzz/$target" >"$log" 2>&1
   status=$?
   set -e
+  # A target that fails while loading its seeds prints no statistics: each
+  # reading may find nothing (and must not end the script under pipefail).
   execs="$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)"
   rate="$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)"
-  corpus="$(grep -o 'corp: [0-9]*/[0-9]*[a-zA-Z]*' "$log" | tail -1 | cut -d' ' -f2)"  # inputs/size
+  corpus="$({ grep -o 'corp: [0-9]*/[0-9]*[a-zA-Z]*' "$log" || true; } | tail -1 | cut -d' ' -f2)"  # inputs/size
+  [ -n "$corpus" ] || corpus="?/?"
   line="$(printf '%-18s %9s execs %7s exec/s  corpus %s inputs (%s)' "$target" "${execs:-?}" \
           "${rate:-?}" "${corpus%%/*}" "${corpus#*/}")"
   slow="$(find "$dir/artifacts" -name 'slow-unit-*' | wc -l)"

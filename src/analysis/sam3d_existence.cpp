@@ -32,8 +32,14 @@ constexpr std::array<PaperExistenceBound, 3> kPaperBounds = {{
 // |L|_F^6, about 1e5 times its rounding error.
 constexpr double kDiscriminantMargin = 1e-8;
 
+// Where the experiment accepts 27 matrices at once (plainly_all_have_logarithms):
+// relative to (1 + |L|_F^2)^2, the size of det and c2 (cubic and quadratic in
+// L), about 1e4 times their rounding error.
+constexpr double kAllPlainMargin = 1e-12;
+
 // The 3^9 perturbation patterns, entry k of L gets sign (pattern / 3^k mod 3) - 1.
 constexpr int kPatterns = 19683;
+constexpr int kUnperturbed = (kPatterns - 1) / 2;  // every digit 1: every sign 0
 
 Eigen::Matrix3d signs_of(int pattern) {
   Eigen::Matrix3d S;
@@ -44,30 +50,120 @@ Eigen::Matrix3d signs_of(int pattern) {
   return S;
 }
 
-}  // namespace
+using Row = std::array<double, 3>;
 
-bool has_real_logarithm(const Eigen::Matrix3d& L) {
-  if (!L.allFinite() || !(L.determinant() > 0.0)) return false;
-  // The characteristic polynomial x^3 - c1 x^2 + c2 x - det. With det > 0
-  // and c1, c2 > 0 every eigenvalue is positive or complex: real roots of a
-  // polynomial whose coefficients alternate in sign are positive (Descartes),
-  // and beside a complex pair the real one has the sign of det. Most of the
-  // experiment's matrices end here, without the cubic's roots.
-  const double c1 = L.trace();
-  const double c2 = L(0, 0) * L(1, 1) - L(0, 1) * L(1, 0) + L(0, 0) * L(2, 2) - L(0, 2) * L(2, 0) +
-                    L(1, 1) * L(2, 2) - L(1, 2) * L(2, 1);
+// The invariants of the characteristic polynomial x^3 - c1 x^2 + c2 x - det
+// of the matrix with rows v, u, w, in two stages so that the experiment's
+// loop computes the part of rows 1 and 2 once for the 27 choices of row 0
+// (and has_real_logarithm the same numbers, rounded the same way).
+struct LowerRows {
+  Row cross;     // u x w: det = v . (u x w); its first entry is the minor a11 a22 - a12 a21
+  double sum;    // a11 + a22
+  double a10, a20;
+  double norm2;  // |u|^2 + |w|^2
+};
+
+double squared(const Row& r) { return r[0] * r[0] + r[1] * r[1] + r[2] * r[2]; }
+
+LowerRows lower_rows(const Row& u, const Row& w) {
+  return {{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]},
+          u[1] + w[2],
+          u[0],
+          w[0],
+          squared(u) + squared(w)};
+}
+
+// Whether the matrix with rows v and `lower` has a real logarithm, from its
+// characteristic polynomial x^3 - c1 x^2 + c2 x - det alone; nullopt when
+// that cannot tell (the eigenvalues must).
+std::optional<bool> decided_by_invariants(const Row& v, const LowerRows& lower) {
+  const double det = v[0] * lower.cross[0] + v[1] * lower.cross[1] + v[2] * lower.cross[2];
+  if (!(det > 0.0)) return false;
+  // With det > 0 and c1, c2 > 0 every eigenvalue is positive or complex: real
+  // roots of a polynomial whose coefficients alternate in sign are positive
+  // (Descartes), and beside a complex pair the real one has the sign of det.
+  // Most of the experiment's matrices end here.
+  const double c1 = v[0] + lower.sum;
+  const double c2 = lower.cross[0] + v[0] * lower.sum - v[1] * lower.a10 - v[2] * lower.a20;
   if (c1 > 0.0 && c2 > 0.0) return true;
   // Otherwise the cubic's discriminant tells a complex pair (< 0: the real
   // eigenvalue has det's sign, a log) from three distinct real eigenvalues
   // (> 0: not all positive, so two distinct negative ones, no log). Near zero
-  // (degree 6 in L: relative to |L|^6, far above its rounding), the roots.
-  const double q1 = -c1, q2 = c2, q3 = -L.determinant();  // x^3 + q1 x^2 + q2 x + q3
+  // (degree 6 in L: relative to |L|^6, far above its rounding), undecided.
+  const double q1 = -c1, q2 = c2, q3 = -det;  // x^3 + q1 x^2 + q2 x + q3
   const double discriminant =
       18.0 * q1 * q2 * q3 - 4.0 * q1 * q1 * q1 * q3 + q1 * q1 * q2 * q2 - 4.0 * q2 * q2 * q2 - 27.0 * q3 * q3;
-  const double norm2 = L.squaredNorm();
+  const double norm2 = squared(v) + lower.norm2;
   const double margin = kDiscriminantMargin * norm2 * norm2 * norm2;
   if (discriminant < -margin) return true;
   if (discriminant > margin) return false;
+  return std::nullopt;
+}
+
+// Interval arithmetic, enough for the cubic's discriminant over a cube of
+// matrices (plainly_all_have_logarithms). Rounding is not directed: the
+// margins it is compared with are far above it.
+struct Interval {
+  double lo, hi;
+};
+Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + b.hi}; }
+Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
+Interval operator*(double k, Interval a) { return k >= 0.0 ? Interval{k * a.lo, k * a.hi} : Interval{k * a.hi, k * a.lo}; }
+// Plain comparisons, not std::min and std::max: their instances are shared
+// with every other file, which under the fuzzer's instrumentation made this
+// loop ten times slower (scripts/sanitizers/coverage-ignore.txt).
+double smaller(double a, double b) { return b < a ? b : a; }
+double larger(double a, double b) { return a < b ? b : a; }
+Interval operator*(Interval a, Interval b) {
+  const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  return {smaller(smaller(p1, p2), smaller(p3, p4)), larger(larger(p1, p2), larger(p3, p4))};
+}
+Interval square(Interval a) {
+  const double l = a.lo * a.lo, h = a.hi * a.hi;
+  if (a.lo <= 0.0 && a.hi >= 0.0) return {0.0, larger(l, h)};
+  return {smaller(l, h), larger(l, h)};
+}
+
+// Whether all 27 matrices with rows (R's row 0 plus p times signs in {-1, 0,
+// 1}) and `lower` have a real logarithm by the tests of
+// decided_by_invariants, shown at once: det, c1 and c2 are affine in row 0,
+// so over the cube |v - R row 0| <= p each lies within its value at the
+// centre plus or minus p times the 1-norm of its gradient; then det > 0 and
+// either c1, c2 > 0 or the discriminant (by intervals) below its margin for
+// every matrix. The margins, far above the rounding of these few operations,
+// keep the answer the one the 27 tests would give. False means "test them".
+bool plainly_all_have_logarithms(const Eigen::Matrix3d& R, double p, const LowerRows& lower) {
+  const Row v = {R(0, 0), R(0, 1), R(0, 2)};
+  const double scale = 1.0 + squared(v) + lower.norm2;
+  const double margin = kAllPlainMargin * scale * scale;
+  const double det = v[0] * lower.cross[0] + v[1] * lower.cross[1] + v[2] * lower.cross[2];
+  const double det_spread = p * (std::abs(lower.cross[0]) + std::abs(lower.cross[1]) + std::abs(lower.cross[2]));
+  if (!(det - det_spread > margin)) return false;
+  const double c1 = v[0] + lower.sum;
+  const double c2 = lower.cross[0] + v[0] * lower.sum - v[1] * lower.a10 - v[2] * lower.a20;
+  const double c2_spread = p * (std::abs(lower.sum) + std::abs(lower.a10) + std::abs(lower.a20));
+  if (c1 - p > margin && c2 - c2_spread > margin) return true;
+  // x^3 + q1 x^2 + q2 x + q3 as in decided_by_invariants, q1 = -c1, q2 = c2,
+  // q3 = -det; its discriminant below minus the largest margin of any of the
+  // 27 (|v|^2 at most the sum of (|v_e| + p)^2).
+  const Interval q1{-c1 - p, -c1 + p}, q2{c2 - c2_spread, c2 + c2_spread}, q3{-det - det_spread, -det + det_spread};
+  const Interval discriminant = 18.0 * (q1 * q2 * q3) - 4.0 * (square(q1) * q1 * q3) + square(q1) * square(q2) -
+                                4.0 * (square(q2) * q2) - 27.0 * square(q3);
+  double norm2 = lower.norm2;
+  for (const double e : v) norm2 += (std::abs(e) + p) * (std::abs(e) + p);
+  const double discriminant_margin = kDiscriminantMargin * norm2 * norm2 * norm2;
+  return discriminant.hi < -discriminant_margin - margin;
+}
+
+Row row_of(const Eigen::Matrix3d& L, int r) { return {L(r, 0), L(r, 1), L(r, 2)}; }
+
+}  // namespace
+
+bool has_real_logarithm(const Eigen::Matrix3d& L) {
+  if (!L.allFinite()) return false;
+  if (const std::optional<bool> decided = decided_by_invariants(row_of(L, 0), lower_rows(row_of(L, 1), row_of(L, 2)))) {
+    return *decided;
+  }
   const std::array<std::complex<double>, 3> values = pita::eigenvalues(L);
   if (values[1].imag() != 0.0) return true;  // a complex pair beside a real one, positive as det > 0
   // Three real ones, ordered: with det > 0 either all positive or one positive
@@ -136,8 +232,6 @@ namespace {
 std::optional<NoSamConfiguration> first_without_sam(std::span<const double> angles, double p,
                                                     const Sam3dExistenceOptions& options) {
   const std::vector<Eigen::Vector3d> axes = icosphere_axes(options.subdivisions);
-  std::vector<Eigen::Matrix3d> perturbations(kPatterns);
-  for (int k = 0; k < kPatterns; ++k) perturbations[static_cast<std::size_t>(k)] = p * signs_of(k);
 
   std::atomic<std::size_t> next{0};
   std::atomic<bool> found{false};
@@ -147,12 +241,42 @@ std::optional<NoSamConfiguration> first_without_sam(std::span<const double> angl
     for (std::size_t i = next++; i < axes.size() && !found.load(std::memory_order_relaxed); i = next++) {
       for (std::size_t j = 0; j < angles.size() && !found.load(std::memory_order_relaxed); ++j) {
         const Eigen::Matrix3d R = Eigen::AngleAxisd(angles[j], axes[i]).toRotationMatrix();
-        for (int k = 0; k < kPatterns; ++k) {
-          if (has_real_logarithm(R + perturbations[static_cast<std::size_t>(k)])) continue;
+        // Row r of R with its 27 perturbations: choice c adds p times the
+        // signs (c / 3^e mod 3) - 1 to entry e. Pattern k (signs_of) is the
+        // choices k mod 27, k / 27 mod 27 and k / 729 of rows 0, 1 and 2, so
+        // these loops visit the patterns in the order of k.
+        std::array<std::array<Row, 27>, 3> rows;
+        for (int r = 0; r < 3; ++r) {
+          for (int c = 0; c < 27; ++c) {
+            for (int e = 0, digits = c; e < 3; ++e, digits /= 3) {
+              rows[r][c][e] = R(r, e) + p * (static_cast<double>(digits % 3) - 1.0);
+            }
+          }
+        }
+        std::optional<int> without;
+        if (p == 0.0) {  // every pattern is R itself: one test, not 3^9 (at pi, the exact one of EAR)
+          if (!has_real_logarithm(R)) without = kUnperturbed;
+        }
+        for (int c2 = 0; c2 < 27 && !without && p != 0.0; ++c2) {
+          for (int c1 = 0; c1 < 27 && !without; ++c1) {
+            const LowerRows lower = lower_rows(rows[1][c1], rows[2][c2]);
+            if (plainly_all_have_logarithms(R, p, lower)) continue;
+            for (int c0 = 0; c0 < 27; ++c0) {
+              const std::optional<bool> decided = decided_by_invariants(rows[0][c0], lower);
+              if (decided && *decided) continue;
+              Eigen::Matrix3d L;
+              L << rows[0][c0][0], rows[0][c0][1], rows[0][c0][2], rows[1][c1][0], rows[1][c1][1],
+                  rows[1][c1][2], rows[2][c2][0], rows[2][c2][1], rows[2][c2][2];
+              if (!decided && has_real_logarithm(L)) continue;  // the eigenvalues decide
+              without = c0 + 27 * c1 + 729 * c2;
+              break;
+            }
+          }
+        }
+        if (without) {
           const std::lock_guard<std::mutex> lock(mutex);
-          if (!first) first = NoSamConfiguration{axes[i], angles[j], signs_of(k), p};
+          if (!first) first = NoSamConfiguration{axes[i], angles[j], signs_of(*without), p};
           found = true;
-          break;
         }
       }
     }

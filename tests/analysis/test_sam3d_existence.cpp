@@ -9,6 +9,9 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <optional>
+#include <utility>
+#include <vector>
 #include <random>
 
 #include <Eigen/Eigenvalues>
@@ -156,6 +159,55 @@ TEST(Sam3dExistence, FoundConfigurationHasNoSam) {
   const Matrix3d L = Eigen::AngleAxisd(failure->angle, failure->axis).toRotationMatrix() + failure->p * failure->signs;
   EXPECT_FALSE(eigen_says_real_log(L)) << L;
   EXPECT_LE(std::abs(failure->angle), 2.0 * kPi / 3.0 + 1e-12);
+}
+
+// The search takes shortcuts (27 matrices at once by bounds on the
+// characteristic polynomial's coefficients; one matrix when p = 0); it must
+// find exactly what testing each matrix in turn finds: the same first
+// configuration without a SAM (axes, then patterns in order: one thread), or
+// none. Angles on both sides of 2 pi/3 (where the trace of the rotation turns
+// negative and the discriminant decides) and up to pi.
+TEST(Sam3dExistence, SearchFindsWhatTestingEachMatrixFinds) {
+  Sam3dExistenceOptions options;
+  options.subdivisions = 0;
+  options.angles = 1;
+  options.jobs = 1;
+  int failures = 0, passes = 0;
+  for (const double theta : {0.0, kPi / 3.0, 0.6 * kPi, 2.0 * kPi / 3.0, 0.75 * kPi, 5.0 * kPi / 6.0, 11.0 * kPi / 12.0, kPi}) {
+    for (const double p : {0.0, 0.05, 0.12, 0.17, 0.25, 0.29, 0.34, 0.5}) {
+      std::optional<std::pair<int, int>> expected;  // axis, pattern
+      const std::vector<Vector3d> axes = icosphere_axes(0);
+      for (int a = 0; a < static_cast<int>(axes.size()) && !expected; ++a) {
+        const Matrix3d R = Eigen::AngleAxisd(theta, axes[static_cast<std::size_t>(a)]).toRotationMatrix();
+        // At p = 0 every pattern is R: the one whose signs are all 0 (each digit 1).
+        const int first = p == 0.0 ? 9841 : 0, end = p == 0.0 ? 9842 : 19683;
+        for (int pattern = first; pattern < end; ++pattern) {
+          Matrix3d S;
+          int code = pattern;
+          for (int k = 0; k < 9; ++k, code /= 3) S(k / 3, k % 3) = static_cast<double>(code % 3) - 1.0;
+          if (!has_real_logarithm(R + p * S)) {
+            expected = std::make_pair(a, pattern);
+            break;
+          }
+        }
+      }
+      const std::optional<NoSamConfiguration> found = find_no_sam(theta, p, options);
+      ASSERT_EQ(found.has_value(), expected.has_value()) << "theta " << theta << " p " << p;
+      if (!found) {
+        ++passes;
+        continue;
+      }
+      ++failures;
+      EXPECT_TRUE(found->axis.isApprox(axes[static_cast<std::size_t>(expected->first)])) << theta << " " << p;
+      Matrix3d S;
+      int code = expected->second;
+      for (int k = 0; k < 9; ++k, code /= 3) S(k / 3, k % 3) = static_cast<double>(code % 3) - 1.0;
+      EXPECT_EQ(found->signs, S) << "theta " << theta << " p " << p;
+    }
+  }
+  // Both outcomes are exercised.
+  EXPECT_GT(failures, 10);
+  EXPECT_GT(passes, 10);
 }
 
 // The figure's curve: non-increasing, 1/3 at angle 0 (I - p J), 0 at pi (a
