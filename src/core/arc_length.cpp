@@ -46,8 +46,42 @@ void interpolate(const double (&speeds)[8], double (&coefficients)[8]) {
   a = kInverseVandermonde * values;
 }
 
+// The length of a point's displacement, and whether the point is finite, in
+// the plane and in space.
+double magnitude(const Complex& v) { return std::abs(v); }
+double magnitude(const Eigen::Vector3d& v) { return v.norm(); }
+bool finite_point(const Complex& p) { return std::isfinite(p.real()) && std::isfinite(p.imag()); }
+bool finite_point(const Eigen::Vector3d& p) { return p.allFinite(); }
+
+// |P'(tau)|: a central difference of order 8 with step kDerivativeStep *
+// width; within four steps of an end (where a clamped motion would be sampled
+// beyond its knots), a one-sided difference of order 4 with a tenth of that
+// step.
+template <class AnyPath>
+double path_speed(const AnyPath& path, double tau, double from, double to, double width) {
+  using Value = decltype(path(tau));
+  const double h = limits::kDerivativeStep * width;
+  Value derivative;
+  if (tau - 4.0 * h >= from && tau + 4.0 * h <= to) {
+    static constexpr double c[4] = {4.0 / 5.0, -1.0 / 5.0, 4.0 / 105.0, -1.0 / 280.0};
+    derivative = c[0] * (path(tau + h) - path(tau - h));
+    for (int k = 1; k < 4; ++k) {
+      derivative += c[k] * (path(tau + (k + 1) * h) - path(tau - (k + 1) * h));
+    }
+    derivative /= h;
+  } else {
+    const double g = 0.1 * h;
+    const double side = tau - from < to - tau ? 1.0 : -1.0;  // forward near `from`, backward near `to`
+    const double s = side * g;
+    derivative = (-25.0 * path(tau) + 48.0 * path(tau + s) - 36.0 * path(tau + 2.0 * s) +
+                  16.0 * path(tau + 3.0 * s) - 3.0 * path(tau + 4.0 * s)) / (12.0 * s);
+  }
+  return magnitude(derivative);
+}
+
 // The speeds at the nodes of [a, b] and their Gauss-Legendre integral.
-double sample_cell(const ArcLengthTable::Path& path, double a, double b, double from, double to,
+template <class AnyPath>
+double sample_cell(const AnyPath& path, double a, double b, double from, double to,
                    double (&speeds)[8]) {
   const double half = 0.5 * (b - a), middle = 0.5 * (a + b);
   double sum = 0.0;
@@ -61,28 +95,20 @@ double sample_cell(const ArcLengthTable::Path& path, double a, double b, double 
 }  // namespace
 
 double ArcLengthTable::speed(const Path& path, double tau, double from, double to, double width) {
-  // Central difference of order 8 with step kDerivativeStep * width; within
-  // four steps of an end (where a clamped motion would be sampled beyond its
-  // knots), a one-sided difference of order 4 with a tenth of that step.
-  const double h = limits::kDerivativeStep * width;
-  Complex derivative;
-  if (tau - 4.0 * h >= from && tau + 4.0 * h <= to) {
-    static constexpr double c[4] = {4.0 / 5.0, -1.0 / 5.0, 4.0 / 105.0, -1.0 / 280.0};
-    for (int k = 0; k < 4; ++k) {
-      derivative += c[k] * (path(tau + (k + 1) * h) - path(tau - (k + 1) * h));
-    }
-    derivative /= h;
-  } else {
-    const double g = 0.1 * h;
-    const double side = tau - from < to - tau ? 1.0 : -1.0;  // forward near `from`, backward near `to`
-    const double s = side * g;
-    derivative = (-25.0 * path(tau) + 48.0 * path(tau + s) - 36.0 * path(tau + 2.0 * s) +
-                  16.0 * path(tau + 3.0 * s) - 3.0 * path(tau + 4.0 * s)) / (12.0 * s);
-  }
-  return std::abs(derivative);
+  return path_speed(path, tau, from, to, width);
 }
 
-ArcLengthTable::ArcLengthTable(const Path& path, double from, double to) : from_(from), to_(to) {
+double ArcLengthTable::speed(const Path3& path, double tau, double from, double to, double width) {
+  return path_speed(path, tau, from, to, width);
+}
+
+ArcLengthTable::ArcLengthTable(const Path& path, double from, double to) : from_(from), to_(to) { build(path); }
+
+ArcLengthTable::ArcLengthTable(const Path3& path, double from, double to) : from_(from), to_(to) { build(path); }
+
+template <class AnyPath>
+void ArcLengthTable::build(const AnyPath& path) {
+  const double from = from_, to = to_;
   if (!(std::isfinite(from) && std::isfinite(to) && from < to)) {
     throw std::invalid_argument("arc length needs a finite interval [from, to] with from < to");
   }
@@ -95,21 +121,21 @@ ArcLengthTable::ArcLengthTable(const Path& path, double from, double to) : from_
   };
   std::vector<Initial> initial(static_cast<std::size_t>(n));
   double estimate = 0.0, size = 0.0;
-  const Point origin = path(from);
+  const auto origin = path(from);
   for (int i = 0; i < n; ++i) {
     Initial& cell = initial[static_cast<std::size_t>(i)];
     cell.a = i == 0 ? from : from + (to - from) * i / n;
     cell.b = i == n - 1 ? to : from + (to - from) * (i + 1) / n;
     cell.length = sample_cell(path, cell.a, cell.b, from, to, cell.speeds);
     estimate += cell.length;
-    const Point p = path(cell.b);
-    if (!std::isfinite(p.real()) || !std::isfinite(p.imag())) {
+    const auto p = path(cell.b);
+    if (!finite_point(p)) {
       throw std::invalid_argument("the path is not finite at t = " + std::to_string(cell.b));
     }
-    size = std::max({size, std::abs(p), std::abs(p - origin)});
+    size = std::max({size, magnitude(p), magnitude(p - origin)});
   }
   if (!std::isfinite(estimate)) throw std::invalid_argument("the path's length is not finite");
-  if (!(estimate > limits::kArcLengthZero * std::max(size, std::abs(origin)))) {
+  if (!(estimate > limits::kArcLengthZero * std::max(size, magnitude(origin)))) {
     throw std::invalid_argument("the path has zero length: the point does not move");
   }
   for (const Initial& cell : initial) {
@@ -124,7 +150,8 @@ ArcLengthTable::ArcLengthTable(const Path& path, double from, double to) : from_
   total_ = running;
 }
 
-void ArcLengthTable::refine(const Path& path, double a, double b, const double (&speeds)[8],
+template <class AnyPath>
+void ArcLengthTable::refine(const AnyPath& path, double a, double b, const double (&speeds)[8],
                             double length, double tolerance, int depth) {
   Cell whole;
   whole.from = a;

@@ -3,7 +3,8 @@
 // Newton-Raphson with bisection to find the parameter at a given length;
 // docs/paper-notes.md N20).
 //
-// The path is any function of the motion's time, P(tau), tau in [from, to].
+// The path is any function of the motion's time, P(tau), tau in [from, to]: a
+// point of the plane (Path) or of space (Path3, 3D pose scenes).
 // Its speed |P'(tau)| is taken by a central difference of order 8 whose step
 // is kDerivativeStep of the table interval (one-sided of order 4 within four
 // steps of an end, so that motions clamped outside their knots are never
@@ -22,6 +23,8 @@
 #include <functional>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/arrow.hpp"
 
 namespace pita {
@@ -29,11 +32,13 @@ namespace pita {
 class ArcLengthTable {
  public:
   using Path = std::function<Point(double)>;
+  using Path3 = std::function<Eigen::Vector3d(double)>;
 
   // Builds the table of `path` over [from, to] (from < to, finite). Throws
   // std::invalid_argument when the path has (numerically) zero length, which
   // no reparameterisation can spread over time, or when a point is not finite.
   ArcLengthTable(const Path& path, double from, double to);
+  ArcLengthTable(const Path3& path, double from, double to);
 
   double from() const { return from_; }
   double to() const { return to_; }
@@ -51,6 +56,7 @@ class ArcLengthTable {
   // The finite-difference step is kDerivativeStep * width (width: the table
   // interval being sampled).
   static double speed(const Path& path, double tau, double from, double to, double width);
+  static double speed(const Path3& path, double tau, double from, double to, double width);
 
  private:
   struct Cell {
@@ -62,7 +68,10 @@ class ArcLengthTable {
   };
   double partial(const Cell& cell, double tau) const;     // length from cell.from to tau
   double speed_in(const Cell& cell, double tau) const;    // the interpolated speed
-  void refine(const Path& path, double a, double b, const double (&speeds)[8], double length,
+  template <class AnyPath>
+  void build(const AnyPath& path);
+  template <class AnyPath>
+  void refine(const AnyPath& path, double a, double b, const double (&speeds)[8], double length,
               double tolerance, int depth);
 
   double from_ = 0.0, to_ = 1.0, total_ = 0.0;

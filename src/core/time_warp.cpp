@@ -9,6 +9,17 @@ namespace pita {
 TimeWarp::TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots,
                    const ArcLengthTable::Path* path)
     : ease_(ease) {
+  build(per, std::move(knots), path);
+}
+
+TimeWarp::TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots, const ArcLengthTable::Path3* path)
+    : ease_(ease) {
+  build(per, std::move(knots), path);
+}
+
+template <class AnyPath>
+void TimeWarp::build(WarpSpan per, std::vector<double> knots, const AnyPath* path) {
+  const Ease& ease = ease_;
   if (knots.size() < 2) throw std::invalid_argument("a time warp needs at least two knots");
   for (std::size_t i = 1; i < knots.size(); ++i) {
     if (!(knots[i - 1] < knots[i])) throw std::invalid_argument("the knots of a time warp must increase");

@@ -35,6 +35,8 @@ class TimeWarp {
   // std::invalid_argument when a span's path has zero length.
   TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots,
            const ArcLengthTable::Path* path = nullptr);
+  // The same with the tracked point's path in space (3D pose scenes).
+  TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots, const ArcLengthTable::Path3* path);
 
   double operator()(double t) const { return identity_ ? t : warped(t); }
   bool is_identity() const { return identity_; }
@@ -44,6 +46,8 @@ class TimeWarp {
 
  private:
   double warped(double t) const;
+  template <class AnyPath>
+  void build(WarpSpan per, std::vector<double> knots, const AnyPath* path);
 
   bool identity_ = true;
   Ease ease_;

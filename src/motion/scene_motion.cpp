@@ -146,13 +146,22 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   }
 
   motion.reference_ = scene.reference_triangle;
+  motion.reference3_ = scene.reference_tetrahedron;
   const scene::Timing& timing = panel.timing;
   if (timing.is_identity()) return motion;
-  std::function<Point(double)> path;
-  if (timing.arc_length) path = motion.point_path(*timing.arc_length);
   const std::string at = timing.arc_length ? timing.pointer + "/arc_length" : timing.pointer;
   try {
-    motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
+    if (motion.poses3_) {
+      ArcLengthTable::Path3 path;
+      if (timing.arc_length) path = motion.point_path3(*timing.arc_length);
+      motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
+    } else {
+      std::function<Point(double)> path;
+      if (timing.arc_length) path = motion.point_path(*timing.arc_length);
+      motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
+    }
+  } catch (const NoMotion&) {
+    throw;
   } catch (const std::exception& error) {
     throw NoMotion(motion.file_, at,
                    fmt::format("cannot pace {} by the arc length of {}: {}", motion.label_,
@@ -176,6 +185,14 @@ std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) 
     return [pose_motion = poses_, origin](double tau) { return pita::apply(pose_motion->at(tau), origin); };
   }
   return [arrow_motion = arrows_, point](double tau) { return tracked(arrow_motion->at(tau), point); };
+}
+
+std::function<Eigen::Vector3d(double)> SceneMotion::point_path3(scene::TrackedPoint point) const {
+  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
+  const Eigen::Vector3d origin = point == scene::TrackedPoint::start ? reference3_[0]
+                                 : point == scene::TrackedPoint::end ? reference3_[1]
+                                                                     : 0.5 * (reference3_[0] + reference3_[1]);
+  return [pose_motion = poses3_, origin](double tau) { return pita::apply(pose_motion->at(tau), origin); };
 }
 
 SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene, scene::scene_panel(scene)); }
@@ -262,11 +279,22 @@ Affine3 SceneMotion::pose3_velocity(double t) const {
   if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
   Affine3 rate;
   try {
-    rate = poses3_->velocity(t);
+    rate = poses3_->velocity(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }
+  if (!warp_.is_identity()) {
+    const double slope = warp_rate(t);
+    rate = Affine3{rate.L * slope, rate.b * slope};
+  }
   return rate;
+}
+
+double SceneMotion::warp_rate(double t) const {
+  // d tau / d t by a central difference (the ease and the arc-length inverse
+  // are smooth inside each span).
+  const double h = 1e-6 * (last() - first());
+  return (warp_(t + h) - warp_(t - h)) / (2.0 * h);
 }
 
 Affine2 SceneMotion::pose_at(double t) const {
@@ -283,10 +311,7 @@ Affine2 SceneMotion::pose_velocity(double t) const {
     undefined(t, error);
   }
   if (!warp_.is_identity()) {
-    // The warp's rate d tau / d t, by a central difference (the ease and the
-    // arc-length inverse are smooth inside each span).
-    const double h = 1e-6 * (last() - first());
-    const double slope = (warp_(t + h) - warp_(t - h)) / (2.0 * h);
+    const double slope = warp_rate(t);
     rate = Affine2{rate.L * slope, rate.b * slope};
   }
   return rate;

@@ -62,7 +62,7 @@ class SceneMotion {
   // and point_path throw NoMotion for them, pose3_at for every other scene.
   bool in_space() const { return static_cast<bool>(poses3_); }
   Affine3 pose3_at(double t) const;
-  Affine3 pose3_velocity(double t) const;  // dA/dt (3D scenes have no warp)
+  Affine3 pose3_velocity(double t) const;  // dA/dt at scene time t, the warp's rate included
   // dA/dt at scene time t (pose scenes), the warp's rate included.
   Affine2 pose_velocity(double t) const;
 
@@ -70,6 +70,9 @@ class SceneMotion {
   // tau (no warp): for arrows p, q or their midpoint; for poses the images of
   // the reference triangle's first point, second point, or their midpoint.
   std::function<Point(double)> point_path(scene::TrackedPoint point) const;
+  // 3D pose scenes: the images of the reference tetrahedron's first point,
+  // second point, or their midpoint, as functions of tau.
+  std::function<Eigen::Vector3d(double)> point_path3(scene::TrackedPoint point) const;
 
   // The method's motion without the warp (for analysis and tests).
   const Motion& arrows() const { return *arrows_; }
@@ -85,6 +88,7 @@ class SceneMotion {
   SceneMotion() = default;
   [[noreturn]] void undefined(double t, const std::exception& error) const;
   void require_plane() const;  // NoMotion for a 3D scene
+  double warp_rate(double t) const;  // d tau / d t
   template <class Motion>
   auto finite_pose(const Motion& motion, double t) const;
 
@@ -98,6 +102,7 @@ class SceneMotion {
   std::shared_ptr<const PointCurveMotion> points_;
   TimeWarp warp_;
   std::array<Point, 3> reference_{};  // poses: the reference triangle
+  std::array<Eigen::Vector3d, 4> reference3_{};  // 3D poses: the reference tetrahedron
   std::string file_, pointer_;
 };
 

@@ -10,14 +10,15 @@
 #include "scene/pose_reader.hpp"
 #include "scene/scene_readers.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 14> kSpaceSceneFields = {
+constexpr std::array<std::string_view, 15> kSpaceSceneFields = {
     "$schema", "description", "dimension", "method", "poses", "reference_tetrahedron", "samples", "subdivisions",
-    "golden", "shapes", "camera", "layers", "title", "canvas"};
+    "timing", "golden", "shapes", "camera", "layers", "title", "canvas"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation", "distance", "projection",
@@ -356,6 +357,12 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
                                       kMatrixShape));
   }
   scene.poses3 = read_space_poses(reader, *poses, "/poses", scene.reference_tetrahedron, scene.pose_method);
+  // "timing" as in 2D (README "Timing"); arc_length follows the image of the
+  // reference tetrahedron's first point ("p"), second point ("q") or their
+  // midpoint ("mid") through space.
+  if (const Json* timing = JsonReader::member(document, "timing")) {
+    scene.timing = read_timing(reader, *timing, "/timing");
+  }
   if (const Json* shapes = JsonReader::member(document, "shapes")) {
     scene.solids = read_solids(reader, *shapes, "/shapes", scene.reference_tetrahedron);
   } else {

@@ -388,6 +388,45 @@ TEST_F(Eval, SpacePosesMatchAnIndependentMatrixPower) {
   EXPECT_EQ(rows, 9);
 }
 
+TEST_F(Eval, SpacePosesEasedPerSpanMatchAnIndependentMatrixPower) {
+  // "timing" in space: the cubic ease 3x^2 - 2x^3 of each span, written out
+  // here, then the SAM of the span at the eased u, against Eigen's pow in
+  // long double.
+  const std::vector<std::vector<double>> poses = {
+      {1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0},
+      {0.0, -2.0, 0.0, 3.0, 2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.5, -2.0},
+      {-0.6, -0.8, 0.3, 1.0, 0.8, -0.6, 0.0, 4.0, 0.0, 0.2, 2.5, 7.0},
+  };
+  const std::vector<double> knots = {0.0, 0.5, 2.0};
+  std::string scene = R"({"dimension": 3, "method": "polySAM", "timing": {"ease": "cubic", "per": "span"}, "poses": [)";
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    scene += fmt::format(R"({}{{"t": {}, "matrix": {}}})", i == 0 ? "" : ", ", knots[i], matrix_json(poses[i]));
+  }
+  dir.write("eased.json", scene + "]}");
+  const RunResult result = run({"eval", "eased.json", "--format", "csv", "--t", "0,0.1,0.25,0.4,0.5,0.8,1.25,1.9,2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::istringstream lines(result.out);
+  std::string line;
+  std::getline(lines, line);
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    std::vector<double> values;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, ',');) values.push_back(std::stod(field));
+    ASSERT_EQ(values.size(), 13u) << line;
+    const double t = values[0];
+    const std::size_t span = t < knots[1] ? 0 : 1;
+    const long double x = (t - knots[span]) / (knots[span + 1] - knots[span]);
+    const long double u = 3 * x * x - 2 * x * x * x;
+    const Matrix4L B = homogeneous_of(poses[span]), C = homogeneous_of(poses[span + 1]);
+    const Matrix4L expected = Matrix4L((C * B.inverse()).pow(u)) * B;
+    const Matrix4L got = homogeneous_of(std::vector<double>(values.begin() + 1, values.end()));
+    EXPECT_LE(static_cast<double>((got - expected).norm() / expected.norm()), 1e-12) << "t = " << t;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 9);
+}
+
 TEST_F(Eval, SpaceSceneWithoutASamExitsTwo) {
   dir.write("space.json", R"({"dimension": 3, "method": "SAM", "poses": [
     {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},

@@ -41,6 +41,25 @@ TEST(ArcLength, LogSpiralOfManyTurnsMatchesItsClosedForm) {
   }
 }
 
+TEST(ArcLength, HelixInSpaceMatchesItsClosedForm) {
+  // (r cos t, r sin t, c t): speed sqrt(r^2 + c^2), constant.
+  const double r = 1.5, c = 0.4, T = 4 * kPi;
+  const ArcLengthTable::Path3 helix = [&](double t) { return Eigen::Vector3d(r * std::cos(t), r * std::sin(t), c * t); };
+  const ArcLengthTable table(helix, 0.0, T);
+  const double speed = std::sqrt(r * r + c * c);
+  EXPECT_NEAR(table.length(), speed * T, 1e-11 * speed * T);
+  for (int i = 0; i <= 20; ++i) EXPECT_NEAR(table.parameter_at(i / 20.0), T * i / 20.0, 1e-10) << i;
+}
+
+TEST(ArcLength, PathOfThePlaneInSpaceHasItsPlaneLength) {
+  const auto s = [](double x) { return (x * std::sqrt(1 + 4 * x * x)) / 2 + std::asinh(2 * x) / 4; };
+  const ArcLengthTable::Path3 lifted = [](double x) { return Eigen::Vector3d(x, x * x, 5.0); };
+  const ArcLengthTable table(lifted, -1.0, 2.0);
+  EXPECT_NEAR(table.length(), s(2.0) - s(-1.0), 1e-11 * (s(2.0) - s(-1.0)));
+  const ArcLengthTable::Path3 still = [](double) { return Eigen::Vector3d(1.0, 2.0, 3.0); };
+  EXPECT_THROW(ArcLengthTable(still, 0.0, 1.0), std::invalid_argument);
+}
+
 TEST(ArcLength, ParabolaMatchesItsClosedForm) {
   const auto s = [](double x) { return (x * std::sqrt(1 + 4 * x * x)) / 2 + std::asinh(2 * x) / 4; };
   const ArcLengthTable table([](double x) { return Point{x, x * x}; }, -1.0, 2.0);

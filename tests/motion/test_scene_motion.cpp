@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "core/ease.hpp"
 #include "core/pitas/registry.hpp"
@@ -240,6 +241,82 @@ TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
   const std::vector<double> times = {1.0, 2.0};
   EXPECT_EQ(sample_poses3(motion, times).size(), 2u);
   EXPECT_NE(frames_text(scene.panels[0], motion, times, FramesFormat::csv).find("t,a,b,c,tx"), std::string::npos);
+}
+
+// "timing" in space: the warp is the 2D one; arc length follows a point of
+// the reference tetrahedron through space.
+const std::string kSpacePoses = R"("dimension": 3, "method": "polySAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+    {"t": 1, "matrix": [[0, -2, 0, 3], [2, 0, 0, 1], [0, 0, 1.5, -2]]},
+    {"t": 3, "matrix": [[-0.6, -0.8, 0.3, 1], [0.8, -0.6, 0, 4], [0, 0.2, 2.5, 7]]}])";
+
+scene::Scene space(const std::string& extra = "") {
+  return scene::parse_scene("{" + kSpacePoses + extra + "}", "s.json");
+}
+
+TEST(SceneMotion, SpaceScenesEaseTheirTime) {
+  const SceneMotion eased = build_motion(space(R"(, "timing": {"ease": "cubic"})"));
+  const SceneMotion plain = build_motion(space());
+  for (double t : {0.0, 0.3, 1.0, 1.7, 2.5, 3.0}) {
+    const double x = t / 3.0, tau = 3.0 * (3 * x * x - 2 * x * x * x);  // the cubic ease, Eq. 3.20
+    const Affine3 got = eased.pose3_at(t), expected = plain.pose3_at(tau);
+    EXPECT_LT((got.L - expected.L).norm() + (got.b - expected.b).norm(), 1e-12) << t;
+  }
+}
+
+TEST(SceneMotion, SpaceScenesPacedByArcLengthMoveThePointEvenly) {
+  const scene::Scene scene = space(R"(, "timing": {"arc_length": "mid", "per": "span"})");
+  const SceneMotion motion = build_motion(scene);
+  const SceneMotion plain = build_motion(space());
+  // Every pose at its knot.
+  for (const TimedPose3& pose : scene.poses3) {
+    const Affine3 at = motion.pose3_at(pose.t);
+    EXPECT_LT((at.L - pose.pose.L).norm() + (at.b - pose.pose.b).norm(), 1e-12) << pose.t;
+  }
+  // The midpoint of the reference tetrahedron's first two points covers equal
+  // lengths in equal times within each span, measured by 4000 chords of the
+  // unwarped motion per step.
+  const Eigen::Vector3d mid(0.5, 0.0, 0.0);
+  for (const auto& [from, to] : {std::pair{0.0, 1.0}, std::pair{1.0, 3.0}}) {
+    std::vector<double> steps;
+    for (int i = 0; i < 8; ++i) {
+      const double a = motion.motion_time(from + (to - from) * i / 8.0);
+      const double b = motion.motion_time(from + (to - from) * (i + 1) / 8.0);
+      double length = 0.0;
+      Eigen::Vector3d previous = apply(plain.pose3_at(a), mid);
+      for (int k = 1; k <= 4000; ++k) {
+        const Eigen::Vector3d next = apply(plain.pose3_at(a + (b - a) * k / 4000.0), mid);
+        length += (next - previous).norm();
+        previous = next;
+      }
+      steps.push_back(length);
+    }
+    const double mean = std::accumulate(steps.begin(), steps.end(), 0.0) / 8.0;
+    for (std::size_t i = 0; i < steps.size(); ++i) EXPECT_NEAR(steps[i] / mean, 1.0, 1e-6) << from << " step " << i;
+  }
+}
+
+TEST(SceneMotion, SpaceVelocityIncludesTheWarpsRate) {
+  const SceneMotion motion = build_motion(space(R"(, "timing": {"ease": "ease-in-out", "arc_length": "p"})"));
+  for (double t : {0.4, 1.5, 2.2}) {
+    const double h = 1e-5;
+    const Affine3 ahead = motion.pose3_at(t + h), behind = motion.pose3_at(t - h);
+    const Affine3 rate = motion.pose3_velocity(t);
+    const Eigen::Matrix3d dL = (ahead.L - behind.L) / (2 * h);
+    const Eigen::Vector3d db = (ahead.b - behind.b) / (2 * h);
+    EXPECT_LT((rate.L - dL).norm() + (rate.b - db).norm(), 1e-5 * (dL.norm() + db.norm())) << t;
+  }
+}
+
+TEST(SceneMotion, SpaceArcLengthOfAStillPointIsRefusedAtItsPointer) {
+  // A turn about the z axis: the reference tetrahedron's first point, the
+  // origin, does not move.
+  const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 1, "matrix": [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]]}], "timing": {"arc_length": "p"}})",
+                                                "s.json");
+  EXPECT_EQ(error_of(scene), "/timing/arc_length | cannot pace SAM by the arc length of p: the path has zero "
+                             "length: the point does not move");
 }
 
 }  // namespace

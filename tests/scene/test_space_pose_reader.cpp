@@ -54,6 +54,20 @@ TEST(SpacePoseScene, TetrahedraMapTheReferenceTetrahedron) {
   EXPECT_LT((apply(A, Vector3d(1, 1, 5)) - Vector3d(0, 0, 4)).norm(), 1e-14);
 }
 
+// "timing" reads as in 2D and reaches the scene's panel.
+TEST(SpacePoseScene, TimingIsReadAsInThePlane) {
+  const Scene scene = parse_space(R"({"dimension": 3, "method": "polySAM",
+      "timing": {"ease": "ease-in", "arc_length": "q", "per": "span"}, "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 1, "matrix": [[2, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})");
+  ASSERT_EQ(scene.panels.size(), 1u);
+  const Timing& timing = scene.panels[0].timing;
+  EXPECT_EQ(timing.ease, *find_named_ease("ease-in"));
+  EXPECT_EQ(timing.arc_length, TrackedPoint::end);
+  EXPECT_EQ(timing.per, WarpSpan::span);
+  EXPECT_EQ(timing.pointer, "/timing");
+}
+
 // "dimension": 2 is the plane's scene as before.
 TEST(SpacePoseScene, DimensionTwoIsThePlane) {
   const Scene plane = parse_scene(R"({"dimension": 2, "method": "SAM", "poses": [
