@@ -189,7 +189,7 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   // 3D pose scenes (src/scene/space_pose_reader.cpp's kSpaceSceneFields).
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
             (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
-                                   "reference_tetrahedron", "samples", "subdivisions", "golden", "shapes",
+                                   "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "shapes",
                                    "camera", "layers", "title", "canvas"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
