@@ -12,19 +12,28 @@ AffinePowers3 SteadyAffineMorph3::checked(const Affine3& B, const Affine3& C) {
 }
 
 SteadyAffineMorph3::SteadyAffineMorph3(const Affine3& B, const Affine3& C)
-    : B_(B), C_(C), powers_(checked(B, C)), log_(powers_.log()) {}
+    : B_(B),
+      C_(C),
+      powers_(checked(B, C)),
+      change_(Affine3{powers_.affinity().L, C.b - B.b}),
+      change_log_(change_.log()) {}
 
+// A^u o B = [L^u L_B | b_B + g_u(L) (b_C - b_B)], g_u(L) = (L^u - I)(L - I)^-1
+// (as in 2D, affine_power.cpp): the translation written without A's own
+// b_C - L b_B, which is huge when B is small (a motion from a pose 1e-50 the
+// size of the other) and would cancel in L^u b_B + g_u(L) b (N59).
 Affine3 SteadyAffineMorph3::at(double u) const {
   if (u == 0.0) return B_;
   if (u == 1.0) return C_;
-  return compose(powers_.at(u), B_);
+  const Affine3 power = change_.at(u);
+  return {power.L * B_.L, B_.b + power.b};
 }
 
 Affine3 SteadyAffineMorph3::velocity(double u) const {
-  // d/du A^u B x = G(A^u B x) with G = {log L, v}: the linear part C L(u),
-  // the translation C b(u) + v.
-  const Affine3 pose = at(u);
-  return {log_.L * pose.L, log_.L * pose.b + log_.b};
+  // d/du: L' = log(L) L^u L_B; b' = d/du g_u(L) d = log(L) g_u(L) d + l(L) d,
+  // d = b_C - b_B (Sec. 2.3 (6): log A applied to the pose, rewritten).
+  const Affine3 power = change_.at(u);
+  return {change_log_.L * power.L * B_.L, change_log_.L * power.b + change_log_.b};
 }
 
 }  // namespace pita

@@ -24,8 +24,11 @@ class SteadyAffineMorph3 {
  private:
   static AffinePowers3 checked(const Affine3& B, const Affine3& C);
   Affine3 B_, C_;
-  AffinePowers3 powers_;
-  Affine3 log_;  // {log L, v} of A
+  AffinePowers3 powers_;  // of A = C o B^-1
+  // Of [L | b_C - b_B] (L the linear part of A): its power's translation is
+  // g_u(L) (b_C - b_B), the part of A^u o B's translation that moves.
+  AffinePowers3 change_;
+  Affine3 change_log_;  // {log L, l(L) (b_C - b_B)}, l(L) = log L (L - I)^-1
 };
 
 }  // namespace pita

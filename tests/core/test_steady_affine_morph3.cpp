@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -38,6 +39,37 @@ TEST(SteadyAffineMorph3, VelocityIsTheDerivative) {
     const Affine3 before = morph.at(u - h), after = morph.at(u + h);
     const Affine3 expected{(after.L - before.L) / (2.0 * h), (after.b - before.b) / (2.0 * h)};
     EXPECT_LT(distance3(morph.velocity(u), expected), 1e-7) << u;
+  }
+}
+
+// From a pose 1e-50 the size of the other: A = C o B^-1 has a translation of
+// 1e50, which the SAM's b_B + g_u(L)(b_C - b_B) never forms. For B = [s R |
+// b_B], C = identity: L = R^T / s, and the translation is (I - g_u(L)) b_B,
+// g_u(L) = (L^u - I)(L - I)^-1 with L^u = s^-u R(-u theta) about R's axis,
+// evaluated here in long double.
+TEST(SteadyAffineMorph3, FromATinyPose) {
+  using Matrix3L = Eigen::Matrix<long double, 3, 3>;
+  using Vector3L = Eigen::Matrix<long double, 3, 1>;
+  const Vector3d axis = Vector3d(1, 2, 2).normalized();
+  const double theta = 0.7;
+  const Vector3d b_B(3.0, 4.0, -1.0);
+  for (const double s : {1e-8, 1e-50}) {
+    const Affine3 B{s * Eigen::AngleAxisd(theta, axis).toRotationMatrix(), b_B};
+    const SteadyAffineMorph3 sam(B, Affine3::identity());
+    for (const double u : {0.5, 1.5}) {
+      const Matrix3L L = Eigen::AngleAxis<long double>(-theta, axis.cast<long double>()).toRotationMatrix() / s;
+      const Matrix3L Lu = std::pow(static_cast<long double>(s), -static_cast<long double>(u)) *
+                          Eigen::AngleAxis<long double>(-u * theta, axis.cast<long double>()).toRotationMatrix();
+      const Matrix3L g = (Lu - Matrix3L::Identity()) * (L - Matrix3L::Identity()).inverse();
+      const Vector3L expected = (Matrix3L::Identity() - g) * b_B.cast<long double>();
+      const Affine3 pose = sam.at(u);
+      EXPECT_LT(static_cast<double>((pose.b.cast<long double>() - expected).norm() / expected.norm()), 1e-13)
+          << "s = " << s << ", u = " << u;
+      EXPECT_LT(static_cast<double>((pose.L.cast<long double>() - Lu * B.L.cast<long double>()).norm() /
+                                    (Lu * B.L.cast<long double>()).norm()),
+                1e-13)
+          << "s = " << s << ", u = " << u;
+    }
   }
 }
 
