@@ -33,7 +33,9 @@ TEST(ChainTable, NamesAreUniqueAndFoundExactly) {
 TEST(ChainTable, DefaultIsSpiralForTheSmaAndBlendForThreeKeyframeMethods) {
   EXPECT_EQ(default_chain(Method::SMA), Chain::spiral);
   for (const MethodInfo& about : all_methods()) {
-    if (about.keyframe_count == 3) EXPECT_EQ(default_chain(about.method), Chain::blend) << about.id;
+    if (about.keyframe_count == 3) {
+      EXPECT_EQ(default_chain(about.method), Chain::blend) << about.id;
+    }
   }
 }
 

@@ -40,8 +40,12 @@ TEST_P(NevilleChainOf, OnFourKeyframesIsEq48To50OnArrows) {
     // Windows evaluated away from their knots may leave the method's domain
     // (P2's polar magnitude turns negative): nothing to compare there, except
     // at the ends, where the chain is exactly X or Y.
-    if (u == 0.0) EXPECT_TRUE(test::arrows_near(chain->at(t), x, 0.0, 1.0, false));
-    if (u == 1.0) EXPECT_TRUE(test::arrows_near(chain->at(t), y, 0.0, 1.0, false));
+    if (u == 0.0) {
+      EXPECT_TRUE(test::arrows_near(chain->at(t), x, 0.0, 1.0, false));
+    }
+    if (u == 1.0) {
+      EXPECT_TRUE(test::arrows_near(chain->at(t), y, 0.0, 1.0, false));
+    }
     if (!(x.m > 0.0 && y.m > 0.0 && is_finite(x) && is_finite(y))) continue;
     ++compared;
     const Arrow expected = test::blend_of(x, y, u, info(m).winding_aware);  // Eq. 50, M for the blend
