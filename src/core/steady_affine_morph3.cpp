@@ -15,8 +15,7 @@ SteadyAffineMorph3::SteadyAffineMorph3(const Affine3& B, const Affine3& C)
     : B_(B),
       C_(C),
       powers_(checked(B, C)),
-      change_(Affine3{powers_.affinity().L, C.b - B.b}),
-      change_log_(change_.log()) {}
+      change_(Affine3{powers_.affinity().L, C.b - B.b}) {}
 
 // A^u o B = [L^u L_B | b_B + g_u(L) (b_C - b_B)], g_u(L) = (L^u - I)(L - I)^-1
 // (as in 2D, affine_power.cpp): the translation written without A's own
@@ -32,8 +31,10 @@ Affine3 SteadyAffineMorph3::at(double u) const {
 Affine3 SteadyAffineMorph3::velocity(double u) const {
   // d/du: L' = log(L) L^u L_B; b' = d/du g_u(L) d = log(L) g_u(L) d + l(L) d,
   // d = b_C - b_B (Sec. 2.3 (6): log A applied to the pose, rewritten).
+  // log [L | d] = {log L, l(L) d}, l(L) = log L (L - I)^-1.
+  const Affine3 generator = change_.log();
   const Affine3 power = change_.at(u);
-  return {change_log_.L * power.L * B_.L, change_log_.L * power.b + change_log_.b};
+  return {generator.L * power.L * B_.L, generator.L * power.b + generator.b};
 }
 
 }  // namespace pita

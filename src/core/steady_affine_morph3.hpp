@@ -17,7 +17,9 @@ class SteadyAffineMorph3 {
   // A^u o B; exactly B at u = 0 and C at u = 1.
   Affine3 at(double u) const;
   // d/du of at(u) as (dL/du, db/du): the SAM's velocity field log A applied
-  // to the pose (Sec. 2.3 (6)).
+  // to the pose (Sec. 2.3 (6)). Takes a 3D log each call (about 2 us, more
+  // where its Newton steps are needed, N58); at() never does, so SAMs built
+  // per sample (Bezier SAMs, patches) do not pay for it.
   Affine3 velocity(double u) const;
   const AffinePowers3& powers() const { return powers_; }
 
@@ -28,7 +30,6 @@ class SteadyAffineMorph3 {
   // Of [L | b_C - b_B] (L the linear part of A): its power's translation is
   // g_u(L) (b_C - b_B), the part of A^u o B's translation that moves.
   AffinePowers3 change_;
-  Affine3 change_log_;  // {log L, l(L) (b_C - b_B)}, l(L) = log L (L - I)^-1
 };
 
 }  // namespace pita
