@@ -2,26 +2,48 @@
 # The README's test command (and .ci/run): installs what is missing, builds,
 # and runs every test with ctest. Exit 0 only if all pass.
 #
-#   scripts/test.sh              the Release build in build/ (gcc)
+#   scripts/test.sh              the Release build in build/ (gcc): every test
 #   scripts/test.sh --sanitize   the same suite in build-sanitize/: clang with
 #                                ASan + UBSan (every report fatal, leaks
 #                                included), plus the fuzz targets' replays
+#   scripts/test.sh --quick [LAYER...]
+#                                the edit loop: builds only the unit tests of
+#                                the layers named (core scene motion analysis
+#                                render animate golden sweep; default: all of
+#                                them) and runs them (ctest -L). Not the
+#                                suite: the CLI, oracle, golden, packaging and
+#                                script tests run only without --quick.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-sanitize=0
+PITA_UNIT_LAYERS=(core scene motion analysis render animate golden sweep)
+mode=full
+layers=()
 for arg in "$@"; do
   case "$arg" in
-    --sanitize) sanitize=1 ;;
-    -h|--help) sed -n '2,9s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
-    *) echo "scripts/test.sh: unknown argument \"$arg\" (use --sanitize or nothing)" >&2; exit 2 ;;
+    --sanitize) mode=sanitize ;;
+    --quick) mode=quick ;;
+    -h|--help) sed -n '2,15s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -*) echo "scripts/test.sh: unknown option \"$arg\" (use --sanitize, --quick [LAYER...] or nothing)" >&2; exit 2 ;;
+    *)
+      if [ "$mode" != quick ] || [[ ! " ${PITA_UNIT_LAYERS[*]} " == *" $arg "* ]]; then
+        echo "scripts/test.sh: \"$arg\" is not a layer with unit tests (after --quick: ${PITA_UNIT_LAYERS[*]})" >&2
+        exit 2
+      fi
+      layers+=("$arg") ;;
   esac
 done
 
-if [ "$sanitize" -eq 1 ]; then
-  pita_build_sanitize
-  ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS"
-else
-  pita_build_tests
-  ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS"
-fi
+case "$mode" in
+  sanitize)
+    pita_build_sanitize
+    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" ;;
+  quick)
+    if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
+    pita_build_tests "${layers[@]/#/test_}"
+    label="^($(IFS='|'; echo "${layers[*]}"))\$"
+    ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS" -L "$label" ;;
+  full)
+    pita_build_tests
+    ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS" ;;
+esac

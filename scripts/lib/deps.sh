@@ -89,12 +89,15 @@ pita_build() {
 }
 
 # The test build (scripts/test.sh): adds PITA_TEST_PACKAGES, configures build/
-# with the tests and the benchmark required, and builds every target.
+# with the tests and the benchmark required, and builds the targets given
+# (default: every target).
 pita_build_tests() {
   pita_install_dependencies "${PITA_TEST_PACKAGES[@]}" || return 1
   cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" \
     -DPITA_BUILD_TESTS=ON -DPITA_BUILD_BENCHMARKS=ON -DPITA_REQUIRE_TESTS=ON >/dev/null || return 1
-  cmake --build "$PITA_BUILD" -j "$PITA_JOBS"
+  local targets=()
+  if [ $# -gt 0 ]; then targets=(--target "$@"); fi
+  cmake --build "$PITA_BUILD" -j "$PITA_JOBS" "${targets[@]}"
 }
 
 # Configures (first time) and builds the sanitizer build: clang, Debug at -O1

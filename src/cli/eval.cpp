@@ -42,6 +42,25 @@ std::string_view trimmed(std::string_view text) {
   return text;
 }
 
+// The frames of a scene without a motion: none, in the format and with the
+// columns of its kind (a pose scene of the plane or of space).
+std::string no_motion_text(const scene::Scene& scene, bool csv) {
+  if (scene.dimension == 3) {
+    const std::span<const scene::PoseFrame3> none;
+    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(scene.method_name, none);
+  }
+  const std::span<const scene::PoseFrame> none;
+  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(scene.method_name, none);
+}
+
+ExitCode write_stdout(const std::string& text) {
+  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
+    std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno) << ")\n";
+    return ExitCode::failure;
+  }
+  return ExitCode::success;
+}
+
 // --samples N: an integer in [kMinSamples, kMaxSamples].
 int parse_samples(const std::string& text) {
   const std::string_view digits = trimmed(text);
@@ -307,7 +326,16 @@ ExitCode run_eval(const EvalOptions& options) {
 
     std::string text;  // the whole output is built before anything is printed
     if (scene.kind == scene::SceneKind::poses && scene.poses.empty() && scene.poses3.empty()) {
-      throw InputError(fmt::format("{}: /poses: the scene has no poses to evaluate", scene.path));
+      // A figure whose layers need no motion (sam-fig06-existence-3d): a
+      // well-formed, empty result and a note on stderr, exit 0, so that a loop
+      // over every scene (scripts/run.sh) goes through (docs/paper-notes.md N68).
+      if (options.panel) {
+        throw InputError(fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate",
+                                     scene.path));
+      }
+      text = no_motion_text(scene, options.format == "csv");
+      std::cerr << "pita: " << scene.path << ": /poses: the scene has no poses, so no motion: no frames\n";
+      return write_stdout(text);
     }
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     scene::Panel panel = scene::scene_panel(scene);
@@ -333,12 +361,7 @@ ExitCode run_eval(const EvalOptions& options) {
     }
     text = motion::frames_text(panel, motion, at, options.format == "csv" ? motion::FramesFormat::csv
                                                                          : motion::FramesFormat::json);
-    if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-      std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno)
-                << ")\n";
-      return ExitCode::failure;
-    }
-    return ExitCode::success;
+    return write_stdout(text);
   } catch (const InputError& error) {
     std::cerr << "pita: " << error.what() << '\n';
     return ExitCode::bad_input;

@@ -15,10 +15,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <unsupported/Eigen/MatrixFunctions>
+#include <Eigen/Dense>
 
 #include "core/pose_motion.hpp"
 #include "pose_test_support.hpp"
+#include "support/matrix_functions.hpp"
 
 namespace pita {
 namespace {
@@ -53,7 +54,7 @@ const std::vector<TimedPose3> kPoses = {
 // Schur-Pade power of the 4x4 homogeneous matrix in long double.
 Affine3 reference_sam(const Affine3& B, const Affine3& C, double u) {
   const Eigen::Matrix<long double, 4, 4> A = homogeneous(compose(C, inverse(B))).cast<long double>();
-  const Eigen::Matrix<long double, 4, 4> P = A.pow(static_cast<long double>(u));
+  const Eigen::Matrix<long double, 4, 4> P = oracle::pow(A, static_cast<long double>(u));
   return compose(affine3_of(Eigen::Matrix4d(P.cast<double>())), B);
 }
 

@@ -10,10 +10,11 @@
 #include <numbers>
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/MatrixFunctions>
+#include <Eigen/Dense>
 
 #include "render/pose_drawing.hpp"
 #include "../core/pose_test_support.hpp"
+#include "support/matrix_functions.hpp"
 
 namespace pita::render {
 namespace {
@@ -64,7 +65,7 @@ TEST(PoseDrawing, ShapesFollowTheSam) {
   for (int i = 0; i < 5; ++i) {
     const auto& outline = std::get<Polyline>(drawing.items[static_cast<std::size_t>(i)].shape);
     EXPECT_TRUE(outline.closed);
-    const Eigen::Matrix3d pose = A.pow(i / 4.0) * B;
+    const Eigen::Matrix3d pose = oracle::pow(A, i / 4.0) * B;
     for (std::size_t k = 0; k < 3; ++k) {
       EXPECT_LT(std::abs(outline.points[k] - through(pose, scene.shapes[0].points[k])), 1e-11)
           << "frame " << i << ", vertex " << k;
@@ -81,7 +82,7 @@ TEST(PoseDrawing, SamVelocitiesAreTheLogField) {
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 15u);  // 5 frames x 3 vertices
   const Eigen::Matrix3d A = homogeneous(scene.poses[1].pose) * homogeneous(scene.poses[0].pose).inverse();
-  const Eigen::Matrix3d field = A.log();
+  const Eigen::Matrix3d field = oracle::log(A);
   for (const Item& item : drawing.items) {
     const auto& arrow = std::get<ArrowShape>(item.shape);
     const Eigen::Vector3d v = field * Eigen::Vector3d(arrow.from.real(), arrow.from.imag(), 1.0);
@@ -226,7 +227,7 @@ TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   layer.power = 1;
   scene.pose_layers = {layer};
   const Drawing middle = pose_panel_drawing(scene, scene.panels[0]);
-  const Eigen::Matrix3d expected = (0.5 * (homogeneous(B).log() + homogeneous(C).log())).exp();
+  const Eigen::Matrix3d expected = oracle::exp(Eigen::Matrix3d(0.5 * (oracle::log(homogeneous(B)) + oracle::log(homogeneous(C)))));
   const auto& mid = std::get<Polyline>(middle.items.at(0).shape);
   EXPECT_LT(std::abs(mid.points[1] - through(expected, {1.0, 0.0})), 1e-12);
   // SAM squared at the middle: the last pose.
@@ -443,7 +444,7 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
   ASSERT_EQ(std::sscanf(text.c_str(), "grazing parameter s = %lf at all %d times", &s, &times), 2) << text;
   EXPECT_EQ(times, 129);
   EXPECT_NE(text.find("(spread < 1e-12): constant"), std::string::npos) << text;
-  const Eigen::Matrix3d H = homogeneous(last).log();  // the SAM's velocity field
+  const Eigen::Matrix3d H = oracle::log(homogeneous(last));  // the SAM's velocity field
   const Eigen::Vector2d v0 = H.topLeftCorner<2, 2>() * from + H.topRightCorner<2, 1>();
   const Eigen::Vector2d v1 = H.topLeftCorner<2, 2>() * d;
   EXPECT_NEAR(s, -cross(d, v0) / cross(d, v1), 1e-5);  // printed to 5 decimals
