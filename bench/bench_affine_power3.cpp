@@ -30,6 +30,9 @@
 #include "support/matrix_functions.hpp"
 
 namespace {
+// Named apart from bench_affine_power.cpp's helpers (the unity build
+// compiles both in one translation unit).
+namespace space {
 
 using namespace pita;
 using Eigen::Matrix3d;
@@ -218,4 +221,5 @@ BENCHMARK(BM_Power3Eigen);
 BENCHMARK(BM_Log3)->Arg(0)->Arg(1);
 BENCHMARK(BM_Log3Eigen)->Arg(0)->Arg(1);
 
+}  // namespace space
 }  // namespace

@@ -97,7 +97,7 @@ void BM_ChainPrepare(benchmark::State& state, Chain chain, Method m) {
   }
 }
 
-int register_all() {
+int register_chain_benchmarks() {
   struct Case {
     Chain chain;
     Method method;
@@ -118,6 +118,6 @@ int register_all() {
   benchmark::RegisterBenchmark("BM_ChainPrepare/blend/P6", BM_ChainPrepare, Chain::blend, Method::P6);
   return 0;
 }
-const int registered = register_all();
+const int chain_benchmarks = register_chain_benchmarks();
 
 }  // namespace

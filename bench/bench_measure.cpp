@@ -26,7 +26,7 @@ void BM_Measure(benchmark::State& state, const std::string& path) {
   state.counters["motions"] = static_cast<double>(motions);
 }
 
-int register_all() {
+int register_measure_benchmarks() {
   std::vector<std::filesystem::path> files;
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PITA_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() == ".json") files.push_back(entry.path());
@@ -38,6 +38,6 @@ int register_all() {
   }
   return 0;
 }
-const int registered = register_all();
+const int measure_benchmarks = register_measure_benchmarks();
 
 }  // namespace

@@ -38,7 +38,7 @@ void BM_Prepare(benchmark::State& state, Method m) {
   }
 }
 
-int register_all() {
+int register_method_benchmarks() {
   for (const MethodInfo& mi : all_methods()) {
     benchmark::RegisterBenchmark(("BM_Frame/" + std::string(mi.id)).c_str(), BM_Frame, mi.method);
   }
@@ -47,7 +47,7 @@ int register_all() {
   }
   return 0;
 }
-const int registered = register_all();
+const int method_benchmarks = register_method_benchmarks();
 
 }  // namespace
 

@@ -8,7 +8,6 @@ namespace pita::analysis {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 Keyframe key(double t, double x, double y, double m, double w) { return {t, Arrow{{x, y}, m, w}}; }
 

@@ -10,7 +10,6 @@
 namespace pita::analysis {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 }  // namespace
 
 bool sam_exists(double a, double s) {

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <variant>
 
 #include <Eigen/LU>
 #include <fmt/format.h>
 
+#include "analysis/arrow_distance.hpp"
 #include "analysis/prediction.hpp"
 #include "core/discrepancy.hpp"
+#include "core/overloaded.hpp"
 #include "core/steadiness.hpp"
 #include "motion/sampler.hpp"
 
@@ -54,9 +57,6 @@ Keyframe tweaked(Keyframe key, Parameter which, double delta, double extent, dou
   return key;
 }
 
-double frame_distance(const Arrow& x, const Arrow& y) {
-  return std::max(std::abs(x.p - y.p), std::abs(x.q() - y.q()));
-}
 
 double knot_min(const std::vector<Keyframe>& keys) {
   double least = keys.front().t;
@@ -115,7 +115,7 @@ double largest_turn(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
 
 double largest_change(const std::vector<Arrow>& x, const std::vector<Arrow>& y) {
   double change = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) change = std::max(change, frame_distance(x[i], y[i]));
+  for (std::size_t i = 0; i < x.size(); ++i) change = std::max(change, endpoint_distance(x[i], y[i]));
   return change;
 }
 
@@ -336,22 +336,27 @@ MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& pane
   out.samples = panel.samples;
   try {
     const motion::SceneMotion motion = motion::build_motion(scene, panel);
-    if (scene.kind == scene::SceneKind::poses) {
-      measure_poses(scene, panel, motion, options, out);
-    } else if (motion.has_points()) {
-      // A curve through timed points (Sec. 7.6): its path only.
-      const double first = motion.first(), step = (motion.last() - first) / options.path_samples;
-      std::vector<Point> p;
-      for (int i = -1; i <= options.path_samples + 1; ++i) {
-        p.push_back(motion.point_at(i == options.path_samples ? motion.last() : first + step * i));
-      }
-      out.path_p = path_stats(p);
-    } else {
-      out.extent = keyframe_extent(panel.keyframes);
-      measure_discrepancy(panel, motion, out);
-      measure_paths(motion, options, out);
-      measure_reactions(scene, panel, motion, options, out);
-    }
+    std::visit(overloaded{[&](const motion::ArrowTrack&) {
+                            out.extent = keyframe_extent(panel.keyframes);
+                            measure_discrepancy(panel, motion, out);
+                            measure_paths(motion, options, out);
+                            measure_reactions(scene, panel, motion, options, out);
+                          },
+                          [&](const motion::PointTrack&) {
+                            // A curve through timed points (Sec. 7.6): its path only.
+                            const double first = motion.first();
+                            const double step = (motion.last() - first) / options.path_samples;
+                            std::vector<Point> p;
+                            for (int i = -1; i <= options.path_samples + 1; ++i) {
+                              p.push_back(motion.point_at(i == options.path_samples ? motion.last() : first + step * i));
+                            }
+                            out.path_p = path_stats(p);
+                          },
+                          // Poses of space are refused by pose_at (at /dimension) until the
+                          // measures of space exist (issue 34, item 6).
+                          [&](const motion::PlanePoses&) { measure_poses(scene, panel, motion, options, out); },
+                          [&](const motion::SpacePoses&) { (void)motion.pose_at(motion.first()); }},
+               motion.built());
   } catch (const motion::NoMotion& error) {
     out.no_motion = error.what();
   } catch (const std::exception& error) {

@@ -9,13 +9,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "analysis/arrow_distance.hpp"
 #include "analysis/audit_configs.hpp"
 
 namespace pita::analysis {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The one table of properties (Fig. 10's rows, Sec. 4.1-4.11). Thresholds:
@@ -71,9 +71,6 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      false, 1e-5},
 }};
 
-double frame_distance(const Arrow& x, const Arrow& y) {
-  return std::max(std::abs(x.p - y.p), std::abs(x.q() - y.q()));
-}
 
 // Times in [a, c]: 17 uniform ones and the middle knot.
 std::vector<double> sample_times(const KeyframeTriple& k) {
@@ -126,7 +123,7 @@ Worst compare(const Motion& X, const Motion& Y, const KeyframeTriple& k, double 
   for (double t : sample_times(k)) {
     const Arrow x = expect ? expect(X.at(t)) : X.at(t);
     const Arrow y = Y.at(y_time ? y_time(t) : t);
-    w.take(frame_distance(x, y) / scale, t);
+    w.take(endpoint_distance(x, y) / scale, t);
   }
   return w;
 }
@@ -251,7 +248,7 @@ Probe probe_winding(Method m, const KeyframeTriple& k) {
     for (double t : sample_times(k)) {
       const Arrow x = D->at(t), y = T->at(t);
       const double turn = std::abs(std::arg(y.vector() / x.vector()));
-      w.take(turn + frame_distance(x, y) / ext, t);
+      w.take(turn + endpoint_distance(x, y) / ext, t);
     }
     if (w.value < best.value) {
       best = {w.value, w.t, k, kt, "frames change when a whole turn is added to keyframe " + std::string(1, "ABC"[which]),
@@ -280,7 +277,7 @@ KeyframeTriple tweaked(const KeyframeTriple& k, int which, int parameter, double
   return out;
 }
 
-constexpr std::array<const char*, 5> kParameterNames{"p.x", "p.y", "m", "w", "t"};
+constexpr std::array<const char*, 5> kKeyframeParameterNames{"p.x", "p.y", "m", "w", "t"};
 
 // A pop is a jump that does not shrink with the tweak: the frames' move for a
 // tweak of +-1e-10 less a tenth of their move for +-1e-9 (zero, to rounding,
@@ -301,15 +298,15 @@ Probe probe_pop(Method m, const KeyframeTriple& k) {
       Worst w;
       const double scale = motion_scale(*L, k);
       for (double t : sample_times(k)) {
-        const double big = frame_distance(L->at(t), H->at(t)), small = frame_distance(L10->at(t), H10->at(t));
+        const double big = endpoint_distance(L->at(t), H->at(t)), small = endpoint_distance(L10->at(t), H10->at(t));
         w.take(std::max(0.0, small - 0.1 * big) / scale, t);
       }
       if (w.value > best.value) {
         best = {w.value, w.t, lo, hi,
-                std::string("frames barely move when ") + "ABC"[which] + "." + kParameterNames[parameter] +
+                std::string("frames barely move when ") + "ABC"[which] + "." + kKeyframeParameterNames[parameter] +
                     " changes by 2e-9 (original: -1e-9, counterpart: +1e-9)",
                 {{"keyframe", which}, {"parameter", parameter}, {"tweak", 2 * kTweak}}, ""};
-        best.relation = std::string("frames barely move when ") + "ABC"[which] + "." + kParameterNames[parameter] +
+        best.relation = std::string("frames barely move when ") + "ABC"[which] + "." + kKeyframeParameterNames[parameter] +
                         " changes by 2e-9 (original: -1e-9, counterpart: +1e-9); the jump does not shrink for 2e-10";
       }
     }

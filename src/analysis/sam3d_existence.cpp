@@ -20,7 +20,6 @@ namespace pita::analysis {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 constexpr std::array<PaperExistenceBound, 3> kPaperBounds = {{
     {2.0 * kPi / 3.0, 0.29, "2 pi/3"},

@@ -1,5 +1,8 @@
 #include "animate/frame.hpp"
 
+#include <variant>
+
+#include "core/overloaded.hpp"
 #include "motion/moving_keyframes.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/scene_motion.hpp"
@@ -24,6 +27,13 @@ Json point(Point p) { return Json::array({p.real(), p.imag()}); }
 
 Json arrow_json(const Arrow& a) {
   return Json{{"p", point(a.p)}, {"m", a.m}, {"w", a.w}, {"q", point(a.q())}};
+}
+
+// A pose of space as `pita eval` prints it: rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz].
+Json pose3_json(const Affine3& A) {
+  Json rows = Json::array();
+  for (int r = 0; r < 3; ++r) rows.push_back(Json::array({A.L(r, 0), A.L(r, 1), A.L(r, 2), A.b(r)}));
+  return rows;
 }
 
 }  // namespace
@@ -86,14 +96,15 @@ void add_panel_state(Json& into, const scene::Scene& scene, const scene::Panel& 
     return;
   }
   const motion::SceneMotion motion = motion::build_motion(scene, panel);
-  if (scene.kind == scene::SceneKind::poses) {
-    const Affine2 A = motion.pose_at(t);
-    into["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}), Json::array({A.L(1, 0), A.L(1, 1), A.b(1)})});
-  } else if (motion.has_points()) {
-    into["p"] = point(motion.point_at(t));
-  } else {
-    into["D"] = arrow_json(motion.arrow_at(t));
-  }
+  std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = arrow_json(motion.arrow_at(t)); },
+                        [&](const motion::PointTrack&) { into["p"] = point(motion.point_at(t)); },
+                        [&](const motion::PlanePoses&) {
+                          const Affine2 A = motion.pose_at(t);
+                          into["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}),
+                                                   Json::array({A.L(1, 0), A.L(1, 1), A.b(1)})});
+                        },
+                        [&](const motion::SpacePoses&) { into["A"] = pose3_json(motion.pose3_at(t)); }},
+             motion.built());
 }
 
 }  // namespace

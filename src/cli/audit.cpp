@@ -57,7 +57,7 @@ std::vector<Method> parse_methods(const std::string& list) {
   return out;
 }
 
-constexpr const char* kFooter = R"(
+constexpr const char* kAuditFooter = R"(
 Measures, for each method and each property of the PITA paper's Sec. 4 (its Fig. 10),
 the worst value over the crafted edge cases and N random configurations (tame, wild and
 near-singular in turn) drawn from the seed, and says whether the property holds. The
@@ -84,7 +84,7 @@ folder that cannot be created), 3 an output could not be written.
 std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   auto options = std::make_shared<AuditCliOptions>();
   CLI::App* audit = app.add_subcommand("audit", "Measure the properties of Sec. 4 (Fig. 10) for every method");
-  audit->footer(kFooter);
+  audit->footer(kAuditFooter);
   audit->add_option_function<std::string>(
           "--methods", [options](const std::string& list) { options->methods = list; },
           "Comma-separated methods (default: every arrow method through three keyframes)")

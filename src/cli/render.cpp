@@ -112,7 +112,7 @@ std::string layer_kind_list(const std::vector<scene::detail::LayerKindInfo>& kin
   return text + line;
 }
 
-std::string footer() {
+std::string render_footer() {
   std::string text = R"(
 OUT is a file when it ends in .svg, .png or .pdf (one scene; the format is its
 extension), otherwise a directory (created if needed) that receives
@@ -182,7 +182,7 @@ signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP; unfinished temporary files remove
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* render = app.add_subcommand("render", "Draw the figures of scenes as SVG, PNG or PDF");
-  render->footer(footer());
+  render->footer(render_footer());
   // Required unless --list: checked in run_render, with CLI11's words.
   render->add_option("SCENE", options->scene_paths, "Scene files (JSON)");
   render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")

@@ -19,7 +19,7 @@ namespace pita::cli {
 
 namespace {
 
-constexpr const char* kFooter = R"(
+constexpr const char* kExistenceFooter = R"(
 The SAM paper's Sec. 5.2 experiment: axes through the vertices of an icosahedron
 subdivided --subdivisions times (one per antipodal pair: 81 for 2); for each, rotations
 by --angles angles evenly spaced over [-theta, theta]; every entry of their matrix L
@@ -90,7 +90,7 @@ std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit)
   CLI::App* command = audit.add_subcommand(
       "sam3d-existence", "Where a SAM exists in 3D: the largest safe perturbation p against theta (SAM Sec. 5.2)");
   options->command = command;
-  command->footer(kFooter);
+  command->footer(kExistenceFooter);
   command->add_option("--subdivisions", options->subdivisions, "Subdivisions of the icosahedron")
       ->check(CLI::Range(0, analysis::kMaxExistenceSubdivisions))
       ->type_name("N")

@@ -20,7 +20,7 @@ namespace {
 // manifest has them all).
 constexpr std::size_t kMaxListed = 50;
 
-std::string footer() {
+std::string sweep_footer() {
   return R"(
 SPEC is a:b:n (n values from a to b, both included), log:a:b:n (geometric), or a
 list v1,v2,... of numbers or strings. Several --vary make every combination (the
@@ -61,7 +61,7 @@ std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
   auto command = std::make_shared<SweepCommand>();
   CLI::App* sweep = app.add_subcommand("sweep", "Run many variants of a scene: figures, frames, a manifest of metrics "
                                                 "and a contact sheet");
-  sweep->footer(footer());
+  sweep->footer(sweep_footer());
   sweep->add_option_function<std::string>(
            "SCENE", [command](const std::string& s) { command->scene_path = s; }, "The base scene file (JSON)")
       ->type_name("SCENE");

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 
 namespace pita {
 
@@ -18,14 +19,8 @@ namespace {
 using Eigen::Matrix2d;
 using Eigen::Vector2d;
 
-constexpr double kPi = std::numbers::pi;
 
-// A number in messages: six significant digits.
-std::string g6(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
+using number_text::g6;
 
 // The quantities of A.5 read off L = [[a, b], [c, d]], computed on the scaled
 // L^ = 2^-exponent L so that no product of entries over- or underflows (the

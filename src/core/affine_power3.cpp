@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 
 namespace pita {
 
@@ -24,11 +25,7 @@ using Complex = std::complex<double>;
 
 constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
-std::string g6(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", x);
-  return text;
-}
+using number_text::g6;
 
 std::string complex_text(Complex z) {
   if (z.imag() == 0.0) return g6(z.real());
@@ -115,14 +112,14 @@ Vector3d eigenvector(const Matrix3d& L, double lambda) {
 
 // |z| without hypot (its overflow care is not needed for eigenvalues of a
 // finite 3x3, and it is slow).
-double magnitude(Complex z) { return std::sqrt(z.real() * z.real() + z.imag() * z.imag()); }
+double modulus(Complex z) { return std::sqrt(z.real() * z.real() + z.imag() * z.imag()); }
 
 // Whether the three computed eigenvalues are one triple eigenvalue (rounding
 // may have made a complex pair of it, or three distinct reals).
 bool triple_cluster(const std::array<Complex, 3>& values) {
-  const double size = std::max({magnitude(values[0]), magnitude(values[1]), magnitude(values[2]), 1e-300});
-  const double spread = std::max({magnitude(values[0] - values[1]), magnitude(values[0] - values[2]),
-                                  magnitude(values[1] - values[2])});
+  const double size = std::max({modulus(values[0]), modulus(values[1]), modulus(values[2]), 1e-300});
+  const double spread = std::max({modulus(values[0] - values[1]), modulus(values[0] - values[2]),
+                                  modulus(values[1] - values[2])});
   return spread <= limits::kEigenvalueCluster * size;
 }
 
@@ -218,7 +215,7 @@ std::optional<Vector3d> fixed_point(const Affine3& A) {
   for (const Complex& v : values) {
     // A triple cluster is its mean (split_guess), exact where the roots are not.
     const Complex value = triple_cluster(values) ? Complex(guess) : v;
-    if (magnitude(value - 1.0) <= limits::kUnitEigenvalue) return std::nullopt;
+    if (modulus(value - 1.0) <= limits::kUnitEigenvalue) return std::nullopt;
   }
   const Vector3d q = (Matrix3d::Identity() - A.L).partialPivLu().solve(A.b);  // (I - L) q = b
   if (!q.allFinite()) return std::nullopt;
@@ -313,12 +310,12 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
   log_lambda_ = std::log1p(lambda_ - 1.0);
 
   // The corner's formula (limits.hpp, "EAR in 3D").
-  const double radius = std::max({std::abs(lambda_ - 1.0), magnitude(mu1 - 1.0), magnitude(mu2 - 1.0)});
+  const double radius = std::max({std::abs(lambda_ - 1.0), modulus(mu1 - 1.0), modulus(mu2 - 1.0)});
   const double from_one = std::abs(lambda_ - 1.0);
-  const double from_plane = std::min(magnitude(lambda_ - mu1), magnitude(lambda_ - mu2));
+  const double from_plane = std::min(modulus(lambda_ - mu1), modulus(lambda_ - mu2));
   M_ = M;
   // The Sylvester lean of log() needs lambda I - M well conditioned.
-  lean_by_sylvester_ = from_plane >= limits::kSylvesterLeanGap * std::max({lambda_, magnitude(mu1), magnitude(mu2)});
+  lean_by_sylvester_ = from_plane >= limits::kSylvesterLeanGap * std::max({lambda_, modulus(mu1), modulus(mu2)});
   if (radius <= limits::kUnitSeriesRadius) {
     corner_ = Corner::unit_series;
   } else if (from_one >= from_plane) {

@@ -9,6 +9,8 @@ namespace pita {
 
 using Complex = std::complex<double>;
 
+inline constexpr double kPi = std::numbers::pi;
+
 // e^z - 1 without cancellation for small |z| (the standard library has no
 // complex expm1). Real part: (e^x - 1) cos y + (cos y - 1).
 inline Complex expm1(Complex z) {

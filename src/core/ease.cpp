@@ -11,7 +11,6 @@ namespace pita {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // CSS Easing Functions Level 1, Sec. 2.2: the named cubic Bezier easings.
 constexpr std::array<NamedEase, 7> kNamedEases{{

@@ -2,8 +2,10 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <variant>
 
 #include "core/chains/chain.hpp"
+#include "core/overloaded.hpp"
 
 namespace pita::motion {
 
@@ -54,22 +56,27 @@ std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, st
                         FramesFormat format) {
   const bool csv = format == FramesFormat::csv;
   const std::string chain = motion.chain() ? std::string(info(*motion.chain()).name) : "";
-  if (motion.has_points()) {
-    std::vector<scene::PointFrame> frames;
-    frames.reserve(times.size());
-    for (const double t : times) frames.push_back({t, motion.point_at(t)});
-    return csv ? scene::point_frames_to_csv(frames) : scene::point_frames_to_json(panel.method_name, frames, chain);
-  }
-  if (motion.in_space()) {
-    const std::vector<scene::PoseFrame3> frames = sample_poses3(motion, times);
-    return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
-  }
-  if (motion.kind() == scene::SceneKind::poses) {
-    const std::vector<PoseFrame> frames = sample_poses(motion, times);
-    return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
-  }
-  const std::vector<Frame> frames = sample_arrows(motion, times);
-  return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(panel.method_name, frames, chain);
+  return std::visit(
+      overloaded{[&](const ArrowTrack&) {
+                   const std::vector<Frame> frames = sample_arrows(motion, times);
+                   return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(panel.method_name, frames, chain);
+                 },
+                 [&](const PointTrack&) {
+                   std::vector<scene::PointFrame> frames;
+                   frames.reserve(times.size());
+                   for (const double t : times) frames.push_back({t, motion.point_at(t)});
+                   return csv ? scene::point_frames_to_csv(frames)
+                              : scene::point_frames_to_json(panel.method_name, frames, chain);
+                 },
+                 [&](const PlanePoses&) {
+                   const std::vector<PoseFrame> frames = sample_poses(motion, times);
+                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
+                 },
+                 [&](const SpacePoses&) {
+                   const std::vector<scene::PoseFrame3> frames = sample_poses3(motion, times);
+                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
+                 }},
+      motion.built());
 }
 
 }  // namespace pita::motion

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/overloaded.hpp"
 #include "core/pitas/registry.hpp"
 
 namespace pita::motion {
@@ -84,74 +85,91 @@ PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& pane
   }
 }
 
-SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
-  SceneMotion motion;
-  motion.kind_ = scene.kind;
-  motion.file_ = scene.path;
-  motion.label_ = method_label(scene, panel);
-  const bool poses = scene.kind == scene::SceneKind::poses;
-  motion.pointer_ = panel.motion_pointer;
+namespace {
 
-  if (!poses && !panel.points.empty()) {
-    motion.method_id_ = std::string(info(panel.method).id);
-    motion.chain_ = chain_of(panel);
+// The motion of the panel's keyframes, points or poses, refused with NoMotion
+// (at the panel's motion pointer) when the method has none through them.
+BuiltMotion build_kind(const scene::Scene& scene, const scene::Panel& panel, const std::string& label) {
+  const auto refuse = [&](const std::string& reason) { return NoMotion(scene.path, panel.motion_pointer, reason); };
+  if (scene.kind == scene::SceneKind::poses && panel.dimension == 3) {
+    try {
+      return SpacePoses{std::make_shared<const PoseMotion3>(panel.pose_method, panel.poses3, panel.subdivisions),
+                        scene.reference_tetrahedron};
+    } catch (const NoSamBetweenPoses& error) {
+      throw refuse(scene::no_sam_reason(error, panel.pose_method));
+    } catch (const std::invalid_argument& error) {
+      throw refuse(error.what());
+    }
+  }
+  if (scene.kind == scene::SceneKind::poses) {
+    if (panel.poses.empty()) throw refuse("the panel has no poses to interpolate");
+    try {
+      return PlanePoses{std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions,
+                                                           scene.reference_triangle),
+                        scene.reference_triangle};
+    } catch (const NoSamBetweenPoses& error) {
+      throw refuse(scene::no_sam_reason(error, panel.pose_method));
+    } catch (const std::invalid_argument& error) {
+      throw refuse(error.what());
+    }
+  }
+  if (!panel.points.empty()) {
     if (!panel.timing.is_identity()) {
-      throw NoMotion(motion.file_, panel.timing.pointer,
+      throw NoMotion(scene.path, panel.timing.pointer,
                      "timing paces keyframes and poses; a panel of \"points\" has none");
     }
-    motion.points_ = std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita));
-    for (const TimedPoint& point : panel.points) motion.knots_.push_back(point.t);
-    return motion;
+    return PointTrack{std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita)),
+                      chain_of(panel)};
   }
-  if (poses && panel.dimension == 3) {
-    motion.method_id_ = std::string(info(panel.pose_method).id);
-    try {
-      motion.poses3_ = std::make_shared<const PoseMotion3>(panel.pose_method, panel.poses3, panel.subdivisions);
-    } catch (const NoSamBetweenPoses& error) {
-      throw NoMotion(motion.file_, motion.pointer_, scene::no_sam_reason(error, panel.pose_method));
-    } catch (const std::invalid_argument& error) {
-      throw NoMotion(motion.file_, motion.pointer_, error.what());
-    }
-    for (const TimedPose3& pose : panel.poses3) motion.knots_.push_back(pose.t);
-  } else if (poses) {
-    motion.method_id_ = std::string(info(panel.pose_method).id);
-    if (panel.poses.empty()) {
-      throw NoMotion(motion.file_, motion.pointer_, "the panel has no poses to interpolate");
-    }
-    try {
-      motion.poses_ = std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions,
-                                                         scene.reference_triangle);
-    } catch (const NoSamBetweenPoses& error) {
-      throw NoMotion(motion.file_, motion.pointer_, scene::no_sam_reason(error, panel.pose_method));
-    } catch (const std::invalid_argument& error) {
-      throw NoMotion(motion.file_, motion.pointer_, error.what());
-    }
-    for (const TimedPose& pose : panel.poses) motion.knots_.push_back(pose.t);
-  } else {
-    motion.method_id_ = std::string(info(panel.method).id);
-    try {
-      motion.chain_ = chain_of(panel);
-      motion.arrows_ = make_motion(panel.method, panel.keyframes, panel.options, panel.chain);
-    } catch (const MotionDomainError& error) {
-      throw NoMotion(motion.file_, motion.pointer_,
-                     fmt::format("method {} has no motion through these keyframes: {}", motion.label_, error.what()));
-    } catch (const std::invalid_argument& error) {
-      throw NoMotion(motion.file_, motion.pointer_,
-                     fmt::format("method {} refuses these keyframes: {}", motion.label_, error.what()));
-    }
-    for (const Keyframe& key : panel.keyframes) motion.knots_.push_back(key.t);
-    // Knots "as-given" may come in any order (docs/paper-notes.md N41); the
-    // motion runs from the least to the greatest.
-    std::sort(motion.knots_.begin(), motion.knots_.end());
+  try {
+    std::optional<Chain> chain = chain_of(panel);
+    return ArrowTrack{make_motion(panel.method, panel.keyframes, panel.options, panel.chain), chain};
+  } catch (const MotionDomainError& error) {
+    throw refuse(fmt::format("method {} has no motion through these keyframes: {}", label, error.what()));
+  } catch (const std::invalid_argument& error) {
+    throw refuse(fmt::format("method {} refuses these keyframes: {}", label, error.what()));
   }
+}
 
-  motion.reference_ = scene.reference_triangle;
-  motion.reference3_ = scene.reference_tetrahedron;
+// The knots of the panel's motion, increasing: keyframes "as-given" may come
+// in any order (docs/paper-notes.md N41); the motion runs from the least to
+// the greatest.
+std::vector<double> knots_of(const scene::Panel& panel, const BuiltMotion& built) {
+  std::vector<double> knots;
+  std::visit(overloaded{[&](const ArrowTrack&) {
+                          for (const Keyframe& key : panel.keyframes) knots.push_back(key.t);
+                          std::sort(knots.begin(), knots.end());
+                        },
+                        [&](const PointTrack&) {
+                          for (const TimedPoint& point : panel.points) knots.push_back(point.t);
+                        },
+                        [&](const PlanePoses&) {
+                          for (const TimedPose& pose : panel.poses) knots.push_back(pose.t);
+                        },
+                        [&](const SpacePoses&) {
+                          for (const TimedPose3& pose : panel.poses3) knots.push_back(pose.t);
+                        }},
+             built);
+  return knots;
+}
+
+}  // namespace
+
+SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
+  SceneMotion motion;
+  motion.file_ = scene.path;
+  motion.label_ = method_label(scene, panel);
+  motion.pointer_ = panel.motion_pointer;
+  motion.method_id_ = scene.kind == scene::SceneKind::poses ? std::string(info(panel.pose_method).id)
+                                                            : std::string(info(panel.method).id);
+  motion.built_ = build_kind(scene, panel, motion.label_);
+  motion.knots_ = knots_of(panel, motion.built_);
+
   const scene::Timing& timing = panel.timing;
   if (timing.is_identity()) return motion;
   const std::string at = timing.arc_length ? timing.pointer + "/arc_length" : timing.pointer;
   try {
-    if (motion.poses3_) {
+    if (motion.is<SpacePoses>()) {
       ArcLengthTable::Path3 path;
       if (timing.arc_length) path = motion.point_path3(*timing.arc_length);
       motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
@@ -170,29 +188,66 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   return motion;
 }
 
-void SceneMotion::require_plane() const {
-  if (poses3_) {
+void SceneMotion::not_of_kind(std::string_view wanted) const {
+  // A 3D scene asked for work in the plane: its "dimension" is at fault.
+  if (is<SpacePoses>()) {
     throw NoMotion(file_, "/dimension", "this is a 3D pose scene: this command works on poses of the plane only");
   }
+  const std::string_view kind =
+      std::visit(overloaded{[](const ArrowTrack&) { return std::string_view("keyframe arrows"); },
+                            [](const PointTrack&) { return std::string_view("timed points"); },
+                            [](const PlanePoses&) { return std::string_view("poses of the plane"); },
+                            [](const SpacePoses&) { return std::string_view("poses of space"); }},
+                 built_);
+  if (is<PointTrack>() && wanted == "keyframe arrows") {
+    throw NoMotion(file_, pointer_,
+                   "this panel has timed \"points\", not keyframes: draw it with a \"point-trajectory\" layer");
+  }
+  throw NoMotion(file_, pointer_, fmt::format("this motion is of {}, not of {}", kind, wanted));
 }
 
+template <class Kind>
+const Kind& SceneMotion::as(std::string_view wanted) const {
+  if (const Kind* kind = std::get_if<Kind>(&built_)) return *kind;
+  not_of_kind(wanted);
+}
+
+std::optional<Chain> SceneMotion::chain() const {
+  return std::visit(overloaded{[](const ArrowTrack& track) { return track.chain; },
+                               [](const PointTrack& track) { return track.chain; },
+                               [](const PlanePoses&) { return std::optional<Chain>(); },
+                               [](const SpacePoses&) { return std::optional<Chain>(); }},
+                    built_);
+}
+
+const Motion& SceneMotion::arrows() const { return *as<ArrowTrack>("keyframe arrows").motion; }
+const PoseMotion& SceneMotion::poses() const { return *as<PlanePoses>("poses of the plane").motion; }
+
 std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) const {
-  require_plane();
-  if (kind_ == scene::SceneKind::poses) {
-    const Point origin = point == scene::TrackedPoint::start ? reference_[0]
-                         : point == scene::TrackedPoint::end ? reference_[1]
-                                                             : 0.5 * (reference_[0] + reference_[1]);
-    return [pose_motion = poses_, origin](double tau) { return pita::apply(pose_motion->at(tau), origin); };
-  }
-  return [arrow_motion = arrows_, point](double tau) { return tracked(arrow_motion->at(tau), point); };
+  using Path = std::function<Point(double)>;
+  return std::visit(
+      overloaded{[&](const ArrowTrack& track) -> Path {
+                   return [motion = track.motion, point](double tau) { return tracked(motion->at(tau), point); };
+                 },
+                 [&](const PointTrack&) -> Path { not_of_kind("keyframe arrows"); },
+                 [&](const PlanePoses& poses) -> Path {
+                   const std::array<Point, 3>& reference = poses.reference;
+                   const Point origin = point == scene::TrackedPoint::start ? reference[0]
+                                        : point == scene::TrackedPoint::end ? reference[1]
+                                                                            : 0.5 * (reference[0] + reference[1]);
+                   return [motion = poses.motion, origin](double tau) { return pita::apply(motion->at(tau), origin); };
+                 },
+                 [&](const SpacePoses&) -> Path { not_of_kind("poses of the plane"); }},
+      built_);
 }
 
 std::function<Eigen::Vector3d(double)> SceneMotion::point_path3(scene::TrackedPoint point) const {
-  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
-  const Eigen::Vector3d origin = point == scene::TrackedPoint::start ? reference3_[0]
-                                 : point == scene::TrackedPoint::end ? reference3_[1]
-                                                                     : 0.5 * (reference3_[0] + reference3_[1]);
-  return [pose_motion = poses3_, origin](double tau) { return pita::apply(pose_motion->at(tau), origin); };
+  const SpacePoses& poses = as<SpacePoses>("poses of space");
+  const std::array<Eigen::Vector3d, 4>& reference = poses.reference;
+  const Eigen::Vector3d origin = point == scene::TrackedPoint::start ? reference[0]
+                                 : point == scene::TrackedPoint::end ? reference[1]
+                                                                     : 0.5 * (reference[0] + reference[1]);
+  return [motion = poses.motion, origin](double tau) { return pita::apply(motion->at(tau), origin); };
 }
 
 SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene, scene::scene_panel(scene)); }
@@ -210,9 +265,10 @@ void SceneMotion::undefined(double t, const std::exception& error) const {
 }
 
 Point SceneMotion::point_at(double t) const {
+  const PointCurveMotion& curve = *as<PointTrack>("timed points").curve;
   Point point;
   try {
-    point = points_->at(t);
+    point = curve.at(t);
   } catch (const std::exception& error) {
     undefined(t, error);
   }
@@ -226,13 +282,10 @@ Point SceneMotion::point_at(double t) const {
 }
 
 Arrow SceneMotion::arrow_at(double t) const {
-  if (!arrows_) {
-    throw NoMotion(file_, pointer_,
-                   "this panel has timed \"points\", not keyframes: draw it with a \"point-trajectory\" layer");
-  }
+  const Motion& motion = arrows();
   Arrow arrow;
   try {
-    arrow = arrows_->at(warp_(t));
+    arrow = motion.at(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }
@@ -271,15 +324,14 @@ auto SceneMotion::finite_pose(const Motion& motion, double t) const {
 }
 
 Affine3 SceneMotion::pose3_at(double t) const {
-  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
-  return finite_pose(*poses3_, t);
+  return finite_pose(*as<SpacePoses>("poses of space").motion, t);
 }
 
 Affine3 SceneMotion::pose3_velocity(double t) const {
-  if (!poses3_) throw NoMotion(file_, pointer_, "this is not a 3D pose scene");
+  const PoseMotion3& motion = *as<SpacePoses>("poses of space").motion;
   Affine3 rate;
   try {
-    rate = poses3_->velocity(warp_(t));
+    rate = motion.velocity(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }
@@ -298,15 +350,14 @@ double SceneMotion::warp_rate(double t) const {
 }
 
 Affine2 SceneMotion::pose_at(double t) const {
-  require_plane();
-  return finite_pose(*poses_, t);
+  return finite_pose(poses(), t);
 }
 
 Affine2 SceneMotion::pose_velocity(double t) const {
-  require_plane();
+  const PoseMotion& motion = poses();
   Affine2 rate;
   try {
-    rate = poses_->velocity(warp_(t));
+    rate = motion.velocity(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }

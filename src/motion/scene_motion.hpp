@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "core/affine2.hpp"
@@ -30,22 +31,50 @@
 
 namespace pita::motion {
 
+// The motion of a panel, built: one alternative per kind of motion. A site
+// whose work depends on the kind visits it (std::visit with one overload per
+// alternative, core/overloaded.hpp), so that a kind it leaves out does not
+// compile. The motions are immutable and shared by copies of a SceneMotion.
+struct ArrowTrack {  // keyframe arrows (the PITA paper): D(tau)
+  std::shared_ptr<const Motion> motion;
+  std::optional<Chain> chain;  // the chain past the method's own keyframe count
+};
+struct PointTrack {  // timed points (PITA Sec. 7.6): the curve of Eq. 48-50
+  std::shared_ptr<const PointCurveMotion> curve;
+  std::optional<Chain> chain;  // the chain of the edge arrows' track
+};
+struct PlanePoses {  // poses of the plane (the SAM paper): A(tau)
+  std::shared_ptr<const PoseMotion> motion;
+  std::array<Point, 3> reference;  // the reference triangle
+};
+struct SpacePoses {  // poses of space ("dimension": 3): A(tau)
+  std::shared_ptr<const PoseMotion3> motion;
+  std::array<Eigen::Vector3d, 4> reference;  // the reference tetrahedron
+};
+using BuiltMotion = std::variant<ArrowTrack, PointTrack, PlanePoses, SpacePoses>;
+
 class SceneMotion {
  public:
-  scene::SceneKind kind() const { return kind_; }
+  // The motion itself, to visit; is<PointTrack>() asks for one kind.
+  const BuiltMotion& built() const { return built_; }
+  template <class Kind>
+  bool is() const {
+    return std::holds_alternative<Kind>(built_);
+  }
+
   // The canonical method id ("P6", "SAM") and how messages name it ("P6 (La-LP)").
   const std::string& method_id() const { return method_id_; }
   const std::string& label() const { return label_; }
-  // Arrow scenes of timed "points" (PITA Sec. 7.6): the PITA curve through
-  // them (Eq. 48-50 with the panel's method and chain) at scene time t.
-  // arrow_at throws NoMotion for them.
-  bool has_points() const { return static_cast<bool>(points_); }
+
+  // Timed points: the PITA curve through them (Eq. 48-50 with the panel's
+  // method and chain) at scene time t. Throws NoMotion for other kinds.
   Point point_at(double t) const;
 
-  // Arrow scenes: the chain that extends the method past its own keyframe
-  // count (core/chains/chain.hpp), nullopt when the method is used alone.
-  std::optional<Chain> chain() const { return chain_; }
-  // The knots (keyframe or pose times), strictly increasing.
+  // Keyframes and points: the chain that extends the method past its own
+  // keyframe count (core/chains/chain.hpp); nullopt when the method is used
+  // alone, and for poses.
+  std::optional<Chain> chain() const;
+  // The knots (keyframe, point or pose times), strictly increasing.
   const std::vector<double>& knots() const { return knots_; }
   double first() const { return knots_.front(); }
   double last() const { return knots_.back(); }
@@ -54,29 +83,29 @@ class SceneMotion {
   double motion_time(double t) const { return warp_(t); }
   const TimeWarp& warp() const { return warp_; }
 
-  // D(t) (arrow scenes) and A(t) (pose scenes) at scene time t. Throw
-  // NoMotion when the method is undefined there or its value is not finite.
+  // D(t) (keyframes) and A(t) (poses of the plane) at scene time t. Throw
+  // NoMotion when the method is undefined there, its value is not finite, or
+  // the motion is of another kind.
   Arrow arrow_at(double t) const;
   Affine2 pose_at(double t) const;
-  // 3D pose scenes ("dimension": 3): A(t) in space. pose_at, pose_velocity
-  // and point_path throw NoMotion for them, pose3_at for every other scene.
-  bool in_space() const { return static_cast<bool>(poses3_); }
-  Affine3 pose3_at(double t) const;
-  Affine3 pose3_velocity(double t) const;  // dA/dt at scene time t, the warp's rate included
-  // dA/dt at scene time t (pose scenes), the warp's rate included.
+  // dA/dt at scene time t (poses of the plane), the warp's rate included.
   Affine2 pose_velocity(double t) const;
+  // Poses of space: A(t) and dA/dt at scene time t.
+  Affine3 pose3_at(double t) const;
+  Affine3 pose3_velocity(double t) const;
 
   // The path of a point of the frame as a function of the motion's own time
   // tau (no warp): for arrows p, q or their midpoint; for poses the images of
   // the reference triangle's first point, second point, or their midpoint.
   std::function<Point(double)> point_path(scene::TrackedPoint point) const;
-  // 3D pose scenes: the images of the reference tetrahedron's first point,
+  // Poses of space: the images of the reference tetrahedron's first point,
   // second point, or their midpoint, as functions of tau.
   std::function<Eigen::Vector3d(double)> point_path3(scene::TrackedPoint point) const;
 
-  // The method's motion without the warp (for analysis and tests).
-  const Motion& arrows() const { return *arrows_; }
-  const PoseMotion& poses() const { return *poses_; }
+  // The method's motion without the warp (for analysis and tests). Throw
+  // NoMotion for a motion of another kind.
+  const Motion& arrows() const;
+  const PoseMotion& poses() const;
 
   // File and JSON Pointer this motion's errors name.
   const std::string& file() const { return file_; }
@@ -87,22 +116,17 @@ class SceneMotion {
   friend SceneMotion build_motion(const scene::Scene&);
   SceneMotion() = default;
   [[noreturn]] void undefined(double t, const std::exception& error) const;
-  void require_plane() const;  // NoMotion for a 3D scene
+  [[noreturn]] void not_of_kind(std::string_view wanted) const;
+  template <class Kind>
+  const Kind& as(std::string_view wanted) const;
   double warp_rate(double t) const;  // d tau / d t
   template <class Motion>
   auto finite_pose(const Motion& motion, double t) const;
 
-  scene::SceneKind kind_ = scene::SceneKind::arrows;
+  BuiltMotion built_;
   std::string method_id_, label_;
   std::vector<double> knots_;
-  std::optional<Chain> chain_;
-  std::shared_ptr<const Motion> arrows_;
-  std::shared_ptr<const PoseMotion> poses_;
-  std::shared_ptr<const PoseMotion3> poses3_;
-  std::shared_ptr<const PointCurveMotion> points_;
   TimeWarp warp_;
-  std::array<Point, 3> reference_{};  // poses: the reference triangle
-  std::array<Eigen::Vector3d, 4> reference3_{};  // 3D poses: the reference tetrahedron
   std::string file_, pointer_;
 };
 

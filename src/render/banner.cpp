@@ -7,6 +7,8 @@
 #include <cmath>
 #include <memory>
 
+#include "render/cairo_handles.hpp"
+
 namespace pita::render {
 
 namespace {
@@ -18,8 +20,6 @@ template <typename T, void (*Free)(T*)>
 struct Deleter {
   void operator()(T* p) const { Free(p); }
 };
-using SurfacePtr = std::unique_ptr<cairo_surface_t, Deleter<cairo_surface_t, cairo_surface_destroy>>;
-using ContextPtr = std::unique_ptr<cairo_t, Deleter<cairo_t, cairo_destroy>>;
 using PathPtr = std::unique_ptr<cairo_path_t, Deleter<cairo_path_t, cairo_path_destroy>>;
 void unref_layout(PangoLayout* layout) { g_object_unref(layout); }
 using LayoutPtr = std::unique_ptr<PangoLayout, Deleter<PangoLayout, unref_layout>>;

@@ -30,7 +30,6 @@ namespace pita::render {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Points per integral curve of a "field" layer.
 constexpr int kFieldCurveSamples = 257;
 

@@ -17,7 +17,6 @@
 namespace pita::analysis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Quadratic Lagrange weights of knots 0, 1/2, 1 at t (Eq. 9).
 std::array<double, 3> lagrange(double t) {

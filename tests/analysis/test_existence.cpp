@@ -10,7 +10,6 @@
 namespace pita::analysis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(Existence, ClassificationAgreesWithEq4AwayFromTheBoundary) {
   int checked = 0;

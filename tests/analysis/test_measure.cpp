@@ -17,7 +17,6 @@
 namespace pita::analysis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 MotionMeasures measure_text(const std::string& text) {
   const scene::Scene scene = scene::parse_scene(text, "test.json");

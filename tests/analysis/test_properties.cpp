@@ -11,7 +11,6 @@
 namespace pita::analysis {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 KeyframeTriple tame() {
   return {{0.0, {{0, 0}, 1.0, 0.4}}, {0.5, {{3, 1.5}, 0.6, 2.0}}, {1.0, {{6, 0}, 1.2, 3.5}}};

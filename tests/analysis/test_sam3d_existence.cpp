@@ -25,7 +25,6 @@ namespace {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-constexpr double kPi = std::numbers::pi;
 
 // Independent of the code under test: Eigen's general (Hessenberg-QR)
 // eigenvalues, and Culver for 3x3 away from the measure-zero cases: a real

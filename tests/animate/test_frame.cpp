@@ -10,11 +10,12 @@
 #include "motion/scene_motion.hpp"
 #include "render/drawing.hpp"
 #include "scene/scene.hpp"
+#include "support/source_paths.hpp"
 
 namespace pita::animate {
 namespace {
 
-const std::filesystem::path kScenes = std::filesystem::path(PITA_SOURCE_DIR) / "scenes";
+using test::kScenes;
 
 constexpr const char* kSquare = R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
     {"t": 1, "p": [3, 2], "m": 0.5, "w": 2}, {"t": 2, "p": [6, 0], "m": 1, "w": 4}],

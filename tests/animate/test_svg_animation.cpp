@@ -7,11 +7,12 @@
 
 #include "animate/svg_animation.hpp"
 #include "scene/scene.hpp"
+#include "support/source_paths.hpp"
 
 namespace pita::animate {
 namespace {
 
-const std::filesystem::path kScenes = std::filesystem::path(PITA_SOURCE_DIR) / "scenes";
+using test::kScenes;
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;

@@ -206,4 +206,16 @@ inline RunResult run_pita(const std::vector<std::string>& args, const std::files
   return finish_pita(started);
 }
 
+// The hidden entries of `dir` (pita's temporaries are .NAME.XXXXXX), by
+// name; none when `dir` does not exist.
+inline std::vector<std::string> hidden_in(const std::filesystem::path& dir) {
+  std::vector<std::string> hidden;
+  if (!std::filesystem::exists(dir)) return hidden;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.front() == '.') hidden.push_back(name);
+  }
+  return hidden;
+}
+
 }  // namespace pita::test

@@ -33,7 +33,7 @@ namespace pita::test {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::json;
+using Json = nlohmann::ordered_json;
 using namespace std::chrono_literals;
 
 const fs::path kScenes = fs::path(PITA_SOURCE_DIR) / "scenes";
@@ -109,15 +109,6 @@ std::set<std::string> names_in(const fs::path& dir) {
   if (!fs::exists(dir)) return names;
   for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename().string());
   return names;
-}
-
-// Hidden entries (temporaries are .name.XXXXXX) in `dir`.
-std::vector<std::string> hidden_in(const fs::path& dir) {
-  std::vector<std::string> hidden;
-  for (const std::string& name : names_in(dir)) {
-    if (name.front() == '.') hidden.push_back(name);
-  }
-  return hidden;
 }
 
 std::string joined(const std::vector<std::string>& names) {

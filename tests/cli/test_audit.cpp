@@ -15,7 +15,7 @@
 namespace pita::test {
 namespace {
 
-using Json = nlohmann::json;
+using Json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
 TEST(Audit, JsonHasEveryCellAndThePapersTable) {

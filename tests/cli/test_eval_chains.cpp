@@ -18,7 +18,7 @@
 namespace pita::test {
 namespace {
 
-using Json = nlohmann::json;
+using Json = nlohmann::ordered_json;
 
 struct Key {
   double t, x, y, m, w;

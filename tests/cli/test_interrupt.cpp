@@ -29,7 +29,7 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-const std::string kScene = R"({"method": "P6", "keyframes": [
+const std::string kInterruptScene = R"({"method": "P6", "keyframes": [
   {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
   {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
@@ -59,15 +59,6 @@ bool catches_or_ended(pid_t pid, int sig) {
   return false;
 }
 
-std::vector<fs::path> hidden_in(const fs::path& dir) {
-  std::vector<fs::path> hidden;
-  if (!fs::exists(dir)) return hidden;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    if (entry.path().filename().string().front() == '.') hidden.push_back(entry.path());
-  }
-  return hidden;
-}
-
 bool ends_with_svg_end(const std::string& text) {
   const std::size_t end = text.rfind("</svg>");
   return end != std::string::npos && text.find_first_not_of("\n", end + 6) == std::string::npos;
@@ -80,7 +71,7 @@ class Interrupt : public ::testing::TestWithParam<int> {};
 TEST_P(Interrupt, RemovesEveryTemporaryInFlightAndExits128PlusSignal) {
   const int sig = GetParam();
   const ScratchDir dir;
-  dir.write("x.json", kScene);
+  dir.write("x.json", kInterruptScene);
   fs::create_directories(dir.path() / "out");
   dir.write("out/x.png", "older");
   const fs::path marker = dir.path() / "renaming";
@@ -89,9 +80,10 @@ TEST_P(Interrupt, RemovesEveryTemporaryInFlightAndExits128PlusSignal) {
   ASSERT_TRUE(wait_for([&] { return fs::exists(marker); }, 60s)) << "pita never reached its first rename";
 
   // The scenario: a temporary per format, each written whole.
-  const std::vector<fs::path> temporaries = hidden_in(dir.path() / "out");
+  const std::vector<std::string> temporaries = hidden_in(dir.path() / "out");
   ASSERT_EQ(temporaries.size(), 3u);
-  for (const fs::path& temporary : temporaries) {
+  for (const std::string& name : temporaries) {
+    const fs::path temporary = dir.path() / "out" / name;
     EXPECT_GT(fs::file_size(temporary), 1000u) << temporary;
     if (temporary.filename().string().rfind(".x.svg.", 0) == 0) {
       EXPECT_TRUE(ends_with_svg_end(read_file(temporary))) << temporary;
@@ -122,8 +114,8 @@ INSTANTIATE_TEST_SUITE_P(Signals, Interrupt, ::testing::Values(SIGINT, SIGTERM, 
 // temporaries are removed.
 TEST(InterruptLater, ScenesWrittenBeforeTheSignalStay) {
   const ScratchDir dir;
-  dir.write("a.json", kScene);
-  dir.write("x.json", kScene);
+  dir.write("a.json", kInterruptScene);
+  dir.write("x.json", kInterruptScene);
   const fs::path marker = dir.path() / "renaming";
   Started started = start_pita({"render", "a.json", "x.json", "-o", "out", "--format", "svg,png"}, dir.path(),
                                with_rename_hook({"PITA_TEST_PAUSE_BEFORE_RENAME=" + marker.string(),
@@ -146,7 +138,7 @@ TEST(InterruptLater, ScenesWrittenBeforeTheSignalStay) {
 // hangup does not end the run; SIGTERM still cleans up.
 TEST(InterruptIgnored, AnIgnoredSignalStaysIgnored) {
   const ScratchDir dir;
-  dir.write("x.json", kScene);
+  dir.write("x.json", kInterruptScene);
   const fs::path marker = dir.path() / "renaming";
   Started started = start_pita({"render", "x.json", "-o", "out"}, dir.path(),
                                with_rename_hook({"PITA_TEST_PAUSE_BEFORE_RENAME=" + marker.string()}), {SIGHUP});
@@ -213,7 +205,7 @@ TEST(InterruptTiming, ARenderKilledAtAnyMomentLeavesWholeFilesOnly) {
 // instead of a silent death by SIGPIPE (status 141).
 TEST(ClosedPipe, IsAWriteErrorNotSigpipe) {
   const ScratchDir dir;
-  dir.write("x.json", kScene);
+  dir.write("x.json", kInterruptScene);
   const std::string command = "cd '" + dir.path().string() + "' && ( '" + pita_binary() +
                               "' eval x.json --samples 200000 2>err; echo $? >status ) | head -c1 >/dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0);

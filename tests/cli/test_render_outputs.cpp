@@ -27,16 +27,6 @@ std::set<std::string> entries_under(const fs::path& root) {
   return found;
 }
 
-// Hidden files (temporaries are .name.ext.XXXXXX) in `dir`.
-std::vector<std::string> hidden_in(const fs::path& dir) {
-  std::vector<std::string> hidden;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if (name.front() == '.') hidden.push_back(name);
-  }
-  return hidden;
-}
-
 bool is_whole_svg(const std::string& text) {
   return text.rfind("<?xml", 0) == 0 && text.find("</svg>") != std::string::npos &&
          text.find_last_not_of("\n") == text.rfind("</svg>") + 5;

@@ -57,7 +57,7 @@ TEST(Sam3dExistenceCli, PrintsTheFiguresCurve) {
 }
 
 TEST(Sam3dExistenceCli, BadUsageExitsTwo) {
-  for (const std::string& theta : {"two", "pi/0", "4", "pi*2", "-pi/2"}) {
+  for (const char* theta : {"two", "pi/0", "4", "pi*2", "-pi/2"}) {
     const RunResult result = run_audit({"--theta", theta});
     EXPECT_EQ(result.exit_code, 2) << theta;
     EXPECT_NE(result.err.find("--theta"), std::string::npos) << result.err;

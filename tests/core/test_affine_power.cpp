@@ -28,7 +28,6 @@ using Eigen::Matrix2d;
 using Eigen::Matrix3d;
 using Eigen::Vector2d;
 
-constexpr double kPi = std::numbers::pi;
 
 Matrix2d mat(double a, double b, double c, double d) {
   Matrix2d L;

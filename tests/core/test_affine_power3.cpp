@@ -30,7 +30,6 @@ using Eigen::Matrix4d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-constexpr double kPi = std::numbers::pi;
 
 // |X - Y|_F / max(|Y|_F, 1) on the homogeneous matrices.
 double relative_error(const Affine3& X, const Affine3& Y) {

@@ -14,7 +14,6 @@
 namespace pita {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 Eigen::Matrix2d matrix(double a, double b, double c, double d) {
   Eigen::Matrix2d M;

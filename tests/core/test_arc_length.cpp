@@ -12,7 +12,6 @@
 namespace pita {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(ArcLength, CircleLengthAndInverseAreExact) {
   const double r = 2.5;

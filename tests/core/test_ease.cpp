@@ -13,7 +13,6 @@
 namespace pita {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // CSS cubic-bezier by plain bisection on x(s) (no Newton), 200 halvings.
 double css_reference(double x1, double y1, double x2, double y2, double x) {

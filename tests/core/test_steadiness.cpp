@@ -15,16 +15,16 @@ using test::pose;
 
 // The poses of scenes/sam-fig02-linear-and-sam.json (triangles mapped from
 // the unit triangle) and a middle pose for the three-pose motions.
-const Affine2 kB = pose(2.2, 0.6, 0.3, 1.6, 0.0, 0.0);
-const Affine2 kC = pose(0.7, -1.6, 2.4, 1.1, 6.5, 0.5);
+const Affine2 kSamFig2B = pose(2.2, 0.6, 0.3, 1.6, 0.0, 0.0);
+const Affine2 kSamFig2C = pose(0.7, -1.6, 2.4, 1.1, 6.5, 0.5);
 const Affine2 kMiddle = pose(1.4, -0.9, 1.6, 1.2, 3.5, 1.5);
 const std::vector<Eigen::Vector2d> kTriangle = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}};
 
 TEST(Steadiness, SamIsSteadyOthersAreNot) {
-  const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kB}, {1.0, kC}}), kTriangle);
+  const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
   const double linear =
-      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kB}, {1.0, kC}}), kTriangle);
-  const std::vector<TimedPose> three = {{0.0, kB}, {0.5, kMiddle}, {1.0, kC}};
+      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
+  const std::vector<TimedPose> three = {{0.0, kSamFig2B}, {0.5, kMiddle}, {1.0, kSamFig2C}};
   const double poly = average_relative_acceleration(PoseMotion(PoseMethod::poly_sam, three), kTriangle);
   const double bezier = average_relative_acceleration(PoseMotion(PoseMethod::bezier_sam, three), kTriangle);
   const double biarc = average_relative_acceleration(PoseMotion(PoseMethod::biarc_sam, three), kTriangle);
@@ -35,7 +35,7 @@ TEST(Steadiness, SamIsSteadyOthersAreNot) {
   EXPECT_GT(biarc, 0.01);
   // Not a matter of the time unit: the same motion over [0, 10].
   const double linear_slow =
-      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kB}, {10.0, kC}}), kTriangle);
+      average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kSamFig2B}, {10.0, kSamFig2C}}), kTriangle);
   EXPECT_NEAR(linear_slow, linear, 1e-6 * linear);
 }
 
@@ -45,7 +45,7 @@ TEST(Steadiness, SamIsSteadyOthersAreNot) {
 TEST(Steadiness, Fig2SamIsTheOnlySteadyMorph) {
   const Affine2 other_from = pose(1.0, 0.4, -0.2, 0.8, -1.0, 2.0);
   const Affine2 other_to = pose(-0.9, -1.3, 1.7, -0.4, 3.0, -2.5);
-  for (const auto& [from, to] : {std::pair{kB, kC}, std::pair{other_from, other_to}}) {
+  for (const auto& [from, to] : {std::pair{kSamFig2B, kSamFig2C}, std::pair{other_from, other_to}}) {
     const std::vector<TimedPose> two = {{0.0, from}, {1.0, to}};
     const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, two), kTriangle);
     EXPECT_LT(sam, 1e-6);

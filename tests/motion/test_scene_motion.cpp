@@ -37,7 +37,7 @@ std::string error_of(const scene::Scene& scene) {
 TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
   const scene::Scene scene = arrows();
   const SceneMotion motion = build_motion(scene);
-  EXPECT_EQ(motion.kind(), scene::SceneKind::arrows);
+  EXPECT_TRUE(motion.is<ArrowTrack>());
   EXPECT_EQ(motion.method_id(), "P6");
   EXPECT_EQ(motion.label(), "P6 (La-LP)");
   EXPECT_EQ(motion.knots(), (std::vector<double>{0.0, 0.25, 1.0}));
@@ -55,6 +55,53 @@ TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
 // through each keyframe at its knot and runs from the least knot to the
 // greatest; an order-independent method (P1, Fig. 10) gives the same frames as
 // the sorted scene, one that is not (P6) does not.
+// Each kind of motion answers for itself only: asked for another kind it
+// throws NoMotion naming the file (it never dereferences a motion it lacks).
+TEST(SceneMotion, EachKindAnswersForItselfAndRefusesTheOthers) {
+  const scene::Scene points = scene::parse_scene(R"({"method": "P6", "points": [
+      {"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}]})",
+                                                 "s.json");
+  const scene::Scene poses = scene::parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 1], [0, 2, 0]]}]})",
+                                                "s.json");
+  const SceneMotion arrow_motion = build_motion(arrows());
+  const SceneMotion point_motion = build_motion(points);
+  const SceneMotion pose_motion = build_motion(poses);
+  EXPECT_TRUE(arrow_motion.is<ArrowTrack>());
+  EXPECT_TRUE(point_motion.is<PointTrack>());
+  EXPECT_TRUE(pose_motion.is<PlanePoses>());
+  EXPECT_EQ(point_motion.knots(), (std::vector<double>{0.0, 1.0, 2.0, 3.0}));
+  EXPECT_LT(std::abs(point_motion.point_at(1.0) - Point(1.0, 1.0)), 1e-12);
+  EXPECT_LT((pose_motion.pose_at(1.0).b - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-12);
+
+  const auto refused = [](auto&& ask) {
+    try {
+      ask();
+    } catch (const NoMotion& error) {
+      return error.file() + " " + error.pointer() + " | " + error.reason();
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(refused([&] { (void)arrow_motion.pose_at(0.5); }),
+            "s.json /keyframes | this motion is of keyframe arrows, not of poses of the plane");
+  EXPECT_EQ(refused([&] { (void)arrow_motion.point_at(0.5); }),
+            "s.json /keyframes | this motion is of keyframe arrows, not of timed points");
+  EXPECT_EQ(refused([&] { (void)arrow_motion.pose3_at(0.5); }),
+            "s.json /keyframes | this motion is of keyframe arrows, not of poses of space");
+  EXPECT_EQ(refused([&] { (void)point_motion.arrow_at(0.5); }),
+            "s.json /points | this panel has timed \"points\", not keyframes: draw it with a "
+            "\"point-trajectory\" layer");
+  EXPECT_EQ(refused([&] { (void)point_motion.point_path(scene::TrackedPoint::start); }),
+            "s.json /points | this panel has timed \"points\", not keyframes: draw it with a "
+            "\"point-trajectory\" layer");
+  EXPECT_EQ(refused([&] { (void)pose_motion.arrows(); }),
+            "s.json /poses | this motion is of poses of the plane, not of keyframe arrows");
+  EXPECT_EQ(refused([&] { (void)pose_motion.pose3_velocity(0.5); }),
+            "s.json /poses | this motion is of poses of the plane, not of poses of space");
+  EXPECT_FALSE(point_motion.chain().has_value());
+  EXPECT_FALSE(pose_motion.chain().has_value());
+}
+
 TEST(SceneMotion, KnotsAsGivenKeepTheOrderWritten) {
   const std::string swapped = R"("options": {"knots": "as-given"}, "keyframes": [
     {"t": 0.25, "p": [3, 1.5], "m": 0.6, "w": 2}, {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
@@ -184,7 +231,7 @@ TEST(SceneMotion, PosesAreBuiltOnceWithTheirTiming) {
       {"t": 3, "matrix": [[2, 0, 4], [0, 2, 1]]}], "timing": {"arc_length": "p", "per": "span"}})",
                                                 "s.json");
   const SceneMotion motion = build_motion(scene);
-  EXPECT_EQ(motion.kind(), scene::SceneKind::poses);
+  EXPECT_TRUE(motion.is<PlanePoses>());
   EXPECT_EQ(motion.method_id(), "polySAM");
   for (const TimedPose& pose : scene.poses) {
     EXPECT_LT((motion.pose_at(pose.t).L - pose.pose.L).norm(), 1e-12);
@@ -225,7 +272,7 @@ TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
       {"t": 3, "matrix": [[4, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
                                                 "s.json");
   const SceneMotion motion = build_motion(scene);
-  ASSERT_TRUE(motion.in_space());
+  ASSERT_TRUE(motion.is<SpacePoses>());
   EXPECT_EQ(motion.knots(), (std::vector<double>{1.0, 3.0}));
   // x -> 4x + 3 is a scaling by 4 about x = -1; half way it scales by 2 about it.
   const Affine3 half = motion.pose3_at(2.0);

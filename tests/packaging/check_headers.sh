@@ -3,9 +3,10 @@
 # own, as the first line of a translation unit, against the installed prefix
 # only (include/ and include/pita, the paths pita::core exports) and the
 # system's packages (Eigen; cairo and pango for render's headers): no path
-# into the source tree. Runs up to 2 compilers at once; the 113 headers take
-# about 2 min of CPU, so the units are compiled through ccache when it is there,
-# in a fixed WORK_DIR: a run with unchanged headers takes seconds.
+# into the source tree. Runs up to 2 compilers at once. A header that parses,
+# resolves every name and instantiates what it uses on its own is what the
+# check asks, so the compiler stops there (-fsyntax-only: no code is made,
+# which halves the time of the 113 headers). Through ccache when it is there.
 # Usage: check_headers.sh PREFIX COMPILER WORK_DIR
 set -euo pipefail
 prefix="$1" compiler="${2:-c++}" work="$3"
@@ -24,7 +25,7 @@ find pita -name '*.hpp' | sort | xargs -P 2 -n 1 bash -c '
   unit="$work/$(echo "$header" | tr / _).cpp"
   printf "#include <%s>\n" "$header" > "$unit"
   # shellcheck disable=SC2086
-  if ! $launcher "$compiler" -std=c++20 -c -o "$unit.o" -Wall -Wextra -I"$prefix/include" -I"$prefix/include/pita" \
+  if ! $launcher "$compiler" -std=c++20 -fsyntax-only -Wall -Wextra -I"$prefix/include" -I"$prefix/include/pita" \
        $flags "$unit" 2> "$unit.err"; then
     echo "$header does not compile on its own:" >&2
     head -5 "$unit.err" >&2

@@ -21,7 +21,6 @@ namespace {
 
 using pita::test::affinity;
 
-constexpr double kPi = std::numbers::pi;
 
 Eigen::Matrix3d homogeneous(const Affine2& A) {
   Eigen::Matrix3d H = Eigen::Matrix3d::Identity();

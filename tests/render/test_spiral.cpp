@@ -10,7 +10,6 @@
 namespace pita::render {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(WindingSpiral, StartsAlongXAndEndsInTheArrowsDirection) {
   const Point c{2.0, -1.0};

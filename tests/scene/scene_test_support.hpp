@@ -1,14 +1,33 @@
 // Helpers shared by the scene tests.
 #pragma once
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <variant>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include "scene/json_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene::test {
+
+// The source tree (schema/, scenes/) and a JSON file of it, parsed.
+inline const std::filesystem::path kSourceDir = PITA_SOURCE_DIR;
+inline nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in) << "cannot open " << path;
+  return nlohmann::json::parse(in);
+}
+
+// The reader the readers' tests hand values to: errors name "s.json".
+inline const detail::JsonReader kReader("s.json");
+
+// The three keyframes of a valid P6 scene, as the member "keyframes": [...].
+inline const std::string kKeyframes = R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
 
 // A P6 scene whose middle keyframe is `middle` (JSON text).
 inline std::string p6_with_middle(const std::string& middle) {
@@ -33,12 +52,14 @@ inline std::string error_of(const std::string& text) {
   return "(no error)";
 }
 
-// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
+// "pointer: reason" of the SceneError that `read` throws, or "(no error)";
+// the error must name `file` (kReader's by default).
 template <typename Read>
-std::string failure(Read&& read) {
+std::string failure(Read&& read, const std::string& file = "s.json") {
   try {
     read();
   } catch (const SceneError& error) {
+    EXPECT_EQ(error.file(), file);
     return error.pointer() + ": " + error.reason();
   }
   return "(no error)";

@@ -20,7 +20,7 @@ using detail::Json;
 using detail::JsonReader;
 using test::p6_with;
 
-const JsonReader kReader("s.json");
+using test::kReader;
 
 using test::failure;
 

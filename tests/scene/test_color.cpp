@@ -9,7 +9,7 @@
 namespace pita::scene {
 namespace {
 
-std::string error_of(std::string_view text) {
+std::string color_error(std::string_view text) {
   try {
     parse_color(text);
   } catch (const std::invalid_argument& error) {
@@ -43,22 +43,22 @@ TEST(Color, ReadsNames) {
 }
 
 TEST(Color, RefusesOtherText) {
-  EXPECT_EQ(error_of("#12345"),
+  EXPECT_EQ(color_error("#12345"),
             "\"#12345\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits (\"#rgb\", "
             "\"#rrggbb\" or \"#rrggbbaa\")");
-  EXPECT_EQ(error_of("#ggg").substr(0, 22), "\"#ggg\" is not a color:");
-  EXPECT_EQ(error_of("#"), "\"#\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits "
+  EXPECT_EQ(color_error("#ggg").substr(0, 22), "\"#ggg\" is not a color:");
+  EXPECT_EQ(color_error("#"), "\"#\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits "
                            "(\"#rgb\", \"#rrggbb\" or \"#rrggbbaa\")");
-  EXPECT_EQ(error_of("#1234567").substr(0, 26), "\"#1234567\" is not a color:");
-  EXPECT_EQ(error_of(" #fff").substr(0, 15), "unknown color \"");
-  EXPECT_EQ(error_of("rde"), "unknown color \"rde\"; did you mean \"red\"?");
-  EXPECT_EQ(error_of("Red"), "unknown color \"Red\"; did you mean \"red\"?");  // names are lower case
-  EXPECT_EQ(error_of("gery"), "unknown color \"gery\"; did you mean \"gray\" or \"grey\"?");
-  EXPECT_EQ(error_of("chartreuse"),
+  EXPECT_EQ(color_error("#1234567").substr(0, 26), "\"#1234567\" is not a color:");
+  EXPECT_EQ(color_error(" #fff").substr(0, 15), "unknown color \"");
+  EXPECT_EQ(color_error("rde"), "unknown color \"rde\"; did you mean \"red\"?");
+  EXPECT_EQ(color_error("Red"), "unknown color \"Red\"; did you mean \"red\"?");  // names are lower case
+  EXPECT_EQ(color_error("gery"), "unknown color \"gery\"; did you mean \"gray\" or \"grey\"?");
+  EXPECT_EQ(color_error("chartreuse"),
             "unknown color \"chartreuse\"; a color is \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or one "
             "of black, white, red, green, blue, gray, grey, orange, purple, brown, magenta, cyan, "
             "yellow");
-  EXPECT_EQ(error_of("").substr(0, 16), "unknown color \"\"");
+  EXPECT_EQ(color_error("").substr(0, 16), "unknown color \"\"");
 }
 
 }  // namespace

@@ -28,22 +28,11 @@ using detail::Json;
 using detail::JsonReader;
 using test::error_of;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// "pointer: reason" of the SceneError that `read` throws, or "(no error)".
-template <typename Read>
-std::string failure(Read&& read) {
-  try {
-    read();
-  } catch (const SceneError& error) {
-    EXPECT_EQ(error.file(), "s.json");
-    return error.pointer() + ": " + error.reason();
-  }
-  return "(no error)";
-}
+using test::failure;
 
-const JsonReader kReader("s.json");
+using test::kReader;
 
 // ------------------------------------------------------------ messages
 

@@ -19,7 +19,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-SceneError error_of(const std::string& text) {
+SceneError json_error(const std::string& text) {
   try {
     parse_json(text, "t.json");
   } catch (const SceneError& error) {
@@ -36,7 +36,7 @@ TEST(JsonText, GoodTextKeepsMembersInDocumentOrder) {
 }
 
 TEST(JsonText, SyntaxErrorsHaveALineAndColumn) {
-  const SceneError error = error_of("{\n  \"a\": [1,\n  ]\n}");
+  const SceneError error = json_error("{\n  \"a\": [1,\n  ]\n}");
   EXPECT_EQ(error.line(), 3);
   EXPECT_EQ(error.column(), 3);
   EXPECT_EQ(error.pointer(), "");
@@ -44,22 +44,22 @@ TEST(JsonText, SyntaxErrorsHaveALineAndColumn) {
 }
 
 TEST(JsonText, NulByteIsRefusedWhereItIs) {
-  const SceneError error = error_of(std::string("{\"a\":\n 1\0}", 10));
+  const SceneError error = json_error(std::string("{\"a\":\n 1\0}", 10));
   EXPECT_EQ(error.line(), 2);
   EXPECT_EQ(error.column(), 3);
 }
 
 TEST(JsonText, NumberTooLargeForADoubleIsRefusedWhereItIs) {
-  const SceneError error = error_of("{\"a\": [1, 2e999]}");
+  const SceneError error = json_error("{\"a\": [1, 2e999]}");
   EXPECT_EQ(error.line(), 1);
   EXPECT_EQ(error.column(), 11);  // where "2e999" starts
 }
 
 TEST(JsonText, MemberGivenTwiceIsNamedByItsPointer) {
-  const SceneError error = error_of(R"({"a": {"b": 1, "b": 2}})");
+  const SceneError error = json_error(R"({"a": {"b": 1, "b": 2}})");
   EXPECT_EQ(error.pointer(), "/a/b");
   EXPECT_EQ(error.line(), 0);
-  EXPECT_EQ(error_of(R"({"a": [{"x": 1}, {"x": 2}]})").reason(), "(no error)");  // same key, other objects
+  EXPECT_EQ(json_error(R"({"a": [{"x": 1}, {"x": 2}]})").reason(), "(no error)");  // same key, other objects
 }
 
 std::string nested(std::size_t depth, const std::string& after = "") {
@@ -72,7 +72,7 @@ TEST(JsonText, NestingUpToTheLimitIsRead) {
 }
 
 TEST(JsonText, NestingBeyondTheLimitIsRefusedWhereItStarts) {
-  const SceneError error = error_of(nested(kMaxJsonDepth + 1));
+  const SceneError error = json_error(nested(kMaxJsonDepth + 1));
   EXPECT_EQ(error.line(), 1);
   EXPECT_EQ(error.column(), static_cast<int>(kMaxJsonDepth) + 1);
   EXPECT_NE(error.reason().find("nest deeper than 256"), std::string::npos) << error.what();
@@ -82,17 +82,19 @@ TEST(JsonText, NestingBeyondTheLimitIsRefusedWhereItStarts) {
 // object overflowed the stack inside nlohmann's DOM callback (SIGSEGV).
 TEST(JsonText, VeryDeepNestingFollowedByAMemberIsAnErrorNotACrash) {
   const std::string text = "{\"a\": " + nested(200'000) + ", \"b\": 1}";
-  EXPECT_EQ(error_of(text).line(), 1);
+  EXPECT_EQ(json_error(text).line(), 1);
   const std::string objects = [] {
     std::string t;
     for (int i = 0; i < 200'000; ++i) t += "{\"k\":";
     return t + "1" + std::string(200'000, '}');
   }();
-  EXPECT_NE(error_of(objects).reason().find("nest deeper"), std::string::npos);
+  EXPECT_NE(json_error(objects).reason().find("nest deeper"), std::string::npos);
 }
 
 TEST(JsonText, BracketsInsideStringsDoNotCount) {
-  const std::string text = "{\"a\": \"" + std::string(1000, '[') + "\\\"" + "\"}";
+  std::string text = "{\"a\": \"";
+  text.append(1000, '[');
+  text += "\\\"\"}";
   EXPECT_TRUE(parse_json(text, "t.json").is_object());
 }
 

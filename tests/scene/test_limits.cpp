@@ -6,12 +6,12 @@
 
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-const std::string kKeyframes = R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+using test::kKeyframes;
 
 std::string pointer_of(const std::string& extra) {
   try {

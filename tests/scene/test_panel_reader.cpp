@@ -11,8 +11,7 @@
 namespace pita::scene {
 namespace {
 
-const std::string kKeyframes = R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-    {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+using test::kKeyframes;
 
 TEST(PoseScene, PanelsInheritAndOverride) {
   const Scene scene = parse_scene(R"({"method": "polySAM", "poses": [

@@ -23,7 +23,7 @@ using detail::Json;
 using detail::JsonReader;
 using test::error_of;
 
-const JsonReader kReader("s.json");
+using test::kReader;
 const std::array<Point, 3> kUnitTriangle = {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
 
 using test::failure;
@@ -236,7 +236,8 @@ TEST(PoseReader, ImageShapesAreTheirBoxAndFile) {
   EXPECT_FALSE(shapes[1].image.has_value());
 
   const auto refusal = [&reader](const std::string& shape) {
-    return failure([&] { detail::read_shapes(reader, Json::parse("[" + shape + "]"), "/shapes", kUnitTriangle); });
+    return failure([&] { detail::read_shapes(reader, Json::parse("[" + shape + "]"), "/shapes", kUnitTriangle); },
+                   reader.file());
   };
   EXPECT_EQ(refusal(R"({"image": "images/picture.png"})"),
             "/shapes/0/box: missing required field (where the image goes: [[x0, y0], [x1, y1]], its lower-left and "

@@ -28,17 +28,13 @@
 #include "core/pitas/registry.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
+#include "scene_test_support.hpp"
 
 namespace pita::scene {
 namespace {
 
-const std::filesystem::path kSourceDir = PITA_SOURCE_DIR;
-
-nlohmann::json read_json(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << "cannot open " << path;
-  return nlohmann::json::parse(in);
-}
+using test::kSourceDir;
+using test::read_json;
 
 std::set<std::string> keys_of(const nlohmann::json& object) {
   std::set<std::string> keys;

@@ -37,13 +37,8 @@ namespace {
 using test::p6_with;
 using test::p6_with_middle;
 
-const std::filesystem::path kSourceDir = PITA_SOURCE_DIR;
-
-nlohmann::json read_json(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in) << "cannot open " << path;
-  return nlohmann::json::parse(in);
-}
+using test::kSourceDir;
+using test::read_json;
 
 struct SchemaVerdict {
   bool valid = true;
