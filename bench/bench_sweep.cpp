@@ -29,7 +29,7 @@ void BM_Sweep(benchmark::State& state, sweep::OutputKind kind) {
   options.formats = {kind};
   options.jobs = static_cast<int>(state.range(0));
   options.force = true;
-  options.quiet = true;
+  options.progress = false;
   for (auto _ : state) {
     const sweep::SweepSummary summary = sweep::run_sweep(options);
     if (summary.ok != kVariants) state.SkipWithError("a variant failed");

@@ -241,16 +241,26 @@ std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::
   return points;
 }
 
-void measure_poses(const scene::Scene& scene, const scene::Panel& panel, const motion::SceneMotion& motion,
-                   const MeasureOptions& options, MotionMeasures& out) {
-  const std::vector<Eigen::Vector2d> points = ara_points(scene, panel);
-  out.ara = average_relative_acceleration(motion.poses(), points);
+// In space: the vertices of the scene's solids, else the reference tetrahedron.
+std::vector<Eigen::Vector3d> ara_points3(const scene::Scene& scene) {
+  std::vector<Eigen::Vector3d> points;
+  for (const scene::Solid& solid : scene.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
+  if (points.empty()) points.assign(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end());
+  return points;
+}
+
+// ARA of the pose motion (its own time, no warp) and the monotonicity of
+// det L: the area in the plane, the volume in space. One template for both.
+template <class PoseMotionT, class Vector>
+void measure_pose_motion(const PoseMotionT& poses, std::span<const Vector> points, double first, double last,
+                         const MeasureOptions& options, MotionMeasures& out) {
+  out.ara = average_relative_acceleration(poses, points);
   std::vector<double> times, dets;
-  const double first = motion.first(), step = (motion.last() - first) / options.path_samples;
+  const double step = (last - first) / options.path_samples;
   for (int i = 0; i <= options.path_samples; ++i) {
-    const double tau = i == options.path_samples ? motion.last() : first + step * i;
+    const double tau = i == options.path_samples ? last : first + step * i;
     times.push_back(tau);
-    dets.push_back(motion.poses().at(tau).L.determinant());
+    dets.push_back(poses.at(tau).L.determinant());
   }
   out.area = area_stats(times, dets);
   if (!std::isfinite(*out.ara)) throw std::domain_error("ARA is not finite");
@@ -324,7 +334,8 @@ double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
   const double tweaks = 4.0 * static_cast<double>(kParameters.size()) * keys;
   return tweaks * (2.0 * keys + options.tweak_samples * frame) +
          (options.path_samples + 3.0 + 3.0 * panel.samples) * frame +
-         static_cast<double>(panel.poses.size()) * (options.path_samples + 64.0);
+         static_cast<double>(panel.dimension == 3 ? panel.poses3.size() : panel.poses.size()) *
+             (options.path_samples + 64.0);
 }
 
 MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel, const MeasureOptions& options) {
@@ -332,7 +343,9 @@ MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& pane
   out.pointer = panel.pointer;
   out.title = panel.title;
   out.method = motion::method_label(scene, panel);
-  out.kind = scene.kind == scene::SceneKind::poses ? "poses" : panel.points.empty() ? "arrows" : "points";
+  out.kind = scene.kind == scene::SceneKind::arrows ? (panel.points.empty() ? "arrows" : "points")
+             : panel.dimension == 3                  ? "poses3d"
+                                                     : "poses";
   out.samples = panel.samples;
   try {
     const motion::SceneMotion motion = motion::build_motion(scene, panel);
@@ -352,10 +365,16 @@ MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& pane
                             }
                             out.path_p = path_stats(p);
                           },
-                          // Poses of space are refused by pose_at (at /dimension) until the
-                          // measures of space exist (issue 34, item 6).
-                          [&](const motion::PlanePoses&) { measure_poses(scene, panel, motion, options, out); },
-                          [&](const motion::SpacePoses&) { (void)motion.pose_at(motion.first()); }},
+                          [&](const motion::PlanePoses& poses) {
+                            const std::vector<Eigen::Vector2d> points = ara_points(scene, panel);
+                            measure_pose_motion(*poses.motion, std::span<const Eigen::Vector2d>(points),
+                                                motion.first(), motion.last(), options, out);
+                          },
+                          [&](const motion::SpacePoses& poses) {
+                            const std::vector<Eigen::Vector3d> points = ara_points3(scene);
+                            measure_pose_motion(*poses.motion, std::span<const Eigen::Vector3d>(points),
+                                                motion.first(), motion.last(), options, out);
+                          }},
                motion.built());
   } catch (const motion::NoMotion& error) {
     out.no_motion = error.what();

@@ -14,14 +14,6 @@
 
 namespace pita::animate {
 
-int default_threads() {
-  if (const char* given = std::getenv("PITA_THREADS")) {
-    const int n = std::atoi(given);
-    if (n >= 1 && n <= 64) return n;
-  }
-  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
-}
-
 void run_frames(int count, int threads, const std::function<std::string(int)>& render,
                 const std::function<void(int, std::string&&)>& consume) {
   const int window = 2 * std::max(threads, 1);

@@ -22,7 +22,4 @@ struct Interrupted {
 void run_frames(int count, int threads, const std::function<std::string(int)>& render,
                 const std::function<void(int, std::string&&)>& consume);
 
-// The threads to use: PITA_THREADS if set (1 .. 64), else every core.
-int default_threads();
-
 }  // namespace pita::animate

@@ -245,7 +245,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
 
 fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
                      const std::vector<render::PanelPlacement>& placements) {
-  const std::string ffmpeg = find_ffmpeg();
+  const std::string& ffmpeg = request.ffmpeg;
   if (ffmpeg.empty()) {
     throw AnimationError(fmt::format("-o {}: writing video needs ffmpeg, which is not installed (install the Debian "
                                      "package: apt-get install ffmpeg), or write an animated .svg or a directory "
@@ -380,22 +380,6 @@ OutputKind output_kind(const std::string& out) {
 std::string frame_file_name(int k, int count, render::Format format) {
   const int digits = std::max(4, static_cast<int>(std::to_string(count).size()));
   return fmt::format("frame-{:0{}}.{}", k + 1, digits, render::extension(format));
-}
-
-std::string find_ffmpeg() {
-  if (const char* given = std::getenv("PITA_FFMPEG")) return ::access(given, X_OK) == 0 ? given : "";
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "/usr/bin:/bin";
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    const std::size_t end = dirs.find(':', start);
-    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/ffmpeg";
-    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return "";
 }
 
 void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {

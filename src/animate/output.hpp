@@ -43,6 +43,7 @@ struct Request {
   double budget = 1.0;                                // render --budget
   bool progress = true;                               // a bar on a terminal's stderr
   int threads = 1;
+  std::string ffmpeg;  // the ffmpeg that writes videos; "" when none is installed
 };
 
 // Renders every frame and writes OUT. Returns the paths written (OUT; for a
@@ -55,8 +56,5 @@ std::vector<std::filesystem::path> write_animation(const scene::Scene& scene, co
 // The frame files' names: frame-0001.png, with at least 4 digits (more when
 // the count needs them), numbered from 1.
 std::string frame_file_name(int k, int count, render::Format format);
-
-// ffmpeg's path: $PITA_FFMPEG if set, else "ffmpeg" found on PATH; "" if none.
-std::string find_ffmpeg();
 
 }  // namespace pita::animate

@@ -11,15 +11,10 @@ namespace pita::animate {
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) == 1; }
 
-namespace {
-bool in_ci() { return std::getenv("CI") != nullptr && *std::getenv("CI") != '\0'; }
-}  // namespace
-
-// A terminal inside CI (CI=true, as CI services set it) stays quiet too.
 Progress::Progress(std::string label, int total, bool enabled, bool plain_lines, std::chrono::milliseconds interval)
     : label_(std::move(label)),
       total_(total),
-      mode_(!enabled || in_ci() ? Mode::off
+      mode_(!enabled               ? Mode::off
             : stderr_is_terminal() ? Mode::bar
             : plain_lines          ? Mode::lines
                                    : Mode::off),

@@ -1,6 +1,7 @@
 // A progress bar for long work (README "Animation", "pita sweep"): drawn on
-// stderr only when stderr is a terminal, not silenced (--quiet) and not in CI
-// (the environment variable CI set), so that CI logs and pipes stay clean.
+// stderr only when stderr is a terminal and the caller enables it (the CLI
+// does unless --quiet or in CI: cli/environment.hpp), so that CI logs and
+// pipes stay clean.
 // Work that may run for hours off a terminal (a sweep under nohup or a batch
 // scheduler) asks for plain lines instead: one every kPlainInterval when
 // stderr is not a terminal (still none in CI or with --quiet).

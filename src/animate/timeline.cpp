@@ -92,6 +92,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
       std::vector<double> knots;
       for (const Keyframe& key : panel.keyframes) knots.push_back(key.t);
       for (const TimedPose& pose : panel.poses) knots.push_back(pose.t);
+      for (const TimedPose3& pose : panel.poses3) knots.push_back(pose.t);
       for (const TimedPoint& point : panel.points) knots.push_back(point.t);
       if (knots.empty()) continue;
       timeline.first = any ? std::min(timeline.first, knots.front()) : knots.front();

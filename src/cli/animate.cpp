@@ -6,9 +6,9 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "animate/frame_runner.hpp"
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"
+#include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
@@ -121,11 +121,11 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.out = options.output;
   request.scale = options.scale;
   request.budget = options.budget;
-  request.progress = !options.quiet;
-  request.threads = animate::default_threads();
+  request.progress = progress_allowed(options.quiet);
+  request.threads = threads_from_environment();
+  request.ffmpeg = ffmpeg_from_environment();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
-    scene::require_plane_scene(scene, "pita animate");
     const animate::Timeline timeline =
         animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {

@@ -1,5 +1,6 @@
 #include "cli/measure.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -95,10 +96,11 @@ std::string json_motion(const MotionMeasures& m) {
   }
   if (m.ara) s += fmt::format(",\n     \"ara\": {}", number(*m.ara));
   if (m.area) {
+    // det L: the area of the plane's poses, the volume of poses of space.
     s += fmt::format(
-        ",\n     \"area\": {{\"monotone\": {}, \"excursion\": {}, \"t_of_excursion\": {}, \"first\": {}, \"last\": {}}}",
-        m.area->monotone, number(m.area->excursion), number(m.area->t_of_excursion), number(m.area->first),
-        number(m.area->last));
+        ",\n     \"{}\": {{\"monotone\": {}, \"excursion\": {}, \"t_of_excursion\": {}, \"first\": {}, \"last\": {}}}",
+        m.kind == "poses3d" ? "volume" : "area", m.area->monotone, number(m.area->excursion),
+        number(m.area->t_of_excursion), number(m.area->first), number(m.area->last));
   }
   return s + "}";
 }
@@ -177,6 +179,9 @@ std::string to_csv(const std::vector<MotionMeasures>& all) {
   return s;
 }
 
+// Measures of poses, of the plane ("poses") or of space ("poses3d").
+bool of_poses(const MotionMeasures& m) { return m.kind == "poses" || m.kind == "poses3d"; }
+
 std::string md_cell(std::string_view text) {
   std::string out;
   for (const char c : text) out += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
@@ -192,17 +197,14 @@ std::string panel_name(const MotionMeasures& m) {
 
 std::string to_md(const std::string& path, const std::vector<MotionMeasures>& all) {
   std::string s = fmt::format("# pita measure {}\n\n", path);
-  bool any_arrows = false, any_poses = false;
-  for (const auto& m : all) {
-    any_arrows = any_arrows || (m.kind != "poses" && !m.no_motion);
-    any_poses = any_poses || (m.kind == "poses" && !m.no_motion);
-  }
+  bool any_arrows = false;
+  for (const auto& m : all) any_arrows = any_arrows || (!of_poses(m) && !m.no_motion);
   if (any_arrows) {
     s += "| panel | method | E max prev / avg / pita | E mean prev / avg / pita | length p, q | turning p, q (rad) "
          "| winding range (rad) | most sensitive (gain) | pop (jump) |\n"
          "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& m : all) {
-      if (m.kind == "poses" || m.no_motion) continue;
+      if (of_poses(m) || m.no_motion) continue;
       std::string max, mean;
       for (const auto& d : m.discrepancy) {
         max += (max.empty() ? "" : " / ") + (d.frames ? short_number(d.max) : std::string("-"));
@@ -230,11 +232,16 @@ std::string to_md(const std::string& path, const std::vector<MotionMeasures>& al
     }
     s += '\n';
   }
-  if (any_poses) {
-    s += "| panel | method | ARA | area monotone | largest excursion (at t) | det L first, last |\n"
-         "|---|---|---|---|---|---|\n";
+  // One table for the poses of the plane (det L an area), one for those of
+  // space (det L a volume).
+  for (const std::string_view kind : {std::string_view("poses"), std::string_view("poses3d")}) {
+    const auto shown = [&](const MotionMeasures& m) { return m.kind == kind && !m.no_motion; };
+    if (std::none_of(all.begin(), all.end(), shown)) continue;
+    s += fmt::format("| panel | method | ARA | {0} monotone | largest excursion (at t) | det L first, last |\n"
+                     "|---|---|---|---|---|---|\n",
+                     kind == "poses" ? "area" : "volume");
     for (const auto& m : all) {
-      if (m.kind != "poses" || m.no_motion) continue;
+      if (!shown(m)) continue;
       s += fmt::format("| {} | {} | {} | {} | {} (t = {}) | {}, {} |\n", panel_name(m), md_cell(m.method),
                        short_number(*m.ara), m.area->monotone ? "yes" : "no", short_number(m.area->excursion),
                        short_number(m.area->t_of_excursion), short_number(m.area->first), short_number(m.area->last));
@@ -316,7 +323,6 @@ or usage, 3 the report could not be written to standard output, 4 an internal er
 ExitCode run_measure(const MeasureOptions& options) {
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path);
-    scene::require_plane_scene(scene, "pita measure");
     double work = 0.0;
     for (const scene::Panel& panel : scene.panels) work += analysis::measure_cost(panel);
     if (work > scene::kMaxEvalWork) {

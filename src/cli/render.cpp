@@ -344,7 +344,6 @@ ExitCode run_render(const RenderOptions& options) {
       render::Figure figure;
       if (options.at) {
         // One frame of the animation, in the view all its frames share.
-        scene::require_plane_scene(scene, "pita render --at");
         const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
         render::check_budget(scene, render::estimate_cost(scene), options.budget);
         render::check_images(scene);

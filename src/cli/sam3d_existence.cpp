@@ -13,6 +13,7 @@
 
 #include "analysis/sam3d_existence.hpp"
 #include "animate/progress.hpp"
+#include "cli/environment.hpp"
 #include "cli/failure.hpp"
 
 namespace pita::cli {
@@ -167,7 +168,7 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
         "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), rotations by j pi/{}, "
         "3^9 perturbations each; for each theta, every angle up to it\n\n| theta | largest safe p |\n|---|---|\n",
         axes, search.subdivisions, *options.curve);
-    animate::Progress progress("sam3d-existence", 100, !options.quiet);
+    animate::Progress progress("sam3d-existence", 100, progress_allowed(options.quiet));
     const analysis::SafeCurve curve = analysis::largest_safe_perturbation_curve(
         *options.curve, search, [&](double fraction) { progress.update(static_cast<int>(100.0 * fraction)); });
     for (std::size_t k = 0; k < curve.thetas.size(); ++k) {
@@ -183,7 +184,7 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
     }
   } else {
     text += "| theta | largest safe p (ours) | paper's bound | | fails one step above at |\n|---|---|---|---|---|\n";
-    animate::Progress progress("sam3d-existence", static_cast<int>(thetas.size() * 100), !options.quiet);
+    animate::Progress progress("sam3d-existence", static_cast<int>(thetas.size() * 100), progress_allowed(options.quiet));
     for (std::size_t i = 0; i < thetas.size(); ++i) {
       const analysis::SafePerturbation safe = analysis::largest_safe_perturbation(
           thetas[i], search, [&](double fraction) { progress.update(static_cast<int>(100.0 * (static_cast<double>(i) + fraction))); });

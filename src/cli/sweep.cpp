@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "render/output_file.hpp"
 #include "scene/scene.hpp"
@@ -127,7 +128,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     options.jobs = command.jobs.value_or(static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
     if (command.shard) options.shard = sweep::parse_shard(*command.shard);
     options.force = command.force;
-    options.quiet = command.quiet;
+    options.progress = progress_allowed(command.quiet);
     options.version = PITA_VERSION;
     const sweep::SweepSummary summary = sweep::run_sweep(options);
     for (std::size_t i = 0; i < summary.failures.size() && i < kMaxListed; ++i) {

@@ -392,7 +392,7 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
         const double p_next = -det_E_ * q, q_next = p + trace_E_ * q;
         p = p_next;
         q = q_next;
-        if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) < 1e-18 * (std::abs(g0) + 1e-300)) break;
+        if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) < limits::kSeriesTermCutoff * (std::abs(g0) + limits::kTinyScale)) break;
       }
       log_ratio_ = g0 * Matrix2d::Identity() + g1 * E_;
       break;
@@ -445,7 +445,7 @@ Affine2 AffinePowers::at_small(double t, const Vector2d& b) const {
         q = q_next;
         binomial *= (t - n) / (n + 1.0);
         const double term = std::abs(binomial) * (std::abs(p) + std::abs(q) * scale);
-        if (term < 1e-18 * (std::abs(g0) + std::abs(g1) * scale)) break;
+        if (term < limits::kSeriesTermCutoff * (std::abs(g0) + std::abs(g1) * scale)) break;
       }
       result.b = (g0 * Matrix2d::Identity() + g1 * E_) * b;
       break;

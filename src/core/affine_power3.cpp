@@ -117,7 +117,7 @@ double modulus(Complex z) { return std::sqrt(z.real() * z.real() + z.imag() * z.
 // Whether the three computed eigenvalues are one triple eigenvalue (rounding
 // may have made a complex pair of it, or three distinct reals).
 bool triple_cluster(const std::array<Complex, 3>& values) {
-  const double size = std::max({modulus(values[0]), modulus(values[1]), modulus(values[2]), 1e-300});
+  const double size = std::max({modulus(values[0]), modulus(values[1]), modulus(values[2]), limits::kTinyScale});
   const double spread = std::max({modulus(values[0] - values[1]), modulus(values[0] - values[2]),
                                   modulus(values[1] - values[2])});
   return spread <= limits::kEigenvalueCluster * size;
@@ -356,7 +356,7 @@ Affine3 AffinePowers3::split_log() const {
     for (int n = 1; n <= 400 && small_terms < 3; ++n) {
       const Vector3d term = ((n % 2 == 1) ? 1.0 : -1.0) / n * x;
       sum += term;
-      small_terms = term.norm() <= 1e-18 * sum.norm() ? small_terms + 1 : 0;
+      small_terms = term.norm() <= limits::kSeriesTermCutoff * sum.norm() ? small_terms + 1 : 0;
       x = E * x;
     }
     log.b = sum;
@@ -449,7 +449,7 @@ Vector3d AffinePowers3::unit_series(double t) const {
   for (int n = 1; n <= 400 && small_terms < 3; ++n) {
     const Vector3d term = binomial * x;
     sum += term;
-    small_terms = term.norm() <= 1e-18 * sum.norm() ? small_terms + 1 : 0;
+    small_terms = term.norm() <= limits::kSeriesTermCutoff * sum.norm() ? small_terms + 1 : 0;
     x = E * x;
     binomial *= (t - n) / (n + 1.0);
   }

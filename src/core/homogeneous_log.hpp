@@ -10,12 +10,13 @@
 
 #include "core/arrow.hpp"
 #include "core/complex_math.hpp"
+#include "core/limits.hpp"
 
 namespace pita {
 
 // (e^l - 1)/l, with its limit 1 at l = 0.
 inline Complex exprel(Complex l) {
-  if (std::abs(l) < 1e-300) return Complex{1.0};
+  if (std::abs(l) < limits::kTinyScale) return Complex{1.0};
   return expm1(l) / l;
 }
 

@@ -266,4 +266,32 @@ inline constexpr double kFarCenter = 1e6;
 // none (it would fill the figure, like kFarCenter's centers).
 inline constexpr double kFarGrazingPoint = 1e6;
 
+// Series and iterations (perseverant.cpp, pam.cpp, affine_power.cpp,
+// affine_power3.cpp) stop when a term falls below this fraction of the sum
+// (or of the sum's scale): two orders of magnitude under double's unit
+// roundoff, 1.1e-16, so that the terms left out cannot change the sum.
+inline constexpr double kSeriesTermCutoff = 1e-18;
+
+// A floor that keeps a scale strictly positive (a divisor, or the size a
+// relative test compares against) without changing any scale a motion can
+// have: far below every number pita evaluates, far above the least double.
+inline constexpr double kTinyScale = 1e-300;
+
+// Coordinates and magnitudes below this in absolute value cannot overflow
+// when q = p + m e^{iw} is formed (motion/scene_motion.cpp checks frames
+// against it before computing q).
+inline constexpr double kHugeCoordinate = 1e300;
+
+// Finite-difference steps, each a fraction of the span of time it
+// differences (the stencils are written beside each use):
+// - the time warp's rate d tau / d t (motion/scene_motion.cpp), a central
+//   difference: the eases and the arc-length inverse are smooth in a span;
+inline constexpr double kWarpRateStep = 1e-6;
+// - the velocity of the Bezier and bi-arc SAMs, which has no closed form
+//   (sam_family_motion.cpp): five-point stencil inside, second order at ends;
+inline constexpr double kPoseVelocityStep = 1e-3;
+// - the relative acceleration of the steadiness measure (steadiness.cpp), a
+//   fraction of one time sample of its midpoint rule.
+inline constexpr double kSteadinessStep = 1e-4;
+
 }  // namespace pita::limits

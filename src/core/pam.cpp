@@ -51,7 +51,7 @@ MotionScalars motion_series(Complex x, double tau) {
     S += d_next * xn;
     c = c_next;
     d = d_next;
-    if ((std::abs(c) + std::abs(d)) * std::abs(xn) <= 1e-18 * (1.0 + std::abs(tau))) break;
+    if ((std::abs(c) + std::abs(d)) * std::abs(xn) <= limits::kSeriesTermCutoff * (1.0 + std::abs(tau))) break;
   }
   return {C, S, Q, R};
 }
@@ -91,7 +91,7 @@ AccelerationScalars acceleration_scalars(Complex kappa) {
       xn *= x;
       mu += coefficient * xn;
       coefficient *= -nn * nn / ((2.0 * nn + 1.0) * (nn + 1.0));
-      if (std::abs(coefficient) * std::abs(xn) <= 1e-18) break;
+      if (std::abs(coefficient) * std::abs(xn) <= limits::kSeriesTermCutoff) break;
     }
     return {mu, nu};
   }

@@ -52,7 +52,7 @@ SeriesValues series(Complex K, double tau) {
     // R's numerator: sum_{n>=1} K^(n-1) (tau^(2n+1) - tau)/(2n+1)!; here index n+1.
     const double fact_next_odd = fact_odd * (2.0 * n + 2.0) * (2.0 * n + 3.0);
     rem += Kn * ((tau_pow * tau * tau - tau) / fact_next_odd);
-    if (std::abs(Kn) * std::max(1.0, std::abs(tau_even)) / fact_odd < 1e-18) break;
+    if (std::abs(Kn) * std::max(1.0, std::abs(tau_even)) / fact_odd < limits::kSeriesTermCutoff) break;
     Kn *= K;
     tau_pow *= tau * tau;
     tau_even *= tau * tau;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/limits.hpp"
+
 namespace pita {
 
 namespace {
@@ -173,7 +175,7 @@ Pose SamFamilyMotion<Pose>::velocity(double t) const {
     }
     case PoseMethod::bezier_sam:
     case PoseMethod::biarc_sam: {
-      const double h = 1e-3 * (last - first);
+      const double h = limits::kPoseVelocityStep * (last - first);
       const auto difference = [](const Pose& A, const Pose& B, double weight) {
         return Pose{(A.L - B.L) * weight, (A.b - B.b) * weight};
       };

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "core/pose_motion.hpp"
+#include "core/sam_family_motion.hpp"
 
 namespace pita {
 
@@ -20,8 +21,13 @@ namespace pita {
 // (reference coordinates) and over `time_samples` times at the middles of
 // equal intervals of u (never at a knot, where a polySAM's velocity jumps).
 // dw/du by central differences of the exact (or fourth-order) velocity.
+// Poses of the plane (points of R^2) and of space (PoseMotion3, points of
+// R^3) alike: one template (steadiness.cpp).
 double average_relative_acceleration(const PoseMotion& motion,
                                      std::span<const Eigen::Vector2d> points,
+                                     int time_samples = 64);
+double average_relative_acceleration(const PoseMotion3& motion,
+                                     std::span<const Eigen::Vector3d> points,
                                      int time_samples = 64);
 
 }  // namespace pita

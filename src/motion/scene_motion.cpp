@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
 #include "core/overloaded.hpp"
 #include "core/pitas/registry.hpp"
 
@@ -291,8 +292,9 @@ Arrow SceneMotion::arrow_at(double t) const {
   }
   // q = p + m e^{iw} is finite when p, m and w are and neither |p| nor m is
   // near the largest double; only then is it worth computing.
-  const bool finite = is_finite(arrow) && ((std::abs(arrow.p.real()) < 1e300 && std::abs(arrow.p.imag()) < 1e300 &&
-                                            arrow.m < 1e300) ||
+  constexpr double huge = limits::kHugeCoordinate;
+  const bool finite = is_finite(arrow) && ((std::abs(arrow.p.real()) < huge && std::abs(arrow.p.imag()) < huge &&
+                                            arrow.m < huge) ||
                                            (std::isfinite(arrow.q().real()) && std::isfinite(arrow.q().imag())));
   if (!finite) {
     throw NoMotion(file_, pointer_,
@@ -345,7 +347,7 @@ Affine3 SceneMotion::pose3_velocity(double t) const {
 double SceneMotion::warp_rate(double t) const {
   // d tau / d t by a central difference (the ease and the arc-length inverse
   // are smooth inside each span).
-  const double h = 1e-6 * (last() - first());
+  const double h = limits::kWarpRateStep * (last() - first());
   return (warp_(t + h) - warp_(t - h)) / (2.0 * h);
 }
 

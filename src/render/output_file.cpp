@@ -24,6 +24,11 @@ OutputError error(const fs::path& path, const std::string& what, int errnum) {
   return OutputError(path.string() + ": " + what + " (" + std::strerror(errnum) + ")");
 }
 
+}  // namespace
+
+// Named, not anonymous: StreamingOutput::Impl, declared in the header, holds one.
+namespace atomic_output {
+
 // The hidden temporary of one target. Its name is registered with the
 // interrupt cleanup before mkstemp creates it (mkstemp fills in the XXXXXX in
 // the registered slot itself), and released only once the file is renamed
@@ -112,6 +117,12 @@ class Temporary {
   bool committed_ = false;
 };
 
+}  // namespace atomic_output
+
+namespace {
+
+using atomic_output::Temporary;
+
 struct View {
   const fs::path& path;
   std::string_view bytes;
@@ -158,7 +169,7 @@ void write_all_or_none(const std::vector<View>& files) {
 
 struct StreamingOutput::Impl {
   explicit Impl(const fs::path& path) : temporary(path) {}
-  Temporary temporary;
+  atomic_output::Temporary temporary;
   std::string buffer;
 };
 

@@ -114,15 +114,6 @@ Scene with_method(Scene scene, Method method) {
   return scene;
 }
 
-void require_plane_scene(const Scene& scene, std::string_view command) {
-  if (scene.dimension == 3) {
-    throw SceneError(scene.path, "/dimension",
-                     fmt::format("{} works on scenes of the plane; 3D pose scenes are evaluated by pita eval and "
-                                 "drawn by pita render",
-                                 command));
-  }
-}
-
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
   if (!error.where().empty()) {
     return fmt::format("{} ({}, method {})", error.what(), error.where(), info(method).id);

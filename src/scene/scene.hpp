@@ -144,10 +144,6 @@ Scene with_method(Scene scene, Method method);
 // reason of the error that refuses a pose motion whose SAM does not exist.
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method);
 
-// Throws SceneError at /dimension when `scene` is a 3D pose scene: for the
-// commands that work on the plane only (`command` names them: "pita measure").
-void require_plane_scene(const Scene& scene, std::string_view command);
-
 // The pose scene with its method replaced (command-line override). Throws
 // SceneError when the scene has keyframes, the method takes another number of
 // poses, or a SAM it needs does not exist.

@@ -274,7 +274,6 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     // Read as if it were the base scene's file (relative image paths), named
     // in messages as the variant's own file.
     const scene::Scene scene = scene::parse_scene(text, job.base.path);
-    scene::require_plane_scene(scene, "pita sweep");
     motion::check_motions(scene);
     std::vector<std::pair<fs::path, std::string>> files;
     files.emplace_back(job.dir / scene_file, text);
@@ -532,7 +531,7 @@ SweepSummary run_sweep(const SweepOptions& options) {
   };
 
   const auto work = static_cast<int>(std::min<std::int64_t>(mine - summary.skipped, INT32_MAX));
-  animate::Progress progress("pita sweep", work, !options.quiet, true);
+  animate::Progress progress("pita sweep", work, options.progress, true);
   {
     const render::DeferredInterrupts deferred;
     const int threads = static_cast<int>(std::min<std::int64_t>(options.jobs, std::max<std::int64_t>(mine, 1)));

@@ -28,7 +28,7 @@ struct SweepOptions {
   int jobs = 1;
   std::optional<std::pair<int, int>> shard;  // K, N
   bool force = false;
-  bool quiet = false;
+  bool progress = false;         // a bar on a terminal, else a line every 10 s (the CLI: not --quiet, not in CI)
   std::string version;            // pita's version: part of every content hash
 };
 

@@ -97,10 +97,29 @@ TEST(Output, TotalWorkIsLimited) {
   }
 }
 
-TEST(Output, FfmpegCanBeMissing) {
-  ::setenv("PITA_FFMPEG", "/nonexistent/ffmpeg", 1);
-  EXPECT_EQ(find_ffmpeg(), "");
-  ::unsetenv("PITA_FFMPEG");
+// The caller says which ffmpeg to run (the CLI reads PITA_FFMPEG and PATH):
+// with none, a video is refused naming the package, and nothing is written.
+TEST(Output, VideoWithoutFfmpegIsRefusedNamingThePackage) {
+  const fs::path dir = fs::temp_directory_path() / ("pita-test-no-ffmpeg-" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const scene::Scene scene = scene::load_scene(fs::path(PITA_SOURCE_DIR) / "scenes" / "fig24-animation-frames.json");
+  const Timeline timeline = make_timeline(scene, {std::nullopt, std::nullopt, 3});
+  for (const OutputKind kind : {OutputKind::mp4, OutputKind::webm}) {
+    Request request;
+    request.out = dir / (kind == OutputKind::mp4 ? "clip.mp4" : "clip.webm");
+    request.kind = kind;
+    request.progress = false;
+    request.ffmpeg = "";
+    try {
+      write_animation(scene, timeline, request);
+      ADD_FAILURE() << "a video without ffmpeg";
+    } catch (const AnimationError& error) {
+      EXPECT_NE(std::string(error.what()).find("apt-get install ffmpeg"), std::string::npos) << error.what();
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(dir));
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -59,8 +59,9 @@ SceneClock clock_of(const fs::path& scene_path) {
   SceneClock clock;
   const Json animation = scene.value("animation", Json::object());
   clock.loop = animation.value("loop", true);
-  clock.width = scene.at("canvas").at("width").get<int>();
-  clock.height = scene.at("canvas").at("height").get<int>();
+  const Json canvas = scene.value("canvas", Json::object());  // the defaults: README "Scene format"
+  clock.width = canvas.value("width", 800);
+  clock.height = canvas.value("height", 600);
   if (animation.value("what", std::string("motion")) == "pattern") return clock;  // tau over [0, 1]
   // "motion": the knots of the scene's keyframes / poses / points and of every
   // panel's own.
@@ -297,7 +298,9 @@ INSTANTIATE_TEST_SUITE_P(
                       AtCase{"fig27_pattern", kFig27, 7, {0, 3, 6}, {"--scale", "0.5"}},
                       AtCase{"fig27_pattern_own_timeline", kFig27, 0, {0, 45, 89}, {"--scale", "0.25"}},
                       AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}},
-                      AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}}),
+                      AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}},
+                      AtCase{"space_polysam", kScenes / "sam-3d-fig13-polysam.json", 0, {0, 4, 8},
+                             {"--frames", "9", "--scale", "0.5"}}),
     [](const ::testing::TestParamInfo<AtCase>& param) { return param.param.name; });
 
 // ------------------------------------------------------------ 3. animated SVG
@@ -812,17 +815,45 @@ TEST(AnimateProgressBar, ShownOnATerminalOnly) {
   EXPECT_EQ(quiet.out.find("%)"), std::string::npos) << quiet.out;
 }
 
-// 3D pose scenes are not animated (nor drawn with render --at): exit 2 at /dimension.
-TEST(AnimateSpace, RefusedAtDimension) {
+// 3D pose scenes animate as the plane's do (frame k == render --at t_k is in
+// AnimateFrameEqualsRenderAt): frames.json records each frame's pose of space
+// as the 3x4 rows `pita eval` prints at that time, the first pose at the
+// first knot.
+TEST(AnimateSpace, FramesRecordThePoseInSpace) {
   const ScratchDir dir;
-  const std::string scene = (kScenes / "sam-3d-fig13-polysam.json").string();
-  const RunResult animate = run_pita({"animate", scene, "-o", "frames"}, dir.path());
-  EXPECT_EQ(animate.exit_code, 2);
-  EXPECT_NE(animate.err.find(": /dimension: pita animate works on scenes of the plane"), std::string::npos)
-      << animate.err;
-  const RunResult at = run_pita({"render", scene, "--at", "0.5", "-o", "at.png"}, dir.path());
-  EXPECT_EQ(at.exit_code, 2);
-  EXPECT_NE(at.err.find(": /dimension: pita render --at works on scenes of the plane"), std::string::npos) << at.err;
+  const fs::path scene = kScenes / "sam-3d-fig13-polysam.json";
+  const RunResult animate = run_pita({"animate", scene.string(), "-o", "frames", "--frames", "4", "-q"}, dir.path());
+  ASSERT_EQ(animate.exit_code, 0) << animate.err;
+  const Json index = read_json(dir.path() / "frames/frames.json");
+  const Json& records = index.at("frame_list");
+  ASSERT_EQ(records.size(), 4u);
+  std::string times;
+  for (const Json& record : records) times += (times.empty() ? "" : ",") + record.at("t").dump();
+  const RunResult eval = run_pita({"eval", scene.string(), "--t", times}, dir.path());
+  ASSERT_EQ(eval.exit_code, 0) << eval.err;
+  const Json frames = Json::parse(eval.out).at("frames");
+  ASSERT_EQ(frames.size(), 4u);
+  const Json first_pose = read_json(scene).at("poses").at(0);
+  EXPECT_EQ(records.at(0).at("t").get<double>(), first_pose.at("t").get<double>());
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Json& A = records.at(k).at("A");
+    ASSERT_EQ(A.size(), 3u) << A.dump();
+    for (std::size_t r = 0; r < 3; ++r) {
+      ASSERT_EQ(A.at(r).size(), 4u) << A.dump();
+      for (std::size_t c = 0; c < 4; ++c) {
+        EXPECT_NEAR(A.at(r).at(c).get<double>(), frames.at(k).at("matrix").at(r).at(c).get<double>(), 1e-12)
+            << "frame " << k + 1 << " row " << r << " column " << c;
+        if (k == 0) {
+          EXPECT_NEAR(A.at(r).at(c).get<double>(), first_pose.at("matrix").at(r).at(c).get<double>(), 1e-12);
+        }
+      }
+    }
+    EXPECT_TRUE(fs::is_regular_file(dir.path() / "frames" / records.at(k).at("file").get<std::string>()));
+  }
+  // The same scene as a video's worth of frames in one animated SVG.
+  const RunResult svg = run_pita({"animate", scene.string(), "-o", "tumble.svg", "--frames", "6", "-q"}, dir.path());
+  ASSERT_EQ(svg.exit_code, 0) << svg.err;
+  EXPECT_NE(read_file(dir.path() / "tumble.svg").find("</svg>"), std::string::npos);
 }
 
 }  // namespace

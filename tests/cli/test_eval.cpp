@@ -134,7 +134,10 @@ TEST_F(Eval, EveryStarterSceneEvaluates) {
     if (entry.path().extension() != ".json") continue;
     const RunResult result = run({"eval", entry.path().string()});
     EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.err;
-    EXPECT_NO_THROW(Json::parse(result.out)) << entry.path();
+    EXPECT_NO_THROW({
+      const Json document = Json::parse(result.out);
+      EXPECT_TRUE(document.contains("frames")) << entry.path();
+    }) << entry.path();
   }
 }
 

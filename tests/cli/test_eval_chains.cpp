@@ -60,7 +60,10 @@ class EvalChains : public ::testing::Test {
   std::vector<Frame> eval(const std::string& scene, const std::vector<double>& times, Json* document = nullptr) {
     dir.write("track.json", scene);
     std::string list;
-    for (const double t : times) list += (list.empty() ? "" : ",") + Json(t).dump();
+    for (const double t : times) {
+      if (!list.empty()) list += ',';
+      list += Json(t).dump();
+    }
     const RunResult run = run_pita({"eval", "track.json", "--t", list}, dir.path());
     EXPECT_EQ(run.exit_code, 0) << run.err;
     std::vector<Frame> frames;
@@ -215,7 +218,10 @@ TEST(EvalPoints, Fig29PassesItsFourPointsWithEveryPita) {
   const Json& points = document.at("points");
   ASSERT_EQ(points.size(), 4u);
   std::string times;
-  for (const Json& point : points) times += (times.empty() ? "" : ",") + point.at("t").dump();
+  for (const Json& point : points) {
+    if (!times.empty()) times += ',';
+    times += point.at("t").dump();
+  }
   ScratchDir dir;
   for (const std::string method : {"P1", "P2", "P3", "P4", "P5", "P6", "P7", "P8"}) {
     const RunResult run = run_pita({"eval", scene.string(), "--method", method, "--t", times}, dir.path());

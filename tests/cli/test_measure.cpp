@@ -146,20 +146,48 @@ TEST_F(Measure, WorkBeyondTheLimitIsRefused) {
   EXPECT_NE(result.err.find("above the limit of 1e+08"), std::string::npos) << result.err;
 }
 
+// Poses of space (SAM paper Sec. 2.4 and 6.1 in 3D): a SAM is steady (ARA 0)
+// and its volume det L(t) = det(L)^t is monotone; the linear blend of the same
+// two poses (a quarter turn about z, all scaled by 2) is not steady, and its
+// volume ((1 - u)^2 + 4 u^2)(1 + u) first falls below 1, then rises to 8.
+TEST_F(Measure, PosesOfSpaceHaveTheirAraAndVolume) {
+  const std::string poses = R"("poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 2, "matrix": [[0, -2, 0, 1], [2, 0, 0, 2], [0, 0, 2, 3]]}])";
+  dir.write("sam.json", R"({"dimension": 3, "method": "SAM", )" + poses + "}");
+  dir.write("linear.json", R"({"dimension": 3, "method": "linear", )" + poses + "}");
+  const RunResult sam = run({"measure", "sam.json", "--format", "json"});
+  const RunResult linear = run({"measure", "linear.json", "--format", "json"});
+  ASSERT_EQ(sam.exit_code, 0) << sam.err;
+  ASSERT_EQ(linear.exit_code, 0) << linear.err;
+  const Json steady = Json::parse(sam.out)["motions"][0];
+  const Json blend = Json::parse(linear.out)["motions"][0];
+  EXPECT_EQ(steady["kind"], "poses3d");
+  EXPECT_LT(steady["ara"].get<double>(), 1e-6);
+  EXPECT_EQ(steady["volume"]["monotone"], true);
+  EXPECT_NEAR(steady["volume"]["first"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(steady["volume"]["last"].get<double>(), 8.0, 1e-9);
+  EXPECT_GT(blend["ara"].get<double>(), 0.1);
+  EXPECT_EQ(blend["volume"]["monotone"], false);
+  // The Markdown report has the table of space, headed by the volume.
+  const RunResult md = run({"measure", "sam.json", "--format", "md"});
+  ASSERT_EQ(md.exit_code, 0) << md.err;
+  EXPECT_NE(md.out.find("| ARA | volume monotone |"), std::string::npos) << md.out;
+}
+
 TEST_F(Measure, EverySceneOfScenesIsMeasured) {
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PITA_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".json") continue;
     const RunResult result = run({"measure", entry.path().string(), "--format", "json"});
-    if (entry.path().stem().string().starts_with("sam-3d-")) {  // 3D scenes: refused, naming /dimension
-      EXPECT_EQ(result.exit_code, 2) << entry.path();
-      EXPECT_NE(result.err.find(": /dimension: pita measure works on scenes of the plane"), std::string::npos)
-          << result.err;
-      continue;
-    }
     EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.err;
     Json document;
     ASSERT_NO_THROW(document = Json::parse(result.out)) << entry.path();
     EXPECT_GE(document["motions"].size(), 1u) << entry.path();
+    if (entry.path().stem().string().starts_with("sam-3d-")) {  // poses of space: ARA and the volume
+      for (const Json& motion : document["motions"]) {
+        EXPECT_EQ(motion["kind"], "poses3d") << entry.path();
+        EXPECT_TRUE(motion.contains("ara") && motion.contains("volume")) << motion.dump();
+      }
+    }
   }
 }
 

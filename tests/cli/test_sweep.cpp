@@ -421,17 +421,34 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   EXPECT_EQ(shown, want) << dom.substr(0, 2000);
 }
 
-// 3D pose scenes: a sweep's metrics are of the plane, so the base scene is
-// refused (exit 2, at /dimension), and nothing is written.
-TEST(Sweep, RefusesASpaceScene) {
+// 3D pose scenes sweep as the plane's do: here over an entry of a pose of
+// space (the second pose's x translation), each variant with its figure, its
+// frames (3x4 rows, the swept entry in place) and its metrics (the ARA of a
+// polySAM, steady within each span: about 0).
+TEST(Sweep, SweepsAnEntryOfAPoseOfSpace) {
   const ScratchDir dir;
   const RunResult result =
       run_pita({"sweep", std::string(PITA_SOURCE_DIR) + "/scenes/sam-3d-fig13-polysam.json", "--vary",
-                "/camera/azimuth=-70,0", "-o", "out", "--format", "png", "-q"},
+                "/poses/1/matrix/0/3=2:4:3", "-o", "out", "--format", "png,json", "-q"},
                dir.path());
-  EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.err.find(": /dimension: pita sweep works on scenes of the plane"), std::string::npos) << result.err;
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "manifest.csv"));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::string manifest = read_file(dir.path() / "out" / "manifest.csv");
+  EXPECT_EQ(std::count(manifest.begin(), manifest.end(), '\n'), 4) << manifest;  // the header and 3 variants
+  for (const double x : {2.0, 3.0, 4.0}) {
+    EXPECT_NE(manifest.find(fmt::format(",{},", x)), std::string::npos) << x << "\n" << manifest;
+  }
+  int frames_files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "out")) {
+    const std::string name = entry.path().filename().string();
+    if (!name.ends_with(".json") || name.ends_with("scene.json") || name == "sweep.json") continue;
+    const nlohmann::json frames = nlohmann::json::parse(read_file(entry.path()));
+    if (!frames.contains("frames")) continue;
+    ++frames_files;
+    ASSERT_FALSE(frames["frames"].empty()) << name;
+    EXPECT_EQ(frames["frames"][0]["matrix"].size(), 3u) << name;
+    EXPECT_EQ(frames["frames"][0]["matrix"][0].size(), 4u) << name;
+  }
+  EXPECT_EQ(frames_files, 3);
 }
 
 }  // namespace

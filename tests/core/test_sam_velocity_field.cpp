@@ -40,7 +40,7 @@ TEST(SamVelocityField, IsEquation7WithTheFixedPoint) {
   const Eigen::Vector2d q = (Eigen::Matrix2d::Identity() - A.L).partialPivLu().solve(A.b);
   ASSERT_TRUE(field.fixed_point().has_value());
   EXPECT_NEAR((*field.fixed_point() - q).norm(), 0.0, 1e-12);
-  for (const Eigen::Vector2d x : {Eigen::Vector2d(-1.0, -2.6), Eigen::Vector2d(7.0, 5.4), Eigen::Vector2d(3.0, 2.0),
+  for (const Eigen::Vector2d& x : {Eigen::Vector2d(-1.0, -2.6), Eigen::Vector2d(7.0, 5.4), Eigen::Vector2d(3.0, 2.0),
                                   Eigen::Vector2d(0.5, 4.0)}) {
     const Eigen::Vector2d expected = log_L * (x - q);  // Eq. 7, t_N = 0 (1 is no eigenvalue)
     EXPECT_NEAR((field.at(x) - expected).norm(), 0.0, 1e-12) << x.transpose();
@@ -63,7 +63,7 @@ TEST(SamVelocityField, TrajectoriesAreTheSamPathsOfThePoints) {
   H.topLeftCorner<2, 2>() = fig8_affinity().L;
   H.topRightCorner<2, 1>() = fig8_affinity().b;
   const Eigen::Matrix3d log_H = oracle::log(H);
-  for (const Eigen::Vector2d p : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.3, 0.9)}) {
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.3, 0.9)}) {
     const Eigen::Vector2d x0 = apply(B, p);
     for (const double u : {0.0, 0.2, 0.5, 0.9, 1.0, 1.7}) {
       EXPECT_NEAR((field.trajectory(x0, u) - apply(sam.at(u), p)).norm(), 0.0, 1e-11) << u;
@@ -81,7 +81,7 @@ TEST(SamVelocityField, FieldIsTheFiniteDifferenceDerivativeAtEveryTime) {
   const SamVelocityField field = SamVelocityField::between(B, C);
   const SteadyAffineMorph sam(B, C);
   const double h = 1e-4;
-  for (const Eigen::Vector2d p : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(2.0, -1.0)}) {
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(2.0, -1.0)}) {
     for (const double u : {-0.5, 0.0, 0.3, 0.75, 1.0, 2.0}) {
       const Eigen::Vector2d derivative = (apply(sam.at(u + h), p) - apply(sam.at(u - h), p)) / (2.0 * h);
       const Eigen::Vector2d at = apply(sam.at(u), p);
@@ -112,7 +112,7 @@ TEST(SamVelocityField, TranslationHasAConstantFieldAndNoFixedPoint) {
   const Affine2 A{Eigen::Matrix2d::Identity(), Eigen::Vector2d(2.0, -1.0)};
   const SamVelocityField field(A);
   EXPECT_FALSE(field.fixed_point().has_value());
-  for (const Eigen::Vector2d x : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(-5.0, 3.0)}) {
+  for (const Eigen::Vector2d& x : {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(-5.0, 3.0)}) {
     EXPECT_NEAR((field.at(x) - Eigen::Vector2d(2.0, -1.0)).norm(), 0.0, 1e-15);
   }
 }

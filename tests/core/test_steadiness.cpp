@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/steadiness.hpp"
 #include "pose_test_support.hpp"
 
@@ -54,6 +56,37 @@ TEST(Steadiness, Fig2SamIsTheOnlySteadyMorph) {
       EXPECT_GT(average_relative_acceleration(PoseMotion(method, two), kTriangle), 1e-3);
     }
   }
+}
+
+// The same measure in space (one template for both dimensions). Checked
+// against the plane: poses of the plane embedded in space (z kept) move the
+// points of z = 0 exactly as in the plane, so both measures agree; and a SAM
+// of space is steady while the linear blend of the same poses is not.
+TEST(Steadiness, SpaceMeasureAgreesWithThePlaneAndFindsTheSamSteady) {
+  const auto embedded = [](const Affine2& A) {
+    Affine3 E;
+    E.L.topLeftCorner<2, 2>() = A.L;
+    E.b.head<2>() = A.b;
+    return E;
+  };
+  std::vector<Eigen::Vector3d> flat;
+  for (const Eigen::Vector2d& p : kTriangle) flat.emplace_back(p.x(), p.y(), 0.0);
+  for (const PoseMethod method : {PoseMethod::linear, PoseMethod::sam}) {
+    const double plane = average_relative_acceleration(PoseMotion(method, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
+    const double space = average_relative_acceleration(
+        PoseMotion3(method, {{0.0, embedded(kSamFig2B)}, {1.0, embedded(kSamFig2C)}}, 0), flat);
+    EXPECT_NEAR(space, plane, 1e-6 * (1.0 + plane)) << info(method).id;
+  }
+  // A turn about a tilted axis with a scaling, in space proper.
+  const Affine3 from;
+  const Affine3 to{1.5 * Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 2).normalized()).toRotationMatrix(),
+                   Eigen::Vector3d(3, -1, 2)};
+  const std::vector<Eigen::Vector3d> tetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const double sam = average_relative_acceleration(PoseMotion3(PoseMethod::sam, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
+  const double linear =
+      average_relative_acceleration(PoseMotion3(PoseMethod::linear, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
+  EXPECT_LT(sam, 1e-6);
+  EXPECT_GT(linear, 0.5);
 }
 
 }  // namespace

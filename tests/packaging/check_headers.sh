@@ -5,8 +5,9 @@
 # system's packages (Eigen; cairo and pango for render's headers): no path
 # into the source tree. Runs up to 2 compilers at once. A header that parses,
 # resolves every name and instantiates what it uses on its own is what the
-# check asks, so the compiler stops there (-fsyntax-only: no code is made,
-# which halves the time of the 113 headers). Through ccache when it is there.
+# check asks, so the compiler stops there (-fsyntax-only: no code is made;
+# parsing Eigen, cairo and pango for each header is most of the time).
+# Through ccache when it is there.
 # Usage: check_headers.sh PREFIX COMPILER WORK_DIR
 set -euo pipefail
 prefix="$1" compiler="${2:-c++}" work="$3"
