@@ -269,8 +269,8 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
       "eval", "Evaluate the motion through a scene's keyframes and print its frames");
   eval->footer(eval_footer());
 
-  eval->add_option("SCENE", options->scene_path, "Scene file (JSON), for example scenes/fig01-eight-pitas.json")
-      ->required();
+  // Not ->required(): --batch replaces it (run_eval says when neither is given).
+  eval->add_option("SCENE", options->scene_path, "Scene file (JSON), for example scenes/fig01-eight-pitas.json");
   eval->add_option_function<std::string>(
           "--method", [options](const std::string& name) { options->method = name; },
           "Use this method instead of the scene's (the keyframe count must fit it)")
@@ -297,10 +297,17 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
       ->check(CLI::IsMember({"json", "csv"}))
       ->type_name("FORMAT")
       ->capture_default_str();
+  eval->add_option_function<std::string>(
+          "--batch", [options](const std::string& path) { options->batch = path; },
+          "Many evaluations in one process: each line of FILE (- for standard input) is the arguments of one "
+          "`pita eval` as a JSON array of strings; each line printed is its {\"exit\", \"stdout\", \"stderr\"} "
+          "(README \"Many evaluations in one process\")")
+      ->type_name("FILE");
   return options;
 }
 
-ExitCode run_eval(const EvalOptions& options) {
+EvalOutcome evaluate(const EvalOptions& options) {
+  EvalOutcome outcome;
   try {
     std::optional<Method> method_override;
     std::optional<PoseMethod> pose_method_override;
@@ -324,7 +331,7 @@ ExitCode run_eval(const EvalOptions& options) {
     if (method_override) scene = scene::with_method(std::move(scene), *method_override);
     if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
-    std::string text;  // the whole output is built before anything is printed
+    // the whole output is built before anything is printed
     if (scene.kind == scene::SceneKind::poses && scene.poses.empty() && scene.poses3.empty()) {
       // A figure whose layers need no motion (sam-fig06-existence-3d): a
       // well-formed, empty result and a note on stderr, exit 0, so that a loop
@@ -333,9 +340,9 @@ ExitCode run_eval(const EvalOptions& options) {
         throw InputError(fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate",
                                      scene.path));
       }
-      text = no_motion_text(scene, options.format == "csv");
-      std::cerr << "pita: " << scene.path << ": /poses: the scene has no poses, so no motion: no frames\n";
-      return write_stdout(text);
+      outcome.out = no_motion_text(scene, options.format == "csv");
+      outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
+      return outcome;
     }
     motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
     scene::Panel panel = scene::scene_panel(scene);
@@ -359,17 +366,39 @@ ExitCode run_eval(const EvalOptions& options) {
           "fewer frames, or use the local \"blend\" chain",
           scene.path, scene.chain ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
     }
-    text = motion::frames_text(panel, motion, at, options.format == "csv" ? motion::FramesFormat::csv
-                                                                         : motion::FramesFormat::json);
-    return write_stdout(text);
+    outcome.work = work;
+    outcome.out = motion::frames_text(panel, motion, at,
+                                      options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json);
+    return outcome;
   } catch (const InputError& error) {
-    std::cerr << "pita: " << error.what() << '\n';
-    return ExitCode::bad_input;
+    return EvalOutcome{ExitCode::bad_input, {}, fmt::format("pita: {}\n", error.what()), 0.0};
   } catch (...) {
     const Failure failure = current_failure(options.scene_path);
-    std::cerr << "pita: " << failure.message << '\n';
-    return failure.code;
+    return EvalOutcome{failure.code, {}, fmt::format("pita: {}\n", failure.message), 0.0};
   }
+}
+
+ExitCode run_eval(const EvalOptions& options) {
+  if (options.batch) {
+    // Checked here rather than with CLI11's excludes(), which would print
+    // "Excludes: --batch" beside every option of the help.
+    if (!options.scene_path.empty() || options.method || options.samples || options.times || options.panel ||
+        options.format != "json") {
+      std::cerr << "pita: --batch excludes SCENE, --method, --samples, --t, --panel and --format: each request "
+                   "line holds its own\nRun 'pita eval --help' for usage.\n";
+      return ExitCode::bad_input;
+    }
+    return run_eval_batch(*options.batch);
+  }
+  if (options.scene_path.empty()) {
+    std::cerr << "pita: SCENE is required\nGive a scene file, or --batch FILE for many evaluations in one "
+                 "process. Run 'pita eval --help' for usage.\n";
+    return ExitCode::bad_input;
+  }
+  const EvalOutcome outcome = evaluate(options);
+  std::cerr << outcome.err;
+  if (outcome.code != ExitCode::success) return outcome.code;
+  return write_stdout(outcome.out);
 }
 
 }  // namespace pita::cli

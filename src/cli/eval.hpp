@@ -1,7 +1,9 @@
 // pita eval SCENE.json [--method M] [--samples N | --t T1,T2,...] [--format json|csv]
+// pita eval --batch FILE
 //
 // Evaluates the motion through the keyframes of a scene at sample times and
-// prints the frames (JSON or CSV) on stdout.
+// prints the frames (JSON or CSV) on stdout; with --batch, many such
+// evaluations in one process (cli/eval_batch.cpp).
 #pragma once
 
 #include <memory>
@@ -23,13 +25,30 @@ struct EvalOptions {
   std::optional<std::string> times;    // --t, as typed: "0,0.25,1.5"
   std::string format = "json";         // --format: json or csv
   std::optional<int> panel;            // --panel: the motion of this panel (0-based)
+  std::optional<std::string> batch;    // --batch: a file of requests, "-" for stdin
+};
+
+// What one evaluation prints: the frames (stdout) and the messages (stderr,
+// each line "pita: ..."), and the work it cost (frames of the method).
+struct EvalOutcome {
+  ExitCode code = ExitCode::success;
+  std::string out;
+  std::string err;
+  double work = 0.0;
 };
 
 // Declares the eval subcommand on `app`; app.parse() fills the returned options.
 std::shared_ptr<EvalOptions> setup_eval(CLI::App& app);
 
+// Does the work of one evaluation (options.batch is ignored) without printing.
+EvalOutcome evaluate(const EvalOptions& options);
+
 // Does the work. Prints the frames on stdout, or a message on stderr and
-// nothing on stdout.
+// nothing on stdout; with options.batch, runs the batch.
 ExitCode run_eval(const EvalOptions& options);
+
+// pita eval --batch FILE: each request line evaluated as `pita eval ARGS...`
+// would, its outcome printed as one JSON line (cli/eval_batch.cpp).
+ExitCode run_eval_batch(const std::string& path);
 
 }  // namespace pita::cli

@@ -29,6 +29,12 @@ inline constexpr int kMaxSamples = 1'000'000;
 // about 1950), at most this many (about 6 s on one core).
 inline constexpr double kMaxEvalWork = 1e8;
 inline constexpr int kDefaultSamples = 9;
+// `pita eval --batch`: a request line of at most 32 MiB (a --t list of a
+// million times fits), at most 100 000 requests, and requests taken while the
+// batch's work is at most 100 times one evaluation's limit (about 10 min).
+inline constexpr std::size_t kMaxBatchLineBytes = std::size_t{32} << 20;
+inline constexpr std::size_t kMaxBatchRequests = 100'000;
+inline constexpr double kMaxBatchWork = 100 * kMaxEvalWork;
 
 // Keyframe values. Knots, coordinates and magnitudes beyond 1e100 (or
 // magnitudes below 1e-100) leave the methods no room before their

@@ -114,11 +114,12 @@ struct Started {
 // Starts `pita args...` with `directory` as working directory, `environment`
 // ("NAME=value") set over the test's own and `ignored_signals` ignored (as
 // nohup does), with at most `address_space` bytes of virtual memory when
-// given (ulimit -v), without waiting for it.
+// given (ulimit -v), and the file `input` as standard input when given,
+// without waiting for it.
 inline Started start_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
                           const std::vector<std::string>& environment = {},
                           const std::vector<int>& ignored_signals = {},
-                          std::size_t address_space = 0) {
+                          std::size_t address_space = 0, const std::filesystem::path& input = {}) {
   // The captured streams go to a directory of their own, so that they never
   // collide with the files of the test.
   Started started;
@@ -127,6 +128,7 @@ inline Started start_pita(const std::vector<std::string>& args, const std::files
   const std::string err_path = (started.capture->path() / "stderr").string();
   const std::string binary = pita_binary();
   const std::string cwd = directory.string();
+  const std::string in_path = input.string();
 
   std::vector<std::string> argv_strings;
   argv_strings.push_back(binary);
@@ -156,6 +158,10 @@ inline Started start_pita(const std::vector<std::string>& args, const std::files
     const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (out < 0 || err < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) {
       ::_exit(126);
+    }
+    if (!in_path.empty()) {
+      const int in = ::open(in_path.c_str(), O_RDONLY);
+      if (in < 0 || ::dup2(in, 0) < 0) ::_exit(126);
     }
     for (const int sig : ignored_signals) ::signal(sig, SIG_IGN);
     if (address_space > 0) {

@@ -32,7 +32,7 @@ TEST_F(Main, EvalHelpDescribesTheSceneFormat) {
   const RunResult result = run({"eval", "--help"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_EQ(result.err, "");
-  for (const std::string part : {"Usage: pita eval [OPTIONS] SCENE", "--samples", "--t", "--method",
+  for (const std::string part : {"Usage: pita eval [OPTIONS] [SCENE]", "--samples", "--batch FILE", "--t", "--method",
                                  "--format", "Scene format", "\"keyframes\"", "turns", "P6    La-LP",
                                  "SMA   SMA", "Examples:", "Exit codes"}) {
     EXPECT_TRUE(contains(result.out, part)) << "no \"" << part << "\" in\n" << result.out;

@@ -9,7 +9,7 @@ A is a random orientation-preserving affinity with a real principal logarithm
 plus every special case explicitly: pure translation, shear, diag(1, 3) (eigenvalue 1),
 L = -2 I (half turn with scale: pita's rotation by +pi), rotation by pi - 1e-9, the Jordan
 block [[2, 1], [0, 2]], 3 I, near-identity and near-shear affinities.  Each scene is evaluated
-by one `pita eval SCENE --t ...` call at u in {0, 0.25, 0.5, 1, 1.5, -0.5, -8, 12, random}; every
+by one `pita eval SCENE --t ...` request (`pita eval --batch`, cli_batch.py) at u in {0, 0.25, 0.5, 1, 1.5, -0.5, -8, 12, random}; every
 frame's 2x3 matrix must match the oracle's A^u o B (computed at ~60 digits from the poses
 exactly as written in the scene) to 1e-12 * max(1, ||oracle||_max).
 
@@ -34,13 +34,13 @@ import math
 import os
 import random
 import shutil
-import subprocess
 import sys
 import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_batch as CB  # noqa: E402
 import sam_oracle as S  # noqa: E402
 
 TOL = 1e-12
@@ -234,9 +234,9 @@ def scene_json(B, C, t0, t1):
     return json.dumps({"method": "SAM", "poses": [{"t": t0, "matrix": B}, {"t": t1, "matrix": C}]})
 
 
-def run_cli(pita, path, times):
-    arg = "--t=" + ",".join(repr(float(t)) for t in times)
-    return subprocess.run([pita, "eval", path, arg], capture_output=True, text=True)
+def cli_request(path, times):
+    """The arguments of `pita eval` at these times."""
+    return [path, "--t=" + ",".join(repr(float(t)) for t in times)]
 
 
 # --------------------------------------------------------------------------- comparison
@@ -294,18 +294,19 @@ def main():
                 f.write(scene_json(B, C, 0.0, 1.0))
             ref_jobs.append((family, A, B, C, expect, path))
 
-        with ThreadPoolExecutor(max_workers=2) as ex:
-            futs = [ex.submit(run_cli, args.pita, c["path"], c["times"]) for c in cases]
-            ref_futs = [ex.submit(run_cli, args.pita, j[5], [0.0, 0.5, 1.0]) for j in ref_jobs]
-            # the oracle runs here while the CLI calls proceed in the pool
+        requests = ([cli_request(c["path"], c["times"]) for c in cases] +
+                    [cli_request(j[5], [0.0, 0.5, 1.0]) for j in ref_jobs])
+        with ThreadPoolExecutor(max_workers=1) as ex:
+            answers = ex.submit(CB.eval_many, args.pita, requests)
+            # the oracle runs here while the CLI's batches proceed (cli_batch.py)
             oracles = []
             for c in cases:
                 try:
                     oracles.append(oracle_frames(c))
                 except S.NoSam as e:
                     oracles.append(e)
-            results = [f.result() for f in futs]
-            ref_results = [f.result() for f in ref_futs]
+            answers = answers.result()
+        results, ref_results = answers[:len(cases)], answers[len(cases):]
 
         failures = []
         worst = {}   # family -> (err, description)

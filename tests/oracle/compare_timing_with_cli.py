@@ -14,7 +14,7 @@ random timing: an ease among every named one ("linear", "ease", "ease-in", "ease
 y1, y2 in [-0.5, 1.5]), a random sine cap {"sine": {"k1", "k2"}} or parabolic
 {"parabolic": {"t1", "t2"}} (edges k1 = k2, t1 = t2, 0 and 1 included), with or without
 "arc_length" ("p", "q", "mid"), "per" "motion", "span" or absent.  Each scene is evaluated by
-one `pita eval SCENE --t ...` call at the knots, random times inside [t_0, t_n] and a few
+one `pita eval SCENE --t ...` request (`pita eval --batch`, cli_batch.py) at the knots, random times inside [t_0, t_n] and a few
 outside.  Plus the crafted scenes of CRAFTED.
 
 Every frame's "t" must equal the requested time exactly; p and q must match the oracle to
@@ -44,7 +44,6 @@ import json
 import math
 import os
 import random
-import subprocess
 import sys
 import tempfile
 import time
@@ -52,6 +51,7 @@ from concurrent.futures import ProcessPoolExecutor
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_batch as CB  # noqa: E402
 import pita_oracle as O  # noqa: E402
 import timing_oracle as T  # noqa: E402
 from compare_with_cli import encode  # noqa: E402  (keyframes in the three JSON forms)
@@ -221,9 +221,9 @@ def scene_json(method, kfs, timing):
     return json.dumps({"method": method, "keyframes": kfs, "timing": timing})
 
 
-def run_cli(pita, path, times):
-    arg = "--t=" + ",".join(repr(float(t)) for t in times)
-    return subprocess.run([pita, "eval", path, arg], capture_output=True, text=True)
+def cli_request(path, times):
+    """The arguments of `pita eval` at these times."""
+    return [path, "--t=" + ",".join(repr(float(t)) for t in times)]
 
 
 def speed(tm, f, u):
@@ -231,8 +231,8 @@ def speed(tm, f, u):
 
 
 def check_job(job):
-    """Runs the CLI on one scene and compares every frame.  Returns a dict."""
-    pita, label, method, knots, arrows, timing, times, path, clamp, clamp_arc = job
+    """Compares every frame of the CLI's answer on one scene (cli_batch.py) with the oracle.
+    Returns a dict."""
     t_start = time.time()
     res = check_job_timed(job)
     res["seconds"] = time.time() - t_start
@@ -240,15 +240,10 @@ def check_job(job):
 
 
 def check_job_timed(job):
-    pita, label, method, knots, arrows, timing, times, path, clamp, clamp_arc = job
+    pita, label, method, knots, arrows, timing, times, path, clamp, clamp_arc, r = job
     res = {"label": label, "method": method, "path": path, "timing": timing, "frames": 0,
            "worst": 0.0, "where": "", "bad": None, "illcond": 0, "error": None,
            "arc": "arc_length" in timing, "undefined": 0}
-    try:
-        r = run_cli(pita, path, times)
-    except OSError as e:
-        res["error"] = "cannot run %s: %s" % (pita, e)
-        return res
     if r.returncode != 0:
         res["error"] = "exit %d: %s" % (r.returncode, r.stderr.strip()[:400])
         return res
@@ -372,6 +367,8 @@ def main():
     t0 = time.time()
     tmp = tempfile.mkdtemp(prefix="pita-timing-oracle-")
     methods, jobs = build_jobs(args, tmp)
+    answers = CB.eval_many(args.pita, [cli_request(job[7], job[6]) for job in jobs], args.jobs)
+    jobs = [job + (answer,) for job, answer in zip(jobs, answers)]
     with ProcessPoolExecutor(max_workers=max(1, args.jobs)) as ex:
         results = list(ex.map(check_job, jobs, chunksize=1))
 
@@ -433,7 +430,7 @@ def main():
                 print("  %s %s: %d frame(s), e.g. %s" % (r["label"], json.dumps(r["timing"]),
                                                        r["undefined"], r["undefined_what"]))
     slow = max(results, key=lambda r: r["seconds"])
-    print("\nslowest scene: %s, %.1f s (%s)" % (slow["label"], slow["seconds"],
+    print("\nslowest scene (the oracle's side): %s, %.1f s (%s)" % (slow["label"], slow["seconds"],
                                                json.dumps(slow["timing"])))
     nframes = sum(s["frames"] for s in rows.values())
     print("\n%d scenes, %d frames, %.1f s: %s" % (len(jobs), nframes, time.time() - t0,

@@ -4,7 +4,7 @@
 usage: compare_with_cli.py PATH/TO/pita [--configs N] [--seed S] [--methods P1,P6,...] [-v]
 
 For each method, N random keyframe configurations (fixed seed) are written as scene JSON and
-evaluated by one `pita eval SCENE --t ...` call each (knots plus random times, some outside
+evaluated by one `pita eval SCENE --t ...` request each (`pita eval --batch`, cli_batch.py) (knots plus random times, some outside
 [a, c]).  p and q are compared with an absolute tolerance of TOL times the scale of the frame
 (max of the keyframes' extent and the frame's distance from the keyframes' centre); w exactly
 to TOL*max(1,|w|) for winding-carrying methods, modulo 2 pi for P1 P7 P8 (README: principal
@@ -17,13 +17,12 @@ import math
 import os
 import random
 import re
-import subprocess
 import sys
 import tempfile
 import time
-from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_batch as CB  # noqa: E402
 import pita_oracle as O  # noqa: E402
 
 TOL = 1e-9
@@ -263,10 +262,9 @@ def compare(method, knots, arrows, times, frames, tol, options):
     return out
 
 
-def run_cli(pita, path, times, method):
-    arg = "--t=" + ",".join(repr(float(t)) for t in times)
-    return subprocess.run([pita, "eval", path, arg, "--method", method],
-                          capture_output=True, text=True)
+def cli_request(path, times, method):
+    """The arguments of `pita eval` for these times and this method."""
+    return [path, "--t=" + ",".join(repr(float(t)) for t in times), "--method", method]
 
 
 # the CLI's refusal of a frame that would not be finite (README "Exit codes and errors");
@@ -286,28 +284,40 @@ def oracle_overflows(method, knots, arrows, t, options):
             or not O.last_intermediate_scale() < 1e300)
 
 
-def run_job(pita, job):
-    """Runs the CLI; where it refuses a non-finite frame, checks that the oracle overflows
-    there too and drops that time.  Returns (returncode, stdout, stderr, times, dropped)."""
-    method, i, knots, arrows, kind, times, path, options = job
-    times = list(times)
-    dropped = []
-    for _ in range(len(times) + 1):
-        r = run_cli(pita, path, times, method)
-        m = NONFINITE.search(r.stderr) if r.returncode == 2 else None
-        if not m:
-            return r.returncode, r.stdout, r.stderr, times, dropped
-        tbad = float(m.group(1))
-        near = sorted((t for t in times if abs(t - tbad) <= 1e-12 * max(1.0, abs(t))),
-                      key=lambda t: abs(t - tbad))
-        if not near:
-            return r.returncode, r.stdout, r.stderr, times, dropped
-        ok = oracle_overflows(method, knots, arrows, near[0], options)
-        dropped.append((near[0], ok))
-        if not ok:
-            return r.returncode, r.stdout, r.stderr + " [oracle is finite there]", times, dropped
-        times.remove(near[0])
-    return r.returncode, r.stdout, r.stderr, times, dropped
+def run_jobs(pita, jobs):
+    """Runs the CLI on every job, in batches (cli_batch.py); where it refuses a non-finite
+    frame, checks that the oracle overflows there too, drops that time and asks again in the
+    next round.  Returns [(returncode, stdout, stderr, times, dropped)] in the order of jobs."""
+    times = [list(job[5]) for job in jobs]
+    dropped = [[] for _ in jobs]
+    results = [None] * len(jobs)
+    pending = list(range(len(jobs)))
+    for _ in range(max((len(t) for t in times), default=0) + 1):
+        if not pending:
+            break
+        answers = CB.eval_many(pita, [cli_request(jobs[k][6], times[k], jobs[k][0]) for k in pending])
+        again = []
+        for k, r in zip(pending, answers):
+            method, i, knots, arrows, kind, _, path, options = jobs[k]
+            results[k] = (r.returncode, r.stdout, r.stderr, times[k], dropped[k])
+            m = NONFINITE.search(r.stderr) if r.returncode == 2 else None
+            if not m:
+                continue
+            tbad = float(m.group(1))
+            near = sorted((t for t in times[k] if abs(t - tbad) <= 1e-12 * max(1.0, abs(t))),
+                          key=lambda t: abs(t - tbad))
+            if not near:
+                continue
+            ok = oracle_overflows(method, knots, arrows, near[0], options)
+            dropped[k].append((near[0], ok))
+            if not ok:
+                results[k] = (r.returncode, r.stdout, r.stderr + " [oracle is finite there]",
+                              times[k], dropped[k])
+                continue
+            times[k].remove(near[0])
+            again.append(k)
+        pending = again
+    return results
 
 
 # Hand-made regression scenes (method, knots, arrows, options, times, label), checked like
@@ -368,8 +378,7 @@ def main():
             f.write(scene_json(method, kfs, options))
         jobs.append((method, "fixed%d" % k, knots, arrows, kind, times, path, options))
 
-    with ThreadPoolExecutor(max_workers=max(2, (os.cpu_count() or 2) * 2)) as ex:
-        results = list(ex.map(lambda j: run_job(args.pita, j), jobs))
+    results = run_jobs(args.pita, jobs)
 
     summary = {}
     failures = []
