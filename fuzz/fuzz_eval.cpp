@@ -15,6 +15,7 @@
 #include "motion/no_motion.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "scene/frames.hpp"
 #include "scene/scene.hpp"
 
@@ -69,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                           : scene::with_method(std::move(s), entry.method);
     }
     if (s.kind == scene::SceneKind::poses && s.poses.empty() && s.poses3.empty()) return 0;  // eval refuses it
-    motion::check_motions(s);
+    motion::Stage(s).check();
     const motion::SceneMotion motion = motion::build_motion(s);
     const std::vector<double> uniform =
         motion::uniform_times(motion, s.samples.value_or(scene::kDefaultSamples));

@@ -9,22 +9,14 @@
 #include "core/methods.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::analysis {
 
-namespace {
-
-scene::Panel with_method(scene::Panel panel, Method method) {
-  panel.method = method;
-  panel.method_name = std::string(entry_of(method).id);
-  return panel;
-}
-
-}  // namespace
-
-double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method other, double t) {
-  const Arrow mine = motion::build_motion(scene, panel).arrow_at(t);
-  const Arrow theirs = motion::build_motion(scene, with_method(panel, other)).arrow_at(t);
+double vector_angle(const motion::Stage& stage, std::size_t index, Method other, double t) {
+  const scene::Panel& panel = stage.panel(index);
+  const Arrow mine = stage.motion(index).arrow_at(t);
+  const Arrow theirs = motion::with_method(stage.scene(), panel, other).arrow_at(t);
   double largest = 0.0;
   for (const Keyframe& k : panel.keyframes) largest = std::max(largest, k.arrow.m);
   const double floor = kAngleVectorFloor * largest;
@@ -34,15 +26,11 @@ double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method
   return std::arg(theirs.vector() / mine.vector());
 }
 
-double handle_shift(const scene::Scene& scene, const scene::Panel& panel) {
-  scene::Panel reference = scene::scene_panel(scene);
-  reference.method = panel.method;
-  reference.method_name = panel.method_name;
-  reference.options = panel.options;
-  reference.chain = panel.chain;
-  reference.timing = panel.timing;
-  const motion::SceneMotion own = motion::build_motion(scene, panel);
-  const motion::SceneMotion base = motion::build_motion(scene, reference);
+double handle_shift(const motion::Stage& stage, std::size_t index) {
+  const scene::Panel& panel = stage.panel(index);
+  const motion::SceneMotion& own = stage.motion(index);
+  scene::Panel reference;
+  const motion::SceneMotion base = motion::with_scene_keyframes(stage.scene(), panel, &reference);
   const auto by_knot = [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; };
   const auto [own_first, own_last] = std::minmax_element(panel.keyframes.begin(), panel.keyframes.end(), by_knot);
   const auto [base_first, base_last] =

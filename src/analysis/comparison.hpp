@@ -10,7 +10,7 @@
 #pragma once
 
 #include "core/pitas/registry.hpp"
-#include "scene/scene.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::analysis {
 
@@ -23,12 +23,12 @@ inline constexpr int kHandleShiftSamples = 129;
 // vector at t = (1 - 1/sqrt 2)/2 for some keyframes, docs/paper-notes.md N66).
 inline constexpr double kAngleVectorFloor = 1e-12;
 
-// The signed angle arg(D_M(t).w / D(t).w) in (-pi, pi] from the panel's
-// frame vector at scene time t to that of `other` (the panel's keyframes,
-// options and timing with `other` as the method); NaN when either vector is
-// shorter than kAngleVectorFloor times the largest keyframe magnitude (the
-// angle is undefined). Throws motion::NoMotion.
-double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method other, double t);
+// The signed angle arg(D_M(t).w / D(t).w) in (-pi, pi] from the frame
+// vector of the stage's panel `index` at scene time t to that of `other`
+// (the panel's keyframes, options and timing with `other` as the method);
+// NaN when either vector is shorter than kAngleVectorFloor times the largest
+// keyframe magnitude (the angle is undefined). Throws motion::NoMotion.
+double vector_angle(const motion::Stage& stage, std::size_t index, Method other, double t);
 
 // max over kHandleShiftSamples times of [first knot, last knot] and over the
 // points of the panel's shapes x of |S(t) x - S0(t) x|, world units, where
@@ -36,7 +36,7 @@ double vector_angle(const scene::Scene& scene, const scene::Panel& panel, Method
 // scene's handle onto D0(t), the panel's method (and options, timing) through
 // the scene's keyframes (PITA Sec. 4.5; core/carrier.hpp). The panel must
 // have shapes (the caller refuses a panel without: there is nothing to
-// carry). Throws motion::NoMotion.
-double handle_shift(const scene::Scene& scene, const scene::Panel& panel);
+// carry). For the stage's panel `index`. Throws motion::NoMotion.
+double handle_shift(const motion::Stage& stage, std::size_t index);
 
 }  // namespace pita::analysis

@@ -15,6 +15,7 @@
 #include "core/overloaded.hpp"
 #include "core/steadiness.hpp"
 #include "motion/sampler.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::analysis {
 
@@ -75,11 +76,9 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
                                                  std::size_t index, Parameter which, double delta,
                                                  double extent, double duration,
                                                  const std::vector<double>& times) {
-  scene::Panel moved = panel;
   // The method's own motion: the timing only paces it (docs/paper-notes.md N37).
-  moved.timing = scene::Timing{};
-  moved.keyframes[index] = tweaked(panel.keyframes[index], which, delta, extent, duration);
-  const auto& keys = moved.keyframes;
+  std::vector<Keyframe> keys = panel.keyframes;
+  keys[index] = tweaked(panel.keyframes[index], which, delta, extent, duration);
   // The tweaked knot keeps its place among the others (increasing, or the
   // order of keyframes "as-given", docs/paper-notes.md N41).
   for (std::size_t j = 0; j < keys.size(); ++j) {
@@ -90,7 +89,7 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
     }
   }
   try {
-    const motion::SceneMotion tweaked_motion = motion::build_motion(scene, moved);
+    const motion::SceneMotion tweaked_motion = motion::untimed_with_keyframes(scene, panel, keys);
     // A knot tweak compares the patterns: uniform times over the new knots
     // (else moving an end knot would count as shifting every frame's time).
     const std::vector<double> at =
@@ -338,7 +337,9 @@ double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
              (options.path_samples + 64.0);
 }
 
-MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel, const MeasureOptions& options) {
+MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options) {
+  const scene::Scene& scene = stage.scene();
+  const scene::Panel& panel = stage.panel(index);
   MotionMeasures out;
   out.pointer = panel.pointer;
   out.title = panel.title;
@@ -348,7 +349,7 @@ MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& pane
                                                      : "poses";
   out.samples = panel.samples;
   try {
-    const motion::SceneMotion motion = motion::build_motion(scene, panel);
+    const motion::SceneMotion& motion = stage.motion(index);
     std::visit(overloaded{[&](const motion::ArrowTrack&) {
                             out.extent = keyframe_extent(panel.keyframes);
                             measure_discrepancy(panel, motion, out);
@@ -397,7 +398,8 @@ MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& pane
 
 std::vector<MotionMeasures> measure_scene(const scene::Scene& scene, const MeasureOptions& options) {
   std::vector<MotionMeasures> all;
-  for (const scene::Panel& panel : scene.panels) all.push_back(measure_panel(scene, panel, options));
+  const motion::Stage stage(scene);
+  for (std::size_t i = 0; i < stage.size(); ++i) all.push_back(measure_panel(stage, i, options));
   return all;
 }
 

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::analysis {
@@ -122,9 +123,9 @@ AreaStats area_stats(const std::vector<double>& times, const std::vector<double>
 // pattern's three predictors. What `pita measure` and the render budget weigh.
 double measure_cost(const scene::Panel& panel, const MeasureOptions& options = {});
 
-// Measures of the panel's motion; never throws NoMotion (no_motion is set).
-MotionMeasures measure_panel(const scene::Scene& scene, const scene::Panel& panel,
-                             const MeasureOptions& options = {});
+// Measures of the motion of the stage's panel `index`; never throws
+// NoMotion (no_motion is set).
+MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options = {});
 
 // Every panel of the scene (the scene itself when it has no panels).
 std::vector<MotionMeasures> measure_scene(const scene::Scene& scene, const MeasureOptions& options = {});

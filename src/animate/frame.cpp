@@ -1,11 +1,13 @@
 #include "animate/frame.hpp"
 
+#include <optional>
 #include <variant>
 
 #include "core/overloaded.hpp"
 #include "motion/moving_keyframes.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::animate {
@@ -80,9 +82,9 @@ namespace {
 
 // What one panel shows at time t: its keyframes at tau ("pattern"), else D(t),
 // A(t) or the point of a curve through timed points.
-void add_panel_state(Json& into, const scene::Scene& scene, const scene::Panel& panel, const Timeline& timeline,
-                     double t) {
-  if (timeline.what == What::pattern) {
+void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage* stage, std::size_t index,
+                     const Timeline& timeline, double t) {
+  if (timeline.what == What::pattern || stage == nullptr) {
     Json keys = Json::array();
     for (const Keyframe& key : panel.keyframes) {
       Json entry{{"t", key.t}};
@@ -95,7 +97,7 @@ void add_panel_state(Json& into, const scene::Scene& scene, const scene::Panel& 
     into["keyframes"] = std::move(keys);
     return;
   }
-  const motion::SceneMotion motion = motion::build_motion(scene, panel);
+  const motion::SceneMotion& motion = stage->motion(index);
   std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = arrow_json(motion.arrow_at(t)); },
                         [&](const motion::PointTrack&) { into["p"] = point(motion.point_at(t)); },
                         [&](const motion::PlanePoses&) {
@@ -115,13 +117,18 @@ Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, co
   const bool pattern = timeline.what == What::pattern;
   if (pattern) record["tau"] = timeline.tau(t);
   const scene::Scene at = pattern ? motion::scene_at(scene, timeline.tau(t)) : scene;
+  // A pattern's record holds its keyframes, a motion's the state of each panel's motion.
+  std::optional<motion::Stage> stage;
+  if (!pattern) stage.emplace(at);
+  const motion::Stage* motions = stage ? &*stage : nullptr;
   // The first panel's state at the top level, every panel's under "panels".
-  add_panel_state(record, at, at.panels.front(), timeline, t);
+  add_panel_state(record, at.panels.front(), motions, 0, timeline, t);
   if (at.panels.size() > 1) {
     Json panels = Json::array();
-    for (const scene::Panel& panel : at.panels) {
+    for (std::size_t i = 0; i < at.panels.size(); ++i) {
+      const scene::Panel& panel = at.panels[i];
       Json entry{{"pointer", panel.pointer}, {"title", panel.title}};
-      add_panel_state(entry, at, panel, timeline, t);
+      add_panel_state(entry, panel, motions, i, timeline, t);
       panels.push_back(std::move(entry));
     }
     record["panels"] = std::move(panels);

@@ -21,6 +21,7 @@
 #include "scene/frames.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -344,8 +345,8 @@ EvalOutcome evaluate(const EvalOptions& options) {
       outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
       return outcome;
     }
-    motion::check_motions(scene);  // every panel's motion must exist, as for `pita render`
-    scene::Panel panel = scene::scene_panel(scene);
+    const motion::Stage stage(scene);
+    stage.check();  // every panel's motion must exist, as for `pita render`
     if (options.panel && options.method) {
       throw InputError("--panel and --method: a panel evaluates with its own method; give --method without "
                        "--panel for the scene's motion, or change the panel's \"method\"");
@@ -355,9 +356,16 @@ EvalOutcome evaluate(const EvalOptions& options) {
         throw InputError(fmt::format("--panel: {} has {} panel{} (0 to {}); got {}", scene.path, scene.panels.size(),
                                      scene.panels.size() == 1 ? "" : "s", scene.panels.size() - 1, *options.panel));
       }
-      panel = scene.panels[static_cast<std::size_t>(*options.panel)];
     }
-    const motion::SceneMotion motion = motion::build_motion(scene, panel);
+    // The scene's own motion is its only panel when it has no "panels".
+    const scene::Panel own = scene::scene_panel(scene);
+    const bool own_is_panel = scene.panels.size() == 1 && scene.panels.front().pointer.empty();
+    const std::optional<motion::Stage> own_stage =
+        options.panel || own_is_panel ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
+    const motion::Stage& chosen = own_stage ? *own_stage : stage;
+    const std::size_t index = options.panel ? static_cast<std::size_t>(*options.panel) : 0;
+    const scene::Panel& panel = chosen.panel(index);
+    const motion::SceneMotion& motion = chosen.motion(index);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
     const double work = static_cast<double>(at.size()) * motion::frame_cost(panel);
     if (work > scene::kMaxEvalWork) {

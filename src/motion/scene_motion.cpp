@@ -253,14 +253,6 @@ std::function<Eigen::Vector3d(double)> SceneMotion::point_path3(scene::TrackedPo
 
 SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene, scene::scene_panel(scene)); }
 
-void check_motions(const scene::Scene& scene) {
-  for (const scene::Panel& panel : scene.panels) {
-    if (scene.kind == scene::SceneKind::arrows || !panel.poses.empty() || !panel.poses3.empty()) {
-      (void)build_motion(scene, panel);
-    }
-  }
-}
-
 void SceneMotion::undefined(double t, const std::exception& error) const {
   throw NoMotion(file_, pointer_, fmt::format("method {} is undefined at t = {}: {}", label_, t, error.what()));
 }
@@ -329,19 +321,24 @@ Affine3 SceneMotion::pose3_at(double t) const {
   return finite_pose(*as<SpacePoses>("poses of space").motion, t);
 }
 
-Affine3 SceneMotion::pose3_velocity(double t) const {
-  const PoseMotion3& motion = *as<SpacePoses>("poses of space").motion;
-  Affine3 rate;
+template <class Motion>
+auto SceneMotion::pose_rate(const Motion& motion, double t) const {
+  decltype(motion.velocity(0.0)) rate;
   try {
     rate = motion.velocity(warp_(t));
   } catch (const std::exception& error) {
     undefined(t, error);
   }
-  if (!warp_.is_identity()) {
+  if (!warp_.is_identity()) {  // dA/dt = dA/dtau dtau/dt
     const double slope = warp_rate(t);
-    rate = Affine3{rate.L * slope, rate.b * slope};
+    rate.L *= slope;
+    rate.b *= slope;
   }
   return rate;
+}
+
+Affine3 SceneMotion::pose3_velocity(double t) const {
+  return pose_rate(*as<SpacePoses>("poses of space").motion, t);
 }
 
 double SceneMotion::warp_rate(double t) const {
@@ -355,19 +352,6 @@ Affine2 SceneMotion::pose_at(double t) const {
   return finite_pose(poses(), t);
 }
 
-Affine2 SceneMotion::pose_velocity(double t) const {
-  const PoseMotion& motion = poses();
-  Affine2 rate;
-  try {
-    rate = motion.velocity(warp_(t));
-  } catch (const std::exception& error) {
-    undefined(t, error);
-  }
-  if (!warp_.is_identity()) {
-    const double slope = warp_rate(t);
-    rate = Affine2{rate.L * slope, rate.b * slope};
-  }
-  return rate;
-}
+Affine2 SceneMotion::pose_velocity(double t) const { return pose_rate(poses(), t); }
 
 }  // namespace pita::motion

@@ -122,6 +122,8 @@ class SceneMotion {
   double warp_rate(double t) const;  // d tau / d t
   template <class Motion>
   auto finite_pose(const Motion& motion, double t) const;
+  template <class Motion>  // dA/dt of a PoseMotion or PoseMotion3, the warp's rate included
+  auto pose_rate(const Motion& motion, double t) const;
 
   BuiltMotion built_;
   std::string method_id_, label_;
@@ -131,17 +133,13 @@ class SceneMotion {
 };
 
 // The motion of `panel` (its method, keyframes or poses, options and timing).
-// The only place motions are built from a scene. Throws NoMotion: the method
+// The only place motions are built from a scene; outside src/motion/ they
+// come from a Stage (motion/stage.hpp). Throws NoMotion: the method
 // refuses the keyframes, no SAM exists between two poses, the panel has no
 // poses, or the arc-length path has zero length (at the timing's pointer).
 SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel);
 // The scene's own motion (its method, keyframes or poses, and timing).
 SceneMotion build_motion(const scene::Scene& scene);
-
-// Builds the motion of every panel that draws one (pose panels without poses
-// draw none), so that a scene is judged alike by every command. Throws
-// NoMotion for the first that does not exist.
-void check_motions(const scene::Scene& scene);
 
 // What one frame of the panel's motion costs, in frames of a plain method
 // (chain_frame_cost; a curve through points evaluates two tracks): what the

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "motion/moving_keyframes.hpp"
+#include "motion/stage.hpp"
 #include "render/budget.hpp"
 #include "render/cairo_handles.hpp"
 #include "render/image_cache.hpp"
@@ -123,11 +124,18 @@ std::string_view extension(Format format) {
 
 std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelection* selection) {
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
+  return frame_drawings(motion::Stage(scene), selection);
+}
+
+std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection) {
+  const scene::Scene& scene = stage.scene();
+  if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   std::vector<Drawing> drawings;
-  for (const scene::Panel& panel : scene.panels) {
-    Drawing drawing = panel.dimension == 3                    ? space_panel_drawing(scene, panel, selection)
-                      : scene.kind == scene::SceneKind::poses ? pose_panel_drawing(scene, panel, selection)
-                                                              : panel_drawing(scene, panel, selection);
+  for (std::size_t i = 0; i < stage.size(); ++i) {
+    const scene::Panel& panel = stage.panel(i);
+    Drawing drawing = panel.dimension == 3                    ? space_panel_drawing(stage, i, selection)
+                      : scene.kind == scene::SceneKind::poses ? pose_panel_drawing(stage, i, selection)
+                                                              : panel_drawing(stage, i, selection);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,
                         "the figure has non-finite coordinates (the motion overflows)");
@@ -161,13 +169,16 @@ std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std:
   return placements;
 }
 
-Figure build_figure(const scene::Scene& scene, double budget) {
+namespace {
+
+Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, double budget) {
   Figure figure;
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   check_images(scene);
   if (!motion::has_moving_keyframes(scene)) {
     check_budget(scene, estimate_cost(scene), budget);
-    figure.drawings = frame_drawings(scene, nullptr);
+    // The motions are built after the budget is checked (unless given).
+    figure.drawings = stage != nullptr ? frame_drawings(*stage, nullptr) : frame_drawings(scene, nullptr);
   } else {
     // Moving keyframes (Sec. 7.4, Fig. 27): the figure overlays the pattern
     // at each tau of "overlay", in order; the legends are drawn once.
@@ -188,6 +199,12 @@ Figure build_figure(const scene::Scene& scene, double budget) {
   figure.placements = checked_layout(scene, figure.drawings);
   return figure;
 }
+
+}  // namespace
+
+Figure build_figure(const scene::Scene& scene, double budget) { return built_figure(scene, nullptr, budget); }
+
+Figure build_figure(const motion::Stage& stage, double budget) { return built_figure(stage.scene(), &stage, budget); }
 
 std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
                           double scale, double budget) {

@@ -38,10 +38,15 @@ struct Figure {
 // whose keyframes move (PITA Sec. 7.4) overlays its figure at each tau of
 // its animation's "overlay".
 Figure build_figure(const scene::Scene& scene, double budget = 1.0);
+// The same with the motions of a stage built already (pita sweep checks
+// them first).
+Figure build_figure(const motion::Stage& stage, double budget = 1.0);
 
 // Every panel's drawing, without layout or budget; with a selection, one
-// frame of an animation (render/panel_drawing.hpp). Throws RenderError.
+// frame of an animation (render/panel_drawing.hpp). Throws RenderError. The
+// second draws the motions of a stage built once (animate's frames).
 std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelection* selection);
+std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection);
 
 // Decodes every image of the scene's shapes (once per thread): a corrupt PNG
 // is refused before anything is drawn. Throws RenderError.

@@ -25,6 +25,7 @@
 #include "render/strip.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::render {
 
@@ -61,8 +62,13 @@ std::string method_name(Method method) {
 
 class PanelBuilder {
  public:
-  PanelBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
-      : scene_(scene), panel_(panel), selection_(selection), motion_(built(scene, panel)) {}
+  PanelBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
+      : stage_(stage),
+        index_(index),
+        scene_(stage.scene()),
+        panel_(stage.panel(index)),
+        selection_(selection),
+        motion_(built(stage, index)) {}
 
   Drawing build() {
     const bool own = panel_.layers.has_value();
@@ -90,9 +96,9 @@ class PanelBuilder {
                       elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
 
-  static motion::SceneMotion built(const scene::Scene& scene, const scene::Panel& panel) {
+  static const motion::SceneMotion& built(const motion::Stage& stage, std::size_t index) {
     try {
-      return motion::build_motion(scene, panel);
+      return stage.motion(index);
     } catch (const motion::NoMotion& error) {
       throw RenderError(error.file(), error.pointer(), error.reason());
     }
@@ -129,12 +135,8 @@ class PanelBuilder {
   // A pattern layer with its own "method" or "options" draws the motion of
   // a copy of the panel that has them (N57); its errors are the layer's.
   motion::SceneMotion layer_motion(const scene::PatternLayer& layer) const {
-    scene::Panel own = panel_;
-    if (layer.method) {
-      own.method = *layer.method;
-      own.method_name = std::string(info(*layer.method).id);
-    }
-    own.options = layer.options.over(panel_.options);
+    const MethodOptions options = layer.options.over(panel_.options);
+    const scene::Panel own = motion::layer_panel(panel_, layer.method, options);
     // An option the layer's method does not read would change nothing: refused.
     const bool chained =
         own.chain.has_value() || own.keyframes.size() > static_cast<std::size_t>(info(own.method).keyframe_count);
@@ -149,7 +151,7 @@ class PanelBuilder {
                        key.name, fmt::join(readers, ", "), readers.size() == 1 ? "s" : ""));
     }
     try {
-      return motion::build_motion(scene_, own);
+      return motion::with_layer_method(scene_, panel_, layer.method, options);
     } catch (const motion::NoMotion& error) {
       fail(layer_ + (layer.method ? "/method" : "/options"), error.reason());
     }
@@ -432,9 +434,9 @@ class PanelBuilder {
             fail(at, "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
                      "give the scene or the panel \"shapes\" (README \"Shapes\")");
           }
-          lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(scene_, panel_)));
+          lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(stage_, index_)));
         } else if (name.kind == scene::MeasureKind::angle) {
-          const double angle = analysis::vector_angle(scene_, panel_, name.method, name.t);
+          const double angle = analysis::vector_angle(stage_, index_, name.method, name.t);
           if (!std::isfinite(angle)) {
             fail(at, fmt::format("the angle at t = {} is undefined: the frame vector of {} or of {} vanishes there",
                                  name.t, panel_.method_name, entry_of(name.method).id));
@@ -449,7 +451,7 @@ class PanelBuilder {
       }
     }
     if (!others.empty()) {
-      const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+      const analysis::MotionMeasures measures = analysis::measure_panel(stage_, index_);
       if (measures.no_motion) fail(layer_, *measures.no_motion);
       const std::vector<std::string> measured = measure_lines(measures, others);
       for (std::size_t i = 0, k = 0; i < lines.size(); ++i) {
@@ -503,12 +505,9 @@ class PanelBuilder {
   void add(const scene::CompareLayer& layer) {
     const std::vector<double> times = sequence_times(layer.samples, std::nullopt);
     const std::vector<Arrow> own = frames(times);
-    scene::Panel other_panel = panel_;
-    other_panel.method = layer.method;
-    other_panel.method_name = layer.method_name;
     std::vector<Arrow> other;
     try {
-      const motion::SceneMotion motion = motion::build_motion(scene_, other_panel);
+      const motion::SceneMotion motion = motion::with_method(scene_, panel_, layer.method);
       for (const double t : times) other.push_back(motion.arrow_at(t));
     } catch (const motion::NoMotion& error) {
       fail(layer_ + "/method", error.reason());
@@ -620,10 +619,12 @@ class PanelBuilder {
     drawing_.legends.push_back(std::move(legend));
   }
 
+  const motion::Stage& stage_;
+  std::size_t index_;
   const scene::Scene& scene_;
   const scene::Panel& panel_;
   const FrameSelection* selection_ = nullptr;
-  motion::SceneMotion motion_;
+  const motion::SceneMotion& motion_;
   std::string layer_;
   Drawing drawing_;
 };
@@ -672,8 +673,12 @@ Color lightened(Color color, double white) {
                color.b + (1.0 - color.b) * white, color.a};
 }
 
+Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection) {
+  return PanelBuilder(stage, index, selection).build();
+}
+
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
-  return PanelBuilder(scene, panel, selection).build();
+  return panel_drawing(motion::Stage(scene, panel), 0, selection);
 }
 
 }  // namespace pita::render

@@ -9,6 +9,10 @@
 #include "render/drawing.hpp"
 #include "scene/scene.hpp"
 
+namespace pita::motion {
+class Stage;  // motion/stage.hpp
+}
+
 namespace pita::render {
 
 // A figure that cannot be drawn: the motion does not exist, or a frame is not
@@ -44,8 +48,10 @@ std::vector<double> lightness_whites(const std::vector<double>& measures);
 // The colour mixed with white by `white` in [0, 1] (alpha kept).
 Color lightened(Color color, double white);
 
-// The shapes of every layer of `scene` for `panel`, in drawing order. Throws
-// RenderError.
+// The shapes of every layer of the stage's scene for its panel `index`, in
+// drawing order, with the motion the stage built. Throws RenderError.
+Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
+// The same for `panel` alone (a stage of its own).
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
                       const FrameSelection* selection = nullptr);
 

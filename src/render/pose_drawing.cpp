@@ -25,6 +25,7 @@
 #include "render/plot.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::render {
 
@@ -35,8 +36,8 @@ constexpr int kFieldCurveSamples = 257;
 
 class PoseBuilder {
  public:
-  PoseBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
-      : scene_(scene), panel_(panel), selection_(selection) {}
+  PoseBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
+      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection) {}
 
   Drawing build() {
     const bool own = panel_.pose_layers.has_value();
@@ -55,18 +56,15 @@ class PoseBuilder {
                       elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
 
-  // The panel's motion, built when a layer first needs it (layers such as
-  // "existence" draw without poses).
-  const motion::SceneMotion& motion() {
-    if (!motion_) {
-      if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
-      try {
-        motion_.emplace(motion::build_motion(scene_, panel_));
-      } catch (const motion::NoMotion& error) {  // at the poses (or panel) it blames
-        throw RenderError(error.file(), error.pointer(), error.reason());
-      }
+  // The panel's motion, from the stage, when a layer needs it (layers such
+  // as "existence" draw without poses).
+  const motion::SceneMotion& motion() const {
+    if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
+    try {
+      return stage_.motion(index_);
+    } catch (const motion::NoMotion& error) {  // at the poses (or panel) it blames
+      throw RenderError(error.file(), error.pointer(), error.reason());
     }
-    return *motion_;
   }
 
   Affine2 pose_at(double t) {
@@ -127,12 +125,9 @@ class PoseBuilder {
     if (count < about.min_poses || count > about.max_poses) {
       fail(count_reason(layer.method, panel_.poses.size()));
     }
-    scene::Panel other = panel_;
-    other.pose_method = layer.method;
-    other.method_name = std::string(about.id);
     std::optional<motion::SceneMotion> motion;
     try {
-      motion.emplace(motion::build_motion(scene_, other));
+      motion.emplace(motion::with_pose_method(scene_, panel_, layer.method));
     } catch (const motion::NoMotion& error) {
       fail(fmt::format("method {}: {}", about.id, error.reason()));
     }
@@ -318,11 +313,8 @@ class PoseBuilder {
         fail(fmt::format("methods/{}: {} takes {} to {} poses; the panel has {}", k, about.id, about.min_poses,
                          about.max_poses, count));
       }
-      scene::Panel other = panel_;
-      other.pose_method = methods[k];
-      other.method_name = std::string(about.id);
       try {
-        const motion::SceneMotion moving = motion::build_motion(scene_, other);
+        const motion::SceneMotion moving = motion::with_pose_method(scene_, panel_, methods[k]);
         series.push_back({std::string(about.id), layer.colors[k % layer.colors.size()],
                           analysis::area_over_time(moving, samples), analysis::area_over_time(moving, marks)});
       } catch (const motion::NoMotion& error) {
@@ -443,7 +435,7 @@ class PoseBuilder {
   void add(const scene::MeasuresLayer& layer) {
     if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
     (void)motion();  // the panel's poses must give a motion (its error otherwise)
-    const analysis::MotionMeasures measures = analysis::measure_panel(scene_, panel_);
+    const analysis::MotionMeasures measures = analysis::measure_panel(stage_, index_);
     if (measures.no_motion) fail(*measures.no_motion);
     add_measure_text(layer, measure_lines(measures, layer.show), drawing_, layer_);
   }
@@ -528,10 +520,11 @@ class PoseBuilder {
                        range.max, range.defined, none);
   }
 
+  const motion::Stage& stage_;
+  std::size_t index_;
   const scene::Scene& scene_;
   const scene::Panel& panel_;
   const FrameSelection* selection_ = nullptr;
-  std::optional<motion::SceneMotion> motion_;
   std::string layer_;
   Drawing drawing_;
 };
@@ -679,8 +672,12 @@ Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const a
   return drawing;
 }
 
+Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection) {
+  return PoseBuilder(stage, index, selection).build();
+}
+
 Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
-  return PoseBuilder(scene, panel, selection).build();
+  return pose_panel_drawing(motion::Stage(scene, panel), 0, selection);
 }
 
 }  // namespace pita::render

@@ -16,6 +16,8 @@ namespace pita::render {
 // at the selection's time and trail only.
 Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
                            const FrameSelection* selection = nullptr);
+// The same for the stage's panel `index`, with the motion the stage built.
+Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
 
 // The "existence" layer alone (Fig. 6 of the SAM paper): exposed for tests.
 // Cells are rectangles [a0, a1] x [h s0, h s1] with h = kExistenceHeight.

@@ -16,6 +16,7 @@
 #include "motion/no_motion.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 
 namespace pita::render {
 
@@ -52,8 +53,8 @@ struct Face {
 
 class SpaceBuilder {
  public:
-  SpaceBuilder(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection)
-      : scene_(scene), panel_(panel), selection_(selection) {}
+  SpaceBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
+      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection) {}
 
   Drawing build() {
     projection_.emplace(make_projection());
@@ -69,15 +70,13 @@ class SpaceBuilder {
     throw RenderError(scene_.path, pointer, reason);
   }
 
-  const motion::SceneMotion& motion() {
-    if (!motion_) {
-      try {
-        motion_.emplace(motion::build_motion(scene_, panel_));
-      } catch (const motion::NoMotion& error) {
-        throw RenderError(error.file(), error.pointer(), error.reason());
-      }
+  // The panel's motion, from the stage, when a layer needs it.
+  const motion::SceneMotion& motion() const {
+    try {
+      return stage_.motion(index_);
+    } catch (const motion::NoMotion& error) {
+      throw RenderError(error.file(), error.pointer(), error.reason());
     }
-    return *motion_;
   }
 
   Affine3 pose_at(double t) {
@@ -285,10 +284,11 @@ class SpaceBuilder {
     fail(layer_, "this layer type draws pose scenes of the plane only");
   }
 
+  const motion::Stage& stage_;
+  std::size_t index_;
   const scene::Scene& scene_;
   const scene::Panel& panel_;
   const FrameSelection* selection_;
-  std::optional<motion::SceneMotion> motion_;
   std::optional<Projection> projection_;
   Drawing drawing_;
   std::string layer_;
@@ -328,8 +328,12 @@ double face_shade(const Vector3d& normal, const Projection& projection) {
   return 0.35 + 0.65 * std::abs(normal.dot(light));
 }
 
+Drawing space_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection) {
+  return SpaceBuilder(stage, index, selection).build();
+}
+
 Drawing space_panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {
-  return SpaceBuilder(scene, panel, selection).build();
+  return space_panel_drawing(motion::Stage(scene, panel), 0, selection);
 }
 
 }  // namespace pita::render

@@ -45,5 +45,7 @@ double face_shade(const Eigen::Vector3d& normal, const Projection& projection);
 // the selection's time and trail only.
 Drawing space_panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
                             const FrameSelection* selection = nullptr);
+// The same for the stage's panel `index`, with the motion the stage built.
+Drawing space_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
 
 }  // namespace pita::render

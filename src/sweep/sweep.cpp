@@ -23,6 +23,7 @@
 #include "animate/progress.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "render/interrupt.hpp"
 #include "render/output_file.hpp"
@@ -76,10 +77,10 @@ std::optional<render::Format> figure_format(OutputKind kind) {
 
 std::string number(double v) { return fmt::format("{:.6g}", v); }
 
-// The metrics of the scene's own motion (kMetricColumns).
-std::array<std::string, kMetricColumns.size()> metrics_of(const scene::Scene& scene) {
+// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
+std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& own) {
   std::array<std::string, kMetricColumns.size()> m{};
-  const analysis::MotionMeasures r = analysis::measure_panel(scene, scene::scene_panel(scene));
+  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
   if (r.no_motion) return m;
   if (r.path_p) {
     m[0] = number(r.path_p->length);
@@ -274,7 +275,11 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     // Read as if it were the base scene's file (relative image paths), named
     // in messages as the variant's own file.
     const scene::Scene scene = scene::parse_scene(text, job.base.path);
-    motion::check_motions(scene);
+    const motion::Stage stage(scene);
+    stage.check();
+    // The scene's own motion, built once for its frames and its metrics.
+    const scene::Panel own = scene::scene_panel(scene);
+    const motion::Stage own_stage(scene, own);
     std::vector<std::pair<fs::path, std::string>> files;
     files.emplace_back(job.dir / scene_file, text);
     row.outputs.push_back(scene_file);
@@ -282,20 +287,19 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     for (const OutputKind kind : job.options.formats) {
       const std::string file = variant_file(job.name, index, variants, std::string(name_of(kind)));
       if (const auto format = figure_format(kind)) {
-        if (!figure) figure = render::build_figure(scene);
+        if (!figure) figure = render::build_figure(stage);
         files.emplace_back(job.dir / file, render::render_figure(scene, *figure, *format));
       } else {
-        const scene::Panel panel = scene::scene_panel(scene);
-        const motion::SceneMotion motion = motion::build_motion(scene, panel);
+        const motion::SceneMotion& motion = own_stage.motion(0);
         const std::vector<double> at =
             motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
-        files.emplace_back(job.dir / file, motion::frames_text(panel, motion, at,
+        files.emplace_back(job.dir / file, motion::frames_text(own, motion, at,
                                                                kind == OutputKind::csv ? motion::FramesFormat::csv
                                                                                        : motion::FramesFormat::json));
       }
       row.outputs.push_back(file);
     }
-    row.metrics = metrics_of(scene);
+    row.metrics = metrics_of(own_stage);
     render::write_files_atomically(files);
     row.status = "ok";
   } catch (const render::OutputError& error) {

@@ -40,12 +40,12 @@ TEST(Comparison, PolarAndLogPolarVectorsAreParallel) {
   // D(t).w has the same direction at every t, only the magnitude differs.
   const scene::Scene scene = common_origin("P3");
   for (const double t : {0.1, 0.25, 0.75, 0.9}) {
-    EXPECT_NEAR(vector_angle(scene, scene.panels.front(), Method::PaPo, t), 0.0, 1e-12) << t;
+    EXPECT_NEAR(vector_angle(motion::Stage(scene), 0, Method::PaPo, t), 0.0, 1e-12) << t;
   }
   // Extrapolated to t = 1.3 the Lagrange blend of the magnitudes is
   // 0.48 * 0.6 - 1.56 * 2.4 + 2.08 * 1.2 = -0.96 < 0: -Po's vector points
   // backwards, still on the same line (angle pi); -LP's magnitude stays > 0.
-  EXPECT_NEAR(std::abs(vector_angle(scene, scene.panels.front(), Method::PaPo, 1.3)), kPi, 1e-12);
+  EXPECT_NEAR(std::abs(vector_angle(motion::Stage(scene), 0, Method::PaPo, 1.3)), kPi, 1e-12);
 }
 
 TEST(Comparison, AngleIsUndefinedWhereAFrameVectorVanishes) {
@@ -58,11 +58,11 @@ TEST(Comparison, AngleIsUndefinedWhereAFrameVectorVanishes) {
       {"t": 1, "p": [0, 0], "m": 1, "w": 0}]})",
                                                 "test.json");
   const double zero = (1.0 - 1.0 / std::numbers::sqrt2) / 2.0;
-  EXPECT_TRUE(std::isnan(vector_angle(scene, scene.panels.front(), Method::P3, zero)));
+  EXPECT_TRUE(std::isnan(vector_angle(motion::Stage(scene), 0, Method::P3, zero)));
   const double later = zero + 0.05;
-  EXPECT_NEAR(vector_angle(scene, scene.panels.front(), Method::P3, later),
+  EXPECT_NEAR(vector_angle(motion::Stage(scene), 0, Method::P3, later),
               std::remainder(kPi * 4.0 * later * (1.0 - later) - kPi, 2.0 * kPi), 1e-12);
-  EXPECT_NEAR(vector_angle(scene, scene.panels.front(), Method::P3, 0.0), 0.0, 1e-12);
+  EXPECT_NEAR(vector_angle(motion::Stage(scene), 0, Method::P3, 0.0), 0.0, 1e-12);
 }
 
 TEST(Comparison, CartesianAgainstLogPolarMatchesTheLagrangeBlends) {
@@ -76,7 +76,7 @@ TEST(Comparison, CartesianAgainstLogPolarMatchesTheLagrangeBlends) {
     winding += L[i] * kW[i];                       // -LP: the winding
   }
   const double expected = std::remainder(std::arg(cartesian) - winding, 2.0 * kPi);
-  const double measured = vector_angle(scene, scene.panels.front(), Method::P1, t);
+  const double measured = vector_angle(motion::Stage(scene), 0, Method::P1, t);
   EXPECT_NEAR(measured, expected, 1e-12);
   EXPECT_GT(std::abs(measured), 0.1);  // the configuration separates them
 }
@@ -125,7 +125,7 @@ double shift(const std::string& method) {
           "panels": [{{"method": "{}", "keyframes": {}, "handle": {{"p": [{}, {}], "q": [{}, {}]}}}}]}})",
       method, keys_json(kRed), kF, method, keys_json(orange()), kEp.real(), kEp.imag(), kEq.real(), kEq.imag());
   const scene::Scene scene = scene::parse_scene(text, "test.json");
-  return handle_shift(scene, scene.panels.front());
+  return handle_shift(motion::Stage(scene), 0);
 }
 
 TEST(Comparison, HandleInvariantMethodsDoNotShift) {

@@ -12,6 +12,7 @@
 
 #include "../bad_scene_cases.hpp"
 #include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene {
@@ -20,7 +21,7 @@ namespace pita::scene {
 // build the motion of each panel that has one.
 void load_and_build(const std::filesystem::path& path) {
   const Scene scene = load_scene(path);
-  motion::check_motions(scene);
+  motion::Stage(scene).check();
   (void)motion::build_motion(scene);
 }
 

@@ -1,0 +1,102 @@
+#include "motion/stage.hpp"
+
+#include <string>
+#include <utility>
+
+#include "core/pitas/registry.hpp"
+
+namespace pita::motion {
+
+namespace {
+
+// A pose panel without poses has no motion (its layers draw none; building
+// it gives the NoMotion that says so); every other panel has one, or the
+// NoMotion that says why not.
+bool draws_a_motion(const scene::Scene& scene, const scene::Panel& panel) {
+  return scene.kind == scene::SceneKind::arrows || !panel.poses.empty() || !panel.poses3.empty();
+}
+
+}  // namespace
+
+Stage::Stage(const scene::Scene& scene) : scene_(&scene) {
+  for (const scene::Panel& panel : scene.panels) panels_.push_back(&panel);
+  build();
+}
+
+Stage::Stage(const scene::Scene& scene, const scene::Panel& panel) : scene_(&scene), panels_{&panel} { build(); }
+
+void Stage::build() {
+  for (const scene::Panel* panel : panels_) {
+    drawn_.push_back(draws_a_motion(*scene_, *panel));
+    try {
+      motions_.emplace_back(build_motion(*scene_, *panel));
+    } catch (const NoMotion& error) {
+      motions_.emplace_back(error);
+    }
+  }
+}
+
+bool Stage::has_motion(std::size_t index) const { return drawn_.at(index); }
+
+const SceneMotion& Stage::motion(std::size_t index) const {
+  const Built& built = motions_.at(index);
+  if (const auto* error = std::get_if<NoMotion>(&built)) throw *error;
+  return std::get<SceneMotion>(built);
+}
+
+void Stage::check() const {
+  for (std::size_t i = 0; i < motions_.size(); ++i) {
+    if (drawn_[i]) (void)motion(i);
+  }
+}
+
+SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, Method method) {
+  scene::Panel other = panel;
+  other.method = method;
+  other.method_name = std::string(info(method).id);
+  return build_motion(scene, other);
+}
+
+scene::Panel layer_panel(const scene::Panel& panel, std::optional<Method> method, const MethodOptions& options) {
+  scene::Panel own = panel;
+  if (method) {
+    own.method = *method;
+    own.method_name = std::string(info(*method).id);
+  }
+  own.options = options;
+  return own;
+}
+
+SceneMotion with_layer_method(const scene::Scene& scene, const scene::Panel& panel, std::optional<Method> method,
+                              const MethodOptions& options) {
+  return build_motion(scene, layer_panel(panel, method, options));
+}
+
+SceneMotion with_pose_method(const scene::Scene& scene, const scene::Panel& panel, PoseMethod method) {
+  scene::Panel other = panel;
+  other.pose_method = method;
+  other.method_name = std::string(info(method).id);
+  return build_motion(scene, other);
+}
+
+SceneMotion untimed_with_keyframes(const scene::Scene& scene, const scene::Panel& panel,
+                                   std::vector<Keyframe> keyframes) {
+  scene::Panel moved = panel;
+  moved.timing = scene::Timing{};
+  moved.keyframes = std::move(keyframes);
+  return build_motion(scene, moved);
+}
+
+SceneMotion with_scene_keyframes(const scene::Scene& scene, const scene::Panel& panel, scene::Panel* reference) {
+  scene::Panel own = scene::scene_panel(scene);
+  own.method = panel.method;
+  own.method_name = panel.method_name;
+  own.options = panel.options;
+  own.chain = panel.chain;
+  own.timing = panel.timing;
+  SceneMotion motion = build_motion(scene, own);
+  if (reference != nullptr) *reference = std::move(own);
+  return motion;
+}
+
+}  // namespace pita::motion
