@@ -18,6 +18,7 @@
 #include "analysis/audit.hpp"
 #include "analysis/audit_report.hpp"
 #include "animate/progress.hpp"
+#include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "core/methods.hpp"
 #include "render/figure.hpp"
@@ -95,7 +96,7 @@ std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   audit->add_option("--seed", options->seed, "Seed of the random configurations (an integer, 0 to 2^64 - 1)")
       ->type_name("S")
       ->capture_default_str();
-  audit->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
+  audit->add_option("--jobs", options->jobs, "Threads (default: PITA_THREADS, else the number of cores)")
       ->type_name("J")
       ->check(CLI::Range(1, 1024));
   audit->add_option("--format", options->format, "Format of the table on standard output")
@@ -134,7 +135,7 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
       }
       audit.seed = seed;
     }
-    audit.jobs = options.jobs;
+    audit.jobs = options.jobs > 0 ? options.jobs : threads_from_environment();
     std::optional<render::Format> table_format;
     if (options.output) {
       const std::string extension = fs::path(*options.output).extension().string();

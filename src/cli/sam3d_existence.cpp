@@ -121,7 +121,7 @@ std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit)
       ->excludes("--theta")
       ->excludes("--p")
       ->excludes("--angles");
-  command->add_option("--jobs", options->jobs, "Threads (default: the number of cores)")
+  command->add_option("--jobs", options->jobs, "Threads (default: PITA_THREADS, else the number of cores)")
       ->check(CLI::Range(1, 1024))
       ->type_name("J");
   command->add_flag("-q,--quiet", options->quiet, "No progress bar");
@@ -156,7 +156,7 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
   search.subdivisions = options.subdivisions;
   search.angles = options.angles;
   search.p_step = options.step;
-  search.jobs = static_cast<unsigned>(options.jobs);
+  search.jobs = static_cast<unsigned>(options.jobs > 0 ? options.jobs : threads_from_environment());
   const std::size_t axes = analysis::icosphere_axes(search.subdivisions).size();
   const auto start = std::chrono::steady_clock::now();
   std::string text = fmt::format(

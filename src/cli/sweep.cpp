@@ -1,7 +1,6 @@
 #include "cli/sweep.hpp"
 
 #include <iostream>
-#include <thread>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -77,7 +76,7 @@ std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
       ->type_name("LIST")
       ->capture_default_str();
   sweep->add_option_function<int>("--jobs,-j", [command](int j) { command->jobs = j; },
-                                   "Variants run at once (default: the number of cores)")
+                                   "Variants run at once (default: PITA_THREADS, else the number of cores)")
       ->type_name("J");
   sweep->add_option_function<std::string>("--shard", [command](const std::string& s) { command->shard = s; },
                                           "Run only the variants i with i mod N = K; writes manifest.K-of-N.csv")
@@ -125,7 +124,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     options.zip = command.zip;
     options.output = *command.output;
     options.formats = sweep::parse_output_kinds(command.formats);
-    options.jobs = command.jobs.value_or(static_cast<int>(std::max(1U, std::thread::hardware_concurrency())));
+    options.jobs = command.jobs.value_or(threads_from_environment());
     if (command.shard) options.shard = sweep::parse_shard(*command.shard);
     options.force = command.force;
     options.progress = progress_allowed(command.quiet);
