@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string_view>
@@ -357,11 +358,10 @@ EvalOutcome evaluate(const EvalOptions& options) {
                                      scene.panels.size() == 1 ? "" : "s", scene.panels.size() - 1, *options.panel));
       }
     }
-    // The scene's own motion is its only panel when it has no "panels".
     const scene::Panel own = scene::scene_panel(scene);
-    const bool own_is_panel = scene.panels.size() == 1 && scene.panels.front().pointer.empty();
-    const std::optional<motion::Stage> own_stage =
-        options.panel || own_is_panel ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
+    const std::optional<motion::Stage> own_stage = options.panel || motion::own_is_first_panel(scene)
+                                                       ? std::nullopt
+                                                       : std::make_optional<motion::Stage>(scene, own);
     const motion::Stage& chosen = own_stage ? *own_stage : stage;
     const std::size_t index = options.panel ? static_cast<std::size_t>(*options.panel) : 0;
     const scene::Panel& panel = chosen.panel(index);

@@ -50,6 +50,10 @@ void Stage::check() const {
   }
 }
 
+bool own_is_first_panel(const scene::Scene& scene) {
+  return scene.panels.size() == 1 && scene.panels.front().pointer.empty();
+}
+
 SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, Method method) {
   scene::Panel other = panel;
   other.method = method;

@@ -53,6 +53,11 @@ class Stage {
   std::vector<bool> drawn_;     // has_motion
 };
 
+// Whether the scene's own motion (scene::scene_panel) is its first panel:
+// a scene without "panels" has only that one. Then a Stage of the scene
+// holds it already, and building it again would be work done twice.
+bool own_is_first_panel(const scene::Scene& scene);
+
 // Motions derived from a panel's, built on demand (not kept): the same
 // keyframes or poses, timing and chain, with what the name says changed.
 // Each throws NoMotion when the changed motion does not exist.

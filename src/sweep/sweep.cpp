@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <regex>
 #include <system_error>
 #include <set>
@@ -279,7 +280,9 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
     stage.check();
     // The scene's own motion, built once for its frames and its metrics.
     const scene::Panel own = scene::scene_panel(scene);
-    const motion::Stage own_stage(scene, own);
+    const std::optional<motion::Stage> own_alone =
+        motion::own_is_first_panel(scene) ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
+    const motion::Stage& own_stage = own_alone ? *own_alone : stage;
     std::vector<std::pair<fs::path, std::string>> files;
     files.emplace_back(job.dir / scene_file, text);
     row.outputs.push_back(scene_file);
@@ -293,7 +296,7 @@ Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
         const motion::SceneMotion& motion = own_stage.motion(0);
         const std::vector<double> at =
             motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
-        files.emplace_back(job.dir / file, motion::frames_text(own, motion, at,
+        files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
                                                                kind == OutputKind::csv ? motion::FramesFormat::csv
                                                                                        : motion::FramesFormat::json));
       }

@@ -60,6 +60,12 @@ TEST(Stage, HoldsEachPanelsMotionAsBuiltAlone) {
   EXPECT_EQ(&stage.motion(1), &stage.motion(1));
   EXPECT_EQ(stage.motion(1).method_id(), "P8");
 
+  // With "panels", the scene's own motion is not one of them.
+  EXPECT_FALSE(own_is_first_panel(scene));
+  const scene::Scene plain = scene::parse_scene(R"({"method": "P6", )" + kStageKeyframes + "}", "s.json");
+  EXPECT_TRUE(own_is_first_panel(plain));
+  expect_same_frames(Stage(plain).motion(0), build_motion(plain));
+
   const scene::Panel own = scene::scene_panel(scene);
   const Stage alone(scene, own);
   ASSERT_EQ(alone.size(), 1u);
