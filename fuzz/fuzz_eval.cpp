@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/methods.hpp"
+#include "core/overloaded.hpp"
 #include "fuzz_support.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/sampler.hpp"
@@ -40,19 +41,30 @@ void check_frames(const std::vector<scene::PoseFrame>& frames, std::size_t count
   }
 }
 
-// The frames at `times`, written as `pita eval` writes them.
+// The frames at `times`, written as `pita eval` writes them: frames of arrows
+// and of poses of the plane are checked finite one by one; points and poses
+// of space through the text eval prints.
 void evaluate(const scene::Scene& s, const motion::SceneMotion& motion, std::span<const double> times) {
-  if (s.kind == scene::SceneKind::poses) {
-    const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, times);
-    check_frames(frames, times.size());
-    PITA_FUZZ_CHECK(!scene::pose_frames_to_json(s.method_name, frames).empty());
-    PITA_FUZZ_CHECK(!scene::pose_frames_to_csv(frames).empty());
-  } else {
-    const std::vector<scene::Frame> frames = motion::sample_arrows(motion, times);
-    check_frames(frames, times.size());
-    PITA_FUZZ_CHECK(!scene::frames_to_json(s.method_name, frames).empty());
-    PITA_FUZZ_CHECK(!scene::frames_to_csv(frames).empty());
-  }
+  const scene::Panel own = scene::scene_panel(s);
+  const auto text = [&] {
+    PITA_FUZZ_CHECK(!motion::frames_text(own, motion, times, motion::FramesFormat::json).empty());
+    PITA_FUZZ_CHECK(!motion::frames_text(own, motion, times, motion::FramesFormat::csv).empty());
+  };
+  std::visit(overloaded{[&](const scene::KeyframeKeys&) {
+                          const std::vector<scene::Frame> frames = motion::sample_arrows(motion, times);
+                          check_frames(frames, times.size());
+                          PITA_FUZZ_CHECK(!scene::frames_to_json(scene::method_id(s.keys), frames).empty());
+                          PITA_FUZZ_CHECK(!scene::frames_to_csv(frames).empty());
+                        },
+                        [&](const scene::PointKeys&) { text(); },
+                        [&](const scene::PlanePoseKeys&) {
+                          const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, times);
+                          check_frames(frames, times.size());
+                          PITA_FUZZ_CHECK(!scene::pose_frames_to_json(scene::method_id(s.keys), frames).empty());
+                          PITA_FUZZ_CHECK(!scene::pose_frames_to_csv(frames).empty());
+                        },
+                        [&](const scene::SpacePoseKeys&) { text(); }},
+             s.keys);
 }
 
 }  // namespace
@@ -69,7 +81,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       s = entry.kind == MotionKind::poses ? scene::with_pose_method(std::move(s), entry.pose_method)
                                           : scene::with_method(std::move(s), entry.method);
     }
-    if (s.kind == scene::SceneKind::poses && s.poses.empty() && s.poses3.empty()) return 0;  // eval refuses it
+    if (!scene::has_motion_keys(s.keys)) return 0;  // eval prints no frames
     motion::Stage(s).check();
     const motion::SceneMotion motion = motion::build_motion(s);
     const std::vector<double> uniform =

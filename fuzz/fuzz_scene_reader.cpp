@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fuzz_support.hpp"
+#include "core/overloaded.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -42,6 +43,20 @@ void check_poses(const std::vector<pita::TimedPose>& poses) {
   }
 }
 
+// The keys of a scene or panel, of whichever kind.
+void check_keys(const pita::scene::MotionKeys& keys) {
+  using namespace pita;
+  std::visit(overloaded{[](const scene::KeyframeKeys& given) { check_keyframes(given.keyframes, given.options.knots); },
+                        [](const scene::PointKeys& given) {
+                          for (const TimedPoint& point : given.points) PITA_FUZZ_CHECK(std::isfinite(point.t));
+                        },
+                        [](const scene::PlanePoseKeys& given) { check_poses(given.poses); },
+                        [](const scene::SpacePoseKeys& given) {
+                          PITA_FUZZ_CHECK(given.poses.size() <= static_cast<std::size_t>(scene::kMaxPoses));
+                        }},
+             keys);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -51,11 +66,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     PITA_FUZZ_CHECK(s.path == kFile);
     PITA_FUZZ_CHECK(!s.panels.empty() && s.panels.size() <= static_cast<std::size_t>(scene::kMaxPanels));
     if (s.samples) PITA_FUZZ_CHECK(*s.samples >= scene::kMinSamples && *s.samples <= scene::kMaxSamples);
-    check_keyframes(s.keyframes, s.options.knots);
-    check_poses(s.poses);
+    check_keys(s.keys);
     for (const scene::Panel& panel : s.panels) {
-      check_keyframes(panel.keyframes, panel.options.knots);
-      check_poses(panel.poses);
+      check_keys(panel.keys);
     }
   } catch (const scene::SceneError& error) {
     PITA_FUZZ_CHECK(error.file() == kFile);  // every refusal names the file

@@ -15,10 +15,10 @@ namespace pita::analysis {
 
 double vector_angle(const motion::Stage& stage, std::size_t index, Method other, double t) {
   const scene::Panel& panel = stage.panel(index);
-  const Arrow mine = stage.motion(index).arrow_at(t);
+  const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes
   const Arrow theirs = motion::with_method(stage.scene(), panel, other).arrow_at(t);
   double largest = 0.0;
-  for (const Keyframe& k : panel.keyframes) largest = std::max(largest, k.arrow.m);
+  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
   const double floor = kAngleVectorFloor * largest;
   if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
     return std::numeric_limits<double>::quiet_NaN();
@@ -29,18 +29,22 @@ double vector_angle(const motion::Stage& stage, std::size_t index, Method other,
 double handle_shift(const motion::Stage& stage, std::size_t index) {
   const scene::Panel& panel = stage.panel(index);
   const motion::SceneMotion& own = stage.motion(index);
+  (void)own.arrows();  // NoMotion unless the panel has keyframes
   scene::Panel reference;
   const motion::SceneMotion base = motion::with_scene_keyframes(stage.scene(), panel, &reference);
+  (void)base.arrows();  // the same for the scene's
+  const scene::KeyframeKeys& mine = std::get<scene::KeyframeKeys>(panel.keys);
+  const scene::KeyframeKeys& theirs = std::get<scene::KeyframeKeys>(reference.keys);
   const auto by_knot = [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; };
-  const auto [own_first, own_last] = std::minmax_element(panel.keyframes.begin(), panel.keyframes.end(), by_knot);
+  const auto [own_first, own_last] = std::minmax_element(mine.keyframes.begin(), mine.keyframes.end(), by_knot);
   const auto [base_first, base_last] =
-      std::minmax_element(reference.keyframes.begin(), reference.keyframes.end(), by_knot);
+      std::minmax_element(theirs.keyframes.begin(), theirs.keyframes.end(), by_knot);
   const double first = std::max(own_first->t, base_first->t);
   const double last = std::min(own_last->t, base_last->t);
   double shift = 0.0;
   for (const double t : motion::uniform_times(first, last, kHandleShiftSamples)) {
-    const Affine2 S = carrier(panel.handle, own.arrow_at(t));
-    const Affine2 S0 = carrier(reference.handle, base.arrow_at(t));
+    const Affine2 S = carrier(mine.handle(), own.arrow_at(t));
+    const Affine2 S0 = carrier(theirs.handle(), base.arrow_at(t));
     for (const scene::ShapeOutline& shape : panel.shapes) {
       for (const Point x : shape.points) shift = std::max(shift, std::abs(apply(S, x) - apply(S0, x)));
     }

@@ -77,13 +77,14 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
                                                  double extent, double duration,
                                                  const std::vector<double>& times) {
   // The method's own motion: the timing only paces it (docs/paper-notes.md N37).
-  std::vector<Keyframe> keys = panel.keyframes;
-  keys[index] = tweaked(panel.keyframes[index], which, delta, extent, duration);
+  const std::vector<Keyframe>& given = std::get<scene::KeyframeKeys>(panel.keys).keyframes;
+  std::vector<Keyframe> keys = given;
+  keys[index] = tweaked(given[index], which, delta, extent, duration);
   // The tweaked knot keeps its place among the others (increasing, or the
   // order of keyframes "as-given", docs/paper-notes.md N41).
   for (std::size_t j = 0; j < keys.size(); ++j) {
     if (j == index) continue;
-    if ((keys[index].t > keys[j].t) != (panel.keyframes[index].t > panel.keyframes[j].t) ||
+    if ((keys[index].t > keys[j].t) != (given[index].t > given[j].t) ||
         keys[index].t == keys[j].t) {
       return std::nullopt;
     }
@@ -119,6 +120,7 @@ double largest_change(const std::vector<Arrow>& x, const std::vector<Arrow>& y) 
 }
 
 void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& motion, MotionMeasures& out) {
+  const scene::TrackMethod& track = std::get<scene::KeyframeKeys>(panel.keys);
   const std::vector<double> times = motion::uniform_times(motion, panel.samples);
   std::vector<Arrow> frames;
   for (const motion::Frame& frame : motion::sample_arrows(motion, times)) frames.push_back(frame.arrow);
@@ -131,7 +133,7 @@ void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& m
     for (std::size_t i = 0; i < frames.size(); ++i) {
       std::optional<double> e;
       try {
-        e = frame_discrepancy(predictor, panel.method, panel.options, times, frames, i);
+        e = frame_discrepancy(predictor, track.method, track.options, times, frames, i);
       } catch (const std::exception&) {
         continue;  // the predicting motion does not exist through these frames
       }
@@ -185,7 +187,7 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
   const std::vector<double> times = motion::uniform_times(motion.first(), motion.last(), options.tweak_samples);
   const double extent = out.extent, duration = motion.last() - motion.first();
   double best_gain = -1.0, best_jump = -1.0;
-  for (std::size_t k = 0; k < panel.keyframes.size(); ++k) {
+  for (std::size_t k = 0; k < std::get<scene::KeyframeKeys>(panel.keys).keyframes.size(); ++k) {
     for (std::size_t j = 0; j < kParameters.size(); ++j) {
       ParameterReaction reaction;
       reaction.name = keyframe_name(k) + "." + kParameterNames[j];
@@ -329,12 +331,18 @@ AreaStats area_stats(const std::vector<double>& times, const std::vector<double>
 
 double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
   const double frame = motion::frame_cost(panel);
-  const double keys = static_cast<double>(panel.keyframes.size());
+  // Keyframes are tweaked one parameter at a time; poses are measured one span at a time.
+  const auto [keyframes, poses] = std::visit(
+      overloaded{[](const scene::KeyframeKeys& given) { return std::pair(given.keyframes.size(), std::size_t{0}); },
+                 [](const scene::PointKeys&) { return std::pair(std::size_t{0}, std::size_t{0}); },
+                 [](const scene::PlanePoseKeys& given) { return std::pair(std::size_t{0}, given.poses.size()); },
+                 [](const scene::SpacePoseKeys& given) { return std::pair(std::size_t{0}, given.poses.size()); }},
+      panel.keys);
+  const double keys = static_cast<double>(keyframes);
   const double tweaks = 4.0 * static_cast<double>(kParameters.size()) * keys;
   return tweaks * (2.0 * keys + options.tweak_samples * frame) +
          (options.path_samples + 3.0 + 3.0 * panel.samples) * frame +
-         static_cast<double>(panel.dimension == 3 ? panel.poses3.size() : panel.poses.size()) *
-             (options.path_samples + 64.0);
+         static_cast<double>(poses) * (options.path_samples + 64.0);
 }
 
 MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options) {
@@ -344,14 +352,16 @@ MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, cons
   out.pointer = panel.pointer;
   out.title = panel.title;
   out.method = motion::method_label(scene, panel);
-  out.kind = scene.kind == scene::SceneKind::arrows ? (panel.points.empty() ? "arrows" : "points")
-             : panel.dimension == 3                  ? "poses3d"
-                                                     : "poses";
+  out.kind = std::visit(overloaded{[](const scene::KeyframeKeys&) { return "arrows"; },
+                                   [](const scene::PointKeys&) { return "points"; },
+                                   [](const scene::PlanePoseKeys&) { return "poses"; },
+                                   [](const scene::SpacePoseKeys&) { return "poses3d"; }},
+                        panel.keys);
   out.samples = panel.samples;
   try {
     const motion::SceneMotion& motion = stage.motion(index);
     std::visit(overloaded{[&](const motion::ArrowTrack&) {
-                            out.extent = keyframe_extent(panel.keyframes);
+                            out.extent = keyframe_extent(std::get<scene::KeyframeKeys>(panel.keys).keyframes);
                             measure_discrepancy(panel, motion, out);
                             measure_paths(motion, options, out);
                             measure_reactions(scene, panel, motion, options, out);

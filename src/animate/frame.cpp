@@ -86,7 +86,8 @@ void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage*
                      const Timeline& timeline, double t) {
   if (timeline.what == What::pattern || stage == nullptr) {
     Json keys = Json::array();
-    for (const Keyframe& key : panel.keyframes) {
+    const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys);
+    for (const Keyframe& key : arrows != nullptr ? arrows->keyframes : std::vector<Keyframe>{}) {
       Json entry{{"t", key.t}};
       // Named: a range-for over arrow_json(...).items() would iterate a
       // destroyed temporary (only the items() proxy lives on).

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/overloaded.hpp"
 #include "scene/limits.hpp"
 
 namespace pita::animate {
@@ -90,10 +91,14 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
     bool any = false;
     for (const scene::Panel& panel : scene.panels) {
       std::vector<double> knots;
-      for (const Keyframe& key : panel.keyframes) knots.push_back(key.t);
-      for (const TimedPose& pose : panel.poses) knots.push_back(pose.t);
-      for (const TimedPose3& pose : panel.poses3) knots.push_back(pose.t);
-      for (const TimedPoint& point : panel.points) knots.push_back(point.t);
+      const auto times = [&](const auto& items) {
+        for (const auto& item : items) knots.push_back(item.t);
+      };
+      std::visit(overloaded{[&](const scene::KeyframeKeys& given) { times(given.keyframes); },
+                            [&](const scene::PointKeys& given) { times(given.points); },
+                            [&](const scene::PlanePoseKeys& given) { times(given.poses); },
+                            [&](const scene::SpacePoseKeys& given) { times(given.poses); }},
+                 panel.keys);
       if (knots.empty()) continue;
       timeline.first = any ? std::min(timeline.first, knots.front()) : knots.front();
       timeline.last = any ? std::max(timeline.last, knots.back()) : knots.back();

@@ -44,15 +44,22 @@ std::string_view trimmed(std::string_view text) {
   return text;
 }
 
-// The frames of a scene without a motion: none, in the format and with the
-// columns of its kind (a pose scene of the plane or of space).
+// The frames of a scene without a motion (scene::has_motion_keys: a pose
+// scene without poses): none, in the format and with the columns of its kind
+// (poses of the plane or of space).
 std::string no_motion_text(const scene::Scene& scene, bool csv) {
-  if (scene.dimension == 3) {
+  const std::string method = scene::method_id(scene.keys);
+  if (std::holds_alternative<scene::SpacePoseKeys>(scene.keys)) {
     const std::span<const scene::PoseFrame3> none;
-    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(scene.method_name, none);
+    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
   }
   const std::span<const scene::PoseFrame> none;
-  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(scene.method_name, none);
+  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
+}
+
+bool chain_given(const scene::Scene& scene) {
+  const scene::TrackMethod* track = scene::track_method(scene.keys);
+  return track != nullptr && track->chain.has_value();
 }
 
 ExitCode write_stdout(const std::string& text) {
@@ -334,7 +341,7 @@ EvalOutcome evaluate(const EvalOptions& options) {
     if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
     // the whole output is built before anything is printed
-    if (scene.kind == scene::SceneKind::poses && scene.poses.empty() && scene.poses3.empty()) {
+    if (!scene::has_motion_keys(scene.keys)) {
       // A figure whose layers need no motion (sam-fig06-existence-3d): a
       // well-formed, empty result and a note on stderr, exit 0, so that a loop
       // over every scene (scripts/run.sh) goes through (docs/paper-notes.md N68).
@@ -372,7 +379,7 @@ EvalOutcome evaluate(const EvalOptions& options) {
       throw InputError(fmt::format(
           "{}: {}: {} frames of the {} cost about {:.3g} frames of the method, above the limit of {:.0g}: ask for "
           "fewer frames, or use the local \"blend\" chain",
-          scene.path, scene.chain ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
+          scene.path, chain_given(scene) ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
     }
     outcome.work = work;
     outcome.out = motion::frames_text(panel, motion, at,

@@ -59,22 +59,22 @@ std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, st
   return std::visit(
       overloaded{[&](const ArrowTrack&) {
                    const std::vector<Frame> frames = sample_arrows(motion, times);
-                   return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(panel.method_name, frames, chain);
+                   return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(scene::method_id(panel.keys), frames, chain);
                  },
                  [&](const PointTrack&) {
                    std::vector<scene::PointFrame> frames;
                    frames.reserve(times.size());
                    for (const double t : times) frames.push_back({t, motion.point_at(t)});
                    return csv ? scene::point_frames_to_csv(frames)
-                              : scene::point_frames_to_json(panel.method_name, frames, chain);
+                              : scene::point_frames_to_json(scene::method_id(panel.keys), frames, chain);
                  },
                  [&](const PlanePoses&) {
                    const std::vector<PoseFrame> frames = sample_poses(motion, times);
-                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
+                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(scene::method_id(panel.keys), frames);
                  },
                  [&](const SpacePoses&) {
                    const std::vector<scene::PoseFrame3> frames = sample_poses3(motion, times);
-                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(panel.method_name, frames);
+                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(scene::method_id(panel.keys), frames);
                  }},
       motion.built());
 }

@@ -5,6 +5,7 @@
 #include <functional>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -39,40 +40,70 @@ Point tracked(const Arrow& frame, scene::TrackedPoint point) {
 
 }  // namespace
 
-std::string method_label(const scene::Scene& scene, const scene::Panel& panel) {
-  if (scene.kind == scene::SceneKind::poses) return std::string(info(panel.pose_method).id);
-  const MethodInfo& about = info(panel.method);
-  std::string label = about.mnemonic.empty() || about.mnemonic == about.id
-                          ? std::string(about.id)
-                          : fmt::format("{} ({})", about.id, about.mnemonic);
-  if (const std::optional<Chain> chain = chain_of(panel)) label += fmt::format(", {} chain", info(*chain).name);
-  return label;
+std::string method_label(const scene::Scene&, const scene::Panel& panel) {
+  const auto track = [&](const scene::TrackMethod& given) {
+    const MethodInfo& about = info(given.method);
+    std::string label = about.mnemonic.empty() || about.mnemonic == about.id
+                            ? std::string(about.id)
+                            : fmt::format("{} ({})", about.id, about.mnemonic);
+    if (const std::optional<Chain> chain = chain_of(panel)) label += fmt::format(", {} chain", info(*chain).name);
+    return label;
+  };
+  const auto poses = [](const auto& given) { return std::string(info(given.method).id); };
+  return std::visit(overloaded{[&](const scene::KeyframeKeys& given) { return track(given); },
+                               [&](const scene::PointKeys& given) { return track(given); },
+                               [&](const scene::PlanePoseKeys& given) { return poses(given); },
+                               [&](const scene::SpacePoseKeys& given) { return poses(given); }},
+                    panel.keys);
 }
 
-std::optional<Chain> chain_of(const scene::Panel& panel) {
-  if (panel.chain) return panel.chain;
-  // A curve through n points chains its n - 1 edge arrows.
-  const std::size_t count = panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1;
-  if (count > static_cast<std::size_t>(info(panel.method).keyframe_count)) {
-    return default_chain(panel.method);
-  }
+namespace {
+
+// The chain of a track of `length` keyframes: its own, else the method's
+// default when the track is longer than the method takes.
+std::optional<Chain> track_chain(const scene::TrackMethod& track, std::size_t length) {
+  if (track.chain) return track.chain;
+  if (length > static_cast<std::size_t>(info(track.method).keyframe_count)) return default_chain(track.method);
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<Chain> chain_of(const scene::Panel& panel) {
+  return std::visit(
+      overloaded{[](const scene::KeyframeKeys& given) { return track_chain(given, given.track_length()); },
+                 // A curve through n points chains its n - 1 edge arrows.
+                 [](const scene::PointKeys& given) { return track_chain(given, given.track_length()); },
+                 [](const scene::PlanePoseKeys&) { return std::optional<Chain>(); },
+                 [](const scene::SpacePoseKeys&) { return std::optional<Chain>(); }},
+      panel.keys);
+}
+
 double frame_cost(const scene::Panel& panel) {
-  const std::optional<Chain> chain = chain_of(panel);
-  const std::size_t count = panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1;
-  const double track = chain ? chain_frame_cost(*chain, count) : 1.0;
-  return panel.points.empty() ? track : 2.0 * track;
+  const auto track = [&](std::size_t length) {
+    const std::optional<Chain> chain = chain_of(panel);
+    return chain ? chain_frame_cost(*chain, length) : 1.0;
+  };
+  return std::visit(overloaded{[&](const scene::KeyframeKeys& given) { return track(given.track_length()); },
+                               // Two tracks per frame (Eq. 48-50).
+                               [&](const scene::PointKeys& given) { return 2.0 * track(given.track_length()); },
+                               [](const scene::PlanePoseKeys&) { return 1.0; },
+                               [](const scene::SpacePoseKeys&) { return 1.0; }},
+                    panel.keys);
 }
 
 PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& panel, PointCurve curve) {
+  const auto* given = std::get_if<scene::PointKeys>(&panel.keys);
+  if (given == nullptr) {
+    throw NoMotion(scene.path, panel.motion_pointer,
+                   "a point-trajectory draws a curve through timed \"points\"; this panel has none");
+  }
   const std::string label = method_label(scene, panel);
-  const ArrowTrackFactory track = [&panel](std::span<const Keyframe> keys) {
-    return make_motion(panel.method, keys, panel.options, panel.chain);
+  const ArrowTrackFactory track = [given](std::span<const Keyframe> keys) {
+    return make_motion(given->method, keys, given->options, given->chain);
   };
   try {
-    return PointCurveMotion(curve, panel.points, track);
+    return PointCurveMotion(curve, given->points, track);
   } catch (const MotionDomainError& error) {
     throw NoMotion(scene.path, panel.motion_pointer,
                    fmt::format("method {} has no motion through the edges of these points: {}", label, error.what()));
@@ -90,67 +121,71 @@ namespace {
 
 // The motion of the panel's keyframes, points or poses, refused with NoMotion
 // (at the panel's motion pointer) when the method has none through them.
-BuiltMotion build_kind(const scene::Scene& scene, const scene::Panel& panel, const std::string& label) {
+template <class Pose>
+auto build_poses(const scene::Scene& scene, const scene::Panel& panel, const scene::PoseKeys<Pose>& keys) {
   const auto refuse = [&](const std::string& reason) { return NoMotion(scene.path, panel.motion_pointer, reason); };
-  if (scene.kind == scene::SceneKind::poses && panel.dimension == 3) {
-    try {
-      return SpacePoses{std::make_shared<const PoseMotion3>(panel.pose_method, panel.poses3, panel.subdivisions),
-                        scene.reference_tetrahedron};
-    } catch (const NoSamBetweenPoses& error) {
-      throw refuse(scene::no_sam_reason(error, panel.pose_method));
-    } catch (const std::invalid_argument& error) {
-      throw refuse(error.what());
-    }
-  }
-  if (scene.kind == scene::SceneKind::poses) {
-    if (panel.poses.empty()) throw refuse("the panel has no poses to interpolate");
-    try {
-      return PlanePoses{std::make_shared<const PoseMotion>(panel.pose_method, panel.poses, panel.subdivisions,
+  if (keys.poses.empty()) throw refuse("the panel has no poses to interpolate");
+  try {
+    if constexpr (std::is_same_v<Pose, Affine2>) {
+      return PlanePoses{std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions,
                                                            scene.reference_triangle),
                         scene.reference_triangle};
-    } catch (const NoSamBetweenPoses& error) {
-      throw refuse(scene::no_sam_reason(error, panel.pose_method));
-    } catch (const std::invalid_argument& error) {
-      throw refuse(error.what());
+    } else {
+      return SpacePoses{std::make_shared<const PoseMotion3>(keys.method, keys.poses, keys.subdivisions),
+                        scene.reference_tetrahedron};
     }
-  }
-  if (!panel.points.empty()) {
-    if (!panel.timing.is_identity()) {
-      throw NoMotion(scene.path, panel.timing.pointer,
-                     "timing paces keyframes and poses; a panel of \"points\" has none");
-    }
-    return PointTrack{std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita)),
-                      chain_of(panel)};
-  }
-  try {
-    std::optional<Chain> chain = chain_of(panel);
-    return ArrowTrack{make_motion(panel.method, panel.keyframes, panel.options, panel.chain), chain};
-  } catch (const MotionDomainError& error) {
-    throw refuse(fmt::format("method {} has no motion through these keyframes: {}", label, error.what()));
+  } catch (const NoSamBetweenPoses& error) {
+    throw refuse(scene::no_sam_reason(error, keys.method));
   } catch (const std::invalid_argument& error) {
-    throw refuse(fmt::format("method {} refuses these keyframes: {}", label, error.what()));
+    throw refuse(error.what());
   }
+}
+
+// The motion of the panel's keyframes, points or poses, refused with NoMotion
+// (at the panel's motion pointer) when the method has none through them.
+BuiltMotion build_kind(const scene::Scene& scene, const scene::Panel& panel, const std::string& label) {
+  const auto refuse = [&](const std::string& reason) { return NoMotion(scene.path, panel.motion_pointer, reason); };
+  return std::visit(
+      overloaded{[&](const scene::KeyframeKeys& given) -> BuiltMotion {
+                   try {
+                     std::optional<Chain> chain = chain_of(panel);
+                     return ArrowTrack{make_motion(given.method, given.keyframes, given.options, given.chain), chain};
+                   } catch (const MotionDomainError& error) {
+                     throw refuse(fmt::format("method {} has no motion through these keyframes: {}", label, error.what()));
+                   } catch (const std::invalid_argument& error) {
+                     throw refuse(fmt::format("method {} refuses these keyframes: {}", label, error.what()));
+                   }
+                 },
+                 [&](const scene::PointKeys&) -> BuiltMotion {
+                   if (!panel.timing.is_identity()) {
+                     throw NoMotion(scene.path, panel.timing.pointer,
+                                    "timing paces keyframes and poses; a panel of \"points\" has none");
+                   }
+                   return PointTrack{
+                       std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita)),
+                       chain_of(panel)};
+                 },
+                 [&](const scene::PlanePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); },
+                 [&](const scene::SpacePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); }},
+      panel.keys);
 }
 
 // The knots of the panel's motion, increasing: keyframes "as-given" may come
 // in any order (docs/paper-notes.md N41); the motion runs from the least to
 // the greatest.
-std::vector<double> knots_of(const scene::Panel& panel, const BuiltMotion& built) {
+std::vector<double> knots_of(const scene::Panel& panel) {
   std::vector<double> knots;
-  std::visit(overloaded{[&](const ArrowTrack&) {
-                          for (const Keyframe& key : panel.keyframes) knots.push_back(key.t);
+  const auto times = [&](const auto& items) {
+    for (const auto& item : items) knots.push_back(item.t);
+  };
+  std::visit(overloaded{[&](const scene::KeyframeKeys& given) {
+                          times(given.keyframes);
                           std::sort(knots.begin(), knots.end());
                         },
-                        [&](const PointTrack&) {
-                          for (const TimedPoint& point : panel.points) knots.push_back(point.t);
-                        },
-                        [&](const PlanePoses&) {
-                          for (const TimedPose& pose : panel.poses) knots.push_back(pose.t);
-                        },
-                        [&](const SpacePoses&) {
-                          for (const TimedPose3& pose : panel.poses3) knots.push_back(pose.t);
-                        }},
-             built);
+                        [&](const scene::PointKeys& given) { times(given.points); },
+                        [&](const scene::PlanePoseKeys& given) { times(given.poses); },
+                        [&](const scene::SpacePoseKeys& given) { times(given.poses); }},
+             panel.keys);
   return knots;
 }
 
@@ -161,10 +196,9 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   motion.file_ = scene.path;
   motion.label_ = method_label(scene, panel);
   motion.pointer_ = panel.motion_pointer;
-  motion.method_id_ = scene.kind == scene::SceneKind::poses ? std::string(info(panel.pose_method).id)
-                                                            : std::string(info(panel.method).id);
+  motion.method_id_ = scene::method_id(panel.keys);
   motion.built_ = build_kind(scene, panel, motion.label_);
-  motion.knots_ = knots_of(panel, motion.built_);
+  motion.knots_ = knots_of(panel);
 
   const scene::Timing& timing = panel.timing;
   if (timing.is_identity()) return motion;

@@ -3,6 +3,7 @@
 #include <string>
 #include <utility>
 
+#include "core/overloaded.hpp"
 #include "core/pitas/registry.hpp"
 
 namespace pita::motion {
@@ -12,8 +13,12 @@ namespace {
 // A pose panel without poses has no motion (its layers draw none; building
 // it gives the NoMotion that says so); every other panel has one, or the
 // NoMotion that says why not.
-bool draws_a_motion(const scene::Scene& scene, const scene::Panel& panel) {
-  return scene.kind == scene::SceneKind::arrows || !panel.poses.empty() || !panel.poses3.empty();
+bool draws_a_motion(const scene::Panel& panel) { return scene::has_motion_keys(panel.keys); }
+
+// The panel's keyframes or points; NoMotion for a panel of poses.
+scene::TrackMethod& track_of(const scene::Scene& scene, scene::Panel& panel) {
+  if (scene::TrackMethod* track = scene::track_method(panel.keys)) return *track;
+  throw NoMotion(scene.path, "/method", "a method of arrows was asked for a panel of poses");
 }
 
 }  // namespace
@@ -27,7 +32,7 @@ Stage::Stage(const scene::Scene& scene, const scene::Panel& panel) : scene_(&sce
 
 void Stage::build() {
   for (const scene::Panel* panel : panels_) {
-    drawn_.push_back(draws_a_motion(*scene_, *panel));
+    drawn_.push_back(draws_a_motion(*panel));
     try {
       motions_.emplace_back(build_motion(*scene_, *panel));
     } catch (const NoMotion& error) {
@@ -56,18 +61,16 @@ bool own_is_first_panel(const scene::Scene& scene) {
 
 SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, Method method) {
   scene::Panel other = panel;
-  other.method = method;
-  other.method_name = std::string(info(method).id);
+  track_of(scene, other).method = method;
   return build_motion(scene, other);
 }
 
 scene::Panel layer_panel(const scene::Panel& panel, std::optional<Method> method, const MethodOptions& options) {
   scene::Panel own = panel;
-  if (method) {
-    own.method = *method;
-    own.method_name = std::string(info(*method).id);
+  if (scene::TrackMethod* track = scene::track_method(own.keys)) {
+    if (method) track->method = *method;
+    track->options = options;
   }
-  own.options = options;
   return own;
 }
 
@@ -78,8 +81,12 @@ SceneMotion with_layer_method(const scene::Scene& scene, const scene::Panel& pan
 
 SceneMotion with_pose_method(const scene::Scene& scene, const scene::Panel& panel, PoseMethod method) {
   scene::Panel other = panel;
-  other.pose_method = method;
-  other.method_name = std::string(info(method).id);
+  std::visit(overloaded{[&](scene::PlanePoseKeys& given) { given.method = method; },
+                        [&](scene::SpacePoseKeys& given) { given.method = method; },
+                        [&](scene::TrackMethod&) {
+                          throw NoMotion(scene.path, "/method", "a method of poses was asked for a panel of arrows");
+                        }},
+             other.keys);
   return build_motion(scene, other);
 }
 
@@ -87,16 +94,17 @@ SceneMotion untimed_with_keyframes(const scene::Scene& scene, const scene::Panel
                                    std::vector<Keyframe> keyframes) {
   scene::Panel moved = panel;
   moved.timing = scene::Timing{};
-  moved.keyframes = std::move(keyframes);
+  auto* arrows = std::get_if<scene::KeyframeKeys>(&moved.keys);
+  if (arrows == nullptr) throw NoMotion(scene.path, panel.motion_pointer, "the panel has no keyframes to move");
+  arrows->keyframes = std::move(keyframes);
   return build_motion(scene, moved);
 }
 
 SceneMotion with_scene_keyframes(const scene::Scene& scene, const scene::Panel& panel, scene::Panel* reference) {
   scene::Panel own = scene::scene_panel(scene);
-  own.method = panel.method;
-  own.method_name = panel.method_name;
-  own.options = panel.options;
-  own.chain = panel.chain;
+  const scene::TrackMethod* given = scene::track_method(panel.keys);
+  if (given == nullptr) throw NoMotion(scene.path, "/method", "a method of arrows was asked for a panel of poses");
+  track_of(scene, own) = *given;
   own.timing = panel.timing;
   SceneMotion motion = build_motion(scene, own);
   if (reference != nullptr) *reference = std::move(own);

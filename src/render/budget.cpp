@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "analysis/measure.hpp"
+#include "core/overloaded.hpp"
 #include "analysis/swept_edge.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
@@ -44,8 +45,8 @@ class LayerCost {
       // A coil per frame: its turns bounded by the keyframes' largest winding,
       // scaled by how far the range reaches beyond the knots, plus one turn.
       double w = 0.0;
-      for (const Keyframe& key : panel_.keyframes) w = std::max(w, std::abs(key.arrow.w));
-      const double span = panel_.keyframes.back().t - panel_.keyframes.front().t;
+      for (const Keyframe& key : keyframes()) w = std::max(w, std::abs(key.arrow.w));
+      const double span = keyframes().empty() ? 0.0 : keyframes().back().t - keyframes().front().t;
       const double reach =
           l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
       const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
@@ -70,7 +71,7 @@ class LayerCost {
   }
   void operator()(const scene::KeyframesLayer&) {
     double units = 0.0;
-    for (const Keyframe& key : panel_.keyframes) {
+    for (const Keyframe& key : keyframes()) {
       const double turns = std::abs(key.arrow.w) / (2.0 * std::numbers::pi);
       units += 4 * kShapeUnits +
                std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
@@ -83,7 +84,8 @@ class LayerCost {
   }
   void operator()(const scene::PointTrajectoryLayer& l) {
     // The Neville-type curves blend n(n - 1)/2 times per point.
-    const double n = static_cast<double>(panel_.points.size());
+    const auto* given = std::get_if<scene::PointKeys>(&panel_.keys);
+    const double n = given != nullptr ? static_cast<double>(given->points.size()) : 0.0;
     const double per_point = l.curve == PointCurve::pita ? motion::frame_cost(panel_) : 1.0 + n * (n - 1.0) / 2.0;
     add(layer_ + "/samples", fmt::format("{} points of a point trajectory", l.samples),
         kShapeUnits + l.samples * per_point + (l.dots ? n * kShapeUnits : 0.0));
@@ -133,11 +135,15 @@ class LayerCost {
     frames(l.samples, "compared shapes", shapes_units() + l.power);
   }
   void operator()(const scene::PosesLayer& l) {
-    // With "inserted", a four-point panel's last step adds n 2^(steps-1) poses.
-    const double inserted = l.inserted && panel_.subdivisions > 0
-                                ? std::ldexp(static_cast<double>(panel_.poses.size()), panel_.subdivisions - 1)
-                                : 0.0;
-    const double poses = static_cast<double>(panel_.dimension == 3 ? panel_.poses3.size() : panel_.poses.size());
+    // With "inserted", a four-point panel of the plane's last step adds n 2^(steps-1) poses.
+    const auto [poses, inserted] = std::visit(
+        overloaded{[&](const scene::PlanePoseKeys& given) {
+                     const auto n = static_cast<double>(given.poses.size());
+                     return std::pair(n, l.inserted && given.subdivisions > 0 ? std::ldexp(n, given.subdivisions - 1) : 0.0);
+                   },
+                   [](const scene::SpacePoseKeys& given) { return std::pair(static_cast<double>(given.poses.size()), 0.0); },
+                   [](const scene::TrackMethod&) { return std::pair(0.0, 0.0); }},
+        panel_.keys);
     add(layer_, "the shapes at the poses", (poses + inserted) * shapes_units());
   }
   void operator()(const scene::VelocitiesLayer& l) {
@@ -209,7 +215,7 @@ class LayerCost {
   // 3D scenes draw solids: a shape per face, each vertex of each face projected.
   double shape_points() const {
     double points = 0.0;
-    if (panel_.dimension == 3) {
+    if (in_space()) {
       for (const scene::Solid& solid : scene_.solids) {
         points += static_cast<double>(solid.vertices.size());
         for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
@@ -221,12 +227,20 @@ class LayerCost {
   }
   double shapes_units() const {
     double shapes = static_cast<double>(panel_.shapes.size());
-    if (panel_.dimension == 3) {
+    if (in_space()) {
       shapes = 0.0;
       for (const scene::Solid& solid : scene_.solids) shapes += static_cast<double>(solid.faces.size());
     }
     return shapes * kShapeUnits + shape_points();
   }
+
+  // The panel's keyframes (none for the other kinds, which draw no arrow layers).
+  const std::vector<Keyframe>& keyframes() const {
+    static const std::vector<Keyframe> kNone;
+    const auto* given = std::get_if<scene::KeyframeKeys>(&panel_.keys);
+    return given != nullptr ? given->keyframes : kNone;
+  }
+  bool in_space() const { return std::holds_alternative<scene::SpacePoseKeys>(panel_.keys); }
 
   void add(std::string pointer, std::string what, double units) {
     cost_.units += units;
@@ -263,11 +277,13 @@ FigureCost estimate_cost(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {
     // The title and frame of each panel.
     cost.units += 8 * kShapeUnits;
-    if (scene.kind == scene::SceneKind::poses) {
-      add_layers(scene, panel, panel.pose_layers, scene.pose_layers, cost);
-    } else {
-      add_layers(scene, panel, panel.layers, scene.layers, cost);
-    }
+    const auto arrows = [&](const auto&) { add_layers(scene, panel, panel.layers, scene.layers, cost); };
+    const auto poses = [&](const auto&) { add_layers(scene, panel, panel.pose_layers, scene.pose_layers, cost); };
+    std::visit(overloaded{[&](const scene::KeyframeKeys& given) { arrows(given); },
+                          [&](const scene::PointKeys& given) { arrows(given); },
+                          [&](const scene::PlanePoseKeys& given) { poses(given); },
+                          [&](const scene::SpacePoseKeys& given) { poses(given); }},
+               panel.keys);
   }
   // Moving keyframes (Sec. 7.4): the static figure overlays the pattern at
   // each tau of the animation's "overlay".

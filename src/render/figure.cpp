@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "core/overloaded.hpp"
 #include "motion/moving_keyframes.hpp"
 #include "motion/stage.hpp"
 #include "render/budget.hpp"
@@ -133,9 +134,13 @@ std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelec
   std::vector<Drawing> drawings;
   for (std::size_t i = 0; i < stage.size(); ++i) {
     const scene::Panel& panel = stage.panel(i);
-    Drawing drawing = panel.dimension == 3                    ? space_panel_drawing(stage, i, selection)
-                      : scene.kind == scene::SceneKind::poses ? pose_panel_drawing(stage, i, selection)
-                                                              : panel_drawing(stage, i, selection);
+    const auto arrows = [&](const auto&) { return panel_drawing(stage, i, selection); };
+    Drawing drawing = std::visit(
+        overloaded{[&](const scene::KeyframeKeys& given) { return arrows(given); },
+                   [&](const scene::PointKeys& given) { return arrows(given); },
+                   [&](const scene::PlanePoseKeys&) { return pose_panel_drawing(stage, i, selection); },
+                   [&](const scene::SpacePoseKeys&) { return space_panel_drawing(stage, i, selection); }},
+        panel.keys);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,
                         "the figure has non-finite coordinates (the motion overflows)");

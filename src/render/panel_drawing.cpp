@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/overloaded.hpp"
 #include "analysis/arrow_distance.hpp"
 #include "analysis/audit.hpp"
 #include "analysis/comparison.hpp"
@@ -68,7 +69,10 @@ class PanelBuilder {
         scene_(stage.scene()),
         panel_(stage.panel(index)),
         selection_(selection),
-        motion_(built(stage, index)) {}
+        motion_(built(stage, index)),
+        track_(track_of(stage.scene(), panel_)),
+        keyframes_(keyframes_of(panel_)),
+        points_(points_of(panel_)) {}
 
   Drawing build() {
     const bool own = panel_.layers.has_value();
@@ -79,7 +83,7 @@ class PanelBuilder {
                               std::holds_alternative<scene::LabelLayer>(layers[i]) ||
                               std::holds_alternative<scene::LegendLayer>(layers[i]) ||
                               std::holds_alternative<scene::MeasuresLayer>(layers[i]);
-      if (!panel_.points.empty() && !for_points) {
+      if (!points_.empty() && !for_points) {
         fail(layer_, "this layer draws a motion of keyframes, and the panel has timed \"points\": draw them "
                      "with \"point-trajectory\" (labels and legends are fine too)");
       }
@@ -95,6 +99,24 @@ class PanelBuilder {
     throw RenderError(scene_.path, pointer,
                       elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
+
+  // The panel's method, and its keyframes or points (the other empty).
+  static const scene::TrackMethod& track_of(const scene::Scene& scene, const scene::Panel& panel) {
+    if (const scene::TrackMethod* track = scene::track_method(panel.keys)) return *track;
+    throw RenderError(scene.path, panel.pointer, "arrow layers draw keyframes or points; this panel has poses");
+  }
+  static const std::vector<Keyframe>& keyframes_of(const scene::Panel& panel) {
+    static const std::vector<Keyframe> kNone;
+    const auto* given = std::get_if<scene::KeyframeKeys>(&panel.keys);
+    return given != nullptr ? given->keyframes : kNone;
+  }
+  static const std::vector<TimedPoint>& points_of(const scene::Panel& panel) {
+    static const std::vector<TimedPoint> kNone;
+    const auto* given = std::get_if<scene::PointKeys>(&panel.keys);
+    return given != nullptr ? given->points : kNone;
+  }
+  // The arrow that carries the shapes (PITA Sec. 7.1).
+  Arrow handle() const { return std::get<scene::KeyframeKeys>(panel_.keys).handle(); }
 
   static const motion::SceneMotion& built(const motion::Stage& stage, std::size_t index) {
     try {
@@ -135,19 +157,20 @@ class PanelBuilder {
   // A pattern layer with its own "method" or "options" draws the motion of
   // a copy of the panel that has them (N57); its errors are the layer's.
   motion::SceneMotion layer_motion(const scene::PatternLayer& layer) const {
-    const MethodOptions options = layer.options.over(panel_.options);
+    const MethodOptions options = layer.options.over(track_.options);
     const scene::Panel own = motion::layer_panel(panel_, layer.method, options);
     // An option the layer's method does not read would change nothing: refused.
+    const Method drawn = scene::track_method(own.keys)->method;
     const bool chained =
-        own.chain.has_value() || own.keyframes.size() > static_cast<std::size_t>(info(own.method).keyframe_count);
+        track_.chain.has_value() || keyframes_.size() > static_cast<std::size_t>(info(drawn).keyframe_count);
     for (const MethodOptionKey& key : kMethodOptionKeys) {
-      if ((layer.options.given & key.option) == 0U || reads_option(own.method, key.option, chained)) continue;
+      if ((layer.options.given & key.option) == 0U || reads_option(drawn, key.option, chained)) continue;
       std::vector<std::string> readers;
       for (const MethodInfo& method : all_methods()) {
         if (reads_option(method.method, key.option, false)) readers.emplace_back(method.id);
       }
       fail(layer_ + "/options/" + std::string(key.name),
-           fmt::format("{} does not read \"{}\", so it would change nothing here; {} read{} it", method_name(own.method),
+           fmt::format("{} does not read \"{}\", so it would change nothing here; {} read{} it", method_name(drawn),
                        key.name, fmt::join(readers, ", "), readers.size() == 1 ? "s" : ""));
     }
     try {
@@ -164,7 +187,7 @@ class PanelBuilder {
         layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times;
     const std::vector<Arrow> pattern = own ? frames(layer_motion(layer), times) : frames(times);
     // A dot's radius: a fixed share of the first keyframe's magnitude.
-    const double dot = 0.015 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
+    const double dot = 0.015 * std::max(keyframes_.front().arrow.m, 1e-300);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
       const Arrow& frame = pattern[i];
       const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};
@@ -192,7 +215,7 @@ class PanelBuilder {
   void add(const scene::ShapesLayer& layer) {
     const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
     for (std::size_t i = 0; i < pattern.size(); ++i) {
-      for (Shape& shape : carried_shapes(panel_.shapes, carrier(panel_.handle, pattern[i]), layer,
+      for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer,
                                          scene_.canvas.y_up, fade(i, pattern.size()))) {
         push(static_cast<int>(i), std::move(shape));
         drawing_.items.back().moving = selection_ != nullptr;
@@ -201,8 +224,8 @@ class PanelBuilder {
   }
 
   void add(const scene::KeyframesLayer& layer) {
-    for (std::size_t i = 0; i < panel_.keyframes.size(); ++i) {
-      const Arrow& key = panel_.keyframes[i].arrow;
+    for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+      const Arrow& key = keyframes_[i].arrow;
       const Color color = layer.colors[i % layer.colors.size()];
       const LineStyle line{color, layer.width, layer.opacity, {}};
       if (layer.winding) {
@@ -271,11 +294,11 @@ class PanelBuilder {
   void add(const scene::DiscrepancyLayer& layer) {
     const std::vector<double> times = layer_times(panel_, layer.samples, std::nullopt);
     const std::vector<Arrow> pattern = frames(times);
-    const Method method = layer.method.value_or(panel_.method);
+    const Method method = layer.method.value_or(track_.method);
     for (std::size_t i = 0; i < pattern.size(); ++i) {
       std::optional<double> discrepancy;
       try {
-        discrepancy = analysis::frame_discrepancy(layer.predictor, method, panel_.options, times, pattern, i);
+        discrepancy = analysis::frame_discrepancy(layer.predictor, method, track_.options, times, pattern, i);
       } catch (const std::exception& error) {
         fail(layer_, fmt::format("cannot predict the frame at t = {}: {}", times[i], error.what()));
       }
@@ -296,7 +319,7 @@ class PanelBuilder {
     } catch (const motion::NoMotion& error) {
       fail(layer_, error.reason());
     } catch (const std::invalid_argument& error) {
-      fail(layer_, fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
+      fail(layer_, fmt::format("cannot plot the distance of {}: {}", scene::method_id(panel_.keys), error.what()));
     }
   }
 
@@ -335,7 +358,7 @@ class PanelBuilder {
         push(-1, std::move(shape));
       }
     }
-    push(-1, ArrowShape{panel_.handle.p, panel_.handle.q(), LineStyle{layer.color, layer.width, 1.0, {}}});
+    push(-1, ArrowShape{handle().p, handle().q(), LineStyle{layer.color, layer.width, 1.0, {}}});
   }
 
   // The derivatives of D at `times`; a stencil node where the motion does not
@@ -386,7 +409,7 @@ class PanelBuilder {
     const std::vector<double> times = layer_times(panel_, layer.samples, layer.range);
     std::optional<Point> global;
     if (layer.center == scene::CenterKind::global) {
-      if (panel_.method != Method::P7 || motion_.chain()) {
+      if (track_.method != Method::P7 || motion_.chain()) {
         fail(layer_ + "/center", fmt::format("\"global\" is P7's fixed point (Eq. 35-36); the panel's method is {}: "
                                              "use \"acceleration\" or \"velocity\" (instantaneous centers)",
                                              motion::method_label(scene_, panel_)));
@@ -395,7 +418,7 @@ class PanelBuilder {
       // f at infinity (P7 degenerate to P1's parabola): nothing to draw.
       if (!global) return;
     }
-    const double dot = 0.025 * std::max(panel_.keyframes.front().arrow.m, 1e-300);
+    const double dot = 0.025 * std::max(keyframes_.front().arrow.m, 1e-300);
     int index = 0;
     for (const analysis::FrameDerivatives& d : derivatives(times)) {
       std::optional<Point> center = global;
@@ -439,9 +462,9 @@ class PanelBuilder {
           const double angle = analysis::vector_angle(stage_, index_, name.method, name.t);
           if (!std::isfinite(angle)) {
             fail(at, fmt::format("the angle at t = {} is undefined: the frame vector of {} or of {} vanishes there",
-                                 name.t, panel_.method_name, entry_of(name.method).id));
+                                 name.t, scene::method_id(panel_.keys), entry_of(name.method).id));
           }
-          lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", panel_.method_name, entry_of(name.method).id,
+          lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
                                  name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
         } else {
           others.push_back(name);
@@ -521,17 +544,17 @@ class PanelBuilder {
     if (!std::isfinite(distance)) fail(layer_, "the distance between the two patterns is not finite");
     const Color text{0.1, 0.1, 0.1, 1.0};
     if (selection_ == nullptr) {
-      add_lines({{text, fmt::format("max |{} \u2212 {}| = {:.3g}", panel_.method_name, layer.method_name, distance)}},
+      add_lines({{text, fmt::format("max |{} \u2212 {}| = {:.3g}", scene::method_id(panel_.keys), layer.method_name, distance)}},
                 layer.at, layer.corner, layer.size, text);
     }
   }
 
   void add(const scene::PointTrajectoryLayer& layer) {
-    if (panel_.points.empty()) {
+    if (points_.empty()) {
       fail(layer_, "a point-trajectory draws a curve through timed \"points\"; this panel has keyframes");
     }
-    const double from = layer.range ? layer.range->from : panel_.points.front().t;
-    const double to = layer.range ? layer.range->to : panel_.points.back().t;
+    const double from = layer.range ? layer.range->from : points_.front().t;
+    const double to = layer.range ? layer.range->to : points_.back().t;
     std::vector<Point> path;
     path.reserve(static_cast<std::size_t>(layer.samples));
     if (layer.curve == PointCurve::pita) {
@@ -560,14 +583,14 @@ class PanelBuilder {
     push(-1, Polyline{std::move(path), false, layer.line});
     if (!layer.dots) return;
     // Dots at the timed points, sized by the points' spread.
-    Point low = panel_.points.front().p, high = low;
-    for (const TimedPoint& point : panel_.points) {
+    Point low = points_.front().p, high = low;
+    for (const TimedPoint& point : points_) {
       low = {std::min(low.real(), point.p.real()), std::min(low.imag(), point.p.imag())};
       high = {std::max(high.real(), point.p.real()), std::max(high.imag(), point.p.imag())};
     }
     const double radius = 0.012 * std::max(std::abs(high - low), 1e-300);
-    for (std::size_t i = 0; i < panel_.points.size(); ++i) {
-      push(static_cast<int>(i), Circle{panel_.points[i].p, radius, layer.line, layer.line.color});
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      push(static_cast<int>(i), Circle{points_[i].p, radius, layer.line, layer.line.color});
     }
   }
 
@@ -580,9 +603,9 @@ class PanelBuilder {
         break;
       }
     }
-    for (std::size_t i = 0; i < panel_.keyframes.size(); ++i) {
+    for (std::size_t i = 0; i < keyframes_.size(); ++i) {
       legend.entries.push_back({colors.colors[i % colors.colors.size()],
-                                fmt::format("{}  t = {}", keyframe_name(i), panel_.keyframes[i].t)});
+                                fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
     }
     // A panel of points: one entry per curve drawn, in its colour.
     for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
@@ -603,7 +626,7 @@ class PanelBuilder {
         paths.push_back({path->line.color, trajectory_name(path->point), path->line.dash});
       } else if (pattern != nullptr && (!pattern->label.empty() || pattern->method || !pattern->options.empty())) {
         overlays.push_back({pattern->line.color,
-                            pattern->label.empty() ? method_name(pattern->method.value_or(panel_.method))
+                            pattern->label.empty() ? method_name(pattern->method.value_or(track_.method))
                                                    : pattern->label,
                             pattern->line.dash});
       } else if (pattern != nullptr && !pattern_seen) {
@@ -612,7 +635,7 @@ class PanelBuilder {
       }
     }
     if (overlays.empty() || pattern_seen) {
-      legend.entries.push_back({method_color, method_name(panel_.method)});
+      legend.entries.push_back({method_color, method_name(track_.method)});
     }
     legend.entries.insert(legend.entries.end(), overlays.begin(), overlays.end());
     legend.entries.insert(legend.entries.end(), paths.begin(), paths.end());
@@ -625,6 +648,9 @@ class PanelBuilder {
   const scene::Panel& panel_;
   const FrameSelection* selection_ = nullptr;
   const motion::SceneMotion& motion_;
+  const scene::TrackMethod& track_;
+  const std::vector<Keyframe>& keyframes_;
+  const std::vector<TimedPoint>& points_;
   std::string layer_;
   Drawing drawing_;
 };
@@ -638,10 +664,21 @@ RenderError::RenderError(const std::string& file, const std::string& pointer,
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {
   // The least and greatest knots (keyframes "as-given" may come in any order).
-  const auto [first, last] = std::minmax_element(panel.keyframes.begin(), panel.keyframes.end(),
-                                                 [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
-  const double from = range ? range->from : first->t;
-  const double to = range ? range->to : last->t;
+  double first = 0.0, last = 0.0;
+  const auto knots = [&](const auto& items) {
+    if (items.empty()) return;
+    const auto [low, high] = std::minmax_element(items.begin(), items.end(),
+                                                 [](const auto& a, const auto& b) { return a.t < b.t; });
+    first = low->t;
+    last = high->t;
+  };
+  std::visit(overloaded{[&](const scene::KeyframeKeys& given) { knots(given.keyframes); },
+                        [&](const scene::PointKeys& given) { knots(given.points); },
+                        [&](const scene::PlanePoseKeys& given) { knots(given.poses); },
+                        [&](const scene::SpacePoseKeys& given) { knots(given.poses); }},
+             panel.keys);
+  const double from = range ? range->from : first;
+  const double to = range ? range->to : last;
   return motion::uniform_times(from, to, samples.value_or(panel.samples));
 }
 

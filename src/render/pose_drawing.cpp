@@ -37,7 +37,8 @@ constexpr int kFieldCurveSamples = 257;
 class PoseBuilder {
  public:
   PoseBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
-      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection) {}
+      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection),
+        keys_(keys_of(stage.scene(), stage.panel(index))) {}
 
   Drawing build() {
     const bool own = panel_.pose_layers.has_value();
@@ -50,6 +51,12 @@ class PoseBuilder {
   }
 
  private:
+  // The panel's poses (a panel of another kind is not drawn here).
+  static const scene::PlanePoseKeys& keys_of(const scene::Scene& scene, const scene::Panel& panel) {
+    if (const auto* keys = std::get_if<scene::PlanePoseKeys>(&panel.keys)) return *keys;
+    throw RenderError(scene.path, panel.pointer, "these layers draw poses; this panel has none of this kind");
+  }
+
   [[noreturn]] void fail(const std::string& reason) const {
     const bool elsewhere = !panel_.pointer.empty() && !layer_.starts_with(panel_.pointer);
     throw RenderError(scene_.path, layer_,
@@ -59,7 +66,7 @@ class PoseBuilder {
   // The panel's motion, from the stage, when a layer needs it (layers such
   // as "existence" draw without poses).
   const motion::SceneMotion& motion() const {
-    if (panel_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
+    if (keys_.poses.empty()) fail("this layer draws a motion, and the panel has no poses");
     try {
       return stage_.motion(index_);
     } catch (const motion::NoMotion& error) {  // at the poses (or panel) it blames
@@ -121,9 +128,9 @@ class PoseBuilder {
   // first pose (figure.hpp, VersusLayer).
   void add(const scene::VersusLayer& layer) {
     const PoseMethodInfo& about = info(layer.method);
-    const auto count = static_cast<int>(panel_.poses.size());
+    const auto count = static_cast<int>(keys_.poses.size());
     if (count < about.min_poses || count > about.max_poses) {
-      fail(count_reason(layer.method, panel_.poses.size()));
+      fail(count_reason(layer.method, keys_.poses.size()));
     }
     std::optional<motion::SceneMotion> motion;
     try {
@@ -141,7 +148,7 @@ class PoseBuilder {
       ts = motion::uniform_times(from, to, layer.samples.value_or(panel_.samples));
     }
     const scene::ShapesLayer style{layer.line, layer.fill, layer.fill_opacity, std::nullopt, std::nullopt};
-    const Affine2 first = panel_.poses.front().pose;
+    const Affine2 first = keys_.poses.front().pose;
     for (std::size_t i = 0; i < ts.size(); ++i) {
       Affine2 pose;
       try {
@@ -176,7 +183,7 @@ class PoseBuilder {
   }
 
   void add(const scene::PosesLayer& layer) {
-    const std::vector<TimedPose>& poses = panel_.poses;
+    const std::vector<TimedPose>& poses = keys_.poses;
     if (poses.empty()) fail("this layer draws the poses, and the panel has no poses");
     const auto draw = [&](int index, const Affine2& pose, Color color) {
       const LineStyle line{color, layer.width, 1.0, {}};
@@ -192,12 +199,12 @@ class PoseBuilder {
     // SAM Fig. 13's green blocks: the poses the last of the panel's four-point
     // subdivision steps inserts, every other one of the subdivided sequence
     // (subdivide_four_point keeps the old poses at the even places; N43).
-    if (layer.inserted && panel_.pose_method == PoseMethod::four_point && panel_.subdivisions > 0) {
+    if (layer.inserted && keys_.method == PoseMethod::four_point && keys_.subdivisions > 0) {
       (void)motion();  // the panel's motion, or its error, first
       std::vector<Affine2> controls;
       for (const TimedPose& pose : poses) controls.push_back(pose.pose);
       try {
-        for (int step = 0; step < panel_.subdivisions; ++step) controls = subdivide_four_point(controls);
+        for (int step = 0; step < keys_.subdivisions; ++step) controls = subdivide_four_point(controls);
       } catch (const NoRealLogarithm& error) {
         fail(fmt::format("the four-point subdivision needs a SAM that does not exist: {}", error.what()));
       }
@@ -262,7 +269,7 @@ class PoseBuilder {
 
   // Fig. 11: the shapes at sam_patch(A, B, C, D, i/(columns-1), j/(rows-1)).
   void add(const scene::PatchLayer& layer) {
-    const std::vector<TimedPose>& poses = panel_.poses;
+    const std::vector<TimedPose>& poses = keys_.poses;
     const std::size_t needed = layer.regular ? 3 : 4;
     if (poses.size() < needed) {
       fail(fmt::format("a patch takes the panel's first {} poses as corners (top left, top right, "
@@ -304,11 +311,11 @@ class PoseBuilder {
     const std::vector<double> marks = times(std::nullopt, std::nullopt);
     const std::vector<double> samples = times(layer.samples, std::nullopt);
     std::vector<PoseMethod> methods = layer.methods;
-    if (methods.empty()) methods.push_back(panel_.pose_method);
+    if (methods.empty()) methods.push_back(keys_.method);
     std::vector<AreaSeries> series;
     for (std::size_t k = 0; k < methods.size(); ++k) {
       const PoseMethodInfo& about = info(methods[k]);
-      const auto count = static_cast<int>(panel_.poses.size());
+      const auto count = static_cast<int>(keys_.poses.size());
       if (count < about.min_poses || count > about.max_poses) {
         fail(fmt::format("methods/{}: {} takes {} to {} poses; the panel has {}", k, about.id, about.min_poses,
                          about.max_poses, count));
@@ -334,7 +341,7 @@ class PoseBuilder {
     } catch (const motion::NoMotion& error) {
       fail(error.reason());
     } catch (const std::invalid_argument& error) {
-      fail(fmt::format("cannot plot the distance of {}: {}", panel_.method_name, error.what()));
+      fail(fmt::format("cannot plot the distance of {}: {}", scene::method_id(panel_.keys), error.what()));
     }
   }
 
@@ -342,14 +349,14 @@ class PoseBuilder {
   // grid, its integral curves through every `curves`-th node, the fixed point,
   // and the measured agreement of the curves with the field.
   void add(const scene::FieldLayer& layer) {
-    if (panel_.pose_method != PoseMethod::sam) {
+    if (keys_.method != PoseMethod::sam) {
       fail(fmt::format("a field layer draws the stationary velocity field of a SAM; the panel's method is {}",
-                       panel_.method_name));
+                       scene::method_id(panel_.keys)));
     }
     const double first = motion().first(), last = motion().last();
     std::optional<SamVelocityField> field;
     try {
-      field.emplace(SamVelocityField::between(panel_.poses.front().pose, panel_.poses.back().pose));
+      field.emplace(SamVelocityField::between(keys_.poses.front().pose, keys_.poses.back().pose));
     } catch (const NoRealLogarithm& error) {
       fail(error.what());
     }
@@ -525,6 +532,7 @@ class PoseBuilder {
   const scene::Scene& scene_;
   const scene::Panel& panel_;
   const FrameSelection* selection_ = nullptr;
+  const scene::PlanePoseKeys& keys_;
   std::string layer_;
   Drawing drawing_;
 };

@@ -54,7 +54,8 @@ struct Face {
 class SpaceBuilder {
  public:
   SpaceBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
-      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection) {}
+      : stage_(stage), index_(index), scene_(stage.scene()), panel_(stage.panel(index)), selection_(selection),
+        keys_(keys_of(stage.scene(), stage.panel(index))) {}
 
   Drawing build() {
     projection_.emplace(make_projection());
@@ -66,6 +67,12 @@ class SpaceBuilder {
   }
 
  private:
+  // The panel's poses (a panel of another kind is not drawn here).
+  static const scene::SpacePoseKeys& keys_of(const scene::Scene& scene, const scene::Panel& panel) {
+    if (const auto* keys = std::get_if<scene::SpacePoseKeys>(&panel.keys)) return *keys;
+    throw RenderError(scene.path, panel.pointer, "these layers draw poses; this panel has none of this kind");
+  }
+
   [[noreturn]] void fail(const std::string& pointer, const std::string& reason) const {
     throw RenderError(scene_.path, pointer, reason);
   }
@@ -100,7 +107,7 @@ class SpaceBuilder {
       target = *scene_.camera.target;
     } else {
       double count = 0.0;
-      for (const TimedPose3& pose : panel_.poses3) {
+      for (const TimedPose3& pose : keys_.poses) {
         for (const scene::Solid& solid : scene_.solids) {
           for (const Vector3d& v : solid.vertices) {
             target += apply(pose.pose, v);
@@ -201,11 +208,11 @@ class SpaceBuilder {
 
   void add(const scene::PosesLayer& layer) {
     std::vector<Face> faces;
-    for (std::size_t i = 0; i < panel_.poses3.size(); ++i) {
+    for (std::size_t i = 0; i < keys_.poses.size(); ++i) {
       const Color color = layer.colors[i % layer.colors.size()];
       const LineStyle line{color, layer.width, 1.0, {}};
       for (const scene::Solid& solid : scene_.solids) {
-        solid_faces(solid, panel_.poses3[i].pose, lightened(color, 0.55), line, 1.0, static_cast<int>(i), faces);
+        solid_faces(solid, keys_.poses[i].pose, lightened(color, 0.55), line, 1.0, static_cast<int>(i), faces);
       }
     }
     paint(std::move(faces), false);
@@ -245,7 +252,7 @@ class SpaceBuilder {
 
   // SAM paper Fig. 11 in space: the solids at sam_patch(A, B, C, D, u, v).
   void add(const scene::PatchLayer& layer) {
-    const std::vector<TimedPose3>& poses = panel_.poses3;
+    const std::vector<TimedPose3>& poses = keys_.poses;
     const std::size_t needed = layer.regular ? 3 : 4;
     if (poses.size() < needed) {
       fail(layer_, fmt::format("a patch takes the scene's first {} poses as corners; the scene has {}", needed,
@@ -289,6 +296,7 @@ class SpaceBuilder {
   const scene::Scene& scene_;
   const scene::Panel& panel_;
   const FrameSelection* selection_;
+  const scene::SpacePoseKeys& keys_;
   std::optional<Projection> projection_;
   Drawing drawing_;
   std::string layer_;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/limits.hpp"
+#include "core/overloaded.hpp"
 
 #include "scene/animation_reader.hpp"
 #include "scene/figure_reader.hpp"
@@ -33,19 +34,20 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
       const std::string at = where + "/layers/" + std::to_string(i);
       const auto* curve = std::get_if<PointTrajectoryLayer>(&layers[i]);
       const bool anywhere = std::holds_alternative<LabelLayer>(layers[i]) || std::holds_alternative<LegendLayer>(layers[i]);
-      if (panel.points.empty() && curve != nullptr) {
+      const auto* given = std::get_if<PointKeys>(&panel.keys);
+      if (given == nullptr && curve != nullptr) {
         reader.fail(at + "/type", "a point-trajectory draws a curve through timed \"points\"; this panel has "
                                   "keyframes" + in_panel);
       }
-      if (!panel.points.empty() && curve == nullptr && !anywhere) {
+      if (given != nullptr && curve == nullptr && !anywhere) {
         reader.fail(at + "/type", "this layer draws a motion of keyframes, and the panel has timed \"points\": "
                                   "draw them with \"point-trajectory\" (labels and legends are fine too)" + in_panel);
       }
       if (curve != nullptr && curve->curve != PointCurve::pita &&
-          panel.points.size() > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
+          given != nullptr && given->points.size() > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
         reader.fail(at + "/curve", fmt::format("the {} curve takes at most {} points (got {}){}",
                                                info(curve->curve).name, limits::kMaxNevillePoints,
-                                               panel.points.size(), in_panel));
+                                               given->points.size(), in_panel));
       }
     }
   }
@@ -83,11 +85,10 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
 
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a method such as \"P6\")");
-  scene.method = reader.method(*method, "/method");
-  scene.method_name = std::string(info(scene.method).id);
-
+  TrackMethod track;
+  track.method = reader.method(*method, "/method");
   if (const Json* options = JsonReader::member(document, "options")) {
-    scene.options = reader.options(*options, "/options", MethodOptions{});
+    track.options = reader.options(*options, "/options", MethodOptions{});
   }
 
   const Json* keyframes = JsonReader::member(document, "keyframes");
@@ -98,8 +99,9 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   if (keyframes == nullptr && points == nullptr) {
     reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
   }
+  KeyframeKeys arrows{track};
   if (keyframes != nullptr) {
-    scene.keyframes = reader.keyframes(*keyframes, "/keyframes", scene.method, &scene.keyframes_to, scene.options.knots);
+    arrows.keyframes = reader.keyframes(*keyframes, "/keyframes", track.method, &arrows.keyframes_to, track.options.knots);
   }
   // Shapes carried by the frames (Sec. 7.1): drawn in the handle's frame.
   if (const Json* shapes = JsonReader::member(document, "shapes")) {
@@ -111,19 +113,21 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* handle = JsonReader::member(document, "handle")) {
     if (points != nullptr) reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
-    scene.handle = reader.arrow(*handle, "/handle");
+    arrows.given_handle = reader.arrow(*handle, "/handle");
   }
   if (points != nullptr) {
-    scene.points = reader.points(*points, "/points");
+    PointKeys curve{track};
+    curve.points = reader.points(*points, "/points");
     if (JsonReader::member(document, "timing") != nullptr) {
       reader.fail("/timing", "timing paces keyframes and poses; a scene of \"points\" has none");
     }
+    scene.keys = std::move(curve);
+  } else {
+    scene.keys = std::move(arrows);
   }
-  // A curve through n points chains n - 1 edge arrows (docs/paper-notes.md N34).
-  const std::size_t track = points != nullptr ? scene.points.size() - 1 : scene.keyframes.size();
   if (const Json* chain = JsonReader::member(document, "chain")) {
-    scene.chain = reader.chain(*chain, "/chain");
-    reader.check_chain(scene.method, scene.chain, track, "/chain");
+    track_method(scene.keys)->chain = reader.chain(*chain, "/chain");
+    check_track_chain(reader, scene.keys, "/chain");
   }
 
   if (const Json* samples = JsonReader::member(document, "samples")) {
@@ -142,7 +146,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
     scene.layers = detail::read_layers(reader, *layers, "/layers");
-  } else if (!scene.points.empty()) {
+  } else if (std::holds_alternative<PointKeys>(scene.keys)) {
     scene.layers = {PointTrajectoryLayer{}};
   } else {
     scene.layers = {PatternLayer{}, KeyframesLayer{}};
@@ -156,7 +160,10 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
-                                  [](const Panel& panel) { return !panel.keyframes_to.empty(); });
+                                  [](const Panel& panel) {
+                                    const auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
+                                    return arrows != nullptr && !arrows->keyframes_to.empty();
+                                  });
   if (const Json* animation = JsonReader::member(document, "animation")) {
     scene.animation = detail::read_animation(reader, *animation, "/animation", moving);
     scene.has_animation = true;

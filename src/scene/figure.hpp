@@ -18,6 +18,7 @@
 #include "core/pose_motion.hpp"
 #include "scene/limits.hpp"
 #include "scene/measure_name.hpp"
+#include "scene/motion_keys.hpp"
 #include "scene/timing.hpp"
 
 namespace pita::scene {
@@ -553,21 +554,10 @@ struct Camera {
 struct Panel {
   std::string title;                   // "" = no title; default for a panel given by
                                        // its method: "P6 La-LP"
-  Method method = Method::P6;
-  std::string method_name;             // canonical id, "P6"
-  MethodOptions options;
-  std::vector<Keyframe> keyframes;
-  std::optional<Chain> chain;          // the scene's unless the panel gives "chain"
-  // Moving keyframes (PITA Sec. 7.4): keyframe i runs from keyframes[i].arrow
-  // (tau = 0) to keyframes_to[i] (tau = 1) by the steady morph SMA. Empty when
-  // no keyframe moves; else as long as `keyframes`.
-  std::vector<Arrow> keyframes_to;
-  // The arrow drawn over the shapes (Sec. 7.1): each frame carries the shapes
-  // by the similarity taking it onto D(t). Default: the first keyframe.
-  Arrow handle;
-  // "points": timed points instead of keyframes (PITA Sec. 7.6), at least 4;
-  // drawn by point-trajectory layers. Empty when the panel has keyframes.
-  std::vector<TimedPoint> points;
+  // What the panel's motion is made of (the scene's unless the panel gives
+  // its own method, keyframes, points or poses); its alternative is the kind
+  // of the panel's motion.
+  MotionKeys keys;
   int samples = 9;
   // Where `samples` came from: "/panels/2/samples", the scene's "/samples",
   // or "" for the default (what the render budget's messages name).
@@ -575,21 +565,16 @@ struct Panel {
   std::string pointer;                 // JSON Pointer of the panel ("" = the scene itself)
   // JSON Pointer that errors of the panel's motion name: its own keyframes or
   // poses, else the panel (its method with the scene's keyframes), else the
-  // scene's "/keyframes" or "/poses".
+  // scene's "/keyframes", "/points" or "/poses".
   std::string motion_pointer = "/keyframes";
   // The panel's own "layers", drawn instead of the scene's (Fig. 1 draws
   // different trajectories per panel); nullopt: the scene's layers.
   std::optional<std::vector<Layer>> layers;
 
-  // Pose scenes (Scene::kind == SceneKind::poses): the method and poses of
-  // this panel (the scene's unless overridden), its shapes and layers.
-  PoseMethod pose_method = PoseMethod::sam;
-  std::vector<TimedPose> poses;
-  std::vector<ShapeOutline> shapes;      // also arrow scenes: carried by the handle
+  // Shapes: of a pose scene in the plane, and of an arrow scene (carried by
+  // the handle); the panel's pose layers, nullopt: the scene's.
+  std::vector<ShapeOutline> shapes;
   std::optional<std::vector<PoseLayer>> pose_layers;
-  int subdivisions = kDefaultSubdivisions;  // four-point-SAM
-  int dimension = 2;                         // 3: the scene's poses3, no panels of its own
-  std::vector<TimedPose3> poses3;
 
   // "timing": the scene's unless the panel gives its own.
   Timing timing;

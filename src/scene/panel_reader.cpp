@@ -3,12 +3,14 @@
 #include "scene/scene_readers.hpp"
 
 #include <array>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "core/overloaded.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
@@ -37,26 +39,30 @@ std::string method_title(Method method) {
 // 1-based line and column of the byte at `index` (columns count bytes, as
 // nlohmann's own messages do).
 
-// The panel draws the scene's keyframes with `method`, which must take as many.
-void set_method(const JsonReader& reader, Panel& panel, Method method, const std::string& pointer,
-                const Scene& scene) {
-  if (scene.points.empty() && scene.keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
-    reader.fail(pointer, keyframe_count_reason(method, scene.keyframes.size()) +
-                      " from the scene; give the panel its own \"keyframes\"");
-  }
-  panel.method = method;
-  panel.method_name = std::string(info(method).id);
-  panel.title = method_title(method);
+// The panel's arrow keys: the scene's, which a panel of an arrow scene
+// always has (keyframes or points).
+TrackMethod& track_of(Panel& panel) {
+  if (TrackMethod* track = track_method(panel.keys)) return *track;
+  throw std::logic_error("a pose panel in an arrow scene");
 }
 
+// The panel draws the scene's keyframes with `method`, which must take as many.
+void set_method(const JsonReader& reader, Panel& panel, Method method, const std::string& pointer) {
+  if (const auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
+      arrows != nullptr && arrows->keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
+    reader.fail(pointer, keyframe_count_reason(method, arrows->keyframes.size()) +
+                      " from the scene; give the panel its own \"keyframes\"");
+  }
+  track_of(panel).method = method;
+  panel.title = method_title(method);
+}
 
 // A panel is a method name ("P2") or an object whose fields override the scene's.
 Panel read_panel(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene) {
   Panel panel = scene_panel(scene, pointer);
   if (value.is_string()) {
-    set_method(reader, panel, reader.method(value, pointer), pointer, scene);
-    reader.check_chain(panel.method, panel.chain,
-                       panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1, pointer);
+    set_method(reader, panel, reader.method(value, pointer), pointer);
+    check_track_chain(reader, panel.keys, pointer);
     panel.motion_pointer = pointer;
     return panel;
   }
@@ -69,36 +75,38 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     const std::string at = pointer + "/method";
     const Method found = reader.method(*method, at);
     if (keyframes == nullptr) {
-      set_method(reader, panel, found, at, scene);
+      set_method(reader, panel, found, at);
     } else {
-      panel.method = found;
-      panel.method_name = std::string(info(found).id);
+      track_of(panel).method = found;
       panel.title = method_title(found);
     }
   }
   if (const Json* options = JsonReader::member(value, "options")) {
-    panel.options = reader.options(*options, pointer + "/options", scene.options);
+    TrackMethod& track = track_of(panel);
+    const TrackMethod* own = track_method(scene.keys);
+    track.options = reader.options(*options, pointer + "/options", own != nullptr ? own->options : MethodOptions{});
   }
   const Json* points = JsonReader::member(value, "points");
   if (keyframes != nullptr && points != nullptr) {
     reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
   }
   if (keyframes != nullptr) {
-    panel.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", panel.method, &panel.keyframes_to,
-                                       panel.options.knots);
-    panel.handle = scene.handle.value_or(panel.keyframes.front().arrow);
-    panel.points.clear();
+    KeyframeKeys arrows{track_of(panel)};
+    arrows.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to,
+                                        arrows.options.knots);
+    if (const auto* own = std::get_if<KeyframeKeys>(&scene.keys)) arrows.given_handle = own->given_handle;
+    panel.keys = std::move(arrows);
     panel.motion_pointer = pointer + "/keyframes";
   } else if (points != nullptr) {
-    panel.points = reader.points(*points, pointer + "/points");
-    panel.keyframes.clear();
-    panel.keyframes_to.clear();
+    PointKeys curve{track_of(panel)};
+    curve.points = reader.points(*points, pointer + "/points");
+    panel.keys = std::move(curve);
     panel.motion_pointer = pointer + "/points";
   } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
     panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
   }
   if (const Json* chain = JsonReader::member(value, "chain")) {
-    panel.chain = reader.chain(*chain, pointer + "/chain");
+    track_of(panel).chain = reader.chain(*chain, pointer + "/chain");
   }
   // The panel's method, chain and keyframes together (any of them may be the
   // scene's): the pointer names the panel's own field when it has one.
@@ -108,12 +116,12 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
                            : JsonReader::member(value, "method") != nullptr ? pointer + "/method"
                            : keyframes != nullptr                      ? pointer + "/keyframes"
                                                                        : pointer;
-    reader.check_chain(panel.method, panel.chain,
-                       panel.points.empty() ? panel.keyframes.size() : panel.points.size() - 1, at);
+    check_track_chain(reader, panel.keys, at);
   }
   if (const Json* handle = JsonReader::member(value, "handle")) {
-    if (!panel.points.empty()) reader.fail(pointer + "/handle", "a handle carries shapes with keyframe arrows; this panel has \"points\"");
-    panel.handle = reader.arrow(*handle, pointer + "/handle");
+    auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
+    if (arrows == nullptr) reader.fail(pointer + "/handle", "a handle carries shapes with keyframe arrows; this panel has \"points\"");
+    arrows->given_handle = reader.arrow(*handle, pointer + "/handle");
   }
   if (const Json* title = JsonReader::member(value, "title")) {
     panel.title = reader.string(*title, pointer + "/title");
@@ -133,6 +141,18 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
 }
 
 }  // namespace
+
+void check_track_chain(const JsonReader& reader, const TrackMethod& track, std::size_t length,
+                       const std::string& pointer) {
+  reader.check_chain(track.method, track.chain, length, pointer);
+}
+
+void check_track_chain(const JsonReader& reader, const MotionKeys& keys, const std::string& pointer) {
+  std::visit(overloaded{[&](const KeyframeKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
+                        [&](const PointKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
+                        [](const PlanePoseKeys&) {}, [](const SpacePoseKeys&) {}},
+             keys);
+}
 
 std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
                                const Scene& scene) {
@@ -163,15 +183,18 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
     Panel panel = scene_panel(scene, at);
+    // Panels of a pose scene in the plane (3D scenes have no panels).
+    auto* keys = std::get_if<PlanePoseKeys>(&panel.keys);
+    if (keys == nullptr) reader.fail(pointer, "panels of poses take a scene of poses in the plane");
     bool own_method = false, own_poses = false;
     if (item.is_string()) {
-      panel.pose_method = detail::read_pose_method(reader, item, at);
+      keys->method = detail::read_pose_method(reader, item, at);
       own_method = true;
     } else {
       reader.object(item, at, "a panel (a pose method name or an object)");
       reader.check_fields(item, at, kPosePanelFields);
       if (const Json* method = JsonReader::member(item, "method")) {
-        panel.pose_method = detail::read_pose_method(reader, *method, at + "/method");
+        keys->method = detail::read_pose_method(reader, *method, at + "/method");
         own_method = true;
       }
       if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");
@@ -183,7 +206,7 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
         panel.samples_pointer = at + "/samples";
       }
       if (const Json* subdivisions = JsonReader::member(item, "subdivisions")) {
-        panel.subdivisions =
+        keys->subdivisions =
             reader.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
         own_method = true;  // the motion changes: check it again
       }
@@ -194,29 +217,27 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
         panel.pose_layers = detail::read_pose_layers(reader, *layers, at + "/layers");
       }
       if (const Json* poses = JsonReader::member(item, "poses")) {
-        panel.poses = detail::read_poses(reader, *poses, at + "/poses", scene.reference_triangle,
-                                         panel.pose_method);
+        keys->poses = detail::read_poses(reader, *poses, at + "/poses", scene.reference_triangle, keys->method);
         own_poses = true;
       }
     }
-    panel.method_name = std::string(info(panel.pose_method).id);
     const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
     if (needs_motion(layers)) {
-      const PoseMethodInfo& about = info(panel.pose_method);
+      const PoseMethodInfo& about = info(keys->method);
       const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
-      const auto count = static_cast<int>(panel.poses.size());
-      if (panel.poses.empty()) {
+      const auto count = static_cast<int>(keys->poses.size());
+      if (keys->poses.empty()) {
         reader.fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
                  "scene \"poses\"");
       }
       if (count < about.min_poses || count > about.max_poses) {
         reader.fail(own_method ? at : poses_at,
-             detail::pose_count_reason(panel.pose_method, panel.poses.size()) +
+             detail::pose_count_reason(keys->method, keys->poses.size()) +
                  "; give the panel its own \"poses\"");
       }
       panel.motion_pointer = own_poses ? poses_at : own_method ? at : std::string("/poses");
     }
-    if (panel.title.empty() && own_method) panel.title = std::string(info(panel.pose_method).id);
+    if (panel.title.empty() && own_method) panel.title = std::string(info(keys->method).id);
     panels.push_back(std::move(panel));
   }
   return panels;

@@ -52,7 +52,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   }
   reader.check_fields(document, "", kPoseSceneFields);
   Scene scene;
-  scene.kind = SceneKind::poses;
+  PlanePoseKeys keys;
   scene.path = reader.file();
   if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
   if (const Json* description = JsonReader::member(document, "description")) {
@@ -62,8 +62,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   if (method == nullptr) {
     reader.fail("/method", "missing required field (a pose method such as \"SAM\")");
   }
-  scene.pose_method = detail::read_pose_method(reader, *method, "/method");
-  scene.method_name = std::string(info(scene.pose_method).id);
+  keys.method = detail::read_pose_method(reader, *method, "/method");
   if (const Json* reference = JsonReader::member(document, "reference_triangle")) {
     scene.reference_triangle =
         detail::read_reference_triangle(reader, *reference, "/reference_triangle");
@@ -79,7 +78,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
   }
   if (const Json* subdivisions = JsonReader::member(document, "subdivisions")) {
-    scene.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
+    keys.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
   }
   if (const Json* timing = JsonReader::member(document, "timing")) {
     scene.timing = detail::read_timing(reader, *timing, "/timing");
@@ -96,12 +95,12 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   const Json* panels = JsonReader::member(document, "panels");
   const Json* poses = JsonReader::member(document, "poses");
   if (poses != nullptr) {
-    scene.poses = detail::read_poses(reader, *poses, "/poses", scene.reference_triangle,
-                                     scene.pose_method);
+    keys.poses = detail::read_poses(reader, *poses, "/poses", scene.reference_triangle, keys.method);
   } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
     reader.fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
                    "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");
   }
+  scene.keys = std::move(keys);
   if (panels != nullptr) {
     scene.panels = read_pose_panels(reader, *panels, "/panels", scene);
   } else {

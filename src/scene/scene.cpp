@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/overloaded.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
@@ -36,25 +37,13 @@ std::string located(const std::string& file, const std::string& pointer,
 
 Panel scene_panel(const Scene& scene, std::string pointer) {
   Panel panel;
-  panel.method = scene.method;
-  panel.method_name = scene.method_name;
-  panel.options = scene.options;
-  panel.keyframes = scene.keyframes;
-  panel.keyframes_to = scene.keyframes_to;
-  if (!scene.keyframes.empty()) panel.handle = scene.handle.value_or(scene.keyframes.front().arrow);
-  panel.chain = scene.chain;
-  panel.points = scene.points;
-  panel.pose_method = scene.pose_method;
-  panel.poses = scene.poses;
-  panel.dimension = scene.dimension;
-  panel.poses3 = scene.poses3;
+  panel.keys = scene.keys;
   panel.shapes = scene.shapes;
-  panel.subdivisions = scene.subdivisions;
   panel.timing = scene.timing;
   panel.samples = scene.samples.value_or(kDefaultFigureSamples);
   panel.samples_pointer = scene.samples ? "/samples" : "";
   panel.pointer = std::move(pointer);
-  panel.motion_pointer = scene.kind == SceneKind::poses ? "/poses" : !scene.points.empty() ? "/points" : "/keyframes";
+  panel.motion_pointer = keys_field(scene.keys);
   return panel;
 }
 
@@ -90,26 +79,55 @@ Method resolve_method(std::string_view name) {
   throw std::invalid_argument(pita::unknown_method_reason(name, MotionKind::arrows));
 }
 
-Scene with_method(Scene scene, Method method) {
-  if (scene.kind == SceneKind::poses) {
+namespace {
+
+// The arrow method of `keys` replaced by `method` (the scene's keyframes or
+// points must be enough for it); pose keys are refused.
+void replace_method(const Scene& scene, MotionKeys& keys, Method method) {
+  const auto arrows = [&](TrackMethod& track, std::size_t count, bool keyframes) {
+    if (keyframes && count < static_cast<std::size_t>(info(method).keyframe_count)) {
+      throw SceneError(scene.path, "/keyframes", keyframe_count_reason(method, count));
+    }
+    const JsonReader reader(scene.path);
+    reader.check_chain(method, track.chain, count, "/chain");
+    track.method = method;
+  };
+  const auto poses = [&](const auto&) {
     throw SceneError(scene.path, "/method",
                      fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})",
                                  info(method).id, method_ids(MotionKind::poses)));
+  };
+  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given, given.track_length(), true); },
+                        [&](PointKeys& given) { arrows(given, given.track_length(), false); },
+                        [&](PlanePoseKeys& given) { poses(given); },
+                        [&](SpacePoseKeys& given) { poses(given); }},
+             keys);
+}
+
+// The pose method of `keys` replaced by `method` (`in_space` when the keys are
+// poses of space); arrow keys are refused.
+template <class Pose>
+void replace_pose_method(const Scene& scene, PoseKeys<Pose>& keys, PoseMethod method, bool in_space) {
+  const PoseMethodInfo& about = info(method);
+  if (in_space && !about.in_space) {
+    throw SceneError(scene.path, "/dimension",
+                     fmt::format("method {} moves poses of the plane only; this is a 3D scene", about.id));
   }
-  const MethodInfo& about = info(method);
-  if (scene.points.empty() && scene.keyframes.size() < static_cast<std::size_t>(about.keyframe_count)) {
-    throw SceneError(scene.path, "/keyframes", keyframe_count_reason(method, scene.keyframes.size()));
+  if (keys.poses.empty()) throw SceneError(scene.path, "/poses", "the scene has no poses to interpolate");
+  const auto count = static_cast<int>(keys.poses.size());
+  if (count < about.min_poses || count > about.max_poses) {
+    throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, keys.poses.size()));
   }
-  const JsonReader reader(scene.path);
-  reader.check_chain(method, scene.chain, scene.points.empty() ? scene.keyframes.size() : scene.points.size() - 1,
-                     "/chain");
-  scene.method = method;
-  scene.method_name = std::string(about.id);
+  keys.method = method;
+}
+
+}  // namespace
+
+Scene with_method(Scene scene, Method method) {
+  replace_method(scene, scene.keys, method);
   // The panel that is the scene itself follows it; panels of their own keep theirs.
   for (Panel& panel : scene.panels) {
-    if (!panel.pointer.empty()) continue;
-    panel.method = method;
-    panel.method_name = scene.method_name;
+    if (panel.pointer.empty()) panel.keys = scene.keys;
   }
   return scene;
 }
@@ -123,30 +141,18 @@ std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
 }
 
 Scene with_pose_method(Scene scene, PoseMethod method) {
-  if (scene.kind != SceneKind::poses) {
+  const auto arrows = [&](const auto&) {
     throw SceneError(scene.path, "/method",
                      fmt::format("method {} interpolates poses; this scene has keyframes (arrows)",
                                  info(method).id));
-  }
-  const PoseMethodInfo& about = info(method);
-  if (scene.dimension == 3 && !about.in_space) {
-    throw SceneError(scene.path, "/dimension",
-                     fmt::format("method {} moves poses of the plane only; this is a 3D scene", about.id));
-  }
-  const std::size_t given = scene.dimension == 3 ? scene.poses3.size() : scene.poses.size();
-  if (given == 0) {
-    throw SceneError(scene.path, "/poses", "the scene has no poses to interpolate");
-  }
-  const auto count = static_cast<int>(given);
-  if (count < about.min_poses || count > about.max_poses) {
-    throw SceneError(scene.path, "/poses", detail::pose_count_reason(method, given));
-  }
-  scene.pose_method = method;
-  scene.method_name = std::string(about.id);
+  };
+  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given); },
+                        [&](PointKeys& given) { arrows(given); },
+                        [&](PlanePoseKeys& given) { replace_pose_method(scene, given, method, false); },
+                        [&](SpacePoseKeys& given) { replace_pose_method(scene, given, method, true); }},
+             scene.keys);
   for (Panel& panel : scene.panels) {
-    if (!panel.pointer.empty()) continue;
-    panel.pose_method = method;
-    panel.method_name = scene.method_name;
+    if (panel.pointer.empty()) panel.keys = scene.keys;
   }
   return scene;
 }

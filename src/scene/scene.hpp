@@ -18,55 +18,33 @@
 #include "core/sam_family_motion.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
+#include "scene/motion_keys.hpp"
 #include "scene/read_options.hpp"
 
 namespace pita::scene {
 
 
 
-// Arrow scenes ("keyframes", the PITA paper) or pose scenes ("poses", the SAM
-// paper: README "Pose scenes").
-enum class SceneKind { arrows, poses };
-
-
 struct Scene {
-  SceneKind kind = SceneKind::arrows;
   std::string path;           // where the scene came from (a file name, as given)
   std::string description;    // "" when the scene has none
-  std::string method_name;    // canonical id of the method, "P6"
-  Method method = Method::P6;
-  MethodOptions options;      // every field set (defaults applied)
-  std::vector<Keyframe> keyframes;  // at least as many as the method takes, knots strictly increasing
-  // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4): keyframes[i].arrow
-  // is "from", keyframes_to[i] is "to". Empty when no keyframe moves.
-  std::vector<Arrow> keyframes_to;
-  // "handle" (Sec. 7.1): the arrow over the shapes; nullopt: the first keyframe.
-  std::optional<Arrow> handle;
+  // What the scene's own motion is made of: keyframes (the PITA paper),
+  // points (PITA Sec. 7.6), poses of the plane (the SAM paper) or of space
+  // ("dimension": 3); its alternative is the kind of the scene. Panels start
+  // from it (scene_panel) and may override it within the same family.
+  MotionKeys keys;
   // "animation": how `pita animate` and `pita render --at` play the scene.
   Animation animation;
   bool has_animation = false;       // the scene gave "animation"
-  // "chain": how a track of more keyframes than the method takes is built
-  // (core/chains/chain.hpp); unset: default_chain(method) when there are
-  // more, the method itself when there are as many.
-  std::optional<Chain> chain;
-  // "points": at least 4 timed points instead of keyframes (Sec. 7.6, Fig. 29);
-  // then `keyframes` is empty.
-  std::vector<TimedPoint> points;
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
   Timing timing;                    // "timing": how scene time runs through the motion
 
-  // Pose scenes: method_name is the pose method's id ("SAM"); `method`,
-  // `options` and `keyframes` are unused.
-  PoseMethod pose_method = PoseMethod::sam;
-  std::vector<TimedPose> poses;            // empty when no layer needs a motion
+  // Pose scenes in the plane: the reference triangle of "triangle" poses and
+  // shapes; shapes (arrow scenes: carried by the handle; default none) and layers.
   std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
-  std::vector<ShapeOutline> shapes;        // default: the reference triangle (arrow scenes: none)
+  std::vector<ShapeOutline> shapes;        // pose scenes: default the reference triangle
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
-  int subdivisions = kDefaultSubdivisions; // four-point-SAM: steps, [0, kMaxSubdivisions]
-  // "dimension": 3 (README "3D pose scenes"): poses of space, interpolated by
-  // the SAM family in 3D (PoseMotion3); `poses` is then empty.
-  int dimension = 2;
-  std::vector<TimedPose3> poses3;
+  // Pose scenes in space (README "3D pose scenes").
   std::vector<Solid> solids;  // "shapes" of a 3D scene; default the reference tetrahedron
   Camera camera;
   std::array<Eigen::Vector3d, 4> reference_tetrahedron{Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0),

@@ -30,6 +30,12 @@ std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, cons
 std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
                                     const Scene& scene);
 
+// The chain of keyframes or points checked against their method and the
+// track's length (JsonReader::check_chain), failing at `pointer`.
+void check_track_chain(const JsonReader& reader, const TrackMethod& track, std::size_t length,
+                       const std::string& pointer);
+void check_track_chain(const JsonReader& reader, const MotionKeys& keys, const std::string& pointer);
+
 // "golden": {"number_tolerance", "svg_tolerance", "pixel_tolerance", "max_differing"}.
 void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenTolerances& out);
 

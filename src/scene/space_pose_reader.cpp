@@ -322,8 +322,7 @@ std::vector<TimedPose3> read_space_poses(const JsonReader& reader, const Json& v
 Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   reader.check_fields(document, "", kSpaceSceneFields);
   Scene scene;
-  scene.kind = SceneKind::poses;
-  scene.dimension = 3;
+  SpacePoseKeys keys;
   scene.path = reader.file();
   scene.shapes.clear();
   if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
@@ -332,16 +331,15 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   }
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a pose method such as \"SAM\")");
-  scene.pose_method = read_pose_method(reader, *method, "/method");
-  if (!info(scene.pose_method).in_space) {
+  keys.method = read_pose_method(reader, *method, "/method");
+  if (!info(keys.method).in_space) {
     std::vector<std::string_view> ids;
     for (const PoseMethodInfo& entry : all_pose_methods()) {
       if (entry.in_space) ids.push_back(entry.id);
     }
     reader.fail("/method", fmt::format("method {} moves poses of the plane only; 3D scenes take {}",
-                                       info(scene.pose_method).id, quoted_choices(ids)));
+                                       info(keys.method).id, quoted_choices(ids)));
   }
-  scene.method_name = std::string(info(scene.pose_method).id);
   if (const Json* reference = JsonReader::member(document, "reference_tetrahedron")) {
     scene.reference_tetrahedron = read_reference_tetrahedron(reader, *reference, "/reference_tetrahedron");
   }
@@ -349,14 +347,15 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
   }
   if (const Json* subdivisions = JsonReader::member(document, "subdivisions")) {
-    scene.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
+    keys.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
   }
   const Json* poses = JsonReader::member(document, "poses");
   if (poses == nullptr) {
     reader.fail("/poses", fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}})",
                                       kMatrixShape));
   }
-  scene.poses3 = read_space_poses(reader, *poses, "/poses", scene.reference_tetrahedron, scene.pose_method);
+  keys.poses = read_space_poses(reader, *poses, "/poses", scene.reference_tetrahedron, keys.method);
+  scene.keys = std::move(keys);
   // "timing" as in 2D (README "Timing"); arc_length follows the image of the
   // reference tetrahedron's first point ("p"), second point ("q") or their
   // midpoint ("mid") through space.

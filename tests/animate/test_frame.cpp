@@ -11,6 +11,7 @@
 #include "render/drawing.hpp"
 #include "scene/scene.hpp"
 #include "support/source_paths.hpp"
+#include "support/keys.hpp"
 
 namespace pita::animate {
 namespace {
@@ -96,7 +97,7 @@ TEST(Frame, PatternFrameMovesEverythingButLabels) {
   bool found = false;
   for (const render::Item& item : frame.drawings[0].items) {
     if (const auto* a = std::get_if<render::ArrowShape>(&item.shape)) {
-      found = found || std::abs(a->from - half.keyframes[0].arrow.p) < 1e-12;
+      found = found || std::abs(a->from - arrow_keys(half).keyframes[0].arrow.p) < 1e-12;
     }
   }
   EXPECT_TRUE(found);

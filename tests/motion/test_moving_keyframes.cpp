@@ -8,6 +8,7 @@
 #include "motion/moving_keyframes.hpp"
 #include "motion/scene_motion.hpp"
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::motion {
 namespace {
@@ -26,11 +27,11 @@ double frame_distance(const Arrow& a, const Arrow& b) {
 
 TEST(MovingKeyframes, ReadAsFromAndTo) {
   const scene::Scene scene = scene::parse_scene(kMoving, "moving.json");
-  ASSERT_EQ(scene.keyframes_to.size(), 3u);
-  EXPECT_EQ(scene.keyframes[0].arrow.p, Point(0, 0));
-  EXPECT_EQ(scene.keyframes_to[0].p, Point(0, -3));
+  ASSERT_EQ(arrow_keys(scene).keyframes_to.size(), 3u);
+  EXPECT_EQ(arrow_keys(scene).keyframes[0].arrow.p, Point(0, 0));
+  EXPECT_EQ(arrow_keys(scene).keyframes_to[0].p, Point(0, -3));
   // a keyframe that does not move is its own target
-  EXPECT_EQ(frame_distance(scene.keyframes_to[1], scene.keyframes[1].arrow), 0.0);
+  EXPECT_EQ(frame_distance(arrow_keys(scene).keyframes_to[1], arrow_keys(scene).keyframes[1].arrow), 0.0);
   EXPECT_TRUE(has_moving_keyframes(scene));
   EXPECT_FALSE(has_moving_keyframes(scene::parse_scene(
       R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 0},
@@ -42,11 +43,11 @@ TEST(MovingKeyframes, TauZeroAndOneAreFromAndTo) {
   const scene::Scene scene = scene::parse_scene(kMoving, "moving.json");
   const scene::Scene start = scene_at(scene, 0.0), end = scene_at(scene, 1.0);
   for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_LT(frame_distance(start.keyframes[i].arrow, scene.keyframes[i].arrow), 1e-12) << i;
-    EXPECT_LT(frame_distance(end.keyframes[i].arrow, scene.keyframes_to[i]), 1e-12) << i;
-    EXPECT_EQ(start.keyframes[i].t, scene.keyframes[i].t);
+    EXPECT_LT(frame_distance(arrow_keys(start).keyframes[i].arrow, arrow_keys(scene).keyframes[i].arrow), 1e-12) << i;
+    EXPECT_LT(frame_distance(arrow_keys(end).keyframes[i].arrow, arrow_keys(scene).keyframes_to[i]), 1e-12) << i;
+    EXPECT_EQ(arrow_keys(start).keyframes[i].t, arrow_keys(scene).keyframes[i].t);
   }
-  EXPECT_TRUE(start.keyframes_to.empty());
+  EXPECT_TRUE(arrow_keys(start).keyframes_to.empty());
   EXPECT_FALSE(has_moving_keyframes(start));
 }
 
@@ -55,9 +56,9 @@ TEST(MovingKeyframes, EachMovesByItsSteadyMorph) {
   // with L = ln(mB/mA) + i(wB - wA) (Eq. 19-20), and m, w interpolated
   // geometrically and linearly.
   const scene::Scene scene = scene::parse_scene(kMoving, "moving.json");
-  const Arrow A = scene.keyframes[2].arrow, B = scene.keyframes_to[2];
+  const Arrow A = arrow_keys(scene).keyframes[2].arrow, B = arrow_keys(scene).keyframes_to[2];
   for (const double tau : {0.25, 0.5, 0.8, 1.3}) {
-    const Arrow moved = scene_at(scene, tau).keyframes[2].arrow;
+    const Arrow moved = arrow_keys(scene_at(scene, tau)).keyframes[2].arrow;
     const std::complex<double> L(std::log(B.m / A.m), B.w - A.w);
     const Point p = A.p + (std::exp(tau * L) - 1.0) / (std::exp(L) - 1.0) * (B.p - A.p);
     EXPECT_LT(std::abs(moved.p - p), 1e-12) << tau;
@@ -70,13 +71,13 @@ TEST(MovingKeyframes, PanelsMoveTheirOwnKeyframes) {
   const scene::Scene scene = scene::parse_scene(kMoving, "moving.json");
   const scene::Scene half = scene_at(scene, 0.5);
   ASSERT_EQ(half.panels.size(), 2u);
-  EXPECT_LT(frame_distance(half.panels[0].keyframes[0].arrow, half.keyframes[0].arrow), 1e-15);
-  EXPECT_LT(frame_distance(half.panels[1].keyframes[2].arrow, steady_morph(scene.panels[1].keyframes[2].arrow,
-                                                                           scene.panels[1].keyframes_to[2], 0.5)),
+  EXPECT_LT(frame_distance(arrow_keys(half.panels[0]).keyframes[0].arrow, arrow_keys(half).keyframes[0].arrow), 1e-15);
+  EXPECT_LT(frame_distance(arrow_keys(half.panels[1]).keyframes[2].arrow, steady_morph(arrow_keys(scene.panels[1]).keyframes[2].arrow,
+                                                                           arrow_keys(scene.panels[1]).keyframes_to[2], 0.5)),
             1e-15);
   // The pattern at tau goes through the keyframes at tau.
   const SceneMotion motion = build_motion(half, half.panels[1]);
-  EXPECT_LT(frame_distance(motion.arrow_at(2.0), half.panels[1].keyframes[2].arrow), 1e-9);
+  EXPECT_LT(frame_distance(motion.arrow_at(2.0), arrow_keys(half.panels[1]).keyframes[2].arrow), 1e-9);
 }
 
 }  // namespace

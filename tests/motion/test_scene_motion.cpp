@@ -13,6 +13,7 @@
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::motion {
 namespace {
@@ -41,7 +42,7 @@ TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
   EXPECT_EQ(motion.method_id(), "P6");
   EXPECT_EQ(motion.label(), "P6 (La-LP)");
   EXPECT_EQ(motion.knots(), (std::vector<double>{0.0, 0.25, 1.0}));
-  const auto direct = make_motion(Method::P6, scene.keyframes);
+  const auto direct = make_motion(Method::P6, arrow_keys(scene).keyframes);
   for (double t : {-0.5, 0.0, 0.1, 0.25, 0.7, 1.0, 1.3}) {
     const Arrow a = motion.arrow_at(t), b = direct->at(t);
     EXPECT_EQ(a.p, b.p);
@@ -110,7 +111,7 @@ TEST(SceneMotion, KnotsAsGivenKeepTheOrderWritten) {
     const scene::Scene as_given = scene::parse_scene("{\"method\": \"" + method + "\", " + swapped + "}", "s.json");
     const SceneMotion motion = build_motion(as_given);
     EXPECT_EQ(motion.knots(), (std::vector<double>{0.0, 0.25, 1.0}));
-    for (const Keyframe& k : as_given.keyframes) {
+    for (const Keyframe& k : arrow_keys(as_given).keyframes) {
       const Arrow a = motion.arrow_at(k.t);
       EXPECT_LT(std::abs(a.p - k.arrow.p), 1e-12) << method;
       EXPECT_LT(std::abs(a.q() - k.arrow.q()), 1e-12) << method;
@@ -129,7 +130,7 @@ TEST(SceneMotion, KnotsAsGivenKeepTheOrderWritten) {
 TEST(SceneMotion, EaseOverTheMotionWarpsTheMethodsTime) {
   const scene::Scene scene = arrows(R"(, "timing": {"ease": "ease-in"})");
   const SceneMotion motion = build_motion(scene);
-  const auto direct = make_motion(Method::P6, scene.keyframes);
+  const auto direct = make_motion(Method::P6, arrow_keys(scene).keyframes);
   const Ease in = *find_named_ease("ease-in");
   for (double t : {0.1, 0.25, 0.5, 0.9}) {
     const Arrow a = motion.arrow_at(t), b = direct->at(ease(in, t));
@@ -139,8 +140,8 @@ TEST(SceneMotion, EaseOverTheMotionWarpsTheMethodsTime) {
   // The keyframes at the ends are kept; the middle one is not reached at its knot.
   EXPECT_EQ(motion.arrow_at(0.0).p, direct->at(0.0).p);
   EXPECT_EQ(motion.arrow_at(1.0).w, direct->at(1.0).w);
-  EXPECT_NEAR(std::abs(motion.arrow_at(0.0).p - scene.keyframes[0].arrow.p), 0.0, 1e-15);
-  EXPECT_GT(std::abs(motion.arrow_at(0.25).p - scene.keyframes[1].arrow.p), 1e-3);
+  EXPECT_NEAR(std::abs(motion.arrow_at(0.0).p - arrow_keys(scene).keyframes[0].arrow.p), 0.0, 1e-15);
+  EXPECT_GT(std::abs(motion.arrow_at(0.25).p - arrow_keys(scene).keyframes[1].arrow.p), 1e-3);
   // Outside the knots the warp is the identity.
   EXPECT_EQ(motion.arrow_at(1.5).p, direct->at(1.5).p);
 }
@@ -148,7 +149,7 @@ TEST(SceneMotion, EaseOverTheMotionWarpsTheMethodsTime) {
 TEST(SceneMotion, PerSpanReachesEveryKeyframeAtItsKnot) {
   const scene::Scene scene = arrows(R"(, "timing": {"ease": "sine", "arc_length": "mid", "per": "span"})");
   const SceneMotion motion = build_motion(scene);
-  for (const Keyframe& key : scene.keyframes) {
+  for (const Keyframe& key : arrow_keys(scene).keyframes) {
     const Arrow a = motion.arrow_at(key.t);
     EXPECT_NEAR(std::abs(a.p - key.arrow.p), 0.0, 1e-12) << key.t;
     EXPECT_NEAR(a.w, key.arrow.w, 1e-12) << key.t;
@@ -161,7 +162,7 @@ TEST(SceneMotion, ArcLengthSpacesTheTrackedPointEvenly) {
   const std::vector<Frame> frames = sample_arrows(motion, times);
   // The length of q's path between consecutive frames, measured independently
   // of the table: a polyline of 4000 chords of the unwarped method per step.
-  const auto direct = make_motion(Method::P6, arrows().keyframes);
+  const auto direct = make_motion(Method::P6, arrow_keys(arrows()).keyframes);
   std::vector<double> steps;
   for (std::size_t i = 1; i < times.size(); ++i) {
     const double from = motion.motion_time(times[i - 1]), to = motion.motion_time(times[i]);
@@ -233,7 +234,7 @@ TEST(SceneMotion, PosesAreBuiltOnceWithTheirTiming) {
   const SceneMotion motion = build_motion(scene);
   EXPECT_TRUE(motion.is<PlanePoses>());
   EXPECT_EQ(motion.method_id(), "polySAM");
-  for (const TimedPose& pose : scene.poses) {
+  for (const TimedPose& pose : plane_keys(scene).poses) {
     EXPECT_LT((motion.pose_at(pose.t).L - pose.pose.L).norm(), 1e-12);
     EXPECT_LT((motion.pose_at(pose.t).b - pose.pose.b).norm(), 1e-12);
   }
@@ -316,7 +317,7 @@ TEST(SceneMotion, SpaceScenesPacedByArcLengthMoveThePointEvenly) {
   const SceneMotion motion = build_motion(scene);
   const SceneMotion plain = build_motion(space());
   // Every pose at its knot.
-  for (const TimedPose3& pose : scene.poses3) {
+  for (const TimedPose3& pose : space_keys(scene).poses) {
     const Affine3 at = motion.pose3_at(pose.t);
     EXPECT_LT((at.L - pose.pose.L).norm() + (at.b - pose.pose.b).norm(), 1e-12) << pose.t;
   }

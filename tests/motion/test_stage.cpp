@@ -12,6 +12,7 @@
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::motion {
 namespace {
@@ -110,27 +111,27 @@ TEST(Stage, DerivedMotionsAreThoseOfThePanelsTheyDescribe) {
   const scene::Panel& panel = scene.panels[0];
 
   scene::Panel p1 = panel;
-  p1.method = Method::P1;
+  track_keys(p1).method = Method::P1;
   expect_same_frames(with_method(scene, panel, Method::P1), build_motion(scene, p1));
   EXPECT_EQ(with_method(scene, panel, Method::P1).method_id(), "P1");
 
-  MethodOptions midpoint = panel.options;
+  MethodOptions midpoint = track_keys(panel).options;
   midpoint.anchor = Anchor::midpoint;
   scene::Panel p2 = panel;
-  p2.method = Method::P2;
-  p2.options = midpoint;
-  EXPECT_EQ(layer_panel(panel, Method::P2, midpoint).method, Method::P2);
+  track_keys(p2).method = Method::P2;
+  track_keys(p2).options = midpoint;
+  EXPECT_EQ(track_keys(layer_panel(panel, Method::P2, midpoint)).method, Method::P2);
   expect_same_frames(with_layer_method(scene, panel, Method::P2, midpoint), build_motion(scene, p2));
   // Without a method of its own, the layer keeps the panel's.
   EXPECT_EQ(with_layer_method(scene, panel, std::nullopt, midpoint).method_id(), "P6");
 
   // Other keyframes, without the panel's timing.
   const scene::Panel& timed = scene.panels[1];
-  std::vector<Keyframe> moved = timed.keyframes;
+  std::vector<Keyframe> moved = arrow_keys(timed).keyframes;
   moved[1].arrow.m = 0.9;
   scene::Panel untimed = timed;
   untimed.timing = scene::Timing{};
-  untimed.keyframes = moved;
+  arrow_keys(untimed).keyframes = moved;
   const SceneMotion derived = untimed_with_keyframes(scene, timed, moved);
   expect_same_frames(derived, build_motion(scene, untimed));
   EXPECT_EQ(derived.motion_time(0.1), 0.1) << "no warp";
@@ -139,8 +140,8 @@ TEST(Stage, DerivedMotionsAreThoseOfThePanelsTheyDescribe) {
   // The scene's keyframes under the timed panel's method and timing.
   scene::Panel reference;
   const SceneMotion base = with_scene_keyframes(scene, timed, &reference);
-  EXPECT_EQ(reference.method, Method::P8);
-  EXPECT_EQ(reference.keyframes.size(), scene.keyframes.size());
+  EXPECT_EQ(track_keys(reference).method, Method::P8);
+  EXPECT_EQ(arrow_keys(reference).keyframes.size(), arrow_keys(scene).keyframes.size());
   expect_same_frames(base, build_motion(scene, timed));  // the same keyframes here
 }
 

@@ -5,16 +5,16 @@
 
 #include "core/pitas/registry.hpp"
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::render::test {
 
 inline scene::Panel panel(Method method, std::vector<Keyframe> keyframes, int samples = 9) {
   scene::Panel p;
-  p.method = method;
-  p.method_name = std::string(info(method).id);
-  p.keyframes = std::move(keyframes);
+  track_keys(p).method = method;
+  arrow_keys(p).keyframes = std::move(keyframes);
   p.samples = samples;
-  p.title = p.method_name;
+  p.title = method_id(p.keys);
   return p;
 }
 
@@ -27,9 +27,7 @@ inline std::vector<Keyframe> three_keyframes() {
 inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<scene::Panel> panels) {
   scene::Scene s;
   s.path = "test.json";
-  s.method = panels.front().method;
-  s.method_name = panels.front().method_name;
-  s.keyframes = panels.front().keyframes;
+  s.keys = panels.front().keys;
   s.layers = std::move(layers);
   s.panels = std::move(panels);
   return s;

@@ -8,6 +8,7 @@
 #include "render/panel_drawing.hpp"
 #include "render/strip.hpp"
 #include "render_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::render::test {
 namespace {
@@ -67,7 +68,7 @@ TEST(Banner, OutlinePointsLieInsideTheStrip) {
   const auto* glyphs = std::get_if<FilledPath>(&d.items.at(0).shape);
   ASSERT_NE(glyphs, nullptr);
   ASSERT_GT(glyphs->contours.size(), 10u);
-  const auto motion = make_motion(p.method, p.keyframes);
+  const auto motion = make_motion(track_keys(p).method, arrow_keys(p).keyframes);
   std::vector<Arrow> frames;
   for (int i = 0; i < 21; ++i) frames.push_back(motion->at(i / 20.0));
   const QuadStrip strip(frames);

@@ -19,6 +19,7 @@
 #include "render/panel_drawing.hpp"
 #include "render_support.hpp"
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::render {
 namespace {
@@ -73,12 +74,12 @@ TEST(GuessesLayer, Fig16PrintsEachPitasDiscrepanciesFromTheGuesses) {
   for (const scene::Panel& panel : scene.panels) {
     const Drawing drawing = panel_drawing(scene, panel);
     const std::vector<std::string> lines = printed_lines(drawing);
-    ASSERT_EQ(lines.size(), 2u) << panel.method_name;
+    ASSERT_EQ(lines.size(), 2u) << method_id(panel.keys);
     for (const scene::Guess& guess : layer.guesses) {
-      const Arrow frame = core_frame(panel.method, panel.keyframes, guess.t);
+      const Arrow frame = core_frame(track_keys(panel).method, arrow_keys(panel).keyframes, guess.t);
       const double expected = closed_form_discrepancy(guess.arrow, frame);
       const std::string prefix = "E(" + guess.name + ", D(" + (guess.t == 2.0 ? "2" : "4") + "))";
-      expect_printed(printed_value(lines, prefix), expected, panel.method_name + " " + prefix);
+      expect_printed(printed_value(lines, prefix), expected, method_id(panel.keys) + " " + prefix);
       all.push_back(expected);
       // D(t) is drawn under the guess, from D(t).p to D(t).q.
       bool drawn = false;
@@ -86,7 +87,7 @@ TEST(GuessesLayer, Fig16PrintsEachPitasDiscrepanciesFromTheGuesses) {
         const auto* arrow = std::get_if<ArrowShape>(&item.shape);
         if (arrow && std::abs(arrow->from - frame.p) < 1e-12 && std::abs(arrow->to - frame.q()) < 1e-12) drawn = true;
       }
-      EXPECT_TRUE(drawn) << panel.method_name << ": D(" << guess.t << ") not drawn";
+      EXPECT_TRUE(drawn) << method_id(panel.keys) << ": D(" << guess.t << ") not drawn";
     }
   }
   // The guesses are no PITA's frames: every discrepancy is positive, and they
@@ -102,17 +103,17 @@ TEST(GuessesLayer, Fig18FourMovesBringDQuarterCloseToTheTarget) {
   ASSERT_EQ(target.t, 0.25);
   std::vector<double> distances;
   for (const scene::Panel& panel : scene.panels) {
-    ASSERT_EQ(panel.method, Method::P8);
+    ASSERT_EQ(track_keys(panel).method, Method::P8);
     const std::vector<std::string> lines = printed_lines(panel_drawing(scene, panel));
-    const Arrow frame = core_frame(Method::P8, panel.keyframes, 0.25);
+    const Arrow frame = core_frame(Method::P8, arrow_keys(panel).keyframes, 0.25);
     const double d = endpoint_gap(target.arrow, frame);
     expect_printed(printed_value(lines, "d(E, D(0.25))"), d, "d");
     expect_printed(printed_value(lines, "E(E, D(0.25))"), closed_form_discrepancy(target.arrow, frame), "E");
     distances.push_back(d);
   }
   // Only B moved: A and C are the same in both panels.
-  EXPECT_EQ(scene.panels[0].keyframes[0].arrow.p, scene.panels[1].keyframes[0].arrow.p);
-  EXPECT_EQ(scene.panels[0].keyframes[2].arrow.q(), scene.panels[1].keyframes[2].arrow.q());
+  EXPECT_EQ(arrow_keys(scene.panels[0]).keyframes[0].arrow.p, arrow_keys(scene.panels[1]).keyframes[0].arrow.p);
+  EXPECT_EQ(arrow_keys(scene.panels[0]).keyframes[2].arrow.q(), arrow_keys(scene.panels[1]).keyframes[2].arrow.q());
   EXPECT_GT(distances[0], 0.5);                   // the target is visibly off at first
   EXPECT_LT(distances[1], 0.05);                  // a slight expansion covers it after the moves
   EXPECT_LT(distances[1], distances[0] / 10.0);
@@ -127,11 +128,11 @@ TEST(CompareLayer, FigB30P3EqualsP10UntilATweakOfAwMakesP10Pop) {
   std::vector<double> printed;
   for (std::size_t k = 0; k < 2; ++k) {
     const scene::Panel& panel = scene.panels[k];
-    ASSERT_EQ(panel.method, Method::P3);
+    ASSERT_EQ(track_keys(panel).method, Method::P3);
     double largest = 0.0;
     for (const double t : times) {
-      p3[k].push_back(core_frame(Method::P3, panel.keyframes, t));
-      p10[k].push_back(core_frame(Method::P10, panel.keyframes, t));
+      p3[k].push_back(core_frame(Method::P3, arrow_keys(panel).keyframes, t));
+      p10[k].push_back(core_frame(Method::P10, arrow_keys(panel).keyframes, t));
       largest = std::max(largest, endpoint_gap(p3[k].back(), p10[k].back()));
     }
     printed.push_back(printed_value(printed_lines(panel_drawing(scene, panel)), "max |P3 \u2212 P10|"));
@@ -144,8 +145,8 @@ TEST(CompareLayer, FigB30P3EqualsP10UntilATweakOfAwMakesP10Pop) {
   // Left: identical, to rounding. Right: A.w crossed pi; P3 barely moved
   // (continuous in A.w) while P10 jumped by about its whole extent.
   EXPECT_LT(printed[0], 1e-12);
-  EXPECT_LT(scene.panels[0].keyframes[0].arrow.w, std::numbers::pi);
-  EXPECT_GT(scene.panels[1].keyframes[0].arrow.w, std::numbers::pi);
+  EXPECT_LT(arrow_keys(scene.panels[0]).keyframes[0].arrow.w, std::numbers::pi);
+  EXPECT_GT(arrow_keys(scene.panels[1]).keyframes[0].arrow.w, std::numbers::pi);
   double p3_moved = 0.0, p10_moved = 0.0;
   for (std::size_t i = 0; i < times.size(); ++i) {
     p3_moved = std::max(p3_moved, endpoint_gap(p3[0][i], p3[1][i]));

@@ -12,16 +12,17 @@
 #include "render/panel_drawing.hpp"
 #include "render/spiral.hpp"
 #include "render_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::render::test {
 namespace {
 
 std::vector<Arrow> frames_of(const scene::Panel& p, int n) {
-  const auto motion = make_motion(p.method, p.keyframes, p.options);
+  const auto motion = make_motion(track_keys(p).method, arrow_keys(p).keyframes, track_keys(p).options);
   std::vector<Arrow> frames;
   for (int i = 0; i < n; ++i) {
-    const double t = p.keyframes.front().t +
-                     (p.keyframes.back().t - p.keyframes.front().t) * i / (n - 1);
+    const double t = arrow_keys(p).keyframes.front().t +
+                     (arrow_keys(p).keyframes.back().t - arrow_keys(p).keyframes.front().t) * i / (n - 1);
     frames.push_back(motion->at(t));
   }
   return frames;
@@ -167,7 +168,7 @@ TEST(PatternLayer, RangeExtrapolatesBeyondTheKnots) {
   layer.range = scene::TimeRange{0.0, 1.5};
   const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
   const auto lines = shapes<Polyline>(d);
-  const Arrow predicted = make_motion(Method::P8, p.keyframes)->at(1.5);
+  const Arrow predicted = make_motion(Method::P8, arrow_keys(p).keyframes)->at(1.5);
   EXPECT_NEAR(std::abs(lines.back()->points[0] - predicted.p), 0.0, 1e-12);
 }
 
@@ -176,7 +177,7 @@ TEST(PatternLayer, RangeExtrapolatesBeyondTheKnots) {
 TEST(PatternLayer, OverlayDrawsItsOwnOptionsOverThePanels) {
   const Arrow A{{0.0, 0.0}, 1.6, 1.7}, B{{5.0, 0.0}, 0.4, 1.2};
   scene::Panel p = panel(Method::SMA, {{0.0, A}, {1.0, B}}, 9);
-  p.options.path_mean = MeanKind::arithmetic;
+  track_keys(p).options.path_mean = MeanKind::arithmetic;
   scene::PatternLayer overlay;
   overlay.options.values.magnitude_mean = MeanKind::harmonic;
   overlay.options.given = kMagnitudeMeanOption;
@@ -185,7 +186,7 @@ TEST(PatternLayer, OverlayDrawsItsOwnOptionsOverThePanels) {
   ASSERT_EQ(lines.size(), 9u);
   // The same frames as a panel given both options.
   scene::Panel both = p;
-  both.options.magnitude_mean = MeanKind::harmonic;
+  track_keys(both).options.magnitude_mean = MeanKind::harmonic;
   const auto frames = frames_of(both, 9);
   for (std::size_t i = 0; i < 9; ++i) {
     EXPECT_NEAR(std::abs(lines[i]->points[0] - frames[i].p), 0.0, 1e-12) << i;

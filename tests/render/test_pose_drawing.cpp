@@ -15,6 +15,7 @@
 #include "render/pose_drawing.hpp"
 #include "../core/pose_test_support.hpp"
 #include "support/matrix_functions.hpp"
+#include "support/keys.hpp"
 
 namespace pita::render {
 namespace {
@@ -37,17 +38,15 @@ Point through(const Eigen::Matrix3d& H, Point p) {
 // A SAM scene of two poses of the reference triangle, with `layers`.
 scene::Scene sam_scene(std::vector<scene::PoseLayer> layers, PoseMethod method = PoseMethod::sam) {
   scene::Scene s;
-  s.kind = scene::SceneKind::poses;
   s.path = "test.json";
-  s.pose_method = method;
-  s.method_name = std::string(info(method).id);
-  s.poses = {{0.0, affinity(1.0, 0.2, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(-0.5, -1.4, 5.0, 1.1, 0.3, 2.0)}};
+  scene::PlanePoseKeys keys;
+  keys.method = method;
+  keys.poses = {{0.0, affinity(1.0, 0.2, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(-0.5, -1.4, 5.0, 1.1, 0.3, 2.0)}};
+  s.keys = keys;
   s.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
   s.pose_layers = std::move(layers);
   scene::Panel panel;
-  panel.pose_method = method;
-  panel.method_name = s.method_name;
-  panel.poses = s.poses;
+  panel.keys = keys;
   panel.shapes = s.shapes;
   panel.samples = 5;
   s.panels = {panel};
@@ -59,7 +58,7 @@ TEST(PoseDrawing, ShapesFollowTheSam) {
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 5u);
   // Independently: A = C B^-1 by Eigen, A^u by Eigen's pow, at u = i/4.
-  const Eigen::Matrix3d B = homogeneous(scene.poses[0].pose), C = homogeneous(scene.poses[1].pose);
+  const Eigen::Matrix3d B = homogeneous(plane_keys(scene).poses[0].pose), C = homogeneous(plane_keys(scene).poses[1].pose);
   const Eigen::Matrix3d A = C * B.inverse();
   for (int i = 0; i < 5; ++i) {
     const auto& outline = std::get<Polyline>(drawing.items[static_cast<std::size_t>(i)].shape);
@@ -80,7 +79,7 @@ TEST(PoseDrawing, SamVelocitiesAreTheLogField) {
   const scene::Scene scene = sam_scene({layer});
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 15u);  // 5 frames x 3 vertices
-  const Eigen::Matrix3d A = homogeneous(scene.poses[1].pose) * homogeneous(scene.poses[0].pose).inverse();
+  const Eigen::Matrix3d A = homogeneous(plane_keys(scene).poses[1].pose) * homogeneous(plane_keys(scene).poses[0].pose).inverse();
   const Eigen::Matrix3d field = oracle::log(A);
   for (const Item& item : drawing.items) {
     const auto& arrow = std::get<ArrowShape>(item.shape);
@@ -109,7 +108,7 @@ TEST(PoseDrawing, PosesLayerDrawsEachControlPose) {
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 2u);
   const auto& last = std::get<FilledPath>(drawing.items[1].shape);
-  EXPECT_LT(std::abs(last.contours[0][1] - through(homogeneous(scene.poses[1].pose), {1.0, 0.0})), 1e-15);
+  EXPECT_LT(std::abs(last.contours[0][1] - through(homogeneous(plane_keys(scene).poses[1].pose), {1.0, 0.0})), 1e-15);
 }
 
 // Fig. 11: a regular patch of 3 x 2 shapes from the first three poses; its
@@ -117,7 +116,7 @@ TEST(PoseDrawing, PosesLayerDrawsEachControlPose) {
 // for enough poses.
 TEST(PoseDrawing, PatchCornersAreThePoses) {
   scene::Scene scene = sam_scene({});
-  scene.panels[0].poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
+  plane_keys(scene.panels[0]).poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
   scene::PatchLayer layer;
   layer.columns = 3;
   layer.rows = 2;
@@ -128,14 +127,14 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
   const auto corner = [&](std::size_t item) {
     return std::get<Polyline>(drawing.items[item].shape).points[1];  // image of (1, 0)
   };
-  const auto& poses = scene.panels[0].poses;
+  const auto& poses = plane_keys(scene.panels[0]).poses;
   EXPECT_LT(std::abs(corner(0) - through(homogeneous(poses[0].pose), {1.0, 0.0})), 1e-12);
   EXPECT_LT(std::abs(corner(2) - through(homogeneous(poses[1].pose), {1.0, 0.0})), 1e-12);
   EXPECT_LT(std::abs(corner(3) - through(homogeneous(poses[2].pose), {1.0, 0.0})), 1e-12);
   const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
                             homogeneous(poses[2].pose);
   EXPECT_LT(std::abs(corner(5) - through(D, {1.0, 0.0})), 1e-11);
-  scene.panels[0].poses.resize(2);
+  plane_keys(scene.panels[0]).poses.resize(2);
   EXPECT_THROW(pose_panel_drawing(scene, scene.panels[0]), RenderError);
 }
 
@@ -143,7 +142,7 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
 // regular patch, with its own line; every other shape keeps the patch's.
 TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
   scene::Scene scene = sam_scene({});
-  scene.panels[0].poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
+  plane_keys(scene.panels[0]).poses.push_back({3.0, affinity(1.1, 0.2, 0.5, 0.1, 0.9, -3.0)});
   scene::PatchLayer layer;
   layer.columns = 4;
   layer.rows = 3;
@@ -159,7 +158,7 @@ TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
     EXPECT_EQ(line.width, corner ? 3.5 : layer.line.width) << k;
     EXPECT_EQ(line.color.r, corner ? red.r : layer.line.color.r) << k;
   }
-  const auto& poses = scene.panels[0].poses;
+  const auto& poses = plane_keys(scene.panels[0]).poses;
   const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
                             homogeneous(poses[2].pose);
   EXPECT_LT(std::abs(std::get<Polyline>(drawing.items[11].shape).points[2] - through(D, {0.0, 1.0})), 1e-11);
@@ -179,8 +178,8 @@ TEST(PoseDrawing, PosesLayerDrawsTheInsertedPoses) {
                                   {1.0, affinity(0.9, -0.4, 3.0, 0.4, 0.9, 2.0)},
                                   {2.0, affinity(0.6, -0.9, 6.0, 0.8, 0.7, 1.0)},
                                   {3.0, affinity(0.2, -1.2, 8.0, 1.1, 0.1, -1.0)}};
-  scene.panels[0].poses = poses;
-  scene.panels[0].subdivisions = 2;
+  plane_keys(scene.panels[0]).poses = poses;
+  plane_keys(scene.panels[0]).subdivisions = 2;
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 4u + 6u);
   const PoseMotion motion(PoseMethod::four_point, poses, 2);
@@ -198,7 +197,7 @@ TEST(PoseDrawing, PosesLayerDrawsTheInsertedPoses) {
     EXPECT_EQ(block.fill.r, 0.8);
     EXPECT_LT(std::abs(block.contours[0][1] - through(homogeneous(poses[i].pose), {1.0, 0.0})), 1e-15);
   }
-  scene.panels[0].pose_method = PoseMethod::poly_sam;
+  plane_keys(scene.panels[0]).method = PoseMethod::poly_sam;
   EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 4u);
 }
 
@@ -214,7 +213,7 @@ TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   layer.power = 2;
   scene::Scene scene = sam_scene({layer});
   const Affine2 B = affinity(0.0, -1.0, 0.0, 1.0, 0.0, 0.0), C = affinity(1.0, 0.0, 6.0, 0.0, 1.0, 0.0);
-  scene.panels[0].poses = {{0.0, B}, {1.0, C}};
+  plane_keys(scene.panels[0]).poses = {{0.0, B}, {1.0, C}};
   const Drawing squared = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(squared.items.size(), 1u);
   const auto& triangle = std::get<Polyline>(squared.items[0].shape);  // no fill: outlines
@@ -262,7 +261,7 @@ TEST(PoseDrawing, VersusLayerPowerThatOverflowsIsRefused) {
   layer.at = {1.0};
   layer.power = 16;
   scene::Scene scene = sam_scene({layer});
-  scene.panels[0].poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {1.0, affinity(1e30, 0.0, 0.0, 0.0, 1e30, 0.0)}};
+  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {1.0, affinity(1e30, 0.0, 0.0, 0.0, 1e30, 0.0)}};
   try {
     (void)pose_panel_drawing(scene, scene.panels[0]);
     FAIL() << "a pose of scale 1e480 was drawn";
@@ -396,7 +395,7 @@ TEST(PoseDrawing, AraLayerPrintsTheMeasuredUnsteadiness) {
   layer.at = {3.0, -1.0};
   layer.grid = 2;
   scene::Scene scene = sam_scene({layer}, PoseMethod::linear);
-  scene.panels[0].poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
+  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
   scene.panels[0].shapes = {scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 1u);
@@ -424,7 +423,7 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
   const auto drawn = [&](PoseMethod method) {
     scene::Scene scene = sam_scene({layer}, method);
     scene.reference_triangle = {Point(-0.6, 0.9), Point(2.4, 0.9), Point(0.9, 1.8)};
-    scene.panels[0].poses = {{0.0, Affine2::identity()}, {1.0, last}};
+    plane_keys(scene.panels[0]).poses = {{0.0, Affine2::identity()}, {1.0, last}};
     return pose_panel_drawing(scene, scene.panels[0]);
   };
   const auto count = [](const Drawing& drawing, auto kind) {

@@ -8,6 +8,7 @@
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -30,24 +31,24 @@ TEST(Scene, ReadsMagnitudeWindingForm) {
                                   "s.json");
   EXPECT_EQ(scene.path, "s.json");
   EXPECT_EQ(scene.description, "three arrows");
-  EXPECT_EQ(scene.method_name, "P6");
-  EXPECT_EQ(scene.method, Method::P6);
+  EXPECT_EQ(method_id(scene.keys), "P6");
+  EXPECT_EQ(track_keys(scene).method, Method::P6);
   EXPECT_FALSE(scene.samples.has_value());
-  ASSERT_EQ(scene.keyframes.size(), 3u);
-  EXPECT_EQ(scene.keyframes[1].t, 0.5);
-  EXPECT_EQ(scene.keyframes[1].arrow.p, make_point(3, 1.5));
-  EXPECT_EQ(scene.keyframes[1].arrow.m, 0.6);
-  EXPECT_EQ(scene.keyframes[1].arrow.w, 2.0);
-  EXPECT_EQ(scene.keyframes[2].arrow.w, -3.5);  // windings are never reduced
+  ASSERT_EQ(arrow_keys(scene).keyframes.size(), 3u);
+  EXPECT_EQ(arrow_keys(scene).keyframes[1].t, 0.5);
+  EXPECT_EQ(arrow_keys(scene).keyframes[1].arrow.p, make_point(3, 1.5));
+  EXPECT_EQ(arrow_keys(scene).keyframes[1].arrow.m, 0.6);
+  EXPECT_EQ(arrow_keys(scene).keyframes[1].arrow.w, 2.0);
+  EXPECT_EQ(arrow_keys(scene).keyframes[2].arrow.w, -3.5);  // windings are never reduced
 }
 
 TEST(Scene, DefaultsApplied) {
   const Scene scene = parse_scene(p6_with(""), "s.json");
   EXPECT_EQ(scene.description, "");
   EXPECT_FALSE(scene.samples.has_value());
-  EXPECT_EQ(scene.options.anchor, Anchor::start);
-  EXPECT_EQ(scene.options.path_mean, MeanKind::geometric);
-  EXPECT_EQ(scene.options.magnitude_mean, MeanKind::geometric);
+  EXPECT_EQ(track_keys(scene).options.anchor, Anchor::start);
+  EXPECT_EQ(track_keys(scene).options.path_mean, MeanKind::geometric);
+  EXPECT_EQ(track_keys(scene).options.magnitude_mean, MeanKind::geometric);
 }
 
 TEST(Scene, ReadsSamplesAndOptions) {
@@ -56,9 +57,9 @@ TEST(Scene, ReadsSamplesAndOptions) {
                   "magnitude_mean": "harmonic"})"),
       "s.json");
   EXPECT_EQ(scene.samples, 1000000);
-  EXPECT_EQ(scene.options.anchor, Anchor::midpoint);
-  EXPECT_EQ(scene.options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(scene.options.magnitude_mean, MeanKind::harmonic);
+  EXPECT_EQ(track_keys(scene).options.anchor, Anchor::midpoint);
+  EXPECT_EQ(track_keys(scene).options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(track_keys(scene).options.magnitude_mean, MeanKind::harmonic);
   EXPECT_EQ(parse_scene(p6_with(R"(, "samples": 2)"), "s.json").samples, 2);
 }
 
@@ -67,18 +68,18 @@ TEST(Scene, MethodNamesAreResolvedToCanonicalIds) {
       R"("keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [1, 1], "m": 1, "w": 0},
                        {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})";
   const Scene mnemonic = parse_scene(R"({"method": "la-lp", )" + keyframes, "s.json");
-  EXPECT_EQ(mnemonic.method, Method::P6);
-  EXPECT_EQ(mnemonic.method_name, "P6");
+  EXPECT_EQ(track_keys(mnemonic).method, Method::P6);
+  EXPECT_EQ(method_id(mnemonic.keys), "P6");
   const Scene number = parse_scene(R"({"method": "5s", )" + keyframes, "s.json");
-  EXPECT_EQ(number.method_name, "P5S");
+  EXPECT_EQ(method_id(number.keys), "P5S");
 }
 
 TEST(Scene, SmaTakesTwoKeyframes) {
   const Scene scene = parse_scene(R"({"method": "SMA", "keyframes": [
     {"t": 0, "p": [0, 0], "m": 2, "w": 0.3}, {"t": 1, "p": [4, 1], "m": 0.5, "w": 4.3}]})",
                                   "s.json");
-  EXPECT_EQ(scene.method, Method::SMA);
-  EXPECT_EQ(scene.keyframes.size(), 2u);
+  EXPECT_EQ(track_keys(scene).method, Method::SMA);
+  EXPECT_EQ(arrow_keys(scene).keyframes.size(), 2u);
 }
 
 // ------------------------------------------------------------ handles and shapes
@@ -90,13 +91,13 @@ TEST(Scene, HandleAndShapesAreRead) {
       p6_with(R"(, "handle": {"p": [5, 5], "q": [5, 7]}, "shapes": [{"outline": "square", "color": "red"}],
                  "layers": [{"type": "shapes", "fill": "blue"}, {"type": "handle", "width": 3, "shapes": false}])"),
       "s.json");
-  ASSERT_TRUE(scene.handle.has_value());
-  EXPECT_EQ(scene.handle->p, make_point(5, 5));
-  EXPECT_EQ(scene.handle->m, 2.0);
+  ASSERT_TRUE(arrow_keys(scene).given_handle.has_value());
+  EXPECT_EQ(arrow_keys(scene).given_handle->p, make_point(5, 5));
+  EXPECT_EQ(arrow_keys(scene).given_handle->m, 2.0);
   ASSERT_EQ(scene.shapes.size(), 1u);
   EXPECT_EQ(scene.shapes[0].points.size(), 4u);
   ASSERT_EQ(scene.panels.size(), 1u);
-  EXPECT_EQ(scene.panels[0].handle.p, make_point(5, 5));
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().p, make_point(5, 5));
   EXPECT_EQ(scene.panels[0].shapes.size(), 1u);
   ASSERT_EQ(scene.layers.size(), 2u);
   ASSERT_TRUE(std::holds_alternative<ShapesLayer>(scene.layers[0]));
@@ -108,11 +109,11 @@ TEST(Scene, HandleAndShapesAreRead) {
 
 TEST(Scene, HandleDefaultsToTheFirstKeyframe) {
   const Scene scene = parse_scene(p6_with(R"(, "shapes": [{"outline": "F"}])"), "s.json");
-  EXPECT_FALSE(scene.handle.has_value());
+  EXPECT_FALSE(arrow_keys(scene).given_handle.has_value());
   ASSERT_EQ(scene.panels.size(), 1u);
-  EXPECT_EQ(scene.panels[0].handle.p, scene.keyframes[0].arrow.p);
-  EXPECT_EQ(scene.panels[0].handle.m, scene.keyframes[0].arrow.m);
-  EXPECT_EQ(scene.panels[0].handle.w, scene.keyframes[0].arrow.w);
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().p, arrow_keys(scene).keyframes[0].arrow.p);
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().m, arrow_keys(scene).keyframes[0].arrow.m);
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().w, arrow_keys(scene).keyframes[0].arrow.w);
   // Arrow scenes have no shapes unless they give them (pose scenes default to
   // the reference triangle).
   EXPECT_TRUE(parse_scene(p6_with(""), "s.json").shapes.empty());
@@ -123,15 +124,15 @@ TEST(Scene, MovingKeyframesGiveTargetsToEveryPanel) {
       {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, -1], "m": 2, "w": 1}},
       {"t": 1, "p": [2, 0], "m": 1, "w": 0}], "panels": ["P2", {"title": "same"}]})",
                                   "s.json");
-  ASSERT_EQ(scene.keyframes_to.size(), 3u);
-  EXPECT_EQ(scene.keyframes[1].arrow.p, make_point(1, 1));  // "from"
-  EXPECT_EQ(scene.keyframes_to[1].p, make_point(1, -1));    // "to"
-  EXPECT_EQ(scene.keyframes_to[0].p, scene.keyframes[0].arrow.p);
+  ASSERT_EQ(arrow_keys(scene).keyframes_to.size(), 3u);
+  EXPECT_EQ(arrow_keys(scene).keyframes[1].arrow.p, make_point(1, 1));  // "from"
+  EXPECT_EQ(arrow_keys(scene).keyframes_to[1].p, make_point(1, -1));    // "to"
+  EXPECT_EQ(arrow_keys(scene).keyframes_to[0].p, arrow_keys(scene).keyframes[0].arrow.p);
   for (const Panel& panel : scene.panels) {
-    ASSERT_EQ(panel.keyframes_to.size(), 3u) << panel.pointer;
-    EXPECT_EQ(panel.keyframes_to[1].m, 2.0) << panel.pointer;
+    ASSERT_EQ(arrow_keys(panel).keyframes_to.size(), 3u) << panel.pointer;
+    EXPECT_EQ(arrow_keys(panel).keyframes_to[1].m, 2.0) << panel.pointer;
   }
-  EXPECT_TRUE(parse_scene(p6_with(""), "s.json").keyframes_to.empty());
+  EXPECT_TRUE(arrow_keys(parse_scene(p6_with(""), "s.json")).keyframes_to.empty());
 }
 
 TEST(Scene, ShapesLayersNeedShapes) {

@@ -11,6 +11,7 @@
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -67,29 +68,29 @@ TEST(FigureDefaults, SceneWithoutFigureFields) {
   const Panel& panel = scene.panels[0];
   EXPECT_EQ(panel.title, "");
   EXPECT_EQ(panel.pointer, "");
-  EXPECT_EQ(panel.method, Method::P6);
-  EXPECT_EQ(panel.method_name, "P6");
+  EXPECT_EQ(track_keys(panel).method, Method::P6);
+  EXPECT_EQ(method_id(panel.keys), "P6");
   EXPECT_EQ(panel.samples, kDefaultFigureSamples);
   EXPECT_FALSE(panel.layers.has_value());
-  expect_same_keyframes(panel.keyframes, scene.keyframes);
+  expect_same_keyframes(arrow_keys(panel).keyframes, arrow_keys(scene).keyframes);
 }
 
 TEST(FigureDefaults, ScenePanelTakesTheScenesSamplesAndOptions) {
   const Scene scene = p6(R"(, "samples": 31, "options": {"anchor": "midpoint"})");
   ASSERT_EQ(scene.panels.size(), 1U);
   EXPECT_EQ(scene.panels[0].samples, 31);
-  EXPECT_EQ(scene.panels[0].options.anchor, Anchor::midpoint);
+  EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, Anchor::midpoint);
 }
 
 TEST(FigureDefaults, EmptyLayersDrawNothing) { EXPECT_TRUE(p6(R"(, "layers": [])").layers.empty()); }
 
 TEST(FigureDefaults, WithMethodMovesTheScenePanel) {
   const Scene scene = with_method(p6(""), Method::P1);
-  EXPECT_EQ(scene.panels.at(0).method, Method::P1);
-  EXPECT_EQ(scene.panels.at(0).method_name, "P1");
+  EXPECT_EQ(track_keys(scene.panels.at(0)).method, Method::P1);
+  EXPECT_EQ(method_id(scene.panels.at(0).keys), "P1");
   // Panels of their own keep their method.
   const Scene own = with_method(p6(R"(, "panels": ["P2"])"), Method::P1);
-  EXPECT_EQ(own.panels.at(0).method, Method::P2);
+  EXPECT_EQ(track_keys(own.panels.at(0)).method, Method::P2);
 }
 
 // ------------------------------------------------------------ title and canvas
@@ -340,17 +341,17 @@ TEST(Layers, KeepTheirOrder) {
 TEST(Panels, MethodNames) {
   const Scene scene = p6(R"(, "samples": 5, "panels": ["P1", "la-lp", "P6:La-LP", "5s"])");
   ASSERT_EQ(scene.panels.size(), 4U);
-  EXPECT_EQ(scene.panels[0].method, Method::P1);
-  EXPECT_EQ(scene.panels[0].method_name, "P1");
+  EXPECT_EQ(track_keys(scene.panels[0]).method, Method::P1);
+  EXPECT_EQ(method_id(scene.panels[0].keys), "P1");
   EXPECT_EQ(scene.panels[0].title, "P1 Pa-Ca");
   EXPECT_EQ(scene.panels[0].pointer, "/panels/0");
   EXPECT_EQ(scene.panels[1].title, "P6 La-LP");
   EXPECT_EQ(scene.panels[2].title, "P6 La-LP");
-  EXPECT_EQ(scene.panels[3].method, Method::P5S);
+  EXPECT_EQ(track_keys(scene.panels[3]).method, Method::P5S);
   EXPECT_EQ(scene.panels[3].title, "P5S Hs-LP");
   EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
   for (const Panel& panel : scene.panels) {
-    expect_same_keyframes(panel.keyframes, scene.keyframes);
+    expect_same_keyframes(arrow_keys(panel).keyframes, arrow_keys(scene).keyframes);
     EXPECT_EQ(panel.samples, 5);
     EXPECT_FALSE(panel.layers.has_value());
   }
@@ -362,7 +363,7 @@ TEST(Panels, SmaIsTitledByItsId) {
       "panels": ["sma"]})",
                                   "s.json");
   EXPECT_EQ(scene.panels.at(0).title, "SMA");
-  EXPECT_EQ(scene.panels.at(0).method, Method::SMA);
+  EXPECT_EQ(track_keys(scene.panels.at(0)).method, Method::SMA);
 }
 
 TEST(Panels, ObjectsOverrideTheScene) {
@@ -380,36 +381,36 @@ TEST(Panels, ObjectsOverrideTheScene) {
   ASSERT_EQ(scene.panels.size(), 7U);
   const Panel& plain = scene.panels[0];
   EXPECT_EQ(plain.title, "");  // no method named: no title
-  EXPECT_EQ(plain.method, Method::P6);
+  EXPECT_EQ(track_keys(plain).method, Method::P6);
   EXPECT_EQ(plain.samples, 21);
-  EXPECT_EQ(plain.options.path_mean, MeanKind::harmonic);
+  EXPECT_EQ(track_keys(plain).options.path_mean, MeanKind::harmonic);
   EXPECT_EQ(plain.pointer, "/panels/0");
 
   EXPECT_EQ(scene.panels[1].title, "mine");
-  EXPECT_EQ(scene.panels[1].method, Method::P6);
+  EXPECT_EQ(track_keys(scene.panels[1]).method, Method::P6);
 
   const Panel& p2 = scene.panels[2];
-  EXPECT_EQ(p2.method, Method::P2);
+  EXPECT_EQ(track_keys(p2).method, Method::P2);
   EXPECT_EQ(p2.title, "P2 LS-Po");
-  EXPECT_EQ(p2.options.anchor, Anchor::midpoint);
-  EXPECT_EQ(p2.options.path_mean, MeanKind::harmonic);  // the scene's, not given by the panel
-  EXPECT_EQ(p2.options.magnitude_mean, MeanKind::geometric);
+  EXPECT_EQ(track_keys(p2).options.anchor, Anchor::midpoint);
+  EXPECT_EQ(track_keys(p2).options.path_mean, MeanKind::harmonic);  // the scene's, not given by the panel
+  EXPECT_EQ(track_keys(p2).options.magnitude_mean, MeanKind::geometric);
 
-  EXPECT_EQ(scene.panels[3].method, Method::P9);
+  EXPECT_EQ(track_keys(scene.panels[3]).method, Method::P9);
   EXPECT_EQ(scene.panels[3].title, "");  // an explicit "" wins
 
   const Panel& own = scene.panels[4];
-  ASSERT_EQ(own.keyframes.size(), 3U);
-  EXPECT_EQ(own.keyframes[1].t, 2);
-  EXPECT_EQ(own.keyframes[2].arrow.w, 2);
+  ASSERT_EQ(arrow_keys(own).keyframes.size(), 3U);
+  EXPECT_EQ(arrow_keys(own).keyframes[1].t, 2);
+  EXPECT_EQ(arrow_keys(own).keyframes[2].arrow.w, 2);
   EXPECT_EQ(own.samples, 3);
-  EXPECT_EQ(own.method, Method::P6);
+  EXPECT_EQ(track_keys(own).method, Method::P6);
 
   const Panel& sma = scene.panels[5];
-  EXPECT_EQ(sma.method, Method::SMA);
-  EXPECT_EQ(sma.method_name, "SMA");
+  EXPECT_EQ(track_keys(sma).method, Method::SMA);
+  EXPECT_EQ(method_id(sma.keys), "SMA");
   EXPECT_EQ(sma.title, "SMA");
-  EXPECT_EQ(sma.keyframes.size(), 2U);
+  EXPECT_EQ(arrow_keys(sma).keyframes.size(), 2U);
 
   ASSERT_TRUE(scene.panels[6].layers.has_value());
   ASSERT_EQ(scene.panels[6].layers->size(), 1U);

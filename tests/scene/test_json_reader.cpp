@@ -16,6 +16,7 @@
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -171,7 +172,7 @@ TEST(JsonReader, KeyframesComeInTheMethodsCountWithIncreasingKnots) {
 
 TEST(Keyframes, ReadsEndPointFormAsZeroTurnArrow) {
   const Scene scene = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [4, 5]})"), "s.json");
-  const Arrow& arrow = scene.keyframes[1].arrow;
+  const Arrow& arrow = arrow_keys(scene).keyframes[1].arrow;
   EXPECT_EQ(arrow.p, make_point(1, 1));
   EXPECT_DOUBLE_EQ(arrow.m, 5.0);
   EXPECT_DOUBLE_EQ(arrow.w, std::atan2(4.0, 3.0));
@@ -182,25 +183,25 @@ TEST(Keyframes, ReadsEndPointFormAsZeroTurnArrow) {
 TEST(Keyframes, EndPointFormWindingIsPrincipal) {
   // Pointing left: w = pi exactly (in (-pi, pi]); pointing down-left: negative.
   const Scene left = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [0, 1]})"), "s.json");
-  EXPECT_EQ(left.keyframes[1].arrow.w, kPi);
+  EXPECT_EQ(arrow_keys(left).keyframes[1].arrow.w, kPi);
   const Scene down = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [0, 0]})"), "s.json");
-  EXPECT_DOUBLE_EQ(down.keyframes[1].arrow.w, -3.0 * kPi / 4.0);
+  EXPECT_DOUBLE_EQ(arrow_keys(down).keyframes[1].arrow.w, -3.0 * kPi / 4.0);
 }
 
 TEST(Keyframes, TurnsAddWholeTurnsToEitherForm) {
   const Scene polar =
       parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0.5, "turns": 2})"), "s.json");
-  EXPECT_DOUBLE_EQ(polar.keyframes[1].arrow.w, 0.5 + 4.0 * kPi);
-  EXPECT_EQ(polar.keyframes[1].arrow.m, 2.0);
+  EXPECT_DOUBLE_EQ(arrow_keys(polar).keyframes[1].arrow.w, 0.5 + 4.0 * kPi);
+  EXPECT_EQ(arrow_keys(polar).keyframes[1].arrow.m, 2.0);
 
   const Scene end = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "q": [1, 2], "turns": -1})"), "s.json");
-  EXPECT_DOUBLE_EQ(end.keyframes[1].arrow.w, kPi / 2.0 - 2.0 * kPi);
-  EXPECT_EQ(end.keyframes[1].arrow.turns(), -1);
+  EXPECT_DOUBLE_EQ(arrow_keys(end).keyframes[1].arrow.w, kPi / 2.0 - 2.0 * kPi);
+  EXPECT_EQ(arrow_keys(end).keyframes[1].arrow.turns(), -1);
 
   // 3.0 is an integer, as JSON Schema's "integer" says.
   const Scene integral =
       parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0, "turns": 3.0})"), "s.json");
-  EXPECT_DOUBLE_EQ(integral.keyframes[1].arrow.w, 6.0 * kPi);
+  EXPECT_DOUBLE_EQ(arrow_keys(integral).keyframes[1].arrow.w, 6.0 * kPi);
 }
 
 // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4): "from" is the

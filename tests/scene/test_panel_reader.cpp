@@ -7,6 +7,7 @@
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -22,11 +23,11 @@ TEST(PoseScene, PanelsInheritAndOverride) {
                                              {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
                                   "s.json");
   ASSERT_EQ(scene.panels.size(), 3u);
-  EXPECT_EQ(scene.panels[0].pose_method, PoseMethod::linear);
-  EXPECT_EQ(scene.panels[0].poses.size(), 3u);
-  EXPECT_EQ(scene.panels[1].pose_method, PoseMethod::biarc_sam);
+  EXPECT_EQ(pose_method_of(scene.panels[0]), PoseMethod::linear);
+  EXPECT_EQ(plane_keys(scene.panels[0]).poses.size(), 3u);
+  EXPECT_EQ(pose_method_of(scene.panels[1]), PoseMethod::biarc_sam);
   EXPECT_EQ(scene.panels[1].samples, 5);
-  EXPECT_EQ(scene.panels[2].poses.size(), 2u);
+  EXPECT_EQ(plane_keys(scene.panels[2]).poses.size(), 2u);
   EXPECT_EQ(scene.panels[2].title, "SAM");
 }
 
@@ -37,16 +38,16 @@ TEST(PanelReader, ArrowPanelsInheritAndOverride) {
                  {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 0], "m": 1, "w": 1}]}]})",
                                   "s.json");
   ASSERT_EQ(scene.panels.size(), 4u);
-  EXPECT_EQ(scene.panels[0].method, Method::P2);
+  EXPECT_EQ(track_keys(scene.panels[0]).method, Method::P2);
   EXPECT_EQ(scene.panels[0].title, "P2 LS-Po");
   EXPECT_EQ(scene.panels[0].samples, 5);
-  EXPECT_EQ(scene.panels[0].options.anchor, scene.options.anchor);
+  EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, track_keys(scene).options.anchor);
   EXPECT_EQ(scene.panels[1].title, "three");
   EXPECT_EQ(scene.panels[1].samples, 7);
-  EXPECT_EQ(scene.panels[2].method, Method::P6);
-  EXPECT_EQ(scene.panels[2].options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(scene.panels[2].options.anchor, scene.options.anchor);  // the fields not given stay the scene's
-  EXPECT_EQ(scene.panels[3].keyframes.size(), 2u);
+  EXPECT_EQ(track_keys(scene.panels[2]).method, Method::P6);
+  EXPECT_EQ(track_keys(scene.panels[2]).options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(track_keys(scene.panels[2]).options.anchor, track_keys(scene).options.anchor);  // the fields not given stay the scene's
+  EXPECT_EQ(arrow_keys(scene.panels[3]).keyframes.size(), 2u);
   EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
 }
 
@@ -83,26 +84,26 @@ TEST(PanelReader, HandleDefaultsToTheScenesThenToThePanelsFirstKeyframe) {
   // The scene has no handle.
   const Scene scene = parse_scene(R"({"method": "P6", )" + keyframes + panels + "}", "s.json");
   ASSERT_EQ(scene.panels.size(), 4u);
-  EXPECT_EQ(scene.panels[0].handle.p, make_point(-1, 0));  // the scene's first keyframe
-  EXPECT_EQ(scene.panels[0].handle.m, 1.5);
-  EXPECT_EQ(scene.panels[0].handle.w, 0.25);
-  EXPECT_EQ(scene.panels[1].handle.p, make_point(7, 7));   // the panel's first keyframe, "from"
-  EXPECT_EQ(scene.panels[1].handle.m, 3.0);
-  EXPECT_EQ(scene.panels[2].handle.p, make_point(4, 4));   // its own
-  EXPECT_EQ(scene.panels[2].handle.w, 2.0);
-  EXPECT_EQ(scene.panels[3].handle.p, make_point(4, 4));   // its own, over its keyframes
-  ASSERT_EQ(scene.panels[1].keyframes_to.size(), 3u);
-  EXPECT_EQ(scene.panels[1].keyframes_to[0].p, make_point(8, 8));
-  EXPECT_TRUE(scene.panels[0].keyframes_to.empty());
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().p, make_point(-1, 0));  // the scene's first keyframe
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().m, 1.5);
+  EXPECT_EQ(arrow_keys(scene.panels[0]).handle().w, 0.25);
+  EXPECT_EQ(arrow_keys(scene.panels[1]).handle().p, make_point(7, 7));   // the panel's first keyframe, "from"
+  EXPECT_EQ(arrow_keys(scene.panels[1]).handle().m, 3.0);
+  EXPECT_EQ(arrow_keys(scene.panels[2]).handle().p, make_point(4, 4));   // its own
+  EXPECT_EQ(arrow_keys(scene.panels[2]).handle().w, 2.0);
+  EXPECT_EQ(arrow_keys(scene.panels[3]).handle().p, make_point(4, 4));   // its own, over its keyframes
+  ASSERT_EQ(arrow_keys(scene.panels[1]).keyframes_to.size(), 3u);
+  EXPECT_EQ(arrow_keys(scene.panels[1]).keyframes_to[0].p, make_point(8, 8));
+  EXPECT_TRUE(arrow_keys(scene.panels[0]).keyframes_to.empty());
 
   // The scene's handle is every panel's that gives none, whatever its keyframes.
   const Scene handled = parse_scene(
       R"({"method": "P6", "handle": {"p": [0, 5], "q": [1, 5]}, )" + keyframes + panels + "}", "s.json");
-  EXPECT_EQ(handled.panels[0].handle.p, make_point(0, 5));
-  EXPECT_EQ(handled.panels[1].handle.p, make_point(0, 5));
-  EXPECT_EQ(handled.panels[1].handle.m, 1.0);
-  EXPECT_EQ(handled.panels[2].handle.p, make_point(4, 4));
-  EXPECT_EQ(handled.panels[3].handle.p, make_point(4, 4));
+  EXPECT_EQ(arrow_keys(handled.panels[0]).handle().p, make_point(0, 5));
+  EXPECT_EQ(arrow_keys(handled.panels[1]).handle().p, make_point(0, 5));
+  EXPECT_EQ(arrow_keys(handled.panels[1]).handle().m, 1.0);
+  EXPECT_EQ(arrow_keys(handled.panels[2]).handle().p, make_point(4, 4));
+  EXPECT_EQ(arrow_keys(handled.panels[3]).handle().p, make_point(4, 4));
 
   // Not over points.
   EXPECT_EQ(test::error_of(R"({"method": "P6", )" + keyframes + R"(, "panels": [{"points": [{"t": 0, "p": [0, 0]},

@@ -15,6 +15,7 @@
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -34,13 +35,13 @@ TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   const Scene scene = parse_scene(R"({"method": "sam", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[1, 2, 3], [-4, 5, 6]]}]})",
                                   "s.json");
-  EXPECT_EQ(scene.kind, SceneKind::poses);
-  EXPECT_EQ(scene.method_name, "SAM");
-  ASSERT_EQ(scene.poses.size(), 2u);
-  EXPECT_EQ(scene.poses[1].t, 2.0);
+  EXPECT_TRUE(std::holds_alternative<PlanePoseKeys>(scene.keys));
+  EXPECT_EQ(method_id(scene.keys), "SAM");
+  ASSERT_EQ(plane_keys(scene).poses.size(), 2u);
+  EXPECT_EQ(plane_keys(scene).poses[1].t, 2.0);
   // [[a, b, tx], [c, d, ty]]: x -> [[a, b], [c, d]] x + [tx, ty].
-  EXPECT_EQ(image(scene.poses[1].pose, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
-  EXPECT_EQ(image(scene.poses[1].pose, 0.0, 1.0), Eigen::Vector2d(5.0, 11.0));
+  EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
+  EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 0.0, 1.0), Eigen::Vector2d(5.0, 11.0));
   // Defaults: the reference triangle as the shape; shapes and poses drawn.
   ASSERT_EQ(scene.shapes.size(), 1u);
   EXPECT_EQ(scene.shapes[0].points.size(), 3u);
@@ -48,7 +49,7 @@ TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
   EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
   ASSERT_EQ(scene.panels.size(), 1u);
-  EXPECT_EQ(scene.panels[0].poses.size(), 2u);
+  EXPECT_EQ(plane_keys(scene.panels[0]).poses.size(), 2u);
 }
 
 TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
@@ -56,9 +57,9 @@ TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
       "poses": [{"t": 0, "triangle": [[1, 1], [3, 1], [1, 2]]},
                 {"t": 1, "triangle": [[5, 5], [5, 9], [3.5, 5]]}]})",
                                   "s.json");
-  const Affine2& first = scene.poses[0].pose;
+  const Affine2& first = plane_keys(scene).poses[0].pose;
   EXPECT_LT((first.L - Eigen::Matrix2d::Identity()).norm() + first.b.norm(), 1e-15);
-  const Affine2& second = scene.poses[1].pose;
+  const Affine2& second = plane_keys(scene).poses[1].pose;
   EXPECT_LT((image(second, 1, 1) - Eigen::Vector2d(5, 5)).norm(), 1e-14);
   EXPECT_LT((image(second, 3, 1) - Eigen::Vector2d(5, 9)).norm(), 1e-14);
   EXPECT_LT((image(second, 1, 2) - Eigen::Vector2d(3.5, 5)).norm(), 1e-14);
@@ -73,8 +74,8 @@ TEST(PoseScene, MirroredPosesHaveASam) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
       {"t": 0, "triangle": [[0, 0], [0, 1], [1, 0]]}, {"t": 1, "triangle": [[3, 0], [3, 2], [5, 0]]}]})",
                                   "s.json");
-  EXPECT_LT(scene.poses[0].pose.L.determinant(), 0.0);
-  const PoseMotion motion(scene.pose_method, scene.poses);
+  EXPECT_LT(plane_keys(scene).poses[0].pose.L.determinant(), 0.0);
+  const PoseMotion motion(pose_method_of(scene), plane_keys(scene).poses);
   EXPECT_LT(motion.at(0.5).L.determinant(), 0.0);
 }
 

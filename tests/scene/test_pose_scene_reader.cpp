@@ -7,6 +7,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_readers.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -21,15 +22,15 @@ TEST(PoseSceneReader, PoseScenesAreRecognisedByPosesOrAPoseMethod) {
 TEST(PoseSceneReader, DefaultsApplied) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "triangle": [[1, 0], [2, 0], [1, 1]]}]})", "s.json");
-  EXPECT_EQ(scene.kind, SceneKind::poses);
-  EXPECT_EQ(scene.method_name, "SAM");
+  EXPECT_TRUE(std::holds_alternative<PlanePoseKeys>(scene.keys));
+  EXPECT_EQ(method_id(scene.keys), "SAM");
   ASSERT_EQ(scene.shapes.size(), 1u);  // the reference triangle
   EXPECT_EQ(scene.shapes[0].points.size(), 3u);
   ASSERT_EQ(scene.pose_layers.size(), 2u);  // shapes, then poses
   EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
   EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
-  EXPECT_EQ(scene.subdivisions, kDefaultSubdivisions);
-  EXPECT_EQ(scene.poses[1].pose.b, Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
+  EXPECT_EQ(plane_keys(scene).subdivisions, kDefaultSubdivisions);
+  EXPECT_EQ(plane_keys(scene).poses[1].pose.b, Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
   ASSERT_EQ(scene.panels.size(), 1u);
   EXPECT_EQ(scene.panels[0].motion_pointer, "/poses");
 }

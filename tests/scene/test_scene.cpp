@@ -18,6 +18,7 @@
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -63,8 +64,8 @@ TEST(Scene, ResolveMethod) {
 
 TEST(Scene, WithMethodReplacesTheMethodWhenTheCountFits) {
   const Scene scene = with_method(parse_scene(p6_with(""), "s.json"), Method::P8);
-  EXPECT_EQ(scene.method, Method::P8);
-  EXPECT_EQ(scene.method_name, "P8");
+  EXPECT_EQ(track_keys(scene).method, Method::P8);
+  EXPECT_EQ(method_id(scene.keys), "P8");
   try {
     with_method(parse_scene(p6_with(R"(, "chain": "blend")"), "s.json"), Method::SMA);
     FAIL() << "no error";
@@ -115,7 +116,7 @@ TEST(PoseScene, MethodOverride) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]}]})",
                                   "s.json");
-  EXPECT_EQ(with_pose_method(scene, PoseMethod::linear).method_name, "linear");
+  EXPECT_EQ(method_id(with_pose_method(scene, PoseMethod::linear).keys), "linear");
   EXPECT_THROW(with_pose_method(scene, PoseMethod::biarc_sam), SceneError);  // 3 poses
   EXPECT_THROW(with_method(scene, Method::P6), SceneError);
 }

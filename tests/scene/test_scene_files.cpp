@@ -29,6 +29,7 @@
 #include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -257,7 +258,7 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
                 name[5] == '-')
         << path.stem()
         << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, appX-figNN-*.json)";
-    EXPECT_EQ(load_scene(path).kind == SceneKind::poses, sam)
+    EXPECT_EQ(is_pose_scene(load_scene(path)), sam)
         << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
 }
@@ -277,7 +278,7 @@ double largest_gap(F&& f, G&& g) {
 }
 
 std::unique_ptr<Motion> panel_motion(const Panel& panel) {
-  return make_motion(panel.method, panel.keyframes, panel.options, panel.chain);
+  return make_motion(track_keys(panel).method, arrow_keys(panel).keyframes, track_keys(panel).options, track_keys(panel).chain);
 }
 
 bool title_says(const Panel& panel, const std::string& text) {
@@ -293,18 +294,18 @@ TEST(SceneFiles, AppendixC31PrintsTheMeasuredChanges) {
   for (std::size_t i : {0u, 2u}) {
     const Panel& before = scene.panels[i];
     const Panel& after = scene.panels[i + 1];
-    ASSERT_EQ(before.method, after.method);
+    ASSERT_EQ(track_keys(before).method, track_keys(after).method);
     for (std::size_t k = 0; k < 3; ++k) {
-      ASSERT_EQ(after.keyframes[k].arrow.p, before.keyframes[k].arrow.p + shift);
+      ASSERT_EQ(arrow_keys(after).keyframes[k].arrow.p, arrow_keys(before).keyframes[k].arrow.p + shift);
     }
     const auto x = panel_motion(before), y = panel_motion(after);
     const double d = largest_gap([&](double t) { return y->at(t); },
                                  [&](double t) { Arrow a = x->at(t); a.p += shift; return a; });
-    if (before.method == Method::P5) {
+    if (track_keys(before).method == Method::P5) {
       EXPECT_LT(d, 1e-12);
       EXPECT_TRUE(title_says(after, "d < 1e-12")) << after.title;
     } else {
-      EXPECT_EQ(before.method, Method::HeG);
+      EXPECT_EQ(track_keys(before).method, Method::HeG);
       EXPECT_GT(d, 0.1);
       EXPECT_TRUE(title_says(after, fmt::format("d = {:.2g}", d))) << after.title << " vs " << d;
     }
@@ -323,22 +324,22 @@ TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
     for (const Layer& layer : *panel.layers) {
       if (const auto* pattern = std::get_if<PatternLayer>(&layer)) {
         EXPECT_FALSE(pattern->method.has_value());
-        drawn.push_back(pattern->options.over(panel.options));
+        drawn.push_back(pattern->options.over(track_keys(panel).options));
       }
     }
     ASSERT_EQ(drawn.size(), 4u);
-    EXPECT_EQ(panel.method, Method::NeM);
+    EXPECT_EQ(track_keys(panel).method, Method::NeM);
     EXPECT_EQ(drawn[0].permutation, Permutation::ABC);
     EXPECT_FALSE(drawn[0].symmetrize);
     EXPECT_EQ(drawn[1].permutation, Permutation::ACB);
     EXPECT_EQ(drawn[2].permutation, Permutation::BAC);
     EXPECT_TRUE(drawn[3].symmetrize);
     const auto motion = [&](const MethodOptions& options) {
-      return make_motion(panel.method, panel.keyframes, options, panel.chain);
+      return make_motion(track_keys(panel).method, arrow_keys(panel).keyframes, options, track_keys(panel).chain);
     };
     const auto abc = motion(drawn[0]), acb = motion(drawn[1]), bac = motion(drawn[2]), average = motion(drawn[3]);
     // M_ABC is P9, independently of the variant code.
-    const auto p9 = make_motion(Method::P9, panel.keyframes);
+    const auto p9 = make_motion(Method::P9, arrow_keys(panel).keyframes);
     EXPECT_LT(largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return p9->at(t); }), 1e-9);
     const double e = largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return average->at(t); });
     const double f = largest_gap([&](double t) { return acb->at(t); }, [&](double t) { return bac->at(t); });
@@ -355,21 +356,21 @@ TEST(SceneFiles, AppendixD34BuildsP9FromTwoSteadyMorphs) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig34-p9-construction.json");
   ASSERT_EQ(scene.panels.size(), 3u);
   const Panel &left = scene.panels[0], &middle = scene.panels[1], &right = scene.panels[2];
-  ASSERT_EQ(left.keyframes.size(), 2u);
-  ASSERT_EQ(middle.keyframes.size(), 2u);
-  ASSERT_EQ(right.keyframes.size(), 2u);
-  const Keyframe &A = left.keyframes[0], &B = left.keyframes[1], &C = middle.keyframes[1];
-  ASSERT_EQ(middle.keyframes[0].arrow.p, B.arrow.p);
+  ASSERT_EQ(arrow_keys(left).keyframes.size(), 2u);
+  ASSERT_EQ(arrow_keys(middle).keyframes.size(), 2u);
+  ASSERT_EQ(arrow_keys(right).keyframes.size(), 2u);
+  const Keyframe &A = arrow_keys(left).keyframes[0], &B = arrow_keys(left).keyframes[1], &C = arrow_keys(middle).keyframes[1];
+  ASSERT_EQ(arrow_keys(middle).keyframes[0].arrow.p, B.arrow.p);
   const double t = A.t + 0.25 * (C.t - A.t);
   const Arrow L = steady_morph(A.t, A.arrow, B.t, B.arrow, t);
   const Arrow R = steady_morph(B.t, B.arrow, C.t, C.arrow, t);
   const auto gap = [](const Arrow& x, const Arrow& y) {
     return std::max({std::abs(x.p - y.p), std::abs(x.q() - y.q()), std::abs(x.w - y.w)});
   };
-  EXPECT_LT(gap(right.keyframes[0].arrow, L), 1e-14);
-  EXPECT_LT(gap(right.keyframes[1].arrow, R), 1e-14);
-  EXPECT_EQ(right.keyframes[0].t, A.t);
-  EXPECT_EQ(right.keyframes[1].t, C.t);
+  EXPECT_LT(gap(arrow_keys(right).keyframes[0].arrow, L), 1e-14);
+  EXPECT_LT(gap(arrow_keys(right).keyframes[1].arrow, R), 1e-14);
+  EXPECT_EQ(arrow_keys(right).keyframes[0].t, A.t);
+  EXPECT_EQ(arrow_keys(right).keyframes[1].t, C.t);
   const std::vector<Keyframe> abc{A, B, C};
   const Arrow p9 = make_motion(Method::P9, abc)->at(t);
   const Arrow built = steady_morph(A.t, L, C.t, R, t);
@@ -387,8 +388,8 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
   ASSERT_EQ(scene.panels.size(), 4u);
   double tame = 0.0;
   for (std::size_t i : {0u, 2u}) {
-    ASSERT_EQ(scene.panels[i].method, Method::P6);
-    ASSERT_EQ(scene.panels[i + 1].method, Method::P9);
+    ASSERT_EQ(track_keys(scene.panels[i]).method, Method::P6);
+    ASSERT_EQ(track_keys(scene.panels[i + 1]).method, Method::P9);
     const auto p6 = panel_motion(scene.panels[i]), p9 = panel_motion(scene.panels[i + 1]);
     const double d = largest_gap([&](double t) { return p6->at(t); }, [&](double t) { return p9->at(t); });
     EXPECT_TRUE(title_says(scene.panels[i + 1], fmt::format("d = {:.2g}", d))) << scene.panels[i + 1].title << " vs " << d;
@@ -401,9 +402,9 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
 TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig36-neville-means.json");
   ASSERT_EQ(scene.panels.size(), 3u);
-  EXPECT_EQ(scene.panels[0].options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(scene.panels[1].options.path_mean, MeanKind::geometric);
-  EXPECT_EQ(scene.panels[2].options.magnitude_mean, MeanKind::harmonic);
+  EXPECT_EQ(track_keys(scene.panels[0]).options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(track_keys(scene.panels[1]).options.path_mean, MeanKind::geometric);
+  EXPECT_EQ(track_keys(scene.panels[2]).options.magnitude_mean, MeanKind::harmonic);
   const auto am = panel_motion(scene.panels[0]), gm = panel_motion(scene.panels[1]), hm = panel_motion(scene.panels[2]);
   const double am_gm = largest_gap([&](double t) { return am->at(t); }, [&](double t) { return gm->at(t); });
   const double gm_hm = largest_gap([&](double t) { return gm->at(t); }, [&](double t) { return hm->at(t); });
@@ -442,10 +443,10 @@ TEST(SceneFiles, SamFig04PrintsItsMeasuredNumbers) {
   const Scene scene = load_scene(kSourceDir / "scenes/sam-fig04-alexa-midway.json");
   ASSERT_EQ(scene.panels.size(), 1u);
   const Panel& panel = scene.panels.front();
-  ASSERT_EQ(panel.poses.size(), 2u);
-  const Affine2 B = panel.poses[0].pose, C = panel.poses[1].pose;
-  const PoseMotion sam(PoseMethod::sam, panel.poses), alexa(PoseMethod::alexa, panel.poses);
-  const double middle = 0.5 * (panel.poses[0].t + panel.poses[1].t);
+  ASSERT_EQ(plane_keys(panel).poses.size(), 2u);
+  const Affine2 B = plane_keys(panel).poses[0].pose, C = plane_keys(panel).poses[1].pose;
+  const PoseMotion sam(PoseMethod::sam, plane_keys(panel).poses), alexa(PoseMethod::alexa, plane_keys(panel).poses);
+  const double middle = 0.5 * (plane_keys(panel).poses[0].t + plane_keys(panel).poses[1].t);
   const Affine2 x_sam = compose(sam.at(middle), inverse(B)), x_alexa = compose(alexa.at(middle), inverse(B));
   const std::optional<Eigen::Vector2d> q = fixed_point(x_sam);
   ASSERT_TRUE(q.has_value());
@@ -474,14 +475,14 @@ TEST(SceneFiles, SamFig05PrintsItsMeasuredSteps) {
   const Scene scene = load_scene(kSourceDir / "scenes/sam-fig05-sam-vs-alexa.json");
   ASSERT_EQ(scene.panels.size(), 1u);
   const Panel& panel = scene.panels.front();
-  ASSERT_EQ(panel.poses.size(), 2u);
+  ASSERT_EQ(plane_keys(panel).poses.size(), 2u);
   ASSERT_EQ(panel.shapes.size(), 1u);  // the reference triangle
   Point centre{0.0, 0.0};
   for (const Point p : panel.shapes.front().points) centre += p;
   centre /= static_cast<double>(panel.shapes.front().points.size());
   const auto steps = [&](PoseMethod method) {
-    const PoseMotion motion(method, panel.poses);
-    const double t0 = panel.poses[0].t, t1 = panel.poses[1].t;
+    const PoseMotion motion(method, plane_keys(panel).poses);
+    const double t0 = plane_keys(panel).poses[0].t, t1 = plane_keys(panel).poses[1].t;
     std::vector<double> lengths;
     for (int i = 0; i + 1 < panel.samples; ++i) {
       const double a = t0 + (t1 - t0) * i / (panel.samples - 1);
@@ -511,16 +512,16 @@ TEST(SceneFiles, SamFig03PairsArePosesOfTwoSams) {
   const Scene scene = load_scene(kSourceDir / "scenes/sam-fig03-series.json");
   const std::size_t n = scene.panels.size();
   ASSERT_GE(n, 5u);
-  const Affine2 P0 = scene.panels.front().poses[0].pose, P1 = scene.panels.back().poses[0].pose;
-  const Affine2 Q0 = scene.panels.front().poses[1].pose, Q1 = scene.panels.back().poses[1].pose;
+  const Affine2 P0 = plane_keys(scene.panels.front()).poses[0].pose, P1 = plane_keys(scene.panels.back()).poses[0].pose;
+  const Affine2 Q0 = plane_keys(scene.panels.front()).poses[1].pose, Q1 = plane_keys(scene.panels.back()).poses[1].pose;
   const auto distance = [](const Affine2& X, const Affine2& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); };
   for (std::size_t j = 0; j < n; ++j) {
     const double tau = static_cast<double>(j) / static_cast<double>(n - 1);
     const Panel& panel = scene.panels[j];
-    ASSERT_EQ(panel.poses.size(), 2u) << j;
-    EXPECT_LT(distance(panel.poses[0].pose, steady_affine_morph(P0, P1, tau)), 1e-10) << "column " << j;
-    EXPECT_LT(distance(panel.poses[1].pose, steady_affine_morph(Q0, Q1, tau)), 1e-10) << "column " << j;
-    EXPECT_NO_THROW(SteadyAffineMorph(panel.poses[0].pose, panel.poses[1].pose)) << "column " << j;
+    ASSERT_EQ(plane_keys(panel).poses.size(), 2u) << j;
+    EXPECT_LT(distance(plane_keys(panel).poses[0].pose, steady_affine_morph(P0, P1, tau)), 1e-10) << "column " << j;
+    EXPECT_LT(distance(plane_keys(panel).poses[1].pose, steady_affine_morph(Q0, Q1, tau)), 1e-10) << "column " << j;
+    EXPECT_NO_THROW(SteadyAffineMorph(plane_keys(panel).poses[0].pose, plane_keys(panel).poses[1].pose)) << "column " << j;
   }
 }
 

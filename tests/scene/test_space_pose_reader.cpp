@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "scene/scene.hpp"
+#include "support/keys.hpp"
 
 namespace pita::scene {
 namespace {
@@ -25,18 +26,17 @@ TEST(SpacePoseScene, MatricesAreRowsOfTheAffinity) {
   const Scene scene = parse_space(R"({"dimension": 3, "method": "polysam", "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 2, "matrix": [[1, 2, 3, 4], [5, 6, 7, 8], [9, 10, 12, 13]]}]})");
-  EXPECT_EQ(scene.kind, SceneKind::poses);
-  EXPECT_EQ(scene.dimension, 3);
-  EXPECT_EQ(scene.method_name, "polySAM");
-  EXPECT_TRUE(scene.poses.empty());
-  ASSERT_EQ(scene.poses3.size(), 2u);
-  EXPECT_EQ(scene.poses3[1].t, 2.0);
-  EXPECT_EQ(scene.poses3[1].pose.L(1, 2), 7.0);
-  EXPECT_EQ(scene.poses3[1].pose.L(2, 2), 12.0);
-  EXPECT_EQ(scene.poses3[1].pose.b, Vector3d(4, 8, 13));
+  EXPECT_TRUE(std::holds_alternative<SpacePoseKeys>(scene.keys));
+  EXPECT_EQ(dimension_of(scene), 3);
+  EXPECT_EQ(method_id(scene.keys), "polySAM");
+  ASSERT_EQ(space_keys(scene).poses.size(), 2u);
+  EXPECT_EQ(space_keys(scene).poses[1].t, 2.0);
+  EXPECT_EQ(space_keys(scene).poses[1].pose.L(1, 2), 7.0);
+  EXPECT_EQ(space_keys(scene).poses[1].pose.L(2, 2), 12.0);
+  EXPECT_EQ(space_keys(scene).poses[1].pose.b, Vector3d(4, 8, 13));
   ASSERT_EQ(scene.panels.size(), 1u);
-  EXPECT_EQ(scene.panels[0].dimension, 3);
-  EXPECT_EQ(scene.panels[0].poses3.size(), 2u);
+  EXPECT_EQ(dimension_of(scene.panels[0]), 3);
+  EXPECT_EQ(space_keys(scene.panels[0]).poses.size(), 2u);
 }
 
 // A tetrahedron pose maps the reference tetrahedron's points onto its own, in order.
@@ -45,9 +45,9 @@ TEST(SpacePoseScene, TetrahedraMapTheReferenceTetrahedron) {
       "reference_tetrahedron": [[1, 1, 1], [3, 1, 1], [1, 2, 1], [1, 1, 5]],
       "poses": [{"t": 0, "tetrahedron": [[1, 1, 1], [3, 1, 1], [1, 2, 1], [1, 1, 5]]},
                 {"t": 1, "tetrahedron": [[0, 0, 0], [0, 2, 0], [-1, 0, 0], [0, 0, 4]]}]})");
-  ASSERT_EQ(scene.poses3.size(), 2u);
-  EXPECT_LT((scene.poses3[0].pose.L - Eigen::Matrix3d::Identity()).norm() + scene.poses3[0].pose.b.norm(), 1e-15);
-  const Affine3& A = scene.poses3[1].pose;
+  ASSERT_EQ(space_keys(scene).poses.size(), 2u);
+  EXPECT_LT((space_keys(scene).poses[0].pose.L - Eigen::Matrix3d::Identity()).norm() + space_keys(scene).poses[0].pose.b.norm(), 1e-15);
+  const Affine3& A = space_keys(scene).poses[1].pose;
   EXPECT_LT((apply(A, Vector3d(1, 1, 1)) - Vector3d(0, 0, 0)).norm(), 1e-14);
   EXPECT_LT((apply(A, Vector3d(3, 1, 1)) - Vector3d(0, 2, 0)).norm(), 1e-14);
   EXPECT_LT((apply(A, Vector3d(1, 2, 1)) - Vector3d(-1, 0, 0)).norm(), 1e-14);
@@ -73,8 +73,8 @@ TEST(SpacePoseScene, DimensionTwoIsThePlane) {
   const Scene plane = parse_scene(R"({"dimension": 2, "method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 1, 0]]}]})",
                                   "s.json");
-  EXPECT_EQ(plane.dimension, 2);
-  EXPECT_EQ(plane.poses.size(), 2u);
+  EXPECT_EQ(dimension_of(plane), 2);
+  EXPECT_EQ(plane_keys(plane).poses.size(), 2u);
 }
 
 // The method override of pita eval --method keeps to the SAM family in space.
@@ -82,7 +82,7 @@ TEST(SpacePoseScene, MethodOverrideKeepsToTheSamFamily) {
   const Scene scene = parse_space(R"({"dimension": 3, "method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 1, "matrix": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}]})");
-  EXPECT_EQ(with_pose_method(scene, PoseMethod::linear).panels[0].pose_method, PoseMethod::linear);
+  EXPECT_EQ(pose_method_of(with_pose_method(scene, PoseMethod::linear).panels[0]), PoseMethod::linear);
   try {
     (void)with_pose_method(scene, PoseMethod::tsb);
     ADD_FAILURE() << "no error";
