@@ -99,7 +99,8 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   if (keyframes == nullptr && points == nullptr) {
     reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
   }
-  KeyframeKeys arrows{track};
+  KeyframeKeys arrows;
+  static_cast<TrackMethod&>(arrows) = track;
   if (keyframes != nullptr) {
     arrows.keyframes = reader.keyframes(*keyframes, "/keyframes", track.method, &arrows.keyframes_to, track.options.knots);
   }
@@ -116,7 +117,8 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     arrows.given_handle = reader.arrow(*handle, "/handle");
   }
   if (points != nullptr) {
-    PointKeys curve{track};
+    PointKeys curve;
+    static_cast<TrackMethod&>(curve) = track;
     curve.points = reader.points(*points, "/points");
     if (JsonReader::member(document, "timing") != nullptr) {
       reader.fail("/timing", "timing paces keyframes and poses; a scene of \"points\" has none");
@@ -161,8 +163,8 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
                                   [](const Panel& panel) {
-                                    const auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
-                                    return arrows != nullptr && !arrows->keyframes_to.empty();
+                                    const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
+                                    return given != nullptr && !given->keyframes_to.empty();
                                   });
   if (const Json* animation = JsonReader::member(document, "animation")) {
     scene.animation = detail::read_animation(reader, *animation, "/animation", moving);

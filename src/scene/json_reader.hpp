@@ -1,5 +1,6 @@
 // The checking JSON reader shared by the parts of the scene reader (scene.cpp:
-// the document, keyframes and panels; figure_reader.cpp: canvas and layers).
+// the document, keyframes and panels; figure_reader.cpp: canvas and layers, read by
+// arrow_layer_reader.cpp and pose_layer_reader.cpp).
 // Internal to src/scene/: every check fails with a SceneError that names the
 // JSON Pointer of the bad value and says what was expected.
 #pragma once

@@ -91,14 +91,16 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
   }
   if (keyframes != nullptr) {
-    KeyframeKeys arrows{track_of(panel)};
+    KeyframeKeys arrows;
+    static_cast<TrackMethod&>(arrows) = track_of(panel);
     arrows.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to,
                                         arrows.options.knots);
     if (const auto* own = std::get_if<KeyframeKeys>(&scene.keys)) arrows.given_handle = own->given_handle;
     panel.keys = std::move(arrows);
     panel.motion_pointer = pointer + "/keyframes";
   } else if (points != nullptr) {
-    PointKeys curve{track_of(panel)};
+    PointKeys curve;
+    static_cast<TrackMethod&>(curve) = track_of(panel);
     curve.points = reader.points(*points, pointer + "/points");
     panel.keys = std::move(curve);
     panel.motion_pointer = pointer + "/points";

@@ -181,7 +181,7 @@ TEST(CompareLayer, DrawsTheOtherMethodsFramesDashed) {
   expect_printed(printed_value(printed_lines(d), "max |P6 \u2212 P1|"), largest, "P6 - P1");
 }
 
-// (The default names G1, G2, ... are the reader's: tests/scene/test_figure_reader_guesses.cpp.)
+// (The default names G1, G2, ... are the reader's: tests/scene/test_arrow_layer_reader_guesses.cpp.)
 TEST(GuessesLayer, AGuessOnTheFrameHasZeroDiscrepancyAndDistance) {
   const std::vector<Keyframe> keys = test::three_keyframes();
   const scene::Panel p = test::panel(Method::P6, keys);

@@ -42,6 +42,14 @@ inline std::string p6_with(const std::string& extra) {
          extra + "}";
 }
 
+// Every field of a line style as expected.
+inline void expect_same_line(const LineStyle& actual, const LineStyle& expected) {
+  EXPECT_EQ(actual.color, expected.color);
+  EXPECT_EQ(actual.width, expected.width);
+  EXPECT_EQ(actual.opacity, expected.opacity);
+  EXPECT_EQ(actual.dash, expected.dash);
+}
+
 // The message of the SceneError that parsing `text` (as "s.json") throws, or "(no error)".
 inline std::string error_of(const std::string& text) {
   try {

@@ -156,7 +156,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(definitions.at("trajectoryLayer").at("properties").at("samples").at("maximum"),
             kMaxTrajectorySamples);
 
-  // Every layer kind of the reader's one table (figure_reader.cpp), with its fields.
+  // Every layer kind of the reader's tables (arrow_layer_reader.cpp, pose_layer_reader.cpp), with its fields.
   std::vector<std::string> types;
   for (const detail::LayerKindInfo& kind : detail::arrow_layer_kinds()) {
     const std::string type(kind.type);

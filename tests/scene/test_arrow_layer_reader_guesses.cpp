@@ -1,4 +1,4 @@
-// The "guesses" and "compare" layers of src/scene/figure_reader.cpp (PITA
+// The "guesses" and "compare" layers of src/scene/arrow_layer_reader.cpp (PITA
 // Figs. 16, 18, B.30; docs/paper-notes.md N53, N54): defaults, fields and
 // errors with their pointers.
 #include <gtest/gtest.h>

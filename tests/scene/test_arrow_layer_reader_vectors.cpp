@@ -1,4 +1,4 @@
-// The "vectors" and "fixed-points" layers of src/scene/figure_reader.cpp:
+// The "vectors" and "fixed-points" layers of src/scene/arrow_layer_reader.cpp:
 // defaults that follow the paper's figures (Figs. 9, 14, 15), the fields, and
 // the errors with their pointers.
 #include <gtest/gtest.h>
