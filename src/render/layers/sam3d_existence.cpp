@@ -1,0 +1,105 @@
+// The "sam3d-existence" layer (SAM Sec. 5.2): the largest safe perturbation
+// against the angle, beside the paper's bounds.
+#include "render/layers/sam3d_existence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace pita::render {
+
+Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const std::string& pointer) {
+  analysis::Sam3dExistenceOptions options;
+  options.subdivisions = layer.subdivisions;
+  options.p_step = layer.step;
+  const analysis::SafeCurve curve = analysis::largest_safe_perturbation_curve(layer.steps, options);
+  return sam3d_existence_drawing(layer, curve, pointer);
+}
+
+Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const analysis::SafeCurve& curve,
+                                const std::string& pointer) {
+  Drawing drawing;
+  const auto push = [&](Shape shape) { drawing.items.push_back({pointer, -1, std::move(shape)}); };
+  const double h = scene::kSafeCurveScale;
+  const std::span<const analysis::PaperExistenceBound> bounds = analysis::paper_existence_bounds();
+  // The plot's height: the highest p shown, rounded up to a tenth, plus one.
+  double highest = 0.0;
+  for (const double p : curve.largest_p) highest = std::max(highest, p);
+  if (layer.paper) {
+    for (const auto& bound : bounds) highest = std::max(highest, bound.p);
+  }
+  const int tenths = static_cast<int>(std::ceil(highest * 10.0 - 1e-9)) + 1;
+  const double top = 0.1 * tenths * h;
+
+  // The grid, the region under the staircase, the staircase: over [theta_k,
+  // theta_k+1) the bound is that of the angles up to theta_k.
+  const Color grid_color{0.85, 0.85, 0.85, 1.0};
+  const LineStyle grid{grid_color, 0.6, 1.0, {}};
+  for (int i = 1; i < tenths; ++i) push(Polyline{{{0.0, 0.1 * i * h}, {kPi, 0.1 * i * h}}, false, grid});
+  for (const double x : {kPi / 4.0, kPi / 2.0, 3.0 * kPi / 4.0}) push(Polyline{{{x, 0.0}, {x, top}}, false, grid});
+  std::vector<Point> stairs;
+  for (std::size_t k = 0; k < curve.thetas.size(); ++k) {
+    const double y = h * curve.largest_p[k];
+    stairs.emplace_back(curve.thetas[k], y);
+    const double next = k + 1 < curve.thetas.size() ? curve.thetas[k + 1] : kPi;
+    if (next > curve.thetas[k]) stairs.emplace_back(next, y);
+  }
+  if (layer.fill && !stairs.empty()) {
+    std::vector<Point> region = stairs;
+    region.emplace_back(stairs.back().real(), 0.0);
+    region.emplace_back(0.0, 0.0);
+    push(FilledPath{{std::move(region)}, *layer.fill, layer.fill_opacity, std::nullopt});
+  }
+  push(Polyline{stairs, false, layer.line});
+
+  // The paper's claims, "theta < T: p < P", as the corner of the box they
+  // claim safe, beside the curve's value at T (the angles up to T).
+  const Color text{0.1, 0.1, 0.1, 1.0};
+  if (layer.paper) {
+    for (const auto& bound : bounds) {
+      double ours = curve.largest_p.empty() ? 0.0 : curve.largest_p.front();
+      for (std::size_t k = 0; k < curve.thetas.size() && curve.thetas[k] <= bound.theta + 1e-9; ++k) {
+        ours = curve.largest_p[k];
+      }
+      push(Polyline{{{0.0, h * bound.p}, {bound.theta, h * bound.p}, {bound.theta, 0.0}}, false, layer.paper_line});
+      push(Circle{{bound.theta, h * ours}, 0.035, layer.line, layer.line.color});
+      const bool agrees = std::abs(ours - bound.p) < 0.5 * layer.step;
+      std::string angle = bound.theta_text;  // "2 pi/3" as "2π/3"
+      for (std::size_t at = angle.find(" pi"); at != std::string::npos; at = angle.find(" pi")) angle.erase(at, 1);
+      for (std::size_t at = angle.find("pi"); at != std::string::npos; at = angle.find("pi")) {
+        angle.replace(at, 2, "\u03c0");
+      }
+      push(Label{fmt::format("\u03b8 < {}: paper p < {:.2f}, ours {:.2f}{}", angle, bound.p, ours,
+                             agrees ? "" : " (differs)"),
+                 {bound.theta + 0.06, h * bound.p + 0.12},
+                 12.0,
+                 agrees ? text : layer.paper_line.color});
+    }
+  }
+
+  // The frame and its ticks.
+  const LineStyle frame{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
+  push(Polyline{{{0.0, 0.0}, {kPi, 0.0}, {kPi, top}, {0.0, top}}, true, frame});
+  const std::array<std::pair<double, const char*>, 5> ticks = {
+      {{0.0, "0"}, {kPi / 4.0, "\u03c0/4"}, {kPi / 2.0, "\u03c0/2"}, {3.0 * kPi / 4.0, "3\u03c0/4"}, {kPi, "\u03c0"}}};
+  for (const auto& [x, name] : ticks) push(Label{name, {x - 0.05, -0.18}, 12.0, text});
+  push(Label{"\u03b8 (largest rotation angle)", {kPi / 2.0 - 0.7, -0.42}, 12.0, text});
+  for (int i = 0; i < tenths; i += 1) {
+    push(Label{fmt::format("{:.1f}", 0.1 * i), {-0.32, 0.1 * i * h}, 12.0, text});
+  }
+  push(Label{"p", {-0.32, top + 0.15}, 12.0, text});
+  // What is what, right of the middle, between the claims.
+  push(Label{"\u2014 ours: every rotation up to \u03b8 keeps a SAM below it", {0.45 * kPi, top - 0.7}, 11.0,
+             layer.line.color});
+  if (layer.paper) {
+    push(Label{"- - the paper's claims, \u03b8 < T: p < P", {0.45 * kPi, top - 0.9}, 11.0, layer.paper_line.color});
+  }
+  return drawing;
+}
+
+}  // namespace pita::render
