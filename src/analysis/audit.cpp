@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <exception>
-#include <mutex>
 #include <thread>
 
 #include <fmt/format.h>
+
+#include "core/worker_pool.hpp"
 
 namespace pita::analysis {
 
@@ -98,35 +98,22 @@ AuditReport run_audit(const AuditOptions& options) {
   const std::size_t total = report.methods.size() * report.properties.size();
   report.cells.resize(total);
 
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t jobs = std::min<std::size_t>(options.jobs > 0 ? static_cast<std::size_t>(options.jobs) : cores, total);
-  std::atomic<std::size_t> next{0};
-  std::atomic<int> done{0};
-  // The first exception of any thread (an interruption, or out of memory) is
-  // rethrown here once every thread has stopped; the others then stop early.
-  std::atomic<bool> failed{false};
-  std::exception_ptr first_error;
-  std::mutex error_lock;
-  const auto work = [&] {
-    try {
-      for (std::size_t i = next++; i < total && !failed; i = next++) {
-        const Method m = report.methods[i / report.properties.size()];
-        const Property p = report.properties[i % report.properties.size()];
-        report.cells[i] = measure_cell(m, p, report.configs, options.seed, options.stop);
-        const int finished = ++done;
-        if (options.progress) options.progress(finished, static_cast<int>(total));
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(error_lock);
-      if (!first_error) first_error = std::current_exception();
-      failed = true;
-    }
-  };
-  std::vector<std::thread> threads;
-  for (std::size_t j = 1; j < jobs; ++j) threads.emplace_back(work);
-  work();
-  for (std::thread& t : threads) t.join();
-  if (first_error) std::rethrow_exception(first_error);
+  PoolOptions pool;
+  pool.threads = options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  // Cells in parallel; the progress is told on the calling thread.
+  run_ordered(
+      static_cast<std::int64_t>(total), pool,
+      [&](std::int64_t i, const std::atomic<bool>&) {
+        const Method m = report.methods[static_cast<std::size_t>(i) / report.properties.size()];
+        const Property p = report.properties[static_cast<std::size_t>(i) % report.properties.size()];
+        return measure_cell(m, p, report.configs, options.seed, options.stop);
+      },
+      [&](std::int64_t i, auto&& cell) {
+        report.cells[static_cast<std::size_t>(i)] = std::move(cell);
+        if (options.progress) options.progress(static_cast<int>(i + 1), static_cast<int>(total));
+        return true;
+      },
+      [] { return true; });
   return report;
 }
 

@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <map>
-#include <mutex>
 #include <numbers>
 #include <thread>
 #include <utility>
@@ -15,6 +14,7 @@
 #include <Eigen/LU>
 
 #include "core/affine_power3.hpp"
+#include "core/worker_pool.hpp"
 
 namespace pita::analysis {
 
@@ -232,60 +232,69 @@ std::optional<NoSamConfiguration> first_without_sam(std::span<const double> angl
                                                     const Sam3dExistenceOptions& options) {
   const std::vector<Eigen::Vector3d> axes = icosphere_axes(options.subdivisions);
 
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> found{false};
-  std::mutex mutex;
-  std::optional<NoSamConfiguration> first;
-  const auto work = [&] {
-    for (std::size_t i = next++; i < axes.size() && !found.load(std::memory_order_relaxed); i = next++) {
-      for (std::size_t j = 0; j < angles.size() && !found.load(std::memory_order_relaxed); ++j) {
-        const Eigen::Matrix3d R = Eigen::AngleAxisd(angles[j], axes[i]).toRotationMatrix();
-        // Row r of R with its 27 perturbations: choice c adds p times the
-        // signs (c / 3^e mod 3) - 1 to entry e. Pattern k (signs_of) is the
-        // choices k mod 27, k / 27 mod 27 and k / 729 of rows 0, 1 and 2, so
-        // these loops visit the patterns in the order of k.
-        std::array<std::array<Row, 27>, 3> rows;
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 27; ++c) {
-            for (int e = 0, digits = c; e < 3; ++e, digits /= 3) {
-              rows[r][c][e] = R(r, e) + p * (static_cast<double>(digits % 3) - 1.0);
-            }
+  // The least axis known to have a configuration without a SAM: the search
+  // of any later axis is cut short (the first in the order of the axes is
+  // the answer, whatever the number of threads).
+  std::atomic<std::size_t> found_at{axes.size()};
+  const auto search = [&](std::int64_t index, const std::atomic<bool>& stopping) -> std::optional<NoSamConfiguration> {
+    const auto i = static_cast<std::size_t>(index);
+    const auto beaten = [&] {
+      return stopping.load(std::memory_order_relaxed) || found_at.load(std::memory_order_relaxed) < i;
+    };
+    for (std::size_t j = 0; j < angles.size() && !beaten(); ++j) {
+      const Eigen::Matrix3d R = Eigen::AngleAxisd(angles[j], axes[i]).toRotationMatrix();
+      // Row r of R with its 27 perturbations: choice c adds p times the
+      // signs (c / 3^e mod 3) - 1 to entry e. Pattern k (signs_of) is the
+      // choices k mod 27, k / 27 mod 27 and k / 729 of rows 0, 1 and 2, so
+      // these loops visit the patterns in the order of k.
+      std::array<std::array<Row, 27>, 3> rows;
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 27; ++c) {
+          for (int e = 0, digits = c; e < 3; ++e, digits /= 3) {
+            rows[r][c][e] = R(r, e) + p * (static_cast<double>(digits % 3) - 1.0);
           }
-        }
-        std::optional<int> without;
-        if (p == 0.0) {  // every pattern is R itself: one test, not 3^9 (at pi, the exact one of EAR)
-          if (!has_real_logarithm(R)) without = kUnperturbed;
-        }
-        for (int c2 = 0; c2 < 27 && !without && p != 0.0; ++c2) {
-          for (int c1 = 0; c1 < 27 && !without; ++c1) {
-            const LowerRows lower = lower_rows(rows[1][c1], rows[2][c2]);
-            if (plainly_all_have_logarithms(R, p, lower)) continue;
-            for (int c0 = 0; c0 < 27; ++c0) {
-              const std::optional<bool> decided = decided_by_invariants(rows[0][c0], lower);
-              if (decided && *decided) continue;
-              Eigen::Matrix3d L;
-              L << rows[0][c0][0], rows[0][c0][1], rows[0][c0][2], rows[1][c1][0], rows[1][c1][1],
-                  rows[1][c1][2], rows[2][c2][0], rows[2][c2][1], rows[2][c2][2];
-              if (!decided && has_real_logarithm(L)) continue;  // the eigenvalues decide
-              without = c0 + 27 * c1 + 729 * c2;
-              break;
-            }
-          }
-        }
-        if (without) {
-          const std::lock_guard<std::mutex> lock(mutex);
-          if (!first) first = NoSamConfiguration{axes[i], angles[j], signs_of(*without), p};
-          found = true;
         }
       }
+      std::optional<int> without;
+      if (p == 0.0) {  // every pattern is R itself: one test, not 3^9 (at pi, the exact one of EAR)
+        if (!has_real_logarithm(R)) without = kUnperturbed;
+      }
+      for (int c2 = 0; c2 < 27 && !without && p != 0.0; ++c2) {
+        for (int c1 = 0; c1 < 27 && !without; ++c1) {
+          const LowerRows lower = lower_rows(rows[1][c1], rows[2][c2]);
+          if (plainly_all_have_logarithms(R, p, lower)) continue;
+          for (int c0 = 0; c0 < 27; ++c0) {
+            const std::optional<bool> decided = decided_by_invariants(rows[0][c0], lower);
+            if (decided && *decided) continue;
+            Eigen::Matrix3d L;
+            L << rows[0][c0][0], rows[0][c0][1], rows[0][c0][2], rows[1][c1][0], rows[1][c1][1],
+                rows[1][c1][2], rows[2][c2][0], rows[2][c2][1], rows[2][c2][2];
+            if (!decided && has_real_logarithm(L)) continue;  // the eigenvalues decide
+            without = c0 + 27 * c1 + 729 * c2;
+            break;
+          }
+        }
+      }
+      if (without) {
+        std::size_t least = found_at.load();
+        while (i < least && !found_at.compare_exchange_weak(least, i)) {
+        }
+        return NoSamConfiguration{axes[i], angles[j], signs_of(*without), p};
+      }
     }
+    return std::nullopt;
   };
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const unsigned jobs = std::min<unsigned>(options.jobs == 0 ? cores : options.jobs, static_cast<unsigned>(axes.size()));
-  std::vector<std::thread> threads;
-  for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(work);
-  work();  // the calling thread works too
-  for (std::thread& t : threads) t.join();
+  PoolOptions pool;
+  pool.threads = static_cast<int>(options.jobs == 0 ? std::max(1U, std::thread::hardware_concurrency()) : options.jobs);
+  std::optional<NoSamConfiguration> first;
+  run_ordered(
+      static_cast<std::int64_t>(axes.size()), pool, search,
+      [&](std::int64_t, std::optional<NoSamConfiguration>&& found) {
+        if (!found) return true;
+        first = std::move(found);
+        return false;  // the first axis in order that has one
+      },
+      [] { return true; });
   return first;
 }
 

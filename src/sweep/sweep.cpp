@@ -4,24 +4,21 @@
 #include <atomic>
 #include <chrono>
 #include <cerrno>
-#include <condition_variable>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <mutex>
 #include <optional>
 #include <regex>
 #include <system_error>
 #include <set>
 #include <sstream>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "analysis/measure.hpp"
 #include "animate/progress.hpp"
+#include "core/worker_pool.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
@@ -501,114 +498,64 @@ SweepSummary run_sweep(const SweepOptions& options) {
     }
   } closer{journal};
 
-  std::mutex mutex;
-  std::condition_variable finished;
-  std::atomic<std::int64_t> next{0};
-  std::atomic<bool> stop{false};
+  // Variants finish out of order; their rows are journaled in order, on this
+  // thread, as soon as every earlier one is (core/worker_pool.hpp).
   std::int64_t done = 0;  // in this run (resumed variants are not counted)
-  int running = 0;
   bool write_failed = false;
-  // Rows finish out of order; they are journaled in order, as soon as every
-  // earlier one is (the few that wait are all that is held).
-  std::map<std::int64_t, Row> waiting;
-  std::int64_t next_journaled = 0;
   std::string line;
-  const auto journal_ready = [&] {  // under the mutex
-    while (next_journaled < mine) {
-      const auto j = static_cast<std::size_t>(next_journaled);
-      if (kept[j] == 0) {
-        const auto it = waiting.find(next_journaled);
-        if (it == waiting.end()) break;
-        const Row& row = it->second;
-        if (row.ok()) {
-          ++summary.ok;
-        } else {
-          ++summary.failed;
-          if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
-        }
-        line.clear();
-        append_row(line, row);
-        if (std::fwrite(line.data(), 1, line.size(), journal) != line.size() || std::fflush(journal) != 0) {
-          write_failed = true;
-        }
-        waiting.erase(it);
-      }
-      ++next_journaled;
+  struct Finished {
+    Row row;
+    bool write_failed = false;
+  };
+  const auto produce = [&](std::int64_t j, const std::atomic<bool>&) -> std::optional<Finished> {
+    if (kept[static_cast<std::size_t>(j)] != 0) return std::nullopt;  // resumed
+    const std::int64_t index = shard_k + j * shard_n;
+    Finished finished;
+    try {
+      finished.row = run_variant(job, index, finished.write_failed);
+    } catch (const std::exception& error) {
+      // Nothing a variant does may end the sweep: it is a failed row.
+      finished.row = Row{};
+      finished.row.index = index;
+      finished.row.values.assign(pointers.size(), "");
+      finished.row.status = fmt::format("internal error: {}", error.what());
     }
+    return finished;
+  };
+  const auto journal_row = [&](std::int64_t, std::optional<Finished>&& finished) {
+    if (!finished) return true;
+    ++done;
+    write_failed = write_failed || finished->write_failed;
+    const Row& row = finished->row;
+    if (row.ok()) {
+      ++summary.ok;
+    } else {
+      ++summary.failed;
+      if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
+    }
+    line.clear();
+    append_row(line, row);
+    if (std::fwrite(line.data(), 1, line.size(), journal) != line.size() || std::fflush(journal) != 0) {
+      write_failed = true;
+    }
+    return true;
   };
 
   const auto work = static_cast<int>(std::min<std::int64_t>(mine - summary.skipped, INT32_MAX));
   animate::Progress progress("pita sweep", work, options.progress, true);
   {
     const render::DeferredInterrupts deferred;
-    const int threads = static_cast<int>(std::min<std::int64_t>(options.jobs, std::max<std::int64_t>(mine, 1)));
-    std::vector<std::thread> pool;
-    // Joins whatever was started, also when the main thread throws.
-    struct Joiner {
-      std::vector<std::thread>& pool;
-      std::atomic<bool>& stop;
-      ~Joiner() {
-        stop = true;
-        for (std::thread& t : pool) {
-          if (t.joinable()) t.join();
-        }
-      }
-    } joiner{pool, stop};
-    const auto worker = [&] {
-      bool failed_write = false;
-      while (!stop.load() && render::pending_interrupt() == 0) {
-        const std::int64_t j = next.fetch_add(1);
-        if (j >= mine) break;
-        if (kept[static_cast<std::size_t>(j)] != 0) continue;  // resumed
-        const std::int64_t index = shard_k + j * shard_n;
-        Row row;
-        try {
-          row = run_variant(job, index, failed_write);
-        } catch (const std::exception& error) {
-          // Nothing a variant does may end the sweep: it is a failed row.
-          row.index = index;
-          row.values.assign(pointers.size(), "");
-          row.status = fmt::format("internal error: {}", error.what());
-        }
-        const std::lock_guard lock(mutex);
-        waiting.emplace(j, std::move(row));
-        ++done;
-        journal_ready();
-      }
-      const std::lock_guard lock(mutex);
-      write_failed = write_failed || failed_write;
-      --running;
-      finished.notify_all();
+    PoolOptions pool;
+    pool.threads = static_cast<int>(std::min<std::int64_t>(options.jobs, std::max<std::int64_t>(mine, 1)));
+    const auto tick = [&] {
+      progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
+      return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
     };
-    {
-      const std::lock_guard lock(mutex);
-      running = threads;  // before any starts: a worker that ends at once counts down from here
+    try {
+      run_ordered(mine, pool, produce, journal_row, tick);
+    } catch (const std::system_error& error) {
+      throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options.jobs, error.what()));
     }
-    for (int t = 0; t < threads; ++t) {
-      try {
-        pool.emplace_back(worker);
-      } catch (const std::system_error& error) {
-        {
-          const std::lock_guard lock(mutex);
-          running -= threads - t;
-        }
-        if (pool.empty()) {
-          throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options.jobs, error.what()));
-        }
-        break;  // fewer threads than asked
-      }
-    }
-    std::unique_lock lock(mutex);
-    while (running > 0) {
-      finished.wait_for(lock, std::chrono::milliseconds(100));
-      const std::int64_t now_done = done;
-      lock.unlock();
-      progress.update(static_cast<int>(std::min<std::int64_t>(now_done, INT32_MAX)));
-      if (render::pending_interrupt() != 0) stop = true;
-      lock.lock();
-    }
-    lock.unlock();
-    for (std::thread& thread : pool) thread.join();
   }
   progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
   std::fclose(journal);
