@@ -16,6 +16,8 @@
 #include <string_view>
 #include <vector>
 
+#include "render/output_file.hpp"
+
 namespace pita::sweep {
 
 // The metrics of the scene's own motion (pita measure, README "pita measure"):
@@ -82,5 +84,49 @@ std::string variant_file(const std::string& name, std::int64_t index, std::int64
 
 // RFC 4180 quoting of one field (quotes, commas, line breaks).
 std::string csv_field(std::string_view text);
+
+// A manifest written from sources of rows, each sorted by index, without
+// holding them: of the rows of one index, an accepted one of a later source
+// wins (ok rows before failed ones when `prefer_ok`). `accept(row, source)`
+// filters; `on_row` sees each row written.
+template <typename Accept, typename OnRow>
+void merge_sources(const std::filesystem::path& path, const std::vector<std::string>& pointers,
+                   std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, bool prefer_ok) {
+  render::StreamingOutput out(path);
+  out.write(manifest_header(pointers));
+  std::vector<std::optional<Row>> heads(sources.size());
+  const auto advance = [&](std::size_t s) {
+    heads[s].reset();
+    Row row;
+    while (sources[s].next(row)) {
+      if (accept(row, s)) {
+        heads[s] = std::move(row);
+        return;
+      }
+    }
+  };
+  for (std::size_t s = 0; s < sources.size(); ++s) advance(s);
+  std::string line;
+  while (true) {
+    std::optional<std::int64_t> least;
+    for (const auto& head : heads) {
+      if (head && (!least || head->index < *least)) least = head->index;
+    }
+    if (!least) break;
+    std::optional<std::size_t> best;
+    for (std::size_t s = 0; s < heads.size(); ++s) {
+      if (!heads[s] || heads[s]->index != *least) continue;
+      if (!best || !prefer_ok || heads[s]->ok() || !heads[*best]->ok()) best = s;
+    }
+    on_row(*heads[*best]);
+    line.clear();
+    append_row(line, *heads[*best]);
+    out.write(line);
+    for (std::size_t s = 0; s < heads.size(); ++s) {
+      if (heads[s] && heads[s]->index == *least) advance(s);
+    }
+  }
+  out.commit();
+}
 
 }  // namespace pita::sweep

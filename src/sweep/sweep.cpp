@@ -27,6 +27,7 @@
 #include "render/output_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
+#include "sweep/definition.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sheet.hpp"
@@ -38,14 +39,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kSweepFile = "sweep.json";
 // A running sweep rewrites its manifest this often, so that even a killed
 // process (SIGKILL, a lost node) leaves a manifest of most of what finished.
 constexpr auto kManifestInterval = std::chrono::seconds(5);
-// Failed variants listed in the summary (the manifest has them all), and
-// ranges of missing variants --merge reports.
+// Failed variants listed in the summary (the manifest has them all).
 constexpr std::size_t kMaxFailuresKept = 1000;
-constexpr std::size_t kMaxRangesKept = 1000;
 
 struct KindInfo {
   OutputKind kind;
@@ -109,138 +107,6 @@ std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& o
   if (r.ara) m[14] = number(*r.ara);
   if (r.area) m[15] = r.area->monotone ? "yes" : "no";
   return m;
-}
-
-// What defines a sweep in DIR (read back by --merge).
-struct Definition {
-  std::string scene;  // the base scene's path, as given
-  std::string name;   // its stem: the variants' file names
-  std::vector<std::pair<std::string, std::string>> axes;  // pointer, spec
-  std::vector<std::size_t> axis_sizes;
-  bool zip = false;
-  std::vector<std::string> formats;
-  std::int64_t variants = 0;
-  std::string salt;   // what else the content hashes cover (formats, pita's version)
-  Json base;          // the base scene's document: --merge rebuilds each variant's hash from it
-};
-
-std::string definition_json(const Definition& d) {
-  Json j;
-  j["scene"] = d.scene;
-  j["name"] = d.name;
-  j["axes"] = Json::array();
-  for (std::size_t k = 0; k < d.axes.size(); ++k) {
-    j["axes"].push_back(Json{{"pointer", d.axes[k].first}, {"spec", d.axes[k].second}, {"size", d.axis_sizes[k]}});
-  }
-  j["zip"] = d.zip;
-  j["formats"] = d.formats;
-  j["variants"] = d.variants;
-  j["salt"] = d.salt;
-  j["base"] = d.base;
-  return j.dump(2) + "\n";
-}
-
-Definition read_definition(const fs::path& dir) {
-  std::ifstream in(dir / kSweepFile, std::ios::binary);
-  if (!in) {
-    throw SweepUsageError(fmt::format("--merge {}: no {} there: it is not the output folder of a pita sweep",
-                                      dir.string(), kSweepFile));
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  try {
-    const Json j = Json::parse(text.str());
-    Definition d;
-    d.scene = j.at("scene").get<std::string>();
-    d.name = j.at("name").get<std::string>();
-    for (const Json& a : j.at("axes")) {
-      d.axes.emplace_back(a.at("pointer").get<std::string>(), a.at("spec").get<std::string>());
-      d.axis_sizes.push_back(a.at("size").get<std::size_t>());
-    }
-    d.zip = j.at("zip").get<bool>();
-    d.formats = j.at("formats").get<std::vector<std::string>>();
-    d.variants = j.at("variants").get<std::int64_t>();
-    d.salt = j.at("salt").get<std::string>();
-    d.base = j.at("base");
-    if (d.name.empty() || d.name.find('/') != std::string::npos) throw std::runtime_error("bad name");
-    if (d.variants < 0 || d.variants > kMaxVariants) throw std::runtime_error("bad variant count");
-    return d;
-  } catch (const std::exception& error) {
-    throw SweepUsageError(fmt::format("--merge {}: {} is not a sweep definition ({})", dir.string(),
-                                      (dir / kSweepFile).string(), error.what()));
-  }
-}
-
-std::vector<std::string> pointers_of(const Definition& d) {
-  std::vector<std::string> p;
-  for (const auto& [pointer, spec] : d.axes) p.push_back(pointer);
-  return p;
-}
-
-SheetInput sheet_input(const fs::path& dir, const Definition& d) {
-  SheetInput s;
-  s.dir = dir;
-  s.name = d.name;
-  s.base_path = d.scene;
-  s.pointers = pointers_of(d);
-  s.axis_sizes = d.axis_sizes;
-  s.zip = d.zip;
-  s.variants = d.variants;
-  for (const std::string& f : d.formats) s.figures = s.figures || f == "svg" || f == "png" || f == "pdf";
-  return s;
-}
-
-// index.html and contact.* from DIR/manifest.csv (an unsharded run, or a merge).
-void write_reports(const fs::path& dir, const Definition& d, std::vector<std::string>& notes) {
-  const SheetInput input = sheet_input(dir, d);
-  if (std::string why = write_index_html(input); !why.empty()) notes.push_back(std::move(why));
-  if (input.figures) {
-    if (std::string why = write_contact_sheet(input); !why.empty()) notes.push_back(std::move(why));
-  }
-}
-
-// A manifest written from sources of rows, each sorted by index, without
-// holding them: of the rows of one index, an accepted one of a later source
-// wins (ok rows before failed ones when `prefer_ok`). `accept(row, source)`
-// filters; `on_row` sees each row written.
-template <typename Accept, typename OnRow>
-void merge_sources(const fs::path& path, const std::vector<std::string>& pointers,
-                   std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, bool prefer_ok) {
-  render::StreamingOutput out(path);
-  out.write(manifest_header(pointers));
-  std::vector<std::optional<Row>> heads(sources.size());
-  const auto advance = [&](std::size_t s) {
-    heads[s].reset();
-    Row row;
-    while (sources[s].next(row)) {
-      if (accept(row, s)) {
-        heads[s] = std::move(row);
-        return;
-      }
-    }
-  };
-  for (std::size_t s = 0; s < sources.size(); ++s) advance(s);
-  std::string line;
-  while (true) {
-    std::optional<std::int64_t> least;
-    for (const auto& head : heads) {
-      if (head && (!least || head->index < *least)) least = head->index;
-    }
-    if (!least) break;
-    std::optional<std::size_t> best;
-    for (std::size_t s = 0; s < heads.size(); ++s) {
-      if (!heads[s] || heads[s]->index != *least) continue;
-      if (!best || !prefer_ok || heads[s]->ok() || !heads[*best]->ok()) best = s;
-    }
-    on_row(*heads[*best]);
-    line.clear();
-    append_row(line, *heads[*best]);
-    out.write(line);
-    for (std::size_t s = 0; s < heads.size(); ++s) {
-      if (heads[s] && heads[s]->index == *least) advance(s);
-    }
-  }
-  out.commit();
 }
 
 // Removes what an earlier run wrote for a variant that now fails, so that no
@@ -387,22 +253,21 @@ std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>
   return out;
 }
 
-SweepSummary run_sweep(const SweepOptions& options) {
-  if (options.jobs < 1) throw SweepUsageError(fmt::format("--jobs: must be >= 1 (got {})", options.jobs));
-  std::vector<Axis> axes;
-  for (const std::string& v : options.vary) axes.push_back(parse_axis(v));
-  const Grid grid(std::move(axes), options.zip);
-  const BaseScene base = load_base(options.scene_path, grid);
+namespace {
 
+// The output folder, created when missing.
+fs::path output_folder(const SweepOptions& options) {
   const fs::path dir(options.output);
-  {
-    std::error_code error;
-    fs::create_directories(dir, error);
-    if (error || !fs::is_directory(dir)) {
-      throw SweepUsageError(fmt::format("-o {}: cannot create the output folder ({})", options.output,
-                                        error ? error.message() : "a file of that name exists"));
-    }
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir)) {
+    throw SweepUsageError(fmt::format("-o {}: cannot create the output folder ({})", options.output,
+                                      error ? error.message() : "a file of that name exists"));
   }
+  return dir;
+}
+
+Definition definition_of(const SweepOptions& options, const Grid& grid, const BaseScene& base) {
   Definition definition;
   definition.scene = options.scene_path;
   definition.name = fs::path(options.scene_path).stem().string();
@@ -416,259 +281,235 @@ SweepSummary run_sweep(const SweepOptions& options) {
   definition.salt = "pita " + options.version;
   for (const std::string& f : definition.formats) definition.salt += " " + f;
   definition.base = base.document;
+  return definition;
+}
 
-  const std::string& salt = definition.salt;
-  const Job job{options, grid, base, dir, definition.name, salt};
-  const std::vector<std::string> pointers = pointers_of(definition);
-  const std::string manifest = manifest_name(options.shard);
-  const fs::path manifest_path = dir / manifest;
-  // Rows are appended here as they finish, in index order: what a killed
-  // process leaves, and what the next run folds into the manifest.
-  const fs::path journal_path = dir / ("." + manifest + ".journal");
-  // Plain variables, not a structured binding: lambdas capture them (clang 14).
-  const int shard_k = options.shard ? options.shard->first : 0;
-  const int shard_n = options.shard ? options.shard->second : 1;
-  const std::int64_t variants = grid.size();
-  const std::int64_t mine = variants > shard_k ? (variants - shard_k + shard_n - 1) / shard_n : 0;
-  const auto position = [&](std::int64_t index) { return (index - shard_k) / shard_n; };
-  const auto in_shard = [&](std::int64_t index) {
-    return index >= 0 && index < variants && index % shard_n == shard_k;
-  };
+// One run of a sweep (or of its shard K of N) into its folder: what an
+// earlier run left is resumed, the other variants are run and journaled in
+// order, and the manifest is written from both.
+class SweepRun {
+ public:
+  SweepRun(const SweepOptions& options, const Grid& grid, const BaseScene& base, fs::path dir,
+           const Definition& definition)
+      : options_(options),
+        grid_(grid),
+        base_(base),
+        dir_(std::move(dir)),
+        definition_(definition),
+        job_{options, grid, base, dir_, definition.name, definition.salt},
+        pointers_(pointers_of(definition)),
+        manifest_path_(dir_ / manifest_name(options.shard)),
+        // Rows are appended here as they finish, in index order: what a killed
+        // process leaves, and what the next run folds into the manifest.
+        journal_path_(dir_ / ("." + manifest_name(options.shard) + ".journal")),
+        shard_k_(options.shard ? options.shard->first : 0),
+        shard_n_(options.shard ? options.shard->second : 1),
+        mine_(grid.size() > shard_k_ ? (grid.size() - shard_k_ + shard_n_ - 1) / shard_n_ : 0),
+        kept_(static_cast<std::size_t>(mine_), 0) {
+    summary_.variants = mine_;
+  }
 
-  // Resume: a row of an earlier run (its manifest, or the journal of a killed
-  // run) is kept when its variant is unchanged (same content hash), it is ok
-  // and its outputs all exist; the others are done again. Nothing but one
-  // byte per variant is held. A manifest of another sweep (other pointers) is
+  SweepSummary run() {
+    if (!options_.force) resume();
+    std::error_code ignored;
+    fs::remove(journal_path_, ignored);
+    render::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
+    run_variants();
+    write_manifest();
+    if (options_.shard) {
+      summary_.notes.push_back(fmt::format("shard {}/{}: join the shards with pita sweep --merge {}", shard_k_,
+                                           shard_n_, options_.output));
+    } else {
+      write_reports(dir_, definition_, summary_.notes);
+    }
+    return summary_;
+  }
+
+ private:
+  std::int64_t position(std::int64_t index) const { return (index - shard_k_) / shard_n_; }
+  bool in_shard(std::int64_t index) const {
+    return index >= 0 && index < grid_.size() && index % shard_n_ == shard_k_;
+  }
+  // A row of an earlier run is kept when its variant is unchanged (same
+  // content hash), it is ok and its outputs all exist.
+  bool valid(const Row& row) const {
+    if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir_, row)) return false;
+    return content_hash(variant_text(variant_document(base_, grid_, grid_.values(row.index))), definition_.salt) ==
+           row.hash;
+  }
+  [[noreturn]] void refuse_folder(const std::runtime_error& error) const {
+    throw SweepUsageError(
+        fmt::format("-o {}: {} (or --force to start this sweep over there)", options_.output, error.what()));
+  }
+
+  // Resume: the valid rows of an earlier run (its manifest, or the journal of
+  // a killed run) are kept; the others are done again. Nothing but one byte
+  // per variant is held. A manifest of another sweep (other pointers) is
   // refused before anything is written.
-  const auto valid = [&](const Row& row) {
-    if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir, row)) return false;
-    return content_hash(variant_text(variant_document(base, grid, grid.values(row.index))), salt) == row.hash;
-  };
-  std::vector<char> kept(static_cast<std::size_t>(mine), 0);
-  SweepSummary summary;
-  summary.variants = mine;
-  bool have_manifest = false;
-  if (!options.force) {
+  void resume() {
     std::optional<ManifestReader> old;
     try {
-      old = ManifestReader::open(manifest_path, pointers);
+      old = ManifestReader::open(manifest_path_, pointers_);
     } catch (const std::runtime_error& error) {
-      throw SweepUsageError(fmt::format("-o {}: {} (or --force to start this sweep over there)", options.output,
-                                        error.what()));
+      refuse_folder(error);
     }
-    std::optional<ManifestReader> journal = ManifestReader::open(journal_path, pointers, true);
-    have_manifest = old.has_value();
+    std::optional<ManifestReader> journal = ManifestReader::open(journal_path_, pointers_, true);
+    have_manifest_ = old.has_value();
     for (auto* reader : {old ? &*old : nullptr, journal ? &*journal : nullptr}) {
       if (reader == nullptr) continue;
       Row row;
       try {
         while (reader->next(row)) {
-          if (valid(row) && !kept[static_cast<std::size_t>(position(row.index))]) {
-            kept[static_cast<std::size_t>(position(row.index))] = 1;
-            ++summary.skipped;
+          const auto j = static_cast<std::size_t>(position(row.index));
+          if (valid(row) && kept_[j] == 0) {
+            kept_[j] = 1;
+            ++summary_.skipped;
           }
         }
       } catch (const std::runtime_error& error) {
-        throw SweepUsageError(fmt::format("-o {}: {} (or --force to start this sweep over there)", options.output,
-                                          error.what()));
+        refuse_folder(error);
       }
     }
     if (journal) {
       // Fold the killed run's journal into the manifest, then start a new one.
       std::vector<ManifestReader> sources;
-      if (auto m = ManifestReader::open(manifest_path, pointers)) sources.push_back(std::move(*m));
-      if (auto j = ManifestReader::open(journal_path, pointers, true)) sources.push_back(std::move(*j));
-      merge_sources(manifest_path, pointers, sources, [&](const Row& row, std::size_t) { return valid(row); },
+      if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
+      if (auto j = ManifestReader::open(journal_path_, pointers_, true)) sources.push_back(std::move(*j));
+      merge_sources(manifest_path_, pointers_, sources, [&](const Row& row, std::size_t) { return valid(row); },
                     [](const Row&) {}, false);
-      have_manifest = true;
+      have_manifest_ = true;
     }
   }
-  std::error_code ignored;
-  fs::remove(journal_path, ignored);
-  render::write_file_atomically(dir / kSweepFile, definition_json(definition));
 
-  std::FILE* journal = std::fopen(journal_path.c_str(), "w");
-  if (journal == nullptr) {
-    throw render::OutputError(fmt::format("{}: cannot write ({})", journal_path.string(), std::strerror(errno)));
-  }
-  struct Closer {
-    std::FILE*& file;
-    ~Closer() {
-      if (file != nullptr) std::fclose(file);
-    }
-  } closer{journal};
-
-  // Variants finish out of order; their rows are journaled in order, on this
-  // thread, as soon as every earlier one is (core/worker_pool.hpp).
-  std::int64_t done = 0;  // in this run (resumed variants are not counted)
-  bool write_failed = false;
-  std::string line;
+  // A variant's row: run, or (resumed) nothing to do.
   struct Finished {
     Row row;
     bool write_failed = false;
   };
-  const auto produce = [&](std::int64_t j, const std::atomic<bool>&) -> std::optional<Finished> {
-    if (kept[static_cast<std::size_t>(j)] != 0) return std::nullopt;  // resumed
-    const std::int64_t index = shard_k + j * shard_n;
+  std::optional<Finished> produce(std::int64_t j) const {
+    if (kept_[static_cast<std::size_t>(j)] != 0) return std::nullopt;  // resumed
+    const std::int64_t index = shard_k_ + j * shard_n_;
     Finished finished;
     try {
-      finished.row = run_variant(job, index, finished.write_failed);
+      finished.row = run_variant(job_, index, finished.write_failed);
     } catch (const std::exception& error) {
       // Nothing a variant does may end the sweep: it is a failed row.
       finished.row = Row{};
       finished.row.index = index;
-      finished.row.values.assign(pointers.size(), "");
+      finished.row.values.assign(pointers_.size(), "");
       finished.row.status = fmt::format("internal error: {}", error.what());
     }
     return finished;
-  };
-  const auto journal_row = [&](std::int64_t, std::optional<Finished>&& finished) {
-    if (!finished) return true;
-    ++done;
-    write_failed = write_failed || finished->write_failed;
-    const Row& row = finished->row;
-    if (row.ok()) {
-      ++summary.ok;
-    } else {
-      ++summary.failed;
-      if (summary.failures.size() < kMaxFailuresKept) summary.failures.push_back(failure_line(pointers, row));
-    }
-    line.clear();
-    append_row(line, row);
-    if (std::fwrite(line.data(), 1, line.size(), journal) != line.size() || std::fflush(journal) != 0) {
-      write_failed = true;
-    }
-    return true;
-  };
-
-  const auto work = static_cast<int>(std::min<std::int64_t>(mine - summary.skipped, INT32_MAX));
-  animate::Progress progress("pita sweep", work, options.progress, true);
-  {
-    const render::DeferredInterrupts deferred;
-    PoolOptions pool;
-    pool.threads = static_cast<int>(std::min<std::int64_t>(options.jobs, std::max<std::int64_t>(mine, 1)));
-    const auto tick = [&] {
-      progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
-      return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
-    };
-    try {
-      run_ordered(mine, pool, produce, journal_row, tick);
-    } catch (const std::system_error& error) {
-      throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options.jobs, error.what()));
-    }
   }
-  progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
-  std::fclose(journal);
-  journal = nullptr;
+
+  // The variants not resumed, on the pool; their rows journaled in order, on
+  // this thread, as soon as every earlier one is (core/worker_pool.hpp).
+  void run_variants() {
+    std::FILE* journal = std::fopen(journal_path_.c_str(), "w");
+    if (journal == nullptr) {
+      throw render::OutputError(fmt::format("{}: cannot write ({})", journal_path_.string(), std::strerror(errno)));
+    }
+    struct Closer {
+      std::FILE* file;
+      ~Closer() { std::fclose(file); }
+    } closer{journal};
+    std::int64_t done = 0;  // in this run (resumed variants are not counted)
+    std::string line;
+    const auto journal_row = [&](std::int64_t, std::optional<Finished>&& finished) {
+      if (!finished) return true;
+      ++done;
+      summary_.write_failed = summary_.write_failed || finished->write_failed;
+      const Row& row = finished->row;
+      if (row.ok()) {
+        ++summary_.ok;
+      } else {
+        ++summary_.failed;
+        if (summary_.failures.size() < kMaxFailuresKept) summary_.failures.push_back(failure_line(pointers_, row));
+      }
+      line.clear();
+      append_row(line, row);
+      if (std::fwrite(line.data(), 1, line.size(), journal) != line.size() || std::fflush(journal) != 0) {
+        summary_.write_failed = true;
+      }
+      return true;
+    };
+    const auto work = static_cast<int>(std::min<std::int64_t>(mine_ - summary_.skipped, INT32_MAX));
+    animate::Progress progress("pita sweep", work, options_.progress, true);
+    {
+      const render::DeferredInterrupts deferred;
+      PoolOptions pool;
+      pool.threads = static_cast<int>(std::min<std::int64_t>(options_.jobs, std::max<std::int64_t>(mine_, 1)));
+      const auto tick = [&] {
+        progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
+        return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
+      };
+      try {
+        run_ordered(
+            mine_, pool, [this](std::int64_t j, const std::atomic<bool>&) { return produce(j); }, journal_row,
+            tick);
+      } catch (const std::system_error& error) {
+        throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options_.jobs, error.what()));
+      }
+    }
+    progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
+  }
 
   // The manifest: the rows kept from before and the journal's, in order (an
   // interrupted run's rows that were still waiting for an earlier one are
-  // left out: their variants are done again). Then the journal goes.
-  const int sig = render::pending_interrupt();
-  {
+  // left out: their variants are done again). Then the journal goes; a
+  // pending signal ends the process here.
+  void write_manifest() {
+    const int sig = render::pending_interrupt();
     std::vector<ManifestReader> sources;
-    if (have_manifest) {
-      if (auto m = ManifestReader::open(manifest_path, pointers)) sources.push_back(std::move(*m));
+    if (have_manifest_) {
+      if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
     }
     const std::size_t journal_source = sources.size();
-    if (auto j = ManifestReader::open(journal_path, pointers, true)) sources.push_back(std::move(*j));
+    if (auto j = ManifestReader::open(journal_path_, pointers_, true)) sources.push_back(std::move(*j));
     const auto accept = [&](const Row& row, std::size_t source) {
       if (!in_shard(row.index)) return false;
       // Rows from before: only those kept, the others were done again.
-      return source == journal_source || kept[static_cast<std::size_t>(position(row.index))] != 0;
+      return source == journal_source || kept_[static_cast<std::size_t>(position(row.index))] != 0;
     };
     try {
-      merge_sources(manifest_path, pointers, sources, accept, [](const Row&) {}, false);
+      merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, false);
     } catch (const render::OutputError&) {
       if (sig != 0) render::exit_interrupted(sig);  // the journal stays: the next run folds it
       throw;
     }
-    fs::remove(journal_path, ignored);
+    std::error_code ignored;
+    fs::remove(journal_path_, ignored);
+    if (sig != 0) render::exit_interrupted(sig);
   }
-  if (sig != 0) render::exit_interrupted(sig);
-  summary.write_failed = write_failed;
-  if (options.shard) {
-    summary.notes.push_back(fmt::format("shard {}/{}: join the shards with pita sweep --merge {}", shard_k, shard_n,
-                                        options.output));
-  } else {
-    write_reports(dir, definition, summary.notes);
-  }
-  return summary;
-}
 
-MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
-  (void)quiet;
-  const fs::path dir(dir_text);
-  const Definition definition = read_definition(dir);
-  const std::vector<std::string> pointers = pointers_of(definition);
-  // The sweep again, from its definition: each row of the parts must be its
-  // variant (same values, same content hash), else it is another sweep's.
+  const SweepOptions& options_;
+  const Grid& grid_;
+  const BaseScene& base_;
+  const fs::path dir_;
+  const Definition& definition_;
+  const Job job_;
+  const std::vector<std::string> pointers_;
+  const fs::path manifest_path_;
+  const fs::path journal_path_;
+  const int shard_k_;
+  const int shard_n_;
+  const std::int64_t mine_;
+  std::vector<char> kept_;  // per variant of the shard: resumed from an earlier run
+  bool have_manifest_ = false;
+  SweepSummary summary_;
+};
+
+}  // namespace
+
+SweepSummary run_sweep(const SweepOptions& options) {
+  if (options.jobs < 1) throw SweepUsageError(fmt::format("--jobs: must be >= 1 (got {})", options.jobs));
   std::vector<Axis> axes;
-  for (const auto& [pointer, spec] : definition.axes) axes.push_back(parse_axis(pointer + "=" + spec));
-  const Grid grid(std::move(axes), definition.zip);
-  if (grid.size() != definition.variants) {
-    throw SweepUsageError(fmt::format("--merge {}: {} does not add up ({} variants, its axes make {})", dir_text,
-                                      kSweepFile, definition.variants, grid.size()));
-  }
-  const BaseScene base{definition.scene, definition.base};
-  MergeSummary summary;
-  summary.variants = definition.variants;
-  std::vector<fs::path> parts;
-  std::error_code error;
-  static const std::regex kPart(R"(manifest\.[0-9]+-of-[0-9]+\.csv)");
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
-    if (std::regex_match(entry.path().filename().string(), kPart)) parts.push_back(entry.path());
-  }
-  std::sort(parts.begin(), parts.end());
-  if (parts.empty()) {
-    throw SweepUsageError(fmt::format("--merge {}: no manifest.K-of-N.csv there (run the shards with --shard K/N "
-                                      "-o {} first)",
-                                      dir_text, dir_text));
-  }
-  std::vector<ManifestReader> sources;
-  for (const fs::path& part : parts) {
-    try {
-      if (auto reader = ManifestReader::open(part, pointers)) {
-        sources.push_back(std::move(*reader));
-        summary.parts.push_back(part.filename().string());
-      }
-    } catch (const std::runtime_error& e) {
-      summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
-    }
-  }
-  const auto accept = [&](const Row& row, std::size_t) {
-    if (row.index < 0 || row.index >= definition.variants) return false;
-    const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
-    if (row.hash == content_hash(text, definition.salt)) return true;
-    ++summary.foreign;
-    return false;
-  };
-  std::int64_t expected = 0;
-  const auto missing = [&](std::int64_t from, std::int64_t to) {  // [from, to)
-    if (from >= to) return;
-    summary.missing_count += to - from;
-    if (summary.missing.size() < kMaxRangesKept) summary.missing.emplace_back(from, to - 1);
-  };
-  const auto on_row = [&](const Row& row) {
-    missing(expected, row.index);
-    expected = row.index + 1;
-    ++summary.rows;
-    if (!row.ok()) ++summary.failed;
-  };
-  try {
-    merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, true);
-  } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
-    throw SweepUsageError(fmt::format("--merge: {}", e.what()));
-  }
-  missing(expected, definition.variants);
-  if (summary.foreign > 0) {
-    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
-                                        "{}'s) and were ignored",
-                                        summary.foreign, kSweepFile));
-  }
-  write_reports(dir, definition, summary.notes);
-  return summary;
+  for (const std::string& v : options.vary) axes.push_back(parse_axis(v));
+  const Grid grid(std::move(axes), options.zip);
+  const BaseScene base = load_base(options.scene_path, grid);
+  fs::path dir = output_folder(options);
+  const Definition definition = definition_of(options, grid, base);
+  return SweepRun(options, grid, base, std::move(dir), definition).run();
 }
 
 }  // namespace pita::sweep

@@ -1,0 +1,102 @@
+// `pita sweep --merge DIR`: the shards' manifest.K-of-N.csv joined into one
+// manifest.csv, each row checked against its variant, and the gaps named.
+#include <algorithm>
+#include <filesystem>
+#include <regex>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "render/output_file.hpp"
+#include "sweep/definition.hpp"
+#include "sweep/manifest.hpp"
+#include "sweep/sweep.hpp"
+#include "sweep/variant.hpp"
+
+namespace pita::sweep {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Ranges of missing variants --merge reports (the count covers them all).
+constexpr std::size_t kMaxRangesKept = 1000;
+
+}  // namespace
+
+MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
+  (void)quiet;
+  const fs::path dir(dir_text);
+  const Definition definition = read_definition(dir);
+  const std::vector<std::string> pointers = pointers_of(definition);
+  // The sweep again, from its definition: each row of the parts must be its
+  // variant (same values, same content hash), else it is another sweep's.
+  std::vector<Axis> axes;
+  for (const auto& [pointer, spec] : definition.axes) axes.push_back(parse_axis(pointer + "=" + spec));
+  const Grid grid(std::move(axes), definition.zip);
+  if (grid.size() != definition.variants) {
+    throw SweepUsageError(fmt::format("--merge {}: {} does not add up ({} variants, its axes make {})", dir_text,
+                                      kSweepFile, definition.variants, grid.size()));
+  }
+  const BaseScene base{definition.scene, definition.base};
+  MergeSummary summary;
+  summary.variants = definition.variants;
+  std::vector<fs::path> parts;
+  std::error_code error;
+  static const std::regex kPart(R"(manifest\.[0-9]+-of-[0-9]+\.csv)");
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
+    if (std::regex_match(entry.path().filename().string(), kPart)) parts.push_back(entry.path());
+  }
+  std::sort(parts.begin(), parts.end());
+  if (parts.empty()) {
+    throw SweepUsageError(fmt::format("--merge {}: no manifest.K-of-N.csv there (run the shards with --shard K/N "
+                                      "-o {} first)",
+                                      dir_text, dir_text));
+  }
+  std::vector<ManifestReader> sources;
+  for (const fs::path& part : parts) {
+    try {
+      if (auto reader = ManifestReader::open(part, pointers)) {
+        sources.push_back(std::move(*reader));
+        summary.parts.push_back(part.filename().string());
+      }
+    } catch (const std::runtime_error& e) {
+      summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
+    }
+  }
+  const auto accept = [&](const Row& row, std::size_t) {
+    if (row.index < 0 || row.index >= definition.variants) return false;
+    const std::string text = variant_text(variant_document(base, grid, grid.values(row.index)));
+    if (row.hash == content_hash(text, definition.salt)) return true;
+    ++summary.foreign;
+    return false;
+  };
+  std::int64_t expected = 0;
+  const auto missing = [&](std::int64_t from, std::int64_t to) {  // [from, to)
+    if (from >= to) return;
+    summary.missing_count += to - from;
+    if (summary.missing.size() < kMaxRangesKept) summary.missing.emplace_back(from, to - 1);
+  };
+  const auto on_row = [&](const Row& row) {
+    missing(expected, row.index);
+    expected = row.index + 1;
+    ++summary.rows;
+    if (!row.ok()) ++summary.failed;
+  };
+  try {
+    merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, true);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
+    throw SweepUsageError(fmt::format("--merge: {}", e.what()));
+  }
+  missing(expected, definition.variants);
+  if (summary.foreign > 0) {
+    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
+                                        "{}'s) and were ignored",
+                                        summary.foreign, kSweepFile));
+  }
+  write_reports(dir, definition, summary.notes);
+  return summary;
+}
+
+}  // namespace pita::sweep
