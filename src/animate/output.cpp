@@ -243,6 +243,98 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
 
 // ------------------------------------------------------------ video
 
+// ffmpeg's arguments: raw BGRA frames on its standard input, encoded to
+// `path` as H.264 in MP4, or VP9 in WebM.
+std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, int width, int height, double fps, bool webm,
+                                          const std::string& path) {
+  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
+                                   "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
+                                   "-framerate", fmt::format("{:.17g}", fps), "-i", "pipe:0", "-an",
+                                   // yuv420p needs even sides.
+                                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-pix_fmt", "yuv420p"};
+  if (webm) {
+    for (const char* a : {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"}) args.emplace_back(a);
+  } else {
+    for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
+  }
+  args.push_back(path);
+  return args;
+}
+
+// ffmpeg running with a pipe to its standard input, in its own process group
+// (a terminal's Ctrl-C reaches pita, which stops it and removes the file
+// itself). While it runs, a write to a dead ffmpeg fails with EPIPE instead
+// of killing pita.
+class FfmpegProcess {
+ public:
+  FfmpegProcess(std::vector<std::string> args, const fs::path& out) {
+    int pipe_fds[2];
+    if (::pipe2(pipe_fds, O_CLOEXEC) != 0) output_failed(out, std::strerror(errno));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0);
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const int spawned = ::posix_spawn(&child_, args.front().c_str(), &actions, &attributes, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
+    ::close(pipe_fds[0]);
+    if (spawned != 0) {
+      ::close(pipe_fds[1]);
+      throw AnimationError(fmt::format("-o {}: cannot run {}: {}", out.string(), args.front(), std::strerror(spawned)));
+    }
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    ::sigaction(SIGPIPE, &ignore, &previous_);
+    pipe_ = pipe_fds[1];
+  }
+  FfmpegProcess(const FfmpegProcess&) = delete;
+  FfmpegProcess& operator=(const FfmpegProcess&) = delete;
+  ~FfmpegProcess() {
+    if (child_ > 0) stop(true);
+  }
+
+  // Writes all of `bytes`; false when ffmpeg stopped reading. Throws
+  // Interrupted when a signal is pending.
+  bool write(const std::string& bytes) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+      const ssize_t n = ::write(pipe_, bytes.data() + done, bytes.size() - done);
+      if (n < 0 && errno == EINTR) {
+        if (const int sig = render::pending_interrupt()) throw Interrupted{sig};
+        continue;
+      }
+      if (n <= 0) return false;
+      done += static_cast<std::size_t>(n);
+    }
+    return true;
+  }
+
+  // Closes the pipe (ffmpeg finishes the file), or kills ffmpeg; waits for it.
+  // Returns its wait status.
+  int stop(bool kill_it) {
+    if (pipe_ >= 0) ::close(pipe_);
+    pipe_ = -1;
+    if (kill_it) ::kill(child_, SIGKILL);
+    int status = 0;
+    while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
+    }
+    child_ = -1;
+    ::sigaction(SIGPIPE, &previous_, nullptr);
+    return status;
+  }
+
+ private:
+  pid_t child_ = -1;
+  int pipe_ = -1;
+  struct sigaction previous_ {};
+};
+
 fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
                      const std::vector<render::PanelPlacement>& placements) {
   const std::string& ffmpeg = request.ffmpeg;
@@ -256,60 +348,10 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   const int height = static_cast<int>(std::round(scene.canvas.height * request.scale));
   render::check_pixel_budget(scene, request.scale, request.budget);
   TemporaryFile temporary(request.out);
-  const bool webm = request.kind == OutputKind::webm;
-  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
-                                   "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
-                                   "-framerate", fmt::format("{:.17g}", timeline.fps), "-i", "pipe:0", "-an",
-                                   // yuv420p needs even sides.
-                                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-pix_fmt", "yuv420p"};
-  if (webm) {
-    for (const char* a : {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"}) args.emplace_back(a);
-  } else {
-    for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
-  }
-  args.push_back(temporary.path());
-
-  int pipe_fds[2];
-  if (::pipe2(pipe_fds, O_CLOEXEC) != 0) output_failed(request.out, std::strerror(errno));
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
-  // ffmpeg in its own process group: a terminal's Ctrl-C reaches pita, which
-  // stops it (and removes the file) itself.
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t child = -1;
-  const int spawned = ::posix_spawn(&child, ffmpeg.c_str(), &actions, &attributes, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
-  ::close(pipe_fds[0]);
-  if (spawned != 0) {
-    ::close(pipe_fds[1]);
-    throw AnimationError(fmt::format("-o {}: cannot run {}: {}", request.out.string(), ffmpeg, std::strerror(spawned)));
-  }
-  // Writes to a dead ffmpeg fail with EPIPE instead of killing pita.
-  struct sigaction ignore {}, previous {};
-  ignore.sa_handler = SIG_IGN;
-  ::sigaction(SIGPIPE, &ignore, &previous);
-  int pipe_out = pipe_fds[1];
-  const auto stop_child = [&](bool kill_it) {
-    if (pipe_out >= 0) ::close(pipe_out);
-    pipe_out = -1;
-    if (kill_it) ::kill(child, SIGKILL);
-    int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    ::sigaction(SIGPIPE, &previous, nullptr);
-    return status;
-  };
-
+  FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == OutputKind::webm,
+                                         temporary.path()),
+                        request.out);
   Progress progress("video", timeline.frames, request.progress);
-  bool broken = false;
   try {
     run_frames(
         timeline.frames, request.threads,
@@ -318,32 +360,21 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
           return raw_frame(scene, figure, width, height, request.scale);
         },
         [&](int k, std::string&& bytes) {
-          std::size_t done = 0;
-          while (done < bytes.size() && !broken) {
-            const ssize_t n = ::write(pipe_out, bytes.data() + done, bytes.size() - done);
-            if (n < 0 && errno == EINTR) {
-              if (render::pending_interrupt()) throw Interrupted{render::pending_interrupt()};
-              continue;
-            }
-            if (n <= 0) {
-              broken = true;
-              break;
-            }
-            done += static_cast<std::size_t>(n);
+          if (!process.write(bytes)) {
+            throw render::OutputError(
+                fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)", request.out.string()));
           }
-          if (broken) throw render::OutputError(fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)",
-                                                            request.out.string()));
           progress.update(k + 1);
         });
   } catch (const Interrupted& interrupted) {
-    stop_child(true);
+    process.stop(true);
     ::unlink(temporary.path().c_str());
     render::exit_interrupted(interrupted.signal);
   } catch (...) {
-    stop_child(true);
+    process.stop(true);
     throw;
   }
-  const int status = stop_child(false);
+  const int status = process.stop(false);
   if (const int sig = render::pending_interrupt()) {
     ::unlink(temporary.path().c_str());
     render::exit_interrupted(sig);
