@@ -219,7 +219,7 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
         panel.pose_layers = detail::read_pose_layers(reader, *layers, at + "/layers");
       }
       if (const Json* poses = JsonReader::member(item, "poses")) {
-        keys->poses = detail::read_poses(reader, *poses, at + "/poses", scene.reference_triangle, keys->method);
+        keys->poses = detail::read_poses<Affine2>(reader, *poses, at + "/poses", scene.reference_triangle, keys->method);
         own_poses = true;
       }
     }

@@ -12,7 +12,6 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> kPoseFields = {"t", "matrix", "triangle"};
 constexpr std::array<std::string_view, 7> kShapeKinds = {"polygon", "polyline", "triangle", "outline",
                                                          "image",   "box",      "color"};
 constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square", "picture"};
@@ -136,56 +135,78 @@ PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
   reader.fail(pointer, unknown_method_reason(name, MotionKind::poses));
 }
 
-std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
-                                  const std::string& pointer,
-                                  const std::array<Point, 3>& reference, PoseMethod method) {
+PoseSpace<Affine2>::Simplex PoseSpace<Affine2>::read_simplex(const JsonReader& reader, const Json& value,
+                                                             const std::string& pointer) {
+  return read_three_points(reader, value, pointer);
+}
+bool PoseSpace<Affine2>::degenerate(const Simplex& points) {
+  double cross = 0.0;
+  return detail::degenerate(points, cross);
+}
+Affine2 PoseSpace<Affine2>::frame_of(const Simplex& points) { return detail::frame_of(points); }
+Affine2 PoseSpace<Affine2>::read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  return detail::read_matrix(reader, value, pointer);
+}
+
+template <class Pose>
+std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& value, const std::string& pointer,
+                                          const typename PoseSpace<Pose>::Simplex& reference, PoseMethod method) {
+  using Space = PoseSpace<Pose>;
+  const std::string simplex = Space::kSimplex;
   if (!value.is_array()) {
-    reader.fail(pointer, "must be an array of poses {\"t\": ..., \"matrix\": [[a, b, tx], [c, d, "
-                         "ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]} (got " +
-                             value_text(value) + ")");
+    reader.fail(pointer, fmt::format("must be an array of poses {{\"t\": ..., \"matrix\": {}}} or {{\"t\": ..., "
+                                     "\"{}\": {}}} (got {})",
+                                     Space::kMatrixShape, simplex, Space::kPointsShape, value_text(value)));
   }
   const PoseMethodInfo& about = info(method);
   if (value.size() < static_cast<std::size_t>(about.min_poses) ||
       value.size() > static_cast<std::size_t>(std::min(about.max_poses, kMaxPoses))) {
     reader.fail(pointer, pose_count_reason(method, value.size()));
   }
-  const Affine2 reference_frame = frame_of(reference);
-  std::vector<TimedPose> poses;
+  const std::array<std::string_view, 3> fields = {"t", "matrix", Space::kSimplex};
+  const Pose reference_frame = Space::frame_of(reference);
+  std::vector<TimedPoseOf<Pose>> poses;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
     reader.object(item, at, "a pose");
-    reader.check_fields(item, at, kPoseFields);
+    Space::refuse_other_simplex(reader, item, at);
+    reader.check_fields(item, at, fields);
     const Json* t = JsonReader::member(item, "t");
     if (t == nullptr) reader.fail(at + "/t", "missing required field (the pose's time)");
-    TimedPose pose;
+    TimedPoseOf<Pose> pose;
     pose.t = bounded(reader, *t, at + "/t");
     if (!poses.empty() && !(pose.t > poses.back().t)) {
-      reader.fail(at + "/t", fmt::format("times must increase strictly: {} follows {}",
-                                         number_text(pose.t), number_text(poses.back().t)));
+      reader.fail(at + "/t", fmt::format("times must increase strictly: {} follows {}", number_text(pose.t),
+                                         number_text(poses.back().t)));
     }
     const Json* matrix = JsonReader::member(item, "matrix");
-    const Json* triangle = JsonReader::member(item, "triangle");
-    if (matrix != nullptr && triangle != nullptr) {
-      reader.fail(at + "/triangle", "give either \"matrix\" or \"triangle\", not both");
+    const Json* points = JsonReader::member(item, simplex);
+    if (matrix != nullptr && points != nullptr) {
+      reader.fail(at + "/" + simplex, fmt::format("give either \"matrix\" or \"{}\", not both", simplex));
     }
     if (matrix != nullptr) {
-      pose.pose = read_matrix(reader, *matrix, at + "/matrix");
-    } else if (triangle != nullptr) {
-      const std::array<Point, 3> points = read_three_points(reader, *triangle, at + "/triangle");
-      double cross = 0.0;
-      if (degenerate(points, cross)) {
-        reader.fail(at + "/triangle", "the triangle is degenerate (its points are collinear)");
+      pose.pose = Space::read_matrix(reader, *matrix, at + "/matrix");
+    } else if (points != nullptr) {
+      const typename Space::Simplex given = Space::read_simplex(reader, *points, at + "/" + simplex);
+      if (Space::degenerate(given)) {
+        reader.fail(at + "/" + simplex, fmt::format("the {} is degenerate (its points are {})", simplex, Space::kFlat));
       }
-      pose.pose = compose(frame_of(points), inverse(reference_frame));
+      pose.pose = compose(Space::frame_of(given), inverse(reference_frame));
     } else {
-      reader.fail(at, "a pose needs \"matrix\": [[a, b, tx], [c, d, ty]] or \"triangle\": [[x, y], "
-                      "[x, y], [x, y]] (the images of the reference triangle's points)");
+      reader.fail(at, fmt::format("a pose needs \"matrix\": {} or \"{}\": {} (the images of the reference {}'s "
+                                  "points)",
+                                  Space::kMatrixShape, simplex, Space::kPointsShape, simplex));
     }
     poses.push_back(pose);
   }
   return poses;
 }
+
+template std::vector<TimedPoseOf<Affine2>> read_poses<Affine2>(const JsonReader&, const Json&, const std::string&,
+                                                               const PoseSpace<Affine2>::Simplex&, PoseMethod);
+template std::vector<TimedPoseOf<Affine3>> read_poses<Affine3>(const JsonReader&, const Json&, const std::string&,
+                                                               const PoseSpace<Affine3>::Simplex&, PoseMethod);
 
 std::vector<ShapeOutline> builtin_outline(std::string_view name) {
   const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}, {}}; };

@@ -3,6 +3,11 @@
 // src/scene/; errors are SceneErrors naming the JSON Pointer of the bad value.
 #pragma once
 
+#include <Eigen/Core>
+
+#include "core/affine2.hpp"
+#include "core/affine3.hpp"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -20,12 +25,50 @@ double bounded(const JsonReader& reader, const Json& value, const std::string& p
 std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
                                              const std::string& pointer);
 
-// "poses": an array of {"t", and "matrix": [[a, b, tx], [c, d, ty]] or
-// "triangle": [[x, y], [x, y], [x, y]]}, knots strictly increasing, each pose
-// orientation preserving; as many as `method` takes (at most kMaxPoses).
-std::vector<TimedPose> read_poses(const JsonReader& reader, const Json& value,
-                                  const std::string& pointer,
-                                  const std::array<Point, 3>& reference, PoseMethod method);
+// How a pose of the plane (Affine2) or of space (Affine3) is given: a matrix,
+// or the images of the reference simplex's points (a triangle, a
+// tetrahedron). The one reader of "poses", read_poses<Pose>, is written once
+// over this trait.
+template <class Pose>
+struct PoseSpace;
+
+template <>
+struct PoseSpace<Affine2> {
+  using Simplex = std::array<Point, 3>;
+  static constexpr const char* kSimplex = "triangle";
+  static constexpr const char* kFlat = "collinear";  // what a degenerate simplex's points are
+  static constexpr const char* kMatrixShape = "[[a, b, tx], [c, d, ty]]";
+  static constexpr const char* kPointsShape = "[[x, y], [x, y], [x, y]]";
+  static Simplex read_simplex(const JsonReader& reader, const Json& value, const std::string& pointer);
+  static bool degenerate(const Simplex& points);
+  static Affine2 frame_of(const Simplex& points);  // the unit simplex onto `points`
+  static Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer);
+  // A pose given as the other dimension's simplex (none is refused here: the
+  // field check names it).
+  static void refuse_other_simplex(const JsonReader&, const Json&, const std::string&) {}
+};
+
+template <>
+struct PoseSpace<Affine3> {
+  using Simplex = std::array<Eigen::Vector3d, 4>;
+  static constexpr const char* kSimplex = "tetrahedron";
+  static constexpr const char* kFlat = "coplanar";
+  static constexpr const char* kMatrixShape = "[[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]]";
+  static constexpr const char* kPointsShape = "[[x, y, z] x 4]";
+  static Simplex read_simplex(const JsonReader& reader, const Json& value, const std::string& pointer);
+  static bool degenerate(const Simplex& points);
+  static Affine3 frame_of(const Simplex& points);
+  static Affine3 read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer);
+  // A "triangle" in a 3D scene: a pose of the plane, said so.
+  static void refuse_other_simplex(const JsonReader& reader, const Json& item, const std::string& pointer);
+};
+
+// "poses": an array of {"t", and "matrix" or the simplex ("triangle" in the
+// plane, "tetrahedron" in space)}, knots strictly increasing, each pose
+// invertible; as many as `method` takes (at most kMaxPoses).
+template <class Pose>
+std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& value, const std::string& pointer,
+                                          const typename PoseSpace<Pose>::Simplex& reference, PoseMethod method);
 
 // "shapes": an array of {"polygon": points} | {"polyline": points} |
 // {"triangle": "reference"} | {"outline": "F" | "house" | "square" |

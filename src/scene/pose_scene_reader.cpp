@@ -95,7 +95,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   const Json* panels = JsonReader::member(document, "panels");
   const Json* poses = JsonReader::member(document, "poses");
   if (poses != nullptr) {
-    keys.poses = detail::read_poses(reader, *poses, "/poses", scene.reference_triangle, keys.method);
+    keys.poses = detail::read_poses<Affine2>(reader, *poses, "/poses", scene.reference_triangle, keys.method);
   } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
     reader.fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
                    "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");

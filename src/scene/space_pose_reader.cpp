@@ -25,7 +25,6 @@ constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation
                                                           "target"};
 constexpr std::array<std::string_view, 4> kSolidNames = {"cube", "tetrahedron", "F", "house"};
 constexpr std::array<std::string_view, 2> kProjections = {"orthographic", "perspective"};
-constexpr std::array<std::string_view, 3> kSpacePoseFields = {"t", "matrix", "tetrahedron"};
 
 const char* const kMatrixShape = "[[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]]";
 
@@ -265,58 +264,20 @@ std::array<Eigen::Vector3d, 4> read_reference_tetrahedron(const JsonReader& read
   return points;
 }
 
-std::vector<TimedPose3> read_space_poses(const JsonReader& reader, const Json& value, const std::string& pointer,
-                                         const std::array<Eigen::Vector3d, 4>& reference, PoseMethod method) {
-  if (!value.is_array()) {
-    reader.fail(pointer, fmt::format("must be an array of poses {{\"t\": ..., \"matrix\": {}}} or {{\"t\": ..., "
-                                     "\"tetrahedron\": [[x, y, z] x 4]}} (got {})",
-                                     kMatrixShape, value_text(value)));
+PoseSpace<Affine3>::Simplex PoseSpace<Affine3>::read_simplex(const JsonReader& reader, const Json& value,
+                                                             const std::string& pointer) {
+  return read_four_points(reader, value, pointer);
+}
+bool PoseSpace<Affine3>::degenerate(const Simplex& points) { return detail::degenerate(points); }
+Affine3 PoseSpace<Affine3>::frame_of(const Simplex& points) { return detail::frame_of(points); }
+Affine3 PoseSpace<Affine3>::read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  return read_matrix3(reader, value, pointer);
+}
+void PoseSpace<Affine3>::refuse_other_simplex(const JsonReader& reader, const Json& item, const std::string& pointer) {
+  if (JsonReader::member(item, "triangle") != nullptr) {
+    reader.fail(pointer + "/triangle", "a triangle is a pose of the plane; a 3D scene (\"dimension\": 3) gives "
+                                       "\"tetrahedron\": four points [x, y, z], or a 3x4 \"matrix\"");
   }
-  const PoseMethodInfo& about = info(method);
-  if (value.size() < static_cast<std::size_t>(about.min_poses) ||
-      value.size() > static_cast<std::size_t>(std::min(about.max_poses, kMaxPoses))) {
-    reader.fail(pointer, pose_count_reason(method, value.size()));
-  }
-  const Affine3 reference_frame = frame_of(reference);
-  std::vector<TimedPose3> poses;
-  for (std::size_t i = 0; i < value.size(); ++i) {
-    const std::string at = element_pointer(pointer, i);
-    const Json& item = value[i];
-    reader.object(item, at, "a pose");
-    if (JsonReader::member(item, "triangle") != nullptr) {
-      reader.fail(at + "/triangle", "a triangle is a pose of the plane; a 3D scene (\"dimension\": 3) gives "
-                                    "\"tetrahedron\": four points [x, y, z], or a 3x4 \"matrix\"");
-    }
-    reader.check_fields(item, at, kSpacePoseFields);
-    const Json* t = JsonReader::member(item, "t");
-    if (t == nullptr) reader.fail(at + "/t", "missing required field (the pose's time)");
-    TimedPose3 pose;
-    pose.t = bounded(reader, *t, at + "/t");
-    if (!poses.empty() && !(pose.t > poses.back().t)) {
-      reader.fail(at + "/t", fmt::format("times must increase strictly: {} follows {}", number_text(pose.t),
-                                         number_text(poses.back().t)));
-    }
-    const Json* matrix = JsonReader::member(item, "matrix");
-    const Json* tetrahedron = JsonReader::member(item, "tetrahedron");
-    if (matrix != nullptr && tetrahedron != nullptr) {
-      reader.fail(at + "/tetrahedron", "give either \"matrix\" or \"tetrahedron\", not both");
-    }
-    if (matrix != nullptr) {
-      pose.pose = read_matrix3(reader, *matrix, at + "/matrix");
-    } else if (tetrahedron != nullptr) {
-      const std::array<Eigen::Vector3d, 4> points = read_four_points(reader, *tetrahedron, at + "/tetrahedron");
-      if (degenerate(points)) {
-        reader.fail(at + "/tetrahedron", "the tetrahedron is degenerate (its points are coplanar)");
-      }
-      pose.pose = compose(frame_of(points), inverse(reference_frame));
-    } else {
-      reader.fail(at, fmt::format("a pose needs \"matrix\": {} or \"tetrahedron\": [[x, y, z] x 4] (the images "
-                                  "of the reference tetrahedron's points)",
-                                  kMatrixShape));
-    }
-    poses.push_back(pose);
-  }
-  return poses;
 }
 
 Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
@@ -354,7 +315,7 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
     reader.fail("/poses", fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}})",
                                       kMatrixShape));
   }
-  keys.poses = read_space_poses(reader, *poses, "/poses", scene.reference_tetrahedron, keys.method);
+  keys.poses = read_poses<Affine3>(reader, *poses, "/poses", scene.reference_tetrahedron, keys.method);
   scene.keys = std::move(keys);
   // "timing" as in 2D (README "Timing"); arc_length follows the image of the
   // reference tetrahedron's first point ("p"), second point ("q") or their

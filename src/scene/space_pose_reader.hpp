@@ -20,11 +20,7 @@ namespace pita::scene::detail {
 std::array<Eigen::Vector3d, 4> read_reference_tetrahedron(const JsonReader& reader, const Json& value,
                                                           const std::string& pointer);
 
-// "poses": an array of {"t", and "matrix": [[a, b, c, tx], [d, e, f, ty],
-// [g, h, i, tz]] or "tetrahedron": [[x, y, z] x 4]}, knots strictly
-// increasing, each pose invertible; as many as `method` takes.
-std::vector<TimedPose3> read_space_poses(const JsonReader& reader, const Json& value, const std::string& pointer,
-                                         const std::array<Eigen::Vector3d, 4>& reference, PoseMethod method);
+// "poses" of space: read_poses<Affine3> (pose_reader.hpp).
 
 // The whole 3D pose scene (the document has "dimension": 3). Refused at
 // /dimension unless the reader's options allow 3D scenes.

@@ -138,7 +138,7 @@ TEST(PoseReader, PoseMethodsByNameAndArrowMethodsRefused) {
 // A triangle pose is the affinity that maps the reference triangle onto it:
 // with the unit reference triangle, its columns are the edges from the first point.
 TEST(PoseReader, TrianglePoseMapsTheReferenceOntoTheTriangle) {
-  const std::vector<TimedPose> poses = detail::read_poses(
+  const std::vector<TimedPose> poses = detail::read_poses<Affine2>(
       kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
                                {"t": 1.5, "triangle": [[2, 1], [4, 1], [2, 4]]}])"),
       "/poses", kUnitTriangle, PoseMethod::sam);
@@ -152,20 +152,20 @@ TEST(PoseReader, TrianglePoseMapsTheReferenceOntoTheTriangle) {
 
 TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
   EXPECT_EQ(failure([] {
-              detail::read_poses(kReader, Json::parse(R"([{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
+              detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
                                  "/poses", kUnitTriangle, PoseMethod::sam);
             }),
             "/poses/1/t: times must increase strictly: 1 follows 1");
   EXPECT_EQ(failure([] {
-              detail::read_poses(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 2, 0], [2, 4, 0]]},
+              detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 2, 0], [2, 4, 0]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
                                  "/poses", kUnitTriangle, PoseMethod::sam);
             }),
             "/poses/0/matrix: the linear part [[a, b], [c, d]] has determinant 0 (its singular values "
             "differ by more than 1e16): the pose is singular, it flattens the plane onto a line or a point");
   EXPECT_EQ(failure([] {
-              detail::read_poses(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]],
+              detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]],
                                                            "triangle": [[0, 0], [1, 0], [0, 1]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
                                  "/poses", kUnitTriangle, PoseMethod::sam);
