@@ -59,9 +59,12 @@ class SpaceBuilder {
 
   Drawing build() {
     projection_.emplace(make_projection());
-    for (std::size_t i = 0; i < scene_.pose_layers.size(); ++i) {
-      layer_ = "/layers/" + std::to_string(i);
-      std::visit([this](const auto& layer) { add(layer); }, scene_.pose_layers[i]);
+    // The panel's own layers, else the scene's.
+    const bool own = panel_.pose_layers.has_value();
+    const std::vector<scene::PoseLayer>& layers = own ? *panel_.pose_layers : scene_.pose_layers;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
+      std::visit([this](const auto& layer) { add(layer); }, layers[i]);
     }
     return std::move(drawing_);
   }

@@ -3,6 +3,7 @@
 #include "scene/scene_readers.hpp"
 
 #include <array>
+#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include "core/overloaded.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
+#include "scene/space_pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -174,6 +176,107 @@ std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, cons
 }
 
 
+namespace {
+
+// What differs between the panels of a pose scene of the plane and of space:
+// their fields (solids are the scene's: a panel of space has no "shapes"),
+// the methods they take, the reference simplex and the layers they draw.
+template <class Pose>
+struct PosePanelSpace;
+template <>
+struct PosePanelSpace<Affine2> {
+  static constexpr std::array<std::string_view, 8> kFields = kPosePanelFields;
+  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_pose_method(reader, value, pointer);
+  }
+  static const PoseSpace<Affine2>::Simplex& reference(const Scene& scene) { return scene.reference_triangle; }
+  static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_pose_layers(reader, value, pointer);
+  }
+};
+template <>
+struct PosePanelSpace<Affine3> {
+  static constexpr std::array<std::string_view, 7> kFields = {"method", "poses",        "title", "samples",
+                                                              "layers", "subdivisions", "timing"};
+  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_space_pose_method(reader, value, pointer);
+  }
+  static const PoseSpace<Affine3>::Simplex& reference(const Scene& scene) { return scene.reference_tetrahedron; }
+  static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_space_pose_layers(reader, value, pointer);
+  }
+};
+
+// Panel `at` of a pose scene: a method name, or an object whose fields
+// override the scene's.
+template <class Pose>
+Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::string& at, const Scene& scene) {
+  using Space = PosePanelSpace<Pose>;
+  Panel panel = scene_panel(scene, at);
+  PoseKeys<Pose>& keys = std::get<PoseKeys<Pose>>(panel.keys);
+  bool own_method = false, own_poses = false;
+  if (item.is_string()) {
+    keys.method = Space::method(reader, item, at);
+    own_method = true;
+  } else {
+    reader.object(item, at, "a panel (a pose method name or an object)");
+    if constexpr (std::is_same_v<Pose, Affine3>) {
+      if (JsonReader::member(item, "shapes") != nullptr) {
+        reader.fail(at + "/shapes", "the solids are the scene's \"shapes\": a panel of a 3D scene moves them by its "
+                                    "own method, poses or timing");
+      }
+    }
+    reader.check_fields(item, at, Space::kFields);
+    if (const Json* method = JsonReader::member(item, "method")) {
+      keys.method = Space::method(reader, *method, at + "/method");
+      own_method = true;
+    }
+    if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");
+    if (const Json* timing = JsonReader::member(item, "timing")) {
+      panel.timing = detail::read_timing(reader, *timing, at + "/timing");
+    }
+    if (const Json* samples = JsonReader::member(item, "samples")) {
+      panel.samples = reader.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
+      panel.samples_pointer = at + "/samples";
+    }
+    if (const Json* subdivisions = JsonReader::member(item, "subdivisions")) {
+      keys.subdivisions = reader.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
+      own_method = true;  // the motion changes: check it again
+    }
+    if constexpr (std::is_same_v<Pose, Affine2>) {
+      if (const Json* shapes = JsonReader::member(item, "shapes")) {
+        panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
+      }
+    }
+    if (const Json* layers = JsonReader::member(item, "layers")) {
+      panel.pose_layers = Space::layers(reader, *layers, at + "/layers");
+    }
+    if (const Json* poses = JsonReader::member(item, "poses")) {
+      keys.poses = detail::read_poses<Pose>(reader, *poses, at + "/poses", Space::reference(scene), keys.method);
+      own_poses = true;
+    }
+  }
+  const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
+  if (needs_motion(layers)) {
+    const PoseMethodInfo& about = info(keys.method);
+    const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
+    const auto count = static_cast<int>(keys.poses.size());
+    if (keys.poses.empty()) {
+      reader.fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
+                      "scene \"poses\"");
+    }
+    if (count < about.min_poses || count > about.max_poses) {
+      reader.fail(own_method ? at : poses_at,
+                  detail::pose_count_reason(keys.method, keys.poses.size()) + "; give the panel its own \"poses\"");
+    }
+    panel.motion_pointer = own_poses ? poses_at : own_method ? at : std::string("/poses");
+  }
+  if (panel.title.empty() && own_method) panel.title = std::string(info(keys.method).id);
+  return panel;
+}
+
+}  // namespace
+
 std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
                                     const Scene& scene) {
   if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
@@ -183,64 +286,13 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
   std::vector<Panel> panels;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
-    const Json& item = value[i];
-    Panel panel = scene_panel(scene, at);
-    // Panels of a pose scene in the plane (3D scenes have no panels).
-    auto* keys = std::get_if<PlanePoseKeys>(&panel.keys);
-    if (keys == nullptr) reader.fail(pointer, "panels of poses take a scene of poses in the plane");
-    bool own_method = false, own_poses = false;
-    if (item.is_string()) {
-      keys->method = detail::read_pose_method(reader, item, at);
-      own_method = true;
-    } else {
-      reader.object(item, at, "a panel (a pose method name or an object)");
-      reader.check_fields(item, at, kPosePanelFields);
-      if (const Json* method = JsonReader::member(item, "method")) {
-        keys->method = detail::read_pose_method(reader, *method, at + "/method");
-        own_method = true;
-      }
-      if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");
-      if (const Json* timing = JsonReader::member(item, "timing")) {
-        panel.timing = detail::read_timing(reader, *timing, at + "/timing");
-      }
-      if (const Json* samples = JsonReader::member(item, "samples")) {
-        panel.samples = reader.integer(*samples, at + "/samples", kMinSamples, kMaxFigureSamples);
-        panel.samples_pointer = at + "/samples";
-      }
-      if (const Json* subdivisions = JsonReader::member(item, "subdivisions")) {
-        keys->subdivisions =
-            reader.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
-        own_method = true;  // the motion changes: check it again
-      }
-      if (const Json* shapes = JsonReader::member(item, "shapes")) {
-        panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
-      }
-      if (const Json* layers = JsonReader::member(item, "layers")) {
-        panel.pose_layers = detail::read_pose_layers(reader, *layers, at + "/layers");
-      }
-      if (const Json* poses = JsonReader::member(item, "poses")) {
-        keys->poses = detail::read_poses<Affine2>(reader, *poses, at + "/poses", scene.reference_triangle, keys->method);
-        own_poses = true;
-      }
-    }
-    const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
-    if (needs_motion(layers)) {
-      const PoseMethodInfo& about = info(keys->method);
-      const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
-      const auto count = static_cast<int>(keys->poses.size());
-      if (keys->poses.empty()) {
-        reader.fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
-                 "scene \"poses\"");
-      }
-      if (count < about.min_poses || count > about.max_poses) {
-        reader.fail(own_method ? at : poses_at,
-             detail::pose_count_reason(keys->method, keys->poses.size()) +
-                 "; give the panel its own \"poses\"");
-      }
-      panel.motion_pointer = own_poses ? poses_at : own_method ? at : std::string("/poses");
-    }
-    if (panel.title.empty() && own_method) panel.title = std::string(info(keys->method).id);
-    panels.push_back(std::move(panel));
+    panels.push_back(std::visit(
+        overloaded{[&](const PlanePoseKeys&) { return read_pose_panel<Affine2>(reader, value[i], at, scene); },
+                   [&](const SpacePoseKeys&) { return read_pose_panel<Affine3>(reader, value[i], at, scene); },
+                   [&](const TrackMethod&) -> Panel {
+                     reader.fail(pointer, "panels of poses take a scene of poses");
+                   }},
+        scene.keys));
   }
   return panels;
 }

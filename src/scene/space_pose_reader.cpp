@@ -16,9 +16,9 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 15> kSpaceSceneFields = {
+constexpr std::array<std::string_view, 16> kSpaceSceneFields = {
     "$schema", "description", "dimension", "method", "poses", "reference_tetrahedron", "samples", "subdivisions",
-    "timing", "golden", "shapes", "camera", "layers", "title", "canvas"};
+    "timing", "golden", "shapes", "camera", "layers", "title", "canvas", "panels"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation", "distance", "projection",
@@ -280,6 +280,19 @@ void PoseSpace<Affine3>::refuse_other_simplex(const JsonReader& reader, const Js
   }
 }
 
+PoseMethod read_space_pose_method(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const PoseMethod method = read_pose_method(reader, value, pointer);
+  if (!info(method).in_space) {
+    std::vector<std::string_view> ids;
+    for (const PoseMethodInfo& entry : all_pose_methods()) {
+      if (entry.in_space) ids.push_back(entry.id);
+    }
+    reader.fail(pointer, fmt::format("method {} moves poses of the plane only; 3D scenes take {}", info(method).id,
+                                     quoted_choices(ids)));
+  }
+  return method;
+}
+
 Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   reader.check_fields(document, "", kSpaceSceneFields);
   Scene scene;
@@ -292,15 +305,7 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   }
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a pose method such as \"SAM\")");
-  keys.method = read_pose_method(reader, *method, "/method");
-  if (!info(keys.method).in_space) {
-    std::vector<std::string_view> ids;
-    for (const PoseMethodInfo& entry : all_pose_methods()) {
-      if (entry.in_space) ids.push_back(entry.id);
-    }
-    reader.fail("/method", fmt::format("method {} moves poses of the plane only; 3D scenes take {}",
-                                       info(keys.method).id, quoted_choices(ids)));
-  }
+  keys.method = read_space_pose_method(reader, *method, "/method");
   if (const Json* reference = JsonReader::member(document, "reference_tetrahedron")) {
     scene.reference_tetrahedron = read_reference_tetrahedron(reader, *reference, "/reference_tetrahedron");
   }
@@ -340,7 +345,11 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   } else {
     scene.pose_layers = {ShapesLayer{}, PosesLayer{}};
   }
-  scene.panels = {scene_panel(scene, "")};
+  if (const Json* panels = JsonReader::member(document, "panels")) {
+    scene.panels = read_pose_panels(reader, *panels, "/panels", scene);
+  } else {
+    scene.panels = {scene_panel(scene, "")};
+  }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
   return scene;
 }

@@ -22,6 +22,9 @@ std::array<Eigen::Vector3d, 4> read_reference_tetrahedron(const JsonReader& read
 
 // "poses" of space: read_poses<Affine3> (pose_reader.hpp).
 
+// The method of a 3D scene or panel: one of the SAM family (in_space).
+PoseMethod read_space_pose_method(const JsonReader& reader, const Json& value, const std::string& pointer);
+
 // The whole 3D pose scene (the document has "dimension": 3). Refused at
 // /dimension unless the reader's options allow 3D scenes.
 Scene read_space_pose_scene(const JsonReader& reader, const Json& document);

@@ -174,6 +174,29 @@ TEST_F(Measure, PosesOfSpaceHaveTheirAraAndVolume) {
   EXPECT_NE(md.out.find("| ARA | volume monotone |"), std::string::npos) << md.out;
 }
 
+// Panels of a 3D scene are measured one by one, each with its own method: the
+// same poses, steady by SAM and not by linear interpolation; `pita eval
+// --panel` prints the panel's own frames.
+TEST_F(Measure, PanelsOfASpaceSceneEachHaveTheirMeasures) {
+  dir.write("panels.json", R"({"dimension": 3, "method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 2, "matrix": [[0, -2, 0, 1], [2, 0, 0, 2], [0, 0, 2, 3]]}], "panels": ["SAM", "linear"]})");
+  const RunResult measured = run({"measure", "panels.json", "--format", "json"});
+  ASSERT_EQ(measured.exit_code, 0) << measured.err;
+  const Json motions = Json::parse(measured.out)["motions"];
+  ASSERT_EQ(motions.size(), 2u);
+  EXPECT_EQ(motions[0]["pointer"], "/panels/0");
+  EXPECT_EQ(motions[1]["method"], "linear");
+  EXPECT_LT(motions[0]["ara"].get<double>(), 1e-6);
+  EXPECT_GT(motions[1]["ara"].get<double>(), 0.1);
+  // At t = 1 the linear panel's matrix is the mean of the two poses (an independent check).
+  const RunResult linear = run({"eval", "panels.json", "--panel", "1", "--t", "1"});
+  ASSERT_EQ(linear.exit_code, 0) << linear.err;
+  const Json frame = Json::parse(linear.out)["frames"][0];
+  EXPECT_EQ(frame["matrix"][0][1].get<double>(), -1.0);
+  EXPECT_EQ(frame["matrix"][2][3].get<double>(), 1.5);
+}
+
 TEST_F(Measure, EverySceneOfScenesIsMeasured) {
   for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(PITA_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".json") continue;

@@ -116,5 +116,38 @@ TEST(SpacePanelDrawing, WireframeWithoutFill) {
   }
 }
 
+// Panels of a 3D scene: each draws its own motion (its poses, or the scene's)
+// and its own layers, named by the panel's pointer. Seen from +x, the image's
+// right is +y: the panel that translates by 3 along y moves the cube's corner
+// (1, 1, 1) from (1, 1) to (4, 1) on the image.
+TEST(SpacePanelDrawing, EachPanelDrawsItsOwnPosesAndLayers) {
+  const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}],
+      "camera": {"azimuth": 0, "elevation": 0, "distance": 10, "target": [0, 0, 0]},
+      "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                {"t": 1, "matrix": [[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0]]}],
+      "layers": [{"type": "shapes"}],
+      "panels": ["linear", {"title": "along y", "layers": [{"type": "paths", "samples": 2}],
+                 "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                           {"t": 1, "matrix": [[1, 0, 0, 0], [0, 1, 0, 3], [0, 0, 1, 0]]}]}]})",
+                                                "s.json");
+  ASSERT_EQ(scene.panels.size(), 2u);
+  EXPECT_EQ(std::get<scene::SpacePoseKeys>(scene.panels[0].keys).method, PoseMethod::linear);
+  EXPECT_EQ(scene.panels[1].title, "along y");
+  const Drawing first = space_panel_drawing(scene, scene.panels[0]);
+  ASSERT_FALSE(first.items.empty());
+  EXPECT_EQ(first.items.front().layer, "/layers/0");  // the scene's layers
+  const Drawing second = space_panel_drawing(scene, scene.panels[1]);
+  ASSERT_EQ(second.items.size(), 8u);  // a path per vertex of the cube
+  bool corner = false;
+  for (const Item& item : second.items) {
+    EXPECT_EQ(item.layer, "/panels/1/layers/0");
+    const std::vector<Point>& path = std::get<Polyline>(item.shape).points;
+    ASSERT_EQ(path.size(), 2u);
+    EXPECT_LT(std::abs(path.back() - path.front() - Point(3.0, 0.0)), 1e-12);  // its own poses, not the scene's
+    corner = corner || gap(path.front(), Point(1.0, 1.0)) < 1e-12;
+  }
+  EXPECT_TRUE(corner);
+}
+
 }  // namespace
 }  // namespace pita::render

@@ -187,7 +187,10 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
             (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
                                    "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "shapes",
-                                   "camera", "layers", "title", "canvas"}));
+                                   "camera", "layers", "title", "canvas", "panels"}));
+  // Their panels (panel_reader.cpp's PosePanelSpace<Affine3>): no shapes, the solids are the scene's.
+  EXPECT_EQ(keys_of(definitions.at("spacePosePanel").at("anyOf").at(1).at("properties")),
+            (std::set<std::string>{"method", "poses", "title", "samples", "layers", "subdivisions", "timing"}));
   EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
             (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),

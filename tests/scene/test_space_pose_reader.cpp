@@ -91,5 +91,35 @@ TEST(SpacePoseScene, MethodOverrideKeepsToTheSamFamily) {
   }
 }
 
+// "panels" of a 3D scene: a method of the SAM family by name, or an object
+// with its own method, poses (matrices or tetrahedra), samples and layers;
+// the scene's otherwise. Refusals: tests/data/bad/space-panel-*.
+TEST(SpacePoseScene, PanelsOverrideTheMethodPosesAndLayers) {
+  const Scene scene = parse_space(R"({"dimension": 3, "method": "SAM", "samples": 7, "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 1, "matrix": [[1, 0, 0, 4], [0, 1, 0, 0], [0, 0, 1, 0]]}],
+      "panels": ["polySAM", {"method": "linear", "samples": 3, "layers": [{"type": "paths"}], "poses": [
+      {"t": 0, "tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]},
+      {"t": 2, "tetrahedron": [[0, 0, 5], [1, 0, 5], [0, 1, 5], [0, 0, 6]]}]}]})");
+  ASSERT_EQ(scene.panels.size(), 2u);
+  const SpacePoseKeys& first = std::get<SpacePoseKeys>(scene.panels[0].keys);
+  EXPECT_EQ(first.method, PoseMethod::poly_sam);
+  EXPECT_EQ(first.poses.size(), 2u);  // the scene's
+  EXPECT_EQ(first.poses[1].pose.b.x(), 4.0);
+  EXPECT_EQ(scene.panels[0].title, "polySAM");
+  EXPECT_EQ(scene.panels[0].motion_pointer, "/panels/0");
+  EXPECT_EQ(scene.panels[0].samples, 7);
+  const SpacePoseKeys& second = std::get<SpacePoseKeys>(scene.panels[1].keys);
+  EXPECT_EQ(second.method, PoseMethod::linear);
+  ASSERT_EQ(second.poses.size(), 2u);
+  EXPECT_EQ(second.poses[1].t, 2.0);
+  EXPECT_EQ(second.poses[1].pose.b, Eigen::Vector3d(0.0, 0.0, 5.0));  // the tetrahedron's translation
+  EXPECT_TRUE(second.poses[1].pose.L.isIdentity());
+  EXPECT_EQ(scene.panels[1].motion_pointer, "/panels/1/poses");
+  EXPECT_EQ(scene.panels[1].samples, 3);
+  ASSERT_TRUE(scene.panels[1].pose_layers.has_value());
+  EXPECT_TRUE(std::holds_alternative<PathsLayer>(scene.panels[1].pose_layers->at(0)));
+}
+
 }  // namespace
 }  // namespace pita::scene
