@@ -69,10 +69,18 @@ Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const a
       push(Polyline{{{0.0, h * bound.p}, {bound.theta, h * bound.p}, {bound.theta, 0.0}}, false, layer.paper_line});
       push(Circle{{bound.theta, h * ours}, 0.035, layer.line, layer.line.color});
       const bool agrees = std::abs(ours - bound.p) < 0.5 * layer.step;
-      std::string angle = bound.theta_text;  // "2 pi/3" as "2π/3"
-      for (std::size_t at = angle.find(" pi"); at != std::string::npos; at = angle.find(" pi")) angle.erase(at, 1);
-      for (std::size_t at = angle.find("pi"); at != std::string::npos; at = angle.find("pi")) {
-        angle.replace(at, 2, "\u03c0");
+      // "2 pi/3" as "2π/3" (built forwards: GCC 12 warns, falsely, of an
+      // overflow in std::string::replace here at -O3).
+      std::string angle;
+      const std::string& given = bound.theta_text;
+      for (std::size_t i = 0; i < given.size();) {
+        const std::size_t pi = given.compare(i, 3, " pi") == 0 ? 3 : given.compare(i, 2, "pi") == 0 ? 2 : 0;
+        if (pi > 0) {
+          angle += "\u03c0";
+          i += pi;
+        } else {
+          angle += given[i++];
+        }
       }
       push(Label{fmt::format("\u03b8 < {}: paper p < {:.2f}, ours {:.2f}{}", angle, bound.p, ours,
                              agrees ? "" : " (differs)"),
