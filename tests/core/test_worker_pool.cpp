@@ -83,17 +83,22 @@ TEST(WorkerPool, ConsumeReturningFalseStopsTheRest) {
 }
 
 TEST(WorkerPool, TickReturningFalseStopsAndTheStopIsVisibleToTasks) {
+  std::atomic<int> started{0};
   std::atomic<bool> saw_stop{false};
   const std::int64_t consumed = run_ordered(
       4, threads_and_window(2, 0),
       [&](std::int64_t, const std::atomic<bool>& stopping) {
+        ++started;
         // Each task waits for the stop (or gives up after 5 s).
         for (int k = 0; k < 5000 && !stopping.load(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(1));
         saw_stop = saw_stop || stopping.load();
         return 0;
       },
-      [](std::int64_t, int&&) { return true; }, [] { return false; });
+      [](std::int64_t, int&&) { return true; },
+      [&] { return started.load() == 0; });  // stop once a task runs
   EXPECT_EQ(consumed, 0);
+  EXPECT_GE(started.load(), 1);
+  EXPECT_LE(started.load(), 2);  // the two workers' first tasks; no other began after the stop
   EXPECT_TRUE(saw_stop.load());
 }
 
