@@ -295,7 +295,12 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
     const double big = k.r + s;
     coefficient = 0.5 * (std::log(big) - std::log(k.det / big)) / s;
   }
-  return {c, coefficient * N, coefficient * coefficient * k.delta};
+  // gamma = coefficient^2 delta = -theta^2 (G1) or y^2 (G2, S1), formed as
+  // +-(coefficient sqrt|delta|)^2: near the S2 boundary (L = -rI plus an
+  // off-diagonal entry of 1e-309) delta is subnormal and the coefficient about
+  // 1e155, whose square alone overflows (docs/paper-notes.md N15).
+  const double root = coefficient * std::sqrt(std::abs(k.delta));
+  return {c, coefficient * N, std::copysign(root * root, k.delta)};
 }
 
 

@@ -320,6 +320,37 @@ TEST(AffinePower, HalfTurnWithScaling) {
   EXPECT_LT(relative_error(compose(half.at(0.5), half.at(0.5)), A), 1e-14);
 }
 
+// Just off the S2 boundary on the complex side (found by fuzz_affine_power):
+// L = -r I plus a subnormal top-right entry, so delta ~ -1e-310 and the G1
+// coefficient theta/omega ~ 3e155, whose square overflows. log L = c I + M
+// with M^2 = -theta^2 I, theta = atan2(omega, r), must stay finite; checked
+// through the invariants det M = theta^2, tr L^t = 2 e^{tc} cos(t theta) and
+// det L^t = (det L)^t, which do not depend on the huge entries' cancellation.
+TEST(AffinePower, HalfTurnBoundaryWithASubnormalEntry) {
+  const double r = 0.12401960784313724;
+  const Matrix2d L = mat(-r, 1.041639967913776e-309, -0.1240196077860638, -r);
+  ASSERT_EQ(select_case(L), RootCase::G1);
+  const Affine2 A{L, Vector2d(-r, -r)};
+  const AffinePowers powers(A);
+  const Matrix2d C = powers.linear_log();
+  ASSERT_TRUE(C.allFinite());
+  const double c = std::log(r);
+  const double theta = kPi;  // atan2(1e-155, -r) rounds to pi
+  EXPECT_NEAR(C.trace() / 2.0, c, 1e-14);
+  const Matrix2d M = C - c * Matrix2d::Identity();
+  EXPECT_NEAR(M(0, 0) * M(1, 1) - M(0, 1) * M(1, 0), theta * theta, 1e-9);
+  for (const double t : {5.472998286124e-310, 0.25, 0.5, 1.5, -0.7}) {
+    const Affine2 power = powers.at(t);
+    ASSERT_TRUE(power.L.allFinite() && power.b.allFinite()) << t;
+    const double scale = std::exp(t * c);
+    EXPECT_NEAR(power.L.trace(), 2.0 * scale * std::cos(t * theta), 1e-9 * scale) << t;
+    EXPECT_NEAR(power.L(0, 0) * power.L(1, 1) - power.L(0, 1) * power.L(1, 0),
+                std::pow(r * r, t), 1e-9 * scale * scale)
+        << t;
+  }
+  EXPECT_LT(relative_error(powers.at(5.472998286124e-310), Affine2::identity()), 1e-12);
+}
+
 TEST(AffinePower, JordanBlockAgreesWithEigen) {
   const Affine2 A{mat(2.0, 1.0, 0.0, 2.0), Vector2d(1.0, -1.0)};
   for (const double t : {-0.7, 0.3, 0.5, 1.9}) {
