@@ -20,7 +20,6 @@
 #include "render/image_cache.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
-#include "render/space_drawing.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::render {
@@ -138,8 +137,8 @@ std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelec
     Drawing drawing = std::visit(
         overloaded{[&](const scene::KeyframeKeys& given) { return arrows(given); },
                    [&](const scene::PointKeys& given) { return arrows(given); },
-                   [&](const scene::PlanePoseKeys&) { return pose_panel_drawing(stage, i, selection); },
-                   [&](const scene::SpacePoseKeys&) { return space_panel_drawing(stage, i, selection); }},
+                   [&](const scene::PlanePoseKeys&) { return pose_panel_drawing<Affine2>(stage, i, selection); },
+                   [&](const scene::SpacePoseKeys&) { return pose_panel_drawing<Affine3>(stage, i, selection); }},
         panel.keys);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer,

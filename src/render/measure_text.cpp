@@ -48,7 +48,7 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
       return fmt::format("most sensitive: {} (gain {})", best.name, number(best.gain));
     }
     case MeasureKind::pop: {
-      if (m.kind != "arrows") return "pop: -";
+      if (m.kind != analysis::MeasuredKind::arrows) return "pop: -";
       if (m.largest_jump < 0) {
         for (const auto& p : m.parameters) {
           if (!p.defined) return fmt::format("pop: {} leaves the domain", p.name);

@@ -1,23 +1,30 @@
-// The geometry of one panel of a pose scene (SAM paper): the layers of
-// scene/figure.hpp's "pose scenes" part, evaluated on the panel's poses and
-// method, in world coordinates.
+// The geometry of a panel of a pose scene, in the plane or in space: every
+// pose layer drawn by its kind's drawer (render/layers/pose_layers.hpp)
+// through the panel's poses, motion and view (render/pose_panel.hpp).
 #pragma once
 
+#include <cstddef>
+
+#include "core/affine2.hpp"
+#include "core/affine3.hpp"
 #include "render/drawing.hpp"
-#include "render/layers/existence.hpp"
-#include "render/layers/sam3d_existence.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {
 
-// The shapes of every pose layer of `scene` for `panel`, in drawing order.
-// Throws RenderError.
-// With a selection (an animation frame), the "shapes" layers draw the shapes
-// at the selection's time and trail only.
+// Panel `index` of the stage, whose keys are poses of the plane (Pose =
+// Affine2) or of space (Affine3). Throws RenderError.
+template <class Pose>
+Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
+
+extern template Drawing pose_panel_drawing<Affine2>(const motion::Stage&, std::size_t, const FrameSelection*);
+extern template Drawing pose_panel_drawing<Affine3>(const motion::Stage&, std::size_t, const FrameSelection*);
+
+// One panel with a stage of its own: poses of the plane, of space.
 Drawing pose_panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
                            const FrameSelection* selection = nullptr);
-// The same for the stage's panel `index`, with the motion the stage built.
-Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
+Drawing space_panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
+                            const FrameSelection* selection = nullptr);
 
 }  // namespace pita::render

@@ -20,7 +20,7 @@ struct LayerKind {
   std::string_view type;
   std::span<const std::string_view> fields;
   LayerType (*read)(const Fields&);
-  bool in_space = false;  // pose layers that 3D scenes draw too (render/space_drawing.hpp)
+  bool in_space = false;  // pose layers that 3D scenes draw too (render/layers/pose_layers.hpp)
 };
 
 std::span<const LayerKind<Layer>> arrow_layer_table();

@@ -1,6 +1,7 @@
-// The geometry of pose scenes (render/pose_drawing.hpp): shapes carried by
-// the motion, velocity arrows and vertex paths, each checked against an
-// independent computation (Eigen's matrix power and log). The charts drawn
+// The geometry of pose scenes (render/pose_drawing.hpp), in the plane and in
+// space: shapes carried by the motion, velocity arrows and vertex paths, each
+// checked against an independent computation (Eigen's matrix power and log);
+// in space the painter's order and the faces of a drawn solid. The charts drawn
 // without a motion: tests/render/layers/.
 #include <gtest/gtest.h>
 
@@ -8,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <variant>
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
@@ -358,6 +361,117 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
   EXPECT_NEAR(low, expected_low, 1e-4);
   EXPECT_NEAR(high, expected_high, 1e-4);
   EXPECT_GT(high - low, 0.3);
+}
+
+// Poses of space: the same layers through the camera (render/pose_panel.hpp).
+
+double space_gap(Point a, Point b) { return std::abs(a - b); }
+
+scene::Scene space_scene(const std::string& layers) {
+  return scene::parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}],
+      "camera": {"azimuth": 0, "elevation": 0, "distance": 10, "target": [0, 0, 0]},
+      "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                {"t": 1, "matrix": [[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0]]}],
+      "samples": 2, "layers": )" + layers + "}",
+                            "s.json");
+}
+
+// Two cubes, at x in [0, 1] and [-3, -2], seen from +x: the far one (x < 0)
+// is painted first, each cube's faces back to front, every face filled.
+TEST(SpacePanelDrawing, PaintsFarSolidsFirst) {
+  const scene::Scene scene = space_scene(R"([{"type": "shapes", "fill": "#808080"}])");
+  const Drawing drawing = space_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 12u);  // 2 frames x 6 faces
+  for (std::size_t i = 0; i < drawing.items.size(); ++i) {
+    ASSERT_TRUE(std::holds_alternative<FilledPath>(drawing.items[i].shape));
+    EXPECT_EQ(drawing.items[i].index, i < 6 ? 1 : 0) << i;  // frame 1 (t = 1, the far cube) first
+  }
+  // The last face painted is the near cube's face x = 1, a unit square on the image.
+  const FilledPath& front = std::get<FilledPath>(drawing.items.back().shape);
+  ASSERT_EQ(front.contours.size(), 1u);
+  double area = 0.0;
+  const std::vector<Point>& c = front.contours[0];
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const Point a = c[k], b = c[(k + 1) % c.size()];
+    area += a.real() * b.imag() - b.real() * a.imag();
+  }
+  EXPECT_NEAR(std::abs(area) / 2.0, 1.0, 1e-12);
+}
+
+// Without a fill, a wireframe: every face's outline, as a closed polyline.
+TEST(SpacePanelDrawing, WireframeWithoutFill) {
+  const scene::Scene scene = space_scene(R"([{"type": "shapes"}, {"type": "paths", "samples": 5}])");
+  const Drawing drawing = space_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 12u + 8u);  // 12 face outlines, 8 vertex paths
+  EXPECT_TRUE(std::get<Polyline>(drawing.items[0].shape).closed);
+  // The paths are straight here (a translation): vertex (1, 1, 1) moves to (-2, 1, 1), seen at (1, 1) throughout.
+  for (std::size_t i = 12; i < drawing.items.size(); ++i) {
+    const std::vector<Point>& path = std::get<Polyline>(drawing.items[i].shape).points;
+    ASSERT_EQ(path.size(), 5u);
+    EXPECT_LT(space_gap(path.front(), path.back()), 1e-12);
+  }
+}
+
+// Panels of a 3D scene: each draws its own motion (its poses, or the scene's)
+// and its own layers, named by the panel's pointer. Seen from +x, the image's
+// right is +y: the panel that translates by 3 along y moves the cube's corner
+// (1, 1, 1) from (1, 1) to (4, 1) on the image.
+TEST(SpacePanelDrawing, EachPanelDrawsItsOwnPosesAndLayers) {
+  const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}],
+      "camera": {"azimuth": 0, "elevation": 0, "distance": 10, "target": [0, 0, 0]},
+      "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                {"t": 1, "matrix": [[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0]]}],
+      "layers": [{"type": "shapes"}],
+      "panels": ["linear", {"title": "along y", "layers": [{"type": "paths", "samples": 2}],
+                 "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                           {"t": 1, "matrix": [[1, 0, 0, 0], [0, 1, 0, 3], [0, 0, 1, 0]]}]}]})",
+                                                "s.json");
+  ASSERT_EQ(scene.panels.size(), 2u);
+  EXPECT_EQ(std::get<scene::SpacePoseKeys>(scene.panels[0].keys).method, PoseMethod::linear);
+  EXPECT_EQ(scene.panels[1].title, "along y");
+  const Drawing first = space_panel_drawing(scene, scene.panels[0]);
+  ASSERT_FALSE(first.items.empty());
+  EXPECT_EQ(first.items.front().layer, "/layers/0");  // the scene's layers
+  const Drawing second = space_panel_drawing(scene, scene.panels[1]);
+  ASSERT_EQ(second.items.size(), 8u);  // a path per vertex of the cube
+  bool corner = false;
+  for (const Item& item : second.items) {
+    EXPECT_EQ(item.layer, "/panels/1/layers/0");
+    const std::vector<Point>& path = std::get<Polyline>(item.shape).points;
+    ASSERT_EQ(path.size(), 2u);
+    EXPECT_LT(std::abs(path.back() - path.front() - Point(3.0, 0.0)), 1e-12);  // its own poses, not the scene's
+    corner = corner || space_gap(path.front(), Point(1.0, 1.0)) < 1e-12;
+  }
+  EXPECT_TRUE(corner);
+}
+
+// A velocity arrow per vertex per frame, indexed by the frame: the cube moves
+// by -3 along x over the motion, so each arrow is scale x 3 long along x,
+// which the camera on the +x axis sees end on (a point).
+TEST(SpacePanelDrawing, VelocitiesAreArrowsPerVertexAndFrame) {
+  const scene::Scene scene = space_scene(R"([{"type": "velocities", "samples": 3, "scale": 0.5}])");
+  const Drawing drawing = space_panel_drawing(scene, scene.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 3u * 8u);
+  for (std::size_t i = 0; i < drawing.items.size(); ++i) {
+    EXPECT_EQ(drawing.items[i].index, static_cast<int>(i / 8)) << i;
+    const ArrowShape& arrow = std::get<ArrowShape>(drawing.items[i].shape);
+    EXPECT_LT(space_gap(arrow.from, arrow.to), 1e-12) << i;
+  }
+}
+
+// A layer of the plane only (here a label), in a 3D scene built in code
+// rather than read (the reader refuses it), is refused at the layer.
+TEST(SpacePanelDrawing, LayerOfThePlaneOnlyIsRefused) {
+  scene::Scene scene = space_scene(R"([{"type": "shapes"}])");
+  scene.pose_layers.push_back(scene::LabelLayer{});
+  try {
+    (void)space_panel_drawing(scene, scene.panels[0]);
+    FAIL() << "no error";
+  } catch (const RenderError& error) {
+    EXPECT_NE(std::string(error.what()).find("/layers/1: this layer type draws pose scenes of the plane only"),
+              std::string::npos)
+        << error.what();
+  }
 }
 
 }  // namespace

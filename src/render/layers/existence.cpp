@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "analysis/existence.hpp"
+#include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
 
@@ -63,6 +64,10 @@ Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string&
   push(-1, Label{"s = 0", {-kPi - 0.45, 0.0}, 12.0, text});
   push(-1, Label{"s = 1", {-kPi - 0.45, h}, 12.0, text});
   return drawing;
+}
+
+void draw_pose_layer(PosePanel<Affine2>& panel, const scene::ExistenceLayer& layer) {
+  panel.append(existence_drawing(layer, panel.layer()).items);
 }
 
 }  // namespace pita::render

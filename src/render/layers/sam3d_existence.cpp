@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "render/layers/pose_layers.hpp"
+
 namespace pita::render {
 
 Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const std::string& pointer) {
@@ -108,6 +110,10 @@ Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const a
     push(Label{"- - the paper's claims, \u03b8 < T: p < P", {0.45 * kPi, top - 0.9}, 11.0, layer.paper_line.color});
   }
   return drawing;
+}
+
+void draw_pose_layer(PosePanel<Affine2>& panel, const scene::Sam3dExistenceLayer& layer) {
+  panel.append(sam3d_existence_drawing(layer, panel.layer()).items);
 }
 
 }  // namespace pita::render

@@ -1,0 +1,69 @@
+// "shapes" in a pose scene: the panel's body carried by the motion at the
+// layer's frames (or an animation frame's time and trail): the shapes in the
+// plane, the solids in space.
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include <Eigen/LU>
+
+#include "render/carried_shapes.hpp"
+#include "render/layers/pose_layers.hpp"
+#include "render/solid_faces.hpp"
+
+namespace pita::render {
+
+namespace {
+
+void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer, const Affine2& pose, double white,
+               double fade, int index, std::vector<Face>&) {
+  scene::ShapesLayer style = layer;
+  if (white > 0.0) {
+    style.line.color = lightened(style.line.color, white);
+    if (style.fill) style.fill = lightened(*style.fill, white);
+  }
+  for (Shape& shape : carried_shapes(panel.panel().shapes, pose, style, panel.scene().canvas.y_up, fade)) {
+    panel.push(index, std::move(shape), panel.selection() != nullptr);
+  }
+}
+
+// A solid's own colour fills its faces (and outlines it without a fill).
+void draw_shapes_body(PosePanel<Affine3>& panel, const scene::ShapesLayer& layer, const Affine3& pose, double white,
+               double fade, int index, std::vector<Face>& faces) {
+  for (const scene::Solid& solid : panel.scene().solids) {
+    LineStyle line = layer.line;
+    if (solid.color && !layer.fill) line.color = *solid.color;
+    line.color = lightened(line.color, white);
+    std::optional<Color> fill;
+    if (layer.fill) fill = lightened(solid.color.value_or(*layer.fill), white);
+    add_solid_faces(panel, solid, pose, fill, line, fade, index, faces);
+  }
+}
+
+}  // namespace
+
+template <class Pose>
+void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
+  const FrameSelection* selection = panel.selection();
+  const std::vector<double> ts =
+      selected_times(selection, selection != nullptr ? std::vector<double>{} : panel.times(layer.samples, layer.range));
+  // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's
+  // area (in space, its volume): |det L|.
+  std::vector<double> measures;
+  if (layer.lightness_by_area) {
+    for (const double t : ts) measures.push_back(std::abs(panel.pose_at(t).L.determinant()));
+  }
+  const std::vector<double> whites = lightness_whites(measures);
+  std::vector<Face> faces;  // space: painted back to front once every frame is in
+  for (std::size_t i = 0; i < ts.size(); ++i) {
+    const double fade = selection != nullptr ? trail_fade(i, ts.size()) : 1.0;
+    const double white = whites.empty() ? 0.0 : whites[i];
+    draw_shapes_body(panel, layer, panel.pose_at(ts[i]), white, fade, static_cast<int>(i), faces);
+  }
+  if constexpr (std::is_same_v<Pose, Affine3>) paint_faces(panel, std::move(faces), selection != nullptr);
+}
+
+template void draw_pose_layer(PosePanel<Affine2>&, const scene::ShapesLayer&);
+template void draw_pose_layer(PosePanel<Affine3>&, const scene::ShapesLayer&);
+
+}  // namespace pita::render

@@ -1,0 +1,98 @@
+// One panel of a pose scene as its layers see it, in the plane (Pose =
+// Affine2) and in space (Pose = Affine3): the panel's poses and motion from
+// the stage, the times a layer samples, the body the poses carry (the
+// panel's shapes; the scene's solids) and how a point of it reaches the
+// figure (the identity in the plane, the camera in space). The drawer of each
+// layer kind (render/layers/pose_layers.hpp) draws through it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/affine2.hpp"
+#include "core/affine3.hpp"
+#include "render/drawing.hpp"
+#include "render/panel_drawing.hpp"
+#include "render/projection.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::motion {
+class SceneMotion;  // motion/scene_motion.hpp
+}
+
+namespace pita::render {
+
+// A point of the body a pose moves: a point of the plane, or of space.
+template <class Pose>
+using BodyPoint = std::conditional_t<std::is_same_v<Pose, Affine2>, Point, Eigen::Vector3d>;
+
+// How the figure sees a body point: nothing in the plane, the camera in space.
+template <class Pose>
+using PoseView = std::conditional_t<std::is_same_v<Pose, Affine2>, std::monostate, Projection>;
+
+template <class Pose>
+class PosePanel {
+ public:
+  using Keys = scene::PoseKeys<Pose>;
+
+  // Throws RenderError when the panel holds no poses of this dimension, or
+  // (in space) when the camera cannot see the scene.
+  PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection);
+
+  const motion::Stage& stage() const { return stage_; }
+  std::size_t index() const { return index_; }
+  const scene::Scene& scene() const { return scene_; }
+  const scene::Panel& panel() const { return panel_; }
+  const Keys& keys() const { return keys_; }
+  // An animation frame's time and trail, or nullptr for the static figure.
+  const FrameSelection* selection() const { return selection_; }
+
+  // The layer being drawn: its JSON Pointer names every error.
+  void begin_layer(std::string pointer) { layer_ = std::move(pointer); }
+  const std::string& layer() const { return layer_; }
+  [[noreturn]] void fail(const std::string& reason) const;
+  [[noreturn]] void fail_at(const std::string& pointer, const std::string& reason) const;
+
+  // The panel's motion, built once by the stage; fails when the panel has no
+  // poses or its method has no motion through them.
+  const motion::SceneMotion& motion() const;
+  // A(t) and dA/du at scene time t, u the time normalised to the motion's
+  // duration (1 from the first pose to the last).
+  Pose pose_at(double t) const;
+  Pose velocity_at(double t) const;
+  // `samples` (else the panel's) times evenly over `range` (else the motion's knots).
+  std::vector<double> times(const std::optional<int>& samples, const std::optional<scene::TimeRange>& range) const;
+
+  // The points of the body, in the order the layers draw them: every point of
+  // every shape (plane), every vertex of every solid (space).
+  std::vector<BodyPoint<Pose>> body_points() const;
+  // Where a point of the world is drawn; in space, fails when it is behind a
+  // perspective camera.
+  Point image(const BodyPoint<Pose>& x) const;
+  const PoseView<Pose>& view() const { return view_; }
+
+  void push(int index, Shape shape, bool moving = false);
+  void append(std::vector<Item> items);
+  Drawing take() { return std::move(drawing_); }
+
+ private:
+  const motion::Stage& stage_;
+  std::size_t index_;
+  const scene::Scene& scene_;
+  const scene::Panel& panel_;
+  const FrameSelection* selection_;
+  const Keys& keys_;
+  PoseView<Pose> view_;
+  std::string layer_;
+  Drawing drawing_;
+};
+
+extern template class PosePanel<Affine2>;
+extern template class PosePanel<Affine3>;
+
+}  // namespace pita::render

@@ -1,0 +1,50 @@
+#include "render/projection.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <Eigen/Geometry>
+#include <fmt/format.h>
+
+namespace pita::render {
+
+namespace {
+constexpr double kDegree = std::numbers::pi / 180.0;
+}  // namespace
+
+Projection::Projection(const scene::Camera& camera, const Eigen::Vector3d& target)
+    : target_(target), distance_(camera.distance), perspective_(camera.perspective) {
+  using Eigen::Vector3d;
+  if (perspective_ && !(distance_ > 0.0)) {
+    throw std::invalid_argument(fmt::format("a perspective camera needs a distance > 0 (got {:g})", distance_));
+  }
+  const double a = camera.azimuth * kDegree, e = camera.elevation * kDegree;
+  const Vector3d towards_eye(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+  eye_ = target_ + distance_ * towards_eye;
+  forward_ = -towards_eye;
+  const Vector3d world_up = std::abs(forward_.z()) > 0.999 ? Vector3d::UnitY() : Vector3d::UnitZ();
+  right_ = forward_.cross(world_up).normalized();
+  up_ = right_.cross(forward_);
+}
+
+std::optional<Point> Projection::project(const Eigen::Vector3d& x) const {
+  const Eigen::Vector3d d = x - target_;
+  double scale = 1.0;
+  if (perspective_) {
+    const double depth = (x - eye_).dot(forward_);
+    if (!(depth > 1e-9 * distance_)) return std::nullopt;
+    scale = distance_ / depth;
+  }
+  return Point{scale * d.dot(right_), scale * d.dot(up_)};
+}
+
+double Projection::depth(const Eigen::Vector3d& x) const { return (x - eye_).dot(forward_); }
+
+double face_shade(const Eigen::Vector3d& normal, const Projection& projection) {
+  const Eigen::Vector3d light =
+      (-projection.forward() + 0.8 * projection.up() - 0.5 * projection.right()).normalized();
+  return 0.35 + 0.65 * std::abs(normal.dot(light));
+}
+
+}  // namespace pita::render
