@@ -345,6 +345,16 @@ double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
          static_cast<double>(poses) * (options.path_samples + 64.0);
 }
 
+std::string_view measured_kind_name(MeasuredKind kind) {
+  switch (kind) {
+    case MeasuredKind::arrows: return "arrows";
+    case MeasuredKind::points: return "points";
+    case MeasuredKind::plane_poses: return "poses";
+    case MeasuredKind::space_poses: return "poses3d";
+  }
+  return "?";
+}
+
 MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options) {
   const scene::Scene& scene = stage.scene();
   const scene::Panel& panel = stage.panel(index);
@@ -352,10 +362,10 @@ MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, cons
   out.pointer = panel.pointer;
   out.title = panel.title;
   out.method = motion::method_label(scene, panel);
-  out.kind = std::visit(overloaded{[](const scene::KeyframeKeys&) { return "arrows"; },
-                                   [](const scene::PointKeys&) { return "points"; },
-                                   [](const scene::PlanePoseKeys&) { return "poses"; },
-                                   [](const scene::SpacePoseKeys&) { return "poses3d"; }},
+  out.kind = std::visit(overloaded{[](const scene::KeyframeKeys&) { return MeasuredKind::arrows; },
+                                   [](const scene::PointKeys&) { return MeasuredKind::points; },
+                                   [](const scene::PlanePoseKeys&) { return MeasuredKind::plane_poses; },
+                                   [](const scene::SpacePoseKeys&) { return MeasuredKind::space_poses; }},
                         panel.keys);
   out.samples = panel.samples;
   try {

@@ -79,11 +79,23 @@ struct AreaStats {
   double first = 0.0, last = 0.0;  // det L at the first and last knot
 };
 
+// What a MotionMeasures measured: the alternative of the panel's
+// scene::MotionKeys (keyframes, points, poses of the plane, poses of space).
+// Set from the keys by measure_panel only; it names the output's sections.
+enum class MeasuredKind { arrows, points, plane_poses, space_poses };
+
+// "arrows", "points", "poses", "poses3d": the "kind" of `pita measure`'s JSON and CSV.
+std::string_view measured_kind_name(MeasuredKind kind);
+// Poses of the plane or of space (ARA and det L are measured).
+inline bool of_poses(MeasuredKind kind) {
+  return kind == MeasuredKind::plane_poses || kind == MeasuredKind::space_poses;
+}
+
 struct MotionMeasures {
   std::string pointer;   // the panel's JSON Pointer ("" for the scene itself)
   std::string title;     // panel title, or "" 
   std::string method;    // "P6 (La-LP)", "SAM"
-  std::string kind;      // "arrows", "points", "poses"
+  MeasuredKind kind = MeasuredKind::arrows;
   std::optional<std::string> no_motion;  // "file: pointer: reason" when it does not exist
   int samples = 0;       // pattern frames (discrepancy)
   double extent = 0.0;   // diameter of the keyframes' endpoints (arrows)

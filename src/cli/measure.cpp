@@ -20,6 +20,7 @@ namespace pita::cli {
 
 namespace {
 
+using analysis::MeasuredKind;
 using analysis::MotionMeasures;
 
 // A JSON string literal (RFC 8259 escapes).
@@ -48,9 +49,9 @@ std::string number(double x) { return fmt::format("{}", x); }
 
 std::string json_motion(const MotionMeasures& m) {
   std::string s = fmt::format("    {{\"pointer\": {}, \"title\": {}, \"method\": {}, \"kind\": {}", json_string(m.pointer),
-                              json_string(m.title), json_string(m.method), json_string(m.kind));
+                              json_string(m.title), json_string(m.method), json_string(measured_kind_name(m.kind)));
   if (m.no_motion) return s + fmt::format(", \"no_motion\": {}}}", json_string(*m.no_motion));
-  if (m.kind == "arrows") {
+  if (m.kind == MeasuredKind::arrows) {
     s += fmt::format(", \"samples\": {}, \"extent\": {}", m.samples, number(m.extent));
     s += ",\n     \"discrepancy\": {";
     for (std::size_t i = 0; i < m.discrepancy.size(); ++i) {
@@ -73,7 +74,7 @@ std::string json_motion(const MotionMeasures& m) {
     s += fmt::format(",\n     \"winding\": {{\"min\": {}, \"max\": {}}}", number(*m.winding_min),
                      number(*m.winding_max));
   }
-  if (m.kind == "arrows") {
+  if (m.kind == MeasuredKind::arrows) {
     s += ",\n     \"overreaction\": {";
     if (m.most_sensitive >= 0) {
       const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
@@ -99,7 +100,7 @@ std::string json_motion(const MotionMeasures& m) {
     // det L: the area of the plane's poses, the volume of poses of space.
     s += fmt::format(
         ",\n     \"{}\": {{\"monotone\": {}, \"excursion\": {}, \"t_of_excursion\": {}, \"first\": {}, \"last\": {}}}",
-        m.kind == "poses3d" ? "volume" : "area", m.area->monotone, number(m.area->excursion),
+        m.kind == MeasuredKind::space_poses ? "volume" : "area", m.area->monotone, number(m.area->excursion),
         number(m.area->t_of_excursion), number(m.area->first), number(m.area->last));
   }
   return s + "}";
@@ -138,9 +139,10 @@ std::string to_csv(const std::vector<MotionMeasures>& all) {
   s += '\n';
   const auto opt = [](const std::optional<double>& x) { return x ? number(*x) : std::string(); };
   for (const auto& m : all) {
-    std::vector<std::string> row{csv_field(m.pointer), csv_field(m.title), csv_field(m.method), m.kind,
+    std::vector<std::string> row{csv_field(m.pointer), csv_field(m.title), csv_field(m.method),
+                                 std::string(measured_kind_name(m.kind)),
                                  csv_field(m.no_motion.value_or(""))};
-    const bool arrows = m.kind == "arrows" && !m.no_motion;
+    const bool arrows = m.kind == MeasuredKind::arrows && !m.no_motion;
     row.push_back(arrows ? std::to_string(m.samples) : "");
     row.push_back(arrows ? number(m.extent) : "");
     for (int i = 0; i < 3; ++i) {
@@ -179,9 +181,6 @@ std::string to_csv(const std::vector<MotionMeasures>& all) {
   return s;
 }
 
-// Measures of poses, of the plane ("poses") or of space ("poses3d").
-bool of_poses(const MotionMeasures& m) { return m.kind == "poses" || m.kind == "poses3d"; }
-
 std::string md_cell(std::string_view text) {
   std::string out;
   for (const char c : text) out += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
@@ -198,13 +197,13 @@ std::string panel_name(const MotionMeasures& m) {
 std::string to_md(const std::string& path, const std::vector<MotionMeasures>& all) {
   std::string s = fmt::format("# pita measure {}\n\n", path);
   bool any_arrows = false;
-  for (const auto& m : all) any_arrows = any_arrows || (!of_poses(m) && !m.no_motion);
+  for (const auto& m : all) any_arrows = any_arrows || (!of_poses(m.kind) && !m.no_motion);
   if (any_arrows) {
     s += "| panel | method | E max prev / avg / pita | E mean prev / avg / pita | length p, q | turning p, q (rad) "
          "| winding range (rad) | most sensitive (gain) | pop (jump) |\n"
          "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& m : all) {
-      if (of_poses(m) || m.no_motion) continue;
+      if (of_poses(m.kind) || m.no_motion) continue;
       std::string max, mean;
       for (const auto& d : m.discrepancy) {
         max += (max.empty() ? "" : " / ") + (d.frames ? short_number(d.max) : std::string("-"));
@@ -220,7 +219,7 @@ std::string to_md(const std::string& path, const std::vector<MotionMeasures>& al
         const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
         sensitive = fmt::format("{} ({})", best.name, short_number(best.gain));
       }
-      if (m.kind == "arrows") {
+      if (m.kind == MeasuredKind::arrows) {
         pop = m.pops ? "yes" : "no";
         if (m.largest_jump >= 0) {
           const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
@@ -234,12 +233,12 @@ std::string to_md(const std::string& path, const std::vector<MotionMeasures>& al
   }
   // One table for the poses of the plane (det L an area), one for those of
   // space (det L a volume).
-  for (const std::string_view kind : {std::string_view("poses"), std::string_view("poses3d")}) {
+  for (const MeasuredKind kind : {MeasuredKind::plane_poses, MeasuredKind::space_poses}) {
     const auto shown = [&](const MotionMeasures& m) { return m.kind == kind && !m.no_motion; };
     if (std::none_of(all.begin(), all.end(), shown)) continue;
     s += fmt::format("| panel | method | ARA | {0} monotone | largest excursion (at t) | det L first, last |\n"
                      "|---|---|---|---|---|---|\n",
-                     kind == "poses" ? "area" : "volume");
+                     kind == MeasuredKind::plane_poses ? "area" : "volume");
     for (const auto& m : all) {
       if (!shown(m)) continue;
       s += fmt::format("| {} | {} | {} | {} | {} (t = {}) | {}, {} |\n", panel_name(m), md_cell(m.method),

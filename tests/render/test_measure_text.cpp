@@ -19,7 +19,7 @@ namespace {
 
 analysis::MotionMeasures arrows_measured() {
   analysis::MotionMeasures m;
-  m.kind = "arrows";
+  m.kind = analysis::MeasuredKind::arrows;
   m.discrepancy = {{"previous", 8, 1.5, 0.7, 0.25}, {"average", 7, 0.0125, 0.01, 0.5}, {"pita", 0, 0.0, 0.0, 0.0}};
   m.path_p = analysis::PathStats{6.5, 1.25};
   m.path_q = analysis::PathStats{7.0, 2.0};
@@ -68,7 +68,7 @@ TEST(MeasureText, OneLinePerNameWithTheNumbers) {
 
 TEST(MeasureText, PoseLinesAndNoPop) {
   analysis::MotionMeasures m;
-  m.kind = "poses";
+  m.kind = analysis::MeasuredKind::plane_poses;
   m.ara = 4.25;
   m.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
   const std::vector<scene::MeasureName> show = parsed({"ara", "area", "pop"});
