@@ -15,13 +15,13 @@ namespace {
 
 using test::distance;
 
-const Eigen::Vector2d kCentre(1.0 / 3.0, 1.0 / 3.0);
+const Eigen::Vector2d kSpiralCentre(1.0 / 3.0, 1.0 / 3.0);
 
 Point point_of(const Eigen::Vector2d& x) { return {x.x(), x.y()}; }
 
 TEST(SpiralResidueMorph, InterpolatesBothPoses) {
   for (const auto& [from, to] : {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
-    const SpiralResidueMorph morph(from, to, kCentre);
+    const SpiralResidueMorph morph(from, to, kSpiralCentre);
     EXPECT_LT(distance(morph.at(0.0), from), 1e-12);
     EXPECT_LT(distance(morph.at(1.0), to), 1e-12);
   }
@@ -35,13 +35,13 @@ TEST(SpiralResidueMorph, SimilarityPartIsALogSpiral) {
   const Affine2 A = compose(test::kFig2To, inverse(test::kFig2From));
   const double theta = std::atan2(A.L(1, 0) - A.L(0, 1), A.L(0, 0) + A.L(1, 1));
   const Complex log_lambda{0.5 * std::log(A.L.determinant()), theta};
-  const Point g0 = point_of(apply(test::kFig2From, kCentre)), g1 = point_of(apply(test::kFig2To, kCentre));
+  const Point g0 = point_of(apply(test::kFig2From, kSpiralCentre)), g1 = point_of(apply(test::kFig2To, kSpiralCentre));
   const Point f = test::spiral_centre(std::exp(log_lambda), g0, g1);
-  const SpiralResidueMorph morph(test::kFig2From, test::kFig2To, kCentre);
+  const SpiralResidueMorph morph(test::kFig2From, test::kFig2To, kSpiralCentre);
   for (const double u : {0.0, 0.2, 0.5, 0.75, 1.0}) {
     SCOPED_TRACE(u);
     const Point expected = test::on_spiral(f, log_lambda, u, g0);
-    EXPECT_LT(std::abs(point_of(apply(morph.at(u), kCentre)) - expected), 1e-12);
+    EXPECT_LT(std::abs(point_of(apply(morph.at(u), kSpiralCentre)) - expected), 1e-12);
     // det of M(u)'s linear part = s^{2u} det((1 - u) I + u N).
     const Eigen::Matrix2d K = (1.0 - u) * Eigen::Matrix2d::Identity() + u * morph.residue();
     const Eigen::Matrix2d M = morph.at(u).L * test::kFig2From.L.inverse();
@@ -56,14 +56,14 @@ TEST(SpiralResidueMorph, SimilarityPartIsALogSpiral) {
 TEST(SpiralResidueMorph, IsTheSamBetweenSimilarPoses) {
   const Affine2 from = test::kOtherFrom;
   const Affine2 to = compose(test::similarity(2.5, -2.0, 3.0, 1.0), from);
-  const SpiralResidueMorph morph(from, to, kCentre);
+  const SpiralResidueMorph morph(from, to, kSpiralCentre);
   for (const double u : {0.2, 0.5, 0.9}) {
     EXPECT_LT(distance(morph.at(u), steady_affine_morph(from, to, u)), 1e-11) << "u = " << u;
   }
 }
 
 TEST(SpiralResidueMorph, VelocityIsTheDerivative) {
-  const SpiralResidueMorph morph(test::kFig2From, test::kFig2To, kCentre);
+  const SpiralResidueMorph morph(test::kFig2From, test::kFig2To, kSpiralCentre);
   for (const double u : {0.0, 0.3, 0.9}) {
     SCOPED_TRACE(u);
     EXPECT_LT(distance(morph.velocity(u), test::central_difference(morph, u)), 1e-7);
@@ -72,15 +72,15 @@ TEST(SpiralResidueMorph, VelocityIsTheDerivative) {
 
 TEST(SpiralResidueMorph, SimilarityInvariant) {
   const Affine2 S = test::similarity(0.6, -2.2, 5.0, 1.0);
-  const SpiralResidueMorph morph(test::kOtherFrom, test::kOtherTo, kCentre);
-  const SpiralResidueMorph moved(compose(S, test::kOtherFrom), compose(S, test::kOtherTo), kCentre);
+  const SpiralResidueMorph morph(test::kOtherFrom, test::kOtherTo, kSpiralCentre);
+  const SpiralResidueMorph moved(compose(S, test::kOtherFrom), compose(S, test::kOtherTo), kSpiralCentre);
   for (const double u : {0.25, 0.5, 0.75}) {
     EXPECT_LT(distance(moved.at(u), compose(S, morph.at(u))), 1e-11) << "u = " << u;
   }
 }
 
 TEST(SpiralResidueMorph, RefusesOppositeOrientations) {
-  EXPECT_THROW(SpiralResidueMorph(test::kFig2From, test::pose(0.0, 1.0, 1.0, 0.0, 0.0, 0.0), kCentre),
+  EXPECT_THROW(SpiralResidueMorph(test::kFig2From, test::pose(0.0, 1.0, 1.0, 0.0, 0.0, 0.0), kSpiralCentre),
                std::invalid_argument);
 }
 

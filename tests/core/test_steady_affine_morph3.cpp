@@ -13,23 +13,23 @@ namespace {
 
 using Eigen::Vector3d;
 
-double distance3(const Affine3& X, const Affine3& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); }
+double sam3_distance(const Affine3& X, const Affine3& Y) { return (X.L - Y.L).norm() + (X.b - Y.b).norm(); }
 
 const Affine3 kB3{2.0 * Eigen::AngleAxisd(0.4, Vector3d(0, 0, 1)).toRotationMatrix(), Vector3d(1, 2, 3)};
 const Affine3 kC3{Eigen::AngleAxisd(1.9, Vector3d(1, 1, 0).normalized()).toRotationMatrix(), Vector3d(-2, 0, 1)};
 
 TEST(SteadyAffineMorph3, EndsAtItsPosesAndIsSteady) {
   const SteadyAffineMorph3 morph(kB3, kC3);
-  EXPECT_EQ(distance3(morph.at(0.0), kB3), 0.0);
-  EXPECT_EQ(distance3(morph.at(1.0), kC3), 0.0);
+  EXPECT_EQ(sam3_distance(morph.at(0.0), kB3), 0.0);
+  EXPECT_EQ(sam3_distance(morph.at(1.0), kC3), 0.0);
   // Steady: the relative motion from u to u + h is the same for every u.
   const double h = 0.2;
   const Affine3 step0 = compose(morph.at(0.1 + h), inverse(morph.at(0.1)));
   const Affine3 step1 = compose(morph.at(0.7 + h), inverse(morph.at(0.7)));
-  EXPECT_LT(distance3(step0, step1), 1e-13);
+  EXPECT_LT(sam3_distance(step0, step1), 1e-13);
   // Symmetric: the SAM from C to B runs the same poses backwards.
   const SteadyAffineMorph3 back(kC3, kB3);
-  for (const double u : {0.25, 0.5, 0.8}) EXPECT_LT(distance3(morph.at(u), back.at(1.0 - u)), 1e-13) << u;
+  for (const double u : {0.25, 0.5, 0.8}) EXPECT_LT(sam3_distance(morph.at(u), back.at(1.0 - u)), 1e-13) << u;
 }
 
 TEST(SteadyAffineMorph3, VelocityIsTheDerivative) {
@@ -38,7 +38,7 @@ TEST(SteadyAffineMorph3, VelocityIsTheDerivative) {
     const double h = 1e-6;
     const Affine3 before = morph.at(u - h), after = morph.at(u + h);
     const Affine3 expected{(after.L - before.L) / (2.0 * h), (after.b - before.b) / (2.0 * h)};
-    EXPECT_LT(distance3(morph.velocity(u), expected), 1e-7) << u;
+    EXPECT_LT(sam3_distance(morph.velocity(u), expected), 1e-7) << u;
   }
 }
 
