@@ -115,6 +115,43 @@ std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   return options;
 }
 
+namespace {
+
+// --seed: an unsigned 64-bit integer. Throws UsageError.
+std::uint64_t parse_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
+    throw UsageError(fmt::format("--seed: must be an integer from 0 to {} (got \"{}\")",
+                                 std::numeric_limits<std::uint64_t>::max(), text));
+  }
+  return seed;
+}
+
+// --counterexamples: each failed cell's scene and its figure into `folder`,
+// as a pair (both or neither); the scene's path per cell ("" for none).
+std::vector<std::string> write_counterexamples(const analysis::AuditReport& report, const std::string& folder) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files(report.cells.size());
+  for (std::size_t i = 0; i < report.cells.size(); ++i) {
+    const std::string scene = analysis::counterexample_scene(report, report.cells[i]);
+    if (scene.empty()) continue;
+    const fs::path json = fs::path(folder) / analysis::counterexample_name(report.cells[i]);
+    files[i] = json.string();
+    // The scene must read back as a scene: the figure is drawn from it.
+    const scene::Scene parsed = scene::parse_scene(scene, json.string());
+    const render::Figure figure = render::build_figure(parsed);
+    fs::path svg = json;
+    svg.replace_extension(".svg");
+    const std::vector<std::pair<fs::path, std::string>> pair = {
+        {json, scene}, {svg, render::render_figure(parsed, figure, render::Format::svg)}};
+    render::write_files_atomically(pair);
+  }
+  return files;
+}
+
+}  // namespace
+
 ExitCode run_audit_command(const AuditCliOptions& options) {
   namespace fs = std::filesystem;
   try {
@@ -125,16 +162,7 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
                                    options.configs));
     }
     audit.configs = options.configs;
-    {
-      std::uint64_t seed = 0;
-      const std::string& text = options.seed;
-      const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
-      if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
-        throw UsageError(fmt::format("--seed: must be an integer from 0 to {} (got \"{}\")",
-                                     std::numeric_limits<std::uint64_t>::max(), text));
-      }
-      audit.seed = seed;
-    }
+    audit.seed = parse_seed(options.seed);
     audit.jobs = options.jobs > 0 ? options.jobs : threads_from_environment();
     std::optional<render::Format> table_format;
     if (options.output) {
@@ -178,26 +206,9 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     if (table_format) {
       render::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
     }
-    std::vector<std::string> files(report.cells.size());
-    if (options.counterexamples) {
-      std::vector<std::pair<fs::path, std::string>> outputs;
-      for (std::size_t i = 0; i < report.cells.size(); ++i) {
-        const std::string scene = analysis::counterexample_scene(report, report.cells[i]);
-        if (scene.empty()) continue;
-        const fs::path json = fs::path(*options.counterexamples) / analysis::counterexample_name(report.cells[i]);
-        files[i] = json.string();
-        // The scene must read back as a scene: the figure is drawn from it.
-        const scene::Scene parsed = scene::parse_scene(scene, json.string());
-        const render::Figure figure = render::build_figure(parsed);
-        fs::path svg = json;
-        svg.replace_extension(".svg");
-        // Each scene with its figure, as a pair (both or neither).
-        outputs.clear();
-        outputs.emplace_back(json, scene);
-        outputs.emplace_back(svg, render::render_figure(parsed, figure, render::Format::svg));
-        render::write_files_atomically(outputs);
-      }
-    }
+    const std::vector<std::string> files =
+        options.counterexamples ? write_counterexamples(report, *options.counterexamples)
+                                : std::vector<std::string>(report.cells.size());
     const std::string text = analysis::format_audit(report, format, files);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
       std::cerr << "pita: cannot write the audit to standard output (" << std::strerror(errno) << ")\n";

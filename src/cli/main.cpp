@@ -5,6 +5,7 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -29,21 +30,15 @@
 #error "PITA_VERSION is defined by src/CMakeLists.txt"
 #endif
 
-int main(int argc, char** argv) {
-  using pita::cli::ExitCode;
-  using pita::cli::to_int;
+namespace {
 
-  // SIGINT, SIGTERM, SIGHUP: remove the temporary files in flight, exit 128 + signal.
-  pita::render::install_interrupt_cleanup();
-  // A closed pipe (pita eval ... | head) is a write error (EPIPE) that the code
-  // reports with exit 3, not a silent death by SIGPIPE.
-  std::signal(SIGPIPE, SIG_IGN);
+constexpr const char* kDescription =
+    "pita: planar interpolation of three arrows and steady affine morphs. Computes the motions "
+    "(PITAs P1-P10 and the steady morph SMA) through timed keyframes, and the Steady Affine "
+    "Morphs (SAM, polySAM, Bezier SAM, bi-arc) through timed affine poses, given as JSON scenes.";
 
-  CLI::App app{
-      "pita: planar interpolation of three arrows and steady affine morphs. Computes the motions "
-      "(PITAs P1-P10 and the steady morph SMA) through timed keyframes, and the Steady Affine "
-      "Morphs (SAM, polySAM, Bezier SAM, bi-arc) through timed affine poses, given as JSON scenes.",
-      "pita"};
+// The version flag, the subcommand rule, and the examples and exit codes of --help.
+void describe(CLI::App& app) {
   app.set_version_flag("--version", std::string("pita ") + PITA_VERSION);
   // Not app.require_subcommand(): CLI11 would then report "pita --frobnicate"
   // as a missing subcommand instead of naming the unknown option.
@@ -64,6 +59,38 @@ int main(int argc, char** argv) {
       "usage (also work beyond the budget, or out of memory), 3 an output could not be\n"
       "written, 4 an internal error (a bug: please report it), 128+N interrupted by\n"
       "signal N (unfinished outputs removed).");
+}
+
+// CLI11 reports an unknown subcommand as "A subcommand is required": name it,
+// and suggest the closest known one. True when refused (the message printed).
+bool refuse_unknown_subcommand(const CLI::App& app, int argc, char** argv) {
+  if (argc <= 1 || argv[1][0] == '-') return false;
+  const std::string_view given = argv[1];
+  std::vector<std::string_view> known;
+  for (const CLI::App* subcommand : app.get_subcommands([](const CLI::App*) { return true; })) {
+    known.push_back(subcommand->get_name());
+  }
+  if (std::find(known.begin(), known.end(), given) != known.end()) return false;
+  std::cerr << "pita: unknown subcommand \"" << given << '"'
+            << pita::scene::did_you_mean(pita::scene::closest_names(given, known))
+            << "\nRun 'pita --help' for usage.\n";
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using pita::cli::ExitCode;
+  using pita::cli::to_int;
+
+  // SIGINT, SIGTERM, SIGHUP: remove the temporary files in flight, exit 128 + signal.
+  pita::render::install_interrupt_cleanup();
+  // A closed pipe (pita eval ... | head) is a write error (EPIPE) that the code
+  // reports with exit 3, not a silent death by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+
+  CLI::App app{kDescription, "pita"};
+  describe(app);
 
   const auto eval_options = pita::cli::setup_eval(app);
   const auto render_options = pita::cli::setup_render(app);
@@ -77,21 +104,7 @@ int main(int argc, char** argv) {
   // Hidden: the man page and the shell completions, generated from this App at build time.
   const auto generate_options = pita::cli::setup_generate(app);
 
-  // CLI11 reports an unknown subcommand as "A subcommand is required": name it,
-  // and suggest the closest known one.
-  if (argc > 1 && argv[1][0] != '-') {
-    const std::string_view given = argv[1];
-    std::vector<std::string_view> known;
-    for (const CLI::App* subcommand : std::as_const(app).get_subcommands([](const CLI::App*) { return true; })) {
-      known.push_back(subcommand->get_name());
-    }
-    if (std::find(known.begin(), known.end(), given) == known.end()) {
-      std::cerr << "pita: unknown subcommand \"" << given << '"'
-                << pita::scene::did_you_mean(pita::scene::closest_names(given, known))
-                << "\nRun 'pita --help' for usage.\n";
-      return to_int(ExitCode::bad_input);
-    }
-  }
+  if (refuse_unknown_subcommand(app, argc, argv)) return to_int(ExitCode::bad_input);
 
   try {
     app.parse(argc, argv);

@@ -275,6 +275,75 @@ ExitCode list_scenes(const RenderOptions& options) {
   return result;
 }
 
+// What -o, --format, --dpi and --scale ask for.
+struct RenderPlan {
+  std::vector<render::Format> formats;
+  double scale = 1.0;
+  bool single_file = false;  // -o names one file (by its extension), else a directory
+};
+
+// Throws UsageError.
+RenderPlan plan_render(const RenderOptions& options) {
+  RenderPlan plan;
+  const std::optional<render::Format> by_extension = render::format_from_name(
+      fs::path(options.output).extension().string().substr(fs::path(options.output).has_extension() ? 1 : 0));
+  plan.single_file = by_extension.has_value();
+  if (options.formats) plan.formats = parse_formats(*options.formats);
+  if (plan.single_file) {
+    if (options.scene_paths.size() != 1) {
+      throw UsageError(fmt::format("-o {}: a single output file takes one scene (got {}); give a "
+                                   "directory to render several",
+                                   options.output, options.scene_paths.size()));
+    }
+    if (!plan.formats.empty() && (plan.formats.size() != 1 || plan.formats.front() != *by_extension)) {
+      throw UsageError(
+          fmt::format("--format {} contradicts the extension of -o {}", *options.formats, options.output));
+    }
+    plan.formats = {*by_extension};
+  } else if (plan.formats.empty()) {
+    plan.formats = {render::Format::svg};
+  }
+  if (!std::isfinite(options.budget)) throw UsageError(fmt::format("--budget: must be a number (got {})", options.budget));
+  if (options.at && !(std::abs(*options.at) <= scene::kMaxKeyframeValue)) {
+    throw UsageError(fmt::format("--at: the time must be a finite number within +-{:g} (got {})",
+                                 scene::kMaxKeyframeValue, *options.at));
+  }
+  if (options.dpi) plan.scale = *options.dpi / kCssDpi;
+  if (options.scale) plan.scale = *options.scale;
+  if (!(plan.scale >= render::kMinScale && plan.scale <= render::kMaxScale)) {
+    throw UsageError(fmt::format("{}: the PNG scale must be between {} and {} (got {})",
+                                 options.dpi ? "--dpi" : "--scale", render::kMinScale, render::kMaxScale,
+                                 plan.scale));
+  }
+  if (!plan.single_file) refuse_shared_outputs(options, plan.formats);
+  return plan;
+}
+
+// One scene's figure (or its frame at --at) in every format of the plan:
+// every format is rendered before any is written, so a bad scene writes
+// nothing, and then all are written or none (render/output_file.hpp).
+void render_scene(const RenderOptions& options, const RenderPlan& plan, const std::string& path) {
+  const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths});
+  render::Figure figure;
+  if (options.at) {
+    // One frame of the animation, in the view all its frames share.
+    const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
+    render::check_budget(scene, render::estimate_cost(scene), options.budget);
+    render::check_images(scene);
+    figure = animate::frame_figure(scene, timeline, *options.at, animate::animation_layout(scene, timeline));
+  } else {
+    figure = render::build_figure(scene, options.budget);
+  }
+  std::vector<std::pair<fs::path, std::string>> files;
+  for (const Target& target : targets_for(options, path, plan.formats, plan.single_file)) {
+    files.emplace_back(target.path, render::render_figure(scene, figure, target.format, plan.scale, options.budget));
+  }
+  render::write_files_atomically(files);
+  for (const auto& [file, bytes] : files) std::cout << "wrote " << file.string() << '\n';
+  // Flushed, so that an interrupted run still lists what it wrote.
+  std::cout.flush();
+}
+
 }  // namespace
 
 ExitCode run_render(const RenderOptions& options) {
@@ -287,80 +356,26 @@ ExitCode run_render(const RenderOptions& options) {
     std::cerr << "pita: --output is required\nRun 'pita render --help' for usage.\n";
     return ExitCode::bad_input;
   }
-  std::vector<render::Format> formats;
-  double scale = 1.0;
-  bool single_file = false;
+  RenderPlan plan;
   try {
-    const std::optional<render::Format> by_extension =
-        render::format_from_name(fs::path(options.output).extension().string().substr(
-            fs::path(options.output).has_extension() ? 1 : 0));
-    single_file = by_extension.has_value();
-    if (options.formats) formats = parse_formats(*options.formats);
-    if (single_file) {
-      if (options.scene_paths.size() != 1) {
-        throw UsageError(fmt::format("-o {}: a single output file takes one scene (got {}); give a "
-                                     "directory to render several",
-                                     options.output, options.scene_paths.size()));
-      }
-      if (!formats.empty() && (formats.size() != 1 || formats.front() != *by_extension)) {
-        throw UsageError(fmt::format("--format {} contradicts the extension of -o {}",
-                                     *options.formats, options.output));
-      }
-      formats = {*by_extension};
-    } else if (formats.empty()) {
-      formats = {render::Format::svg};
-    }
-    if (!std::isfinite(options.budget)) throw UsageError(fmt::format("--budget: must be a number (got {})", options.budget));
-    if (options.at && !(std::abs(*options.at) <= scene::kMaxKeyframeValue)) {
-      throw UsageError(fmt::format("--at: the time must be a finite number within +-{:g} (got {})",
-                                   scene::kMaxKeyframeValue, *options.at));
-    }
-    if (options.dpi) scale = *options.dpi / kCssDpi;
-    if (options.scale) scale = *options.scale;
-    if (!(scale >= render::kMinScale && scale <= render::kMaxScale)) {
-      throw UsageError(fmt::format("{}: the PNG scale must be between {} and {} (got {})",
-                                   options.dpi ? "--dpi" : "--scale", render::kMinScale,
-                                   render::kMaxScale, scale));
-    }
-    if (!single_file) {
-      refuse_shared_outputs(options, formats);
-      std::error_code error;
-      fs::create_directories(options.output, error);
-      if (error || !fs::is_directory(options.output)) {
-        std::cerr << "pita: -o " << options.output << ": cannot create the output directory ("
-                  << (error ? error.message() : "a file of that name exists") << ")\n";
-        return ExitCode::failure;
-      }
-    }
+    plan = plan_render(options);
   } catch (const UsageError& error) {
     std::cerr << "pita: " << error.what() << '\n';
     return ExitCode::bad_input;
   }
-
+  if (!plan.single_file) {
+    std::error_code error;
+    fs::create_directories(options.output, error);
+    if (error || !fs::is_directory(options.output)) {
+      std::cerr << "pita: -o " << options.output << ": cannot create the output directory ("
+                << (error ? error.message() : "a file of that name exists") << ")\n";
+      return ExitCode::failure;
+    }
+  }
   ExitCode result = ExitCode::success;
   for (const std::string& path : options.scene_paths) {
     try {
-      const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths});
-      render::Figure figure;
-      if (options.at) {
-        // One frame of the animation, in the view all its frames share.
-        const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
-        render::check_budget(scene, render::estimate_cost(scene), options.budget);
-        render::check_images(scene);
-        figure = animate::frame_figure(scene, timeline, *options.at, animate::animation_layout(scene, timeline));
-      } else {
-        figure = render::build_figure(scene, options.budget);
-      }
-      // Every format is rendered before any is written: a bad scene writes nothing.
-      std::vector<std::pair<fs::path, std::string>> files;
-      for (const Target& target : targets_for(options, path, formats, single_file)) {
-        files.emplace_back(target.path, render::render_figure(scene, figure, target.format, scale, options.budget));
-      }
-      // All formats or none (render/output_file.hpp).
-      render::write_files_atomically(files);
-      for (const auto& [file, bytes] : files) std::cout << "wrote " << file.string() << '\n';
-      // Flushed, so that an interrupted run still lists what it wrote.
-      std::cout.flush();
+      render_scene(options, plan, path);
     } catch (...) {
       const Failure failure = current_failure(path);
       std::cerr << "pita: " << failure.message << '\n';

@@ -71,18 +71,11 @@ void check_shape_layers(const JsonReader& reader, const Scene& scene) {
     }
   }
 }
-}  // namespace
 
-Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
-  reader.check_fields(document, "", kSceneFields);
-
-  Scene scene;
-  scene.path = reader.file();
-  if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
-  if (const Json* description = JsonReader::member(document, "description")) {
-    scene.description = reader.string(*description, "/description");
-  }
-
+// The motion of an arrow scene: "method", "options", "keyframes" or
+// "points", "handle" and "chain"; the "shapes" the keyframes carry are read
+// into the scene.
+MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene& scene) {
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a method such as \"P6\")");
   TrackMethod track;
@@ -99,6 +92,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   if (keyframes == nullptr && points == nullptr) {
     reader.fail("/keyframes", "missing required field (an array of keyframes, or \"points\")");
   }
+  MotionKeys keys;
   KeyframeKeys arrows;
   static_cast<TrackMethod&>(arrows) = track;
   if (keyframes != nullptr) {
@@ -123,14 +117,30 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     if (JsonReader::member(document, "timing") != nullptr) {
       reader.fail("/timing", "timing paces keyframes and poses; a scene of \"points\" has none");
     }
-    scene.keys = std::move(curve);
+    keys = std::move(curve);
   } else {
-    scene.keys = std::move(arrows);
+    keys = std::move(arrows);
   }
   if (const Json* chain = JsonReader::member(document, "chain")) {
-    track_method(scene.keys)->chain = reader.chain(*chain, "/chain");
-    check_track_chain(reader, scene.keys, "/chain");
+    track_method(keys)->chain = reader.chain(*chain, "/chain");
+    check_track_chain(reader, keys, "/chain");
   }
+  return keys;
+}
+
+}  // namespace
+
+Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
+  reader.check_fields(document, "", kSceneFields);
+
+  Scene scene;
+  scene.path = reader.file();
+  if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
+  if (const Json* description = JsonReader::member(document, "description")) {
+    scene.description = reader.string(*description, "/description");
+  }
+
+  scene.keys = read_track_keys(reader, document, scene);
 
   if (const Json* samples = JsonReader::member(document, "samples")) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
