@@ -38,14 +38,9 @@ Drawing PanelBuilder::build() {
   const std::vector<scene::Layer>& layers = own ? *panel_.layers : scene_.layers;
   for (std::size_t i = 0; i < layers.size(); ++i) {
     layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
-    const bool for_points = std::holds_alternative<scene::PointTrajectoryLayer>(layers[i]) ||
-                            std::holds_alternative<scene::LabelLayer>(layers[i]) ||
-                            std::holds_alternative<scene::LegendLayer>(layers[i]) ||
-                            std::holds_alternative<scene::MeasuresLayer>(layers[i]);
-    if (!points_.empty() && !for_points) {
-      fail(layer_, "this layer draws a motion of keyframes, and the panel has timed \"points\": draw them "
-                   "with \"point-trajectory\" (labels and legends are fine too)");
-    }
+    // The reader has checked that the layer draws the panel's kind of keys
+    // (scene/layer_kinds.hpp, the "draws" column); a layer drawn on the
+    // other kind fails as its motion does (NoMotion), with the layer's pointer.
     std::visit([this](const auto& layer) { add(layer); }, layers[i]);
   }
   return std::move(drawing_);

@@ -13,6 +13,7 @@
 #include "core/overloaded.hpp"
 
 #include "scene/animation_reader.hpp"
+#include "scene/layer_kinds.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/timing_reader.hpp"
@@ -33,13 +34,13 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const std::string at = where + "/layers/" + std::to_string(i);
       const auto* curve = std::get_if<PointTrajectoryLayer>(&layers[i]);
-      const bool anywhere = std::holds_alternative<LabelLayer>(layers[i]) || std::holds_alternative<LegendLayer>(layers[i]);
+      const LayerDraws draws = kind_of(arrow_layer_table(), layers[i]).draws;
       const auto* given = std::get_if<PointKeys>(&panel.keys);
-      if (given == nullptr && curve != nullptr) {
+      if (given == nullptr && draws == LayerDraws::points) {
         reader.fail(at + "/type", "a point-trajectory draws a curve through timed \"points\"; this panel has "
                                   "keyframes" + in_panel);
       }
-      if (given != nullptr && curve == nullptr && !anywhere) {
+      if (given != nullptr && draws == LayerDraws::keyframes) {
         reader.fail(at + "/type", "this layer draws a motion of keyframes, and the panel has timed \"points\": "
                                   "draw them with \"point-trajectory\" (labels and legends are fine too)" + in_panel);
       }

@@ -133,7 +133,7 @@ PoseLayer read_pose_layer(const JsonReader& reader, const Json& value, const std
 template <typename LayerType>
 std::vector<LayerKindInfo> kind_infos(std::span<const LayerKind<LayerType>> kinds) {
   std::vector<LayerKindInfo> infos;
-  for (const auto& kind : kinds) infos.push_back({kind.type, kind.fields, kind.in_space});
+  for (const auto& kind : kinds) infos.push_back({kind.type, kind.fields, kind.alternative, kind.in_space, kind.draws});
   return infos;
 }
 std::vector<LayerKindInfo> arrow_layer_kinds() { return kind_infos(arrow_layer_table()); }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,13 +15,19 @@
 
 namespace pita::scene::detail {
 
+// The motion an arrow layer draws, by the alternative of the panel's keys:
+// keyframe arrows, a curve through timed points, or either (labels, legends).
+enum class LayerDraws { keyframes, points, either };
+
 // The layer types of keyframe scenes and of pose scenes, in the order
 // messages and the schema list them (from figure_reader.cpp's one table of
 // layer kinds each).
 struct LayerKindInfo {
   std::string_view type;
   std::span<const std::string_view> fields;  // "type" included
+  std::size_t alternative = 0;               // its struct's index in Layer or PoseLayer
   bool in_space = false;                     // a pose layer 3D scenes draw too
+  LayerDraws draws = LayerDraws::keyframes;  // an arrow layer: the keys it needs
 };
 std::vector<LayerKindInfo> arrow_layer_kinds();
 std::vector<LayerKindInfo> pose_layer_kinds();

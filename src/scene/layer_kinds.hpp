@@ -6,22 +6,48 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 #include "scene/figure.hpp"
+#include "scene/figure_reader.hpp"
 #include "scene/layer_fields.hpp"
 
 namespace pita::scene::detail {
 
-// One kind of layer: its "type", the fields it takes and how it is read.
+// The index of the struct `Kind` among the alternatives of the variant `LayerType`.
+template <typename Kind, typename LayerType, std::size_t I = 0>
+consteval std::size_t alternative_of() {
+  if constexpr (std::is_same_v<std::variant_alternative_t<I, LayerType>, Kind>) {
+    return I;
+  } else {
+    return alternative_of<Kind, LayerType, I + 1>();
+  }
+}
+
+// One kind of layer: its "type", the fields it takes, how it is read, the
+// struct it is read into (its index in the variant), and what it draws.
 template <typename LayerType>
 struct LayerKind {
   std::string_view type;
   std::span<const std::string_view> fields;
   LayerType (*read)(const Fields&);
-  bool in_space = false;  // pose layers that 3D scenes draw too (render/layers/pose_layers.hpp)
+  std::size_t alternative;  // alternative_of<its struct, LayerType>()
+  bool in_space = false;    // pose layers that 3D scenes draw too (render/layers/pose_layers.hpp)
+  LayerDraws draws = LayerDraws::keyframes;  // arrow layers: the keys they need
 };
+
+// The row of `layer`'s kind.
+template <typename LayerType>
+const LayerKind<LayerType>& kind_of(std::span<const LayerKind<LayerType>> table, const LayerType& layer) {
+  for (const LayerKind<LayerType>& kind : table) {
+    if (kind.alternative == layer.index()) return kind;
+  }
+  return table.front();  // unreachable: every alternative has its row (tests/scene/test_layer_kinds.cpp)
+}
 
 std::span<const LayerKind<Layer>> arrow_layer_table();
 std::span<const LayerKind<PoseLayer>> pose_layer_table();

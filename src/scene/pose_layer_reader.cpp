@@ -234,22 +234,33 @@ ShapesLayer read_shapes_layer(const Fields& fields, bool poses) {
 namespace {
 
 // The layer kinds of pose scenes.
+template <typename Kind>
+constexpr std::size_t pose_alternative = alternative_of<Kind, PoseLayer>();
+
 constexpr std::array<LayerKind<PoseLayer>, 14> kPoseLayerKinds{{
-    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); }, true},
-    {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); }, true},
-    {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); }, true},
-    {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }, true},
-    {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); }},
-    {"sam3d-existence", kSam3dExistenceFields,
-     [](const Fields& f) -> PoseLayer { return read_sam3d_existence(f); }},
-    {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }},
-    {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }, true},
-    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }},
-    {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }},
-    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f, true); }},
-    {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }},
-    {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); }},
-    {"field", kFieldFields, [](const Fields& f) -> PoseLayer { return read_field(f); }},
+    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); },
+     pose_alternative<ShapesLayer>, true},
+    {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); },
+     pose_alternative<PosesLayer>, true},
+    {"velocities", kVelocitiesFields, [](const Fields& f) -> PoseLayer { return read_velocities(f); },
+     pose_alternative<VelocitiesLayer>, true},
+    {"paths", kPathsFields, [](const Fields& f) -> PoseLayer { return read_paths(f); }, pose_alternative<PathsLayer>,
+     true},
+    {"existence", kExistenceFields, [](const Fields& f) -> PoseLayer { return read_existence(f); },
+     pose_alternative<ExistenceLayer>},
+    {"sam3d-existence", kSam3dExistenceFields, [](const Fields& f) -> PoseLayer { return read_sam3d_existence(f); },
+     pose_alternative<Sam3dExistenceLayer>},
+    {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }, pose_alternative<LabelLayer>},
+    {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }, pose_alternative<PatchLayer>,
+     true},
+    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }, pose_alternative<PlotLayer>},
+    {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }, pose_alternative<AraLayer>},
+    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f, true); },
+     pose_alternative<MeasuresLayer>},
+    {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }, pose_alternative<SweptLayer>},
+    {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); },
+     pose_alternative<VersusLayer>},
+    {"field", kFieldFields, [](const Fields& f) -> PoseLayer { return read_field(f); }, pose_alternative<FieldLayer>},
 }};
 
 }  // namespace
