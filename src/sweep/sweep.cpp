@@ -16,21 +16,16 @@
 
 #include <fmt/format.h>
 
-#include "analysis/measure.hpp"
 #include "animate/progress.hpp"
 #include "core/worker_pool.hpp"
-#include "motion/sampler.hpp"
-#include "motion/scene_motion.hpp"
-#include "motion/stage.hpp"
-#include "render/figure.hpp"
 #include "render/interrupt.hpp"
 #include "render/output_file.hpp"
-#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sheet.hpp"
+#include "sweep/run_variant.hpp"
 #include "sweep/variant.hpp"
 
 namespace pita::sweep {
@@ -44,152 +39,6 @@ namespace fs = std::filesystem;
 constexpr auto kManifestInterval = std::chrono::seconds(5);
 // Failed variants listed in the summary (the manifest has them all).
 constexpr std::size_t kMaxFailuresKept = 1000;
-
-struct KindInfo {
-  OutputKind kind;
-  std::string_view name;
-};
-constexpr std::array<KindInfo, 5> kKinds = {{{OutputKind::svg, "svg"},
-                                             {OutputKind::png, "png"},
-                                             {OutputKind::pdf, "pdf"},
-                                             {OutputKind::csv, "csv"},
-                                             {OutputKind::json, "json"}}};
-
-std::string_view name_of(OutputKind kind) {
-  for (const KindInfo& k : kKinds) {
-    if (k.kind == kind) return k.name;
-  }
-  return "?";
-}
-
-std::optional<render::Format> figure_format(OutputKind kind) {
-  switch (kind) {
-    case OutputKind::svg: return render::Format::svg;
-    case OutputKind::png: return render::Format::png;
-    case OutputKind::pdf: return render::Format::pdf;
-    default: return std::nullopt;
-  }
-}
-
-std::string number(double v) { return fmt::format("{:.6g}", v); }
-
-// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
-std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& own) {
-  std::array<std::string, kMetricColumns.size()> m{};
-  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
-  if (r.no_motion) return m;
-  if (r.path_p) {
-    m[0] = number(r.path_p->length);
-    m[2] = number(r.path_p->turning);
-  }
-  if (r.path_q) {
-    m[1] = number(r.path_q->length);
-    m[3] = number(r.path_q->turning);
-  }
-  if (r.winding_min) m[4] = number(*r.winding_min);
-  if (r.winding_max) m[5] = number(*r.winding_max);
-  for (const analysis::DiscrepancyStats& d : r.discrepancy) {
-    if (d.frames == 0) continue;
-    if (d.predictor == "pita") {
-      m[6] = number(d.max);
-      m[9] = number(d.t_of_max);
-    }
-    if (d.predictor == "previous") m[7] = number(d.max);
-    if (d.predictor == "average") m[8] = number(d.max);
-  }
-  if (r.most_sensitive >= 0) {
-    const analysis::ParameterReaction& p = r.parameters[static_cast<std::size_t>(r.most_sensitive)];
-    m[10] = p.name;
-    m[11] = number(p.gain);
-  }
-  if (r.largest_jump >= 0) m[12] = number(r.parameters[static_cast<std::size_t>(r.largest_jump)].jump);
-  if (!r.parameters.empty()) m[13] = r.pops ? "yes" : "no";
-  if (r.ara) m[14] = number(*r.ara);
-  if (r.area) m[15] = r.area->monotone ? "yes" : "no";
-  return m;
-}
-
-// Removes what an earlier run wrote for a variant that now fails, so that no
-// stale figure stands beside a failed row.
-void remove_outputs(const fs::path& dir, const std::string& name, std::int64_t index, std::int64_t variants) {
-  std::error_code ignored;
-  fs::remove(dir / variant_file(name, index, variants, "scene.json"), ignored);
-  for (const KindInfo& k : kKinds) fs::remove(dir / variant_file(name, index, variants, std::string(k.name)), ignored);
-}
-
-struct Job {
-  const SweepOptions& options;
-  const Grid& grid;
-  const BaseScene& base;
-  const fs::path dir;
-  const std::string name;
-  const std::string salt;
-};
-
-Row run_variant(const Job& job, std::int64_t index, bool& write_failed) {
-  Row row;
-  row.index = index;
-  const std::vector<Json> values = job.grid.values(index);
-  for (const Json& v : values) row.values.push_back(value_text(v));
-  const std::string text = variant_text(variant_document(job.base, job.grid, values));
-  row.hash = content_hash(text, job.salt);
-  const std::int64_t variants = job.grid.size();
-  const std::string scene_file = variant_file(job.name, index, variants, "scene.json");
-  try {
-    // Read as if it were the base scene's file (relative image paths), named
-    // in messages as the variant's own file.
-    const scene::Scene scene = scene::parse_scene(text, job.base.path);
-    const motion::Stage stage(scene);
-    stage.check();
-    // The scene's own motion, built once for its frames and its metrics.
-    const scene::Panel own = scene::scene_panel(scene);
-    const std::optional<motion::Stage> own_alone =
-        motion::own_is_first_panel(scene) ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
-    const motion::Stage& own_stage = own_alone ? *own_alone : stage;
-    std::vector<std::pair<fs::path, std::string>> files;
-    files.emplace_back(job.dir / scene_file, text);
-    row.outputs.push_back(scene_file);
-    std::optional<render::Figure> figure;
-    for (const OutputKind kind : job.options.formats) {
-      const std::string file = variant_file(job.name, index, variants, std::string(name_of(kind)));
-      if (const auto format = figure_format(kind)) {
-        if (!figure) figure = render::build_figure(stage);
-        files.emplace_back(job.dir / file, render::render_figure(scene, *figure, *format));
-      } else {
-        const motion::SceneMotion& motion = own_stage.motion(0);
-        const std::vector<double> at =
-            motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
-        files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
-                                                               kind == OutputKind::csv ? motion::FramesFormat::csv
-                                                                                       : motion::FramesFormat::json));
-      }
-      row.outputs.push_back(file);
-    }
-    row.metrics = metrics_of(own_stage);
-    render::write_files_atomically(files);
-    row.status = "ok";
-  } catch (const render::OutputError& error) {
-    row.status = fmt::format("cannot write: {}", error.what());
-    row.outputs.clear();
-    write_failed = true;
-  } catch (const std::exception& error) {
-    std::string message = error.what();
-    const std::string prefix = job.base.path + ": ";
-    if (message.starts_with(prefix)) message = scene_file + ": " + message.substr(prefix.size());
-    row.status = message;
-    row.outputs.clear();
-    row.metrics = {};
-    remove_outputs(job.dir, job.name, index, variants);
-    // The failed variant's scene stays, to reproduce the error by hand.
-    try {
-      render::write_file_atomically(job.dir / scene_file, text);
-      row.outputs.push_back(scene_file);
-    } catch (const render::OutputError&) {
-      write_failed = true;
-    }
-  }
-  return row;
-}
 
 bool outputs_exist(const fs::path& dir, const Row& row) {
   if (row.outputs.empty()) return false;
@@ -214,13 +63,13 @@ std::vector<OutputKind> parse_output_kinds(const std::string& text) {
   while (true) {
     const std::size_t comma = text.find(',', start);
     const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const auto found = std::find_if(kKinds.begin(), kKinds.end(), [&](const KindInfo& k) { return k.name == item; });
-    if (found == kKinds.end()) {
+    const std::optional<OutputKind> found = output_kind_named(item);
+    if (!found) {
       throw SweepUsageError(fmt::format("--format: \"{}\" is not an output (use svg, png, pdf, csv or json, "
                                         "comma-separated: --format svg,csv)",
                                         item));
     }
-    if (std::find(kinds.begin(), kinds.end(), found->kind) == kinds.end()) kinds.push_back(found->kind);
+    if (std::find(kinds.begin(), kinds.end(), *found) == kinds.end()) kinds.push_back(*found);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
@@ -276,7 +125,7 @@ Definition definition_of(const SweepOptions& options, const Grid& grid, const Ba
     definition.axis_sizes.push_back(a.size());
   }
   definition.zip = grid.zip();
-  for (const OutputKind k : options.formats) definition.formats.emplace_back(name_of(k));
+  for (const OutputKind k : options.formats) definition.formats.emplace_back(output_kind_name(k));
   definition.variants = grid.size();
   definition.salt = "pita " + options.version;
   for (const std::string& f : definition.formats) definition.salt += " " + f;
@@ -487,7 +336,7 @@ class SweepRun {
   const BaseScene& base_;
   const fs::path dir_;
   const Definition& definition_;
-  const Job job_;
+  const VariantJob job_;
   const std::vector<std::string> pointers_;
   const fs::path manifest_path_;
   const fs::path journal_path_;

@@ -1,0 +1,179 @@
+#include "sweep/run_variant.hpp"
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "analysis/measure.hpp"
+#include "motion/sampler.hpp"
+#include "motion/scene_motion.hpp"
+#include "motion/stage.hpp"
+#include "render/figure.hpp"
+#include "render/output_file.hpp"
+#include "scene/limits.hpp"
+#include "scene/scene.hpp"
+#include "sweep/variant.hpp"
+
+namespace pita::sweep {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct KindInfo {
+  OutputKind kind;
+  std::string_view name;
+};
+constexpr std::array<KindInfo, 5> kKinds = {{{OutputKind::svg, "svg"},
+                                             {OutputKind::png, "png"},
+                                             {OutputKind::pdf, "pdf"},
+                                             {OutputKind::csv, "csv"},
+                                             {OutputKind::json, "json"}}};
+
+}  // namespace
+
+std::string_view output_kind_name(OutputKind kind) {
+  for (const KindInfo& k : kKinds) {
+    if (k.kind == kind) return k.name;
+  }
+  return "?";
+}
+
+std::optional<OutputKind> output_kind_named(std::string_view name) {
+  for (const KindInfo& k : kKinds) {
+    if (k.name == name) return k.kind;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+std::optional<render::Format> figure_format(OutputKind kind) {
+  switch (kind) {
+    case OutputKind::svg: return render::Format::svg;
+    case OutputKind::png: return render::Format::png;
+    case OutputKind::pdf: return render::Format::pdf;
+    default: return std::nullopt;
+  }
+}
+
+std::string number(double v) { return fmt::format("{:.6g}", v); }
+
+// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
+std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& own) {
+  std::array<std::string, kMetricColumns.size()> m{};
+  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
+  if (r.no_motion) return m;
+  if (r.path_p) {
+    m[0] = number(r.path_p->length);
+    m[2] = number(r.path_p->turning);
+  }
+  if (r.path_q) {
+    m[1] = number(r.path_q->length);
+    m[3] = number(r.path_q->turning);
+  }
+  if (r.winding_min) m[4] = number(*r.winding_min);
+  if (r.winding_max) m[5] = number(*r.winding_max);
+  for (const analysis::DiscrepancyStats& d : r.discrepancy) {
+    if (d.frames == 0) continue;
+    if (d.predictor == "pita") {
+      m[6] = number(d.max);
+      m[9] = number(d.t_of_max);
+    }
+    if (d.predictor == "previous") m[7] = number(d.max);
+    if (d.predictor == "average") m[8] = number(d.max);
+  }
+  if (r.most_sensitive >= 0) {
+    const analysis::ParameterReaction& p = r.parameters[static_cast<std::size_t>(r.most_sensitive)];
+    m[10] = p.name;
+    m[11] = number(p.gain);
+  }
+  if (r.largest_jump >= 0) m[12] = number(r.parameters[static_cast<std::size_t>(r.largest_jump)].jump);
+  if (!r.parameters.empty()) m[13] = r.pops ? "yes" : "no";
+  if (r.ara) m[14] = number(*r.ara);
+  if (r.area) m[15] = r.area->monotone ? "yes" : "no";
+  return m;
+}
+
+// Removes what an earlier run wrote for a variant that now fails, so that no
+// stale figure stands beside a failed row.
+void remove_outputs(const fs::path& dir, const std::string& name, std::int64_t index, std::int64_t variants) {
+  std::error_code ignored;
+  fs::remove(dir / variant_file(name, index, variants, "scene.json"), ignored);
+  for (const KindInfo& k : kKinds) fs::remove(dir / variant_file(name, index, variants, std::string(k.name)), ignored);
+}
+
+}  // namespace
+
+Row run_variant(const VariantJob& job, std::int64_t index, bool& write_failed) {
+  Row row;
+  row.index = index;
+  const std::vector<Json> values = job.grid.values(index);
+  for (const Json& v : values) row.values.push_back(value_text(v));
+  const std::string text = variant_text(variant_document(job.base, job.grid, values));
+  row.hash = content_hash(text, job.salt);
+  const std::int64_t variants = job.grid.size();
+  const std::string scene_file = variant_file(job.name, index, variants, "scene.json");
+  try {
+    // Read as if it were the base scene's file (relative image paths), named
+    // in messages as the variant's own file.
+    const scene::Scene scene = scene::parse_scene(text, job.base.path);
+    const motion::Stage stage(scene);
+    stage.check();
+    // The scene's own motion, built once for its frames and its metrics.
+    const scene::Panel own = scene::scene_panel(scene);
+    const std::optional<motion::Stage> own_alone =
+        motion::own_is_first_panel(scene) ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
+    const motion::Stage& own_stage = own_alone ? *own_alone : stage;
+    std::vector<std::pair<fs::path, std::string>> files;
+    files.emplace_back(job.dir / scene_file, text);
+    row.outputs.push_back(scene_file);
+    std::optional<render::Figure> figure;
+    for (const OutputKind kind : job.options.formats) {
+      const std::string file = variant_file(job.name, index, variants, std::string(output_kind_name(kind)));
+      if (const auto format = figure_format(kind)) {
+        if (!figure) figure = render::build_figure(stage);
+        files.emplace_back(job.dir / file, render::render_figure(scene, *figure, *format));
+      } else {
+        const motion::SceneMotion& motion = own_stage.motion(0);
+        const std::vector<double> at =
+            motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
+        files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
+                                                               kind == OutputKind::csv ? motion::FramesFormat::csv
+                                                                                       : motion::FramesFormat::json));
+      }
+      row.outputs.push_back(file);
+    }
+    row.metrics = metrics_of(own_stage);
+    render::write_files_atomically(files);
+    row.status = "ok";
+  } catch (const render::OutputError& error) {
+    row.status = fmt::format("cannot write: {}", error.what());
+    row.outputs.clear();
+    write_failed = true;
+  } catch (const std::exception& error) {
+    std::string message = error.what();
+    const std::string prefix = job.base.path + ": ";
+    if (message.starts_with(prefix)) message = scene_file + ": " + message.substr(prefix.size());
+    row.status = message;
+    row.outputs.clear();
+    row.metrics = {};
+    remove_outputs(job.dir, job.name, index, variants);
+    // The failed variant's scene stays, to reproduce the error by hand.
+    try {
+      render::write_file_atomically(job.dir / scene_file, text);
+      row.outputs.push_back(scene_file);
+    } catch (const render::OutputError&) {
+      write_failed = true;
+    }
+  }
+  return row;
+}
+
+}  // namespace pita::sweep
