@@ -1,8 +1,7 @@
 // The builder of an arrow panel's drawing (internal to src/render/): one
 // add() per layer kind of arrow scenes (the compiler refuses a kind without
-// one), defined in panel_drawing.cpp (frames, shapes, text) and
-// panel_analysis_layers.cpp (the layers that draw a measure: discrepancy,
-// plots, tables, vectors, fixed points, measures, guesses, comparisons).
+// one), each defined in its kind's file, src/render/layers/<kind>.cpp; what
+// they share (the frames, the times, the derivatives) in panel_drawing.cpp.
 #pragma once
 
 #include <algorithm>

@@ -1,10 +1,20 @@
-// "label" in a pose scene: a text at a point of the figure.
+// "label": a text at a point of the figure, in both kinds of scene.
 #include "render/layers/pose_layers.hpp"
+#include "render/panel_builder.hpp"
 
 namespace pita::render {
 
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::LabelLayer& layer) {
   panel.push(-1, Label{layer.text, layer.at, layer.size, layer.color});
 }
+
+// In an arrow scene.
+namespace detail {
+
+void PanelBuilder::add(const scene::LabelLayer& layer) {
+  push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

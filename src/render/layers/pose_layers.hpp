@@ -28,9 +28,9 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer);   
 // The plane only.
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer);          // versus.cpp
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer);           // field.cpp
-void draw_pose_layer(PosePanel<Affine2>& panel, const scene::PlotLayer& layer);            // pose_plot.cpp
+void draw_pose_layer(PosePanel<Affine2>& panel, const scene::PlotLayer& layer);            // plot.cpp
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::AraLayer& layer);             // ara.cpp
-void draw_pose_layer(PosePanel<Affine2>& panel, const scene::MeasuresLayer& layer);        // pose_measures.cpp
+void draw_pose_layer(PosePanel<Affine2>& panel, const scene::MeasuresLayer& layer);        // measures.cpp
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::SweptLayer& layer);           // swept.cpp
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::LabelLayer& layer);           // label.cpp
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::ExistenceLayer& layer);       // existence.cpp

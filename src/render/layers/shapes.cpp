@@ -1,14 +1,18 @@
-// "shapes" in a pose scene: the panel's body carried by the motion at the
-// layer's frames (or an animation frame's time and trail): the shapes in the
-// plane, the solids in space.
+// "shapes": the body a motion carries, at the layer's frames (or an animation
+// frame's time and trail). In a pose scene the panel's shapes (plane) or the
+// scene's solids (space) under the poses; in an arrow scene the scene's shapes
+// under the similarity that takes the handle onto D(t) (Sec. 7.1).
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/LU>
 
+#include "core/carrier.hpp"
 #include "render/carried_shapes.hpp"
 #include "render/layers/pose_layers.hpp"
+#include "render/panel_builder.hpp"
 #include "render/solid_faces.hpp"
 
 namespace pita::render {
@@ -65,5 +69,23 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::ShapesLayer&);
 template void draw_pose_layer(PosePanel<Affine3>&, const scene::ShapesLayer&);
+
+// In an arrow scene.
+namespace detail {
+
+// "shapes" (Sec. 7.1): the scene's shapes at each frame, carried by the
+// similarity that takes the handle onto D(t) (core/carrier.hpp).
+void PanelBuilder::add(const scene::ShapesLayer& layer) {
+  const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer,
+                                       scene_.canvas.y_up, fade(i, pattern.size()))) {
+      push(static_cast<int>(i), std::move(shape));
+      drawing_.items.back().moving = selection_ != nullptr;
+    }
+  }
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

@@ -1,18 +1,16 @@
-// "plot" in a pose scene: a curve of the panel's motion against time
-// (render/plot.hpp), or "of": "area" (SAM Fig. 9, docs/paper-notes.md N48):
-// the area of the frames over time under each of the layer's methods.
+// "plot": a curve of the panel's motion against time (render/plot.hpp); in a
+// pose scene also "of": "area" (SAM Fig. 9, docs/paper-notes.md N48), the area
+// of the frames over time under each of the layer's methods.
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "analysis/area_time.hpp"
-#include "core/pose_method.hpp"
-#include "motion/no_motion.hpp"
-#include "motion/scene_motion.hpp"
-#include "motion/stage.hpp"
 #include "render/layers/pose_layers.hpp"
+#include "render/panel_builder.hpp"
 #include "render/plot.hpp"
 
 namespace pita::render {
@@ -57,5 +55,22 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::PlotLayer& layer) {
     panel.fail(fmt::format("cannot plot the distance of {}: {}", scene::method_id(panel.panel().keys), error.what()));
   }
 }
+
+// In an arrow scene.
+namespace detail {
+
+void PanelBuilder::add(const scene::PlotLayer& layer) {
+  try {
+    for (Item& item : plot_items(layer, motion_, layer_times(panel_, std::nullopt, std::nullopt), layer_)) {
+      drawing_.items.push_back(std::move(item));
+    }
+  } catch (const motion::NoMotion& error) {
+    fail(layer_, error.reason());
+  } catch (const std::invalid_argument& error) {
+    fail(layer_, fmt::format("cannot plot the distance of {}: {}", scene::method_id(panel_.keys), error.what()));
+  }
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

@@ -1,0 +1,30 @@
+// "keyframes" in an arrow scene: the keyframes as arrows, each winding as a
+// spiral whose radius grows while it turns through w.
+#include <utility>
+#include <vector>
+
+#include "render/panel_builder.hpp"
+#include "render/spiral.hpp"
+
+namespace pita::render::detail {
+
+void PanelBuilder::add(const scene::KeyframesLayer& layer) {
+  for (std::size_t i = 0; i < keyframes_.size(); ++i) {
+    const Arrow& key = keyframes_[i].arrow;
+    const Color color = layer.colors[i % layer.colors.size()];
+    const LineStyle line{color, layer.width, layer.opacity, {}};
+    if (layer.winding) {
+      const Point center =
+          layer.spiral_center == scene::SpiralCenter::start ? key.p : 0.5 * (key.p + key.q());
+      std::vector<Point> coil = winding_spiral(center, key.m, key.w);
+      if (!coil.empty()) {
+        push(static_cast<int>(i),
+             Polyline{std::move(coil), false, LineStyle{color, 0.6 * layer.width, layer.opacity, {}}});
+      }
+    }
+    const Segment s = layer.extended ? extended_form(key) : Segment{key.p, key.q()};
+    push(static_cast<int>(i), ArrowShape{s.from, s.to, line});
+  }
+}
+
+}  // namespace pita::render::detail

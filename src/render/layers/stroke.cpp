@@ -1,0 +1,40 @@
+// "stroke" in an arrow scene (Sec. 7.2): the quads between consecutive frames,
+// filled as one path, and their outline.
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "render/panel_builder.hpp"
+#include "render/strip.hpp"
+
+namespace pita::render::detail {
+
+void PanelBuilder::add(const scene::StrokeLayer& layer) {
+  const std::vector<Arrow> pattern = frames(layer_times(panel_, layer.samples, layer.range));
+  const QuadStrip strip(pattern);
+  // One path of quads, each oriented counter-clockwise, filled with the
+  // nonzero rule: overlapping quads stay filled and no seams show between
+  // neighbours (as separately filled quads would show with antialiasing).
+  FilledPath quads{{}, layer.fill, layer.opacity, std::nullopt};
+  for (int i = 0; i < strip.quad_count(); ++i) {
+    const auto corners = strip.quad(i);
+    std::vector<Point> contour(corners.begin(), corners.end());
+    double twice_area = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Point a = contour[k], b = contour[(k + 1) % 4];
+      twice_area += a.real() * b.imag() - b.real() * a.imag();
+    }
+    if (twice_area < 0.0) std::reverse(contour.begin(), contour.end());
+    quads.contours.push_back(std::move(contour));
+  }
+  push(-1, std::move(quads));
+  if (layer.outline) {
+    std::vector<Point> boundary;
+    for (const Arrow& frame : pattern) boundary.push_back(frame.p);
+    for (auto it = pattern.rbegin(); it != pattern.rend(); ++it) boundary.push_back(it->q());
+    push(-1, Polyline{std::move(boundary), true, *layer.outline});
+  }
+}
+
+}  // namespace pita::render::detail

@@ -1,0 +1,23 @@
+// "trajectory" in an arrow scene: the path of D(t).p, D(t).q or their midpoint.
+#include <utility>
+#include <vector>
+
+#include "render/panel_builder.hpp"
+
+namespace pita::render::detail {
+
+void PanelBuilder::add(const scene::TrajectoryLayer& layer) {
+  const std::vector<Arrow> path = frames(layer_times(panel_, layer.samples, layer.range));
+  std::vector<Point> points;
+  points.reserve(path.size());
+  for (const Arrow& frame : path) {
+    switch (layer.point) {
+      case scene::TrackedPoint::start: points.push_back(frame.p); break;
+      case scene::TrackedPoint::end: points.push_back(frame.q()); break;
+      case scene::TrackedPoint::middle: points.push_back(0.5 * (frame.p + frame.q())); break;
+    }
+  }
+  push(-1, Polyline{std::move(points), false, layer.line});
+}
+
+}  // namespace pita::render::detail
