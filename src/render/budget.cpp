@@ -17,241 +17,64 @@
 #include "analysis/swept_edge.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_drawing.hpp"
 #include "render/spiral.hpp"
 
 namespace pita::render {
 
-namespace {
+namespace detail {
 
-// A layer's estimate: overloads for every layer type of both scene kinds, so
-// that a new layer type without a cost does not compile.
-// "sam3d-existence": matrices (angle x axis x perturbation) per unit of work,
-// measured: the default layer (49 angles x 81 axes x 3^9) takes 0.85 s on two
-// cores, about 1.7 core-seconds or 680 000 units (README "Performance"); the
-// searches of p along the curve are included.
-constexpr double kSafeCurveMatricesPerUnit = 110.0;
+// ------------------------------------------------- LayerCost's shared parts
 
-class LayerCost {
- public:
-  LayerCost(const scene::Scene& scene, const scene::Panel& panel, std::string layer,
-            FigureCost& cost)
-      : scene_(scene), panel_(panel), layer_(std::move(layer)), cost_(cost) {}
+void LayerCost::frames(const std::optional<int>& samples, const char* what, double per_frame) {
+  const int n = samples.value_or(panel_.samples);
+  std::string pointer = samples ? layer_ + "/samples" : panel_.samples_pointer;
+  if (!samples && panel_.samples_pointer == "/samples" && n > scene::kMaxFigureSamples) {
+    throw RenderError(scene_.path, "/samples",
+                      fmt::format("{} frames for the figure's layers exceeds the figure limit of "
+                                  "{} (the top-level \"samples\", up to {}, is also what `pita "
+                                  "eval` prints: give the panels or layers their own \"samples\")",
+                                  n, scene::kMaxFigureSamples, scene::kMaxSamples));
+  }
+  if (pointer.empty()) pointer = layer_;
+  // A frame of a chained track evaluates its method several times
+  // (motion::frame_cost); one unit is about one method frame.
+  add(pointer, fmt::format("{} frames of {}", n, what), n * (per_frame + motion::frame_cost(panel_) - 1.0));
+}
 
-  // ------------------------------------------------------------ arrow layers
-  void operator()(const scene::PatternLayer& l) {
-    double per_frame = kShapeUnits + 2;
-    if (l.coils) {
-      // A coil per frame: its turns bounded by the keyframes' largest winding,
-      // scaled by how far the range reaches beyond the knots, plus one turn.
-      double w = 0.0;
-      for (const Keyframe& key : keyframes()) w = std::max(w, std::abs(key.arrow.w));
-      const double span = keyframes().empty() ? 0.0 : keyframes().back().t - keyframes().front().t;
-      const double reach =
-          l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
-      const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
-      per_frame += kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+// 3D scenes draw solids: a shape per face, each vertex of each face projected.
+double LayerCost::shape_points() const {
+  double points = 0.0;
+  if (in_space()) {
+    for (const scene::Solid& solid : scene_.solids) {
+      points += static_cast<double>(solid.vertices.size());
+      for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
     }
-    if (!l.times.empty()) {  // exactly these frames, not samples over a range
-      add(layer_ + "/times", fmt::format("{} frames of a pattern", l.times.size()),
-          static_cast<double>(l.times.size()) * (per_frame + motion::frame_cost(panel_) - 1.0));
-      return;
-    }
-    frames(l.samples, "a pattern", per_frame);
-  }
-  void operator()(const scene::StrokeLayer& l) { frames(l.samples, "a stroke", kShapeUnits + 4); }
-  void operator()(const scene::DiscrepancyLayer& l) {
-    frames(l.samples, "discrepancy circles", kShapeUnits + 8);
-  }
-  void operator()(const scene::BannerLayer& l) {
-    // The glyph outlines, split into short edges, then the strip's quads.
-    add(layer_ + "/text", fmt::format("{} characters of a banner", l.text.size()),
-        400.0 * static_cast<double>(l.text.size()));
-    frames(l.samples, "a banner's strip", 4);
-  }
-  void operator()(const scene::KeyframesLayer&) {
-    double units = 0.0;
-    for (const Keyframe& key : keyframes()) {
-      const double turns = std::abs(key.arrow.w) / (2.0 * std::numbers::pi);
-      units += 4 * kShapeUnits +
-               std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
-    }
-    add(layer_, "keyframe arrows and winding spirals", units);
-  }
-  void operator()(const scene::TrajectoryLayer& l) {
-    add(layer_ + "/samples", fmt::format("{} points of a trajectory", l.samples),
-        kShapeUnits + l.samples * motion::frame_cost(panel_));
-  }
-  void operator()(const scene::PointTrajectoryLayer& l) {
-    // The Neville-type curves blend n(n - 1)/2 times per point.
-    const auto* given = std::get_if<scene::PointKeys>(&panel_.keys);
-    const double n = given != nullptr ? static_cast<double>(given->points.size()) : 0.0;
-    const double per_point = l.curve == PointCurve::pita ? motion::frame_cost(panel_) : 1.0 + n * (n - 1.0) / 2.0;
-    add(layer_ + "/samples", fmt::format("{} points of a point trajectory", l.samples),
-        kShapeUnits + l.samples * per_point + (l.dots ? n * kShapeUnits : 0.0));
-  }
-  void operator()(const scene::LabelLayer& l) {
-    add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
-  }
-  void operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
-  void operator()(const scene::MeasuresLayer&) {
-    add(layer_, "the measures of the motion", 8 * kShapeUnits + analysis::measure_cost(panel_));
-  }
-  void operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
-  void operator()(const scene::PropertyTableLayer& l) {
-    // About 10 units (27 us) per property, method and configuration, crafted
-    // ones included (pita_bench BM_Audit/1: about 1 s of CPU for 14 x 13 x 208).
-    const double methods = l.methods.empty() ? 14.0 : static_cast<double>(l.methods.size());
-    add(layer_ + "/configs", fmt::format("{} configurations of a property table", l.configs),
-        10.0 * 13.0 * methods * (l.configs + static_cast<double>(analysis::crafted_configs().size())));
-  }
-  // Each frame evaluates a stencil of five or six more frames (frame_derivatives).
-  void operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }
-  void operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
-  void operator()(const scene::GuessesLayer& l) {
-    add(layer_ + "/guesses", fmt::format("{} guessed arrows", l.guesses.size()),
-        static_cast<double>(l.guesses.size()) * (2 * kShapeUnits + motion::frame_cost(panel_)));
-  }
-  void operator()(const scene::CompareLayer& l) { frames(l.samples, "a compared pattern", kShapeUnits + 1); }
-  void operator()(const scene::PlotLayer& l) {
-    // An area plot builds and samples one motion per method.
-    const double curves = l.of == scene::PlotOf::area ? static_cast<double>(std::max<std::size_t>(1, l.methods.size())) : 1.0;
-    const double per_point = l.of == scene::PlotOf::area ? motion::frame_cost(panel_) : 1.0;
-    add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
-        8 * kShapeUnits + curves * l.samples * per_point);
-    if (l.marks) frames(std::nullopt, "a plot's marks", curves * (kShapeUnits + 8));
-  }
-
-  // ------------------------------------------------------------- pose layers
-  void operator()(const scene::ShapesLayer& l) {
-    frames(l.samples, "shapes", shapes_units());
-  }
-  void operator()(const scene::VersusLayer& l) {
-    if (!l.at.empty()) {
-      add(layer_ + "/at", fmt::format("{} frames of compared shapes", l.at.size()),
-          static_cast<double>(l.at.size()) * (shapes_units() + l.power));
-      return;
-    }
-    frames(l.samples, "compared shapes", shapes_units() + l.power);
-  }
-  void operator()(const scene::PosesLayer& l) {
-    // With "inserted", a four-point panel of the plane's last step adds n 2^(steps-1) poses.
-    const auto [poses, inserted] = std::visit(
-        overloaded{[&](const scene::PlanePoseKeys& given) {
-                     const auto n = static_cast<double>(given.poses.size());
-                     return std::pair(n, l.inserted && given.subdivisions > 0 ? std::ldexp(n, given.subdivisions - 1) : 0.0);
-                   },
-                   [](const scene::SpacePoseKeys& given) { return std::pair(static_cast<double>(given.poses.size()), 0.0); },
-                   [](const scene::TrackMethod&) { return std::pair(0.0, 0.0); }},
-        panel_.keys);
-    add(layer_, "the shapes at the poses", (poses + inserted) * shapes_units());
-  }
-  void operator()(const scene::VelocitiesLayer& l) {
-    frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));
-  }
-  void operator()(const scene::FieldLayer& l) {
-    // An arrow per node; per curve 257 powers, and 33 x 5 more for the check.
-    const double nodes = static_cast<double>(l.columns) * l.rows;
-    const double curves = l.curves > 0 ? std::ceil(l.columns / static_cast<double>(l.curves)) *
-                                             std::ceil(l.rows / static_cast<double>(l.curves))
-                                       : 0.0;
-    add(layer_ + "/columns", fmt::format("{} x {} arrows of a field", l.columns, l.rows),
-        nodes * (kShapeUnits + 2) + curves * (kShapeUnits + 257 + 33 * 5));
-  }
-  void operator()(const scene::PathsLayer& l) {
-    add(layer_ + "/samples", fmt::format("{} points of each vertex's path", l.samples),
-        shape_points() * (kShapeUnits + l.samples));
-  }
-  void operator()(const scene::PatchLayer& l) {
-    add(layer_ + "/columns", fmt::format("{} x {} shapes of a patch", l.columns, l.rows),
-        static_cast<double>(l.columns) * l.rows * shapes_units());
-  }
-  void operator()(const scene::AraLayer& l) {
-    // core/steadiness.hpp: at each of 64 times and each grid point, two poses
-    // and two velocities, each about 1/16 of a unit (measured: ten panels of
-    // 100 x 100 points, 25.6 million evaluations, take 4.2 s, ~0.16 us each).
-    add(layer_ + "/grid", fmt::format("{} x {} points of an ARA", l.grid, l.grid),
-        static_cast<double>(l.grid) * l.grid * 64 * 4 / 16 + kShapeUnits);
-  }
-  void operator()(const scene::SweptLayer& l) {
-    // The copies of the edge; the envelope and the paths of the ends and of
-    // the grazing points, each a pose and a velocity per trace time, and the
-    // bisections that end the envelope's runs (analysis/swept_edge.hpp).
-    frames(l.samples, "copies of a swept edge", kShapeUnits + 2);
-    add(layer_ + "/trace_samples", fmt::format("{} times of a swept edge's envelope and paths", l.trace_samples),
-        static_cast<double>(l.trace_samples) * (4 + l.instants) + (l.instants + 4) * kShapeUnits +
-            static_cast<double>(analysis::kMaxEnvelopeCrossings) * analysis::kCrossingSteps);
-  }
-  void operator()(const scene::ExistenceLayer& l) {
-    // Each cell is one classification by EAR (about 0.1 us), drawn in runs.
-    add(layer_ + "/columns", fmt::format("{} x {} cells of an existence map", l.columns, l.rows),
-        static_cast<double>(l.columns) * l.rows / 8.0 + 64 * kShapeUnits);
-  }
-  void operator()(const scene::Sam3dExistenceLayer& l) {
-    const double axes = 5.0 * std::pow(4.0, l.subdivisions) + 1.0;  // one per antipodal pair of vertices
-    add(layer_ + "/steps",
-        fmt::format("{} angles x {:.0f} axes x 3^9 perturbations of the 3D existence experiment", l.steps + 1, axes),
-        (l.steps + 1.0) * axes * 19683.0 / kSafeCurveMatricesPerUnit + (2.0 * l.steps + 64.0) * kShapeUnits);
-  }
-
- private:
-  // A layer drawn at each of its frames: `per_frame` units each.
-  void frames(const std::optional<int>& samples, const char* what, double per_frame) {
-    const int n = samples.value_or(panel_.samples);
-    std::string pointer = samples ? layer_ + "/samples" : panel_.samples_pointer;
-    if (!samples && panel_.samples_pointer == "/samples" && n > scene::kMaxFigureSamples) {
-      throw RenderError(scene_.path, "/samples",
-                        fmt::format("{} frames for the figure's layers exceeds the figure limit of "
-                                    "{} (the top-level \"samples\", up to {}, is also what `pita "
-                                    "eval` prints: give the panels or layers their own \"samples\")",
-                                    n, scene::kMaxFigureSamples, scene::kMaxSamples));
-    }
-    if (pointer.empty()) pointer = layer_;
-    // A frame of a chained track evaluates its method several times
-    // (motion::frame_cost); one unit is about one method frame.
-    add(pointer, fmt::format("{} frames of {}", n, what), n * (per_frame + motion::frame_cost(panel_) - 1.0));
-  }
-
-  // 3D scenes draw solids: a shape per face, each vertex of each face projected.
-  double shape_points() const {
-    double points = 0.0;
-    if (in_space()) {
-      for (const scene::Solid& solid : scene_.solids) {
-        points += static_cast<double>(solid.vertices.size());
-        for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
-      }
-      return points;
-    }
-    for (const scene::ShapeOutline& shape : panel_.shapes) points += static_cast<double>(shape.points.size());
     return points;
   }
-  double shapes_units() const {
-    double shapes = static_cast<double>(panel_.shapes.size());
-    if (in_space()) {
-      shapes = 0.0;
-      for (const scene::Solid& solid : scene_.solids) shapes += static_cast<double>(solid.faces.size());
-    }
-    return shapes * kShapeUnits + shape_points();
-  }
+  for (const scene::ShapeOutline& shape : panel_.shapes) points += static_cast<double>(shape.points.size());
+  return points;
+}
 
-  // The panel's keyframes (none for the other kinds, which draw no arrow layers).
-  const std::vector<Keyframe>& keyframes() const {
-    static const std::vector<Keyframe> kNone;
-    const auto* given = std::get_if<scene::KeyframeKeys>(&panel_.keys);
-    return given != nullptr ? given->keyframes : kNone;
+double LayerCost::shapes_units() const {
+  double shapes = static_cast<double>(panel_.shapes.size());
+  if (in_space()) {
+    shapes = 0.0;
+    for (const scene::Solid& solid : scene_.solids) shapes += static_cast<double>(solid.faces.size());
   }
-  bool in_space() const { return std::holds_alternative<scene::SpacePoseKeys>(panel_.keys); }
+  return shapes * kShapeUnits + shape_points();
+}
 
-  void add(std::string pointer, std::string what, double units) {
-    cost_.units += units;
-    cost_.parts.push_back({std::move(pointer), layer_, std::move(what), units});
-  }
+const std::vector<Keyframe>& LayerCost::keyframes() const {
+  static const std::vector<Keyframe> kNone;
+  const auto* given = std::get_if<scene::KeyframeKeys>(&panel_.keys);
+  return given != nullptr ? given->keyframes : kNone;
+}
 
-  const scene::Scene& scene_;
-  const scene::Panel& panel_;
-  std::string layer_;
-  FigureCost& cost_;
-};
+}  // namespace detail
+
+namespace {
 
 template <typename LayerType>
 void add_layers(const scene::Scene& scene, const scene::Panel& panel,
@@ -260,7 +83,7 @@ void add_layers(const scene::Scene& scene, const scene::Panel& panel,
   const std::vector<LayerType>& layers = own ? *own : scene_layers;
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const std::string pointer = (own ? panel.pointer : std::string()) + "/layers/" + std::to_string(i);
-    std::visit(LayerCost(scene, panel, pointer, cost), layers[i]);
+    std::visit(detail::LayerCost(scene, panel, pointer, cost), layers[i]);
   }
 }
 

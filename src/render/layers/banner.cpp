@@ -3,7 +3,10 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "render/banner.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -14,6 +17,14 @@ void PanelBuilder::add(const scene::BannerLayer& layer) {
   FilledPath glyphs{map_through_strip(text_outline(layer.text, layer.font), strip, layer.padding),
                     layer.fill, layer.opacity, layer.outline};
   push(-1, std::move(glyphs));
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::BannerLayer& l) {
+  // The glyph outlines, split into short edges, then the strip's quads.
+  add(layer_ + "/text", fmt::format("{} characters of a banner", l.text.size()),
+      400.0 * static_cast<double>(l.text.size()));
+  frames(l.samples, "a banner's strip", 4);
 }
 
 }  // namespace pita::render::detail

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "analysis/arrow_distance.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -38,5 +39,8 @@ void PanelBuilder::add(const scene::CompareLayer& layer) {
               layer.at, layer.corner, layer.size, text);
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::CompareLayer& l) { frames(l.samples, "a compared pattern", kShapeUnits + 1); }
 
 }  // namespace pita::render::detail

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/prediction.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -30,6 +31,11 @@ void PanelBuilder::add(const scene::DiscrepancyLayer& layer) {
     }
     push(static_cast<int>(i), Circle{pattern[i].p, radius, layer.line, layer.fill});
   }
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::DiscrepancyLayer& l) {
+  frames(l.samples, "discrepancy circles", kShapeUnits + 8);
 }
 
 }  // namespace pita::render::detail

@@ -14,6 +14,7 @@
 #include "core/sam_velocity_field.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -94,5 +95,20 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer) 
                          Color{0.1, 0.1, 0.1, 1.0}});
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::FieldLayer& l) {
+  // An arrow per node; per curve 257 powers, and 33 x 5 more for the check.
+  const double nodes = static_cast<double>(l.columns) * l.rows;
+  const double curves = l.curves > 0 ? std::ceil(l.columns / static_cast<double>(l.curves)) *
+                                           std::ceil(l.rows / static_cast<double>(l.curves))
+                                     : 0.0;
+  add(layer_ + "/columns", fmt::format("{} x {} arrows of a field", l.columns, l.rows),
+      nodes * (kShapeUnits + 2) + curves * (kShapeUnits + 257 + 33 * 5));
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -43,5 +44,8 @@ void PanelBuilder::add(const scene::FixedPointsLayer& layer) {
     ++index;
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
 
 }  // namespace pita::render::detail

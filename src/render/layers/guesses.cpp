@@ -7,6 +7,7 @@
 
 #include "analysis/arrow_distance.hpp"
 #include "core/discrepancy.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -33,6 +34,12 @@ void PanelBuilder::add(const scene::GuessesLayer& layer) {
     }
   }
   if (selection_ == nullptr) add_lines(lines, layer.at, layer.corner, layer.size, layer.color);
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::GuessesLayer& l) {
+  add(layer_ + "/guesses", fmt::format("{} guessed arrows", l.guesses.size()),
+      static_cast<double>(l.guesses.size()) * (2 * kShapeUnits + motion::frame_cost(panel_)));
 }
 
 }  // namespace pita::render::detail

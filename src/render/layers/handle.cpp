@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "render/carried_shapes.hpp"
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -16,5 +17,8 @@ void PanelBuilder::add(const scene::HandleLayer& layer) {
   }
   push(-1, ArrowShape{handle().p, handle().q(), LineStyle{layer.color, layer.width, 1.0, {}}});
 }
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
 
 }  // namespace pita::render::detail

@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/spiral.hpp"
 
@@ -25,6 +26,17 @@ void PanelBuilder::add(const scene::KeyframesLayer& layer) {
     const Segment s = layer.extended ? extended_form(key) : Segment{key.p, key.q()};
     push(static_cast<int>(i), ArrowShape{s.from, s.to, line});
   }
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::KeyframesLayer&) {
+  double units = 0.0;
+  for (const Keyframe& key : keyframes()) {
+    const double turns = std::abs(key.arrow.w) / (2.0 * std::numbers::pi);
+    units += 4 * kShapeUnits +
+             std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+  }
+  add(layer_, "keyframe arrows and winding spirals", units);
 }
 
 }  // namespace pita::render::detail

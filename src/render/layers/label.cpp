@@ -1,4 +1,5 @@
 // "label": a text at a point of the figure, in both kinds of scene.
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/panel_builder.hpp"
 
@@ -13,6 +14,15 @@ namespace detail {
 
 void PanelBuilder::add(const scene::LabelLayer& layer) {
   push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+}
+
+}  // namespace detail
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::LabelLayer& l) {
+  add(layer_, "a label", kShapeUnits + static_cast<double>(l.text.size()));
 }
 
 }  // namespace detail

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -57,5 +58,8 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
   legend.entries.insert(legend.entries.end(), paths.begin(), paths.end());
   drawing_.legends.push_back(std::move(legend));
 }
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::LegendLayer&) { add(layer_, "a legend", 8 * kShapeUnits); }
 
 }  // namespace pita::render::detail

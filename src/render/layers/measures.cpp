@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/comparison.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/measure_text.hpp"
 #include "render/panel_builder.hpp"
@@ -68,6 +69,15 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
     }
   }
   add_measure_text(layer, lines, drawing_, layer_);
+}
+
+}  // namespace detail
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::MeasuresLayer&) {
+  add(layer_, "the measures of the motion", 8 * kShapeUnits + analysis::measure_cost(panel_));
 }
 
 }  // namespace detail

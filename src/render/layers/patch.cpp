@@ -8,6 +8,7 @@
 
 #include "core/affine_power.hpp"
 #include "core/sam_splines.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/solid_faces.hpp"
 
@@ -76,5 +77,15 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer) {
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::PatchLayer&);
 template void draw_pose_layer(PosePanel<Affine3>&, const scene::PatchLayer&);
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::PatchLayer& l) {
+  add(layer_ + "/columns", fmt::format("{} x {} shapes of a patch", l.columns, l.rows),
+      static_cast<double>(l.columns) * l.rows * shapes_units());
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

@@ -2,6 +2,9 @@
 // every vertex of the solids) over the layer's frames.
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -20,5 +23,15 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PathsLayer& layer) {
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::PathsLayer&);
 template void draw_pose_layer(PosePanel<Affine3>&, const scene::PathsLayer&);
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::PathsLayer& l) {
+  add(layer_ + "/samples", fmt::format("{} points of each vertex's path", l.samples),
+      shape_points() * (kShapeUnits + l.samples));
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

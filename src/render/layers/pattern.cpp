@@ -5,6 +5,9 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/spiral.hpp"
 
@@ -38,6 +41,29 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
     push(static_cast<int>(i), Polyline{std::move(coil), false, line});
     drawing_.items.back().moving = selection_ != nullptr;
   }
+}
+
+// Its cost (render/layer_cost.hpp).
+// ------------------------------------------------------------ arrow layers
+void LayerCost::operator()(const scene::PatternLayer& l) {
+  double per_frame = kShapeUnits + 2;
+  if (l.coils) {
+    // A coil per frame: its turns bounded by the keyframes' largest winding,
+    // scaled by how far the range reaches beyond the knots, plus one turn.
+    double w = 0.0;
+    for (const Keyframe& key : keyframes()) w = std::max(w, std::abs(key.arrow.w));
+    const double span = keyframes().empty() ? 0.0 : keyframes().back().t - keyframes().front().t;
+    const double reach =
+        l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
+    const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
+    per_frame += kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+  }
+  if (!l.times.empty()) {  // exactly these frames, not samples over a range
+    add(layer_ + "/times", fmt::format("{} frames of a pattern", l.times.size()),
+        static_cast<double>(l.times.size()) * (per_frame + motion::frame_cost(panel_) - 1.0));
+    return;
+  }
+  frames(l.samples, "a pattern", per_frame);
 }
 
 }  // namespace pita::render::detail

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/panel_builder.hpp"
 #include "render/plot.hpp"
@@ -69,6 +70,20 @@ void PanelBuilder::add(const scene::PlotLayer& layer) {
   } catch (const std::invalid_argument& error) {
     fail(layer_, fmt::format("cannot plot the distance of {}: {}", scene::method_id(panel_.keys), error.what()));
   }
+}
+
+}  // namespace detail
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::PlotLayer& l) {
+  // An area plot builds and samples one motion per method.
+  const double curves = l.of == scene::PlotOf::area ? static_cast<double>(std::max<std::size_t>(1, l.methods.size())) : 1.0;
+  const double per_point = l.of == scene::PlotOf::area ? motion::frame_cost(panel_) : 1.0;
+  add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
+      8 * kShapeUnits + curves * l.samples * per_point);
+  if (l.marks) frames(std::nullopt, "a plot's marks", curves * (kShapeUnits + 8));
 }
 
 }  // namespace detail

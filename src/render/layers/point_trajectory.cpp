@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -55,6 +56,16 @@ void PanelBuilder::add(const scene::PointTrajectoryLayer& layer) {
   for (std::size_t i = 0; i < points_.size(); ++i) {
     push(static_cast<int>(i), Circle{points_[i].p, radius, layer.line, layer.line.color});
   }
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::PointTrajectoryLayer& l) {
+  // The Neville-type curves blend n(n - 1)/2 times per point.
+  const auto* given = std::get_if<scene::PointKeys>(&panel_.keys);
+  const double n = given != nullptr ? static_cast<double>(given->points.size()) : 0.0;
+  const double per_point = l.curve == PointCurve::pita ? motion::frame_cost(panel_) : 1.0 + n * (n - 1.0) / 2.0;
+  add(layer_ + "/samples", fmt::format("{} points of a point trajectory", l.samples),
+      kShapeUnits + l.samples * per_point + (l.dots ? n * kShapeUnits : 0.0));
 }
 
 }  // namespace pita::render::detail

@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 
 #include "core/affine_power.hpp"
+#include "core/overloaded.hpp"
 #include "core/sam_splines.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/solid_faces.hpp"
 
@@ -70,5 +72,23 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PosesLayer& layer) {
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::PosesLayer&);
 template void draw_pose_layer(PosePanel<Affine3>&, const scene::PosesLayer&);
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::PosesLayer& l) {
+  // With "inserted", a four-point panel of the plane's last step adds n 2^(steps-1) poses.
+  const auto [poses, inserted] = std::visit(
+      overloaded{[&](const scene::PlanePoseKeys& given) {
+                   const auto n = static_cast<double>(given.poses.size());
+                   return std::pair(n, l.inserted && given.subdivisions > 0 ? std::ldexp(n, given.subdivisions - 1) : 0.0);
+                 },
+                 [](const scene::SpacePoseKeys& given) { return std::pair(static_cast<double>(given.poses.size()), 0.0); },
+                 [](const scene::TrackMethod&) { return std::pair(0.0, 0.0); }},
+      panel_.keys);
+  add(layer_, "the shapes at the poses", (poses + inserted) * shapes_units());
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

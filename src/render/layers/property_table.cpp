@@ -2,6 +2,9 @@
 // measured as `pita audit` does, drawn as a table (render/property_table.hpp).
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/property_table.hpp"
 
@@ -33,6 +36,15 @@ void PanelBuilder::add(const scene::PropertyTableLayer& layer) {
     }, shape);
     push(-1, std::move(shape));
   }
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::PropertyTableLayer& l) {
+  // About 10 units (27 us) per property, method and configuration, crafted
+  // ones included (pita_bench BM_Audit/1: about 1 s of CPU for 14 x 13 x 208).
+  const double methods = l.methods.empty() ? 14.0 : static_cast<double>(l.methods.size());
+  add(layer_ + "/configs", fmt::format("{} configurations of a property table", l.configs),
+      10.0 * 13.0 * methods * (l.configs + static_cast<double>(analysis::crafted_configs().size())));
 }
 
 }  // namespace pita::render::detail

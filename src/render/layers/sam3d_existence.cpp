@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -115,5 +116,23 @@ Drawing sam3d_existence_drawing(const scene::Sam3dExistenceLayer& layer, const a
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::Sam3dExistenceLayer& layer) {
   panel.append(sam3d_existence_drawing(layer, panel.layer()).items);
 }
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+// Matrices (angle x axis x perturbation) per unit of work, measured: the
+// default layer (49 angles x 81 axes x 3^9) takes 0.85 s on two cores, about
+// 1.7 core-seconds or 680 000 units (README "Performance"); the searches of p
+// along the curve are included.
+constexpr double kSafeCurveMatricesPerUnit = 110.0;
+
+void LayerCost::operator()(const scene::Sam3dExistenceLayer& l) {
+  const double axes = 5.0 * std::pow(4.0, l.subdivisions) + 1.0;  // one per antipodal pair of vertices
+  add(layer_ + "/steps",
+      fmt::format("{} angles x {:.0f} axes x 3^9 perturbations of the 3D existence experiment", l.steps + 1, axes),
+      (l.steps + 1.0) * axes * 19683.0 / kSafeCurveMatricesPerUnit + (2.0 * l.steps + 64.0) * kShapeUnits);
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

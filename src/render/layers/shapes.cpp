@@ -11,6 +11,7 @@
 
 #include "core/carrier.hpp"
 #include "render/carried_shapes.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/panel_builder.hpp"
 #include "render/solid_faces.hpp"
@@ -84,6 +85,16 @@ void PanelBuilder::add(const scene::ShapesLayer& layer) {
       drawing_.items.back().moving = selection_ != nullptr;
     }
   }
+}
+
+}  // namespace detail
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+// ------------------------------------------------------------- pose layers
+void LayerCost::operator()(const scene::ShapesLayer& l) {
+  frames(l.samples, "shapes", shapes_units());
 }
 
 }  // namespace detail

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/strip.hpp"
 
@@ -36,5 +37,8 @@ void PanelBuilder::add(const scene::StrokeLayer& layer) {
     push(-1, Polyline{std::move(boundary), true, *layer.outline});
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::StrokeLayer& l) { frames(l.samples, "a stroke", kShapeUnits + 4); }
 
 }  // namespace pita::render::detail

@@ -13,6 +13,7 @@
 #include "analysis/swept_edge.hpp"
 #include "core/grazing_point.hpp"
 #include "motion/scene_motion.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -99,5 +100,20 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::SweptLayer& layer) 
     panel.push(-1, Label{grazing_claim(analysis::grazing_range(trace)), *layer.claim_at, layer.size, layer.color});
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::SweptLayer& l) {
+  // The copies of the edge; the envelope and the paths of the ends and of
+  // the grazing points, each a pose and a velocity per trace time, and the
+  // bisections that end the envelope's runs (analysis/swept_edge.hpp).
+  frames(l.samples, "copies of a swept edge", kShapeUnits + 2);
+  add(layer_ + "/trace_samples", fmt::format("{} times of a swept edge's envelope and paths", l.trace_samples),
+      static_cast<double>(l.trace_samples) * (4 + l.instants) + (l.instants + 4) * kShapeUnits +
+          static_cast<double>(analysis::kMaxEnvelopeCrossings) * analysis::kCrossingSteps);
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

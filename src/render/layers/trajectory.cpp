@@ -2,6 +2,9 @@
 #include <utility>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -18,6 +21,12 @@ void PanelBuilder::add(const scene::TrajectoryLayer& layer) {
     }
   }
   push(-1, Polyline{std::move(points), false, layer.line});
+}
+
+// Its cost (render/layer_cost.hpp).
+void LayerCost::operator()(const scene::TrajectoryLayer& l) {
+  add(layer_ + "/samples", fmt::format("{} points of a trajectory", l.samples),
+      kShapeUnits + l.samples * motion::frame_cost(panel_));
 }
 
 }  // namespace pita::render::detail

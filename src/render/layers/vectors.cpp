@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
 namespace pita::render::detail {
@@ -37,5 +38,9 @@ void PanelBuilder::add(const scene::VectorsLayer& layer) {
     ++index;
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+// Each frame evaluates a stencil of five or six more frames (frame_derivatives).
+void LayerCost::operator()(const scene::VectorsLayer& l) { frames(l.samples, "vectors", 7 * kShapeUnits); }
 
 }  // namespace pita::render::detail

@@ -3,6 +3,7 @@
 // (exact for SAM: the field x -> log(A) x of SAM Sec. 2.3, Eq. 6).
 #include <vector>
 
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -25,5 +26,14 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::VelocitiesLayer& layer
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::VelocitiesLayer&);
 template void draw_pose_layer(PosePanel<Affine3>&, const scene::VelocitiesLayer&);
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::VelocitiesLayer& l) {
+  frames(l.samples, "velocities", shape_points() * (kShapeUnits + 2));
+}
+
+}  // namespace detail
 
 }  // namespace pita::render

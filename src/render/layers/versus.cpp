@@ -12,6 +12,7 @@
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/carried_shapes.hpp"
+#include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 
 namespace pita::render {
@@ -73,5 +74,19 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
     }
   }
 }
+
+// Its cost (render/layer_cost.hpp).
+namespace detail {
+
+void LayerCost::operator()(const scene::VersusLayer& l) {
+  if (!l.at.empty()) {
+    add(layer_ + "/at", fmt::format("{} frames of compared shapes", l.at.size()),
+        static_cast<double>(l.at.size()) * (shapes_units() + l.power));
+    return;
+  }
+  frames(l.samples, "compared shapes", shapes_units() + l.power);
+}
+
+}  // namespace detail
 
 }  // namespace pita::render
