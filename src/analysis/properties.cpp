@@ -11,6 +11,7 @@
 
 #include "analysis/arrow_distance.hpp"
 #include "analysis/audit_configs.hpp"
+#include "core/limits.hpp"
 
 namespace pita::analysis {
 
@@ -391,7 +392,7 @@ Probe probe_perseverant(Property kind, Method m, const KeyframeTriple& k) {
   even.b.t = 0.5 * (k.a.t + k.c.t);
   const auto D = try_motion(m, even);
   if (!D) return not_built(even, "no motion");
-  const double a = even.a.t, span = even.c.t - even.a.t, h = 1e-3, ext = extent(even);
+  const double a = even.a.t, span = even.c.t - even.a.t, h = limits::kPerseveranceStep, ext = extent(even);
   const std::array<double, 5> ss{0.1, 0.3, 0.5, 0.7, 0.9};
   const auto at = [&](double s) { return D->at(a + s * span); };
   double dev = 0.0;

@@ -14,6 +14,7 @@
 #include <Eigen/LU>
 
 #include "core/affine_power3.hpp"
+#include "core/limits.hpp"
 #include "core/worker_pool.hpp"
 
 namespace pita::analysis {
@@ -170,7 +171,7 @@ bool has_real_logarithm(const Eigen::Matrix3d& L) {
   if (values[2].real() > 0.0) return true;
   const double a = values[1].real(), b = values[2].real();
   const double scale = L.norm();
-  if (std::abs(a - b) > 1e-6 * scale) return false;  // two distinct negative eigenvalues
+  if (std::abs(a - b) > limits::kDoubleNegativeEigenvalue * scale) return false;  // two distinct negative eigenvalues
   // A double negative eigenvalue: a log iff it has two eigenvectors (a
   // rotation by pi with uniform scale on the plane). EAR decides exactly.
   try {

@@ -293,5 +293,13 @@ inline constexpr double kPoseVelocityStep = 1e-3;
 // - the relative acceleration of the steadiness measure (steadiness.cpp), a
 //   fraction of one time sample of its midpoint rule.
 inline constexpr double kSteadinessStep = 1e-4;
+// - the accelerations of the audit's "perseverant" probe (analysis/
+//   properties.cpp), a fraction of the motion's span (A to C).
+inline constexpr double kPerseveranceStep = 1e-3;
+
+// Two real negative eigenvalues of a 3x3 linear part closer than this, relative
+// to |L|_F, are taken as one double eigenvalue, which EAR then decides exactly
+// (analysis/sam3d_existence.cpp): farther apart, no real log exists.
+inline constexpr double kDoubleNegativeEigenvalue = 1e-6;
 
 }  // namespace pita::limits

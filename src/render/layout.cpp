@@ -14,10 +14,13 @@ scene::Box united(const scene::Box& a, const scene::Box& b) {
 
 // A box with room on both axes: a degenerate side (a vertical pattern, a
 // single point) gets the other side's size, or 1 when both are zero.
+// The smallest side of a view, relative to its larger side.
+constexpr double kMinViewAspect = 1e-3;
+
 scene::Box padded(scene::Box box) {
   const double w = box.max.real() - box.min.real(), h = box.max.imag() - box.min.imag();
   const double side = std::max({w, h, 0.0}) > 0.0 ? std::max(w, h) : 1.0;
-  const double min_side = 1e-3 * side;
+  const double min_side = kMinViewAspect * side;
   if (w < min_side) {
     box.min -= Point{0.5 * (min_side - w), 0.0};
     box.max += Point{0.5 * (min_side - w), 0.0};
