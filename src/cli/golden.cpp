@@ -133,14 +133,21 @@ ExitCode run_check(const GoldenOptions& options) {
     }
     if (!entry.error.empty()) {
       std::cerr << "pita: " << entry.error << '\n';
-    } else if (entry.check.matches()) {
-      std::cout << "ok    " << scene.string() << '\n';
+    } else if (entry.check.matches() && entry.check.claims_hold()) {
+      std::cout << "ok    " << scene.string()
+                << (entry.check.claims.empty() ? std::string()
+                                               : fmt::format(" ({} claims hold)", entry.check.claims.size()))
+                << '\n';
     } else {
       result = worse(result, ExitCode::golden_mismatch);
       std::cerr << "FAIL  " << scene.string() << '\n';
       for (const golden::FileCheck& f : entry.check.files) {
         if (f.verdict == golden::Verdict::match) continue;
         std::cerr << "      " << f.golden.string() << ": " << f.detail << '\n';
+      }
+      for (const analysis::ClaimOutcome& c : entry.check.claims) {
+        if (c.held) continue;
+        std::cerr << "      " << c.pointer << ": claim failed: \"" << c.says << "\": " << c.measured << '\n';
       }
     }
     report.push_back(std::move(entry));

@@ -10,9 +10,11 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "analysis/claims.hpp"
 #include "animate/frame.hpp"
 #include "animate/timeline.hpp"
 #include "cli/failure.hpp"
+#include "motion/stage.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
 #include "render/output_file.hpp"
@@ -332,7 +334,17 @@ void render_scene(const RenderOptions& options, const RenderPlan& plan, const st
     render::check_images(scene);
     figure = animate::frame_figure(scene, timeline, *options.at, animate::animation_layout(scene, timeline));
   } else {
-    figure = render::build_figure(scene, options.budget);
+    const motion::Stage stage(scene);
+    figure = render::build_figure(stage, options.budget);
+    // The caption's claims, measured on the motions drawn: a warning here,
+    // a failure in `pita check` (README "Claims").
+    for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
+      if (claim.held) continue;
+      std::cerr << "pita: warning: "
+                << scene::located(scene.path, claim.pointer,
+                                  fmt::format("the claim \"{}\" does not hold: {}", claim.says, claim.measured))
+                << '\n';
+    }
   }
   std::vector<std::pair<fs::path, std::string>> files;
   for (const Target& target : targets_for(options, path, plan.formats, plan.single_file)) {

@@ -1,11 +1,16 @@
 #include "golden/check.hpp"
 
+#include "analysis/claims.hpp"
+#include "motion/stage.hpp"
+
 #include <fmt/format.h>
 
+#include "analysis/claims.hpp"
 #include "animate/frame.hpp"
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"
 #include "golden/figure_data.hpp"
+#include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "scene/json_text.hpp"
 #include "scene/scene.hpp"
@@ -64,8 +69,10 @@ std::string scene_name(const fs::path& scene_path) { return scene_path.stem().st
 
 Outputs render_outputs(const fs::path& scene_path) {
   const scene::Scene scene = scene::load_scene(scene_path);
-  const render::Figure figure = render::build_figure(scene);
+  const motion::Stage stage(scene);
+  const render::Figure figure = render::build_figure(stage);
   Outputs out;
+  out.claims = analysis::check_claims(stage);  // measured on the motions drawn
   out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
   out.svg = render::render_figure(scene, figure, render::Format::svg);
   out.png = render::render_figure(scene, figure, render::Format::png);
@@ -79,6 +86,10 @@ Outputs render_outputs(const fs::path& scene_path) {
     }
   }
   return out;
+}
+
+bool SceneCheck::claims_hold() const {
+  return std::all_of(claims.begin(), claims.end(), [](const analysis::ClaimOutcome& c) { return c.held; });
 }
 
 bool SceneCheck::matches() const {
@@ -159,7 +170,7 @@ FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string&
 SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
                        const Tolerances& tolerances) {
   const Outputs outputs = render_outputs(scene_path);
-  SceneCheck result{scene_path.string(), scene_name(scene_path), {}};
+  SceneCheck result{scene_path.string(), scene_name(scene_path), {}, outputs.claims};
   for (const GoldenFile& file : golden_files(outputs)) {
     result.files.push_back(compare_file(file.kind, golden_path(golden_dir, result.name, file.suffix),
                                         *file.bytes, tolerances));

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/claims.hpp"
 #include "golden/image_compare.hpp"
 #include "golden/number_compare.hpp"
 #include "golden/svg_compare.hpp"
@@ -39,6 +40,7 @@ struct Outputs {
   std::string svg;
   std::string png;
   std::vector<std::pair<std::string, std::string>> frames;  // (suffix ".frame-0061.png", PNG bytes)
+  std::vector<analysis::ClaimOutcome> claims;  // the scene's "claims", measured (not a golden file)
 };
 
 
@@ -83,7 +85,9 @@ struct SceneCheck {
   std::string scene_path;
   std::string name;
   std::vector<FileCheck> files;
-  bool matches() const;
+  std::vector<analysis::ClaimOutcome> claims;  // every claim of the scene, in order
+  bool matches() const;      // every golden file matches
+  bool claims_hold() const;  // every claim holds
 };
 
 // Throws SceneError/RenderError (bad scene) and GoldenError (a golden file

@@ -60,17 +60,22 @@ body { font-family: sans-serif; margin: 2em; }
 table { border-collapse: collapse; margin-bottom: 1em; }
 td, th { border: 1px solid #ccc; padding: 4px 8px; vertical-align: top; text-align: left; }
 img { max-width: 420px; border: 1px solid #999; }
-.match { color: #070; } .DIFFERS, .MISSING, .ERROR { color: #b00; font-weight: bold; }
+.match { color: #070; } .DIFFERS, .MISSING, .ERROR, .CLAIM { color: #b00; font-weight: bold; }
 </style></head><body>
 <h1>pita check</h1>
 )";
   std::size_t bad = 0;
-  for (const ReportEntry& e : entries) bad += (!e.error.empty() || !e.check.matches()) ? 1 : 0;
+  for (const ReportEntry& e : entries) {
+    bad += (!e.error.empty() || !e.check.matches() || !e.check.claims_hold()) ? 1 : 0;
+  }
   html += fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
                       entries.size(), bad);
   html += "<table><tr><th>scene</th><th>result</th></tr>\n";
   for (const ReportEntry& e : entries) {
-    const std::string result = !e.error.empty() ? "ERROR" : e.check.matches() ? "match" : "DIFFERS";
+    const std::string result = !e.error.empty()          ? "ERROR"
+                               : !e.check.matches()      ? "DIFFERS"
+                               : !e.check.claims_hold() ? "CLAIM FAILED"
+                                                         : "match";
     html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
                         escaped(e.check.name), result);
   }
@@ -90,6 +95,16 @@ img { max-width: 420px; border: 1px solid #999; }
                           verdict_name(f.verdict), escaped(f.detail));
     }
     html += "</table>\n";
+    // Every claim, held or not (README "Claims").
+    if (!e.check.claims.empty()) {
+      html += "<table><tr><th>claim</th><th>says</th><th>result</th><th>measured</th></tr>\n";
+      for (const analysis::ClaimOutcome& c : e.check.claims) {
+        const std::string_view held = c.held ? "match" : "DIFFERS";
+        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", escaped(c.pointer),
+                            escaped(c.says), held, c.held ? "holds" : "FAILS", escaped(c.measured));
+      }
+      html += "</table>\n";
+    }
     if (e.check.matches()) continue;
     // The images: expected, actual, diff.
     for (const FileCheck& f : e.check.files) {

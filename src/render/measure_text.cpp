@@ -86,6 +86,11 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
       break;  // compared with another motion by the panel's drawing, not measured here
+    case MeasureKind::scale_step:
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max:
+      break;  // of the drawn frames (analysis/frame_steps.hpp), by the panel's drawing
   }
   return name.text + ": -";
 }

@@ -67,23 +67,7 @@ PatternLayer read_pattern(const Fields& fields) {
   fields.boolean("heads", layer.heads);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
-  if (const Json* times = fields.get("times")) {
-    const std::string pointer = fields.at("times");
-    for (const std::string_view other : {std::string_view("samples"), std::string_view("range")}) {
-      if (fields.get(other) != nullptr) {
-        fields.reader().fail(pointer, fmt::format("draws the frames at exactly these times, and \"{}\" chooses "
-                                                  "times too: give \"times\" or \"samples\" and \"range\"",
-                                                  other));
-      }
-    }
-    if (!times->is_array() || times->empty() || times->size() > static_cast<std::size_t>(kMaxFigureSamples)) {
-      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples,
-                                                value_text(*times)));
-    }
-    for (std::size_t i = 0; i < times->size(); ++i) {
-      layer.times.push_back(fields.reader().number((*times)[i], element_pointer(pointer, i)));
-    }
-  }
+  read_frame_times(fields, layer.times);
   if (const Json* method = fields.get("method")) layer.method = fields.reader().method(*method, fields.at("method"));
   if (const Json* options = fields.get("options")) layer.options = read_options_patch(fields, *options);
   if (const Json* label = fields.get("label")) {
@@ -373,6 +357,11 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
       const std::string item_at = element_pointer(at, i);
       auto parsed = parse_measure(reader.string((*show)[i], item_at), scene);
       if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(item_at, *reason);
+      if (std::get<MeasureName>(parsed).panel) {
+        reader.fail(item_at, fmt::format("\"{}\" compares with another panel, which only a claim does "
+                                         "(README \"Claims\"); a layer compares with a method, \"angle:P6@t\"",
+                                         std::get<MeasureName>(parsed).text));
+      }
       layer.show.push_back(std::move(std::get<MeasureName>(parsed)));
     }
   }

@@ -54,9 +54,9 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
   }
 }
 
-constexpr std::array<std::string_view, 17> kSceneFields = {
+constexpr std::array<std::string_view, 18> kSceneFields = {
     "$schema", "description", "method", "keyframes", "points", "chain",  "samples", "options", "title",
-    "canvas",  "layers",      "panels", "golden",    "timing", "shapes", "handle",  "animation"};
+    "canvas",  "layers",      "panels", "golden", "claims",    "timing", "shapes", "handle",  "animation"};
 
 // A "shapes" layer draws the scene's shapes, which it must have.
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
@@ -170,6 +170,9 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     scene.panels = {scene_panel(scene, "")};
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
+  if (const Json* claims = JsonReader::member(document, "claims")) {
+    scene.claims = read_claims(reader, *claims, scene, false);
+  }
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),

@@ -46,6 +46,27 @@ void read_outline(const Fields& fields, std::optional<LineStyle>& out) {
   out = line;
 }
 
+// "times": exactly these frames, instead of "samples" and "range".
+void read_frame_times(const Fields& fields, std::vector<double>& out) {
+  if (const Json* times = fields.get("times")) {
+    const std::string pointer = fields.at("times");
+    for (const std::string_view other : {std::string_view("samples"), std::string_view("range")}) {
+      if (fields.get(other) != nullptr) {
+        fields.reader().fail(pointer, fmt::format("draws the frames at exactly these times, and \"{}\" chooses "
+                                                  "times too: give \"times\" or \"samples\" and \"range\"",
+                                                  other));
+      }
+    }
+    if (!times->is_array() || times->empty() || times->size() > static_cast<std::size_t>(kMaxFigureSamples)) {
+      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples,
+                                                value_text(*times)));
+    }
+    for (std::size_t i = 0; i < times->size(); ++i) {
+      out.push_back(fields.reader().number((*times)[i], element_pointer(pointer, i)));
+    }
+  }
+}
+
 // "range": [from, to], from < to.
 void read_range(const Fields& fields, std::optional<TimeRange>& out) {
   const Json* value = fields.get("range");

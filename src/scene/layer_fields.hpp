@@ -105,6 +105,10 @@ void read_range(const Fields& fields, std::optional<TimeRange>& out);
 
 void read_figure_samples(const Fields& fields, std::optional<int>& out);
 
+// "times": exactly these frames (Fig. 5's D(1/4), Fig. 24's square at B),
+// 1 to kMaxFigureSamples finite times, instead of "samples" and "range".
+void read_frame_times(const Fields& fields, std::vector<double>& out);
+
 // A layer's "options": those of the panel's method options a layer may change.
 // The knot order is not one of them: it decides how the panel's keyframes
 // were read (N41). Whether the layer's method reads each is checked where

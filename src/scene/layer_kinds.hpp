@@ -58,8 +58,8 @@ inline constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text",
 inline constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
 inline constexpr std::array<std::string_view, 12> kPlotFields = {
     "type", "box", "of", "methods", "colors", "point", "samples", "color", "width", "opacity", "dash", "marks"};
-inline constexpr std::array<std::string_view, 10> kShapesFields = {
-    "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range", "lightness"};
+inline constexpr std::array<std::string_view, 11> kShapesFields = {
+    "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range", "times", "lightness"};
 
 LabelLayer read_label(const Fields& fields);
 

@@ -251,6 +251,7 @@ struct ShapesLayer {
   double fill_opacity = 0.25;
   std::optional<int> samples;            // default: the panel's samples
   std::optional<TimeRange> range;        // default: first to last knot
+  std::vector<double> times;             // set: exactly these times (Fig. 24's square at B)
   // "lightness": "area" (pose scenes; SAM paper Fig. 9, docs/paper-notes.md
   // N48): each frame's line and fill mixed with white in proportion to its
   // area among the layer's frames (the smallest as given, the largest lightest).

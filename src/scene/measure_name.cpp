@@ -15,7 +15,7 @@ namespace {
 
 using detail::quoted_choices;
 
-constexpr std::array<MeasureEntry, 13> kMeasures{{
+constexpr std::array<MeasureEntry, 17> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
     {"path-length", MeasureKind::path_length, MeasureScene::arrows},
     {"turning", MeasureKind::turning, MeasureScene::arrows},
@@ -23,6 +23,10 @@ constexpr std::array<MeasureEntry, 13> kMeasures{{
     {"overreaction", MeasureKind::overreaction, MeasureScene::arrows},
     {"pop", MeasureKind::pop, MeasureScene::arrows},
     {"handle-shift", MeasureKind::handle_shift, MeasureScene::arrows},
+    {"scale-step", MeasureKind::scale_step, MeasureScene::arrows},
+    {"turn-step", MeasureKind::turn_step, MeasureScene::arrows},
+    {"scale-min", MeasureKind::scale_min, MeasureScene::arrows},
+    {"scale-max", MeasureKind::scale_max, MeasureScene::arrows},
     {"ara", MeasureKind::ara, MeasureScene::poses},
     {"area", MeasureKind::area, MeasureScene::poses},
     {"gain:", MeasureKind::gain, MeasureScene::arrows, true},
@@ -30,6 +34,9 @@ constexpr std::array<MeasureEntry, 13> kMeasures{{
     {"jump:", MeasureKind::jump, MeasureScene::arrows, true},
     {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
 }};
+
+// "angle:/panels/1@0.25": the other panel of a claim's angle.
+constexpr std::string_view kPanelsPrefix = "/panels/";
 
 constexpr std::array<std::string_view, 9> kParameters = {"p", "q", "p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
 
@@ -73,7 +80,8 @@ std::string unknown(std::string_view text, MeasureScene scene) {
                                    quoted_choices(names));
   if (scene == MeasureScene::arrows) {
     reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
-              "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method and t a time";
+              "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
+              "panel, \"/panels/1\") and t a time";
   }
   return reason;
 }
@@ -88,7 +96,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
   }
   if (found == nullptr) return unknown(text, scene);
-  MeasureName measure{found->kind, std::string(text), {}, {}, 0.0};
+  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0};
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
     if (!is_keyframe_parameter(rest)) {
@@ -103,8 +111,16 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (at == std::string_view::npos || method.empty()) {
       return fmt::format("\"{}\" must be \"angle:M@t\", an arrow method M and a time t", text);
     }
-    const MethodEntry* entry = find_method_entry(method, MotionKind::arrows);
-    if (entry == nullptr) {
+    const MethodEntry* entry = nullptr;
+    if (method.starts_with(kPanelsPrefix)) {
+      const std::string_view index = method.substr(kPanelsPrefix.size());
+      std::size_t k = 0;
+      const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), k);
+      if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
+        return fmt::format("in \"{}\": \"{}\" must be \"/panels/\" and a panel's index", text, method);
+      }
+      measure.panel = k;
+    } else if ((entry = find_method_entry(method, MotionKind::arrows)) == nullptr) {
       return fmt::format("in \"{}\": {}", text, unknown_method_reason(method, MotionKind::arrows));
     }
     const std::string_view time = rest.substr(at + 1);
@@ -113,7 +129,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (time.empty() || error != std::errc() || end != time.data() + time.size() || !std::isfinite(t)) {
       return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
     }
-    measure.method = entry->method;
+    if (entry != nullptr) measure.method = entry->method;
     measure.t = t;
   }
   if (found->scene != scene) {

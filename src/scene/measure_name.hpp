@@ -9,9 +9,14 @@
 //       parameter, K a keyframe (A..Z, K27, ...), x one of p, q, p.x, p.y,
 //       q.x, q.y, m, w, t ("gain:B.q" is the larger of B.q.x and B.q.y)
 //   "angle:M@t"                                   arrow scenes: the angle from
-//       the panel's D(t).w to that of arrow method M (Fig. 5), t finite
+//       the panel's D(t).w to that of arrow method M (Fig. 5), t finite; in a
+//       claim M may be another panel, "angle:/panels/1@0.25" (README "Claims")
+//   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
+//   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -27,6 +32,7 @@ enum class MeasureKind {
   ara, area,
   gain, turn, jump,  // "gain:K.x" ...: one keyframe parameter
   angle,             // "angle:M@t"
+  scale_step, turn_step, scale_min, scale_max,  // the drawn frames (analysis/frame_steps.hpp)
 };
 
 // Which scenes measure it: `pita measure` measures arrow motions and pose
@@ -49,6 +55,9 @@ struct MeasureName {
   std::string text;        // as written: "gain:B.q", "angle:P8@0.25"
   std::string parameter;   // gain, turn, jump: "B.q"
   Method method{};         // angle: the other arrow method
+  // angle: another panel of the scene instead ("angle:/panels/1@0.25"), which
+  // only a claim may name (its reader checks the index).
+  std::optional<std::size_t> panel;
   double t = 0.0;          // angle: the time
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };

@@ -223,6 +223,7 @@ ShapesLayer read_shapes_layer(const Fields& fields, bool poses) {
   fields.number("fill_opacity", kOpacity, layer.fill_opacity);
   read_figure_samples(fields, layer.samples);
   read_range(fields, layer.range);
+  read_frame_times(fields, layer.times);
   fields.choice("lightness", kLightnessNames, kLightnessByArea, layer.lightness_by_area);
   if (layer.lightness_by_area && !poses) {
     fields.reader().fail(fields.at("lightness"), "\"area\" shades a pose scene's shapes by their area; an arrow "

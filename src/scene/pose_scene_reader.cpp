@@ -18,9 +18,9 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 16> kPoseSceneFields = {
+constexpr std::array<std::string_view, 17> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
-    "samples", "title",       "canvas", "layers", "panels",             "golden",
+    "samples", "title",       "canvas", "layers", "panels",             "golden", "claims",
     "subdivisions", "timing", "animation", "dimension"};
 
 }  // namespace
@@ -107,6 +107,9 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
     scene.panels = {scene_panel(scene, "")};
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
+  if (const Json* claims = JsonReader::member(document, "claims")) {
+    scene.claims = read_claims(reader, *claims, scene, true);
+  }
   if (const Json* animation = JsonReader::member(document, "animation")) {
     scene.animation = detail::read_animation(reader, *animation, "/animation", false, true);
     scene.has_animation = true;

@@ -16,6 +16,7 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/sam_family_motion.hpp"
+#include "scene/claim.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
 #include "scene/motion_keys.hpp"
@@ -64,6 +65,9 @@ struct Scene {
     std::optional<int> pixel;             // "pixel_tolerance", [0, 255]
     std::optional<double> max_differing;  // "max_differing", [0, 1]
   } golden;
+
+  // "claims": the caption's statements, checked by `pita check` (scene/claim.hpp).
+  std::vector<Claim> claims;
 };
 
 

@@ -39,4 +39,8 @@ void check_track_chain(const JsonReader& reader, const MotionKeys& keys, const s
 // "golden": {"number_tolerance", "svg_tolerance", "pixel_tolerance", "max_differing"}.
 void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenTolerances& out);
 
+// "claims" (scene/claim.hpp), read after the panels: each names a panel by
+// its index and a measure the scene's kind has (`poses`: a pose scene).
+std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene, bool poses);
+
 }  // namespace pita::scene::detail

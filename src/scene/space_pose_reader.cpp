@@ -16,9 +16,9 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 16> kSpaceSceneFields = {
+constexpr std::array<std::string_view, 17> kSpaceSceneFields = {
     "$schema", "description", "dimension", "method", "poses", "reference_tetrahedron", "samples", "subdivisions",
-    "timing", "golden", "shapes", "camera", "layers", "title", "canvas", "panels"};
+    "timing", "golden", "claims", "shapes", "camera", "layers", "title", "canvas", "panels"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation", "distance", "projection",
@@ -351,6 +351,9 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
     scene.panels = {scene_panel(scene, "")};
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
+  if (const Json* claims = JsonReader::member(document, "claims")) {
+    scene.claims = read_claims(reader, *claims, scene, true);
+  }
   return scene;
 }
 

@@ -76,6 +76,50 @@ TEST_F(Check, ReportReferencesImagesThatExist) {
   EXPECT_NE(html.find("DIFFERS"), std::string::npos);
 }
 
+// Claims (README "Claims"): measured on the motions drawn; one that does not
+// hold fails `check` (exit 1) naming its pointer, words and values, while
+// the goldens still match, and `render` only warns.
+std::string with_claim(const std::string& claim) {
+  std::string text = scene("3");
+  text.insert(text.rfind('}'), R"(, "claims": [)" + claim + "]");
+  return text;
+}
+
+TEST_F(Check, ClaimsThatHoldPass) {
+  dir.write("fig.json", with_claim(R"({"says": "P6 has no pop", "measure": "pop", "is": false})"));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("ok    fig.json (1 claims hold)"), std::string::npos) << r.out;
+}
+
+TEST_F(Check, AClaimThatFailsIsAMismatchNamingIt) {
+  dir.write("fig.json", with_claim(R"({"says": "the frames never turn", "measure": "turn-step", "below": 0.01})"));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("FAIL  fig.json"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::regex_search(
+      r.err, std::regex(R"(/claims/0: claim failed: "the frames never turn": turn-step of the scene \(P6[^)]*\) = [0-9.]+, not below 0\.01)")))
+      << r.err;
+  EXPECT_EQ(r.err.find("golden/fig/"), std::string::npos) << r.err;  // the goldens match
+
+  const RunResult render = run({"render", "fig.json", "-o", "out"});
+  EXPECT_EQ(render.exit_code, 0) << render.err;
+  EXPECT_NE(render.err.find("pita: warning: fig.json: /claims/0: the claim \"the frames never turn\" does not hold"),
+            std::string::npos)
+      << render.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "out/fig.svg"));
+}
+
+TEST_F(Check, AClaimThePanelCannotMeasureIsBadInput) {
+  dir.write("fig.json", with_claim(R"({"says": "x", "measure": "gain:D.q", "below": 1})"));
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("fig.json: /claims/0/measure: the scene (P6) has no \"gain:D.q\": no keyframe has that "
+                       "parameter"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(Check, CorruptedGoldenPngIsBadInput) {
   const fs::path png = dir.path() / "golden/fig/fig.png";
   const std::string bytes = read_file(png);

@@ -46,14 +46,16 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
   ReportEntry same{SceneCheck{"scenes/same.json", "same",
                               {file(FileKind::data, Verdict::match, "d", "d"),
                                file(FileKind::svg, Verdict::match, "s", "s"),
-                               file(FileKind::png, Verdict::match, "P", "P")}},
+                               file(FileKind::png, Verdict::match, "P", "P")},
+                              {}},
                    ""};
   ReportEntry moved{SceneCheck{"scenes/moved.json", "moved",
                                {file(FileKind::data, Verdict::differs, "d1", "d2"),
                                 file(FileKind::svg, Verdict::differs, "<svg>1</svg>", "<svg>2</svg>"),
-                                file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")}},
+                                file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")},
+                               {}},
                     ""};
-  ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}}, "bad.json: /method: unknown \"P66\""};
+  ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}, {}}, "bad.json: /method: unknown \"P66\""};
   write_report(dir_, {same, moved, bad});
 
   const std::string html = read("index.html");
@@ -81,12 +83,36 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
   EXPECT_EQ(names.size(), 6u);  // index.html and the five files of "moved"
 }
 
+// Every claim is listed, held or not; a failed one marks its scene though
+// its goldens match, and no image is written for it.
+TEST_F(Report, ListsEveryClaim) {
+  ReportEntry claimed{SceneCheck{"scenes/c.json", "c",
+                                 {file(FileKind::data, Verdict::match, "d", "d"),
+                                  file(FileKind::png, Verdict::match, "P", "P")},
+                                 {{"/claims/0", "P8 is <soft>", true, "scale-step of panel 3 = 0.06, below 0.24"},
+                                  {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}}},
+                      ""};
+  write_report(dir_, {claimed});
+  const std::string html = read("index.html");
+  EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td class=\"CLAIM FAILED\">CLAIM FAILED</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td>/claims/0</td><td>P8 is &lt;soft&gt;</td><td class=\"match\">holds</td>"
+                      "<td>scale-step of panel 3 = 0.06, below 0.24</td></tr>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td class=\"DIFFERS\">FAILS</td><td>turn-step of panel 1 = 0.22, not above 0.3</td>"),
+            std::string::npos)
+      << html;
+  EXPECT_FALSE(fs::exists(dir_ / "c.actual.png"));  // the figure matches its golden
+}
+
 // A new scene: no golden, so no expected image; the actual one is written.
 TEST_F(Report, MissingGoldenHasNoExpectedImage) {
   ReportEntry fresh{SceneCheck{"scenes/new.json", "new",
                                {file(FileKind::data, Verdict::missing, "", "d"),
                                 file(FileKind::svg, Verdict::missing, "", "<svg/>"),
-                                file(FileKind::png, Verdict::missing, "", "ACTUAL")}},
+                                file(FileKind::png, Verdict::missing, "", "ACTUAL")},
+                               {}},
                     ""};
   write_report(dir_, {fresh});
   const std::string html = read("index.html");

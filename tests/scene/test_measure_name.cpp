@@ -85,7 +85,7 @@ TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
 TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
   EXPECT_EQ(refused("ara"), "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
                             "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
-                            "\"pop\" or \"handle-shift\"");
+                            "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
   EXPECT_EQ(refused("handle-shift", MeasureScene::poses),
             "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\" or \"area\"");
   EXPECT_NE(refused("angle:P6@0.5", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);

@@ -382,6 +382,13 @@ const std::vector<BadScene>& bad_scenes() {
       {"overlay empty", moving_with(R"(, "animation": {"overlay": []})"), "/animation/overlay"},
       {"pattern animation of a pose scene", sam_with(R"(, "animation": {"what": "pattern"})"), "/animation/what"},
       {"overlay in a pose scene", sam_with(R"(, "animation": {"overlay": [0.5]})"), "/animation/overlay"},
+      {"claim without words", p6_with(R"(, "claims": [{"measure": "turning", "below": 1}])"), "/claims/0"},
+      {"claim without a test", p6_with(R"(, "claims": [{"says": "x", "measure": "turning"}])"), "/claims/0"},
+      {"claim with an unknown measure", p6_with(R"(, "claims": [{"says": "x", "measure": "twist", "below": 1}])"),
+       "/claims/0/measure"},
+      {"claim bound with an unknown field",
+       p6_with(R"(, "claims": [{"says": "x", "measure": "turning", "below": {"factor": 2}}])"), "/claims/0/below/factor"},
+      {"shapes layer times not a list", with_layer(R"({"type": "shapes", "times": 0.5})"), "/layers/0/times"},
   };
   return corpus;
 }
@@ -525,6 +532,13 @@ const std::vector<std::string>& good_scenes() {
                          {"t": 2, "p": [2, 0], "m": 1, "w": 2}],
            "layers": [{"type": "trajectory", "point": "q"}]},
           {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}]}
+        ],
+        "claims": [
+          {"says": "P1 shrinks more than P6", "panel": 0, "measure": "scale-min", "below": {"panel": 1}},
+          {"says": "P2 turns", "panel": 2, "measure": "angle:/panels/0@0.5", "absolute": true,
+           "above": {"panel": 3, "measure": "turn-step", "times": 0.5, "plus": -0.1}},
+          {"says": "no pop", "panel": 1, "measure": "pop", "is": false},
+          {"says": "exact", "panel": 6, "measure": "gain:B.q", "near": 1, "within": 0.01}
         ]
       })",
       R"({
@@ -563,7 +577,11 @@ const std::vector<std::string>& good_scenes() {
           {"title": "existence", "layers": [{"type": "existence", "columns": 20, "rows": 10, "fill": "red",
             "exists_fill": "none", "boundary": {"color": "black", "dash": [3, 3]}, "trapezoid": {"width": 1}}]}
         ],
-        "golden": {"pixel_tolerance": 20}
+        "golden": {"pixel_tolerance": 20},
+        "claims": [
+          {"says": "steady", "panel": 0, "measure": "ara", "below": 0.1},
+          {"says": "no dip", "panel": 1, "measure": "area", "near": 0, "within": 1e-9}
+        ]
       })",
       // Moving keyframes, a handle carrying shapes, the shapes and handle
       // layers, panel handles and every animation field. (Image shapes need a

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/comparison.hpp"
+#include "analysis/frame_steps.hpp"
 #include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/measure_text.hpp"
@@ -53,6 +54,13 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
         }
         lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
                                name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
+      } else if (name.kind == scene::MeasureKind::scale_step || name.kind == scene::MeasureKind::turn_step ||
+                 name.kind == scene::MeasureKind::scale_min || name.kind == scene::MeasureKind::scale_max) {
+        const analysis::FrameSteps steps = analysis::frame_steps(stage_, index_);
+        lines[i] = name.kind == scene::MeasureKind::scale_step  ? fmt::format("scale step: {:.3g}", steps.scale_step)
+                   : name.kind == scene::MeasureKind::turn_step ? fmt::format("turn step: {:.3g} rad", steps.turn_step)
+                   : name.kind == scene::MeasureKind::scale_min ? fmt::format("scale min: {:.3g}", steps.scale_min)
+                                                                : fmt::format("scale max: {:.3g}", steps.scale_max);
       } else {
         others.push_back(name);
       }

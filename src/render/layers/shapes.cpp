@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/LU>
+#include <fmt/format.h>
 
 #include "core/carrier.hpp"
 #include "render/carried_shapes.hpp"
@@ -51,7 +52,9 @@ template <class Pose>
 void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
   const FrameSelection* selection = panel.selection();
   const std::vector<double> ts =
-      selected_times(selection, selection != nullptr ? std::vector<double>{} : panel.times(layer.samples, layer.range));
+      selected_times(selection, selection != nullptr ? std::vector<double>{}
+                                : !layer.times.empty() ? layer.times
+                                                       : panel.times(layer.samples, layer.range));
   // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's
   // area (in space, its volume): |det L|.
   std::vector<double> measures;
@@ -77,7 +80,8 @@ namespace detail {
 // "shapes" (Sec. 7.1): the scene's shapes at each frame, carried by the
 // similarity that takes the handle onto D(t) (core/carrier.hpp).
 void PanelBuilder::add(const scene::ShapesLayer& layer) {
-  const std::vector<Arrow> pattern = frames(sequence_times(layer.samples, layer.range));
+  const std::vector<Arrow> pattern = frames(
+      layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times);
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer,
                                        scene_.canvas.y_up, fade(i, pattern.size()))) {
@@ -94,6 +98,11 @@ namespace detail {
 
 // ------------------------------------------------------------- pose layers
 void LayerCost::operator()(const scene::ShapesLayer& l) {
+  if (!l.times.empty()) {  // exactly these frames
+    add(layer_ + "/times", fmt::format("{} frames of shapes", l.times.size()),
+        static_cast<double>(l.times.size()) * (shapes_units() + motion::frame_cost(panel_) - 1.0));
+    return;
+  }
   frames(l.samples, "shapes", shapes_units());
 }
 

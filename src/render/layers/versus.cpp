@@ -49,7 +49,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
     const double to = layer.range ? layer.range->to : motion->last();
     ts = motion::uniform_times(from, to, layer.samples.value_or(panel.panel().samples));
   }
-  const scene::ShapesLayer style{layer.line, layer.fill, layer.fill_opacity, std::nullopt, std::nullopt};
+  const scene::ShapesLayer style{layer.line, layer.fill, layer.fill_opacity, std::nullopt, std::nullopt, {}, false};
   const Affine2 first = poses.front().pose;
   for (std::size_t i = 0; i < ts.size(); ++i) {
     Affine2 pose;

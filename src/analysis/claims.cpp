@@ -1,0 +1,229 @@
+#include "analysis/claims.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "analysis/comparison.hpp"
+#include "scene/limits.hpp"
+#include "analysis/frame_steps.hpp"
+#include "motion/sampler.hpp"
+
+namespace pita::analysis {
+
+namespace {
+
+using scene::MeasureKind;
+
+std::string number(double x) { return std::isnan(x) ? std::string("undefined") : fmt::format("{:.4g}", x); }
+
+// "panel 3 (P8 Lo-Pe)", "the scene (P6)": how outcomes name a panel, by its
+// title or else its method.
+std::string panel_name(const motion::Stage& stage, std::size_t index) {
+  const scene::Panel& panel = stage.panel(index);
+  const std::string what = panel.title.empty() ? scene::method_id(panel.keys) : panel.title;
+  return panel.pointer.empty() ? fmt::format("the scene ({})", what) : fmt::format("panel {} ({})", index, what);
+}
+
+[[noreturn]] void unmeasured(const motion::Stage& stage, const std::string& pointer, std::size_t panel,
+                             const scene::MeasureName& measure, std::string_view why) {
+  throw scene::SceneError(stage.scene().path, pointer,
+                          fmt::format("{} has no \"{}\": {}", panel_name(stage, panel), measure.text, why));
+}
+
+}  // namespace
+
+Measurer::Measurer(const motion::Stage& stage) : stage_(&stage), measures_(stage.size()) {}
+
+const MotionMeasures& Measurer::measures(std::size_t panel) {
+  std::optional<MotionMeasures>& kept = measures_.at(panel);
+  if (!kept) kept = measure_panel(*stage_, panel);
+  if (kept->no_motion) (void)stage_->motion(panel);  // throws its NoMotion
+  return *kept;
+}
+
+double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+  const motion::Stage& stage = *stage_;
+  const bool keyframes = std::holds_alternative<scene::KeyframeKeys>(stage.panel(panel).keys);
+  const auto need_keyframes = [&] {
+    (void)stage.motion(panel);  // its NoMotion first
+    if (!keyframes) unmeasured(stage, pointer, panel, measure, "it is measured on keyframes, and the panel has points");
+  };
+  switch (measure.kind) {
+    case MeasureKind::scale_step:
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max: {
+      need_keyframes();
+      const FrameSteps steps = frame_steps(stage, panel);
+      return measure.kind == MeasureKind::scale_step  ? steps.scale_step
+             : measure.kind == MeasureKind::turn_step ? steps.turn_step
+             : measure.kind == MeasureKind::scale_min ? steps.scale_min
+                                                      : steps.scale_max;
+    }
+    case MeasureKind::angle:
+      need_keyframes();
+      if (measure.panel) {
+        if (!std::holds_alternative<scene::KeyframeKeys>(stage.panel(*measure.panel).keys)) {
+          unmeasured(stage, pointer, panel, measure, "the other panel has no keyframes");
+        }
+        return panel_angle(stage, panel, *measure.panel, measure.t);
+      }
+      return vector_angle(stage, panel, measure.method, measure.t);
+    case MeasureKind::handle_shift:
+      need_keyframes();
+      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      return handle_shift(stage, panel);
+    default:
+      break;
+  }
+  const MotionMeasures& m = measures(panel);
+  switch (measure.kind) {
+    case MeasureKind::discrepancy_max: {
+      double largest = -1.0;
+      for (const DiscrepancyStats& d : m.discrepancy) {
+        if (d.frames > 0) largest = std::max(largest, d.max);
+      }
+      if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no frame of its pattern has a prediction");
+      return largest;
+    }
+    case MeasureKind::path_length:
+    case MeasureKind::turning:
+      if (!m.path_p) unmeasured(stage, pointer, panel, measure, "its motion has no path");
+      return measure.kind == MeasureKind::path_length ? m.path_p->length : m.path_p->turning;
+    case MeasureKind::winding_range:
+      if (!m.winding_min) unmeasured(stage, pointer, panel, measure, "its frames have no winding");
+      return *m.winding_max - *m.winding_min;
+    case MeasureKind::overreaction:
+      if (m.most_sensitive < 0) unmeasured(stage, pointer, panel, measure, "no keyframe parameter was tweaked");
+      return m.parameters[static_cast<std::size_t>(m.most_sensitive)].gain;
+    case MeasureKind::pop:
+      if (m.kind != MeasuredKind::arrows) unmeasured(stage, pointer, panel, measure, "pops are measured on keyframes");
+      return m.pops ? 1.0 : 0.0;
+    case MeasureKind::ara:
+      if (!m.ara) unmeasured(stage, pointer, panel, measure, "ARA is measured on poses");
+      return *m.ara;
+    case MeasureKind::area:
+      if (!m.area) unmeasured(stage, pointer, panel, measure, "the area is measured on poses");
+      return m.area->excursion;
+    case MeasureKind::gain:
+    case MeasureKind::turn:
+    case MeasureKind::jump: {
+      double largest = -1.0;
+      for (const ParameterReaction& p : m.parameters) {
+        if (p.name != measure.parameter && !p.name.starts_with(measure.parameter + ".")) continue;
+        largest = std::max(largest, measure.kind == MeasureKind::gain   ? p.gain
+                                    : measure.kind == MeasureKind::turn ? p.turn
+                                                                        : p.jump);
+      }
+      if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no keyframe has that parameter");
+      return largest;
+    }
+    default:
+      break;
+  }
+  unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
+}
+
+namespace {
+
+struct Bound {
+  double value = 0.0;
+  std::string text;  // "0.405 (scale-step of panel 0 (P1 Pa-Ca))", or "1.571"
+};
+
+Bound bound_of(Measurer& measurer, const motion::Stage& stage, const scene::ClaimBound& bound,
+               const std::string& pointer, bool absolute) {
+  if (const double* x = std::get_if<double>(&bound)) return {*x, number(*x)};
+  const scene::ClaimOperand& operand = std::get<scene::ClaimOperand>(bound);
+  double x = measurer.value(operand.panel, operand.measure, pointer);
+  if (absolute) x = std::abs(x);
+  const double value = operand.times * x + operand.plus;
+  std::string text = fmt::format("{} of {}", operand.measure.text, panel_name(stage, operand.panel));
+  if (operand.times != 1.0) text = fmt::format("{} x {}", number(operand.times), text);
+  if (operand.plus != 0.0) text += fmt::format(" {} {}", operand.plus < 0.0 ? "-" : "+", number(std::abs(operand.plus)));
+  return {value, fmt::format("{} ({})", number(value), text)};
+}
+
+ClaimOutcome check_claim(Measurer& measurer, const motion::Stage& stage, const scene::Claim& claim) {
+  double value = measurer.value(claim.panel, claim.measure, claim.pointer + "/measure");
+  if (claim.absolute) value = std::abs(value);
+  ClaimOutcome outcome{claim.pointer, claim.says, false, {}};
+  const std::string left = fmt::format("{}{}{} of {} = {}", claim.absolute ? "|" : "", claim.measure.text,
+                                       claim.absolute ? "|" : "", panel_name(stage, claim.panel), number(value));
+  std::visit(
+      [&](const auto& test) {
+        using Test = std::decay_t<decltype(test)>;
+        if constexpr (std::is_same_v<Test, scene::Below> || std::is_same_v<Test, scene::Above>) {
+          constexpr bool below = std::is_same_v<Test, scene::Below>;
+          const std::string at = claim.pointer + (below ? "/below" : "/above");
+          const Bound bound = bound_of(measurer, stage, test.bound, at + "/measure", claim.absolute);
+          outcome.held = below ? value < bound.value : value > bound.value;  // false for NaN
+          outcome.measured = fmt::format("{}, {}{} {}", left, outcome.held ? "" : "not ", below ? "below" : "above",
+                                         bound.text);
+        } else if constexpr (std::is_same_v<Test, scene::Near>) {
+          outcome.held = std::abs(value - test.target) <= test.within;
+          outcome.measured = fmt::format("{}, {}within {} of {}", left, outcome.held ? "" : "not ",
+                                         number(test.within), number(test.target));
+        } else {
+          outcome.held = (value != 0.0) == test.yes;
+          outcome.measured = fmt::format("{}: {}", left, value != 0.0 ? "yes" : "no");
+        }
+      },
+      claim.test);
+  return outcome;
+}
+
+}  // namespace
+
+std::vector<ClaimOutcome> check_claims(const motion::Stage& stage) {
+  const scene::Scene& scene = stage.scene();
+  if (scene.claims.empty()) return {};
+  const double work = claims_cost(scene);
+  if (work > scene::kMaxEvalWork) {
+    throw scene::SceneError(scene.path, "/claims",
+                            fmt::format("measuring the claims costs about {:.3g} frames of a method, above the limit "
+                                        "of {:.0g}: fewer claims on measures of the keyframes' tweaks, or fewer "
+                                        "keyframes",
+                                        work, scene::kMaxEvalWork));
+  }
+  Measurer measurer(stage);
+  std::vector<ClaimOutcome> outcomes;
+  for (const scene::Claim& claim : stage.scene().claims) outcomes.push_back(check_claim(measurer, stage, claim));
+  return outcomes;
+}
+
+double claims_cost(const scene::Scene& scene) {
+  std::set<std::size_t> measured;
+  double cost = 0.0;
+  const auto add = [&](std::size_t panel, const scene::MeasureName& measure) {
+    const scene::Panel& p = scene.panels.at(panel);
+    switch (measure.kind) {
+      case MeasureKind::scale_step:
+      case MeasureKind::turn_step:
+      case MeasureKind::scale_min:
+      case MeasureKind::scale_max:
+      case MeasureKind::angle:
+      case MeasureKind::handle_shift:
+        cost += (kScaleSamples + kHandleShiftSamples + p.samples) * motion::frame_cost(p);
+        break;
+      default:
+        if (measured.insert(panel).second) cost += measure_cost(p);
+    }
+  };
+  for (const scene::Claim& claim : scene.claims) {
+    add(claim.panel, claim.measure);
+    for (const scene::ClaimBound* bound :
+         {std::get_if<scene::Below>(&claim.test) ? &std::get<scene::Below>(claim.test).bound : nullptr,
+          std::get_if<scene::Above>(&claim.test) ? &std::get<scene::Above>(claim.test).bound : nullptr}) {
+      if (bound == nullptr) continue;
+      if (const auto* operand = std::get_if<scene::ClaimOperand>(bound)) add(operand->panel, operand->measure);
+    }
+  }
+  return cost;
+}
+
+}  // namespace pita::analysis

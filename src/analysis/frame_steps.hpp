@@ -1,0 +1,41 @@
+// How the frames a pattern draws change from one to the next (README
+// "Claims"): what a reader sees as a jump in size, a flip of direction, or a
+// frame shrinking or growing past the keyframes (PITA Fig. 19, Fig. 24).
+//   - scale step: max_k |ln(m_{k+1} / m_k)| between consecutive frames;
+//   - turn step: max_k |arg(v_{k+1} / v_k)|, in [0, pi], between consecutive
+//     frame vectors v = q - p (a flip is pi; a step of more than pi reads as
+//     its complement, as on the page);
+//   - scale min / max: min_t m(t) / min_k m_k and max_t m(t) / max_k m_k over
+//     dense samples (below 1: the motion shrinks past every keyframe; above
+//     1: it grows past every keyframe).
+#pragma once
+
+#include <cstddef>
+
+#include "motion/stage.hpp"
+
+namespace pita::analysis {
+
+// Dense samples of scale min and max.
+inline constexpr int kScaleSamples = 513;
+
+struct FrameSteps {
+  double scale_step = 0.0;
+  double turn_step = 0.0;
+  double scale_min = 1.0;
+  double scale_max = 1.0;
+};
+
+// For the stage's panel `index` (keyframes): steps between its `samples`
+// pattern frames (Panel::samples, evenly spaced in scene time over the
+// knots, as the "pattern" layer draws them). Throws motion::NoMotion.
+FrameSteps frame_steps(const motion::Stage& stage, std::size_t index);
+
+// The signed angle arg(D_k(t).w / D(t).w) in (-pi, pi] from the frame vector
+// of the stage's panel `index` at scene time t to that of its panel `other`
+// (Fig. 19: a tweak that turns a short frame around); NaN when either vector
+// is shorter than kAngleVectorFloor (analysis/comparison.hpp) times the
+// largest keyframe magnitude of the two. Throws motion::NoMotion.
+double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t);
+
+}  // namespace pita::analysis

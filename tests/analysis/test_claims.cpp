@@ -1,0 +1,97 @@
+// analysis/claims.cpp: each test kind holds and fails where it must, on
+// values known in closed form (the steady morph: m(t) = 2^t, w(t) = 1.2 t),
+// and a claim the panel cannot measure is a SceneError at its pointer.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "analysis/claims.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::analysis {
+namespace {
+
+// Two panels: the SMA (steady: scale step ln 2 / 4 over 5 frames, no pop)
+// and P1 through a midpoint that flips the vector (turn step pi).
+scene::Scene with_claims(const std::string& claims) {
+  return scene::parse_scene(fmt::format(R"({{"method": "SMA", "samples": 5, "keyframes": [
+      {{"t": 0, "p": [0, 0], "m": 1, "w": 0}}, {{"t": 1, "p": [3, 1], "m": 2, "w": 1.2}}],
+      "panels": ["SMA", {{"method": "P1", "keyframes": [
+        {{"t": 0, "p": [0, 0], "q": [0, 2]}}, {{"t": 0.5, "p": [1, 0], "q": [1, -2]}},
+        {{"t": 1, "p": [2, 0], "q": [2, 2]}}]}}],
+      "claims": [{}]}})",
+                                        claims),
+                            "test.json");
+}
+
+ClaimOutcome only(const std::string& claim) {
+  const scene::Scene scene = with_claims(claim);
+  const std::vector<ClaimOutcome> outcomes = check_claims(motion::Stage(scene));
+  EXPECT_EQ(outcomes.size(), 1u);
+  return outcomes.at(0);
+}
+
+const double kStep = std::log(2.0) / 4.0;
+
+TEST(Claims, BelowAndAboveANumber) {
+  EXPECT_TRUE(only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep + 1e-9)).held);
+  EXPECT_FALSE(only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep - 1e-9)).held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": 0.29})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": 0.31})").held);
+}
+
+TEST(Claims, AgainstAnotherPanelsMeasureScaledAndShifted) {
+  // P1's turn step is pi, the SMA's 0.3: pi > 10 x 0.3 holds, pi > 11 x 0.3 does not.
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "turn-step", "above": {"panel": 0, "times": 10}})").held);
+  const ClaimOutcome failed =
+      only(R"({"says": "P1 flips", "panel": 1, "measure": "turn-step", "above": {"panel": 0, "times": 11}})");
+  EXPECT_FALSE(failed.held);
+  EXPECT_EQ(failed.pointer, "/claims/0");
+  EXPECT_EQ(failed.says, "P1 flips");
+  EXPECT_NE(failed.measured.find("turn-step of panel 1 (P1 Pa-Ca) = 3.142, not above 3.3 (11 x turn-step of panel 0"),
+            std::string::npos)
+      << failed.measured;
+  // "plus" and another measure of the same panel: ln 2 / 4 + 0.1 > 0.26 ... the SMA's scale step.
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.1}})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.2}})").held);
+}
+
+TEST(Claims, NearWithinAndAbsolute) {
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": 0.3, "within": 1e-12})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": 0.3001, "within": 1e-6})").held);
+  // The signed angle from the SMA's D(1/2) to P1's: their vectors are
+  // 2^(1/2) e^(0.6 i) and -2 i, an angle of -pi/2 - 0.6.
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "near": -2.1707963267948966, "within": 1e-9})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "absolute": true, "above": 2.17})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "above": 0})").held);
+}
+
+TEST(Claims, IsForPops) {
+  // The SMA does not pop (Sec. 4.7: it is smooth in its keyframes).
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "pop", "is": false})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "pop", "is": true})").held);
+}
+
+TEST(Claims, AMeasureThePanelLacksIsASceneErrorAtItsPointer) {
+  try {
+    only(R"({"says": "s", "panel": 0, "measure": "gain:C.q", "above": 0})");  // the SMA has keyframes A and B
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/measure");
+    EXPECT_NE(error.reason().find("no keyframe has that parameter"), std::string::npos) << error.reason();
+  }
+}
+
+TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}]})",
+                                                "test.json");
+  EXPECT_TRUE(check_claims(motion::Stage(scene)).empty());
+  EXPECT_EQ(claims_cost(scene), 0.0);
+}
+
+}  // namespace
+}  // namespace pita::analysis

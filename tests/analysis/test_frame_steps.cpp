@@ -1,0 +1,69 @@
+// analysis/frame_steps.cpp against closed forms: the steady morph of two
+// arrows (m(t) = m_0 (m_1/m_0)^t, w(t) linear: equal steps) and P1's short
+// frames of Fig. 19 (Lagrange weights by hand).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "analysis/frame_steps.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::analysis {
+namespace {
+
+TEST(FrameSteps, SteadyMorphStepsAreEqual) {
+  // SMA from (m, w) = (1, 0) to (2, 1.2): m(t) = 2^t, w(t) = 1.2 t; 5 frames
+  // at t = 0, 1/4, ..., 1 step by ln 2 / 4 in log-magnitude and 0.3 rad.
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "samples": 5, "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}]})",
+                                                "test.json");
+  const FrameSteps steps = frame_steps(motion::Stage(scene), 0);
+  EXPECT_NEAR(steps.scale_step, std::log(2.0) / 4.0, 1e-12);
+  EXPECT_NEAR(steps.turn_step, 0.3, 1e-12);
+  EXPECT_NEAR(steps.scale_min, 1.0, 1e-12);  // never below the smaller keyframe
+  EXPECT_NEAR(steps.scale_max, 1.0, 1e-12);  // nor above the larger
+}
+
+TEST(FrameSteps, ShrinkingAndFlipsOfP1) {
+  // P1 blends the vectors (0, 2), (0, -2), (0, 2) at knots 0, 1/2, 1 by the
+  // Lagrange weights: v(t) = 2 (1 - 8 t (1 - t)) i, which is 2 i at the
+  // ends, 0 at t = (1 -+ 1/sqrt 2)/2 and -2 i at t = 1/2. Frames at t = 0,
+  // 1/4, 1/2, 3/4, 1: v = 2i, -i, -2i, -i, 2i, so the direction flips
+  // (pi) between the first two frames and the magnitude halves (ln 2).
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "samples": 5, "keyframes": [
+      {"t": 0, "p": [0, 0], "q": [0, 2]}, {"t": 0.5, "p": [1, 0], "q": [1, -2]},
+      {"t": 1, "p": [2, 0], "q": [2, 2]}]})",
+                                                "test.json");
+  const FrameSteps steps = frame_steps(motion::Stage(scene), 0);
+  EXPECT_NEAR(steps.scale_step, std::log(2.0), 1e-12);
+  EXPECT_NEAR(steps.turn_step, std::numbers::pi, 1e-12);
+  EXPECT_NEAR(steps.scale_min, 0.0, 1e-2);  // dense samples pass near the zeros
+  EXPECT_NEAR(steps.scale_max, 1.0, 1e-12);
+}
+
+TEST(FrameSteps, PanelAngleOfTwoPanels) {
+  // Fig. 19's D(1/4): weights 3/8, 3/4, -1/8 of the vectors (0, 2.4),
+  // (+-0.15, -0.8), (0, 2.4) give (+-0.1125, 0): opposite directions.
+  const std::string panel = R"({{"method": "P1", "keyframes": [
+      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [{}, 0.2]}},
+      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}]}})";
+  const scene::Scene scene = scene::parse_scene(
+      fmt::format(R"({{"method": "P1", "keyframes": [
+      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [3.15, 0.2]}},
+      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}], "panels": [{}, {}]}})",
+                  fmt::format(fmt::runtime(panel), 3.15), fmt::format(fmt::runtime(panel), 2.85)),
+      "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(std::abs(panel_angle(stage, 1, 0, 0.25)), std::numbers::pi, 1e-9);
+  EXPECT_NEAR(panel_angle(stage, 1, 0, 0.0), 0.0, 1e-12);  // the keyframes agree at A
+  // At t = 1/2 the vectors are B's: (0.15, -0.8) and (-0.15, -0.8).
+  EXPECT_NEAR(panel_angle(stage, 0, 1, 0.5), std::arg(std::complex<double>(-0.15, -0.8) / std::complex<double>(0.15, -0.8)),
+              1e-12);
+}
+
+}  // namespace
+}  // namespace pita::analysis
