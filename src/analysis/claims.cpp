@@ -73,6 +73,12 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
         return panel_angle(stage, panel, *measure.panel, measure.t);
       }
       return vector_angle(stage, panel, measure.method, measure.t);
+    case MeasureKind::frame_distance:
+      need_keyframes();
+      if (!std::holds_alternative<scene::KeyframeKeys>(stage.panel(*measure.panel).keys)) {
+        unmeasured(stage, pointer, panel, measure, "the other panel has no keyframes");
+      }
+      return frame_distance(stage, panel, *measure.panel);
     case MeasureKind::handle_shift:
       need_keyframes();
       if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
@@ -165,9 +171,10 @@ ClaimOutcome check_claim(Measurer& measurer, const motion::Stage& stage, const s
           outcome.measured = fmt::format("{}, {}{} {}", left, outcome.held ? "" : "not ", below ? "below" : "above",
                                          bound.text);
         } else if constexpr (std::is_same_v<Test, scene::Near>) {
-          outcome.held = std::abs(value - test.target) <= test.within;
+          const Bound target = bound_of(measurer, stage, test.target, claim.pointer + "/near/measure", claim.absolute);
+          outcome.held = std::abs(value - target.value) <= test.within;
           outcome.measured = fmt::format("{}, {}within {} of {}", left, outcome.held ? "" : "not ",
-                                         number(test.within), number(test.target));
+                                         number(test.within), target.text);
         } else {
           outcome.held = (value != 0.0) == test.yes;
           outcome.measured = fmt::format("{}: {}", left, value != 0.0 ? "yes" : "no");
@@ -208,7 +215,8 @@ double claims_cost(const scene::Scene& scene) {
       case MeasureKind::scale_max:
       case MeasureKind::angle:
       case MeasureKind::handle_shift:
-        cost += (kScaleSamples + kHandleShiftSamples + p.samples) * motion::frame_cost(p);
+      case MeasureKind::frame_distance:  // both panels' frames
+        cost += (kScaleSamples + kHandleShiftSamples + 2 * kFrameDistanceSamples + p.samples) * motion::frame_cost(p);
         break;
       default:
         if (measured.insert(panel).second) cost += measure_cost(p);
@@ -216,12 +224,20 @@ double claims_cost(const scene::Scene& scene) {
   };
   for (const scene::Claim& claim : scene.claims) {
     add(claim.panel, claim.measure);
-    for (const scene::ClaimBound* bound :
-         {std::get_if<scene::Below>(&claim.test) ? &std::get<scene::Below>(claim.test).bound : nullptr,
-          std::get_if<scene::Above>(&claim.test) ? &std::get<scene::Above>(claim.test).bound : nullptr}) {
-      if (bound == nullptr) continue;
-      if (const auto* operand = std::get_if<scene::ClaimOperand>(bound)) add(operand->panel, operand->measure);
-    }
+    const scene::ClaimBound* bound = std::visit(
+        [](const auto& test) -> const scene::ClaimBound* {
+          using Test = std::decay_t<decltype(test)>;
+          if constexpr (std::is_same_v<Test, scene::Near>) {
+            return &test.target;
+          } else if constexpr (std::is_same_v<Test, scene::Is>) {
+            return nullptr;
+          } else {
+            return &test.bound;
+          }
+        },
+        claim.test);
+    if (bound == nullptr) continue;
+    if (const auto* operand = std::get_if<scene::ClaimOperand>(bound)) add(operand->panel, operand->measure);
   }
   return cost;
 }

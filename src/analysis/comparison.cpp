@@ -52,4 +52,42 @@ double handle_shift(const motion::Stage& stage, std::size_t index) {
   return shift;
 }
 
+namespace {
+
+double largest_keyframe_magnitude(const scene::Panel& panel) {
+  double largest = 0.0;
+  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
+  return largest;
+}
+
+}  // namespace
+
+double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t) {
+  const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes
+  const Arrow theirs = stage.motion(other).arrow_at(t);
+  const double floor =
+      kAngleVectorFloor * std::max(largest_keyframe_magnitude(stage.panel(index)), largest_keyframe_magnitude(stage.panel(other)));
+  if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return std::arg(theirs.vector() / mine.vector());
+}
+
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion& theirs = stage.motion(other);
+  (void)mine.arrows();  // NoMotion unless both panels have keyframes
+  (void)theirs.arrows();
+  const double first = std::max(mine.first(), theirs.first());
+  const double last = std::min(mine.last(), theirs.last());
+  if (!(first < last)) return std::numeric_limits<double>::quiet_NaN();  // no common time
+  double distance = 0.0;
+  for (const double t : motion::uniform_times(first, last, kFrameDistanceSamples)) {
+    const Arrow a = mine.arrow_at(t);
+    const Arrow b = theirs.arrow_at(t);
+    distance = std::max({distance, std::abs(a.p - b.p), std::abs(a.q() - b.q())});
+  }
+  return distance;
+}
+
 }  // namespace pita::analysis

@@ -39,4 +39,21 @@ double vector_angle(const motion::Stage& stage, std::size_t index, Method other,
 // carry). For the stage's panel `index`. Throws motion::NoMotion.
 double handle_shift(const motion::Stage& stage, std::size_t index);
 
+// Two panels of one scene, compared (claims, README "Claims"):
+// The signed angle arg(D_k(t).w / D(t).w) in (-pi, pi] from the frame vector
+// of the stage's panel `index` at scene time t to that of its panel `other`
+// (Fig. 19: a tweak that turns a short frame around); NaN when either vector
+// is shorter than kAngleVectorFloor (analysis/comparison.hpp) times the
+// largest keyframe magnitude of the two. Throws motion::NoMotion.
+double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t);
+
+// Times at which "frame-distance" compares two panels' frames.
+inline constexpr int kFrameDistanceSamples = 201;
+
+// max over kFrameDistanceSamples times of the knot range both panels share
+// of max(|p - p_k|, |q - q_k|), world units: how far the frames of the
+// stage's panel `index` are from those of its panel `other` (Fig. D.37's d).
+// Throws motion::NoMotion; 0 for the panel itself.
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
+
 }  // namespace pita::analysis

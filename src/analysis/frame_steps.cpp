@@ -59,15 +59,4 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
   return steps;
 }
 
-double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t) {
-  const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes
-  const Arrow theirs = stage.motion(other).arrow_at(t);
-  const double floor =
-      kAngleVectorFloor * std::max(largest_magnitude(stage.panel(index)), largest_magnitude(stage.panel(other)));
-  if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  return std::arg(theirs.vector() / mine.vector());
-}
-
 }  // namespace pita::analysis

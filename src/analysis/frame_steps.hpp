@@ -31,11 +31,4 @@ struct FrameSteps {
 // knots, as the "pattern" layer draws them). Throws motion::NoMotion.
 FrameSteps frame_steps(const motion::Stage& stage, std::size_t index);
 
-// The signed angle arg(D_k(t).w / D(t).w) in (-pi, pi] from the frame vector
-// of the stage's panel `index` at scene time t to that of its panel `other`
-// (Fig. 19: a tweak that turns a short frame around); NaN when either vector
-// is shorter than kAngleVectorFloor (analysis/comparison.hpp) times the
-// largest keyframe magnitude of the two. Throws motion::NoMotion.
-double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t);
-
 }  // namespace pita::analysis

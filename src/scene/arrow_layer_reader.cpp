@@ -359,7 +359,7 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
       if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(item_at, *reason);
       if (std::get<MeasureName>(parsed).panel) {
         reader.fail(item_at, fmt::format("\"{}\" compares with another panel, which only a claim does "
-                                         "(README \"Claims\"); a layer compares with a method, \"angle:P6@t\"",
+                                         "(README \"Claims\")",
                                          std::get<MeasureName>(parsed).text));
       }
       layer.show.push_back(std::move(std::get<MeasureName>(parsed)));

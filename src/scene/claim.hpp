@@ -34,7 +34,7 @@ struct Above {  // value > bound
   ClaimBound bound;
 };
 struct Near {  // |value - target| <= within
-  double target = 0.0;
+  ClaimBound target;
   double within = 0.0;
 };
 struct Is {  // a yes-or-no measure ("pop"): 1 for yes, 0 for no

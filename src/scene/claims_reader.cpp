@@ -108,7 +108,7 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
   } else if (test_name == "above") {
     claim.test = Above{read_bound(reader, *test, at, scene, poses, claim)};
   } else if (test_name == "near") {
-    Near near{reader.number(*test, at), 0.0};
+    Near near{read_bound(reader, *test, at, scene, poses, claim), 0.0};
     if (within != nullptr) near.within = reader.number(*within, pointer + "/within", Interval{0.0, 1e6});
     claim.test = near;
   } else {

@@ -15,7 +15,7 @@ namespace {
 
 using detail::quoted_choices;
 
-constexpr std::array<MeasureEntry, 17> kMeasures{{
+constexpr std::array<MeasureEntry, 18> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
     {"path-length", MeasureKind::path_length, MeasureScene::arrows},
     {"turning", MeasureKind::turning, MeasureScene::arrows},
@@ -33,10 +33,21 @@ constexpr std::array<MeasureEntry, 17> kMeasures{{
     {"turn:", MeasureKind::turn, MeasureScene::arrows, true},
     {"jump:", MeasureKind::jump, MeasureScene::arrows, true},
     {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
+    {"frame-distance:", MeasureKind::frame_distance, MeasureScene::arrows, true},
 }};
 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
 constexpr std::string_view kPanelsPrefix = "/panels/";
+
+// "/panels/3" -> 3; nullopt for anything else.
+std::optional<std::size_t> panel_index(std::string_view pointer) {
+  if (!pointer.starts_with(kPanelsPrefix)) return std::nullopt;
+  const std::string_view index = pointer.substr(kPanelsPrefix.size());
+  std::size_t k = 0;
+  const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), k);
+  if (index.empty() || error != std::errc() || end != index.data() + index.size()) return std::nullopt;
+  return k;
+}
 
 constexpr std::array<std::string_view, 9> kParameters = {"p", "q", "p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
 
@@ -81,7 +92,7 @@ std::string unknown(std::string_view text, MeasureScene scene) {
   if (scene == MeasureScene::arrows) {
     reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
               "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
-              "panel, \"/panels/1\") and t a time";
+              "panel, \"/panels/1\") and t a time, or in a claim \"frame-distance:/panels/K\"";
   }
   return reason;
 }
@@ -105,6 +116,10 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
                          text, found->name);
     }
     measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::frame_distance) {
+    const std::optional<std::size_t> panel = panel_index(rest);
+    if (!panel) return fmt::format("\"{}\" must be \"frame-distance:/panels/K\", K a panel's index", text);
+    measure.panel = panel;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);
@@ -113,13 +128,10 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     }
     const MethodEntry* entry = nullptr;
     if (method.starts_with(kPanelsPrefix)) {
-      const std::string_view index = method.substr(kPanelsPrefix.size());
-      std::size_t k = 0;
-      const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), k);
-      if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
+      measure.panel = panel_index(method);
+      if (!measure.panel) {
         return fmt::format("in \"{}\": \"{}\" must be \"/panels/\" and a panel's index", text, method);
       }
-      measure.panel = k;
     } else if ((entry = find_method_entry(method, MotionKind::arrows)) == nullptr) {
       return fmt::format("in \"{}\": {}", text, unknown_method_reason(method, MotionKind::arrows));
     }

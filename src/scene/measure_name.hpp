@@ -13,6 +13,8 @@
 //       claim M may be another panel, "angle:/panels/1@0.25" (README "Claims")
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
+//   "frame-distance:/panels/K"                    arrow scenes, in a claim: how far
+//       the panel's frames are from panel K's (analysis/comparison.hpp)
 #pragma once
 
 #include <cstddef>
@@ -33,6 +35,7 @@ enum class MeasureKind {
   gain, turn, jump,  // "gain:K.x" ...: one keyframe parameter
   angle,             // "angle:M@t"
   scale_step, turn_step, scale_min, scale_max,  // the drawn frames (analysis/frame_steps.hpp)
+  frame_distance,    // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
 };
 
 // Which scenes measure it: `pita measure` measures arrow motions and pose
@@ -55,8 +58,9 @@ struct MeasureName {
   std::string text;        // as written: "gain:B.q", "angle:P8@0.25"
   std::string parameter;   // gain, turn, jump: "B.q"
   Method method{};         // angle: the other arrow method
-  // angle: another panel of the scene instead ("angle:/panels/1@0.25"), which
-  // only a claim may name (its reader checks the index).
+  // angle: another panel of the scene instead ("angle:/panels/1@0.25");
+  // frame-distance: the other panel. Only a claim may name a panel (its
+  // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;          // angle: the time
   friend bool operator==(const MeasureName&, const MeasureName&) = default;

@@ -69,6 +69,18 @@ TEST(Claims, NearWithinAndAbsolute) {
   EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "above": 0})").held);
 }
 
+TEST(Claims, NearAnotherPanelsMeasure) {
+  // P1's turn step is pi: pi / 10 is within 0.02 of the SMA's 0.3 ... and not within 0.01.
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "turn-step", "near": {"panel": 0, "times": 10.471975511965978},
+                       "within": 1e-9})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": {"panel": 1, "times": 0.1}, "within": 0.02})").held);
+  const ClaimOutcome far =
+      only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": {"panel": 1, "times": 0.1}, "within": 0.01})");
+  EXPECT_FALSE(far.held);
+  EXPECT_NE(far.measured.find("not within 0.01 of 0.3142 (0.1 x turn-step of panel 1 (P1 Pa-Ca))"), std::string::npos)
+      << far.measured;
+}
+
 TEST(Claims, IsForPops) {
   // The SMA does not pop (Sec. 4.7: it is smooth in its keyframes).
   EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "pop", "is": false})").held);

@@ -175,5 +175,40 @@ TEST(Comparison, PaLpShiftByHand) {
   EXPECT_NEAR(by_hand, 1.19, 0.005);  // as scenes/fig11-handle-invariance.json prints it (3 digits)
 }
 
+TEST(Comparison, PanelAngleOfTwoPanels) {
+  // Fig. 19's D(1/4): weights 3/8, 3/4, -1/8 of the vectors (0, 2.4),
+  // (+-0.15, -0.8), (0, 2.4) give (+-0.1125, 0): opposite directions.
+  const std::string panel = R"({{"method": "P1", "keyframes": [
+      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [{}, 0.2]}},
+      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}]}})";
+  const scene::Scene scene = scene::parse_scene(
+      fmt::format(R"({{"method": "P1", "keyframes": [
+      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [3.15, 0.2]}},
+      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}], "panels": [{}, {}]}})",
+                  fmt::format(fmt::runtime(panel), 3.15), fmt::format(fmt::runtime(panel), 2.85)),
+      "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(std::abs(panel_angle(stage, 1, 0, 0.25)), std::numbers::pi, 1e-9);
+  EXPECT_NEAR(panel_angle(stage, 1, 0, 0.0), 0.0, 1e-12);  // the keyframes agree at A
+  // At t = 1/2 the vectors are B's: (0.15, -0.8) and (-0.15, -0.8).
+  EXPECT_NEAR(panel_angle(stage, 0, 1, 0.5), std::arg(std::complex<double>(-0.15, -0.8) / std::complex<double>(0.15, -0.8)),
+              1e-12);
+}
+
+TEST(Comparison, FrameDistanceOfTranslatedKeyframesIsTheTranslation) {
+  // Every PITA commutes with translations (similarity invariance, Sec. 4.3):
+  // keyframes moved by (0.5, 0) move every frame by (0.5, 0).
+  const std::string keys = R"([{{"t": 0, "p": [{0}, 0], "m": 1, "w": 0.2}}, {{"t": 1, "p": [{1}, 2], "m": 0.6, "w": 1.9}},
+      {{"t": 2, "p": [{2}, 0], "m": 1.3, "w": 3.1}}])";
+  const scene::Scene scene = scene::parse_scene(
+      fmt::format(R"({{"method": "P6", "keyframes": {}, "panels": [{{"method": "P6", "keyframes": {}}}, "P6"]}})",
+                  fmt::format(fmt::runtime(keys), 0, 3, 6), fmt::format(fmt::runtime(keys), 0.5, 3.5, 6.5)),
+      "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12);
+  EXPECT_NEAR(frame_distance(stage, 1, 0), 0.5, 1e-12);
+  EXPECT_EQ(frame_distance(stage, 1, 1), 0.0);
+}
+
 }  // namespace
 }  // namespace pita::analysis

@@ -1,13 +1,11 @@
 // analysis/frame_steps.cpp against closed forms: the steady morph of two
-// arrows (m(t) = m_0 (m_1/m_0)^t, w(t) linear: equal steps) and P1's short
-// frames of Fig. 19 (Lagrange weights by hand).
+// arrows (m(t) = m_0 (m_1/m_0)^t, w(t) linear: equal steps) and P1 through
+// a flipped middle keyframe (Lagrange weights by hand).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "analysis/frame_steps.hpp"
 #include "scene/scene.hpp"
@@ -43,26 +41,6 @@ TEST(FrameSteps, ShrinkingAndFlipsOfP1) {
   EXPECT_NEAR(steps.turn_step, std::numbers::pi, 1e-12);
   EXPECT_NEAR(steps.scale_min, 0.0, 1e-2);  // dense samples pass near the zeros
   EXPECT_NEAR(steps.scale_max, 1.0, 1e-12);
-}
-
-TEST(FrameSteps, PanelAngleOfTwoPanels) {
-  // Fig. 19's D(1/4): weights 3/8, 3/4, -1/8 of the vectors (0, 2.4),
-  // (+-0.15, -0.8), (0, 2.4) give (+-0.1125, 0): opposite directions.
-  const std::string panel = R"({{"method": "P1", "keyframes": [
-      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [{}, 0.2]}},
-      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}]}})";
-  const scene::Scene scene = scene::parse_scene(
-      fmt::format(R"({{"method": "P1", "keyframes": [
-      {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [3.15, 0.2]}},
-      {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}], "panels": [{}, {}]}})",
-                  fmt::format(fmt::runtime(panel), 3.15), fmt::format(fmt::runtime(panel), 2.85)),
-      "test.json");
-  const motion::Stage stage(scene);
-  EXPECT_NEAR(std::abs(panel_angle(stage, 1, 0, 0.25)), std::numbers::pi, 1e-9);
-  EXPECT_NEAR(panel_angle(stage, 1, 0, 0.0), 0.0, 1e-12);  // the keyframes agree at A
-  // At t = 1/2 the vectors are B's: (0.15, -0.8) and (-0.15, -0.8).
-  EXPECT_NEAR(panel_angle(stage, 0, 1, 0.5), std::arg(std::complex<double>(-0.15, -0.8) / std::complex<double>(0.15, -0.8)),
-              1e-12);
 }
 
 }  // namespace

@@ -120,6 +120,32 @@ TEST_F(Check, AClaimThePanelCannotMeasureIsBadInput) {
       << r.err;
 }
 
+// The paper figures' claims fail when the figure stops showing them: a
+// method swapped (Fig. 20's P4 for P3) or a tweak removed (Fig. 19's B.q
+// moved back), as a reviewer would try.
+TEST_F(Check, PaperClaimsFailWhenTheFigureChanges) {
+  const fs::path scenes = fs::path(PITA_SOURCE_DIR) / "scenes";
+  std::string fig20 = read_file(scenes / "fig20-overreaction.json");
+  const std::size_t p4 = fig20.find(R"("method": "P4")");
+  ASSERT_NE(p4, std::string::npos);
+  fig20.replace(p4, 14, R"("method": "P3")");
+  dir.write("fig20-overreaction.json", fig20);
+  std::string fig19 = read_file(scenes / "fig19-overreaction-p1.json");
+  const std::size_t moved = fig19.find("2.85");
+  ASSERT_NE(moved, std::string::npos);
+  fig19.replace(moved, 4, "3.15");
+  dir.write("fig19-overreaction-p1.json", fig19);
+  const std::string golden = (fs::path(PITA_SOURCE_DIR) / "golden").string();
+  const RunResult r = run({"check", "fig20-overreaction.json", "fig19-overreaction-p1.json", "--golden", golden});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("/claims/1: claim failed: \"P4 overreacts to B.q more than twice as much as P3\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("/claims/0: claim failed: \"moving B's tip left by 0.3 turns the short frame D(1/4) around"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST_F(Check, CorruptedGoldenPngIsBadInput) {
   const fs::path png = dir.path() / "golden/fig/fig.png";
   const std::string bytes = read_file(png);

@@ -44,8 +44,10 @@ TEST(MeasureName, PlainNamesAndTheirKinds) {
 
 TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
   for (const MeasureEntry& entry : measure_entries()) {
-    const std::string text = entry.argument ? std::string(entry.name) + (entry.kind == MeasureKind::angle ? "P6@0.5" : "A.p")
-                                            : std::string(entry.name);
+    const std::string argument = entry.kind == MeasureKind::angle            ? "P6@0.5"
+                                 : entry.kind == MeasureKind::frame_distance ? "/panels/1"
+                                                                             : "A.p";
+    const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted(text, entry.scene).kind, entry.kind) << text;
     const MeasureScene other = entry.scene == MeasureScene::arrows ? MeasureScene::poses : MeasureScene::arrows;
     EXPECT_NE(refused(text, other).find("only"), std::string::npos) << text;
@@ -62,6 +64,18 @@ TEST(MeasureName, KeyframeParameters) {
     EXPECT_NE(refused(bad).find("must name a keyframe and a parameter"), std::string::npos) << bad;
   }
   EXPECT_NE(refused("size:B.q").find("unknown measure"), std::string::npos);
+}
+
+TEST(MeasureName, PanelsAreNamedByTheirIndex) {
+  EXPECT_EQ(accepted("frame-distance:/panels/12").panel, std::optional<std::size_t>(12));
+  EXPECT_EQ(accepted("angle:/panels/0@0.25").panel, std::optional<std::size_t>(0));
+  EXPECT_EQ(accepted("angle:/panels/0@0.25").t, 0.25);
+  EXPECT_FALSE(accepted("angle:P6@0.25").panel.has_value());
+  for (const char* bad : {"frame-distance:", "frame-distance:/panels/", "frame-distance:/panels/x",
+                          "frame-distance:/panels/1/", "frame-distance:panels/1", "frame-distance:/panels/-1"}) {
+    EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K\""), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("angle:/panels/one@0.5").find("must be \"/panels/\" and a panel's index"), std::string::npos);
 }
 
 TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
