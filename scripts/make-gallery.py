@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """The README's figure gallery: a thumbnail of each scene's golden PNG, linked,
-with the scene's title, between the markers <!-- gallery:begin --> and
+with the scene's title and the claims it makes (README "Claims": each one is
+checked by `pita check`, so by ctest's golden.<scene>, and the suite fails
+when one stops holding), between the markers <!-- gallery:begin --> and
 <!-- gallery:end --> of README.md.
 
   scripts/make-gallery.py           rewrite the gallery in README.md
@@ -13,17 +15,24 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 BEGIN, END = "<!-- gallery:begin -->", "<!-- gallery:end -->"
 COLUMNS = 3
+SHOWN_CLAIMS = 3  # per cell; the others are counted
 
 
 def gallery() -> str:
     cells = []
     for scene in sorted((ROOT / "scenes").glob("*.json")):
         name = scene.stem
-        title = json.loads(scene.read_text()).get("title", name).replace("|", "\\|")
+        document = json.loads(scene.read_text())
+        title = document.get("title", name).replace("|", "\\|")
         png = f"golden/{name}/{name}.png"
         if not (ROOT / png).exists():
             raise SystemExit(f"make-gallery: {png} is missing: write the goldens first (pita update-goldens)")
-        cells.append(f'<a href="{png}"><img src="{png}" width="260" alt="{name}"></a><br>`{name}`: {title}')
+        claims = [c["says"].replace("|", "\\|").replace("<", "&lt;") for c in document.get("claims", [])]
+        lines = [f"✓ {says}" for says in claims[:SHOWN_CLAIMS]]
+        if len(claims) > SHOWN_CLAIMS:
+            lines.append(f"(and {len(claims) - SHOWN_CLAIMS} more claims)")
+        cells.append("<br>".join([f'<a href="{png}"><img src="{png}" width="260" alt="{name}"></a>',
+                                  f"`{name}`: {title}", *lines]))
     rows = ["| " + " | ".join([""] * COLUMNS) + " |", "|" + "---|" * COLUMNS]
     for i in range(0, len(cells), COLUMNS):
         chunk = cells[i:i + COLUMNS] + [""] * (COLUMNS - len(cells[i:i + COLUMNS]))

@@ -105,7 +105,8 @@ class PanelBuilder {
 
   // A pattern layer with its own "method" or "options" draws the motion of
   // a copy of the panel that has them (N57); its errors are the layer's.
-  motion::SceneMotion layer_motion(const scene::PatternLayer& layer) const;
+  // The motion of a layer's own "method" and "options" (pattern, trajectory).
+  motion::SceneMotion layer_motion(std::optional<Method> method, const scene::MethodOptionsPatch& patch) const;
 
   void add(const scene::PatternLayer& layer);
 

@@ -63,27 +63,28 @@ std::vector<double> PanelBuilder::sequence_times(const std::optional<int>& sampl
 
 // A pattern layer with its own "method" or "options" draws the motion of
 // a copy of the panel that has them (N57); its errors are the layer's.
-motion::SceneMotion PanelBuilder::layer_motion(const scene::PatternLayer& layer) const {
-  const MethodOptions options = layer.options.over(track_.options);
-  const scene::Panel own = motion::layer_panel(panel_, layer.method, options);
+motion::SceneMotion PanelBuilder::layer_motion(std::optional<Method> method,
+                                               const scene::MethodOptionsPatch& patch) const {
+  const MethodOptions options = patch.over(track_.options);
+  const scene::Panel own = motion::layer_panel(panel_, method, options);
   // An option the layer's method does not read would change nothing: refused.
   const Method drawn = scene::track_method(own.keys)->method;
   const bool chained =
       track_.chain.has_value() || keyframes_.size() > static_cast<std::size_t>(info(drawn).keyframe_count);
   for (const MethodOptionKey& key : kMethodOptionKeys) {
-    if ((layer.options.given & key.option) == 0U || reads_option(drawn, key.option, chained)) continue;
+    if ((patch.given & key.option) == 0U || reads_option(drawn, key.option, chained)) continue;
     std::vector<std::string> readers;
-    for (const MethodInfo& method : all_methods()) {
-      if (reads_option(method.method, key.option, false)) readers.emplace_back(method.id);
+    for (const MethodInfo& reader : all_methods()) {
+      if (reads_option(reader.method, key.option, false)) readers.emplace_back(reader.id);
     }
     fail(layer_ + "/options/" + std::string(key.name),
          fmt::format("{} does not read \"{}\", so it would change nothing here; {} read{} it", method_name(drawn),
                      key.name, fmt::join(readers, ", "), readers.size() == 1 ? "s" : ""));
   }
   try {
-    return motion::with_layer_method(scene_, panel_, layer.method, options);
+    return motion::with_layer_method(scene_, panel_, method, options);
   } catch (const motion::NoMotion& error) {
-    fail(layer_ + (layer.method ? "/method" : "/options"), error.reason());
+    fail(layer_ + (method ? "/method" : "/options"), error.reason());
   }
 }
 

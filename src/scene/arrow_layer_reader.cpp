@@ -22,8 +22,8 @@ constexpr std::array<std::string_view, 15> kPatternFields = {
     "times", "method", "options", "label"};
 constexpr std::array<std::string_view, 7> kKeyframesFields = {
     "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
-constexpr std::array<std::string_view, 8> kTrajectoryFields = {
-    "type", "point", "samples", "range", "color", "width", "opacity", "dash"};
+constexpr std::array<std::string_view, 10> kTrajectoryFields = {
+    "type", "point", "samples", "range", "color", "width", "opacity", "dash", "method", "options"};
 constexpr std::array<std::string_view, 6> kStrokeFields = {"type",    "fill",    "opacity",
                                                            "outline", "samples", "range"};
 constexpr std::array<std::string_view, 9> kBannerFields = {
@@ -108,6 +108,8 @@ TrajectoryLayer read_trajectory(const Fields& fields) {
   fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
   read_range(fields, layer.range);
   read_line(fields, layer.line);
+  if (const Json* method = fields.get("method")) layer.method = fields.reader().method(*method, fields.at("method"));
+  if (const Json* options = fields.get("options")) layer.options = read_options_patch(fields, *options);
   return layer;
 }
 

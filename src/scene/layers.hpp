@@ -106,6 +106,10 @@ struct TrajectoryLayer {  // "trajectory": the smooth path of p, q or the midpoi
   int samples = 512;                   // [2, kMaxTrajectorySamples], independent of the pattern
   std::optional<TimeRange> range;
   LineStyle line{Color{0.45, 0.45, 0.45, 1.0}, 1.0, 1.0, {}};
+  // The path of another method, or of the panel's with other options, as
+  // a "pattern" layer's (Fig. D.35: each overlaid pattern with its path).
+  std::optional<Method> method;
+  MethodOptionsPatch options;
 };
 
 struct StrokeLayer {  // "stroke": the filled quads between consecutive frames (Sec. 7.2)

@@ -271,6 +271,40 @@ TEST(PatternLayer, OverlayOptionItsMethodDoesNotReadIsRefused) {
   EXPECT_NO_THROW(panel_drawing(scene_with({}, {chained}), chained));
 }
 
+// A trajectory with its own method draws that method's path through the
+// panel's keyframes (Fig. D.35), checks its options as a pattern does, and
+// is left out of the legend (its pattern's entry names the colour).
+TEST(TrajectoryLayer, OwnMethodDrawsThatMethodsPath) {
+  scene::Panel p = panel(Method::P6, three_keyframes());
+  p.pointer = "/panels/0";
+  scene::TrajectoryLayer path;
+  path.method = Method::P1;
+  path.samples = 5;
+  p.layers = std::vector<scene::Layer>{path, scene::LegendLayer{}};
+  const Drawing drawing = panel_drawing(scene_with({}, {p}), p);
+  const auto lines = shapes<Polyline>(drawing);
+  ASSERT_EQ(lines.size(), 1u);
+  const std::vector<Arrow> p1 = frames_of(panel(Method::P1, three_keyframes()), 5);
+  ASSERT_EQ(lines[0]->points.size(), p1.size());
+  for (std::size_t i = 0; i < p1.size(); ++i) EXPECT_LT(std::abs(lines[0]->points[i] - p1[i].p), 1e-12) << i;
+  ASSERT_EQ(drawing.legends.size(), 1u);
+  for (const LegendEntry& entry : drawing.legends[0].entries) EXPECT_NE(entry.text, "path of p");
+
+  path = scene::TrajectoryLayer{};
+  path.options.values.permutation = Permutation::CBA;
+  path.options.given = kPermutationOption;
+  p.layers = std::vector<scene::Layer>{path};
+  try {
+    panel_drawing(scene_with({}, {p}), p);
+    FAIL() << "expected a RenderError";
+  } catch (const RenderError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("test.json: /panels/0/layers/0/options/permutation: P6 La-LP does not "
+                                              "read \"permutation\"", 0),
+              0u)
+        << error.what();
+  }
+}
+
 TEST(PatternLayer, HeadsDrawEachFrameAsAnArrowFromPToQ) {
   const scene::Panel p = panel(Method::P3, three_keyframes(), 5);
   scene::PatternLayer layer;

@@ -33,13 +33,17 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
   // The method in the colour of the first pattern layer (its frames), else
   // dark grey; after it the trajectories drawn, in their colour and dash.
   // Overlaid patterns (a "label", or their own "method" or "options") get
-  // an entry each, named by the label, else by their method.
+  // an entry each, named by the label, else by their method; the paths of
+  // such methods get none.
   Color method_color{0.2, 0.2, 0.2, 1.0};
   bool pattern_seen = false;
   std::vector<LegendEntry> paths, overlays;
   for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
     const auto* pattern = std::get_if<scene::PatternLayer>(&other);
     if (const auto* path = std::get_if<scene::TrajectoryLayer>(&other)) {
+      // The path of an overlaid pattern's method (its own "method" or
+      // "options") is named by that pattern's entry, in the same colour.
+      if (path->method || !path->options.empty()) continue;
       paths.push_back({path->line.color, trajectory_name(path->point), path->line.dash});
     } else if (pattern != nullptr && (!pattern->label.empty() || pattern->method || !pattern->options.empty())) {
       overlays.push_back({pattern->line.color,

@@ -18,7 +18,7 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
   // "times": exactly those (an animation frame still draws its own time).
   const std::vector<double> times =
       layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times;
-  const std::vector<Arrow> pattern = own ? frames(layer_motion(layer), times) : frames(times);
+  const std::vector<Arrow> pattern = own ? frames(layer_motion(layer.method, layer.options), times) : frames(times);
   // A dot's radius: a fixed share of the first keyframe's magnitude.
   const double dot = 0.015 * std::max(keyframes_.front().arrow.m, 1e-300);
   for (std::size_t i = 0; i < pattern.size(); ++i) {

@@ -1,4 +1,5 @@
-// "trajectory" in an arrow scene: the path of D(t).p, D(t).q or their midpoint.
+// "trajectory" in an arrow scene: the path of D(t).p, D(t).q or their midpoint,
+// of the panel's motion or of the layer's own method or options.
 #include <utility>
 #include <vector>
 
@@ -10,7 +11,9 @@
 namespace pita::render::detail {
 
 void PanelBuilder::add(const scene::TrajectoryLayer& layer) {
-  const std::vector<Arrow> path = frames(layer_times(panel_, layer.samples, layer.range));
+  const std::vector<double> times = layer_times(panel_, layer.samples, layer.range);
+  const bool own = layer.method.has_value() || !layer.options.empty();
+  const std::vector<Arrow> path = own ? frames(layer_motion(layer.method, layer.options), times) : frames(times);
   std::vector<Point> points;
   points.reserve(path.size());
   for (const Arrow& frame : path) {
