@@ -1,6 +1,7 @@
 #include "render/measure_text.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -8,7 +9,7 @@ namespace pita::render {
 
 namespace {
 
-std::string number(double x) { return fmt::format("{:.3g}", x); }
+std::string number(double x) { return rounding_or_value(x); }
 
 // The parameters named `name` ("B.q.x") or under it ("B.q": B.q.x, B.q.y).
 std::vector<const analysis::ParameterReaction*> parameters(const analysis::MotionMeasures& m,
@@ -97,6 +98,10 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
 }
 
 }  // namespace
+
+std::string rounding_or_value(double value) {
+  return std::abs(value) < 1e-12 ? std::string("< 1e-12") : fmt::format("{:.3g}", value);
+}
 
 std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures,
                                        std::span<const scene::MeasureName> show) {

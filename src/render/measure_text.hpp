@@ -12,6 +12,10 @@
 
 namespace pita::render {
 
+// A printed comparison: a value below 1e-12 in magnitude is rounding noise,
+// whose digits differ between compilers, so it is printed as "< 1e-12".
+std::string rounding_or_value(double value);
+
 // One line per name of `show` (scene::MeasuresLayer::show), for example
 //   "pop: C.p.y jumps 0.83 (x extent)"  or  "pop: none (largest jump 2.1e-09)"
 //   "gain B.q: 1.36"                    (the larger of B.q.x and B.q.y)

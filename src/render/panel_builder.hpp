@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "core/methods.hpp"
+#include "render/measure_text.hpp"
 #include "render/panel_drawing.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
@@ -37,11 +38,6 @@ inline std::string trajectory_name(scene::TrackedPoint point) {
   return "path";
 }
 
-// A printed comparison: a value below 1e-12 in magnitude is rounding noise,
-// whose digits differ between compilers, so it is printed as "< 1e-12".
-inline std::string rounding_or_value(double value) {
-  return std::abs(value) < 1e-12 ? std::string("< 1e-12") : fmt::format("{:.3g}", value);
-}
 
 // A method as legends name it: "P6 La-LP", "SMA".
 inline std::string method_name(Method method) {
