@@ -22,7 +22,12 @@ namespace {
 // What `work` writes on stderr, with stderr a file and CI as given.
 template <typename Work>
 std::string stderr_of(Work work, const char* ci) {
-  const std::string path = (std::filesystem::temp_directory_path() / "pita-test-progress.txt").string();
+  // A file of this process's own: ctest runs the tests of this file in
+  // parallel processes, and a shared name let one truncate another's output.
+  static int calls = 0;
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("pita-test-progress-" + std::to_string(::getpid()) + "-" + std::to_string(++calls) + ".txt"))
+                               .string();
   std::fflush(stderr);
   const int saved = ::dup(STDERR_FILENO);
   const int file = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
