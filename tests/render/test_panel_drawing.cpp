@@ -9,7 +9,9 @@
 
 #include "core/discrepancy.hpp"
 #include "core/steady_morph.hpp"
+#include "motion/stage.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/scene.hpp"
 #include "render/spiral.hpp"
 #include "render_support.hpp"
 #include "support/keys.hpp"
@@ -494,6 +496,44 @@ TEST(LightnessWhites, FromNoneAtTheSmallestToFourFifthsAtTheLargest) {
   EXPECT_DOUBLE_EQ(c.g, 0.75);
   EXPECT_DOUBLE_EQ(c.b, 1.0);
   EXPECT_DOUBLE_EQ(c.a, 0.7);
+}
+
+// A shapes layer with "times" draws those frames, the same in the figure and
+// in every animation frame (Fig. 24's square at B: a marker, not the moving
+// square); the layer without draws the moving frame and its trail.
+TEST(ShapesLayer, FixedTimesStayInAnimationFrames) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P6", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 2], "m": 0.8, "w": 1.5},
+      {"t": 2, "p": [6, 0], "m": 1.1, "w": 3}],
+      "shapes": [{"polygon": [[0, 0], [1, 0], [1, 1], [0, 1]]}],
+      "layers": [{"type": "shapes"}, {"type": "shapes", "times": [1]}]})",
+                                                "test.json");
+  const motion::Stage stage(scene);
+  const auto of_layer = [](const Drawing& drawing, const std::string& layer) {
+    std::vector<const Item*> items;
+    for (const Item& item : drawing.items) {
+      if (item.layer == layer) items.push_back(&item);
+    }
+    return items;
+  };
+  const Drawing figure = panel_drawing(stage, 0);
+  const FrameSelection selection{0.4, {0.2, 0.3}};
+  const Drawing frame = panel_drawing(stage, 0, &selection);
+  // The moving square: the frame and its trail of two.
+  const auto moving = of_layer(frame, "/layers/0");
+  ASSERT_EQ(moving.size(), 3u);
+  for (const Item* item : moving) EXPECT_TRUE(item->moving);
+  // The fixed square at t = 1: the figure's, unchanged and not moving.
+  const auto fixed = of_layer(frame, "/layers/1");
+  const auto drawn = of_layer(figure, "/layers/1");
+  ASSERT_EQ(fixed.size(), 1u);
+  ASSERT_EQ(drawn.size(), 1u);
+  EXPECT_FALSE(fixed[0]->moving);
+  const auto& square = std::get<Polyline>(fixed[0]->shape);
+  EXPECT_EQ(square.points, std::get<Polyline>(drawn[0]->shape).points);
+  EXPECT_EQ(square.line.opacity, std::get<Polyline>(drawn[0]->shape).line.opacity);
+  // It is the square carried onto D(1) = B: its first corner at B.p.
+  EXPECT_LT(std::abs(square.points.front() - Point(3, 2)), 1e-12);
 }
 
 TEST(SelectedTimes, TheFrameAndItsTrailElseAll) {

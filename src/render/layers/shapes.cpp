@@ -21,21 +21,23 @@ namespace pita::render {
 
 namespace {
 
+// `fade` < 1 only for the trail of an animation's moving frame (fade 1: a
+// figure's frame, or a fixed one of "times").
 void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer, const Affine2& pose, double white,
-               double fade, int index, std::vector<Face>&) {
+               double fade, bool moving, int index, std::vector<Face>&) {
   scene::ShapesLayer style = layer;
   if (white > 0.0) {
     style.line.color = lightened(style.line.color, white);
     if (style.fill) style.fill = lightened(*style.fill, white);
   }
   for (Shape& shape : carried_shapes(panel.panel().shapes, pose, style, panel.scene().canvas.y_up, fade)) {
-    panel.push(index, std::move(shape), panel.selection() != nullptr);
+    panel.push(index, std::move(shape), moving);
   }
 }
 
 // A solid's own colour fills its faces (and outlines it without a fill).
 void draw_shapes_body(PosePanel<Affine3>& panel, const scene::ShapesLayer& layer, const Affine3& pose, double white,
-               double fade, int index, std::vector<Face>& faces) {
+               double fade, bool, int index, std::vector<Face>& faces) {
   for (const scene::Solid& solid : panel.scene().solids) {
     LineStyle line = layer.line;
     if (solid.color && !layer.fill) line.color = *solid.color;
@@ -50,11 +52,14 @@ void draw_shapes_body(PosePanel<Affine3>& panel, const scene::ShapesLayer& layer
 
 template <class Pose>
 void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
-  const FrameSelection* selection = panel.selection();
+  // "times": fixed frames, drawn alike in the figure and in every animation
+  // frame (a marker, Fig. 24's square at B); otherwise the layer's samples,
+  // or the animation's moving frame and its trail.
+  const FrameSelection* selection = layer.times.empty() ? panel.selection() : nullptr;
   const std::vector<double> ts =
-      selected_times(selection, selection != nullptr ? std::vector<double>{}
-                                : !layer.times.empty() ? layer.times
-                                                       : panel.times(layer.samples, layer.range));
+      !layer.times.empty() ? layer.times
+                           : selected_times(selection, selection != nullptr ? std::vector<double>{}
+                                                                            : panel.times(layer.samples, layer.range));
   // "lightness": "area" (SAM Fig. 9, N48): white mixed in by the frame's
   // area (in space, its volume): |det L|.
   std::vector<double> measures;
@@ -66,7 +71,7 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
   for (std::size_t i = 0; i < ts.size(); ++i) {
     const double fade = selection != nullptr ? trail_fade(i, ts.size()) : 1.0;
     const double white = whites.empty() ? 0.0 : whites[i];
-    draw_shapes_body(panel, layer, panel.pose_at(ts[i]), white, fade, static_cast<int>(i), faces);
+    draw_shapes_body(panel, layer, panel.pose_at(ts[i]), white, fade, selection != nullptr, static_cast<int>(i), faces);
   }
   if constexpr (std::is_same_v<Pose, Affine3>) paint_faces(panel, std::move(faces), selection != nullptr);
 }
@@ -80,13 +85,15 @@ namespace detail {
 // "shapes" (Sec. 7.1): the scene's shapes at each frame, carried by the
 // similarity that takes the handle onto D(t) (core/carrier.hpp).
 void PanelBuilder::add(const scene::ShapesLayer& layer) {
-  const std::vector<Arrow> pattern = frames(
-      layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times);
+  // "times": fixed frames, in the figure and in every animation frame alike.
+  const bool fixed = !layer.times.empty();
+  const std::vector<Arrow> pattern = fixed ? frames(motion_, layer.times) : frames(sequence_times(layer.samples, layer.range));
+  const bool moving = selection_ != nullptr && !fixed;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
-    for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer,
-                                       scene_.canvas.y_up, fade(i, pattern.size()))) {
+    for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer, scene_.canvas.y_up,
+                                       moving ? fade(i, pattern.size()) : 1.0)) {
       push(static_cast<int>(i), std::move(shape));
-      drawing_.items.back().moving = selection_ != nullptr;
+      drawing_.items.back().moving = moving;
     }
   }
 }
