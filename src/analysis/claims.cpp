@@ -36,7 +36,8 @@ std::string panel_name(const motion::Stage& stage, std::size_t index) {
 
 }  // namespace
 
-Measurer::Measurer(const motion::Stage& stage) : stage_(&stage), measures_(stage.size()) {}
+Measurer::Measurer(const motion::Stage& stage)
+    : stage_(&stage), measures_(stage.size()), steps_(stage.size()) {}
 
 const MotionMeasures& Measurer::measures(std::size_t panel) {
   std::optional<MotionMeasures>& kept = measures_.at(panel);
@@ -52,18 +53,13 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
     (void)stage.motion(panel);  // its NoMotion first
     if (!keyframes) unmeasured(stage, pointer, panel, measure, "it is measured on keyframes, and the panel has points");
   };
+  if (is_frame_step(measure.kind)) {  // "scale-step", ...
+    need_keyframes();
+    std::optional<FrameSteps>& kept = steps_.at(panel);
+    if (!kept) kept = frame_steps(stage, panel);
+    return *frame_step(*kept, measure.kind);
+  }
   switch (measure.kind) {
-    case MeasureKind::scale_step:
-    case MeasureKind::turn_step:
-    case MeasureKind::scale_min:
-    case MeasureKind::scale_max: {
-      need_keyframes();
-      const FrameSteps steps = frame_steps(stage, panel);
-      return measure.kind == MeasureKind::scale_step  ? steps.scale_step
-             : measure.kind == MeasureKind::turn_step ? steps.turn_step
-             : measure.kind == MeasureKind::scale_min ? steps.scale_min
-                                                      : steps.scale_max;
-    }
     case MeasureKind::angle:
       need_keyframes();
       if (measure.panel) {
@@ -204,19 +200,19 @@ std::vector<ClaimOutcome> check_claims(const motion::Stage& stage) {
 }
 
 double claims_cost(const scene::Scene& scene) {
-  std::set<std::size_t> measured;
+  std::set<std::size_t> measured, stepped;  // panels whose measures (frame steps) are counted
   double cost = 0.0;
   const auto add = [&](std::size_t panel, const scene::MeasureName& measure) {
     const scene::Panel& p = scene.panels.at(panel);
+    if (is_frame_step(measure.kind)) {
+      if (stepped.insert(panel).second) cost += (kScaleSamples + p.samples) * motion::frame_cost(p);
+      return;
+    }
     switch (measure.kind) {
-      case MeasureKind::scale_step:
-      case MeasureKind::turn_step:
-      case MeasureKind::scale_min:
-      case MeasureKind::scale_max:
       case MeasureKind::angle:
       case MeasureKind::handle_shift:
       case MeasureKind::frame_distance:  // both panels' frames
-        cost += (kScaleSamples + kHandleShiftSamples + 2 * kFrameDistanceSamples + p.samples) * motion::frame_cost(p);
+        cost += (kHandleShiftSamples + 2 * kFrameDistanceSamples) * motion::frame_cost(p);
         break;
       default:
         if (measured.insert(panel).second) cost += measure_cost(p);

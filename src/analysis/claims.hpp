@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/frame_steps.hpp"
 #include "analysis/measure.hpp"
 #include "motion/stage.hpp"
 #include "scene/claim.hpp"
@@ -30,8 +31,8 @@ struct ClaimOutcome {
 // "area" the excursion against the trend (0 when monotone). NaN when the
 // measure is undefined (an angle to a vanishing vector).
 //
-// Measures of a panel are computed once and kept: one Measurer serves every
-// claim of a stage.
+// Measures and frame steps of a panel are computed once and kept: one
+// Measurer serves every claim of a stage.
 class Measurer {
  public:
   explicit Measurer(const motion::Stage& stage);
@@ -45,6 +46,7 @@ class Measurer {
 
   const motion::Stage* stage_;
   std::vector<std::optional<MotionMeasures>> measures_;
+  std::vector<std::optional<FrameSteps>> steps_;
 };
 
 // Every claim of the stage's scene, in order. Throws as Measurer::value.

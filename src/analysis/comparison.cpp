@@ -13,13 +13,17 @@
 
 namespace pita::analysis {
 
+double largest_keyframe_magnitude(const scene::Panel& panel) {
+  double largest = 0.0;
+  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
+  return largest;
+}
+
 double vector_angle(const motion::Stage& stage, std::size_t index, Method other, double t) {
   const scene::Panel& panel = stage.panel(index);
   const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes
   const Arrow theirs = motion::with_method(stage.scene(), panel, other).arrow_at(t);
-  double largest = 0.0;
-  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
-  const double floor = kAngleVectorFloor * largest;
+  const double floor = kAngleVectorFloor * largest_keyframe_magnitude(panel);
   if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
     return std::numeric_limits<double>::quiet_NaN();
   }
@@ -51,16 +55,6 @@ double handle_shift(const motion::Stage& stage, std::size_t index) {
   }
   return shift;
 }
-
-namespace {
-
-double largest_keyframe_magnitude(const scene::Panel& panel) {
-  double largest = 0.0;
-  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
-  return largest;
-}
-
-}  // namespace
 
 double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t) {
   const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes

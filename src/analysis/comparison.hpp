@@ -23,6 +23,10 @@ inline constexpr int kHandleShiftSamples = 129;
 // vector at t = (1 - 1/sqrt 2)/2 for some keyframes, docs/paper-notes.md N66).
 inline constexpr double kAngleVectorFloor = 1e-12;
 
+// The largest magnitude of the panel's keyframes (which it must have): the
+// scale of kAngleVectorFloor and of analysis/frame_steps.hpp.
+double largest_keyframe_magnitude(const scene::Panel& panel);
+
 // The signed angle arg(D_M(t).w / D(t).w) in (-pi, pi] from the frame
 // vector of the stage's panel `index` at scene time t to that of `other`
 // (the panel's keyframes, options and timing with `other` as the method);

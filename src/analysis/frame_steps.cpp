@@ -12,12 +12,6 @@ namespace pita::analysis {
 
 namespace {
 
-double largest_magnitude(const scene::Panel& panel) {
-  double largest = 0.0;
-  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) largest = std::max(largest, k.arrow.m);
-  return largest;
-}
-
 double smallest_magnitude(const scene::Panel& panel) {
   double smallest = std::numeric_limits<double>::infinity();
   for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) smallest = std::min(smallest, k.arrow.m);
@@ -32,7 +26,7 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
   const scene::Panel& panel = stage.panel(index);
   // A frame shorter than this has no size or direction to speak of: its
   // steps are measured from the floor (finite, and large).
-  const double floor = kAngleVectorFloor * largest_magnitude(panel);
+  const double floor = kAngleVectorFloor * largest_keyframe_magnitude(panel);
   FrameSteps steps;
   const std::vector<double> times = motion::uniform_times(motion, panel.samples);
   const std::vector<motion::Frame> frames = motion::sample_arrows(motion, times);
@@ -55,8 +49,18 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
     high = std::max(high, m);
   }
   steps.scale_min = low / smallest_magnitude(panel);
-  steps.scale_max = high / largest_magnitude(panel);
+  steps.scale_max = high / largest_keyframe_magnitude(panel);
   return steps;
+}
+
+std::optional<double> frame_step(const FrameSteps& steps, scene::MeasureKind kind) {
+  switch (kind) {
+    case scene::MeasureKind::scale_step: return steps.scale_step;
+    case scene::MeasureKind::turn_step: return steps.turn_step;
+    case scene::MeasureKind::scale_min: return steps.scale_min;
+    case scene::MeasureKind::scale_max: return steps.scale_max;
+    default: return std::nullopt;
+  }
 }
 
 }  // namespace pita::analysis

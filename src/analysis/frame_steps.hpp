@@ -11,8 +11,10 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "motion/stage.hpp"
+#include "scene/measure_name.hpp"
 
 namespace pita::analysis {
 
@@ -30,5 +32,11 @@ struct FrameSteps {
 // pattern frames (Panel::samples, evenly spaced in scene time over the
 // knots, as the "pattern" layer draws them). Throws motion::NoMotion.
 FrameSteps frame_steps(const motion::Stage& stage, std::size_t index);
+
+// The number of `steps` that measure `kind` names ("scale-step", ...);
+// nullopt for a measure that is not one of these four.
+std::optional<double> frame_step(const FrameSteps& steps, scene::MeasureKind kind);
+// Whether `kind` is one of the four.
+inline bool is_frame_step(scene::MeasureKind kind) { return frame_step(FrameSteps{}, kind).has_value(); }
 
 }  // namespace pita::analysis

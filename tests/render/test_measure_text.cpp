@@ -147,5 +147,18 @@ TEST(MeasuresLayer, UndefinedAngleIsRefusedNotPrintedAsNan) {
   EXPECT_EQ(error.find("nan"), std::string::npos) << error;
 }
 
+// The frame steps of the drawn pattern (analysis/frame_steps.hpp), on the
+// steady morph: 5 frames of m = 2^t, w = 1.2 t step by ln 2 / 4 and 0.3 rad.
+TEST(MeasuresLayer, FrameStepsOfTheSteadyMorph) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "samples": 5, "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}], "layers": [
+      {"type": "measures", "show": ["scale-step", "turn-step", "scale-min", "scale-max"], "at": [0, 0]}]})",
+                                                "s.json");
+  const Drawing drawing = panel_drawing(scene, scene.panels.front());
+  ASSERT_EQ(drawing.items.size(), 1u);
+  EXPECT_EQ(std::get<Label>(drawing.items[0].shape).text,
+            "scale-step: 0.173\nturn-step: 0.3 rad\nscale-min: 1\nscale-max: 1");
+}
+
 }  // namespace
 }  // namespace pita::render

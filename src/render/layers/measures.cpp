@@ -2,6 +2,7 @@
 // in a pose scene ARA and area monotonicity; in an arrow scene discrepancy,
 // paths, overreaction and pops, and comparisons with another method.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
   // (analysis/comparison.hpp); the others are `pita measure`'s.
   std::vector<std::string> lines(layer.show.size());
   std::vector<scene::MeasureName> others;
+  std::optional<analysis::FrameSteps> steps;  // computed once for the four that read them
   for (std::size_t i = 0; i < layer.show.size(); ++i) {
     const scene::MeasureName& name = layer.show[i];
     const std::string at = layer_ + "/show/" + std::to_string(i);
@@ -54,13 +56,10 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
         }
         lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
                                name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
-      } else if (name.kind == scene::MeasureKind::scale_step || name.kind == scene::MeasureKind::turn_step ||
-                 name.kind == scene::MeasureKind::scale_min || name.kind == scene::MeasureKind::scale_max) {
-        const analysis::FrameSteps steps = analysis::frame_steps(stage_, index_);
-        lines[i] = name.kind == scene::MeasureKind::scale_step  ? fmt::format("scale step: {:.3g}", steps.scale_step)
-                   : name.kind == scene::MeasureKind::turn_step ? fmt::format("turn step: {:.3g} rad", steps.turn_step)
-                   : name.kind == scene::MeasureKind::scale_min ? fmt::format("scale min: {:.3g}", steps.scale_min)
-                                                                : fmt::format("scale max: {:.3g}", steps.scale_max);
+      } else if (analysis::is_frame_step(name.kind)) {  // "scale-step", ...
+        if (!steps) steps = analysis::frame_steps(stage_, index_);
+        lines[i] = fmt::format("{}: {}{}", name.text, rounding_or_value(*analysis::frame_step(*steps, name.kind)),
+                               name.kind == scene::MeasureKind::turn_step ? " rad" : "");
       } else {
         others.push_back(name);
       }
