@@ -498,15 +498,15 @@ TEST(LightnessWhites, FromNoneAtTheSmallestToFourFifthsAtTheLargest) {
   EXPECT_DOUBLE_EQ(c.a, 0.7);
 }
 
-// A shapes layer with "times" draws those frames, the same in the figure and
-// in every animation frame (Fig. 24's square at B: a marker, not the moving
-// square); the layer without draws the moving frame and its trail.
+// A shapes or pattern layer with "times" draws those frames, the same in the
+// figure and in every animation frame (Fig. 24's square at B: a marker, not
+// the moving square); the layer without draws the moving frame and its trail.
 TEST(ShapesLayer, FixedTimesStayInAnimationFrames) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "P6", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 2], "m": 0.8, "w": 1.5},
       {"t": 2, "p": [6, 0], "m": 1.1, "w": 3}],
       "shapes": [{"polygon": [[0, 0], [1, 0], [1, 1], [0, 1]]}],
-      "layers": [{"type": "shapes"}, {"type": "shapes", "times": [1]}]})",
+      "layers": [{"type": "shapes"}, {"type": "shapes", "times": [1]}, {"type": "pattern", "times": [1, 2]}]})",
                                                 "test.json");
   const motion::Stage stage(scene);
   const auto of_layer = [](const Drawing& drawing, const std::string& layer) {
@@ -534,6 +534,14 @@ TEST(ShapesLayer, FixedTimesStayInAnimationFrames) {
   EXPECT_EQ(square.line.opacity, std::get<Polyline>(drawn[0]->shape).line.opacity);
   // It is the square carried onto D(1) = B: its first corner at B.p.
   EXPECT_LT(std::abs(square.points.front() - Point(3, 2)), 1e-12);
+  // The pattern's two fixed frames: B and C, full opacity, not moving.
+  const auto frames = of_layer(frame, "/layers/2");
+  ASSERT_EQ(frames.size(), 2u);
+  for (const Item* item : frames) {
+    EXPECT_FALSE(item->moving);
+    EXPECT_EQ(std::get<Polyline>(item->shape).line.opacity, 1.0);
+  }
+  EXPECT_LT(std::abs(std::get<Polyline>(frames[1]->shape).points.front() - Point(6, 0)), 1e-12);
 }
 
 TEST(SelectedTimes, TheFrameAndItsTrailElseAll) {

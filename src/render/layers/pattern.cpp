@@ -15,9 +15,11 @@ namespace pita::render::detail {
 
 void PanelBuilder::add(const scene::PatternLayer& layer) {
   const bool own = layer.method.has_value() || !layer.options.empty();
-  // "times": exactly those (an animation frame still draws its own time).
-  const std::vector<double> times =
-      layer.times.empty() || selection_ != nullptr ? sequence_times(layer.samples, layer.range) : layer.times;
+  // "times": exactly those, fixed, in the figure and in every animation frame
+  // alike (as a "shapes" layer's); otherwise the samples, or the animation's
+  // moving frame and its trail.
+  const bool moving = selection_ != nullptr && layer.times.empty();
+  const std::vector<double> times = layer.times.empty() ? sequence_times(layer.samples, layer.range) : layer.times;
   const std::vector<Arrow> pattern = own ? frames(layer_motion(layer.method, layer.options), times) : frames(times);
   // A dot's radius: a fixed share of the first keyframe's magnitude.
   const double dot = 0.015 * std::max(keyframes_.front().arrow.m, 1e-300);
@@ -25,7 +27,7 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
     const Arrow& frame = pattern[i];
     const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};
     LineStyle line = layer.line;
-    line.opacity *= fade(i, pattern.size());
+    if (moving) line.opacity *= fade(i, pattern.size());
     if (layer.dots) {
       push(static_cast<int>(i), Circle{frame.p, dot, line, line.color});
     } else if (layer.heads) {
@@ -33,13 +35,13 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
     } else {
       push(static_cast<int>(i), Polyline{{s.from, s.to}, false, line});
     }
-    drawing_.items.back().moving = selection_ != nullptr;
+    drawing_.items.back().moving = moving;
     if (!layer.coils) continue;
     // The frame's winding, drawn as the keyframes layer draws A's, B's, C's.
     std::vector<Point> coil = winding_spiral(frame.p, frame.m, frame.w);
     if (coil.empty()) continue;
     push(static_cast<int>(i), Polyline{std::move(coil), false, line});
-    drawing_.items.back().moving = selection_ != nullptr;
+    drawing_.items.back().moving = moving;
   }
 }
 
