@@ -133,7 +133,7 @@ ExitCode run_check(const GoldenOptions& options) {
     }
     if (!entry.error.empty()) {
       std::cerr << "pita: " << entry.error << '\n';
-    } else if (entry.check.matches() && entry.check.claims_hold()) {
+    } else if (entry.check.passes()) {
       std::cout << "ok    " << scene.string()
                 << (entry.check.claims.empty() ? std::string()
                                                : fmt::format(" ({} claims hold)", entry.check.claims.size()))
@@ -148,6 +148,9 @@ ExitCode run_check(const GoldenOptions& options) {
       for (const analysis::ClaimOutcome& c : entry.check.claims) {
         if (c.held) continue;
         std::cerr << "      " << c.pointer << ": claim failed: \"" << c.says << "\": " << c.measured << '\n';
+      }
+      for (const lint::Finding& f : entry.check.lint.findings) {
+        if (f.reason.empty()) std::cerr << "      lint: " << lint::describe(f) << '\n';
       }
     }
     report.push_back(std::move(entry));

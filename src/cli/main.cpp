@@ -20,6 +20,7 @@
 #include "cli/exit_code.hpp"
 #include "cli/generate.hpp"
 #include "cli/golden.hpp"
+#include "cli/lint.hpp"
 #include "cli/measure.hpp"
 #include "cli/sweep.hpp"
 #include "cli/render.hpp"
@@ -50,6 +51,7 @@ void describe(CLI::App& app) {
       "  pita render scenes/*.json -o out --format svg,png  every figure into out/\n"
       "  pita animate scenes/fig23-image-motion.json -o fig23.svg   an animated SVG\n"
       "  pita measure scenes/fig12-pops.json                discrepancy, overreaction, pops\n"
+      "  pita lint scenes/*.json                            text over data, cut-off labels, tiny frames\n"
       "  pita check                                         every figure against golden/\n"
       "  pita audit -o fig10.svg                            Fig. 10's properties, measured\n"
       "  pita sweep SCENE --vary /keyframes/1/t=0.2:0.8:7 -o out   a parameter sweep\n\n"
@@ -100,6 +102,7 @@ int main(int argc, char** argv) {
   const auto audit_options = pita::cli::setup_audit(app);
   const auto sam3d_existence_options = pita::cli::setup_sam3d_existence(*app.get_subcommand("audit"));
   const auto measure_options = pita::cli::setup_measure(app);
+  const auto lint_options = pita::cli::setup_lint(app);
   const auto sweep_options = pita::cli::setup_sweep(app);
   // Hidden: the man page and the shell completions, generated from this App at build time.
   const auto generate_options = pita::cli::setup_generate(app);
@@ -131,6 +134,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));
+    if (app.got_subcommand("lint")) return to_int(pita::cli::run_lint(*lint_options));
     if (app.got_subcommand("sweep")) return to_int(pita::cli::run_sweep_command(*sweep_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));

@@ -73,6 +73,7 @@ Outputs render_outputs(const fs::path& scene_path) {
   const render::Figure figure = render::build_figure(stage);
   Outputs out;
   out.claims = analysis::check_claims(stage);  // measured on the motions drawn
+  out.lint = lint::lint_figure(scene, figure);  // on the figure drawn
   out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
   out.svg = render::render_figure(scene, figure, render::Format::svg);
   out.png = render::render_figure(scene, figure, render::Format::png);
@@ -170,7 +171,7 @@ FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string&
 SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
                        const Tolerances& tolerances) {
   const Outputs outputs = render_outputs(scene_path);
-  SceneCheck result{scene_path.string(), scene_name(scene_path), {}, outputs.claims};
+  SceneCheck result{scene_path.string(), scene_name(scene_path), {}, outputs.claims, outputs.lint};
   for (const GoldenFile& file : golden_files(outputs)) {
     result.files.push_back(compare_file(file.kind, golden_path(golden_dir, result.name, file.suffix),
                                         *file.bytes, tolerances));

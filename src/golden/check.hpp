@@ -13,6 +13,7 @@
 #include "golden/image_compare.hpp"
 #include "golden/number_compare.hpp"
 #include "golden/svg_compare.hpp"
+#include "lint/lint.hpp"
 
 namespace pita::golden {
 
@@ -41,6 +42,7 @@ struct Outputs {
   std::string png;
   std::vector<std::pair<std::string, std::string>> frames;  // (suffix ".frame-0061.png", PNG bytes)
   std::vector<analysis::ClaimOutcome> claims;  // the scene's "claims", measured (not a golden file)
+  lint::Report lint;                           // the legibility lint of the figure (not a golden file)
 };
 
 
@@ -86,8 +88,11 @@ struct SceneCheck {
   std::string name;
   std::vector<FileCheck> files;
   std::vector<analysis::ClaimOutcome> claims;  // every claim of the scene, in order
+  lint::Report lint;                           // the lint's findings (README "Lint")
   bool matches() const;      // every golden file matches
   bool claims_hold() const;  // every claim holds
+  bool legible() const { return lint.clean(); }  // every finding of the lint accepted by the scene
+  bool passes() const { return matches() && claims_hold() && legible(); }
 };
 
 // Throws SceneError/RenderError (bad scene) and GoldenError (a golden file

@@ -60,13 +60,13 @@ body { font-family: sans-serif; margin: 2em; }
 table { border-collapse: collapse; margin-bottom: 1em; }
 td, th { border: 1px solid #ccc; padding: 4px 8px; vertical-align: top; text-align: left; }
 img { max-width: 420px; border: 1px solid #999; }
-.match { color: #070; } .DIFFERS, .MISSING, .ERROR, .CLAIM { color: #b00; font-weight: bold; }
+.match { color: #070; } .DIFFERS, .MISSING, .ERROR, .CLAIM, .LINT { color: #b00; font-weight: bold; }
 </style></head><body>
 <h1>pita check</h1>
 )";
   std::size_t bad = 0;
   for (const ReportEntry& e : entries) {
-    bad += (!e.error.empty() || !e.check.matches() || !e.check.claims_hold()) ? 1 : 0;
+    bad += (!e.error.empty() || !e.check.passes()) ? 1 : 0;
   }
   html += fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
                       entries.size(), bad);
@@ -75,6 +75,7 @@ img { max-width: 420px; border: 1px solid #999; }
     const std::string result = !e.error.empty()          ? "ERROR"
                                : !e.check.matches()      ? "DIFFERS"
                                : !e.check.claims_hold() ? "CLAIM FAILED"
+                               : !e.check.legible()      ? "LINT"
                                                          : "match";
     html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
                         escaped(e.check.name), result);
@@ -102,6 +103,17 @@ img { max-width: 420px; border: 1px solid #999; }
         const std::string_view held = c.held ? "match" : "DIFFERS";
         html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", escaped(c.pointer),
                             escaped(c.says), held, c.held ? "holds" : "FAILS", escaped(c.measured));
+      }
+      html += "</table>\n";
+    }
+    // Every finding of the lint, accepted or not (README "Lint").
+    if (!e.check.lint.findings.empty()) {
+      html += "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
+      for (const lint::Finding& f : e.check.lint.findings) {
+        const bool accepted = !f.reason.empty();
+        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", escaped(f.check),
+                            escaped(f.pointer), accepted ? "match" : "DIFFERS",
+                            accepted ? "accepted: " + escaped(f.reason) : std::string("FINDING"), escaped(f.message));
       }
       html += "</table>\n";
     }

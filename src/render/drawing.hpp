@@ -94,6 +94,7 @@ struct Legend {
   double size = 11.0;
   std::vector<LegendEntry> entries;
   bool swatches = true;  // false: text only, flush with the corner's side (a "measures" layer)
+  std::string layer = {};  // the JSON Pointer of the layer that prints it (what `pita lint` names)
 };
 
 struct Drawing {

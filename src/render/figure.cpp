@@ -43,17 +43,16 @@ void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) 
     cairo_paint(cr);
   }
   if (!scene.title.empty()) {
-    paint_text(cr, scene.title, canvas.font, kTitleSize, Color{0.05, 0.05, 0.05, 1.0},
-               0.5 * canvas.width, 0.5 * (kTitleBand - 1.3 * kTitleSize), TextAlign::center,
+    const TextPlacement at = scene_title_placement(canvas);
+    paint_text(cr, scene.title, canvas.font, kTitleSize, Color{0.05, 0.05, 0.05, 1.0}, at.x, at.y, at.align,
                is_markup(scene.title));
   }
   for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
     const PanelPlacement& place = figure.placements[i];
     const std::string& title = scene.panels[i].title;
     if (!title.empty()) {
-      paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0},
-                 place.title.x + 0.5 * place.title.width,
-                 place.title.y + 0.5 * (kPanelTitleBand - 1.3 * kPanelTitleSize), TextAlign::center,
+      const TextPlacement at = panel_title_placement(place);
+      paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0}, at.x, at.y, at.align,
                  is_markup(title));
     }
     paint_drawing(cr, figure.drawings[i], place, canvas.font);

@@ -42,7 +42,28 @@ ViewTransform fit(const scene::Box& view, const Rect& plot, bool y_up) {
   return transform;
 }
 
+// The room a drawing's corner legends take at the top and the bottom of its panel.
+struct Bands {
+  double top = 0.0, bottom = 0.0;
+};
+
+Bands legend_bands(const Drawing& drawing) {
+  Bands bands;
+  for (const Legend& legend : drawing.legends) {
+    if (legend.entries.empty()) continue;
+    const double room = legend_height(legend) + 2.0 * kLegendPad;
+    const bool bottom = legend.corner == scene::LegendLayer::Corner::bottom_left ||
+                        legend.corner == scene::LegendLayer::Corner::bottom_right;
+    (bottom ? bands.bottom : bands.top) = std::max(bottom ? bands.bottom : bands.top, room);
+  }
+  return bands;
+}
+
 }  // namespace
+
+double legend_height(const Legend& legend) {
+  return kLegendLineHeight * legend.size * static_cast<double>(legend.entries.size());
+}
 
 std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
                                           const std::vector<Drawing>& drawings) {
@@ -63,6 +84,16 @@ std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
     }
   }
 
+  // With one view for all (shared or given), one room for legends too: one scale.
+  Bands common;
+  if (canvas.view || shared) {
+    for (const Drawing& d : drawings) {
+      const Bands b = legend_bands(d);
+      common.top = std::max(common.top, b.top);
+      common.bottom = std::max(common.bottom, b.bottom);
+    }
+  }
+
   std::vector<PanelPlacement> placements;
   for (int i = 0; i < n; ++i) {
     PanelPlacement p;
@@ -72,8 +103,12 @@ std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
     const Rect inner{p.cell.x, p.cell.y + p.title.height, p.cell.width,
                      std::max(p.cell.height - p.title.height, 1.0)};
     const double margin = canvas.margin * std::min(inner.width, inner.height);
-    p.plot = {inner.x + margin, inner.y + margin, std::max(inner.width - 2 * margin, 1.0),
-              std::max(inner.height - 2 * margin, 1.0)};
+    const Bands bands = canvas.view || shared ? common : legend_bands(drawings[static_cast<std::size_t>(i)]);
+    // A legend takes at most a third of the panel's height; beyond, it lies over the data (pita lint says so).
+    const double above = std::max(margin, std::min(bands.top, inner.height / 3.0));
+    const double below = std::max(margin, std::min(bands.bottom, inner.height / 3.0));
+    p.plot = {inner.x + margin, inner.y + above, std::max(inner.width - 2 * margin, 1.0),
+              std::max(inner.height - above - below, 1.0)};
     if (canvas.view) {
       p.view = *canvas.view;
     } else if (shared) {

@@ -15,6 +15,13 @@ inline constexpr double kTitleBand = 34.0;       // height reserved for it
 inline constexpr double kPanelTitleSize = 13.0;  // panel titles
 inline constexpr double kPanelTitleBand = 22.0;
 
+// Legends (painted in a corner of their panel, render/painter.hpp): a line
+// is kLegendLineHeight times the text's size, kLegendPad pixels from the
+// panel's sides.
+inline constexpr double kLegendLineHeight = 1.5;
+inline constexpr double kLegendPad = 6.0;
+double legend_height(const Legend& legend);  // its lines, pixels
+
 struct Rect {
   double x = 0, y = 0, width = 0, height = 0;
 };
@@ -44,7 +51,10 @@ struct PanelPlacement {
 // One placement per panel, for drawings[i] of panel i: the grid of
 // canvas.columns columns (default ceil(sqrt(n))) below the scene's title, and
 // each panel's view (canvas.view, else its own drawing's bounds, or the union
-// of all for "shared"), fitted into its plot area keeping proportions.
+// of all for "shared"), fitted into its plot area keeping proportions. The
+// plot area leaves room above and below for the legends in the panel's top
+// and bottom corners, so that they do not lie over the data (with a shared
+// or given view, every panel leaves the room of the most, to keep one scale).
 std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
                                           const std::vector<Drawing>& drawings);
 

@@ -118,7 +118,7 @@ void add_measure_text(const scene::MeasuresLayer& layer, const std::vector<std::
     drawing.items.push_back({layer_pointer, -1, Label{text, *layer.at, layer.size, layer.color}});
     return;
   }
-  Legend legend{layer.corner, layer.size, {}, false};
+  Legend legend{layer.corner, layer.size, {}, false, layer_pointer};
   for (const std::string& line : lines) legend.entries.push_back({layer.color, line});
   drawing.legends.push_back(std::move(legend));
 }

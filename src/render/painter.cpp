@@ -92,9 +92,8 @@ struct ShapePainter {
   }
 
   void operator()(const Label& s) const {
-    const Point at = view(s.at);
-    paint_text(cr, s.text, font, s.size, s.color, at.real(), at.imag() - 0.6 * s.size,
-               TextAlign::left, is_markup(s.text));
+    const TextPlacement at = label_placement(s, view);
+    paint_text(cr, s.text, font, s.size, s.color, at.x, at.y, at.align, is_markup(s.text));
   }
   void operator()(const Image& s) const {
     const Affine2 to_canvas = image_to_canvas(s, view);
@@ -117,32 +116,14 @@ struct ShapePainter {
 void unref(gpointer object) { g_object_unref(object); }
 
 void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std::string& font) {
-  const double line_height = 1.5 * legend.size, swatch = 2.0 * legend.size;
-  const double height = line_height * static_cast<double>(legend.entries.size());
-  const bool right = legend.corner == scene::LegendLayer::Corner::top_right ||
-                     legend.corner == scene::LegendLayer::Corner::bottom_right;
-  const bool bottom = legend.corner == scene::LegendLayer::Corner::bottom_left ||
-                      legend.corner == scene::LegendLayer::Corner::bottom_right;
-  const double pad = 6.0, width = swatch + 9.0 * legend.size;
-  const double x = right ? area.x + area.width - width - pad : area.x + pad;
-  double y = bottom ? area.y + area.height - height - pad : area.y + pad;
-  if (!legend.swatches) {  // text only, aligned on the corner's side
-    for (const LegendEntry& entry : legend.entries) {
-      paint_text(cr, entry.text, font, legend.size, entry.color, right ? area.x + area.width - pad : area.x + pad,
-                 y + 0.5 * line_height - 0.65 * legend.size, right ? TextAlign::right : TextAlign::left);
-      y += line_height;
+  for (const LegendRow& row : legend_geometry(legend, area).rows) {
+    if (legend.swatches) {
+      move_to(cr, row.swatch_from);
+      line_to(cr, row.swatch_to);
+      set_line(cr, LineStyle{row.entry->color, 2.0, 1.0, row.entry->dash});
+      cairo_stroke(cr);
     }
-    return;
-  }
-  for (const LegendEntry& entry : legend.entries) {
-    const double mid = y + 0.5 * line_height;
-    cairo_move_to(cr, x, mid);
-    cairo_line_to(cr, x + swatch, mid);
-    set_line(cr, LineStyle{entry.color, 2.0, 1.0, entry.dash});
-    cairo_stroke(cr);
-    paint_text(cr, entry.text, font, legend.size, Color{0.1, 0.1, 0.1, 1.0}, x + swatch + 5.0,
-               mid - 0.65 * legend.size, TextAlign::left);
-    y += line_height;
+    paint_text(cr, row.entry->text, font, legend.size, row.text_color, row.text.x, row.text.y, row.text.align);
   }
 }
 
@@ -157,15 +138,72 @@ Affine2 image_to_canvas(const Image& image, const ViewTransform& view) {
   return compose(to_canvas, image.to_world);
 }
 
+LegendGeometry legend_geometry(const Legend& legend, const Rect& area) {
+  const double line_height = kLegendLineHeight * legend.size, swatch = 2.0 * legend.size;
+  const double height = legend_height(legend);
+  const bool right = legend.corner == scene::LegendLayer::Corner::top_right ||
+                     legend.corner == scene::LegendLayer::Corner::bottom_right;
+  const bool bottom = legend.corner == scene::LegendLayer::Corner::bottom_left ||
+                      legend.corner == scene::LegendLayer::Corner::bottom_right;
+  const double pad = kLegendPad, width = swatch + 9.0 * legend.size;
+  const double x = right ? area.x + area.width - width - pad : area.x + pad;
+  const double top = bottom ? area.y + area.height - height - pad : area.y + pad;
+  LegendGeometry geometry;
+  geometry.box = {x, top, width, height};
+  double y = top;
+  for (const LegendEntry& entry : legend.entries) {
+    const double mid = y + 0.5 * line_height;
+    LegendRow row;
+    row.entry = &entry;
+    if (legend.swatches) {  // a swatch, then the text in ink
+      row.swatch_from = {x, mid};
+      row.swatch_to = {x + swatch, mid};
+      row.text = {x + swatch + 5.0, mid - 0.65 * legend.size, TextAlign::left};
+      row.text_color = Color{0.1, 0.1, 0.1, 1.0};
+    } else {  // text only, aligned on the corner's side, in the entry's colour
+      row.text = {right ? area.x + area.width - pad : area.x + pad, mid - 0.65 * legend.size,
+                  right ? TextAlign::right : TextAlign::left};
+      row.text_color = entry.color;
+    }
+    geometry.rows.push_back(row);
+    y += line_height;
+  }
+  return geometry;
+}
+
+TextPlacement label_placement(const Label& label, const ViewTransform& view) {
+  const Point at = view(label.at);
+  return {at.real(), at.imag() - 0.6 * label.size, TextAlign::left};
+}
+
+TextPlacement scene_title_placement(const scene::Canvas& canvas) {
+  return {0.5 * canvas.width, 0.5 * (kTitleBand - 1.3 * kTitleSize), TextAlign::center};
+}
+
+TextPlacement panel_title_placement(const PanelPlacement& placement) {
+  return {placement.title.x + 0.5 * placement.title.width,
+          placement.title.y + 0.5 * (kPanelTitleBand - 1.3 * kPanelTitleSize), TextAlign::center};
+}
+
+Rect drawing_area(const PanelPlacement& placement) {
+  return {placement.cell.x, placement.cell.y + placement.title.height, placement.cell.width,
+          placement.cell.height - placement.title.height};
+}
+
 bool is_markup(const std::string& text) {
   if (text.find('<') == std::string::npos) return false;
   return pango_parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr,
                             nullptr) != FALSE;
 }
 
-void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
-                const Color& color, double x, double y, TextAlign align, bool markup) {
-  std::unique_ptr<PangoLayout, decltype(&unref)> layout(pango_cairo_create_layout(cr), &unref);
+namespace {
+
+using LayoutPtr = std::unique_ptr<PangoLayout, decltype(&unref)>;
+
+// The layout paint_text draws and text_ink_box measures: unhinted, so that
+// its size does not depend on the surface.
+LayoutPtr text_layout(cairo_t* cr, const std::string& text, const std::string& font, double size, bool markup) {
+  LayoutPtr layout(pango_cairo_create_layout(cr), &unref);
   cairo_font_options_t* options = cairo_font_options_create();
   cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
   cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
@@ -181,30 +219,53 @@ void paint_text(cairo_t* cr, const std::string& text, const std::string& font, d
   } else {
     pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
   }
+  return layout;
+}
+
+double layout_left(PangoLayout* layout, const TextPlacement& at) {
   int width = 0, height = 0;
-  pango_layout_get_pixel_size(layout.get(), &width, &height);
-  const double left = align == TextAlign::left     ? x
-                      : align == TextAlign::center ? x - 0.5 * width
-                                                   : x - width;
+  pango_layout_get_pixel_size(layout, &width, &height);
+  return at.align == TextAlign::left ? at.x : at.align == TextAlign::center ? at.x - 0.5 * width : at.x - width;
+}
+
+}  // namespace
+
+void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
+                const Color& color, double x, double y, TextAlign align, bool markup) {
+  const LayoutPtr layout = text_layout(cr, text, font, size, markup);
   set_color(cr, color, 1.0);
-  cairo_move_to(cr, left, y);
+  cairo_move_to(cr, layout_left(layout.get(), {x, y, align}), y);
   pango_cairo_show_layout(cr, layout.get());
   cairo_new_path(cr);
+}
+
+Rect text_ink_box(const std::string& text, const std::string& font, double size, const TextPlacement& at,
+                  bool markup) {
+  // A context of its own per thread, on a 1x1 surface: the layout only needs its font options.
+  thread_local const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> measuring = [] {
+    cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+    cairo_t* cr = cairo_create(surface);
+    cairo_surface_destroy(surface);  // the context holds it
+    return std::unique_ptr<cairo_t, decltype(&cairo_destroy)>(cr, &cairo_destroy);
+  }();
+  const LayoutPtr layout = text_layout(measuring.get(), text, font, size, markup);
+  PangoRectangle ink, logical;
+  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  return {layout_left(layout.get(), at) + ink.x, at.y + ink.y, static_cast<double>(ink.width),
+          static_cast<double>(ink.height)};
 }
 
 void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
                    const std::string& font) {
   cairo_save(cr);
-  cairo_rectangle(cr, placement.cell.x, placement.cell.y + placement.title.height,
-                  placement.cell.width, placement.cell.height - placement.title.height);
+  const Rect area = drawing_area(placement);
+  cairo_rectangle(cr, area.x, area.y, area.width, area.height);
   cairo_clip(cr);
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   const ShapePainter painter{cr, placement.transform, font};
   for (const Item& item : drawing.items) std::visit(painter, item.shape);
-  const Rect area{placement.cell.x, placement.cell.y + placement.title.height, placement.cell.width,
-                  placement.cell.height - placement.title.height};
-  for (const Legend& legend : drawing.legends) paint_legend(cr, legend, area, font);
+  for (const Legend& legend : drawing.legends) paint_legend(cr, legend, drawing_area(placement), font);
   cairo_restore(cr);
 }
 

@@ -152,7 +152,7 @@ class PanelBuilder {
       push(-1, Label{text, *at, size, color});
       return;
     }
-    drawing_.legends.push_back(Legend{corner, size, lines, false});
+    drawing_.legends.push_back(Legend{corner, size, lines, false, layer_});
   }
 
   // "guesses" (Sec. 6.1, 6.3; Figs. 16, 18): each drawn arrow G at its time t,

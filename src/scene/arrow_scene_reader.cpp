@@ -54,9 +54,9 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
   }
 }
 
-constexpr std::array<std::string_view, 18> kSceneFields = {
+constexpr std::array<std::string_view, 19> kSceneFields = {
     "$schema", "description", "method", "keyframes", "points", "chain",  "samples", "options", "title",
-    "canvas",  "layers",      "panels", "golden", "claims",    "timing", "shapes", "handle",  "animation"};
+    "canvas",  "layers",      "panels", "golden", "claims", "lint",    "timing", "shapes", "handle",  "animation"};
 
 // A "shapes" layer draws the scene's shapes, which it must have.
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
@@ -173,6 +173,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   if (const Json* claims = JsonReader::member(document, "claims")) {
     scene.claims = read_claims(reader, *claims, scene, false);
   }
+  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),

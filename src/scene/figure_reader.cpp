@@ -139,6 +139,17 @@ std::vector<LayerKindInfo> kind_infos(std::span<const LayerKind<LayerType>> kind
 std::vector<LayerKindInfo> arrow_layer_kinds() { return kind_infos(arrow_layer_table()); }
 std::vector<LayerKindInfo> pose_layer_kinds() { return kind_infos(pose_layer_table()); }
 
+}  // namespace pita::scene::detail
+
+namespace pita::scene {
+
+std::string_view layer_type(const Layer& layer) { return detail::kind_of(detail::arrow_layer_table(), layer).type; }
+std::string_view layer_type(const PoseLayer& layer) { return detail::kind_of(detail::pose_layer_table(), layer).type; }
+
+}  // namespace pita::scene
+
+namespace pita::scene::detail {
+
 std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
                                         const std::string& pointer) {
   return read_layer_array<PoseLayer>(reader, value, pointer, read_pose_layer);

@@ -7,6 +7,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -501,5 +502,10 @@ inline constexpr std::size_t kMaxCompareTimes = 64;
 using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
                                ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
                                SweptLayer, VersusLayer, FieldLayer, Sam3dExistenceLayer>;
+
+// A layer's "type" ("pattern", "poses", ...), from the one table of layer
+// kinds of its scene's kind (scene/layer_kinds.hpp).
+std::string_view layer_type(const Layer& layer);
+std::string_view layer_type(const PoseLayer& layer);
 
 }  // namespace pita::scene

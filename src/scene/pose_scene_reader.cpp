@@ -18,9 +18,9 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 17> kPoseSceneFields = {
+constexpr std::array<std::string_view, 18> kPoseSceneFields = {
     "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
-    "samples", "title",       "canvas", "layers", "panels",             "golden", "claims",
+    "samples", "title",       "canvas", "layers", "panels",             "golden", "claims", "lint",
     "subdivisions", "timing", "animation", "dimension"};
 
 }  // namespace
@@ -110,6 +110,7 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   if (const Json* claims = JsonReader::member(document, "claims")) {
     scene.claims = read_claims(reader, *claims, scene, true);
   }
+  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   if (const Json* animation = JsonReader::member(document, "animation")) {
     scene.animation = detail::read_animation(reader, *animation, "/animation", false, true);
     scene.has_animation = true;

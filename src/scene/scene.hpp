@@ -17,6 +17,7 @@
 #include "core/pitas/registry.hpp"
 #include "core/sam_family_motion.hpp"
 #include "scene/claim.hpp"
+#include "scene/lint_settings.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
 #include "scene/motion_keys.hpp"
@@ -68,6 +69,9 @@ struct Scene {
 
   // "claims": the caption's statements, checked by `pita check` (scene/claim.hpp).
   std::vector<Claim> claims;
+
+  // "lint": the legibility lint's thresholds and accepted findings (scene/lint_settings.hpp).
+  LintSettings lint;
 };
 
 

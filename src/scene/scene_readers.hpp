@@ -43,4 +43,7 @@ void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenToler
 // its index and a measure the scene's kind has (`poses`: a pose scene).
 std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene, bool poses);
 
+// "lint": {"min_content_share", "min_frame_pixels", "allow": [{"check", "pointer", "reason"}]}.
+LintSettings read_lint(const JsonReader& reader, const Json& value);
+
 }  // namespace pita::scene::detail

@@ -16,9 +16,9 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 17> kSpaceSceneFields = {
+constexpr std::array<std::string_view, 18> kSpaceSceneFields = {
     "$schema", "description", "dimension", "method", "poses", "reference_tetrahedron", "samples", "subdivisions",
-    "timing", "golden", "claims", "shapes", "camera", "layers", "title", "canvas", "panels"};
+    "timing", "golden", "claims", "lint", "shapes", "camera", "layers", "title", "canvas", "panels"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation", "distance", "projection",
@@ -354,6 +354,7 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   if (const Json* claims = JsonReader::member(document, "claims")) {
     scene.claims = read_claims(reader, *claims, scene, true);
   }
+  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   return scene;
 }
 

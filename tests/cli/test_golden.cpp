@@ -18,7 +18,7 @@ std::string scene(const std::string& middle_x) {
   {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
   {"t": 0.5, "p": [)" + middle_x + R"(, 1.5], "m": 0.6, "w": 2.0},
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}],
-  "layers": [{"type": "stroke"}, {"type": "pattern"}, {"type": "discrepancy", "scale": 3}, {"type": "keyframes"}]})";
+  "layers": [{"type": "pattern"}, {"type": "stroke"}, {"type": "discrepancy", "scale": 0.1}, {"type": "keyframes"}]})";
 }
 
 class Check : public ::testing::Test {
@@ -144,6 +144,26 @@ TEST_F(Check, PaperClaimsFailWhenTheFigureChanges) {
   EXPECT_NE(r.err.find("/claims/0: claim failed: \"moving B's tip left by 0.3 turns the short frame D(1/4) around"),
             std::string::npos)
       << r.err;
+}
+
+// A finding of the lint that the scene does not accept fails `check` like a
+// claim (exit 1, the goldens matching); accepted with a reason, it passes.
+TEST_F(Check, ALintFindingFailsUnlessTheSceneAcceptsIt) {
+  std::string text = scene("3");
+  text.insert(text.rfind(']'), R"(, {"type": "label", "text": "over the frames", "at": [2.6, 1.5], "size": 16})");
+  dir.write("fig.json", text);
+  ASSERT_EQ(run({"update-goldens", "fig.json"}).exit_code, 0);
+  const RunResult r = run({"check", "fig.json"});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("lint: /layers/4: text-over-data: the label \"over the frames\" lies over the data of"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("golden/fig/"), std::string::npos) << r.err;  // the goldens match
+  text.insert(text.rfind('}'), R"(, "lint": {"allow": [{"check": "text-over-data", "pointer": "/layers/4",
+      "reason": "the label names what it lies on"}]})");
+  dir.write("fig.json", text);
+  const RunResult accepted = run({"check", "fig.json"});
+  EXPECT_EQ(accepted.exit_code, 0) << accepted.err;
 }
 
 TEST_F(Check, CorruptedGoldenPngIsBadInput) {

@@ -55,7 +55,7 @@ TEST(GoldenFiles, PathsMirrorTheScenes) {
 }
 
 TEST(GoldenFiles, SceneMatchesOnlyWhenEveryFileMatches) {
-  SceneCheck check{"s.json", "s", {}, {}};
+  SceneCheck check{"s.json", "s", {}, {}, {}};
   EXPECT_TRUE(check.matches());
   check.files.push_back(FileCheck{FileKind::data, "g", Verdict::match, "", "", "", ""});
   EXPECT_TRUE(check.matches());

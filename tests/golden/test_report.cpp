@@ -47,15 +47,17 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
                               {file(FileKind::data, Verdict::match, "d", "d"),
                                file(FileKind::svg, Verdict::match, "s", "s"),
                                file(FileKind::png, Verdict::match, "P", "P")},
+                              {},
                               {}},
                    ""};
   ReportEntry moved{SceneCheck{"scenes/moved.json", "moved",
                                {file(FileKind::data, Verdict::differs, "d1", "d2"),
                                 file(FileKind::svg, Verdict::differs, "<svg>1</svg>", "<svg>2</svg>"),
                                 file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")},
+                               {},
                                {}},
                     ""};
-  ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}, {}}, "bad.json: /method: unknown \"P66\""};
+  ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}, {}, {}}, "bad.json: /method: unknown \"P66\""};
   write_report(dir_, {same, moved, bad});
 
   const std::string html = read("index.html");
@@ -90,7 +92,8 @@ TEST_F(Report, ListsEveryClaim) {
                                  {file(FileKind::data, Verdict::match, "d", "d"),
                                   file(FileKind::png, Verdict::match, "P", "P")},
                                  {{"/claims/0", "P8 is <soft>", true, "scale-step of panel 3 = 0.06, below 0.24"},
-                                  {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}}},
+                                  {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}},
+                                 {}},
                       ""};
   write_report(dir_, {claimed});
   const std::string html = read("index.html");
@@ -106,12 +109,33 @@ TEST_F(Report, ListsEveryClaim) {
   EXPECT_FALSE(fs::exists(dir_ / "c.actual.png"));  // the figure matches its golden
 }
 
+// Every finding of the lint is listed, accepted or not; one not accepted
+// marks its scene though its goldens match and its claims hold.
+TEST_F(Report, ListsEveryLintFinding) {
+  lint::Report findings;
+  findings.findings.push_back({"text-over-data", "/layers/3", "the label \"<q>\" lies over /layers/0", "", ""});
+  findings.findings.push_back({"same-color", "/layers/2", "items 1 and 2 are both #d08000", "the inner control poses",
+                               "/lint/allow/0"});
+  ReportEntry linted{SceneCheck{"scenes/l.json", "l", {file(FileKind::data, Verdict::match, "d", "d")}, {}, findings},
+                     ""};
+  write_report(dir_, {linted});
+  const std::string html = read("index.html");
+  EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td class=\"LINT\">LINT</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td>text-over-data</td><td>/layers/3</td><td class=\"DIFFERS\">FINDING</td>"
+                      "<td>the label &quot;&lt;q&gt;&quot; lies over /layers/0</td></tr>"),
+            std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<td class=\"match\">accepted: the inner control poses</td>"), std::string::npos) << html;
+}
+
 // A new scene: no golden, so no expected image; the actual one is written.
 TEST_F(Report, MissingGoldenHasNoExpectedImage) {
   ReportEntry fresh{SceneCheck{"scenes/new.json", "new",
                                {file(FileKind::data, Verdict::missing, "", "d"),
                                 file(FileKind::svg, Verdict::missing, "", "<svg/>"),
                                 file(FileKind::png, Verdict::missing, "", "ACTUAL")},
+                               {},
                                {}},
                     ""};
   write_report(dir_, {fresh});

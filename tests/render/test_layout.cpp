@@ -47,6 +47,35 @@ TEST(Layout, GridOfPanelsBelowTheTitle) {
   }
 }
 
+// A corner legend gets room of its own above or below the drawing (at most a
+// third of the panel); with a shared view every panel leaves the most room,
+// so that one scale holds.
+TEST(Layout, CornerLegendsGetRoomOfTheirOwn) {
+  const scene::Scene s = bare(2, 400, 300);  // two cells of 200 x 300
+  Drawing bottom = polyline({{0.0, 0.0}, {1.0, 1.0}});
+  bottom.legends.push_back(Legend{scene::LegendLayer::Corner::bottom_left, 10.0, {{}, {}, {}}, true, "/layers/1"});
+  Drawing top = polyline({{0.0, 0.0}, {1.0, 1.0}});
+  top.legends.push_back(Legend{scene::LegendLayer::Corner::top_right, 10.0, {{}, {}}, true, "/layers/1"});
+  const std::vector<PanelPlacement> p = layout_panels(s, {bottom, top});
+  const double three_lines = 3 * kLegendLineHeight * 10.0 + 2 * kLegendPad;
+  EXPECT_DOUBLE_EQ(p[0].plot.y, 0.0);
+  EXPECT_DOUBLE_EQ(p[0].plot.height, 300.0 - three_lines);
+  const double two_lines = 2 * kLegendLineHeight * 10.0 + 2 * kLegendPad;
+  EXPECT_DOUBLE_EQ(p[1].plot.y, two_lines);
+  EXPECT_DOUBLE_EQ(p[1].plot.height, 300.0 - two_lines);
+  // The room is at most a third of the panel.
+  Drawing tall = polyline({{0.0, 0.0}, {1.0, 1.0}});
+  tall.legends.push_back(Legend{scene::LegendLayer::Corner::top_left, 10.0, std::vector<LegendEntry>(40), true, ""});
+  EXPECT_DOUBLE_EQ(layout_panels(bare(1, 200, 300), {tall})[0].plot.y, 100.0);
+  // Shared: both panels leave the room of both legends, and keep one scale.
+  scene::Scene shared = s;
+  shared.canvas.shared_fit = true;
+  const std::vector<PanelPlacement> q = layout_panels(shared, {bottom, top});
+  EXPECT_DOUBLE_EQ(q[0].plot.y, two_lines);
+  EXPECT_DOUBLE_EQ(q[1].plot.height, 300.0 - two_lines - three_lines);
+  EXPECT_DOUBLE_EQ(q[0].transform.scale, q[1].transform.scale);
+}
+
 TEST(Layout, ViewFitsTheDrawingInsideThePlot) {
   const scene::Scene s = eight_panels();
   const Figure f = build_figure(s);

@@ -32,6 +32,22 @@ class Surface {
     return reinterpret_cast<const std::uint32_t*>(row)[x];
   }
   std::uint32_t alpha(int x, int y) const { return pixel(x, y) >> 24; }
+  // The rows of the topmost and lowest pixels with any ink, or -1.
+  std::pair<int, int> ink_rows() const {
+    const int width = cairo_image_surface_get_width(surface_.get());
+    const int height = cairo_image_surface_get_height(surface_.get());
+    int first = -1, last = -1;
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        if (alpha(x, y) != 0) {
+          if (first < 0) first = y;
+          last = y;
+          break;
+        }
+      }
+    }
+    return {first, last};
+  }
   // The columns of the leftmost and rightmost pixels with any ink, or -1.
   std::pair<int, int> ink_columns() const {
     const int width = cairo_image_surface_get_width(surface_.get());
@@ -164,6 +180,29 @@ TEST(Painter, TextIsAlignedOnItsX) {
   EXPECT_LE(right_last, 151);
   // The same text, moved: centred text spans about as far on each side.
   EXPECT_NEAR((center_first + center_last) / 2.0, 150.0, 4.0);
+}
+
+// The box text_ink_box measures (what `pita lint` checks) holds the ink
+// paint_text leaves, within a pixel of antialiasing, for each alignment,
+// with markup and on two lines.
+TEST(Painter, TextInkBoxHoldsThePaintedInk) {
+  struct Case {
+    std::string text;
+    TextAlign align;
+    bool markup;
+  };
+  for (const Case& c : {Case{"Hello", TextAlign::left, false}, Case{"gjpq Ay", TextAlign::center, false},
+                        Case{"F<sub>A</sub>", TextAlign::right, true}, Case{"two\nlines", TextAlign::left, false}}) {
+    const Surface canvas(300, 120);
+    paint_text(canvas.cr(), c.text, "Sans", 20.0, kBlueColor, 150.0, 20.0, c.align, c.markup);
+    const auto [x0, x1] = canvas.ink_columns();
+    const auto [y0, y1] = canvas.ink_rows();
+    const Rect box = text_ink_box(c.text, "Sans", 20.0, {150.0, 20.0, c.align}, c.markup);
+    EXPECT_NEAR(box.x, x0, 1.5) << c.text;
+    EXPECT_NEAR(box.x + box.width, x1 + 1, 1.5) << c.text;
+    EXPECT_NEAR(box.y, y0, 1.5) << c.text;
+    EXPECT_NEAR(box.y + box.height, y1 + 1, 1.5) << c.text;
+  }
 }
 
 // Labels: markup only when the text has a tag and parses; "F<sub>A</sub>"

@@ -91,7 +91,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   const nlohmann::json& schema = definitions.at("arrowScene");
   EXPECT_EQ(keys_of(schema.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "keyframes", "points", "chain", "samples",
-                                   "options", "title", "canvas", "layers", "panels", "golden", "claims",
+                                   "options", "title", "canvas", "layers", "panels", "golden", "claims", "lint",
                                    "timing", "shapes", "handle", "animation"}));
   // The chains are core/chains/chain.hpp's table, in its order.
   nlohmann::json chains = nlohmann::json::array();
@@ -182,11 +182,11 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(scene.at("properties")),
             (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
                                    "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden", "claims", "subdivisions", "timing", "animation", "dimension"}));
+                                   "golden", "claims", "lint", "subdivisions", "timing", "animation", "dimension"}));
   // 3D pose scenes (src/scene/space_pose_reader.cpp's kSpaceSceneFields).
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
             (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
-                                   "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "claims", "shapes",
+                                   "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "claims", "lint", "shapes",
                                    "camera", "layers", "title", "canvas", "panels"}));
   // Their panels (panel_reader.cpp's PosePanelSpace<Affine3>): no shapes, the solids are the scene's.
   EXPECT_EQ(keys_of(definitions.at("spacePosePanel").at("anyOf").at(1).at("properties")),

@@ -383,6 +383,10 @@ const std::vector<BadScene>& bad_scenes() {
       {"pattern animation of a pose scene", sam_with(R"(, "animation": {"what": "pattern"})"), "/animation/what"},
       {"overlay in a pose scene", sam_with(R"(, "animation": {"overlay": [0.5]})"), "/animation/overlay"},
       {"claim without words", p6_with(R"(, "claims": [{"measure": "turning", "below": 1}])"), "/claims/0"},
+      {"lint: unknown check", p6_with(R"(, "lint": {"allow": [{"check": "overlap", "reason": "r"}]})"),
+       "/lint/allow/0/check"},
+      {"lint: no reason", p6_with(R"(, "lint": {"allow": [{"check": "outside"}]})"), "/lint/allow/0"},
+      {"lint: a share above 1", p6_with(R"(, "lint": {"min_content_share": 2})"), "/lint/min_content_share"},
       {"claim without a test", p6_with(R"(, "claims": [{"says": "x", "measure": "turning"}])"), "/claims/0"},
       {"claim with an unknown measure", p6_with(R"(, "claims": [{"says": "x", "measure": "twist", "below": 1}])"),
        "/claims/0/measure"},
@@ -647,6 +651,16 @@ TEST(SceneSchemaValidation, ColorNamesMatchTheParser) {
               std::string::npos)
         << named.name;
   }
+}
+
+// The one table of the lint's checks (scene/lint_settings.hpp) and the schema's list.
+TEST(SceneSchemaValidation, LintChecksMatchTheTable) {
+  const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
+  std::vector<std::string> names;
+  for (const LintCheckInfo& check : kLintChecks) names.emplace_back(check.name);
+  EXPECT_EQ(schema.at("definitions").at("lint").at("properties").at("allow").at("items").at("properties").at("check").at(
+                "enum"),
+            nlohmann::json(names));
 }
 
 // The one table of measure names (scene/measure_name.cpp) and the schema's

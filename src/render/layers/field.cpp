@@ -77,10 +77,27 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer) 
   const double from = layer.range ? layer.range->from : first, to = layer.range ? layer.range->to : last;
   std::vector<double> us;
   for (const double t : motion::uniform_times(from, to, kFieldCurveSamples)) us.push_back((t - first) / (last - first));
+  // Each integral curve, drawn where it runs inside the field's box (the
+  // figure shows the field there; outside, the curves would run off the panel).
+  const auto in_box = [&layer](Point p) {
+    return p.real() >= layer.box.min.real() && p.real() <= layer.box.max.real() && p.imag() >= layer.box.min.imag() &&
+           p.imag() <= layer.box.max.imag();
+  };
   for (const Eigen::Vector2d& x0 : starts) {
-    std::vector<Point> curve;
-    for (const double u : us) curve.push_back(field_point(field->trajectory(x0, u)));
-    panel.push(-1, Polyline{std::move(curve), false, layer.curve});
+    std::vector<Point> run;
+    const auto flush = [&] {
+      if (run.size() >= 2) panel.push(-1, Polyline{run, false, layer.curve});
+      run.clear();
+    };
+    for (const double u : us) {
+      const Point p = field_point(field->trajectory(x0, u));
+      if (in_box(p)) {
+        run.push_back(p);
+      } else {
+        flush();
+      }
+    }
+    flush();
   }
   const double side =
       std::min(layer.box.max.real() - layer.box.min.real(), layer.box.max.imag() - layer.box.min.imag());
@@ -91,7 +108,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer) 
   }
   if (panel.selection() == nullptr && !starts.empty()) {
     panel.push(-1, Label{field_check_text(*field, starts, us),
-                         Point{layer.box.min.real(), layer.box.min.imag() - 0.09 * side}, 13.0,
+                         Point{layer.box.min.real(), layer.box.min.imag() - 0.17 * side}, 13.0,
                          Color{0.1, 0.1, 0.1, 1.0}});
   }
 }

@@ -12,7 +12,7 @@
 namespace pita::render::detail {
 
 void PanelBuilder::add(const scene::LegendLayer& layer) {
-  Legend legend{layer.corner, layer.size, {}};
+  Legend legend{layer.corner, layer.size, {}, true, layer_};
   scene::KeyframesLayer colors;  // the colours of the first keyframes layer, else the defaults
   for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
     if (const auto* keys = std::get_if<scene::KeyframesLayer>(&other)) {

@@ -1,0 +1,44 @@
+// "lint": what `pita lint` (src/lint/) checks on a scene's figure, and the
+// findings the scene accepts, each with its reason (README "Lint").
+#pragma once
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pita::scene {
+
+// The checks of the lint, by name: the one table of them (src/lint/checks.cpp
+// holds one function per row, in this order; messages and the schema list
+// these names).
+struct LintCheckInfo {
+  std::string_view name;
+  std::string_view what;  // for --help, the README and messages
+};
+inline constexpr std::array<LintCheckInfo, 7> kLintChecks = {{
+    {"text-overlap", "two texts overlap"},
+    {"text-over-data", "a text lies over the strokes, fills or images of another layer"},
+    {"legend-over-data", "a legend's box lies over data"},
+    {"outside", "something is drawn beyond its panel or the canvas, and is cut off"},
+    {"small-content", "a panel's content fills less than \"min_content_share\" of its width and of its height"},
+    {"short-frame", "a pattern's frame, or a pose's shape, is drawn shorter than \"min_frame_pixels\""},
+    {"same-color", "two series of a panel (keyframes, poses, two layers of one kind) share a colour"},
+}};
+
+// One finding the scene accepts: its check, the pointer of the layer (or
+// title, or panel) it names ("" = every pointer), and why.
+struct LintAllow {
+  std::string check;
+  std::string pointer;
+  std::string reason;
+  std::string at;  // this entry's own pointer, "/lint/allow/0"
+};
+
+struct LintSettings {
+  double min_content_share = 0.5;  // of a panel's plot area, along its longer side
+  double min_frame_pixels = 3.0;   // the shortest frame (or pose shape's diagonal) drawn
+  std::vector<LintAllow> allow;
+};
+
+}  // namespace pita::scene
