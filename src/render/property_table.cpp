@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "analysis/paper_table.hpp"
+#include "render/decision_tree.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {
@@ -90,12 +91,7 @@ PropertyTable property_table(const analysis::AuditReport& report) {
   const double inverse_y = row_y(rows);
   push(Label{"has (H W P K O A L)", {x0 + 4.0, inverse_y + kRowHeight / 2}, 12.0, kInk});
   for (std::size_t j = 0; j < columns; ++j) {
-    std::string has;
-    for (const analysis::Property property : report.properties) {
-      const analysis::PropertyInfo& p = info(property);
-      if (p.letter.empty() || !report.cell(report.methods[j], property).holds) continue;
-      if (has.find(p.letter) == std::string::npos) has += p.letter;
-    }
+    const std::string has = property_letters(report, report.methods[j]);
     push(Label{has.empty() ? std::string("-") : has,
                {grid_x + kColumnWidth * static_cast<double>(j) + 6.0, inverse_y + kRowHeight / 2}, 12.0, kInk});
   }

@@ -46,7 +46,8 @@ constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
 constexpr std::array<std::string_view, 2> kPlotOfNames = {"distance", "area"};
 constexpr std::array<PlotOf, 2> kPlotOfs = {PlotOf::distance, PlotOf::area};
 
-constexpr std::array<std::string_view, 5> kPropertyTableFields = {"type", "methods", "configs", "seed", "at"};
+constexpr std::array<std::string_view, 6> kPropertyTableFields = {"type", "methods", "configs", "seed", "at", "trees"};
+constexpr std::array<std::string_view, 3> kTreeFields = {"title", "order", "methods"};
 constexpr std::array<std::string_view, 12> kVectorsFields = {
     "type", "of", "at", "at_point", "scale", "colors", "width", "opacity", "dash", "heads", "samples", "range"};
 constexpr std::array<std::string_view, 10> kFixedPointsFields = {
@@ -304,24 +305,65 @@ FixedPointsLayer read_fixed_points(const Fields& fields) {
   return layer;
 }
 
+// A list of methods through three keyframes (the property table's columns, a tree's leaves).
+std::vector<Method> read_three_keyframe_methods(const JsonReader& reader, const Json& methods, const std::string& at) {
+  if (!methods.is_array() || methods.empty()) {
+    reader.fail(at, "must be a non-empty array of method names (for example [\"P1\", \"P6\"])");
+  }
+  std::vector<Method> out;
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const std::string item = at + "/" + std::to_string(i);
+    const Method m = reader.method(methods[i], item);
+    if (info(m).keyframe_count != 3) {
+      reader.fail(item, fmt::format("{} takes {} keyframes; the properties of Sec. 4 are measured for the "
+                                    "methods through three",
+                                    info(m).id, info(m).keyframe_count));
+    }
+    out.push_back(m);
+  }
+  return out;
+}
+
+// "trees": [{"title", "order": [property names], "methods"}]; the names are
+// checked against the properties when the table is drawn (render/).
+std::vector<DecisionTreeSpec> read_trees(const JsonReader& reader, const Json& trees, const std::string& at) {
+  if (!trees.is_array() || trees.size() > kMaxDecisionTrees) {
+    reader.fail(at, fmt::format("must be a list of at most {} decision trees (got {})", kMaxDecisionTrees,
+                                value_text(trees)));
+  }
+  std::vector<DecisionTreeSpec> out;
+  for (std::size_t i = 0; i < trees.size(); ++i) {
+    const std::string pointer = element_pointer(at, i);
+    const Json& tree = trees[i];
+    reader.object(tree, pointer, "a decision tree");
+    reader.check_fields(tree, pointer, kTreeFields);
+    DecisionTreeSpec spec;
+    spec.pointer = pointer;
+    if (const Json* title = JsonReader::member(tree, "title")) spec.title = reader.text(*title, pointer + "/title", 200);
+    const Json* order = JsonReader::member(tree, "order");
+    if (order == nullptr) reader.fail(pointer, "a decision tree lists the properties it asks, in order: \"order\"");
+    if (!order->is_array() || order->empty() || order->size() > 20) {
+      reader.fail(pointer + "/order", fmt::format("must be a list of 1 to 20 property names, such as "
+                                                  "[\"winding-aware\", \"handle-invariant\"] (got {})",
+                                                  value_text(*order)));
+    }
+    for (std::size_t k = 0; k < order->size(); ++k) {
+      spec.order.push_back(reader.text((*order)[k], element_pointer(pointer + "/order", k), 40));
+    }
+    if (const Json* methods = JsonReader::member(tree, "methods")) {
+      spec.methods = read_three_keyframe_methods(reader, *methods, pointer + "/methods");
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
 PropertyTableLayer read_property_table(const Fields& fields) {
   PropertyTableLayer layer;
   if (const Json* methods = fields.get("methods")) {
-    const std::string at = fields.at("methods");
-    if (!methods->is_array() || methods->empty()) {
-      fields.reader().fail(at, "must be a non-empty array of method names (for example [\"P1\", \"P6\"])");
-    }
-    for (std::size_t i = 0; i < methods->size(); ++i) {
-      const std::string item = at + "/" + std::to_string(i);
-      const Method m = fields.reader().method((*methods)[i], item);
-      if (info(m).keyframe_count != 3) {
-        fields.reader().fail(item, fmt::format("{} takes {} keyframes; the properties of Sec. 4 are measured for the "
-                                               "methods through three",
-                                               info(m).id, info(m).keyframe_count));
-      }
-      layer.methods.push_back(m);
-    }
+    layer.methods = read_three_keyframe_methods(fields.reader(), *methods, fields.at("methods"));
   }
+  if (const Json* trees = fields.get("trees")) layer.trees = read_trees(fields.reader(), *trees, fields.at("trees"));
   fields.integer("configs", 1, kMaxTableConfigs, layer.configs);
   fields.integer("seed", 0, 2147483647, layer.seed);
   if (const Json* at = fields.get("at")) layer.at = fields.reader().point(*at, fields.at("at"));

@@ -276,11 +276,22 @@ struct HandleLayer {
 // top-left corner is `at`, one world unit per pixel at scale 1 (README
 // "pita audit": give the canvas a view that shows it so). It ignores the
 // panel's keyframes.
+// "trees" of a property-table layer: Fig. 10's decision trees, drawn below
+// the table from the same measurements (analysis/decision_tree.hpp).
+struct DecisionTreeSpec {
+  std::string title;
+  std::vector<std::string> order;  // property names, in the order asked (checked when drawn: render/)
+  std::vector<Method> methods;     // empty: P1-P8
+  std::string pointer;             // "/layers/0/trees/1", for errors
+};
+inline constexpr std::size_t kMaxDecisionTrees = 4;
+
 struct PropertyTableLayer {
   std::vector<Method> methods;  // empty: every arrow method through three keyframes
   int configs = 200;            // random configurations, [1, kMaxTableConfigs]
   int seed = 1;                 // [0, 2^31 - 1]
   Point at{0.0, 0.0};
+  std::vector<DecisionTreeSpec> trees;
 };
 inline constexpr int kMaxTableConfigs = 2000;
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "analysis/existence.hpp"
+#include "core/complex_math.hpp"
 
 namespace pita::analysis {
 namespace {
