@@ -417,6 +417,7 @@ struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses
   std::optional<Color> fill;
   double fill_opacity = 0.25;
   std::optional<LineStyle> corner;       // the bottom-right shape's line (Fig. 11's F_D), if given
+  std::optional<LineStyle> grid;         // lines through the bodies' centres along rows and columns, if given
 };
 
 // "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)

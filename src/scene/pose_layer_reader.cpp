@@ -27,9 +27,9 @@ constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "r
                                                           "width", "opacity", "dash"};
 constexpr std::array<std::string_view, 7> kExistenceFields = {
     "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
-constexpr std::array<std::string_view, 11> kPatchFields = {
+constexpr std::array<std::string_view, 12> kPatchFields = {
     "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
-    "corner"};
+    "corner", "grid"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
 constexpr std::array<std::string_view, 13> kSweptFields = {
     "type", "edge", "samples", "range", "trace_samples", "instants", "segments", "ends", "envelope",
@@ -150,6 +150,11 @@ PatchLayer read_patch(const Fields& fields) {
     LineStyle corner = layer.line;
     read_line_object(fields, "corner", corner);
     layer.corner = corner;
+  }
+  if (fields.get("grid") != nullptr) {  // unset members: a thin grey line
+    LineStyle grid{Color{0.45, 0.45, 0.45, 1.0}, 0.8, 1.0, {}};
+    read_line_object(fields, "grid", grid);
+    layer.grid = grid;
   }
   return layer;
 }

@@ -58,15 +58,38 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer) {
   std::vector<Face> faces;  // space: painted back to front at the end
   try {
     const Pose D = layer.regular ? regular_patch_corner(A, B, C) : poses[3].pose;
-    int index = 0;
+    std::vector<Pose> grid;  // row-major
     for (int j = 0; j < layer.rows; ++j) {
       const double v = static_cast<double>(j) / (layer.rows - 1);
-      for (int i = 0; i < layer.columns; ++i, ++index) {
+      for (int i = 0; i < layer.columns; ++i) {
         const double u = static_cast<double>(i) / (layer.columns - 1);
-        const Pose pose = sam_patch(A, B, C, D, u, v);
-        if (!pose.L.allFinite() || !pose.b.allFinite()) panel.fail("the patch overflows");
+        grid.push_back(sam_patch(A, B, C, D, u, v));
+        if (!grid.back().L.allFinite() || !grid.back().b.allFinite()) panel.fail("the patch overflows");
+      }
+    }
+    const std::vector<BodyPoint<Pose>> body = layer.grid ? panel.body_points() : std::vector<BodyPoint<Pose>>{};
+    if (!body.empty()) {  // the rows and columns, through the image of the body's centre
+      BodyPoint<Pose> centre = body.front();
+      for (std::size_t k = 1; k < body.size(); ++k) centre += body[k];
+      centre /= static_cast<double>(body.size());
+      const auto at = [&](int i, int j) {
+        return panel.image(pita::apply(grid[static_cast<std::size_t>(j * layer.columns + i)], centre));
+      };
+      for (int j = 0; j < layer.rows; ++j) {
+        std::vector<Point> row;
+        for (int i = 0; i < layer.columns; ++i) row.push_back(at(i, j));
+        panel.push(-1, Polyline{std::move(row), false, *layer.grid});
+      }
+      for (int i = 0; i < layer.columns; ++i) {
+        std::vector<Point> column;
+        for (int j = 0; j < layer.rows; ++j) column.push_back(at(i, j));
+        panel.push(-1, Polyline{std::move(column), false, *layer.grid});
+      }
+    }
+    for (int j = 0, index = 0; j < layer.rows; ++j) {
+      for (int i = 0; i < layer.columns; ++i, ++index) {
         const bool corner = i == layer.columns - 1 && j == layer.rows - 1;
-        draw_patch_body(panel, layer, index, pose, corner, faces);
+        draw_patch_body(panel, layer, index, grid[static_cast<std::size_t>(index)], corner, faces);
       }
     }
   } catch (const NoRealLogarithm& error) {
