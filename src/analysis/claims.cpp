@@ -10,6 +10,10 @@
 #include "analysis/comparison.hpp"
 #include "scene/limits.hpp"
 #include "analysis/frame_steps.hpp"
+#include "analysis/properties.hpp"
+#include "scene/did_you_mean.hpp"
+
+#include <fmt/ranges.h>
 #include "motion/sampler.hpp"
 
 namespace pita::analysis {
@@ -32,6 +36,28 @@ std::string panel_name(const motion::Stage& stage, std::size_t index) {
                              const scene::MeasureName& measure, std::string_view why) {
   throw scene::SceneError(stage.scene().path, pointer,
                           fmt::format("{} has no \"{}\": {}", panel_name(stage, panel), measure.text, why));
+}
+
+// "property:NAME": what `pita audit` measures for the property on the
+// panel's three keyframes (its probe, seed 1), with the panel's method.
+double property_value(const motion::Stage& stage, std::size_t panel, const scene::MeasureName& measure,
+                      const std::string& pointer) {
+  const PropertyInfo* property = find_property(measure.parameter);
+  if (property == nullptr) {
+    std::vector<std::string_view> names;
+    for (const PropertyInfo& p : all_properties()) names.push_back(p.id);
+    throw scene::SceneError(stage.scene().path, pointer,
+                            fmt::format("unknown property \"{}\"{}; the properties are {}", measure.parameter,
+                                        scene::did_you_mean(scene::closest_names(measure.parameter, names)),
+                                        fmt::join(names, ", ")));
+  }
+  const auto& keys = std::get<scene::KeyframeKeys>(stage.panel(panel).keys);
+  if (keys.keyframes.size() != 3 || info(keys.method).keyframe_count != 3) {
+    unmeasured(stage, pointer, panel, measure, "the properties of Sec. 4 are measured on three keyframes and a method "
+                                               "through three");
+  }
+  const KeyframeTriple triple{keys.keyframes[0], keys.keyframes[1], keys.keyframes[2]};
+  return probe(property->property, keys.method, triple, 1).value;
 }
 
 }  // namespace
@@ -79,6 +105,9 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       need_keyframes();
       if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
       return handle_shift(stage, panel);
+    case MeasureKind::property:
+      need_keyframes();
+      return property_value(stage, panel, measure, pointer);
     default:
       break;
   }

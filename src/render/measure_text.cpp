@@ -87,6 +87,7 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:  // claims only
+    case MeasureKind::property:        // claims only
       break;  // compared with another motion by the panel's drawing, not measured here
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:

@@ -406,6 +406,11 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
                                          "(README \"Claims\")",
                                          std::get<MeasureName>(parsed).text));
       }
+      if (std::get<MeasureName>(parsed).kind == MeasureKind::property) {
+        reader.fail(item_at, fmt::format("\"{}\" is measured by claims only (README \"Claims\"); the property "
+                                         "table of pita audit prints every property",
+                                         std::get<MeasureName>(parsed).text));
+      }
       layer.show.push_back(std::move(std::get<MeasureName>(parsed)));
     }
   }

@@ -15,7 +15,7 @@ namespace {
 
 using detail::quoted_choices;
 
-constexpr std::array<MeasureEntry, 18> kMeasures{{
+constexpr std::array<MeasureEntry, 19> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
     {"path-length", MeasureKind::path_length, MeasureScene::arrows},
     {"turning", MeasureKind::turning, MeasureScene::arrows},
@@ -34,6 +34,7 @@ constexpr std::array<MeasureEntry, 18> kMeasures{{
     {"jump:", MeasureKind::jump, MeasureScene::arrows, true},
     {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
     {"frame-distance:", MeasureKind::frame_distance, MeasureScene::arrows, true},
+    {"property:", MeasureKind::property, MeasureScene::arrows, true},
 }};
 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
@@ -92,7 +93,8 @@ std::string unknown(std::string_view text, MeasureScene scene) {
   if (scene == MeasureScene::arrows) {
     reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
               "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
-              "panel, \"/panels/1\") and t a time, or in a claim \"frame-distance:/panels/K\"";
+              "panel, \"/panels/1\") and t a time, or in a claim \"frame-distance:/panels/K\" and "
+              "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
   }
   return reason;
 }
@@ -114,6 +116,14 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
       return fmt::format("\"{}\" must name a keyframe and a parameter, \"{}K.x\" with K a keyframe (A, B, ...) "
                          "and x one of p, q, p.x, p.y, q.x, q.y, m, w, t",
                          text, found->name);
+    }
+    measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::property) {
+    // The name is checked against the properties when measured (analysis/properties.hpp).
+    if (rest.empty() || rest.find_first_not_of("abcdefghijklmnopqrstuvwxyz-") != std::string_view::npos) {
+      return fmt::format("\"{}\" must be \"property:NAME\", NAME a property of Sec. 4 as `pita audit` names it "
+                         "(\"locally-perseverant\", \"handle-invariant\", ...)",
+                         text);
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {

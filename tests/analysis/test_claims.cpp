@@ -97,6 +97,30 @@ TEST(Claims, AMeasureThePanelLacksIsASceneErrorAtItsPointer) {
   }
 }
 
+// "property:NAME": what pita audit measures on the panel's keyframes. P1 is
+// affine-invariant (Sec. 4.10: defined by affine-invariant operators) and
+// not winding-aware (it reads no winding: its reaction to a turn is 0).
+TEST(Claims, PropertiesOfSection4OnThePanelsKeyframes) {
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "property:affine-invariant", "below": 1e-9})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "property:winding-aware", "below": 1e-12})").held);
+  EXPECT_FALSE(only(R"({"says": "s", "panel": 1, "measure": "property:winding-aware", "above": 0.5})").held);
+  try {
+    only(R"({"says": "s", "panel": 1, "measure": "property:afine-invariant", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/measure");
+    EXPECT_NE(error.reason().find("unknown property \"afine-invariant\"; did you mean \"affine-invariant\"?"),
+              std::string::npos)
+        << error.reason();
+  }
+  try {
+    only(R"({"says": "s", "panel": 0, "measure": "property:symmetric", "below": 1})");  // the SMA: two keyframes
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(error.reason().find("measured on three keyframes"), std::string::npos) << error.reason();
+  }
+}
+
 TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}]})",

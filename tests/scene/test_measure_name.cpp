@@ -46,11 +46,23 @@ TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
   for (const MeasureEntry& entry : measure_entries()) {
     const std::string argument = entry.kind == MeasureKind::angle            ? "P6@0.5"
                                  : entry.kind == MeasureKind::frame_distance ? "/panels/1"
+                                 : entry.kind == MeasureKind::property       ? "pop-free"
                                                                              : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted(text, entry.scene).kind, entry.kind) << text;
     const MeasureScene other = entry.scene == MeasureScene::arrows ? MeasureScene::poses : MeasureScene::arrows;
     EXPECT_NE(refused(text, other).find("only"), std::string::npos) << text;
+  }
+}
+
+// "property:NAME": a name of lower-case words; which names exist is the
+// properties' table's (analysis/properties.hpp), checked when measured.
+TEST(MeasureName, PropertiesAreNamedInLowerCaseWords) {
+  const MeasureName local = accepted("property:locally-perseverant");
+  EXPECT_EQ(local.kind, MeasureKind::property);
+  EXPECT_EQ(local.parameter, "locally-perseverant");
+  for (const char* bad : {"property:", "property:Pop", "property:pop free", "property:a.b"}) {
+    EXPECT_NE(refused(bad).find("must be \"property:NAME\""), std::string::npos) << bad;
   }
 }
 

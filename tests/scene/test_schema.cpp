@@ -677,7 +677,7 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
       plain.emplace_back(entry.name);
     } else if (entry.kind == MeasureKind::angle) {
       angle = std::string(entry.name);
-    } else if (entry.kind == MeasureKind::frame_distance) {
+    } else if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::property) {
       continue;  // claims only: the schema's "measureName" (below)
     } else {
       parameters.emplace_back(entry.name.substr(0, entry.name.size() - 1));
@@ -689,11 +689,13 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
   EXPECT_EQ(items.at(1).at("pattern").get<std::string>().rfind("^(" + alternatives + "):", 0), 0u);
   EXPECT_EQ(items.at(2).at("pattern").get<std::string>().rfind("^" + angle, 0), 0u);
   EXPECT_EQ(items.size(), 3u);
-  // A claim's measures: the layer's and "frame-distance:".
+  // A claim's measures: the layer's, "frame-distance:" and "property:" (whose names
+  // tests/analysis/test_claims.cpp checks against the table of properties).
   const nlohmann::json& claim = schema.at("definitions").at("measureName").at("anyOf");
-  ASSERT_EQ(claim.size(), 4u);
+  ASSERT_EQ(claim.size(), 5u);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(claim.at(i), items.at(i));
   EXPECT_EQ(claim.at(3).at("pattern"), "^frame-distance:/panels/[0-9]+$");
+  EXPECT_EQ(claim.at(4).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
 }
 
 // The one table of method options and their values (core/pitas/method_options.hpp)
