@@ -1,6 +1,8 @@
 #include "render/plot.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -28,6 +30,24 @@ class PlotBox {
   }
   void push(int index, Shape shape) { items_.push_back({pointer_, index, std::move(shape)}); }
   double smaller_side() const { return std::min(width_, height_); }
+
+  // Tick marks at the quarters of the bottom side (time) and, with `left`, of
+  // the left side, and the values at the ends: the time axis from t0 to t1,
+  // the left one from left->first to left->second.
+  void ticks(double t0, double t1, std::optional<std::pair<double, double>> left) {
+    const LineStyle tick{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
+    const Color text{0.2, 0.2, 0.2, 1.0};
+    for (const double q : {0.25, 0.5, 0.75}) {
+      push(-1, Polyline{{place({q, 0.0}), place({q, 0.03})}, false, tick});
+      if (left) push(-1, Polyline{{place({0.0, q}), place({0.02, q})}, false, tick});
+    }
+    push(-1, Label{fmt::format("{:.3g}", t0), place({-0.01, -0.06}), 9.0, text});
+    push(-1, Label{fmt::format("{:.3g}", t1), place({0.985, -0.06}), 9.0, text});
+    if (left) {
+      push(-1, Label{fmt::format("{:.3g}", left->first), place({-0.045, 0.0}), 9.0, text});
+      push(-1, Label{fmt::format("{:.3g}", left->second), place({-0.045, 1.0}), 9.0, text});
+    }
+  }
   std::vector<Item> items() && { return std::move(items_); }
 
  private:
@@ -61,7 +81,8 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
     }
   }
   const Color text{0.2, 0.2, 0.2, 1.0};
-  push(-1, Label{"time", place({0.5, -0.12}), 10.0, text});
+  box.ticks(motion.first(), motion.last(), std::pair{0.0, 1.0});  // the distance is a share of the path's length
+  push(-1, Label{"time", place({0.45, -0.12}), 10.0, text});
   push(-1, Label{"distance", place({-0.02, 1.08}), 10.0, text});
   return std::move(box).items();
 }
@@ -114,6 +135,7 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
     push(-1, Label{area_summary(one.name, one.curve), place({0.0, -0.2 - 0.1 * static_cast<double>(k)}), 11.0,
                    one.color});
   }
+  box.ticks(first, last, std::nullopt);
   push(-1, Label{"time", place({0.45, -0.08}), 10.0, text});
   push(-1, Label{fmt::format("|det L| = {:.4g}", largest), place({0.01, 1.05}), 10.0, text});
   push(-1, Label{fmt::format("|det L| = {:.4g}", smallest), place({0.01, 0.04}), 10.0, text});

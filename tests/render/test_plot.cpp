@@ -2,6 +2,7 @@
 // its box, the diagonal, the marks at the frame times.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -40,6 +41,31 @@ TEST(Plot, CurveRunsFromTheBoxsLowCornerToItsHighCorner) {
     EXPECT_NEAR(y, (1.0 - std::cos(M_PI * x)) / 2.0, 1e-9) << x;
   }
   EXPECT_EQ(dots, 5);
+}
+
+// Ticks: the ends of the time axis print the motion's first and last times,
+// the ends of the distance axis 0 and 1 (a share of the path's length), and
+// three tick marks divide each side in quarters.
+TEST(Plot, AxesHaveTicksAndTheirEndValues) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P6", "keyframes": [
+      {"t": 2, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 3, "p": [3, 1.5], "m": 0.6, "w": 2},
+      {"t": 4.5, "p": [6, 0], "m": 1.2, "w": 3.5}]})", "s.json");
+  const motion::SceneMotion motion = motion::build_motion(scene);
+  scene::PlotLayer layer;
+  layer.box = {Point{0.0, 0.0}, Point{4.0, 2.0}};
+  std::vector<std::string> texts;
+  int ticks = 0;
+  for (const Item& item : plot_items(layer, motion, {2.0, 4.5}, "/layers/0")) {
+    if (const auto* label = std::get_if<Label>(&item.shape)) texts.push_back(label->text);
+    if (const auto* line = std::get_if<Polyline>(&item.shape); line && line->points.size() == 2 &&
+                                                               std::abs(line->points[1] - line->points[0]) < 0.1) {
+      ++ticks;
+    }
+  }
+  for (const char* expected : {"2", "4.5", "0", "1", "time", "distance"}) {
+    EXPECT_NE(std::find(texts.begin(), texts.end(), expected), texts.end()) << expected;
+  }
+  EXPECT_EQ(ticks, 6);
 }
 
 TEST(Plot, MarksCanBeLeftOut) {
