@@ -229,17 +229,18 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
   }
 }
 
-// The points whose relative acceleration ARA averages: the vertices of the
-// panel's shapes (image boxes included), else the reference triangle.
+// The points whose relative acceleration ARA averages (Sec. 2.4): the
+// regular grid over the box of the panel's shapes (image boxes included),
+// else of the reference triangle, as an "ara" layer prints it (N28).
 std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
-  std::vector<Eigen::Vector2d> points;
+  std::vector<Eigen::Vector2d> vertices;
   for (const scene::ShapeOutline& shape : panel.shapes) {
-    for (const Point& x : shape.points) points.emplace_back(x.real(), x.imag());
+    for (const Point& x : shape.points) vertices.emplace_back(x.real(), x.imag());
   }
-  if (points.empty()) {
-    for (const Point& x : scene.reference_triangle) points.emplace_back(x.real(), x.imag());
+  if (vertices.empty()) {
+    for (const Point& x : scene.reference_triangle) vertices.emplace_back(x.real(), x.imag());
   }
-  return points;
+  return ara_grid(vertices);
 }
 
 // In space: the vertices of the scene's solids, else the reference tetrahedron.

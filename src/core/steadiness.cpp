@@ -42,4 +42,22 @@ double average_relative_acceleration(const PoseMotion3& motion, std::span<const 
   return relative_acceleration_mean(motion, points, time_samples);
 }
 
+std::vector<Eigen::Vector2d> ara_grid(std::span<const Eigen::Vector2d> vertices, int per_side) {
+  if (vertices.empty() || per_side < 2) return {vertices.begin(), vertices.end()};
+  Eigen::Vector2d low = vertices.front(), high = low;
+  for (const Eigen::Vector2d& v : vertices) {
+    low = low.cwiseMin(v);
+    high = high.cwiseMax(v);
+  }
+  std::vector<Eigen::Vector2d> grid;
+  grid.reserve(static_cast<std::size_t>(per_side) * static_cast<std::size_t>(per_side));
+  for (int i = 0; i < per_side; ++i) {
+    for (int j = 0; j < per_side; ++j) {
+      grid.emplace_back(low.x() + (high.x() - low.x()) * i / (per_side - 1),
+                        low.y() + (high.y() - low.y()) * j / (per_side - 1));
+    }
+  }
+  return grid;
+}
+
 }  // namespace pita

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -29,5 +30,12 @@ double average_relative_acceleration(const PoseMotion& motion,
 double average_relative_acceleration(const PoseMotion3& motion,
                                      std::span<const Eigen::Vector3d> points,
                                      int time_samples = 64);
+
+// The points ARA averages over (Sec. 2.4: "a regular grid of the shape's
+// box"): `per_side` x `per_side` points spanning the bounding box of
+// `vertices` (reference coordinates). Both the printed ARA of a figure and
+// the one `pita measure` and claims compare use it (docs/paper-notes.md N28).
+inline constexpr int kDefaultAraGrid = 11;
+std::vector<Eigen::Vector2d> ara_grid(std::span<const Eigen::Vector2d> vertices, int per_side = kDefaultAraGrid);
 
 }  // namespace pita

@@ -462,7 +462,7 @@ struct AraLayer {
   double size = 12.0;                  // pixels
   Color color{0.0, 0.0, 0.0, 1.0};
   int digits = 3;                      // decimals, [0, kMaxAraDigits]
-  int grid = 11;                       // points per side, [2, kMaxAraGrid]
+  int grid = 11;                       // points per side, [2, kMaxAraGrid]; core's kDefaultAraGrid (pita measure's)
 };
 inline constexpr int kMaxAraDigits = 9;
 inline constexpr int kMaxAraGrid = 100;

@@ -191,6 +191,23 @@ TEST(Measure, PoseMotionsAraAndArea) {
   EXPECT_NEAR(linear.area->t_of_excursion, 0.5, 1e-12);
 }
 
+// The ARA that pita measure (and claims) report is the one an "ara" layer
+// prints: over the default grid of the box of the panel's shapes. Linear
+// interpolation from the identity to the scaling by 2: |dw/du| = |p| / (1 + u)^2,
+// whose mean over u in [0, 1] is |p| / 2; averaged over the 11 x 11 grid of
+// [-1, 1]^2 (its mean |p|, computed here point by point).
+TEST(Measure, AraIsTheFiguresOverTheGridOfTheShapesBox) {
+  const MotionMeasures linear = measure_text(R"({"method": "linear",
+      "shapes": [{"polygon": [[-1, -1], [1, -1], [1, 1], [-1, 1]]}],
+      "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]})");
+  double mean = 0.0;
+  for (int i = 0; i < 11; ++i) {
+    for (int j = 0; j < 11; ++j) mean += std::hypot(-1.0 + 0.2 * i, -1.0 + 0.2 * j) / 121.0;
+  }
+  ASSERT_TRUE(linear.ara);
+  EXPECT_NEAR(*linear.ara, mean / 2.0, 1e-4);
+}
+
 TEST(Measure, AreaStatsOfMonotoneAndDippingSequences) {
   EXPECT_TRUE(area_stats({0, 1, 2, 3}, {1, 2, 2, 5}).monotone);
   EXPECT_TRUE(area_stats({0, 1, 2}, {3, 2, 1}).monotone);

@@ -22,6 +22,18 @@ const Affine2 kSamFig2C = pose(0.7, -1.6, 2.4, 1.1, 6.5, 0.5);
 const Affine2 kMiddle = pose(1.4, -0.9, 1.6, 1.2, 3.5, 1.5);
 const std::vector<Eigen::Vector2d> kTriangle = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.3, 0.3}};
 
+// The points ARA averages over (Sec. 2.4): a regular grid spanning the box
+// of the vertices, corners included.
+TEST(Steadiness, AraGridSpansTheBoxOfTheVertices) {
+  const std::vector<Eigen::Vector2d> vertices = {{0.0, 1.0}, {2.0, -1.0}, {1.0, 3.0}};
+  const std::vector<Eigen::Vector2d> grid = ara_grid(vertices, 3);
+  ASSERT_EQ(grid.size(), 9u);
+  EXPECT_EQ(grid.front(), Eigen::Vector2d(0.0, -1.0));
+  EXPECT_EQ(grid[4], Eigen::Vector2d(1.0, 1.0));  // the centre
+  EXPECT_EQ(grid.back(), Eigen::Vector2d(2.0, 3.0));
+  EXPECT_EQ(ara_grid(vertices).size(), static_cast<std::size_t>(kDefaultAraGrid * kDefaultAraGrid));
+}
+
 TEST(Steadiness, SamIsSteadyOthersAreNot) {
   const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
   const double linear =

@@ -13,22 +13,15 @@
 
 namespace pita::render {
 
+// By default the figure prints the ARA that `pita measure` and claims compare.
+static_assert(scene::AraLayer{}.grid == kDefaultAraGrid);
+
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::AraLayer& layer) {
   const std::vector<scene::ShapeOutline>& shapes = panel.panel().shapes;
   if (shapes.empty()) panel.fail("an ara layer samples the panel's shapes, and the panel has none");
-  Point low = shapes.front().points.front(), high = low;
-  for (const Point p : panel.body_points()) {
-    low = {std::min(low.real(), p.real()), std::min(low.imag(), p.imag())};
-    high = {std::max(high.real(), p.real()), std::max(high.imag(), p.imag())};
-  }
-  std::vector<Eigen::Vector2d> points;
-  for (int i = 0; i < layer.grid; ++i) {
-    for (int j = 0; j < layer.grid; ++j) {
-      const double x = low.real() + (high.real() - low.real()) * i / (layer.grid - 1);
-      const double y = low.imag() + (high.imag() - low.imag()) * j / (layer.grid - 1);
-      points.emplace_back(x, y);
-    }
-  }
+  std::vector<Eigen::Vector2d> vertices;
+  for (const Point p : panel.body_points()) vertices.emplace_back(p.real(), p.imag());
+  const std::vector<Eigen::Vector2d> points = ara_grid(vertices, layer.grid);  // as pita measure's (N28)
   const double ara = average_relative_acceleration(panel.motion().poses(), points);
   if (!std::isfinite(ara)) panel.fail("the ARA of this motion is not finite (a pose on the way is singular)");
   panel.push(-1, Label{fmt::format("ARA = {:.{}f}", ara, layer.digits), layer.at, layer.size, layer.color});
