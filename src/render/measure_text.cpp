@@ -82,7 +82,7 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
         pop = pop || p->pop;
       }
       return fmt::format("{} {}: {}{}{}", kind, name.parameter, number(value),
-                         name.kind == MeasureKind::turn ? " rad" : "", pop ? " (pop)" : "");
+                         name.kind == MeasureKind::turn ? " rad per unit" : "", pop ? " (pop)" : "");
     }
     case MeasureKind::handle_shift:
     case MeasureKind::angle:

@@ -63,7 +63,7 @@ TEST(MeasureText, OneLinePerNameWithTheNumbers) {
   EXPECT_EQ(lines[6], "gain B.q: 2.25 (pop)");  // the larger of B.q.x and B.q.y
   EXPECT_EQ(lines[7], "jump C.t: 1e-09");
   EXPECT_EQ(lines[8], "ARA: -");  // not a pose motion
-  EXPECT_EQ(lines[9], "turn B.q: 4.5 rad (pop)");
+  EXPECT_EQ(lines[9], "turn B.q: 4.5 rad per unit (pop)");
 }
 
 TEST(MeasureText, PoseLinesAndNoPop) {
