@@ -401,10 +401,11 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
   }
 }
 
-// Fig. D.36: P9 with WGM lies between its WAM and WHM variants.
+// Fig. D.36: P9 with WGM lies between its WAM and WHM variants (the three
+// panels; the fourth overlays them).
 TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig36-neville-means.json");
-  ASSERT_EQ(scene.panels.size(), 3u);
+  ASSERT_EQ(scene.panels.size(), 4u);
   EXPECT_EQ(track_keys(scene.panels[0]).options.path_mean, MeanKind::arithmetic);
   EXPECT_EQ(track_keys(scene.panels[1]).options.path_mean, MeanKind::geometric);
   EXPECT_EQ(track_keys(scene.panels[2]).options.magnitude_mean, MeanKind::harmonic);
