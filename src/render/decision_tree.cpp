@@ -20,10 +20,6 @@ const Color kQuestionFill{0.93, 0.93, 0.93, 1.0};
 const Color kLeafFill{0.80, 0.93, 0.80, 1.0};
 const Color kEdge{0.45, 0.45, 0.45, 1.0};
 
-std::vector<Point> rectangle(double x, double y, double w, double h) {
-  return {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
-}
-
 class Layout {
  public:
   Layout(const analysis::DecisionTree& tree, const analysis::AuditReport& report, const std::string& font)
@@ -91,13 +87,13 @@ class Layout {
     const double top = kTitleHeight + kLevel * depth;
     if (!n.question) {
       const double h = 38.0;
-      out.push_back(FilledPath{{rectangle(x - 0.5 * w, top, w, h)}, kLeafFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
+      out.push_back(FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kLeafFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
       out.push_back(centred(leaf_text(n), kLeafSize, {x, top + 12.0}, kInk));
       out.push_back(centred(letters_text(n), kLettersSize, {x, top + 27.0}, kInk));
       return;
     }
     const double h = 24.0;
-    out.push_back(FilledPath{{rectangle(x - 0.5 * w, top, w, h)}, kQuestionFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
+    out.push_back(FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kQuestionFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
     out.push_back(centred(std::string(info(*n.question).id) + "?", kQuestionSize, {x, top + 0.5 * h}, kInk));
     for (const auto& [child, word] : {std::pair{n.yes, "yes"}, std::pair{n.no, "no"}}) {
       const Point from{x, top + h}, to{x_[static_cast<std::size_t>(child)], top + kLevel};

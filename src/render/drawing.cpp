@@ -82,4 +82,8 @@ bool is_finite(const Drawing& drawing) {
                      [](const Item& item) { return std::visit(FiniteCheck{}, item.shape); });
 }
 
+std::vector<Point> rectangle_corners(double x, double y, double width, double height) {
+  return {{x, y}, {x + width, y}, {x + width, y + height}, {x, y + height}};
+}
+
 }  // namespace pita::render

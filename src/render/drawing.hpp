@@ -106,6 +106,10 @@ struct Drawing {
 // their centre or anchor only); nullopt for an empty drawing.
 std::optional<scene::Box> bounds(const Drawing& drawing);
 
+// The four corners of the rectangle from (x, y), `width` by `height`, in
+// order (a table's cell, a tree's box).
+std::vector<Point> rectangle_corners(double x, double y, double width, double height);
+
 // The image's corners on the plane: pixels (0, 0), (w, 0), (w, h), (0, h).
 std::array<Point, 4> image_corners(const Image& image);
 

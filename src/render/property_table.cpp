@@ -20,10 +20,6 @@ const Color kFails{0.97, 0.80, 0.78, 1.0};
 const Color kInk{0.0, 0.0, 0.0, 1.0};
 const Color kDiffers{0.85, 0.35, 0.0, 1.0};
 
-std::vector<Point> rectangle(double x, double y, double w, double h) {
-  return {{x, y}, {x + w, y}, {x + w, y + h}, {x, y + h}};
-}
-
 std::string letters(const std::vector<Method>& methods) {
   std::string out;
   for (Method m : methods) {
@@ -74,12 +70,12 @@ PropertyTable property_table(const analysis::AuditReport& report) {
       const Method m = report.methods[j];
       const analysis::AuditCell& c = report.cell(m, property);
       const double x = grid_x + kColumnWidth * static_cast<double>(j);
-      push(FilledPath{{rectangle(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
+      push(FilledPath{{rectangle_corners(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
       push(Label{fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), {x + 4.0, y + kRowHeight / 2},
                  10.0, kInk});
       const std::optional<bool> said = analysis::printed(m, property);
       if (said && *said != c.holds) {
-        push(Polyline{rectangle(x + 2.0, y + 2.0, kColumnWidth - 4.0, kRowHeight - 4.0), true,
+        push(Polyline{rectangle_corners(x + 2.0, y + 2.0, kColumnWidth - 4.0, kRowHeight - 4.0), true,
                       LineStyle{kDiffers, 2.0, 1.0, {}}});
       }
     }
