@@ -1,5 +1,9 @@
 #include "render/pose_panel.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -10,6 +14,7 @@
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
+#include "render/camera_choice.hpp"
 
 namespace pita::render {
 
@@ -22,9 +27,38 @@ const scene::PoseKeys<Pose>& pose_keys_of(const scene::Scene& scene, const scene
   throw RenderError(scene.path, panel.pointer, "these layers draw poses; this panel has none of this kind");
 }
 
+// The poses "camera": {"auto": true} keeps open: the panel's, and its
+// motion's frames at the panel's samples when it has a motion.
+std::vector<Affine3> seen_poses(const motion::Stage& stage, std::size_t index, const scene::SpacePoseKeys& keys) {
+  std::vector<Affine3> poses;
+  for (const TimedPose3& pose : keys.poses) poses.push_back(pose.pose);
+  if (keys.poses.empty()) return poses;
+  try {
+    const motion::SceneMotion& motion = stage.motion(index);
+    for (const double t : motion::uniform_times(motion.first(), motion.last(), stage.panel(index).samples)) {
+      poses.push_back(motion.pose3_at(t));
+    }
+  } catch (const motion::NoMotion&) {
+    // The poses alone: the layers that draw the motion report its error.
+  }
+  return poses;
+}
+
+// The least z of the solids' vertices at the poses (0 without any).
+double lowest_point(const std::vector<scene::Solid>& solids, const std::vector<Affine3>& poses) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Affine3& pose : poses) {
+    for (const scene::Solid& solid : solids) {
+      for (const Eigen::Vector3d& v : solid.vertices) lowest = std::min(lowest, apply(pose, v).z());
+    }
+  }
+  return std::isfinite(lowest) ? lowest : 0.0;
+}
+
 // In space, the camera looks at its target: given, else the centre of the
-// solids' vertices at the poses.
-Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& keys) {
+// solids' vertices at the poses; "auto" turns it (render/camera_choice.hpp).
+Projection camera_view(const motion::Stage& stage, std::size_t index, const scene::SpacePoseKeys& keys) {
+  const scene::Scene& scene = stage.scene();
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   if (scene.camera.target) {
     target = *scene.camera.target;
@@ -40,21 +74,24 @@ Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& ke
     }
     if (count > 0.0) target /= count;
   }
+  const scene::Camera camera =
+      scene.camera.automatic ? chosen_camera(scene.camera, scene.solids, seen_poses(stage, index, keys)) : scene.camera;
   try {
-    return Projection(scene.camera, target);
+    return Projection(camera, target);
   } catch (const std::invalid_argument& error) {
     throw RenderError(scene.path, "/camera", error.what());
   }
 }
 
 template <class Pose>
-PoseView<Pose> make_view(const scene::Scene& scene, const scene::PoseKeys<Pose>& keys) {
+PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const scene::PoseKeys<Pose>& keys) {
   if constexpr (std::is_same_v<Pose, Affine2>) {
-    (void)scene;
+    (void)stage;
+    (void)index;
     (void)keys;
     return {};
   } else {
-    return camera_view(scene, keys);
+    return camera_view(stage, index, keys);
   }
 }
 
@@ -68,7 +105,11 @@ PosePanel<Pose>::PosePanel(const motion::Stage& stage, std::size_t index, const 
       panel_(stage.panel(index)),
       selection_(selection),
       keys_(pose_keys_of<Pose>(stage.scene(), stage.panel(index))),
-      view_(make_view<Pose>(scene_, keys_)) {}
+      view_(make_view<Pose>(stage, index, keys_)) {
+  if constexpr (std::is_same_v<Pose, Affine3>) {
+    if (scene_.camera.shadow) ground_ = lowest_point(scene_.solids, seen_poses(stage, index, keys_));
+  }
+}
 
 template <class Pose>
 void PosePanel<Pose>::fail(const std::string& reason) const {
@@ -167,6 +208,53 @@ void PosePanel<Pose>::push(int index, Shape shape, bool moving) {
 template <class Pose>
 void PosePanel<Pose>::append(std::vector<Item> items) {
   for (Item& item : items) drawing_.items.push_back(std::move(item));
+}
+
+template <class Pose>
+void PosePanel<Pose>::cast_shadow(int index, std::vector<std::vector<Eigen::Vector3d>> faces, double opacity,
+                                  bool moving) {
+  shadows_.push_back({index, std::move(faces), opacity, moving});
+}
+
+template <class Pose>
+Drawing PosePanel<Pose>::take() {
+  if constexpr (std::is_same_v<Pose, Affine3>) {
+    if (!shadows_.empty() && scene_.camera.shadow) {
+      double ground = ground_;
+      for (const Shadow& shadow : shadows_) {
+        for (const auto& face : shadow.faces) {
+          for (const Eigen::Vector3d& x : face) ground = std::min(ground, x.z());
+        }
+      }
+      std::vector<Item> under;
+      for (const Shadow& shadow : shadows_) {
+        // The union of the faces' shadows: each contour turned counter-clockwise,
+        // so that the winding rule fills every point any face covers once.
+        std::vector<std::vector<Point>> contours;
+        for (const auto& face : shadow.faces) {
+          std::vector<Point> contour;
+          for (const Eigen::Vector3d& x : face) contour.push_back(image(Eigen::Vector3d(x.x(), x.y(), ground)));
+          double twice_area = 0.0;
+          for (std::size_t i = 0; i < contour.size(); ++i) {
+            const Point a = contour[i], b = contour[(i + 1) % contour.size()];
+            twice_area += a.real() * b.imag() - b.real() * a.imag();
+          }
+          if (twice_area < 0.0) std::reverse(contour.begin(), contour.end());
+          if (contour.size() >= 3 && twice_area != 0.0) contours.push_back(std::move(contour));
+        }
+        if (contours.empty()) continue;
+        Item& item = under.emplace_back();
+        item.layer = "/camera/shadow";
+        item.index = shadow.index;
+        item.shape = FilledPath{std::move(contours), *scene_.camera.shadow, shadow.opacity, std::nullopt};
+        item.moving = shadow.moving;
+      }
+      drawing_.items.insert(drawing_.items.begin(), std::make_move_iterator(under.begin()),
+                            std::make_move_iterator(under.end()));
+      shadows_.clear();
+    }
+  }
+  return std::move(drawing_);
 }
 
 template class PosePanel<Affine2>;

@@ -78,7 +78,13 @@ class PosePanel {
 
   void push(int index, Shape shape, bool moving = false);
   void append(std::vector<Item> items);
-  Drawing take() { return std::move(drawing_); }
+  // In space with "camera": {"shadow": ...}: the shadow of one solid at a
+  // pose (its faces, points of space), cast straight down on the ground: the
+  // plane z = the lowest point of the solids at the panel's poses and its
+  // motion's samples, or of any shadow lower still. take() paints every
+  // shadow first, under all the layers, at "/camera/shadow".
+  void cast_shadow(int index, std::vector<std::vector<Eigen::Vector3d>> faces, double opacity, bool moving);
+  Drawing take();
 
  private:
   const motion::Stage& stage_;
@@ -90,6 +96,14 @@ class PosePanel {
   PoseView<Pose> view_;
   std::string layer_;
   Drawing drawing_;
+  struct Shadow {
+    int index;
+    std::vector<std::vector<Eigen::Vector3d>> faces;
+    double opacity;
+    bool moving;
+  };
+  std::vector<Shadow> shadows_;
+  double ground_ = 0.0;  // z of the ground (space, with a shadow)
 };
 
 extern template class PosePanel<Affine2>;

@@ -7,11 +7,9 @@
 #include <Eigen/Geometry>
 #include <fmt/format.h>
 
-namespace pita::render {
+#include "render/camera_choice.hpp"
 
-namespace {
-constexpr double kDegree = std::numbers::pi / 180.0;
-}  // namespace
+namespace pita::render {
 
 Projection::Projection(const scene::Camera& camera, const Eigen::Vector3d& target)
     : target_(target), distance_(camera.distance), perspective_(camera.perspective) {
@@ -19,10 +17,9 @@ Projection::Projection(const scene::Camera& camera, const Eigen::Vector3d& targe
   if (perspective_ && !(distance_ > 0.0)) {
     throw std::invalid_argument(fmt::format("a perspective camera needs a distance > 0 (got {:g})", distance_));
   }
-  const double a = camera.azimuth * kDegree, e = camera.elevation * kDegree;
-  const Vector3d towards_eye(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
-  eye_ = target_ + distance_ * towards_eye;
-  forward_ = -towards_eye;
+  const Vector3d eye_direction = towards_eye(camera.azimuth, camera.elevation);
+  eye_ = target_ + distance_ * eye_direction;
+  forward_ = -eye_direction;
   const Vector3d world_up = std::abs(forward_.z()) > 0.999 ? Vector3d::UnitY() : Vector3d::UnitZ();
   right_ = forward_.cross(world_up).normalized();
   up_ = right_.cross(forward_);

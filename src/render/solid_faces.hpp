@@ -13,6 +13,10 @@
 
 namespace pita::render {
 
+// Newell's area vector of a polygon of space (any winding, not necessarily
+// planar): its unit normal times its area; zero for a degenerate polygon.
+Eigen::Vector3d area_vector(const std::vector<Eigen::Vector3d>& points);
+
 // A face to paint, how far its solid is (the mean depth of the solid's
 // vertices) and how far the face itself is.
 struct Face {
@@ -20,6 +24,9 @@ struct Face {
   double depth = 0.0;
   int index = -1;
   Shape shape;
+  int body = 0;                        // which posed solid (add_solid_faces counts them)
+  std::vector<Eigen::Vector3d> world;  // its corners in space (for its shadow)
+  double opacity = 1.0;
 };
 
 // The faces of `solid` under `pose`: filled and shaded (`fill` given) or as
@@ -30,7 +37,8 @@ void add_solid_faces(const PosePanel<Affine3>& panel, const scene::Solid& solid,
 
 // Back to front: solid by solid (by the mean depth of their vertices: no face
 // of a nearer solid under a farther one unless the solids overlap), and within
-// a solid face by face.
+// a solid face by face. With "camera": {"shadow": ...}, each solid also casts
+// its shadow (PosePanel::cast_shadow).
 void paint_faces(PosePanel<Affine3>& panel, std::vector<Face> faces, bool moving);
 
 }  // namespace pita::render

@@ -62,13 +62,19 @@ struct Solid {
 // axis from +x, elevation above the xy plane, degrees) at `distance` from
 // the target, looking at it with z up; orthographic (parallel) or
 // perspective projection onto the image plane, whose coordinates are the
-// figure's world coordinates.
+// figure's world coordinates. With `automatic` ("auto"), pita turns the
+// camera to the direction nearest the given one from which no pose is seen
+// edge-on (render/camera_choice.hpp). With a `shadow` colour, every solid
+// drawn casts its shadow, straight down, on the ground below the lowest one:
+// the depth cue of the figure.
 struct Camera {
   double azimuth = 35.0;
   double elevation = 25.0;
   double distance = 10.0;                 // > 0 for perspective
   bool perspective = false;
   std::optional<Eigen::Vector3d> target;  // default: the centre of the solids at the poses
+  bool automatic = false;
+  std::optional<Color> shadow;
 };
 
 // One cell of the grid: the scene's keyframes, method and options unless the

@@ -21,8 +21,10 @@ constexpr std::array<std::string_view, 18> kSpaceSceneFields = {
     "timing", "golden", "claims", "lint", "shapes", "camera", "layers", "title", "canvas", "panels"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
-constexpr std::array<std::string_view, 5> kCameraFields = {"azimuth", "elevation", "distance", "projection",
-                                                          "target"};
+constexpr std::array<std::string_view, 7> kCameraFields = {"azimuth", "elevation", "distance", "projection",
+                                                          "target",  "auto",      "shadow"};
+// "shadow": true: a light grey of the ground.
+constexpr Color kDefaultShadow{0.0, 0.0, 0.0, 0.14};
 constexpr std::array<std::string_view, 4> kSolidNames = {"cube", "tetrahedron", "F", "house"};
 constexpr std::array<std::string_view, 2> kProjections = {"orthographic", "perspective"};
 
@@ -252,6 +254,14 @@ Camera read_camera(const JsonReader& reader, const Json& value, const std::strin
     }
   }
   if (const Json* target = JsonReader::member(value, "target")) camera.target = read_point3(reader, *target, pointer + "/target");
+  if (const Json* automatic = JsonReader::member(value, "auto")) camera.automatic = reader.boolean(*automatic, pointer + "/auto");
+  if (const Json* shadow = JsonReader::member(value, "shadow")) {
+    if (shadow->is_boolean()) {
+      if (shadow->get<bool>()) camera.shadow = kDefaultShadow;
+    } else {
+      camera.shadow = reader.color(*shadow, pointer + "/shadow");
+    }
+  }
   return camera;
 }
 

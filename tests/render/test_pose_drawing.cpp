@@ -412,6 +412,70 @@ TEST(SpacePanelDrawing, WireframeWithoutFill) {
   }
 }
 
+// "camera": {"shadow": ...}: each cube drawn casts one shadow, painted
+// before every layer: its footprint on the ground, the plane of the lowest
+// vertex (z = 0 here, the second pose is lifted by 2), seen by the camera.
+// From straight above the shadow of a unit cube is a unit square, wound
+// counter-clockwise on the image.
+TEST(SpacePanelDrawing, ShadowsLieOnTheGroundUnderEverything) {
+  const auto scene_from = [](const std::string& camera) {
+    return scene::parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}],
+      "camera": )" + camera + R"(,
+      "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                {"t": 1, "matrix": [[1, 0, 0, -3], [0, 1, 0, 1], [0, 0, 1, 2]]}],
+      "samples": 3, "layers": [{"type": "shapes", "fill": "#808080"}, {"type": "poses"}]})",
+                              "s.json");
+  };
+  const scene::Scene above = scene_from(R"({"elevation": 90, "shadow": "#00000040", "target": [0, 0, 0]})");
+  const Drawing drawing = space_panel_drawing(above, above.panels[0]);
+  ASSERT_EQ(drawing.items.size(), 5u * (1 + 6));  // 3 frames and 2 poses: a shadow and 6 faces each
+  for (std::size_t i = 0; i < drawing.items.size(); ++i) {
+    EXPECT_EQ(drawing.items[i].layer == "/camera/shadow", i < 5) << i;
+  }
+  for (std::size_t i = 0; i < 5; ++i) {
+    const FilledPath& shadow = std::get<FilledPath>(drawing.items[i].shape);
+    EXPECT_EQ(shadow.fill, (scene::Color{0, 0, 0, 0x40 / 255.0}));
+    EXPECT_FALSE(shadow.outline.has_value());
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& contour : shadow.contours) {
+      double area = 0.0;
+      for (std::size_t k = 0; k < contour.size(); ++k) {
+        const Point a = contour[k], b = contour[(k + 1) % contour.size()];
+        area += a.real() * b.imag() - b.real() * a.imag();
+        x0 = std::min(x0, a.real()), x1 = std::max(x1, a.real());
+        y0 = std::min(y0, a.imag()), y1 = std::max(y1, a.imag());
+      }
+      EXPECT_GT(area, 0.0);
+    }
+    EXPECT_NEAR(x1 - x0, 1.0, 1e-12) << i;
+    EXPECT_NEAR(y1 - y0, 1.0, 1e-12) << i;
+  }
+  // From the side (+x, up is +z) every shadow lies on the line z = 0 of the
+  // image, whatever the height of its cube: it has no area, and is not drawn;
+  // from a little above, the lifted cube's shadow is below it on the image.
+  const scene::Scene side = scene_from(R"({"azimuth": 0, "elevation": 0, "shadow": true, "target": [0, 0, 0]})");
+  EXPECT_EQ(space_panel_drawing(side, side.panels[0]).items.size(), 5u * 6);
+  const scene::Scene low = scene_from(R"({"azimuth": 0, "elevation": 20, "shadow": true, "target": [0, 0, 0]})");
+  const Drawing seen = space_panel_drawing(low, low.panels[0]);
+  ASSERT_EQ(seen.items.size(), 5u * 7);
+  const auto lowest = [](const std::vector<std::vector<Point>>& contours) {
+    double y = 1e300;
+    for (const auto& c : contours) {
+      for (const Point p : c) y = std::min(y, p.imag());
+    }
+    return y;
+  };
+  const FilledPath& lifted = std::get<FilledPath>(seen.items[4].shape);  // the second pose's
+  EXPECT_EQ(seen.items[4].index, 1);
+  EXPECT_EQ(lifted.fill.a, 0.14);
+  double lifted_bottom = 1e300;
+  for (std::size_t i = 5; i < seen.items.size(); ++i) {
+    if (seen.items[i].layer != "/layers/1" || seen.items[i].index != 1) continue;
+    lifted_bottom = std::min(lifted_bottom, lowest(std::get<FilledPath>(seen.items[i].shape).contours));
+  }
+  EXPECT_LT(lowest(lifted.contours), lifted_bottom - 1.0);  // 2 up, seen at 20 degrees: cos 20 * 2 lower
+}
+
 // Panels of a 3D scene: each draws its own motion (its poses, or the scene's)
 // and its own layers, named by the panel's pointer. Seen from +x, the image's
 // right is +y: the panel that translates by 3 along y moves the cube's corner
