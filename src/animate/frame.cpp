@@ -8,6 +8,7 @@
 #include "motion/no_motion.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
+#include "render/label_placement.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::animate {
@@ -75,6 +76,7 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
     figure.drawings = render::frame_drawings(scene, &selection);
   }
   figure.placements = placements;
+  render::place_labels(scene, figure.drawings, figure.placements);  // against this frame's data
   return figure;
 }
 

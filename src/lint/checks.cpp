@@ -16,10 +16,6 @@ namespace {
 // touching: antialiasing and the ink's own rounding.
 constexpr double kSlack = 1.0;
 
-Rect shrunk(const Rect& r, double by) {
-  return {r.x + by, r.y + by, std::max(r.width - 2 * by, 0.0), std::max(r.height - 2 * by, 0.0)};
-}
-
 bool has_ink(const TextBox& t) { return t.box.width > 0.0 && t.box.height > 0.0; }
 
 std::string quoted(const std::string& text) {
@@ -34,22 +30,6 @@ std::string hex(const scene::Color& c) { return color_text(c); }
 
 std::string named(const std::string& pointer) { return pointer.empty() ? "the scene" : pointer; }
 
-// Whether `shape` lies under the box: one of its edges crosses it, or (with
-// `areas`) the box's centre is inside one of its filled areas.
-bool covers(const DataShape& shape, const Rect& box, bool areas) {
-  const Rect reach{shape.bounds.x - 0.5, shape.bounds.y - 0.5, shape.bounds.width + 1.0, shape.bounds.height + 1.0};
-  if (!intersects(reach, box)) return false;
-  for (const Segment& e : shape.edges) {
-    if (segment_meets(e, box)) return true;
-  }
-  if (!areas) return false;
-  const Point centre{box.x + 0.5 * box.width, box.y + 0.5 * box.height};
-  for (const auto& area : shape.areas) {
-    if (inside(area, centre)) return true;
-  }
-  return false;
-}
-
 // The layers whose data lies under the box, in order met. The layer that
 // draws the text counts by its strokes only: a text on its own layer's fill
 // (a table's cell) is how that layer shows it.
@@ -57,7 +37,7 @@ std::vector<std::string> layers_under(const PanelGeometry& panel, const Rect& bo
   std::vector<std::string> layers;
   for (const DataShape& shape : panel.data) {
     if (std::find(layers.begin(), layers.end(), shape.layer) != layers.end()) continue;
-    if (covers(shape, box, shape.layer != owner)) layers.push_back(shape.layer);
+    if (render::lies_under(shape, box, shape.layer != owner)) layers.push_back(shape.layer);
   }
   return layers;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "render/canvas_geometry.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
 
@@ -24,18 +25,12 @@ struct TextBox {
   TextKind kind = TextKind::label;
 };
 
-struct Segment {
-  Point a, b;
-};
-
-// One shape of a layer's data (not text), on the canvas.
-struct DataShape {
+// One shape of a layer's data (not text), on the canvas: its edges, filled
+// areas and bounds (render/canvas_geometry.hpp), and what it belongs to.
+struct DataShape : render::CanvasOutline {
   std::string layer;  // the layer's pointer
   std::string type;   // its "type" ("pattern", "poses", ...)
   int index = -1;     // its frame or keyframe, -1 if none
-  std::vector<Segment> edges;                // strokes, and the edges of fills
-  std::vector<std::vector<Point>> areas;     // filled contours and images (a text inside one is over data)
-  Rect bounds;        // of its edges and areas
   scene::Color color;     // of its stroke (a fill without outline: of the fill)
   std::string style;      // its colour, width and dash, as text: what tells series apart
   bool stroked = false;   // drawn with a line (not only filled)
@@ -69,10 +64,9 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
 // "#rrggbb".
 std::string color_text(const scene::Color& color);
 
-// Boxes.
-bool intersects(const Rect& a, const Rect& b);
-Rect united(const Rect& a, const Rect& b);
-bool segment_meets(const Segment& s, const Rect& r);  // any point of s inside r
-bool inside(const std::vector<Point>& contour, Point p);  // nonzero winding
+// Boxes (render/canvas_geometry.hpp).
+using render::intersects;
+using render::shrunk;
+using render::united;
 
 }  // namespace pita::lint

@@ -59,11 +59,18 @@ double LayerCost::shape_points() const {
 
 double LayerCost::shapes_units() const {
   double shapes = static_cast<double>(panel_.shapes.size());
+  double shadows = 0.0;  // "camera": {"shadow": ...}: a shape per solid, every face's corners again
   if (in_space()) {
     shapes = 0.0;
-    for (const scene::Solid& solid : scene_.solids) shapes += static_cast<double>(solid.faces.size());
+    for (const scene::Solid& solid : scene_.solids) {
+      shapes += static_cast<double>(solid.faces.size());
+      if (scene_.camera.shadow) {
+        shadows += kShapeUnits;
+        for (const std::vector<int>& face : solid.faces) shadows += static_cast<double>(face.size());
+      }
+    }
   }
-  return shapes * kShapeUnits + shape_points();
+  return shapes * kShapeUnits + shape_points() + shadows;
 }
 
 const std::vector<Keyframe>& LayerCost::keyframes() const {

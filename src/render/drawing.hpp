@@ -50,12 +50,17 @@ struct ArrowShape {
   LineStyle line;
 };
 
-// A text anchored at a point of the plane (labels); size in pixels.
+// A text anchored at a point of the plane (labels); size in pixels. With
+// `avoid_data` ("place": "auto"), the figure moves it around its point to
+// where it covers no data: `shift`, in canvas pixels, from where it starts
+// at its point (render/label_placement.hpp).
 struct Label {
   std::string text;
   Point at;
   double size = 12.0;
   Color color;
+  bool avoid_data = false;
+  Point shift{0.0, 0.0};
 };
 
 // A raster image (a PNG of "shapes", PITA Sec. 7.1) placed on the plane:

@@ -18,6 +18,7 @@
 #include "render/budget.hpp"
 #include "render/cairo_handles.hpp"
 #include "render/image_cache.hpp"
+#include "render/label_placement.hpp"
 #include "render/painter.hpp"
 #include "render/pose_drawing.hpp"
 #include "render/panel_drawing.hpp"
@@ -200,6 +201,7 @@ Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, doubl
     }
   }
   figure.placements = checked_layout(scene, figure.drawings);
+  place_labels(scene, figure.drawings, figure.placements);
   return figure;
 }
 

@@ -172,7 +172,7 @@ LegendGeometry legend_geometry(const Legend& legend, const Rect& area) {
 }
 
 TextPlacement label_placement(const Label& label, const ViewTransform& view) {
-  const Point at = view(label.at);
+  const Point at = view(label.at) + label.shift;
   return {at.real(), at.imag() - 0.6 * label.size, TextAlign::left};
 }
 

@@ -380,6 +380,7 @@ LabelLayer read_label(const Fields& fields) {
                                    fields.at("at"));
   fields.number("size", kTextSize, layer.size);
   fields.color("color", layer.color);
+  fields.choice("place", kLabelPlaceNames, kLabelPlaces, layer.avoid_data);
   return layer;
 }
 

@@ -30,6 +30,10 @@ inline constexpr Interval kTextSize{0.0, 200.0, /*min_open=*/true};
 
 inline constexpr std::array<std::string_view, 2> kBoxFields = {"min", "max"};
 inline constexpr std::array<std::string_view, 4> kLineFields = {"color", "width", "opacity", "dash"};
+// A label's "place": where its text goes (LabelLayer::avoid_data).
+inline constexpr std::array<std::string_view, 2> kLabelPlaceNames = {"at", "auto"};
+inline constexpr std::array<bool, 2> kLabelPlaces = {false, true};
+
 inline constexpr std::array<std::string_view, 4> kCornerNames = {"top-left", "top-right", "bottom-left",
                                                           "bottom-right"};
 inline constexpr std::array<LegendLayer::Corner, 4> kCorners = {

@@ -54,7 +54,7 @@ std::span<const LayerKind<PoseLayer>> pose_layer_table();
 
 // Kinds that both kinds of scene draw: their fields and readers (`poses`: in
 // a pose scene).
-inline constexpr std::array<std::string_view, 5> kLabelFields = {"type", "text", "at", "size", "color"};
+inline constexpr std::array<std::string_view, 6> kLabelFields = {"type", "text", "at", "size", "color", "place"};
 inline constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
 inline constexpr std::array<std::string_view, 12> kPlotFields = {
     "type", "box", "of", "methods", "colors", "point", "samples", "color", "width", "opacity", "dash", "marks"};

@@ -146,6 +146,9 @@ struct LabelLayer {  // "label": a text at a point of the plane
   Point at;
   double size = 12.0;                  // pixels
   Color color{0.0, 0.0, 0.0, 1.0};
+  // "place": "at" (the text starts at `at`) or "auto": the figure moves it
+  // around `at` to where it covers no data (render/label_placement.hpp).
+  bool avoid_data = false;
 };
 
 struct LegendLayer {  // "legend": the keyframes' colours and knots, and the method

@@ -39,6 +39,14 @@ TEST(LintChecks, TextOverData) {
   EXPECT_EQ(count(beside, "text-over-data"), 0) << listed(beside);
 }
 
+// "place": "auto" (render/label_placement.hpp): the same label over the
+// frames moves beside them, and the lint finds nothing.
+TEST(LintChecks, AnAutoLabelIsNotOverData) {
+  const Report moved = lint_text(arrow_scene(R"("layers": [{"type": "pattern"},
+      {"type": "label", "text": "over the frames", "at": [2.5, 1.5], "size": 16, "place": "auto"}])"));
+  EXPECT_TRUE(moved.findings.empty()) << listed(moved);
+}
+
 TEST(LintChecks, TextOverlap) {
   const Report two = lint_text(arrow_scene(R"("layers": [{"type": "pattern"},
       {"type": "label", "text": "first", "at": [0, 3.5]}, {"type": "label", "text": "second", "at": [0.2, 3.5]}])"));

@@ -1,6 +1,6 @@
-// The figure as the lint sees it (src/lint/geometry.cpp): segments and
-// boxes meet as geometry says, and each text, stroke and legend lands on
-// the canvas where the painter puts it, tagged with its layer.
+// The figure as the lint sees it (src/lint/geometry.cpp): each text, stroke
+// and legend lands on the canvas where the painter puts it, tagged with its
+// layer (the geometry of edges and boxes: tests/render/test_canvas_geometry.cpp).
 #include "lint/geometry.hpp"
 
 #include <gtest/gtest.h>
@@ -9,35 +9,6 @@
 
 namespace pita::lint {
 namespace {
-
-TEST(LintGeometry, SegmentMeetsBox) {
-  const Rect box{10, 10, 20, 10};  // x 10..30, y 10..20
-  EXPECT_TRUE(segment_meets({{0, 15}, {40, 15}}, box));   // through it
-  EXPECT_TRUE(segment_meets({{12, 12}, {14, 14}}, box));  // inside it
-  EXPECT_TRUE(segment_meets({{0, 0}, {20, 15}}, box));    // ends inside
-  EXPECT_FALSE(segment_meets({{0, 0}, {40, 5}}, box));    // above it
-  EXPECT_FALSE(segment_meets({{0, 25}, {40, 25}}, box));  // below, parallel
-  EXPECT_FALSE(segment_meets({{0, 29}, {14, 0}}, box));   // passes the corner (10, 10) on its outer side
-  EXPECT_FALSE(segment_meets({{0, 40}, {40, 0}}, {30, 30, 5, 5}));  // the diagonal x + y = 40 misses x, y >= 30
-}
-
-TEST(LintGeometry, InsideByWinding) {
-  const std::vector<Point> square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-  EXPECT_TRUE(inside(square, {5, 5}));
-  EXPECT_FALSE(inside(square, {15, 5}));
-  std::vector<Point> reversed(square.rbegin(), square.rend());
-  EXPECT_TRUE(inside(reversed, {5, 5}));  // either orientation (the painter's nonzero rule)
-}
-
-TEST(LintGeometry, BoxesUniteAndIntersect) {
-  EXPECT_TRUE(intersects({0, 0, 10, 10}, {5, 5, 10, 10}));
-  EXPECT_FALSE(intersects({0, 0, 10, 10}, {10, 0, 5, 5}));  // touching edges do not overlap
-  const Rect u = united({0, 0, 10, 10}, {20, -5, 1, 1});
-  EXPECT_DOUBLE_EQ(u.x, 0.0);
-  EXPECT_DOUBLE_EQ(u.y, -5.0);
-  EXPECT_DOUBLE_EQ(u.width, 21.0);
-  EXPECT_DOUBLE_EQ(u.height, 15.0);
-}
 
 // A label at a world point: its ink box starts at the point's canvas x and
 // is centred near its y; the pattern's frames are "pattern" data of

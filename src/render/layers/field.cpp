@@ -104,7 +104,8 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer) 
   if (layer.fixed_point && field->fixed_point()) {
     const Point q = field_point(*field->fixed_point());
     panel.push(-1, Circle{q, 0.012 * side, LineStyle{Color{0, 0, 0, 1}, 1.0, 1.0, {}}, Color{0, 0, 0, 1}});
-    panel.push(-1, Label{"q", q + Point{0.02 * side, 0.02 * side}, 12.0, Color{0, 0, 0, 1}});
+    // Beside the fixed point, off the integral curves through it.
+    panel.push(-1, Label{"q", q + Point{0.02 * side, 0.02 * side}, 12.0, Color{0, 0, 0, 1}, true});
   }
   if (panel.selection() == nullptr && !starts.empty()) {
     panel.push(-1, Label{field_check_text(*field, starts, us),

@@ -6,14 +6,14 @@
 namespace pita::render {
 
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::LabelLayer& layer) {
-  panel.push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  panel.push(-1, Label{layer.text, layer.at, layer.size, layer.color, layer.avoid_data});
 }
 
 // In an arrow scene.
 namespace detail {
 
 void PanelBuilder::add(const scene::LabelLayer& layer) {
-  push(-1, Label{layer.text, layer.at, layer.size, layer.color});
+  push(-1, Label{layer.text, layer.at, layer.size, layer.color, layer.avoid_data});
 }
 
 }  // namespace detail
