@@ -121,6 +121,14 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no frame of its pattern has a prediction");
       return largest;
     }
+    case MeasureKind::discrepancy_of:
+    case MeasureKind::discrepancy_time:
+      for (const DiscrepancyStats& d : m.discrepancy) {
+        if (d.predictor != measure.parameter) continue;
+        if (d.frames == 0) break;
+        return measure.kind == MeasureKind::discrepancy_of ? d.max : d.t_of_max;
+      }
+      unmeasured(stage, pointer, panel, measure, "no frame of its pattern has this prediction");
     case MeasureKind::path_length:
     case MeasureKind::turning:
       if (!m.path_p) unmeasured(stage, pointer, panel, measure, "its motion has no path");

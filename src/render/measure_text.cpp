@@ -32,6 +32,13 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
       }
       return "E max: " + values;
     }
+    case MeasureKind::discrepancy_of:
+    case MeasureKind::discrepancy_time:
+      for (const analysis::DiscrepancyStats& d : m.discrepancy) {
+        if (d.predictor != name.parameter || d.frames == 0) continue;
+        return fmt::format("E max ({}): {} at t = {}", d.predictor, number(d.max), number(d.t_of_max));
+      }
+      return fmt::format("E max ({}): -", name.parameter);
     case MeasureKind::path_length:
       if (!m.path_p) return "length: -";
       return m.path_q ? fmt::format("length p {}, q {}", number(m.path_p->length), number(m.path_q->length))

@@ -1,5 +1,6 @@
 #include "scene/measure_name.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -15,7 +16,7 @@ namespace {
 
 using detail::quoted_choices;
 
-constexpr std::array<MeasureEntry, 19> kMeasures{{
+constexpr std::array<MeasureEntry, 21> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
     {"path-length", MeasureKind::path_length, MeasureScene::arrows},
     {"turning", MeasureKind::turning, MeasureScene::arrows},
@@ -35,7 +36,12 @@ constexpr std::array<MeasureEntry, 19> kMeasures{{
     {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
     {"frame-distance:", MeasureKind::frame_distance, MeasureScene::arrows, true},
     {"property:", MeasureKind::property, MeasureScene::arrows, true},
+    {"discrepancy:", MeasureKind::discrepancy_of, MeasureScene::arrows, true},
+    {"discrepancy-t:", MeasureKind::discrepancy_time, MeasureScene::arrows, true},
 }};
+
+// The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).
+constexpr std::array<std::string_view, 3> kPredictors = {"previous", "average", "pita"};
 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
 constexpr std::string_view kPanelsPrefix = "/panels/";
@@ -93,7 +99,8 @@ std::string unknown(std::string_view text, MeasureScene scene) {
   if (scene == MeasureScene::arrows) {
     reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
               "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
-              "panel, \"/panels/1\") and t a time, or in a claim \"frame-distance:/panels/K\" and "
+              "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
+              "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
               "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
   }
   return reason;
@@ -124,6 +131,12 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
       return fmt::format("\"{}\" must be \"property:NAME\", NAME a property of Sec. 4 as `pita audit` names it "
                          "(\"locally-perseverant\", \"handle-invariant\", ...)",
                          text);
+    }
+    measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::discrepancy_of || found->kind == MeasureKind::discrepancy_time) {
+    if (std::find(kPredictors.begin(), kPredictors.end(), rest) == kPredictors.end()) {
+      return fmt::format("\"{}\" must be \"{}P\", P a predictor of Sec. 6.1: {}", text, found->name,
+                         quoted_choices(kPredictors));
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {

@@ -15,6 +15,8 @@
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow scenes, in a claim: how far
 //       the panel's frames are from panel K's (analysis/comparison.hpp)
+//   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
+//       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value
 //       `pita audit` measures for property NAME on the panel's three keyframes
 //       (its deviation, or for winding-aware and knot-controlled its reaction)
@@ -40,6 +42,7 @@ enum class MeasureKind {
   scale_step, turn_step, scale_min, scale_max,  // the drawn frames (analysis/frame_steps.hpp)
   frame_distance,    // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
   property,          // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
+  discrepancy_of, discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
 };
 
 // Which scenes measure it: `pita measure` measures arrow motions and pose
@@ -60,7 +63,7 @@ std::span<const MeasureEntry> measure_entries();
 struct MeasureName {
   MeasureKind kind = MeasureKind::overreaction;
   std::string text;        // as written: "gain:B.q", "angle:P8@0.25"
-  std::string parameter;   // gain, turn, jump: "B.q"; property: its name
+  std::string parameter;   // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor
   Method method{};         // angle: the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
   // frame-distance: the other panel. Only a claim may name a panel (its

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "analysis/claims.hpp"
+#include "analysis/measure.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::analysis {
@@ -119,6 +120,33 @@ TEST(Claims, PropertiesOfSection4OnThePanelsKeyframes) {
   } catch (const scene::SceneError& error) {
     EXPECT_NE(error.reason().find("measured on three keyframes"), std::string::npos) << error.reason();
   }
+}
+
+// "discrepancy:P" and "discrepancy-t:P": the largest E of one predictor of
+// Sec. 6.1 and its time. The steady SMA is its neighbours' steady average
+// at every frame (E = 0 for "average"), though each frame differs from the
+// one before; on P1 each name is that predictor's row of `pita measure`.
+TEST(Claims, DiscrepancyOfOnePredictorAndWhen) {
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "discrepancy:average", "below": 1e-9})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "discrepancy:previous", "above": 1e-3})").held);
+  const scene::Scene scene = with_claims(R"({"says": "s", "panel": 1, "measure": "pop", "is": false})");
+  const MotionMeasures p1 = measure_panel(motion::Stage(scene), 1);
+  int predictors = 0;
+  for (const DiscrepancyStats& d : p1.discrepancy) {
+    if (d.frames == 0) continue;
+    ++predictors;
+    EXPECT_TRUE(only(fmt::format(R"({{"says": "s", "panel": 1, "measure": "discrepancy:{}", "near": {:.17g}}})",
+                                 d.predictor, d.max))
+                    .held)
+        << d.predictor;
+    EXPECT_TRUE(only(fmt::format(R"({{"says": "s", "panel": 1, "measure": "discrepancy-t:{}", "near": {:.17g}}})",
+                                 d.predictor, d.t_of_max))
+                    .held)
+        << d.predictor;
+  }
+  EXPECT_EQ(predictors, 3);
+  // The predictors differ here, so that a claim reading the wrong one would fail.
+  EXPECT_NE(p1.discrepancy[0].max, p1.discrepancy[1].max);
 }
 
 TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {

@@ -66,6 +66,16 @@ TEST(MeasureText, OneLinePerNameWithTheNumbers) {
   EXPECT_EQ(lines[9], "turn B.q: 4.5 rad per unit (pop)");
 }
 
+// One predictor's largest E and when; a predictor without frames is "-".
+TEST(MeasureText, DiscrepancyOfOnePredictor) {
+  const std::vector<std::string> lines = measure_lines(
+      arrows_measured(), parsed({"discrepancy:average", "discrepancy-t:previous", "discrepancy:pita"}));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0], "E max (average): 0.0125 at t = 0.5");
+  EXPECT_EQ(lines[1], "E max (previous): 1.5 at t = 0.25");
+  EXPECT_EQ(lines[2], "E max (pita): -");
+}
+
 TEST(MeasureText, PoseLinesAndNoPop) {
   analysis::MotionMeasures m;
   m.kind = analysis::MeasuredKind::plane_poses;

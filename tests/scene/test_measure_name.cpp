@@ -47,7 +47,10 @@ TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
     const std::string argument = entry.kind == MeasureKind::angle            ? "P6@0.5"
                                  : entry.kind == MeasureKind::frame_distance ? "/panels/1"
                                  : entry.kind == MeasureKind::property       ? "pop-free"
-                                                                             : "A.p";
+                                 : entry.kind == MeasureKind::discrepancy_of ||
+                                           entry.kind == MeasureKind::discrepancy_time
+                                     ? "average"
+                                     : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted(text, entry.scene).kind, entry.kind) << text;
     const MeasureScene other = entry.scene == MeasureScene::arrows ? MeasureScene::poses : MeasureScene::arrows;
@@ -63,6 +66,18 @@ TEST(MeasureName, PropertiesAreNamedInLowerCaseWords) {
   EXPECT_EQ(local.parameter, "locally-perseverant");
   for (const char* bad : {"property:", "property:Pop", "property:pop free", "property:a.b"}) {
     EXPECT_NE(refused(bad).find("must be \"property:NAME\""), std::string::npos) << bad;
+  }
+}
+
+// "discrepancy:P", "discrepancy-t:P": P one of the three predictors of Sec. 6.1.
+TEST(MeasureName, DiscrepancyNamesAPredictor) {
+  const MeasureName worst = accepted("discrepancy:pita");
+  EXPECT_EQ(worst.kind, MeasureKind::discrepancy_of);
+  EXPECT_EQ(worst.parameter, "pita");
+  EXPECT_EQ(accepted("discrepancy-t:previous").kind, MeasureKind::discrepancy_time);
+  for (const char* bad : {"discrepancy:", "discrepancy:mean", "discrepancy-t:Average"}) {
+    EXPECT_NE(refused(bad).find("a predictor of Sec. 6.1: \"previous\", \"average\" or \"pita\""), std::string::npos)
+        << bad << ": " << refused(bad);
   }
 }
 
