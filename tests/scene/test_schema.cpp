@@ -679,6 +679,8 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
       angle = std::string(entry.name);
     } else if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::property) {
       continue;  // claims only: the schema's "measureName" (below)
+    } else if (entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time) {
+      continue;  // a pattern of their own (below)
     } else {
       parameters.emplace_back(entry.name.substr(0, entry.name.size() - 1));
     }
@@ -688,14 +690,23 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
   for (const std::string& name : parameters) alternatives += (alternatives.empty() ? "" : "|") + name;
   EXPECT_EQ(items.at(1).at("pattern").get<std::string>().rfind("^(" + alternatives + "):", 0), 0u);
   EXPECT_EQ(items.at(2).at("pattern").get<std::string>().rfind("^" + angle, 0), 0u);
-  EXPECT_EQ(items.size(), 3u);
+  // "discrepancy:P" and "discrepancy-t:P", P a predictor of Sec. 6.1 (the parser's
+  // test refuses any other: tests/scene/test_measure_name.cpp).
+  EXPECT_EQ(items.at(3).at("pattern"), "^discrepancy(-t)?:(previous|average|pita)$");
+  for (const char* name : {"discrepancy:", "discrepancy-t:"}) {
+    const auto entries = measure_entries();
+    EXPECT_TRUE(std::any_of(entries.begin(), entries.end(),
+                            [&](const MeasureEntry& e) { return e.argument && e.name == name; }))
+        << name;
+  }
+  EXPECT_EQ(items.size(), 4u);
   // A claim's measures: the layer's, "frame-distance:" and "property:" (whose names
   // tests/analysis/test_claims.cpp checks against the table of properties).
   const nlohmann::json& claim = schema.at("definitions").at("measureName").at("anyOf");
-  ASSERT_EQ(claim.size(), 5u);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(claim.at(i), items.at(i));
-  EXPECT_EQ(claim.at(3).at("pattern"), "^frame-distance:/panels/[0-9]+$");
-  EXPECT_EQ(claim.at(4).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
+  ASSERT_EQ(claim.size(), 6u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(claim.at(i), items.at(i));
+  EXPECT_EQ(claim.at(4).at("pattern"), "^frame-distance:/panels/[0-9]+$");
+  EXPECT_EQ(claim.at(5).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
 }
 
 // The one table of method options and their values (core/pitas/method_options.hpp)
