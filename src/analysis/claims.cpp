@@ -145,6 +145,9 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
     case MeasureKind::ara:
       if (!m.ara) unmeasured(stage, pointer, panel, measure, "ARA is measured on poses");
       return *m.ara;
+    case MeasureKind::velocity_jump:
+      if (!m.velocity_jump) unmeasured(stage, pointer, panel, measure, "velocity jumps are measured on poses");
+      return *m.velocity_jump;
     case MeasureKind::area:
       if (!m.area) unmeasured(stage, pointer, panel, measure, "the area is measured on poses");
       return m.area->excursion;

@@ -251,6 +251,33 @@ std::vector<Eigen::Vector3d> ara_points3(const scene::Scene& scene) {
   return points;
 }
 
+// The largest jump of a point's velocity between consecutive samples,
+// |c_i - c_(i-1)| for consecutive chords c of the paths of `points` under
+// the poses at `times`, over the mean chord of all of them
+// (MotionMeasures::velocity_jump); 0 for a body that does not move.
+template <class PoseMotionT, class Vector>
+double velocity_jump(const PoseMotionT& poses, std::span<const Vector> points, const std::vector<double>& times) {
+  std::vector<Vector> previous(points.size()), before(points.size());
+  double jump = 0.0, chords = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    const auto pose = poses.at(times[i]);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      const Vector x = pita::apply(pose, points[k]);
+      if (i >= 1) {
+        const Vector chord = x - previous[k];
+        chords += chord.norm();
+        ++count;
+        if (i >= 2) jump = std::max(jump, (chord - before[k]).norm());
+        before[k] = chord;
+      }
+      previous[k] = x;
+    }
+  }
+  const double mean = count > 0 ? chords / static_cast<double>(count) : 0.0;
+  return mean > 0.0 ? jump / mean : 0.0;
+}
+
 // ARA of the pose motion (its own time, no warp) and the monotonicity of
 // det L: the area in the plane, the volume in space. One template for both.
 template <class PoseMotionT, class Vector>
@@ -266,6 +293,7 @@ void measure_pose_motion(const PoseMotionT& poses, std::span<const Vector> point
   }
   out.area = area_stats(times, dets);
   if (!std::isfinite(*out.ara)) throw std::domain_error("ARA is not finite");
+  out.velocity_jump = velocity_jump(poses, points, times);
 }
 
 }  // namespace

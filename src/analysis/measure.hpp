@@ -112,6 +112,11 @@ struct MotionMeasures {
   // Poses.
   std::optional<double> ara;
   std::optional<AreaStats> area;
+  // How much the velocity of the ARA points jumps: the largest change between
+  // consecutive chords of their paths sampled at path_samples times, over
+  // the mean chord. A velocity that jumps at a pose (a polySAM's) keeps it
+  // near its relative jump; a smooth motion's shrinks as samples grow.
+  std::optional<double> velocity_jump;
 };
 
 // The diameter of the set of keyframe endpoints {p, q}: the length unit of

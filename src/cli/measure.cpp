@@ -96,6 +96,7 @@ std::string json_motion(const MotionMeasures& m) {
     s += "}";
   }
   if (m.ara) s += fmt::format(",\n     \"ara\": {}", number(*m.ara));
+  if (m.velocity_jump) s += fmt::format(",\n     \"velocity_jump\": {}", number(*m.velocity_jump));
   if (m.area) {
     // det L: the area of the plane's poses, the volume of poses of space.
     s += fmt::format(
@@ -134,7 +135,7 @@ std::string to_csv(const std::vector<MotionMeasures>& all) {
       "previous_max,previous_mean,previous_t,average_max,average_mean,average_t,pita_max,pita_mean,pita_t,"
       "p_length,p_turning,q_length,q_turning,winding_min,winding_max,"
       "most_sensitive,most_sensitive_gain,pop,largest_jump_parameter,largest_jump,ara,area_monotone,area_excursion,"
-      "area_t";
+      "area_t,velocity_jump";
   for (const auto& name : names) s += ",gain_" + name;
   s += '\n';
   const auto opt = [](const std::optional<double>& x) { return x ? number(*x) : std::string(); };
@@ -168,6 +169,7 @@ std::string to_csv(const std::vector<MotionMeasures>& all) {
     row.push_back(m.area ? (m.area->monotone ? "true" : "false") : "");
     row.push_back(m.area ? number(m.area->excursion) : "");
     row.push_back(m.area ? number(m.area->t_of_excursion) : "");
+    row.push_back(opt(m.velocity_jump));
     for (const auto& name : names) {
       std::string cell;
       for (const auto& p : m.parameters) {
@@ -236,14 +238,15 @@ std::string to_md(const std::string& path, const std::vector<MotionMeasures>& al
   for (const MeasuredKind kind : {MeasuredKind::plane_poses, MeasuredKind::space_poses}) {
     const auto shown = [&](const MotionMeasures& m) { return m.kind == kind && !m.no_motion; };
     if (std::none_of(all.begin(), all.end(), shown)) continue;
-    s += fmt::format("| panel | method | ARA | {0} monotone | largest excursion (at t) | det L first, last |\n"
-                     "|---|---|---|---|---|---|\n",
+    s += fmt::format("| panel | method | ARA | {0} monotone | largest excursion (at t) | det L first, last | velocity jump |\n"
+                     "|---|---|---|---|---|---|---|\n",
                      kind == MeasuredKind::plane_poses ? "area" : "volume");
     for (const auto& m : all) {
       if (!shown(m)) continue;
-      s += fmt::format("| {} | {} | {} | {} | {} (t = {}) | {}, {} |\n", panel_name(m), md_cell(m.method),
+      s += fmt::format("| {} | {} | {} | {} | {} (t = {}) | {}, {} | {} |\n", panel_name(m), md_cell(m.method),
                        short_number(*m.ara), m.area->monotone ? "yes" : "no", short_number(m.area->excursion),
-                       short_number(m.area->t_of_excursion), short_number(m.area->first), short_number(m.area->last));
+                       short_number(m.area->t_of_excursion), short_number(m.area->first), short_number(m.area->last),
+                       short_number(m.velocity_jump.value_or(0.0)));
     }
     s += '\n';
   }

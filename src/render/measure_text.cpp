@@ -69,6 +69,8 @@ std::string line(const analysis::MotionMeasures& m, const scene::MeasureName& na
     }
     case MeasureKind::ara:
       return m.ara ? fmt::format("ARA {}", number(*m.ara)) : "ARA: -";
+    case MeasureKind::velocity_jump:
+      return m.velocity_jump ? fmt::format("velocity jump {}", number(*m.velocity_jump)) : "velocity jump: -";
     case MeasureKind::area:
       if (!m.area) return "area: -";
       return m.area->monotone ? std::string("area monotone")

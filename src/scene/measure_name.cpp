@@ -16,7 +16,7 @@ namespace {
 
 using detail::quoted_choices;
 
-constexpr std::array<MeasureEntry, 21> kMeasures{{
+constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
     {"path-length", MeasureKind::path_length, MeasureScene::arrows},
     {"turning", MeasureKind::turning, MeasureScene::arrows},
@@ -30,6 +30,7 @@ constexpr std::array<MeasureEntry, 21> kMeasures{{
     {"scale-max", MeasureKind::scale_max, MeasureScene::arrows},
     {"ara", MeasureKind::ara, MeasureScene::poses},
     {"area", MeasureKind::area, MeasureScene::poses},
+    {"velocity-jump", MeasureKind::velocity_jump, MeasureScene::poses},
     {"gain:", MeasureKind::gain, MeasureScene::arrows, true},
     {"turn:", MeasureKind::turn, MeasureScene::arrows, true},
     {"jump:", MeasureKind::jump, MeasureScene::arrows, true},

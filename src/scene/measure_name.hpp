@@ -4,7 +4,7 @@
 //
 //   "discrepancy-max", "path-length", "turning", "winding-range",
 //   "overreaction", "pop", "handle-shift"        arrow scenes
-//   "ara", "area"                                 pose scenes
+//   "ara", "area", "velocity-jump"                pose scenes
 //   "gain:K.x", "turn:K.x", "jump:K.x"           arrow scenes: one keyframe
 //       parameter, K a keyframe (A..Z, K27, ...), x one of p, q, p.x, p.y,
 //       q.x, q.y, m, w, t ("gain:B.q" is the larger of B.q.x and B.q.y)
@@ -43,6 +43,7 @@ enum class MeasureKind {
   frame_distance,    // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
   property,          // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
   discrepancy_of, discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
+  velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
 };
 
 // Which scenes measure it: `pita measure` measures arrow motions and pose

@@ -191,6 +191,29 @@ TEST(Measure, PoseMotionsAraAndArea) {
   EXPECT_NEAR(linear.area->t_of_excursion, 0.5, 1e-12);
 }
 
+// The velocity jump: a polySAM of two translations, by (1, 0) then by (0, 1),
+// turns every point's velocity from (1, 0) to (0, 1) at t = 1 (a sample:
+// 2048 over [0, 2]): a jump of sqrt 2 at the mean speed 1. One translation
+// does not jump, and the SAM of a rotation (smooth) by about one step's angle.
+TEST(Measure, VelocityJumpOfAPolySamAtItsMiddlePose) {
+  const MotionMeasures two = measure_text(R"({"method": "polySAM",
+      "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[1, 0, 1], [0, 1, 0]]},
+                {"t": 2, "matrix": [[1, 0, 1], [0, 1, 1]]}]})");
+  ASSERT_FALSE(two.no_motion) << *two.no_motion;
+  ASSERT_TRUE(two.velocity_jump);
+  EXPECT_NEAR(*two.velocity_jump, std::sqrt(2.0), 1e-9);
+  const MotionMeasures one = measure_text(R"({"method": "SAM",
+      "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[1, 0, 1], [0, 1, 0]]}]})");
+  EXPECT_LT(*one.velocity_jump, 1e-9);
+  const MotionMeasures turn = measure_text(R"({"method": "SAM",
+      "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 0], [1, 0, 0]]}]})");
+  // A point at radius r: chords of 2 r sin(phi / 2), each turned by phi = (pi / 2) / 2048 from
+  // the last: a jump of 2 sin(phi / 2) times the farthest point's radius over the mean one.
+  const double phi = M_PI / 2.0 / 2048.0;
+  EXPECT_GT(*turn.velocity_jump, 2.0 * std::sin(phi / 2.0));
+  EXPECT_LT(*turn.velocity_jump, 4.0 * phi);
+}
+
 // The ARA that pita measure (and claims) report is the one an "ara" layer
 // prints: over the default grid of the box of the panel's shapes. Linear
 // interpolation from the identity to the scaling by 2: |dw/du| = |p| / (1 + u)^2,

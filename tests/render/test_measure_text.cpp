@@ -81,9 +81,10 @@ TEST(MeasureText, PoseLinesAndNoPop) {
   m.kind = analysis::MeasuredKind::plane_poses;
   m.ara = 4.25;
   m.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
-  const std::vector<scene::MeasureName> show = parsed({"ara", "area", "pop"});
+  m.velocity_jump = 0.375;
+  const std::vector<scene::MeasureName> show = parsed({"ara", "area", "pop", "velocity-jump"});
   EXPECT_EQ(measure_lines(m, show), (std::vector<std::string>{"ARA 4.25", "area not monotone (dip 0.125 at t = 0.5)",
-                                                              "pop: -"}));
+                                                              "pop: -", "velocity jump 0.375"}));
   analysis::MotionMeasures calm = arrows_measured();
   calm.pops = false;
   calm.largest_jump = 0;

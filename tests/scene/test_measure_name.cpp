@@ -128,7 +128,7 @@ TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
                             "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
                             "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
   EXPECT_EQ(refused("handle-shift", MeasureScene::poses),
-            "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\" or \"area\"");
+            "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
   EXPECT_NE(refused("angle:P6@0.5", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
   EXPECT_NE(refused("gain:A.p", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
 }
@@ -136,7 +136,7 @@ TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
 TEST(MeasureName, UnknownNamesGetSuggestionsOrTheList) {
   EXPECT_EQ(refused("pops"), "unknown measure \"pops\"; did you mean \"pop\"?");
   EXPECT_NE(refused("zzzzzz").find("\"angle:M@t\""), std::string::npos);
-  EXPECT_EQ(refused("zzzzzz", MeasureScene::poses), "unknown measure \"zzzzzz\"; pose scenes measure \"ara\" or \"area\"");
+  EXPECT_EQ(refused("zzzzzz", MeasureScene::poses), "unknown measure \"zzzzzz\"; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
 }
 
 TEST(MeasureName, DefaultsOfEachSceneKind) {
