@@ -156,7 +156,7 @@ std::string counterexample_scene(const AuditReport& report, const AuditCell& cel
   const Probe& w = cell.worst;
   std::string check = w.relation;
   for (const auto& [name, value] : w.parameters) check += fmt::format("; {} = {:.17g}", name, value);
-  // The swapped keyframes of Eq. 42 come in the order P(b, B, a, A, c, C, t)
+  // The swapped keyframes of PITA Eq. 42 come in the order P(b, B, a, A, c, C, t)
   // takes them: the counterpart panel keeps that order ("knots": "as-given",
   // docs/paper-notes.md N41).
   const bool two = w.counterpart.has_value();

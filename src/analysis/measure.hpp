@@ -1,6 +1,6 @@
 // `pita measure`: goodness measures of a scene's motions as numbers (PITA
 // paper Sec. 6, SAM paper Sec. 2.4 and 6; docs/paper-notes.md N37):
-//   - discrepancy E (Eq. 47) of each frame against its prediction by the three
+//   - discrepancy E (PITA Eq. 47) of each frame against its prediction by the three
 //     predictors of Sec. 6.1 (max, mean, t of the max);
 //   - path length and total turning of p and q;
 //   - the winding range;
@@ -51,7 +51,7 @@ constexpr double kPopRatio = 100.0;
 struct DiscrepancyStats {
   std::string predictor;   // "previous", "average", "pita"
   int frames = 0;          // frames that have a prediction (0: no statistics)
-  double max = 0.0;        // E, dimensionless (Eq. 47)
+  double max = 0.0;        // E, dimensionless (PITA Eq. 47)
   double mean = 0.0;
   double t_of_max = 0.0;   // scene time of the worst frame
 };

@@ -15,7 +15,7 @@ const std::vector<PrintedRow>& printed_table() {
        "the paper excepts isolated singular cases; so do we (branch cuts are measured by pop-free only)"},
       {Property::smooth, kPrintedPitas, "Sec. 4.2 (all chosen PITAs are infinitely differentiable)",
        "measured: the second derivative jumps at a time inside (a, c)",
-       {{Method::P4, "P4 joins two Bezier halves at b, C1 but not C2 there (Eq. 27-29, notes N3)"},
+       {{Method::P4, "P4 joins two Bezier halves at b, C1 but not C2 there (PITA Eq. 27-29, notes N3)"},
         {Method::P7, "with uneven knots the knot warp that P7 needs (the construction assumes even knots) is only C1 at b "
                 "(notes N17)"},
         {Method::P8, "with uneven knots the knot warp that P8 needs (the construction assumes even knots) is only C1 at b "

@@ -1,5 +1,5 @@
 // Predicting a frame of a motion from its neighbours (PITA paper Sec. 6.1),
-// the predictions the discrepancy measure E (Sec. 6.2, Eq. 47) compares each
+// the predictions the discrepancy measure E (Sec. 6.2, PITA Eq. 47) compares each
 // frame with (Fig. 17; docs/paper-notes.md N9).
 #pragma once
 
@@ -14,7 +14,7 @@
 namespace pita::analysis {
 
 // previous: D(t_{i-1}); average: the steady average M(D(t_{i-1}), D(t_{i+1}))
-// (Eq. 23); pita: the method through the frames just before (three, or two for
+// (PITA Eq. 23); pita: the method through the frames just before (three, or two for
 // SMA), at t_i (Sec. 7.5). The scene model names them ("predictor").
 using Predictor = scene::Predictor;
 

@@ -28,10 +28,10 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      "largest jump of the second derivative of p or q across a time in (a, c) (the knot b and two others), "
      "one-sided differences, relative to the second derivative plus the extent",
      false, 1e-2},
-    {Property::similarity_invariant, "similarity-invariant", "", "4.3, Eq. 40",
+    {Property::similarity_invariant, "similarity-invariant", "", "4.3, PITA Eq. 40",
      "largest distance between P(S A, S B, S C, t) and S P(A, B, C, t), over the extent of the moved keyframes",
      false, 1e-7},
-    {Property::symmetric, "symmetric", "", "4.4, Eq. 41",
+    {Property::symmetric, "symmetric", "", "4.4, PITA Eq. 41",
      "largest distance between P(a, A, b, B, c, C, t) and P(a, C, a + c - b, B, c, A, a + c - t), over the extent",
      false, 1e-7},
     {Property::handle_invariant, "handle-invariant", "H", "4.5",
@@ -52,9 +52,9 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      "largest distance from a new D(t).p to the old curve (extrapolated over half the span each side), over the "
      "extent",
      true, 1e-6},
-    {Property::order_independent, "order-independent", "O", "4.9, Eq. 42",
+    {Property::order_independent, "order-independent", "O", "4.9, PITA Eq. 42",
      "largest distance between P(b, B, a, A, c, C, t) and P(a, A, b, B, c, C, t), over the extent", false, 1e-7},
-    {Property::affine_invariant, "affine-invariant", "A", "4.10, Eq. 43",
+    {Property::affine_invariant, "affine-invariant", "A", "4.10, PITA Eq. 43",
      "largest distance between the ends of P(U A, U B, U C, t) and U applied to the ends of P(A, B, C, t) for an "
      "affinity U (zero-turn keyframes), over the extent",
      false, 1e-7},
@@ -62,7 +62,7 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      "largest change of the acceleration of p or q (global frame) over s = (t - a)/(c - a) in [0.1, 0.9], even "
      "knots, relative to the largest acceleration plus the extent",
      false, 1e-5},
-    {Property::radially_perseverant, "radially-perseverant", "L", "3.3, Eq. 35",
+    {Property::radially_perseverant, "radially-perseverant", "L", "3.3, PITA Eq. 35",
      "largest residual of p'' = K (p - f) (and the same for q) fitted by least squares over five times, even knots, "
      "relative to the largest acceleration plus the extent",
      false, 1e-5},

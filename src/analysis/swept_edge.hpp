@@ -1,5 +1,5 @@
 // The region swept by a moving edge (SAM paper Sec. 7.2, Fig. 10): the
-// grazing point of Eq. 8 (core/grazing_point.hpp) traced over time, the
+// grazing point of SAM Eq. 8 (core/grazing_point.hpp) traced over time, the
 // envelope it draws, and how far it moves along the edge. Under a SAM the
 // grazing parameter is constant (its path is the envelope); under rARAP it
 // is not, and a point grazing at one instant leaves the envelope at others.
@@ -59,7 +59,7 @@ inline constexpr int kMaxEnvelopeCrossings = 64;
 // the edge), one polyline per run of the trace's times. A run that leaves the
 // edge between two samples is extended to where it leaves, found by
 // bisection on "s is defined and on the edge" (so a pole of s, where the
-// denominator of Eq. 8 changes sign, is never taken for a crossing: s passes
+// denominator of SAM Eq. 8 changes sign, is never taken for a crossing: s passes
 // 0 or 1 continuously before it), the point's s snapped to the bound it
 // reaches (docs/paper-notes.md N67). World coordinates.
 std::vector<std::vector<Eigen::Vector2d>> envelope(const PoseTrack& motion, const Edge& edge,

@@ -206,7 +206,7 @@ Scene format (JSON; schema/scene.schema.json describes every field):
                )" + chain_list() + R"(
                (default "blend", "spiral" for SMA; README "Keyframe tracks")
   points       instead of keyframes: 4 or more {"t", "p": [x, y]}; the motion is the
-               point of Eq. 48-50 (README "Timed points"), printed as t, x, y
+               point of PITA Eq. 48-50 (README "Timed points"), printed as t, x, y
   samples      frames printed when neither --samples nor --t is given (default 9)
   timing       optional, how scene time runs through the motion (README "Timing"):
                {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}

@@ -1,5 +1,5 @@
 // Affinities of the plane (Sec. 3.3 and 4.10): x -> L x + b, with a 2x2
-// linear part L and a translation b. A keyframe "triangle" of PAM (Eq. 37-39)
+// linear part L and a translation b. A keyframe "triangle" of PAM (PITA Eq. 37-39)
 // is an affinity; an arrow is the special case of a similarity (affine_of).
 //
 // The verbs are the ones every value type of the core shares (STYLE.md):

@@ -215,11 +215,11 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
     // Around the double eigenvalue r (delta = 0, G1 meets G2): the limit 1/r.
     coefficient = atanh_ratio_series(k.delta / (k.r * k.r)) / k.r;
   } else if (k.delta < 0.0) {
-    // G1, Eq. 18 with atan2 (docs/paper-notes.md N15): theta in (0, pi).
+    // G1, SAM Eq. 18 with atan2 (docs/paper-notes.md N15): theta in (0, pi).
     const double omega = std::sqrt(-k.delta);
     coefficient = std::atan2(omega, k.r) / omega;
   } else {
-    // G2 and S1, Eq. 20: y = ln((chi + 1)/(chi - 1))/2 = atanh(s/r), chi = r/s,
+    // G2 and S1, SAM Eq. 20: y = ln((chi + 1)/(chi - 1))/2 = atanh(s/r), chi = r/s,
     // written ln(lambda1/lambda2)/2 with lambda2 = det/lambda1: atanh(s/r) would
     // lose (lambda1/lambda2) ulps to 1 - s/r when the eigenvalues are far apart.
     const double s = std::sqrt(k.delta);
@@ -387,7 +387,7 @@ Affine2 AffinePowers::at_small(double t, const Vector2d& b) const {
       break;
     }
     case Translation::fixed_point:
-      // Eq. 9: A^t(p) = L^t (p - q) + q, so the translation is (I - L^t) q,
+      // SAM Eq. 9: A^t(p) = L^t (p - q) + q, so the translation is (I - L^t) q,
       // q = (I - L)^-1 b the fixed point.
       result.b = -power_minus_identity(t) * (inverse_I_minus_L_ * b);
       break;

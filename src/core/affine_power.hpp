@@ -2,18 +2,18 @@
 // Affinity Roots") of the SAM paper, appendix A (A.1-A.5, Algorithm 1).
 //
 // An orientation-preserving affinity A: x -> L x + b (core/affine2.hpp) has
-// the real powers A^t = e^{t log A} (Eq. 1-2) exactly when L has a real
+// the real powers A^t = e^{t log A} (SAM Eq. 1-2) exactly when L has a real
 // logarithm (Sec. 5.1, Culver). With the fixed point q of A (A.1),
-//     A^t(p) = L^t (p - q) + q,   L^t = e^{t log L}                  (Eq. 9)
+//     A^t(p) = L^t (p - q) + q,   L^t = e^{t log L}                  (SAM Eq. 9)
 // and log L comes from the case selection of A.5 (Algorithm 1) on
 //     r = trace(L)/2,  delta = ((a - d)/2)^2 + b c  (the discriminant; it
 //     equals r^2 - det L, but computed from the entries, docs/paper-notes.md N15),
 //     N = L - r I (traceless, N^2 = delta I), so L = r I + N:
 //  G1  delta < 0, complex eigenvalues r +- i omega:
 //        log L = ln(rho) I + (theta/omega) N, rho = sqrt(det L),
-//        theta = atan2(omega, r) in (0, pi)                       (Eq. 18, 19)
+//        theta = atan2(omega, r) in (0, pi)                       (SAM Eq. 18, 19)
 //  G2  delta >= 0, r > 0, two positive eigenvalues r +- s:
-//        log L = ln(rho) I + (atanh(s/r)/s) N                  (Eq. 20, 13-16)
+//        log L = ln(rho) I + (atanh(s/r)/s) N                  (SAM Eq. 20, 13-16)
 //      including the double eigenvalue (delta = 0: rI or a Jordan block, for
 //      which Algorithm 1 has no branch), where the coefficient is 1/r
 //  S1  G2 with an eigenvalue 1: the same log, but A has no unique fixed point
@@ -67,7 +67,7 @@ RootCase select_case(const Eigen::Matrix2d& L);
 // log L by the case's closed form; throws NoRealLogarithm in G3.
 Eigen::Matrix2d linear_log(const Eigen::Matrix2d& L);
 
-// e^{tC} of a real 2x2 matrix C (Eq. 11, written with the discriminant of C
+// e^{tC} of a real 2x2 matrix C (SAM Eq. 11, written with the discriminant of C
 // so that it stays real and exact when the eigenvalues of C meet).
 Eigen::Matrix2d linear_exp(const Eigen::Matrix2d& C, double t = 1.0);
 
@@ -92,7 +92,7 @@ class AffinePowers {
   // Throws NoRealLogarithm (G3, or det L <= 0, or non-finite entries).
   explicit AffinePowers(const Affine2& A);
 
-  // A^t (Eq. 9): at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t).
+  // A^t (SAM Eq. 9): at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t).
   // A non-finite t gives a non-finite affinity (NaN), as an overflow does.
   Affine2 at(double t) const;
 

@@ -27,7 +27,7 @@
 // eigenvalue of L within 1/4 of 1: the identity, translations, shears, Jordan
 // blocks at 1) the translation is a binomial series in L - I instead, as in
 // 2D. This is A.6's case analysis in one formula: with 1 not an eigenvalue
-// it is Eq. 9 about the fixed point; with lambda = 1 (the kernel N of L - I)
+// it is SAM Eq. 9 about the fixed point; with lambda = 1 (the kernel N of L - I)
 // the corner is t beta, the constant-velocity translation along N of A.6,
 // and [M | c] is the 2D SAM on the rest; double and triple eigenvalues and
 // Jordan blocks are where the 2D EAR's own exact limits take over.
@@ -61,7 +61,7 @@ namespace pita {
 // first).
 std::array<std::complex<double>, 3> eigenvalues(const Eigen::Matrix3d& L);
 
-// A's fixed point q = L q + b (A.6, Eq. 21); nullopt when 1 is an eigenvalue
+// A's fixed point q = L q + b (A.6, PITA Eq. 21); nullopt when 1 is an eigenvalue
 // of L (within limits::kUnitEigenvalue: no unique fixed point).
 std::optional<Eigen::Vector3d> fixed_point(const Affine3& A);
 

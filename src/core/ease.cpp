@@ -19,18 +19,18 @@ constexpr std::array<NamedEase, 7> kNamedEases{{
     {"ease-in", Ease{EaseKind::cubic_bezier, 0.42, 0.0, 1.0, 1.0}, "CSS ease-in: cubic-bezier(0.42, 0, 1, 1)"},
     {"ease-out", Ease{EaseKind::cubic_bezier, 0.0, 0.0, 0.58, 1.0}, "CSS ease-out: cubic-bezier(0, 0, 0.58, 1)"},
     {"ease-in-out", Ease{EaseKind::cubic_bezier, 0.42, 0.0, 0.58, 1.0}, "CSS ease-in-out: cubic-bezier(0.42, 0, 0.58, 1)"},
-    {"sine", Ease{EaseKind::sine}, "the chapter's sinusoidal ease-in/ease-out, (sin(pi x - pi/2) + 1)/2 (Eq. 3.18)"},
-    {"cubic", Ease{EaseKind::cubic}, "the chapter's cubic ease-in/ease-out, 3x^2 - 2x^3 (Eq. 3.20)"},
+    {"sine", Ease{EaseKind::sine}, "the chapter's sinusoidal ease-in/ease-out, (sin(pi x - pi/2) + 1)/2 (chapter Eq. 3.18)"},
+    {"cubic", Ease{EaseKind::cubic}, "the chapter's cubic ease-in/ease-out, 3x^2 - 2x^3 (chapter Eq. 3.20)"},
 }};
 
 constexpr std::array<EaseFamily, 3> kFamilies{{
     {"cubic-bezier", "\"cubic-bezier(x1, y1, x2, y2)\"",
      "CSS cubic Bezier timing, x1 and x2 in [0, 1], y1 and y2 any"},
     {"sine", "{\"sine\": {\"k1\": K1, \"k2\": K2}}",
-     "sine ease-in until k1, constant speed until k2, sine ease-out (Eq. 3.19), 0 <= k1 <= k2 <= 1"},
+     "sine ease-in until k1, constant speed until k2, sine ease-out (chapter Eq. 3.19), 0 <= k1 <= k2 <= 1"},
     {"parabolic", "{\"parabolic\": {\"t1\": T1, \"t2\": T2}}",
      "constant acceleration until t1, constant speed until t2, constant deceleration "
-     "(Eq. 3.21-3.22), 0 <= t1 <= t2 <= 1"},
+     "(chapter Eq. 3.21-3.22), 0 <= t1 <= t2 <= 1"},
 }};
 
 std::string number(double x) {
@@ -59,7 +59,7 @@ double bezier_slope(double p1, double p2, double s) {
   return 3.0 * r * r * p1 + 6.0 * r * s * (p2 - p1) + 3.0 * s * s * (1.0 - p2);
 }
 
-// Eq. 3.19 as the chapter's Fig. 3.13 computes it (the printed equation
+// chapter Eq. 3.19 as the chapter's Fig. 3.13 computes it (the printed equation
 // misplaces a parenthesis in f; docs/paper-notes.md N16).
 double sine_cap(double k1, double k2, double x) {
   const double f = 2.0 * k1 / kPi + (k2 - k1) + 2.0 * (1.0 - k2) / kPi;
@@ -76,7 +76,7 @@ double sine_cap(double k1, double k2, double x) {
   return s / f;
 }
 
-// Eq. 3.21-3.22 integrated: v0 = 2/(t2 - t1 + 1) (the print has t2 - t2;
+// chapter Eq. 3.21-3.22 integrated: v0 = 2/(t2 - t1 + 1) (the print has t2 - t2;
 // docs/paper-notes.md N16). The ease-out part is written from the end,
 // 1 - v0 (1 - x)^2 / (2 (1 - t2)), so that ease(1) = 1 exactly.
 double parabolic(double t1, double t2, double x) {

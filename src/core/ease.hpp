@@ -8,13 +8,13 @@
 //                               the CSS Easing Functions Level 1 cubic Bezier
 //                               through (0, 0), (x1, y1), (x2, y2), (1, 1), y as
 //                               a function of x (x1, x2 in [0, 1]; y1, y2 any)
-//   sine                        y = (sin(pi x - pi/2) + 1) / 2            (Eq. 3.18)
+//   sine                        y = (sin(pi x - pi/2) + 1) / 2            (chapter Eq. 3.18)
 //   sine-cap k1, k2             sine ease-in on [0, k1], constant speed on
-//                               [k1, k2], sine ease-out on [k2, 1]        (Eq. 3.19, N16)
+//                               [k1, k2], sine ease-out on [k2, 1]        (chapter Eq. 3.19, N16)
 //   parabolic t1, t2            constant acceleration on [0, t1], constant
 //                               speed v0 = 2/(t2 - t1 + 1) on [t1, t2],
-//                               constant deceleration on [t2, 1]          (Eq. 3.20-3.22, N16)
-//   cubic                       y = -2x^3 + 3x^2                          (Eq. 3.20)
+//                               constant deceleration on [t2, 1]          (chapter Eq. 3.20-3.22, N16)
+//   cubic                       y = -2x^3 + 3x^2                          (chapter Eq. 3.20)
 #pragma once
 
 #include <optional>

@@ -11,7 +11,7 @@ namespace {
 using Eigen::Matrix2d;
 
 // cosh(sqrt z), cosh(sqrt z) - 1 and sinh(sqrt z)/sqrt z for real z (cos and
-// sin of sqrt(-z) when z < 0): the entire functions of Eq. 11.
+// sin of sqrt(-z) when z < 0): the entire functions of SAM Eq. 11.
 double cosh_sqrt(double z) {
   if (std::abs(z) < limits::kExpSeries) {
     return 1.0 + z / 2.0 * (1.0 + z / 12.0 * (1.0 + z / 30.0 * (1.0 + z / 56.0)));
@@ -41,7 +41,7 @@ double sinh_sqrt_ratio(double z) {
   return std::sin(w) / w;
 }
 
-// e^{tC} for C = x I + M, M traceless with M^2 = gamma I (Eq. 11, written
+// e^{tC} for C = x I + M, M traceless with M^2 = gamma I (SAM Eq. 11, written
 // with the discriminant gamma of C so that it stays real):
 //   e^{tC} = e^{tx} (cosh(t sqrt gamma) I + t sinh(t sqrt gamma)/(t sqrt gamma) M),
 // exact as gamma -> 0 (Jordan blocks). With real eigenvalues x +- sigma and

@@ -1,5 +1,5 @@
 // e^{tC} for a 2x2 C = x I + M, M traceless with M^2 = gamma I (SAM paper
-// Eq. 11, written with the discriminant gamma of C so that it stays real):
+// SAM Eq. 11, written with the discriminant gamma of C so that it stays real):
 //   e^{tC} = e^{tx} (cosh(t sqrt gamma) I + t sinh(t sqrt gamma)/(t sqrt gamma) M),
 // exact as gamma -> 0 (Jordan blocks), and through the spectral projectors
 // when the real eigenvalues are far apart (cosh and sinh would cancel in the

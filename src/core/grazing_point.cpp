@@ -29,7 +29,7 @@ std::optional<double> grazing_parameter(const Affine2& pose, const Affine2& velo
 }
 
 std::optional<double> sam_grazing_parameter(const Affine2& generator, const Affine2& first, const Edge& edge) {
-  // Eq. 8 at t = 0: q = B(from), t = L_B d, the field x -> C x + v.
+  // SAM Eq. 8 at t = 0: q = B(from), t = L_B d, the field x -> C x + v.
   const Eigen::Vector2d q = apply(first, edge.from);
   const Eigen::Vector2d t = first.L * (edge.to - edge.from);
   return quotient(t, generator.L * q + generator.b, generator.L * t);

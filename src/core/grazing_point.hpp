@@ -1,4 +1,4 @@
-// The grazing point of a moving edge (SAM paper Sec. 7.2, Eq. 8, Fig. 10).
+// The grazing point of a moving edge (SAM paper Sec. 7.2, SAM Eq. 8, Fig. 10).
 //
 // An edge from `from` to `to` is given in reference coordinates; at time t
 // the pose A(t) = [L | c] carries its point x(s) = from + s d, d = to - from,
@@ -15,9 +15,9 @@
 // Under a SAM A^t o B (Sec. 2.3 (6)), the velocity field is x -> C x + v,
 // {C, v} = log A, the same at every time, and C commutes with L_A^t; so
 // n . (C y + v) for y on the edge at time t is det(L_A^t) times the same
-// expression at time 0: s does not depend on t. This is Eq. 8,
+// expression at time 0: s does not depend on t. This is SAM Eq. 8,
 //     s = -n . log(A)(q) / n . (log(L) t),   q = B(from), t = L_B d,
-// (the printed Eq. 8 lacks the minus sign and measures s in units of t;
+// (the printed SAM Eq. 8 lacks the minus sign and measures s in units of t;
 // docs/paper-notes.md N49): the grazing point is a fixed point of the edge,
 // and its path is a portion of the envelope (Fig. 10, bottom).
 #pragma once
@@ -44,7 +44,7 @@ struct Edge {
 // from `from`. Precondition: pose.L d != 0.
 std::optional<double> grazing_parameter(const Affine2& pose, const Affine2& velocity, const Edge& edge);
 
-// Eq. 8 for the SAM A^t o B: the constant s from generator = log A ({log L,
+// SAM Eq. 8 for the SAM A^t o B: the constant s from generator = log A ({log L,
 // v}, affine_power.hpp's log) and the first pose B, as above.
 std::optional<double> sam_grazing_parameter(const Affine2& generator, const Affine2& first, const Edge& edge);
 

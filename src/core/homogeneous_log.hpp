@@ -1,5 +1,5 @@
 // Log and exp of a similarity's homogeneous matrix in complex form (appendix A,
-// Eq. A.1-A.8), used by P5 and its variant.
+// PITA Eq. A.1-A.8), used by P5 and its variant.
 //
 // The similarity z -> lambda z + p with lambda = e^l (l = ln m + i theta,
 // principal theta) has log [[l, v], [0, 0]] with v = p l / (e^l - 1) (A.7-A.8);

@@ -10,9 +10,9 @@
 //                                                   = (p q'' - q p'') / (q'' - p'').
 // c_v is the instantaneous center of rotation (the point whose velocity is
 // zero at t); c_a the point whose acceleration is zero, about which every
-// acceleration is x'' = (v''/v)(x - c_a). For P7 (Eq. 35: x'' = K (x - f) for
+// acceleration is x'' = (v''/v)(x - c_a). For P7 (PITA Eq. 35: x'' = K (x - f) for
 // every point of the arrow) c_a is the global fixed point f at every t; for
-// P8 (Eq. 39) v''/v = e is constant, so x'' = e (x - c_a(t)) with a moving
+// P8 (PITA Eq. 39) v''/v = e is constant, so x'' = e (x - c_a(t)) with a moving
 // c_a: the "constant relation" of Fig. 9's caption in both cases.
 #pragma once
 

@@ -13,7 +13,7 @@ struct Keyframe {
 
 // The three timed keyframes (a, A), (b, B), (c, C) of a PITA. The knots must be
 // distinct; the registry requires a < b < c, the PITA functions themselves
-// accept any distinct knots (the order-independence test of Eq. 42 needs it).
+// accept any distinct knots (the order-independence test of PITA Eq. 42 needs it).
 struct KeyframeTriple {
   Keyframe a;
   Keyframe b;

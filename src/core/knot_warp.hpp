@@ -9,11 +9,11 @@
 // which makes du/ds = 1 at b from both sides: the warp is C1, strictly
 // increasing (du/ds >= min(beta, 1 - beta) / max(beta, 1 - beta) > 0), the
 // identity for even knots (beta = 1/2, so P4, P7, P8 are then exactly the
-// paper's), and symmetric: u(1 - s; 1 - beta) = 1 - u(s; beta), so Eq. 41
+// paper's), and symmetric: u(1 - s; 1 - beta) = 1 - u(s; beta), so PITA Eq. 41
 // holds. Outside [a, c] it continues linearly with the end slopes, so every
 // real t still maps to a finite parameter (extrapolation, Sec. 7.5).
 // For knots that are not monotone (b outside (a, c), only reached by the
-// order-independence test of Eq. 42) the warp is the quadratic Lagrange map
+// order-independence test of PITA Eq. 42) the warp is the quadratic Lagrange map
 // through (a, 0), (b, 1/2), (c, 1).
 #pragma once
 

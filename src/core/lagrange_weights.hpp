@@ -4,7 +4,7 @@
 namespace pita {
 
 // Weights (x, y, z) of the quadratic Lagrange interpolant through knots a, b, c
-// (Eq. 10): v(t) = x v_a + y v_b + z v_c (Eq. 9), x + y + z = 1.
+// (PITA Eq. 10): v(t) = x v_a + y v_b + z v_c (PITA Eq. 9), x + y + z = 1.
 struct LagrangeWeights {
   double x;
   double y;
@@ -17,7 +17,7 @@ inline LagrangeWeights lagrange_weights(double a, double b, double c, double t) 
           (t - a) / (c - a) * ((t - b) / (c - b))};
 }
 
-// Eq. 9 for any value type with + and scalar *.
+// PITA Eq. 9 for any value type with + and scalar *.
 template <class V>
 V lagrange(const LagrangeWeights& l, const V& va, const V& vb, const V& vc) {
   return l.x * va + l.y * vb + l.z * vc;

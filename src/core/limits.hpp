@@ -4,7 +4,7 @@
 
 namespace pita::limits {
 
-// Twirl between two arrows (Eq. 17-19), Sec. 2.5.
+// Twirl between two arrows (PITA Eq. 17-19), Sec. 2.5.
 // We evaluate T^t.x = a + e^{tL}(x - a) + phi_t(L) (b - a) with
 // phi_t(L) = expm1(tL) / expm1(L) (docs/paper-notes.md N1). When |e^L - 1| falls
 // below this value the fixed point f = a - (b - a)/(e^L - 1) is numerically at
@@ -19,9 +19,9 @@ namespace pita::limits {
 // morph is not continuous in its keyframes.
 inline constexpr double kTwirlTranslation = 1e-12;
 
-// LS- point motion (Eq. 26): the log-spiral through a, b, c needs b != a and
+// LS- point motion (PITA Eq. 26): the log-spiral through a, b, c needs b != a and
 // c != b. When |b - a| or |c - b| is below this fraction of |b - a| + |c - b|
-// the spiral degenerates and we fall back to the parabolic motion (Eq. 11).
+// the spiral degenerates and we fall back to the parabolic motion (PITA Eq. 11).
 inline constexpr double kLogSpiralDegenerate = 1e-12;
 
 // -Pe vector motion (P7, P8; docs/paper-notes.md N13): v(tau) = alpha e^{k tau} +
@@ -38,7 +38,7 @@ inline constexpr double kPerseverantSingular = 1e-10;
 // most one digit to cancellation.
 inline constexpr double kPerseverantSeries = 0.5;
 
-// Persistent Affine Motion (pam.hpp, Eq. 37-39): the matrix functions of the
+// Persistent Affine Motion (pam.hpp, PITA Eq. 37-39): the matrix functions of the
 // 2x2 matrix K = L_B^-1 (L_A + L_C)/2 (eigenvalues m +- s, s^2 real).
 //
 // The scalar functions C, S, Q, R of kappa (and acosh^2 for E) are summed as
@@ -106,13 +106,13 @@ inline constexpr double kHalfTurn = 1e-12;
 inline constexpr double kUnitEigenvalue = 1e-12;
 
 // The translation part of A^t is g_t(L) b with g_t(lambda) =
-// (lambda^t - 1)/(lambda - 1) (Eq. 9 rewritten so that it stays exact at
+// (lambda^t - 1)/(lambda - 1) (SAM Eq. 9 rewritten so that it stays exact at
 // lambda = 1; docs/paper-notes.md N15 asks for expm1). Three formulas compute
 // g_t(L), each where it is exact to rounding:
 //  - the binomial series sum_{n>=1} C(t, n) E^{n-1}, E = L - I, while the
 //    spectral radius of E is at most kUnitSeriesRadius (near the identity:
 //    translations, shears, S1); the series converges like n 4^-n, ~30 terms;
-//  - through the fixed point, (I - L^t) q with q = (I - L)^-1 b (Eq. 9), when
+//  - through the fixed point, (I - L^t) q with q = (I - L)^-1 b (SAM Eq. 9), when
 //    both eigenvalues are at least kUnitFixedPointDistance from 1 (then
 //    I - L is well conditioned);
 //  - otherwise by the divided difference of g_t at the two eigenvalues, which
@@ -131,7 +131,7 @@ inline constexpr double kUnitSeriesMaxTime = 16.0;
 // lose nothing to cancellation.
 inline constexpr double kDoubleEigenvalueSeries = 1e-2;
 
-// The functions cosh(sqrt z) and sinh(sqrt z)/sqrt z of e^{tC} (Eq. 11
+// The functions cosh(sqrt z) and sinh(sqrt z)/sqrt z of e^{tC} (SAM Eq. 11
 // written with the discriminant z = t^2 gamma of tC) are summed as series
 // while |z| is below this bound.
 inline constexpr double kExpSeries = 1e-2;
@@ -259,7 +259,7 @@ inline constexpr double kFarCenter = 1e6;
 
 // ------------------------------------------------------ grazing points
 // The grazing point of a moving edge (core/grazing_point.hpp, SAM paper
-// Eq. 8) is s = -n.v(from) / n.(dL d) along the edge. When the edge's
+// SAM Eq. 8) is s = -n.v(from) / n.(dL d) along the edge. When the edge's
 // direction does not turn (a translation, or a stretch along the edge) the
 // denominator vanishes and every point of its line grazes, or none; a point
 // farther than this many edge lengths from the edge's start is taken as

@@ -3,7 +3,7 @@
 
 namespace pita {
 
-// q, r, s of Eq. 14: p(t) = L(L(p_a, p_b, q), L(p_b, p_c, r), s) (Eq. 12).
+// q, r, s of PITA Eq. 14: p(t) = L(L(p_a, p_b, q), L(p_b, p_c, r), s) (PITA Eq. 12).
 struct NevilleRatios {
   double q;  // (t - a)/(b - a)
   double r;  // (t - b)/(c - b)

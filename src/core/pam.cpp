@@ -72,7 +72,7 @@ MotionScalars motion_scalars(Complex kappa, double tau) {
   return motion_closed_form(kappa, tau);
 }
 
-// The scalar functions behind E (Eq. 39): mu = acosh(kappa)^2 (so M = mu(K))
+// The scalar functions behind E (PITA Eq. 39): mu = acosh(kappa)^2 (so M = mu(K))
 // and nu = acosh(kappa)^2 / (kappa - 1) (so g = nu(K) w / 2), nu(1) = 2.
 // With acosh(kappa)^2 = -acos(kappa)^2 = -4 asin^2(sqrt((1 - kappa)/2)) and the
 // series of asin^2:  mu = sum_{n>=1} mu_n x^n,  mu_1 = 2,
@@ -150,7 +150,7 @@ std::array<Eigen::Matrix2d, n> matrix_functions(double m, double s2, const Eigen
 }
 
 [[noreturn]] void refuse(const std::string& why) {
-  throw MotionDomainError("the persistent affine motion (PAM, Eq. 39) of these keyframes " + why);
+  throw MotionDomainError("the persistent affine motion (PAM, PITA Eq. 39) of these keyframes " + why);
 }
 
 }  // namespace
@@ -206,10 +206,10 @@ Affine2 PersistentAffineMotion::at(double t) const {
   const auto f = matrix_functions<4>(m_, s2_, N_,
                                      [tau](Complex kappa) { return motion_scalars(kappa, tau); });
   Affine2 U;
-  // Lin(tau) = L_B C(tau) + (L_C - L_A)/2 S(tau): Lin'' = Lin M (Eq. 39, F.1).
+  // Lin(tau) = L_B C(tau) + (L_C - L_A)/2 S(tau): Lin'' = Lin M (PITA Eq. 39, F.1).
   U.L = middle_.L * f[kC] + half_L_change_ * f[kS];
   // b(tau) = b_B + (b_C - b_A)/2 tau + 1/2 L_B Q w + 1/4 (L_C - L_A) R w:
-  // b'' = Lin g (Eq. 39), b(-1) = b_A, b(0) = b_B, b(1) = b_C since
+  // b'' = Lin g (PITA Eq. 39), b(-1) = b_A, b(0) = b_B, b(1) = b_C since
   // Q(+-1) = I, R(+-1) = 0 and Q(0) = R(0) = 0.
   U.b = middle_.b + half_b_change_ * tau + 0.5 * (middle_.L * (f[kQ] * w_)) +
         0.5 * (half_L_change_ * (f[kR] * w_));

@@ -2,14 +2,14 @@
 // the motion of a triangle through three timed affinities (Sec. 3.3, Eq.
 // 37-39, appendix F). P8 (pitas/p08_lo_pe.hpp) is PAM restricted to
 // similarities and written in complex numbers; this general form is its
-// independent oracle and shows the affine invariance of Eq. 43 (Sec. 4.10).
+// independent oracle and shows the affine invariance of PITA Eq. 43 (Sec. 4.10).
 //
-// A point attached to the moving triangle is p(t) = U(t) p0 (Eq. 37); its
-// acceleration U''(t) p0 (Eq. 38) is constant in the moving frame:
-//     U'' = U o E,  E = [[M, g], [0, 0]] constant            (Eq. 39)
+// A point attached to the moving triangle is p(t) = U(t) p0 (PITA Eq. 37); its
+// acceleration U''(t) p0 (PITA Eq. 38) is constant in the moving frame:
+//     U'' = U o E,  E = [[M, g], [0, 0]] constant            (PITA Eq. 39)
 // (homogeneous 3x3 matrices). Splitting U = [[Lin, b], [0, 1]] gives the
-// linear system Lin'' = Lin M (the pairs of entries of Eq. F.1, solved in
-// appendix F by the matrix exponential of Eq. F.2) and b'' = Lin g.
+// linear system Lin'' = Lin M (the pairs of entries of PITA Eq. F.1, solved in
+// appendix F by the matrix exponential of PITA Eq. F.2) and b'' = Lin g.
 //
 // Like P8, PAM runs on the normalised time tau = 2 knot_warp(a, b, c, t) - 1,
 // so tau = -1, 0, 1 at the knots (the paper's U(0), U(1/2), U(1)). With
@@ -56,7 +56,7 @@ class PersistentAffineMotion {
   // U(t); values outside [a, c] extrapolate (Sec. 7.5).
   Affine2 at(double t) const;
 
-  // The constant E of Eq. 39 in normalised time tau, as the homogeneous matrix
+  // The constant E of PITA Eq. 39 in normalised time tau, as the homogeneous matrix
   // [[M, g], [0, 0]] (an element of the affine Lie algebra, not an affinity).
   Eigen::Matrix3d local_acceleration() const;
 

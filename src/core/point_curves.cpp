@@ -13,7 +13,7 @@ namespace pita {
 namespace {
 
 constexpr std::array<PointCurveInfo, 4> kPointCurves{{
-    {PointCurve::pita, "pita", "PITA blend of two arrow tracks (Eq. 48-50)"},
+    {PointCurve::pita, "pita", "PITA blend of two arrow tracks (PITA Eq. 48-50)"},
     {PointCurve::neville_uniform, "neville-uniform", "Neville interpolation, uniform parameter"},
     {PointCurve::neville_centripetal, "neville-centripetal", "Neville interpolation, centripetal parameter"},
     {PointCurve::log_spiral_blend, "log-spiral-blend", "Neville blend of log-spiral three-point motions"},
@@ -22,7 +22,7 @@ constexpr std::array<PointCurveInfo, 4> kPointCurves{{
 // Scratch row of a Neville triangle, on the stack (no allocation per time).
 using NevilleRow = std::array<Point, limits::kMaxNevillePoints>;
 
-// The LERP of Eq. 13, a + s (b - a), written (1 - s) a + s b: exactly a at
+// The LERP of PITA Eq. 13, a + s (b - a), written (1 - s) a + s b: exactly a at
 // s = 0 and exactly b at s = 1 however far apart a and b are (an entry of the
 // log-spiral blend may be a spiral extrapolated far from its knots).
 Point lerp(Point a, Point b, double s) { return (1.0 - s) * a + s * b; }
@@ -86,7 +86,7 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
   switch (curve) {
     case PointCurve::pita: {
       if (!track) throw std::invalid_argument("pita needs an arrow track to build its curve from");
-      // Eq. 48-49: X at knots t_0..t_{n-2}, Y at t_1..t_{n-1}, both through the
+      // PITA Eq. 48-49: X at knots t_0..t_{n-2}, Y at t_1..t_{n-1}, both through the
       // edge arrows e_i = p_i p_{i+1}. e_0 is the zero-turn arrow; each next
       // edge turns from the previous one by the principal angle between them,
       // so the windings depend on the shape only and a rotation of all the
@@ -128,7 +128,7 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
 Point PointCurveMotion::at(double t) const {
   switch (curve_) {
     case PointCurve::pita: {
-      // Eq. 50 read as a blend of the start of X and the end of Y.
+      // PITA Eq. 50 read as a blend of the start of X and the end of Y.
       const double s = (t - points_.front().t) / (points_.back().t - points_.front().t);
       return (1.0 - s) * first_track_->at(t).p + s * second_track_->at(t).q();
     }
@@ -154,7 +154,7 @@ double PointCurveMotion::parameter(double t) const {
   return parameters_[i] + ratio * (parameters_[i + 1] - parameters_[i]);
 }
 
-// Aitken-Neville over all points in u (Eq. 12-14 extended to n points): row
+// Aitken-Neville over all points in u (PITA Eq. 12-14 extended to n points): row
 // entry j of level L covers points j..j+L and is the LERP of the two entries
 // of level L - 1 below it with ratio (u - u_j)/(u_{j+L} - u_j).
 Point PointCurveMotion::neville(double t) const {
@@ -172,7 +172,7 @@ Point PointCurveMotion::neville(double t) const {
 }
 
 // Neville's triangle from its third level up: LS- through points j, j+1, j+2
-// (Eq. 26), then LERPs in scene time; entry j of the level covering L points
+// (PITA Eq. 26), then LERPs in scene time; entry j of the level covering L points
 // blends with s = (t - t_j)/(t_{j+L-1} - t_j).
 Point PointCurveMotion::log_spiral_blend(double t) const {
   const std::size_t n = points_.size();

@@ -1,18 +1,18 @@
 // Point curves through n >= 4 timed points (PITA Sec. 7.6, Fig. 29;
-// docs/paper-notes.md N34): the PITA-based curve of Eq. 48-50 generalised to n
+// docs/paper-notes.md N34): the PITA-based curve of PITA Eq. 48-50 generalised to n
 // points, and the curves Fig. 29 compares it to, the uniform and centripetal
 // Neville interpolations and the log-spiral blend.
 //
 //   pita                 p(t) = (1 - s) X(t).p + s Y(t).q, s = (t - t_0)/(t_{n-1} - t_0),
 //                        X and Y arrow tracks through the zero-turn edge arrows
 //                        e_i = p_i p_{i+1}, X at knots t_0..t_{n-2}, Y at
-//                        t_1..t_{n-1} (Eq. 48-50).
+//                        t_1..t_{n-1} (PITA Eq. 48-50).
 //   neville-uniform      the polynomial of degree n - 1 through all points
-//                        (Aitken-Neville recursion, Sec. 2.4, Eq. 12-14) in a
+//                        (Aitken-Neville recursion, Sec. 2.4, PITA Eq. 12-14) in a
 //                        curve parameter u with u_i = i;
 //   neville-centripetal  the same with u_{i+1} - u_i = |p_{i+1} - p_i|^{1/2};
 //   log-spiral-blend     Neville's recursion with the log-spiral motion LS-
-//                        (Eq. 26) through each three consecutive points as its
+//                        (PITA Eq. 26) through each three consecutive points as its
 //                        third level and linear blends above.
 //
 // Every curve passes through p_i at t_i and is defined for every real t
@@ -44,7 +44,7 @@ enum class PointCurve { pita, neville_uniform, neville_centripetal, log_spiral_b
 struct PointCurveInfo {
   PointCurve curve;
   std::string_view name;   // "pita", "neville-uniform", "neville-centripetal", "log-spiral-blend"
-  std::string_view title;  // "PITA blend of two arrow tracks (Eq. 48-50)"
+  std::string_view title;  // "PITA blend of two arrow tracks (PITA Eq. 48-50)"
 };
 
 // Every point curve, in display order.
@@ -54,20 +54,20 @@ const PointCurveInfo* find_point_curve(std::string_view name);
 const PointCurveInfo& info(PointCurve curve);
 
 // The arrow track a PITA curve is built from: an arrow motion through n >= 3
-// timed keyframes (for n = 4 points, three keyframes: a PITA, Eq. 48-49).
+// timed keyframes (for n = 4 points, three keyframes: a PITA, PITA Eq. 48-49).
 using ArrowTrackFactory = std::function<std::unique_ptr<Motion>(std::span<const Keyframe>)>;
 
 // p(t), defined for every real t.
 //
-// pita (Eq. 48-50 as docs/paper-notes.md N34 reads them). With the edge arrows
+// pita (PITA Eq. 48-50 as docs/paper-notes.md N34 reads them). With the edge arrows
 // e_i = zero_turn_arrow(p_i, p_{i+1}), i = 0..n-2,
 //     X = track({(t_i, e_i)}),  Y = track({(t_{i+1}, e_i)}),
 //     p(t) = (1 - s) X(t).p + s Y(t).q,   s = (t - t_0)/(t_{n-1} - t_0).
-// Eq. 50 prints (1 - t) X + t Y, mixing arrows with points; this reading passes
+// PITA Eq. 50 prints (1 - t) X + t Y, mixing arrows with points; this reading passes
 // through every point: at t_k (0 < k < n-1) X = e_k starts at p_k and
 // Y = e_{k-1} ends at p_k; at t_0, s = 0 and X = e_0 starts at p_0; at
 // t_{n-1}, s = 1 and Y = e_{n-2} ends at p_{n-1}. For n = 4 at knots 0, 1/3,
-// 2/3, 1 with a PITA P_x as the track it is Eq. 48-50 exactly. The first edge
+// 2/3, 1 with a PITA P_x as the track it is PITA Eq. 48-50 exactly. The first edge
 // is a zero-turn arrow and each next one turns from the previous by the
 // principal angle between them (in (-pi, pi]), so the windings depend on the
 // shape alone and the curve is similarity-invariant with the track.
@@ -79,13 +79,13 @@ using ArrowTrackFactory = std::function<std::unique_ptr<Motion>(std::span<const 
 // the centripetal curve is only C0 at the knots, where the map's slope
 // changes (the uniform one too unless the knots are evenly spaced, when
 // u = (t - t_0)/h and the curve is the Lagrange polynomial in t: with the
-// paper's even knots, P1's parabola, Eq. 11-12, generalised to n points).
+// paper's even knots, P1's parabola, PITA Eq. 11-12, generalised to n points).
 //
 // log-spiral-blend. Level 3 entry j is LS(p_j, p_{j+1}, p_{j+2}) at t with
-// knots t_j, t_{j+1}, t_{j+2} (Eq. 26, point_motions.hpp); level L > 3 entry j,
+// knots t_j, t_{j+1}, t_{j+2} (PITA Eq. 26, point_motions.hpp); level L > 3 entry j,
 // covering points j..j+L-1, is
 //     E_L[j] = (1 - s) E_{L-1}[j] + s E_{L-1}[j+1],  s = (t - t_j)/(t_{j+L-1} - t_j)
-// (the LERPs of Eq. 12-14); p(t) = E_n[0]. For n = 4,
+// (the LERPs of PITA Eq. 12-14); p(t) = E_n[0]. For n = 4,
 // p = (1 - s) LS(a, b, c)(t) + s LS(b, c, d)(t). A log spiral's points at
 // evenly spaced knots are reproduced exactly (LS- is exact on them, and
 // blends of equal values are equal). Every entry is evaluated at every t, far

@@ -9,13 +9,13 @@
 namespace pita {
 
 // Pa-: the parabolic point motion, the weighted arithmetic mean of the three
-// points with the Lagrange weights (Eq. 11). Constant acceleration in the
+// points with the Lagrange weights (PITA Eq. 11). Constant acceleration in the
 // global frame (global perseverance).
 inline Point parabolic_point(const LagrangeWeights& l, Point pa, Point pb, Point pc) {
   return lagrange(l, pa, pb, pc);
 }
 
-// LS-: the log-spiral point motion (Eq. 26 as docs/paper-notes.md N2 reads it):
+// LS-: the log-spiral point motion (PITA Eq. 26 as docs/paper-notes.md N2 reads it):
 // p(t) = T_{ab->bc}^{u(t)} . a, with T_{ab->bc} the twirl between the zero-turn
 // arrows ab and bc (so T.a = b and T.b = c) and u the quadratic Lagrange time
 // map u(a) = 0, u(b) = 1, u(c) = 2, i.e. u = y + 2z. The twirl's angle is the

@@ -1,13 +1,13 @@
-// The stationary velocity field of a SAM (SAM paper Sec. 6.2, Fig. 8, Eq. 7;
+// The stationary velocity field of a SAM (SAM paper Sec. 6.2, Fig. 8, SAM Eq. 7;
 // docs/paper-notes.md N47). The SAM A^u carries a point x0 on the trajectory
-// x(u) = A^u(x0) (Eq. 9), whose velocity is
+// x(u) = A^u(x0) (SAM Eq. 9), whose velocity is
 //     x'(u) = log(A)(x(u)) = log(L) x(u) + v,        {log L, v} = log A,
 // a field of the plane that does not depend on u: the trajectories are its
-// integral curves. With the fixed point q of A (A.1) this is Eq. 7,
+// integral curves. With the fixed point q of A (A.1) this is SAM Eq. 7,
 //     p' = log(L)(p - q) + t_N,
 // t_N = 0 when 1 is not an eigenvalue of L; otherwise (S1) there is no unique
 // q and the field is log(L) p + v (the translation part of the homogeneous
-// log, which is Eq. 7's t_N with the origin on the invariant line).
+// log, which is SAM Eq. 7's t_N with the origin on the invariant line).
 #pragma once
 
 #include <optional>

@@ -10,7 +10,7 @@
 //   - the similarity part is the twirl Sigma: x -> s R(theta) (x - g0) + g1
 //     taking the barycentre g0 = B(c) to g1 = C(c) (c the reference
 //     triangle's barycentre), turning by theta and scaling by s; its powers
-//     Sigma^u (Eq. 8 of the PITA paper) are the log-spiral motion;
+//     Sigma^u (PITA Eq. 8) are the log-spiral motion;
 //   - the residue is interpolated linearly about g0: x -> g0 + ((1-u) I + u N)(x - g0);
 //     pose(u) = Sigma^u o [residue(u)] o B.
 // At u = 1: s R(theta) N = R(theta) S = L and Sigma(g0) = g1, so pose(1) = C.

@@ -3,7 +3,7 @@
 // the moving shape and over time, of the magnitude of the acceleration by
 // which a point's velocity expressed in the moving frame,
 //     w(u) = L(u)^-1 (L'(u) p + b'(u))        (p in reference coordinates),
-// changes over time. A motion is steady (a SAM, Eq. 1) exactly when w is
+// changes over time. A motion is steady (a SAM, SAM Eq. 1) exactly when w is
 // constant (Sec. 6.1), so its ARA is 0.
 #pragma once
 

@@ -6,7 +6,7 @@
 
 namespace pita {
 
-// M(A, B, t) = T_{A,B}^t . A (Eq. 20): M(A, B, 0) = A, M(A, B, 1) = B; any
+// M(A, B, t) = T_{A,B}^t . A (PITA Eq. 20): M(A, B, 0) = A, M(A, B, 1) = B; any
 // real t extrapolates along the same log-spiral motion.
 // Evaluated from the nearer end: M(A, B, t) = M(B, A, 1 - t) (the SMA is
 // symmetric, windings included), so that M(A, B, 1) is B itself and a far
@@ -17,12 +17,12 @@ inline Arrow steady_morph(const Arrow& A, const Arrow& B, double t) {
   return apply_power(twirl_between(A, B), t, A);
 }
 
-// The timed SMA M(a, A, b, B, t) = M(A, B, (t - a)/(b - a)) (Eq. 21).
+// The timed SMA M(a, A, b, B, t) = M(A, B, (t - a)/(b - a)) (PITA Eq. 21).
 inline Arrow steady_morph(double a, const Arrow& A, double b, const Arrow& B, double t) {
   return steady_morph(A, B, (t - a) / (b - a));
 }
 
-// The steady average M(A, B) = M(A, B, 1/2) (Eq. 23). Symmetric: M(A, B) = M(B, A).
+// The steady average M(A, B) = M(A, B, 1/2) (PITA Eq. 23). Symmetric: M(A, B) = M(B, A).
 // At t = 1/2 the anchor's progress has the closed form
 //   phi_{1/2}(L) = (e^{L/2} - 1)/(e^L - 1) = 1/(e^{L/2} + 1),
 // so one square root and one sincos suffice (P6 calls this every frame).

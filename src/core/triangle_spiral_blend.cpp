@@ -37,7 +37,7 @@ TriangleSpiralBlend::TriangleSpiralBlend(const Affine2& from, const Affine2& to,
   for (int j = 0; j < 3; ++j) {
     const Vector side = start_[(j + 1) % 3] - start_[j];
     const Vector side_end = end[(j + 1) % 3] - end[j];
-    // Eq. 17-18 with the principal angle (reading notes, docs/paper-notes.md N39).
+    // PITA Eq. 17-18 with the principal angle (reading notes, docs/paper-notes.md N39).
     const Complex ratio = side_end / side;
     spirals_[j] = Twirl(start_[j], end[j] - start_[j], Complex{std::log(std::abs(ratio)), std::arg(ratio)});
   }

@@ -6,7 +6,7 @@
 // vertices are v_j = B(r_j) in the first pose and v_j' = C(r_j) in the second.
 // Side j runs from vertex j to vertex j + 1 (indices mod 3); its spiral is the
 // twirl T_j = T_{A_j -> A_j'} between the zero-turn arrows A_j = (v_j, v_{j+1} - v_j)
-// and A_j' (PITA paper Eq. 17-19), turning by the principal angle
+// and A_j' (PITA paper PITA Eq. 17-19), turning by the principal angle
 // Arg((v_{j+1}' - v_j') / (v_{j+1} - v_j)) in (-pi, pi] and scaling by the
 // ratio of the side lengths. T_j^u carries both ends of side j on log spirals
 // from the first pose to the second, so each vertex is carried by the spirals

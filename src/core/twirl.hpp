@@ -1,9 +1,9 @@
-// Twirls (Sec. 2.2, Eq. 5-8) and the twirl between two arrows (Eq. 17-19).
+// Twirls (Sec. 2.2, PITA Eq. 5-8) and the twirl between two arrows (PITA Eq. 17-19).
 //
 // A twirl is a similarity that also acts on windings: T(f, m, w) dilates by
 // m > 0 and turns by the real angle w about the fixed point f, and adds w to
-// the winding of any arrow it moves (Eq. 7). Its powers are T^t = T(f, m^t, tw)
-// (Eq. 8).
+// the winding of any arrow it moves (PITA Eq. 7). Its powers are T^t = T(f, m^t, tw)
+// (PITA Eq. 8).
 //
 // Representation. Writing L = ln m + i w (the winding-aware log of the linear
 // part), we store a twirl by an anchor point a, the displacement u = T.a - a of
@@ -33,8 +33,8 @@ class Twirl {
   Point anchor() const { return anchor_; }              // a
   Vector displacement() const { return displacement_; }  // u = T.a - a
   Complex log() const { return log_; }                  // L = ln m + i w
-  double ratio() const { return std::exp(log_.real()); }  // m (Eq. 17)
-  double winding() const { return log_.imag(); }          // w (Eq. 18)
+  double ratio() const { return std::exp(log_.real()); }  // m (PITA Eq. 17)
+  double winding() const { return log_.imag(); }          // w (PITA Eq. 18)
   // True when |e^L - 1| < kTwirlTranslation: no finite fixed point.
   bool is_translation() const { return translation_; }
 
@@ -53,7 +53,7 @@ class Twirl {
   bool translation_ = true;
 };
 
-// T(f, m, w): the twirl about fixed point f by ratio m > 0 and winding w (Eq. 5-7).
+// T(f, m, w): the twirl about fixed point f by ratio m > 0 and winding w (PITA Eq. 5-7).
 inline Twirl twirl(Point f, double m, double w) { return {f, Vector{}, Complex{std::log(m), w}}; }
 
 // The identity twirl.
@@ -62,7 +62,7 @@ inline Twirl identity_twirl() { return {}; }
 // A pure translation by v.
 inline Twirl translation(Vector v) { return {Point{}, v, Complex{}}; }
 
-// T^t (Eq. 8), as a twirl with the same anchor. The anchor moves by
+// T^t (PITA Eq. 8), as a twirl with the same anchor. The anchor moves by
 // phi_t(L) u with phi_t(L) = (e^{tL} - 1)/(e^L - 1); its limit t is used when
 // |e^L - 1| < kTwirlTranslation (limits.hpp says why frames stay continuous).
 inline Twirl pow(const Twirl& T, double t) {
@@ -70,15 +70,15 @@ inline Twirl pow(const Twirl& T, double t) {
   return {T.anchor(), T.anchor_motion(t, expm1(tl)), tl};
 }
 
-// T . x for a point (Eq. 5), written T * x like the paper's T.x (Sophus's operator*).
+// T . x for a point (PITA Eq. 5), written T * x like the paper's T.x (Sophus's operator*).
 inline Point operator*(const Twirl& T, Point x) {
   return T.anchor() + std::exp(T.log()) * (x - T.anchor()) + T.displacement();
 }
 
-// T . v for a vector (Eq. 6): only the linear part acts.
+// T . v for a vector (PITA Eq. 6): only the linear part acts.
 inline Vector apply_to_vector(const Twirl& T, Vector v) { return std::exp(T.log()) * v; }
 
-// T . A for an arrow (Eq. 7): moves the origin, scales the magnitude, and adds
+// T . A for an arrow (PITA Eq. 7): moves the origin, scales the magnitude, and adds
 // the twirl's winding to the arrow's winding.
 inline Arrow operator*(const Twirl& T, const Arrow& A) {
   return {T * A.p, A.m * std::exp(T.log().real()), A.w + T.log().imag()};
@@ -118,7 +118,7 @@ inline Twirl inverse(const Twirl& T) {
 // S . T (apply T first, then S).
 Twirl compose(const Twirl& S, const Twirl& T);
 
-// The fixed point f = a - u/(e^L - 1) of the twirl (Eq. 19, sign as
+// The fixed point f = a - u/(e^L - 1) of the twirl (PITA Eq. 19, sign as
 // docs/paper-notes.md N1), or nothing when the twirl is a translation.
 inline std::optional<Point> fixed_point(const Twirl& T) {
   if (T.is_translation()) return std::nullopt;
@@ -152,7 +152,7 @@ TwirlLog log(const Twirl& T);
 // exp(t log T) = T^t.
 Twirl exp(const TwirlLog& G);
 
-// The twirl T_{A,B} that maps arrow A onto arrow B (Eq. 17-19): ratio B.m/A.m,
+// The twirl T_{A,B} that maps arrow A onto arrow B (PITA Eq. 17-19): ratio B.m/A.m,
 // winding B.w - A.w, anchor A.p, displacement B.p - A.p.
 inline Twirl twirl_between(const Arrow& A, const Arrow& B) {
   return {A.p, B.p - A.p, Complex{std::log(B.m / A.m), B.w - A.w}};

@@ -15,7 +15,7 @@ struct PolarVector {
   double w;
 };
 
-// -Ca: Lagrange interpolation (Eq. 9) of the Cartesian components of the
+// -Ca: Lagrange interpolation (PITA Eq. 9) of the Cartesian components of the
 // zero-turn vectors. Not winding-aware.
 inline Vector cartesian_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B,
                                const Arrow& C) {

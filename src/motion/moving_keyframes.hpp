@@ -12,7 +12,7 @@ namespace pita::motion {
 bool has_moving_keyframes(const scene::Scene& scene);
 
 // The scene with every moving keyframe at tau: keyframes[i].arrow becomes
-// SMA(from_i, to_i, tau) (Eq. 20, the steady morph, winding included), and the
+// SMA(from_i, to_i, tau) (PITA Eq. 20, the steady morph, winding included), and the
 // scene no longer moves (keyframes_to empty). Knots, methods, layers and
 // everything else are kept. tau outside [0, 1] extrapolates the SMA.
 scene::Scene scene_at(const scene::Scene& scene, double tau);

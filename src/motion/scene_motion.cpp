@@ -85,7 +85,7 @@ double frame_cost(const scene::Panel& panel) {
     return chain ? chain_frame_cost(*chain, length) : 1.0;
   };
   return std::visit(overloaded{[&](const scene::KeyframeKeys& given) { return track(given.track_length()); },
-                               // Two tracks per frame (Eq. 48-50).
+                               // Two tracks per frame (PITA Eq. 48-50).
                                [&](const scene::PointKeys& given) { return 2.0 * track(given.track_length()); },
                                [](const scene::PlanePoseKeys&) { return 1.0; },
                                [](const scene::SpacePoseKeys&) { return 1.0; }},

@@ -39,7 +39,7 @@ struct ArrowTrack {  // keyframe arrows (the PITA paper): D(tau)
   std::shared_ptr<const Motion> motion;
   std::optional<Chain> chain;  // the chain past the method's own keyframe count
 };
-struct PointTrack {  // timed points (PITA Sec. 7.6): the curve of Eq. 48-50
+struct PointTrack {  // timed points (PITA Sec. 7.6): the curve of PITA Eq. 48-50
   std::shared_ptr<const PointCurveMotion> curve;
   std::optional<Chain> chain;  // the chain of the edge arrows' track
 };
@@ -66,7 +66,7 @@ class SceneMotion {
   const std::string& method_id() const { return method_id_; }
   const std::string& label() const { return label_; }
 
-  // Timed points: the PITA curve through them (Eq. 48-50 with the panel's
+  // Timed points: the PITA curve through them (PITA Eq. 48-50 with the panel's
   // method and chain) at scene time t. Throws NoMotion for other kinds.
   Point point_at(double t) const;
 

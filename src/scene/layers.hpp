@@ -55,7 +55,7 @@ enum class SpiralCenter { start, middle };  // "start", "midpoint"
 // The prediction a discrepancy circle compares each frame with (Sec. 6.1).
 enum class Predictor {
   previous,  // the previous frame D(t_{i-1})
-  average,   // the steady average M(D(t_{i-1}), D(t_{i+1})) (Eq. 23)
+  average,   // the steady average M(D(t_{i-1}), D(t_{i+1})) (PITA Eq. 23)
   pita,      // the chosen PITA through D(t_{i-3}), D(t_{i-2}), D(t_{i-1}), at t_i (Sec. 7.5)
 };
 
@@ -183,7 +183,7 @@ struct PlotLayer {
 inline constexpr std::size_t kMaxPlotMethods = 8;
 
 // "point-trajectory": a curve through the panel's timed "points" (PITA Sec. 7.6,
-// Fig. 29): the PITA-based curve of Eq. 48-50 with the panel's method and
+// Fig. 29): the PITA-based curve of PITA Eq. 48-50 with the panel's method and
 // chain, or one of the curves it is compared with (core/point_curves.hpp).
 struct PointTrajectoryLayer {
   PointCurve curve = PointCurve::pita;
@@ -214,7 +214,7 @@ struct VectorsLayer {
 
 // "fixed-points" (PITA Fig. 9; docs/paper-notes.md N40): at each frame a
 // segment from D(t).p (or q, mid) to a center of the motion: P7's global
-// fixed point f (Eq. 35-36), or the instantaneous center where the
+// fixed point f (PITA Eq. 35-36), or the instantaneous center where the
 // acceleration (default) or the velocity of the plane's moving points is zero.
 enum class CenterKind { global, acceleration, velocity };  // "center"
 struct FixedPointsLayer {
@@ -325,7 +325,7 @@ struct Guess {
 };
 
 // What a "guesses" layer prints for each guess G at t: the discrepancy
-// E(G, D(t)) (Eq. 47, docs/paper-notes.md N5) or the distance
+// E(G, D(t)) (PITA Eq. 47, docs/paper-notes.md N5) or the distance
 // max(|G.p - D(t).p|, |G.q - D(t).q|) (docs/paper-notes.md N53).
 enum class GuessMeasure { discrepancy, distance };
 
@@ -387,7 +387,7 @@ struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each f
   std::optional<TimeRange> range;
 };
 
-// "field" (SAM paper Fig. 8, Eq. 7; docs/paper-notes.md N47): the stationary
+// "field" (SAM paper Fig. 8, SAM Eq. 7; docs/paper-notes.md N47): the stationary
 // velocity field of the panel's SAM (two poses) as arrows at the nodes of a
 // grid over `box`, drawn `scale` x the velocity per unit of the normalised
 // time u (as "velocities"), and the trajectories through every `curves`-th
@@ -425,14 +425,14 @@ struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses
 
 // "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)
 // classified by EAR's case selection on a grid of cells over a in [-pi, pi],
-// s in (0, 1]; cells without a SAM (G3) are filled; the boundary of Eq. 4,
+// s in (0, 1]; cells without a SAM (G3) are filled; the boundary of PITA Eq. 4,
 // |a| = acos(-2s/(s^2+1)), and the trapezoid |a| < (1+s) pi/2 are drawn over it.
 struct ExistenceLayer {
   int columns = 360;
   int rows = 200;
   Color fill{0.85, 0.2, 0.2, 1.0};       // no SAM
   std::optional<Color> exists_fill = Color{0.93, 0.96, 0.93, 1.0};
-  LineStyle boundary{Color{0.0, 0.0, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};  // Eq. 4
+  LineStyle boundary{Color{0.0, 0.0, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};  // SAM Eq. 4
   LineStyle trapezoid{Color{0.0, 0.0, 0.0, 1.0}, 2.0, 1.0, {}};
 };
 
@@ -470,7 +470,7 @@ struct AraLayer {
 inline constexpr int kMaxAraDigits = 9;
 inline constexpr int kMaxAraGrid = 100;
 
-// "swept": SAM paper Fig. 10 (Sec. 7.2, Eq. 8): an edge given in reference
+// "swept": SAM paper Fig. 10 (Sec. 7.2, SAM Eq. 8): an edge given in reference
 // coordinates, carried by the panel's motion; its copies at the layer's
 // frames, the paths of its ends, the envelope (the grazing points A(t) x(s(t))
 // with s(t) in [0, 1], core/grazing_point.hpp), and the paths of the points

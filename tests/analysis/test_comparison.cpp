@@ -18,7 +18,7 @@ namespace pita::analysis {
 namespace {
 
 
-// Quadratic Lagrange weights of knots 0, 1/2, 1 at t (Eq. 9).
+// Quadratic Lagrange weights of knots 0, 1/2, 1 at t (PITA Eq. 9).
 std::array<double, 3> lagrange(double t) {
   return {(t - 0.5) * (t - 1.0) / 0.5, t * (t - 1.0) / -0.25, t * (t - 0.5) / 0.5};
 }

@@ -1,5 +1,5 @@
 // Where a SAM exists (src/analysis/existence.cpp): EAR's classification of
-// R(a) diag(1/s, s) against the closed-form boundary of the SAM paper's Eq. 4.
+// R(a) diag(1/s, s) against the closed-form boundary of the SAM paper's SAM Eq. 4.
 #include <gtest/gtest.h>
 
 #include <cmath>

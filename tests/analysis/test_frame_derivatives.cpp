@@ -1,7 +1,7 @@
 // Velocities, accelerations and instantaneous centers of D(t)
 // (src/analysis/frame_derivatives.cpp; docs/paper-notes.md N40), checked
 // against closed forms (the steady morph, P1's parabolas), the perseverance
-// of P7 and P8 (PITA Sec. 3.3, Eq. 35 and 39), and an independent
+// of P7 and P8 (PITA Sec. 3.3, PITA Eq. 35 and 39), and an independent
 // difference of the motion at the centers.
 #include <gtest/gtest.h>
 
@@ -57,7 +57,7 @@ TEST(FrameDerivatives, SteadyMorphMatchesItsClosedForm) {
 }
 
 TEST(FrameDerivatives, P1AccelerationIsConstantAndTheParabolas) {
-  // P1 moves p and q on the Lagrange parabolas through the keyframes (Eq. 11):
+  // P1 moves p and q on the Lagrange parabolas through the keyframes (PITA Eq. 11):
   // the acceleration is twice the second divided difference, at every t,
   // also at and between uneven knots and outside them.
   const motion::SceneMotion motion = motion_of("P1", kUneven);
@@ -82,7 +82,7 @@ TEST(FrameDerivatives, P1AccelerationIsConstantAndTheParabolas) {
 }
 
 TEST(FrameDerivatives, P7IsRadiallyPerseverant) {
-  // Eq. 35: x'' = S (x - f) for p and q, one S for all t, f P7's global fixed
+  // PITA Eq. 35: x'' = S (x - f) for p and q, one S for all t, f P7's global fixed
   // point. With knots 0, 1/2, 1, tau = 2t - 1, so S = 4 k^2 with cosh k =
   // (v_a + v_c)/(2 v_b) (reading note 13), computed here from the keyframes.
   const motion::SceneMotion motion = motion_of("P7", kEven);
@@ -104,7 +104,7 @@ TEST(FrameDerivatives, P7IsRadiallyPerseverant) {
 }
 
 TEST(FrameDerivatives, P8IsLocallyPerseverant) {
-  // Eq. 39: the accelerations of p and q are constant in the moving frame:
+  // PITA Eq. 39: the accelerations of p and q are constant in the moving frame:
   // x''/v with v = q - p does not depend on t. The vector's own v''/v is the
   // same 4 k^2 as P7's, and x'' = 4 k^2 (x - c_a(t)) about the acceleration center.
   const motion::SceneMotion motion = motion_of("P8", kEven);

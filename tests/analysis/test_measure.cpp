@@ -54,7 +54,7 @@ TEST(Measure, SteadyRotationTracesCircleArcs) {
   EXPECT_NEAR(m.path_q->turning, theta, 1e-9);
   EXPECT_NEAR(*m.winding_min, A.w, 1e-12);
   EXPECT_NEAR(*m.winding_max, B.w, 1e-12);
-  // The steady average of the neighbours is the frame itself (Eq. 23).
+  // The steady average of the neighbours is the frame itself (PITA Eq. 23).
   ASSERT_EQ(m.discrepancy.size(), 3u);
   EXPECT_EQ(m.discrepancy[1].predictor, "average");
   EXPECT_LT(m.discrepancy[1].max, 1e-20);

@@ -64,7 +64,7 @@ TEST(SweptEdge, GrazingPointIsTheCharacteristicPoint) {
   }
 }
 
-// The claim of Fig. 10: constant under the SAM (and equal to Eq. 8), not
+// The claim of Fig. 10: constant under the SAM (and equal to SAM Eq. 8), not
 // under rARAP, whose range is recomputed here from characteristic points.
 TEST(SweptEdge, GrazingRangeConstantForSamOnly) {
   const PoseMotion sam = motion_of(PoseMethod::sam);
@@ -155,7 +155,7 @@ TEST(SweptEdge, EnvelopeEndsWhereTheGrazingPointLeavesTheEdge) {
   EXPECT_GE(checked, 1);  // the configuration leaves the edge at least once
 }
 
-// A pole of s (the denominator of Eq. 8 changes sign) between a sample on
+// A pole of s (the denominator of SAM Eq. 8 changes sign) between a sample on
 // the edge and one off it: the run must end where s passes 1 before the
 // pole, not at the pole or at the last sample. The edge stays put (pose I)
 // while its line is turned by L'(t) = [[0, 0], [t - 1/2, 0]] and pushed by

@@ -427,7 +427,7 @@ TEST_F(Eval, SpacePosesMatchAnIndependentMatrixPower) {
 }
 
 TEST_F(Eval, SpacePosesEasedPerSpanMatchAnIndependentMatrixPower) {
-  // "timing" in space: the cubic ease 3x^2 - 2x^3 of each span (Eq. 3.20,
+  // "timing" in space: the cubic ease 3x^2 - 2x^3 of each span (chapter Eq. 3.20,
   // written out here), then the SAM of the span at the eased u.
   const std::vector<std::vector<double>> poses = {
       {1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0},

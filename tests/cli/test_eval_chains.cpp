@@ -209,7 +209,7 @@ TEST_F(EvalChains, PerSpanTimingStillReachesEveryKeyframeAtItsKnot) {
 namespace pita::test {
 namespace {
 
-// Fig. 29's scene through the binary: Eq. 48-50's four conditions
+// Fig. 29's scene through the binary: PITA Eq. 48-50's four conditions
 // p(0) = a, p(1/3) = b, p(2/3) = c, p(1) = d for every method P1-P8 (the
 // scene's points, read back from the file), and the CSV form.
 TEST(EvalPoints, Fig29PassesItsFourPointsWithEveryPita) {

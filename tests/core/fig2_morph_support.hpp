@@ -32,7 +32,7 @@ Affine2 central_difference(const Motion& motion, double u, double h = 1e-5) {
 }
 
 // The steady motion of point x about fixed point f by lambda^u, lambda = m e^{iw}:
-// the log spiral f + e^{u (ln m + i w)} (x - f) (Eq. 5, 8 of the PITA paper).
+// the log spiral f + e^{u (ln m + i w)} (x - f) (PITA Eq. 5, 8).
 inline Point on_spiral(Point f, Complex log_lambda, double u, Point x) {
   return f + std::exp(u * log_lambda) * (x - f);
 }

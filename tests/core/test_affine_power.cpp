@@ -155,7 +155,7 @@ TEST(SelectCase, ComplexOrRealAcrossTheDoubleEigenvalue) {
   EXPECT_EQ(select_case(mat(-2.0, 1.0, 1e-12, -2.0)), RootCase::G3);
 }
 
-// Sec. 5.2, Eq. 4: R(a) diag(1/s, s) has a real log iff |a| < acos(-2s/(s^2+1)),
+// Sec. 5.2, SAM Eq. 4: R(a) diag(1/s, s) has a real log iff |a| < acos(-2s/(s^2+1)),
 // and the trapezoid |a| < (1 + s) pi / 2 lies inside that region.
 TEST(SelectCase, ExistenceRegionIsEquationFour) {
   for (int i = 1; i <= 50; ++i) {

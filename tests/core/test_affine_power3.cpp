@@ -424,7 +424,7 @@ TEST(AffinePower3Cases, LargeTimesThroughSquaring) {
 }
 
 // Jordan blocks away from 1: [[2, 1], [0, 2]] beside 5, and 2 (I + N) of size 3;
-// the translation through the fixed point (Eq. 9): (I - L^t) q.
+// the translation through the fixed point (SAM Eq. 9): (I - L^t) q.
 TEST(AffinePower3Cases, JordanBlocksAwayFromOne) {
   const Vector3d b(0.5, -1.0, 2.0);
   Matrix3d L2;

@@ -1,6 +1,6 @@
 // Ease functions (src/core/ease.cpp): CSS cubic-bezier timing against an
 // independent bisection solver written here, the chapter's sine, sine-cap and
-// parabolic eases against their defining properties (Eq. 3.18-3.22,
+// parabolic eases against their defining properties (chapter Eq. 3.18-3.22,
 // docs/paper-notes.md N16, N20).
 #include <gtest/gtest.h>
 
@@ -133,13 +133,13 @@ TEST(Ease, SineCapWithEqualHalvesIsTheSineEase) {
 TEST(Ease, ParabolicHasConstantAccelerationThenSpeedV0ThenDeceleration) {
   const double t1 = 0.2, t2 = 0.65;
   const Ease e = parabolic_ease(t1, t2);
-  const double v0 = 2.0 / (t2 - t1 + 1.0);  // Eq. 3.22 (as corrected, N16)
+  const double v0 = 2.0 / (t2 - t1 + 1.0);  // chapter Eq. 3.22 (as corrected, N16)
   for (double x : {0.3, 0.45, 0.6}) EXPECT_NEAR(slope(e, x), v0, 1e-8) << x;
   // Constant acceleration v0 / t1 and deceleration v0 / (1 - t2): second differences.
   const auto second = [&](double x) { const double h = 1e-4; return (ease(e, x + h) - 2 * ease(e, x) + ease(e, x - h)) / (h * h); };
   EXPECT_NEAR(second(0.1), v0 / t1, 1e-4);
   EXPECT_NEAR(second(0.8), -v0 / (1 - t2), 1e-4);
-  // Eq. 3.21: the areas under the speed add up to one, so ease(t1) = v0 t1 / 2.
+  // chapter Eq. 3.21: the areas under the speed add up to one, so ease(t1) = v0 t1 / 2.
   EXPECT_NEAR(ease(e, t1), v0 * t1 / 2, 1e-15);
 }
 

@@ -193,7 +193,7 @@ TEST(Fig10, KnotControlled) {
 }
 
 TEST(Fig10, OrderIndependent) {
-  // Sec. 4.9, Eq. 42: swapping (a, A) and (b, B) changes nothing.
+  // Sec. 4.9, PITA Eq. 42: swapping (a, A) and (b, B) changes nothing.
   const MethodSet O{Method::P1, Method::P3, Method::P5, Method::P10};
   check_property("order-independence", O, [](Method m, const KeyframeTriple& k) {
     const KeyframeTriple swapped{k.b, k.a, k.c};
@@ -202,7 +202,7 @@ TEST(Fig10, OrderIndependent) {
 }
 
 TEST(Fig10, AffineInvariantOnArrows) {
-  // Sec. 4.10, Eq. 43: an affinity applied to the keyframes' start and end
+  // Sec. 4.10, PITA Eq. 43: an affinity applied to the keyframes' start and end
   // points moves every frame's start and end points the same way. P8 is
   // affine-invariant only when the affinity also moves its key triangles' tips
   // (tests/core/test_pam.cpp); on arrows alone it is violated, like the rest.

@@ -1,8 +1,8 @@
 // The grazing point of a moving edge (core/grazing_point.hpp, SAM paper
-// Sec. 7.2, Eq. 8): its velocity is parallel to the edge (checked with a
+// Sec. 7.2, SAM Eq. 8): its velocity is parallel to the edge (checked with a
 // finite difference of the motion, not its velocity), it is the foot of the
 // perpendicular from the centre of a rotation, it stays the same point of
-// the edge under a SAM (Eq. 8) and moves along the edge under rARAP.
+// the edge under a SAM (SAM Eq. 8) and moves along the edge under rARAP.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,7 +80,7 @@ TEST(GrazingPoint, RotationGrazesAtTheFootOfThePerpendicular) {
   }
 }
 
-// Eq. 8: under a SAM the grazing parameter is the same at every time, and
+// SAM Eq. 8: under a SAM the grazing parameter is the same at every time, and
 // equals the closed form from log A and the first pose.
 TEST(GrazingPoint, SamGrazesAtOneFixedPointOfTheEdge) {
   const PoseMotion motion(PoseMethod::sam, {{0.0, kFirst}, {1.0, kLast}});

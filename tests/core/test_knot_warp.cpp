@@ -1,5 +1,5 @@
 // The knot warp of P4, P7 and P8 (src/core/knot_warp.cpp): knots to 0, 1/2, 1,
-// identity for even knots, increasing, C1 and symmetric (Eq. 41).
+// identity for even knots, increasing, C1 and symmetric (PITA Eq. 41).
 #include "core/knot_warp.hpp"
 
 #include <cmath>
@@ -31,7 +31,7 @@ TEST(KnotWarp, IsIncreasingC1AndSymmetric) {
       const double s = -1.0 + 3.0 * i / 3000.0;
       EXPECT_GT(u(s), prev) << "beta=" << beta << " s=" << s;
       prev = u(s);
-      // Symmetry: u(1 - s; 1 - beta) = 1 - u(s; beta) (Eq. 41 for P4, P7, P8).
+      // Symmetry: u(1 - s; 1 - beta) = 1 - u(s; beta) (PITA Eq. 41 for P4, P7, P8).
       EXPECT_NEAR(knot_warp(0.0, 1.0 - beta, 1.0, 1.0 - s), 1.0 - u(s), 1e-12);
     }
     // C1 at 0, beta and 1: one-sided slopes agree to O(h).
@@ -56,7 +56,7 @@ TEST(KnotWarp, FollowsItsQuadraticPiecesAndLinearEnds) {
   EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, 10.0), 1.0 + 1.0 / 3.0, 1e-14);  // s = 2
 }
 
-// Knots out of order (b outside (a, c), Eq. 42): the quadratic through (a, 0),
+// Knots out of order (b outside (a, c), PITA Eq. 42): the quadratic through (a, 0),
 // (b, 1/2), (c, 1). For a = 0, b = 2, c = 1 it is u = 7/4 t - 3/4 t^2.
 TEST(KnotWarp, OutOfOrderKnotsGiveTheLagrangeQuadratic) {
   for (const double t : {-1.0, 0.0, 0.5, 1.0, 2.0, 3.0}) {

@@ -10,7 +10,7 @@
 namespace pita::test {
 namespace {
 
-Eigen::Matrix3d homogeneous(const Arrow& A, Point origin) {  // Eq. A.1, about `origin`
+Eigen::Matrix3d homogeneous(const Arrow& A, Point origin) {  // PITA Eq. A.1, about `origin`
   Eigen::Matrix3d H;
   const Vector v = A.vector();
   H << v.real(), -v.imag(), A.p.real() - origin.real(),  //
@@ -33,7 +33,7 @@ TEST(HeLp, MatchesGenericMatrixLogAndExp) {
     const auto P5 = motion(Method::P5, k);
     for (double t : sample_times(k)) {
       const LagrangeWeights l = lagrange_weights(k.a.t, k.b.t, k.c.t, t);
-      const Eigen::Matrix3d H = oracle::exp(Eigen::Matrix3d(l.x * LA + l.y * LB + l.z * LC));  // Eq. 33
+      const Eigen::Matrix3d H = oracle::exp(Eigen::Matrix3d(l.x * LA + l.y * LB + l.z * LC));  // PITA Eq. 33
       EXPECT_TRUE(arrows_near(P5->at(t), arrow_of(H, o), 1e-9, extent(k), true)) << i << " t=" << t;
     }
   }
@@ -51,7 +51,7 @@ TEST(HeG, MatchesGenericMatrixLogAndExpAboutTheGlobalOrigin) {
     const auto H = motion(Method::HeG, k);
     for (double t : sample_times(k)) {
       const LagrangeWeights l = lagrange_weights(k.a.t, k.b.t, k.c.t, t);
-      const Eigen::Matrix3d M = oracle::exp(Eigen::Matrix3d(l.x * LA + l.y * LB + l.z * LC));  // Eq. 33, about g
+      const Eigen::Matrix3d M = oracle::exp(Eigen::Matrix3d(l.x * LA + l.y * LB + l.z * LC));  // PITA Eq. 33, about g
       EXPECT_TRUE(arrows_near(H->at(t), arrow_of(M, g), 1e-9, extent(k), true)) << i << " t=" << t;
     }
   }
@@ -59,7 +59,7 @@ TEST(HeG, MatchesGenericMatrixLogAndExpAboutTheGlobalOrigin) {
 
 // Appendix C: translating the keyframes moves P5's pattern rigidly with them,
 // but changes H(t)'s. (That the two agree when the centroid is the global
-// origin follows from the two oracle tests above: both are Eq. 33, about o
+// origin follows from the two oracle tests above: both are PITA Eq. 33, about o
 // and about g.)
 TEST(HeG, TranslationChangesHButNotP5) {
   Sampler s(602);
@@ -85,7 +85,7 @@ TEST(PaEl, MatchesGenericMatrixLogAndExp) {
   Sampler s(610);
   for (int i = 0; i < 200; ++i) {
     const KeyframeTriple k = s.triple(Config::wild);
-    const auto linear = [](const Arrow& A) {  // Eq. A.2
+    const auto linear = [](const Arrow& A) {  // PITA Eq. A.2
       Eigen::Matrix2d L;
       const Vector v = A.vector();
       L << v.real(), -v.imag(), v.imag(), v.real();
@@ -106,7 +106,7 @@ TEST(PaEl, MatchesGenericMatrixLogAndExp) {
   }
 }
 
-// The largest frame deviation from Eq. 40 for similarity S, relative to the
+// The largest frame deviation from PITA Eq. 40 for similarity S, relative to the
 // figure's extent.
 double invariance_violation(Method m, const KeyframeTriple& k, const Twirl& S) {
   const auto D = motion(m, k);
@@ -136,7 +136,7 @@ TEST(HeLp, RotationAndDilationViolateSimilarityInvarianceMeasurably) {
   EXPECT_LT(invariance_violation(Method::P5S, k, twirl({3, -2}, 0.7, 2.9)), 1e-12);
 }
 
-// H(t) of Eq. 33 about `center` through k's keyframes, by Eigen's generic
+// H(t) of PITA Eq. 33 about `center` through k's keyframes, by Eigen's generic
 // matrix log and exp (the oracle of the tests above).
 Arrow blended_oracle(const KeyframeTriple& k, double t, Point center) {
   const LagrangeWeights l = lagrange_weights(k.a.t, k.b.t, k.c.t, t);

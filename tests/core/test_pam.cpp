@@ -1,8 +1,8 @@
-// Persistent Affine Motion (core/pam.hpp, Sec. 3.3, Eq. 37-39): it
+// Persistent Affine Motion (core/pam.hpp, Sec. 3.3, PITA Eq. 37-39): it
 // interpolates its three affinities, agrees with P8 on similarities (two
 // independent implementations, one in complex numbers, one in 2x2 matrices),
-// is affine-invariant (Eq. 43, the property P8 owes to PAM in Fig. 10), and its
-// acceleration is constant in the moving frame (Eq. 39), by finite differences.
+// is affine-invariant (PITA Eq. 43, the property P8 owes to PAM in Fig. 10), and its
+// acceleration is constant in the moving frame (PITA Eq. 39), by finite differences.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -89,7 +89,7 @@ TEST(Pam, IsAffineInvariant) {
 }
 
 TEST(Pam, AccelerationIsConstantInTheMovingFrame) {
-  // Eq. 39: U'' = U E with E constant; even knots so that tau = 2t - 1 and
+  // PITA Eq. 39: U'' = U E with E constant; even knots so that tau = 2t - 1 and
   // d/dt = 2 d/dtau, hence U''(t) = 4 U(tau) E.
   Sampler s(14);
   for (int i = 0; i < 50; ++i) {

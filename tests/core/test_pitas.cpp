@@ -1,5 +1,5 @@
 // One property suite run over every PITA (Sophus's tests.hpp habit): the
-// interpolation constraints, symmetry (Eq. 41), similarity invariance (Eq. 40),
+// interpolation constraints, symmetry (PITA Eq. 41), similarity invariance (PITA Eq. 40),
 // extrapolation, plus the cross-checks the papers state between methods.
 #include "core/pitas/p04_be_lp.hpp"
 #include "core/pitas/p07_ra_pe.hpp"
@@ -39,7 +39,7 @@ TEST_P(EveryPita, InterpolatesTheKeyframes) {
 }
 
 TEST_P(EveryPita, IsSymmetric) {
-  // Eq. 41: P(a, A, b, B, c, C, t) = P(a, C, c + a - b, B, c, A, c + a - t).
+  // PITA Eq. 41: P(a, A, b, B, c, C, t) = P(a, C, c + a - b, B, c, A, c + a - t).
   for (Config c : {Config::tame, Config::uneven, Config::wild}) {
     Sampler s(200 + static_cast<int>(c));
     for (int i = 0; i < 200; ++i) {
@@ -55,7 +55,7 @@ TEST_P(EveryPita, IsSymmetric) {
   }
 }
 
-// Eq. 40 with S drawn from the given family of similarities.
+// PITA Eq. 40 with S drawn from the given family of similarities.
 void expect_similarity_invariance(Method m, Config c, std::uint64_t seed,
                                   const std::function<Twirl(Sampler&)>& draw, double tol) {
   Sampler s(seed);
@@ -173,7 +173,7 @@ TEST(CrossCheck, P3EqualsP10WhenNoWindingLeavesThePrincipalRange) {
 }
 
 TEST(CrossCheck, P6IsTheAverageOfTwoTransportedMorphs) {
-  // Eq. 34 rebuilt from the public building blocks (steady_morph,
+  // PITA Eq. 34 rebuilt from the public building blocks (steady_morph,
   // steady_transport) rather than from the cached twirls of LaLp.
   Sampler s(520);
   for (int i = 0; i < 100; ++i) {
@@ -222,7 +222,7 @@ TEST(CrossCheck, P4IsC1AtTheMiddleKnot) {
 }
 
 TEST(CrossCheck, P7FixedPointHasZeroAcceleration) {
-  // Eq. E.12: every point obeys x'' = K (x - f), so a point at f stays at rest:
+  // PITA Eq. E.12: every point obeys x'' = K (x - f), so a point at f stays at rest:
   // check x'' / (x - f) is the same complex number for p and q at several t.
   Sampler s(550);
   for (int i = 0; i < 100; ++i) {

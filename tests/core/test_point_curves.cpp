@@ -1,5 +1,5 @@
 // Point curves through n timed points (src/core/point_curves.cpp; PITA
-// Sec. 7.6, Eq. 48-50, Fig. 29): the PITA-based curve, uniform and
+// Sec. 7.6, PITA Eq. 48-50, Fig. 29): the PITA-based curve, uniform and
 // centripetal Neville, and the log-spiral blend.
 #include "core/point_curves.hpp"
 
@@ -42,7 +42,7 @@ std::vector<double> random_knots(Sampler& s, int n) {
 
 // n knots with steps within a factor 1.25 of each other (Fig. 29's are even).
 // The log-spiral blend needs them to stay well conditioned: with very uneven
-// knots the quadratic time map of LS- (u = y + 2z, Eq. 26) reaches large |u|
+// knots the quadratic time map of LS- (u = y + 2z, PITA Eq. 26) reaches large |u|
 // at knots far from a triple's own, where that triple's spiral may be 1e10
 // times the size of the points, and the blend's polynomial weights, though
 // they vanish at the knots, keep a share of it between them: the curve itself
@@ -112,7 +112,7 @@ TEST(PointCurveTable, NamesFindTheirCurves) {
 
 // ------------------------------------------------------------------ pita
 
-// Eq. 48-50's four conditions p(0) = a, p(1/3) = b, p(2/3) = c, p(1) = d with
+// PITA Eq. 48-50's four conditions p(0) = a, p(1/3) = b, p(2/3) = c, p(1) = d with
 // each PITA as the track.
 TEST(PointCurvePita, MeetsTheFourConditionsOfEq48To50ForEveryPita) {
   for (const Method m : pitas()) {
@@ -124,7 +124,7 @@ TEST(PointCurvePita, MeetsTheFourConditionsOfEq48To50ForEveryPita) {
   }
 }
 
-// Eq. 48-50 written out: X = P_x(0, ab, 1/3, bc, 2/3, cd, t),
+// PITA Eq. 48-50 written out: X = P_x(0, ab, 1/3, bc, 2/3, cd, t),
 // Y = P_x(1/3, ab, 2/3, bc, 1, cd, t), p = (1 - t) X.p + t Y.q, the edges
 // winding as the shape turns: bc turns from ab, and cd from bc, by the
 // principal angle between them (docs/paper-notes.md N34).
@@ -349,7 +349,7 @@ TEST(PointCurveLogSpiralBlend, ReproducesALogSpiral) {
 // ------------------------------------------------------------------ invariance
 
 // z -> scale e^{i angle} z + shift applied to the points moves the curve the
-// same way (Eq. 40 for points), for every rotation: the edges' windings follow
+// same way (PITA Eq. 40 for points), for every rotation: the edges' windings follow
 // the shape (each turns from the previous by the principal angle), so a
 // rotation that takes an edge across the direction pi changes every winding
 // by the same whole turn, which the similarity-invariant tracks P6 and P1

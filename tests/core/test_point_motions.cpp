@@ -1,5 +1,5 @@
 // The point motions of the PITAs (src/core/point_motions.cpp, Sec. 3.1): the
-// parabolic Pa- (Eq. 11) and the log-spiral LS- (Eq. 26).
+// parabolic Pa- (PITA Eq. 11) and the log-spiral LS- (PITA Eq. 26).
 #include "core/point_motions.hpp"
 
 #include <cmath>
@@ -11,7 +11,7 @@
 namespace pita::test {
 namespace {
 
-// The quadratic Lagrange weights written out (Eq. 10), so that the tests do
+// The quadratic Lagrange weights written out (PITA Eq. 10), so that the tests do
 // not take them from the code they check.
 LagrangeWeights weights(double a, double b, double c, double t) {
   return {(t - b) * (t - c) / ((a - b) * (a - c)), (t - a) * (t - c) / ((b - a) * (b - c)),

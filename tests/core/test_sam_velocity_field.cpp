@@ -1,5 +1,5 @@
 // The stationary velocity field of a SAM (src/core/sam_velocity_field.hpp;
-// SAM paper Sec. 6.2, Eq. 7, Fig. 8), against an independent oracle: Eigen's
+// SAM paper Sec. 6.2, SAM Eq. 7, Fig. 8), against an independent oracle: Eigen's
 // generic matrix log and exp (MatrixFunctions) and the fixed point solved
 // directly, and against the SAM's own samples by finite differences.
 #include <gtest/gtest.h>
@@ -42,7 +42,7 @@ TEST(SamVelocityField, IsEquation7WithTheFixedPoint) {
   EXPECT_NEAR((*field.fixed_point() - q).norm(), 0.0, 1e-12);
   for (const Eigen::Vector2d& x : {Eigen::Vector2d(-1.0, -2.6), Eigen::Vector2d(7.0, 5.4), Eigen::Vector2d(3.0, 2.0),
                                   Eigen::Vector2d(0.5, 4.0)}) {
-    const Eigen::Vector2d expected = log_L * (x - q);  // Eq. 7, t_N = 0 (1 is no eigenvalue)
+    const Eigen::Vector2d expected = log_L * (x - q);  // SAM Eq. 7, t_N = 0 (1 is no eigenvalue)
     EXPECT_NEAR((field.at(x) - expected).norm(), 0.0, 1e-12) << x.transpose();
   }
   // Linear in the distance from q (the caption): v(q + s d) = s v(q + d).
@@ -108,7 +108,7 @@ TEST(SamVelocityField, VelocityIsConstantInTheMovingFrame) {
 }
 
 TEST(SamVelocityField, TranslationHasAConstantFieldAndNoFixedPoint) {
-  // S1 (1 is an eigenvalue): no unique q; Eq. 7's t_N is the whole translation.
+  // S1 (1 is an eigenvalue): no unique q; SAM Eq. 7's t_N is the whole translation.
   const Affine2 A{Eigen::Matrix2d::Identity(), Eigen::Vector2d(2.0, -1.0)};
   const SamVelocityField field(A);
   EXPECT_FALSE(field.fixed_point().has_value());

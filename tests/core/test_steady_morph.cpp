@@ -36,7 +36,7 @@ TEST(SteadyMorph, FarExtrapolatedStartStillEndsExactlyOnB) {
 }
 
 TEST(SteadyMorph, IsSymmetric) {
-  // Eq. 22: M(a, A, b, B, t) = M(b, B, a, A, t).
+  // PITA Eq. 22: M(a, A, b, B, t) = M(b, B, a, A, t).
   Sampler s(11);
   for (int i = 0; i < 300; ++i) {
     const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
@@ -84,7 +84,7 @@ TEST(SteadyMorph, IsSimilarityCovariant) {
 }
 
 TEST(SteadyTransport, MovesByTheMorphSimilarity) {
-  // T(C, A, B, t) = T_{A, M(A,B,t)} . C (Eq. 24): the similarity that carries A
+  // T(C, A, B, t) = T_{A, M(A,B,t)} . C (PITA Eq. 24): the similarity that carries A
   // to the morph frame carries C along.
   Sampler s(15);
   for (int i = 0; i < 200; ++i) {

@@ -71,7 +71,7 @@ inline std::unique_ptr<Motion> motion(Method m, const KeyframeTriple& k,
   return make_pita(m, k, o);
 }
 
-// A twirl used as a similarity acting on whole keyframe sets (Eq. 40).
+// A twirl used as a similarity acting on whole keyframe sets (PITA Eq. 40).
 inline KeyframeTriple transformed(const Twirl& S, const KeyframeTriple& k) {
   return {{k.a.t, S * k.a.arrow}, {k.b.t, S * k.b.arrow}, {k.c.t, S * k.c.arrow}};
 }

@@ -1,4 +1,4 @@
-// Twirls (Eq. 5-8) and the twirl between two arrows (Eq. 17-19), checked
+// Twirls (PITA Eq. 5-8) and the twirl between two arrows (PITA Eq. 17-19), checked
 // against plain complex arithmetic f + m e^{iw}(x - f) as the oracle.
 #include "core/twirl.hpp"
 
@@ -15,14 +15,14 @@ TEST(Twirl, ActsAsSimilarityAboutItsFixedPoint) {
     const double w = s.uniform(-10, 10);
     const Twirl T = twirl(f, m, w);
     const Point x = s.point();
-    const Point oracle = f + std::polar(m, w) * (x - f);  // Eq. 2-5
+    const Point oracle = f + std::polar(m, w) * (x - f);  // PITA Eq. 2-5
     EXPECT_NEAR(std::abs((T * x) - oracle), 0.0, 1e-12);
     const Arrow A = s.arrow(Config::wild);
-    const Arrow TA = T * A;  // Eq. 7
+    const Arrow TA = T * A;  // PITA Eq. 7
     EXPECT_NEAR(std::abs(TA.p - (f + std::polar(m, w) * (A.p - f))), 0.0, 1e-12);
     EXPECT_NEAR(TA.m, m * A.m, 1e-12 * TA.m);
     EXPECT_NEAR(TA.w, A.w + w, 1e-12);
-    // Eq. 8: T^t = T(f, m^t, t w).
+    // PITA Eq. 8: T^t = T(f, m^t, t w).
     const double t = s.uniform(-2, 2);
     const Point oracle_t = f + std::polar(std::pow(m, t), t * w) * (x - f);
     EXPECT_NEAR(std::abs((pow(T, t) * x) - oracle_t), 0.0, 1e-11);
@@ -102,7 +102,7 @@ TEST(Twirl, TranslationFallbackIsContinuousAcrossItsThreshold) {
       EXPECT_LT(std::abs(x.p - Point{3.0 * t, 1.0 * t}), 1e-11);
     }
   }
-  // Exactly equal vectors: a pure translation (Eq. 15).
+  // Exactly equal vectors: a pure translation (PITA Eq. 15).
   const Arrow B{{2.0, -1.0}, 1.0, 0.3};
   const Arrow mid = apply_power(twirl_between(A, B), 0.5, A);
   EXPECT_EQ(mid.p, (Point{1.0, -0.5}));
@@ -135,7 +135,7 @@ TEST(Twirl, ExpOfLogIsTheTwirlAndExpOfTLogIsItsPower) {
           << "t = " << t << ", x = " << x;
     }
   }
-  // The generator's velocity field vanishes at the fixed point (Eq. 19).
+  // The generator's velocity field vanishes at the fixed point (PITA Eq. 19).
   const Point f = *fixed_point(T);
   EXPECT_NEAR(std::abs(G.L * f + G.v), 0.0, 1e-13);
 }

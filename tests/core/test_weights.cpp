@@ -1,4 +1,4 @@
-// Lagrange weights (Eq. 10) and Neville ratios (Eq. 14), both header-only
+// Lagrange weights (PITA Eq. 10) and Neville ratios (PITA Eq. 14), both header-only
 // (core/lagrange_weights.hpp, core/neville_ratios.hpp).
 #include "core/lagrange_weights.hpp"
 #include "core/neville_ratios.hpp"
@@ -25,7 +25,7 @@ TEST(LagrangeWeights, InterpolateQuadraticsExactly) {
 }
 
 TEST(NevilleRatios, ReproduceTheLagrangeInterpolant) {
-  // Eq. 12 with the ratios of Eq. 14 equals Eq. 11.
+  // PITA Eq. 12 with the ratios of PITA Eq. 14 equals PITA Eq. 11.
   Sampler s(21);
   for (int i = 0; i < 200; ++i) {
     const double a = 0, b = s.uniform(0.1, 0.9), c = 1;

@@ -53,7 +53,7 @@ TEST(MovingKeyframes, TauZeroAndOneAreFromAndTo) {
 
 TEST(MovingKeyframes, EachMovesByItsSteadyMorph) {
   // Independently: SMA(A, B, s) = A.p + (e^{sL} - 1)/(e^L - 1) (B.p - A.p) on p,
-  // with L = ln(mB/mA) + i(wB - wA) (Eq. 19-20), and m, w interpolated
+  // with L = ln(mB/mA) + i(wB - wA) (PITA Eq. 19-20), and m, w interpolated
   // geometrically and linearly.
   const scene::Scene scene = scene::parse_scene(kMoving, "moving.json");
   const Arrow A = arrow_keys(scene).keyframes[2].arrow, B = arrow_keys(scene).keyframes_to[2];

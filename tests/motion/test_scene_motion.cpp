@@ -51,7 +51,7 @@ TEST(SceneMotion, ArrowsWithoutTimingAreTheMethodItself) {
   }
 }
 
-// Keyframes "as-given" reach the method in the order written (Eq. 42's
+// Keyframes "as-given" reach the method in the order written (PITA Eq. 42's
 // P(b, B, a, A, c, C, t), docs/paper-notes.md N41): the motion still passes
 // through each keyframe at its knot and runs from the least knot to the
 // greatest; an order-independent method (P1, Fig. 10) gives the same frames as
@@ -306,7 +306,7 @@ TEST(SceneMotion, SpaceScenesEaseTheirTime) {
   const SceneMotion eased = build_motion(space(R"(, "timing": {"ease": "cubic"})"));
   const SceneMotion plain = build_motion(space());
   for (double t : {0.0, 0.3, 1.0, 1.7, 2.5, 3.0}) {
-    const double x = t / 3.0, tau = 3.0 * (3 * x * x - 2 * x * x * x);  // the cubic ease, Eq. 3.20
+    const double x = t / 3.0, tau = 3.0 * (3 * x * x - 2 * x * x * x);  // the cubic ease, chapter Eq. 3.20
     const Affine3 got = eased.pose3_at(t), expected = plain.pose3_at(tau);
     EXPECT_LT((got.L - expected.L).norm() + (got.b - expected.b).norm(), 1e-12) << t;
   }

@@ -70,7 +70,7 @@ def gen_config(rng, method, i):
         arrows[1] = O.sma(arrows[0], arrows[2], 0.5)
         kind += "+B=M(A,C)"
     elif special < 0.10:
-        # equal vectors: pure translation (Eq. 15)
+        # equal vectors: pure translation (PITA Eq. 15)
         arrows[1] = (arrows[1][0], arrows[0][1], arrows[0][2])
         kind += "+translation"
     elif special < 0.13:
@@ -328,7 +328,7 @@ FIXED = [
      [-5.0, -10.0, -12.0, 0.5, 3.0], "fixed: arithmetic path, geometric magnitude"),
     ("SMA", [0.0, 1.0], [(0j, 1.0, 0.0), (1 + 0j, 20.0, 1.0)], {"path_mean": "harmonic"},
      [-5.0, -10.0, -12.0, 0.5, 3.0], "fixed: harmonic path, geometric magnitude"),
-    # the same inside [a, c]: P9 (Eq. D.2) with an arithmetic path keeps -LP magnitudes
+    # the same inside [a, c]: P9 (PITA Eq. D.2) with an arithmetic path keeps -LP magnitudes
     ("P9", [0.0, 0.01, 1.0], [(0j, 1.0, 0.0), (1 + 0j, 20.0, 1.0), (2 + 1j, 1.0, 0.0)],
      {"path_mean": "arithmetic"}, [0.1, 0.2, 0.5], "fixed: P9 arithmetic path, skewed knots"),
     # Fig. 28 / docs/paper-notes.md N14 configuration, with extrapolation (Sec. 7.5)

@@ -69,18 +69,18 @@ def arrow_from_vector(p, v):
     return (p, abs(v), cmath.phase(v))
 
 
-# --------------------------------------------------------------------------- Eq. 10, 14
+# --------------------------------------------------------------------------- PITA Eq. 10, 14
 def lagrange_weights(a, b, c, t):
-    """x, y, z of Eq. 10."""
+    """x, y, z of PITA Eq. 10."""
     x = (t - b) / (a - b) * (t - c) / (a - c)
     y = (t - a) / (b - a) * (t - c) / (b - c)
     z = (t - a) / (c - a) * (t - b) / (c - b)
     return x, y, z
 
 
-# --------------------------------------------------------------------------- twirls (Eq. 5-8, 17-19)
+# --------------------------------------------------------------------------- twirls (PITA Eq. 5-8, 17-19)
 class Twirl:
-    """The twirl T_{A,B} mapping arrow A onto arrow B (Eq. 17-19, docs/paper-notes.md N1).
+    """The twirl T_{A,B} mapping arrow A onto arrow B (PITA Eq. 17-19, docs/paper-notes.md N1).
 
     L = ln(B.m/A.m) + i (B.w - A.w); T^t x = A.p + e^{tL}(x - A.p) + phi_t (B.p - A.p),
     phi_t = expm1(tL)/expm1(L), or t when |e^L - 1| < TWIRL_EPS (README).
@@ -107,7 +107,7 @@ class Twirl:
         return self.o + rot + tr
 
     def arrow(self, X, t):
-        """T^t . X (Eq. 7)."""
+        """T^t . X (PITA Eq. 7)."""
         return (self.point(X[0], t), X[1] * math.exp(t * self.lr), X[2] + t * self.li)
 
 
@@ -123,7 +123,7 @@ def _mean_factor(r, t, mean):
 
 
 def sma(A, B, t, path_mean="geometric", magnitude_mean="geometric"):
-    """Steady morph M(A, B, t) (Eq. 20); with path_mean/magnitude_mean other than
+    """Steady morph M(A, B, t) (PITA Eq. 20); with path_mean/magnitude_mean other than
     geometric, the non-steady WAM/WHM variants of Sec. 2.7: the origin keeps turning
     about the twirl's fixed point f by t*w, but its distance to f is the weighted mean of
     |A.p - f| and |B.p - f|; the magnitude is the weighted mean of A.m and B.m.
@@ -156,7 +156,7 @@ def sma(A, B, t, path_mean="geometric", magnitude_mean="geometric"):
 
 
 def sta(X, A, B, t):
-    """Steady transport T(X, A, B, t) = T_{A,B}^t . X (Eq. 24)."""
+    """Steady transport T(X, A, B, t) = T_{A,B}^t . X (PITA Eq. 24)."""
     return Twirl(A, B).arrow(X, t)
 
 
@@ -207,7 +207,7 @@ def p3(a, A, b, B, c, C, t):
 
 
 def p2(a, A, b, B, c, C, t, anchor="start"):
-    """LS-Po: Eq. 26 as corrected by docs/paper-notes.md N2 and README."""
+    """LS-Po: PITA Eq. 26 as corrected by docs/paper-notes.md N2 and README."""
     x, y, z = lagrange_weights(a, b, c, t)
     m = x * A[1] + y * B[1] + z * C[1]
     w = x * A[2] + y * B[2] + z * C[2]
@@ -241,7 +241,7 @@ def p10(a, A, b, B, c, C, t):
 
 # --------------------------------------------------------------------------- coordinated PITAs
 def p6(a, A, b, B, c, C, t):
-    """La-LP, Eq. 34 with docs/paper-notes.md N4."""
+    """La-LP, PITA Eq. 34 with docs/paper-notes.md N4."""
     x, y, z = lagrange_weights(a, b, c, t)
     L = sta(sma(A, B, y + z), B, C, z)
     R = sta(sma(C, B, x + y), B, A, x)
@@ -249,7 +249,7 @@ def p6(a, A, b, B, c, C, t):
 
 
 def p9(a, A, b, B, c, C, t, path_mean="geometric", magnitude_mean="geometric"):
-    """Ne-LP, Eq. D.2 with q, r, s of Eq. 14 (options: Sec. 2.7 variants of each SMA)."""
+    """Ne-LP, PITA Eq. D.2 with q, r, s of PITA Eq. 14 (options: Sec. 2.7 variants of each SMA)."""
     q = (t - a) / (b - a)
     r = (t - b) / (c - b)
     s = (t - a) / (c - a)
@@ -258,12 +258,12 @@ def p9(a, A, b, B, c, C, t, path_mean="geometric", magnitude_mean="geometric"):
 
 
 def bezier(A, B, C, t):
-    """Eq. 29."""
+    """PITA Eq. 29."""
     return sma(sma(A, B, t), sma(B, C, t), t)
 
 
 def p4(a, A, b, B, c, C, t):
-    """Be-LP, Eq. 27-32 with docs/paper-notes.md N3 and the README time warp (N17)."""
+    """Be-LP, PITA Eq. 27-32 with docs/paper-notes.md N3 and the README time warp (N17)."""
     u = warp(a, b, c, t)
     if u <= 0.5:
         Lc = sta(sma(A, B, 0.75), C, B, 0.25)
@@ -415,7 +415,7 @@ def evaluate(method, keyframes, t, options=None):
 
 def selfcheck(n=200, seed=7):
     """(Distances are relative to the frame's size.)  Properties the paper states, checked on the oracle itself (independent of the CLI):
-    interpolation, symmetry (Eq. 41), similarity invariance (Eq. 40; P5/P10 excepted,
+    interpolation, symmetry (PITA Eq. 41), similarity invariance (PITA Eq. 40; P5/P10 excepted,
     docs/paper-notes.md N7), twirl_between(A, B) . A = B, P4 C1 at b, and the ODEs of P7
     (x'' = K (x - f), one K and f for both end points) and P8 (alpha'' = e alpha,
     beta'' = g alpha) by finite differences.  Returns the worst residual per check."""
@@ -459,10 +459,10 @@ def selfcheck(n=200, seed=7):
             t = rng.uniform(a - 0.5, c + 0.5)
             D = evaluate(meth, kf, t)
             Dr = evaluate(meth, [(a, C), (a + c - b, B), (c, A)], a + c - t)
-            note("symmetry Eq.41 " + meth, adist(D, Dr, pw))
+            note("symmetry PITA Eq.41 " + meth, adist(D, Dr, pw))
             if meth not in ("P5", "P10"):
                 Ds = evaluate(meth, [(tk, sim(K)) for tk, K in kf], t)
-                note("similarity Eq.40 " + meth, adist(Ds, sim(D), True) / S[1])
+                note("similarity PITA Eq.40 " + meth, adist(Ds, sim(D), True) / S[1])
         h = 1e-5
         P = lambda s: p4(a, A, b, B, c, C, s)[0]
         d1 = (-3 * P(b) + 4 * P(b + h) - P(b + 2 * h)) / (2 * h)   # one-sided, O(h^2)

@@ -20,7 +20,7 @@ Outside [t_0, t_n] the motion is evaluated at t itself.
 
 Eases: "linear"; CSS "ease", "ease-in", "ease-out", "ease-in-out" and
 "cubic-bezier(x1, y1, x2, y2)"; "sine"; "cubic"; {"sine": {"k1", "k2"}} (sine cap, chapter
-Eq. 3.19 with the normaliser of N16); {"parabolic": {"t1", "t2"}} (chapter Eq. 3.20-3.22 with
+chapter Eq. 3.19 with the normaliser of N16); {"parabolic": {"t1", "t2"}} (chapter Eq. 3.20-3.22 with
 v0 = 2/(t2 - t1 + 1), N16).
 
 Arc length: adaptive Gauss-Legendre (12 nodes, panels halved until two levels agree to 1e-14
@@ -55,7 +55,7 @@ def ease_linear(x):
 
 
 def ease_sine(x):
-    """Chapter Eq. 3.18: (sin(pi x - pi/2) + 1)/2."""
+    """Chapter chapter Eq. 3.18: (sin(pi x - pi/2) + 1)/2."""
     return (math.sin(math.pi * x - math.pi / 2) + 1) / 2
 
 
@@ -139,7 +139,7 @@ CSS_NAMED = {
 
 
 class SineCap:
-    """Chapter Eq. 3.19 (normaliser of N16): sine ease-in on [0, k1], constant speed on
+    """Chapter chapter Eq. 3.19 (normaliser of N16): sine ease-in on [0, k1], constant speed on
     [k1, k2], sine ease-out on [k2, 1]; ease = s / f."""
 
     def __init__(self, k1, k2):
@@ -161,7 +161,7 @@ class SineCap:
 
 
 class Parabolic:
-    """Chapter Eq. 3.20-3.22 (v0 of N16): velocity rises linearly from 0 to v0 on [0, t1],
+    """Chapter chapter Eq. 3.20-3.22 (v0 of N16): velocity rises linearly from 0 to v0 on [0, t1],
     stays v0 on [t1, t2], falls linearly to 0 on [t2, 1]; v0 = 2/(t2 - t1 + 1) makes the area
     1.  ease is the integral of the velocity (integrated here piece by piece)."""
 

@@ -3,7 +3,7 @@
 // those figures: every printed number is recomputed here independently, from
 // the core methods (make_motion, not the scene's motion stage) and the closed
 // form of the discrepancy, E(A, B) = (|c - a|^2 + |d - b|^2)(1/A.m^2 + 1/B.m^2)
-// (Eq. 47 as corrected, N5), and the figures' claims are checked: Fig. B.30's
+// (PITA Eq. 47 as corrected, N5), and the figures' claims are checked: Fig. B.30's
 // two patterns agree on the left and P10 pops on the right, Fig. 18's moves
 // bring D(1/4) close to E.
 #include <gtest/gtest.h>

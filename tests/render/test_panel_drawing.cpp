@@ -70,7 +70,7 @@ TEST(PatternLayer, ExtendedFormHasPAtItsMidpoint) {
 TEST(PatternLayer, TimesAndMethodDrawAnotherMethodsFramesAtThoseTimes) {
   // Fig. 5: keyframes at a common origin; the layer draws Pa-Po (parabola,
   // polar Lagrange) at t = 1/4 and 3/4 while the panel's method is P6. Pa-
-  // keeps p at 0 and -Po blends m and w by the Lagrange weights of Eq. 9.
+  // keeps p at 0 and -Po blends m and w by the Lagrange weights of PITA Eq. 9.
   const std::array<double, 3> m = {0.6, 2.4, 1.2}, w = {0.1, 1.6, 3.3};
   std::vector<Keyframe> keys;
   for (std::size_t i = 0; i < 3; ++i) keys.push_back({0.5 * static_cast<double>(i), Arrow{{0.0, 0.0}, m[i], w[i]}});
@@ -110,7 +110,7 @@ TEST(PatternLayer, DotsDrawEachFramesStartPoint) {
 
 TEST(PatternLayer, CoilsShowEachFramesWindingEvolvingLinearly) {
   // Fig. 3: under the steady morph the winding goes linearly from A.w to B.w
-  // (Eq. 21), so the coil of frame i turns through A.w + t_i (B.w - A.w).
+  // (PITA Eq. 21), so the coil of frame i turns through A.w + t_i (B.w - A.w).
   const Arrow A{{0.0, 0.0}, 2.0, 0.3}, B{{4.0, 1.0}, 0.6, 3.6 + 2.0 * std::numbers::pi};
   const scene::Panel p = panel(Method::SMA, {{0.0, A}, {1.0, B}}, 9);
   scene::PatternLayer layer;
@@ -398,7 +398,7 @@ TEST(DiscrepancyLayer, RadiusIsScaleTimesE) {
                                          {ti - h, frames[i - 1]}};
         predicted = make_motion(Method::P1, seen)->at(ti);
       }
-      // E by its closed form (docs/paper-notes.md N5), independent of Eq. 44-47.
+      // E by its closed form (docs/paper-notes.md N5), independent of PITA Eq. 44-47.
       const Arrow& x = frames[i];
       const double E = (std::norm(predicted.p - x.p) + std::norm(predicted.q() - x.q())) *
                        (1.0 / (x.m * x.m) + 1.0 / (predicted.m * predicted.m));

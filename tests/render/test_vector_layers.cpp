@@ -1,8 +1,8 @@
 // The "vectors" and "fixed-points" layers of src/render/panel_drawing.cpp
 // (PITA Figs. 9, 14, 15; docs/paper-notes.md N40), checked on the drawn
 // shapes themselves: P1's drawn accelerations are all equal, P7's drawn
-// accelerations are one similarity of the drawn segments to f (Eq. 35), P8's
-// are constant in the drawn frames (Eq. 39), and the placement, colours,
+// accelerations are one similarity of the drawn segments to f (PITA Eq. 35), P8's
+// are constant in the drawn frames (PITA Eq. 39), and the placement, colours,
 // scale and errors follow the fields.
 #include <gtest/gtest.h>
 
@@ -52,7 +52,7 @@ TEST(VectorsLayer, P1AccelerationsAreOneVectorAtEachPoint) {
 }
 
 TEST(VectorsLayer, P7AccelerationsAreOneSimilarityOfTheSegmentsToF) {
-  // Eq. 35 on the drawing: each black arrow is S times its orange segment
+  // PITA Eq. 35 on the drawing: each black arrow is S times its orange segment
   // (from p to f), S the same for every frame.
   scene::VectorsLayer vectors;
   vectors.at_q = false;

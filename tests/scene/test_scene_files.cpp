@@ -352,7 +352,7 @@ TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
 }
 
 // Fig. D.34: P9's construction. L and R (the right panel's keyframes) are the
-// timed SMAs M(a, A, b, B) and M(b, B, c, C) at t = 1/4 (Eq. 20, by core's
+// timed SMAs M(a, A, b, B) and M(b, B, c, C) at t = 1/4 (PITA Eq. 20, by core's
 // steady_morph, not by the motion stage), and the SMA from L to R at 1/4 is
 // P9's D(1/4), as the title prints.
 TEST(SceneFiles, AppendixD34BuildsP9FromTwoSteadyMorphs) {

@@ -1,7 +1,7 @@
 // The "blend" chain (docs/paper-notes.md N33): on the span [t_i, t_{i+1}]
 //   D(t) = M(X(t), Y(t), s),  s = (t - t_i)/(t_{i+1} - t_i),
 // with X the method through keyframes i-1, i, i+1, Y the method through
-// i, i+1, i+2 and M the steady morph (Eq. 20). The first and last spans, and
+// i, i+1, i+2 and M the steady morph (PITA Eq. 20). The first and last spans, and
 // times outside the knots, use the one triple they have.
 #pragma once
 

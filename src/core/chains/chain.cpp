@@ -19,7 +19,7 @@ namespace {
 constexpr std::array<ChainInfo, 4> kChains{{
     {Chain::blend, "blend", "steady blend of the method through the two triples that share the span (C1)", true, 1},
     {Chain::neville, "neville",
-     "Neville's recursion over all keyframes, the method at the bottom, steady morphs above (Eq. 48-50)", true, 1},
+     "Neville's recursion over all keyframes, the method at the bottom, steady morphs above (PITA Eq. 48-50)", true, 1},
     {Chain::spiral, "spiral", "the SMA between consecutive keyframes (C0)", false, 0},
     {Chain::bezier_spiral, "bezier-spiral",
      "a cubic Bezier of p and of q per span, the span's SMA at 1/3 and 2/3 as controls (C0)", false, 0},

@@ -2,7 +2,7 @@
 // of steady morphs), built from a three-keyframe method (or the SMA) and a
 // chain rule that says how it extends past three keyframes. The PITA paper
 // stops at three keyframes (its conclusion names "more than 3" as the next
-// step); Sec. 7.6 (Eq. 48-50) blends two PITAs for four points, and the
+// step); Sec. 7.6 (PITA Eq. 48-50) blends two PITAs for four points, and the
 // course project on drawn targets chains spirals. docs/paper-notes.md N33
 // records how pita reads and completes them.
 //
@@ -63,7 +63,7 @@ using WindowMotion = std::function<std::unique_ptr<Motion>(std::span<const Keyfr
 std::unique_ptr<Motion> make_chain(Chain chain, std::span<const Keyframe> keyframes, const WindowMotion& window,
                                    int window_size, const WindowMotion& sma, bool winding_aware);
 
-// The steady blend M(X, Y, s) of the chains (Eq. 20): exactly X at s = 0 and
+// The steady blend M(X, Y, s) of the chains (PITA Eq. 20): exactly X at s = 0 and
 // Y at s = 1 (whatever the other is, so that far windows that overflow cannot
 // spoil a knot). For a method that is not winding-aware (P1, P5, P7, P8, ...
 // report windings only modulo 2 pi, docs/paper-notes.md N21) Y's winding is

@@ -1,9 +1,9 @@
 // The "neville" chain (docs/paper-notes.md N33): Aitken-Neville's recursion
 // over all n keyframes with the method as its bottom level (three keyframes,
-// or two for the SMA) and steady morphs (Eq. 20) above it:
+// or two for the SMA) and steady morphs (PITA Eq. 20) above it:
 //   N[j..k](t) = M(N[j..k-1](t), N[j+1..k](t), (t - t_j)/(t_k - t_j)).
-// For four keyframes it is Sec. 7.6's construction (Eq. 48-50) on arrows;
-// with the SMA at the bottom and three keyframes it is P9 (Eq. D.2).
+// For four keyframes it is Sec. 7.6's construction (PITA Eq. 48-50) on arrows;
+// with the SMA at the bottom and three keyframes it is P9 (PITA Eq. D.2).
 #pragma once
 
 #include <memory>

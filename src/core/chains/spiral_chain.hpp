@@ -1,4 +1,4 @@
-// The "spiral" chain (docs/paper-notes.md N33): the SMA (Eq. 21) between each
+// The "spiral" chain (docs/paper-notes.md N33): the SMA (PITA Eq. 21) between each
 // pair of consecutive keyframes, the course project's primary scheme. C0 at
 // the knots; before the first knot and after the last it extrapolates the
 // first and last SMA along their log-spirals.

@@ -44,19 +44,19 @@ Arrow AppendixDVariant::permuted(Permutation p, double t) const {
   switch (form_) {
     case AppendixDForm::lagrange_t1: {
       const LagrangeWeights l = lagrange_weights(k0.t, k1.t, k2.t, t);
-      // T_{1->2}^{w2} . M(k0, k1, w1 + w2)   (Eq. 34)
+      // T_{1->2}^{w2} . M(k0, k1, w1 + w2)   (PITA Eq. 34)
       return apply_power(twirl_between(k1.arrow, k2.arrow), l.z,
                          apply_power(twirl_between(k0.arrow, k1.arrow), l.y + l.z, k0.arrow));
     }
     case AppendixDForm::lagrange_t2: {
       const LagrangeWeights l = lagrange_weights(k0.t, k1.t, k2.t, t);
-      // T(M(k0, k1, w1), k0, k2, w2) = T_{0->2}^{w2} . M(k0, k1, w1)   (Eq. D.1)
+      // T(M(k0, k1, w1), k0, k2, w2) = T_{0->2}^{w2} . M(k0, k1, w1)   (PITA Eq. D.1)
       return apply_power(twirl_between(k0.arrow, k2.arrow), l.z,
                          apply_power(twirl_between(k0.arrow, k1.arrow), l.y, k0.arrow));
     }
     case AppendixDForm::neville: {
       const NevilleRatios n = neville_ratios(k0.t, k1.t, k2.t, t);
-      // M(M(k0, k1, q), M(k1, k2, r), s)   (Eq. D.2)
+      // M(M(k0, k1, q), M(k1, k2, r), s)   (PITA Eq. D.2)
       return steady_morph(steady_morph(k0.arrow, k1.arrow, n.q), steady_morph(k1.arrow, k2.arrow, n.r), n.s);
     }
   }

@@ -1,14 +1,14 @@
 // The non-chosen -LP candidates of appendix D (docs/paper-notes.md N55), each
 // through the three timed keyframes taken in one of six orders (Permutation):
 //
-//   T1(a, A, b, B, c, C, t) = T_{B->C}^z . M(A, B, y + z)       (Eq. 34; P6's half)
-//   T2(a, A, b, B, c, C, t) = T_{A->C}^z . M(A, B, y)           (Eq. D.1)
-//   M (a, A, b, B, c, C, t) = M(M(A, B, q), M(B, C, r), s)      (Eq. D.2; P9)
+//   T1(a, A, b, B, c, C, t) = T_{B->C}^z . M(A, B, y + z)       (PITA Eq. 34; P6's half)
+//   T2(a, A, b, B, c, C, t) = T_{A->C}^z . M(A, B, y)           (PITA Eq. D.1)
+//   M (a, A, b, B, c, C, t) = M(M(A, B, q), M(B, C, r), s)      (PITA Eq. D.2; P9)
 //
-// with the Lagrange weights x, y, z of Eq. 10 and the Neville ratios q, r, s
-// of Eq. 14 computed from the knots in the permuted order, M the steady morph
-// (Eq. 20) and T(X, P, Q, z) = T_{P->Q}^z . X the transport of Eq. D.1.
-// "BAC" names T(b, B, a, A, c, C, t) (Eq. D.3's notation).
+// with the Lagrange weights x, y, z of PITA Eq. 10 and the Neville ratios q, r, s
+// of PITA Eq. 14 computed from the knots in the permuted order, M the steady morph
+// (PITA Eq. 20) and T(X, P, Q, z) = T_{P->Q}^z . X the transport of PITA Eq. D.1.
+// "BAC" names T(b, B, a, A, c, C, t) (PITA Eq. D.3's notation).
 //
 // Symmetrized, the variant is the steady average of itself and its time
 // reverse, the permutation with A and C swapped (ABC <-> CBA, BCA <-> BAC,

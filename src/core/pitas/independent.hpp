@@ -11,7 +11,7 @@
 
 namespace pita {
 
-enum class PointMotion { parabola, log_spiral };          // Pa- (Eq. 11), LS- (Eq. 26)
+enum class PointMotion { parabola, log_spiral };          // Pa- (PITA Eq. 11), LS- (PITA Eq. 26)
 enum class VectorMotion { cartesian, polar, log_polar };  // -Ca, -Po, -LP
 
 class IndependentPita final : public Motion {

@@ -16,13 +16,13 @@ enum class Anchor { start, midpoint };
 
 // How the keyframes reach a three-keyframe method: sorted by knot (the
 // default; the knots must increase), or in the order given, so that
-// P(b, B, a, A, c, C, t) of order-independence (Sec. 4, Eq. 42) can be
+// P(b, B, a, A, c, C, t) of order-independence (Sec. 4, PITA Eq. 42) can be
 // evaluated (docs/paper-notes.md N41).
 enum class KnotOrder { increasing, as_given };
 
 // The order in which the appendix-D variants (La-T1, La-T2, Ne-M) take the
 // timed keyframes: "BAC" evaluates T1(b, B, a, A, c, C, t) (appendix D.1,
-// Eq. D.3's notation; docs/paper-notes.md N55).
+// PITA Eq. D.3's notation; docs/paper-notes.md N55).
 enum class Permutation { ABC, ACB, BAC, BCA, CAB, CBA };
 
 // Per-method options. Each method reads only the fields that concern it

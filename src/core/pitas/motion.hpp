@@ -17,7 +17,7 @@ class Motion {
   virtual ~Motion() = default;
   // D(t). May throw MotionDomainError for isolated singular configurations.
   virtual Arrow at(double t) const = 0;
-  // The global fixed point of a radially-perseverant motion (P7, Eq. 35-36:
+  // The global fixed point of a radially-perseverant motion (P7, PITA Eq. 35-36:
   // every point's acceleration is S (x - f)); nullopt for the other motions
   // and when f is at infinity (docs/paper-notes.md N40).
   virtual std::optional<Point> global_fixed_point() const { return std::nullopt; }

@@ -1,4 +1,4 @@
-// P1:Pa-Ca (Sec. 3.1): parabolic point (Eq. 11), Cartesian vector (-Ca).
+// P1:Pa-Ca (Sec. 3.1): parabolic point (PITA Eq. 11), Cartesian vector (-Ca).
 // p and the zero-turn vector are Lagrange interpolants, so q = p + vector is
 // one too: affine-invariant, handle-invariant, globally perseverant, not
 // winding-aware (the output winding is the principal angle of the vector).

@@ -1,4 +1,4 @@
-// P2:LS-Po (Sec. 3.1): log-spiral point (Eq. 26), polar vector (-Po).
+// P2:LS-Po (Sec. 3.1): log-spiral point (PITA Eq. 26), polar vector (-Po).
 // With anchor = midpoint, the log-spiral moves the midpoint p + vector/2 of the
 // arrow instead of its start point (the variant drawn in Fig. 1).
 #pragma once

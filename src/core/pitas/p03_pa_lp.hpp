@@ -1,4 +1,4 @@
-// P3:Pa-LP (Sec. 3.1): parabolic point (Eq. 11), log-polar vector (-LP).
+// P3:Pa-LP (Sec. 3.1): parabolic point (PITA Eq. 11), log-polar vector (-LP).
 #pragma once
 
 #include "core/keyframe.hpp"

@@ -1,4 +1,4 @@
-// P4:Be-LP (Sec. 3.2, Eq. 27-32): two Bezier SMAs joined at B, with the
+// P4:Be-LP (Sec. 3.2, PITA Eq. 27-32): two Bezier SMAs joined at B, with the
 // control arrows of docs/paper-notes.md N3:
 //   L = T_{C->B}^{1/4} . M(A, B, 3/4),   R = T_{A->B}^{1/4} . M(C, B, 3/4),
 // so that B = M(L, R) and the motion is C1 at t = b. The Bezier parameter is

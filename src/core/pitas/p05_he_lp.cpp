@@ -19,7 +19,7 @@ HeLp::HeLp(const KeyframeTriple& k, HomogeneousCenter center) : k_(k) {
 
 Arrow HeLp::at(double t) const {
   const LagrangeWeights l = lagrange_weights(k_.a.t, k_.b.t, k_.c.t, t);
-  // (2) H(t) = exp(x log H(A) + y log H(B) + z log H(C)) (Eq. 33),
+  // (2) H(t) = exp(x log H(A) + y log H(B) + z log H(C)) (PITA Eq. 33),
   const SimilarityLog blend{lagrange(l, log_[0], log_[1], log_[2]),
                             lagrange(l, translation_log_[0], translation_log_[1],
                                      translation_log_[2])};

@@ -1,4 +1,4 @@
-// P5:He-LP (Sec. 3.2, Eq. 33, appendices A and C): the exponential of the
+// P5:He-LP (Sec. 3.2, PITA Eq. 33, appendices A and C): the exponential of the
 // Lagrange-weighted mean of the logs of the keyframes' homogeneous matrices,
 // taken about the centroid o of the three origins (appendix C's heuristic).
 // Logs use principal angles (docs/paper-notes.md N6), so P5 is not winding-aware
@@ -6,7 +6,7 @@
 // only (item 7): see HsLp for the similarity-invariant variant.
 //
 // In complex form a similarity z -> e^l z + p has log (l, v) with
-// v = p l / (e^l - 1) (Eq. A.7-A.8), and exp(l, v) = (e^l, (e^l - 1)/l v) (A.6).
+// v = p l / (e^l - 1) (PITA Eq. A.7-A.8), and exp(l, v) = (e^l, (e^l - 1)/l v) (A.6).
 #pragma once
 
 #include "core/keyframe.hpp"

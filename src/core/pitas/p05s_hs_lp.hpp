@@ -3,7 +3,7 @@
 // F = M(A, C) instead of about the centroid. Each keyframe is expressed in F's
 // frame (F^{-1} . A), blended as P5 does (principal angles), and mapped back by
 // F. Because F is carried along by any similarity of the keyframes (including
-// its winding), Eq. 40 holds exactly, for every rotation.
+// its winding), PITA Eq. 40 holds exactly, for every rotation.
 #pragma once
 
 #include "core/keyframe.hpp"

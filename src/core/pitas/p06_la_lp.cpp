@@ -14,9 +14,9 @@ LaLp::LaLp(const KeyframeTriple& k)
 
 Arrow LaLp::at(double t) const {
   const LagrangeWeights l = lagrange_weights(k_.a.t, k_.b.t, k_.c.t, t);
-  // L = T_{B->C}^z . M(A, B, y + z)   (Eq. 34)
+  // L = T_{B->C}^z . M(A, B, y + z)   (PITA Eq. 34)
   const Arrow left = apply_power(b_to_c_, l.z, apply_power(a_to_b_, l.y + l.z, k_.a.arrow));
-  // R = T_{B->A}^x . M(C, B, x + y)   (Eq. 34 with knots c, b, a)
+  // R = T_{B->A}^x . M(C, B, x + y)   (PITA Eq. 34 with knots c, b, a)
   const Arrow right = apply_power(b_to_a_, l.x, apply_power(c_to_b_, l.x + l.y, k_.c.arrow));
   return steady_average(left, right);
 }

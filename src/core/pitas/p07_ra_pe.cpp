@@ -23,7 +23,7 @@ std::optional<Point> RaPe::fixed_point() const {
   const Complex kappa_m1 = pe_.kappa() - 1.0;
   if (std::abs(kappa_m1) < limits::kTwirlTranslation) return std::nullopt;
   const Point pa = k_.a.arrow.p, pb = k_.b.arrow.p, pc = k_.c.arrow.p;
-  return pb + (2.0 * pb - pa - pc) / (2.0 * kappa_m1);  // Eq. E.12
+  return pb + (2.0 * pb - pa - pc) / (2.0 * kappa_m1);  // PITA Eq. E.12
 }
 
 }  // namespace pita

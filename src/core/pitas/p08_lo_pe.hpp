@@ -1,4 +1,4 @@
-// P8:Lo-Pe (Sec. 3.3, Eq. 37-39, appendix F), PAM restricted to
+// P8:Lo-Pe (Sec. 3.3, PITA Eq. 37-39, appendix F), PAM restricted to
 // similarities (docs/paper-notes.md N13): U(tau): z -> a(tau) z + b(tau) with
 // U'' = U o E, i.e. a'' = e a and b'' = g a. a is the -Pe vector motion and
 // b, the start point, integrates it twice:

@@ -1,6 +1,6 @@
-// P9:Ne-LP (appendix D.2, Eq. D.2): the Neville form with steady morphs,
+// P9:Ne-LP (appendix D.2, PITA Eq. D.2): the Neville form with steady morphs,
 //   D(t) = M(M(A, B, q), M(B, C, r), s)
-// with the ratios q, r, s of Eq. 14. With non-geometric means it becomes the
+// with the ratios q, r, s of PITA Eq. 14. With non-geometric means it becomes the
 // WAM/WHM variants of Fig. D.36 (mean_morph.hpp).
 #pragma once
 

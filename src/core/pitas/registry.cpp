@@ -71,17 +71,17 @@ constexpr std::array<MethodInfo, 19> kMethods{{
        return std::make_unique<HeLp>(k, HomogeneousCenter::global_origin);
      },
      true},
-    {Method::LaT1, "La-T1", "La-T1", "Lagrange half T1 of Eq. 34, keyframes permuted (app. D.1)", 3, true, false,
+    {Method::LaT1, "La-T1", "La-T1", "Lagrange half T1 of PITA Eq. 34, keyframes permuted (app. D.1)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t1, o.permutation, o.symmetrize);
      },
      true, kPermutationOption | kSymmetrizeOption},
-    {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of Eq. D.1, keyframes permuted (app. D.1)", 3, true, false,
+    {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of PITA Eq. D.1, keyframes permuted (app. D.1)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t2, o.permutation, o.symmetrize);
      },
      true, kPermutationOption | kSymmetrizeOption},
-    {Method::NeM, "Ne-M", "Ne-M", "Neville form M of Eq. D.2, keyframes permuted (app. D.2)", 3, true, false,
+    {Method::NeM, "Ne-M", "Ne-M", "Neville form M of PITA Eq. D.2, keyframes permuted (app. D.2)", 3, true, false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::neville, o.permutation, o.symmetrize);
      },

@@ -28,16 +28,16 @@ enum class Method {
   P8,   // Lo-Pe
   P9,   // Ne-LP
   P10,  // Pa-EL
-  SMA,  // steady morph between two arrows (Eq. 21)
+  SMA,  // steady morph between two arrows (PITA Eq. 21)
   // The independent combinations of Fig. 7 that are not in the basket.
   PaPo,  // parabolic point, polar vector
   LSCa,  // log-spiral point, Cartesian vector
   LSLP,  // log-spiral point, log-polar vector
   // The non-chosen candidates of appendices C and D (docs/paper-notes.md N55, N56).
   HeG,   // H(t) of appendix C about the global origin (Fig. C.31)
-  LaT1,  // T1 of Eq. 34 in a permutation of the keyframes (Fig. D.32, D.33)
-  LaT2,  // T2 of Eq. D.1 in a permutation of the keyframes
-  NeM,   // M of Eq. D.2 in a permutation of the keyframes (Fig. D.35)
+  LaT1,  // T1 of PITA Eq. 34 in a permutation of the keyframes (Fig. D.32, D.33)
+  LaT2,  // T2 of PITA Eq. D.1 in a permutation of the keyframes
+  NeM,   // M of PITA Eq. D.2 in a permutation of the keyframes (Fig. D.35)
 };
 
 struct MethodInfo {
@@ -90,7 +90,7 @@ std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframe
 Chain default_chain(Method m);
 
 // The PITA through three timed keyframes with any distinct knots, unchecked
-// (the order-independence property, Eq. 42, swaps knots). Not for SMA.
+// (the order-independence property, PITA Eq. 42, swaps knots). Not for SMA.
 std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& keyframes,
                                   const MethodOptions& options = {});
 

@@ -13,7 +13,7 @@ SteadyMorphMotion::SteadyMorphMotion(const Keyframe& a, const Keyframe& b, MeanK
       twirl_(twirl_between(a.arrow, b.arrow)) {}
 
 Arrow SteadyMorphMotion::at(double t) const {
-  const double q = (t - a_.t) / (b_.t - a_.t);  // Eq. 14, 21
+  const double q = (t - a_.t) / (b_.t - a_.t);  // PITA Eq. 14, 21
   if (path_mean_ == MeanKind::geometric && magnitude_mean_ == MeanKind::geometric) {
     return apply_power(twirl_, q, a_.arrow);
   }

@@ -1,4 +1,4 @@
-// SMA as a motion: the timed steady morph M(a, A, b, B, t) (Eq. 21), or its
+// SMA as a motion: the timed steady morph M(a, A, b, B, t) (PITA Eq. 21), or its
 // non-steady WAM/WHM variants (Sec. 2.7) when a mean other than geometric is
 // chosen.
 #pragma once

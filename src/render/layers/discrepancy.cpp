@@ -1,5 +1,5 @@
 // "discrepancy" in an arrow scene (Sec. 6.2, Fig. 17): circles of radius
-// scale E(D(t_i), prediction) around D(t_i).p (Eq. 47 as corrected,
+// scale E(D(t_i), prediction) around D(t_i).p (PITA Eq. 47 as corrected,
 // docs/paper-notes.md N5).
 #include <cmath>
 #include <optional>

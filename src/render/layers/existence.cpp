@@ -44,7 +44,7 @@ Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string&
     }
   }
   push(-1, std::move(bad));
-  // Eq. 4: |a| = acos(-2 s / (s^2 + 1)), s in (0, 1].
+  // SAM Eq. 4: |a| = acos(-2 s / (s^2 + 1)), s in (0, 1].
   for (const double side : {-1.0, 1.0}) {
     std::vector<Point> curve;
     for (int k = 0; k <= 400; ++k) {

@@ -1,4 +1,4 @@
-// "field" (SAM Fig. 8, Eq. 7, docs/paper-notes.md N47): the stationary
+// "field" (SAM Fig. 8, SAM Eq. 7, docs/paper-notes.md N47): the stationary
 // velocity field of the panel's SAM at the nodes of a grid, its integral
 // curves through every `curves`-th node, the fixed point, and the measured
 // agreement of the curves with the field.

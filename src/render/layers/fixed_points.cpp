@@ -18,7 +18,7 @@ void PanelBuilder::add(const scene::FixedPointsLayer& layer) {
   std::optional<Point> global;
   if (layer.center == scene::CenterKind::global) {
     if (track_.method != Method::P7 || motion_.chain()) {
-      fail(layer_ + "/center", fmt::format("\"global\" is P7's fixed point (Eq. 35-36); the panel's method is {}: "
+      fail(layer_ + "/center", fmt::format("\"global\" is P7's fixed point (PITA Eq. 35-36); the panel's method is {}: "
                                            "use \"acceleration\" or \"velocity\" (instantaneous centers)",
                                            motion::method_label(scene_, panel_)));
     }

@@ -14,7 +14,7 @@ namespace pita::render::detail {
 
 // "guesses" (Sec. 6.1, 6.3; Figs. 16, 18): each drawn arrow G at its time t,
 // the frame D(t) under it, and per measure shown a line
-//   "E(L, D(2)) = 0.0123"  (Eq. 47 as corrected, docs/paper-notes.md N5)
+//   "E(L, D(2)) = 0.0123"  (PITA Eq. 47 as corrected, docs/paper-notes.md N5)
 //   "d(L, D(2)) = 0.42"    (max(|dp|, |dq|), docs/paper-notes.md N53).
 void PanelBuilder::add(const scene::GuessesLayer& layer) {
   std::vector<LegendEntry> lines;

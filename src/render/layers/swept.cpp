@@ -1,4 +1,4 @@
-// "swept" (SAM Fig. 10, Sec. 7.2, Eq. 8): an edge swept by the panel's
+// "swept" (SAM Fig. 10, Sec. 7.2, SAM Eq. 8): an edge swept by the panel's
 // motion, the envelope of its grazing points and the paths of points grazing
 // at a few instants (analysis/swept_edge.hpp), and what the grazing parameter
 // does over the layer's range.

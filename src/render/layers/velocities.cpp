@@ -1,6 +1,6 @@
 // "velocities": at each of the layer's frames, the velocity of every point of
 // the body as an arrow `scale` x dx/du, u the time normalised to the motion
-// (exact for SAM: the field x -> log(A) x of SAM Sec. 2.3, Eq. 6).
+// (exact for SAM: the field x -> log(A) x of SAM Sec. 2.3, SAM Eq. 6).
 #include <vector>
 
 #include "render/layer_cost.hpp"

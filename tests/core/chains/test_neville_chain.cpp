@@ -1,4 +1,4 @@
-// The "neville" chain (core/chains/neville_chain.hpp): Eq. 48-50 on arrows
+// The "neville" chain (core/chains/neville_chain.hpp): PITA Eq. 48-50 on arrows
 // for four keyframes, the hand-written recursion for five, P9 for the SMA on
 // three, through every keyframe and smooth everywhere.
 #include "core/chains/neville_chain.hpp"
@@ -31,8 +31,8 @@ TEST_P(NevilleChainOf, OnFourKeyframesIsEq48To50OnArrows) {
   const std::vector<Keyframe> keys = s.track(4, 2.0, 0.5, 0.4);
   const auto chain = neville_or_null(m, keys);
   if (!chain) GTEST_SKIP() << "no motion";
-  const auto X = make_pita(m, {keys[0], keys[1], keys[2]});  // Eq. 48
-  const auto Y = make_pita(m, {keys[1], keys[2], keys[3]});  // Eq. 49
+  const auto X = make_pita(m, {keys[0], keys[1], keys[2]});  // PITA Eq. 48
+  const auto Y = make_pita(m, {keys[1], keys[2], keys[3]});  // PITA Eq. 49
   int compared = 0;
   for (double u = -0.25; u <= 1.25; u += 0.0625) {
     const double t = keys[0].t + u * (keys[3].t - keys[0].t);
@@ -48,7 +48,7 @@ TEST_P(NevilleChainOf, OnFourKeyframesIsEq48To50OnArrows) {
     }
     if (!(x.m > 0.0 && y.m > 0.0 && is_finite(x) && is_finite(y))) continue;
     ++compared;
-    const Arrow expected = test::blend_of(x, y, u, info(m).winding_aware);  // Eq. 50, M for the blend
+    const Arrow expected = test::blend_of(x, y, u, info(m).winding_aware);  // PITA Eq. 50, M for the blend
     EXPECT_TRUE(test::arrows_near(chain->at(t), expected, 1e-10, test::extent(keys), !info(m).winding_aware))
         << "u = " << u;
   }
@@ -106,7 +106,7 @@ TEST(NevilleChain, OnFiveKeyframesIsTheHandWrittenRecursion) {
   }
 }
 
-// With the SMA at the bottom, Neville over three keyframes is P9 (Eq. D.2),
+// With the SMA at the bottom, Neville over three keyframes is P9 (PITA Eq. D.2),
 // which core/pitas/p09_ne_lp.cpp computes on its own.
 TEST(NevilleChain, OfTheSmaOnThreeKeyframesIsP9) {
   TrackSampler s(8600);

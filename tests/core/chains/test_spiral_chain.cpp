@@ -1,4 +1,4 @@
-// The "spiral" chain (core/chains/spiral_chain.hpp): the SMA of Eq. 20-21
+// The "spiral" chain (core/chains/spiral_chain.hpp): the SMA of PITA Eq. 20-21
 // between consecutive keyframes, C0, windings kept, extrapolated past the ends.
 #include "core/chains/spiral_chain.hpp"
 

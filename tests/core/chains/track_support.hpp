@@ -70,7 +70,7 @@ inline double velocity_jump(const Motion& motion, double t, double h, double sca
   return std::max(std::abs(left.p - right.p), std::abs(left.q - right.q)) / speed;
 }
 
-// The test's own steady blend of two frames: Eq. 20, with Y's winding first
+// The test's own steady blend of two frames: PITA Eq. 20, with Y's winding first
 // taken on the branch nearest X's for a method whose windings count only
 // modulo 2 pi (written out here, not taken from core/chains).
 inline Arrow blend_of(const Arrow& X, Arrow Y, double s, bool winding_aware) {
@@ -78,7 +78,7 @@ inline Arrow blend_of(const Arrow& X, Arrow Y, double s, bool winding_aware) {
   return steady_morph(X, Y, s);
 }
 
-// Keyframes moved by the similarity S (Eq. 40).
+// Keyframes moved by the similarity S (PITA Eq. 40).
 inline std::vector<Keyframe> moved(const Twirl& S, const std::vector<Keyframe>& keys) {
   std::vector<Keyframe> out;
   for (const Keyframe& k : keys) out.push_back({k.t, S * k.arrow});

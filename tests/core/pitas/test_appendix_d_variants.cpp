@@ -2,7 +2,7 @@
 // identities and properties appendix D states, each checked on random
 // configurations against another construction (T2 against T1, the
 // symmetrized T1 against P6, Ne-M against P9) or against the time reverse of
-// Eq. 41 computed by relabelling the keyframes.
+// PITA Eq. 41 computed by relabelling the keyframes.
 #include "core/pitas/appendix_d_variants.hpp"
 
 #include <array>
@@ -25,7 +25,7 @@ MethodOptions with(Permutation p, bool symmetrize = false) {
   return o;
 }
 
-// Eq. 41's counterpart: (a, C), (a + c - b, B), (c, A), evaluated at a + c - t.
+// PITA Eq. 41's counterpart: (a, C), (a + c - b, B), (c, A), evaluated at a + c - t.
 KeyframeTriple reversed(const KeyframeTriple& k) {
   return {{k.a.t, k.c.arrow}, {k.a.t + k.c.t - k.b.t, k.b.arrow}, {k.c.t, k.a.arrow}};
 }
@@ -103,7 +103,7 @@ TEST(AppendixD, EveryVariantInterpolatesTheKeyframes) {
   }
 }
 
-// P6 is the average of T1ABC and T1CBA (Eq. 34 and appendix D.1).
+// P6 is the average of T1ABC and T1CBA (PITA Eq. 34 and appendix D.1).
 TEST(AppendixD, P6IsTheAverageOfT1AbcAndT1Cba) {
   for (const KeyframeTriple& k : configurations()) {
     const auto p6 = motion(Method::P6, k);
@@ -118,7 +118,7 @@ TEST(AppendixD, P6IsTheAverageOfT1AbcAndT1Cba) {
 }
 
 // T1ABC is the time reverse of T1CBA, T1BCA of T1BAC, T1CAB of T1ACB: the
-// variant on the reversed keyframes (Eq. 41) at a + c - t is its partner.
+// variant on the reversed keyframes (PITA Eq. 41) at a + c - t is its partner.
 TEST(AppendixD, T1PairsAreTimeReverses) {
   const std::array<std::pair<Permutation, Permutation>, 3> pairs = {{
       {Permutation::ABC, Permutation::CBA},
@@ -141,7 +141,7 @@ TEST(AppendixD, T1PairsAreTimeReverses) {
 
 // Fig. D.32's bottom row (scenes/appD-fig32-t1-permutations.json): C is A
 // mirrored about the line x = 2.5 through B, which points straight up, knots
-// even. The reversed keyframes of Eq. 41 are then the mirrored ones, so each
+// even. The reversed keyframes of PITA Eq. 41 are then the mirrored ones, so each
 // T1 pair is a pair of mirror images run backwards: T1_partner(t) is the
 // mirror of T1_p(a + c - t), as the scene's description says.
 TEST(AppendixD, T1PairsAreMirrorImagesInTheSymmetricConfiguration) {
@@ -166,7 +166,7 @@ TEST(AppendixD, T1PairsAreMirrorImagesInTheSymmetricConfiguration) {
   }
 }
 
-// The three averages are symmetric (Eq. 41), as appendix D.1 says.
+// The three averages are symmetric (PITA Eq. 41), as appendix D.1 says.
 TEST(AppendixD, SymmetrizedVariantsAreSymmetric) {
   for (const KeyframeTriple& k : configurations()) {
     const KeyframeTriple r = reversed(k);

@@ -2,7 +2,7 @@
 // vector motion are chosen separately, so each combination must take its
 // point from one basket PITA and its vector from another: Pa- from P1, LS-
 // from P2 (anchored at the start), -Ca from P1, -Po from P2, -LP from P3.
-// Also interpolation, symmetry (Eq. 41) and similarity invariance (Eq. 40).
+// Also interpolation, symmetry (PITA Eq. 41) and similarity invariance (PITA Eq. 40).
 #include <gtest/gtest.h>
 
 #include "../test_support.hpp"
@@ -50,10 +50,10 @@ TEST(Independent, InterpolatesIsSymmetricAndSimilarityInvariant) {
       EXPECT_TRUE(arrows_near(D->at(k.a.t), k.a.arrow, 1e-9, extent(k), !aware)) << name(c.method);
       EXPECT_TRUE(arrows_near(D->at(k.b.t), k.b.arrow, 1e-9, extent(k), !aware)) << name(c.method);
       EXPECT_TRUE(arrows_near(D->at(k.c.t), k.c.arrow, 1e-9, extent(k), !aware)) << name(c.method);
-      // Eq. 41: reversing time and keyframes gives the same frames.
+      // PITA Eq. 41: reversing time and keyframes gives the same frames.
       const KeyframeTriple reversed{{-k.c.t, k.c.arrow}, {-k.b.t, k.b.arrow}, {-k.a.t, k.a.arrow}};
       const auto R = motion(c.method, reversed);
-      // Eq. 40: a similarity of the keyframes moves every frame the same way.
+      // PITA Eq. 40: a similarity of the keyframes moves every frame the same way.
       const Twirl S = twirl({0.3, -1.2}, 1.7, 0.9);
       const auto DS = motion(c.method, transformed(S, k));
       for (double t : sample_times(k)) {

@@ -74,7 +74,7 @@ TEST(Registry, EveryMethodBuildsAMotionThroughItsKeyframes) {
 
 // SMA between (1, 0) at winding pi/2 and (-1, 0) at 3 pi/2: the twirl between
 // them is the half turn about the origin, so halfway it is the quarter turn:
-// p = (0, 1), winding pi (Eq. 21).
+// p = (0, 1), winding pi (PITA Eq. 21).
 TEST(Registry, SmaIsTheSteadyMorphOfItsTwoKeyframes) {
   const double pi = std::numbers::pi;
   const std::vector<Keyframe> keyframes = {{0.0, Arrow{{1.0, 0.0}, 1.0, pi / 2.0}},
@@ -87,7 +87,7 @@ TEST(Registry, SmaIsTheSteadyMorphOfItsTwoKeyframes) {
 }
 
 // P1 (Pa-Ca) is the Lagrange interpolation of p and of the vector q - p
-// (Eq. 11): make_motion must build that method and not another.
+// (PITA Eq. 11): make_motion must build that method and not another.
 TEST(Registry, P1IsTheLagrangeInterpolantOfPointAndVector) {
   const Arrow A{{0.0, 0.0}, 1.0, 0.0}, B{{1.0, 2.0}, 2.0, std::numbers::pi / 2.0}, C{{3.0, 0.0}, 1.0, 0.0};
   const auto D = make_motion(Method::P1, std::vector<Keyframe>{{0.0, A}, {1.0, B}, {2.0, C}});

@@ -1,5 +1,5 @@
 // The "existence" layer (src/render/layers/existence.cpp, SAM Fig. 6),
-// checked against Eq. 4 computed here.
+// checked against SAM Eq. 4 computed here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 namespace pita::render {
 namespace {
 
-// Fig. 6: the filled cells are exactly those outside Eq. 4's boundary.
+// Fig. 6: the filled cells are exactly those outside SAM Eq. 4's boundary.
 TEST(ExistenceLayer, RegionIsEquationFour) {
   scene::ExistenceLayer layer;
   layer.columns = 180;
@@ -34,7 +34,7 @@ TEST(ExistenceLayer, RegionIsEquationFour) {
   int checked = 0, red = 0;
   for (int j = 0; j < layer.rows; ++j) {
     const double s = (j + 0.5) / layer.rows;
-    const double boundary = std::acos(-2.0 * s / (s * s + 1.0));  // Eq. 4
+    const double boundary = std::acos(-2.0 * s / (s * s + 1.0));  // SAM Eq. 4
     for (int i = 0; i < layer.columns; ++i) {
       const double a = -kPi + (i + 0.5) * 2.0 * kPi / layer.columns;
       if (std::abs(std::abs(a) - boundary) < 1e-9) continue;
