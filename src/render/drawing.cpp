@@ -82,6 +82,16 @@ bool is_finite(const Drawing& drawing) {
                      [](const Item& item) { return std::visit(FiniteCheck{}, item.shape); });
 }
 
+double turn_counter_clockwise(std::vector<Point>& contour) {
+  double twice_area = 0.0;
+  for (std::size_t i = 0; i < contour.size(); ++i) {
+    const Point a = contour[i], b = contour[(i + 1) % contour.size()];
+    twice_area += a.real() * b.imag() - b.real() * a.imag();
+  }
+  if (twice_area < 0.0) std::reverse(contour.begin(), contour.end());
+  return std::abs(twice_area);
+}
+
 std::vector<Point> rectangle_corners(double x, double y, double width, double height) {
   return {{x, y}, {x + width, y}, {x + width, y + height}, {x, y + height}};
 }

@@ -111,6 +111,11 @@ struct Drawing {
 // their centre or anchor only); nullopt for an empty drawing.
 std::optional<scene::Box> bounds(const Drawing& drawing);
 
+// Turns a closed contour counter-clockwise (in the plane's own orientation),
+// so that contours filled together by the nonzero rule add up instead of
+// cancelling; returns twice its area (0: degenerate, left as it is).
+double turn_counter_clockwise(std::vector<Point>& contour);
+
 // The four corners of the rectangle from (x, y), `width` by `height`, in
 // order (a table's cell, a tree's box).
 std::vector<Point> rectangle_corners(double x, double y, double width, double height);

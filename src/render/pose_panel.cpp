@@ -57,8 +57,7 @@ double lowest_point(const std::vector<scene::Solid>& solids, const std::vector<A
 
 // In space, the camera looks at its target: given, else the centre of the
 // solids' vertices at the poses; "auto" turns it (render/camera_choice.hpp).
-Projection camera_view(const motion::Stage& stage, std::size_t index, const scene::SpacePoseKeys& keys) {
-  const scene::Scene& scene = stage.scene();
+Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& keys, const std::vector<Affine3>& seen) {
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   if (scene.camera.target) {
     target = *scene.camera.target;
@@ -75,7 +74,7 @@ Projection camera_view(const motion::Stage& stage, std::size_t index, const scen
     if (count > 0.0) target /= count;
   }
   const scene::Camera camera =
-      scene.camera.automatic ? chosen_camera(scene.camera, scene.solids, seen_poses(stage, index, keys)) : scene.camera;
+      scene.camera.automatic ? chosen_camera(scene.camera, scene.solids, seen) : scene.camera;
   try {
     return Projection(camera, target);
   } catch (const std::invalid_argument& error) {
@@ -83,15 +82,22 @@ Projection camera_view(const motion::Stage& stage, std::size_t index, const scen
   }
 }
 
+// The view, and in space with a shadow the ground's height.
 template <class Pose>
-PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const scene::PoseKeys<Pose>& keys) {
+PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const scene::PoseKeys<Pose>& keys,
+                         double& ground) {
   if constexpr (std::is_same_v<Pose, Affine2>) {
     (void)stage;
     (void)index;
     (void)keys;
+    (void)ground;
     return {};
   } else {
-    return camera_view(stage, index, keys);
+    // The poses "auto" and "shadow" look at, found once.
+    const bool looks = stage.scene().camera.automatic || stage.scene().camera.shadow;
+    const std::vector<Affine3> seen = looks ? seen_poses(stage, index, keys) : std::vector<Affine3>{};
+    if (stage.scene().camera.shadow) ground = lowest_point(stage.scene().solids, seen);
+    return camera_view(stage.scene(), keys, seen);
   }
 }
 
@@ -105,11 +111,7 @@ PosePanel<Pose>::PosePanel(const motion::Stage& stage, std::size_t index, const 
       panel_(stage.panel(index)),
       selection_(selection),
       keys_(pose_keys_of<Pose>(stage.scene(), stage.panel(index))),
-      view_(make_view<Pose>(stage, index, keys_)) {
-  if constexpr (std::is_same_v<Pose, Affine3>) {
-    if (scene_.camera.shadow) ground_ = lowest_point(scene_.solids, seen_poses(stage, index, keys_));
-  }
-}
+      view_(make_view<Pose>(stage, index, keys_, ground_)) {}
 
 template <class Pose>
 void PosePanel<Pose>::fail(const std::string& reason) const {
@@ -234,13 +236,7 @@ Drawing PosePanel<Pose>::take() {
         for (const auto& face : shadow.faces) {
           std::vector<Point> contour;
           for (const Eigen::Vector3d& x : face) contour.push_back(image(Eigen::Vector3d(x.x(), x.y(), ground)));
-          double twice_area = 0.0;
-          for (std::size_t i = 0; i < contour.size(); ++i) {
-            const Point a = contour[i], b = contour[(i + 1) % contour.size()];
-            twice_area += a.real() * b.imag() - b.real() * a.imag();
-          }
-          if (twice_area < 0.0) std::reverse(contour.begin(), contour.end());
-          if (contour.size() >= 3 && twice_area != 0.0) contours.push_back(std::move(contour));
+          if (contour.size() >= 3 && turn_counter_clockwise(contour) != 0.0) contours.push_back(std::move(contour));
         }
         if (contours.empty()) continue;
         Item& item = under.emplace_back();

@@ -93,6 +93,7 @@ class PosePanel {
   const scene::Panel& panel_;
   const FrameSelection* selection_;
   const Keys& keys_;
+  double ground_ = 0.0;  // z of the ground (space, with a shadow): set with view_, so declared first
   PoseView<Pose> view_;
   std::string layer_;
   Drawing drawing_;
@@ -103,7 +104,6 @@ class PosePanel {
     bool moving;
   };
   std::vector<Shadow> shadows_;
-  double ground_ = 0.0;  // z of the ground (space, with a shadow)
 };
 
 extern template class PosePanel<Affine2>;

@@ -21,12 +21,7 @@ void PanelBuilder::add(const scene::StrokeLayer& layer) {
   for (int i = 0; i < strip.quad_count(); ++i) {
     const auto corners = strip.quad(i);
     std::vector<Point> contour(corners.begin(), corners.end());
-    double twice_area = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) {
-      const Point a = contour[k], b = contour[(k + 1) % 4];
-      twice_area += a.real() * b.imag() - b.real() * a.imag();
-    }
-    if (twice_area < 0.0) std::reverse(contour.begin(), contour.end());
+    turn_counter_clockwise(contour);
     quads.contours.push_back(std::move(contour));
   }
   push(-1, std::move(quads));
