@@ -33,10 +33,10 @@ class BadSceneCli : public ::testing::TestWithParam<BadSceneCase> {
   void SetUp() override {
     const BadSceneCase& bad = GetParam();
     std::string problem;
-    expected = read_bad_scene_expectation(bad.expect, problem);
+    expected = read_bad_scene_expectation(bad.expect(), problem);
     ASSERT_TRUE(expected.has_value()) << problem;
     file = bad.name + ".json";
-    fs::copy_file(bad.scene, dir.path() / file);
+    fs::copy_file(bad.scene(), dir.path() / file);
     for (const std::string& folder : kBadSceneFixtureFolders) {
       if (fs::is_directory(kBadScenesDir / folder)) {
         fs::copy(kBadScenesDir / folder, dir.path() / folder, fs::copy_options::recursive);

@@ -40,13 +40,13 @@ class BadScene : public ::testing::TestWithParam<BadSceneCase> {};
 TEST_P(BadScene, IsRefusedWithItsPointerAndReason) {
   const BadSceneCase& bad = GetParam();
   std::string problem;
-  const std::optional<BadSceneExpectation> expected = test::read_bad_scene_expectation(bad.expect, problem);
+  const std::optional<BadSceneExpectation> expected = test::read_bad_scene_expectation(bad.expect(), problem);
   ASSERT_TRUE(expected.has_value()) << problem;
   try {
-    load_and_build(bad.scene);
-    FAIL() << bad.scene.string() << ": no error (expected" << expected->after_file() << ")";
+    load_and_build(bad.scene());
+    FAIL() << bad.scene().string() << ": no error (expected" << expected->after_file() << ")";
   } catch (const SceneError& error) {
-    EXPECT_EQ(error.file(), bad.scene.string());
+    EXPECT_EQ(error.file(), bad.scene().string());
     if (expected->at_position) {
       EXPECT_EQ(std::to_string(error.line()) + ":" + std::to_string(error.column()),
                 std::to_string(expected->line) + ":" + std::to_string(expected->column))
@@ -57,15 +57,15 @@ TEST_P(BadScene, IsRefusedWithItsPointerAndReason) {
       EXPECT_EQ(error.line(), 0) << error.what();
     }
     EXPECT_EQ(error.reason(), expected->reason) << error.what();
-    EXPECT_EQ(std::string(error.what()), bad.scene.string() + expected->after_file());
+    EXPECT_EQ(std::string(error.what()), bad.scene().string() + expected->after_file());
   } catch (const motion::NoMotion& error) {
     EXPECT_FALSE(expected->at_position) << error.what();
-    EXPECT_EQ(error.file(), bad.scene.string());
+    EXPECT_EQ(error.file(), bad.scene().string());
     EXPECT_EQ(error.pointer(), expected->pointer) << error.what();
     EXPECT_EQ(error.reason(), expected->reason) << error.what();
-    EXPECT_EQ(std::string(error.what()), bad.scene.string() + expected->after_file());
+    EXPECT_EQ(std::string(error.what()), bad.scene().string() + expected->after_file());
   } catch (const std::exception& error) {
-    FAIL() << bad.scene.string() << ": threw something other than SceneError or NoMotion: " << error.what();
+    FAIL() << bad.scene().string() << ": threw something other than SceneError or NoMotion: " << error.what();
   }
 }
 
