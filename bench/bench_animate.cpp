@@ -4,7 +4,7 @@
 //                          directory, frames rendered on every core (PITA_THREADS)
 //   BM_AnimateSvg/120:     Fig. 23's animated SVG (120 frames), in memory
 //   BM_AnimateFrame:       one frame of Fig. 23 as a PNG, one thread
-// Peak memory is measured outside the benchmark (README "Animation"):
+// Peak memory is measured outside the benchmark (docs/reference/animate.md "Animation"):
 //   /usr/bin/time -v build/pita animate scenes/fig23-image-motion.json -o /tmp/f --frames N
 #include <benchmark/benchmark.h>
 

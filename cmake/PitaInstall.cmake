@@ -1,4 +1,4 @@
-# Installing pita (README "Install"): cmake --install build --prefix P writes
+# Installing pita (docs/guide/install.md "Install"): cmake --install build --prefix P writes
 #   P/bin/pita
 #   P/include/pita/<layer>/*.hpp        the headers of core, scene, motion, analysis, render
 #   P/lib/libpita_<layer>.a             the libraries of those layers
@@ -7,7 +7,7 @@
 #   P/lib/pkgconfig/pita.pc             pita::core for pkg-config
 #   P/share/man/man1/pita.1             the man page, generated from the CLI at build time
 #   P/share/bash-completion/completions/pita, P/share/zsh/vendor-completions/_pita
-#   P/share/doc/pita/                   README.md, CHANGELOG.md
+#   P/share/doc/pita/                   README.md, CHANGELOG.md, docs/
 # and cpack -G DEB packs the same into pita_<version>_<arch>.deb (prefix /usr).
 # Included by the top CMakeLists.txt after src/.
 include(GNUInstallDirs)
@@ -53,11 +53,14 @@ install(FILES ${CMAKE_BINARY_DIR}/pita.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man
 install(FILES ${CMAKE_BINARY_DIR}/completions/pita DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
 install(FILES ${CMAKE_BINARY_DIR}/completions/_pita DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# The guide, the reference and the explanation the README links to (the
+# gallery's images are the goldens, which stay in the repository).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 
 # The Debian package: cpack -G DEB in the build folder. Depends comes from
 # dpkg-shlibdeps (Debian dpkg-dev, which build-essential brings) on the
 # binary, plus the fonts the figures are drawn with; the development packages
-# a consumer of the libraries needs are suggested (README "Install").
+# a consumer of the libraries needs are suggested (docs/guide/install.md "Install").
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME pita)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})

@@ -10,7 +10,7 @@
 // is accepted. On "tame" inputs (entries within 2^+-10, eigenvalue ratio at
 // most about 1e6, |t| <= 4), where nothing can overflow, A^t, log A and the
 // fixed point are finite, A^0 = I and A^1 = A. exp(log A) = A (to 1e-6; EAR's
-// error is about 1e-14 there: README "Steady Affine Morphs: EAR against
+// error is about 1e-14 there: docs/explanation/performance.md "Steady Affine Morphs: EAR against
 // Eigen") only while log A is moderate (entries <= 64): near the S2 boundary
 // (L = -rI plus an off-diagonal entry of 1e-260) G1's log is exactly right
 // and of size 1e130, and exp(), Eigen's scaling and squaring, overflows to NaN

@@ -2,7 +2,7 @@
 // check` reads and compares it (golden::compare_file): against the figure
 // data of a small fresh rendering (what check does), and against itself
 // with a trailing newline (the same numbers, so every item is walked). A
-// golden that cannot be read must be a GoldenError (README "Goldens": exit
+// golden that cannot be read must be a GoldenError (docs/reference/check.md "Goldens": exit
 // 2, naming the file); nothing else may escape.
 #include <unistd.h>
 

@@ -1,5 +1,5 @@
 // Bytes -> the scene reader (scene::parse_scene: JSON text, checks, defaults,
-// panels, layers, timing). A scene it accepts must be as documented (README
+// panels, layers, timing). A scene it accepts must be as documented (docs/reference/scene-format.md
 // "Scene format"); anything it refuses must be a SceneError naming the file.
 #include <cmath>
 #include <cstddef>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The performance figures of README "pita sweep", measured in one run on
+# The performance figures of docs/reference/sweep.md "pita sweep", measured in one run on
 # Fig. 1's scene (scenes/fig01-eight-pitas.json, eight panels), its middle
 # knot swept:
 #   - 1000 SVG variants: pita sweep --jobs 1 against one `pita render` process

@@ -8,7 +8,7 @@ the N slowest steps (default 10), each with its seconds and the object or file
 it made, then the sum over every step (CPU-seconds spent in the compiler and
 linker; with -j 2 the wall time is about half of it). A step's time is its
 wall time, so numbers from a build that shared the machine with other work
-run high. For the numbers of README "Build time", start from an empty build
+run high. For the numbers of docs/explanation/build-time.md "Build time", start from an empty build
 folder: Ninja keeps only the last run of each step.
 """
 import argparse

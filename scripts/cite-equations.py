@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Every equation cited in src/ and tests/ names its paper (README "Papers").
+"""Every equation cited in src/ and tests/ names its paper (README "The papers").
 
 The papers number their equations independently: "Eq. 9" is the PITA
 paper's Lagrange weights and the SAM paper's affine power. So a citation

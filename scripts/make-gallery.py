@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""The README's figure gallery: a thumbnail of each scene's golden PNG, linked,
-with the scene's title and the claims it makes (README "Claims": each one is
+"""The figure gallery (docs/gallery.md): a thumbnail of each scene's golden PNG, linked,
+with the scene's title and the claims it makes (docs/reference/check.md "Claims": each one is
 checked by `pita check`, so by ctest's golden.<scene>, and the suite fails
 when one stops holding), between the markers <!-- gallery:begin --> and
-<!-- gallery:end --> of README.md.
+<!-- gallery:end --> of docs/gallery.md.
 
-  scripts/make-gallery.py           rewrite the gallery in README.md
+  scripts/make-gallery.py           rewrite the gallery in docs/gallery.md
   scripts/make-gallery.py --check   exit 1 if it is not up to date (ctest docs.gallery)
 """
 import json
@@ -25,13 +25,14 @@ def gallery() -> str:
         document = json.loads(scene.read_text())
         title = document.get("title", name).replace("|", "\\|")
         png = f"golden/{name}/{name}.png"
+        link = f"../{png}"  # relative to docs/
         if not (ROOT / png).exists():
             raise SystemExit(f"make-gallery: {png} is missing: write the goldens first (pita update-goldens)")
         claims = [c["says"].replace("|", "\\|").replace("<", "&lt;") for c in document.get("claims", [])]
         lines = [f"✓ {says}" for says in claims[:SHOWN_CLAIMS]]
         if len(claims) > SHOWN_CLAIMS:
             lines.append(f"(and {len(claims) - SHOWN_CLAIMS} more claims)")
-        cells.append("<br>".join([f'<a href="{png}"><img src="{png}" width="260" alt="{name}"></a>',
+        cells.append("<br>".join([f'<a href="{link}"><img src="{link}" width="260" alt="{name}"></a>',
                                   f"`{name}`: {title}", *lines]))
     rows = ["| " + " | ".join([""] * COLUMNS) + " |", "|" + "---|" * COLUMNS]
     for i in range(0, len(cells), COLUMNS):
@@ -41,16 +42,16 @@ def gallery() -> str:
 
 
 def main() -> int:
-    readme = ROOT / "README.md"
+    readme = ROOT / "docs" / "gallery.md"
     text = readme.read_text()
     if BEGIN not in text or END not in text:
-        print(f"make-gallery: README.md has no {BEGIN} ... {END} section", file=sys.stderr)
+        print(f"make-gallery: docs/gallery.md has no {BEGIN} ... {END} section", file=sys.stderr)
         return 1
     start, end = text.index(BEGIN), text.index(END) + len(END)
     updated = text[:start] + gallery() + text[end:]
     if "--check" in sys.argv[1:]:
         if updated != text:
-            print("make-gallery: README.md's gallery is out of date (a scene or its title changed): run "
+            print("make-gallery: docs/gallery.md is out of date (a scene or its title changed): run "
                   "scripts/make-gallery.py", file=sys.stderr)
             return 1
         return 0

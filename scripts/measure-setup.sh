@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Measures what each README command installs on a Debian 12 machine that has
-# only build-essential (README "Quick start"). Nothing is installed: apt-get
+# only build-essential (docs/guide/setup.md). Nothing is installed: apt-get
 # simulates (-s) against a made-up dpkg status that holds Debian's
 # "required" packages, apt, and what build-essential pulls in, using this
 # machine's package lists (run `apt-get update` first if they are old).

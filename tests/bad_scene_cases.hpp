@@ -34,7 +34,7 @@ inline constexpr std::size_t kMinBadScenes = 50;
 // Only the name is kept: every test process registers all the cases, and
 // under the sanitizers the three std::filesystem::path of each case (a list of
 // components each, copied into every registered test) were most of a test
-// process's start-up (README "Build time").
+// process's start-up (docs/explanation/build-time.md "Build time").
 struct BadSceneCase {
   std::string name;  // the file stem, "keyframes-m-negative"
 

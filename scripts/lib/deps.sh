@@ -34,7 +34,7 @@ PITA_TEST_PACKAGES=(
   python3-jsonschema          # tests: the scene schema checked by an independent validator
   ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
   chromium                    # tests: the animated SVG played in a real browser (headless)
-  parallel                    # tests: the GNU parallel recipe of pita sweep (README "pita sweep")
+  parallel                    # tests: the GNU parallel recipe of pita sweep (docs/reference/sweep.md "pita sweep")
   time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
   man-db                      # tests: the man page rendered by man -l (with groff-base; tests/packaging)
 )

@@ -129,7 +129,7 @@ std::string format_audit(const AuditReport& report, AuditFormat format, const st
     }
     out += "\n";
   }
-  out += "\nyes/no: the property holds / fails; the number is the worst measured value (the README's \"pita audit\" "
+  out += "\nyes/no: the property holds / fails; the number is the worst measured value (docs/reference/audit.md "
          "says what each measures); \"≠ paper\": Fig. 10 or the text says otherwise.\n";
   const std::vector<Disagreement> diffs = disagreements(report);
   if (!diffs.empty()) {

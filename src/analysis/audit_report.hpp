@@ -21,7 +21,7 @@ std::string format_audit(const AuditReport& report, AuditFormat format,
 // The file name of a cell's counterexample: "P5-similarity-invariant.json".
 std::string counterexample_name(const AuditCell& cell);
 
-// The counterexample scene of a failing cell, as JSON text (README "pita
+// The counterexample scene of a failing cell, as JSON text (docs/reference/audit.md "pita
 // audit" says how to replay it). Empty for a cell that holds.
 std::string counterexample_scene(const AuditReport& report, const AuditCell& cell);
 

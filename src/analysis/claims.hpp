@@ -1,4 +1,4 @@
-// The claims of a scene (scene/claim.hpp; README "Claims") measured on the
+// The claims of a scene (scene/claim.hpp; docs/reference/check.md "Claims") measured on the
 // motions the stage built, the same ones the figure draws: `pita check`
 // fails on a claim that does not hold, `pita render` warns.
 #pragma once
@@ -24,7 +24,7 @@ struct ClaimOutcome {
   std::string measured;
 };
 
-// The value a claim compares of a measure (README "Claims"): for a name with
+// The value a claim compares of a measure (docs/reference/check.md "Claims"): for a name with
 // several numbers the largest ("discrepancy-max": of the three predictors;
 // "path-length", "turning": of p; "gain:B.q": of B.q.x and B.q.y);
 // "winding-range" its width; "overreaction" the largest gain; "pop" 1 or 0;

@@ -1,5 +1,5 @@
 // Two measures that compare a panel's motion with another motion through
-// related keyframes, printed by the "measures" layer (README "Figure fields"):
+// related keyframes, printed by the "measures" layer (docs/reference/render.md "Figure fields"):
 //   - "angle:M@t" (PITA Fig. 5): the angle between the panel's D(t).w and the
 //     D(t).w of method M through the same keyframes (0 for -Po against -LP:
 //     both take the winding from the same Lagrange blend, Sec. 3.1);
@@ -43,7 +43,7 @@ double vector_angle(const motion::Stage& stage, std::size_t index, Method other,
 // carry). For the stage's panel `index`. Throws motion::NoMotion.
 double handle_shift(const motion::Stage& stage, std::size_t index);
 
-// Two panels of one scene, compared (claims, README "Claims"):
+// Two panels of one scene, compared (claims, docs/reference/check.md "Claims"):
 // The signed angle arg(D_k(t).w / D(t).w) in (-pi, pi] from the frame vector
 // of the stage's panel `index` at scene time t to that of its panel `other`
 // (Fig. 19: a tweak that turns a short frame around); NaN when either vector

@@ -1,4 +1,4 @@
-// How the frames a pattern draws change from one to the next (README
+// How the frames a pattern draws change from one to the next (docs/reference/check.md
 // "Claims"): what a reader sees as a jump in size, a flip of direction, or a
 // frame shrinking or growing past the keyframes (PITA Fig. 19, Fig. 24).
 //   - scale step: max_k |ln(m_{k+1} / m_k)| between consecutive frames;

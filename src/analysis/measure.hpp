@@ -25,7 +25,7 @@
 
 namespace pita::analysis {
 
-// Sampling of the measures (named, one place; README "pita measure").
+// Sampling of the measures (named, one place; docs/reference/measure.md "pita measure").
 struct MeasureOptions {
   // Times over [t_0, t_n] at which overreaction and pops compare frames.
   int tweak_samples = 65;

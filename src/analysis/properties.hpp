@@ -40,7 +40,7 @@ struct PropertyInfo {
   std::string_view id;        // "similarity-invariant"
   std::string_view letter;    // Fig. 10's row letter ("H"), empty for the rows all PITAs share
   std::string_view section;   // "4.3, PITA Eq. 40"
-  // What the number measures, for the README and the JSON report.
+  // What the number measures, for docs/reference/audit.md and the JSON report.
   std::string_view measure;
   // false: the property holds when the largest value over the configurations
   // is at most `threshold` (a deviation). true: it holds when the smallest

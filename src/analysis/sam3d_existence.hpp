@@ -67,7 +67,7 @@ struct SafePerturbation {
 SafePerturbation largest_safe_perturbation(double theta, const Sam3dExistenceOptions& options,
                                            const std::function<void(double)>& progress = {});
 
-// The figure's curve (README "Where a SAM exists in 3D", N61): at the angles
+// The figure's curve (docs/reference/audit.md "Where a SAM exists in 3D", N61): at the angles
 // theta_k = k pi / steps, k = 0..steps, the largest p on the grid for which
 // every rotation by an angle j pi / steps with |j| <= k, about every axis,
 // perturbed, has a SAM: the experiment at theta_k with 2k + 1 angles. Only

@@ -1,4 +1,4 @@
-// One frame of an animation as a figure (README "Animation"), and the view
+// One frame of an animation as a figure (docs/reference/animate.md "Animation"), and the view
 // every frame shares: frame k of `pita animate` is exactly the figure that
 // `pita render --at t_k` draws.
 #pragma once

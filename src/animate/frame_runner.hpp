@@ -1,4 +1,4 @@
-// Frames rendered in parallel, consumed in order (README "Animation"): worker
+// Frames rendered in parallel, consumed in order (docs/reference/animate.md "Animation"): worker
 // threads render frames ahead of the consumer, at most `window` ahead, so
 // that memory stays bounded whatever the number of frames (frames are
 // streamed, never all held).

@@ -1,4 +1,4 @@
-// Where `pita animate` writes (README "Animation"), chosen by OUT:
+// Where `pita animate` writes (docs/reference/animate.md "Animation"), chosen by OUT:
 //   OUT.svg            one animated SVG (svg_animation.hpp);
 //   OUT.mp4, OUT.webm  a video, raw frames piped into Debian's ffmpeg;
 //   OUT (no extension, or ending in "/")  a directory of frames

@@ -1,4 +1,4 @@
-// The animated SVG of `pita animate OUT.svg` (README "Animation"): one file
+// The animated SVG of `pita animate OUT.svg` (docs/reference/animate.md "Animation"): one file
 // that plays in any browser by SMIL alone (no script). What every frame shares
 // is drawn once by cairo (the background, titles, the layers that do not
 // move, legends), as two nested <svg> documents below and above the frames;

@@ -1,4 +1,4 @@
-// The animation's clock (README "Animation"): how many frames, at which
+// The animation's clock (docs/reference/animate.md "Animation"): how many frames, at which
 // times, from the scene's "animation" and the command line's flags.
 //
 // Frame k (0-based) of N is at

@@ -1,7 +1,7 @@
 // pita animate SCENE -o OUT [--fps F] [--duration S] [--frames N] [--scale S]
 //                             [--format png|svg] [--quiet] [--allow-absolute-paths]
 //
-// Plays a scene (README "Animation"): an animated SVG, a video through
+// Plays a scene (docs/reference/animate.md "Animation"): an animated SVG, a video through
 // ffmpeg, or a directory of frames with frames.json (animate/output.hpp).
 #pragma once
 

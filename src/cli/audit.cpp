@@ -62,7 +62,7 @@ constexpr const char* kAuditFooter = R"(
 Measures, for each method and each property of the PITA paper's Sec. 4 (its Fig. 10),
 the worst value over the crafted edge cases and N random configurations (tame, wild and
 near-singular in turn) drawn from the seed, and says whether the property holds. The
-output is the same for the same seed, whatever --jobs. The README's "pita audit" says
+output is the same for the same seed, whatever --jobs. docs/reference/audit.md says
 what each number measures.
 
 --counterexamples DIR writes, for each cell that fails, DIR/<method>-<property>.json, a

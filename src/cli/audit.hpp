@@ -1,7 +1,7 @@
 // pita audit [--methods LIST] [--configs N] [--seed S] [--jobs J] [--format md|csv|json]
 //            [--counterexamples DIR] [-o TABLE.svg|png|pdf] [--quiet]
 //
-// PITA Fig. 10 measured (README "pita audit"): analysis/audit.hpp does the
+// PITA Fig. 10 measured (docs/reference/audit.md "pita audit"): analysis/audit.hpp does the
 // work, analysis/audit_report.hpp the text, render/property_table.hpp the figure.
 #pragma once
 

@@ -204,11 +204,11 @@ Scene format (JSON; schema/scene.schema.json describes every field):
     turns      integer (optional): adds 2*pi*turns to the winding
   chain        how a track of more keyframes than the method takes is built:
                )" + chain_list() + R"(
-               (default "blend", "spiral" for SMA; README "Keyframe tracks")
+               (default "blend", "spiral" for SMA; docs/reference/scene-format.md "Keyframe tracks")
   points       instead of keyframes: 4 or more {"t", "p": [x, y]}; the motion is the
-               point of PITA Eq. 48-50 (README "Timed points"), printed as t, x, y
+               point of PITA Eq. 48-50 (docs/reference/scene-format.md "Timed points"), printed as t, x, y
   samples      frames printed when neither --samples nor --t is given (default 9)
-  timing       optional, how scene time runs through the motion (README "Timing"):
+  timing       optional, how scene time runs through the motion (docs/reference/scene-format.md "Timing"):
                {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}
                E: )" + ease_names() + R"(
                frames still report the scene time t they were asked for
@@ -232,7 +232,7 @@ Output: {"method": "P6", "frames": [{"t": 0.0, "p": [x, y], "m": 1.0, "w": 0.4, 
 with one frame per line ("chain": "blend" after "method" for a chained track), or CSV
 with the header t,px,py,m,w,qx,qy. Scenes of points print {"t": .., "p": [x, y]} (CSV t,x,y).
 
-Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
+Pose scenes (the Steady Affine Morphs paper; docs/reference/pose-scenes.md "Pose scenes"):
   {"method": "SAM",
    "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
              {"t": 1, "triangle": [[6.5, 0.5], [7.2, 2.9], [4.9, 1.6]]}]}
@@ -246,7 +246,7 @@ Pose scenes (the Steady Affine Morphs paper; README "Pose scenes"):
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
 
-3D pose scenes (README "3D pose scenes"): "dimension": 3, poses of space, the methods
+3D pose scenes (docs/reference/pose-scenes.md "3D pose scenes"): "dimension": 3, poses of space, the methods
 marked "3D" above:
   {"dimension": 3, "method": "SAM",
    "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
@@ -255,7 +255,7 @@ marked "3D" above:
   tetrahedron  the images of "reference_tetrahedron" (default the origin and the unit
                points of the axes)
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, c, tx], ...]}, ...]}
-  or CSV with the header t,a,b,c,tx,d,e,f,ty,g,h,i,tz. pita render draws them (README).
+  or CSV with the header t,a,b,c,tx,d,e,f,ty,g,h,i,tz. pita render draws them (docs/reference/pose-scenes.md).
 
 Examples:
   pita eval scenes/fig01-eight-pitas.json
@@ -310,7 +310,7 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
           "--batch", [options](const std::string& path) { options->batch = path; },
           "Many evaluations in one process: each line of FILE (- for standard input) is the arguments of one "
           "`pita eval` as a JSON array of strings; each line printed is its {\"exit\", \"stdout\", \"stderr\"} "
-          "(README \"Many evaluations in one process\")")
+          "(docs/reference/eval.md \"Many evaluations in one process\")")
       ->type_name("FILE");
   return options;
 }

@@ -54,7 +54,7 @@ Its checks:
 {}
 A scene accepts a finding, with the reason, under "lint": {{"allow": [{{"check": "text-over-data",
 "pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" (default 0.5) and
-"min_frame_pixels" (default 3) set two thresholds (README "Lint"). `pita check` runs the lint too.
+"min_frame_pixels" (default 3) set two thresholds (docs/reference/lint.md "Lint"). `pita check` runs the lint too.
 
 Examples:
   pita lint scenes/*.json

@@ -1,6 +1,6 @@
 // pita lint SCENE... [--format text|json]
 //
-// The legibility lint of each scene's figure (lint/lint.hpp; README "Lint"):
+// The legibility lint of each scene's figure (lint/lint.hpp; docs/reference/lint.md "Lint"):
 // the findings on stdout, exit 1 when any is not accepted by the scene.
 #pragma once
 

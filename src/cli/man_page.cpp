@@ -120,7 +120,9 @@ std::string man_page(const CLI::App& app, std::string_view version) {
   out << ".SH \"EXAMPLES AND EXIT STATUS\"\n";
   preformatted(out, app.get_footer());
   out << ".SH \"SEE ALSO\"\n"
-         "The README of pita, and docs/paper-notes.md in its sources.\n";
+         "The README of pita and its docs/ (the guide, one reference page per subcommand, the scene\n"
+         "fields): /usr/share/doc/pita/ when installed from the package; docs/paper-notes.md records\n"
+         "where pita reads, completes or departs from the papers.\n";
   return out.str();
 }
 

@@ -304,7 +304,7 @@ previous frame, the steady average of its neighbours and the method's own predic
 length and total turning of the paths of p and q; the winding range; the overreaction gain of
 every keyframe parameter (A.p.x, A.p.y, A.q.x, A.q.y, A.m, A.w, A.t, B..., Sec. 6.4) and pops
 under a 1e-9 tweak (Sec. 4.7); for pose scenes ARA (SAM Sec. 2.4) and area monotonicity.
-README "pita measure" gives each number's meaning and units.
+docs/reference/measure.md "pita measure" gives each number's meaning and units.
 
 Examples:
   pita measure scenes/fig01-eight-pitas.json

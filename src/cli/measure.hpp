@@ -1,7 +1,7 @@
 // pita measure SCENE.json [--format md|csv|json]
 //
 // Prints the goodness measures of the scene's motion, or of each panel's
-// (analysis/measure.hpp; README "pita measure"), on stdout.
+// (analysis/measure.hpp; docs/reference/measure.md "pita measure"), on stdout.
 #pragma once
 
 #include <memory>

@@ -135,19 +135,19 @@ A figure's work is estimated before anything is drawn (panels x layers x
 frames, trajectory and banner points, existence cells, PNG pixels) and refused
 above a budget, naming the field that dominates; --budget F allows F times it.
 
-Scene fields for figures (see README "Figures" and schema/scene.schema.json):
+Scene fields for figures (see docs/reference/render.md "Figures" and schema/scene.schema.json):
   title, canvas {width, height, background, view, margin, y_axis, columns, font},
   layers [{"type": @ARROW_LAYERS@, ...}],
   panels ["P1", {"method": "P2", "keyframes": [...], "chain": "blend", "title": "..."}, ...]
-  keyframes: 3 or more (SMA: 2 or more), chained by "chain" (README "Keyframe tracks");
+  keyframes: 3 or more (SMA: 2 or more), chained by "chain" (docs/reference/scene-format.md "Keyframe tracks");
   points [{"t": 0, "p": [x, y]}, ...] instead of keyframes: 4 or more timed points,
   drawn by "point-trajectory" layers
-Pose scenes (SAM paper, README "Pose scenes") draw shapes carried by the poses:
+Pose scenes (SAM paper, docs/reference/pose-scenes.md "Pose scenes") draw shapes carried by the poses:
   shapes [{"outline": "F"} | {"triangle": "reference"} | {"polygon": [[x, y], ...]}],
   layers [{"type": @POSE_LAYERS@, ...}],
   panels ["linear", {"method": "biarc-SAM", "poses": [...], "title": "..."}, ...]
 
---at T draws one frame of the scene's animation (README "Animation"): at scene
+--at T draws one frame of the scene's animation (docs/reference/animate.md "Animation"): at scene
 time T ("what": "motion": the pattern layers draw D(T) and its trail, the shapes
 layers the shapes it carries), or at tau = T for keyframes that move ("what":
 "pattern"); in the view every frame of `pita animate` shares, so that frame k
@@ -337,7 +337,7 @@ void render_scene(const RenderOptions& options, const RenderPlan& plan, const st
     const motion::Stage stage(scene);
     figure = render::build_figure(stage, options.budget);
     // The caption's claims, measured on the motions drawn: a warning here,
-    // a failure in `pita check` (README "Claims").
+    // a failure in `pita check` (docs/reference/check.md "Claims").
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       if (claim.held) continue;
       std::cerr << "pita: warning: "

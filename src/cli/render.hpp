@@ -25,7 +25,7 @@ struct RenderOptions {
   std::optional<double> scale;         // --scale (PNG)
   std::optional<double> dpi;           // --dpi (PNG): scale = dpi / 96
   double budget = 1.0;                 // --budget: times the default work budget
-  std::optional<double> at;            // --at T: the animation's frame at T (README "Animation")
+  std::optional<double> at;            // --at T: the animation's frame at T (docs/reference/animate.md "Animation")
   std::optional<double> fps;           // --fps, --duration, --frames: the animation's clock, as
   std::optional<double> duration;      // `pita animate` takes them (they space a trail's frames)
   std::optional<int> frames;

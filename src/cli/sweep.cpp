@@ -42,11 +42,11 @@ variants finish, writes the manifest of what finished and exits 128 + signal.
 
 --shard K/N runs the variants i with i mod N = K and writes manifest.K-of-N.csv;
 pita sweep --merge DIR joins the parts and says which variants are missing.
-Recipes for Slurm and GNU parallel: README "pita sweep".
+Recipes for Slurm and GNU parallel: docs/guide/cluster-sweeps.md.
 
 Examples:
-  pita sweep scenes/fig13-knot-ratio.json --vary /keyframes/1/t=0.1:0.9:9 -o sweep
-  pita sweep scenes/fig01-eight-pitas.json --vary /method=P1,P4,P6 \
+  pita sweep scenes/fig02-windings.json --vary /keyframes/1/t=0.1:0.9:9 -o sweep
+  pita sweep scenes/fig02-windings.json --vary /method=P1,P4,P6 \
              --vary /keyframes/2/w=0:6:7 -o out --format svg,png
   pita sweep scene.json --vary /keyframes/1/m=log:0.1:10:50 --format csv -o m --jobs 2
 

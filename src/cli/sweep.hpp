@@ -2,7 +2,7 @@
 //            [--format svg,png,pdf,csv,json] [--jobs J] [--shard K/N] [--force] [--quiet]
 // pita sweep --merge DIR
 //
-// The front end of src/sweep (README "pita sweep").
+// The front end of src/sweep (docs/reference/sweep.md "pita sweep").
 #pragma once
 
 #include <memory>

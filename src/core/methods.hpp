@@ -2,7 +2,7 @@
 // steady morph between arrows (pitas/registry.hpp builds them) and the pose
 // methods of the SAM paper (pose_motion.hpp builds them). Names, mnemonics,
 // case, numbers and "did you mean" are handled here and nowhere else; the CLI
-// help, the schema's examples and the README's tables are derived from (or
+// help, the schema's examples and the docs' tables are derived from (or
 // tested against) every_method().
 #pragma once
 

@@ -33,7 +33,7 @@ struct Tolerances {
 };
 
 // The three golden files of a scene, as bytes.
-// Scenes with an "animation" also keep a few frames of it (README
+// Scenes with an "animation" also keep a few frames of it (docs/explanation/performance.md
 // "Animation"): frames 1, N/2 + 1 and N of the scene's own timeline, as
 // drawn by `pita render --at t_k`, in <name>.frame-0001.png, ...
 struct Outputs {
@@ -88,7 +88,7 @@ struct SceneCheck {
   std::string name;
   std::vector<FileCheck> files;
   std::vector<analysis::ClaimOutcome> claims;  // every claim of the scene, in order
-  lint::Report lint;                           // the lint's findings (README "Lint")
+  lint::Report lint;                           // the lint's findings (docs/reference/lint.md "Lint")
   bool matches() const;      // every golden file matches
   bool claims_hold() const;  // every claim holds
   bool legible() const { return lint.clean(); }  // every finding of the lint accepted by the scene

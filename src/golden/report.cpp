@@ -96,7 +96,7 @@ img { max-width: 420px; border: 1px solid #999; }
                           verdict_name(f.verdict), escaped(f.detail));
     }
     html += "</table>\n";
-    // Every claim, held or not (README "Claims").
+    // Every claim, held or not (docs/reference/check.md "Claims").
     if (!e.check.claims.empty()) {
       html += "<table><tr><th>claim</th><th>says</th><th>result</th><th>measured</th></tr>\n";
       for (const analysis::ClaimOutcome& c : e.check.claims) {
@@ -106,7 +106,7 @@ img { max-width: 420px; border: 1px solid #999; }
       }
       html += "</table>\n";
     }
-    // Every finding of the lint, accepted or not (README "Lint").
+    // Every finding of the lint, accepted or not (docs/reference/lint.md "Lint").
     if (!e.check.lint.findings.empty()) {
       html += "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
       for (const lint::Finding& f : e.check.lint.findings) {

@@ -4,7 +4,7 @@
 // things cut off at a panel's edge, small content, frames too short to see,
 // series that share a colour. The checks are the rows of
 // scene::kLintChecks; a scene accepts a finding, with its reason, under
-// "lint": {"allow": [...]} (README "Lint").
+// "lint": {"allow": [...]} (docs/reference/lint.md "Lint").
 #pragma once
 
 #include <string>

@@ -28,7 +28,7 @@ const char* point_name(scene::TrackedPoint point) {
 
 // The point of a frame arc length follows: for arrows p, q or their midpoint;
 // for poses the images of the reference triangle's first two points, or of
-// their midpoint (README "Timing").
+// their midpoint (docs/reference/scene-format.md "Timing").
 Point tracked(const Arrow& frame, scene::TrackedPoint point) {
   switch (point) {
     case scene::TrackedPoint::start: return frame.p;

@@ -7,7 +7,7 @@
 //   timed samples (sampler.hpp) -> layers, numbers, figures
 //
 // Times given to a SceneMotion are scene times; it evaluates the underlying
-// method at the warped time tau = warp(t) ("timing", README "Timing").
+// method at the warped time tau = warp(t) ("timing", docs/reference/scene-format.md "Timing").
 #pragma once
 
 #include <array>

@@ -7,7 +7,7 @@
 //
 // The unit is one drawn point; each separately drawn shape (a frame's segment,
 // a circle, a polyline) costs kShapeUnits more, since cairo writes every shape
-// with its own style (README "Exit codes, errors and limits" has the
+// with its own style (docs/reference/exit-codes-and-limits.md "Exit codes, errors and limits" has the
 // measurements behind the numbers).
 #pragma once
 
@@ -21,7 +21,7 @@ namespace pita::render {
 
 inline constexpr double kShapeUnits = 16.0;
 // About 5 s and 400 MB for an SVG on one core of the reference machine;
-// PNG and PDF cost less (README "Performance").
+// PNG and PDF cost less (docs/explanation/performance.md "Performance").
 inline constexpr double kDefaultBudgetUnits = 2e6;
 // PNG pixels (canvas x scale^2): 8192 x 8192, 256 MiB of ARGB, about 4 s.
 inline constexpr double kDefaultBudgetPixels = 8192.0 * 8192.0;

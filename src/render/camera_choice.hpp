@@ -1,5 +1,5 @@
 // "camera": {"auto": true} (scene/figure.hpp): the direction from which no
-// pose of a 3D figure is seen edge-on (README "Poses in space").
+// pose of a 3D figure is seen edge-on (docs/reference/pose-scenes.md "3D pose scenes").
 #pragma once
 
 #include <vector>

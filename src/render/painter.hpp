@@ -67,7 +67,7 @@ LegendGeometry legend_geometry(const Legend& legend, const Rect& area);
 
 // Whether a label's text is drawn as Pango markup: it has a '<' and parses as
 // markup. Any other text (no tag, or "a < b") is drawn as written, so plain
-// labels are unchanged (README "label").
+// labels are unchanged (docs/reference/render.md, the "label" field).
 bool is_markup(const std::string& text);
 
 }  // namespace pita::render

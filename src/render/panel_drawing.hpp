@@ -22,7 +22,7 @@ class RenderError : public std::runtime_error {
   RenderError(const std::string& file, const std::string& pointer, const std::string& reason);
 };
 
-// One frame of an animation ("what": "motion", README "Animation"): the
+// One frame of an animation ("what": "motion", docs/reference/animate.md "Animation"): the
 // layers that draw a sequence of frames ("pattern", "shapes") draw the frame
 // at scene time `t` and, fading behind it, the frames at the `trail` times
 // (oldest first); their items are marked `moving`. Every other layer is drawn

@@ -107,7 +107,7 @@ PropertyTable property_table(const analysis::AuditReport& report) {
              {x0, y}, 12.0, kInk});
   y += 18.0;
   push(Label{"The number is the worst value measured: the largest deviation, or, for winding-aware and "
-             "knot-controlled, the smallest reaction (README \"pita audit\").",
+             "knot-controlled, the smallest reaction (pita's docs/reference/audit.md).",
              {x0, y}, 12.0, kInk});
   t.width = table_w + 2 * kMargin;
   t.height = y + kMargin;

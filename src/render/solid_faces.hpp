@@ -1,6 +1,6 @@
 // The solids of a 3D pose scene drawn at a pose: each face projected by the
 // panel's camera, filled with flat shading or outlined, and painted back to
-// front (the painter's algorithm; README "Poses in space").
+// front (the painter's algorithm; docs/reference/pose-scenes.md "3D pose scenes").
 #pragma once
 
 #include <optional>

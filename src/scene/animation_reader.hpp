@@ -1,4 +1,4 @@
-// Reading "animation" (README "Animation"): how `pita animate` and
+// Reading "animation" (docs/reference/animate.md "Animation"): how `pita animate` and
 // `pita render --at` play a scene. Internal to src/scene/.
 #pragma once
 

@@ -404,11 +404,11 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
       if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(item_at, *reason);
       if (std::get<MeasureName>(parsed).panel) {
         reader.fail(item_at, fmt::format("\"{}\" compares with another panel, which only a claim does "
-                                         "(README \"Claims\")",
+                                         "(docs/reference/check.md \"Claims\")",
                                          std::get<MeasureName>(parsed).text));
       }
       if (std::get<MeasureName>(parsed).kind == MeasureKind::property) {
-        reader.fail(item_at, fmt::format("\"{}\" is measured by claims only (README \"Claims\"); the property "
+        reader.fail(item_at, fmt::format("\"{}\" is measured by claims only (docs/reference/check.md \"Claims\"); the property "
                                          "table of pita audit prints every property",
                                          std::get<MeasureName>(parsed).text));
       }
@@ -460,7 +460,7 @@ PlotLayer read_plot(const Fields& fields, bool poses) {
 namespace {
 
 // The layer kinds of keyframe (arrow) scenes, in the order messages, the
-// schema and the README list them.
+// schema and docs/reference/render.md list them.
 template <typename Kind>
 constexpr std::size_t arrow_alternative = alternative_of<Kind, Layer>();
 

@@ -1,4 +1,4 @@
-// Arrow scenes: timed keyframes (the PITA paper; README "Scene format").
+// Arrow scenes: timed keyframes (the PITA paper; docs/reference/scene-format.md "Scene format").
 #include "scene/scene_readers.hpp"
 
 #include <algorithm>
@@ -150,7 +150,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     scene.timing = detail::read_timing(reader, *timing, "/timing");
   }
 
-  // The figure (README "Figures"); `pita eval` ignores it.
+  // The figure (docs/reference/render.md "Figures"); `pita eval` ignores it.
   if (const Json* title = JsonReader::member(document, "title")) {
     scene.title = reader.string(*title, "/title");
   }

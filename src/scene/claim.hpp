@@ -1,5 +1,5 @@
 // "claims": what a figure's caption says, as predicates over the measures of
-// its panels (README "Claims"), checked by `pita check` and warned about by
+// its panels (docs/reference/check.md "Claims"), checked by `pita check` and warned about by
 // `pita render` (analysis/claims.hpp). For example
 //   {"says": "P8 changes the scale between frames less than P1",
 //    "panel": 3, "measure": "scale-step", "below": {"panel": 0}}

@@ -1,5 +1,5 @@
 // "claims": the caption's statements as predicates over panel measures
-// (scene/claim.hpp; README "Claims").
+// (scene/claim.hpp; docs/reference/check.md "Claims").
 #include <array>
 #include <string>
 #include <string_view>

@@ -1,5 +1,5 @@
 // Colours of a scene: "#rgb", "#rrggbb", "#rrggbbaa" (hex digits in any case)
-// or one of a few names (README "Figures", schema/scene.schema.json).
+// or one of a few names (docs/reference/render.md "Figures", schema/scene.schema.json).
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// The figure part of a scene (README "Figures"): the canvas, the animation,
+// The figure part of a scene (docs/reference/render.md "Figures"): the canvas, the animation,
 // the solids and camera of 3D scenes, and the panels of a grid. Everything
 // here is resolved: defaults applied, colours parsed, names looked up, so that
 // render/ never sees JSON. The layers are in layers.hpp.
@@ -30,7 +30,7 @@ struct Canvas {
   std::string font = "Sans";                 // pango family for titles, labels and legends
 };
 
-// "animation" (README "Animation"): how `pita animate` and `pita render --at`
+// "animation" (docs/reference/animate.md "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.
 struct Animation {
   enum class What { motion, pattern };
@@ -49,7 +49,7 @@ struct Animation {
   std::vector<double> overlay{0.0};
 };
 
-// A solid of a 3D pose scene ("shapes" of README "3D pose scenes"): a
+// A solid of a 3D pose scene ("shapes" of docs/reference/pose-scenes.md "3D pose scenes"): a
 // polyhedron given by its vertices and faces (indices into them, at least
 // three each, in order around the face), or a builtin one.
 struct Solid {

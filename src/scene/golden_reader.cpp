@@ -1,4 +1,4 @@
-// "golden": a scene's own tolerances for `pita check` (README "Goldens").
+// "golden": a scene's own tolerances for `pita check` (docs/reference/check.md "Goldens").
 #include "scene/scene_readers.hpp"
 
 #include <array>

@@ -2,7 +2,7 @@
 // the fields it takes, how it is read and whether 3D scenes draw it. The two
 // tables, of arrow scenes (arrow_layer_reader.cpp) and of pose scenes
 // (pose_layer_reader.cpp), are the only lists of layer kinds; every message,
-// the schema test and the README derive theirs from them (figure_reader.cpp).
+// the schema test and the docs derive theirs from them (figure_reader.cpp).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// The layers of a figure (README "Figures", "Pose scenes"): one struct per
+// The layers of a figure (docs/reference/render.md "Figures", "Pose scenes"): one struct per
 // layer kind with its fields resolved (defaults applied, colours parsed, names
 // looked up), the styles they share, and the variants of the layers of arrow
 // scenes (Layer) and of pose scenes (PoseLayer). Read by
@@ -230,7 +230,7 @@ struct FixedPointsLayer {
 // A raster image placed in the shapes' frame (PITA Sec. 7.1): a PNG file read
 // by cairo when drawn. The scene reader has checked that the file exists, is a
 // PNG of at most kMaxImageSide pixels a side, and lies in the scene's folder
-// tree (README "Shapes and images").
+// tree (docs/reference/render.md "Figure fields of a scene").
 struct ImageRef {
   std::string path;   // the file to open (the scene's folder joined with `given`)
   std::string given;  // as the scene spells it (what messages and goldens show)
@@ -276,7 +276,7 @@ struct HandleLayer {
 
 // "property-table" (PITA Fig. 10): the properties of Sec. 4 measured as
 // `pita audit` does (analysis/audit.hpp) for `methods`, drawn as a table whose
-// top-left corner is `at`, one world unit per pixel at scale 1 (README
+// top-left corner is `at`, one world unit per pixel at scale 1 (docs/reference/render.md
 // "pita audit": give the canvas a view that shows it so). It ignores the
 // panel's keyframes.
 // "trees" of a property-table layer: Fig. 10's decision trees, drawn below
@@ -305,7 +305,7 @@ inline constexpr std::size_t kMaxMeasures = 17;
 // panel's motion, one line per name of `show`, at a point of the plane or in
 // a corner of the panel.
 struct MeasuresLayer {
-  // The names (scene/measure_name.hpp, the one table; README "Layers"), parsed
+  // The names (scene/measure_name.hpp, the one table; docs/reference/render.md "Figure fields of a scene"), parsed
   // and checked against the scene's kind by the reader. Default:
   // default_measures() of the scene's kind.
   std::vector<MeasureName> show;
@@ -365,7 +365,7 @@ using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, Stroke
 
 
 // ------------------------------------------------------------ pose scenes
-// Scenes of timed affine poses (SAM paper; README "Pose scenes"). Their
+// Scenes of timed affine poses (SAM paper; docs/reference/pose-scenes.md "Pose scenes"). Their
 // shapes are outlines in the frame of the reference pose, drawn through the
 // pose of each frame.
 
@@ -437,7 +437,7 @@ struct ExistenceLayer {
 };
 
 // "sam3d-existence": the 3D existence experiment of the SAM paper's Sec. 5.2
-// as a plot (README "Where a SAM exists in 3D", docs/paper-notes.md N61): the
+// as a plot (docs/reference/audit.md "Where a SAM exists in 3D", docs/paper-notes.md N61): the
 // largest safe perturbation p against the rotation angle theta in [0, pi],
 // computed at theta = k pi / steps (analysis/sam3d_existence.hpp), drawn as a
 // staircase over x = theta, y = kSafeCurveScale p, with the paper's three

@@ -94,7 +94,7 @@ inline constexpr int kMaxImages = 16;
 // each, once per drawing thread (256 MiB a thread at most).
 inline constexpr double kMaxImagePixels = 8192.0 * 8192.0;
 
-// "animation" and `pita animate` (README "Animation").
+// "animation" and `pita animate` (docs/reference/animate.md "Animation").
 inline constexpr double kMaxFps = 240.0;
 inline constexpr int kMinAnimationFrames = 2;
 inline constexpr int kMaxAnimationFrames = 100'000;

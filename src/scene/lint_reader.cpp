@@ -1,5 +1,5 @@
 // "lint": the legibility lint's thresholds and the findings a scene accepts
-// (scene/lint_settings.hpp; README "Lint").
+// (scene/lint_settings.hpp; docs/reference/lint.md "Lint").
 #include <algorithm>
 #include <array>
 #include <string>

@@ -1,5 +1,5 @@
 // "lint": what `pita lint` (src/lint/) checks on a scene's figure, and the
-// findings the scene accepts, each with its reason (README "Lint").
+// findings the scene accepts, each with its reason (docs/reference/lint.md "Lint").
 #pragma once
 
 #include <array>
@@ -14,7 +14,7 @@ namespace pita::scene {
 // these names).
 struct LintCheckInfo {
   std::string_view name;
-  std::string_view what;  // for --help, the README and messages
+  std::string_view what;  // for --help, the docs and messages
 };
 inline constexpr std::array<LintCheckInfo, 7> kLintChecks = {{
     {"text-overlap", "two texts overlap"},

@@ -1,4 +1,4 @@
-// The names a "measures" layer shows (README "Layers", `measures`): the one
+// The names a "measures" layer shows (docs/reference/render.md "Figure fields of a scene", `measures`): the one
 // table of them. The reader parses each name once into a MeasureName; the
 // renderer switches on its kind and never compares strings.
 //
@@ -10,7 +10,7 @@
 //       q.x, q.y, m, w, t ("gain:B.q" is the larger of B.q.x and B.q.y)
 //   "angle:M@t"                                   arrow scenes: the angle from
 //       the panel's D(t).w to that of arrow method M (Fig. 5), t finite; in a
-//       claim M may be another panel, "angle:/panels/1@0.25" (README "Claims")
+//       claim M may be another panel, "angle:/panels/1@0.25" (docs/reference/check.md "Claims")
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow scenes, in a claim: how far
@@ -58,7 +58,7 @@ struct MeasureEntry {
   bool argument = false;  // "gain:B.q", "angle:P8@0.25"
 };
 
-// Every measure, in the order messages, the schema and the README list them.
+// Every measure, in the order messages, the schema and docs/reference/render.md list them.
 std::span<const MeasureEntry> measure_entries();
 
 struct MeasureName {

@@ -80,7 +80,7 @@ const TrackMethod* track_method(const MotionKeys& keys);
 
 // Whether there is a motion to build from the keys: keyframes and points
 // always; poses when any are given (a pose scene may draw only figures that
-// need no motion, README "Pose scenes").
+// need no motion, docs/reference/pose-scenes.md "Pose scenes").
 bool has_motion_keys(const MotionKeys& keys);
 
 }  // namespace pita::scene

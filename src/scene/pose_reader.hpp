@@ -1,4 +1,4 @@
-// Reading the parts of a pose scene (README "Pose scenes"): the reference
+// Reading the parts of a pose scene (docs/reference/pose-scenes.md "Pose scenes"): the reference
 // triangle, the poses (2x3 matrices or triangles), the shapes. Internal to
 // src/scene/; errors are SceneErrors naming the JSON Pointer of the bad value.
 #pragma once

@@ -1,4 +1,4 @@
-// Pose scenes: timed affine poses (the SAM paper; README "Pose scenes").
+// Pose scenes: timed affine poses (the SAM paper; docs/reference/pose-scenes.md "Pose scenes").
 #include "scene/scene_readers.hpp"
 
 #include <algorithm>

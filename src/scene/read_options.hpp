@@ -1,5 +1,5 @@
 // How a scene file is read: choices of the command line that change what the
-// reader accepts (README "Shapes and images").
+// reader accepts (docs/reference/render.md "Figure fields of a scene").
 #pragma once
 
 namespace pita::scene {

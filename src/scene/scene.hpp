@@ -1,7 +1,7 @@
 // The scene model: a JSON scene file read, checked and fully resolved (every
 // default applied, every name looked up, every number checked), so that the
 // layers above never see JSON (habit copied from usvg handing resvg a resolved
-// tree). The format is documented in README.md ("Scene format") and published
+// tree). The format is documented in docs/reference/scene-format.md ("Scene format") and published
 // as schema/scene.schema.json.
 #pragma once
 
@@ -46,7 +46,7 @@ struct Scene {
   std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
   std::vector<ShapeOutline> shapes;        // pose scenes: default the reference triangle
   std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
-  // Pose scenes in space (README "3D pose scenes").
+  // Pose scenes in space (docs/reference/pose-scenes.md "3D pose scenes").
   std::vector<Solid> solids;  // "shapes" of a 3D scene; default the reference tetrahedron
   Camera camera;
   std::array<Eigen::Vector3d, 4> reference_tetrahedron{Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0),
@@ -58,7 +58,7 @@ struct Scene {
   std::vector<Layer> layers;        // in drawing order; default: pattern, then keyframes
   std::vector<Panel> panels;        // at least one: the scene itself when it has no "panels"
 
-  // "golden": this scene's tolerances for `pita check` (README "Goldens");
+  // "golden": this scene's tolerances for `pita check` (docs/reference/check.md "Goldens");
   // unset fields take the command line's values, else the defaults.
   struct GoldenTolerances {
     std::optional<double> numbers;        // "number_tolerance", [0, 1]

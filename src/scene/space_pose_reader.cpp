@@ -332,7 +332,7 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
   }
   keys.poses = read_poses<Affine3>(reader, *poses, "/poses", scene.reference_tetrahedron, keys.method);
   scene.keys = std::move(keys);
-  // "timing" as in 2D (README "Timing"); arc_length follows the image of the
+  // "timing" as in 2D (docs/reference/scene-format.md "Timing"); arc_length follows the image of the
   // reference tetrahedron's first point ("p"), second point ("q") or their
   // midpoint ("mid") through space.
   if (const Json* timing = JsonReader::member(document, "timing")) {

@@ -1,4 +1,4 @@
-// Reading 3D pose scenes ("dimension": 3; README "3D pose scenes"): the
+// Reading 3D pose scenes ("dimension": 3; docs/reference/pose-scenes.md "3D pose scenes"): the
 // reference tetrahedron, the poses (3x4 matrices or tetrahedra), and the
 // scene itself. Internal to src/scene/; errors are SceneErrors naming the
 // JSON Pointer of the bad value.

@@ -1,4 +1,4 @@
-// "timing": how a scene's (or panel's) time runs through its motion (README
+// "timing": how a scene's (or panel's) time runs through its motion (docs/reference/scene-format.md
 // "Timing"; the chapter's speed control, docs/paper-notes.md N20). Resolved:
 // the ease is looked up and its parameters checked.
 #pragma once

@@ -1,4 +1,4 @@
-// Reading "timing" (README "Timing"). Internal to src/scene/.
+// Reading "timing" (docs/reference/scene-format.md "Timing"). Internal to src/scene/.
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// The variants of a sweep (README "pita sweep"): each --vary POINTER=SPEC is
+// The variants of a sweep (docs/reference/sweep.md "pita sweep"): each --vary POINTER=SPEC is
 // an axis of values set at a JSON Pointer of the scene; several axes make
 // their Cartesian product (the last axis varies fastest), or with --zip are
 // paired value by value. A variant is named by its index; its values are

@@ -1,4 +1,4 @@
-// DIR/manifest.csv: one row per variant of a sweep (README "pita sweep"):
+// DIR/manifest.csv: one row per variant of a sweep (docs/reference/sweep.md "pita sweep"):
 //   index, one column per varied pointer (its value), status ("ok" or the
 //   error with its pointer), outputs (";"-separated file names in DIR), hash
 //   (the variant's content hash), then the metric columns of kMetricColumns.
@@ -20,7 +20,7 @@
 
 namespace pita::sweep {
 
-// The metrics of the scene's own motion (pita measure, README "pita measure"):
+// The metrics of the scene's own motion (pita measure, docs/reference/measure.md "pita measure"):
 // empty where they do not apply (pose metrics on arrows and the reverse).
 inline constexpr std::array<std::string_view, 16> kMetricColumns = {
     "path_length_p", "path_length_q", "turning_p", "turning_q", "winding_min", "winding_max",

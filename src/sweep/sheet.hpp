@@ -1,4 +1,4 @@
-// The pictures of a whole sweep (README "pita sweep"): DIR/index.html, a
+// The pictures of a whole sweep (docs/reference/sweep.md "pita sweep"): DIR/index.html, a
 // contact sheet of thumbnails linked to the full figures and sortable by any
 // metric column, and DIR/contact.svg / contact.png, every variant's figure
 // on one picture (rows and columns for a two-parameter sweep).

@@ -1,4 +1,4 @@
-// pita sweep (README "pita sweep"): the variants of a scene, each with values
+// pita sweep (docs/reference/sweep.md "pita sweep"): the variants of a scene, each with values
 // set at JSON Pointers, run in-process on a pool of threads; their figures
 // and frames, a manifest with metrics, a contact sheet and an HTML index.
 // Resumable (a variant whose outputs exist under the same content hash is

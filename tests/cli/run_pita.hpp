@@ -153,7 +153,7 @@ inline Started start_pita(const std::vector<std::string>& args, const std::files
   // vfork, not fork: the child borrows this process's memory until execve
   // instead of copying its page tables. A sanitized test process maps
   // terabytes of shadow memory, and fork cost each start of pita about 40 ms
-  // more there (README "Build time").
+  // more there (docs/explanation/build-time.md "Build time").
   started.pid = ::vfork();
   if (started.pid < 0) throw std::runtime_error("vfork failed");
   if (started.pid == 0) {

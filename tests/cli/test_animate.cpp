@@ -1,4 +1,4 @@
-// `pita animate` through the real binary (README "Animation", src/animate/):
+// `pita animate` through the real binary (docs/reference/animate.md "Animation", src/animate/):
 // the frame directory (counts, times of src/animate/timeline.hpp, sizes), each
 // frame equal to `pita render --at t_k`, the animated SVG (valid XML, one
 // group per frame, small enough, and played by headless Chromium as the PNG
@@ -59,7 +59,7 @@ SceneClock clock_of(const fs::path& scene_path) {
   SceneClock clock;
   const Json animation = scene.value("animation", Json::object());
   clock.loop = animation.value("loop", true);
-  const Json canvas = scene.value("canvas", Json::object());  // the defaults: README "Scene format"
+  const Json canvas = scene.value("canvas", Json::object());  // the defaults: docs/reference/scene-format.md "Scene format"
   clock.width = canvas.value("width", 800);
   clock.height = canvas.value("height", 600);
   if (animation.value("what", std::string("motion")) == "pattern") return clock;  // tau over [0, 1]

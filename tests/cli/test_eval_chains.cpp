@@ -1,4 +1,4 @@
-// `pita eval` on keyframe tracks (README "Keyframe tracks"): random tracks of
+// `pita eval` on keyframe tracks (docs/reference/scene-format.md "Keyframe tracks"): random tracks of
 // 4-12 keyframes pass every keyframe, are C1 at interior knots (blend,
 // neville), equal the method at n = 3, continue past the ends, and sample
 // [t_0, t_n]. Everything is read back from the binary's output.
@@ -102,7 +102,7 @@ TEST_F(EvalChains, RandomTracksPassEveryKeyframeAndAreC1AtInteriorKnots) {
     for (const std::string method : {"P6", "P3", "P9", "P1"}) {
       // Neville is global: its windows are evaluated far from their own
       // knots, so uneven or long tracks overflow or lose every digit
-      // (README "Keyframe tracks"); it is checked on near-even tracks.
+      // (docs/reference/scene-format.md "Keyframe tracks"); it is checked on near-even tracks.
       const bool global = chain == "neville";
       const int n = global ? 4 + static_cast<int>(rng() % 3) : 4 + static_cast<int>(rng() % 9);
       const std::vector<Key> keys = random_track(rng, n, global ? 3.0 : 8.0, global ? 0.3 : 1.5);

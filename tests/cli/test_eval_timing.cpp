@@ -1,4 +1,4 @@
-// `pita eval` with "timing" (README "Timing"): frames keep the scene times
+// `pita eval` with "timing" (docs/reference/scene-format.md "Timing"): frames keep the scene times
 // asked for, a linear timing changes no byte, eased frames are the method's
 // frames at the eased times, and the help lists every ease.
 #include <gtest/gtest.h>

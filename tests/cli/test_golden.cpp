@@ -76,7 +76,7 @@ TEST_F(Check, ReportReferencesImagesThatExist) {
   EXPECT_NE(html.find("DIFFERS"), std::string::npos);
 }
 
-// Claims (README "Claims"): measured on the motions drawn; one that does not
+// Claims (docs/reference/check.md "Claims"): measured on the motions drawn; one that does not
 // hold fails `check` (exit 1) naming its pointer, words and values, while
 // the goldens still match, and `render` only warns.
 std::string with_claim(const std::string& claim) {

@@ -1,7 +1,7 @@
 // Where `pita render` writes, through the real binary: two scenes that would
 // write one file are refused before anything is written, a scene's formats are
 // written all or none, and no scene name can put a file outside the output
-// directory (README "Figures: pita render").
+// directory (docs/reference/render.md "Figures: pita render").
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,6 +1,6 @@
 // The one registry of methods (src/core/methods.cpp): every name of every
 // method of both kinds resolves, no name means two methods, the one wording of
-// unknown names, and the README's method tables agree with the registry.
+// unknown names, and the method tables of docs/reference agree with the registry.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -65,18 +65,21 @@ TEST(Methods, LabelsAsMessagesNameThem) {
   EXPECT_EQ(method_label(entry_of(PoseMethod::bezier_sam)), "bezier-SAM");
 }
 
-// The README's method tables list every method of the registry, once each
-// (README "Methods" for arrows, "Pose scenes" for poses).
-TEST(Methods, ReadmeListsEveryMethod) {
-  std::ifstream in(std::string(PITA_SOURCE_DIR) + "/README.md");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string readme = text.str();
-  ASSERT_FALSE(readme.empty());
+// The reference's method tables list every method of the registry, once each
+// (docs/reference/methods.md for arrows, docs/reference/pose-scenes.md for poses).
+TEST(Methods, ReferenceListsEveryMethod) {
+  std::string pages;
+  for (const char* page : {"/docs/reference/methods.md", "/docs/reference/pose-scenes.md"}) {
+    std::ifstream in(std::string(PITA_SOURCE_DIR) + page);
+    std::stringstream text;
+    text << in.rdbuf();
+    ASSERT_FALSE(text.str().empty()) << page;
+    pages += text.str();
+  }
   for (const MethodEntry& entry : every_method()) {
     const std::string cell = entry.kind == MotionKind::arrows ? "| " + std::string(entry.id) + " |"
                                                               : "`" + std::string(entry.id) + "`";
-    EXPECT_NE(readme.find(cell), std::string::npos) << "README does not list " << entry.id << " as " << cell;
+    EXPECT_NE(pages.find(cell), std::string::npos) << "docs/reference does not list " << entry.id << " as " << cell;
   }
 }
 

@@ -23,7 +23,7 @@ empty stdout and "no SAM exists between these poses" on stderr; det L < 0 must e
 
 Rotations by +-(pi - 1e-13) and by cos/sin of +-pi (off-diagonal +-1.2e-16) must keep their
 principal angle: pita snaps only real negative eigenvalues within 1e-12 |r| of -rho I to S2
-(README "EAR").  --anisotropic (on in ctest) adds strong stretches, L = diag(r, 1/r) and
+(docs/reference/pose-scenes.md "EAR").  --anisotropic (on in ctest) adds strong stretches, L = diag(r, 1/r) and
 rotated copies up to r = 1e4, where a naive closed form loses ~r^2 ulps (pita computes its
 determinants with fma and its powers through spectral projectors there).
 """

@@ -267,7 +267,7 @@ def cli_request(path, times, method):
     return [path, "--t=" + ",".join(repr(float(t)) for t in times), "--method", method]
 
 
-# the CLI's refusal of a frame that would not be finite (README "Exit codes and errors");
+# the CLI's refusal of a frame that would not be finite (docs/reference/exit-codes-and-limits.md "Exit codes and errors");
 # two wordings seen across builds
 NONFINITE = re.compile(r"(?:non-finite arrow|no finite frame) at t = ([-+0-9.eE]+|inf|nan)")
 

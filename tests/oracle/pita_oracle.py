@@ -2,7 +2,7 @@
 """Independent oracle for the pita CLI (pure Python 3, standard library only).
 
 Written from the PITA paper (see docs/paper-notes.md; with the corrections of its
-sections N1-N16) and the choices documented in /work/main/README.md, without looking at
+sections N1-N16) and the choices documented in docs/reference/methods.md, without looking at
 src/core.  Points and vectors are complex numbers.
 
 An arrow is a tuple (p, m, w): origin p (complex), magnitude m > 0, winding w (any real).
@@ -14,9 +14,9 @@ with keyframes = [(t_i, (p_i, m_i, w_i)), ...]; returns an arrow (p, m, w).
 import cmath
 import math
 
-# README "Twirl fallback": phi_t = t when |e^L - 1| < 1e-12.
+# docs/reference/methods.md "Choices where the papers leave one": phi_t = t when |e^L - 1| < 1e-12.
 TWIRL_EPS = 1e-12
-# README "P2": fall back to the parabola when b nearly coincides with a or c (relative 1e-12).
+# docs/reference/methods.md (P2): fall back to the parabola when b nearly coincides with a or c (relative 1e-12).
 P2_EPS = 1e-12
 
 
@@ -83,7 +83,7 @@ class Twirl:
     """The twirl T_{A,B} mapping arrow A onto arrow B (PITA Eq. 17-19, docs/paper-notes.md N1).
 
     L = ln(B.m/A.m) + i (B.w - A.w); T^t x = A.p + e^{tL}(x - A.p) + phi_t (B.p - A.p),
-    phi_t = expm1(tL)/expm1(L), or t when |e^L - 1| < TWIRL_EPS (README).
+    phi_t = expm1(tL)/expm1(L), or t when |e^L - 1| < TWIRL_EPS (docs/reference/methods.md).
     """
 
     def __init__(self, A, B):
@@ -164,9 +164,9 @@ def steady_average(A, B):
     return sma(A, B, 0.5)
 
 
-# --------------------------------------------------------------------------- time warp (README)
+# --------------------------------------------------------------------------- time warp (docs/reference/methods.md)
 def warp(a, b, c, t):
-    """README 'Uneven knots for P4, P7, P8': u(a)=0, u(b)=1/2, u(c)=1, u'(b)=1 (in s),
+    """docs/reference/methods.md, uneven knots for P4, P7, P8: u(a)=0, u(b)=1/2, u(c)=1, u'(b)=1 (in s),
     piecewise quadratic on [0, beta], [beta, 1], linear outside."""
     s = (t - a) / (c - a)
     beta = (b - a) / (c - a)
@@ -207,7 +207,7 @@ def p3(a, A, b, B, c, C, t):
 
 
 def p2(a, A, b, B, c, C, t, anchor="start"):
-    """LS-Po: PITA Eq. 26 as corrected by docs/paper-notes.md N2 and README."""
+    """LS-Po: PITA Eq. 26 as corrected by docs/paper-notes.md N2 and docs/reference/methods.md."""
     x, y, z = lagrange_weights(a, b, c, t)
     m = x * A[1] + y * B[1] + z * C[1]
     w = x * A[2] + y * B[2] + z * C[2]
@@ -263,7 +263,7 @@ def bezier(A, B, C, t):
 
 
 def p4(a, A, b, B, c, C, t):
-    """Be-LP, PITA Eq. 27-32 with docs/paper-notes.md N3 and the README time warp (N17)."""
+    """Be-LP, PITA Eq. 27-32 with docs/paper-notes.md N3 and the time warp of docs/reference/methods.md (N17)."""
     u = warp(a, b, c, t)
     if u <= 0.5:
         Lc = sta(sma(A, B, 0.75), C, B, 0.25)
@@ -304,10 +304,10 @@ def _exp_ratio(l):  # expm1(l)/l
 
 
 def p5s(a, A, b, B, c, C, t):
-    """Hs-LP (README, docs/paper-notes.md N7): P5's blend of principal logs done in the frame of
+    """Hs-LP (docs/reference/methods.md, docs/paper-notes.md N7): P5's blend of principal logs done in the frame of
     F = M(A, C): X' = F^-1 X (z -> (v_X/v_F) z + (p_X - p_F)/v_F), relative angles reduced
     to (-pi, pi], blended about the frame's origin F.p; D = F D', D.w = F.w + blended angle.
-    (Which of centroid/no centroid and principal/actual relative angles the README means
+    (Which of centroid/no centroid and principal/actual relative angles docs/reference/methods.md means
     was settled on scenes/fig01 with an extra turn on C: only this variant matches.)"""
     x, y, z = lagrange_weights(a, b, c, t)
     F = steady_average(A, C)
@@ -393,7 +393,7 @@ def p8(a, A, b, B, c, C, t):
 # --------------------------------------------------------------------------- dispatch
 METHODS3 = {"P1": p1, "P2": p2, "P3": p3, "P4": p4, "P5": p5, "P6": p6,
             "P7": p7, "P8": p8, "P9": p9, "P10": p10, "P5S": p5s}
-# README "Output windings": these report a principal (P1 P7 P8) or blended principal-log
+# docs/reference/methods.md, output windings: these report a principal (P1 P7 P8) or blended principal-log
 # angle (P5 P10); the others carry the winding.
 PRINCIPAL_W = {"P1", "P7", "P8"}
 

@@ -3,7 +3,7 @@
 # pita_<version>_<arch>.deb; its control fields carry the version and a
 # Depends from dpkg-shlibdeps (the C and C++ run-times, cairo, pango); unpacked
 # with dpkg -x into a scratch root, every file dpkg -c lists is there, the
-# pieces README "Install" names are at their places under /usr, and the
+# pieces docs/guide/install.md "Install" names are at their places under /usr, and the
 # unpacked binary runs (--version, and eval of a scene).
 # Usage: check_deb.sh BUILD_DIR VERSION SOURCE_DIR
 set -euo pipefail
@@ -56,7 +56,7 @@ for path in usr/bin/pita usr/include/pita/core/arrow.hpp usr/include/pita/core/a
             usr/lib/libpita_core.a usr/lib/libpita_render.a usr/lib/cmake/pita/pitaConfig.cmake \
             usr/lib/cmake/pita/pitaConfigVersion.cmake usr/lib/pkgconfig/pita.pc usr/share/man/man1/pita.1 \
             usr/share/bash-completion/completions/pita usr/share/zsh/vendor-completions/_pita \
-            usr/share/doc/pita/CHANGELOG.md; do
+            usr/share/doc/pita/CHANGELOG.md usr/share/doc/pita/docs/reference/eval.md; do
   grep -qxF "$path" <<< "$listing" || fail "the package lacks $path"
 done
 # No file outside /usr, none of the build's or the tests' files.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest packaging.install: cmake --install BUILD --prefix PREFIX into a fresh
 # PREFIX (the fixture the other packaging tests use), and checks that each
-# piece README "Install" names is there.
+# piece docs/guide/install.md "Install" names is there.
 set -euo pipefail
 build="$1" prefix="$2"
 rm -rf "$prefix"
@@ -13,7 +13,7 @@ for path in bin/pita include/pita/core/arrow.hpp include/pita/core/affine_power.
             lib/cmake/pita/pitaConfig.cmake lib/cmake/pita/pitaConfigVersion.cmake \
             lib/cmake/pita/pitaCoreTargets.cmake lib/cmake/pita/pitaRenderTargets.cmake \
             lib/pkgconfig/pita.pc share/man/man1/pita.1 share/bash-completion/completions/pita \
-            share/zsh/vendor-completions/_pita share/doc/pita/CHANGELOG.md; do
+            share/zsh/vendor-completions/_pita share/doc/pita/CHANGELOG.md share/doc/pita/docs/reference/eval.md; do
   if [ ! -f "$prefix/$path" ]; then
     echo "missing after cmake --install: $path" >&2
     status=1

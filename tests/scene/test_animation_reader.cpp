@@ -1,4 +1,4 @@
-// "animation" (src/scene/animation_reader.cpp; README "Animation"): the
+// "animation" (src/scene/animation_reader.cpp; docs/reference/animate.md "Animation"): the
 // defaults, what each field sets, the frames that duration x fps gives, and
 // "what" following whether a keyframe moves. Refusals through pita:
 // tests/data/bad/animation-*.

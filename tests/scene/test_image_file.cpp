@@ -1,5 +1,5 @@
 // The image files that scenes name (src/scene/image_file.cpp; PITA Sec. 7.1,
-// README "Shapes and images"): where a path may lead (relative, inside the
+// docs/reference/render.md "Figure fields of a scene"): where a path may lead (relative, inside the
 // scene's folder once ".." and symbolic links are resolved; absolute only
 // with --allow-absolute-paths), what the file must be (a regular file, a PNG
 // of 1 to kMaxImageSide pixels a side) and the size read from its IHDR

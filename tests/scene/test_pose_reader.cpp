@@ -1,4 +1,4 @@
-// Reading pose scenes (src/scene/pose_reader.cpp; SAM paper, README "Pose
+// Reading pose scenes (src/scene/pose_reader.cpp; SAM paper, docs/reference/pose-scenes.md "Pose
 // scenes"): poses given as matrices or triangles, the reference triangle,
 // shapes and builtin outlines, pose methods; what it refuses is in
 // tests/data/bad/ (poses-*), a few refusals are asserted whole here. The

@@ -1,4 +1,4 @@
-// Reading 3D pose scenes (src/scene/space_pose_reader.cpp; README "3D pose
+// Reading 3D pose scenes (src/scene/space_pose_reader.cpp; docs/reference/pose-scenes.md "3D pose
 // scenes"): 3x4 matrices and tetrahedra, the reference tetrahedron, which
 // commands may read them. Refusals: tests/data/bad/space-*; the schema side:
 // test_schema.cpp (SpaceScenesAgreeWithTheParser).

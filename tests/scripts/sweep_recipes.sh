@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The two recipes of README "pita sweep" for more than one machine, run here:
+# The two recipes of docs/reference/sweep.md "pita sweep" for more than one machine, run here:
 #  - scripts/slurm-sweep.sbatch: --submit calls sbatch for the job array and the
 #    dependent merge (a stand-in sbatch on PATH records the calls); each array
 #    task, run as Slurm would run it (SLURM_ARRAY_TASK_ID/COUNT set), then the

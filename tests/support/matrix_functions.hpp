@@ -1,7 +1,7 @@
 // Eigen's generic matrix functions (unsupported/Eigen/MatrixFunctions:
 // Schur-Pade log and pow, scaling-and-squaring exp), the independent oracle
 // the tests and the benchmark compare pita's closed forms with, compiled once
-// in this support library (README "Build time": instantiating them took about
+// in this support library (docs/explanation/build-time.md "Build time": instantiating them took about
 // a minute in each of the eleven files that included MatrixFunctions).
 //
 // Plain functions over fixed sizes, in double and in long double; each is

@@ -1,7 +1,7 @@
 // The double half of matrix_functions.hpp (two files, so that the two halves
 // compile in parallel). Each function is Eigen's on the dynamic-size matrix:
 // one instantiation of the Schur-Pade machinery serves every size (three
-// fixed sizes took three times as long to compile, README "Build time").
+// fixed sizes took three times as long to compile, docs/explanation/build-time.md "Build time").
 #include "support/matrix_functions.hpp"
 
 #include <unsupported/Eigen/MatrixFunctions>

@@ -31,7 +31,7 @@ enum class Chain {
 struct ChainInfo {
   Chain chain;
   std::string_view name;   // as scene files spell it: "blend", "bezier-spiral"
-  std::string_view title;  // one line for help and README
+  std::string_view title;  // one line for help and the docs
   // True when the chain is built from the method at three keyframes; false
   // when it is built from steady morphs between consecutive keyframes
   // whatever the method.
@@ -40,7 +40,7 @@ struct ChainInfo {
   int continuity;
 };
 
-// Every chain, the one table of them (help, schema and README derive from it).
+// Every chain, the one table of them (help, schema and docs derive from it).
 std::span<const ChainInfo> all_chains();
 const ChainInfo& info(Chain chain);
 // The chain named `name` (exact spelling); nullptr if none.

@@ -51,7 +51,7 @@ struct MethodOptionKey {
   MethodOption option;
 };
 
-// The keys of "options", in the order messages and the README list them.
+// The keys of "options", in the order messages and docs/reference/methods.md list them.
 inline constexpr std::array<MethodOptionKey, 6> kMethodOptionKeys{{
     {"anchor", kAnchorOption},
     {"path_mean", kPathMeanOption},

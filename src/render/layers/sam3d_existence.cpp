@@ -122,7 +122,7 @@ namespace detail {
 
 // Matrices (angle x axis x perturbation) per unit of work, measured: the
 // default layer (49 angles x 81 axes x 3^9) takes 0.85 s on two cores, about
-// 1.7 core-seconds or 680 000 units (README "Performance"); the searches of p
+// 1.7 core-seconds or 680 000 units (docs/explanation/performance.md "Performance"); the searches of p
 // along the curve are included.
 constexpr double kSafeCurveMatricesPerUnit = 110.0;
 

@@ -45,7 +45,7 @@ TEST(BezierSpiralChain, FollowsTheCubicsOfTheSpansSmaSamples) {
         const Arrow frame = chain->at(t);
         EXPECT_LT(std::abs(frame.p - bernstein(p, u)), 1e-9 * size) << "span " << i << " u " << u;
         EXPECT_LT(std::abs(frame.q() - bernstein(q, u)), 1e-9 * size) << "span " << i << " u " << u;
-        // Its winding is on the branch of the SMA's (README "Keyframe tracks").
+        // Its winding is on the branch of the SMA's (docs/reference/scene-format.md "Keyframe tracks").
         EXPECT_LE(std::abs(frame.w - steady_morph(k[i].arrow, k[i + 1].arrow, u).w), std::numbers::pi + 1e-9);
       }
     }

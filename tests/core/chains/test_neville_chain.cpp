@@ -63,7 +63,7 @@ TEST_P(NevilleChainOf, PassesEveryKeyframeAndIsSmooth) {
     const bool wild = trial % 2 == 1;
     // Neville is global: its bottom windows are evaluated over the whole
     // track, far from their own knots, so tracks are kept near even here
-    // (README "Keyframe tracks": prefer "blend" for uneven or long tracks).
+    // (docs/reference/scene-format.md "Keyframe tracks": prefer "blend" for uneven or long tracks).
     const std::vector<Keyframe> keys = s.track(s.integer(4, 6), wild ? 4.0 : 2.0, wild ? 1.2 : 0.5, 0.4);
     const auto motion = neville_or_null(m, keys);
     if (!motion) continue;
@@ -78,7 +78,7 @@ TEST_P(NevilleChainOf, PassesEveryKeyframeAndIsSmooth) {
       const double jump = test::velocity_jump(*motion, keys[i].t, 1e-4 * gap, size / gap);
       // P2's polar magnitude is Lagrange-interpolated, so a window evaluated
       // far from its knots can have m < 0: the chain has no frame there
-      // (README "Keyframe tracks"). Every other PITA must be defined.
+      // (docs/reference/scene-format.md "Keyframe tracks"). Every other PITA must be defined.
       if (m == Method::P2 && !std::isfinite(jump)) continue;
       EXPECT_LT(jump, 1e-4)
           << test::name(m) << " trial " << trial << " knot " << i;

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""ctest docs.self_test: the documentation checks fail when they should. A
+doc example broken on purpose fails docs.examples, naming its line; a no-run
+comment without a reason is an error; broken links and anchors fail
+docs.links, each named, and the good ones pass.
+
+  tests/docs/self_test.py PITA
+"""
+import pathlib
+import subprocess
+import sys
+
+HERE = pathlib.Path(__file__).resolve().parent
+DATA = HERE / "data"
+ROOT = HERE.parent.parent
+
+
+def run(*args):
+    return subprocess.run([sys.executable, *map(str, args)], capture_output=True, text=True)
+
+
+def main() -> int:
+    pita = sys.argv[1]
+    failures = []
+    checks = 0
+
+    def expect(condition, what, result):
+        nonlocal checks
+        checks += 1
+        if not condition:
+            failures.append(f"{what}\n--- stdout:\n{result.stdout}--- stderr:\n{result.stderr}")
+
+    broken = run(HERE / "run_examples.py", ROOT, pita, DATA / "broken-example.md")
+    expect(broken.returncode == 1, "a broken example must fail docs.examples (exit 1)", broken)
+    expect("broken-example.md:11: the example exits 2" in broken.stderr,
+           "the failure must name the page and line of the broken block", broken)
+    expect("no-such-scene.json" in broken.stderr, "the failure must show pita's message", broken)
+    expect("also-missing" not in broken.stderr, "a no-run block must not run", broken)
+    expect("2 examples ran, 1 marked no-run, 1 failed" in broken.stdout, "the counts", broken)
+
+    unexplained = run(HERE / "run_examples.py", ROOT, pita, DATA / "unexplained-no-run.md")
+    expect(unexplained.returncode == 1 and "must say why" in unexplained.stderr,
+           "a no-run comment without a reason must fail", unexplained)
+
+    links = run(HERE / "check_links.py", DATA / "broken")
+    expect(links.returncode == 1, "broken links must fail docs.links (exit 1)", links)
+    expect("README.md:4: docs/missing.md: no such file" in links.stderr, "a missing file is named", links)
+    expect("README.md:4: docs/page.md#no-such-heading: docs/page.md has no heading #no-such-heading"
+           in links.stderr, "a missing heading is named", links)
+    expect("outside the repository" in links.stderr, "a link out of the tree is refused", links)
+    expect("docs/code.txt is shorter" in links.stderr, "a line past the end of a file is named", links)
+    expect("4 of 8 links do not resolve" in links.stderr, "only the four bad links fail", links)
+
+    for failure in failures:
+        print(failure, file=sys.stderr)
+    print(f"{checks - len(failures)} of {checks} checks hold")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
