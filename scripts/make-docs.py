@@ -21,15 +21,28 @@ import sys
 import tempfile
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-BLOCK = re.compile(r"(<!-- help:begin pita ?([a-z-]*) -->\n)(.*?)(<!-- help:end -->)", re.S)
+BLOCK = re.compile(r"(<!-- help:begin pita ?([a-z0-9 -]*?) -->\n)(.*?)(<!-- help:end -->)", re.S)
 ANIMATION = ("scenes/fig23-image-motion.json", "docs/images/fig23-image-motion.svg",
              ["--frames", "60", "--duration", "4"])
 
 
 def help_text(pita: str, subcommand: str) -> str:
-    args = [pita, *([subcommand] if subcommand else []), "--help"]
-    result = subprocess.run(args, capture_output=True, text=True, check=True, env={"COLUMNS": "100"})
+    result = subprocess.run([pita, *subcommand.split(), "--help"], capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit(f"make-docs: a help block names `pita {subcommand}`, which pita does not know: "
+                 f"{result.stderr.strip()}")
     return "```text\n" + result.stdout.rstrip() + "\n```\n"
+
+
+def subcommands(pita: str, parent: str = "") -> list:
+    """Every subcommand pita's --help lists ("eval", ..., "audit sam3d-existence")."""
+    text = subprocess.run([pita, *parent.split(), "--help"], capture_output=True, text=True, check=True).stdout
+    listed = re.search(r"^Subcommands:\n((?:  \S.*\n)+)", text, re.M)
+    found = []
+    for line in listed.group(1).splitlines() if listed else []:
+        name = f"{parent} {line.split()[0]}".strip()
+        found += [name, *subcommands(pita, name)]
+    return found
 
 
 def pages_with_help(pita: str):
@@ -69,6 +82,13 @@ def main() -> int:
         return 2
     pita = str(pathlib.Path(args[0]).resolve())
     stale = []
+    documented = {m.group(2) for page in (ROOT / "docs" / "reference").glob("*.md")
+                  for m in BLOCK.finditer(page.read_text())}
+    missing = [name for name in ["", *subcommands(pita)] if name not in documented]
+    for name in missing:
+        print(f"make-docs: no page of docs/reference holds `pita {name} --help` "
+              f"(add <!-- help:begin pita {name} --> <!-- help:end --> to its page)".replace("pita  ", "pita "),
+              file=sys.stderr)
     for page, text, wanted in pages_with_help(pita):
         if text != wanted:
             stale.append(page)
@@ -81,6 +101,8 @@ def main() -> int:
         if not check:
             target.parent.mkdir(parents=True, exist_ok=True)
             target.write_bytes(svg)
+    if missing:
+        return 1
     if check and stale:
         for path in stale:
             print(f"make-docs: {path.relative_to(ROOT)} is out of date (pita's --help or the figure changed): "

@@ -103,10 +103,10 @@ def collect_values(node, found):
     """Every (key, value) of every object in the scenes."""
     if isinstance(node, dict):
         for key, value in node.items():
-            found.setdefault(key, [])
-            text = json.dumps(value, ensure_ascii=False)
-            if len(text) <= LONGEST_EXAMPLE and value not in found[key]:
-                found[key].append(value)
+            found.setdefault(key, {})
+            text = json.dumps(value, ensure_ascii=False)  # keyed by text: true and 1 stay apart
+            if len(text) <= LONGEST_EXAMPLE:
+                found[key].setdefault(text, value)
             collect_values(value, found)
     elif isinstance(node, list):
         for value in node:
@@ -123,7 +123,7 @@ def main() -> int:
 
     def example(key: str, node: dict):
         validator = jsonschema.Draft7Validator(node, resolver=resolver)
-        candidates = sorted(values.get(key, []), key=lambda v: (len(json.dumps(v)), json.dumps(v)))
+        candidates = sorted(values.get(key, {}).values(), key=lambda v: (len(json.dumps(v)), json.dumps(v)))
         for value in candidates:
             if validator.is_valid(value):
                 return code(value)

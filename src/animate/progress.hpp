@@ -1,4 +1,4 @@
-// A progress bar for long work (docs/reference/animate.md "Animation", "pita sweep"): drawn on
+// A progress bar for long work (docs/reference/animate.md "Animation", docs/reference/sweep.md "pita sweep"): drawn on
 // stderr only when stderr is a terminal and the caller enables it (the CLI
 // does unless --quiet or in CI: cli/environment.hpp), so that CI logs and
 // pipes stay clean.

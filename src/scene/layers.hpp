@@ -1,4 +1,4 @@
-// The layers of a figure (docs/reference/render.md "Figures", "Pose scenes"): one struct per
+// The layers of a figure (docs/reference/render.md "Figures", docs/reference/pose-scenes.md "Pose scenes"): one struct per
 // layer kind with its fields resolved (defaults applied, colours parsed, names
 // looked up), the styles they share, and the variants of the layers of arrow
 // scenes (Layer) and of pose scenes (PoseLayer). Read by
@@ -276,7 +276,7 @@ struct HandleLayer {
 
 // "property-table" (PITA Fig. 10): the properties of Sec. 4 measured as
 // `pita audit` does (analysis/audit.hpp) for `methods`, drawn as a table whose
-// top-left corner is `at`, one world unit per pixel at scale 1 (docs/reference/render.md
+// top-left corner is `at`, one world unit per pixel at scale 1 (docs/reference/audit.md
 // "pita audit": give the canvas a view that shows it so). It ignores the
 // panel's keyframes.
 // "trees" of a property-table layer: Fig. 10's decision trees, drawn below

@@ -324,7 +324,7 @@ TEST_F(Eval, OutOfMemoryNamesTheScene) {
 }
 
 // A reader that goes away (`pita eval ... | head -c1`) killed pita with
-// SIGPIPE (status 141, no message); the README promises exit 3 and a message.
+// SIGPIPE (status 141, no message); docs/reference/exit-codes-and-limits.md promises exit 3 and a message.
 TEST_F(Eval, ClosedPipeIsExitThreeWithAMessage) {
   int fds[2];
   ASSERT_EQ(::pipe(fds), 0);

@@ -3,7 +3,7 @@
 // that have it and be measurably violated, on some configuration, by each that
 // does not. The expected sets are the paper's table as docs/paper-notes.md N8
 // corrects it, plus what we measured for P4's windings and for the PITAs the
-// table does not list (P5S, P9, P10); see the issue note and README.
+// table does not list (P5S, P9, P10); see the issue note and docs/reference/methods.md.
 #include <set>
 
 #include "test_support.hpp"

@@ -1,9 +1,8 @@
 #!/usr/bin/env python3
 """ctest docs.examples: every example of README.md and docs/ runs.
 
-An example is a fenced ```sh block; a page runs when one of its blocks has a
-line that starts with `pita` or `scripts/`. Each block runs with bash -e -o
-pipefail. The examples of one page run
+An example is a fenced ```sh block: every one runs, unless marked (below).
+Each block runs with bash -e -o pipefail. The examples of one page run
 in order in one temporary folder, as a reader who follows the page runs them
 (the tour writes three.json, the next block renders it); the folder holds a
 copy of scenes/ and golden/ (so that an example may write there) and
@@ -11,8 +10,9 @@ symlinks to schema/, examples/ and scripts/, with the pita under test first
 on PATH as `pita`. A non-zero exit fails the test, which prints the file, the
 line of the block, the block and its output.
 
-A block that must not run (it installs packages, needs a cluster, or is the
-test command itself) has an HTML comment just before it that says why:
+A block that must not run (it installs packages, needs a cluster, is a
+benchmark or the test command itself) has an HTML comment just before it that
+says why:
 <!-- no-run: installs packages -->. A no-run comment without a reason is an error.
 
   tests/docs/run_examples.py ROOT PITA [FILE...]
@@ -26,7 +26,6 @@ import sys
 import tempfile
 
 NO_RUN = re.compile(r"^<!-- no-run(?::\s*(.*?))?\s*-->$")
-COMMAND = re.compile(r"^\s*(pita|scripts/)")
 
 
 def blocks(page: pathlib.Path):
@@ -46,17 +45,27 @@ def blocks(page: pathlib.Path):
         i += 1
 
 
+def link_or_copy(source, target):
+    """A hard link where the file system allows one (pita writes every file to
+    a temporary and renames it, so an example that updates a golden replaces
+    the link and never the original), else a copy (/tmp on another file
+    system than the clone)."""
+    try:
+        os.link(source, target)
+    except OSError:
+        shutil.copy2(source, target)
+
+
 def sandbox(root: pathlib.Path, pita: pathlib.Path, work: pathlib.Path) -> dict:
     shutil.copytree(root / "scenes", work / "scenes", symlinks=True)
-    # hard links: pita writes every file to a temporary and renames it, so an
-    # example that updates a golden replaces the link and never the original
-    shutil.copytree(root / "golden", work / "golden", copy_function=os.link)
+    shutil.copytree(root / "golden", work / "golden", copy_function=link_or_copy)
     for name in ("schema", "examples", "scripts"):
         (work / name).symlink_to(root / name)
     bin_dir = work / ".bin"
     bin_dir.mkdir()
     (bin_dir / "pita").symlink_to(pita)
-    return {**os.environ, "PATH": f"{bin_dir}:{os.environ.get('PATH', '/usr/bin:/bin')}"}
+    # HOME too: an example that goes to ~/somewhere stays in the folder
+    return {**os.environ, "HOME": str(work), "PATH": f"{bin_dir}:{os.environ.get('PATH', '/usr/bin:/bin')}"}
 
 
 def main() -> int:
@@ -79,8 +88,7 @@ def main() -> int:
                 skipped += 1
                 continue
             runnable.append((where, code))
-        # a page's set-up blocks (cat > scene.json) run too, before the examples that use them
-        if not any(COMMAND.match(l) for _, code in runnable for l in code.split("\n")):
+        if not runnable:
             continue
         with tempfile.TemporaryDirectory(prefix="pita-doc-") as work:
             env = sandbox(root, pita, pathlib.Path(work))

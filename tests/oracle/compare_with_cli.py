@@ -7,7 +7,7 @@ For each method, N random keyframe configurations (fixed seed) are written as sc
 evaluated by one `pita eval SCENE --t ...` request each (`pita eval --batch`, cli_batch.py) (knots plus random times, some outside
 [a, c]).  p and q are compared with an absolute tolerance of TOL times the scale of the frame
 (max of the keyframes' extent and the frame's distance from the keyframes' centre); w exactly
-to TOL*max(1,|w|) for winding-carrying methods, modulo 2 pi for P1 P7 P8 (README: principal
+to TOL*max(1,|w|) for winding-carrying methods, modulo 2 pi for P1 P7 P8 (docs/reference/methods.md: principal
 angle).  Exit 1 on any mismatch (or CLI failure), 0 otherwise.
 """
 import argparse
@@ -74,7 +74,7 @@ def gen_config(rng, method, i):
         arrows[1] = (arrows[1][0], arrows[0][1], arrows[0][2])
         kind += "+translation"
     elif special < 0.13:
-        # same vector up to whole turns: README fallback (no twirl exists)
+        # same vector up to whole turns: the twirl fallback of docs/reference/methods.md (no twirl exists)
         arrows[1] = (arrows[1][0], arrows[0][1], arrows[0][2] + 2 * math.pi * rng.choice([-2, -1, 1, 2]))
         kind += "+whole-turns"
     elif special < 0.16:
@@ -267,7 +267,7 @@ def cli_request(path, times, method):
     return [path, "--t=" + ",".join(repr(float(t)) for t in times), "--method", method]
 
 
-# the CLI's refusal of a frame that would not be finite (docs/reference/exit-codes-and-limits.md "Exit codes and errors");
+# the CLI's refusal of a frame that would not be finite (docs/reference/exit-codes-and-limits.md "Exit codes, errors and limits");
 # two wordings seen across builds
 NONFINITE = re.compile(r"(?:non-finite arrow|no finite frame) at t = ([-+0-9.eE]+|inf|nan)")
 

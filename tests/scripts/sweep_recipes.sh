@@ -47,7 +47,7 @@ done
 cmp whole/manifest.csv slurm/manifest.csv || fail "Slurm shards merged differ from the unsharded sweep"
 cmp whole/contact.svg slurm/contact.svg || fail "the Slurm contact sheet differs"
 
-# GNU parallel, the README's one-liner.
+# GNU parallel, the one-liner of docs/guide/cluster-sweeps.md "GNU parallel".
 command -v parallel >/dev/null || fail "GNU parallel is not installed (Debian package parallel, in PITA_TEST_PACKAGES)"
 parallel --will-cite -j 2 "$pita" sweep "$scene" "${args[@]}" -o par --shard {}/4 -q ::: 0 1 2 3 >/dev/null &&
   "$pita" sweep --merge par >/dev/null

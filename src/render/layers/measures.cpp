@@ -45,7 +45,7 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
       if (name.kind == scene::MeasureKind::handle_shift) {
         if (panel_.shapes.empty()) {
           fail(at, "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
-                   "give the scene or the panel \"shapes\" (docs/reference/render.md \"Shapes\")");
+                   "give the scene or the panel \"shapes\" (docs/reference/render.md \"Figure fields of a scene\")");
         }
         lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(stage_, index_)));
       } else if (name.kind == scene::MeasureKind::angle) {
