@@ -7,11 +7,17 @@ GitHub makes anchors: lower case, punctuation dropped, spaces to hyphens, -1,
 -2 ... for repeats) or an explicit <a id="..."> / <a name="...">; into
 another file, only a line: #L12.
 
+It also checks the references to a section that code, messages, the schema
+and scenes make in words, `docs/reference/check.md "Claims"` (a comment may
+break the quoted words over lines): the page exists and has a heading that
+starts with those words.
+
   tests/docs/check_links.py ROOT
 """
 import collections
 import pathlib
 import re
+import subprocess
 import sys
 
 LINK = re.compile(r"\]\(([^()\s]+)\)|(?:href|src)=\"([^\"]+)\"")
@@ -57,6 +63,44 @@ def anchors(path: pathlib.Path, cache={}) -> set:
     return cache[path]
 
 
+SECTION_REFERENCE = re.compile(r'(README(?:\.md)?|docs/[\w/.-]+\.md)(?: |\()\\?"([^"\\]{1,80})\\?"')
+SOURCE_FOLDERS = ("src", "tests", "scripts", "schema", "scenes", "cmake", "fuzz", "bench")
+
+
+def headings(path: pathlib.Path) -> list:
+    return [re.sub(r"[`*]", "", m.group(2)).lower() for _, line in prose_lines(path.read_text())
+            for m in [HEADING.match(line)] if m]
+
+
+def section_references(root: pathlib.Path):
+    """(where, page, words, problem or None) for each reference to a section in the sources."""
+    try:
+        listed = subprocess.run(["git", "ls-files", *SOURCE_FOLDERS, "CMakeLists.txt"], cwd=root,
+                                capture_output=True, text=True, check=True).stdout.split()
+    except (OSError, subprocess.CalledProcessError):
+        listed = []
+    if not listed:  # not a git tree (a source package, the self-test's data)
+        listed = [str(p.relative_to(root)) for top in SOURCE_FOLDERS for p in (root / top).rglob("*") if p.is_file()]
+    for name in listed:
+        if name.startswith("tests/docs/"):  # the checks' own self-test names pages that do not exist
+            continue
+        path = root / name
+        if path.suffix not in (".cpp", ".hpp", ".h", ".py", ".sh", ".json", ".txt", ".cmake", ".expect") \
+                and path.name != "CMakeLists.txt":
+            continue
+        text = path.read_text(errors="replace")
+        for m in SECTION_REFERENCE.finditer(text):
+            where = f"{name}:{text.count(chr(10), 0, m.start()) + 1}"
+            words = re.sub(r"\s*\n\s*(?://|#)?\s*", " ", m.group(2)).strip().lower()
+            page = root / (m.group(1) if m.group(1).endswith(".md") else "README.md")
+            problem = None
+            if not page.exists():
+                problem = "no such page"
+            elif not any(h.startswith(words) for h in headings(page)):
+                problem = f"{m.group(1)} has no heading that starts with it"
+            yield where, m.group(1), words, problem
+
+
 def main() -> int:
     root = pathlib.Path(sys.argv[1]).resolve()
     files = [f for f in (root / "README.md", root / "CHANGELOG.md") if f.exists()]
@@ -88,12 +132,15 @@ def main() -> int:
                             problems.append(f"{where}: {target}: {goal.relative_to(root)} is shorter")
                     elif anchor not in anchors(goal):
                         problems.append(f"{where}: {target}: {goal.relative_to(root)} has no heading #{anchor}")
-    for problem in problems:
+    references = list(section_references(root))
+    wrong = [f'{where}: {page} "{words}": {problem}' for where, page, words, problem in references if problem]
+    for problem in problems + wrong:
         print(problem, file=sys.stderr)
-    if problems:
-        print(f"{len(problems)} of {checked} links do not resolve", file=sys.stderr)
+    if problems or wrong:
+        print(f"{len(problems)} of {checked} links and {len(wrong)} of {len(references)} section references "
+              "do not resolve", file=sys.stderr)
         return 1
-    print(f"{checked} links in {len(files)} files resolve")
+    print(f"{checked} links in {len(files)} files and {len(references)} section references resolve")
     return 0
 
 

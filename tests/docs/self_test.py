@@ -2,7 +2,8 @@
 """ctest docs.self_test: the documentation checks fail when they should. A
 doc example broken on purpose fails docs.examples, naming its line; a no-run
 comment without a reason is an error; broken links and anchors fail
-docs.links, each named, and the good ones pass.
+docs.links, each named, as do references to a section that does not exist,
+and the good ones pass.
 
   tests/docs/self_test.py PITA
 """
@@ -49,7 +50,12 @@ def main() -> int:
            in links.stderr, "a missing heading is named", links)
     expect("outside the repository" in links.stderr, "a link out of the tree is refused", links)
     expect("docs/code.txt is shorter" in links.stderr, "a line past the end of a file is named", links)
-    expect("4 of 8 links do not resolve" in links.stderr, "only the four bad links fail", links)
+    expect('src/refs.cpp:2: docs/page.md "no such section": docs/page.md has no heading that starts with it'
+           in links.stderr, "a reference to a section a page does not have is named", links)
+    expect('src/refs.cpp:3: docs/gone.md "a heading": no such page' in links.stderr,
+           "a reference to a missing page is named", links)
+    expect("4 of 8 links and 2 of 3 section references do not resolve" in links.stderr,
+           "only the bad links and references fail", links)
 
     for failure in failures:
         print(failure, file=sys.stderr)
