@@ -13,6 +13,8 @@ import pathlib
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "scripts" / "lib"))
+from generated_page import write_or_check  # noqa: E402
 BEGIN, END = "<!-- gallery:begin -->", "<!-- gallery:end -->"
 COLUMNS = 3
 SHOWN_CLAIMS = 3  # per cell; the others are counted
@@ -42,21 +44,14 @@ def gallery() -> str:
 
 
 def main() -> int:
-    readme = ROOT / "docs" / "gallery.md"
-    text = readme.read_text()
+    page = ROOT / "docs" / "gallery.md"
+    text = page.read_text()
     if BEGIN not in text or END not in text:
         print(f"make-gallery: docs/gallery.md has no {BEGIN} ... {END} section", file=sys.stderr)
         return 1
     start, end = text.index(BEGIN), text.index(END) + len(END)
-    updated = text[:start] + gallery() + text[end:]
-    if "--check" in sys.argv[1:]:
-        if updated != text:
-            print("make-gallery: docs/gallery.md is out of date (a scene or its title changed): run "
-                  "scripts/make-gallery.py", file=sys.stderr)
-            return 1
-        return 0
-    readme.write_text(updated)
-    return 0
+    return write_or_check(ROOT, page, text[:start] + gallery() + text[end:], "a scene or its title changed",
+                          "scripts/make-gallery.py")
 
 
 if __name__ == "__main__":
