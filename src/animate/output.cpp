@@ -5,6 +5,7 @@
 #include <spawn.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -61,11 +63,11 @@ mode_t ordinary_mode(mode_t full) {
 // cleanup until released.
 class TemporaryFile {
  public:
-  explicit TemporaryFile(const fs::path& target) : target_(target) {
+  explicit TemporaryFile(const fs::path& target) : reservation_(1), target_(target) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     const std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
     slot_ = render::register_in_flight(pattern);
-    if (slot_ < 0) output_failed(target, "too many outputs in flight, or the path is too long");
+    if (slot_ < 0) output_failed(target, std::strerror(ENAMETOOLONG));  // a slot is reserved
     const int fd = ::mkstemp(render::slot_path(slot_));
     if (fd < 0) {
       const std::string reason = std::strerror(errno);
@@ -90,6 +92,7 @@ class TemporaryFile {
   }
 
  private:
+  render::InFlightReservation reservation_;  // released after the slot
   fs::path target_;
   std::string path_;
   int slot_ = -1;
@@ -247,7 +250,8 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
 // `path` as H.264 in MP4, or VP9 in WebM.
 std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, int width, int height, double fps, bool webm,
                                           const std::string& path) {
-  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-y",
+  // -xerror: stop at the first error instead of finishing a broken file.
+  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-xerror", "-y",
                                    "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
                                    "-framerate", fmt::format("{:.17g}", fps), "-i", "pipe:0", "-an",
                                    // yuv420p needs even sides.
@@ -261,10 +265,92 @@ std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, int width, 
   return args;
 }
 
+// What a child process wrote to its standard error, kept in an anonymous
+// file (memfd) to be read after it exits: ffmpeg reports some failures
+// ("Error writing trailer", on a full disk or a file-size limit) only there,
+// and exits 0.
+class CapturedStderr {
+ public:
+  CapturedStderr() : fd_(::memfd_create("pita-child-stderr", MFD_CLOEXEC)) {}
+  ~CapturedStderr() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  CapturedStderr(const CapturedStderr&) = delete;
+  CapturedStderr& operator=(const CapturedStderr&) = delete;
+  // The child's stderr goes into it (when the memfd could not be made, the
+  // child keeps pita's stderr).
+  void redirect(posix_spawn_file_actions_t& actions) const {
+    if (fd_ >= 0) posix_spawn_file_actions_adddup2(&actions, fd_, STDERR_FILENO);
+  }
+  // Its last 16 KiB.
+  std::string text() const {
+    std::string out;
+    if (fd_ < 0) return out;
+    const off_t size = ::lseek(fd_, 0, SEEK_END);
+    const off_t from = std::max<off_t>(0, size - (16 << 10));
+    out.resize(static_cast<std::size_t>(size - from));
+    const ssize_t n = ::pread(fd_, out.data(), out.size(), from);
+    out.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+    return out;
+  }
+
+ private:
+  int fd_;
+};
+
+// The last non-empty line of `text`, for a message.
+std::string last_line(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  const std::size_t at = text.find_last_of('\n');
+  return at == std::string::npos ? text : text.substr(at + 1);
+}
+
+// Runs `args` (stdin and stdout from /dev/null, stderr captured); its wait
+// status, or -1 when it cannot be started.
+int run_quietly(std::vector<std::string> args, std::string& err) {
+  CapturedStderr captured;
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  captured.redirect(actions);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t child = -1;
+  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return -1;
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  err = captured.text();
+  return status;
+}
+
+// The finished video, checked before it is committed: not empty, and when
+// ffprobe is installed beside ffmpeg, readable to its end by it.
+void verify_video(const std::string& ffmpeg, const std::string& path, const fs::path& out) {
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0 || status.st_size == 0) {
+    output_failed(out, "ffmpeg wrote an empty file");
+  }
+  const fs::path ffprobe = fs::path(ffmpeg).parent_path() / "ffprobe";
+  if (ffmpeg.find('/') == std::string::npos || ::access(ffprobe.c_str(), X_OK) != 0) return;
+  std::string err;
+  const int probed = run_quietly({ffprobe.string(), "-v", "error", "-show_entries", "format=duration", path}, err);
+  if (probed == -1) return;  // ffprobe could not start: the size check stands
+  if (!WIFEXITED(probed) || WEXITSTATUS(probed) != 0 || !err.empty()) {
+    output_failed(out, fmt::format("the video ffmpeg wrote is not readable ({}: {})", ffprobe.string(),
+                                   err.empty() ? "failed" : last_line(err)));
+  }
+}
+
 // ffmpeg running with a pipe to its standard input, in its own process group
 // (a terminal's Ctrl-C reaches pita, which stops it and removes the file
 // itself). While it runs, a write to a dead ffmpeg fails with EPIPE instead
-// of killing pita.
+// of killing pita. Its stderr is captured (CapturedStderr) and passed on to
+// pita's when it ends.
 class FfmpegProcess {
  public:
   FfmpegProcess(std::vector<std::string> args, const fs::path& out) {
@@ -273,6 +359,7 @@ class FfmpegProcess {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
+    stderr_.redirect(actions);
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
     posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
@@ -326,10 +413,17 @@ class FfmpegProcess {
     }
     child_ = -1;
     ::sigaction(SIGPIPE, &previous_, nullptr);
+    errors_ = stderr_.text();
+    if (!errors_.empty()) std::fputs(errors_.c_str(), stderr);  // what ffmpeg said, as it said it
     return status;
   }
 
+  // What ffmpeg wrote to its stderr (at -loglevel error: only errors).
+  const std::string& errors() const { return errors_; }
+
  private:
+  CapturedStderr stderr_;
+  std::string errors_;
   pid_t child_ = -1;
   int pipe_ = -1;
   struct sigaction previous_ {};
@@ -384,6 +478,12 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
                                                                       ? fmt::format("exit status {}", WEXITSTATUS(status))
                                                                       : fmt::format("signal {}", WTERMSIG(status))));
   }
+  // Exit 0 is not enough: an error while finishing the file (its trailer)
+  // is only said on stderr.
+  if (!process.errors().empty()) {
+    output_failed(request.out, fmt::format("ffmpeg reported an error: {}", last_line(process.errors())));
+  }
+  verify_video(ffmpeg, temporary.path(), request.out);
   temporary.commit();
   return request.out;
 }

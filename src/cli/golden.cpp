@@ -9,6 +9,7 @@
 
 #include "cli/failure.hpp"
 #include "golden/check.hpp"
+#include "golden/golden_file.hpp"
 #include "golden/report.hpp"
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
@@ -198,10 +199,13 @@ ExitCode run_update_goldens(const GoldenOptions& options) {
           } else {
             status = "changed: " + c.detail;
           }
+        } catch (const golden::GoldenPathError&) {
+          throw;  // a link, FIFO or device: never written through (exit 2)
         } catch (const golden::GoldenError& e) {
           status = std::string("replaced an unreadable golden (") + e.what() + ")";
         }
         if (status != "unchanged") {
+          golden::check_golden_folder(path);  // not a link out of --golden
           fs::create_directories(path.parent_path());
           render::write_file_atomically(path, bytes);
         }

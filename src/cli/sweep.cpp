@@ -40,8 +40,13 @@ Resumable: a variant whose outputs exist and whose manifest row has the same
 content hash is skipped (--force redoes it). SIGINT or SIGTERM lets the running
 variants finish, writes the manifest of what finished and exits 128 + signal.
 
+DIR must be new, empty or a sweep's own folder (it has a .pita-sweep marker):
+nothing of yours is replaced. One run at a time writes each manifest in DIR; a
+second is refused (exit 2, naming the first one's PID) unless given --wait.
+
 --shard K/N runs the variants i with i mod N = K and writes manifest.K-of-N.csv;
-pita sweep --merge DIR joins the parts and says which variants are missing.
+pita sweep --merge DIR joins the parts (in any order) and says which variants are
+missing.
 Recipes for Slurm and GNU parallel: docs/guide/cluster-sweeps.md.
 
 Examples:
@@ -52,7 +57,8 @@ Examples:
 
 Exit codes: 0 every variant written, 1 some variants failed (listed on stderr,
 every other variant still written) or --merge found variants missing, 2 bad usage
-or a bad base scene (nothing written), 3 an output could not be written.)";
+or a bad base scene (nothing written), or another run writing DIR, 3 an output
+could not be written or DIR holds files a sweep did not write.)";
 }
 
 }  // namespace
@@ -85,6 +91,8 @@ std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
                                           "Join the shards' manifests in DIR into manifest.csv, index.html, contact.*")
       ->type_name("DIR");
   sweep->add_flag("--force", command->force, "Redo variants that a previous run finished");
+  sweep->add_flag("--wait", command->wait,
+                  "When another sweep is writing the same manifest in DIR, wait for it instead of exiting 2");
   sweep->add_flag("-q,--quiet", command->quiet, "No progress");
   return command;
 }
@@ -97,7 +105,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
         throw sweep::SweepUsageError("--merge DIR takes no scene, --vary, --zip, -o, --format, --jobs, --shard or "
                                      "--force: the shards' folder holds the sweep's definition");
       }
-      const sweep::MergeSummary merged = sweep::merge_sweep(*command.merge, command.quiet);
+      const sweep::MergeSummary merged = sweep::merge_sweep(*command.merge, command.wait);
       if (!command.quiet) {
         for (const std::string& note : merged.notes) std::cerr << "pita: " << note << '\n';
       }
@@ -127,6 +135,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     options.jobs = command.jobs.value_or(threads_from_environment());
     if (command.shard) options.shard = sweep::parse_shard(*command.shard);
     options.force = command.force;
+    options.wait = command.wait;
     options.progress = progress_allowed(command.quiet);
     options.version = PITA_VERSION;
     const sweep::SweepSummary summary = sweep::run_sweep(options);

@@ -28,6 +28,7 @@ struct SweepCommand {
   std::optional<std::string> shard;
   std::optional<std::string> merge;
   bool force = false;
+  bool wait = false;
   bool quiet = false;
 };
 

@@ -1,7 +1,6 @@
 #include "golden/check.hpp"
 
-#include "analysis/claims.hpp"
-#include "motion/stage.hpp"
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -10,6 +9,7 @@
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"
 #include "golden/figure_data.hpp"
+#include "golden/golden_file.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "scene/json_text.hpp"
@@ -20,11 +20,6 @@ namespace pita::golden {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Golden files are input like scenes: read with a size limit (SceneError).
-std::string read_bytes(const fs::path& path) {
-  return scene::read_input_file(path, kMaxGoldenFileBytes, "golden file");
-}
 
 const std::string& output(const Outputs& outputs, FileKind kind) {
   switch (kind) {
@@ -105,13 +100,14 @@ namespace {
 FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const std::string& actual,
                                  const Tolerances& tolerances) {
   FileCheck check{kind, golden, Verdict::match, "", "", actual, ""};
-  std::error_code error;
-  if (!fs::exists(golden, error)) {
+  // Never through a link, a FIFO or a device (golden_file.hpp).
+  std::optional<std::string> golden_bytes = read_golden_file(golden, kMaxGoldenFileBytes);
+  if (!golden_bytes) {
     check.verdict = Verdict::missing;
     check.detail = "no golden file (create it with `pita update-goldens`)";
     return check;
   }
-  check.expected = read_bytes(golden);
+  check.expected = std::move(*golden_bytes);
   if (check.expected == actual) {
     check.detail = "identical";
     return check;

@@ -5,6 +5,10 @@
 
 #include <array>
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+#include <string>
 #include <cstring>
 
 namespace pita::render {
@@ -65,7 +69,30 @@ extern "C" void on_interrupt(int sig) {
 
 constexpr std::array<int, 3> kSignals = {SIGINT, SIGTERM, SIGHUP};
 
+// Reservations (InFlightReservation): ordinary threads only, never the handler.
+std::mutex reservation_mutex;
+std::condition_variable reservation_freed;
+std::size_t reserved = 0;
+
 }  // namespace
+
+InFlightReservation::InFlightReservation(std::size_t count) : count_(count) {
+  if (count > kInFlightSlots) {
+    throw std::length_error("cannot write " + std::to_string(count) + " files as one set (at most " +
+                            std::to_string(kInFlightSlots) + ")");
+  }
+  std::unique_lock lock(reservation_mutex);
+  reservation_freed.wait(lock, [count] { return reserved + count <= kInFlightSlots; });
+  reserved += count;
+}
+
+InFlightReservation::~InFlightReservation() {
+  {
+    const std::lock_guard lock(reservation_mutex);
+    reserved -= count_;
+  }
+  reservation_freed.notify_all();
+}
 
 int register_in_flight(std::string_view path) {
   if (path.size() >= kInFlightPathMax) return -1;

@@ -17,13 +17,31 @@
 
 namespace pita::render {
 
-// Temporary files that can be in flight at once (a scene writes at most one
-// per format; the golden report one at a time).
+// Temporary files that can be in flight at once. Writers reserve their slots
+// first (InFlightReservation) and wait while all are taken, so that this is
+// never a limit a user meets: `pita sweep --jobs 256` writes 64 files at a
+// time, the other writers wait for a slot instead of failing.
 inline constexpr std::size_t kInFlightSlots = 64;
 // Longest registered path, with its terminating NUL: the kernel refuses longer ones.
 inline constexpr std::size_t kInFlightPathMax = 4096;
 
-// Claims a free slot and copies `path` into it. Returns the slot's number, or
+// The right to register `count` temporaries: blocks until that many slots are
+// free of other reservations, and holds them until destroyed. A writer
+// reserves every file of its set at once (never one by one, which could
+// deadlock writers each holding part of a set). Throws std::length_error when
+// `count` exceeds kInFlightSlots.
+class InFlightReservation {
+ public:
+  explicit InFlightReservation(std::size_t count);
+  ~InFlightReservation();
+  InFlightReservation(const InFlightReservation&) = delete;
+  InFlightReservation& operator=(const InFlightReservation&) = delete;
+
+ private:
+  std::size_t count_;
+};
+
+// Claims a free slot and copies `path` into it; call it under a reservation. Returns the slot's number, or
 // -1 when every slot is taken or the path is too long (the caller then must not
 // create the file). The returned slot's characters may be changed in place
 // (slot_path: mkstemp fills in its XXXXXX there) until it is released.

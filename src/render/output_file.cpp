@@ -43,11 +43,9 @@ class Temporary {
     const std::string pattern = (dir / name).string();
     const std::string cannot = "cannot create a temporary file in " + dir.string();
     slot_ = register_in_flight(pattern);
-    if (slot_ < 0) {
-      if (pattern.size() >= kInFlightPathMax) throw error(target, cannot, ENAMETOOLONG);
-      throw OutputError(target.string() + ": " + cannot + " (more than " +
-                               std::to_string(kInFlightSlots) + " files in flight)");
-    }
+    // The caller holds a reservation (InFlightReservation): a slot is free
+    // unless the path is too long for one.
+    if (slot_ < 0) throw error(target, cannot, ENAMETOOLONG);
     fd_ = ::mkstemp(slot_path(slot_));
     if (fd_ < 0) {
       const int saved = errno;
@@ -143,6 +141,8 @@ mode_t output_mode() {
 
 void write_all_or_none(const std::vector<View>& files) {
   const mode_t mode = output_mode();
+  // Declared first, released last: after every temporary is gone.
+  const InFlightReservation reservation(files.size());
   std::vector<std::unique_ptr<Temporary>> temporaries;
   // The destructors remove every temporary not renamed, whatever throws.
   for (const View& file : files) temporaries.push_back(std::make_unique<Temporary>(file.path));
@@ -168,7 +168,8 @@ void write_all_or_none(const std::vector<View>& files) {
 }  // namespace
 
 struct StreamingOutput::Impl {
-  explicit Impl(const fs::path& path) : temporary(path) {}
+  explicit Impl(const fs::path& path) : reservation(1), temporary(path) {}
+  InFlightReservation reservation;  // released after the temporary
   atomic_output::Temporary temporary;
   std::string buffer;
 };

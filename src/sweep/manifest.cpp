@@ -137,7 +137,53 @@ bool ManifestReader::record(std::vector<std::string>& fields) {
   return true;
 }
 
+bool ManifestReader::is_sorted(const std::filesystem::path& path, const std::vector<std::string>& pointers) {
+  std::optional<ManifestReader> reader = open(path, pointers);
+  if (!reader) return true;
+  Row row;
+  std::int64_t last = -1;
+  while (reader->next(row)) {
+    if (row.index <= last) return false;
+    last = row.index;
+  }
+  return true;
+}
+
+std::optional<ManifestReader> ManifestReader::open_sorted(const std::filesystem::path& path,
+                                                         const std::vector<std::string>& pointers) {
+  std::optional<ManifestReader> reader = open(path, pointers);
+  if (!reader) return std::nullopt;
+  Row row;
+  while (reader->read_row(row)) reader->held_.emplace_back(reader->line_, std::move(row));
+  std::stable_sort(reader->held_.begin(), reader->held_.end(),
+                   [](const auto& a, const auto& b) { return a.second.index < b.second.index; });
+  for (std::size_t i = 1; i < reader->held_.size(); ++i) {
+    if (reader->held_[i].second.index == reader->held_[i - 1].second.index) {
+      throw std::runtime_error(fmt::format("{}: variant {} appears twice, on lines {} and {}", path.string(),
+                                           reader->held_[i].second.index, reader->held_[i - 1].first,
+                                           reader->held_[i].first));
+    }
+  }
+  reader->holding_ = true;
+  return reader;
+}
+
+std::string ManifestReader::where() const { return fmt::format("{}:{}", path_, row_line_); }
+
 bool ManifestReader::next(Row& row) {
+  if (!holding_) {
+    const bool found = read_row(row);
+    row_line_ = line_;
+    return found;
+  }
+  if (at_ >= held_.size()) return false;
+  row_line_ = held_[at_].first;
+  row = std::move(held_[at_].second);
+  ++at_;
+  return true;
+}
+
+bool ManifestReader::read_row(Row& row) {
   std::vector<std::string> fields;
   const std::size_t width = 4 + pointers_ + kMetricColumns.size();
   while (record(fields)) {

@@ -12,9 +12,12 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "render/output_file.hpp"
 
@@ -35,6 +38,7 @@ struct Row {
   std::string hash;
   std::array<std::string, kMetricColumns.size()> metrics{};
   bool ok() const { return status == "ok"; }
+  bool operator==(const Row&) const = default;
 };
 
 // The CSV text of `rows` (sorted by index) under a header naming `pointers`.
@@ -54,18 +58,35 @@ class ManifestReader {
   // rows only.
   static std::optional<ManifestReader> open(const std::filesystem::path& path, const std::vector<std::string>& pointers,
                                             bool headless = false);
+  // Whether the rows of the manifest at `path` are in strictly increasing
+  // order of index (what a run writes; a part edited by hand may not be).
+  // Reads it once, holding one row.
+  static bool is_sorted(const std::filesystem::path& path, const std::vector<std::string>& pointers);
+  // The manifest's rows sorted by index, held in memory: for a part written
+  // out of order. Throws std::runtime_error naming the file and both lines
+  // of an index that appears twice.
+  static std::optional<ManifestReader> open_sorted(const std::filesystem::path& path,
+                                                   const std::vector<std::string>& pointers);
   // The next row; false at the end (or at a last line cut short). Throws
   // std::runtime_error naming the file and line of a malformed row.
   bool next(Row& row);
+  // Where the row last returned by next() is: "manifest.0-of-2.csv:7".
+  std::string where() const;
 
  private:
   ManifestReader() = default;
   bool record(std::vector<std::string>& fields);
+  bool read_row(Row& row);
   std::unique_ptr<std::istream> in_;
   std::string path_;
   std::size_t pointers_ = 0;
   int line_ = 0;
   bool complete_ = true;
+  // open_sorted: the rows and their lines, served in order from `at_`.
+  std::vector<std::pair<int, Row>> held_;
+  std::size_t at_ = 0;
+  bool holding_ = false;
+  int row_line_ = 0;
 };
 
 // Reads a manifest written by manifest_csv; nullopt when the file does not
@@ -85,20 +106,34 @@ std::string variant_file(const std::string& name, std::int64_t index, std::int64
 // RFC 4180 quoting of one field (quotes, commas, line breaks).
 std::string csv_field(std::string_view text);
 
+// What merge_sources does with accepted rows of one index in several sources.
+enum class SameIndex {
+  later_wins,       // a resumed run: the journal's row replaces the old manifest's
+  refuse_conflict,  // --merge: identical rows are one, different ones an error
+};
+
 // A manifest written from sources of rows, each sorted by index, without
-// holding them: of the rows of one index, an accepted one of a later source
-// wins (ok rows before failed ones when `prefer_ok`). `accept(row, source)`
-// filters; `on_row` sees each row written.
+// holding them. `accept(row, source)` filters; `on_row` sees each row
+// written. Throws std::runtime_error naming the files and lines of a source
+// out of order, or (refuse_conflict) of two different rows of one index.
 template <typename Accept, typename OnRow>
 void merge_sources(const std::filesystem::path& path, const std::vector<std::string>& pointers,
-                   std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, bool prefer_ok) {
+                   std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, SameIndex same) {
   render::StreamingOutput out(path);
   out.write(manifest_header(pointers));
   std::vector<std::optional<Row>> heads(sources.size());
+  std::vector<std::int64_t> last(sources.size(), -1);
   const auto advance = [&](std::size_t s) {
     heads[s].reset();
     Row row;
     while (sources[s].next(row)) {
+      if (row.index <= last[s]) {
+        throw std::runtime_error(fmt::format("{}: variant {} {} (the rows must be in increasing order of index, each "
+                                             "once)",
+                                             sources[s].where(), row.index,
+                                             row.index == last[s] ? "appears twice" : "comes after a later one"));
+      }
+      last[s] = row.index;
       if (accept(row, s)) {
         heads[s] = std::move(row);
         return;
@@ -116,7 +151,12 @@ void merge_sources(const std::filesystem::path& path, const std::vector<std::str
     std::optional<std::size_t> best;
     for (std::size_t s = 0; s < heads.size(); ++s) {
       if (!heads[s] || heads[s]->index != *least) continue;
-      if (!best || !prefer_ok || heads[s]->ok() || !heads[*best]->ok()) best = s;
+      if (best && same == SameIndex::refuse_conflict && !(*heads[s] == *heads[*best])) {
+        throw std::runtime_error(fmt::format("variant {} has two different rows, {} and {}: remove the part that is "
+                                             "stale (a run with another --shard N?) and merge again",
+                                             *least, sources[*best].where(), sources[s].where()));
+      }
+      best = s;
     }
     on_row(*heads[*best]);
     line.clear();

@@ -9,6 +9,7 @@
 
 #include "render/output_file.hpp"
 #include "sweep/definition.hpp"
+#include "sweep/folder.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep/variant.hpp"
@@ -24,10 +25,10 @@ constexpr std::size_t kMaxRangesKept = 1000;
 
 }  // namespace
 
-MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
-  (void)quiet;
+MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   const fs::path dir(dir_text);
   const Definition definition = read_definition(dir);
+  const FolderLock lock(dir, manifest_name(std::nullopt), "--merge " + dir_text, wait);
   const std::vector<std::string> pointers = pointers_of(definition);
   // The sweep again, from its definition: each row of the parts must be its
   // variant (same values, same content hash), else it is another sweep's.
@@ -56,12 +57,24 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
   std::vector<ManifestReader> sources;
   for (const fs::path& part : parts) {
     try {
-      if (auto reader = ManifestReader::open(part, pointers)) {
+      if (!ManifestReader::open(part, pointers)) continue;
+    } catch (const std::runtime_error& e) {  // the header of another sweep
+      summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
+      continue;
+    }
+    try {
+      // A part out of order (edited, concatenated) is sorted in memory; one
+      // in order, as every run writes it, is streamed. A variant twice in a
+      // part is refused.
+      std::optional<ManifestReader> reader = ManifestReader::is_sorted(part, pointers)
+                                                 ? ManifestReader::open(part, pointers)
+                                                 : ManifestReader::open_sorted(part, pointers);
+      if (reader) {
         sources.push_back(std::move(*reader));
         summary.parts.push_back(part.filename().string());
       }
     } catch (const std::runtime_error& e) {
-      summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
+      throw SweepUsageError(fmt::format("--merge: {}", e.what()));
     }
   }
   const auto accept = [&](const Row& row, std::size_t) {
@@ -84,7 +97,7 @@ MergeSummary merge_sweep(const std::string& dir_text, bool quiet) {
     if (!row.ok()) ++summary.failed;
   };
   try {
-    merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, true);
+    merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, SameIndex::refuse_conflict);
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
     throw SweepUsageError(fmt::format("--merge: {}", e.what()));

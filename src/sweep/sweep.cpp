@@ -22,6 +22,7 @@
 #include "render/output_file.hpp"
 #include "scene/scene.hpp"
 #include "sweep/definition.hpp"
+#include "sweep/folder.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/manifest.hpp"
 #include "sweep/sheet.hpp"
@@ -104,16 +105,22 @@ std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>
 
 namespace {
 
-// The output folder, created when missing.
+// The output folder, created when missing, refused when it holds files a
+// sweep did not write (folder.hpp).
 fs::path output_folder(const SweepOptions& options) {
   const fs::path dir(options.output);
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir)) {
-    throw SweepUsageError(fmt::format("-o {}: cannot create the output folder ({})", options.output,
-                                      error ? error.message() : "a file of that name exists"));
-  }
+  claim_folder(dir, "-o " + options.output, options.scene_path);
   return dir;
+}
+
+// "<name>-<index>.<what>" -> index, or -1.
+std::int64_t variant_index_of(const std::string& file, const std::string& name) {
+  if (file.size() <= name.size() + 1 || file.compare(0, name.size(), name) != 0 || file[name.size()] != '-') return -1;
+  std::size_t at = name.size() + 1;
+  const std::size_t digits_start = at;
+  while (at < file.size() && at - digits_start < 18 && file[at] >= '0' && file[at] <= '9') ++at;
+  if (at == digits_start || at >= file.size() || file[at] != '.') return -1;
+  return std::stoll(file.substr(digits_start, at - digits_start));
 }
 
 Definition definition_of(const SweepOptions& options, const Grid& grid, const BaseScene& base) {
@@ -159,6 +166,10 @@ class SweepRun {
   }
 
   SweepSummary run() {
+    // One run per manifest at a time; then what a killed run of this shard
+    // left half-written goes.
+    const FolderLock lock(dir_, manifest_name(options_.shard), "-o " + options_.output, options_.wait);
+    remove_stale_temporaries(dir_, [this](const std::string& target) { return stale_is_mine(target); });
     if (!options_.force) resume();
     std::error_code ignored;
     fs::remove(journal_path_, ignored);
@@ -185,6 +196,18 @@ class SweepRun {
     if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir_, row)) return false;
     return content_hash(variant_text(variant_document(base_, grid_, grid_.values(row.index))), definition_.salt) ==
            row.hash;
+  }
+  // The temporaries this run would write: its variants' files and manifest,
+  // and (unsharded) the folder's own files.
+  bool stale_is_mine(const std::string& target) const {
+    if (target == manifest_name(options_.shard)) return true;
+    if (!options_.shard) {
+      for (const std::string_view own : {kSweepFile, kFolderMarker, std::string_view("index.html"),
+                                         std::string_view("contact.svg"), std::string_view("contact.png")}) {
+        if (target == own) return true;
+      }
+    }
+    return in_shard(variant_index_of(target, definition_.name));
   }
   [[noreturn]] void refuse_folder(const std::runtime_error& error) const {
     throw SweepUsageError(
@@ -225,7 +248,7 @@ class SweepRun {
       if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
       if (auto j = ManifestReader::open(journal_path_, pointers_, true)) sources.push_back(std::move(*j));
       merge_sources(manifest_path_, pointers_, sources, [&](const Row& row, std::size_t) { return valid(row); },
-                    [](const Row&) {}, false);
+                    [](const Row&) {}, SameIndex::later_wins);
       have_manifest_ = true;
     }
   }
@@ -321,7 +344,7 @@ class SweepRun {
       return source == journal_source || kept_[static_cast<std::size_t>(position(row.index))] != 0;
     };
     try {
-      merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, false);
+      merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, SameIndex::later_wins);
     } catch (const render::OutputError&) {
       if (sig != 0) render::exit_interrupted(sig);  // the journal stays: the next run folds it
       throw;

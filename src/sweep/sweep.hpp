@@ -28,6 +28,7 @@ struct SweepOptions {
   int jobs = 1;
   std::optional<std::pair<int, int>> shard;  // K, N
   bool force = false;
+  bool wait = false;              // another run holds the folder's lock: wait for it (else exit 2)
   bool progress = false;         // a bar on a terminal, else a line every 10 s (the CLI: not --quiet, not in CI)
   std::string version;            // pita's version: part of every content hash
 };
@@ -65,8 +66,10 @@ struct MergeSummary {
 };
 
 // Joins DIR/manifest.K-of-N.csv into DIR/manifest.csv and writes index.html
-// and contact.*. Throws SweepUsageError when DIR holds no sweep.
-MergeSummary merge_sweep(const std::string& dir, bool quiet);
+// and contact.*. Throws SweepUsageError when DIR holds no sweep, when a part
+// holds a variant twice or two parts disagree on one, or when another run
+// holds DIR's manifest.csv (with `wait`, waits for it).
+MergeSummary merge_sweep(const std::string& dir, bool wait);
 
 // "0-3, 7, 9-11": ranges [first, last] as text.
 std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>>& ranges);

@@ -84,8 +84,9 @@ class ScratchDir {
 
   const std::filesystem::path& path() const { return path_; }
 
-  // Writes `text` to `name` in this directory.
+  // Writes `text` to `name` in this directory, making its folders.
   void write(const std::string& name, const std::string& text) const {
+    std::filesystem::create_directories((path_ / name).parent_path());
     std::ofstream(path_ / name, std::ios::binary) << text;
   }
 

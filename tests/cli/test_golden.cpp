@@ -2,7 +2,10 @@
 // binary, on scenes and goldens made in a scratch directory.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
+#include <functional>
 #include <regex>
 #include <string>
 
@@ -207,6 +210,58 @@ TEST_F(Check, HostileGoldensAreBadInputNamingTheFile) {
     ++count;
   }
   EXPECT_GE(count, 20);
+}
+
+// Issue 37: a golden that is a link (to a secret outside the tree), a FIFO
+// or a device is refused with its path (exit 2): never read into the report,
+// never waited on, never written through by update-goldens.
+TEST_F(Check, GoldensThatAreLinksFifosOrDevicesAreRefused) {
+  dir.write("secret.txt", "TOKEN=hunter2");
+  const fs::path svg = dir.path() / "golden/fig/fig.svg";
+  struct Case {
+    std::string what;
+    std::function<void()> make;
+  };
+  const std::vector<Case> cases = {
+      {"symbolic link", [&] { fs::create_symlink(dir.path() / "secret.txt", svg); }},
+      {"symbolic link", [&] { fs::create_symlink("/dev/stdin", svg); }},
+      {"FIFO", [&] { ASSERT_EQ(::mkfifo(svg.c_str(), 0600), 0); }},
+      {"device", [&] { fs::create_symlink("/dev/zero", svg); }},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    fs::remove(svg);
+    c.make();
+    for (const std::string command : {"check", "update-goldens"}) {
+      const RunResult r = command == "check" ? run({"check", "fig.json", "--report", "rep"})
+                                             : run({"update-goldens", "fig.json"});
+      EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+      EXPECT_NE(r.err.find("golden/fig/fig.svg"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("a golden must be a plain file"), std::string::npos) << r.err;
+    }
+    EXPECT_EQ(read_file(dir.path() / "secret.txt"), "TOKEN=hunter2");
+    if (fs::exists(dir.path() / "rep")) {
+      for (const auto& entry : fs::recursive_directory_iterator(dir.path() / "rep")) {
+        EXPECT_EQ(read_file(entry.path()).find("hunter2"), std::string::npos) << entry.path();
+      }
+    }
+  }
+}
+
+// A golden folder golden/<name> that is a link out of --golden is neither
+// read nor written through.
+TEST_F(Check, ALinkedGoldenFolderIsRefused) {
+  fs::create_directories(dir.path() / "elsewhere");
+  fs::rename(dir.path() / "golden/fig", dir.path() / "elsewhere/fig");
+  fs::create_directory_symlink(dir.path() / "elsewhere/fig", dir.path() / "golden/fig");
+  const std::string before = read_file(dir.path() / "elsewhere/fig/fig.svg");
+  dir.write("fig.json", scene("3.5"));
+  for (const std::string command : {"check", "update-goldens"}) {
+    const RunResult r = run({command, "fig.json"});
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("golden/fig: it is a symbolic link"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(read_file(dir.path() / "elsewhere/fig/fig.svg"), before);
 }
 
 // Issue 11: 85 000 nested arrays in a golden data file crashed `check`

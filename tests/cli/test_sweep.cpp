@@ -4,7 +4,10 @@
 // written); the HTML index sorted in a real browser.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/wait.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -304,7 +307,9 @@ TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   EXPECT_GE(rows, 1u);
   EXPECT_LT(rows, 150u);
   for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "out")) {
-    EXPECT_NE(e.path().filename().string().front(), '.') << "a temporary is left: " << e.path();
+    const std::string name = e.path().filename().string();
+    if (name == ".pita-sweep" || name == ".manifest.csv.lock") continue;  // the folder's marker and lock
+    EXPECT_NE(name.front(), '.') << "a temporary is left: " << e.path();
   }
   for (const std::string& index : column(partial, 0)) {
     EXPECT_TRUE(fs::exists(dir.path() / fmt::format("out/fig13-knot-ratio-{}.svg", index)));
@@ -349,6 +354,147 @@ TEST(Sweep, AKilledSweepResumesFromItsJournal) {
   fresh[5] = "fresh";
   ASSERT_EQ(run_pita(fresh, dir.path()).exit_code, 0);
   EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), read_file(dir.path() / "fresh/manifest.csv"));
+}
+
+// Issue 37: a sweep writes only into a folder that is new, empty or its own:
+// a user's index.html or contact.svg in the folder, or a base scene named
+// sweep.json, is never replaced (exit 3, nothing written).
+TEST(Sweep, NeverOverwritesWhatASweepDidNotWrite) {
+  ScratchDir dir;
+  dir.write("mine/index.html", "my page");
+  dir.write("mine/contact.svg", "<svg>mine</svg>");
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1", "-o", "mine", "-q"}, dir.path());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("-o mine: cannot write: the folder holds files that a sweep did not write"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(read_file(dir.path() / "mine/index.html"), "my page");
+  EXPECT_EQ(read_file(dir.path() / "mine/contact.svg"), "<svg>mine</svg>");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path() / "mine"), fs::directory_iterator()), 2);
+
+  const std::string base = read_file(kFig13);
+  dir.write("here/sweep.json", base);
+  const RunResult self = run_pita({"sweep", "sweep.json", "--vary", "/keyframes/1/m=0.5,1", "-o", ".", "-q"},
+                                  dir.path() / "here");
+  EXPECT_EQ(self.exit_code, 3) << self.err;
+  EXPECT_NE(self.err.find("would replace the base scene"), std::string::npos) << self.err;
+  EXPECT_EQ(read_file(dir.path() / "here/sweep.json"), base);
+
+  // Its own folder, and an empty one, are fine.
+  fs::create_directories(dir.path() / "empty");
+  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1", "-o", "empty", "-q"}, dir.path()).exit_code,
+            0);
+  EXPECT_TRUE(fs::exists(dir.path() / "empty/.pita-sweep"));
+  EXPECT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1,2", "-o", "empty", "-q", "--force"},
+                     dir.path())
+                .exit_code,
+            0);
+}
+
+// One run at a time writes a manifest: a second is refused naming the
+// holder's PID (exit 2), or waits with --wait.
+TEST(Sweep, ASecondRunIntoTheFolderIsRefusedOrWaits) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1", "-o", "out", "-q"};
+  ASSERT_EQ(run_pita(args, dir.path()).exit_code, 0);
+  const std::string manifest = read_file(dir.path() / "out/manifest.csv");
+  // This test holds the lock, as a running sweep would.
+  const int fd = ::open((dir.path() / "out/.manifest.csv.lock").c_str(), O_RDWR | O_CLOEXEC);  // not inherited by pita
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX), 0);
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  ASSERT_EQ(::pwrite(fd, pid.data(), pid.size(), 0), static_cast<ssize_t>(pid.size()));
+  std::vector<std::string> forced = args;
+  forced.push_back("--force");
+  const RunResult refused = run_pita(forced, dir.path());
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find(fmt::format("another pita sweep (PID {}) is writing manifest.csv", ::getpid())),
+            std::string::npos)
+      << refused.err;
+  forced.push_back("--wait");
+  Started waiting = start_pita(forced, dir.path());
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  int status = 0;
+  EXPECT_EQ(::waitpid(waiting.pid, &status, WNOHANG), 0) << "did not wait for the lock";
+  ::close(fd);  // releases it
+  const RunResult waited = finish_pita(waiting);
+  EXPECT_EQ(waited.exit_code, 0) << waited.err;
+  EXPECT_EQ(read_file(dir.path() / "out/manifest.csv"), manifest);
+}
+
+// What a SIGKILLed run left half-written (hidden temporaries of its own
+// outputs) is removed by the next run; other hidden files stay.
+TEST(Sweep, AResumedRunRemovesTheTemporariesOfAKilledOne) {
+  ScratchDir dir;
+  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1", "-o", "out", "-q"};
+  ASSERT_EQ(run_pita(args, dir.path()).exit_code, 0);
+  dir.write("out/.fig13-knot-ratio-1.svg.Ab12Cd", "<svg");
+  dir.write("out/.manifest.csv.x9Y8z7", "index");
+  dir.write("out/.my-notes.txt.Ab12Cd", "keep");
+  const RunResult r = run_pita(args, dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out/.fig13-knot-ratio-1.svg.Ab12Cd"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out/.manifest.csv.x9Y8z7"));
+  EXPECT_TRUE(fs::exists(dir.path() / "out/.my-notes.txt.Ab12Cd"));
+}
+
+// More threads than slots for temporaries (--jobs on a 256-core node): every
+// variant is written.
+TEST(Sweep, ManyJobsWriteEveryVariant) {
+  ScratchDir dir;
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5:1.5:300", "-o", "out", "--jobs", "256",
+                                "--format", "svg,csv", "-q"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("300 variants: 300 written"), std::string::npos) << r.out;
+  EXPECT_EQ(lines_of(read_file(dir.path() / "out/manifest.csv")).size(), 301u);
+}
+
+// --merge takes the parts' rows in any order, refuses a variant twice in a
+// part or two different rows of one variant, naming part and line.
+TEST(Sweep, MergeSortsAndRefusesDuplicatesAndConflicts) {
+  ScratchDir dir;
+  const std::vector<std::string> base = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:9", "--format", "csv",
+                                         "-q"};
+  const auto with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> a = base;
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_pita(a, dir.path());
+  };
+  ASSERT_EQ(with({"-o", "whole"}).exit_code, 0);
+  ASSERT_EQ(with({"-o", "parts", "--shard", "0/2"}).exit_code, 0);
+  ASSERT_EQ(with({"-o", "parts", "--shard", "1/2"}).exit_code, 0);
+  const fs::path part0 = dir.path() / "parts/manifest.0-of-2.csv", part1 = dir.path() / "parts/manifest.1-of-2.csv";
+  const std::vector<std::string> rows0 = lines_of(read_file(part0)), rows1 = lines_of(read_file(part1));
+  const auto write_rows = [](const fs::path& path, const std::vector<std::string>& rows) {
+    std::ofstream out(path, std::ios::binary);
+    for (const std::string& row : rows) out << row << '\n';
+  };
+  // Reversed rows.
+  std::vector<std::string> reversed = {rows0[0]};
+  reversed.insert(reversed.end(), rows0.rbegin(), rows0.rend() - 1);
+  write_rows(part0, reversed);
+  RunResult merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_EQ(merged.err.find("missing"), std::string::npos) << merged.err;
+  EXPECT_EQ(read_file(dir.path() / "parts/manifest.csv"), read_file(dir.path() / "whole/manifest.csv"));
+  // A row twice in one part.
+  std::vector<std::string> twice = rows1;
+  twice.push_back(rows1[1]);
+  write_rows(part1, twice);
+  merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
+  EXPECT_EQ(merged.exit_code, 2) << merged.err;
+  EXPECT_NE(merged.err.find("manifest.1-of-2.csv: variant 1 appears twice, on lines 2 and 6"), std::string::npos)
+      << merged.err;
+  // One variant in two parts with different rows.
+  std::vector<std::string> conflicting = rows1;
+  std::string changed = rows0[1];  // variant 0
+  changed.replace(changed.find(",ok,"), 4, ",err,");
+  conflicting.insert(conflicting.begin() + 1, changed);
+  write_rows(part1, conflicting);
+  merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
+  EXPECT_EQ(merged.exit_code, 2) << merged.err;
+  EXPECT_NE(merged.err.find("variant 0 has two different rows"), std::string::npos) << merged.err;
+  EXPECT_NE(merged.err.find("manifest.1-of-2.csv:2"), std::string::npos) << merged.err;
 }
 
 TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {

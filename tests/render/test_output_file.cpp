@@ -9,11 +9,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -147,6 +150,48 @@ TEST_F(OutputFile, AFailedTemporaryRemovesTheOthers) {
   EXPECT_THROW(write_files_atomically(files), std::runtime_error);
   EXPECT_EQ(entries(), 0u);
   EXPECT_EQ(remove_in_flight(), 0u);
+}
+
+// More writers than slots for temporaries (a sweep's --jobs 256): each waits
+// for a slot instead of failing, and every file arrives.
+TEST_F(OutputFile, MoreWritersThanSlotsAllSucceed) {
+  constexpr int kWriters = 4 * static_cast<int>(kInFlightSlots);
+  std::vector<std::thread> writers;
+  std::atomic<int> failed{0};
+  for (int i = 0; i < kWriters; ++i) {
+    writers.emplace_back([&, i] {
+      try {
+        const Files set = {{dir_ / (std::to_string(i) + ".svg"), "<svg/>"},
+                           {dir_ / (std::to_string(i) + ".csv"), "index\n"}};
+        write_files_atomically(set);
+      } catch (const std::exception&) {
+        ++failed;
+      }
+    });
+  }
+  for (std::thread& w : writers) w.join();
+  EXPECT_EQ(failed.load(), 0);
+  EXPECT_EQ(entries(), 2u * kWriters);
+  EXPECT_EQ(remove_in_flight(), 0u);
+}
+
+// A reservation waits while the slots are reserved by others, and a set
+// larger than every slot is refused rather than waited for forever.
+TEST_F(OutputFile, ReservationsWaitForFreeSlots) {
+  std::atomic<bool> second_done{false};
+  std::thread second;
+  {
+    const InFlightReservation all(kInFlightSlots);
+    second = std::thread([&] {
+      const InFlightReservation one(1);
+      second_done = true;
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_FALSE(second_done.load());
+  }
+  second.join();
+  EXPECT_TRUE(second_done.load());
+  EXPECT_THROW(InFlightReservation(kInFlightSlots + 1), std::length_error);
 }
 
 }  // namespace

@@ -1,0 +1,146 @@
+#include "sweep/folder.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <string_view>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "render/output_file.hpp"
+#include "sweep/definition.hpp"
+#include "sweep/grid.hpp"
+
+namespace pita::sweep {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ".<target>.XXXXXX" -> "<target>", or "" when `name` is not a temporary.
+std::string temporary_target(std::string_view name) {
+  constexpr std::size_t kSuffix = 7;  // ".XXXXXX" (mkstemp)
+  if (name.size() < 1 + 1 + kSuffix || name.front() != '.' || name[name.size() - kSuffix] != '.') return {};
+  for (std::size_t i = name.size() - kSuffix + 1; i < name.size(); ++i) {
+    if (std::isalnum(static_cast<unsigned char>(name[i])) == 0) return {};
+  }
+  return std::string(name.substr(1, name.size() - 1 - kSuffix));
+}
+
+// A folder a sweep made: the marker, or (made before the marker existed) a
+// sweep.json that is a sweep definition.
+bool is_sweep_folder(const fs::path& dir) {
+  std::error_code error;
+  if (fs::is_regular_file(fs::symlink_status(dir / kFolderMarker, error))) return true;
+  if (!fs::is_regular_file(fs::symlink_status(dir / kSweepFile, error))) return false;
+  try {
+    (void)read_definition(dir);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// Entries other than the marker and its temporaries (a concurrent shard
+// writing it); the first one found, to name in the refusal.
+std::string first_foreign_entry(const fs::path& dir) {
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
+    const std::string name = entry.path().filename().string();
+    if (name == kFolderMarker || temporary_target(name) == kFolderMarker) continue;
+    return name;
+  }
+  return {};
+}
+
+}  // namespace
+
+void claim_folder(const fs::path& dir, const std::string& option, const fs::path& base_scene) {
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(dir, error);
+  if (fs::exists(status) && !fs::is_directory(fs::status(dir, error))) {
+    throw render::OutputError(fmt::format("{}: cannot write: it exists and is not a folder", option));
+  }
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir)) {
+    throw SweepUsageError(fmt::format("{}: cannot create the output folder ({})", option,
+                                      error ? error.message() : "a file of that name exists"));
+  }
+  if (fs::equivalent(dir / kSweepFile, base_scene, error)) {
+    throw render::OutputError(fmt::format("{}: cannot write: the sweep's definition {} would replace the base scene "
+                                          "{}; give another output folder",
+                                          option, (dir / kSweepFile).string(), base_scene.string()));
+  }
+  if (!is_sweep_folder(dir)) {
+    if (const std::string other = first_foreign_entry(dir); !other.empty()) {
+      throw render::OutputError(fmt::format(
+          "{}: cannot write: the folder holds files that a sweep did not write ({} among them; a sweep's folder "
+          "has a {} file); give a new or empty folder, so that nothing of yours is replaced",
+          option, other, kFolderMarker));
+    }
+    render::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
+  }
+}
+
+FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const std::string& option, bool wait) {
+  const fs::path path = dir / ("." + manifest + ".lock");
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    throw render::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
+  }
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (errno != EWOULDBLOCK) {
+      const int saved = errno;
+      ::close(fd_);
+      throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+    }
+    if (!wait) {
+      char text[32] = {};
+      const ssize_t n = ::pread(fd_, text, sizeof text - 1, 0);
+      std::string pid(text, n > 0 ? static_cast<std::size_t>(n) : 0);
+      while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+      ::close(fd_);
+      fd_ = -1;
+      throw SweepUsageError(fmt::format(
+          "{}: another pita sweep ({}) is writing {} there; wait for it to finish, or give --wait to wait for it",
+          option, pid.empty() ? std::string("its PID unknown") : "PID " + pid, manifest));
+    }
+    while (::flock(fd_, LOCK_EX) != 0) {
+      if (errno != EINTR) {
+        const int saved = errno;
+        ::close(fd_);
+        throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+      }
+    }
+  }
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+    // The lock holds without the PID; only the message of a refused run loses it.
+  }
+}
+
+FolderLock::~FolderLock() {
+  // The file stays: removing it would let a waiting run lock a file no
+  // longer in the folder while a third run creates a new one.
+  if (fd_ >= 0) ::close(fd_);
+}
+
+std::int64_t remove_stale_temporaries(const fs::path& dir, const std::function<bool(const std::string&)>& mine) {
+  std::int64_t removed = 0;
+  std::error_code error;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
+    const std::string target = temporary_target(entry.path().filename().string());
+    if (target.empty() || !mine(target)) continue;
+    if (!fs::is_regular_file(entry.symlink_status(error))) continue;
+    if (fs::remove(entry.path(), error)) ++removed;
+  }
+  return removed;
+}
+
+}  // namespace pita::sweep
