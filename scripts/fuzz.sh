@@ -21,7 +21,7 @@ if ! [[ "$total" =~ ^[0-9]+$ ]] || [ $# -gt 1 ]; then
   exit 2
 fi
 
-targets=(fuzz_scene_reader fuzz_eval fuzz_render fuzz_golden_data fuzz_affine_power)
+targets=(fuzz_scene_reader fuzz_eval fuzz_render fuzz_golden_data fuzz_affine_power fuzz_sweep)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
@@ -43,6 +43,8 @@ set_options() {
       options+=("-dict=$PITA_ROOT/fuzz/golden_data.dict" -max_len=16384) ;;
     fuzz_affine_power)
       options+=(-max_len=64) ;;
+    fuzz_sweep)
+      options+=(-max_len=4096) ;;
   esac
 }
 

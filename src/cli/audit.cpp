@@ -185,6 +185,15 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     // that cannot be made costs nothing (and nothing is written).
     if (options.counterexamples) {
       std::error_code error;
+      // -o inside it is fine; -o naming it is not (the table would be a file
+      // where the folder must be).
+      if (options.output && (fs::path(*options.output).lexically_normal() ==
+                                 fs::path(*options.counterexamples).lexically_normal() ||
+                             fs::equivalent(*options.output, *options.counterexamples, error))) {
+        throw UsageError(fmt::format("-o {} and --counterexamples {} name the same path: the table is a file, the "
+                                     "counterexamples a folder; give two different paths",
+                                     *options.output, *options.counterexamples));
+      }
       fs::create_directories(*options.counterexamples, error);
       if (error || !fs::is_directory(*options.counterexamples)) {
         throw UsageError(fmt::format("--counterexamples: cannot create the folder {} ({})", *options.counterexamples,

@@ -57,11 +57,6 @@ std::string no_motion_text(const scene::Scene& scene, bool csv) {
   return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
 }
 
-bool chain_given(const scene::Scene& scene) {
-  const scene::TrackMethod* track = scene::track_method(scene.keys);
-  return track != nullptr && track->chain.has_value();
-}
-
 ExitCode write_stdout(const std::string& text) {
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
     std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno) << ")\n";
@@ -374,14 +369,7 @@ EvalOutcome evaluate(const EvalOptions& options) {
     const scene::Panel& panel = chosen.panel(index);
     const motion::SceneMotion& motion = chosen.motion(index);
     const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
-    const double work = static_cast<double>(at.size()) * motion::frame_cost(panel);
-    if (work > scene::kMaxEvalWork) {
-      throw InputError(fmt::format(
-          "{}: {}: {} frames of the {} cost about {:.3g} frames of the method, above the limit of {:.0g}: ask for "
-          "fewer frames, or use the local \"blend\" chain",
-          scene.path, chain_given(scene) ? "/chain" : "/keyframes", at.size(), motion.label(), work, scene::kMaxEvalWork));
-    }
-    outcome.work = work;
+    outcome.work = motion::check_eval_work(scene, panel, motion, at.size(), "ask for fewer frames (--samples, --t)");
     outcome.out = motion::frames_text(panel, motion, at,
                                       options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json);
     return outcome;

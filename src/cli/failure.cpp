@@ -3,6 +3,8 @@
 #include <exception>
 #include <new>
 
+#include <fmt/format.h>
+
 #include "animate/timeline.hpp"
 #include "golden/image_compare.hpp"
 #include "motion/no_motion.hpp"
@@ -13,7 +15,23 @@
 
 namespace pita::cli {
 
-Failure current_failure(const std::string& input) {
+std::string printable_text(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\n' && c != '\t') || u == 0x7f) {
+      out += fmt::format("\\x{:02x}", static_cast<unsigned>(u));
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+Failure classify(const std::string& input) {
   try {
     throw;
   } catch (const scene::SceneError& e) {
@@ -45,6 +63,14 @@ Failure current_failure(const std::string& input) {
             input + ": internal error, a bug in pita (please report it with this input): an "
                     "unknown exception"};
   }
+}
+
+}  // namespace
+
+Failure current_failure(const std::string& input) {
+  Failure failure = classify(input);
+  failure.message = printable_text(failure.message);
+  return failure;
 }
 
 }  // namespace pita::cli

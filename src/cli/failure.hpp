@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "cli/exit_code.hpp"
 
@@ -20,6 +21,12 @@ struct Failure {
 //   std::bad_alloc                                     -> bad_input, "INPUT: out of memory ..."
 //   anything else                                      -> internal_error, "INPUT: internal error ..."
 // `input` is the scene (or golden) being worked on, for the last two.
+// The message is printable (printable_text): a scene's name or value with
+// an ESC or BEL in it cannot drive the terminal.
 Failure current_failure(const std::string& input);
+
+// `text` with its control characters (but line breaks and tabs) escaped as
+// \xNN: what pita echoes of its input (file names, JSON values, arguments).
+std::string printable_text(std::string_view text);
 
 }  // namespace pita::cli

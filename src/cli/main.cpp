@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
       app.exit(error);  // --help or --version: printed on stdout
       return to_int(ExitCode::success);
     }
-    std::cerr << "pita: " << error.what() << "\nRun 'pita --help' for usage.\n";
+    std::cerr << "pita: " << pita::cli::printable_text(error.what()) << "\nRun 'pita --help' for usage.\n";
     return to_int(ExitCode::bad_input);
   }
 

@@ -140,7 +140,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     options.version = PITA_VERSION;
     const sweep::SweepSummary summary = sweep::run_sweep(options);
     for (std::size_t i = 0; i < summary.failures.size() && i < kMaxListed; ++i) {
-      std::cerr << "pita: " << summary.failures[i] << '\n';
+      std::cerr << "pita: " << printable_text(summary.failures[i]) << '\n';
     }
     if (summary.failures.size() > kMaxListed) {
       std::cerr << fmt::format("pita: ... and {} more failed variants (manifest.csv lists them all)\n",
@@ -157,7 +157,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     if (summary.write_failed) return ExitCode::failure;
     return summary.failed > 0 ? ExitCode::golden_mismatch : ExitCode::success;
   } catch (const sweep::SweepUsageError& error) {
-    std::cerr << "pita: " << error.what() << '\n';
+    std::cerr << "pita: " << printable_text(error.what()) << '\n';
     return ExitCode::bad_input;
   } catch (...) {
     const Failure failure = current_failure(command.merge.value_or(command.scene_path.value_or("sweep")));

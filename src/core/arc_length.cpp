@@ -15,6 +15,8 @@ namespace pita {
 
 namespace {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 // 8-point Gauss-Legendre nodes on [-1, 1], ascending, and their weights.
 constexpr std::array<double, 8> kNodes{-0.96028985649753623168, -0.79666647741362673959,
                                        -0.52553240991632898582, -0.18343464249564980494,
@@ -138,9 +140,10 @@ void ArcLengthTable::build(const AnyPath& path) {
   if (!(estimate > limits::kArcLengthZero * std::max(size, magnitude(origin)))) {
     throw std::invalid_argument("the path has zero length: the point does not move");
   }
+  noise_ = limits::kArcLengthNoise * std::max(size, magnitude(origin));
   for (const Initial& cell : initial) {
     refine(path, cell.a, cell.b, cell.speeds, cell.length,
-           limits::kArcLengthTolerance * estimate * (cell.b - cell.a) / (to - from), 0);
+           limits::kArcLengthTolerance * estimate * (cell.b - cell.a) / (to - from), 0, kInfinity, kInfinity);
   }
   double running = 0.0;
   for (Cell& cell : cells_) {
@@ -152,7 +155,8 @@ void ArcLengthTable::build(const AnyPath& path) {
 
 template <class AnyPath>
 void ArcLengthTable::refine(const AnyPath& path, double a, double b, const double (&speeds)[8],
-                            double length, double tolerance, int depth) {
+                            double length, double tolerance, int depth, double grandparent_error,
+                            double parent_error) {
   Cell whole;
   whole.from = a;
   whole.to = b;
@@ -167,14 +171,20 @@ void ArcLengthTable::refine(const AnyPath& path, double a, double b, const doubl
   double left[8], right[8];
   const double left_length = sample_cell(path, a, middle, from_, to_, left);
   const double right_length = sample_cell(path, middle, b, from_, to_, right);
-  const bool halves_agree = std::abs(left_length + right_length - length) <= tolerance;
-  const bool interpolant_agrees = std::abs(partial(whole, middle) - left_length) <= tolerance;
-  if (halves_agree && interpolant_agrees) {
+  const double allowed = std::max(tolerance, noise_);  // never below the rounding (limits.hpp)
+  const double error = std::max(std::abs(left_length + right_length - length),
+                                std::abs(partial(whole, middle) - left_length));
+  // Converged; or rounding, not the quadrature, is what disagrees: halving
+  // twice did not even halve the disagreement, where the 8-point rule's error
+  // falls by 2^16 per halving once the speed is resolved. Refining further
+  // would only multiply the work (per-span tables of long tracks).
+  const bool stalled = depth >= 2 && error > 0.5 * grandparent_error;
+  if (error <= allowed || stalled) {
     keep();
     return;
   }
-  refine(path, a, middle, left, left_length, 0.5 * tolerance, depth + 1);
-  refine(path, middle, b, right, right_length, 0.5 * tolerance, depth + 1);
+  refine(path, a, middle, left, left_length, 0.5 * tolerance, depth + 1, parent_error, error);
+  refine(path, middle, b, right, right_length, 0.5 * tolerance, depth + 1, parent_error, error);
 }
 
 double ArcLengthTable::speed_in(const Cell& cell, double tau) const {

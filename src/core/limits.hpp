@@ -215,6 +215,13 @@ inline constexpr double kArcLengthTolerance = 1e-11;
 // quadrature improves).
 inline constexpr int kArcLengthInitialCells = 16;
 inline constexpr int kArcLengthMaxDepth = 8;
+// ... nor below this fraction of the size of the points (the largest |P| and
+// |P - P(from)|): the rounding of the finite differences makes each
+// interval's length uncertain by about 1e-14 |P| whatever its width, so a
+// short span far from the origin (a span of a long track paced per span)
+// could never meet a tolerance relative to its own small length, and would
+// refine to kArcLengthMaxDepth everywhere (docs/paper-notes.md N20).
+inline constexpr double kArcLengthNoise = 1e-12;
 // At most this many intervals in all (a path whose speed is noisy at the
 // tolerance, e.g. far from the origin, stops refining there).
 inline constexpr int kArcLengthMaxCells = 1 << 14;

@@ -4,7 +4,10 @@
 #include <stdexcept>
 #include <variant>
 
+#include <fmt/format.h>
+
 #include "core/chains/chain.hpp"
+#include "scene/limits.hpp"
 #include "core/overloaded.hpp"
 
 namespace pita::motion {
@@ -77,6 +80,19 @@ std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, st
                    return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(scene::method_id(panel.keys), frames);
                  }},
       motion.built());
+}
+
+double check_eval_work(const scene::Scene& scene, const scene::Panel& panel, const SceneMotion& motion,
+                       std::size_t frames, std::string_view advice) {
+  const double work = static_cast<double>(frames) * frame_cost(panel);
+  if (work > scene::kMaxEvalWork) {
+    const scene::TrackMethod* track = scene::track_method(scene.keys);
+    throw scene::SceneError(scene.path, track != nullptr && track->chain.has_value() ? "/chain" : "/keyframes",
+                            fmt::format("{} frames of the {} cost about {:.3g} frames of the method, above the "
+                                        "limit of {:.0g}: {}, or use the local \"blend\" chain",
+                                        frames, motion.label(), work, scene::kMaxEvalWork, advice));
+  }
+  return work;
 }
 
 }  // namespace pita::motion

@@ -5,6 +5,7 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/affine2.hpp"
@@ -34,6 +35,14 @@ using PoseFrame = scene::PoseFrame;
 std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const double> times);
 std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times);
 std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::span<const double> times);
+
+// Frames of `motion` (the motion of `panel` in `scene`) cost `frames` times
+// its frame cost; above scene::kMaxEvalWork this throws scene::SceneError at
+// the pointer that makes them dear (/chain, else /keyframes), with `advice`
+// (what the command's user can change: "ask for fewer frames (--samples)").
+// Returns the work. What `pita eval` and the frames of `pita sweep` check.
+double check_eval_work(const scene::Scene& scene, const scene::Panel& panel, const SceneMotion& motion,
+                       std::size_t frames, std::string_view advice);
 
 enum class FramesFormat { json, csv };
 

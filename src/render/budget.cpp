@@ -173,7 +173,7 @@ void check_budget(const scene::Scene& scene, const FigureCost& cost, double fact
   throw RenderError(scene.path, pointer,
                     fmt::format("{}: the figure would draw about {} points, beyond the budget of "
                                 "{} ({:.0f}% of it from here); lower this, or raise the budget "
-                                "with `pita render --budget F` (F times the default)",
+                                "with --budget F of pita render or pita animate (F times the default)",
                                 what, count_text(cost.units), count_text(budget),
                                 100.0 * units / cost.units));
 }
@@ -184,8 +184,8 @@ void check_pixel_budget(const scene::Scene& scene, double scale, double factor) 
   if (pixels <= budget) return;
   throw RenderError(scene.path, "/canvas",
                     fmt::format("a PNG of {} pixels ({}x{} at scale {}) is beyond the budget of {} "
-                                "pixels; lower the scale, or raise the budget with `pita render "
-                                "--budget F`",
+                                "pixels; lower the scale, or raise the budget with "
+                                "--budget F of pita render or pita animate",
                                 count_text(pixels), scene.canvas.width, scene.canvas.height, scale,
                                 count_text(budget)));
 }
@@ -251,8 +251,8 @@ void check_ink_budget(const scene::Scene& scene, const Figure& figure, double sc
   throw RenderError(scene.path, worst->first,
                     fmt::format("the PNG would stroke about {} pixels of lines ({:.0f}% of them "
                                 "drawn by this layer), beyond the budget of {}; lower the scale, "
-                                "the samples or the shapes' sizes, or raise the budget with `pita "
-                                "render --budget F`",
+                                "the samples or the shapes' sizes, or raise the budget with --budget F of "
+                                "pita render or pita animate",
                                 count_text(total), 100.0 * worst->second * scale / total,
                                 count_text(budget)));
 }

@@ -1,7 +1,12 @@
 #include "render/image_cache.hpp"
 
-#include <map>
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <fstream>
+#include <list>
 #include <memory>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -9,20 +14,88 @@
 
 namespace pita::render {
 
-cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
-  thread_local std::map<std::string, SurfacePtr> cache;
-  auto it = cache.find(path);
-  if (it == cache.end()) {
-    SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
-    const cairo_status_t status = cairo_surface_status(surface.get());
-    if (status != CAIRO_STATUS_SUCCESS) {
-      throw ImageError(fmt::format("cannot read the image \"{}\": {}", name,
-                                              status == CAIRO_STATUS_READ_ERROR ? "not a valid PNG (truncated or corrupt)"
-                                                                                : cairo_status_to_string(status)));
-    }
-    it = cache.emplace(path, std::move(surface)).first;
-  }
-  return it->second.get();
+namespace {
+
+// Decoded bytes held by the caches of every thread together.
+std::atomic<std::size_t> cached_bytes{0};
+
+std::size_t bytes_of(cairo_surface_t* surface) {
+  return static_cast<std::size_t>(cairo_image_surface_get_stride(surface)) *
+         static_cast<std::size_t>(cairo_image_surface_get_height(surface));
 }
+
+// One thread's images, the most recently used first.
+class ThreadCache {
+ public:
+  ~ThreadCache() {
+    while (!entries_.empty()) drop_last();
+  }
+  cairo_surface_t* find(const std::string& path) {
+    for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+      if (it->first != path) continue;
+      entries_.splice(entries_.begin(), entries_, it);  // now the most recent
+      return entries_.front().second.get();
+    }
+    return nullptr;
+  }
+  // Keeps `surface`, first evicting this thread's least recently used images
+  // while the caches of all threads would hold more than kImageCacheBytes.
+  cairo_surface_t* insert(const std::string& path, SurfacePtr surface) {
+    const std::size_t bytes = bytes_of(surface.get());
+    while (!entries_.empty() && cached_bytes.load() + bytes > kImageCacheBytes) drop_last();
+    cached_bytes += bytes;
+    entries_.emplace_front(path, std::move(surface));
+    return entries_.front().second.get();
+  }
+
+ private:
+  void drop_last() {
+    cached_bytes -= bytes_of(entries_.back().second.get());
+    entries_.pop_back();
+  }
+  std::list<std::pair<std::string, SurfacePtr>> entries_;
+};
+
+// Why cairo could not decode `path`: it reports a corrupt PNG as "out of
+// memory" (CAIRO_STATUS_NO_MEMORY) as often as a read error, so the header
+// is looked at to tell a corrupt file from a truly huge image.
+std::string decode_failure(const std::string& path, cairo_status_t status) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[24] = {};
+  in.read(reinterpret_cast<char*>(head), sizeof head);
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (in.gcount() < 8 || !std::equal(head, head + 8, kSignature)) {
+    return "not a PNG file (its first bytes are not the PNG signature)";
+  }
+  if (in.gcount() < 24 || !std::equal(head + 12, head + 16, reinterpret_cast<const unsigned char*>("IHDR"))) {
+    return "corrupt PNG (truncated before its header)";
+  }
+  const auto be32 = [&](int at) {
+    return (std::uint64_t{head[at]} << 24) | (std::uint64_t{head[at + 1]} << 16) | (std::uint64_t{head[at + 2]} << 8) |
+           std::uint64_t{head[at + 3]};
+  };
+  const std::uint64_t width = be32(16), height = be32(20);
+  if (status == CAIRO_STATUS_NO_MEMORY && width * height * 4 > (std::uint64_t{1} << 30)) {
+    return fmt::format("out of memory decoding a PNG of {} x {} pixels", width, height);
+  }
+  return fmt::format("corrupt PNG (cairo: {}; a {} x {} image, truncated or damaged after its header)",
+                     status == CAIRO_STATUS_READ_ERROR ? "read error" : cairo_status_to_string(status), width,
+                     height);
+}
+
+}  // namespace
+
+cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
+  thread_local ThreadCache cache;
+  if (cairo_surface_t* found = cache.find(path)) return found;
+  SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
+  const cairo_status_t status = cairo_surface_status(surface.get());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    throw ImageError(fmt::format("cannot read the image \"{}\": {}", name, decode_failure(path, status)));
+  }
+  return cache.insert(path, std::move(surface));
+}
+
+std::size_t cached_image_bytes() { return cached_bytes.load(); }
 
 }  // namespace pita::render

@@ -1,4 +1,4 @@
-// The output folder of a sweep (docs/reference/sweep.md "Output folder"): pita
+// The output folder of a sweep (docs/reference/sweep.md "pita sweep"): pita
 // writes only into a folder that is new, empty or a sweep's own (it carries
 // the marker file .pita-sweep); one run at a time writes each manifest (an
 // advisory lock, flock(2), on a hidden file beside it); and a resumed run

@@ -126,7 +126,8 @@ Axis parse_axis(std::string_view argument) {
                                         argument, a, b));
     }
     // Every value between the ends must be a finite number too.
-    if (!std::isfinite(b - a) || (geometric && !(std::isfinite(b / a) && b / a != 0.0))) {
+    // (A geometric axis steps in logarithms, so log:1e-300:1e300:5 is fine.)
+    if (!geometric && !std::isfinite(b - a)) {
       throw SweepUsageError(fmt::format("--vary {}: the values between {} and {} are not all finite numbers",
                                         argument, a, b));
     }
@@ -151,6 +152,17 @@ Axis parse_axis(std::string_view argument) {
       } catch (const std::exception&) {
         throw SweepUsageError(fmt::format("--vary {}: {} is not a JSON string", argument, item));
       }
+      // A NUL or a terminal control (ESC, BEL) would go into manifest.csv,
+      // index.html and messages: swept text is printable (tabs and line
+      // breaks allowed).
+      for (const char c : axis.items.back().get_ref<const std::string&>()) {
+        const auto u = static_cast<unsigned char>(c);
+        if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) {
+          throw SweepUsageError(fmt::format("--vary {}: {} contains the control character U+{:04X}: a swept string "
+                                            "must be printable text",
+                                            argument, item, static_cast<unsigned>(u)));
+        }
+      }
       continue;
     }
     axis.items.push_back(list_item(item));
@@ -165,7 +177,10 @@ Json Axis::value(std::size_t i) const {
   if (k == 0) return number_value(a);
   if (k == n - 1) return number_value(b);
   const double u = static_cast<double>(k) / static_cast<double>(n - 1);
-  const double v = kind == Kind::geometric ? a * std::pow(b / a, u) : a + (b - a) * u;
+  // Geometric: a (b/a)^u in logarithms (b/a may overflow: log:1e-300:1e300:5).
+  const double v = kind == Kind::geometric
+                       ? std::copysign(std::exp(std::log(std::abs(a)) + (std::log(std::abs(b)) - std::log(std::abs(a))) * u), a)
+                       : a + (b - a) * u;
   // Rounded to 15 significant digits, so that 0.1:0.9:5 sets 0.3, not
   // 0.30000000000000004 (the step's rounding is not the user's value).
   const std::string rounded = fmt::format("{:.15g}", v);

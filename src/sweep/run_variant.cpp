@@ -111,7 +111,8 @@ void remove_outputs(const fs::path& dir, const std::string& name, std::int64_t i
 
 }  // namespace
 
-Row run_variant(const VariantJob& job, std::int64_t index, bool& write_failed) {
+Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outcome) {
+  bool& write_failed = outcome.write_failed;
   Row row;
   row.index = index;
   const std::vector<Json> values = job.grid.values(index);
@@ -144,13 +145,20 @@ Row run_variant(const VariantJob& job, std::int64_t index, bool& write_failed) {
         const motion::SceneMotion& motion = own_stage.motion(0);
         const std::vector<double> at =
             motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
+        motion::check_eval_work(scene, own_stage.panel(0), motion, at.size(), "ask for fewer frames (/samples)");
         files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
                                                                kind == OutputKind::csv ? motion::FramesFormat::csv
                                                                                        : motion::FramesFormat::json));
       }
       row.outputs.push_back(file);
     }
-    row.metrics = metrics_of(own_stage);
+    // The metrics within `pita measure`'s cost limit, else none (the sweep
+    // says how many variants have none).
+    if (analysis::measure_cost(own_stage.panel(0)) <= scene::kMaxEvalWork) {
+      row.metrics = metrics_of(own_stage);
+    } else {
+      outcome.metrics_skipped = true;
+    }
     render::write_files_atomically(files);
     row.status = "ok";
   } catch (const render::OutputError& error) {

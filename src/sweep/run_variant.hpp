@@ -31,8 +31,15 @@ struct VariantJob {
   const std::string salt;  // of the content hash
 };
 
-// Variant `index` of the job: its manifest row. `write_failed` is set when a
-// file could not be written (the row says which).
-Row run_variant(const VariantJob& job, std::int64_t index, bool& write_failed);
+// What a variant's row does not say.
+struct VariantOutcome {
+  bool write_failed = false;     // a file could not be written (the row says which)
+  bool metrics_skipped = false;  // measuring its motion costs more than `pita measure` allows: no metrics
+};
+
+// Variant `index` of the job: its manifest row. Its frames (csv, json) obey
+// `pita eval`'s work limit (a failed row above it); its metrics `pita
+// measure`'s cost limit (left empty above it, `outcome` says so).
+Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outcome);
 
 }  // namespace pita::sweep

@@ -256,14 +256,14 @@ class SweepRun {
   // A variant's row: run, or (resumed) nothing to do.
   struct Finished {
     Row row;
-    bool write_failed = false;
+    VariantOutcome outcome;
   };
   std::optional<Finished> produce(std::int64_t j) const {
     if (kept_[static_cast<std::size_t>(j)] != 0) return std::nullopt;  // resumed
     const std::int64_t index = shard_k_ + j * shard_n_;
     Finished finished;
     try {
-      finished.row = run_variant(job_, index, finished.write_failed);
+      finished.row = run_variant(job_, index, finished.outcome);
     } catch (const std::exception& error) {
       // Nothing a variant does may end the sweep: it is a failed row.
       finished.row = Row{};
@@ -290,7 +290,8 @@ class SweepRun {
     const auto journal_row = [&](std::int64_t, std::optional<Finished>&& finished) {
       if (!finished) return true;
       ++done;
-      summary_.write_failed = summary_.write_failed || finished->write_failed;
+      summary_.write_failed = summary_.write_failed || finished->outcome.write_failed;
+      if (finished->outcome.metrics_skipped) ++metrics_skipped_;
       const Row& row = finished->row;
       if (row.ok()) {
         ++summary_.ok;
@@ -324,6 +325,12 @@ class SweepRun {
       }
     }
     progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
+    if (metrics_skipped_ > 0) {
+      summary_.notes.push_back(fmt::format("{} variant{} without metrics: measuring their motion costs more than "
+                                           "the limit of pita measure (fewer keyframes, or the local \"blend\" "
+                                           "chain)",
+                                           metrics_skipped_, metrics_skipped_ == 1 ? "" : "s"));
+    }
   }
 
   // The manifest: the rows kept from before and the journal's, in order (an
@@ -368,6 +375,7 @@ class SweepRun {
   const std::int64_t mine_;
   std::vector<char> kept_;  // per variant of the shard: resumed from an earlier run
   bool have_manifest_ = false;
+  std::int64_t metrics_skipped_ = 0;
   SweepSummary summary_;
 };
 

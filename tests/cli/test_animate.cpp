@@ -495,6 +495,56 @@ TEST_P(AnimateVideo, TwelveFramesAtSixFpsAreTwoSecondsAtTheCanvasSize) {
 INSTANTIATE_TEST_SUITE_P(Formats, AnimateVideo, ::testing::Values(VideoCase{"mp4"}, VideoCase{"webm"}),
                          [](const ::testing::TestParamInfo<VideoCase>& param) { return param.param.extension; });
 
+// Issue 37: ffmpeg may exit 0 having written a broken file ("Error writing
+// trailer" on a full disk or a file-size limit). pita checks its stderr and
+// the file (not empty; readable by ffprobe beside ffmpeg) before the rename:
+// exit 3, nothing committed. Stand-in ffmpegs make each failure certain.
+TEST(AnimateVideoVerified, ABrokenVideoIsNeverCommitted) {
+  const ScratchDir dir;
+  struct Fake {
+    const char* name;
+    std::string body;      // the script after reading its input
+    bool with_ffprobe;     // /usr/bin/ffprobe linked beside it
+    std::string message;   // part of pita's stderr
+  };
+  const std::vector<Fake> fakes = {
+      {"trailer", "printf 'partial' > \"$out\"; echo \"Error writing trailer of $out: No space left on device\" >&2",
+       false, "ffmpeg reported an error: Error writing trailer"},
+      {"empty", ": > \"$out\"", false, "ffmpeg wrote an empty file"},
+      {"garbage", "printf 'not a video at all' > \"$out\"", true, "the video ffmpeg wrote is not readable"},
+  };
+  for (const Fake& fake : fakes) {
+    SCOPED_TRACE(fake.name);
+    if (fake.with_ffprobe && !have_program("ffprobe")) continue;
+    const fs::path bin = dir.path() / fake.name;
+    fs::create_directories(bin);
+    dir.write(std::string(fake.name) + "/ffmpeg",
+              "#!/bin/sh\nfor a; do out=$a; done\ncat > /dev/null\n" + fake.body + "\nexit 0\n");
+    fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+    if (fake.with_ffprobe) {
+      const std::string ffprobe = run_command("command -v ffprobe").out;
+      fs::create_symlink(ffprobe.substr(0, ffprobe.find('\n')), bin / "ffprobe");
+    }
+    fs::create_directories(dir.path() / "out");
+    Started started = start_pita({"animate", kFig23.string(), "-o", "out/clip.mp4", "--frames", "3"}, dir.path(),
+                                 {"PITA_FFMPEG=" + (bin / "ffmpeg").string()});
+    const RunResult r = finish_pita(started);
+    EXPECT_EQ(r.exit_code, 3) << r.err;
+    EXPECT_NE(r.err.find(fake.message), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;
+    EXPECT_TRUE(names_in(dir.path() / "out").empty()) << joined(hidden_in(dir.path() / "out"));
+  }
+  // The real ffmpeg under a file-size limit.
+  if (have_program("ffmpeg")) {
+    const CommandResult limited = run_command(
+        "cd " + quoted(dir.path().string()) + " && (trap '' XFSZ; ulimit -f 64; exec " + quoted(pita_binary()) +
+        " animate " + quoted(kFig23.string()) + " -o out/v.mp4 --frames 300 -q) 2>&1");
+    EXPECT_EQ(limited.exit_code, 3) << limited.out;
+    EXPECT_FALSE(fs::exists(dir.path() / "out/v.mp4"));
+    EXPECT_TRUE(names_in(dir.path() / "out").empty()) << joined(hidden_in(dir.path() / "out"));
+  }
+}
+
 // No ffmpeg: exit 2 before anything is written, naming the Debian package.
 TEST(AnimateVideoWithoutFfmpeg, ExitTwoNamingThePackage) {
   const ScratchDir dir;
@@ -656,6 +706,8 @@ TEST(AnimateBadScene, ACorruptImageIsNamedByItsPointer) {
     const RunResult r = run_pita({"animate", "fig23.json", "-o", out, "--frames", "2"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("fig23.json: /shapes/0/image: cannot read the image"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("corrupt PNG"), std::string::npos) << r.err;  // not "out of memory" (issue 37)
+    EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir.path() / out));
   }
   const RunResult render = run_pita({"render", "fig23.json", "-o", "x.png"}, dir.path());

@@ -185,6 +185,9 @@ TEST(Audit, BadUsageExitsTwoAndWritesNothing) {
       {{"audit", "--configs", "1000001", "-o", "t.svg"}, "--configs"},
       {{"audit", "--configs", "5", "-o", "t.txt"}, ".svg, .png or .pdf"},
       {{"audit", "--configs", "5", "--counterexamples", "file/cx", "-o", "t.svg"}, "cannot create the folder"},
+      // Issue 37: refused before the work, not after it (exit 3, an empty folder).
+      {{"audit", "--configs", "5", "-o", "t.svg", "--counterexamples", "t.svg"}, "name the same path"},
+      {{"audit", "--configs", "5", "-o", "t.svg", "--counterexamples", "./t.svg"}, "name the same path"},
   };
   for (const auto& [args, message] : cases) {
     const RunResult r = run_pita(args, dir.path());

@@ -305,6 +305,18 @@ TEST_F(Eval, DeepNestingIsAnErrorNotACrash) {
   EXPECT_NE(result.err.find("nest deeper than 256 levels"), std::string::npos) << result.err;
 }
 
+// Issue 37: control characters of a file name or a JSON value are escaped in
+// messages (an ESC could recolour or clear the terminal, a BEL ring).
+TEST_F(Eval, ControlCharactersInMessagesAreEscaped) {
+  const std::string name = "bad\x1b[2Jname\x07.json";
+  dir.write(name, R"({"method": "P6\u001b[31m", "keyframes": []})");
+  const RunResult result = run({"eval", name});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err.find('\x1b'), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find('\x07'), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("bad\\x1b[2Jname\\x07.json"), std::string::npos) << result.err;
+}
+
 // Out of memory names the scene and is exit 2 ("internal error", exit 3
 // before): a million frames under a small memory limit.
 TEST_F(Eval, OutOfMemoryNamesTheScene) {

@@ -505,7 +505,7 @@ TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
       {{"--vary", "/keyframes/7/t=0:1:3"}, "nearest pointer that exists is /keyframes/2/t"},
       {{"--vary", "/keyframs/1/t=0:1:3"}, "nearest pointer that exists is /keyframes/1/t"},
       {{"--vary", "/keyframes/1/tt=0:1:3"}, "did you mean \"t\""},
-      {{"--vary", "/keyframes/1/w=log:1e-300:1e300:5"}, "not all finite"},
+      {{"--vary", "/keyframes/1/w=-1e308:1e308:5"}, "not all finite"},
       {{"--vary", "/keyframes/1/t=0:1:3", "--vary", "/keyframes/1/t=2,3"}, "varied twice"},
       {{"--vary", "/keyframes/1/t=0:1"}, "SPEC must be"},
       {{"--vary", "/keyframes/1/t=0:1:0"}, "must be >= 1"},

@@ -3,7 +3,9 @@
 // the refusal of a still point (docs/paper-notes.md N20).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <stdexcept>
 
@@ -99,6 +101,30 @@ TEST(ArcLength, TinyAndHugeScalesAreMeasuredRelatively) {
     const ArcLengthTable table([&](double t) { return scale * std::polar(1.0, t); }, 0.0, kPi);
     EXPECT_NEAR(table.length() / scale, kPi, 1e-11) << scale;
   }
+}
+
+// Issue 37: a short path far from the origin whose points carry rounding
+// noise (as a motion's do: logs, exponentials, sines) cannot meet a tolerance
+// relative to its own small length. The table stops refining where the
+// disagreement is rounding (it no longer shrinks, or is below the noise floor
+// of limits.hpp), instead of halving every interval to the maximum depth: a
+// per-span warp of a 1000-keyframe track took minutes. The length stays right
+// to far better than the noise.
+TEST(ArcLength, NoisyShortPathFarAwayStopsRefiningAtTheRounding) {
+  const auto noise = [](double t) {  // deterministic, in [-1, 1]
+    std::uint64_t x = std::bit_cast<std::uint64_t>(t) * 0x9E3779B97F4A7C15ull;
+    x ^= x >> 29;
+    return static_cast<double>(x % 2001) / 1000.0 - 1.0;
+  };
+  const double r = 0.01, far = 1000.0;
+  const ArcLengthTable table(
+      [&](double t) {
+        const Point p = Point{far, far} + std::polar(r, t);
+        return p + 4e-14 * far * Point{noise(t), noise(t + 1.0)};
+      },
+      0.0, 1.0);
+  EXPECT_LE(table.intervals(), 256u);  // 16 x 2^8 = 4096 when refined to the end
+  EXPECT_NEAR(table.length(), r, 1e-6 * r);
 }
 
 }  // namespace

@@ -44,9 +44,9 @@ TEST_F(RunVariant, GoodVariantWritesItsFilesAndMetrics) {
   SweepOptions options;
   options.formats = {OutputKind::svg, OutputKind::csv};
   const VariantJob job{options, grid, base, dir_, "knots", "salt"};
-  bool write_failed = false;
-  const Row row = run_variant(job, 1, write_failed);
-  EXPECT_FALSE(write_failed);
+  VariantOutcome outcome;
+  const Row row = run_variant(job, 1, outcome);
+  EXPECT_FALSE(outcome.write_failed);
   EXPECT_EQ(row.status, "ok");
   ASSERT_EQ(row.outputs.size(), 3u);  // scene, svg, csv
   for (const std::string& file : row.outputs) EXPECT_TRUE(fs::is_regular_file(dir_ / file)) << file;
@@ -64,12 +64,12 @@ TEST_F(RunVariant, RefusedVariantKeepsOnlyItsScene) {
   SweepOptions options;
   options.formats = {OutputKind::svg};
   const VariantJob job{options, grid, base, dir_, "knots", "salt"};
-  bool write_failed = false;
+  VariantOutcome outcome;
   // An earlier run's figure for variant 1, now stale.
   const fs::path stale = dir_ / variant_file("knots", 1, grid.size(), "svg");
   std::ofstream(stale) << "<svg/>";
-  const Row row = run_variant(job, 1, write_failed);
-  EXPECT_FALSE(write_failed);
+  const Row row = run_variant(job, 1, outcome);
+  EXPECT_FALSE(outcome.write_failed);
   EXPECT_NE(row.status.find(variant_file("knots", 1, grid.size(), "scene.json") + ": /keyframes/1/m"),
             std::string::npos)
       << row.status;
