@@ -387,6 +387,20 @@ SafeCurve largest_safe_perturbation_curve(int steps, const Sam3dExistenceOptions
   return curve;
 }
 
+std::uint64_t existence_work(const Sam3dExistenceOptions& options, std::size_t thetas, bool single_p) {
+  const std::uint64_t per_test =
+      icosphere_axes(options.subdivisions).size() * static_cast<std::uint64_t>(std::max(1, options.angles)) * kPatterns;
+  const auto calls = single_p ? 1u : static_cast<std::uint64_t>(std::ceil(std::log2(grid_steps(options) + 1.0))) + 1;
+  return static_cast<std::uint64_t>(thetas) * calls * per_test;
+}
+
+std::uint64_t existence_curve_work(int steps, const Sam3dExistenceOptions& options) {
+  const std::uint64_t per_test = icosphere_axes(options.subdivisions).size() * kPatterns;
+  // Worst case per angle: a gallop and a bisection over the whole grid.
+  const auto calls = 2 * static_cast<std::uint64_t>(std::ceil(std::log2(grid_steps(options) + 2.0))) + 1;
+  return static_cast<std::uint64_t>(std::max(0, steps) + 1) * calls * per_test;
+}
+
 std::span<const PaperExistenceBound> paper_existence_bounds() { return kPaperBounds; }
 
 }  // namespace pita::analysis

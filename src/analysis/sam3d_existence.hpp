@@ -85,6 +85,19 @@ inline constexpr int kMaxExistenceCurveSteps = 720;
 SafeCurve largest_safe_perturbation_curve(int steps, const Sam3dExistenceOptions& options,
                                           const std::function<void(double)>& progress = {});
 
+// The matrices a run checks at most, before it starts (each test of (theta, p)
+// may stop at its first configuration without a SAM, so runs are often far
+// cheaper): `thetas` searches of the largest safe p (a bisection over the
+// grid of p, plus p = 0), or with `single_p` one test per theta.
+std::uint64_t existence_work(const Sam3dExistenceOptions& options, std::size_t thetas, bool single_p);
+// The same for the curve of `steps` steps: each angle alone, a gallop and a
+// bisection from the previous angle's bound (counted as its worst case).
+std::uint64_t existence_curve_work(int steps, const Sam3dExistenceOptions& options);
+// The work `pita audit sam3d-existence` does without --budget: about 70
+// times its default run's bound (3 thetas, 81 axes, 17 angles), a few minutes
+// on 2 cores at worst.
+inline constexpr double kExistenceWorkBudget = 1e11;
+
 // The paper's stated bounds (Sec. 5.2): theta < 2 pi / 3: p < 0.29; theta <
 // pi / 2: p < 0.33; theta < pi / 4: p < 0.50.
 struct PaperExistenceBound {

@@ -1,5 +1,6 @@
 #include "animate/frame.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <variant>
 
@@ -53,18 +54,38 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
       }
     }
   } else {
-    cover = render::build_figure(scene).drawings;
+    // One stage for the static figure and every cover frame; of each frame
+    // only its bounds are kept (33 whole frames of a long track held 1 GB).
+    const motion::Stage stage(scene);
+    cover = render::build_figure(stage).drawings;
+    std::vector<std::optional<scene::Box>> reach(cover.size());
     for (int i = 0; i < kLayoutSamples; ++i) {
       const render::FrameSelection selection{
           timeline.first + (timeline.last - timeline.first) * i / (kLayoutSamples - 1), {}};
-      append(cover, render::frame_drawings(scene, &selection));
+      const std::vector<render::Drawing> frame = render::frame_drawings(stage, &selection);
+      for (std::size_t p = 0; p < reach.size() && p < frame.size(); ++p) {
+        const std::optional<scene::Box> b = render::bounds(frame[p]);
+        if (!b) continue;
+        reach[p] = reach[p] ? scene::Box{{std::min(reach[p]->min.real(), b->min.real()),
+                                          std::min(reach[p]->min.imag(), b->min.imag())},
+                                         {std::max(reach[p]->max.real(), b->max.real()),
+                                          std::max(reach[p]->max.imag(), b->max.imag())}}
+                            : *b;
+      }
+    }
+    // The frames' reach as two invisible corners: the layout sees their bounds.
+    for (std::size_t p = 0; p < reach.size(); ++p) {
+      if (!reach[p]) continue;
+      render::Item corners;
+      corners.shape = render::Polyline{{reach[p]->min, reach[p]->max}, false, {}};
+      cover[p].items.push_back(std::move(corners));
     }
   }
   return render::checked_layout(scene, cover);
 }
 
 render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline, double t,
-                            const std::vector<render::PanelPlacement>& placements) {
+                            const std::vector<render::PanelPlacement>& placements, const motion::Stage* stage) {
   render::Figure figure;
   if (timeline.what == What::pattern) {
     figure.drawings = render::frame_drawings(motion::scene_at(scene, timeline.tau(t)), nullptr);
@@ -73,7 +94,8 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
     }
   } else {
     const render::FrameSelection selection{t, timeline.trail_times(t)};
-    figure.drawings = render::frame_drawings(scene, &selection);
+    figure.drawings = stage != nullptr ? render::frame_drawings(*stage, &selection)
+                                       : render::frame_drawings(scene, &selection);
   }
   figure.placements = placements;
   render::place_labels(scene, figure.drawings, figure.placements);  // against this frame's data
@@ -114,7 +136,8 @@ void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage*
 
 }  // namespace
 
-Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, const std::string& file) {
+Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, const std::string& file,
+                  const motion::Stage* shared) {
   const double t = timeline.time(k);
   Json record{{"frame", k + 1}, {"file", file}, {"t", t}};
   const bool pattern = timeline.what == What::pattern;
@@ -122,8 +145,8 @@ Json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, co
   const scene::Scene at = pattern ? motion::scene_at(scene, timeline.tau(t)) : scene;
   // A pattern's record holds its keyframes, a motion's the state of each panel's motion.
   std::optional<motion::Stage> stage;
-  if (!pattern) stage.emplace(at);
-  const motion::Stage* motions = stage ? &*stage : nullptr;
+  if (!pattern && shared == nullptr) stage.emplace(at);
+  const motion::Stage* motions = pattern ? nullptr : shared != nullptr ? shared : &*stage;
   // The first panel's state at the top level, every panel's under "panels".
   add_panel_state(record, at.panels.front(), motions, 0, timeline, t);
   if (at.panels.size() > 1) {

@@ -1,16 +1,8 @@
 #include "animate/output.hpp"
 
 #include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <sys/mman.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-#include <cairo.h>
 
 #include <algorithm>
 #include <cctype>
@@ -20,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -28,102 +21,42 @@
 #include "animate/frame_runner.hpp"
 #include "animate/progress.hpp"
 #include "animate/svg_animation.hpp"
+#include "animate/video.hpp"
 #include "render/budget.hpp"
 #include "render/interrupt.hpp"
 #include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 
-extern char** environ;
-
 namespace pita::animate {
 
-namespace {
-
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
-std::string lower(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
+namespace detail {
 
-[[noreturn]] void output_failed(const fs::path& path, const std::string& reason) {
+void output_failed(const fs::path& path, const std::string& reason) {
   throw render::OutputError(fmt::format("{}: cannot write: {}", path.string(), reason));
 }
 
-// The ordinary permissions of a new file or directory (0666 or 0777 less the
-// umask): mkstemp creates 0600 and mkdtemp 0700, which the rename would keep.
 mode_t ordinary_mode(mode_t full) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   return full & ~mask;
 }
 
-// A temporary beside `target` (".name.XXXXXX"), registered with the interrupt
-// cleanup until released.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const fs::path& target) : reservation_(1), target_(target) {
-    const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    const std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-    slot_ = render::register_in_flight(pattern);
-    if (slot_ < 0) output_failed(target, std::strerror(ENAMETOOLONG));  // a slot is reserved
-    const int fd = ::mkstemp(render::slot_path(slot_));
-    if (fd < 0) {
-      const std::string reason = std::strerror(errno);
-      render::release_in_flight(slot_);
-      output_failed(target, reason);
-    }
-    ::close(fd);
-    path_ = render::slot_path(slot_);
-  }
-  ~TemporaryFile() {
-    if (slot_ >= 0) {
-      ::unlink(path_.c_str());
-      render::release_in_flight(slot_);
-    }
-  }
-  const std::string& path() const { return path_; }
-  void commit() {
-    ::chmod(path_.c_str(), ordinary_mode(0666));
-    if (::rename(path_.c_str(), target_.c_str()) != 0) output_failed(target_, std::strerror(errno));
-    render::release_in_flight(slot_);
-    slot_ = -1;
-  }
+}  // namespace detail
 
- private:
-  render::InFlightReservation reservation_;  // released after the slot
-  fs::path target_;
-  std::string path_;
-  int slot_ = -1;
-};
+namespace {
 
-// ------------------------------------------------------------ frames
+using Json = nlohmann::ordered_json;
+using detail::ordinary_mode;
+using detail::output_failed;
 
-// The raw pixels of a frame for ffmpeg: cairo's ARGB32 rows (B, G, R, A in
-// memory), `width` x `height`, no padding.
-std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, int width, int height, double scale) {
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height), &cairo_surface_destroy);
-  {
-    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), &cairo_destroy);
-    cairo_scale(cr.get(), scale, scale);
-    render::paint_figure(cr.get(), scene, figure);
-  }
-  cairo_surface_flush(surface.get());
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-    throw render::RenderError(scene.path, "", "cairo could not draw a frame");
-  }
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  const unsigned char* data = cairo_image_surface_get_data(surface.get());
-  std::string bytes;
-  bytes.reserve(static_cast<std::size_t>(width) * height * 4);
-  for (int y = 0; y < height; ++y) {
-    bytes.append(reinterpret_cast<const char*>(data + static_cast<std::ptrdiff_t>(y) * stride),
-                 static_cast<std::size_t>(width) * 4);
-  }
-  return bytes;
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
 }
+
+
 
 // ------------------------------------------------------------ directory
 
@@ -160,6 +93,7 @@ void write_bytes(const fs::path& path, const std::string& bytes) {
 }
 
 fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                         const motion::Stage* stage,
                          const std::vector<render::PanelPlacement>& placements) {
   const fs::path target = request.out;
   std::error_code error;
@@ -197,13 +131,13 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
     run_frames(
         timeline.frames, request.threads,
         [&](int k) {
-          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements);
+          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
           return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
         },
         [&](int k, std::string&& bytes) {
           const std::string file = frame_file_name(k, timeline.frames, request.frame_format);
           write_bytes(temporary / file, bytes);
-          records.push_back(frame_record(scene, timeline, k, file));
+          records.push_back(frame_record(scene, timeline, k, file, stage));
           progress.update(k + 1);
         });
   } catch (const Interrupted& interrupted) {
@@ -244,249 +178,6 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   return target;
 }
 
-// ------------------------------------------------------------ video
-
-// ffmpeg's arguments: raw BGRA frames on its standard input, encoded to
-// `path` as H.264 in MP4, or VP9 in WebM.
-std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, int width, int height, double fps, bool webm,
-                                          const std::string& path) {
-  // -xerror: stop at the first error instead of finishing a broken file.
-  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-xerror", "-y",
-                                   "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
-                                   "-framerate", fmt::format("{:.17g}", fps), "-i", "pipe:0", "-an",
-                                   // yuv420p needs even sides.
-                                   "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-pix_fmt", "yuv420p"};
-  if (webm) {
-    for (const char* a : {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"}) args.emplace_back(a);
-  } else {
-    for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
-  }
-  args.push_back(path);
-  return args;
-}
-
-// What a child process wrote to its standard error, kept in an anonymous
-// file (memfd) to be read after it exits: ffmpeg reports some failures
-// ("Error writing trailer", on a full disk or a file-size limit) only there,
-// and exits 0.
-class CapturedStderr {
- public:
-  CapturedStderr() : fd_(::memfd_create("pita-child-stderr", MFD_CLOEXEC)) {}
-  ~CapturedStderr() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  CapturedStderr(const CapturedStderr&) = delete;
-  CapturedStderr& operator=(const CapturedStderr&) = delete;
-  // The child's stderr goes into it (when the memfd could not be made, the
-  // child keeps pita's stderr).
-  void redirect(posix_spawn_file_actions_t& actions) const {
-    if (fd_ >= 0) posix_spawn_file_actions_adddup2(&actions, fd_, STDERR_FILENO);
-  }
-  // Its last 16 KiB.
-  std::string text() const {
-    std::string out;
-    if (fd_ < 0) return out;
-    const off_t size = ::lseek(fd_, 0, SEEK_END);
-    const off_t from = std::max<off_t>(0, size - (16 << 10));
-    out.resize(static_cast<std::size_t>(size - from));
-    const ssize_t n = ::pread(fd_, out.data(), out.size(), from);
-    out.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
-    return out;
-  }
-
- private:
-  int fd_;
-};
-
-// The last non-empty line of `text`, for a message.
-std::string last_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
-  const std::size_t at = text.find_last_of('\n');
-  return at == std::string::npos ? text : text.substr(at + 1);
-}
-
-// Runs `args` (stdin and stdout from /dev/null, stderr captured); its wait
-// status, or -1 when it cannot be started.
-int run_quietly(std::vector<std::string> args, std::string& err) {
-  CapturedStderr captured;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  captured.redirect(actions);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t child = -1;
-  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return -1;
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  err = captured.text();
-  return status;
-}
-
-// The finished video, checked before it is committed: not empty, and when
-// ffprobe is installed beside ffmpeg, readable to its end by it.
-void verify_video(const std::string& ffmpeg, const std::string& path, const fs::path& out) {
-  struct stat status {};
-  if (::stat(path.c_str(), &status) != 0 || status.st_size == 0) {
-    output_failed(out, "ffmpeg wrote an empty file");
-  }
-  const fs::path ffprobe = fs::path(ffmpeg).parent_path() / "ffprobe";
-  if (ffmpeg.find('/') == std::string::npos || ::access(ffprobe.c_str(), X_OK) != 0) return;
-  std::string err;
-  const int probed = run_quietly({ffprobe.string(), "-v", "error", "-show_entries", "format=duration", path}, err);
-  if (probed == -1) return;  // ffprobe could not start: the size check stands
-  if (!WIFEXITED(probed) || WEXITSTATUS(probed) != 0 || !err.empty()) {
-    output_failed(out, fmt::format("the video ffmpeg wrote is not readable ({}: {})", ffprobe.string(),
-                                   err.empty() ? "failed" : last_line(err)));
-  }
-}
-
-// ffmpeg running with a pipe to its standard input, in its own process group
-// (a terminal's Ctrl-C reaches pita, which stops it and removes the file
-// itself). While it runs, a write to a dead ffmpeg fails with EPIPE instead
-// of killing pita. Its stderr is captured (CapturedStderr) and passed on to
-// pita's when it ends.
-class FfmpegProcess {
- public:
-  FfmpegProcess(std::vector<std::string> args, const fs::path& out) {
-    int pipe_fds[2];
-    if (::pipe2(pipe_fds, O_CLOEXEC) != 0) output_failed(out, std::strerror(errno));
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
-    stderr_.redirect(actions);
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attributes, 0);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const int spawned = ::posix_spawn(&child_, args.front().c_str(), &actions, &attributes, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attributes);
-    ::close(pipe_fds[0]);
-    if (spawned != 0) {
-      ::close(pipe_fds[1]);
-      throw AnimationError(fmt::format("-o {}: cannot run {}: {}", out.string(), args.front(), std::strerror(spawned)));
-    }
-    struct sigaction ignore {};
-    ignore.sa_handler = SIG_IGN;
-    ::sigaction(SIGPIPE, &ignore, &previous_);
-    pipe_ = pipe_fds[1];
-  }
-  FfmpegProcess(const FfmpegProcess&) = delete;
-  FfmpegProcess& operator=(const FfmpegProcess&) = delete;
-  ~FfmpegProcess() {
-    if (child_ > 0) stop(true);
-  }
-
-  // Writes all of `bytes`; false when ffmpeg stopped reading. Throws
-  // Interrupted when a signal is pending.
-  bool write(const std::string& bytes) {
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = ::write(pipe_, bytes.data() + done, bytes.size() - done);
-      if (n < 0 && errno == EINTR) {
-        if (const int sig = render::pending_interrupt()) throw Interrupted{sig};
-        continue;
-      }
-      if (n <= 0) return false;
-      done += static_cast<std::size_t>(n);
-    }
-    return true;
-  }
-
-  // Closes the pipe (ffmpeg finishes the file), or kills ffmpeg; waits for it.
-  // Returns its wait status.
-  int stop(bool kill_it) {
-    if (pipe_ >= 0) ::close(pipe_);
-    pipe_ = -1;
-    if (kill_it) ::kill(child_, SIGKILL);
-    int status = 0;
-    while (::waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-    }
-    child_ = -1;
-    ::sigaction(SIGPIPE, &previous_, nullptr);
-    errors_ = stderr_.text();
-    if (!errors_.empty()) std::fputs(errors_.c_str(), stderr);  // what ffmpeg said, as it said it
-    return status;
-  }
-
-  // What ffmpeg wrote to its stderr (at -loglevel error: only errors).
-  const std::string& errors() const { return errors_; }
-
- private:
-  CapturedStderr stderr_;
-  std::string errors_;
-  pid_t child_ = -1;
-  int pipe_ = -1;
-  struct sigaction previous_ {};
-};
-
-fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                     const std::vector<render::PanelPlacement>& placements) {
-  const std::string& ffmpeg = request.ffmpeg;
-  if (ffmpeg.empty()) {
-    throw AnimationError(fmt::format("-o {}: writing video needs ffmpeg, which is not installed (install the Debian "
-                                     "package: apt-get install ffmpeg), or write an animated .svg or a directory "
-                                     "of frames instead",
-                                     request.out.string()));
-  }
-  const int width = static_cast<int>(std::round(scene.canvas.width * request.scale));
-  const int height = static_cast<int>(std::round(scene.canvas.height * request.scale));
-  render::check_pixel_budget(scene, request.scale, request.budget);
-  TemporaryFile temporary(request.out);
-  FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == OutputKind::webm,
-                                         temporary.path()),
-                        request.out);
-  Progress progress("video", timeline.frames, request.progress);
-  try {
-    run_frames(
-        timeline.frames, request.threads,
-        [&](int k) {
-          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements);
-          return raw_frame(scene, figure, width, height, request.scale);
-        },
-        [&](int k, std::string&& bytes) {
-          if (!process.write(bytes)) {
-            throw render::OutputError(
-                fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)", request.out.string()));
-          }
-          progress.update(k + 1);
-        });
-  } catch (const Interrupted& interrupted) {
-    process.stop(true);
-    ::unlink(temporary.path().c_str());
-    render::exit_interrupted(interrupted.signal);
-  } catch (...) {
-    process.stop(true);
-    throw;
-  }
-  const int status = process.stop(false);
-  if (const int sig = render::pending_interrupt()) {
-    ::unlink(temporary.path().c_str());
-    render::exit_interrupted(sig);
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    output_failed(request.out, fmt::format("ffmpeg failed ({})", WIFEXITED(status)
-                                                                      ? fmt::format("exit status {}", WEXITSTATUS(status))
-                                                                      : fmt::format("signal {}", WTERMSIG(status))));
-  }
-  // Exit 0 is not enough: an error while finishing the file (its trailer)
-  // is only said on stderr.
-  if (!process.errors().empty()) {
-    output_failed(request.out, fmt::format("ffmpeg reported an error: {}", last_line(process.errors())));
-  }
-  verify_video(ffmpeg, temporary.path(), request.out);
-  temporary.commit();
-  return request.out;
-}
 
 }  // namespace
 
@@ -542,9 +233,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   render::check_budget(scene, render::estimate_cost(scene), request.budget);
   render::check_images(scene);
   const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
+  // The motions, built once for every frame ("pattern" changes the scene per frame).
+  std::optional<motion::Stage> stage;
+  if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
+  const motion::Stage* shared = stage ? &*stage : nullptr;
   // The first frame before any output exists: a scene that cannot be drawn
   // fails here, having written nothing.
-  frame_figure(scene, timeline, timeline.time(0), placements);
+  frame_figure(scene, timeline, timeline.time(0), placements, shared);
   const render::DeferredInterrupts deferred;
   switch (request.kind) {
     case OutputKind::svg: {
@@ -557,9 +252,9 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
       render::write_file_atomically(request.out, svg);
       return {request.out};
     }
-    case OutputKind::directory: return {write_directory(scene, timeline, request, placements)};
+    case OutputKind::directory: return {write_directory(scene, timeline, request, shared, placements)};
     case OutputKind::mp4:
-    case OutputKind::webm: return {write_video(scene, timeline, request, placements)};
+    case OutputKind::webm: return {write_video(scene, timeline, request, shared, placements)};
   }
   return {};
 }

@@ -8,6 +8,8 @@
 // and an older OUT as it was.
 #pragma once
 
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -56,5 +58,16 @@ std::vector<std::filesystem::path> write_animation(const scene::Scene& scene, co
 // The frame files' names: frame-0001.png, with at least 4 digits (more when
 // the count needs them), numbered from 1.
 std::string frame_file_name(int k, int count, render::Format format);
+
+namespace detail {  // shared by the writers of output.cpp and video.cpp
+
+// Throws render::OutputError "PATH: cannot write: REASON".
+[[noreturn]] void output_failed(const std::filesystem::path& path, const std::string& reason);
+
+// The ordinary permissions of a new file or directory (0666 or 0777 less the
+// umask): mkstemp creates 0600 and mkdtemp 0700, which the rename would keep.
+mode_t ordinary_mode(mode_t full);
+
+}  // namespace detail
 
 }  // namespace pita::animate

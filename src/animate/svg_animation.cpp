@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -174,7 +175,11 @@ render::Figure static_part(const render::Figure& frame, bool after) {
 
 std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, const std::function<void(int)>& progress) {
   const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
-  const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements);
+  // The motions, built once for every frame ("pattern" changes the scene per frame).
+  std::optional<motion::Stage> stage;
+  if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
+  const motion::Stage* shared = stage ? &*stage : nullptr;
+  const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, shared);
   const int width = scene.canvas.width, height = scene.canvas.height;
 
   std::string svg = fmt::format(
@@ -215,7 +220,7 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
   const double total = timeline.seconds();
   const int n = timeline.frames;
   for (int k = 0; k < n; ++k) {
-    const render::Figure frame = k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements);
+    const render::Figure frame = k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements, shared);
     // Visible from k/N to (k+1)/N of the animation's duration (discrete).
     std::string values, times;
     if (k == 0) {

@@ -53,7 +53,7 @@ Failure classify(const std::string& input) {
     // (or a ulimit) has less, or --budget was raised.
     return {ExitCode::bad_input,
             input + ": out of memory (the input needs more memory than is available: lower its "
-                    "sizes, the --budget, or raise the memory limit)"};
+                    "sizes (or the --budget of pita render and pita animate), or raise the memory limit)"};
   } catch (const std::exception& e) {
     return {ExitCode::internal_error,
             input + ": internal error, a bug in pita (please report it with this input): " +

@@ -124,6 +124,10 @@ std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit)
   command->add_option("--jobs", options->jobs, "Threads (default: PITA_THREADS, else the number of cores)")
       ->check(CLI::Range(1, 1024))
       ->type_name("J");
+  command->add_option("--budget", options->budget, "Allow F times the default work (matrices checked)")
+      ->check(CLI::Range(1e-3, 1e3))
+      ->type_name("F")
+      ->capture_default_str();
   command->add_flag("-q,--quiet", options->quiet, "No progress bar");
   return options;
 }
@@ -158,6 +162,19 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
   search.p_step = options.step;
   search.jobs = static_cast<unsigned>(options.jobs > 0 ? options.jobs : threads_from_environment());
   const std::size_t axes = analysis::icosphere_axes(search.subdivisions).size();
+  // The work bound, refused before it starts: within the documented ranges
+  // --subdivisions 4 --angles 1001 would run for many minutes.
+  const double work = static_cast<double>(options.curve ? analysis::existence_curve_work(*options.curve, search)
+                                                        : analysis::existence_work(search, thetas.size(),
+                                                                                   options.p.has_value()));
+  if (work > analysis::kExistenceWorkBudget * options.budget) {
+    std::cerr << fmt::format("pita: audit sam3d-existence: this run would check up to {:.3g} matrices ({} axes, {} "
+                             "angles, 3^9 perturbations, per test), above the budget of {:.3g}: lower "
+                             "--subdivisions, --angles or --curve, or raise the budget with --budget F\n",
+                             work, axes, options.curve ? 1 : search.angles,
+                             analysis::kExistenceWorkBudget * options.budget);
+    return ExitCode::bad_input;
+  }
   const auto start = std::chrono::steady_clock::now();
   std::string text = fmt::format(
       "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), {} angles over "

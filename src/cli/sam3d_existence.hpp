@@ -21,6 +21,7 @@ struct Sam3dExistenceCliOptions {
   double step = 0.01;
   std::optional<int> curve;  // the figure's curve at k pi / curve instead
   int jobs = 0;
+  double budget = 1.0;  // times analysis::kExistenceWorkBudget
   bool quiet = false;
 };
 

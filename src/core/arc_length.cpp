@@ -15,8 +15,6 @@ namespace pita {
 
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // 8-point Gauss-Legendre nodes on [-1, 1], ascending, and their weights.
 constexpr std::array<double, 8> kNodes{-0.96028985649753623168, -0.79666647741362673959,
                                        -0.52553240991632898582, -0.18343464249564980494,
@@ -143,7 +141,7 @@ void ArcLengthTable::build(const AnyPath& path) {
   noise_ = limits::kArcLengthNoise * std::max(size, magnitude(origin));
   for (const Initial& cell : initial) {
     refine(path, cell.a, cell.b, cell.speeds, cell.length,
-           limits::kArcLengthTolerance * estimate * (cell.b - cell.a) / (to - from), 0, kInfinity, kInfinity);
+           limits::kArcLengthTolerance * estimate * (cell.b - cell.a) / (to - from), 0);
   }
   double running = 0.0;
   for (Cell& cell : cells_) {
@@ -155,8 +153,7 @@ void ArcLengthTable::build(const AnyPath& path) {
 
 template <class AnyPath>
 void ArcLengthTable::refine(const AnyPath& path, double a, double b, const double (&speeds)[8],
-                            double length, double tolerance, int depth, double grandparent_error,
-                            double parent_error) {
+                            double length, double tolerance, int depth) {
   Cell whole;
   whole.from = a;
   whole.to = b;
@@ -171,20 +168,18 @@ void ArcLengthTable::refine(const AnyPath& path, double a, double b, const doubl
   double left[8], right[8];
   const double left_length = sample_cell(path, a, middle, from_, to_, left);
   const double right_length = sample_cell(path, middle, b, from_, to_, right);
-  const double allowed = std::max(tolerance, noise_);  // never below the rounding (limits.hpp)
-  const double error = std::max(std::abs(left_length + right_length - length),
-                                std::abs(partial(whole, middle) - left_length));
-  // Converged; or rounding, not the quadrature, is what disagrees: halving
-  // twice did not even halve the disagreement, where the 8-point rule's error
-  // falls by 2^16 per halving once the speed is resolved. Refining further
-  // would only multiply the work (per-span tables of long tracks).
-  const bool stalled = depth >= 2 && error > 0.5 * grandparent_error;
-  if (error <= allowed || stalled) {
+  // Never below the rounding of the finite differences (limits.hpp): a short
+  // span far from the origin could not meet a tolerance relative to its own
+  // length, and would refine to the maximum depth everywhere.
+  const double allowed = std::max(tolerance, noise_);
+  const bool halves_agree = std::abs(left_length + right_length - length) <= allowed;
+  const bool interpolant_agrees = std::abs(partial(whole, middle) - left_length) <= allowed;
+  if (halves_agree && interpolant_agrees) {
     keep();
     return;
   }
-  refine(path, a, middle, left, left_length, 0.5 * tolerance, depth + 1, parent_error, error);
-  refine(path, middle, b, right, right_length, 0.5 * tolerance, depth + 1, parent_error, error);
+  refine(path, a, middle, left, left_length, 0.5 * tolerance, depth + 1);
+  refine(path, middle, b, right, right_length, 0.5 * tolerance, depth + 1);
 }
 
 double ArcLengthTable::speed_in(const Cell& cell, double tau) const {

@@ -72,7 +72,7 @@ class ArcLengthTable {
   void build(const AnyPath& path);
   template <class AnyPath>
   void refine(const AnyPath& path, double a, double b, const double (&speeds)[8], double length,
-              double tolerance, int depth, double grandparent_error, double parent_error);
+              double tolerance, int depth);
 
   double from_ = 0.0, to_ = 1.0, total_ = 0.0;
   double noise_ = 0.0;  // the rounding floor of the tolerance (limits::kArcLengthNoise)

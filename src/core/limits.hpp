@@ -216,11 +216,14 @@ inline constexpr double kArcLengthTolerance = 1e-11;
 inline constexpr int kArcLengthInitialCells = 16;
 inline constexpr int kArcLengthMaxDepth = 8;
 // ... nor below this fraction of the size of the points (the largest |P| and
-// |P - P(from)|): the rounding of the finite differences makes each
-// interval's length uncertain by about 1e-14 |P| whatever its width, so a
-// short span far from the origin (a span of a long track paced per span)
-// could never meet a tolerance relative to its own small length, and would
-// refine to kArcLengthMaxDepth everywhere (docs/paper-notes.md N20).
+// |P - P(from)|): the rounding of the motion's evaluation, through the finite
+// differences, makes each interval's length uncertain by about 1e-13 |P|
+// whatever its width, so a short span far from the origin (a span of a long
+// track paced per span) could never meet a tolerance relative to its own
+// small length, and would refine to kArcLengthMaxDepth everywhere
+// (docs/paper-notes.md N20). 1e-13 was not enough (a 100-keyframe track still
+// took 11 s); a rule that stopped where the disagreement stopped shrinking
+// was, but cost the timing oracle its 1e-8 near bursts of speed.
 inline constexpr double kArcLengthNoise = 1e-12;
 // At most this many intervals in all (a path whose speed is noisy at the
 // tolerance, e.g. far from the origin, stops refining there).

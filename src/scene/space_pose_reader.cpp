@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <fmt/format.h>
 
 #include "scene/pose_reader.hpp"
@@ -102,9 +103,19 @@ Affine3 read_matrix3(const JsonReader& reader, const Json& value, const std::str
   const double det = A.L.determinant();
   const double norm = A.L.norm();
   if (!(std::abs(det) > 1e-16 * norm * norm * norm) || !std::isfinite(det)) {
-    reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}: the "
-                                     "pose is singular, it flattens space onto a plane, a line or a point",
-                                     number_text(det)));
+    // Say which: singular (a singular value is zero to rounding), or only
+    // ill-conditioned (a strong shear of determinant 1 fails the test too).
+    const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(A.L).singularValues();
+    if (!std::isfinite(det) || !(sigma(2) > 1e-15 * sigma(0))) {
+      reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}: the "
+                                       "pose is singular, it flattens space onto a plane, a line or a point",
+                                       number_text(det)));
+    }
+    reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}, below "
+                                     "1e-16 of |L|_F^3 = {:.3g} (the test is relative to the matrix's norm): it is "
+                                     "not singular, but too ill-conditioned to invert reliably (its singular values "
+                                     "range from {:.3g} to {:.3g}: a shear or stretch this strong)",
+                                     number_text(det), norm * norm * norm, sigma(2), sigma(0)));
   }
   return A;
 }

@@ -13,6 +13,7 @@
 #include <cairo.h>
 #include <fmt/format.h>
 
+#include "render/budget.hpp"
 #include "render/figure.hpp"
 #include "render/cairo_handles.hpp"
 #include "render/output_file.hpp"
@@ -396,6 +397,22 @@ std::string write_contact_sheet(const SheetInput& input) {
   std::vector<const Row*> by_index(n, nullptr);
   for (const auto& [index, r] : rows) {
     if (r.index >= 0 && static_cast<std::size_t>(r.index) < n) by_index[static_cast<std::size_t>(r.index)] = &r;
+  }
+  // The whole sheet's drawing, estimated before any is drawn.
+  double units = 0.0;
+  for (const Row* row : by_index) {
+    if (row == nullptr || !row->ok()) continue;
+    try {
+      const scene::Scene scene = scene::parse_scene(
+          read_text(input.dir / variant_file(input.name, row->index, input.variants, "scene.json")), input.base_path);
+      units += render::estimate_cost(scene).units;
+    } catch (const std::exception&) {  // drawn as "not drawn"
+    }
+  }
+  if (units > kMaxContactUnits) {
+    return fmt::format("contact.svg and contact.png not drawn: their {} figures would draw about {:.3g} points, more "
+                       "than the contact sheet's budget of {:.3g} (index.html shows every figure)",
+                       rows.size(), units, kMaxContactUnits);
   }
   const ContactGrid grid = contact_grid(input, by_index);
   SheetPainter painter(grid);

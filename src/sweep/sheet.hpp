@@ -16,6 +16,11 @@ namespace pita::sweep {
 // A contact picture holds at most this many variants; a larger sweep gets
 // the HTML index only (said in the summary).
 inline constexpr std::int64_t kMaxContactCells = 256;
+// ... and at most this much drawing in all (render::estimate_cost units,
+// eight figures at the render budget): 32 heavy variants drew 1.6 GB of SVG
+// in memory. Checked before anything is drawn; above it the sheet is left
+// out (said in the summary).
+inline constexpr double kMaxContactUnits = 8 * 2e6;
 // Columns of a two-parameter grid: a wider second axis is laid out in rows.
 inline constexpr std::size_t kMaxContactColumns = 40;
 

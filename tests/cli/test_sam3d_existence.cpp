@@ -67,5 +67,19 @@ TEST(Sam3dExistenceCli, BadUsageExitsTwo) {
   EXPECT_EQ(run_audit({"--angles", "0"}).exit_code, 2);
 }
 
+// Issue 37: within the documented ranges a run can take many minutes; its
+// work is estimated and refused up front, naming --budget (which lets it run).
+TEST(Sam3dExistenceCli, AnEstimateAboveTheBudgetIsRefusedAtOnce) {
+  const RunResult result = run_audit({"--subdivisions", "4", "--angles", "1001"});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("would check up to"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("--budget F"), std::string::npos) << result.err;
+  EXPECT_EQ(result.out, "");
+  // The same flag lowers it: the default run is refused under a budget of 1e-3.
+  const RunResult small = run_audit({"--budget", "0.001"});
+  EXPECT_EQ(small.exit_code, 2) << small.err;
+  EXPECT_NE(small.err.find("above the budget of 1e+08"), std::string::npos) << small.err;
+}
+
 }  // namespace
 }  // namespace pita::test

@@ -1,0 +1,26 @@
+// Video output of `pita animate` (OUT.mp4, OUT.webm): raw frames piped into
+// Debian's ffmpeg, drawn on every core and written in order, into a hidden
+// temporary that is verified (ffmpeg's stderr, the file's size, ffprobe when
+// it sits beside ffmpeg) before it is renamed into place
+// (docs/reference/animate.md "pita animate").
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "animate/output.hpp"
+#include "animate/timeline.hpp"
+#include "motion/stage.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::animate {
+
+// Writes request.out. `stage`: the scene's motions for a "motion" timeline
+// (frame_figure), else nullptr. Throws AnimationError (no ffmpeg, exit 2),
+// RenderError, OutputError (exit 3: ffmpeg failed or said an error, the file
+// is empty or unreadable); on a signal removes its temporary and exits.
+std::filesystem::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                                  const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements);
+
+}  // namespace pita::animate
