@@ -93,9 +93,10 @@ std::uint64_t existence_work(const Sam3dExistenceOptions& options, std::size_t t
 // The same for the curve of `steps` steps: each angle alone, a gallop and a
 // bisection from the previous angle's bound (counted as its worst case).
 std::uint64_t existence_curve_work(int steps, const Sam3dExistenceOptions& options);
-// The work `pita audit sam3d-existence` does without --budget: about 70
-// times its default run's bound (3 thetas, 81 axes, 17 angles), a few minutes
-// on 2 cores at worst.
+// The work `pita audit sam3d-existence` does without --budget: about 150
+// times its default run's bound (3 thetas, 81 axes, 17 angles: 6.5e8), some
+// seconds on 2 cores (most tests stop at their first configuration without a
+// SAM, so runs are far below their bound).
 inline constexpr double kExistenceWorkBudget = 1e11;
 
 // The paper's stated bounds (Sec. 5.2): theta < 2 pi / 3: p < 0.29; theta <

@@ -171,12 +171,19 @@ int run_quietly(std::vector<std::string> args, std::string& err) {
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   captured.redirect(actions);
+  // In its own process group, as ffmpeg: a terminal's Ctrl-C reaches pita,
+  // which decides.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t child = -1;
-  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, nullptr, argv.data(), environ);
+  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, &attributes, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (spawned != 0) return -1;
   int status = 0;
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
@@ -186,7 +193,9 @@ int run_quietly(std::vector<std::string> args, std::string& err) {
 }
 
 // The finished video, checked before it is committed: not empty, and when
-// ffprobe is installed beside ffmpeg, readable to its end by it.
+// ffprobe is installed beside ffmpeg, its container readable by it (headers
+// and index; with -xerror and the stderr check, what ffmpeg failed to write
+// is caught before this).
 void verify_video(const std::string& ffmpeg, const std::string& path, const fs::path& out) {
   struct stat status {};
   if (::stat(path.c_str(), &status) != 0 || status.st_size == 0) {
@@ -344,6 +353,10 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
     output_failed(request.out, fmt::format("ffmpeg reported an error: {}", last_line(process.errors())));
   }
   verify_video(ffmpeg, temporary.path(), request.out);
+  if (const int sig = render::pending_interrupt()) {  // a signal during the check
+    ::unlink(temporary.path().c_str());
+    render::exit_interrupted(sig);
+  }
   temporary.commit();
   return request.out;
 }

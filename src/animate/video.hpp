@@ -2,7 +2,7 @@
 // Debian's ffmpeg, drawn on every core and written in order, into a hidden
 // temporary that is verified (ffmpeg's stderr, the file's size, ffprobe when
 // it sits beside ffmpeg) before it is renamed into place
-// (docs/reference/animate.md "pita animate").
+// (docs/reference/animate.md "Animation").
 #pragma once
 
 #include <filesystem>

@@ -7,6 +7,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string_view>
 #include <system_error>
@@ -47,16 +48,26 @@ bool is_sweep_folder(const fs::path& dir) {
   }
 }
 
-// Entries other than the marker and its temporaries (a concurrent shard
-// writing it); the first one found, to name in the refusal.
+// pita's own hidden files in a sweep's folder: locks and journals of
+// manifests (.manifest.csv.lock, .manifest.0-of-2.csv.journal).
+bool is_own_hidden_file(const std::string& name) {
+  return name.starts_with(".manifest.") && (name.ends_with(".lock") || name.ends_with(".journal"));
+}
+
+// The first entry that is neither the marker, nor its temporary, nor a
+// manifest's lock or journal, to name in the refusal; "" when there is none
+// or when the marker itself is listed (a concurrent shard wrote it after
+// is_sweep_folder looked: it comes first, before any of that shard's files).
 std::string first_foreign_entry(const fs::path& dir) {
   std::error_code error;
+  std::string foreign;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir, error)) {
     const std::string name = entry.path().filename().string();
-    if (name == kFolderMarker || temporary_target(name) == kFolderMarker) continue;
-    return name;
+    if (name == kFolderMarker) return {};
+    if (temporary_target(name) == kFolderMarker || is_own_hidden_file(name)) continue;
+    if (foreign.empty()) foreign = name;
   }
-  return {};
+  return foreign;
 }
 
 }  // namespace
@@ -65,7 +76,7 @@ void claim_folder(const fs::path& dir, const std::string& option, const fs::path
   std::error_code error;
   const fs::file_status status = fs::symlink_status(dir, error);
   if (fs::exists(status) && !fs::is_directory(fs::status(dir, error))) {
-    throw render::OutputError(fmt::format("{}: cannot write: it exists and is not a folder", option));
+    throw SweepUsageError(fmt::format("{}: cannot create the output folder (a file of that name exists)", option));
   }
   fs::create_directories(dir, error);
   if (error || !fs::is_directory(dir)) {
@@ -95,6 +106,15 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
     throw render::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
   }
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (errno == ENOSYS || errno == EOPNOTSUPP || errno == ENOLCK) {
+      // A file system without locks (Lustre mounted noflock, some NFS): run
+      // unguarded, as before locks existed, and say so.
+      std::fprintf(stderr, "pita: %s: cannot lock (%s): run one sweep at a time into this folder\n",
+                   path.c_str(), std::strerror(errno));
+      ::close(fd_);
+      fd_ = -1;
+      return;
+    }
     if (errno != EWOULDBLOCK) {
       const int saved = errno;
       ::close(fd_);

@@ -91,6 +91,30 @@ Json list_item(std::string_view item) {
   return Json(std::string(item));
 }
 
+// `text` with its control characters as \xNN, for a message.
+std::string printable_item(std::string_view text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    out += u < 0x20 || u == 0x7f ? fmt::format("\\x{:02x}", static_cast<unsigned>(u)) : std::string(1, c);
+  }
+  return out;
+}
+
+// A NUL or a terminal control (ESC, BEL) would go into manifest.csv,
+// index.html and messages: swept text is printable (tabs and line breaks
+// allowed).
+void check_printable(const std::string& text, std::string_view item) {
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) {
+      throw SweepUsageError(fmt::format("--vary: {} contains the control character U+{:04X}: a swept string must be "
+                                        "printable text",
+                                        printable_item(item), static_cast<unsigned>(u)));
+    }
+  }
+}
+
 }  // namespace
 
 Axis parse_axis(std::string_view argument) {
@@ -152,20 +176,11 @@ Axis parse_axis(std::string_view argument) {
       } catch (const std::exception&) {
         throw SweepUsageError(fmt::format("--vary {}: {} is not a JSON string", argument, item));
       }
-      // A NUL or a terminal control (ESC, BEL) would go into manifest.csv,
-      // index.html and messages: swept text is printable (tabs and line
-      // breaks allowed).
-      for (const char c : axis.items.back().get_ref<const std::string&>()) {
-        const auto u = static_cast<unsigned char>(c);
-        if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) {
-          throw SweepUsageError(fmt::format("--vary {}: {} contains the control character U+{:04X}: a swept string "
-                                            "must be printable text",
-                                            argument, item, static_cast<unsigned>(u)));
-        }
-      }
+      check_printable(axis.items.back().get_ref<const std::string&>(), item);
       continue;
     }
     axis.items.push_back(list_item(item));
+    if (axis.items.back().is_string()) check_printable(axis.items.back().get_ref<const std::string&>(), item);
   }
   return axis;
 }

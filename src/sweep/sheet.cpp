@@ -400,8 +400,10 @@ std::string write_contact_sheet(const SheetInput& input) {
   }
   // The whole sheet's drawing, estimated before any is drawn.
   double units = 0.0;
+  std::size_t figures = 0;
   for (const Row* row : by_index) {
     if (row == nullptr || !row->ok()) continue;
+    ++figures;
     try {
       const scene::Scene scene = scene::parse_scene(
           read_text(input.dir / variant_file(input.name, row->index, input.variants, "scene.json")), input.base_path);
@@ -412,7 +414,7 @@ std::string write_contact_sheet(const SheetInput& input) {
   if (units > kMaxContactUnits) {
     return fmt::format("contact.svg and contact.png not drawn: their {} figures would draw about {:.3g} points, more "
                        "than the contact sheet's budget of {:.3g} (index.html shows every figure)",
-                       rows.size(), units, kMaxContactUnits);
+                       figures, units, kMaxContactUnits);
   }
   const ContactGrid grid = contact_grid(input, by_index);
   SheetPainter painter(grid);

@@ -230,8 +230,17 @@ class SweepRun {
     for (auto* reader : {old ? &*old : nullptr, journal ? &*journal : nullptr}) {
       if (reader == nullptr) continue;
       Row row;
+      std::int64_t last = -1;
       try {
         while (reader->next(row)) {
+          // Rows in increasing order, each once, as every run writes them:
+          // a manifest edited out of order is refused here, before any work.
+          if (row.index <= last) {
+            throw std::runtime_error(fmt::format("{}: variant {} is out of order or repeated (a manifest lists each "
+                                                 "variant once, in increasing order)",
+                                                 reader->where(), row.index));
+          }
+          last = row.index;
           const auto j = static_cast<std::size_t>(position(row.index));
           if (valid(row) && kept_[j] == 0) {
             kept_[j] = 1;

@@ -226,7 +226,7 @@ TEST_F(Check, GoldensThatAreLinksFifosOrDevicesAreRefused) {
       {"symbolic link", [&] { fs::create_symlink(dir.path() / "secret.txt", svg); }},
       {"symbolic link", [&] { fs::create_symlink("/dev/stdin", svg); }},
       {"FIFO", [&] { ASSERT_EQ(::mkfifo(svg.c_str(), 0600), 0); }},
-      {"device", [&] { fs::create_symlink("/dev/zero", svg); }},
+      {"symbolic link to a device", [&] { fs::create_symlink("/dev/zero", svg); }},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

@@ -449,6 +449,37 @@ TEST(Sweep, ManyJobsWriteEveryVariant) {
   EXPECT_EQ(lines_of(read_file(dir.path() / "out/manifest.csv")).size(), 301u);
 }
 
+// Issue 37: a variant's frames obey pita eval's work limit (a failed row at
+// once, naming /chain), where they used to run for minutes.
+TEST(Sweep, FramesOfAVariantObeyEvalsWorkLimit) {
+  ScratchDir dir;
+  std::string keyframes;
+  for (int i = 0; i < 64; ++i) {
+    keyframes += fmt::format("{}{{\"t\": {}, \"p\": [{}, {}], \"m\": 1, \"w\": 0.1}}", i == 0 ? "" : ", ", i, i,
+                             (i % 2) * 0.5);
+  }
+  dir.write("n64.json", R"({"method": "P6", "chain": "neville", "keyframes": [)" + keyframes + "]}");
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult r = run_pita({"sweep", "n64.json", "--vary", "/samples=1000000", "--format", "csv", "-o", "out", "-q"},
+                               dir.path());
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));  // generous: refused up front
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("/chain: 1000000 frames of the"), std::string::npos) << r.err;
+  EXPECT_NE(read_file(dir.path() / "out/manifest.csv").find("above the limit"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir.path() / "out/n64-0.csv"));
+}
+
+// A swept bare string with a control character is refused (exit 2).
+TEST(Sweep, ControlCharactersInSweptStringsAreRefused) {
+  ScratchDir dir;
+  const RunResult r =
+      run_pita({"sweep", kFig13, "--vary", "/title=plain,\x1b[31mred", "-o", "out", "-q"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("\\x1b[31mred contains the control character U+001B"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
 // --merge takes the parts' rows in any order, refuses a variant twice in a
 // part or two different rows of one variant, naming part and line.
 TEST(Sweep, MergeSortsAndRefusesDuplicatesAndConflicts) {
