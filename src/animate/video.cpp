@@ -162,6 +162,23 @@ std::string last_line(std::string text) {
   return at == std::string::npos ? text : text.substr(at + 1);
 }
 
+// Starts `args` with `actions` (destroyed here) in a process group of its
+// own, as ffmpeg and ffprobe run: a terminal's Ctrl-C reaches pita, which
+// decides. posix_spawn's result (0 when started).
+int spawn_in_own_group(std::vector<std::string>& args, posix_spawn_file_actions_t& actions, pid_t& child) {
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  return spawned;
+}
+
 // Runs `args` (stdin and stdout from /dev/null, stderr captured); its wait
 // status, or -1 when it cannot be started.
 int run_quietly(std::vector<std::string> args, std::string& err) {
@@ -171,20 +188,8 @@ int run_quietly(std::vector<std::string> args, std::string& err) {
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   captured.redirect(actions);
-  // In its own process group, as ffmpeg: a terminal's Ctrl-C reaches pita,
-  // which decides.
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
   pid_t child = -1;
-  const int spawned = ::posix_spawn(&child, args.front().c_str(), &actions, &attributes, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
-  if (spawned != 0) return -1;
+  if (spawn_in_own_group(args, actions, child) != 0) return -1;
   int status = 0;
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
@@ -226,16 +231,7 @@ class FfmpegProcess {
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, pipe_fds[0], STDIN_FILENO);
     stderr_.redirect(actions);
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attributes, 0);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const int spawned = ::posix_spawn(&child_, args.front().c_str(), &actions, &attributes, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attributes);
+    const int spawned = spawn_in_own_group(args, actions, child_);
     ::close(pipe_fds[0]);
     if (spawned != 0) {
       ::close(pipe_fds[1]);
