@@ -2,7 +2,8 @@
 """Writes the seed corpus of every fuzz target into OUT_DIR/<target>/ (scripts/fuzz.sh;
 nothing of it is kept in git): the scenes of scenes/ and tests/data/bad/ for the scene
 targets, trimmed copies of the golden data files golden/*/*.data.json (a few panels,
-items and points each: the structure without the bulk), and affinities of every EAR case.
+items and points each: the structure without the bulk), affinities of every EAR case, and
+--vary arguments with manifest parts for fuzz_sweep.
 The regression inputs of tests/data/fuzz/<target>/ are a corpus of their own.
 
     fuzz/make_seeds.py OUT_DIR
@@ -69,6 +70,33 @@ def affine_seeds(out):
     (folder / "raw.bin").write_bytes(bytes([0, 0]) + b"".join(struct.pack("<d", v) for v in raw))
 
 
+def sweep_seeds(out):
+    """fuzz_sweep: a --vary argument on the first line, then a manifest part (fuzz_sweep.cpp)."""
+    folder = out / "fuzz_sweep"
+    folder.mkdir(parents=True, exist_ok=True)
+    metrics = ("path_length_p,path_length_q,turning_p,turning_q,winding_min,winding_max,discrepancy_max,"
+               "discrepancy_max_previous,discrepancy_max_average,discrepancy_t_of_max,most_sensitive,gain,"
+               "pop_jump,pops,ara,area_monotone")
+    header = "index,/keyframes/1/t,status,outputs,hash," + metrics
+    blank = "," * metrics.count(",")
+    axes = ["/keyframes/1/t=0.1:0.9:5", "/keyframes/1/t=log:1e-3:1e3:7", "/method=[\"ribbon\",\"neville\"]",
+            "/keyframes/0/w=0,1,2", "/title=\"a,b\"", "/keyframes/1/t=0:1:0", "bad"]
+    rows = {
+        "sorted": ["0,0.1,ok,a.svg,h0", "1,0.3,ok,b.svg,h1", "2,0.5,failed,,"],
+        "reordered": ["2,0.5,ok,,h2", "0,0.1,ok,,h0", "1,0.3,ok,,h1"],
+        "duplicate": ["1,0.3,ok,,h1", "1,0.3,ok,,h1"],
+        "conflict": ["1,0.3,ok,,h1", "1,0.4,ok,,h9"],
+        "quoted": ['0,0.1,ok,"x,y.svg",h0', '1,0.3,"o""k",,h1'],
+        "no-header": ["0,0.1,ok,,h0"],
+    }
+    for i, (name, lines) in enumerate(rows.items()):
+        lines = [line + "," + blank for line in lines]
+        body = lines if name == "no-header" else [header] + lines
+        text = axes[i % len(axes)] + "\n" + "\n".join(body) + "\n"
+        (folder / f"{name}.txt").write_text(text)
+    (folder / "axis-only.txt").write_text(axes[-2])
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -78,6 +106,7 @@ def main():
     scene_seeds(out)
     golden_seeds(out)
     affine_seeds(out)
+    sweep_seeds(out)
 
 
 if __name__ == "__main__":

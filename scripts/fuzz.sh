@@ -53,7 +53,9 @@ summary=()
 echo "pita: fuzzing ${#targets[@]} targets for ${per} s each (${total} s in all); logs in $work/<target>/log"
 for target in "${targets[@]}"; do
   dir="$work/$target"
-  mkdir -p "$dir/corpus" "$dir/artifacts"
+  # libFuzzer ends at once on a corpus folder that does not exist: a target
+  # without generated seeds still starts, from its regression inputs.
+  mkdir -p "$dir/corpus" "$dir/artifacts" "$work/seeds/$target"
   rm -f "$dir"/artifacts/*
   log="$dir/log"
   set_options "$target"
