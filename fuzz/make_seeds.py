@@ -70,6 +70,18 @@ def affine_seeds(out):
     (folder / "raw.bin").write_bytes(bytes([0, 0]) + b"".join(struct.pack("<d", v) for v in raw))
 
 
+def animate_seeds(out):
+    """fuzz_animate: the options as JSON on the first line, then a scene (or a frames.json)."""
+    folder = out / "fuzz_animate"
+    folder.mkdir(parents=True, exist_ok=True)
+    options = ['{}', '{"frames": 9, "out": "a.svg"}', '{"fps": 24, "duration": 2, "out": "v.mp4", "scale": 0.5}',
+               '{"frames": 100000, "out": "frames/", "format": "svg"}', '{"budget": 3, "frames": 2}']
+    files = sorted(ROOT.glob("scenes/*.json"))
+    for i, f in enumerate(files):
+        (folder / f.name).write_text(options[i % len(options)] + "\n" + f.read_text())
+    (folder / "frames-json.txt").write_text('{}\n{"frames": 2, "frame_list": [{"frame": 1, "file": "frame-0001.png"}]}\n')
+
+
 def sweep_seeds(out):
     """fuzz_sweep: a --vary argument on the first line, then a manifest part (fuzz_sweep.cpp)."""
     folder = out / "fuzz_sweep"
@@ -107,6 +119,7 @@ def main():
     golden_seeds(out)
     affine_seeds(out)
     sweep_seeds(out)
+    animate_seeds(out)
 
 
 if __name__ == "__main__":

@@ -21,7 +21,7 @@ if ! [[ "$total" =~ ^[0-9]+$ ]] || [ $# -gt 1 ]; then
   exit 2
 fi
 
-targets=(fuzz_scene_reader fuzz_eval fuzz_render fuzz_golden_data fuzz_affine_power fuzz_sweep)
+targets=(fuzz_scene_reader fuzz_eval fuzz_render fuzz_golden_data fuzz_affine_power fuzz_sweep fuzz_animate)
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
@@ -45,6 +45,8 @@ set_options() {
       options+=(-max_len=64) ;;
     fuzz_sweep)
       options+=(-max_len=4096) ;;
+    fuzz_animate)
+      options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=8192) ;;
   esac
 }
 

@@ -22,6 +22,7 @@
 #include "animate/progress.hpp"
 #include "animate/svg_animation.hpp"
 #include "animate/video.hpp"
+#include "render/backdrop.hpp"
 #include "render/budget.hpp"
 #include "render/interrupt.hpp"
 #include "render/output_file.hpp"
@@ -56,14 +57,11 @@ std::string lower(std::string text) {
   return text;
 }
 
-
+}  // namespace
 
 // ------------------------------------------------------------ directory
 
-// A directory that pita's frame writer made: empty, or holding only
-// frame-NNNN.png/.svg files and a frames.json of ours (with "frame_list"). Only
-// such a directory is ever replaced.
-bool is_frame_directory(const fs::path& path) {
+bool detail::is_frame_directory(const fs::path& path) {
   std::error_code error;
   if (!fs::is_directory(fs::symlink_status(path, error))) return false;
   bool has_index = false;
@@ -84,6 +82,10 @@ bool is_frame_directory(const fs::path& path) {
   if (error) return false;
   return has_index || fs::is_empty(path, error);
 }
+
+namespace {
+
+using detail::is_frame_directory;
 
 void write_bytes(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
@@ -125,6 +127,13 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
     }
   } cleanup{temporary};
 
+  // PNG frames are painted over the layers every frame shares, painted once.
+  std::optional<render::FrameBackdrop> backdrop;
+  if (request.frame_format == render::Format::png) {
+    const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, stage);
+    const auto [width, height] = render::checked_png_size(scene, first, request.scale, request.budget);
+    backdrop.emplace(scene, first, width, height, request.scale);
+  }
   Progress progress("frames", timeline.frames, request.progress);
   Json records = Json::array();
   try {
@@ -132,7 +141,9 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
         timeline.frames, request.threads,
         [&](int k) {
           const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
-          return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
+          if (!backdrop) return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
+          render::checked_png_size(scene, figure, request.scale, request.budget);
+          return render::encode_png(scene, backdrop->paint(figure).get());
         },
         [&](int k, std::string&& bytes) {
           const std::string file = frame_file_name(k, timeline.frames, request.frame_format);
@@ -207,6 +218,14 @@ std::string frame_file_name(int k, int count, render::Format format) {
 void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
   const bool vector = request.kind == OutputKind::svg ||
                       (request.kind == OutputKind::directory && request.frame_format == render::Format::svg);
+  const double units = render::estimate_cost(scene).units * timeline.frames;
+  const double limit = kMaxAnimationUnits * request.budget;
+  if (units > limit) {
+    throw AnimationError(fmt::format("--frames: {} frames of a figure of about {:.3g} drawn points ({:.3g} in all) "
+                                     "exceed the animation's drawing budget of {:.3g}; use fewer frames or fewer "
+                                     "samples, or raise the budget with --budget F",
+                                     timeline.frames, units / timeline.frames, units, limit));
+  }
   if (vector) {
     if (timeline.frames > kMaxVectorFrames * request.budget) {
       throw AnimationError(fmt::format("--frames: {} frames of vector output exceed the limit of {:.0f} (the file "

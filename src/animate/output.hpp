@@ -25,9 +25,14 @@ enum class OutputKind { svg, directory, mp4, webm };
 // The total work of an animation, beyond one frame's budget (render/budget.hpp):
 // raster frames (PNG, video) at most kMaxPixelFrames pixels in all (about 4
 // minutes on 2 cores), vector frames (the animated SVG, SVG frames) at most
-// kMaxVectorFrames frames; --budget F multiplies both.
+// kMaxVectorFrames frames; and for every output the frames' drawing, frames x
+// the figure's estimated units (render/budget.hpp), at most kMaxAnimationUnits
+// (PNG or SVG frames of a 1000-keyframe track: about 6e6 units a second on
+// one core, so about 50 s on 2 cores; the animated SVG draws the layers that
+// do not move once and costs less). --budget F multiplies all three.
 inline constexpr double kMaxPixelFrames = 1e10;
 inline constexpr double kMaxVectorFrames = 5000;
+inline constexpr double kMaxAnimationUnits = 5e8;
 
 // Throws AnimationError naming --frames (or the scene's animation) when the
 // request exceeds the limits above.
@@ -67,6 +72,11 @@ namespace detail {  // shared by the writers of output.cpp and video.cpp
 // The ordinary permissions of a new file or directory (0666 or 0777 less the
 // umask): mkstemp creates 0600 and mkdtemp 0700, which the rename would keep.
 mode_t ordinary_mode(mode_t full);
+
+// A directory that pita's frame writer made: empty, or holding only
+// frame-NNNN.png/.svg files and a frames.json of ours (a JSON object with
+// "frame_list"). Only such a directory is ever replaced.
+bool is_frame_directory(const std::filesystem::path& path);
 
 }  // namespace detail
 

@@ -22,6 +22,7 @@
 #include "animate/frame.hpp"
 #include "animate/frame_runner.hpp"
 #include "animate/progress.hpp"
+#include "render/backdrop.hpp"
 #include "render/budget.hpp"
 #include "render/interrupt.hpp"
 #include "render/output_file.hpp"
@@ -79,15 +80,9 @@ class TemporaryFile {
 
 // The raw pixels of a frame for ffmpeg: cairo's ARGB32 rows (B, G, R, A in
 // memory), `width` x `height`, no padding.
-std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, int width, int height, double scale) {
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height), &cairo_surface_destroy);
-  {
-    std::unique_ptr<cairo_t, decltype(&cairo_destroy)> cr(cairo_create(surface.get()), &cairo_destroy);
-    cairo_scale(cr.get(), scale, scale);
-    render::paint_figure(cr.get(), scene, figure);
-  }
-  cairo_surface_flush(surface.get());
+std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, const render::FrameBackdrop& backdrop,
+                      int width, int height) {
+  const render::SurfacePtr surface = backdrop.paint(figure);
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
     throw render::RenderError(scene.path, "", "cairo could not draw a frame");
   }
@@ -310,13 +305,16 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == OutputKind::webm,
                                          temporary.path()),
                         request.out);
+  // Every frame is painted over the layers they share, painted once.
+  const render::FrameBackdrop backdrop(scene, frame_figure(scene, timeline, timeline.time(0), placements, stage),
+                                       width, height, request.scale);
   Progress progress("video", timeline.frames, request.progress);
   try {
     run_frames(
         timeline.frames, request.threads,
         [&](int k) {
           const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
-          return raw_frame(scene, figure, width, height, request.scale);
+          return raw_frame(scene, figure, backdrop, width, height);
         },
         [&](int k, std::string&& bytes) {
           if (!process.write(bytes)) {

@@ -36,8 +36,15 @@ bool finite_transform(const ViewTransform& t) {
 
 }  // namespace
 
-void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) {
+void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, const FigurePart& part) {
   const scene::Canvas& canvas = scene.canvas;
+  using Which = FigurePart::Which;
+  if (part.which == Which::rest) {
+    for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
+      paint_drawing(cr, figure.drawings[i], figure.placements[i], canvas.font, ItemRange{(*part.leading)[i]});
+    }
+    return;
+  }
   if (canvas.background) {
     const scene::Color& c = *canvas.background;
     cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
@@ -56,7 +63,11 @@ void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure) 
       paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0}, at.x, at.y, at.align,
                  is_markup(title));
     }
-    paint_drawing(cr, figure.drawings[i], place, canvas.font);
+    if (part.which == Which::backdrop) {
+      paint_drawing(cr, figure.drawings[i], place, canvas.font, ItemRange{0, (*part.leading)[i], false});
+    } else {
+      paint_drawing(cr, figure.drawings[i], place, canvas.font);
+    }
   }
 }
 
@@ -211,6 +222,28 @@ Figure build_figure(const scene::Scene& scene, double budget) { return built_fig
 
 Figure build_figure(const motion::Stage& stage, double budget) { return built_figure(stage.scene(), &stage, budget); }
 
+std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& figure, double scale,
+                                     double budget) {
+  const double width = scene.canvas.width, height = scene.canvas.height;
+  const double w = std::round(width * scale), h = std::round(height * scale);
+  if (!(scale >= kMinScale && scale <= kMaxScale) || w > kMaxPngSide || h > kMaxPngSide) {
+    throw RenderError(scene.path, "/canvas",
+                      fmt::format("a PNG of {}x{} pixels at scale {} exceeds the limit of {} "
+                                  "pixels per side",
+                                  width, height, scale, kMaxPngSide));
+  }
+  check_pixel_budget(scene, scale, budget);
+  check_ink_budget(scene, figure, scale, budget);
+  return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+std::string encode_png(const scene::Scene& scene, cairo_surface_t* surface) {
+  std::string bytes;
+  cairo_surface_flush(surface);
+  check(cairo_surface_write_to_png_stream(surface, append, &bytes), scene);
+  return bytes;
+}
+
 std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
                           double scale, double budget) {
   const double width = scene.canvas.width, height = scene.canvas.height;
@@ -232,17 +265,8 @@ std::string render_figure(const scene::Scene& scene, const Figure& figure, Forma
       }
       break;
     case Format::png: {
-      const double w = std::round(width * scale), h = std::round(height * scale);
-      if (!(scale >= kMinScale && scale <= kMaxScale) || w > kMaxPngSide || h > kMaxPngSide) {
-        throw RenderError(scene.path, "/canvas",
-                          fmt::format("a PNG of {}x{} pixels at scale {} exceeds the limit of {} "
-                                      "pixels per side",
-                                      width, height, scale, kMaxPngSide));
-      }
-      check_pixel_budget(scene, scale, budget);
-      check_ink_budget(scene, figure, scale, budget);
-      surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, static_cast<int>(w),
-                                               static_cast<int>(h)));
+      const auto [w, h] = checked_png_size(scene, figure, scale, budget);
+      surface.reset(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h));
       break;
     }
   }
@@ -253,10 +277,7 @@ std::string render_figure(const scene::Scene& scene, const Figure& figure, Forma
     paint_figure(cr.get(), scene, figure);
     check(cairo_status(cr.get()), scene);
   }
-  if (format == Format::png) {
-    cairo_surface_flush(surface.get());
-    check(cairo_surface_write_to_png_stream(surface.get(), append, &bytes), scene);
-  }
+  if (format == Format::png) bytes = encode_png(scene, surface.get());
   cairo_surface_finish(surface.get());
   check(cairo_surface_status(surface.get()), scene);
   return format == Format::svg ? canonical_svg_ids(bytes) : bytes;

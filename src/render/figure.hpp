@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "render/drawing.hpp"
@@ -55,9 +56,25 @@ void check_images(const scene::Scene& scene);
 // layout_panels, refusing placements that overflow. Throws RenderError.
 std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings);
 
+// Which part of a figure paint_figure paints: all of it; an animation's
+// backdrop (the background, the titles and the first `leading[i]` items of
+// drawing i, no legends); or the rest, over a backdrop (render/backdrop.hpp).
+struct FigurePart {
+  enum class Which { whole, backdrop, rest } which = Which::whole;
+  const std::vector<std::size_t>* leading = nullptr;  // backdrop and rest: one count per drawing
+};
+
 // Paints the figure (background, titles, panels) on `cr`, whose user units are
 // canvas pixels.
-void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure);
+void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, const FigurePart& part = {});
+
+// The checks render_figure makes before painting a PNG (the scale, the side
+// limit, the pixel and ink budgets): its size in pixels. Throws RenderError.
+std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& figure, double scale,
+                                     double budget = 1.0);
+
+// The PNG file of a painted image surface. Throws RenderError.
+std::string encode_png(const scene::Scene& scene, cairo_surface_t* surface);
 
 // cairo numbers SVG surfaces and images with counters global to the process:
 // renumbered 1, 2, ... in order of appearance, so that an SVG does not depend

@@ -256,7 +256,7 @@ Rect text_ink_box(const std::string& text, const std::string& font, double size,
 }
 
 void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
-                   const std::string& font) {
+                   const std::string& font, const ItemRange& range) {
   cairo_save(cr);
   const Rect area = drawing_area(placement);
   cairo_rectangle(cr, area.x, area.y, area.width, area.height);
@@ -264,8 +264,11 @@ void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& pl
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   const ShapePainter painter{cr, placement.transform, font};
-  for (const Item& item : drawing.items) std::visit(painter, item.shape);
-  for (const Legend& legend : drawing.legends) paint_legend(cr, legend, drawing_area(placement), font);
+  const std::size_t to = std::min(range.to, drawing.items.size());
+  for (std::size_t i = range.from; i < to; ++i) std::visit(painter, drawing.items[i].shape);
+  if (range.legends) {
+    for (const Legend& legend : drawing.legends) paint_legend(cr, legend, drawing_area(placement), font);
+  }
   cairo_restore(cr);
 }
 

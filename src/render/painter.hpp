@@ -4,6 +4,7 @@
 
 #include <cairo.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,18 @@ namespace pita::render {
 inline constexpr double kHeadMin = 8.0;
 inline constexpr double kHeadPerWidth = 4.0;
 
+// Which of a drawing's items paint_drawing paints: items [from, to) and,
+// with `legends`, the legends (all of them by default). An animation's
+// backdrop paints each panel's leading items once and every frame the rest
+// (render/backdrop.hpp).
+struct ItemRange {
+  std::size_t from = 0;
+  std::size_t to = static_cast<std::size_t>(-1);
+  bool legends = true;
+};
+
 void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
-                   const std::string& font);
+                   const std::string& font, const ItemRange& range = {});
 
 // Pixel coordinates of the image's file -> canvas pixels under `view`.
 Affine2 image_to_canvas(const Image& image, const ViewTransform& view);

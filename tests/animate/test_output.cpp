@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "animate/output.hpp"
+#include "render/budget.hpp"
 #include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
@@ -94,6 +95,42 @@ TEST(Output, TotalWorkIsLimited) {
     ADD_FAILURE() << "5001 SVG frames accepted";
   } catch (const AnimationError& error) {
     EXPECT_NE(std::string(error.what()).find("--frames"), std::string::npos);
+  }
+}
+
+// Issue 37: frames x the figure's drawing is bounded too, for every output:
+// the frames that fit in kMaxAnimationUnits are accepted, one more is not
+// (unless --budget allows it), and the message names --frames and --budget.
+TEST(Output, TheFramesDrawingIsLimited) {
+  // Two strokes of 10 000 samples under a pattern: a heavy frame.
+  const scene::Scene scene = scene::parse_scene(
+      R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+          {"t": 1, "p": [4, 1], "m": 2, "w": 1}, {"t": 2, "p": [8, 0], "m": 1, "w": 3}],
+          "canvas": {"width": 800, "height": 400},
+          "layers": [{"type": "stroke", "samples": 10000}, {"type": "stroke", "samples": 10000, "opacity": 0.5},
+                     {"type": "pattern"}]})",
+      "heavy.json");
+  const double one = render::estimate_cost(scene).units;
+  ASSERT_GT(one, 1000.0);
+  for (const OutputKind kind : {OutputKind::directory, OutputKind::svg, OutputKind::mp4}) {
+    Request request;
+    request.kind = kind;
+    request.scale = 0.1;  // the pixel budget is not what limits here
+    request.budget = kind == OutputKind::svg ? 3.0 : 1.0;  // nor the vector frames' (5000 x 3)
+    const int fit = static_cast<int>(kMaxAnimationUnits * request.budget / one);
+    ASSERT_LT(fit, 5000 * request.budget);
+    EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, fit}), request));
+    try {
+      check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, fit + 1}), request);
+      ADD_FAILURE() << fit + 1 << " frames accepted";
+    } catch (const AnimationError& error) {
+      const std::string what = error.what();
+      EXPECT_NE(what.find("--frames"), std::string::npos) << what;
+      EXPECT_NE(what.find("drawing budget"), std::string::npos) << what;
+      EXPECT_NE(what.find("--budget"), std::string::npos) << what;
+    }
+    request.budget *= 1.01;
+    EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, fit + 1}), request));
   }
 }
 

@@ -300,7 +300,12 @@ INSTANTIATE_TEST_SUITE_P(
                       AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}},
                       AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}},
                       AtCase{"space_polysam", kScenes / "sam-3d-fig13-polysam.json", 0, {0, 4, 8},
-                             {"--frames", "9", "--scale", "0.5"}}),
+                             {"--frames", "9", "--scale", "0.5"}},
+                      // two panels whose strokes do not move: PNG frames over a backdrop (render/backdrop.hpp)
+                      AtCase{"two_panels_over_a_backdrop", kScenes / "tracks-fig01-eight-keyframes.json", 0, {0, 4, 8},
+                             {"--frames", "9", "--scale", "0.5"}},
+                      AtCase{"two_panels_at_a_fractional_scale", kScenes / "tracks-fig01-eight-keyframes.json", 0,
+                             {0, 5}, {"--frames", "6", "--scale", "0.37"}}),
     [](const ::testing::TestParamInfo<AtCase>& param) { return param.param.name; });
 
 // ------------------------------------------------------------ 3. animated SVG
@@ -604,6 +609,28 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"svg_frames_beyond_the_limit", {"--frames", "5001"}, "a.svg", "--frames: 5001 frames of vector output"},
                       BadCase{"pixels_beyond_the_budget", {"--frames", "20834"}, "frames", "--frames: 20834 frames of 800 x 600 pixels"}),
     [](const ::testing::TestParamInfo<BadCase>& param) { return param.param.name; });
+
+// Issue 37: frames x the figure's drawing is refused before anything is drawn
+// (two 10 000-sample strokes, 100 000 small frames), naming --frames and
+// --budget; --budget raises it.
+TEST(AnimateBudget, TheFramesDrawingIsRefusedUpFront) {
+  const ScratchDir dir;
+  dir.write("heavy.json", R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 1, "p": [4, 1], "m": 2, "w": 1}, {"t": 2, "p": [8, 0], "m": 1, "w": 3}],
+      "canvas": {"width": 800, "height": 400},
+      "layers": [{"type": "stroke", "samples": 10000}, {"type": "stroke", "samples": 10000, "opacity": 0.5},
+                 {"type": "pattern"}]})");
+  fs::create_directories(dir.path() / "out");
+  for (const char* out : {"out/frames", "out/a.svg", "out/a.mp4"}) {
+    const RunResult r = run_pita({"animate", "heavy.json", "-o", out, "--frames", "100000", "--scale", "0.1"},
+                                 dir.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--frames: 100000 frames"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("drawing budget"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--budget F"), std::string::npos) << r.err;
+    EXPECT_TRUE(names_in(dir.path() / "out").empty()) << out << ": " << joined(hidden_in(dir.path() / "out"));
+  }
+}
 
 // A scene whose image is missing (fig23 copied without its images/): exit 2
 // naming the image, before any output exists.
