@@ -20,7 +20,7 @@ PITA_RUN_PACKAGES=(
   nlohmann-json3-dev   # scenes
   libfmt-dev           # formatting
   libeigen3-dev        # matrices (affine motions)
-  libcairo2-dev        # figures: SVG, PNG, PDF
+  libcairo2-dev        # figures: SVG, PNG, PDF (it depends on libpng-dev, whose libpng pita writes PNGs with)
   libpango1.0-dev      # figures: text (banners, titles)
   fonts-dejavu-core    # figures: the fonts the scenes and goldens use (DejaVu Sans, Serif)
 )

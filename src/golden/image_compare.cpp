@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "render/cairo_handles.hpp"
+#include "render/png_writer.hpp"
 
 namespace pita::golden {
 
@@ -30,7 +31,6 @@ cairo_status_t read_chunk(void* closure, unsigned char* data, unsigned int lengt
   return CAIRO_STATUS_SUCCESS;
 }
 
-constexpr auto append = render::append_to_string;
 
 std::uint32_t big_endian(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
@@ -117,7 +117,7 @@ std::uint32_t faded(std::uint32_t p) {
 std::string encode(cairo_surface_t* s) {
   std::string bytes;
   cairo_surface_mark_dirty(s);
-  cairo_surface_write_to_png_stream(s, append, &bytes);
+  render::write_png(s, bytes);
   return bytes;
 }
 

@@ -20,6 +20,7 @@
 #include "render/image_cache.hpp"
 #include "render/label_placement.hpp"
 #include "render/painter.hpp"
+#include "render/png_writer.hpp"
 #include "render/pose_drawing.hpp"
 #include "render/panel_drawing.hpp"
 
@@ -239,8 +240,7 @@ std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& fi
 
 std::string encode_png(const scene::Scene& scene, cairo_surface_t* surface) {
   std::string bytes;
-  cairo_surface_flush(surface);
-  check(cairo_surface_write_to_png_stream(surface, append, &bytes), scene);
+  check(write_png(surface, bytes), scene);
   return bytes;
 }
 

@@ -18,6 +18,7 @@
 #include "render/cairo_handles.hpp"
 #include "render/output_file.hpp"
 #include "render/painter.hpp"
+#include "render/png_writer.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::sweep {
@@ -289,7 +290,7 @@ class SheetPainter {
     cairo_surface_flush(png_.get());
     const cairo_status_t png_status = cairo_surface_status(png_.get()) != CAIRO_STATUS_SUCCESS
                                           ? cairo_surface_status(png_.get())
-                                          : cairo_surface_write_to_png_stream(png_.get(), append, &png_bytes_);
+                                          : render::write_png(png_.get(), png_bytes_);
     if (png_status == CAIRO_STATUS_SUCCESS) {
       files.emplace_back(input.dir / "contact.png", png_bytes_);
     } else {
