@@ -37,17 +37,13 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
 const fs::path& frames_dir() {
-  static const fs::path path = [] {
-    const fs::path p = fs::temp_directory_path() / ("pita-fuzz-animate-" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    std::ofstream(p / "frame-0001.png") << "not a png";
-    std::atexit([] {
-      std::error_code ignored;
-      fs::remove_all(frames_dir(), ignored);
-    });
-    return p;
+  static const bool made = [] {
+    fs::create_directories(fuzz::scratch_path("pita-fuzz-animate-"));
+    std::ofstream(fuzz::scratch_path() / "frame-0001.png") << "not a png";
+    return true;
   }();
-  return path;
+  (void)made;
+  return fuzz::scratch_path();
 }
 
 template <typename T>

@@ -40,18 +40,7 @@ const std::string& fresh_data() {
 }
 
 // compare_file reads the golden from a file: one per process, removed at exit.
-const fs::path& golden_file() {
-  static const fs::path path = [] {
-    const fs::path p = fs::temp_directory_path() /
-                       ("pita-fuzz-golden-" + std::to_string(::getpid()) + ".data.json");
-    std::atexit([] {
-      std::error_code ignored;
-      fs::remove(golden_file(), ignored);
-    });
-    return p;
-  }();
-  return path;
-}
+const fs::path& golden_file() { return fuzz::scratch_path("pita-fuzz-golden-", ".data.json"); }
 
 void compare(const std::string& actual) {
   try {

@@ -25,16 +25,9 @@ using namespace pita;
 namespace fs = std::filesystem;
 
 const fs::path& work_dir() {
-  static const fs::path path = [] {
-    const fs::path p = fs::temp_directory_path() / ("pita-fuzz-sweep-" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    std::atexit([] {
-      std::error_code ignored;
-      fs::remove_all(work_dir(), ignored);
-    });
-    return p;
-  }();
-  return path;
+  static const bool made = fs::create_directories(fuzz::scratch_path("pita-fuzz-sweep-")) || true;
+  (void)made;
+  return fuzz::scratch_path();
 }
 
 void axis(std::string_view argument) {

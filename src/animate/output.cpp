@@ -248,8 +248,9 @@ void check_total_work(const scene::Scene& scene, const Timeline& timeline, const
 }
 
 std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
-  check_total_work(scene, timeline, request);
+  // One frame's budget first: its message names the field that costs most.
   render::check_budget(scene, render::estimate_cost(scene), request.budget);
+  check_total_work(scene, timeline, request);
   render::check_images(scene);
   const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
   // The motions, built once for every frame ("pattern" changes the scene per frame).

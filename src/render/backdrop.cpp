@@ -29,8 +29,8 @@ bool overlap(const Rect& a, const Rect& b) {
   return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 }
 
-// The box of a title's ink grown by one pixel: antialiasing touches the
-// pixels around it.
+// The box of a title's ink grown by `by` pixels: antialiasing touches the
+// pixels around it (and the box is measured unscaled).
 Rect grown(const Rect& r, double by) { return {r.x - by, r.y - by, r.width + 2 * by, r.height + 2 * by}; }
 
 SurfacePtr new_surface(const scene::Scene& scene, int width, int height) {
@@ -83,7 +83,7 @@ bool backdrop_is_exact(const scene::Scene& scene, const Figure& figure, double s
     const Rect ink = grown(scaled(text_ink_box(title, scene.canvas.font, kPanelTitleSize,
                                                panel_title_placement(figure.placements[i]), is_markup(title)),
                                   scale),
-                           1.0);
+                           2.0);
     for (std::size_t j = 0; j < n; ++j) {
       if (j != i && overlap(ink, areas[j])) return false;
     }
@@ -95,6 +95,10 @@ FrameBackdrop::FrameBackdrop(const scene::Scene& scene, const Figure& first, int
     : scene_(scene), width_(width), height_(height), scale_(scale), leading_(leading_static_items(first)) {
   const bool shares_something = std::any_of(leading_.begin(), leading_.end(), [](std::size_t k) { return k > 0; });
   if (!shares_something || !backdrop_is_exact(scene, first, scale)) return;
+  for (std::size_t i = 0; i < leading_.size(); ++i) {
+    const std::vector<Item>& items = first.drawings[i].items;
+    leading_items_.emplace_back(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(leading_[i]));
+  }
   surface_ = new_surface(scene, width, height);
   paint_on(scene, surface_.get(), scale, first, FigurePart{FigurePart::Which::backdrop, &leading_});
 }
@@ -105,8 +109,7 @@ SurfacePtr FrameBackdrop::paint(const Figure& frame) const {
   for (std::size_t i = 0; over && i < leading_.size(); ++i) {
     const std::vector<Item>& items = frame.drawings[i].items;
     over = items.size() >= leading_[i] &&
-           std::none_of(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(leading_[i]),
-                        [](const Item& item) { return item.moving; });
+           std::equal(leading_items_[i].begin(), leading_items_[i].end(), items.begin());
   }
   if (!over) {
     paint_on(scene_, surface.get(), scale_, frame, {});

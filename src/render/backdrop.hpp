@@ -35,9 +35,11 @@ class FrameBackdrop {
   bool active() const { return surface_ != nullptr; }
 
   // An image surface with `frame` painted: over a copy of the backdrop when
-  // active and the frame begins with the backdrop's items (the same number
-  // of leading items that do not move, in every panel), else whole. Safe to
-  // call from several threads at once.
+  // active and every panel of the frame begins with the very items of the
+  // backdrop, else whole. (Items that do not move may still differ between
+  // frames: labels placed around the data, a trail of "compare" frames,
+  // shadows on a ground set by moving solids; the comparison catches them.)
+  // Safe to call from several threads at once.
   SurfacePtr paint(const Figure& frame) const;
 
  private:
@@ -45,6 +47,7 @@ class FrameBackdrop {
   int width_ = 0, height_ = 0;
   double scale_ = 1.0;
   std::vector<std::size_t> leading_;  // per drawing: the items in the backdrop
+  std::vector<std::vector<Item>> leading_items_;  // and those items, as frames must begin
   SurfacePtr surface_;                // null: every frame is painted whole
 };
 

@@ -24,6 +24,7 @@ struct Polyline {
   std::vector<Point> points;
   bool closed = false;
   LineStyle line;
+  friend bool operator==(const Polyline&, const Polyline&) = default;
 };
 
 // Filled closed contours with the nonzero rule (stroke strips, banner glyphs).
@@ -32,6 +33,7 @@ struct FilledPath {
   Color fill;
   double opacity = 1.0;
   std::optional<LineStyle> outline;
+  friend bool operator==(const FilledPath&, const FilledPath&) = default;
 };
 
 // A circle (discrepancy), radius in world units.
@@ -40,6 +42,7 @@ struct Circle {
   double radius = 0.0;
   LineStyle line;
   std::optional<Color> fill;
+  friend bool operator==(const Circle&, const Circle&) = default;
 };
 
 // A segment with an arrowhead at `to` (keyframes); the head has a fixed size
@@ -48,6 +51,7 @@ struct ArrowShape {
   Point from;
   Point to;
   LineStyle line;
+  friend bool operator==(const ArrowShape&, const ArrowShape&) = default;
 };
 
 // A text anchored at a point of the plane (labels); size in pixels. With
@@ -61,6 +65,7 @@ struct Label {
   Color color;
   bool avoid_data = false;
   Point shift{0.0, 0.0};
+  friend bool operator==(const Label&, const Label&) = default;
 };
 
 // A raster image (a PNG of "shapes", PITA Sec. 7.1) placed on the plane:
@@ -72,6 +77,10 @@ struct Image {
   int width = 0, height = 0;
   Affine2 to_world;       // pixel coordinates -> world
   double opacity = 1.0;
+  friend bool operator==(const Image& a, const Image& b) {
+    return a.path == b.path && a.name == b.name && a.width == b.width && a.height == b.height &&
+           a.to_world.L == b.to_world.L && a.to_world.b == b.to_world.b && a.opacity == b.opacity;
+  }
 };
 
 using Shape = std::variant<Polyline, FilledPath, Circle, ArrowShape, Label, Image>;
@@ -86,6 +95,7 @@ struct Item {
   // carries, a moving pattern); false: the same in every frame (the animated
   // SVG draws it once).
   bool moving = false;
+  friend bool operator==(const Item&, const Item&) = default;
 };
 
 // The legend of a panel, painted in pixel space.

@@ -39,6 +39,7 @@ struct LineStyle {
   double width = 1.0;          // > 0
   double opacity = 1.0;        // in [0, 1], multiplies color.a
   std::vector<double> dash;    // on, off, ... lengths (> 0); empty = solid
+  friend bool operator==(const LineStyle&, const LineStyle&) = default;
 };
 
 // An axis-aligned box of the plane (world units), min < max on both axes.
