@@ -294,9 +294,17 @@ TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out",
                                          "--format", "svg", "--jobs", "2", "-q"};
   Started started = start_pita(args, dir.path());
-  const fs::path first = dir.path() / "out/fig13-knot-ratio-0.svg";
+  // Signalled once a row is journaled (a variant's file can be in place a
+  // moment before its row is recorded: a run stopped then has no row yet,
+  // and redoes that variant when resumed).
+  const fs::path journal = dir.path() / "out/.manifest.csv.journal";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!fs::exists(first) && std::chrono::steady_clock::now() < deadline) {
+  const auto journaled = [&] {
+    if (!fs::exists(journal)) return false;
+    const std::string text = read_file(journal);
+    return std::count(text.begin(), text.end(), '\n') >= 1;
+  };
+  while (!journaled() && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   ::kill(started.pid, SIGTERM);
