@@ -21,7 +21,12 @@ if ! [[ "$total" =~ ^[0-9]+$ ]] || [ $# -gt 1 ]; then
   exit 2
 fi
 
-targets=(fuzz_scene_reader fuzz_eval fuzz_render fuzz_golden_data fuzz_affine_power fuzz_sweep fuzz_animate)
+# The targets: the one list, PITA_FUZZ_TARGETS of fuzz/CMakeLists.txt.
+read -r -a targets <<<"$(sed -n 's/^set(PITA_FUZZ_TARGETS \(.*\))$/\1/p' "$PITA_ROOT/fuzz/CMakeLists.txt")"
+if [ ${#targets[@]} -eq 0 ]; then
+  echo "pita: no fuzz target found in fuzz/CMakeLists.txt (set(PITA_FUZZ_TARGETS ...))" >&2
+  exit 1
+fi
 per=$(( total / ${#targets[@]} ))
 [ "$per" -ge 1 ] || per=1
 
