@@ -100,7 +100,7 @@ FrameBackdrop::FrameBackdrop(const scene::Scene& scene, const Figure& first, int
     leading_items_.emplace_back(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(leading_[i]));
   }
   surface_ = new_surface(scene, width, height);
-  paint_on(scene, surface_.get(), scale, first, FigurePart{FigurePart::Which::backdrop, &leading_});
+  paint_on(scene, surface_.get(), scale, first, BackdropPart{&leading_});
 }
 
 SurfacePtr FrameBackdrop::paint(const Figure& frame) const {
@@ -112,7 +112,7 @@ SurfacePtr FrameBackdrop::paint(const Figure& frame) const {
            std::equal(leading_items_[i].begin(), leading_items_[i].end(), items.begin());
   }
   if (!over) {
-    paint_on(scene_, surface.get(), scale_, frame, {});
+    paint_on(scene_, surface.get(), scale_, frame, WholeFigure{});
     return surface;
   }
   // The backdrop's pixels (same size and format, so the same stride).
@@ -121,7 +121,7 @@ SurfacePtr FrameBackdrop::paint(const Figure& frame) const {
   std::memcpy(cairo_image_surface_get_data(surface.get()), cairo_image_surface_get_data(surface_.get()),
               static_cast<std::size_t>(stride) * static_cast<std::size_t>(height_));
   cairo_surface_mark_dirty(surface.get());
-  paint_on(scene_, surface.get(), scale_, frame, FigurePart{FigurePart::Which::rest, &leading_});
+  paint_on(scene_, surface.get(), scale_, frame, RestPart{&leading_});
   return surface;
 }
 

@@ -39,10 +39,9 @@ bool finite_transform(const ViewTransform& t) {
 
 void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, const FigurePart& part) {
   const scene::Canvas& canvas = scene.canvas;
-  using Which = FigurePart::Which;
-  if (part.which == Which::rest) {
+  if (const auto* rest = std::get_if<RestPart>(&part)) {
     for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
-      paint_drawing(cr, figure.drawings[i], figure.placements[i], canvas.font, ItemRange{(*part.leading)[i]});
+      paint_drawing(cr, figure.drawings[i], figure.placements[i], canvas.font, ItemRange{(*rest->leading)[i]});
     }
     return;
   }
@@ -64,8 +63,8 @@ void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, 
       paint_text(cr, title, canvas.font, kPanelTitleSize, Color{0.1, 0.1, 0.1, 1.0}, at.x, at.y, at.align,
                  is_markup(title));
     }
-    if (part.which == Which::backdrop) {
-      paint_drawing(cr, figure.drawings[i], place, canvas.font, ItemRange{0, (*part.leading)[i], false});
+    if (const auto* backdrop = std::get_if<BackdropPart>(&part)) {
+      paint_drawing(cr, figure.drawings[i], place, canvas.font, ItemRange{0, (*backdrop->leading)[i], false});
     } else {
       paint_drawing(cr, figure.drawings[i], place, canvas.font);
     }

@@ -2,10 +2,12 @@
 // with cairo onto an SVG, PNG or PDF surface, returned as the file's bytes.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "render/drawing.hpp"
@@ -59,14 +61,18 @@ std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std:
 // Which part of a figure paint_figure paints: all of it; an animation's
 // backdrop (the background, the titles and the first `leading[i]` items of
 // drawing i, no legends); or the rest, over a backdrop (render/backdrop.hpp).
-struct FigurePart {
-  enum class Which { whole, backdrop, rest } which = Which::whole;
-  const std::vector<std::size_t>* leading = nullptr;  // backdrop and rest: one count per drawing
+struct WholeFigure {};
+struct BackdropPart {
+  const std::vector<std::size_t>* leading;  // one count per drawing
 };
+struct RestPart {
+  const std::vector<std::size_t>* leading;  // one count per drawing
+};
+using FigurePart = std::variant<WholeFigure, BackdropPart, RestPart>;
 
 // Paints the figure (background, titles, panels) on `cr`, whose user units are
 // canvas pixels.
-void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, const FigurePart& part = {});
+void paint_figure(cairo_t* cr, const scene::Scene& scene, const Figure& figure, const FigurePart& part = WholeFigure{});
 
 // The checks render_figure makes before painting a PNG (the scale, the side
 // limit, the pixel and ink budgets): its size in pixels. Throws RenderError.
