@@ -23,6 +23,7 @@
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
+#include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -57,12 +58,15 @@ std::string no_motion_text(const scene::Scene& scene, bool csv) {
   return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
 }
 
-ExitCode write_stdout(const std::string& text) {
-  if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
-    std::cerr << "pita: cannot write the frames to standard output (" << std::strerror(errno) << ")\n";
-    return ExitCode::failure;
-  }
-  return ExitCode::success;
+// Standard output as a sink: what was written cannot be taken back.
+motion::TextSink stdout_sink() {
+  return {[](std::string_view bytes) {
+            if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size()) {
+              throw render::OutputError(
+                  fmt::format("cannot write the frames to standard output ({})", std::strerror(errno)));
+            }
+          },
+          false};
 }
 
 // --samples N: an integer in [kMinSamples, kMaxSamples].
@@ -112,13 +116,6 @@ std::vector<double> parse_times(const std::string& text) {
     start = comma + 1;
   }
   return times;
-}
-
-// The frames at the scene's uniform times (--samples N, else the scene's
-// "samples", else kDefaultSamples) or at the times given with --t.
-std::vector<double> sample_times(const motion::SceneMotion& motion, std::optional<int> samples,
-                                 const scene::Scene& scene) {
-  return motion::uniform_times(motion, samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
 }
 
 // The eases a scene may name, from core/ease.hpp's tables.
@@ -256,12 +253,18 @@ Examples:
   pita eval scenes/fig01-eight-pitas.json
   pita eval scenes/fig01-eight-pitas.json --method P8 --samples 5 --format csv
   pita eval scenes/fig28-prediction.json --t 0,0.5,1,1.5
+  pita eval scenes/fig01-eight-pitas.json --samples 1000000 --format csv -o frames.csv
   pita eval scenes/sam-fig01-regular-patterns.json --method linear --format csv
 
 Exit codes: 0 success, 2 bad input or usage (the message on stderr names the file,
 the JSON Pointer of the bad value and what is wrong; nothing is printed on stdout;
 also out of memory), 3 the frames could not be written to standard output (a closed
-pipe included), 4 an internal error (a bug in pita).
+pipe included) or to -o FILE, 4 an internal error (a bug in pita).
+
+The frames are streamed: a million of them take no more memory than a few. Every frame
+is computed and checked once before the first byte goes to standard output (a frame
+that is not finite leaves it empty); with -o FILE they go into a temporary beside FILE,
+renamed into place only when all were written.
 )";
 }
 
@@ -302,6 +305,11 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
       ->type_name("FORMAT")
       ->capture_default_str();
   eval->add_option_function<std::string>(
+          "-o,--output", [options](const std::string& path) { options->output = path; },
+          "Write the frames into FILE instead of standard output: atomically, through a temporary beside it "
+          "renamed into place, so FILE is either complete or untouched")
+      ->type_name("FILE");
+  eval->add_option_function<std::string>(
           "--batch", [options](const std::string& path) { options->batch = path; },
           "Many evaluations in one process: each line of FILE (- for standard input) is the arguments of one "
           "`pita eval` as a JSON array of strings; each line printed is its {\"exit\", \"stdout\", \"stderr\"} "
@@ -310,7 +318,10 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
   return options;
 }
 
-EvalOutcome evaluate(const EvalOptions& options) {
+namespace {
+
+// evaluate(), handing the frames to `sink` as they are printed.
+EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& sink) {
   EvalOutcome outcome;
   try {
     std::optional<Method> method_override;
@@ -344,7 +355,7 @@ EvalOutcome evaluate(const EvalOptions& options) {
         throw InputError(fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate",
                                      scene.path));
       }
-      outcome.out = no_motion_text(scene, options.format == "csv");
+      sink.write(no_motion_text(scene, options.format == "csv"));
       outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
       return outcome;
     }
@@ -368,10 +379,12 @@ EvalOutcome evaluate(const EvalOptions& options) {
     const std::size_t index = options.panel ? static_cast<std::size_t>(*options.panel) : 0;
     const scene::Panel& panel = chosen.panel(index);
     const motion::SceneMotion& motion = chosen.motion(index);
-    const std::vector<double> at = times ? *times : sample_times(motion, samples, scene);
+    const motion::FrameTimes at =
+        times ? motion::FrameTimes(*times)
+              : motion::FrameTimes(motion, samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
     outcome.work = motion::check_eval_work(scene, panel, motion, at.size(), "ask for fewer frames (--samples, --t)");
-    outcome.out = motion::frames_text(panel, motion, at,
-                                      options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json);
+    motion::write_frames(panel, motion, at,
+                         options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json, sink);
     return outcome;
   } catch (const InputError& error) {
     return EvalOutcome{ExitCode::bad_input, {}, fmt::format("pita: {}\n", error.what()), 0.0};
@@ -381,14 +394,24 @@ EvalOutcome evaluate(const EvalOptions& options) {
   }
 }
 
+}  // namespace
+
+EvalOutcome evaluate(const EvalOptions& options) {
+  std::string text;
+  EvalOutcome outcome = evaluate_into(options, motion::TextSink{[&](std::string_view bytes) { text += bytes; }});
+  if (outcome.code == ExitCode::success) outcome.out = std::move(text);
+  return outcome;
+}
+
 ExitCode run_eval(const EvalOptions& options) {
   if (options.batch) {
     // Checked here rather than with CLI11's excludes(), which would print
     // "Excludes: --batch" beside every option of the help.
     if (!options.scene_path.empty() || options.method || options.samples || options.times || options.panel ||
-        options.format != "json") {
-      std::cerr << "pita: --batch excludes SCENE, --method, --samples, --t, --panel and --format: each request "
-                   "line holds its own\nRun 'pita eval --help' for usage.\n";
+        options.format != "json" || options.output) {
+      std::cerr << "pita: --batch excludes SCENE, --method, --samples, --t, --panel, --format and -o: each "
+                   "request line holds its own, and the answers go to standard output\nRun 'pita eval --help' "
+                   "for usage.\n";
       return ExitCode::bad_input;
     }
     return run_eval_batch(*options.batch);
@@ -398,10 +421,35 @@ ExitCode run_eval(const EvalOptions& options) {
                  "process. Run 'pita eval --help' for usage.\n";
     return ExitCode::bad_input;
   }
-  const EvalOutcome outcome = evaluate(options);
+  if (!options.output) {
+    EvalOutcome outcome = evaluate_into(options, stdout_sink());
+    if (outcome.code == ExitCode::success && std::fflush(stdout) != 0) {
+      outcome = {ExitCode::failure, {},
+                 fmt::format("pita: cannot write the frames to standard output ({})\n", std::strerror(errno))};
+    }
+    std::cerr << outcome.err;
+    return outcome.code;
+  }
+  // The file is opened at the first bytes, so that a bad scene is reported
+  // (exit 2) before an unwritable output (exit 3), and dropped unless every
+  // frame was written.
+  std::optional<render::StreamingOutput> file;
+  const motion::TextSink file_sink{[&](std::string_view bytes) {
+                                     if (!file) file.emplace(*options.output);
+                                     file->write(bytes);
+                                   },
+                                   true};
+  EvalOutcome outcome = evaluate_into(options, file_sink);
+  if (outcome.code == ExitCode::success) {
+    try {
+      if (!file) file.emplace(*options.output);
+      file->commit();
+    } catch (const render::OutputError& error) {
+      outcome = {ExitCode::failure, {}, fmt::format("pita: {}\n", error.what())};
+    }
+  }
   std::cerr << outcome.err;
-  if (outcome.code != ExitCode::success) return outcome.code;
-  return write_stdout(outcome.out);
+  return outcome.code;
 }
 
 }  // namespace pita::cli

@@ -1,8 +1,9 @@
-// pita eval SCENE.json [--method M] [--samples N | --t T1,T2,...] [--format json|csv]
+// pita eval SCENE.json [--method M] [--samples N | --t T1,T2,...] [--format json|csv] [-o FILE]
 // pita eval --batch FILE
 //
 // Evaluates the motion through the keyframes of a scene at sample times and
-// prints the frames (JSON or CSV) on stdout; with --batch, many such
+// prints the frames (JSON or CSV) on stdout or into FILE, streamed in memory
+// that does not grow with the number of frames; with --batch, many such
 // evaluations in one process (cli/eval_batch.cpp).
 #pragma once
 
@@ -26,6 +27,7 @@ struct EvalOptions {
   std::string format = "json";         // --format: json or csv
   std::optional<int> panel;            // --panel: the motion of this panel (0-based)
   std::optional<std::string> batch;    // --batch: a file of requests, "-" for stdin
+  std::optional<std::string> output;   // -o: the frames go into this file, written atomically
 };
 
 // What one evaluation prints: the frames (stdout) and the messages (stderr,
@@ -43,8 +45,9 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app);
 // Does the work of one evaluation (options.batch is ignored) without printing.
 EvalOutcome evaluate(const EvalOptions& options);
 
-// Does the work. Prints the frames on stdout, or a message on stderr and
-// nothing on stdout; with options.batch, runs the batch.
+// Does the work. Prints the frames on stdout (or writes them into
+// options.output), or a message on stderr and nothing on stdout (and no
+// file); with options.batch, runs the batch.
 ExitCode run_eval(const EvalOptions& options);
 
 // pita eval --batch FILE: each request line evaluated as `pita eval ARGS...`

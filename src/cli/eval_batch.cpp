@@ -108,6 +108,10 @@ EvalOutcome answer(const std::vector<std::string>& arguments, const std::string&
   if (options->batch) {
     return {ExitCode::bad_input, {}, fmt::format("pita: {}: a request cannot hold --batch\n", where), 0.0};
   }
+  if (options->output) {
+    return {ExitCode::bad_input, {},
+            fmt::format("pita: {}: a request cannot hold -o: its frames are its answer's \"stdout\"\n", where), 0.0};
+  }
   if (options->scene_path.empty()) {
     return {ExitCode::bad_input, {}, fmt::format("pita: {}: SCENE is required\n", where), 0.0};
   }

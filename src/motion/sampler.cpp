@@ -12,15 +12,17 @@
 
 namespace pita::motion {
 
+double uniform_time(double first, double last, int count, int i) {
+  if (count < 2) throw std::invalid_argument("uniform_times needs at least 2 samples");
+  // first + (last - first) may differ from last by an ulp
+  if (i == count - 1) return last;
+  return first + (last - first) * static_cast<double>(i) / static_cast<double>(count - 1);
+}
+
 std::vector<double> uniform_times(double first, double last, int count) {
   if (count < 2) throw std::invalid_argument("uniform_times needs at least 2 samples");
   std::vector<double> times(static_cast<std::size_t>(count));
-  const double span = last - first;
-  const double intervals = static_cast<double>(count - 1);
-  for (int i = 0; i < count; ++i) {
-    times[static_cast<std::size_t>(i)] = first + span * static_cast<double>(i) / intervals;
-  }
-  times.back() = last;  // first + (last - first) may differ from last by an ulp
+  for (int i = 0; i < count; ++i) times[static_cast<std::size_t>(i)] = uniform_time(first, last, count, i);
   return times;
 }
 
@@ -55,31 +57,69 @@ std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::spa
   return frames;
 }
 
+FrameTimes::FrameTimes(const SceneMotion& motion, int count)
+    : motion_(&motion), count_(count < 2 ? 0 : static_cast<std::size_t>(count)) {
+  if (count < 2) throw std::invalid_argument("uniform_times needs at least 2 samples");
+}
+
+double FrameTimes::at(std::size_t i) const {
+  if (motion_ == nullptr) return given_[i];
+  const double t = uniform_time(motion_->first(), motion_->last(), static_cast<int>(count_), static_cast<int>(i));
+  if (!std::isfinite(t)) throw NoMotion(motion_->file(), "", "the knots are too far apart to sample between them");
+  return t;
+}
+
+namespace {
+
+// The frame of `motion` at t, of the kind `Track` stands for.
+Frame frame_at(const ArrowTrack&, const SceneMotion& motion, double t) { return {t, motion.arrow_at(t)}; }
+scene::PointFrame frame_at(const PointTrack&, const SceneMotion& motion, double t) { return {t, motion.point_at(t)}; }
+PoseFrame frame_at(const PlanePoses&, const SceneMotion& motion, double t) { return {t, motion.pose_at(t)}; }
+scene::PoseFrame3 frame_at(const SpacePoses&, const SceneMotion& motion, double t) { return {t, motion.pose3_at(t)}; }
+
+scene::FramesPrinter::Rows rows_of(const ArrowTrack&) { return scene::FramesPrinter::Rows::arrows; }
+scene::FramesPrinter::Rows rows_of(const PointTrack&) { return scene::FramesPrinter::Rows::points; }
+scene::FramesPrinter::Rows rows_of(const PlanePoses&) { return scene::FramesPrinter::Rows::poses; }
+scene::FramesPrinter::Rows rows_of(const SpacePoses&) { return scene::FramesPrinter::Rows::poses3; }
+
+}  // namespace
+
+void write_frames(const scene::Panel& panel, const SceneMotion& motion, const FrameTimes& times, FramesFormat format,
+                  const TextSink& sink) {
+  const std::string chain = motion.chain() ? std::string(info(*motion.chain()).name) : "";
+  std::visit(
+      [&](const auto& track) {
+        scene::FramesPrinter printer(rows_of(track), format, scene::method_id(panel.keys), chain);
+        scene::FramesPrinter::Buffer chunk;
+        if (!sink.discards_on_throw) {
+          // Every frame once, checked as row() checks it, so that a frame
+          // that is not finite throws before any byte reaches a sink that
+          // cannot take it back.
+          for (std::size_t i = 0; i < times.size(); ++i) {
+            scene::FramesPrinter::require_finite(frame_at(track, motion, times.at(i)));
+          }
+        }
+        chunk.reserve(kFramesChunkBytes + 1024);
+        const auto flush = [&] {
+          sink.write(std::string_view(chunk.data(), chunk.size()));
+          chunk.clear();
+        };
+        printer.head(chunk);
+        for (std::size_t i = 0; i < times.size(); ++i) {
+          printer.row(chunk, frame_at(track, motion, times.at(i)));
+          if (chunk.size() >= kFramesChunkBytes) flush();
+        }
+        printer.tail(chunk);
+        flush();
+      },
+      motion.built());
+}
+
 std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, std::span<const double> times,
                         FramesFormat format) {
-  const bool csv = format == FramesFormat::csv;
-  const std::string chain = motion.chain() ? std::string(info(*motion.chain()).name) : "";
-  return std::visit(
-      overloaded{[&](const ArrowTrack&) {
-                   const std::vector<Frame> frames = sample_arrows(motion, times);
-                   return csv ? scene::frames_to_csv(frames) : scene::frames_to_json(scene::method_id(panel.keys), frames, chain);
-                 },
-                 [&](const PointTrack&) {
-                   std::vector<scene::PointFrame> frames;
-                   frames.reserve(times.size());
-                   for (const double t : times) frames.push_back({t, motion.point_at(t)});
-                   return csv ? scene::point_frames_to_csv(frames)
-                              : scene::point_frames_to_json(scene::method_id(panel.keys), frames, chain);
-                 },
-                 [&](const PlanePoses&) {
-                   const std::vector<PoseFrame> frames = sample_poses(motion, times);
-                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(scene::method_id(panel.keys), frames);
-                 },
-                 [&](const SpacePoses&) {
-                   const std::vector<scene::PoseFrame3> frames = sample_poses3(motion, times);
-                   return csv ? scene::pose_frames_to_csv(frames) : scene::pose_frames_to_json(scene::method_id(panel.keys), frames);
-                 }},
-      motion.built());
+  std::string text;
+  write_frames(panel, motion, FrameTimes(times), format, TextSink{[&](std::string_view bytes) { text += bytes; }});
+  return text;
 }
 
 double check_eval_work(const scene::Scene& scene, const scene::Panel& panel, const SceneMotion& motion,

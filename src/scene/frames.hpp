@@ -1,10 +1,15 @@
 // Frames of a motion and the writers that print them (JSON and CSV). They live
 // in the scene layer because it is the only one that includes nlohmann-json.
+// FramesPrinter prints a document row by row, for writers that stream it (a
+// million frames of `pita eval` in flat memory); the *_to_json / *_to_csv
+// functions build the whole text with it.
 #pragma once
 
 #include <span>
 #include <string>
 #include <string_view>
+
+#include <fmt/format.h>
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
@@ -75,5 +80,46 @@ std::string pose_frames_to_json(std::string_view method_id, std::span<const Pose
 
 // The header "t,a,b,c,tx,d,e,f,ty,g,h,i,tz", then one line per frame.
 std::string pose_frames_to_csv(std::span<const PoseFrame3> frames);
+
+enum class FramesFormat { json, csv };
+
+// The documents above, printed piece by piece: head(), then row() for each
+// frame in order, then tail(); each appends its text to `out` (fmt's buffer:
+// formatting into it is about twice as fast as into a std::string). The
+// concatenation is byte for byte the text of the matching *_to_json or
+// *_to_csv function. row() throws std::invalid_argument, as they do, for a
+// frame that is not finite, and appends nothing then.
+class FramesPrinter {
+ public:
+  // What the rows hold: arrows, the points of a curve, poses of the plane or of space.
+  enum class Rows { arrows, points, poses, poses3 };
+
+  // `chain` is printed for arrows and points only (the others have no chain).
+  FramesPrinter(Rows rows, FramesFormat format, std::string_view method_id, std::string_view chain = "");
+
+  using Buffer = fmt::memory_buffer;
+  void head(Buffer& out) const;
+  void row(Buffer& out, const Frame& frame);
+  void row(Buffer& out, const PointFrame& frame);
+  void row(Buffer& out, const PoseFrame& frame);
+  void row(Buffer& out, const PoseFrame3& frame);
+  void tail(Buffer& out) const;
+
+  // What row() checks first, alone: throws std::invalid_argument, with the
+  // same message, for a frame that is not finite.
+  static void require_finite(const Frame& frame);
+  static void require_finite(const PointFrame& frame);
+  static void require_finite(const PoseFrame& frame);
+  static void require_finite(const PoseFrame3& frame);
+
+ private:
+  void separate(Buffer& out);  // JSON: the text before a row
+
+  Rows rows_;
+  FramesFormat format_;
+  std::string method_id_;
+  std::string chain_;
+  bool any_row_ = false;
+};
 
 }  // namespace pita::scene

@@ -115,5 +115,49 @@ TEST(SpacePoseFrames, RefuseNonFiniteFrames) {
   EXPECT_THROW(pose_frames_to_csv(frames), std::invalid_argument);
 }
 
+// The printer behind the functions above, used row by row by the streaming
+// writers: a refused frame leaves neither text nor a separator behind, so the
+// rows around it print as if it had not been offered.
+TEST(FramesPrinter, ARefusedRowLeavesNoTrace) {
+  const Frame bad{0.25, Arrow{make_point(std::numeric_limits<double>::infinity(), 0), 1.0, 0.0}};
+  for (const FramesFormat format : {FramesFormat::json, FramesFormat::csv}) {
+    FramesPrinter printer(FramesPrinter::Rows::arrows, format, "P6");
+    FramesPrinter::Buffer text;
+    printer.head(text);
+    printer.row(text, kTwoFrames[0]);
+    const std::string before = fmt::to_string(text);
+    EXPECT_THROW(printer.row(text, bad), std::invalid_argument);
+    EXPECT_EQ(fmt::to_string(text), before);
+    printer.row(text, kTwoFrames[1]);
+    printer.tail(text);
+    EXPECT_EQ(fmt::to_string(text), format == FramesFormat::json ? frames_to_json("P6", kTwoFrames) : frames_to_csv(kTwoFrames));
+  }
+}
+
+TEST(FramesPrinter, RequireFiniteIsWhatRowChecks) {
+  EXPECT_NO_THROW(FramesPrinter::require_finite(kTwoFrames[0]));
+  EXPECT_THROW(FramesPrinter::require_finite(Frame{std::nan(""), Arrow{}}), std::invalid_argument);
+  EXPECT_THROW(FramesPrinter::require_finite(PointFrame{0.0, make_point(0, std::nan(""))}), std::invalid_argument);
+  PoseFrame3 frame = space_frame();
+  EXPECT_NO_THROW(FramesPrinter::require_finite(frame));
+  frame.pose.b(2) = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(FramesPrinter::require_finite(frame), std::invalid_argument);
+}
+
+// Printed piece by piece into separate strings, the pieces join into the text
+// of the whole-document functions (a chunked stream is the same file).
+TEST(FramesPrinter, PiecesJoinIntoTheWholeDocument) {
+  const std::vector<PointFrame> points = {{0.0, make_point(1, 2)}, {1.0, make_point(-3, 0.5)}};
+  FramesPrinter printer(FramesPrinter::Rows::points, FramesFormat::json, "P6", "blend");
+  FramesPrinter::Buffer head, first, second, tail;
+  printer.head(head);
+  printer.row(first, points[0]);
+  printer.row(second, points[1]);
+  printer.tail(tail);
+  EXPECT_EQ(fmt::to_string(head) + fmt::to_string(first) + fmt::to_string(second) + fmt::to_string(tail),
+            point_frames_to_json("P6", points, "blend"));
+  EXPECT_EQ(fmt::to_string(head), "{\"method\": \"P6\", \"chain\": \"blend\", \"curve\": \"pita\", \"frames\": [");
+}
+
 }  // namespace
 }  // namespace pita::scene
