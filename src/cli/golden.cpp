@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "cli/failure.hpp"
+#include "cli/scene_jobs.hpp"
 #include "golden/check.hpp"
 #include "golden/golden_file.hpp"
 #include "golden/report.hpp"
@@ -50,6 +51,7 @@ void add_common(CLI::App* command, GoldenOptions& o) {
   command->add_option("--golden", o.golden_dir, "Golden directory, mirroring scenes/")
       ->capture_default_str()
       ->type_name("DIR");
+  add_scene_jobs_option(*command, o.jobs);
 }
 
 }  // namespace
@@ -121,41 +123,55 @@ ExitCode run_check(const GoldenOptions& options) {
   }
   ExitCode result = ExitCode::success;
   std::vector<golden::ReportEntry> report;
-  for (const fs::path& scene : scenes) {
+  // Each scene checked on a worker thread, its verdict printed here, in order.
+  struct Checked {
     golden::ReportEntry entry;
-    entry.check.scene_path = scene.string();
-    entry.check.name = golden::scene_name(scene);
-    try {
-      entry.check = golden::check_scene(scene, options.golden_dir, tolerances_of(options, scene));
-    } catch (...) {
-      const Failure failure = current_failure(scene.string());
-      entry.error = failure.message;
-      result = worse(result, failure.code);
-    }
-    if (!entry.error.empty()) {
-      std::cerr << "pita: " << entry.error << '\n';
-    } else if (entry.check.passes()) {
-      std::cout << "ok    " << scene.string()
-                << (entry.check.claims.empty() ? std::string()
-                                               : fmt::format(" ({} claims hold)", entry.check.claims.size()))
-                << '\n';
-    } else {
-      result = worse(result, ExitCode::golden_mismatch);
-      std::cerr << "FAIL  " << scene.string() << '\n';
-      for (const golden::FileCheck& f : entry.check.files) {
-        if (f.verdict == golden::Verdict::match) continue;
-        std::cerr << "      " << f.golden.string() << ": " << f.detail << '\n';
-      }
-      for (const analysis::ClaimOutcome& c : entry.check.claims) {
-        if (c.held) continue;
-        std::cerr << "      " << c.pointer << ": claim failed: \"" << c.says << "\": " << c.measured << '\n';
-      }
-      for (const lint::Finding& f : entry.check.lint.findings) {
-        if (f.reason.empty()) std::cerr << "      lint: " << lint::describe(f) << '\n';
-      }
-    }
-    report.push_back(std::move(entry));
-  }
+    ExitCode code = ExitCode::success;
+  };
+  for_each_scene(
+      scenes.size(), scene_jobs(options.jobs),
+      [&](std::size_t i) {
+        const fs::path& scene = scenes[i];
+        Checked checked;
+        checked.entry.check.scene_path = scene.string();
+        checked.entry.check.name = golden::scene_name(scene);
+        try {
+          checked.entry.check = golden::check_scene(scene, options.golden_dir, tolerances_of(options, scene));
+        } catch (...) {
+          const Failure failure = current_failure(scene.string());
+          checked.entry.error = failure.message;
+          checked.code = failure.code;
+        }
+        return checked;
+      },
+      [&](std::size_t i, Checked checked) {
+        const fs::path& scene = scenes[i];
+        golden::ReportEntry& entry = checked.entry;
+        result = worse(result, checked.code);
+        if (!entry.error.empty()) {
+          std::cerr << "pita: " << entry.error << '\n';
+        } else if (entry.check.passes()) {
+          std::cout << "ok    " << scene.string()
+                    << (entry.check.claims.empty() ? std::string()
+                                                   : fmt::format(" ({} claims hold)", entry.check.claims.size()))
+                    << '\n';
+        } else {
+          result = worse(result, ExitCode::golden_mismatch);
+          std::cerr << "FAIL  " << scene.string() << '\n';
+          for (const golden::FileCheck& f : entry.check.files) {
+            if (f.verdict == golden::Verdict::match) continue;
+            std::cerr << "      " << f.golden.string() << ": " << f.detail << '\n';
+          }
+          for (const analysis::ClaimOutcome& c : entry.check.claims) {
+            if (c.held) continue;
+            std::cerr << "      " << c.pointer << ": claim failed: \"" << c.says << "\": " << c.measured << '\n';
+          }
+          for (const lint::Finding& f : entry.check.lint.findings) {
+            if (f.reason.empty()) std::cerr << "      lint: " << lint::describe(f) << '\n';
+          }
+        }
+        report.push_back(std::move(entry));
+      });
   if (options.report_dir) {
     try {
       golden::write_report(*options.report_dir, report);
@@ -181,42 +197,75 @@ ExitCode run_update_goldens(const GoldenOptions& options) {
   exact.svg = 0.0;
   exact.image = {0, 0.0};
   ExitCode result = ExitCode::success;
-  for (const fs::path& scene : scenes) {
-    try {
-      const golden::Outputs outputs = golden::render_outputs(scene);
-      const std::string name = golden::scene_name(scene);
-      for (const golden::GoldenFile& file : golden::golden_files(outputs)) {
-        const golden::FileKind kind = file.kind;
-        const std::string& bytes = *file.bytes;
-        const fs::path path = golden::golden_path(options.golden_dir, name, file.suffix);
-        std::string status;
+  // A scene's goldens rendered and compared on a worker thread; what changed
+  // written and printed here, scene after scene.
+  struct UpdatedFile {
+    fs::path path;
+    std::optional<std::string> bytes;  // to write, unless unchanged
+    std::string status;
+  };
+  struct Updated {
+    std::vector<UpdatedFile> files;
+    std::optional<Failure> failure;
+  };
+  for_each_scene(
+      scenes.size(), scene_jobs(options.jobs),
+      [&](std::size_t i) {
+        const fs::path& scene = scenes[i];
+        Updated updated;
         try {
-          const golden::FileCheck c = golden::compare_file(kind, path, bytes, exact);
-          if (c.verdict == golden::Verdict::missing) {
-            status = "new";
-          } else if (c.expected == bytes) {
-            status = "unchanged";
-          } else {
-            status = "changed: " + c.detail;
+          const golden::Outputs outputs = golden::render_outputs(scene);
+          const std::string name = golden::scene_name(scene);
+          for (const golden::GoldenFile& file : golden::golden_files(outputs)) {
+            const std::string& bytes = *file.bytes;
+            const fs::path path = golden::golden_path(options.golden_dir, name, file.suffix);
+            std::string status;
+            try {
+              const golden::FileCheck c = golden::compare_file(file.kind, path, bytes, exact);
+              if (c.verdict == golden::Verdict::missing) {
+                status = "new";
+              } else if (c.expected == bytes) {
+                status = "unchanged";
+              } else {
+                status = "changed: " + c.detail;
+              }
+            } catch (const golden::GoldenPathError&) {
+              throw;  // a link, FIFO or device: never written through (exit 2)
+            } catch (const golden::GoldenError& e) {
+              status = std::string("replaced an unreadable golden (") + e.what() + ")";
+            }
+            std::optional<std::string> to_write;
+            if (status != "unchanged") {
+              golden::check_golden_folder(path);  // not a link out of --golden
+              to_write = bytes;
+            }
+            updated.files.push_back({path, std::move(to_write), std::move(status)});
           }
-        } catch (const golden::GoldenPathError&) {
-          throw;  // a link, FIFO or device: never written through (exit 2)
-        } catch (const golden::GoldenError& e) {
-          status = std::string("replaced an unreadable golden (") + e.what() + ")";
+        } catch (...) {
+          updated.failure = current_failure(scene.string());
         }
-        if (status != "unchanged") {
-          golden::check_golden_folder(path);  // not a link out of --golden
-          fs::create_directories(path.parent_path());
-          render::write_file_atomically(path, bytes);
+        return updated;
+      },
+      [&](std::size_t i, const Updated& updated) {
+        std::optional<Failure> failure = updated.failure;
+        if (!failure) {
+          try {
+            for (const UpdatedFile& file : updated.files) {
+              if (file.bytes) {
+                fs::create_directories(file.path.parent_path());
+                render::write_file_atomically(file.path, *file.bytes);
+              }
+              std::cout << file.path.string() << ": " << file.status << '\n';
+            }
+          } catch (...) {
+            failure = current_failure(scenes[i].string());
+          }
         }
-        std::cout << path.string() << ": " << status << '\n';
-      }
-    } catch (...) {
-      const Failure failure = current_failure(scene.string());
-      std::cerr << "pita: " << failure.message << '\n';
-      result = worse(result, failure.code);
-    }
-  }
+        if (failure) {
+          std::cerr << "pita: " << failure->message << '\n';
+          result = worse(result, failure->code);
+        }
+      });
   return result;
 }
 

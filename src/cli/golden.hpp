@@ -30,6 +30,7 @@ struct GoldenOptions {
   std::optional<double> svg_tolerance;
   std::optional<int> pixel_tolerance;
   std::optional<double> max_differing;
+  std::optional<int> jobs;  // --jobs: scenes worked on at once (cli/scene_jobs.hpp)
 };
 
 std::shared_ptr<GoldenOptions> setup_check(CLI::App& app);

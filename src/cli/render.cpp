@@ -14,6 +14,7 @@
 #include "animate/frame.hpp"
 #include "animate/timeline.hpp"
 #include "cli/failure.hpp"
+#include "cli/scene_jobs.hpp"
 #include "motion/stage.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
@@ -232,6 +233,7 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   for (CLI::Option* clock : {fps, duration, frames}) clock->needs("--at");
   render->add_flag("--allow-absolute-paths", options->allow_absolute_paths,
                    "Allow images given by absolute paths");
+  add_scene_jobs_option(*render, options->jobs);
   return options;
 }
 
@@ -321,10 +323,19 @@ RenderPlan plan_render(const RenderOptions& options) {
   return plan;
 }
 
-// One scene's figure (or its frame at --at) in every format of the plan:
-// every format is rendered before any is written, so a bad scene writes
-// nothing, and then all are written or none (render/output_file.hpp).
-void render_scene(const RenderOptions& options, const RenderPlan& plan, const std::string& path) {
+// One scene's figure (or its frame at --at) in every format of the plan, and
+// what it warns about, rendered on a worker thread and written by
+// write_scene on the calling thread.
+struct RenderedScene {
+  std::string warnings;  // lines for stderr
+  std::vector<std::pair<fs::path, std::string>> files;
+  std::optional<Failure> failure;
+};
+
+// Every format is rendered before any is written, so a bad scene writes
+// nothing.
+RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan, const std::string& path) {
+  RenderedScene rendered;
   const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths});
   render::Figure figure;
   if (options.at) {
@@ -340,18 +351,24 @@ void render_scene(const RenderOptions& options, const RenderPlan& plan, const st
     // a failure in `pita check` (docs/reference/check.md "Claims").
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       if (claim.held) continue;
-      std::cerr << "pita: warning: "
-                << scene::located(scene.path, claim.pointer,
-                                  fmt::format("the claim \"{}\" does not hold: {}", claim.says, claim.measured))
-                << '\n';
+      rendered.warnings += "pita: warning: " +
+                           scene::located(scene.path, claim.pointer,
+                                          fmt::format("the claim \"{}\" does not hold: {}", claim.says,
+                                                      claim.measured)) +
+                           '\n';
     }
   }
-  std::vector<std::pair<fs::path, std::string>> files;
   for (const Target& target : targets_for(options, path, plan.formats, plan.single_file)) {
-    files.emplace_back(target.path, render::render_figure(scene, figure, target.format, plan.scale, options.budget));
+    rendered.files.emplace_back(target.path,
+                                render::render_figure(scene, figure, target.format, plan.scale, options.budget));
   }
-  render::write_files_atomically(files);
-  for (const auto& [file, bytes] : files) std::cout << "wrote " << file.string() << '\n';
+  return rendered;
+}
+
+// The files of a scene are written all or none (render/output_file.hpp).
+void write_scene(const RenderedScene& rendered) {
+  render::write_files_atomically(rendered.files);
+  for (const auto& [file, bytes] : rendered.files) std::cout << "wrote " << file.string() << '\n';
   // Flushed, so that an interrupted run still lists what it wrote.
   std::cout.flush();
 }
@@ -385,15 +402,28 @@ ExitCode run_render(const RenderOptions& options) {
     }
   }
   ExitCode result = ExitCode::success;
-  for (const std::string& path : options.scene_paths) {
-    try {
-      render_scene(options, plan, path);
-    } catch (...) {
-      const Failure failure = current_failure(path);
-      std::cerr << "pita: " << failure.message << '\n';
-      result = worse(result, failure.code);
-    }
-  }
+  const auto fail = [&](const Failure& failure) {
+    std::cerr << "pita: " << failure.message << '\n';
+    result = worse(result, failure.code);
+  };
+  for_each_scene(
+      options.scene_paths.size(), scene_jobs(options.jobs),
+      [&](std::size_t i) {
+        try {
+          return render_scene(options, plan, options.scene_paths[i]);
+        } catch (...) {
+          return RenderedScene{{}, {}, current_failure(options.scene_paths[i])};
+        }
+      },
+      [&](std::size_t i, RenderedScene rendered) {
+        std::cerr << rendered.warnings;
+        if (rendered.failure) return fail(*rendered.failure);
+        try {
+          write_scene(rendered);
+        } catch (...) {
+          fail(current_failure(options.scene_paths[i]));
+        }
+      });
   return result;
 }
 

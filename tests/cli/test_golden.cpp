@@ -24,6 +24,8 @@ std::string scene(const std::string& middle_x) {
   "layers": [{"type": "pattern"}, {"type": "stroke"}, {"type": "discrepancy", "scale": 0.1}, {"type": "keyframes"}]})";
 }
 
+std::string fmt_name(int i) { return "s" + std::to_string(i) + ".json"; }
+
 class Check : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -299,6 +301,43 @@ TEST_F(Check, UpdateGoldensSaysWhatChangedAndByHowMuch) {
 
 namespace pita::test {
 namespace {
+
+// Issue 38: scenes are checked and updated on several threads (--jobs), and
+// what is printed keeps the order of the scenes given, good, failing and bad
+// scenes mixed, whatever the number of jobs.
+TEST_F(Check, JobsKeepTheOrderOfTheScenes) {
+  std::vector<std::string> names;
+  for (int i = 0; i < 8; ++i) {
+    names.push_back(fmt_name(i));
+    dir.write(names.back(), i == 5 ? R"({"method": "P6", "keyframes": []})" : scene("3." + std::to_string(i + 1)));
+  }
+  std::vector<std::string> update{"update-goldens", "-j", "1"};
+  update.insert(update.end(), names.begin(), names.end());
+  const RunResult serial_update = run(update);
+  update[2] = "3";
+  fs::remove_all(dir.path() / "golden");
+  const RunResult parallel_update = run(update);
+  EXPECT_EQ(parallel_update.exit_code, 2) << parallel_update.err;  // scene 5 is bad
+  EXPECT_EQ(parallel_update.out, serial_update.out);
+  EXPECT_EQ(parallel_update.err, serial_update.err);
+  EXPECT_EQ(lines_of(parallel_update.out).size(), 7u * 3u);  // three goldens of each good scene
+  EXPECT_FALSE(fs::exists(dir.path() / "golden" / "s5"));
+
+  dir.write(names[2], scene("3.35"));  // now differs from its golden
+  std::vector<std::string> check{"check", "--jobs", "1"};
+  check.insert(check.end(), names.begin(), names.end());
+  const RunResult serial = run(check);
+  check[2] = "3";
+  const RunResult parallel = run(check);
+  EXPECT_EQ(parallel.exit_code, 2);
+  EXPECT_EQ(parallel.out, serial.out);
+  EXPECT_EQ(parallel.err, serial.err);
+  const std::vector<std::string> ok = lines_of(parallel.out);
+  ASSERT_EQ(ok.size(), 6u) << parallel.out;
+  EXPECT_EQ(ok.front(), "ok    s0.json");
+  EXPECT_EQ(ok.back(), "ok    s7.json");
+  EXPECT_LT(parallel.err.find("FAIL  s2.json"), parallel.err.find("s5.json: /keyframes")) << parallel.err;
+}
 
 TEST(CheckTolerances, SceneToleranceAppliesAndCommandLineOverridesIt) {
   const ScratchDir dir;

@@ -178,6 +178,38 @@ TEST(Render, EveryStarterSceneRenders) {
   EXPECT_EQ(files, 2 * scenes);
 }
 
+// Issue 38: several scenes are rendered on several threads (--jobs) into the
+// same bytes, with the lines printed in the order of the scenes.
+TEST(Render, JobsGiveTheSameFilesAndLinesInOrder) {
+  const ScratchDir dir;
+  std::vector<std::string> args{"render"};
+  for (const std::string name : {"fig01-eight-pitas", "fig13-knot-ratio", "sam-fig01-regular-patterns",
+                                 "fig07-independent-pitas"}) {
+    args.push_back((fs::path(PITA_SOURCE_DIR) / "scenes" / (name + ".json")).string());
+  }
+  dir.write("bad.json", kBadScene);
+  args.insert(args.begin() + 3, "bad.json");
+  const auto run_with = [&](const std::string& jobs, const std::string& out) {
+    std::vector<std::string> with = args;
+    with.insert(with.end(), {"-o", out, "--format", "svg,png", "--jobs", jobs});
+    return run_pita(with, dir.path());
+  };
+  const RunResult serial = run_with("1", "one");
+  const RunResult parallel = run_with("2", "two");
+  EXPECT_EQ(serial.exit_code, 2);
+  EXPECT_EQ(parallel.exit_code, 2);
+  EXPECT_EQ(parallel.err, serial.err);
+  std::string expected = serial.out;
+  for (std::size_t at = expected.find("one/"); at != std::string::npos; at = expected.find("one/", at)) {
+    expected.replace(at, 4, "two/");
+  }
+  EXPECT_EQ(parallel.out, expected);
+  EXPECT_EQ(lines_of(parallel.out).size(), 8u) << parallel.out;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "one")) {
+    EXPECT_EQ(read_file(dir.path() / "two" / entry.path().filename()), read_file(entry.path())) << entry.path();
+  }
+}
+
 TEST(Render, UsageErrorsExitTwo) {
   const ScratchDir dir;
   dir.write("good.json", kGoodScene);
