@@ -72,6 +72,8 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core")
+# pango is loaded at run time with dlopen (src/render/pango_library.hpp), so
+# dpkg-shlibdeps cannot see it: its package is named here.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libpangocairo-1.0-0")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libcairo2-dev, libpango1.0-dev, libfmt-dev, nlohmann-json3-dev, pkg-config")
 include(CPack)

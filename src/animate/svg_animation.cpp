@@ -1,7 +1,5 @@
 #include "animate/svg_animation.hpp"
 
-#include <glib.h>
-
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -13,6 +11,7 @@
 
 #include "animate/frame.hpp"
 #include "render/painter.hpp"
+#include "render/pango_library.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::animate {
@@ -38,9 +37,10 @@ std::string rgb(const scene::Color& c) {
 
 // Text in XML (g_markup_escape_text: &, <, >, quotes).
 std::string xml_escape(const std::string& text) {
-  gchar* escaped = g_markup_escape_text(text.c_str(), static_cast<gssize>(text.size()));
+  const render::PangoLibrary& glib = render::pango();
+  gchar* escaped = glib.markup_escape_text(text.c_str(), static_cast<gssize>(text.size()));
   std::string out(escaped);
-  g_free(escaped);
+  glib.free(escaped);
   return out;
 }
 
@@ -147,9 +147,10 @@ std::string prefixed_ids(std::string svg, const std::string& prefix) {
 std::string base64_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  gchar* encoded = g_base64_encode(reinterpret_cast<const guchar*>(bytes.data()), bytes.size());
+  const render::PangoLibrary& glib = render::pango();
+  gchar* encoded = glib.base64_encode(reinterpret_cast<const guchar*>(bytes.data()), bytes.size());
   std::string text(encoded);
-  g_free(encoded);
+  glib.free(encoded);
   return text;
 }
 

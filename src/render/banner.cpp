@@ -1,13 +1,13 @@
 #include "render/banner.hpp"
 
 #include <cairo.h>
-#include <pango/pangocairo.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 
 #include "render/cairo_handles.hpp"
+#include "render/pango_library.hpp"
 
 namespace pita::render {
 
@@ -21,10 +21,10 @@ struct Deleter {
   void operator()(T* p) const { Free(p); }
 };
 using PathPtr = std::unique_ptr<cairo_path_t, Deleter<cairo_path_t, cairo_path_destroy>>;
-void unref_layout(PangoLayout* layout) { g_object_unref(layout); }
+void unref_layout(PangoLayout* layout) { pango().object_unref(layout); }
 using LayoutPtr = std::unique_ptr<PangoLayout, Deleter<PangoLayout, unref_layout>>;
-using FontPtr = std::unique_ptr<PangoFontDescription,
-                                Deleter<PangoFontDescription, pango_font_description_free>>;
+void free_font_description(PangoFontDescription* description) { pango().font_description_free(description); }
+using FontPtr = std::unique_ptr<PangoFontDescription, Deleter<PangoFontDescription, free_font_description>>;
 using OptionsPtr =
     std::unique_ptr<cairo_font_options_t, Deleter<cairo_font_options_t, cairo_font_options_destroy>>;
 
@@ -39,21 +39,22 @@ void add_edge(std::vector<Point>& contour, Point a, Point b, double max_edge) {
 TextOutline text_outline(const std::string& text, const std::string& font) {
   SurfacePtr surface(cairo_recording_surface_create(CAIRO_CONTENT_ALPHA, nullptr));
   ContextPtr cr(cairo_create(surface.get()));
-  LayoutPtr layout(pango_cairo_create_layout(cr.get()));
+  const PangoLibrary& library = pango();
+  LayoutPtr layout(library.cairo_create_layout(cr.get()));
   // Unhinted outlines: the same shapes at every size and on every surface.
   OptionsPtr options(cairo_font_options_create());
   cairo_font_options_set_hint_style(options.get(), CAIRO_HINT_STYLE_NONE);
   cairo_font_options_set_hint_metrics(options.get(), CAIRO_HINT_METRICS_OFF);
-  pango_cairo_context_set_font_options(pango_layout_get_context(layout.get()), options.get());
-  pango_layout_context_changed(layout.get());
+  library.cairo_context_set_font_options(library.layout_get_context(layout.get()), options.get());
+  library.layout_context_changed(layout.get());
 
-  FontPtr description(pango_font_description_from_string(font.c_str()));
-  pango_font_description_set_absolute_size(description.get(), kLayoutSize * PANGO_SCALE);
-  pango_layout_set_font_description(layout.get(), description.get());
-  pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
+  FontPtr description(library.font_description_from_string(font.c_str()));
+  library.font_description_set_absolute_size(description.get(), kLayoutSize * PANGO_SCALE);
+  library.layout_set_font_description(layout.get(), description.get());
+  library.layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
 
   PangoRectangle ink, logical;
-  pango_layout_get_extents(layout.get(), &ink, &logical);
+  library.layout_get_extents(layout.get(), &ink, &logical);
   TextOutline outline;
   outline.left = static_cast<double>(ink.x) / PANGO_SCALE;
   outline.right = static_cast<double>(ink.x + ink.width) / PANGO_SCALE;
@@ -62,7 +63,7 @@ TextOutline text_outline(const std::string& text, const std::string& font) {
   const double height = outline.bottom - outline.top;
   if (!(outline.right > outline.left) || !(height > 0.0)) return outline;  // nothing visible
 
-  pango_cairo_layout_path(cr.get(), layout.get());
+  library.cairo_layout_path(cr.get(), layout.get());
   cairo_set_tolerance(cr.get(), kBannerTolerance * height);
   PathPtr path(cairo_copy_path_flat(cr.get()));
   const double max_edge = kBannerMaxEdge * height;

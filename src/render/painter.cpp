@@ -1,8 +1,7 @@
 #include "render/painter.hpp"
 
-#include <pango/pangocairo.h>
-
 #include "render/image_cache.hpp"
+#include "render/pango_library.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +112,7 @@ struct ShapePainter {
   }
 };
 
-void unref(gpointer object) { g_object_unref(object); }
+void unref(gpointer object) { pango().object_unref(object); }
 
 void paint_legend(cairo_t* cr, const Legend& legend, const Rect& area, const std::string& font) {
   for (const LegendRow& row : legend_geometry(legend, area).rows) {
@@ -192,7 +191,7 @@ Rect drawing_area(const PanelPlacement& placement) {
 
 bool is_markup(const std::string& text) {
   if (text.find('<') == std::string::npos) return false;
-  return pango_parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr,
+  return pango().parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr,
                             nullptr) != FALSE;
 }
 
@@ -203,28 +202,29 @@ using LayoutPtr = std::unique_ptr<PangoLayout, decltype(&unref)>;
 // The layout paint_text draws and text_ink_box measures: unhinted, so that
 // its size does not depend on the surface.
 LayoutPtr text_layout(cairo_t* cr, const std::string& text, const std::string& font, double size, bool markup) {
-  LayoutPtr layout(pango_cairo_create_layout(cr), &unref);
+  const PangoLibrary& library = pango();
+  LayoutPtr layout(library.cairo_create_layout(cr), &unref);
   cairo_font_options_t* options = cairo_font_options_create();
   cairo_font_options_set_hint_style(options, CAIRO_HINT_STYLE_NONE);
   cairo_font_options_set_hint_metrics(options, CAIRO_HINT_METRICS_OFF);
-  pango_cairo_context_set_font_options(pango_layout_get_context(layout.get()), options);
+  library.cairo_context_set_font_options(library.layout_get_context(layout.get()), options);
   cairo_font_options_destroy(options);
-  pango_layout_context_changed(layout.get());
-  PangoFontDescription* description = pango_font_description_from_string(font.c_str());
-  pango_font_description_set_absolute_size(description, size * PANGO_SCALE);
-  pango_layout_set_font_description(layout.get(), description);
-  pango_font_description_free(description);
+  library.layout_context_changed(layout.get());
+  PangoFontDescription* description = library.font_description_from_string(font.c_str());
+  library.font_description_set_absolute_size(description, size * PANGO_SCALE);
+  library.layout_set_font_description(layout.get(), description);
+  library.font_description_free(description);
   if (markup) {
-    pango_layout_set_markup(layout.get(), text.c_str(), static_cast<int>(text.size()));
+    library.layout_set_markup(layout.get(), text.c_str(), static_cast<int>(text.size()));
   } else {
-    pango_layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
+    library.layout_set_text(layout.get(), text.c_str(), static_cast<int>(text.size()));
   }
   return layout;
 }
 
 double layout_left(PangoLayout* layout, const TextPlacement& at) {
   int width = 0, height = 0;
-  pango_layout_get_pixel_size(layout, &width, &height);
+  pango().layout_get_pixel_size(layout, &width, &height);
   return at.align == TextAlign::left ? at.x : at.align == TextAlign::center ? at.x - 0.5 * width : at.x - width;
 }
 
@@ -235,7 +235,7 @@ void paint_text(cairo_t* cr, const std::string& text, const std::string& font, d
   const LayoutPtr layout = text_layout(cr, text, font, size, markup);
   set_color(cr, color, 1.0);
   cairo_move_to(cr, layout_left(layout.get(), {x, y, align}), y);
-  pango_cairo_show_layout(cr, layout.get());
+  pango().cairo_show_layout(cr, layout.get());
   cairo_new_path(cr);
 }
 
@@ -250,7 +250,7 @@ Rect text_ink_box(const std::string& text, const std::string& font, double size,
   }();
   const LayoutPtr layout = text_layout(measuring.get(), text, font, size, markup);
   PangoRectangle ink, logical;
-  pango_layout_get_pixel_extents(layout.get(), &ink, &logical);
+  pango().layout_get_pixel_extents(layout.get(), &ink, &logical);
   return {layout_left(layout.get(), at) + ink.x, at.y + ink.y, static_cast<double>(ink.width),
           static_cast<double>(ink.height)};
 }

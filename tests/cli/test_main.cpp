@@ -58,6 +58,29 @@ TEST_F(Main, Version) {
   EXPECT_EQ(result.err, "");
 }
 
+// Issue 38: pango (and GLib with it) is loaded with dlopen when the first
+// text is laid out (src/render/pango_library.hpp), not when pita starts. The
+// dynamic loader's own log (LD_DEBUG=files) says which libraries a process
+// loaded and how.
+TEST_F(Main, PangoIsLoadedOnlyForText) {
+  const std::vector<std::string> log_loads = {"LD_DEBUG=files"};
+  const auto loads_pango = [&](const std::vector<std::string>& args) {
+    Started started = start_pita(args, dir.path(), log_loads);
+    const RunResult result = finish_pita(started);
+    EXPECT_EQ(result.exit_code, 0) << result.err.substr(result.err.size() > 2000 ? result.err.size() - 2000 : 0);
+    EXPECT_TRUE(contains(result.err, "libcairo.so.2")) << "LD_DEBUG logged nothing";
+    return contains(result.err, "libpango");
+  };
+  dir.write("plain.json", kFigureOneScene);
+  dir.write("titled.json", R"({"title": "Fig. 1", )" + kFigureOneFields + "}");
+  EXPECT_FALSE(loads_pango({"--version"}));
+  EXPECT_FALSE(loads_pango({"eval", "plain.json"}));
+  Started titled = start_pita({"render", "titled.json", "-o", "titled.svg"}, dir.path(), log_loads);
+  const RunResult result = finish_pita(titled);
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_TRUE(contains(result.err, "file=libpangocairo-1.0.so.0 [0];  dynamically loaded by")) << result.err;
+}
+
 TEST_F(Main, UnknownOptionExitsTwo) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"--frobnicate"}, std::vector<std::string>{"eval", "x.json", "--frobnicate"}}) {

@@ -40,6 +40,8 @@ for library in libc.so.6 libstdc++.so.6 libcairo.so.2 libpango-1.0.so.0 libpango
   fi
 done
 grep -q "fonts-dejavu-core" <<< "$depends" || fail "Depends lacks fonts-dejavu-core: $depends"
+# pango is loaded with dlopen when text is first drawn (src/render/pango_library.hpp): ldd cannot see it.
+grep -q "libpangocairo-1.0-0" <<< "$depends" || fail "Depends lacks libpangocairo-1.0-0 (loaded at run time): $depends"
 
 root="$scratch/root"
 dpkg -x "$deb" "$root"
