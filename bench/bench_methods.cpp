@@ -1,6 +1,11 @@
 // ns per frame of every method. Run: build/pita_bench
 //   BM_Frame/<method>:   D(t) of a prepared motion (what sampling a figure costs)
 //   BM_Prepare/<method>: building the motion from its keyframes plus one frame
+//   BM_LoopOverhead:     BM_Frame's loop with no frame in it: what the timing
+//                        itself costs per iteration. Debian's libbenchmark is
+//                        built without NDEBUG ("Library was built as DEBUG"); the
+//                        timed loop is inlined from its header into this -O3
+//                        file, so only the code between batches is the library's.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -29,6 +34,17 @@ void BM_Frame(benchmark::State& state, Method m) {
   }
   state.SetItemsProcessed(state.iterations());
 }
+
+void BM_LoopOverhead(benchmark::State& state) {
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 1.0 / 1024.0;
+    if (t > 1.0) t -= 1.0;
+    benchmark::DoNotOptimize(t);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LoopOverhead);
 
 void BM_Prepare(benchmark::State& state, Method m) {
   const std::vector<Keyframe> k = keyframes(m);

@@ -317,11 +317,11 @@ def report_sweep(ctx):
 
 def report_methods(ctx):
     """One frame, and one preparation, of each method."""
-    frames = bench_json(ctx, "BM_Frame/|BM_Prepare/", 0.2, 3)
+    frames = bench_json(ctx, "BM_Frame/|BM_Prepare/|BM_LoopOverhead", 0.2, 3)
     methods = [name.split("/", 1)[1] for name in frames if name.startswith("BM_Frame/")]
     lines = [
         "```sh",
-        "build/pita_bench --benchmark_filter='BM_Frame/|BM_Prepare/' --benchmark_min_time=0.2 "
+        "build/pita_bench --benchmark_filter='BM_Frame/|BM_Prepare/|BM_LoopOverhead' --benchmark_min_time=0.2 "
         "--benchmark_repetitions=3 --benchmark_report_aggregates_only=true",
         "```",
         "",
@@ -333,6 +333,13 @@ def report_methods(ctx):
         lines.append(f"| {method} | {bench_ns(frames[f'BM_Frame/{method}']):.0f} | "
                      f"{bench_ns(prepare):.0f} |" if prepare else f"| {method} | "
                      f"{bench_ns(frames[f'BM_Frame/{method}']):.0f} | |")
+    loop = frames.get("BM_LoopOverhead")
+    if loop:
+        lines += ["", f"The timing loop alone (`BM_LoopOverhead`, the loop of `BM_Frame` with no frame in it) costs "
+                      f"{bench_ns(loop):.1f} ns per iteration: Debian's Google Benchmark library is built without "
+                      "NDEBUG (it warns \"Library was built as DEBUG\"), but the timed loop is inlined from its "
+                      "header into `pita_bench`, built `-O3`, so the library's own build only touches the code "
+                      "between batches."]
     return "\n".join(lines)
 
 
@@ -364,6 +371,50 @@ def report_png(ctx):
     return "\n".join(lines)
 
 
+def report_existence(ctx):
+    """The 3D existence experiment: the test of N61 against Eigen, the curve, and the audits."""
+    benches = bench_json(ctx, "Existence3", 0.5, 3)
+    pita = ctx.tool("pita")
+    commands = {
+        "angles": [pita, "audit", "sam3d-existence", "-q"],
+        "curve": [pita, "audit", "sam3d-existence", "--curve", "4" if ctx.check else "48", "-q"],
+        "figure": [pita, "render", "scenes/sam-fig06-existence-3d.json", "-o", str(ctx.scratch / "existence.png")],
+    }
+    results = interleaved(commands, ctx.rounds(3))
+    wall = {label: median([r[0] for r in runs]) for label, runs in results.items()}
+    cpu = {label: median([r[1] for r in runs]) for label, runs in results.items()}
+
+    def bench_cell(name, unit_ns, unit):
+        bench = benches.get(name)
+        return f"{bench_ns(bench) / unit_ns:.1f} {unit}" if bench else ""
+
+    return "\n".join([
+        "```sh",
+        "build/pita_bench --benchmark_filter=Existence3 --benchmark_min_time=0.5 --benchmark_repetitions=3 "
+        "--benchmark_report_aggregates_only=true",
+        "# then each of these once per round, 3 rounds, interleaved; medians",
+        "build/pita audit sam3d-existence -q              # the paper's three angles, 81 axes, 17 angles",
+        "build/pita audit sam3d-existence --curve 48 -q   # the figure's curve",
+        "build/pita render scenes/sam-fig06-existence-3d.json -o existence.png",
+        "```",
+        "",
+        "| | time |",
+        "|---|---|",
+        "| `has_real_logarithm` on one perturbed rotation (N61's sign and discriminant test) | "
+        + bench_cell("BM_Existence3Test", 1, "ns") + " |",
+        "| the same answer from Eigen's `EigenSolver<Matrix3d>` | " + bench_cell("BM_Existence3EigenSolver", 1, "ns")
+        + " |",
+        "| the curve at 13 angles over 21 axes, one thread (`BM_Existence3Curve/12`) | "
+        + bench_cell("BM_Existence3Curve/12", 1e6, "ms") + " |",
+        f"| `pita audit sam3d-existence` (three bisections over 27 million matrices per `p`), two cores | "
+        f"{wall['angles']:.2f} s wall, {cpu['angles']:.2f} s CPU |",
+        f"| `pita audit sam3d-existence --curve 48` (the figure's 49 angles), two cores | "
+        f"{wall['curve']:.2f} s wall, {cpu['curve']:.2f} s CPU |",
+        f"| `pita render` of `sam-fig06-existence-3d` (`\"steps\": 24`, PNG) | "
+        f"{wall['figure']:.2f} s wall, {cpu['figure']:.2f} s CPU |",
+    ])
+
+
 def report_summary(ctx):
     """The README's few numbers, from the reports above (run here if they were not)."""
     for name in ("startup", "eval", "check", "sweep"):
@@ -392,6 +443,7 @@ REPORTS = {
     "sweep": report_sweep,
     "methods": report_methods,
     "png": report_png,
+    "existence": report_existence,
     "summary": report_summary,  # last: it reuses the numbers of the reports run before it
 }
 
