@@ -51,7 +51,8 @@ std::string nearest_pointer(const Json& document, const std::vector<std::string>
     } else if (at->is_array() && !at->empty()) {
       const std::size_t last = at->size() - 1;
       const std::size_t i = is_index(token) ? std::min<std::size_t>(std::stoull(token.substr(0, 18)), last) : last;
-      nearest += "/" + std::to_string(i);
+      nearest += '/';
+      nearest += std::to_string(i);
       at = &(*at)[i];
     } else {
       break;

@@ -63,7 +63,9 @@ TEST(CanvasGeometry, OutlinesAreTheShapesOnTheCanvas) {
   ASSERT_TRUE(arrow.has_value());
   ASSERT_EQ(arrow->edges.size(), 1u);
   EXPECT_NEAR(std::abs(arrow->edges[0].b - Point(110, 100)), 0.0, 1e-12);
-  EXPECT_FALSE(canvas_outline(Label{"x", {0, 0}}, view).has_value());
+  Label label;
+  label.text = "x";
+  EXPECT_FALSE(canvas_outline(label, view).has_value());
 }
 
 }  // namespace
