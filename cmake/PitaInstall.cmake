@@ -9,7 +9,11 @@
 #   P/share/bash-completion/completions/pita, P/share/zsh/vendor-completions/_pita
 #   P/share/doc/pita/                   README.md, CHANGELOG.md, docs/
 # and cpack -G DEB packs the same into pita_<version>_<arch>.deb (prefix /usr).
+# With PITA_PYTHON, cpack makes a second package, python3-pita: the Python
+# module (component python, src/python/CMakeLists.txt); everything else is
+# the component pita.
 # Included by the top CMakeLists.txt after src/.
+set(CMAKE_INSTALL_DEFAULT_COMPONENT_NAME pita)
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -76,4 +80,21 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # dpkg-shlibdeps cannot see it: its package is named here.
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "fonts-dejavu-core, libpangocairo-1.0-0")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "libeigen3-dev, libcairo2-dev, libpango1.0-dev, libfmt-dev, nlohmann-json3-dev, pkg-config")
+if(PITA_PYTHON)
+  set(CPACK_DEB_COMPONENT_INSTALL ON)
+  set(CPACK_COMPONENTS_ALL pita python)
+  set(CPACK_DEBIAN_PITA_PACKAGE_NAME pita)
+  set(CPACK_DEBIAN_PITA_FILE_NAME DEB-DEFAULT)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-pita)
+  set(CPACK_DEBIAN_PYTHON_FILE_NAME DEB-DEFAULT)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+  set(CPACK_COMPONENT_PYTHON_DESCRIPTION
+      "Python module pita: the PITAs, steady morphs, SAM and EAR of pita from Python, vectorised over NumPy.")
+  set(CPACK_DEBIAN_PYTHON_DESCRIPTION
+      "Python module of pita: the interpolating motions of Rossignac and Vinacua\n The PITAs, the steady morph of arrows, the Steady Affine Morphs and the real powers of affinities (EAR), and the figures of pita's scene files, from Python and Jupyter: the same C++ as the pita command line, vectorised over NumPy arrays.")
+  # The module is built for Debian's python3 (3.11 on Debian 12) and returns NumPy arrays.
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
+      "python3 (>= ${PITA_PYTHON_VERSION}), python3 (<< ${PITA_PYTHON_NEXT_VERSION}), python3-numpy, fonts-dejavu-core, libpangocairo-1.0-0")
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "pita, python3-matplotlib, jupyter-nbconvert")
+endif()
 include(CPack)

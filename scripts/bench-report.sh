@@ -10,5 +10,5 @@
 #   scripts/bench-report.sh --check      each report's commands once, tiny (the ctest docs.bench_report)
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
-pita_build_tests pita pita_bench pita_cairo_floor pita_pango_floor pita_fmt_floor >/dev/null
+pita_build_tests pita pita_bench pita_cairo_floor pita_pango_floor pita_fmt_floor pita_python >/dev/null
 exec python3 "$PITA_ROOT/scripts/bench_report.py" --build "$PITA_BUILD" "$@"

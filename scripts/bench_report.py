@@ -37,7 +37,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-DOCS = [ROOT / "docs" / "explanation" / "performance.md", ROOT / "README.md"]
+DOCS = [ROOT / "docs" / "explanation" / "performance.md", ROOT / "docs" / "guide" / "python.md", ROOT / "README.md"]
 FIG01 = "scenes/fig01-eight-pitas.json"
 BLOCK = re.compile(r"(<!-- bench-report:begin (?P<name>[\w-]+) -->\n)(?P<body>.*?)(<!-- bench-report:end (?P=name) -->)",
                    re.S)
@@ -415,12 +415,62 @@ def report_existence(ctx):
     ])
 
 
+def report_python(ctx):
+    """The Python module against the C++ it calls (BM_StageFrame/P6, BM_PowerEar) and against SciPy."""
+    module = sorted((ctx.build / "python").glob("pita.cpython-*.so"))
+    if not module:
+        raise RuntimeError(f"the Python module is not built in {ctx.build} (configure with -DPITA_PYTHON=ON)")
+    python = "/usr/bin/python3" if Path("/usr/bin/python3").exists() else sys.executable
+    out = ctx.scratch / "python.json"
+    command = [python, str(ROOT / "bench" / "bench_python.py")] + (["--check"] if ctx.check else [])
+    previous = os.environ.get("PYTHONPATH")
+    os.environ["PYTHONPATH"] = str(ctx.build / "python")
+    try:
+        run(command, stdout=out)
+    finally:
+        if previous is None:
+            del os.environ["PYTHONPATH"]
+        else:
+            os.environ["PYTHONPATH"] = previous
+    numbers = json.loads(out.read_text())
+    cpp = bench_json(ctx, "BM_StageFrame/P6$|BM_PowerEar$", 0.2, 3)
+    frame_ns, ear_ns = bench_ns(cpp["BM_StageFrame/P6"]), bench_ns(cpp["BM_PowerEar"])
+    ctx.facts["python"] = {"ratio": numbers["motion_ns"] / frame_ns, "scipy": numbers["scipy_us"] * 1e3 / numbers["ear_ns"]}
+    return "\n".join([
+        "```sh",
+        "PYTHONPATH=build/python /usr/bin/python3 bench/bench_python.py",
+        "build/pita_bench --benchmark_filter='BM_StageFrame/P6$|BM_PowerEar$' --benchmark_min_time=0.2 "
+        "--benchmark_repetitions=3 --benchmark_report_aggregates_only=true",
+        "```",
+        "",
+        "| what | Python (`import pita`) | C++ | ratio |",
+        "|---|---|---|---|",
+        f"| P6 frames: `motion(times)`, {grouped(numbers['frames'])} times in one call, against "
+        f"`BM_StageFrame/P6` (the frames `pita eval` computes) | {numbers['motion_ns']:.1f} ns / frame | "
+        f"{frame_ns:.1f} ns / frame | {numbers['motion_ns'] / frame_ns:.2f}× |",
+        f"| `ear_power(M, 0.5)` over {grouped(numbers['matrices'])} different 2D affinities, against "
+        f"`BM_PowerEar` | {numbers['ear_ns']:.1f} ns / matrix | {ear_ns:.1f} ns / matrix | "
+        f"{numbers['ear_ns'] / ear_ns:.2f}× |",
+        f"| `scipy.linalg.fractional_matrix_power` in a loop over {grouped(numbers['scipy_count'])} of the same "
+        f"matrices (homogeneous 3x3) | {numbers['scipy_us']:.0f} µs / matrix: "
+        f"{numbers['scipy_us'] * 1e3 / numbers['ear_ns']:.0f}× `ear_power` | | |",
+        f"| `import pita`, beyond starting python3 and importing NumPy | {numbers['import_ms']:.1f} ms | | |",
+    ])
+
+
 def report_summary(ctx):
     """The README's few numbers, from the reports above (run here if they were not)."""
     for name in ("startup", "eval", "check", "sweep"):
         if name not in ctx.facts:
             REPORTS[name](ctx)
     startup, evaluation, check, sweep = (ctx.facts[n] for n in ("startup", "eval", "check", "sweep"))
+    if "python" not in ctx.facts and sorted((ctx.build / "python").glob("pita.cpython-*.so")):
+        report_python(ctx)
+    python = ctx.facts.get("python")
+    python_line = ([f"| `import pita`: a P6 motion at 10^6 times, and EAR over 10^5 matrices "
+                    f"(docs/guide/python.md) | {python['ratio']:.2f}× the cost of the same frames in C++; "
+                    f"`ear_power` {python['scipy']:.0f}× as fast as SciPy's `fractional_matrix_power` in a loop |"]
+                   if python else [])
     return "\n".join([
         "| what | measured |",
         "|---|---|",
@@ -433,7 +483,7 @@ def report_summary(ctx):
         f"{check['two']:.2f} s on two (`--jobs`) |",
         f"| one variant of a `pita sweep` of Fig. 1 | SVG {ms(sweep['svg'])}, PNG {ms(sweep['png'])}, "
         f"metrics (CSV) {ms(sweep['csv'])} |",
-    ])
+    ] + python_line)
 
 
 REPORTS = {
@@ -444,6 +494,7 @@ REPORTS = {
     "methods": report_methods,
     "png": report_png,
     "existence": report_existence,
+    "python": report_python,
     "summary": report_summary,  # last: it reuses the numbers of the reports run before it
 }
 
@@ -484,6 +535,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--build", required=True, help="the build folder (pita, pita_bench, the floors)")
     parser.add_argument("--check", action="store_true", help="run every report once at a tiny size; rewrite nothing")
+    parser.add_argument("--skip", action="append", default=[], metavar="NAME",
+                        help="a report not to run (python, in a build without -DPITA_PYTHON=ON)")
     parser.add_argument("names", nargs="*", help="reports to run (default: all): " + ", ".join(REPORTS))
     args = parser.parse_args()
     os.chdir(ROOT)  # the commands name scenes/... as the docs show them
@@ -497,6 +550,9 @@ def main():
     ctx = Context(args.build, args.check)
     try:
         for name in args.names or list(REPORTS):
+            if name in args.skip:
+                print(f"bench-report: {name} skipped (--skip {name})", file=sys.stderr)
+                continue
             started = time.perf_counter()
             try:
                 table = REPORTS[name](ctx)

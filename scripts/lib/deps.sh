@@ -37,6 +37,11 @@ PITA_TEST_PACKAGES=(
   parallel                    # tests: the GNU parallel recipe of pita sweep (docs/reference/sweep.md "pita sweep")
   time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
   man-db                      # tests: the man page rendered by man -l (with groff-base; tests/packaging)
+  pybind11-dev python3-dev    # the Python module (-DPITA_PYTHON=ON, src/python)
+  python3-numpy python3-pytest  # the Python module: its arrays and its tests (tests/python)
+  python3-scipy               # tests: SciPy's matrix functions, the module's independent reference
+  python3-matplotlib          # the Python examples (examples/python) plot with it
+  jupyter-nbconvert python3-ipykernel  # tests: the notebook examples/python/tour.ipynb, executed
 )
 
 # Only for scripts/test.sh --sanitize and scripts/fuzz.sh.
@@ -94,7 +99,7 @@ pita_build() {
 pita_build_tests() {
   pita_install_dependencies "${PITA_TEST_PACKAGES[@]}" || return 1
   cmake -S "$PITA_ROOT" -B "$PITA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE="${PITA_BUILD_TYPE:-Release}" \
-    -DPITA_BUILD_TESTS=ON -DPITA_BUILD_BENCHMARKS=ON -DPITA_REQUIRE_TESTS=ON >/dev/null || return 1
+    -DPITA_BUILD_TESTS=ON -DPITA_BUILD_BENCHMARKS=ON -DPITA_REQUIRE_TESTS=ON -DPITA_PYTHON=ON >/dev/null || return 1
   local targets=()
   if [ $# -gt 0 ]; then targets=(--target "$@"); fi
   cmake --build "$PITA_BUILD" -j "$PITA_JOBS" "${targets[@]}"

@@ -445,6 +445,17 @@ MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, cons
   return out;
 }
 
+void check_measure_work(const scene::Scene& scene, const MeasureOptions& options) {
+  double work = 0.0;
+  for (const scene::Panel& panel : scene.panels) work += measure_cost(panel, options);
+  if (work > scene::kMaxEvalWork) {
+    throw scene::SceneError(scene.path, scene.panels.size() > 1 ? "/panels" : "/keyframes",
+                            fmt::format("measuring these motions costs about {:.3g} frames of a method, above the "
+                                        "limit of {:.0g}: fewer keyframes or panels, or the local \"blend\" chain",
+                                        work, scene::kMaxEvalWork));
+  }
+}
+
 std::vector<MotionMeasures> measure_scene(const scene::Scene& scene, const MeasureOptions& options) {
   std::vector<MotionMeasures> all;
   const motion::Stage stage(scene);

@@ -144,6 +144,11 @@ double measure_cost(const scene::Panel& panel, const MeasureOptions& options = {
 // NoMotion (no_motion is set).
 MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options = {});
 
+// Refuses (scene::SceneError at /panels, or /keyframes for a scene without
+// panels) a scene whose measure_cost over every panel exceeds
+// scene::kMaxEvalWork: what `pita measure` checks before measuring.
+void check_measure_work(const scene::Scene& scene, const MeasureOptions& options = {});
+
 // Every panel of the scene (the scene itself when it has no panels).
 std::vector<MotionMeasures> measure_scene(const scene::Scene& scene, const MeasureOptions& options = {});
 

@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -353,6 +354,22 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   }
   temporary.commit();
   return request.out;
+}
+
+std::string find_ffmpeg() {
+  if (const char* given = std::getenv("PITA_FFMPEG")) return ::access(given, X_OK) == 0 ? given : "";
+  const char* path = std::getenv("PATH");
+  const std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = dirs.find(':', start);
+    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    const std::string candidate = (dir.empty() ? std::string(".") : dir) + "/ffmpeg";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return "";
 }
 
 }  // namespace pita::animate

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "animate/output.hpp"
@@ -15,6 +16,10 @@
 #include "scene/scene.hpp"
 
 namespace pita::animate {
+
+// The ffmpeg that writes videos: $PITA_FFMPEG if set (when it is executable),
+// else "ffmpeg" found on PATH; "" when there is none.
+std::string find_ffmpeg();
 
 // Writes request.out. `stage`: the scene's motions for a "motion" timeline
 // (frame_figure), else nullptr. Throws AnimationError (no ffmpeg, exit 2),

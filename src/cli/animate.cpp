@@ -8,6 +8,7 @@
 
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"
+#include "animate/video.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "render/budget.hpp"
@@ -123,7 +124,7 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.budget = options.budget;
   request.progress = progress_allowed(options.quiet);
   request.threads = threads_from_environment();
-  request.ffmpeg = ffmpeg_from_environment();
+  request.ffmpeg = animate::find_ffmpeg();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
     const animate::Timeline timeline =

@@ -13,10 +13,6 @@ namespace pita::cli {
 // PITA_THREADS when it is a whole number from 1 to 64, else every core (1 to 64).
 int threads_from_environment();
 
-// $PITA_FFMPEG if set (when it is executable), else "ffmpeg" found on PATH;
-// "" when there is none.
-std::string ffmpeg_from_environment();
-
 // Whether progress may be shown: not --quiet, and not in CI (CI set, not empty).
 bool progress_allowed(bool quiet);
 

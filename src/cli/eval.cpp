@@ -20,9 +20,9 @@
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
 #include "scene/frames.hpp"
+#include "motion/evaluation.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
-#include "motion/stage.hpp"
 #include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
@@ -43,19 +43,6 @@ std::string_view trimmed(std::string_view text) {
   while (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
   while (!text.empty() && (text.back() == ' ' || text.back() == '\t')) text.remove_suffix(1);
   return text;
-}
-
-// The frames of a scene without a motion (scene::has_motion_keys: a pose
-// scene without poses): none, in the format and with the columns of its kind
-// (poses of the plane or of space).
-std::string no_motion_text(const scene::Scene& scene, bool csv) {
-  const std::string method = scene::method_id(scene.keys);
-  if (std::holds_alternative<scene::SpacePoseKeys>(scene.keys)) {
-    const std::span<const scene::PoseFrame3> none;
-    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
-  }
-  const std::span<const scene::PoseFrame> none;
-  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
 }
 
 // Standard output as a sink: what was written cannot be taken back.
@@ -355,30 +342,22 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
         throw InputError(fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate",
                                      scene.path));
       }
-      sink.write(no_motion_text(scene, options.format == "csv"));
+      sink.write(motion::no_frames_text(scene, options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json));
       outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
       return outcome;
     }
-    const motion::Stage stage(scene);
-    stage.check();  // every panel's motion must exist, as for `pita render`
     if (options.panel && options.method) {
       throw InputError("--panel and --method: a panel evaluates with its own method; give --method without "
                        "--panel for the scene's motion, or change the panel's \"method\"");
     }
-    if (options.panel) {
-      if (*options.panel < 0 || static_cast<std::size_t>(*options.panel) >= scene.panels.size()) {
-        throw InputError(fmt::format("--panel: {} has {} panel{} (0 to {}); got {}", scene.path, scene.panels.size(),
-                                     scene.panels.size() == 1 ? "" : "s", scene.panels.size() - 1, *options.panel));
-      }
+    std::optional<motion::Evaluation> evaluation;
+    try {
+      evaluation.emplace(scene, options.panel);
+    } catch (const std::out_of_range& error) {
+      throw InputError(fmt::format("--panel: {}", error.what()));
     }
-    const scene::Panel own = scene::scene_panel(scene);
-    const std::optional<motion::Stage> own_stage = options.panel || motion::own_is_first_panel(scene)
-                                                       ? std::nullopt
-                                                       : std::make_optional<motion::Stage>(scene, own);
-    const motion::Stage& chosen = own_stage ? *own_stage : stage;
-    const std::size_t index = options.panel ? static_cast<std::size_t>(*options.panel) : 0;
-    const scene::Panel& panel = chosen.panel(index);
-    const motion::SceneMotion& motion = chosen.motion(index);
+    const scene::Panel& panel = evaluation->panel();
+    const motion::SceneMotion& motion = evaluation->motion();
     const motion::FrameTimes at =
         times ? motion::FrameTimes(*times)
               : motion::FrameTimes(motion, samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));

@@ -135,4 +135,15 @@ double check_eval_work(const scene::Scene& scene, const scene::Panel& panel, con
   return work;
 }
 
+std::string no_frames_text(const scene::Scene& scene, FramesFormat format) {
+  const std::string method = scene::method_id(scene.keys);
+  const bool csv = format == FramesFormat::csv;
+  if (std::holds_alternative<scene::SpacePoseKeys>(scene.keys)) {
+    const std::span<const scene::PoseFrame3> none;
+    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
+  }
+  const std::span<const scene::PoseFrame> none;
+  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
+}
+
 }  // namespace pita::motion

@@ -14,6 +14,7 @@
 #include "core/arrow.hpp"
 #include "motion/scene_motion.hpp"
 #include "scene/frames.hpp"
+#include "scene/scene.hpp"
 
 namespace pita::motion {
 
@@ -90,6 +91,11 @@ inline constexpr std::size_t kFramesChunkBytes = std::size_t{1} << 16;
 // sink.write pass through.
 void write_frames(const scene::Panel& panel, const SceneMotion& motion, const FrameTimes& times, FramesFormat format,
                   const TextSink& sink);
+
+// What `pita eval` prints for a scene without a motion (scene::has_motion_keys:
+// a pose scene without poses): no frames, in the format and with the columns
+// of its kind (poses of the plane or of space).
+std::string no_frames_text(const scene::Scene& scene, FramesFormat format);
 
 // The same text as one string.
 std::string frames_text(const scene::Panel& panel, const SceneMotion& motion, std::span<const double> times,

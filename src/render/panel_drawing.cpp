@@ -106,7 +106,7 @@ std::vector<analysis::FrameDerivatives> PanelBuilder::derivatives(const std::vec
 
 RenderError::RenderError(const std::string& file, const std::string& pointer,
                          const std::string& reason)
-    : std::runtime_error(scene::located(file, pointer, reason)) {}
+    : std::runtime_error(scene::located(file, pointer, reason)), file_(file), pointer_(pointer), reason_(reason) {}
 
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {

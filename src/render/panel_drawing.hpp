@@ -20,6 +20,15 @@ namespace pita::render {
 class RenderError : public std::runtime_error {
  public:
   RenderError(const std::string& file, const std::string& pointer, const std::string& reason);
+
+  const std::string& file() const { return file_; }
+  const std::string& pointer() const { return pointer_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string file_;
+  std::string pointer_;
+  std::string reason_;
 };
 
 // One frame of an animation ("what": "motion", docs/reference/animate.md "Animation"): the

@@ -33,8 +33,8 @@ inline const std::string kFigureOneFields = R"("method": "P6", "keyframes": [
 inline const std::string kFigureOneScene = "{" + kFigureOneFields + "}";
 
 // The pita under test: build/pita (PITA_BINARY), or the binary the environment
-// variable PITA_TEST_BINARY names: ctest packaging.cli_installed runs this
-// suite against the installed pita (tests/packaging/CMakeLists.txt).
+// variable PITA_TEST_BINARY names: ctest packaging.cli_installed runs these
+// tests against the installed pita (tests/packaging/check_cli_installed.sh).
 inline const char* pita_binary() {
   const char* chosen = std::getenv("PITA_TEST_BINARY");
   return chosen != nullptr && *chosen != '\0' ? chosen : PITA_BINARY;

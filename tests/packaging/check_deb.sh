@@ -5,9 +5,13 @@
 # with dpkg -x into a scratch root, every file dpkg -c lists is there, the
 # pieces docs/guide/install.md "Install" names are at their places under /usr, and the
 # unpacked binary runs (--version, and eval of a scene).
-# Usage: check_deb.sh BUILD_DIR VERSION SOURCE_DIR
+# With PYTHON (a build with -DPITA_PYTHON=ON), cpack also makes
+# python3-pita_<version>_<arch>.deb: its Depends names python3 and NumPy, it
+# holds the module and its stubs only, and the unpacked module imports and
+# evaluates (check_python_deb below).
+# Usage: check_deb.sh BUILD_DIR VERSION SOURCE_DIR [PYTHON]
 set -euo pipefail
-build="$1" version="$2" source="$3"
+build="$1" version="$2" source="$3" python="${4:-}"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
 
@@ -68,4 +72,35 @@ if grep -E 'test_|gtest|bench|\.o$' <<< "$listing"; then fail "test or build fil
 [ "$("$root/usr/bin/pita" --version)" = "pita $version" ] || fail "unpacked pita --version: $("$root/usr/bin/pita" --version)"
 "$root/usr/bin/pita" eval "$source/scenes/fig01-eight-pitas.json" --samples 3 >/dev/null ||
   fail "unpacked pita cannot evaluate scenes/fig01-eight-pitas.json"
+
+if [ -n "$python" ]; then
+  pydeb="$scratch/out/python3-pita_${version}_${arch}.deb"
+  if [ ! -f "$pydeb" ]; then
+    fail "cpack did not make python3-pita_${version}_${arch}.deb; it made: $(ls "$scratch/out")"
+  else
+    [ "$(dpkg-deb -f "$pydeb" Package)" = python3-pita ] || fail "Package is not python3-pita"
+    [ "$(dpkg-deb -f "$pydeb" Version)" = "$version" ] || fail "python3-pita: Version is not $version"
+    pydepends="$(dpkg-deb -f "$pydeb" Depends)"
+    for needed in "python3 (>= " python3-numpy libpangocairo-1.0-0 fonts-dejavu-core libcairo2; do
+      grep -qF "$needed" <<< "$pydepends" || fail "python3-pita: Depends lacks $needed: $pydepends"
+    done
+    pylisting="$(dpkg -c "$pydeb" | awk '$1 ~ /^-/ { print $6 }' | sed 's|^\./||')"
+    grep -qE '^usr/lib/python3/dist-packages/pita\.cpython-[0-9]+-[^/]*\.so$' <<< "$pylisting" ||
+      fail "python3-pita lacks usr/lib/python3/dist-packages/pita.cpython-*.so: $pylisting"
+    grep -qxF usr/lib/python3/dist-packages/pita.pyi <<< "$pylisting" || fail "python3-pita lacks pita.pyi"
+    if grep -vE '^usr/lib/python3/dist-packages/' <<< "$pylisting" | grep .; then
+      fail "python3-pita holds files outside usr/lib/python3/dist-packages"
+    fi
+    if grep -qE 'dist-packages' <<< "$listing"; then fail "the pita package holds the Python module"; fi
+    pyroot="$scratch/pyroot"
+    dpkg -x "$pydeb" "$pyroot"
+    PYTHONPATH="$pyroot/usr/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 "$python" -c "
+import pita, sys
+assert pita.__file__.startswith(sys.argv[1]), pita.__file__
+assert pita.__version__ == sys.argv[2], pita.__version__
+scene = pita.load_scene(sys.argv[3] + '/scenes/fig01-eight-pitas.json')
+assert scene.eval(samples=3).m.shape == (3,)
+" "$pyroot" "$version" "$source" || fail "the unpacked python3-pita does not import and evaluate"
+  fi
+fi
 exit "$status"

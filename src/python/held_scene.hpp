@@ -1,0 +1,27 @@
+// A scene read once and its motion built once, kept alive by the Python
+// objects that use them (pita.Motion, pita.Scene).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "motion/evaluation.hpp"
+#include "python/bindings.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::python {
+
+struct HeldMotion {
+  scene::Scene scene;
+  std::unique_ptr<motion::Evaluation> evaluation;  // refers to `scene`: this object does not move
+};
+
+// The motion of the scene given as JSON text (named `source` in errors).
+// Throws scene::SceneError, motion::NoMotion.
+std::shared_ptr<HeldMotion> hold_motion(const std::string& text, const std::string& source);
+
+// The frames of `motion` at `times`, as pita.Motion returns them.
+py::object sample(const motion::SceneMotion& motion, const Times& times);
+
+}  // namespace pita::python

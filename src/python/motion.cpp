@@ -1,0 +1,283 @@
+// pita.methods() and pita.motion(method, keyframes, times, **options): a
+// motion built by the motion stage from a scene the call makes, as if it were
+// a file ({"method", "keyframes" or "poses", "options", ...}), so that it is
+// checked by the same reader (errors name /keyframes/1/m) and evaluated by the
+// same SceneMotion as `pita eval`.
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/chains/chain.hpp"
+#include "core/methods.hpp"
+#include "core/overloaded.hpp"
+#include "core/pitas/method_options.hpp"
+#include "core/pose_method.hpp"
+#include "motion/evaluation.hpp"
+#include "python/bindings.hpp"
+#include "python/chunks.hpp"
+#include "python/held_scene.hpp"
+
+namespace pita::python {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A Python value (numbers, strings, lists, dicts) as JSON, through Python's
+// own json module (a value it cannot write raises TypeError there).
+Json to_json(const py::handle& value) {
+  const std::string text = py::module_::import("json").attr("dumps")(value, py::arg("allow_nan") = false).cast<std::string>();
+  return Json::parse(text);
+}
+
+Json point_json(Point p) { return Json::array({p.real(), p.imag()}); }
+
+Json arrow_json(const Arrow& a) { return Json{{"p", point_json(a.p)}, {"m", a.m}, {"w", a.w}}; }
+
+Json pose_json(const Pose& pose) {
+  return std::visit(
+      [](const auto& A) {
+        Json rows = Json::array();
+        const auto n = A.b.size();
+        for (Eigen::Index i = 0; i < n; ++i) {
+          Json row = Json::array();
+          for (Eigen::Index j = 0; j < n; ++j) row.push_back(A.L(i, j));
+          row.push_back(A.b(i));
+          rows.push_back(row);
+        }
+        return Json{{"matrix", rows}};
+      },
+      pose);
+}
+
+// The scene pita.motion evaluates.
+Json motion_scene(const std::string& method, const py::sequence& keyframes, const py::object& times,
+                  const py::kwargs& options) {
+  const MethodEntry* entry = find_method_entry(method);
+  const bool poses = entry != nullptr && entry->kind == MotionKind::poses;
+  Json scene{{"method", method}};
+  std::vector<double> knots;
+  if (!times.is_none()) {
+    const Times given = read_times(times, "times");
+    if (given.scalar || given.shape.size() != 1) throw py::value_error("times: expected a list of knots, one per keyframe");
+    knots = given.values;
+    if (knots.size() != py::len(keyframes)) {
+      throw py::value_error(fmt::format("times: {} knots for {} keyframes", knots.size(), py::len(keyframes)));
+    }
+  }
+  Json items = Json::array();
+  int dimension = 2;
+  for (std::size_t i = 0; i < py::len(keyframes); ++i) {
+    const py::handle item = keyframes[i];
+    const std::string name = fmt::format("keyframes[{}]", i);
+    Json key;
+    if (py::isinstance<py::dict>(item) && (poses || !py::isinstance<Arrow>(item))) {
+      key = to_json(item);  // as a scene file gives it: {"t", "p", "m", "w"} or {"t", "matrix"}
+    } else if (poses) {
+      const Pose pose = read_pose(item, name.c_str());
+      if (pose.index() == 1) dimension = 3;
+      key = pose_json(pose);
+    } else {
+      key = arrow_json(read_arrow(item, name.c_str()));
+    }
+    if (!knots.empty()) {
+      Json timed{{"t", knots[i]}};
+      for (auto& [field, value] : key.items()) {
+        if (field != "t") timed[field] = value;
+      }
+      key = timed;
+    } else if (!key.contains("t")) {
+      throw py::value_error(fmt::format("times: give the keyframes' times (knots), or a \"t\" in each keyframe "
+                                        "(keyframes[{}] has none)",
+                                        i));
+    }
+    items.push_back(key);
+  }
+  if (dimension == 3) scene["dimension"] = 3;
+  scene[poses ? "poses" : "keyframes"] = items;
+  // Method options ("anchor", "path_mean", ...) go into "options"; the others
+  // ("chain", "timing", "subdivisions") are fields of the scene.
+  Json method_options = Json::object();
+  for (const auto& [key, value] : options) {
+    const std::string field = key.cast<std::string>();
+    const auto names = method_option_names();
+    if (field == "options") {
+      const Json given = to_json(value);
+      if (!given.is_object()) throw py::type_error("options: expected a dict of method options");
+      for (const auto& item : given.items()) method_options[item.key()] = item.value();
+    } else if (std::find(names.begin(), names.end(), field) != names.end()) {
+      method_options[field] = to_json(value);
+    } else {
+      scene[field] = to_json(value);
+    }
+  }
+  if (!method_options.empty()) scene["options"] = method_options;
+  return scene;
+}
+
+std::string kind_name(const motion::BuiltMotion& built) {
+  return std::visit(overloaded{[](const motion::ArrowTrack&) { return "arrows"; },
+                               [](const motion::PointTrack&) { return "points"; },
+                               [](const motion::PlanePoses&) { return "poses"; },
+                               [](const motion::SpacePoses&) { return "poses3"; }},
+                    built);
+}
+
+}  // namespace
+
+std::shared_ptr<HeldMotion> hold_motion(const std::string& text, const std::string& source) {
+  auto held = std::make_shared<HeldMotion>();
+  held->scene = scene::parse_scene(text, source);
+  if (!scene::has_motion_keys(held->scene.keys)) {
+    throw scene::SceneError(source, "/poses", "the scene has no poses, so no motion");
+  }
+  held->evaluation = std::make_unique<motion::Evaluation>(held->scene, std::nullopt);
+  return held;
+}
+
+py::object sample(const motion::SceneMotion& motion, const Times& times) {
+  const std::size_t n = times.values.size();
+  const std::vector<double>& t = times.values;
+  return std::visit(
+      overloaded{
+          [&](const motion::ArrowTrack&) -> py::object {
+            if (times.scalar) return arrow_object(motion.arrow_at(t.front()));
+            py::array_t<double> p = new_array(times.shape, {2}), m = new_array(times.shape, {}),
+                                w = new_array(times.shape, {}), q = new_array(times.shape, {2});
+            double *pp = p.mutable_data(), *pm = m.mutable_data(), *pw = w.mutable_data(), *pq = q.mutable_data();
+            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+              for (std::size_t i = begin; i < end; ++i) {
+                const Arrow D = motion.arrow_at(t[i]);
+                const Point e = D.q();
+                pp[2 * i] = D.p.real(), pp[2 * i + 1] = D.p.imag(), pm[i] = D.m, pw[i] = D.w;
+                pq[2 * i] = e.real(), pq[2 * i + 1] = e.imag();
+              }
+              return true;
+            });
+            return arrow_samples_type()(p, m, w, q);
+          },
+          [&](const motion::PointTrack&) -> py::object {
+            if (times.scalar) {
+              const Point x = motion.point_at(t.front());
+              return py::make_tuple(x.real(), x.imag());
+            }
+            py::array_t<double> xy = new_array(times.shape, {2});
+            double* out = xy.mutable_data();
+            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+              for (std::size_t i = begin; i < end; ++i) {
+                const Point x = motion.point_at(t[i]);
+                out[2 * i] = x.real(), out[2 * i + 1] = x.imag();
+              }
+              return true;
+            });
+            return xy;
+          },
+          [&](const motion::PlanePoses&) -> py::object {
+            if (times.scalar) return pose_object(motion.pose_at(t.front()));
+            py::array_t<double> out = new_array(times.shape, {2, 3});
+            double* data = out.mutable_data();
+            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+              for (std::size_t i = begin; i < end; ++i) write_pose(motion.pose_at(t[i]), data + 6 * i);
+              return true;
+            });
+            return out;
+          },
+          [&](const motion::SpacePoses&) -> py::object {
+            if (times.scalar) return pose_object(motion.pose3_at(t.front()));
+            py::array_t<double> out = new_array(times.shape, {3, 4});
+            double* data = out.mutable_data();
+            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+              for (std::size_t i = begin; i < end; ++i) write_pose(motion.pose3_at(t[i]), data + 12 * i);
+              return true;
+            });
+            return out;
+          }},
+      motion.built());
+}
+
+void bind_motion(py::module_& m) {
+  const py::object method_info = py::module_::import("collections").attr("namedtuple")(
+      "MethodInfo", "id mnemonic title kind min_count max_count space");
+  method_info.attr("__module__") = "pita";
+  m.attr("MethodInfo") = method_info;
+  m.def(
+      "methods",
+      [method_info]() {
+        py::list all;
+        for (const MethodEntry& entry : every_method()) {
+          const bool arrows = entry.kind == MotionKind::arrows;
+          all.append(method_info(std::string(entry.id), std::string(entry.mnemonic), std::string(entry.title),
+                                 arrows ? "arrows" : "poses", entry.min_count, entry.max_count,
+                                 !arrows && info(entry.pose_method).in_space));
+        }
+        return all;
+      },
+      R"(Every method pita evaluates, as MethodInfo(id, mnemonic, title, kind, min_count, max_count,
+space): the PITAs P1-P10 and P5S, the SMA and the other arrow methods (kind "arrows": keyframes),
+then the SAM family (kind "poses"; space is True for those that also move poses of space).
+min_count and max_count bound the keyframes or poses the method takes; more keyframes than an
+arrow method's own count make a chained track.)");
+
+  py::class_<HeldMotion, std::shared_ptr<HeldMotion>>(m, "Motion", R"(A motion built once: call it with a time
+or an array of times (scene times; outside the knots it extrapolates).
+
+  arrows    motion(0.5) is a pita.Arrow; motion(times) is ArrowSamples(p, m, w, q) with p and q of
+            shape times.shape + (2,), m and w of shape times.shape
+  points    motion(0.5) is (x, y); motion(times) has shape times.shape + (2,)
+  poses     motion(0.5) is a pita.Pose; motion(times) is [L | b] of shape times.shape + (2, 3),
+            or + (3, 4) for poses of space
+
+The frames are computed in C++ with the GIL released, exactly as `pita eval` computes them.
+Raises pita.NoMotionError where the motion is undefined or not finite.)")
+      .def("__call__", [](const HeldMotion& held, const py::handle& t) {
+        return sample(held.evaluation->motion(), read_times(t, "t"));
+      }, py::arg("t"))
+      .def_property_readonly("method", [](const HeldMotion& held) { return held.evaluation->motion().method_id(); },
+                             "The method's id: \"P6\", \"SAM\".")
+      .def_property_readonly("label", [](const HeldMotion& held) { return held.evaluation->motion().label(); },
+                             "The method as messages name it: \"P6 (La-LP)\".")
+      .def_property_readonly("kind", [](const HeldMotion& held) { return kind_name(held.evaluation->motion().built()); },
+                             "\"arrows\", \"points\", \"poses\" or \"poses3\" (poses of space).")
+      .def_property_readonly("knots", [](const HeldMotion& held) {
+        return py::tuple(py::cast(held.evaluation->motion().knots()));
+      }, "The keyframes' (or poses') times, increasing.")
+      .def_property_readonly("chain", [](const HeldMotion& held) -> py::object {
+        const auto chain = held.evaluation->motion().chain();
+        if (!chain) return py::none();
+        return py::str(std::string(info(*chain).name));
+      }, "The chain of a track of more keyframes than the method takes (\"blend\", ...), else None.")
+      .def("__repr__", [](const HeldMotion& held) {
+        const motion::SceneMotion& motion = held.evaluation->motion();
+        return fmt::format("<pita.Motion {} through {} {}, t in [{}, {}]>", motion.label(), motion.knots().size(),
+                           motion.is<motion::ArrowTrack>()   ? "keyframes"
+                           : motion.is<motion::PointTrack>() ? "points"
+                                                             : "poses",
+                           motion.first(), motion.last());
+      });
+
+  m.def(
+      "motion",
+      [](const std::string& method, const py::sequence& keyframes, const py::object& times, const py::kwargs& options) {
+        const std::string text = motion_scene(method, keyframes, times, options).dump();
+        return hold_motion(text, "<pita.motion>");
+      },
+      py::arg("method"), py::arg("keyframes"), py::arg("times") = py::none(),
+      R"(The motion of `method` through keyframes at times (knots, strictly increasing), built once.
+
+  method     a method id or mnemonic of pita.methods(): "P6", "La-LP", "SMA", "SAM", "polySAM", ...
+  keyframes  arrows (pita.Arrow, {"p", "m", "w"} or {"p", "q"} dicts, (p, m, w) tuples) for the
+             PITAs and the SMA; poses (pita.Pose, 2x3 / 3x3 / 3x4 / 4x4 matrices) for the SAM family
+  times      the knots, one per keyframe; may be left out when each keyframe dict has a "t"
+  options    method options (anchor, path_mean, magnitude_mean, knots, permutation,
+             symmetrize) and scene fields (chain, timing, subdivisions), as a scene file spells
+             them: motion("P2", arrows, [0, 1, 2], anchor="midpoint", chain="neville")
+
+Raises pita.SceneError naming the JSON Pointer of the bad value in the scene the call makes
+(e.pointer == "/keyframes/1/m"), and pita.NoMotionError when no such motion exists.)");
+}
+
+}  // namespace pita::python
