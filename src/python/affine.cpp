@@ -228,7 +228,7 @@ SamExistence existence(const Pose& M) {
 
 void bind_affine(py::module_& m) {
   m.def("sma", &sma, py::arg("A"), py::arg("B"), py::arg("t"),
-        R"(The steady morph M(A, B, t) between two arrows (PITA paper Eq. 20): M(A, B, 0) = A,
+        R"(The steady morph M(A, B, t) between two arrows (PITA Eq. 20): M(A, B, 0) = A,
 M(A, B, 1) = B, and every frame is the one before it moved by the same similarity (a
 log-spiral motion); windings included, so an extra turn of B is an extra turn of the motion.
 t outside [0, 1] extrapolates.
