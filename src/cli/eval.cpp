@@ -346,15 +346,17 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
       outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
       return outcome;
     }
+    // Every panel's motion first (a scene is judged alike by every command),
+    // then the flags, then the panel's range.
+    std::optional<motion::Evaluation> evaluation;
+    try {
+      evaluation.emplace(scene, options.method ? std::nullopt : options.panel);
+    } catch (const std::out_of_range& error) {
+      throw InputError(fmt::format("--panel: {}", error.what()));
+    }
     if (options.panel && options.method) {
       throw InputError("--panel and --method: a panel evaluates with its own method; give --method without "
                        "--panel for the scene's motion, or change the panel's \"method\"");
-    }
-    std::optional<motion::Evaluation> evaluation;
-    try {
-      evaluation.emplace(scene, options.panel);
-    } catch (const std::out_of_range& error) {
-      throw InputError(fmt::format("--panel: {}", error.what()));
     }
     const scene::Panel& panel = evaluation->panel();
     const motion::SceneMotion& motion = evaluation->motion();

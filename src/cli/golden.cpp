@@ -37,13 +37,8 @@ std::vector<fs::path> scenes_of(const GoldenOptions& options) {
 
 // The command line's tolerances, else the scene's "golden" field, else the defaults.
 golden::Tolerances tolerances_of(const GoldenOptions& o, const fs::path& scene_path) {
-  const scene::Scene s = scene::load_scene(scene_path);
-  golden::Tolerances t;
-  t.numbers = o.number_tolerance.value_or(s.golden.numbers.value_or(t.numbers));
-  t.svg = o.svg_tolerance.value_or(s.golden.svg.value_or(t.svg));
-  t.image.channel = o.pixel_tolerance.value_or(s.golden.pixel.value_or(t.image.channel));
-  t.image.max_share = o.max_differing.value_or(s.golden.max_differing.value_or(t.image.max_share));
-  return t;
+  return golden::tolerances_of(scene::load_scene(scene_path),
+                               {o.number_tolerance, o.svg_tolerance, o.pixel_tolerance, o.max_differing});
 }
 
 void add_common(CLI::App* command, GoldenOptions& o) {

@@ -164,6 +164,15 @@ FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string&
   }
 }
 
+Tolerances tolerances_of(const scene::Scene& scene, const ToleranceOverrides& given) {
+  Tolerances t;
+  t.numbers = given.numbers.value_or(scene.golden.numbers.value_or(t.numbers));
+  t.svg = given.svg.value_or(scene.golden.svg.value_or(t.svg));
+  t.image.channel = given.pixel.value_or(scene.golden.pixel.value_or(t.image.channel));
+  t.image.max_share = given.max_differing.value_or(scene.golden.max_differing.value_or(t.image.max_share));
+  return t;
+}
+
 SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
                        const Tolerances& tolerances) {
   const Outputs outputs = render_outputs(scene_path);

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "golden/number_compare.hpp"
 #include "golden/svg_compare.hpp"
 #include "lint/lint.hpp"
+#include "scene/scene.hpp"
 
 namespace pita::golden {
 
@@ -94,6 +96,17 @@ struct SceneCheck {
   bool legible() const { return lint.clean(); }  // every finding of the lint accepted by the scene
   bool passes() const { return matches() && claims_hold() && legible(); }
 };
+
+// Tolerances asked for (`pita check --number-tolerance ...`, Python's
+// Scene.check keywords), each within its range: unset ones take the scene's
+// "golden" field, else the defaults.
+struct ToleranceOverrides {
+  std::optional<double> numbers;        // [0, 1]
+  std::optional<double> svg;            // [0, 1000]
+  std::optional<int> pixel;             // [0, 255]
+  std::optional<double> max_differing;  // [0, 1]
+};
+Tolerances tolerances_of(const scene::Scene& scene, const ToleranceOverrides& given);
 
 // Throws SceneError/RenderError (bad scene) and GoldenError (a golden file
 // that cannot be read or decoded).

@@ -243,7 +243,8 @@ M^1 = M.
 M is [L | b] (2x3 or 3x4) or homogeneous (3x3 or 4x4), or an array of them (..., 2, 3);
 t a number or an array. Their shapes broadcast as NumPy's do (M's shape before its last two
 axes with t's), and the result has M's form. Raises pita.NoSamError when L has no real
-logarithm (two negative eigenvalues: case G3), with .index for an array.)");
+logarithm (two negative eigenvalues: case G3), with .index for an array: the flat index of the
+first such matrix (np.unravel_index(e.index, M.shape[:-2]) for a stack of several axes).)");
   m.def("sam", &sam, py::arg("A"), py::arg("B"), py::arg("t"),
         R"(The Steady Affine Morph from pose A (t = 0) to pose B (t = 1) (SAM paper Sec. 2.2):
 S(t) = (B A^-1)^t A, every vertex moving with a constant velocity field in the moving frame.

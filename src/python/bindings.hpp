@@ -18,6 +18,7 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>  // every file: one type_caster of std::vector and std::optional
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"

@@ -72,7 +72,7 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   Json items = Json::array();
   int dimension = 2;
   for (std::size_t i = 0; i < py::len(keyframes); ++i) {
-    const py::handle item = keyframes[i];
+    const py::object item = keyframes[i];  // owned: an array makes a new view for each item
     const std::string name = fmt::format("keyframes[{}]", i);
     Json key;
     if (py::isinstance<py::dict>(item) && (poses || !py::isinstance<Arrow>(item))) {

@@ -3,6 +3,7 @@
 // measured and checked against goldens by the layers the commands use:
 // Scene.eval is `pita eval`, render `pita render`, animate `pita animate`,
 // measure `pita measure --format json`, check `pita check`.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -10,7 +11,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <pybind11/stl.h>
 
 #include "analysis/measure.hpp"
 #include "analysis/measure_report.hpp"
@@ -160,7 +160,7 @@ py::object animate_scene(const HeldScene& held, const py::object& out, std::opti
   request.kind = animate::output_kind(request.out.string());
   request.scale = scale;
   request.progress = false;
-  request.threads = std::max(1, threads);
+  request.threads = std::clamp(threads, 1, 64);
   request.ffmpeg = animate::find_ffmpeg();
   animate::check_total_work(held.scene, timeline, request);
   std::vector<std::filesystem::path> written;
@@ -190,11 +190,18 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
     throw py::value_error("check: a scene made from a dict has no file, and goldens are named after the file: "
                           "write it to NAME.json and load_scene(\"NAME.json\")");
   }
-  golden::Tolerances tolerances;
-  if (number_tolerance) tolerances.numbers = *number_tolerance;
-  if (svg_tolerance) tolerances.svg = *svg_tolerance;
-  if (pixel_tolerance) tolerances.image.channel = *pixel_tolerance;
-  if (max_differing) tolerances.image.max_share = *max_differing;
+  const auto within = [](const auto& value, double low, double high, const char* name) {
+    if (value && !(*value >= low && *value <= high)) {
+      throw py::value_error(fmt::format("{}: must be between {} and {} (got {})", name, low, high, *value));
+    }
+  };
+  within(number_tolerance, 0.0, 1.0, "number_tolerance");
+  within(svg_tolerance, 0.0, 1000.0, "svg_tolerance");
+  within(pixel_tolerance, 0.0, 255.0, "pixel_tolerance");
+  within(max_differing, 0.0, 1.0, "max_differing");
+  // As `pita check`: the keywords, else the scene's "golden" field, else the defaults.
+  const golden::Tolerances tolerances =
+      golden::tolerances_of(held.scene, {number_tolerance, svg_tolerance, pixel_tolerance, max_differing});
   const std::filesystem::path folder = py::str(golden_dir).cast<std::string>();
   golden::SceneCheck result;
   {
@@ -267,8 +274,8 @@ pixels per canvas pixel; at: the animation frame at scene time `at`, as `pita re
            py::arg("threads") = 1,
            R"(Plays the scene as `pita animate` does. Without `out`, returns the animated SVG as a str; with
 `out`, writes it (OUT.svg, OUT.mp4 or OUT.webm through Debian's ffmpeg, or a folder of frames)
-atomically and returns the paths written. A Ctrl-C while it writes removes what it wrote and
-ends the process, as it ends `pita animate`.)")
+atomically and returns the paths written: complete, or not at all. A Ctrl-C is seen when the
+writing returns (threads: 1 to 64 frames drawn at once).)")
       .def("measure", &measure,
            R"(The goodness measures of every panel, as `pita measure --format json` prints them, as a dict.)")
       .def("check", &check, py::arg("golden_dir"), py::kw_only(), py::arg("number_tolerance") = py::none(),
@@ -297,14 +304,15 @@ files, claims, lint).)")
         } else {
           const std::filesystem::path path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
           held->scene = scene::load_scene(path);
-          held->file = path;
+          held->file = std::filesystem::absolute(path);  // check() reads it again, wherever the cwd is then
         }
         return held;
       },
       py::arg("source"),
       R"(Reads and checks a scene: a path (str or os.PathLike) to a scene file, or a dict in the same
 format. Raises pita.SceneError with .file, .pointer (JSON Pointer) and .reason, and .line and
-.column for malformed JSON.)");
+.column for malformed JSON. Images of the scene are found relative to its folder as the path
+spells it: give an absolute path if the working directory will change.)");
 }
 
 }  // namespace pita::python

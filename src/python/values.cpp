@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 #include <pybind11/operators.h>
-#include <pybind11/stl.h>
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
@@ -19,7 +18,9 @@ namespace pita::python {
 
 namespace {
 
-py::object g_arrow_samples;  // collections.namedtuple("ArrowSamples", "p m w q"), made by bind_values
+// collections.namedtuple("ArrowSamples", "p m w q"), made by bind_values and
+// never freed (a py::object destroyed after the interpreter would crash).
+py::handle g_arrow_samples;
 
 // repr() of a float as Python writes it (shortest round trip).
 std::string float_repr(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
@@ -188,7 +189,7 @@ py::array_t<double> homogeneous(const Pose& pose) {
 
 }  // namespace
 
-py::object arrow_samples_type() { return g_arrow_samples; }
+py::object arrow_samples_type() { return py::reinterpret_borrow<py::object>(g_arrow_samples); }
 
 py::array_t<double> new_array(const std::vector<py::ssize_t>& shape, std::initializer_list<py::ssize_t> tail) {
   std::vector<py::ssize_t> full = shape;
@@ -229,7 +230,9 @@ Arrow read_arrow(const py::handle& value, const char* name) {
   if (py::isinstance<py::dict>(value)) {
     const py::dict d = py::reinterpret_borrow<py::dict>(value);
     if (d.contains("p") && d.contains("q") && !d.contains("m")) {
-      return zero_turn_arrow(point(d["p"], std::string(name) + ".p"), point(d["q"], std::string(name) + ".q"));
+      const Point p = point(d["p"], std::string(name) + ".p"), q = point(d["q"], std::string(name) + ".q");
+      if (p == q) throw py::value_error(fmt::format("{}.q: must differ from p (an arrow has a magnitude > 0)", name));
+      return zero_turn_arrow(p, q);
     }
     if (d.contains("p") && d.contains("m") && d.contains("w")) return make_arrow(d["p"], d["m"], d["w"]);
   }
@@ -277,12 +280,13 @@ py::object arrow_object(const Arrow& arrow) { return py::cast(arrow); }
 py::object pose_object(const Pose& pose) { return py::cast(PoseValue{pose}); }
 
 void bind_values(py::module_& m) {
-  g_arrow_samples = py::module_::import("collections").attr("namedtuple")("ArrowSamples", "p m w q");
-  g_arrow_samples.attr("__module__") = "pita";
-  g_arrow_samples.attr("__doc__") =
+  py::object samples = py::module_::import("collections").attr("namedtuple")("ArrowSamples", "p m w q");
+  samples.attr("__module__") = "pita";
+  samples.attr("__doc__") =
       "Arrows at many times, as NumPy arrays: p and q of shape (..., 2), m and w of shape (...), "
       "where (...) is the shape of the times.";
-  m.attr("ArrowSamples") = g_arrow_samples;
+  m.attr("ArrowSamples") = samples;
+  g_arrow_samples = samples.release();
 
   py::class_<Arrow>(m, "Arrow", R"(An arrow A(p, m, w) (PITA paper Sec. 2.1): it starts at p, has magnitude m > 0
 and winding w, a real angle in radians that is never reduced: w = 0.3 and w = 0.3 + 2 pi
@@ -376,7 +380,10 @@ homogeneous matrix (3x3, 4x4); np.asarray(pose) is [L | b].
             },
             a.pose));
       })
-      .def("__hash__", [](const PoseValue& v) { return py::hash(pose_matrix(v.pose).attr("tobytes")()); })
+      .def("__hash__", [](const PoseValue& v) {
+        // of the numbers, as == compares them (-0.0 == 0.0 hash alike)
+        return py::hash(py::tuple(pose_matrix(v.pose).attr("ravel")().attr("tolist")()));
+      })
       .def(py::pickle([](const PoseValue& v) { return py::make_tuple(pose_matrix(v.pose)); },
                       [](const py::tuple& t) { return PoseValue{pose_from_matrix(t[0], "M")}; }));
 }

@@ -9,6 +9,10 @@ from conftest import BAD
 CASES = sorted(BAD.glob("*.json"))
 
 
+def test_the_cases_are_there():
+    assert len(CASES) >= 50, f"{BAD} holds {len(CASES)} cases"
+
+
 def expectation(case):
     lines = case.with_suffix(".expect").read_text().splitlines()
     where, reason = lines[0], lines[1].removeprefix("reason: ")

@@ -106,9 +106,15 @@ def test_errors_name_the_pointer(figure_one):
 
 
 def test_no_sam_is_a_no_motion_error():
-    with pytest.raises(pita.SceneError) as caught:
+    with pytest.raises(pita.NoMotionError) as caught:
         pita.motion("SAM", [np.eye(2, 3), [[-1, 0, 0], [0, -2, 0]]], [0, 1])
     assert "no SAM" in str(caught.value) and caught.value.pointer.startswith("/poses")
+
+
+def test_keyframes_may_be_an_array():
+    poses = np.stack([np.eye(2, 3), [[0, -2, 3], [2, 0, 1]]])          # each item a new view
+    np.testing.assert_array_equal(pita.motion("SAM", poses, [0, 1])(np.linspace(0, 1, 3)),
+                                  pita.motion("SAM", list(poses), [0, 1])(np.linspace(0, 1, 3)))
 
 
 def test_pose_motions_of_the_plane_and_of_space():

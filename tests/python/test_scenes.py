@@ -102,6 +102,21 @@ def test_check_against_the_goldens():
     assert all(f.verdict == "match" for f in result.files)
 
 
+def test_check_takes_the_scenes_tolerances_as_pita_check_does(tmp_path):
+    source = json.loads((SOURCE / "scenes" / "fig03-steady-morph.json").read_text())
+    source["keyframes"][1]["w"] += 1e-6                 # a change below a loose tolerance only
+    source["golden"] = {"number_tolerance": 0.01, "svg_tolerance": 5, "pixel_tolerance": 255, "max_differing": 1}
+    (tmp_path / "fig03-steady-morph.json").write_text(json.dumps(source))
+    scene = pita.load_scene(tmp_path / "fig03-steady-morph.json")
+    cli = run_pita("check", tmp_path / "fig03-steady-morph.json", "--golden", SOURCE / "golden", check=False)
+    result = scene.check(SOURCE / "golden")
+    assert result.matches                              # the figure, within the scene's tolerances
+    assert result.passes == (cli.returncode == 0)      # (a claim about the exact winding range fails)
+    assert not scene.check(SOURCE / "golden", number_tolerance=0.0).matches
+    with pytest.raises(ValueError):
+        scene.check(SOURCE / "golden", pixel_tolerance=300)
+
+
 def test_check_finds_a_changed_figure(tmp_path):
     source = json.loads((SOURCE / "scenes" / "fig03-steady-morph.json").read_text())
     source["keyframes"][1]["w"] += 0.5
