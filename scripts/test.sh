@@ -16,7 +16,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-PITA_UNIT_LAYERS=(core scene motion analysis render lint animate golden sweep)
+PITA_UNIT_LAYERS=(core scene motion analysis render lint animate golden sweep serve)
 mode=full
 layers=()
 for arg in "$@"; do

@@ -375,6 +375,29 @@ void write_scene(const RenderedScene& rendered) {
 
 }  // namespace
 
+std::optional<std::string> render_usage_problem(const RenderOptions& options) {
+  try {
+    plan_render(options);
+    return std::nullopt;
+  } catch (const UsageError& error) {
+    return std::string(error.what());
+  }
+}
+
+std::vector<std::string> render_and_write(const RenderOptions& options, std::string& warnings) {
+  const RenderPlan plan = plan_render(options);
+  if (!plan.single_file) {
+    std::error_code error;
+    fs::create_directories(options.output, error);  // when it fails, writing says why
+  }
+  const RenderedScene rendered = render_scene(options, plan, options.scene_paths.at(0));
+  warnings += rendered.warnings;
+  render::write_files_atomically(rendered.files);
+  std::vector<std::string> written;
+  for (const auto& [file, bytes] : rendered.files) written.push_back(file.string());
+  return written;
+}
+
 ExitCode run_render(const RenderOptions& options) {
   if (options.list) return list_scenes(options);
   if (options.scene_paths.empty()) {

@@ -41,4 +41,13 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app);
 // given, else of ./scenes) with their titles and descriptions instead.
 ExitCode run_render(const RenderOptions& options);
 
+// For `pita watch`, which renders one scene again at each save, as render
+// does: the problem with the options (what run_render prints after "pita: "
+// and exits 2 for), or nullopt.
+std::optional<std::string> render_usage_problem(const RenderOptions& options);
+// Renders options.scene_paths[0] in every format and writes the files all or
+// none; returns the paths written and appends the claims' warnings (lines) to
+// `warnings`. Throws what rendering throws (cli/failure.hpp names it).
+std::vector<std::string> render_and_write(const RenderOptions& options, std::string& warnings);
+
 }  // namespace pita::cli

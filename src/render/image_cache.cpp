@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
+#include <iterator>
+#include <string>
+#include <system_error>
 #include <fstream>
 #include <list>
 #include <memory>
@@ -24,36 +28,60 @@ std::size_t bytes_of(cairo_surface_t* surface) {
          static_cast<std::size_t>(cairo_image_surface_get_height(surface));
 }
 
+// What tells one version of a file from the next without reading it: its
+// modification time and size ("" when it cannot be read: decoding then says
+// why). A long-lived process (pita watch, the Python module) sees an image
+// saved again as a new one.
+std::string file_stamp(const std::string& path) {
+  std::error_code time_error, size_error;
+  const auto time = std::filesystem::last_write_time(path, time_error);
+  const auto size = std::filesystem::file_size(path, size_error);
+  if (time_error || size_error) return {};
+  return fmt::format("{}:{}", time.time_since_epoch().count(), size);
+}
+
 // One thread's images, the most recently used first.
 class ThreadCache {
  public:
   ~ThreadCache() {
     while (!entries_.empty()) drop_last();
   }
-  cairo_surface_t* find(const std::string& path) {
+  // The image decoded from `path` as it was at `stamp`; an older version of
+  // it is dropped.
+  cairo_surface_t* find(const std::string& path, const std::string& stamp) {
     for (auto it = entries_.begin(); it != entries_.end(); ++it) {
-      if (it->first != path) continue;
+      if (it->path != path) continue;
+      if (it->stamp != stamp || stamp.empty()) {
+        drop(it);
+        return nullptr;
+      }
       entries_.splice(entries_.begin(), entries_, it);  // now the most recent
-      return entries_.front().second.get();
+      return entries_.front().surface.get();
     }
     return nullptr;
   }
   // Keeps `surface`, first evicting this thread's least recently used images
   // while the caches of all threads would hold more than kImageCacheBytes.
-  cairo_surface_t* insert(const std::string& path, SurfacePtr surface) {
+  cairo_surface_t* insert(const std::string& path, const std::string& stamp, SurfacePtr surface) {
     const std::size_t bytes = bytes_of(surface.get());
-    while (!entries_.empty() && cached_bytes.load() + bytes > kImageCacheBytes) drop_last();
+    while (!entries_.empty() && cached_bytes.load() + bytes > kImageCacheBytes) drop(std::prev(entries_.end()));
     cached_bytes += bytes;
-    entries_.emplace_front(path, std::move(surface));
-    return entries_.front().second.get();
+    entries_.push_front(Entry{path, stamp, std::move(surface)});
+    return entries_.front().surface.get();
   }
 
  private:
-  void drop_last() {
-    cached_bytes -= bytes_of(entries_.back().second.get());
-    entries_.pop_back();
+  struct Entry {
+    std::string path;
+    std::string stamp;
+    SurfacePtr surface;
+  };
+  void drop(std::list<Entry>::iterator it) {
+    cached_bytes -= bytes_of(it->surface.get());
+    entries_.erase(it);
   }
-  std::list<std::pair<std::string, SurfacePtr>> entries_;
+  void drop_last() { drop(std::prev(entries_.end())); }
+  std::list<Entry> entries_;
 };
 
 // Why cairo could not decode `path`: it reports a corrupt PNG as "out of
@@ -87,13 +115,14 @@ std::string decode_failure(const std::string& path, cairo_status_t status) {
 
 cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
   thread_local ThreadCache cache;
-  if (cairo_surface_t* found = cache.find(path)) return found;
+  const std::string stamp = file_stamp(path);
+  if (cairo_surface_t* found = cache.find(path, stamp)) return found;
   SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
   const cairo_status_t status = cairo_surface_status(surface.get());
   if (status != CAIRO_STATUS_SUCCESS) {
     throw ImageError(fmt::format("cannot read the image \"{}\": {}", name, decode_failure(path, status)));
   }
-  return cache.insert(path, std::move(surface));
+  return cache.insert(path, stamp, std::move(surface));
 }
 
 std::size_t cached_image_bytes() { return cached_bytes.load(); }

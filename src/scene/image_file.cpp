@@ -1,5 +1,6 @@
 #include "scene/image_file.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -91,6 +92,18 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
                                             given, width, height, kMaxImageSide));
   }
   return ImageRef{resolved.string(), given, static_cast<int>(width), static_cast<int>(height), ""};
+}
+
+std::vector<std::filesystem::path> image_files(const Scene& scene) {
+  std::vector<std::filesystem::path> files;
+  for (const Panel& panel : scene.panels) {
+    for (const ShapeOutline& shape : panel.shapes) {
+      if (shape.image && std::find(files.begin(), files.end(), shape.image->path) == files.end()) {
+        files.emplace_back(shape.image->path);
+      }
+    }
+  }
+  return files;
 }
 
 }  // namespace pita::scene

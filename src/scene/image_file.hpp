@@ -4,10 +4,13 @@
 // before anything is drawn or written. Decoding is left to cairo (render/).
 #pragma once
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/figure.hpp"
+#include "scene/scene.hpp"
 #include "scene/read_options.hpp"
 
 namespace pita::scene {
@@ -20,5 +23,10 @@ namespace pita::scene {
 // side. Throws std::invalid_argument with the reason.
 ImageRef check_image_file(const std::string& scene_file, const std::string& given,
                           const ReadOptions& options);
+
+// The image files the scene's shapes name (every panel's), resolved, each
+// once, in the order they first appear: what `pita watch` and `pita serve`
+// watch besides the scene.
+std::vector<std::filesystem::path> image_files(const Scene& scene);
 
 }  // namespace pita::scene

@@ -1,0 +1,44 @@
+// Saves of a set of files, as `pita watch` and `pita serve` wait for them
+// (inotify). Editors save in place or write a new file and rename it over the
+// old one, so the folders of the files are watched, and a file counts as
+// saved when a writer closes it, a file is renamed to its name, or it is
+// deleted (the next read says so).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace pita::serve {
+
+class FileWatcher {
+ public:
+  // Throws std::system_error when inotify is not available.
+  FileWatcher();
+  ~FileWatcher();
+  FileWatcher(const FileWatcher&) = delete;
+  FileWatcher& operator=(const FileWatcher&) = delete;
+
+  // Watches these files (replacing the set watched before). A folder that
+  // cannot be watched throws std::system_error naming it.
+  void watch(const std::vector<std::filesystem::path>& files);
+
+  // The watched files saved since the last call, waiting up to `timeout` for
+  // the first one; empty when none was. A burst of events (an editor's
+  // write, rename and attribute change) is gathered into one answer: after
+  // the first event it waits until `quiet` passes without another.
+  std::set<std::filesystem::path> wait(std::chrono::milliseconds timeout,
+                                       std::chrono::milliseconds quiet = std::chrono::milliseconds(40));
+
+ private:
+  // Reads the pending events; adds the watched files they concern to `saved`.
+  void drain(std::set<std::filesystem::path>& saved);
+
+  int fd_ = -1;
+  std::map<int, std::filesystem::path> folders_;       // watch descriptor -> folder
+  std::set<std::filesystem::path> files_;              // absolute, lexically normal
+};
+
+}  // namespace pita::serve

@@ -1,0 +1,101 @@
+// Saves of watched files (src/serve/file_watch.cpp): a write in place, a new
+// file renamed over the old one and a deletion each count; a file that is not
+// watched does not; a burst of saves is one answer; nothing is a timeout.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "serve/file_watch.hpp"
+
+namespace pita::serve {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::milliseconds;
+
+class FileWatcherTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pita-watch-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    write(scene(), "{}");
+    write(other(), "x");
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  static void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
+  fs::path scene() const { return fs::absolute(dir_ / "scene.json"); }
+  fs::path other() const { return fs::absolute(dir_ / "other.txt"); }
+  fs::path dir_;
+};
+
+TEST_F(FileWatcherTest, NothingSavedIsATimeout) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  EXPECT_TRUE(watcher.wait(milliseconds(50)).empty());
+}
+
+TEST_F(FileWatcherTest, AWriteInPlaceIsASave) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  write(scene(), R"({"a": 1})");
+  const auto saved = watcher.wait(milliseconds(5000));
+  ASSERT_EQ(saved.size(), 1u);
+  EXPECT_EQ(*saved.begin(), scene());
+}
+
+TEST_F(FileWatcherTest, ARenameOverTheFileIsASave) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  write(dir_ / ".scene.json.swp", "{}");
+  fs::rename(dir_ / ".scene.json.swp", scene());
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene()), 1u);
+}
+
+TEST_F(FileWatcherTest, ADeletionCounts) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  fs::remove(scene());
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene()), 1u);
+}
+
+TEST_F(FileWatcherTest, AFileNotWatchedDoesNotCount) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  write(other(), "y");
+  EXPECT_TRUE(watcher.wait(milliseconds(200)).empty());
+}
+
+TEST_F(FileWatcherTest, ABurstIsOneAnswerAndNamesEveryFile) {
+  FileWatcher watcher;
+  watcher.watch({scene(), other()});
+  for (int i = 0; i < 20; ++i) write(scene(), std::to_string(i));
+  write(other(), "z");
+  const auto saved = watcher.wait(milliseconds(5000));
+  EXPECT_EQ(saved.size(), 2u);
+  EXPECT_TRUE(watcher.wait(milliseconds(100)).empty());
+}
+
+TEST_F(FileWatcherTest, WatchingAnotherSetForgetsTheFirst) {
+  FileWatcher watcher;
+  watcher.watch({scene()});
+  watcher.watch({other()});
+  write(scene(), "{}");
+  EXPECT_TRUE(watcher.wait(milliseconds(200)).empty());
+  write(other(), "w");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(other()), 1u);
+}
+
+TEST_F(FileWatcherTest, AFolderThatDoesNotExistIsRefused) {
+  FileWatcher watcher;
+  EXPECT_THROW(watcher.watch({dir_ / "no-such-folder" / "scene.json"}), std::system_error);
+}
+
+}  // namespace
+}  // namespace pita::serve
