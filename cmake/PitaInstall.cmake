@@ -1,5 +1,6 @@
 # Installing pita (docs/guide/install.md "Install"): cmake --install build --prefix P writes
 #   P/bin/pita
+#   P/libexec/pita/pita-serve           the server of pita serve
 #   P/include/pita/<layer>/*.hpp        the headers of core, scene, motion, analysis, render
 #   P/lib/libpita_<layer>.a             the libraries of those layers
 #   P/lib/cmake/pita/pitaConfig.cmake   with pitaConfigVersion.cmake and the exported
@@ -20,6 +21,10 @@ include(CMakePackageConfigHelpers)
 set(PITA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/pita)
 
 install(TARGETS pita RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The server of `pita serve` (src/cli/serve.hpp), which pita finds at ../libexec/pita/.
+if(TARGET pita-serve)
+  install(TARGETS pita-serve RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/pita)
+endif()
 
 # The libraries a program may use: core (math, Eigen only) in one export set,
 # render and the layers it stands on in another, so that a consumer of

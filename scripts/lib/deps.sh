@@ -23,6 +23,7 @@ PITA_RUN_PACKAGES=(
   libcairo2-dev        # figures: SVG, PNG, PDF (it depends on libpng-dev, whose libpng pita writes PNGs with)
   libpango1.0-dev      # figures: text (banners, titles)
   fonts-dejavu-core    # figures: the fonts the scenes and goldens use (DejaVu Sans, Serif)
+  libcpp-httplib-dev   # pita serve: its HTTP server (in the helper program pita-serve)
 )
 
 # What scripts/test.sh adds: the tests and the benchmark.
@@ -33,7 +34,8 @@ PITA_TEST_PACKAGES=(
   python3                     # tests: the independent oracles (tests/oracle)
   python3-jsonschema          # tests: the scene schema checked by an independent validator
   ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
-  chromium                    # tests: the animated SVG played in a real browser (headless)
+  chromium                    # tests: the animated SVG played in a real browser (headless), pita serve's page
+  python3-websocket           # tests: pita serve's page driven in Chromium over the DevTools protocol
   parallel                    # tests: the GNU parallel recipe of pita sweep (docs/reference/sweep.md "pita sweep")
   time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
   man-db                      # tests: the man page rendered by man -l (with groff-base; tests/packaging)

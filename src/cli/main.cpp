@@ -22,6 +22,7 @@
 #include "cli/golden.hpp"
 #include "cli/lint.hpp"
 #include "cli/measure.hpp"
+#include "cli/serve.hpp"
 #include "cli/sweep.hpp"
 #include "cli/watch.hpp"
 #include "cli/render.hpp"
@@ -106,6 +107,7 @@ int main(int argc, char** argv) {
   const auto lint_options = pita::cli::setup_lint(app);
   const auto sweep_options = pita::cli::setup_sweep(app);
   const auto watch_options = pita::cli::setup_watch(app);
+  const auto serve_options = pita::cli::setup_serve(app);
   // Hidden: the man page and the shell completions, generated from this App at build time.
   const auto generate_options = pita::cli::setup_generate(app);
 
@@ -139,6 +141,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("lint")) return to_int(pita::cli::run_lint(*lint_options));
     if (app.got_subcommand("sweep")) return to_int(pita::cli::run_sweep_command(*sweep_options));
     if (app.got_subcommand("watch")) return to_int(pita::cli::run_watch(*watch_options));
+    if (app.got_subcommand("serve")) return to_int(pita::cli::run_serve(*serve_options));
     if (app.got_subcommand("update-goldens")) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }

@@ -58,7 +58,7 @@ while read -r mode _ _ _ _ path _; do
   esac
 done < <(dpkg -c "$deb")
 listing="$(dpkg -c "$deb" | awk '{ print $6 }' | sed 's|^\./||')"
-for path in usr/bin/pita usr/include/pita/core/arrow.hpp usr/include/pita/core/affine_power.hpp \
+for path in usr/bin/pita usr/libexec/pita/pita-serve usr/include/pita/core/arrow.hpp usr/include/pita/core/affine_power.hpp \
             usr/lib/libpita_core.a usr/lib/libpita_render.a usr/lib/cmake/pita/pitaConfig.cmake \
             usr/lib/cmake/pita/pitaConfigVersion.cmake usr/lib/pkgconfig/pita.pc usr/share/man/man1/pita.1 \
             usr/share/bash-completion/completions/pita usr/share/zsh/vendor-completions/_pita \
@@ -72,6 +72,9 @@ if grep -E 'test_|gtest|bench|\.o$' <<< "$listing"; then fail "test or build fil
 [ "$("$root/usr/bin/pita" --version)" = "pita $version" ] || fail "unpacked pita --version: $("$root/usr/bin/pita" --version)"
 "$root/usr/bin/pita" eval "$source/scenes/fig01-eight-pitas.json" --samples 3 >/dev/null ||
   fail "unpacked pita cannot evaluate scenes/fig01-eight-pitas.json"
+# pita serve finds its server at ../libexec/pita/pita-serve (it answers for a missing scene).
+served="$("$root/usr/bin/pita" serve "$scratch/no-such-scene.json" 2>&1 || true)"
+[[ "$served" == *"no such scene file"* ]] || fail "the unpacked pita serve does not find pita-serve: $served"
 
 if [ -n "$python" ]; then
   pydeb="$scratch/out/python3-pita_${version}_${arch}.deb"

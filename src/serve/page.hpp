@@ -1,0 +1,12 @@
+// The page of `pita serve` (src/serve/page.html), built into the binary:
+// CMake writes its text into page.cpp (src/serve/CMakeLists.txt), so that
+// nothing is fetched or installed beside pita to show it.
+#pragma once
+
+#include <string_view>
+
+namespace pita::serve {
+
+std::string_view page_html();
+
+}  // namespace pita::serve

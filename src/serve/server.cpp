@@ -1,0 +1,346 @@
+#include "serve/server.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <fstream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <random>
+#include <set>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "analysis/measure.hpp"
+#include "analysis/measure_report.hpp"
+#include "animate/frame.hpp"
+#include "animate/timeline.hpp"
+#include "motion/no_motion.hpp"
+#include "motion/stage.hpp"
+#include "render/figure.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/image_file.hpp"
+#include "scene/scene.hpp"
+#include "serve/file_watch.hpp"
+#include "serve/page.hpp"
+
+// Last: it includes <resolv.h>, whose macro _res would rename a parameter of Eigen's.
+#include <httplib.h>
+
+namespace pita::serve {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// What the page shows of an error: where (file, line:column or JSON Pointer) and why.
+Json error_json(const std::exception_ptr& thrown, const std::string& path) {
+  Json error{{"file", path}, {"line", 0}, {"column", 0}, {"pointer", ""}, {"reason", ""}, {"message", ""}};
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const scene::SceneError& e) {
+    error.update({{"file", e.file()}, {"line", e.line()}, {"column", e.column()}, {"pointer", e.pointer()},
+                  {"reason", e.reason()}, {"message", e.what()}});
+  } catch (const motion::NoMotion& e) {
+    error.update({{"file", e.file()}, {"pointer", e.pointer()}, {"reason", e.reason()}, {"message", e.what()}});
+  } catch (const render::RenderError& e) {
+    error.update({{"file", e.file()}, {"pointer", e.pointer()}, {"reason", e.reason()}, {"message", e.what()}});
+  } catch (const std::exception& e) {
+    error.update({{"reason", e.what()}, {"message", path + ": " + e.what()}});
+  }
+  return error;
+}
+
+// One scene of the command line: its last good figure and what is wrong now.
+struct SceneState {
+  fs::path path;
+  std::uint64_t version = 0;
+  std::shared_ptr<const scene::Scene> scene;  // the last good one
+  std::string svg;                            // its figure
+  std::optional<Json> error;                  // the last save's, when it could not be drawn
+  std::vector<fs::path> files;                // the scene and its images (what is watched)
+};
+
+class Server {
+ public:
+  explicit Server(const Settings& settings) : settings_(settings) {
+    for (const fs::path& path : settings.scenes) {
+      auto state = std::make_unique<SceneState>();
+      state->path = path;
+      state->files = {path};
+      scenes_.push_back(std::move(state));
+    }
+  }
+
+  // Renders scene i from its file; keeps the last good figure when it fails.
+  void render(std::size_t i) {
+    SceneState& state = *scenes_[i];
+    std::shared_ptr<const scene::Scene> scene;
+    std::string svg;
+    std::optional<Json> error;
+    try {
+      scene = std::make_shared<const scene::Scene>(
+          scene::load_scene(state.path, {settings_.allow_absolute_paths}));
+      const motion::Stage stage(*scene);
+      svg = render::render_figure(*scene, render::build_figure(stage), render::Format::svg);
+    } catch (...) {
+      error = error_json(std::current_exception(), state.path.string());
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!error) {
+        state.scene = scene;
+        state.svg = std::move(svg);
+        state.files = {state.path};
+        for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
+      }
+      state.error = std::move(error);
+      ++state.version;
+    }
+    changed_.notify_all();
+  }
+
+  std::vector<fs::path> watched() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<fs::path> files;
+    for (const auto& state : scenes_) files.insert(files.end(), state->files.begin(), state->files.end());
+    return files;
+  }
+
+  // The scenes whose files are among `saved`.
+  std::vector<std::size_t> scenes_of(const std::set<fs::path>& saved) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::size_t> which;
+    for (std::size_t i = 0; i < scenes_.size(); ++i) {
+      for (const fs::path& file : scenes_[i]->files) {
+        if (saved.count(fs::absolute(file).lexically_normal()) != 0) {
+          which.push_back(i);
+          break;
+        }
+      }
+    }
+    return which;
+  }
+
+  Json scenes_json() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Json all = Json::array();
+    for (std::size_t i = 0; i < scenes_.size(); ++i) {
+      const SceneState& state = *scenes_[i];
+      Json entry{{"index", i}, {"name", state.path.stem().string()}, {"path", state.path.string()},
+                 {"version", state.version}, {"title", state.scene ? state.scene->title : ""},
+                 {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr}};
+      if (state.scene) {
+        try {
+          const animate::Timeline timeline = animate::make_timeline(*state.scene);
+          entry["timeline"] = Json{{"first", timeline.first}, {"last", timeline.last}, {"frames", timeline.frames},
+                                   {"fps", timeline.fps},
+                                   {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
+        } catch (const std::exception&) {
+          // no motion to play (a figure without one)
+        }
+      }
+      all.push_back(entry);
+    }
+    return all;
+  }
+
+  std::optional<std::string> figure(std::size_t i, std::optional<double> at) {
+    std::shared_ptr<const scene::Scene> scene;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+      scene = scenes_[i]->scene;
+    }
+    if (!scene) return std::nullopt;
+    const animate::Timeline timeline = animate::make_timeline(*scene);
+    const render::Figure figure =
+        animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
+    return render::render_figure(*scene, figure, render::Format::svg);
+  }
+
+  std::optional<std::string> measures(std::size_t i) {
+    std::shared_ptr<const scene::Scene> scene;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      scene = scenes_[i]->scene;
+    }
+    if (!scene) return std::nullopt;
+    analysis::check_measure_work(*scene);
+    return analysis::measures_json(scene->path, analysis::measure_scene(*scene));
+  }
+
+  // Waits (at most `wait`) for a render newer than `seen`; the versions now.
+  std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const auto now = [&] {
+      std::vector<std::uint64_t> versions;
+      for (const auto& state : scenes_) versions.push_back(state->version);
+      return versions;
+    };
+    changed_.wait_for(lock, wait, [&] { return now() != seen || stopping_; });
+    return now();
+  }
+
+  void stop() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    changed_.notify_all();
+  }
+  bool stopping() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return stopping_;
+  }
+  std::size_t size() const { return scenes_.size(); }
+
+ private:
+  const Settings& settings_;
+  std::vector<std::unique_ptr<SceneState>> scenes_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  bool stopping_ = false;
+};
+
+// The scene index of /api/.../N; nullopt for anything else.
+std::optional<std::size_t> scene_index(const std::string& text, std::size_t count) {
+  if (text.empty() || text.size() > 6 || text.find_first_not_of("0123456789") != std::string::npos) {
+    return std::nullopt;
+  }
+  const std::size_t i = std::stoul(text);
+  return i < count ? std::optional<std::size_t>(i) : std::nullopt;
+}
+
+void send_json(httplib::Response& res, int status, const std::string& body) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(body, "application/json");
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message) {
+  send_json(res, status, Json{{"error", message}}.dump());
+}
+
+}  // namespace
+
+std::string random_token() {
+  std::random_device source;
+  std::string token;
+  for (int i = 0; i < 4; ++i) token += fmt::format("{:08x}", source());
+  return token;
+}
+
+int serve(const Settings& settings, std::ostream& log, const std::function<bool()>& stopped) {
+  Server state(settings);
+  for (std::size_t i = 0; i < state.size(); ++i) state.render(i);
+
+  httplib::Server http;
+  http.set_payload_max_length(64 * 1024);  // no request of the page is larger: a larger one is refused (413)
+  http.set_keep_alive_max_count(100);
+  // Every request carries the token (as Jupyter's): a page of another site
+  // cannot guess it, so it can neither read nor drive this server.
+  http.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
+    const std::string given = req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
+    if (given != settings.token) {
+      send_error(res, 403, "a token is needed: use the address pita serve printed");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+  http.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Cache-Control", "no-store");
+    res.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline'");
+    res.set_content(std::string(page_html()), "text/html; charset=utf-8");
+  });
+  http.Get("/api/scenes", [&](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200, state.scenes_json().dump());
+  });
+  http.Get(R"(/api/figure/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
+    const auto i = scene_index(req.matches[1], state.size());
+    if (!i) return send_error(res, 404, "no such scene");
+    std::optional<double> at;
+    if (req.has_param("at")) {
+      try {
+        std::size_t used = 0;
+        const std::string text = req.get_param_value("at");
+        at = std::stod(text, &used);
+        if (used != text.size() || !std::isfinite(*at) || std::abs(*at) > 1e6) throw std::invalid_argument(text);
+      } catch (const std::exception&) {
+        return send_error(res, 400, "at: a finite number, please");
+      }
+    }
+    try {
+      const auto svg = state.figure(*i, at);
+      if (!svg) return send_error(res, 409, "the scene has no good figure yet: see its error");
+      res.set_header("Cache-Control", "no-store");
+      // With the charset, not the bare type: cpp-httplib compresses a bare
+      // image/svg+xml with brotli at its slowest setting when the browser
+      // accepts it (380 ms for Fig. 1's 150 kB; 7 ms to send it as it is).
+      res.set_content(*svg, "image/svg+xml; charset=utf-8");
+    } catch (...) {
+      send_json(res, 422, error_json(std::current_exception(), settings.scenes[*i].string()).dump());
+    }
+  });
+  http.Get(R"(/api/measures/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
+    const auto i = scene_index(req.matches[1], state.size());
+    if (!i) return send_error(res, 404, "no such scene");
+    try {
+      const auto text = state.measures(*i);
+      if (!text) return send_error(res, 409, "the scene has no good figure yet: see its error");
+      send_json(res, 200, *text);
+    } catch (...) {
+      send_json(res, 422, error_json(std::current_exception(), settings.scenes[*i].string()).dump());
+    }
+  });
+  http.Get("/api/events", [&](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Cache-Control", "no-store");
+    auto seen = std::make_shared<std::vector<std::uint64_t>>(state.versions_after({}, std::chrono::milliseconds(0)));
+    res.set_chunked_content_provider("text/event-stream", [&state, seen](std::size_t, httplib::DataSink& sink) {
+      const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(15));
+      if (state.stopping()) return false;
+      std::string events;
+      for (std::size_t i = 0; i < now.size(); ++i) {
+        if (now[i] != (*seen)[i]) events += fmt::format("data: {{\"scene\": {}, \"version\": {}}}\n\n", i, now[i]);
+      }
+      if (events.empty()) events = ": still here\n\n";  // keeps proxies and the browser patient
+      *seen = now;
+      return sink.write(events.data(), events.size());
+    });
+  });
+
+  const int port = settings.port == 0 ? http.bind_to_any_port(settings.host) : (http.bind_to_port(settings.host, settings.port) ? settings.port : -1);
+  if (port < 0) {
+    log << fmt::format("pita: cannot listen on {}:{} (in use, or not an address of this machine)\n", settings.host,
+                       settings.port);
+    return 3;
+  }
+  std::thread listener([&] { http.listen_after_bind(); });
+  log << fmt::format("pita: serving {} scene{} at http://{}:{}/?token={}\n", state.size(),
+                     state.size() == 1 ? "" : "s", settings.host, port, settings.token)
+      << std::flush;
+
+  // Renders each saved scene again, until stopped.
+  FileWatcher watcher;
+  std::vector<fs::path> files = state.watched();
+  watcher.watch(files);
+  while (!stopped()) {
+    const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
+    if (saved.empty()) continue;
+    for (const std::size_t i : state.scenes_of(saved)) state.render(i);
+    std::vector<fs::path> now = state.watched();
+    if (now != files) watcher.watch(files = std::move(now));
+  }
+  state.stop();
+  http.stop();
+  listener.join();
+  return 0;
+}
+
+}  // namespace pita::serve

@@ -1,0 +1,40 @@
+// The server of `pita serve` (docs/reference/serve.md): each scene named on
+// the command line as a live figure in a local page. A thread waits for saves
+// of the scenes and their images (file_watch.hpp) and renders each saved
+// scene again as `pita render` does; the page learns of it by server-sent
+// events and fetches the new SVG. A bad save keeps the last good figure and
+// shows the error. Every request must carry the token printed at start; only
+// the fixed routes below are served (no file is served by its path).
+//
+//   GET /?token=T                      the page (src/serve/page.html)
+//   GET /api/scenes?token=T            every scene: name, title, version, error, time range
+//   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
+//   GET /api/measures/N?token=T        scene N's `pita measure --format json`
+//   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace pita::serve {
+
+struct Settings {
+  std::vector<std::filesystem::path> scenes;
+  std::string host = "127.0.0.1";
+  int port = 8765;                 // 0: any free port
+  std::string token;               // every request must give it
+  bool allow_absolute_paths = false;
+};
+
+// A random token: 32 hexadecimal digits from the system's random source.
+std::string random_token();
+
+// Serves until `stopped` returns true (it is asked every 100 ms) or a
+// request fails to bind. Prints the page's address to `log` once listening.
+// Returns 0 when stopped, 3 when the address cannot be bound.
+int serve(const Settings& settings, std::ostream& log, const std::function<bool()>& stopped);
+
+}  // namespace pita::serve

@@ -1,0 +1,185 @@
+"""pita serve (src/serve/server.cpp, src/serve/page.html), as a person uses it in Chromium
+and as a hostile page would try it: a save updates the figure in the page, a bad save shows its
+error and keeps the figure, the slider draws the frame at its time; requests without the token,
+with another path or too large a body are refused; a hundred saves leave the last figure and no
+temporary. Run by ctest serve.browser (tests/CMakeLists.txt)."""
+import json
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from serve_session import PITA, Browser, Served, eventually  # noqa: E402
+
+SOURCE = pathlib.Path(os.environ.get("PITA_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
+FIG03 = json.loads((SOURCE / "scenes" / "fig03-steady-morph.json").read_text())
+FIGURE = "document.querySelector('#scene-0 .figure svg')"
+
+
+def save(folder, scene, name="s.json"):
+    """Saves as an editor does: a new file renamed over the old one."""
+    (folder / f".~{name}").write_text(json.dumps(scene, indent=2))
+    os.replace(folder / f".~{name}", folder / name)
+
+
+def figure_text(browser):
+    return browser.evaluate(f"{FIGURE} ? {FIGURE}.outerHTML : ''")
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def test_the_page_follows_the_saves(folder, browser, latencies):
+    save(folder, FIG03)
+    served = Served(folder, ["s.json"])
+    try:
+        browser.open(served.url)
+        first = eventually(lambda: figure_text(browser), 60)
+        check(browser.evaluate("document.querySelector('#scene-0 h2').textContent").startswith("s: Fig. 3"),
+              "the scene's name and title")
+
+        # A save: the page shows the new figure without reloading.
+        browser.evaluate("window.pitaMarker = 1")
+        changed = dict(FIG03)
+        changed["keyframes"] = [dict(k) for k in FIG03["keyframes"]]
+        changed["keyframes"][1]["w"] = 2.0
+        start = time.time()
+        browser.evaluate("""window.pitaSeen = null; new MutationObserver(() => { if (window.pitaSeen === null)
+            window.pitaSeen = Date.now(); }).observe(document.querySelector('#scene-0 .figure'), {childList: true})""")
+        save(folder, changed)
+        second = eventually(lambda: (figure_text(browser) or first) != first and figure_text(browser), 60)
+        check(browser.evaluate("window.pitaMarker") == 1, "the page was reloaded")
+        seen = eventually(lambda: browser.evaluate("window.pitaSeen"), 10)
+        check(seen / 1000 - start < 60, "the figure came")
+        status, body = served.get("/api/figure/0")
+        check(status == 200 and body.decode().split("<svg", 1)[1][:300] in second, "the page's figure is the server's")
+
+        # A bad save: the error, with its line:column, over the last good figure.
+        (folder / "s.json").write_text('{"method": "SMA",\n  "keyframes": [')
+        error = eventually(lambda: browser.evaluate(
+            "document.querySelector('#scene-0 .error.shown') && document.querySelector('#scene-0 .error').textContent"), 60)
+        check("s.json:2:" in error, f"the error names the line: {error}")
+        check(figure_text(browser) == second, "the last good figure stays")
+        save(folder, dict(FIG03, keyframes=[dict(k, m=-1) if i == 1 else k for i, k in enumerate(FIG03["keyframes"])]))
+        eventually(lambda: "/keyframes/1/m: magnitude must be > 0" in (browser.evaluate(
+            "document.querySelector('#scene-0 .error').textContent") or ""), 60)
+        save(folder, FIG03)
+        eventually(lambda: not browser.evaluate("document.querySelector('#scene-0 .error.shown')"), 60)
+        eventually(lambda: figure_text(browser) == first, 60)
+
+        # The slider: the frame at its time, as pita render --at draws it.
+        check(browser.evaluate("getComputedStyle(document.querySelector('#scene-0 .controls')).display") != "none",
+              "a scene with a motion has a slider")
+        browser.evaluate("""(() => { const s = document.querySelector('#scene-0 input[type=range]');
+            s.value = '0.5'; s.dispatchEvent(new Event('input')); })()""")
+        at_half = eventually(lambda: figure_text(browser) != first and figure_text(browser), 60)
+        subprocess.run([PITA, "render", "s.json", "--at", "0.5", "-o", ".at.svg"], cwd=folder, check=True,
+                       stdout=subprocess.DEVNULL)
+        svg = (folder / ".at.svg").read_text()
+        (folder / ".at.svg").unlink()
+        check(svg.split("<svg", 1)[1][:300] in at_half, "the slider's frame is render --at's")
+        check(browser.evaluate("document.querySelector('#scene-0 .controls span').textContent") == "t = 0.500",
+              "the slider's time is shown")
+    finally:
+        check(served.stop() == 128 + 15, "SIGTERM stops it with 128 + 15")
+
+
+def measure_latency(folder, browser, name, latencies, trials=5):
+    """Save to updated figure in the page, for scenes/NAME.json (the median of `trials` saves)."""
+    scene = json.loads((SOURCE / "scenes" / f"{name}.json").read_text())
+    save(folder, scene)
+    served = Served(folder, ["s.json"])
+    try:
+        browser.open(served.url)
+        eventually(lambda: figure_text(browser), 60)
+        times = []
+        for trial in range(trials):
+            time.sleep(0.2)
+            browser.evaluate("""window.pitaSeen = null; new MutationObserver(() => { if (window.pitaSeen === null)
+                window.pitaSeen = Date.now(); }).observe(document.querySelector('#scene-0 .figure'), {childList: true})""")
+            start = time.time()
+            save(folder, dict(scene, title=f"{scene.get('title', name)} ({trial})"))
+            seen = eventually(lambda: browser.evaluate("window.pitaSeen"), 60)
+            times.append(seen / 1000 - start)
+        latencies.append((name, sorted(times)[len(times) // 2]))
+    finally:
+        served.stop()
+
+
+def test_hostile_requests_are_refused(folder):
+    save(folder, FIG03)
+    served = Served(folder, ["s.json"])
+    try:
+        check(served.get("/", token="")[0] == 403, "no token")
+        check(served.get("/", token="0" * 32)[0] == 403, "a wrong token")
+        check(served.get("/api/scenes", token=served.token[:-1])[0] == 403, "a token cut short")
+        check(served.get("/")[0] == 200, "the page with the token")
+        for path in ["/../s.json", "/s.json", "/api/figure/../../s.json", "/api/figure/1", "/api/figure/-1",
+                     "/etc/passwd", "/api/figure/0x0", "/%2e%2e/s.json"]:
+            status, _ = served.get(path)
+            check(status in (400, 404), f"{path}: {status}")
+        check(served.get("/api/scenes", data=b"x" * (1 << 20))[0] == 413, "a body of a megabyte")
+        check(served.get("/api/figure/0?at=nan")[0] == 400, "a time that is not a number")
+    finally:
+        served.stop()
+    # Another host than loopback is warned about.
+    served = Served(folder, ["s.json"], "--host", "0.0.0.0")
+    try:
+        check("warning: listening on 0.0.0.0" in served.stderr(), served.stderr())
+    finally:
+        served.stop()
+
+
+def test_a_hundred_saves_leave_the_last_figure_and_no_temporary(folder):
+    save(folder, FIG03)
+    served = Served(folder, ["s.json"])
+    try:
+        for i in range(100):
+            save(folder, dict(FIG03, keyframes=[FIG03["keyframes"][0], dict(FIG03["keyframes"][1], w=1.0 + i / 100)]))
+        last = folder / "last.json"
+        last.write_text((folder / "s.json").read_text())
+        subprocess.run([PITA, "render", "last.json", "-o", "last.svg"], cwd=folder, check=True,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        expected = (folder / "last.svg").read_bytes()
+        eventually(lambda: served.get("/api/figure/0")[1] == expected, 60)
+    finally:
+        served.stop()
+    check(sorted(p.name for p in folder.iterdir() if p.name.startswith(".")) == [], "no temporary left")
+    (folder / "last.svg").unlink()
+
+
+def main():
+    latencies = []
+    root = pathlib.Path(tempfile.mkdtemp(prefix="pita-serve-test-"))
+    browser = Browser()
+    try:
+        for test in (test_the_page_follows_the_saves, test_hostile_requests_are_refused,
+                     test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
+            folder = root / test.__name__
+            folder.mkdir()
+            started = time.monotonic()
+            if test is test_the_page_follows_the_saves:
+                test(folder, browser, latencies)
+            else:
+                test(folder)
+            print(f"ok {test.__name__} ({time.monotonic() - started:.1f} s)")
+        # Fig. 1, and the scene with the largest figure (fig26-banners: 766 kB of SVG).
+        for name in ("fig01-eight-pitas", "fig26-banners"):
+            folder = root / f"latency-{name}"
+            folder.mkdir()
+            measure_latency(folder, browser, name, latencies)
+    finally:
+        browser.close()
+        shutil.rmtree(root, ignore_errors=True)
+    for name, seconds in latencies:
+        print(f"save to updated figure in the page, {name}: {seconds * 1000:.0f} ms")
+
+
+if __name__ == "__main__":
+    main()
