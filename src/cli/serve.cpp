@@ -46,6 +46,9 @@ void add_serve_options(CLI::App& command, ServeOptions& options) {
       ->capture_default_str()
       ->type_name("ADDRESS");
   command.add_flag("--allow-absolute-paths", options.allow_absolute_paths, "Allow images given by absolute paths");
+  command.add_flag("--edit", options.edit,
+                   "Let the page drag keyframe arrows (tail, tip) and pose corners, and write them into the scene "
+                   "files (atomically, keeping the rest of each file as it is)");
 }
 
 std::shared_ptr<ServeOptions> setup_serve(CLI::App& app) {
@@ -61,6 +64,11 @@ has a time slider and a play button (the frames `pita render --at T` draws); the
 It listens on 127.0.0.1 only, unless --host says otherwise. The address it prints carries a
 random token that every request must give: another page of the browser cannot read or drive
 the server. Only the scenes named are served. Ctrl-C stops it.
+
+With --edit, the tails and tips of the keyframe arrows and the corners of the poses can be dragged
+in the page; each drag is written into the scene file (atomically; the rest of the file, its
+order, spacing and numbers, as it was), unless it would make the scene bad: then the page shows
+why and the file stays. The page keeps an undo list.
 
 Examples:
   pita serve scenes/fig01-eight-pitas.json
@@ -82,6 +90,7 @@ ExitCode run_serve(const ServeOptions& options) {
   }
   std::vector<std::string> args{helper->string(), "--port", std::to_string(options.port), "--host", options.host};
   if (options.allow_absolute_paths) args.emplace_back("--allow-absolute-paths");
+  if (options.edit) args.emplace_back("--edit");
   args.emplace_back("--");
   args.insert(args.end(), options.scene_paths.begin(), options.scene_paths.end());
   std::vector<char*> argv;

@@ -25,6 +25,7 @@ struct ServeOptions {
   int port = 8765;
   std::string host = "127.0.0.1";
   bool allow_absolute_paths = false;
+  bool edit = false;  // --edit: dragging in the page writes into the scene files
 };
 
 // Adds the options of `pita serve` to `command` (pita's subcommand, and

@@ -53,6 +53,7 @@ int serve_main(const ServeOptions& options) {
   settings.port = options.port;
   settings.token = serve::random_token();
   settings.allow_absolute_paths = options.allow_absolute_paths;
+  settings.edit = options.edit;
   const int code = serve::serve(settings, std::cerr, [&] { return received.load() != 0; });
   if (code != 0) return code;
   std::cerr << "pita: stopped\n";

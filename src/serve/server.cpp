@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -26,7 +27,10 @@
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
 #include "scene/scene.hpp"
+#include "render/output_file.hpp"
 #include "serve/file_watch.hpp"
+#include "serve/json_edit.hpp"
+#include "serve/scene_edit.hpp"
 #include "serve/page.hpp"
 
 // Last: it includes <resolv.h>, whose macro _res would rename a parameter of Eigen's.
@@ -65,6 +69,7 @@ struct SceneState {
   std::string svg;                            // its figure
   std::optional<Json> error;                  // the last save's, when it could not be drawn
   std::vector<fs::path> files;                // the scene and its images (what is watched)
+  std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
 };
 
 class Server {
@@ -84,11 +89,13 @@ class Server {
     std::shared_ptr<const scene::Scene> scene;
     std::string svg;
     std::optional<Json> error;
+    render::Figure figure;
     try {
       scene = std::make_shared<const scene::Scene>(
           scene::load_scene(state.path, {settings_.allow_absolute_paths}));
       const motion::Stage stage(*scene);
-      svg = render::render_figure(*scene, render::build_figure(stage), render::Format::svg);
+      figure = render::build_figure(stage);
+      svg = render::render_figure(*scene, figure, render::Format::svg);
     } catch (...) {
       error = error_json(std::current_exception(), state.path.string());
     }
@@ -97,6 +104,7 @@ class Server {
       if (!error) {
         state.scene = scene;
         state.svg = std::move(svg);
+        state.placements = figure.placements;
         state.files = {state.path};
         for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
       }
@@ -135,7 +143,14 @@ class Server {
       const SceneState& state = *scenes_[i];
       Json entry{{"index", i}, {"name", state.path.stem().string()}, {"path", state.path.string()},
                  {"version", state.version}, {"title", state.scene ? state.scene->title : ""},
-                 {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr}};
+                 {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr},
+                 {"handles", Json::array()}};
+      if (settings_.edit && state.scene) {
+        for (const Handle& handle : handles(*state.scene, state.placements)) {
+          entry["handles"].push_back({{"panel", handle.panel}, {"pointer", handle.pointer}, {"part", handle.part},
+                                      {"at", {handle.at.real(), handle.at.imag()}}});
+        }
+      }
       if (state.scene) {
         try {
           const animate::Timeline timeline = animate::make_timeline(*state.scene);
@@ -188,6 +203,44 @@ class Server {
     return now();
   }
 
+  // Applies an edit to scene i's file: checks the result as a scene (and
+  // draws it) before writing it atomically. Returns the changes that undo
+  // it; throws what reading or drawing the result throws, and
+  // std::invalid_argument for a request that names no handle or value.
+  Json edit(std::size_t i, const Json& request) {
+    const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
+    const fs::path path = scenes_[i]->path;
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) throw std::invalid_argument("cannot read " + path.string());
+    std::vector<Change> changes;
+    if (request.contains("drag")) {
+      const Json& d = request.at("drag");
+      const scene::Scene scene = scene::parse_scene(text, path.string(), {settings_.allow_absolute_paths});
+      const motion::Stage stage(scene);
+      const render::Figure figure = render::build_figure(stage);
+      changes = drag(text, scene, figure.placements, d.at("panel").get<std::size_t>(), d.at("pointer").get<std::string>(),
+                     d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
+    } else {
+      for (const Json& change : request.at("changes")) {
+        changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      }
+    }
+    std::string edited = text;
+    Json previous = Json::array();
+    for (const Change& change : changes) {
+      const TextSpan span = value_span(edited, change.pointer);
+      previous.push_back({{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}});
+      edited = replace_value(edited, change.pointer, change.value);
+    }
+    // Refused unless the result is a scene pita draws.
+    const scene::Scene checked = scene::parse_scene(edited, path.string(), {settings_.allow_absolute_paths});
+    const motion::Stage stage(checked);
+    render::build_figure(stage);
+    render::write_file_atomically(path, edited);
+    return Json{{"previous", previous}};
+  }
+
   void stop() {
     {
       const std::lock_guard<std::mutex> lock(mutex_);
@@ -205,6 +258,7 @@ class Server {
   const Settings& settings_;
   std::vector<std::unique_ptr<SceneState>> scenes_;
   std::mutex mutex_;
+  std::mutex edit_mutex_;  // one edit of the files at a time
   std::condition_variable changed_;
   bool stopping_ = false;
 };
@@ -313,6 +367,28 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
       *seen = now;
       return sink.write(events.data(), events.size());
     });
+  });
+
+  http.Post(R"(/api/edit/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
+    if (!settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
+    const auto i = scene_index(req.matches[1], state.size());
+    if (!i) return send_error(res, 404, "no such scene");
+    Json request;
+    try {
+      request = Json::parse(req.body);
+    } catch (const std::exception&) {
+      return send_error(res, 400, "the request is not JSON");
+    }
+    try {
+      send_json(res, 200, state.edit(*i, request).dump());
+    } catch (const nlohmann::json::exception& e) {
+      send_error(res, 400, std::string("the request lacks a field: ") + e.what());
+    } catch (const std::invalid_argument& e) {
+      send_error(res, 400, e.what());
+    } catch (...) {
+      // The edit would make the scene bad: refused, with the reason; the file is as it was.
+      send_json(res, 422, Json{{"refused", error_json(std::current_exception(), settings.scenes[*i].string())}}.dump());
+    }
   });
 
   const int port = settings.port == 0 ? http.bind_to_any_port(settings.host) : (http.bind_to_port(settings.host, settings.port) ? settings.port : -1);

@@ -11,6 +11,10 @@
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
 //   GET /api/measures/N?token=T        scene N's `pita measure --format json`
 //   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
+//   POST /api/edit/N?token=T           with --edit: a drag of a handle ({"drag": {"panel", "pointer",
+//                                      "part", "to": [x, y]}}) or changes ({"changes": [{"pointer",
+//                                      "value"}]}) written into scene N's file (scene_edit.hpp);
+//                                      answers {"previous": [...]}, the changes that undo it
 #pragma once
 
 #include <filesystem>
@@ -27,6 +31,7 @@ struct Settings {
   int port = 8765;                 // 0: any free port
   std::string token;               // every request must give it
   bool allow_absolute_paths = false;
+  bool edit = false;               // --edit: drags are written into the scene files
 };
 
 // A random token: 32 hexadecimal digits from the system's random source.

@@ -15,15 +15,17 @@ import websocket
 PITA = os.environ.get("PITA_BINARY", "build/pita")
 
 
-def eventually(check, timeout=60.0, step=0.02):
-    """Polls check() until it returns something true (returned), or fails after `timeout` s."""
+def eventually(check, timeout=60.0, step=0.02, what=None):
+    """Polls check() until it returns something true (returned), or fails after `timeout` s,
+    saying `what` was awaited (a string, or a function that describes the state then)."""
     end = time.monotonic() + timeout
     while True:
         value = check()
         if value:
             return value
         if time.monotonic() > end:
-            raise AssertionError(f"still not true after {timeout} s: {check.__doc__ or check}")
+            said = what() if callable(what) else what
+            raise AssertionError(f"still not true after {timeout} s: {said or check.__doc__ or check}")
         time.sleep(step)
 
 
@@ -108,6 +110,22 @@ class Browser:
         if "exceptionDetails" in result:
             raise AssertionError(f"{expression}: {result['exceptionDetails']}")
         return result["result"].get("value")
+
+    def drag(self, selector, dx, dy, onto=None):
+        """Drags the element `selector` by (dx, dy) CSS pixels (or onto the element `onto`) with the mouse."""
+        box = self.evaluate(f"(() => {{ const r = document.querySelector({json.dumps(selector)}).getBoundingClientRect();"
+                            " return [r.x + r.width / 2, r.y + r.height / 2]; })()")
+        if onto is not None:
+            target = self.evaluate(f"(() => {{ const r = document.querySelector({json.dumps(onto)}).getBoundingClientRect();"
+                                   " return [r.x + r.width / 2, r.y + r.height / 2]; })()")
+            dx, dy = target[0] - box[0], target[1] - box[1]
+        x, y = box
+        self.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        self.call("Input.dispatchMouseEvent", type="mousePressed", x=x, y=y, button="left", clickCount=1)
+        for step in range(1, 6):
+            self.call("Input.dispatchMouseEvent", type="mouseMoved", x=x + dx * step / 5, y=y + dy * step / 5,
+                      button="left", buttons=1)
+        self.call("Input.dispatchMouseEvent", type="mouseReleased", x=x + dx, y=y + dy, button="left", clickCount=1)
 
     def open(self, url):
         self.call("Page.enable")

@@ -30,6 +30,14 @@ def figure_text(browser):
     return browser.evaluate(f"{FIGURE} ? {FIGURE}.outerHTML : ''")
 
 
+def page_state(browser):
+    """What the page shows of scene 0, for a failure's message."""
+    return browser.evaluate("""JSON.stringify({version: document.querySelector('#scene-0') &&
+        document.querySelector('#scene-0').dataset.version, error: document.querySelector('#scene-0 .error') &&
+        document.querySelector('#scene-0 .error').textContent, status: document.getElementById('status').textContent,
+        figure: (document.querySelector('#scene-0 .figure') || {innerHTML: ''}).innerHTML.length})""")
+
+
 def check(condition, message):
     if not condition:
         raise AssertionError(message)
@@ -53,7 +61,8 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         browser.evaluate("""window.pitaSeen = null; new MutationObserver(() => { if (window.pitaSeen === null)
             window.pitaSeen = Date.now(); }).observe(document.querySelector('#scene-0 .figure'), {childList: true})""")
         save(folder, changed)
-        second = eventually(lambda: (figure_text(browser) or first) != first and figure_text(browser), 60)
+        second = eventually(lambda: (figure_text(browser) or first) != first and figure_text(browser), 60,
+                            what=lambda: "the new figure: " + page_state(browser))
         check(browser.evaluate("window.pitaMarker") == 1, "the page was reloaded")
         seen = eventually(lambda: browser.evaluate("window.pitaSeen"), 10)
         check(seen / 1000 - start < 60, "the figure came")
@@ -63,22 +72,26 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         # A bad save: the error, with its line:column, over the last good figure.
         (folder / "s.json").write_text('{"method": "SMA",\n  "keyframes": [')
         error = eventually(lambda: browser.evaluate(
-            "document.querySelector('#scene-0 .error.shown') && document.querySelector('#scene-0 .error').textContent"), 60)
+            "document.querySelector('#scene-0 .error.shown') && document.querySelector('#scene-0 .error').textContent"), 60,
+            what=lambda: "the malformed save's error: " + page_state(browser))
         check("s.json:2:" in error, f"the error names the line: {error}")
         check(figure_text(browser) == second, "the last good figure stays")
         save(folder, dict(FIG03, keyframes=[dict(k, m=-1) if i == 1 else k for i, k in enumerate(FIG03["keyframes"])]))
         eventually(lambda: "/keyframes/1/m: magnitude must be > 0" in (browser.evaluate(
-            "document.querySelector('#scene-0 .error').textContent") or ""), 60)
+            "document.querySelector('#scene-0 .error').textContent") or ""), 60,
+            what=lambda: "the bad value's error: " + page_state(browser))
         save(folder, FIG03)
-        eventually(lambda: not browser.evaluate("document.querySelector('#scene-0 .error.shown')"), 60)
-        eventually(lambda: figure_text(browser) == first, 60)
+        eventually(lambda: not browser.evaluate("document.querySelector('#scene-0 .error.shown')"), 60,
+                   what=lambda: "the error gone: " + page_state(browser))
+        eventually(lambda: figure_text(browser) == first, 60, what=lambda: "the first figure back: " + page_state(browser))
 
         # The slider: the frame at its time, as pita render --at draws it.
         check(browser.evaluate("getComputedStyle(document.querySelector('#scene-0 .controls')).display") != "none",
               "a scene with a motion has a slider")
         browser.evaluate("""(() => { const s = document.querySelector('#scene-0 input[type=range]');
             s.value = '0.5'; s.dispatchEvent(new Event('input')); })()""")
-        at_half = eventually(lambda: figure_text(browser) != first and figure_text(browser), 60)
+        at_half = eventually(lambda: figure_text(browser) != first and figure_text(browser), 60,
+                             what=lambda: "the frame at 0.5: " + page_state(browser))
         subprocess.run([PITA, "render", "s.json", "--at", "0.5", "-o", ".at.svg"], cwd=folder, check=True,
                        stdout=subprocess.DEVNULL)
         svg = (folder / ".at.svg").read_text()
@@ -88,6 +101,44 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
               "the slider's time is shown")
     finally:
         check(served.stop() == 128 + 15, "SIGTERM stops it with 128 + 15")
+
+
+def test_dragging_writes_the_scene_file(folder, browser):
+    """--edit: a dragged tail changes "p" in the file and nothing else; undo restores the file
+    byte for byte; a drag that would make the scene bad is refused with the reason."""
+    text = (SOURCE / "scenes" / "fig03-steady-morph.json").read_text()
+    (folder / "s.json").write_text(text)
+    served = Served(folder, ["s.json"], "--edit")
+    try:
+        browser.open(served.url)
+        tail = "#scene-0 circle.handle.tail[data-pointer='/keyframes/0']"
+        eventually(lambda: browser.evaluate(f"document.querySelector({json.dumps(tail)}) !== null"), 60)
+        browser.drag(tail, 40, 0)
+        edited = eventually(lambda: (folder / "s.json").read_text() != text and (folder / "s.json").read_text(), 60)
+        before, after = json.loads(text), json.loads(edited)
+        check(after["keyframes"][0]["p"][0] > before["keyframes"][0]["p"][0], "the tail moved right")
+        check(after["keyframes"][0]["p"][1] == before["keyframes"][0]["p"][1] or
+              abs(after["keyframes"][0]["p"][1] - before["keyframes"][0]["p"][1]) < 0.05, "and not up or down")
+        # Every byte but the value of p is as it was.
+        start = text.index('"p": [0, 0]') + len('"p": ')
+        end = start + len("[0, 0]")
+        check(edited[:start] == text[:start] and edited[edited.index("]", start) + 1:] == text[end:],
+              f"only p changed: {edited[start - 10:start + 40]}")
+        # The figure follows, then undo puts the file back.
+        eventually(lambda: browser.evaluate("document.querySelector('#scene-0 button.undo').style.display === ''"), 60)
+        browser.evaluate("document.querySelector('#scene-0 button.undo').click()")
+        eventually(lambda: (folder / "s.json").read_text() == text, 60)
+        # An edit that would make the scene bad (a magnitude of -1) is refused, with the reason shown.
+        browser.evaluate("""edit(0, {changes: [{pointer: '/keyframes/0/m', value: '-1'}]}, true)""")
+        refused = eventually(lambda: browser.evaluate(
+            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60)
+        check("/keyframes/0/m" in refused and "magnitude must be > 0" in refused, f"the reason: {refused}")
+        status, body = served.get("/api/edit/0", data=b'{"changes": [{"pointer": "/keyframes/9", "value": "1"}]}')
+        check(status == 400, f"a pointer to nothing: {status} {body}")
+        check((folder / "s.json").read_text() == text, "a refused edit leaves the file")
+    finally:
+        served.stop()
+    check(sorted(p.name for p in folder.iterdir() if p.name.startswith(".")) == [], "no temporary left")
 
 
 def measure_latency(folder, browser, name, latencies, trials=5):
@@ -126,6 +177,7 @@ def test_hostile_requests_are_refused(folder):
             check(status in (400, 404), f"{path}: {status}")
         check(served.get("/api/scenes", data=b"x" * (1 << 20))[0] == 413, "a body of a megabyte")
         check(served.get("/api/figure/0?at=nan")[0] == 400, "a time that is not a number")
+        check(served.get("/api/edit/0", data=b'{"changes": []}')[0] == 403, "no editing without --edit")
     finally:
         served.stop()
     # Another host than loopback is warned about.
@@ -159,13 +211,15 @@ def main():
     root = pathlib.Path(tempfile.mkdtemp(prefix="pita-serve-test-"))
     browser = Browser()
     try:
-        for test in (test_the_page_follows_the_saves, test_hostile_requests_are_refused,
-                     test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
+        for test in (test_the_page_follows_the_saves, test_dragging_writes_the_scene_file,
+                     test_hostile_requests_are_refused, test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
             if test is test_the_page_follows_the_saves:
                 test(folder, browser, latencies)
+            elif test is test_dragging_writes_the_scene_file:
+                test(folder, browser)
             else:
                 test(folder)
             print(f"ok {test.__name__} ({time.monotonic() - started:.1f} s)")

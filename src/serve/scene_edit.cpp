@@ -1,0 +1,122 @@
+#include "serve/scene_edit.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <variant>
+
+#include <Eigen/Dense>
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/affine2.hpp"
+#include "serve/json_edit.hpp"
+
+namespace pita::serve {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Where the keys a panel draws are given: its own "keyframes" or "poses",
+// else the scene's.
+std::string keys_pointer(const scene::Scene& scene, const scene::Panel& panel) {
+  const std::string& given = panel.motion_pointer;
+  const auto ends_with = [&](std::string_view tail) {
+    return given.size() >= tail.size() && given.compare(given.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  if (ends_with("/keyframes") || ends_with("/poses")) return given;
+  return scene::keys_field(scene.keys);
+}
+
+// The canvas point of a world point, and back.
+Point world_of(const render::ViewTransform& view, Point canvas) {
+  const Point d = canvas - view.canvas_center;
+  return view.world_center + Point{d.real(), view.y_up ? -d.imag() : d.imag()} / view.scale;
+}
+
+std::string point_json(Point p) { return fmt::format("[{}, {}]", number_json(p.real()), number_json(p.imag())); }
+
+// The reference triangle's corners moved by a pose.
+std::array<Point, 3> corners(const scene::Scene& scene, const Affine2& pose) {
+  std::array<Point, 3> out;
+  for (int j = 0; j < 3; ++j) out[j] = apply(pose, scene.reference_triangle[j]);
+  return out;
+}
+
+}  // namespace
+
+std::string number_json(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
+
+std::vector<Handle> handles(const scene::Scene& scene, const std::vector<render::PanelPlacement>& placements) {
+  std::vector<Handle> all;
+  for (std::size_t i = 0; i < scene.panels.size() && i < placements.size(); ++i) {
+    const scene::Panel& panel = scene.panels[i];
+    const render::ViewTransform& view = placements[i].transform;
+    const std::string keys = keys_pointer(scene, panel);
+    if (const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys)) {
+      if (!arrows->keyframes_to.empty()) continue;  // moving keyframes: two arrows each
+      for (std::size_t k = 0; k < arrows->keyframes.size(); ++k) {
+        const Arrow& a = arrows->keyframes[k].arrow;
+        const std::string pointer = fmt::format("{}/{}", keys, k);
+        all.push_back({i, pointer, "tail", view(a.p)});
+        all.push_back({i, pointer, "tip", view(a.q())});
+      }
+    } else if (const auto* poses = std::get_if<scene::PlanePoseKeys>(&panel.keys)) {
+      for (std::size_t k = 0; k < poses->poses.size(); ++k) {
+        const auto points = corners(scene, poses->poses[k].pose);
+        for (int j = 0; j < 3; ++j) {
+          all.push_back({i, fmt::format("{}/{}", keys, k), fmt::format("corner{}", j), view(points[j])});
+        }
+      }
+    }
+  }
+  return all;
+}
+
+std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
+                         const std::vector<render::PanelPlacement>& placements, std::size_t panel,
+                         const std::string& pointer, const std::string& part, Point to) {
+  if (panel >= scene.panels.size() || panel >= placements.size()) throw std::invalid_argument("no such panel");
+  bool found = false;
+  for (const Handle& handle : handles(scene, placements)) {
+    found = found || (handle.panel == panel && handle.pointer == pointer && handle.part == part);
+  }
+  if (!found) throw std::invalid_argument(fmt::format("{} has no handle \"{}\" in panel {}", pointer, part, panel));
+  const Point world = world_of(placements[panel].transform, to);
+  const TextSpan span = value_span(text, pointer);
+  const Json given = Json::parse(text.substr(span.begin, span.end - span.begin));
+  const scene::Panel& drawn = scene.panels[panel];
+  const std::size_t index = std::stoul(pointer.substr(pointer.rfind('/') + 1));
+
+  if (const auto* arrows = std::get_if<scene::KeyframeKeys>(&drawn.keys)) {
+    const Arrow& arrow = arrows->keyframes.at(index).arrow;
+    if (part == "tail") return {{pointer + "/p", point_json(world)}};
+    if (given.contains("q")) return {{pointer + "/q", point_json(world)}};
+    // The winding that was, turned by the least angle to the new direction.
+    const Point v = world - arrow.p;
+    const double turn = std::remainder(std::arg(v) - arrow.w, 2.0 * std::numbers::pi);
+    const double turns = given.contains("turns") ? given["turns"].get<double>() : 0.0;
+    return {{pointer + "/m", number_json(std::abs(v))},
+            {pointer + "/w", number_json(arrow.w + turn - 2.0 * std::numbers::pi * turns)}};
+  }
+  const auto& poses = std::get<scene::PlanePoseKeys>(drawn.keys);
+  const int corner = part.back() - '0';
+  if (given.contains("triangle")) return {{fmt::format("{}/triangle/{}", pointer, corner), point_json(world)}};
+  auto moved = corners(scene, poses.poses.at(index).pose);
+  moved[static_cast<std::size_t>(corner)] = world;
+  // The affinity that maps the reference triangle r onto `moved`.
+  const auto& r = scene.reference_triangle;
+  Eigen::Matrix2d R, M;
+  R << (r[1] - r[0]).real(), (r[2] - r[0]).real(), (r[1] - r[0]).imag(), (r[2] - r[0]).imag();
+  M << (moved[1] - moved[0]).real(), (moved[2] - moved[0]).real(), (moved[1] - moved[0]).imag(),
+      (moved[2] - moved[0]).imag();
+  Affine2 A;
+  A.L = M * R.inverse();
+  A.b = Eigen::Vector2d(moved[0].real(), moved[0].imag()) - A.L * Eigen::Vector2d(r[0].real(), r[0].imag());
+  return {{pointer + "/matrix", fmt::format("[[{}, {}, {}], [{}, {}, {}]]", number_json(A.L(0, 0)),
+                                            number_json(A.L(0, 1)), number_json(A.b(0)), number_json(A.L(1, 0)),
+                                            number_json(A.L(1, 1)), number_json(A.b(1)))}};
+}
+
+}  // namespace pita::serve

@@ -1,0 +1,49 @@
+// What `pita serve --edit` lets the page drag, and what a drag writes into
+// the scene file: the tail and the tip of each keyframe arrow, and the
+// corners of each pose of the plane, as drawn in a panel of the figure.
+// A drag becomes changes of JSON values at pointers (json_edit.hpp keeps the
+// rest of the file as it is); the result is checked as any scene before it
+// is written (server.cpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/arrow.hpp"
+#include "render/layout.hpp"
+#include "scene/scene.hpp"
+
+namespace pita::serve {
+
+struct Handle {
+  std::size_t panel = 0;
+  std::string pointer;  // the keyframe or pose: "/keyframes/1", "/panels/2/poses/0"
+  std::string part;     // "tail", "tip", "corner0", "corner1", "corner2"
+  Point at;             // in canvas pixels (the SVG's user units)
+};
+
+// Every handle of the figure's panels. Moving keyframes, timed points and
+// poses of space have none.
+std::vector<Handle> handles(const scene::Scene& scene, const std::vector<render::PanelPlacement>& placements);
+
+// The value at `pointer` becomes `value` (JSON text).
+struct Change {
+  std::string pointer;
+  std::string value;
+};
+
+// What moving `part` of `pointer`, as drawn in panel `panel`, to the canvas
+// point `to` changes in the scene file `text` (the scene read from it):
+//   tail: "p"; tip: "q" when the keyframe gives q, else "m" and "w" (the
+//   winding moved by less than half a turn, so its turns stay);
+//   a corner: that point of "triangle", else the whole "matrix" that maps the
+//   reference triangle onto the moved one.
+// Throws std::invalid_argument for a handle the figure does not have.
+std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
+                         const std::vector<render::PanelPlacement>& placements, std::size_t panel,
+                         const std::string& pointer, const std::string& part, Point to);
+
+// A number as the edits write it: the shortest text that reads back to it.
+std::string number_json(double x);
+
+}  // namespace pita::serve

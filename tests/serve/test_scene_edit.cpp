@@ -1,0 +1,119 @@
+// What a drag in `pita serve --edit` writes (src/serve/scene_edit.cpp): a
+// handle per keyframe tail and tip and per pose corner, where the figure draws
+// them; dragging a tail moves p, a tip sets q or m and w (keeping the turns),
+// a corner moves a triangle's point or sets the matrix that maps the
+// reference triangle there.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "motion/stage.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+#include "serve/json_edit.hpp"
+#include "serve/scene_edit.hpp"
+
+namespace pita::serve {
+namespace {
+
+struct Drawn {
+  scene::Scene scene;
+  render::Figure figure;
+};
+
+Drawn draw(const std::string& text) {
+  Drawn d{scene::parse_scene(text, "e.json"), {}};
+  const motion::Stage stage(d.scene);
+  d.figure = render::build_figure(stage);
+  return d;
+}
+
+std::string applied(std::string text, const std::vector<Change>& changes) {
+  for (const Change& change : changes) text = replace_value(text, change.pointer, change.value);
+  return text;
+}
+
+const Handle& find(const std::vector<Handle>& all, const std::string& pointer, const std::string& part) {
+  for (const Handle& h : all) {
+    if (h.pointer == pointer && h.part == part) return h;
+  }
+  throw std::runtime_error("no handle " + pointer + " " + part);
+}
+
+const std::string kArrows = R"({"method": "P6", "keyframes": [
+  {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
+  {"t": 0.5, "p": [3, 1.5], "q": [3.5, 2]},
+  {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5, "turns": 1}]})";
+
+TEST(SceneEdit, HandlesAreWhereTheFigureDrawsTheArrows) {
+  const Drawn d = draw(kArrows);
+  const std::vector<Handle> all = handles(d.scene, d.figure.placements);
+  ASSERT_EQ(all.size(), 6u);
+  const auto& view = d.figure.placements[0].transform;
+  EXPECT_EQ(find(all, "/keyframes/1", "tail").at, view(Point(3, 1.5)));
+  EXPECT_EQ(find(all, "/keyframes/1", "tip").at, view(Point(3.5, 2)));
+}
+
+TEST(SceneEdit, DraggingATailMovesP) {
+  const Drawn d = draw(kArrows);
+  const auto& view = d.figure.placements[0].transform;
+  const auto changes = drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "tail", view(Point(1, -2)));
+  const auto edited = nlohmann::json::parse(applied(kArrows, changes));
+  EXPECT_NEAR(edited["keyframes"][0]["p"][0].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(edited["keyframes"][0]["p"][1].get<double>(), -2.0, 1e-12);
+}
+
+TEST(SceneEdit, DraggingATipSetsQOrMagnitudeAndWindingKeepingTheTurns) {
+  const Drawn d = draw(kArrows);
+  const auto& view = d.figure.placements[0].transform;
+  auto edited = nlohmann::json::parse(
+      applied(kArrows, drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/1", "tip", view(Point(4, 1.5)))));
+  EXPECT_NEAR(edited["keyframes"][1]["q"][0].get<double>(), 4.0, 1e-12);
+  // keyframe 2: w = 3.5 with one more turn; the tip moved a little keeps both.
+  const Point tip = Point(6, 0) + std::polar(2.0, 3.6);
+  edited = nlohmann::json::parse(
+      applied(kArrows, drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/2", "tip", view(tip))));
+  EXPECT_NEAR(edited["keyframes"][2]["m"].get<double>(), 2.0, 1e-9);
+  EXPECT_NEAR(edited["keyframes"][2]["w"].get<double>(), 3.6, 1e-9);
+  EXPECT_EQ(edited["keyframes"][2]["turns"], 1);
+}
+
+TEST(SceneEdit, DraggingACornerMovesTheTriangleOrSetsTheMatrix) {
+  const std::string text = R"({"method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+    {"t": 1, "triangle": [[4, 0], [5, 0], [4, 1]]}]})";
+  const Drawn d = draw(text);
+  const auto& view = d.figure.placements[0].transform;
+  EXPECT_EQ(handles(d.scene, d.figure.placements).size(), 6u);
+  auto edited = nlohmann::json::parse(
+      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/1", "corner2", view(Point(4.5, 2)))));
+  EXPECT_NEAR(edited["poses"][1]["triangle"][2][1].get<double>(), 2.0, 1e-12);
+  // Corner 1 of the identity pose to (2, 0): the matrix that maps (0,0),(1,0),(0,1) to (0,0),(2,0),(0,1).
+  edited = nlohmann::json::parse(
+      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/0", "corner1", view(Point(2, 0)))));
+  const auto& m = edited["poses"][0]["matrix"];
+  EXPECT_NEAR(m[0][0].get<double>(), 2.0, 1e-12);
+  EXPECT_NEAR(m[0][1].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(m[1][1].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(m[0][2].get<double>(), 0.0, 1e-12);
+}
+
+TEST(SceneEdit, AHandleTheFigureDoesNotHaveIsRefused) {
+  const Drawn d = draw(kArrows);
+  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}), std::invalid_argument);
+  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}), std::invalid_argument);
+  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 3, "/keyframes/0", "tail", {0, 0}), std::invalid_argument);
+}
+
+TEST(SceneEdit, NumbersAreWrittenShortAndExact) {
+  EXPECT_EQ(number_json(3.0), "3");
+  EXPECT_EQ(number_json(-0.0), "0");
+  EXPECT_EQ(std::stod(number_json(0.1 + 0.2)), 0.1 + 0.2);
+}
+
+}  // namespace
+}  // namespace pita::serve
