@@ -27,7 +27,9 @@ def save(folder, scene, name="s.json"):
 
 
 def figure_text(browser):
-    return browser.evaluate(f"{FIGURE} ? {FIGURE}.outerHTML : ''")
+    """Scene 0's figure in the page, its ids as cairo wrote them (the page prefixes them with s0-)."""
+    text = browser.evaluate(f"{FIGURE} ? {FIGURE}.outerHTML : ''")
+    return text.replace('id="s0-', 'id="').replace('"#s0-', '"#').replace("url(#s0-", "url(#")
 
 
 def page_state(browser):
@@ -141,6 +143,26 @@ def test_dragging_writes_the_scene_file(folder, browser):
     check(sorted(p.name for p in folder.iterdir() if p.name.startswith(".")) == [], "no temporary left")
 
 
+def test_two_figures_keep_their_own_glyphs(folder, browser):
+    """cairo gives every SVG the same ids (glyph0-1, ...): in one page each figure must still
+    draw with its own glyphs and clips."""
+    save(folder, FIG03, "a.json")
+    save(folder, json.loads((SOURCE / "scenes" / "fig01-eight-pitas.json").read_text()), "b.json")
+    served = Served(folder, ["a.json", "b.json"])
+    try:
+        browser.open(served.url)
+        eventually(lambda: browser.evaluate("document.querySelectorAll('.figure svg').length") == 2, 60,
+                   what=lambda: "two figures: " + page_state(browser))
+        ids = browser.evaluate("[...document.querySelectorAll('.figure [id]')].map(e => e.id)")
+        check(len(ids) > 10 and len(ids) == len(set(ids)), f"{len(ids) - len(set(ids))} ids shared")
+        strays = browser.evaluate("""[...document.querySelectorAll('.figure svg')].flatMap(svg =>
+            [...svg.querySelectorAll('use')].map(u => u.getAttribute('xlink:href') || u.getAttribute('href'))
+              .filter(h => !svg.querySelector(h)))""")
+        check(strays == [], f"references to another figure's glyphs: {strays[:5]}")
+    finally:
+        served.stop()
+
+
 def measure_latency(folder, browser, name, latencies, trials=5):
     """Save to updated figure in the page, for scenes/NAME.json (the median of `trials` saves)."""
     scene = json.loads((SOURCE / "scenes" / f"{name}.json").read_text())
@@ -212,13 +234,14 @@ def main():
     browser = Browser()
     try:
         for test in (test_the_page_follows_the_saves, test_dragging_writes_the_scene_file,
-                     test_hostile_requests_are_refused, test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
+                     test_two_figures_keep_their_own_glyphs, test_hostile_requests_are_refused,
+                     test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
             if test is test_the_page_follows_the_saves:
                 test(folder, browser, latencies)
-            elif test is test_dragging_writes_the_scene_file:
+            elif test in (test_dragging_writes_the_scene_file, test_two_figures_keep_their_own_glyphs):
                 test(folder, browser)
             else:
                 test(folder)
