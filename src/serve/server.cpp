@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "analysis/claims.hpp"
 #include "analysis/measure.hpp"
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
@@ -70,6 +71,7 @@ struct SceneState {
   std::optional<Json> error;                  // the last save's, when it could not be drawn
   std::vector<fs::path> files;                // the scene and its images (what is watched)
   std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
+  Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
 };
 
 class Server {
@@ -90,12 +92,17 @@ class Server {
     std::string svg;
     std::optional<Json> error;
     render::Figure figure;
+    Json claims = Json::array();
     try {
       scene = std::make_shared<const scene::Scene>(
           scene::load_scene(state.path, {settings_.allow_absolute_paths}));
       const motion::Stage stage(*scene);
       figure = render::build_figure(stage);
       svg = render::render_figure(*scene, figure, render::Format::svg);
+      for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
+        claims.push_back({{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held},
+                          {"measured", claim.measured}});
+      }
     } catch (...) {
       error = error_json(std::current_exception(), state.path.string());
     }
@@ -105,6 +112,7 @@ class Server {
         state.scene = scene;
         state.svg = std::move(svg);
         state.placements = figure.placements;
+        state.claims = std::move(claims);
         state.files = {state.path};
         for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
       }
@@ -144,7 +152,7 @@ class Server {
       Json entry{{"index", i}, {"name", state.path.stem().string()}, {"path", state.path.string()},
                  {"version", state.version}, {"title", state.scene ? state.scene->title : ""},
                  {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr},
-                 {"handles", Json::array()}};
+                 {"handles", Json::array()}, {"claims", state.claims}};
       if (settings_.edit && state.scene) {
         for (const Handle& handle : handles(*state.scene, state.placements)) {
           entry["handles"].push_back({{"panel", handle.panel}, {"pointer", handle.pointer}, {"part", handle.part},

@@ -54,6 +54,11 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         check(browser.evaluate("document.querySelector('#scene-0 h2').textContent").startswith("s: Fig. 3"),
               "the scene's name and title")
 
+        # The caption's claims, measured: Fig. 3's hold.
+        claims = eventually(lambda: browser.evaluate(
+            "[...document.querySelectorAll('#scene-0 .claims li')].map(li => li.className)"), 60)
+        check(claims and all(c == "held" for c in claims), f"the claims hold: {claims}")
+
         # A save: the page shows the new figure without reloading.
         browser.evaluate("window.pitaMarker = 1")
         changed = dict(FIG03)
@@ -66,6 +71,10 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         second = eventually(lambda: (figure_text(browser) or first) != first and figure_text(browser), 60,
                             what=lambda: "the new figure: " + page_state(browser))
         check(browser.evaluate("window.pitaMarker") == 1, "the page was reloaded")
+        # w = 2.0 breaks the claim that the winding runs from 0.3 to 3.6: the page says so.
+        failed = eventually(lambda: browser.evaluate(
+            "[...document.querySelectorAll('#scene-0 .claims li.failed')].map(li => li.textContent)"), 60)
+        check(any("winding" in text for text in failed), f"the failed claim: {failed}")
         seen = eventually(lambda: browser.evaluate("window.pitaSeen"), 10)
         check(seen / 1000 - start < 60, "the figure came")
         status, body = served.get("/api/figure/0")
