@@ -1,5 +1,7 @@
 #include "render/image_cache.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
@@ -29,15 +31,17 @@ std::size_t bytes_of(cairo_surface_t* surface) {
 }
 
 // What tells one version of a file from the next without reading it: its
-// modification time and size ("" when it cannot be read: decoding then says
+// inode, size, modification and status change times ("" when it cannot be read: decoding then says
 // why). A long-lived process (pita watch, the Python module) sees an image
 // saved again as a new one.
 std::string file_stamp(const std::string& path) {
-  std::error_code time_error, size_error;
-  const auto time = std::filesystem::last_write_time(path, time_error);
-  const auto size = std::filesystem::file_size(path, size_error);
-  if (time_error || size_error) return {};
-  return fmt::format("{}:{}", time.time_since_epoch().count(), size);
+  struct stat status {};
+  if (::stat(path.c_str(), &status) != 0) return {};
+  // The inode and the status change time too: a copy that keeps the
+  // modification time (cp -p) or a rewrite of the same size in the same
+  // tick is still another version.
+  return fmt::format("{}:{}:{}.{}:{}.{}", status.st_ino, status.st_size, status.st_mtim.tv_sec,
+                     status.st_mtim.tv_nsec, status.st_ctim.tv_sec, status.st_ctim.tv_nsec);
 }
 
 // One thread's images, the most recently used first.

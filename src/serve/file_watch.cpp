@@ -38,21 +38,34 @@ FileWatcher::FileWatcher() : fd_(::inotify_init1(IN_CLOEXEC | IN_NONBLOCK)) {
 FileWatcher::~FileWatcher() { ::close(fd_); }
 
 void FileWatcher::watch(const std::vector<fs::path>& files) {
-  for (const auto& [descriptor, folder] : folders_) ::inotify_rm_watch(fd_, descriptor);
-  folders_.clear();
-  files_.clear();
+  std::map<fs::path, fs::path> named;
   std::set<fs::path> folders;
   for (const fs::path& file : files) {
-    files_.insert(normal(file));
-    folders.insert(normal(file).parent_path());
+    const fs::path given = normal(file);
+    named[given] = given;
+    folders.insert(given.parent_path());
+    std::error_code error;
+    const fs::path target = fs::weakly_canonical(given, error);
+    if (!error && target != given) {
+      named[target] = given;
+      folders.insert(target.parent_path());
+    }
   }
+  // New watches first: a folder watched already keeps its descriptor, and
+  // the events queued on it.
+  std::map<int, fs::path> watched;
   for (const fs::path& folder : folders) {
     const int descriptor = ::inotify_add_watch(fd_, folder.c_str(), kSaveEvents);
     if (descriptor < 0) {
       throw std::system_error(errno, std::generic_category(), "cannot watch the folder " + folder.string());
     }
-    folders_[descriptor] = folder;
+    watched[descriptor] = folder;
   }
+  for (const auto& [descriptor, folder] : folders_) {
+    if (watched.count(descriptor) == 0) ::inotify_rm_watch(fd_, descriptor);
+  }
+  folders_ = std::move(watched);
+  files_ = std::move(named);
 }
 
 void FileWatcher::drain(std::set<fs::path>& saved) {
@@ -68,10 +81,14 @@ void FileWatcher::drain(std::set<fs::path>& saved) {
     for (ssize_t at = 0; at < got;) {
       const auto* event = reinterpret_cast<const inotify_event*>(buffer.data() + at);
       at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
+      if ((event->mask & IN_Q_OVERFLOW) != 0) {  // events were lost: every file may have changed
+        for (const auto& [where, file] : files_) saved.insert(file);
+        continue;
+      }
       const auto folder = folders_.find(event->wd);
       if (folder == folders_.end() || event->len == 0) continue;
-      const fs::path file = folder->second / event->name;
-      if (files_.count(file) != 0) saved.insert(file);
+      const auto file = files_.find(folder->second / event->name);
+      if (file != files_.end()) saved.insert(file->second);
     }
   }
 }

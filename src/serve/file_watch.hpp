@@ -2,13 +2,15 @@
 // (inotify). Editors save in place or write a new file and rename it over the
 // old one, so the folders of the files are watched, and a file counts as
 // saved when a writer closes it, a file is renamed to its name, or it is
-// deleted (the next read says so).
+// deleted (the next read says so). A file reached through a symbolic link is
+// watched in the folder of its target too (an editor may write the target).
 #pragma once
 
 #include <chrono>
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace pita::serve {
@@ -21,8 +23,9 @@ class FileWatcher {
   FileWatcher(const FileWatcher&) = delete;
   FileWatcher& operator=(const FileWatcher&) = delete;
 
-  // Watches these files (replacing the set watched before). A folder that
-  // cannot be watched throws std::system_error naming it.
+  // Watches these files (replacing the set watched before; folders watched
+  // before and now keep their watch, and the events queued on it). A folder
+  // that cannot be watched throws std::system_error naming it.
   void watch(const std::vector<std::filesystem::path>& files);
 
   // The watched files saved since the last call, waiting up to `timeout` for
@@ -38,7 +41,9 @@ class FileWatcher {
 
   int fd_ = -1;
   std::map<int, std::filesystem::path> folders_;       // watch descriptor -> folder
-  std::set<std::filesystem::path> files_;              // absolute, lexically normal
+  // Where an event may name a watched file (absolute, lexically normal: the
+  // file, and the target of its links) -> the file as watch() was given it.
+  std::map<std::filesystem::path, std::filesystem::path> files_;
 };
 
 }  // namespace pita::serve

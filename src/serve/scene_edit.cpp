@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <regex>
 #include <stdexcept>
 #include <variant>
 
@@ -18,14 +19,18 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// Where the keys a panel draws are given: its own "keyframes" or "poses",
-// else the scene's.
-std::string keys_pointer(const scene::Scene& scene, const scene::Panel& panel) {
-  const std::string& given = panel.motion_pointer;
-  const auto ends_with = [&](std::string_view tail) {
-    return given.size() >= tail.size() && given.compare(given.size() - tail.size(), tail.size(), tail) == 0;
-  };
-  if (ends_with("/keyframes") || ends_with("/poses")) return given;
+// Where the keys a panel draws are given in the file: its own "keyframes" or
+// "poses", else the scene's.
+std::string keys_pointer(const std::string& text, const scene::Scene& scene, const scene::Panel& panel) {
+  const std::string field = scene::keys_field(panel.keys);
+  if (!panel.pointer.empty()) {
+    try {
+      value_span(text, panel.pointer + field);
+      return panel.pointer + field;
+    } catch (const std::invalid_argument&) {
+      // the panel draws the scene's
+    }
+  }
   return scene::keys_field(scene.keys);
 }
 
@@ -46,14 +51,30 @@ std::array<Point, 3> corners(const scene::Scene& scene, const Affine2& pose) {
 
 }  // namespace
 
+void check_change(const std::string& text, const Change& change) {
+  // /keyframes/K/(p|q|m|w), /poses/K/(triangle/J|matrix), or the same under /panels/N.
+  static const std::regex editable(R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix))$)");
+  if (!std::regex_match(change.pointer, editable)) {
+    throw std::invalid_argument("\"" + change.pointer + "\" is not a value a drag writes");
+  }
+  try {
+    const Json parsed = Json::parse(change.value);  // exactly one JSON value, nothing after it
+    if (parsed.is_discarded()) throw std::invalid_argument("not JSON");
+  } catch (const Json::exception&) {
+    throw std::invalid_argument("the value for " + change.pointer + " is not one JSON value");
+  }
+  value_span(text, change.pointer);  // and it is there to be replaced
+}
+
 std::string number_json(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
 
-std::vector<Handle> handles(const scene::Scene& scene, const std::vector<render::PanelPlacement>& placements) {
+std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
+                            const std::vector<render::PanelPlacement>& placements) {
   std::vector<Handle> all;
   for (std::size_t i = 0; i < scene.panels.size() && i < placements.size(); ++i) {
     const scene::Panel& panel = scene.panels[i];
     const render::ViewTransform& view = placements[i].transform;
-    const std::string keys = keys_pointer(scene, panel);
+    const std::string keys = keys_pointer(text, scene, panel);
     if (const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys)) {
       if (!arrows->keyframes_to.empty()) continue;  // moving keyframes: two arrows each
       for (std::size_t k = 0; k < arrows->keyframes.size(); ++k) {
@@ -79,7 +100,7 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
                          const std::string& pointer, const std::string& part, Point to) {
   if (panel >= scene.panels.size() || panel >= placements.size()) throw std::invalid_argument("no such panel");
   bool found = false;
-  for (const Handle& handle : handles(scene, placements)) {
+  for (const Handle& handle : handles(text, scene, placements)) {
     found = found || (handle.panel == panel && handle.pointer == pointer && handle.part == part);
   }
   if (!found) throw std::invalid_argument(fmt::format("{} has no handle \"{}\" in panel {}", pointer, part, panel));

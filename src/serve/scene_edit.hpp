@@ -22,9 +22,11 @@ struct Handle {
   Point at;             // in canvas pixels (the SVG's user units)
 };
 
-// Every handle of the figure's panels. Moving keyframes, timed points and
-// poses of space have none.
-std::vector<Handle> handles(const scene::Scene& scene, const std::vector<render::PanelPlacement>& placements);
+// Every handle of the figure's panels, for the scene read from `text`: a
+// panel that gives its own "keyframes" or "poses" edits those, the others the
+// scene's. Moving keyframes, timed points and poses of space have none.
+std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
+                            const std::vector<render::PanelPlacement>& placements);
 
 // The value at `pointer` becomes `value` (JSON text).
 struct Change {
@@ -39,9 +41,15 @@ struct Change {
 //   a corner: that point of "triangle", else the whole "matrix" that maps the
 //   reference triangle onto the moved one.
 // Throws std::invalid_argument for a handle the figure does not have.
+// Changes a page sends back (undo) are checked by checked_change.
 std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
                          const std::vector<render::PanelPlacement>& placements, std::size_t panel,
                          const std::string& pointer, const std::string& part, Point to);
+
+// A change as the page may send it: the pointer names a value a handle
+// writes (p, q, m, w, a triangle's point, a matrix) of a keyframe or pose, and
+// the value is one JSON value. Throws std::invalid_argument otherwise.
+void check_change(const std::string& text, const Change& change);
 
 // A number as the edits write it: the shortest text that reads back to it.
 std::string number_json(double x);

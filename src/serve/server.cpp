@@ -72,6 +72,7 @@ struct SceneState {
   std::vector<fs::path> files;                // the scene and its images (what is watched)
   std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
   Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
+  std::string text;                                // the file it was read from
 };
 
 class Server {
@@ -93,9 +94,14 @@ class Server {
     std::optional<Json> error;
     render::Figure figure;
     Json claims = Json::array();
+    std::string text;
     try {
+      {
+        std::ifstream in(state.path, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      }
       scene = std::make_shared<const scene::Scene>(
-          scene::load_scene(state.path, {settings_.allow_absolute_paths}));
+          scene::parse_scene(text, state.path.string(), {settings_.allow_absolute_paths}));
       const motion::Stage stage(*scene);
       figure = render::build_figure(stage);
       svg = render::render_figure(*scene, figure, render::Format::svg);
@@ -113,6 +119,7 @@ class Server {
         state.svg = std::move(svg);
         state.placements = figure.placements;
         state.claims = std::move(claims);
+        state.text = std::move(text);
         state.files = {state.path};
         for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
       }
@@ -154,7 +161,7 @@ class Server {
                  {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr},
                  {"handles", Json::array()}, {"claims", state.claims}};
       if (settings_.edit && state.scene) {
-        for (const Handle& handle : handles(*state.scene, state.placements)) {
+        for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
           entry["handles"].push_back({{"panel", handle.panel}, {"pointer", handle.pointer}, {"part", handle.part},
                                       {"at", {handle.at.real(), handle.at.imag()}}});
         }
@@ -219,11 +226,19 @@ class Server {
     const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
     const fs::path path = scenes_[i]->path;
     std::ifstream in(path, std::ios::binary);
+    in.exceptions(std::ios::goodbit);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof()) throw std::invalid_argument("cannot read " + path.string());
     std::vector<Change> changes;
     if (request.contains("drag")) {
       const Json& d = request.at("drag");
+      // Where the page drew the handle is where the figure it showed put it.
+      if (d.contains("version")) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        if (d.at("version").get<std::uint64_t>() != scenes_[i]->version) {
+          throw std::invalid_argument("the figure changed while dragging: drag again");
+        }
+      }
       const scene::Scene scene = scene::parse_scene(text, path.string(), {settings_.allow_absolute_paths});
       const motion::Stage stage(scene);
       const render::Figure figure = render::build_figure(stage);
@@ -232,6 +247,7 @@ class Server {
     } else {
       for (const Json& change : request.at("changes")) {
         changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+        check_change(text, changes.back());
       }
     }
     std::string edited = text;
@@ -244,8 +260,12 @@ class Server {
     // Refused unless the result is a scene pita draws.
     const scene::Scene checked = scene::parse_scene(edited, path.string(), {settings_.allow_absolute_paths});
     const motion::Stage stage(checked);
-    render::build_figure(stage);
-    render::write_file_atomically(path, edited);
+    render::render_figure(checked, render::build_figure(stage), render::Format::svg);
+    // The file itself (through a link, its target), with the permissions it had.
+    const fs::path target = fs::canonical(path);
+    const fs::perms permissions = fs::status(target).permissions();
+    render::write_file_atomically(target, edited);
+    fs::permissions(target, permissions);
     return Json{{"previous", previous}};
   }
 
@@ -301,16 +321,35 @@ std::string random_token() {
 
 int serve(const Settings& settings, std::ostream& log, const std::function<bool()>& stopped) {
   Server state(settings);
+  // Watching starts before the first renders, so that no save is missed;
+  // a watch that cannot be set up is said before anything is served.
+  FileWatcher watcher;
+  std::vector<fs::path> files = state.watched();
+  try {
+    watcher.watch(files);
+  } catch (const std::system_error& error) {
+    log << "pita: cannot watch the scenes (" << error.what() << ")\n";
+    return 2;
+  }
   for (std::size_t i = 0; i < state.size(); ++i) state.render(i);
 
   httplib::Server http;
   http.set_payload_max_length(64 * 1024);  // no request of the page is larger: a larger one is refused (413)
   http.set_keep_alive_max_count(100);
+  // Each page holds a worker for its event stream: room for many tabs, and
+  // idle connections let go of theirs soon.
+  http.new_task_queue = [] { return new httplib::ThreadPool(64); };
+  http.set_keep_alive_timeout(1);
   // Every request carries the token (as Jupyter's): a page of another site
   // cannot guess it, so it can neither read nor drive this server.
   http.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
     const std::string given = req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
-    if (given != settings.token) {
+    // Compared in constant time: how long a refusal takes says nothing of the token.
+    unsigned difference = given.size() == settings.token.size() ? 0U : 1U;
+    for (std::size_t k = 0; k < given.size() && k < settings.token.size(); ++k) {
+      difference |= static_cast<unsigned>(given[k] ^ settings.token[k]);
+    }
+    if (difference != 0) {
       send_error(res, 403, "a token is needed: use the address pita serve printed");
       return httplib::Server::HandlerResponse::Handled;
     }
@@ -365,7 +404,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
     res.set_header("Cache-Control", "no-store");
     auto seen = std::make_shared<std::vector<std::uint64_t>>(state.versions_after({}, std::chrono::milliseconds(0)));
     res.set_chunked_content_provider("text/event-stream", [&state, seen](std::size_t, httplib::DataSink& sink) {
-      const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(15));
+      const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(5));
       if (state.stopping()) return false;
       std::string events;
       for (std::size_t i = 0; i < now.size(); ++i) {
@@ -406,25 +445,31 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
     return 3;
   }
   std::thread listener([&] { http.listen_after_bind(); });
+  const std::string host = settings.host.find(':') != std::string::npos ? "[" + settings.host + "]" : settings.host;
   log << fmt::format("pita: serving {} scene{} at http://{}:{}/?token={}\n", state.size(),
-                     state.size() == 1 ? "" : "s", settings.host, port, settings.token)
+                     state.size() == 1 ? "" : "s", host, port, settings.token)
       << std::flush;
 
   // Renders each saved scene again, until stopped.
-  FileWatcher watcher;
-  std::vector<fs::path> files = state.watched();
-  watcher.watch(files);
-  while (!stopped()) {
-    const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
-    if (saved.empty()) continue;
-    for (const std::size_t i : state.scenes_of(saved)) state.render(i);
+  int code = 0;
+  try {
     std::vector<fs::path> now = state.watched();
-    if (now != files) watcher.watch(files = std::move(now));
+    if (now != files) watcher.watch(files = std::move(now));  // the images of the first renders
+    while (!stopped()) {
+      const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
+      if (saved.empty()) continue;
+      for (const std::size_t i : state.scenes_of(saved)) state.render(i);
+      now = state.watched();
+      if (now != files) watcher.watch(files = std::move(now));
+    }
+  } catch (const std::exception& error) {
+    log << "pita: stopped watching the scenes (" << error.what() << ")\n";
+    code = 3;
   }
   state.stop();
   http.stop();
   listener.join();
-  return 0;
+  return code;
 }
 
 }  // namespace pita::serve

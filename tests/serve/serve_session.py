@@ -60,6 +60,11 @@ class Served:
                 return response.status, response.read()
         except urllib.error.HTTPError as error:
             return error.code, error.read()
+        except urllib.error.URLError as error:
+            # The server may answer a body it refuses (413) and close before the client has sent it all.
+            if isinstance(error.reason, ConnectionResetError) or "reset" in str(error.reason).lower():
+                return "reset", b""
+            raise
 
     def stop(self):
         self.process.terminate()

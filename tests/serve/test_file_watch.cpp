@@ -92,6 +92,18 @@ TEST_F(FileWatcherTest, WatchingAnotherSetForgetsTheFirst) {
   EXPECT_EQ(watcher.wait(milliseconds(5000)).count(other()), 1u);
 }
 
+TEST_F(FileWatcherTest, AWriteThroughASymbolicLinkIsASaveOfTheLink) {
+  fs::create_directories(dir_ / "elsewhere");
+  write(dir_ / "elsewhere" / "target.json", "{}");
+  fs::create_symlink(dir_ / "elsewhere" / "target.json", dir_ / "link.json");
+  FileWatcher watcher;
+  watcher.watch({dir_ / "link.json"});
+  write(dir_ / "elsewhere" / "target.json", R"({"b": 2})");  // the editor writes the target
+  const auto saved = watcher.wait(milliseconds(5000));
+  ASSERT_EQ(saved.size(), 1u);
+  EXPECT_EQ(*saved.begin(), fs::absolute(dir_ / "link.json"));
+}
+
 TEST_F(FileWatcherTest, AFolderThatDoesNotExistIsRefused) {
   FileWatcher watcher;
   EXPECT_THROW(watcher.watch({dir_ / "no-such-folder" / "scene.json"}), std::system_error);

@@ -51,7 +51,7 @@ const std::string kArrows = R"({"method": "P6", "keyframes": [
 
 TEST(SceneEdit, HandlesAreWhereTheFigureDrawsTheArrows) {
   const Drawn d = draw(kArrows);
-  const std::vector<Handle> all = handles(d.scene, d.figure.placements);
+  const std::vector<Handle> all = handles(kArrows, d.scene, d.figure.placements);
   ASSERT_EQ(all.size(), 6u);
   const auto& view = d.figure.placements[0].transform;
   EXPECT_EQ(find(all, "/keyframes/1", "tail").at, view(Point(3, 1.5)));
@@ -88,7 +88,7 @@ TEST(SceneEdit, DraggingACornerMovesTheTriangleOrSetsTheMatrix) {
     {"t": 1, "triangle": [[4, 0], [5, 0], [4, 1]]}]})";
   const Drawn d = draw(text);
   const auto& view = d.figure.placements[0].transform;
-  EXPECT_EQ(handles(d.scene, d.figure.placements).size(), 6u);
+  EXPECT_EQ(handles(text, d.scene, d.figure.placements).size(), 6u);
   auto edited = nlohmann::json::parse(
       applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/1", "corner2", view(Point(4.5, 2)))));
   EXPECT_NEAR(edited["poses"][1]["triangle"][2][1].get<double>(), 2.0, 1e-12);
@@ -107,6 +107,28 @@ TEST(SceneEdit, AHandleTheFigureDoesNotHaveIsRefused) {
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}), std::invalid_argument);
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}), std::invalid_argument);
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 3, "/keyframes/0", "tail", {0, 0}), std::invalid_argument);
+}
+
+TEST(SceneEdit, APanelWithPosesOfItsOwnEditsThem) {
+  const std::string text = R"({"method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 1], [0, 2, 0]]}],
+    "panels": [{}, {"poses": [{"t": 0, "triangle": [[0, 0], [1, 0], [0, 1]]},
+                              {"t": 1, "triangle": [[3, 0], [4, 0], [3, 1]]}]}]})";
+  const Drawn d = draw(text);
+  const std::vector<Handle> all = handles(text, d.scene, d.figure.placements);
+  for (const Handle& h : all) {
+    EXPECT_EQ(h.pointer.rfind(h.panel == 0 ? "/poses/" : "/panels/1/poses/", 0), 0u) << h.panel << " " << h.pointer;
+  }
+}
+
+TEST(SceneEdit, OnlyTheValuesADragWritesMayBeSentBack) {
+  check_change(kArrows, {"/keyframes/0/p", "[1, 2]"});
+  check_change(kArrows, {"/keyframes/2/w", "3.5"});
+  for (const Change& bad : std::vector<Change>{{"", "{}"}, {"/method", "\"P1\""}, {"/keyframes/0/t", "5"},
+                                               {"/keyframes/0/p", "[1, 2], \"x\": 1"}, {"/keyframes/0/q", "[1, 2]"},
+                                               {"/keyframes/9/p", "[1, 2]"}}) {
+    EXPECT_THROW(check_change(kArrows, bad), std::invalid_argument) << bad.pointer << " = " << bad.value;
+  }
 }
 
 TEST(SceneEdit, NumbersAreWrittenShortAndExact) {
