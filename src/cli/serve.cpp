@@ -59,8 +59,8 @@ Serves a page that shows each scene's figure and renders it again each time the 
 image it uses, is saved: the page updates without reloading. A bad save shows its error (file,
 line:column or JSON Pointer) above the last good figure. A scene with a motion or an animation
 has a time slider and a play button (the frames `pita render --at T` draws); the claims of the
-scene's caption show as held or failed, and the measures of `pita measure` under a figure when
-the pointer is over it.
+scene's caption show as held or failed, and the measures of `pita measure` of the panel under
+the pointer.
 
 It listens on 127.0.0.1 only, unless --host says otherwise. The address it prints carries a
 random token that every request must give: another page of the browser cannot read or drive

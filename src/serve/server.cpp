@@ -159,7 +159,11 @@ class Server {
       Json entry{{"index", i}, {"name", state.path.stem().string()}, {"path", state.path.string()},
                  {"version", state.version}, {"title", state.scene ? state.scene->title : ""},
                  {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr},
-                 {"handles", Json::array()}, {"claims", state.claims}};
+                 {"handles", Json::array()}, {"claims", state.claims}, {"panels", Json::array()}};
+      // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
+      for (const render::PanelPlacement& placement : state.placements) {
+        entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
+      }
       if (settings_.edit && state.scene) {
         for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
           entry["handles"].push_back({{"panel", handle.panel}, {"pointer", handle.pointer}, {"part", handle.part},

@@ -168,6 +168,15 @@ def test_two_figures_keep_their_own_glyphs(folder, browser):
             [...svg.querySelectorAll('use')].map(u => u.getAttribute('xlink:href') || u.getAttribute('href'))
               .filter(h => !svg.querySelector(h)))""")
         check(strays == [], f"references to another figure's glyphs: {strays[:5]}")
+        # The pointer over Fig. 1's third panel: the measures of P3 alone.
+        browser.evaluate("document.querySelector('#scene-1 .figure').scrollIntoView()")
+        x, y = browser.evaluate("""(() => { const svg = document.querySelector('#scene-1 .figure svg');
+            const v = views.get(1); const [cx, cy, w, h] = v.panels[2];
+            const p = svg.createSVGPoint(); p.x = cx + w / 2; p.y = cy + h / 2;
+            const q = p.matrixTransform(svg.getScreenCTM()); return [q.x, q.y]; })()""")
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        shown = eventually(lambda: browser.evaluate("document.querySelector('#scene-1 .measures').textContent"), 60)
+        check(shown.startswith("P3") and "\n" not in shown, f"the measures of the panel under the pointer: {shown}")
     finally:
         served.stop()
 
