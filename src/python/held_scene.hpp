@@ -17,9 +17,10 @@ struct HeldMotion {
   std::unique_ptr<motion::Evaluation> evaluation;  // refers to `scene`: this object does not move
 };
 
-// The motion of the scene given as JSON text (named `source` in errors).
-// Throws scene::SceneError, motion::NoMotion.
-std::shared_ptr<HeldMotion> hold_motion(const std::string& text, const std::string& source);
+// The motion of `scene` (its own, or panel `panel`'s), built once and kept
+// with a copy of the scene. Throws scene::SceneError for a scene without a
+// motion, motion::NoMotion, and ValueError for a panel it does not have.
+std::shared_ptr<HeldMotion> hold_motion(scene::Scene scene, std::optional<int> panel = std::nullopt);
 
 // The frames of `motion` at `times`, as pita.Motion returns them.
 py::object sample(const motion::SceneMotion& motion, const Times& times);

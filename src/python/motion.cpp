@@ -5,6 +5,7 @@
 // same SceneMotion as `pita eval`.
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -129,13 +130,17 @@ std::string kind_name(const motion::BuiltMotion& built) {
 
 }  // namespace
 
-std::shared_ptr<HeldMotion> hold_motion(const std::string& text, const std::string& source) {
+std::shared_ptr<HeldMotion> hold_motion(scene::Scene scene, std::optional<int> panel) {
   auto held = std::make_shared<HeldMotion>();
-  held->scene = scene::parse_scene(text, source);
+  held->scene = std::move(scene);
   if (!scene::has_motion_keys(held->scene.keys)) {
-    throw scene::SceneError(source, "/poses", "the scene has no poses, so no motion");
+    throw scene::SceneError(held->scene.path, "/poses", "the scene has no poses, so no motion");
   }
-  held->evaluation = std::make_unique<motion::Evaluation>(held->scene, std::nullopt);
+  try {
+    held->evaluation = std::make_unique<motion::Evaluation>(held->scene, panel);
+  } catch (const std::out_of_range& error) {
+    throw py::value_error(fmt::format("panel: {}", error.what()));
+  }
   return held;
 }
 
@@ -263,7 +268,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
       "motion",
       [](const std::string& method, const py::sequence& keyframes, const py::object& times, const py::kwargs& options) {
         const std::string text = motion_scene(method, keyframes, times, options).dump();
-        return hold_motion(text, "<pita.motion>");
+        return hold_motion(scene::parse_scene(text, "<pita.motion>"));
       },
       py::arg("method"), py::arg("keyframes"), py::arg("times") = py::none(),
       R"(The motion of `method` through keyframes at times (knots, strictly increasing), built once.

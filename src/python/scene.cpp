@@ -244,19 +244,7 @@ checked once. In a Jupyter notebook it shows its figure.)")
                              "How many panels the figure has (1 for a scene without \"panels\").")
       .def_property_readonly("has_motion", [](const HeldScene& s) { return scene::has_motion_keys(s.scene.keys); },
                              "False for a figure that needs no motion (a pose scene without poses).")
-      .def("motion", [](const HeldScene& s, std::optional<int> panel) {
-        auto held = std::make_shared<HeldMotion>();
-        held->scene = s.scene;
-        if (!scene::has_motion_keys(held->scene.keys)) {
-          throw scene::SceneError(s.scene.path, "/poses", "the scene has no poses, so no motion");
-        }
-        try {
-          held->evaluation = std::make_unique<motion::Evaluation>(held->scene, panel);
-        } catch (const std::out_of_range& error) {
-          throw py::value_error(fmt::format("panel: {}", error.what()));
-        }
-        return held;
-      }, py::arg("panel") = py::none(),
+      .def("motion", [](const HeldScene& s, std::optional<int> panel) { return hold_motion(s.scene, panel); }, py::arg("panel") = py::none(),
       "The scene's own motion (or panel `panel`'s), built once, as pita.motion returns one.")
       .def("eval", &eval, py::arg("t") = py::none(), py::kw_only(), py::arg("samples") = py::none(),
            py::arg("panel") = py::none(), py::arg("method") = py::none(), py::arg("format") = py::none(),
