@@ -36,6 +36,7 @@ PITA_TEST_PACKAGES=(
   ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
   chromium                    # tests: the animated SVG played in a real browser (headless), pita serve's page
   python3-websocket           # tests: pita serve's page driven in Chromium over the DevTools protocol
+  slurmctld slurmd slurm-client munge  # tests: the Slurm recipe on a real one-node Slurm (tests/slurm)
   parallel                    # tests: the GNU parallel recipe of pita sweep (docs/reference/sweep.md "pita sweep")
   time                        # benchmarks: peak memory of a sweep (scripts/bench-sweep.sh, GNU time)
   man-db                      # tests: the man page rendered by man -l (with groff-base; tests/packaging)

@@ -31,10 +31,12 @@ array element.
 Each variant is the scene with those values set, checked as a scene file is. DIR
 receives, for variant i: <scene>-<i>.scene.json (the variant itself) and
 <scene>-<i>.<format> for each --format (svg, png, pdf: the figure; csv, json: the
-frames pita eval prints), then manifest.csv (a row per variant: the values,
-status, outputs, content hash and metrics of pita measure), index.html (a sortable
-contact sheet) and contact.svg / contact.png (every figure on one picture, rows
-and columns for two parameters; up to 256 variants).
+frames pita eval prints; metrics alone: no file per variant, for millions of
+variants), then manifest.csv (a row per variant: the values, status, outputs,
+content hash and metrics of pita measure), index.html (every variant in a paged
+table, sortable by any column, its data in index/) and contact.svg / contact.png
+(every figure on one picture, rows and columns for two parameters; above 256
+variants, 256 of them evenly spaced).
 
 Resumable: a variant whose outputs exist and whose manifest row has the same
 content hash is skipped (--force redoes it). SIGINT or SIGTERM lets the running
@@ -78,7 +80,9 @@ std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
   sweep->add_option_function<std::string>("-o,--output", [command](const std::string& s) { command->output = s; },
                                           "The output folder DIR (created if needed)")
       ->type_name("DIR");
-  sweep->add_option("--format", command->formats, "Outputs per variant, comma-separated: svg, png, pdf, csv, json")
+  sweep->add_option("--format", command->formats,
+                    "Outputs per variant, comma-separated: svg, png, pdf, csv, json; metrics: none, the manifest's "
+                    "row only")
       ->type_name("LIST")
       ->capture_default_str();
   sweep->add_option_function<int>("--jobs,-j", [command](int j) { command->jobs = j; },
@@ -119,6 +123,15 @@ ExitCode run_sweep_command(const SweepCommand& command) {
                                          merged.missing.size() >= 1000
                                      ? ", ..."
                                      : "");
+        if (!merged.missing_shards.empty()) {
+          std::string shards;
+          for (const auto& [k, count] : merged.missing_shards) {
+            const std::int64_t of = (merged.variants - k + merged.shards - 1) / merged.shards;
+            shards += fmt::format("{}shard {}/{} ({} of {})", shards.empty() ? "" : ", ", k, merged.shards, count, of);
+          }
+          std::cerr << fmt::format("pita: the shards with variants missing: {}{}\n", shards,
+                                   merged.missing_shards.size() >= 1000 ? ", ..." : "");
+        }
         return ExitCode::golden_mismatch;
       }
       return merged.failed > 0 ? ExitCode::golden_mismatch : ExitCode::success;
@@ -142,9 +155,9 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     for (std::size_t i = 0; i < summary.failures.size() && i < kMaxListed; ++i) {
       std::cerr << "pita: " << printable_text(summary.failures[i]) << '\n';
     }
-    if (summary.failures.size() > kMaxListed) {
+    if (summary.failed > static_cast<std::int64_t>(kMaxListed)) {
       std::cerr << fmt::format("pita: ... and {} more failed variants (manifest.csv lists them all)\n",
-                               summary.failures.size() - kMaxListed);
+                               summary.failed - static_cast<std::int64_t>(kMaxListed));
     }
     if (!command.quiet) {
       for (const std::string& note : summary.notes) std::cerr << "pita: " << note << '\n';

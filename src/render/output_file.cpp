@@ -174,15 +174,23 @@ struct StreamingOutput::Impl {
   std::string buffer;
 };
 
-StreamingOutput::StreamingOutput(const fs::path& path) : impl_(std::make_unique<Impl>(path)) {}
+StreamingOutput::StreamingOutput(const fs::path& path, std::size_t buffer_bytes)
+    : buffer_bytes_(buffer_bytes), impl_(std::make_unique<Impl>(path)) {}
 StreamingOutput::~StreamingOutput() = default;
 
 void StreamingOutput::write(std::string_view bytes) {
-  impl_->buffer.append(bytes);
-  if (impl_->buffer.size() >= kBufferBytes) {
+  // The buffer never grows past buffer_bytes_ (a string left to double would
+  // reach twice that, and copy itself on the way).
+  if (impl_->buffer.size() + bytes.size() > buffer_bytes_ && !impl_->buffer.empty()) {
     impl_->temporary.append(impl_->buffer);
     impl_->buffer.clear();
   }
+  if (bytes.size() >= buffer_bytes_) {
+    impl_->temporary.append(bytes);
+    return;
+  }
+  if (impl_->buffer.capacity() < buffer_bytes_) impl_->buffer.reserve(buffer_bytes_);
+  impl_->buffer.append(bytes);
 }
 
 void StreamingOutput::commit() {

@@ -40,7 +40,9 @@ void write_files_atomically(std::span<const std::pair<std::filesystem::path, std
 // leaves no file and the old one untouched. Throws OutputError.
 class StreamingOutput {
  public:
-  explicit StreamingOutput(const std::filesystem::path& path);
+  // `buffer_bytes`: written through once this much is held (smaller for
+  // many files open at once).
+  explicit StreamingOutput(const std::filesystem::path& path, std::size_t buffer_bytes = kBufferBytes);
   ~StreamingOutput();
   StreamingOutput(const StreamingOutput&) = delete;
   StreamingOutput& operator=(const StreamingOutput&) = delete;
@@ -50,6 +52,7 @@ class StreamingOutput {
   static constexpr std::size_t kBufferBytes = std::size_t{1} << 20;
 
  private:
+  std::size_t buffer_bytes_;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "sweep/index_page.hpp"
 #include "sweep/sheet.hpp"
 #include "sweep/sweep.hpp"
 

@@ -54,8 +54,12 @@ bool is_own_hidden_file(const std::string& name) {
   return name.starts_with(".manifest.") && (name.ends_with(".lock") || name.ends_with(".journal"));
 }
 
+// The folder of per-task logs that the Slurm recipe creates before any task
+// runs (scripts/slurm-sweep.sbatch --logs, default OUT/logs).
+constexpr std::string_view kLogsFolder = "logs";
+
 // The first entry that is neither the marker, nor its temporary, nor a
-// manifest's lock or journal, to name in the refusal; "" when there is none
+// manifest's lock or journal, nor the logs folder, to name in the refusal; "" when there is none
 // or when the marker itself is listed (a concurrent shard wrote it after
 // is_sweep_folder looked: it comes first, before any of that shard's files).
 std::string first_foreign_entry(const fs::path& dir) {
@@ -65,6 +69,7 @@ std::string first_foreign_entry(const fs::path& dir) {
     const std::string name = entry.path().filename().string();
     if (name == kFolderMarker) return {};
     if (temporary_target(name) == kFolderMarker || is_own_hidden_file(name)) continue;
+    if (name == kLogsFolder && entry.is_directory(error)) continue;
     if (foreign.empty()) foreign = name;
   }
   return foreign;

@@ -1,6 +1,8 @@
 #include "sweep/manifest.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -82,7 +84,14 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
                                                   const std::vector<std::string>& pointers, bool headless) {
   ManifestReader reader;
   reader.in_ = std::make_unique<std::ifstream>(path, std::ios::binary);
-  if (!*reader.in_) return std::nullopt;
+  if (!*reader.in_) {
+    // Missing is nullopt; there but unreadable (permissions, out of file
+    // descriptors) is an error, never a manifest silently left out.
+    const int saved = errno;
+    std::error_code ignored;
+    if (!std::filesystem::exists(path, ignored)) return std::nullopt;
+    throw render::OutputError(fmt::format("{}: cannot read ({})", path.string(), std::strerror(saved)));
+  }
   reader.path_ = path.string();
   reader.pointers_ = pointers.size();
   if (headless) return reader;

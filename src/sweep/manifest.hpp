@@ -53,9 +53,9 @@ void append_row(std::string& out, const Row& row);
 // of variants resumes and merges from.
 class ManifestReader {
  public:
-  // nullopt when the file does not exist. Throws std::runtime_error naming the
-  // file when its header is not that of these pointers; `headless`: a journal,
-  // rows only.
+  // nullopt when the file does not exist. Throws render::OutputError naming
+  // the file when it exists but cannot be opened, std::runtime_error when its
+  // header is not that of these pointers; `headless`: a journal, rows only.
   static std::optional<ManifestReader> open(const std::filesystem::path& path, const std::vector<std::string>& pointers,
                                             bool headless = false);
   // Whether the rows of the manifest at `path` are in strictly increasing

@@ -1,5 +1,7 @@
 // `pita sweep --merge DIR`: the shards' manifest.K-of-N.csv joined into one
 // manifest.csv, each row checked against its variant, and the gaps named.
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <regex>
@@ -22,6 +24,28 @@ namespace fs = std::filesystem;
 
 // Ranges of missing variants --merge reports (the count covers them all).
 constexpr std::size_t kMaxRangesKept = 1000;
+// Files open besides the parts: standard streams, the lock, the manifest
+// being written, the variants' files read back, the reports.
+constexpr rlim_t kOtherOpenFiles = 64;
+
+// The parts are read side by side, one open file each: raises the soft limit
+// of open files (ulimit -n, often 1024) up to the hard one when they need it,
+// and refuses, saying so, when even that is too few.
+void ensure_open_files(std::size_t parts, const std::string& dir_text) {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_NOFILE, &limit) != 0) return;
+  const rlim_t needed = static_cast<rlim_t>(parts) + kOtherOpenFiles;
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur < needed) {
+    rlimit raised = limit;
+    raised.rlim_cur = limit.rlim_max == RLIM_INFINITY ? needed : std::min(needed, limit.rlim_max);
+    if (::setrlimit(RLIMIT_NOFILE, &raised) == 0) limit = raised;
+  }
+  if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur < needed) {
+    throw SweepUsageError(fmt::format("--merge {}: its {} parts need {} open files, more than this process may open "
+                                      "({}, the hard limit of ulimit -n); merge fewer, larger shards (a smaller N)",
+                                      dir_text, parts, needed, limit.rlim_cur));
+  }
+}
 
 }  // namespace
 
@@ -49,15 +73,32 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
     if (std::regex_match(entry.path().filename().string(), kPart)) parts.push_back(entry.path());
   }
   std::sort(parts.begin(), parts.end());
+  // One split into N shards for all parts: the missing variants are counted per shard.
+  static const std::regex kOfN(R"(manifest\.[0-9]+-of-([0-9]+)\.csv)");
+  for (const fs::path& part : parts) {
+    std::smatch m;
+    const std::string name = part.filename().string();
+    std::regex_match(name, m, kOfN);
+    const int n = m[1].length() <= 9 ? std::stoi(m[1].str()) : 0;
+    summary.shards = part == parts.front() || summary.shards == n ? n : 0;
+    if (summary.shards == 0) break;
+  }
+  // Missing variants per shard: N counters when N is at most kMaxShardsCounted.
+  constexpr int kMaxShardsCounted = 1'000'000;
+  std::vector<std::int64_t> missing_in_shard(
+      summary.shards > 0 && summary.shards <= kMaxShardsCounted ? static_cast<std::size_t>(summary.shards) : 0, 0);
   if (parts.empty()) {
     throw SweepUsageError(fmt::format("--merge {}: no manifest.K-of-N.csv there (run the shards with --shard K/N "
                                       "-o {} first)",
                                       dir_text, dir_text));
   }
+  ensure_open_files(parts.size(), dir_text);
   std::vector<ManifestReader> sources;
   for (const fs::path& part : parts) {
     try {
       if (!ManifestReader::open(part, pointers)) continue;
+    } catch (const render::OutputError&) {  // there, but cannot be read: never left out
+      throw;
     } catch (const std::runtime_error& e) {  // the header of another sweep
       summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
       continue;
@@ -73,6 +114,8 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
         sources.push_back(std::move(*reader));
         summary.parts.push_back(part.filename().string());
       }
+    } catch (const render::OutputError&) {
+      throw;
     } catch (const std::runtime_error& e) {
       throw SweepUsageError(fmt::format("--merge: {}", e.what()));
     }
@@ -89,6 +132,15 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
     if (from >= to) return;
     summary.missing_count += to - from;
     if (summary.missing.size() < kMaxRangesKept) summary.missing.emplace_back(from, to - 1);
+    if (missing_in_shard.empty()) return;
+    const auto n = static_cast<std::int64_t>(missing_in_shard.size());
+    if (to - from >= n) {  // every shard loses (to - from) / n, and some one more
+      for (std::int64_t k = 0; k < n; ++k) {
+        missing_in_shard[static_cast<std::size_t>(k)] += (to - from) / n + (((k - from) % n + n) % n < (to - from) % n);
+      }
+    } else {
+      for (std::int64_t i = from; i < to; ++i) ++missing_in_shard[static_cast<std::size_t>(i % n)];
+    }
   };
   const auto on_row = [&](const Row& row) {
     missing(expected, row.index);
@@ -103,6 +155,9 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
     throw SweepUsageError(fmt::format("--merge: {}", e.what()));
   }
   missing(expected, definition.variants);
+  for (std::size_t k = 0; k < missing_in_shard.size() && summary.missing_shards.size() < kMaxRangesKept; ++k) {
+    if (missing_in_shard[k] > 0) summary.missing_shards.emplace_back(static_cast<int>(k), missing_in_shard[k]);
+  }
   if (summary.foreign > 0) {
     summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
                                         "{}'s) and were ignored",

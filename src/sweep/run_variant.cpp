@@ -30,11 +30,12 @@ struct KindInfo {
   OutputKind kind;
   std::string_view name;
 };
-constexpr std::array<KindInfo, 5> kKinds = {{{OutputKind::svg, "svg"},
+constexpr std::array<KindInfo, 6> kKinds = {{{OutputKind::svg, "svg"},
                                              {OutputKind::png, "png"},
                                              {OutputKind::pdf, "pdf"},
                                              {OutputKind::csv, "csv"},
-                                             {OutputKind::json, "json"}}};
+                                             {OutputKind::json, "json"},
+                                             {OutputKind::metrics, "metrics"}}};
 
 }  // namespace
 
@@ -43,6 +44,10 @@ std::string_view output_kind_name(OutputKind kind) {
     if (k.kind == kind) return k.name;
   }
   return "?";
+}
+
+bool metrics_only(const std::vector<OutputKind>& formats) {
+  return std::all_of(formats.begin(), formats.end(), [](OutputKind k) { return k == OutputKind::metrics; });
 }
 
 std::optional<OutputKind> output_kind_named(std::string_view name) {
@@ -106,7 +111,10 @@ std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& o
 void remove_outputs(const fs::path& dir, const std::string& name, std::int64_t index, std::int64_t variants) {
   std::error_code ignored;
   fs::remove(dir / variant_file(name, index, variants, "scene.json"), ignored);
-  for (const KindInfo& k : kKinds) fs::remove(dir / variant_file(name, index, variants, std::string(k.name)), ignored);
+  for (const KindInfo& k : kKinds) {
+    if (k.kind == OutputKind::metrics) continue;  // no file
+    fs::remove(dir / variant_file(name, index, variants, std::string(k.name)), ignored);
+  }
 }
 
 }  // namespace
@@ -133,10 +141,13 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
         motion::own_is_first_panel(scene) ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
     const motion::Stage& own_stage = own_alone ? *own_alone : stage;
     std::vector<std::pair<fs::path, std::string>> files;
-    files.emplace_back(job.dir / scene_file, text);
-    row.outputs.push_back(scene_file);
+    if (!metrics_only(job.options.formats)) {  // metrics alone: the manifest's row is all
+      files.emplace_back(job.dir / scene_file, text);
+      row.outputs.push_back(scene_file);
+    }
     std::optional<render::Figure> figure;
     for (const OutputKind kind : job.options.formats) {
+      if (kind == OutputKind::metrics) continue;
       const std::string file = variant_file(job.name, index, variants, std::string(output_kind_name(kind)));
       if (const auto format = figure_format(kind)) {
         if (!figure) figure = render::build_figure(stage);

@@ -27,160 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A file name as a relative URL: percent-encoded but for unreserved characters.
-std::string url(std::string_view name) {
-  std::string out;
-  for (const char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += c;
-    } else {
-      out += fmt::format("%{:02X}", u);
-    }
-  }
-  return out;
-}
-
-std::string html(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-// The first output of the row with one of `extensions`, in that order of preference.
-std::string output_with(const Row& row, std::initializer_list<std::string_view> extensions) {
-  for (const std::string_view ext : extensions) {
-    for (const std::string& f : row.outputs) {
-      const std::size_t dot = f.rfind('.');
-      if (dot != std::string::npos && std::string_view(f).substr(dot + 1) == ext && !f.ends_with(".scene.json")) {
-        return f;
-      }
-    }
-  }
-  return "";
-}
-
-// The sort script: columns by name, numbers compared as numbers, empty last;
-// "#sort=NAME&order=desc" in the address sorts on load.
-constexpr std::string_view kScript = R"(<script>
-const grid = document.getElementById("grid"), by = document.getElementById("sort"), order = document.getElementById("order");
-function key(cell, column) { return cell.dataset[column] ?? ""; }
-function sortCells() {
-  const column = by.value, sign = order.value === "desc" ? -1 : 1;
-  const cells = Array.from(grid.children);
-  cells.sort((a, b) => {
-    const x = key(a, column), y = key(b, column);
-    if (x === "" || y === "") return (x === "") - (y === "") || Number(a.dataset.index) - Number(b.dataset.index);
-    const nx = Number(x), ny = Number(y);
-    const c = !isNaN(nx) && !isNaN(ny) ? nx - ny : x.localeCompare(y);
-    return sign * c || Number(a.dataset.index) - Number(b.dataset.index);
-  });
-  for (const cell of cells) grid.appendChild(cell);
-}
-by.addEventListener("change", sortCells);
-order.addEventListener("change", sortCells);
-const wanted = new URLSearchParams(location.hash.slice(1));
-if (wanted.has("sort")) {
-  const option = Array.from(by.options).find(o => o.textContent === wanted.get("sort"));
-  if (option) by.value = option.value;
-  if (wanted.get("order") === "desc") order.value = "desc";
-  sortCells();
-}
-</script>
-)";
-
-}  // namespace
-
-std::string write_index_html(const SheetInput& input) {
-  // Two passes over the manifest: the counts for the heading, then the cards.
-  std::int64_t count = 0, failed = 0;
-  {
-    std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
-    Row r;
-    while (reader && reader->next(r)) {
-      ++count;
-      failed += r.ok() ? 0 : 1;
-    }
-  }
-  render::StreamingOutput file(input.dir / "index.html");
-  std::string out = fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>pita sweep: {0}</title>\n"
-      "<style>body{{font-family:sans-serif;margin:1em}} #grid{{display:flex;flex-wrap:wrap;gap:8px}} "
-      "figure{{margin:0;width:220px;border:1px solid #ccc;padding:4px}} figure img{{width:100%;height:auto;"
-      "background:#fff}} figure.failed{{border-color:#c00;background:#fee}} figcaption{{font-size:12px;"
-      "word-break:break-all}}</style></head>\n<body>\n<h1>pita sweep of {0}</h1>\n",
-      html(input.name));
-  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", count,
-                     input.variants, failed, html(input.base_path));
-  for (std::size_t k = 0; k < input.pointers.size(); ++k) {
-    out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", html(input.pointers[k]));
-  }
-  out += ". <a href=\"manifest.csv\">manifest.csv</a></p>\n";
-  // The columns one may sort by: index, the varied values, the metrics.
-  out += "<p><label>Sort by <select id=\"sort\"><option value=\"index\">index</option>";
-  for (std::size_t k = 0; k < input.pointers.size(); ++k) {
-    out += fmt::format("<option value=\"v{}\">{}</option>", k, html(input.pointers[k]));
-  }
-  for (std::size_t m = 0; m < kMetricColumns.size(); ++m) {
-    out += fmt::format("<option value=\"m{}\">{}</option>", m, kMetricColumns[m]);
-  }
-  out += "</select></label> <select id=\"order\"><option value=\"asc\">ascending</option>"
-         "<option value=\"desc\">descending</option></select></p>\n<div id=\"grid\">\n";
-  std::string left_out;
-  if (count > kMaxIndexCards) {
-    left_out = fmt::format("index.html shows the first {} of {} variants (manifest.csv has them all)", kMaxIndexCards,
-                           count);
-    out += fmt::format("<p><b>{}</b></p>\n", html(left_out));
-  }
-  std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
-  Row row;
-  for (std::int64_t cards = 0; reader && cards < kMaxIndexCards && reader->next(row); ++cards) {
-    file.write(out);
-    out.clear();
-    out += fmt::format("<figure class=\"{}\" data-index=\"{}\"", row.ok() ? "ok" : "failed", row.index);
-    for (std::size_t k = 0; k < row.values.size(); ++k) out += fmt::format(" data-v{}=\"{}\"", k, html(row.values[k]));
-    std::string tip;
-    for (std::size_t m = 0; m < kMetricColumns.size(); ++m) {
-      if (row.metrics[m].empty()) continue;
-      out += fmt::format(" data-m{}=\"{}\"", m, html(row.metrics[m]));
-      tip += fmt::format("{}{} = {}", tip.empty() ? "" : "\n", kMetricColumns[m], row.metrics[m]);
-    }
-    out += fmt::format(" title=\"{}\">", html(tip));
-    const std::string thumb = output_with(row, {"png", "svg"});
-    const std::string full = output_with(row, {"svg", "png", "pdf"});
-    if (!thumb.empty()) {
-      out += fmt::format("<a href=\"{0}\"><img loading=\"lazy\" src=\"{1}\" alt=\"variant {2}\"></a>", url(full),
-                         url(thumb), row.index);
-    } else if (!full.empty()) {
-      out += fmt::format("<a href=\"{}\">figure</a>", url(full));
-    }
-    out += fmt::format("<figcaption>#{}", row.index);
-    for (std::size_t k = 0; k < row.values.size() && k < input.pointers.size(); ++k) {
-      out += fmt::format("<br>{} = {}", html(input.pointers[k]), html(row.values[k]));
-    }
-    if (!row.ok()) out += fmt::format("<br><b>failed</b>: {}", html(row.status));
-    if (row.ok() && !row.metrics[6].empty()) out += fmt::format("<br>E max = {}", html(row.metrics[6]));
-    if (row.ok() && !row.metrics[14].empty()) out += fmt::format("<br>ARA = {}", html(row.metrics[14]));
-    out += "</figcaption></figure>\n";
-  }
-  out += "</div>\n";
-  out += kScript;
-  out += "</body></html>\n";
-  file.write(out);
-  file.commit();
-  return left_out;
-}
-
-namespace {
-
 using Surface = render::SurfacePtr;
 using Context = render::ContextPtr;
 constexpr auto append = render::append_to_string;
@@ -219,8 +65,8 @@ struct ContactGrid {
 };
 
 // The cell's shape: that of the first variant that has a figure.
-double first_aspect(const SheetInput& input, const std::vector<const Row*>& by_index) {
-  for (const Row* row : by_index) {
+double first_aspect(const SheetInput& input, const std::vector<const Row*>& by_cell) {
+  for (const Row* row : by_cell) {
     if (row == nullptr || !row->ok()) continue;
     try {
       const scene::Scene first = scene::parse_scene(
@@ -233,20 +79,21 @@ double first_aspect(const SheetInput& input, const std::vector<const Row*>& by_i
   return 0.75;
 }
 
-ContactGrid contact_grid(const SheetInput& input, const std::vector<const Row*>& by_index) {
+// `by_cell`: the row drawn in each cell; `sampled`: the cells are a sample of the variants.
+ContactGrid contact_grid(const SheetInput& input, const std::vector<const Row*>& by_cell, bool sampled) {
   std::vector<std::size_t> varying;
   for (std::size_t k = 0; k < input.axis_sizes.size(); ++k) {
     if (input.axis_sizes[k] > 1) varying.push_back(k);
   }
-  const auto n = static_cast<std::size_t>(input.variants);
+  const std::size_t n = by_cell.size();
   ContactGrid grid;
-  grid.two_d = !input.zip && varying.size() == 2 && input.axis_sizes[varying[1]] <= kMaxContactColumns;
+  grid.two_d = !sampled && !input.zip && varying.size() == 2 && input.axis_sizes[varying[1]] <= kMaxContactColumns;
   grid.row_axis = grid.two_d ? varying[0] : 0;
   grid.column_axis = grid.two_d ? varying[1] : 0;
   grid.columns = grid.two_d ? input.axis_sizes[grid.column_axis] : static_cast<std::size_t>(std::ceil(std::sqrt(n)));
   grid.rows = grid.two_d ? input.axis_sizes[grid.row_axis] : (n + grid.columns - 1) / grid.columns;
   grid.cell_w = std::clamp(2400.0 / static_cast<double>(grid.columns), 120.0, 320.0);
-  grid.cell_h = grid.cell_w * first_aspect(input, by_index);
+  grid.cell_h = grid.cell_w * first_aspect(input, by_cell);
   grid.left = grid.two_d ? 110.0 : 8.0;
   grid.top = kTitle + (grid.two_d ? kLabel + 4 : 0.0);
   grid.width = grid.left + static_cast<double>(grid.columns) * (grid.cell_w + 8) + 8;
@@ -307,8 +154,9 @@ class SheetPainter {
   Context contexts_[2];
 };
 
-// The title: the base scene and the pointers swept (and which are rows and columns).
-void paint_title(SheetPainter& painter, const SheetInput& input, const ContactGrid& grid) {
+// The title: the base scene and the pointers swept (and which are rows and
+// columns, or how the variants shown were chosen).
+void paint_title(SheetPainter& painter, const SheetInput& input, const ContactGrid& grid, std::size_t cells) {
   painter.each([&](cairo_t* cr) {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
@@ -317,16 +165,19 @@ void paint_title(SheetPainter& painter, const SheetInput& input, const ContactGr
     if (grid.two_d) {
       title += fmt::format("  (rows: {}, columns: {})", input.pointers[grid.row_axis], input.pointers[grid.column_axis]);
     }
+    if (static_cast<std::int64_t>(cells) < input.variants) {
+      title += fmt::format("  ({} of {} variants, evenly spaced; index.html lists all)", cells, input.variants);
+    }
     render::paint_text(cr, title, "Sans Bold", 14, kInk, 8, 8, render::TextAlign::left);
   });
 }
 
-// Cell i: the variant's figure scaled into it (or why there is none), its
-// label, and on a two-axis grid the row's and column's values at the edges.
+// Cell i, of variant `index`: its figure scaled into it (or why there is
+// none), its label, and on a two-axis grid the row's and column's values at the edges.
 void paint_cell(SheetPainter& painter, const SheetInput& input, const ContactGrid& grid, std::size_t i,
-                const Row* row) {
+                std::int64_t index, const Row* row) {
   const double x = grid.x(i), y = grid.y(i), cell_w = grid.cell_w, cell_h = grid.cell_h;
-  std::string label = fmt::format("#{}", i);
+  std::string label = fmt::format("#{}", index);
   if (row != nullptr && !grid.two_d) {
     for (std::size_t k = 0; k < row->values.size(); ++k) label += (k == 0 ? ": " : ", ") + row->values[k];
   }
@@ -374,6 +225,8 @@ void paint_cell(SheetPainter& painter, const SheetInput& input, const ContactGri
     }
   });
   painter.each([&](cairo_t* cr) {
+    cairo_rectangle(cr, x, y + cell_h, cell_w, kLabel + 8);  // a long label stops at its cell
+    cairo_clip(cr);
     render::paint_text(cr, label, "Sans", kFontSize, failure.empty() ? kInk : kFailed, x, y + cell_h + 2,
                        render::TextAlign::left);
   });
@@ -381,23 +234,32 @@ void paint_cell(SheetPainter& painter, const SheetInput& input, const ContactGri
 
 }  // namespace
 
-std::string write_contact_sheet(const SheetInput& input) {
-  if (input.variants > kMaxContactCells) {
-    return fmt::format("contact.svg and contact.png not drawn: {} variants is more than {} on one picture (see "
-                       "index.html)",
-                       input.variants, kMaxContactCells);
+std::vector<std::int64_t> contact_sample(std::int64_t variants) {
+  const std::int64_t cells = std::clamp<std::int64_t>(variants, 0, kMaxContactCells);
+  std::vector<std::int64_t> sample(static_cast<std::size_t>(cells));
+  for (std::int64_t i = 0; i < cells; ++i) {
+    sample[static_cast<std::size_t>(i)] = variants > kMaxContactCells ? i * (variants - 1) / (kMaxContactCells - 1) : i;
   }
+  return sample;
+}
+
+std::string write_contact_sheet(const SheetInput& input) {
   if (input.variants == 0) return "";
-  std::map<std::int64_t, Row> rows;  // at most kMaxContactCells
+  // The variants drawn: all, or kMaxContactCells evenly spaced from the first to the last.
+  const bool sampled = input.variants > kMaxContactCells;
+  const std::vector<std::int64_t> cell_index = contact_sample(input.variants);
+  const std::size_t cells = cell_index.size();
+  std::map<std::int64_t, Row> rows;  // at most kMaxContactCells: the manifest read row by row
   {
     std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
     Row r;
-    while (reader && reader->next(r)) rows[r.index] = r;
+    while (reader && reader->next(r)) {
+      if (std::binary_search(cell_index.begin(), cell_index.end(), r.index)) rows[r.index] = r;
+    }
   }
-  const auto n = static_cast<std::size_t>(input.variants);
-  std::vector<const Row*> by_index(n, nullptr);
-  for (const auto& [index, r] : rows) {
-    if (r.index >= 0 && static_cast<std::size_t>(r.index) < n) by_index[static_cast<std::size_t>(r.index)] = &r;
+  std::vector<const Row*> by_index(cells, nullptr);  // by cell
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (const auto found = rows.find(cell_index[i]); found != rows.end()) by_index[i] = &found->second;
   }
   // The whole sheet's drawing, estimated before any is drawn.
   double units = 0.0;
@@ -417,10 +279,10 @@ std::string write_contact_sheet(const SheetInput& input) {
                        "than the contact sheet's budget of {:.3g} (index.html shows every figure)",
                        figures, units, kMaxContactUnits);
   }
-  const ContactGrid grid = contact_grid(input, by_index);
+  const ContactGrid grid = contact_grid(input, by_index, sampled);
   SheetPainter painter(grid);
-  paint_title(painter, input, grid);
-  for (std::size_t i = 0; i < n; ++i) paint_cell(painter, input, grid, i, by_index[i]);
+  paint_title(painter, input, grid, cells);
+  for (std::size_t i = 0; i < cells; ++i) paint_cell(painter, input, grid, i, cell_index[i], by_index[i]);
   return painter.finish(input);
 }
 

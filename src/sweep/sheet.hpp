@@ -1,7 +1,7 @@
-// The pictures of a whole sweep (docs/reference/sweep.md "pita sweep"): DIR/index.html, a
-// contact sheet of thumbnails linked to the full figures and sortable by any
-// metric column, and DIR/contact.svg / contact.png, every variant's figure
-// on one picture (rows and columns for a two-parameter sweep).
+// The picture of a whole sweep (docs/reference/sweep.md "pita sweep"): DIR/contact.svg /
+// contact.png, every variant's figure on one picture (rows and columns for a
+// two-parameter sweep), or an evenly spaced sample of a large sweep's. The
+// table of every variant is index.html (sweep/index_page.hpp).
 #pragma once
 
 #include <cstdint>
@@ -13,8 +13,9 @@
 
 namespace pita::sweep {
 
-// A contact picture holds at most this many variants; a larger sweep gets
-// the HTML index only (said in the summary).
+// A contact picture holds at most this many variants; a larger sweep's shows
+// this many, evenly spaced from the first variant to the last (its title
+// says so; index.html lists them all).
 inline constexpr std::int64_t kMaxContactCells = 256;
 // ... and at most this much drawing in all (render::estimate_cost units,
 // eight figures at the render budget): 32 heavy variants drew 1.6 GB of SVG
@@ -35,13 +36,10 @@ struct SheetInput {
   bool figures = false;               // the sweep wrote figures (svg, png or pdf)
 };
 
-// Cards in index.html: a larger sweep lists its first variants there and
-// says so (manifest.csv has them all).
-inline constexpr std::int64_t kMaxIndexCards = 10'000;
-
-// DIR/index.html from DIR/manifest.csv, read row by row. Atomic. Returns ""
-// or what was left out.
-std::string write_index_html(const SheetInput& input);
+// The variants a contact sheet of `variants` shows, in increasing order: all
+// of them up to kMaxContactCells, else that many evenly spaced from the first
+// variant (0) to the last (variants - 1).
+std::vector<std::int64_t> contact_sample(std::int64_t variants);
 
 // DIR/contact.svg and DIR/contact.png from DIR/manifest.csv, each variant's
 // figure redrawn from its scene file DIR/<name>-<index>.scene.json; a failed

@@ -38,11 +38,15 @@ namespace fs = std::filesystem;
 // A running sweep rewrites its manifest this often, so that even a killed
 // process (SIGKILL, a lost node) leaves a manifest of most of what finished.
 constexpr auto kManifestInterval = std::chrono::seconds(5);
+// Variants run ahead of the first one not yet journaled, at most (per run; at
+// least 64 per thread).
+constexpr std::int64_t kRowsAhead = 1024;
 // Failed variants listed in the summary (the manifest has them all).
 constexpr std::size_t kMaxFailuresKept = 1000;
 
-bool outputs_exist(const fs::path& dir, const Row& row) {
-  if (row.outputs.empty()) return false;
+// `metrics_only`: a row without outputs is complete (--format metrics).
+bool outputs_exist(const fs::path& dir, const Row& row, bool metrics_only) {
+  if (row.outputs.empty()) return metrics_only;
   std::error_code ignored;
   return std::all_of(row.outputs.begin(), row.outputs.end(),
                      [&](const std::string& f) { return fs::is_regular_file(dir / f, ignored); });
@@ -66,7 +70,7 @@ std::vector<OutputKind> parse_output_kinds(const std::string& text) {
     const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     const std::optional<OutputKind> found = output_kind_named(item);
     if (!found) {
-      throw SweepUsageError(fmt::format("--format: \"{}\" is not an output (use svg, png, pdf, csv or json, "
+      throw SweepUsageError(fmt::format("--format: \"{}\" is not an output (use svg, png, pdf, csv, json or metrics, "
                                         "comma-separated: --format svg,csv)",
                                         item));
     }
@@ -157,7 +161,9 @@ class SweepRun {
         manifest_path_(dir_ / manifest_name(options.shard)),
         // Rows are appended here as they finish, in index order: what a killed
         // process leaves, and what the next run folds into the manifest.
-        journal_path_(dir_ / ("." + manifest_name(options.shard) + ".journal")),
+        // (fmt, not "." + std::string: GCC 12 warns falsely of a memcpy
+        // overflow, -Wstringop-overflow, when that is inlined here.)
+        journal_path_(dir_ / fmt::format(".{}.journal", manifest_name(options.shard))),
         shard_k_(options.shard ? options.shard->first : 0),
         shard_n_(options.shard ? options.shard->second : 1),
         mine_(grid.size() > shard_k_ ? (grid.size() - shard_k_ + shard_n_ - 1) / shard_n_ : 0),
@@ -193,7 +199,7 @@ class SweepRun {
   // A row of an earlier run is kept when its variant is unchanged (same
   // content hash), it is ok and its outputs all exist.
   bool valid(const Row& row) const {
-    if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir_, row)) return false;
+    if (!in_shard(row.index) || !row.ok() || !outputs_exist(dir_, row, metrics_only(options_.formats))) return false;
     return content_hash(variant_text(variant_document(base_, grid_, grid_.values(row.index))), definition_.salt) ==
            row.hash;
   }
@@ -222,6 +228,8 @@ class SweepRun {
     std::optional<ManifestReader> old;
     try {
       old = ManifestReader::open(manifest_path_, pointers_);
+    } catch (const render::OutputError&) {
+      throw;  // there, but cannot be read (exit 3)
     } catch (const std::runtime_error& error) {
       refuse_folder(error);
     }
@@ -247,6 +255,8 @@ class SweepRun {
             ++summary_.skipped;
           }
         }
+      } catch (const render::OutputError&) {
+        throw;
       } catch (const std::runtime_error& error) {
         refuse_folder(error);
       }
@@ -321,6 +331,10 @@ class SweepRun {
       const render::DeferredInterrupts deferred;
       PoolOptions pool;
       pool.threads = static_cast<int>(std::min<std::int64_t>(options_.jobs, std::max<std::int64_t>(mine_, 1)));
+      // Rows finished ahead of an earlier, slower variant wait in memory: at
+      // most this many, so that memory does not grow with the sweep (a
+      // resumed run produces its skipped variants faster than it journals).
+      pool.window = std::max<std::int64_t>(kRowsAhead, 64 * static_cast<std::int64_t>(pool.threads));
       const auto tick = [&] {
         progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
         return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled

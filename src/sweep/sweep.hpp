@@ -16,8 +16,12 @@
 
 namespace pita::sweep {
 
-// What a sweep may write for each variant.
-enum class OutputKind { svg, png, pdf, csv, json };
+// What a sweep may write for each variant; `metrics` alone writes no file
+// per variant, only its manifest row (a sweep of millions of variants).
+enum class OutputKind { svg, png, pdf, csv, json, metrics };
+
+// Whether `formats` asks for the manifest's rows only (no file per variant).
+bool metrics_only(const std::vector<OutputKind>& formats);
 
 struct SweepOptions {
   std::string scene_path;
@@ -61,6 +65,10 @@ struct MergeSummary {
   std::int64_t foreign = 0;        // rows of another sweep, ignored
   std::int64_t missing_count = 0;  // variants in no part
   std::vector<std::pair<std::int64_t, std::int64_t>> missing;  // their first ranges [first, last]
+  // When every part is of one split into N shards: N, and for each shard K
+  // with variants missing, (K, how many) in order of K (at most 1000 listed).
+  int shards = 0;
+  std::vector<std::pair<int, std::int64_t>> missing_shards;
   std::vector<std::string> parts;  // the manifest parts joined
   std::vector<std::string> notes;
 };

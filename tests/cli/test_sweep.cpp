@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -222,6 +223,7 @@ TEST(Sweep, ShardsMergeIntoTheUnshardedRun) {
   RunResult merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
   EXPECT_EQ(merged.exit_code, 1);
   EXPECT_NE(merged.err.find("missing: 1, 4, 7"), std::string::npos) << merged.err;
+  EXPECT_NE(merged.err.find("the shards with variants missing: shard 1/3 (3 of 3)"), std::string::npos) << merged.err;
   ASSERT_EQ(with({"-o", "parts", "--shard", "1/3"}).exit_code, 0);
   merged = run_pita({"sweep", "--merge", "parts"}, dir.path());
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
@@ -232,6 +234,43 @@ TEST(Sweep, ShardsMergeIntoTheUnshardedRun) {
               read_file(dir.path() / fmt::format("whole/fig13-knot-ratio-{}.csv", i)));
   }
   EXPECT_EQ(run_pita({"sweep", "--merge", "whole"}, dir.path()).exit_code, 2);  // no parts there
+}
+
+// --merge reads its parts side by side, one open file each: it raises the
+// soft limit of open files (ulimit -n) when the parts need it, and when even
+// the hard limit is too few, it says so (exit 2) instead of leaving parts out.
+// A part it cannot open is an error, never a shard silently missing.
+TEST(Sweep, MergeOfManyPartsRaisesTheOpenFilesLimitOrSaysWhy) {
+  ScratchDir dir;
+  constexpr int kParts = 40;
+  for (int k = 0; k < kParts; ++k) {
+    const RunResult shard = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:80", "--format", "metrics",
+                                      "-o", "parts", "-q", "--shard", fmt::format("{}/{}", k, kParts)},
+                                     dir.path());
+    ASSERT_EQ(shard.exit_code, 0) << shard.err;
+  }
+  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:80", "--format", "metrics", "-o", "whole",
+                      "-q"},
+                     dir.path())
+                .exit_code,
+            0);
+  const auto merge_with = [&](const std::string& limits) {
+    const std::string command =
+        fmt::format("cd '{}' && bash -c '{}; exec \"$0\" sweep --merge parts' '{}' >merge.out 2>merge.err",
+                    dir.path().string(), limits, pita_binary());
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  // A soft limit of 60 (the parts and pita's others need 104), a hard one above: raised, merged.
+  ASSERT_EQ(merge_with("ulimit -Sn 60"), 0) << read_file(dir.path() / "merge.err");
+  EXPECT_EQ(read_file(dir.path() / "parts/manifest.csv"), read_file(dir.path() / "whole/manifest.csv"));
+  // A hard limit of 60: refused, saying why; the manifest stays as it was.
+  fs::remove(dir.path() / "parts/manifest.csv");
+  EXPECT_EQ(merge_with("ulimit -n 60"), 2);
+  const std::string err = read_file(dir.path() / "merge.err");
+  EXPECT_NE(err.find("its 40 parts need 104 open files, more than this process may open (60"), std::string::npos)
+      << err;
+  EXPECT_FALSE(fs::exists(dir.path() / "parts/manifest.csv"));
 }
 
 TEST(Sweep, MergeIgnoresTheRowsOfAnotherSweep) {
@@ -275,8 +314,15 @@ TEST(Sweep, TinyValuesListsOfStringsAndFileModes) {
                                   dir.path());
   ::umask(old);
   EXPECT_EQ(tiny.exit_code, 0) << tiny.err;
-  // Two threads write at once: every file gets the umask's mode, 0644.
-  for (const fs::directory_entry& e : fs::directory_iterator(dir.path() / "tiny")) {
+  // Two threads write at once: every file gets the umask's mode, 0644 (index.html's data folder 0755).
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(dir.path() / "tiny")) {
+    if (e.is_directory()) {
+      EXPECT_EQ(e.status().permissions() & fs::perms::all, fs::perms::owner_all | fs::perms::group_read |
+                                                               fs::perms::group_exec | fs::perms::others_read |
+                                                               fs::perms::others_exec)
+          << e.path();
+      continue;
+    }
     EXPECT_EQ(e.status().permissions() & fs::perms::all,
               fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read)
         << e.path();
@@ -588,7 +634,7 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   for (const std::size_t i : order) want.push_back(index[i]);
   ASSERT_NE(want.front(), "0");  // the sort moves something
   const std::string command = fmt::format(
-      "timeout 120 {} --headless --no-sandbox --disable-gpu --user-data-dir={} --dump-dom "
+      "timeout 120 {} --headless --no-sandbox --disable-gpu --user-data-dir={} --virtual-time-budget=10000 --dump-dom "
       "'file://{}#sort=discrepancy_max&order=desc' 2>/dev/null",
       chromium, (dir.path() / "profile").string(), (dir.path() / "out/index.html").string());
   FILE* pipe = ::popen(command.c_str(), "r");
@@ -599,7 +645,7 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) dom.append(buffer, n);
   EXPECT_EQ(::pclose(pipe), 0);
   std::vector<std::string> shown;
-  const std::regex cell("<figure class=\"[a-z]+\" data-index=\"([0-9]+)\"");
+  const std::regex cell("<tr class=\"[a-z]+\" data-index=\"([0-9]+)\"");
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), cell); it != std::sregex_iterator(); ++it) {
     shown.push_back((*it)[1]);
   }

@@ -29,9 +29,31 @@ FAKE
 chmod +x bin/sbatch
 export SBATCH_LOG="$work/sbatch.log"
 PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 3 "$scene" slurm "${args[@]}" >submit.out
-grep -q -- "--parsable --array=0-2 $root/scripts/slurm-sweep.sbatch $scene slurm --vary /keyframes/1/t=0.2:0.8:5" sbatch.log ||
+grep -q -- "--parsable --cpus-per-task=1 --array=0-2 --output=slurm/logs/shard-%a-%A.log $root/scripts/slurm-sweep.sbatch $scene slurm --vary /keyframes/1/t=0.2:0.8:5" sbatch.log ||
   fail "the array job: $(cat sbatch.log)"
-grep -q -- "--dependency=afterok:1001 --wrap $pita sweep --merge slurm" sbatch.log || fail "the merge job: $(cat sbatch.log)"
+grep -q -- "--dependency=afterok:1001 --kill-on-invalid-dep=yes --wrap $pita sweep --merge slurm" sbatch.log || fail "the merge job: $(cat sbatch.log)"
+[ -d slurm/logs ] || fail "--submit did not create the log folder slurm/logs"
+# The options of the recipe reach both jobs: partition, time, memory; the width the array.
+PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 4 --partition short \
+  --time=30:00 --width 2 --mem 1G --cpus 2 --logs "$work/my-logs" "$scene" opts "${args[@]}" >/dev/null
+grep -q -- "--parsable --partition=short --time=30:00 --mem=1G --cpus-per-task=2 --array=0-3%2 --output=$work/my-logs/shard-%a-%A.log" sbatch.log ||
+  fail "the array job with options: $(tail -2 sbatch.log)"
+grep -q -- "--parsable --partition=short --time=30:00 --mem=1G --job-name=pita-sweep-merge --output=$work/my-logs/merge-%j.log" sbatch.log ||
+  fail "the merge job with options: $(tail -1 sbatch.log)"
+bad_submit() {  # bad_submit MESSAGE ARGS...: --submit ARGS is refused, saying MESSAGE
+  local message="$1"
+  shift
+  if PATH="$work/bin:$PATH" bash "$root/scripts/slurm-sweep.sbatch" --submit "$@" 2>err.txt; then
+    fail "--submit $* was accepted"
+  fi
+  grep -qF -- "$message" err.txt || fail "--submit $*: $(cat err.txt)"
+}
+bad_submit "--width: must be a whole number >= 1 (got '0')" 4 --width 0 "$scene" opts
+bad_submit "--time needs a value" 4 --time
+bad_submit "unknown option --bogus before SCENE" 4 --bogus 1 "$scene" opts
+bad_submit "SCENE and OUT are required" 4 --mem 1G "$scene"
+bad_submit "--submit N: must be a whole number >= 1 (got 'x')" x "$scene" opts
+rm -rf opts
 grep -q "job array 1001 (3 tasks) and the merge as job 1002" submit.out || fail "$(cat submit.out)"
 if PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" "$scene" slurm "${args[@]}" 2>err.txt; then
   fail "outside an array the script must refuse"

@@ -2,6 +2,9 @@
 // field, quoting included; file names; a foreign manifest is refused.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -83,6 +86,34 @@ TEST(Manifest, NamesAreTheSceneAndTheIndex) {
   EXPECT_EQ(variant_file("x", 0, 1, "csv"), "x-0.csv");
   EXPECT_EQ(manifest_name(std::nullopt), "manifest.csv");
   EXPECT_EQ(manifest_name(std::pair{2, 5}), "manifest.2-of-5.csv");
+}
+
+// A manifest that exists but cannot be opened (here: no file descriptor
+// left) is an error naming it; only a missing one is "no manifest", so that
+// neither a resumed run nor --merge leaves its rows out without a word.
+TEST(Manifest, OneThatCannotBeOpenedIsAnErrorNotAbsent) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("pita-test-manifest-" + std::to_string(::getpid()) + ".csv");
+  std::ofstream(path) << manifest_header({"/a"});
+  EXPECT_FALSE(ManifestReader::open(path.string() + ".missing", {"/a"}).has_value());
+  ASSERT_TRUE(ManifestReader::open(path, {"/a"}).has_value());
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_NOFILE, &saved), 0);
+  const int lowest_free = ::dup(0);
+  ASSERT_GE(lowest_free, 0);
+  ::close(lowest_free);
+  rlimit none = saved;
+  none.rlim_cur = static_cast<rlim_t>(lowest_free);  // the next open fails with EMFILE
+  ASSERT_EQ(::setrlimit(RLIMIT_NOFILE, &none), 0);
+  std::string message;
+  try {
+    (void)ManifestReader::open(path, {"/a"});
+  } catch (const std::runtime_error& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_NOFILE, &saved);
+  EXPECT_NE(message.find(path.string() + ": cannot read (Too many open files)"), std::string::npos) << message;
+  std::filesystem::remove(path);
 }
 
 }  // namespace
