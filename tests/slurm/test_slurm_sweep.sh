@@ -58,6 +58,13 @@ running() {
   done
   fail "shard $2 never started writing into $1: $(squeue)"
 }
+# merge_names DIR K/N: pita sweep --merge DIR exits 1 and names shard K/N as missing variants.
+merge_names() {
+  local code=0
+  "$pita" sweep --merge "$1" >/dev/null 2>merge.err || code=$?
+  [ $code -eq 1 ] || fail "--merge $1 with a shard missing exited $code: $(cat merge.err)"
+  grep -q "shard $2" merge.err || fail "--merge $1 does not name shard $2: $(cat merge.err)"
+}
 no_temporaries() {
   local left
   left="$(find "$1" -name '.*.??????' -print)"
@@ -112,12 +119,7 @@ wait_gone "$array,$merge_job"
 [ "$(state "${array}_1")" = CANCELLED ] || fail "task 1 is $(state "${array}_1")"
 [ "$(state "$merge_job")" = CANCELLED ] || fail "the merge is $(state "$merge_job") after a task was cancelled"
 [ ! -e three/manifest.csv ] || fail "manifest.csv written although a task was cancelled"
-set +e
-"$pita" sweep --merge three >/dev/null 2>merge.err
-code=$?
-set -e
-[ $code -eq 1 ] || fail "--merge of an incomplete sweep exited $code: $(cat merge.err)"
-grep -q "shard 1/2" merge.err || fail "--merge does not name shard 1/2: $(cat merge.err)"
+merge_names three 1/2
 rm -f three/manifest.csv three/index.html
 submit 2 --width 1 "$heavy" "$work/three" "${hargs[@]}"
 wait_gone "$array,$merge_job"
@@ -137,10 +139,5 @@ for k in 0 1; do [ "$(state "${array}_$k")" = COMPLETED ] || fail "task $k is $(
 [ ! -e four/manifest.csv ] || fail "manifest.csv written although a task failed"
 grep -q "shard 2/3 FAILED" "four/logs/shard-2-$array.log" || fail "the log: $(cat "four/logs/shard-2-$array.log")"
 grep -q "manifest.2-of-3.csv" "four/logs/shard-2-$array.log" || fail "the log does not name the file"
-set +e
-"$pita" sweep --merge four >/dev/null 2>merge.err
-code=$?
-set -e
-[ $code -eq 1 ] || fail "--merge with a shard missing exited $code: $(cat merge.err)"
-grep -q "shard 2/3" merge.err || fail "--merge does not name shard 2/3: $(cat merge.err)"
+merge_names four 2/3
 echo "ok: the Slurm recipe on a real Slurm: merge, requeue, cancel and resubmit, failure"
