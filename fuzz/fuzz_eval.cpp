@@ -34,9 +34,9 @@ void check_frames(const std::vector<scene::Frame>& frames, std::size_t count) {
   }
 }
 
-void check_frames(const std::vector<scene::PoseFrame>& frames, std::size_t count) {
+void check_frames(const std::vector<scene::PoseFrame<Affine2>>& frames, std::size_t count) {
   PITA_FUZZ_CHECK(frames.size() == count);
-  for (const scene::PoseFrame& f : frames) {
+  for (const scene::PoseFrame<Affine2>& f : frames) {
     PITA_FUZZ_CHECK(std::isfinite(f.t) && f.pose.L.allFinite() && f.pose.b.allFinite());
   }
 }
@@ -58,7 +58,8 @@ void evaluate(const scene::Scene& s, const motion::SceneMotion& motion, std::spa
                         },
                         [&](const scene::PointKeys&) { text(); },
                         [&](const scene::PlanePoseKeys&) {
-                          const std::vector<scene::PoseFrame> frames = motion::sample_poses(motion, times);
+                          const std::vector<scene::PoseFrame<Affine2>> frames =
+                              motion::sample_poses<Affine2>(motion, times);
                           check_frames(frames, times.size());
                           PITA_FUZZ_CHECK(!scene::pose_frames_to_json(scene::method_id(s.keys), frames).empty());
                           PITA_FUZZ_CHECK(!scene::pose_frames_to_csv(frames).empty());
@@ -78,8 +79,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::span<const MethodEntry> methods = every_method();
     if (choice % 4 == 0 && !methods.empty()) {
       const MethodEntry& entry = methods[(choice / 4) % methods.size()];
-      s = entry.kind == MotionKind::poses ? scene::with_pose_method(std::move(s), entry.pose_method)
-                                          : scene::with_method(std::move(s), entry.method);
+      s = scene::with_method(std::move(s), entry.method);
     }
     if (!scene::has_motion_keys(s.keys)) return 0;  // eval prints no frames
     motion::Stage(s).check();

@@ -8,7 +8,7 @@ AreaCurve area_over_time(const motion::SceneMotion& motion, std::span<const doub
   AreaCurve curve;
   std::vector<double> dets;
   for (const double t : times) {
-    const double det = motion.pose_at(t).L.determinant();
+    const double det = motion.pose_at<Affine2>(t).L.determinant();
     curve.times.push_back(t);
     dets.push_back(det);
     const double area = std::abs(det);

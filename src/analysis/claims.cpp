@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "analysis/comparison.hpp"
+#include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "scene/limits.hpp"
 #include "analysis/frame_steps.hpp"
 #include "analysis/properties.hpp"
@@ -72,45 +74,81 @@ const MotionMeasures& Measurer::measures(std::size_t panel) {
   return *kept;
 }
 
+namespace {
+
+// "points", "poses of the plane", ...: what a panel that is not of keyframes
+// has instead, for the refusal of a measure of keyframes.
+std::string_view what_the_panel_has(const scene::MotionKeys& keys) {
+  return std::visit(overloaded{[](const scene::KeyframeKeys&) { return std::string_view("keyframes"); },
+                               [](const scene::PointKeys&) { return std::string_view("points"); },
+                               [](const scene::PlanePoseKeys&) { return PoseTraits<Affine2>::noun; },
+                               [](const scene::SpacePoseKeys&) { return PoseTraits<Affine3>::noun; }},
+                    keys);
+}
+
+}  // namespace
+
+void Measurer::need_keyframes(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer,
+                              std::optional<std::size_t> other) const {
+  const motion::Stage& stage = *stage_;
+  (void)stage.motion(panel);  // its NoMotion first
+  const scene::MotionKeys& keys = stage.panel(panel).keys;
+  if (!std::holds_alternative<scene::KeyframeKeys>(keys)) {
+    unmeasured(stage, pointer, panel, measure,
+               fmt::format("it is measured on keyframes, and the panel has {}", what_the_panel_has(keys)));
+  }
+  if (other && !std::holds_alternative<scene::KeyframeKeys>(stage.panel(*other).keys)) {
+    unmeasured(stage, pointer, panel, measure, "the other panel has no keyframes");
+  }
+}
+
 double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
   const motion::Stage& stage = *stage_;
-  const bool keyframes = std::holds_alternative<scene::KeyframeKeys>(stage.panel(panel).keys);
-  const auto need_keyframes = [&] {
-    (void)stage.motion(panel);  // its NoMotion first
-    if (!keyframes) unmeasured(stage, pointer, panel, measure, "it is measured on keyframes, and the panel has points");
-  };
-  if (is_frame_step(measure.kind)) {  // "scale-step", ...
-    need_keyframes();
-    std::optional<FrameSteps>& kept = steps_.at(panel);
-    if (!kept) kept = frame_steps(stage, panel);
-    return *frame_step(*kept, measure.kind);
-  }
   switch (measure.kind) {
+    case MeasureKind::scale_step:
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max: {  // the drawn frames
+      need_keyframes(panel, measure, pointer);
+      std::optional<FrameSteps>& kept = steps_.at(panel);
+      if (!kept) kept = frame_steps(stage, panel);
+      return *frame_step(*kept, measure.kind);
+    }
     case MeasureKind::angle:
-      need_keyframes();
-      if (measure.panel) {
-        if (!std::holds_alternative<scene::KeyframeKeys>(stage.panel(*measure.panel).keys)) {
-          unmeasured(stage, pointer, panel, measure, "the other panel has no keyframes");
-        }
-        return panel_angle(stage, panel, *measure.panel, measure.t);
-      }
+      need_keyframes(panel, measure, pointer, measure.panel);
+      if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
       return vector_angle(stage, panel, measure.method, measure.t);
     case MeasureKind::frame_distance:
-      need_keyframes();
-      if (!std::holds_alternative<scene::KeyframeKeys>(stage.panel(*measure.panel).keys)) {
-        unmeasured(stage, pointer, panel, measure, "the other panel has no keyframes");
-      }
+      need_keyframes(panel, measure, pointer, measure.panel);
       return frame_distance(stage, panel, *measure.panel);
     case MeasureKind::handle_shift:
-      need_keyframes();
+      need_keyframes(panel, measure, pointer);
       if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
       return handle_shift(stage, panel);
     case MeasureKind::property:
-      need_keyframes();
+      need_keyframes(panel, measure, pointer);
       return property_value(stage, panel, measure, pointer);
-    default:
-      break;
+    case MeasureKind::discrepancy_max:
+    case MeasureKind::discrepancy_of:
+    case MeasureKind::discrepancy_time:
+    case MeasureKind::path_length:
+    case MeasureKind::turning:
+    case MeasureKind::winding_range:
+    case MeasureKind::overreaction:
+    case MeasureKind::pop:
+    case MeasureKind::ara:
+    case MeasureKind::velocity_jump:
+    case MeasureKind::area:
+    case MeasureKind::gain:
+    case MeasureKind::turn:
+    case MeasureKind::jump:
+      return measured_value(panel, measure, pointer);
   }
+  unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
+}
+
+double Measurer::measured_value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+  const motion::Stage& stage = *stage_;
   const MotionMeasures& m = measures(panel);
   switch (measure.kind) {
     case MeasureKind::discrepancy_max: {
@@ -164,7 +202,14 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no keyframe has that parameter");
       return largest;
     }
-    default:
+    case MeasureKind::scale_step:  // computed from the panel itself by value()
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max:
+    case MeasureKind::angle:
+    case MeasureKind::frame_distance:
+    case MeasureKind::handle_shift:
+    case MeasureKind::property:
       break;
   }
   unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
@@ -244,18 +289,35 @@ double claims_cost(const scene::Scene& scene) {
   double cost = 0.0;
   const auto add = [&](std::size_t panel, const scene::MeasureName& measure) {
     const scene::Panel& p = scene.panels.at(panel);
-    if (is_frame_step(measure.kind)) {
-      if (stepped.insert(panel).second) cost += (kScaleSamples + p.samples) * motion::frame_cost(p);
-      return;
-    }
     switch (measure.kind) {
+      case MeasureKind::scale_step:  // the drawn frames, once per panel
+      case MeasureKind::turn_step:
+      case MeasureKind::scale_min:
+      case MeasureKind::scale_max:
+        if (stepped.insert(panel).second) cost += (kScaleSamples + p.samples) * motion::frame_cost(p);
+        break;
       case MeasureKind::angle:
       case MeasureKind::handle_shift:
       case MeasureKind::frame_distance:  // both panels' frames
         cost += (kHandleShiftSamples + 2 * kFrameDistanceSamples) * motion::frame_cost(p);
         break;
-      default:
+      case MeasureKind::discrepancy_max:  // the panel's measures (measure_panel), once per panel
+      case MeasureKind::discrepancy_of:
+      case MeasureKind::discrepancy_time:
+      case MeasureKind::path_length:
+      case MeasureKind::turning:
+      case MeasureKind::winding_range:
+      case MeasureKind::overreaction:
+      case MeasureKind::pop:
+      case MeasureKind::ara:
+      case MeasureKind::velocity_jump:
+      case MeasureKind::area:
+      case MeasureKind::gain:
+      case MeasureKind::turn:
+      case MeasureKind::jump:
+      case MeasureKind::property:
         if (measured.insert(panel).second) cost += measure_cost(p);
+        break;
     }
   };
   for (const scene::Claim& claim : scene.claims) {

@@ -43,6 +43,13 @@ class Measurer {
 
  private:
   const MotionMeasures& measures(std::size_t panel);
+  // The measures of the panel's motion (measure_panel), kept: discrepancy,
+  // paths, windings, reactions, pops; ARA, area and velocity jumps of poses.
+  double measured_value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer);
+  // Throws the panel's NoMotion, then SceneError unless the panel (and the
+  // `other` panel a measure compares it with) has keyframes.
+  void need_keyframes(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer,
+                      std::optional<std::size_t> other = std::nullopt) const;
 
   const motion::Stage* stage_;
   std::vector<std::optional<MotionMeasures>> measures_;

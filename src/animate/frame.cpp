@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "motion/moving_keyframes.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/scene_motion.hpp"
@@ -34,9 +35,17 @@ Json arrow_json(const Arrow& a) {
 }
 
 // A pose of space as `pita eval` prints it: rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz].
-Json pose3_json(const Affine3& A) {
+// A pose's matrix as rows [L(r, 0), ..., b(r)], in the plane or in space.
+template <class Pose>
+Json pose_json(const Pose& A) {
+  constexpr int n = PoseTraits<Pose>::dimension;
   Json rows = Json::array();
-  for (int r = 0; r < 3; ++r) rows.push_back(Json::array({A.L(r, 0), A.L(r, 1), A.L(r, 2), A.b(r)}));
+  for (int r = 0; r < n; ++r) {
+    Json row = Json::array();
+    for (int c = 0; c < n; ++c) row.push_back(A.L(r, c));
+    row.push_back(A.b(r));
+    rows.push_back(std::move(row));
+  }
   return rows;
 }
 
@@ -125,12 +134,8 @@ void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage*
   const motion::SceneMotion& motion = stage->motion(index);
   std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = arrow_json(motion.arrow_at(t)); },
                         [&](const motion::PointTrack&) { into["p"] = point(motion.point_at(t)); },
-                        [&](const motion::PlanePoses&) {
-                          const Affine2 A = motion.pose_at(t);
-                          into["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}),
-                                                   Json::array({A.L(1, 0), A.L(1, 1), A.b(1)})});
-                        },
-                        [&](const motion::SpacePoses&) { into["A"] = pose3_json(motion.pose3_at(t)); }},
+                        [&](const motion::PlanePoses&) { into["A"] = pose_json(motion.pose_at<Affine2>(t)); },
+                        [&](const motion::SpacePoses&) { into["A"] = pose_json(motion.pose_at<Affine3>(t)); }},
              motion.built());
 }
 

@@ -90,15 +90,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   } else {
     bool any = false;
     for (const scene::Panel& panel : scene.panels) {
-      std::vector<double> knots;
-      const auto times = [&](const auto& items) {
-        for (const auto& item : items) knots.push_back(item.t);
-      };
-      std::visit(overloaded{[&](const scene::KeyframeKeys& given) { times(given.keyframes); },
-                            [&](const scene::PointKeys& given) { times(given.points); },
-                            [&](const scene::PlanePoseKeys& given) { times(given.poses); },
-                            [&](const scene::SpacePoseKeys& given) { times(given.poses); }},
-                 panel.keys);
+      const std::vector<double> knots = scene::knots(panel.keys);
       if (knots.empty()) continue;
       timeline.first = any ? std::min(timeline.first, knots.front()) : knots.front();
       timeline.last = any ? std::max(timeline.last, knots.back()) : knots.back();

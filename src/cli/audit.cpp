@@ -44,14 +44,15 @@ std::vector<Method> parse_methods(const std::string& list) {
     while (!name.empty() && name.front() == ' ') name.erase(name.begin());
     while (!name.empty() && name.back() == ' ') name.pop_back();
     if (name.empty()) throw UsageError("--methods: an empty name (give comma-separated methods, e.g. P1,P6,P8)");
-    const MethodEntry* entry = find_method_entry(name, MotionKind::arrows);
-    if (entry == nullptr) throw UsageError("--methods: " + unknown_method_reason(name, MotionKind::arrows));
+    const MethodEntry* entry = find_method_entry(name, is_method_of<Method>);
+    if (entry == nullptr) throw UsageError("--methods: " + unknown_method_reason(name, is_method_of<Method>));
     if (entry->min_count != 3) {
       throw UsageError(fmt::format("--methods: {} takes {} keyframes; the properties of Sec. 4 are defined for the "
                                    "methods through three",
                                    method_label(*entry), entry->min_count));
     }
-    if (std::find(out.begin(), out.end(), entry->method) == out.end()) out.push_back(entry->method);
+    const Method method = std::get<Method>(entry->method);  // the filter kept arrow methods only
+    if (std::find(out.begin(), out.end(), method) == out.end()) out.push_back(method);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }

@@ -116,20 +116,26 @@ std::string ease_names() {
   return names + "or" + families;
 }
 
-// Every method of the registry (core/methods.hpp), arrows then poses.
-std::string methods_table(MotionKind kind) {
+// One line of the help's table of methods: an arrow method's id, mnemonic
+// and title; a pose method's id, pose count, "3D" when it moves space, title.
+std::string method_line(const MethodEntry& method, Method) {
+  return fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title);
+}
+std::string method_line(const MethodEntry& method, PoseMethod pose) {
+  const std::string count = method.min_count == method.max_count ? std::to_string(method.min_count)
+                            : method.max_count >= scene::kMaxPoses
+                                ? fmt::format("{}+", method.min_count)
+                                : fmt::format("{}-{}", method.min_count, method.max_count);
+  return fmt::format("  {:<15} {:<4} {:<3} {}\n", method.id, count, info(pose).in_space ? "3D" : "", method.title);
+}
+
+// Every method of kind M in the registry (core/methods.hpp): the arrow
+// methods (M = Method) or the pose methods (M = PoseMethod), one line each.
+template <class M>
+std::string methods_table() {
   std::string table;
   for (const MethodEntry& method : every_method()) {
-    if (method.kind != kind) continue;
-    const std::string count = method.min_count == method.max_count
-                                  ? std::to_string(method.min_count)
-                                  : method.max_count >= scene::kMaxPoses
-                                        ? fmt::format("{}+", method.min_count)
-                                        : fmt::format("{}-{}", method.min_count, method.max_count);
-    table += kind == MotionKind::arrows
-                 ? fmt::format("  {:<5} {:<7} {}\n", method.id, method.mnemonic, method.title)
-                 : fmt::format("  {:<15} {:<4} {:<3} {}\n", method.id, count,
-                               info(method.pose_method).in_space ? "3D" : "", method.title);
+    if (const M* of_kind = std::get_if<M>(&method.method)) table += method_line(method, *of_kind);
   }
   return table;
 }
@@ -201,7 +207,7 @@ Scene format (JSON; schema/scene.schema.json describes every field):
                symmetrize ()" + readers(kSymmetrizeOption) + R"(): true averages with the time reverse
 
 Methods:
-)" + methods_table(MotionKind::arrows) +
+)" + methods_table<Method>() +
          R"(
 SMA takes two keyframes, every other method three; more are chained. Pa-Po, LS-Ca and LS-LP are the
 independent combinations of Fig. 7 outside the paper's basket; He-G, La-T1, La-T2 and Ne-M are the
@@ -220,7 +226,7 @@ Pose scenes (the Steady Affine Morphs paper; docs/reference/pose-scenes.md "Pose
   method       a pose method below (any case); "subdivisions": 0-6 steps of four-point-SAM
                (default 4)
   Pose methods (id, poses, what):
-)" + methods_table(MotionKind::poses) + R"(
+)" + methods_table<PoseMethod>() + R"(
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]}, ...]}
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
@@ -311,18 +317,13 @@ namespace {
 EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& sink) {
   EvalOutcome outcome;
   try {
-    std::optional<Method> method_override;
-    std::optional<PoseMethod> pose_method_override;
+    std::optional<AnyMethod> method_override;
     if (options.method) {
       const MethodEntry* entry = find_method_entry(*options.method);
       if (entry == nullptr) {
         throw InputError(fmt::format("--method: {}", unknown_method_reason(*options.method)));
       }
-      if (entry->kind == MotionKind::poses) {
-        pose_method_override = entry->pose_method;
-      } else {
-        method_override = entry->method;
-      }
+      method_override = entry->method;
     }
     std::optional<std::vector<double>> times;
     if (options.times) times = parse_times(*options.times);
@@ -331,7 +332,6 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
 
     scene::Scene scene = scene::load_scene(options.scene_path);
     if (method_override) scene = scene::with_method(std::move(scene), *method_override);
-    if (pose_method_override) scene = scene::with_pose_method(std::move(scene), *pose_method_override);
 
     // the whole output is built before anything is printed
     if (!scene::has_motion_keys(scene.keys)) {

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <vector>
 
+#include "core/overloaded.hpp"
+
 namespace pita {
 
 namespace {
@@ -12,24 +14,22 @@ std::vector<MethodEntry> build_registry() {
   std::vector<MethodEntry> entries;
   for (const MethodInfo& about : all_methods()) {
     MethodEntry entry;
-    entry.kind = MotionKind::arrows;
+    entry.method = about.method;
     entry.id = about.id;
     entry.mnemonic = about.mnemonic;
     entry.title = about.title;
     entry.min_count = entry.max_count = about.keyframe_count;
-    entry.method = about.method;
     entry.in_basket = about.in_basket;
     entries.push_back(entry);
   }
   for (const PoseMethodInfo& about : all_pose_methods()) {
     MethodEntry entry;
-    entry.kind = MotionKind::poses;
+    entry.method = about.method;
     entry.id = about.id;
     entry.mnemonic = about.id;
     entry.title = about.title;
     entry.min_count = about.min_poses;
     entry.max_count = about.max_poses;
-    entry.pose_method = about.method;
     entries.push_back(entry);
   }
   return entries;
@@ -53,9 +53,10 @@ std::vector<std::string> names_of(const MethodEntry& m) {
     names.push_back(lower(m.mnemonic));
     names.push_back(lower(std::string(m.id) + ":" + std::string(m.mnemonic)));
   }
-  if (m.kind == MotionKind::arrows && m.id.size() > 1 && m.id[0] == 'P' &&
-      std::isdigit(static_cast<unsigned char>(m.id[1]))) {
-    names.push_back(lower(m.id.substr(1)));  // "6", "5s"
+  // A PITA also answers to its number ("6", "5s"); a pose method has none.
+  const bool numbered = std::visit(overloaded{[](Method) { return true; }, [](PoseMethod) { return false; }}, m.method);
+  if (numbered && m.id.size() > 1 && m.id[0] == 'P' && std::isdigit(static_cast<unsigned char>(m.id[1]))) {
+    names.push_back(lower(m.id.substr(1)));
   }
   return names;
 }
@@ -75,18 +76,16 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-bool of_kind(const MethodEntry& entry, std::optional<MotionKind> kind) {
-  return !kind || entry.kind == *kind;
-}
+bool kept(const MethodEntry& entry, MethodFilter filter) { return filter == nullptr || filter(entry); }
 
 }  // namespace
 
 std::span<const MethodEntry> every_method() { return registry(); }
 
-const MethodEntry* find_method_entry(std::string_view name, std::optional<MotionKind> kind) {
+const MethodEntry* find_method_entry(std::string_view name, MethodFilter filter) {
   const std::string key = lower(name);
   for (const MethodEntry& entry : registry()) {
-    if (!of_kind(entry, kind)) continue;
+    if (!kept(entry, filter)) continue;
     for (const std::string& n : names_of(entry)) {
       if (n == key) return &entry;
     }
@@ -101,24 +100,24 @@ std::string method_label(const MethodEntry& entry) {
 
 const MethodEntry& entry_of(Method method) {
   for (const MethodEntry& entry : registry()) {
-    if (entry.kind == MotionKind::arrows && entry.method == method) return entry;
+    if (const Method* m = std::get_if<Method>(&entry.method); m != nullptr && *m == method) return entry;
   }
   return registry().front();
 }
 
 const MethodEntry& entry_of(PoseMethod method) {
   for (const MethodEntry& entry : registry()) {
-    if (entry.kind == MotionKind::poses && entry.pose_method == method) return entry;
+    if (const PoseMethod* m = std::get_if<PoseMethod>(&entry.method); m != nullptr && *m == method) return entry;
   }
   return registry().front();
 }
 
-std::vector<std::string> suggest_methods(std::string_view name, std::optional<MotionKind> kind,
+std::vector<std::string> suggest_methods(std::string_view name, MethodFilter filter,
                                          std::size_t most) {
   const std::string key = lower(name);
   std::vector<std::pair<std::size_t, std::string>> scored;
   for (const MethodEntry& entry : registry()) {
-    if (!of_kind(entry, kind)) continue;
+    if (!kept(entry, filter)) continue;
     std::size_t best = std::string::npos;
     for (const std::string& n : names_of(entry)) best = std::min(best, edit_distance(key, n));
     if (best <= 2) scored.emplace_back(best, method_label(entry));
@@ -133,9 +132,9 @@ std::vector<std::string> suggest_methods(std::string_view name, std::optional<Mo
   return out;
 }
 
-std::string unknown_method_reason(std::string_view name, std::optional<MotionKind> kind) {
+std::string unknown_method_reason(std::string_view name, MethodFilter filter) {
   std::string reason = "unknown method \"" + std::string(name) + "\"";
-  const std::vector<std::string> suggestions = suggest_methods(name, kind);
+  const std::vector<std::string> suggestions = suggest_methods(name, filter);
   if (!suggestions.empty()) {
     reason += "; did you mean ";
     for (std::size_t i = 0; i < suggestions.size(); ++i) {
@@ -144,14 +143,13 @@ std::string unknown_method_reason(std::string_view name, std::optional<MotionKin
     }
     return reason + "?";
   }
-  const std::string known = kind ? method_ids(*kind) : method_ids(MotionKind::arrows) + ", " + method_ids(MotionKind::poses);
-  return reason + "; known methods: " + known;
+  return reason + "; known methods: " + method_ids(filter);
 }
 
-std::string method_ids(MotionKind kind) {
+std::string method_ids(MethodFilter filter) {
   std::string ids;
   for (const MethodEntry& entry : registry()) {
-    if (entry.kind != kind) continue;
+    if (!kept(entry, filter)) continue;
     if (!ids.empty()) ids += ", ";
     ids += entry.id;
   }

@@ -6,29 +6,41 @@
 // tested against) every_method().
 #pragma once
 
-#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
 
 namespace pita {
 
-enum class MotionKind { arrows, poses };
+// A method of either kind: a PITA (or the SMA) between arrows, or a pose
+// method of the SAM paper. Which alternative it holds is the kind of scene the
+// method interpolates; nothing else records it.
+using AnyMethod = std::variant<Method, PoseMethod>;
 
 struct MethodEntry {
-  MotionKind kind = MotionKind::arrows;
+  AnyMethod method;
   std::string_view id;        // "P6", "SAM"
   std::string_view mnemonic;  // "La-LP"; the id again where there is none
   std::string_view title;
   int min_count = 0;          // keyframes (arrows) or poses
   int max_count = 0;
-  Method method = Method::P6;               // when kind == arrows
-  PoseMethod pose_method = PoseMethod::sam;  // when kind == poses
   bool in_basket = true;      // false for Fig. 7's extra independent combinations
 };
+
+// Whether the entry is a method of kind M (Method: arrows; PoseMethod: poses).
+template <class M>
+bool is_method_of(const MethodEntry& entry) {
+  return std::holds_alternative<M>(entry.method);
+}
+
+// Which entries a look-up considers: every one (nullptr) or those a
+// predicate keeps (is_method_of<M>).
+using MethodFilter = bool (*)(const MethodEntry&);
 
 // Every method: the arrow methods in the order of all_methods(), then the
 // pose methods in the order of all_pose_methods().
@@ -36,8 +48,15 @@ std::span<const MethodEntry> every_method();
 
 // The method a name means, any case: an id ("P6", "sam"), a mnemonic
 // ("la-lp"), both ("P6:La-LP") or a PITA's number ("6", "5s"); nullptr if none.
-// With `kind`, only methods of that kind answer.
-const MethodEntry* find_method_entry(std::string_view name, std::optional<MotionKind> kind = std::nullopt);
+// With a filter, only the methods it keeps answer.
+const MethodEntry* find_method_entry(std::string_view name, MethodFilter filter = nullptr);
+
+// The method of kind M a name means (find_method_entry), or nullptr.
+template <class M>
+const M* find_method_of(std::string_view name) {
+  const MethodEntry* entry = find_method_entry(name, is_method_of<M>);
+  return entry == nullptr ? nullptr : std::get_if<M>(&entry->method);
+}
 
 // "P6 (La-LP)", "SMA", "SAM": a method as messages and titles name it.
 std::string method_label(const MethodEntry& entry);
@@ -46,17 +65,16 @@ const MethodEntry& entry_of(PoseMethod method);
 
 // The closest names to a misspelt one, best first, at most `most`, labelled
 // as method_label does ("did you mean").
-std::vector<std::string> suggest_methods(std::string_view name, std::optional<MotionKind> kind = std::nullopt,
-                                         std::size_t most = 3);
+std::vector<std::string> suggest_methods(std::string_view name, MethodFilter filter = nullptr, std::size_t most = 3);
 
-// "SAM, polySAM, bezier-SAM, ...": the ids of every method of `kind`, in
-// registry order (for messages).
-std::string method_ids(MotionKind kind);
+// "SAM, polySAM, bezier-SAM, ...": the ids of every method the filter keeps
+// (every method for nullptr), in registry order (for messages).
+std::string method_ids(MethodFilter filter = nullptr);
 
 // The one wording of an unknown method:
 //   unknown method "P66"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?
 //   unknown method "zz"; known methods: P1, P2, ...
-// With `kind`, suggestions and the list are of that kind.
-std::string unknown_method_reason(std::string_view name, std::optional<MotionKind> kind = std::nullopt);
+// With a filter, suggestions and the list are of the methods it keeps.
+std::string unknown_method_reason(std::string_view name, MethodFilter filter = nullptr);
 
 }  // namespace pita

@@ -126,6 +126,16 @@ double SamFamilyMotion<Pose>::bezier_parameter(double t) const {
 
 template <class Pose>
 Pose SamFamilyMotion<Pose>::at(double t) const {
+  // The span holding t, the first and last extrapolating, exact at its ends;
+  // `mix` (span, parameter u in [0, 1]) is the method's pose within it.
+  const auto in_span = [&](const auto& mix) -> Pose {
+    const std::size_t i = span_of(t);
+    const Timed& from = span_poses_[i];
+    const Timed& to = span_poses_[i + 1];
+    if (t == from.t) return from.pose;
+    if (t == to.t) return to.pose;
+    return mix(i, (t - from.t) / (to.t - from.t));
+  };
   switch (method_) {
     case PoseMethod::bezier_sam: {
       const double u = bezier_parameter(t);
@@ -139,19 +149,19 @@ Pose SamFamilyMotion<Pose>::at(double t) const {
       if (tc == b) return poses_[1].pose;
       return biarc_->at(u);
     }
-    default: {
-      // SAM, polySAM, four-point, linear: the span holding t; the first and
-      // last extrapolate.
-      const std::size_t i = span_of(t);
-      const Timed& from = span_poses_[i];
-      const Timed& to = span_poses_[i + 1];
-      if (t == from.t) return from.pose;
-      if (t == to.t) return to.pose;
-      const double u = (t - from.t) / (to.t - from.t);
-      if (method_ == PoseMethod::linear) return linear_mix(from.pose, to.pose, u);
-      return spans_[i].at(u);
-    }
+    case PoseMethod::sam:
+    case PoseMethod::poly_sam:
+    case PoseMethod::four_point:
+      return in_span([&](std::size_t i, double u) { return spans_[i].at(u); });
+    case PoseMethod::linear:
+      return in_span([&](std::size_t i, double u) { return linear_mix(span_poses_[i].pose, span_poses_[i + 1].pose, u); });
+    case PoseMethod::rarap:  // the plane's morphs of Fig. 2: PoseMotion; the constructor refuses them
+    case PoseMethod::asap:
+    case PoseMethod::tsb:
+    case PoseMethod::alexa:
+      break;
   }
+  throw std::invalid_argument(std::string("method ") + std::string(info(method_).id) + " is not of the SAM family");
 }
 
 template <class Pose>
@@ -190,14 +200,22 @@ Pose SamFamilyMotion<Pose>::velocity(double t) const {
       const Pose m2 = at(t - 2.0 * h), m1 = at(t - h), p1 = at(t + h), p2 = at(t + 2.0 * h);
       return plus(difference(p1, m1, 8.0 / (12.0 * h)), difference(m2, p2, 1.0 / (12.0 * h)));
     }
-    default: {
-      // SAM, polySAM, four-point: exact, (log A_span) A(t) / span duration.
+    case PoseMethod::sam:
+    case PoseMethod::poly_sam:
+    case PoseMethod::four_point: {
+      // Exact: (log A_span) A(t) / span duration.
       const std::size_t i = span_of(t);
       const double duration = span_poses_[i + 1].t - span_poses_[i].t;
       const Pose rate = spans_[i].velocity((t - span_poses_[i].t) / duration);
       return {rate.L / duration, rate.b / duration};
     }
+    case PoseMethod::rarap:  // not of the SAM family (see at())
+    case PoseMethod::asap:
+    case PoseMethod::tsb:
+    case PoseMethod::alexa:
+      break;
   }
+  throw std::invalid_argument(std::string("method ") + std::string(info(method_).id) + " is not of the SAM family");
 }
 
 template void check_poses(PoseMethod, const std::vector<TimedPoseOf<Affine2>>&);

@@ -53,15 +53,19 @@ std::string layer_type_at(const scene::Scene& scene, const scene::Panel& panel, 
   } catch (const std::exception&) {
     return "";
   }
-  const bool own = slash > 0;  // the panel's own layers
-  const bool arrows = std::holds_alternative<scene::KeyframeKeys>(panel.keys) ||
-                      std::holds_alternative<scene::PointKeys>(panel.keys);
-  if (arrows) {
-    const auto& layers = own && panel.layers ? *panel.layers : scene.layers;
-    return index < layers.size() ? std::string(scene::layer_type(layers[index])) : "";
-  }
-  const auto& layers = own && panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
-  return index < layers.size() ? std::string(scene::layer_type(layers[index])) : "";
+  // The layers the pointer names: the panel's ("/panels/1/layers/0": its own,
+  // else the scene's) or the scene's ("/layers/0").
+  const auto type_in = [&](const auto& scene_layers, const auto& drawn) {
+    const auto& layers = slash > 0 ? drawn.layers : scene_layers;
+    return index < layers.size() ? std::string(scene::layer_type(layers[index])) : std::string();
+  };
+  const auto arrows = [&] { return type_in(scene.layers, scene::layers_of<scene::Layer>(scene, panel)); };
+  const auto poses = [&] { return type_in(scene.pose_layers, scene::layers_of<scene::PoseLayer>(scene, panel)); };
+  return std::visit(overloaded{[&](const scene::KeyframeKeys&) { return arrows(); },
+                               [&](const scene::PointKeys&) { return arrows(); },
+                               [&](const scene::PlanePoseKeys&) { return poses(); },
+                               [&](const scene::SpacePoseKeys&) { return poses(); }},
+                    panel.keys);
 }
 
 std::string panel_name(const scene::Scene& scene, std::size_t i) {

@@ -43,19 +43,15 @@ std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const doub
   return frames;
 }
 
-std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times) {
-  std::vector<PoseFrame> frames;
+template <class Pose>
+std::vector<PoseFrame<Pose>> sample_poses(const SceneMotion& motion, std::span<const double> times) {
+  std::vector<PoseFrame<Pose>> frames;
   frames.reserve(times.size());
-  for (double t : times) frames.push_back({t, motion.pose_at(t)});
+  for (double t : times) frames.push_back({t, motion.pose_at<Pose>(t)});
   return frames;
 }
-
-std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::span<const double> times) {
-  std::vector<scene::PoseFrame3> frames;
-  frames.reserve(times.size());
-  for (double t : times) frames.push_back({t, motion.pose3_at(t)});
-  return frames;
-}
+template std::vector<PoseFrame<Affine2>> sample_poses(const SceneMotion&, std::span<const double>);
+template std::vector<PoseFrame<Affine3>> sample_poses(const SceneMotion&, std::span<const double>);
 
 FrameTimes::FrameTimes(const SceneMotion& motion, int count)
     : motion_(&motion), count_(count < 2 ? 0 : static_cast<std::size_t>(count)) {
@@ -71,16 +67,13 @@ double FrameTimes::at(std::size_t i) const {
 
 namespace {
 
-// The frame of `motion` at t, of the kind `Track` stands for.
+// The frame of `motion` at t, of the kind `Track` stands for (the printer's row).
 Frame frame_at(const ArrowTrack&, const SceneMotion& motion, double t) { return {t, motion.arrow_at(t)}; }
 scene::PointFrame frame_at(const PointTrack&, const SceneMotion& motion, double t) { return {t, motion.point_at(t)}; }
-PoseFrame frame_at(const PlanePoses&, const SceneMotion& motion, double t) { return {t, motion.pose_at(t)}; }
-scene::PoseFrame3 frame_at(const SpacePoses&, const SceneMotion& motion, double t) { return {t, motion.pose3_at(t)}; }
-
-scene::FramesPrinter::Rows rows_of(const ArrowTrack&) { return scene::FramesPrinter::Rows::arrows; }
-scene::FramesPrinter::Rows rows_of(const PointTrack&) { return scene::FramesPrinter::Rows::points; }
-scene::FramesPrinter::Rows rows_of(const PlanePoses&) { return scene::FramesPrinter::Rows::poses; }
-scene::FramesPrinter::Rows rows_of(const SpacePoses&) { return scene::FramesPrinter::Rows::poses3; }
+template <class Pose>
+PoseFrame<Pose> frame_at(const PoseTrack<Pose>&, const SceneMotion& motion, double t) {
+  return {t, motion.pose_at<Pose>(t)};
+}
 
 }  // namespace
 
@@ -89,14 +82,15 @@ void write_frames(const scene::Panel& panel, const SceneMotion& motion, const Fr
   const std::string chain = motion.chain() ? std::string(info(*motion.chain()).name) : "";
   std::visit(
       [&](const auto& track) {
-        scene::FramesPrinter printer(rows_of(track), format, scene::method_id(panel.keys), chain);
-        scene::FramesPrinter::Buffer chunk;
+        using Row = decltype(frame_at(track, motion, 0.0));
+        scene::FramesPrinter<Row> printer(format, scene::method_id(panel.keys), chain);
+        scene::FramesBuffer chunk;
         if (!sink.discards_on_throw) {
           // Every frame once, checked as row() checks it, so that a frame
           // that is not finite throws before any byte reaches a sink that
           // cannot take it back.
           for (std::size_t i = 0; i < times.size(); ++i) {
-            scene::FramesPrinter::require_finite(frame_at(track, motion, times.at(i)));
+            scene::FramesPrinter<Row>::require_finite(frame_at(track, motion, times.at(i)));
           }
         }
         chunk.reserve(kFramesChunkBytes + 1024);
@@ -137,13 +131,21 @@ double check_eval_work(const scene::Scene& scene, const scene::Panel& panel, con
 
 std::string no_frames_text(const scene::Scene& scene, FramesFormat format) {
   const std::string method = scene::method_id(scene.keys);
-  const bool csv = format == FramesFormat::csv;
-  if (std::holds_alternative<scene::SpacePoseKeys>(scene.keys)) {
-    const std::span<const scene::PoseFrame3> none;
-    return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
-  }
-  const std::span<const scene::PoseFrame> none;
-  return csv ? scene::pose_frames_to_csv(none) : scene::pose_frames_to_json(method, none);
+  const auto none = [&](auto row) {
+    using Row = decltype(row);
+    scene::FramesPrinter<Row> printer(format, method);
+    scene::FramesBuffer text;
+    printer.head(text);
+    printer.tail(text);
+    return fmt::to_string(text);
+  };
+  // Only a pose scene may have no motion (scene::has_motion_keys); any kind
+  // prints its own empty document.
+  return std::visit(overloaded{[&](const scene::KeyframeKeys&) { return none(scene::Frame{}); },
+                               [&](const scene::PointKeys&) { return none(scene::PointFrame{}); },
+                               [&](const scene::PlanePoseKeys&) { return none(PoseFrame<Affine2>{}); },
+                               [&](const scene::SpacePoseKeys&) { return none(PoseFrame<Affine3>{}); }},
+                    scene.keys);
 }
 
 }  // namespace pita::motion

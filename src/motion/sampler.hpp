@@ -34,13 +34,15 @@ std::vector<double> uniform_times(const SceneMotion& motion, int count);
 // The arrow D(t), or the pose A(t), of a motion at scene time t (the types
 // the frame writers of scene/frames.hpp print).
 using Frame = scene::Frame;
-using PoseFrame = scene::PoseFrame;
+template <class Pose>
+using PoseFrame = scene::PoseFrame<Pose>;
 
 // The frames at `times` (scene times, any order; outside the knots they
-// extrapolate). Throw NoMotion as SceneMotion does.
+// extrapolate): arrows, or poses of the plane (Pose = Affine2) or of space
+// (Affine3). Throw NoMotion as SceneMotion does.
 std::vector<Frame> sample_arrows(const SceneMotion& motion, std::span<const double> times);
-std::vector<PoseFrame> sample_poses(const SceneMotion& motion, std::span<const double> times);
-std::vector<scene::PoseFrame3> sample_poses3(const SceneMotion& motion, std::span<const double> times);
+template <class Pose>
+std::vector<PoseFrame<Pose>> sample_poses(const SceneMotion& motion, std::span<const double> times);
 
 // Frames of `motion` (the motion of `panel` in `scene`) cost `frames` times
 // its frame cost; above scene::kMaxEvalWork this throws scene::SceneError at

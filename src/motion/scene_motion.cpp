@@ -119,6 +119,18 @@ PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& pane
 
 namespace {
 
+// The motion through the poses, with the scene's reference simplex: the
+// plane's motions also take the reference triangle (rARAP, ASAP and TSB move
+// it, core/pose_motion.hpp).
+PlanePoses make_pose_track(const scene::Scene& scene, const scene::PlanePoseKeys& keys) {
+  return {std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions, scene.reference_triangle),
+          scene.reference_triangle};
+}
+SpacePoses make_pose_track(const scene::Scene& scene, const scene::SpacePoseKeys& keys) {
+  return {std::make_shared<const PoseMotion3>(keys.method, keys.poses, keys.subdivisions),
+          scene.reference_tetrahedron};
+}
+
 // The motion of the panel's keyframes, points or poses, refused with NoMotion
 // (at the panel's motion pointer) when the method has none through them.
 template <class Pose>
@@ -126,14 +138,7 @@ auto build_poses(const scene::Scene& scene, const scene::Panel& panel, const sce
   const auto refuse = [&](const std::string& reason) { return NoMotion(scene.path, panel.motion_pointer, reason); };
   if (keys.poses.empty()) throw refuse("the panel has no poses to interpolate");
   try {
-    if constexpr (std::is_same_v<Pose, Affine2>) {
-      return PlanePoses{std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions,
-                                                           scene.reference_triangle),
-                        scene.reference_triangle};
-    } else {
-      return SpacePoses{std::make_shared<const PoseMotion3>(keys.method, keys.poses, keys.subdivisions),
-                        scene.reference_tetrahedron};
-    }
+    return make_pose_track(scene, keys);
   } catch (const NoSamBetweenPoses& error) {
     throw refuse(scene::no_sam_reason(error, keys.method));
   } catch (const std::invalid_argument& error) {
@@ -170,25 +175,6 @@ BuiltMotion build_kind(const scene::Scene& scene, const scene::Panel& panel, con
       panel.keys);
 }
 
-// The knots of the panel's motion, increasing: keyframes "as-given" may come
-// in any order (docs/paper-notes.md N41); the motion runs from the least to
-// the greatest.
-std::vector<double> knots_of(const scene::Panel& panel) {
-  std::vector<double> knots;
-  const auto times = [&](const auto& items) {
-    for (const auto& item : items) knots.push_back(item.t);
-  };
-  std::visit(overloaded{[&](const scene::KeyframeKeys& given) {
-                          times(given.keyframes);
-                          std::sort(knots.begin(), knots.end());
-                        },
-                        [&](const scene::PointKeys& given) { times(given.points); },
-                        [&](const scene::PlanePoseKeys& given) { times(given.poses); },
-                        [&](const scene::SpacePoseKeys& given) { times(given.poses); }},
-             panel.keys);
-  return knots;
-}
-
 }  // namespace
 
 SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
@@ -198,21 +184,32 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
   motion.pointer_ = panel.motion_pointer;
   motion.method_id_ = scene::method_id(panel.keys);
   motion.built_ = build_kind(scene, panel, motion.label_);
-  motion.knots_ = knots_of(panel);
+  motion.knots_ = scene::knots(panel.keys);
 
   const scene::Timing& timing = panel.timing;
   if (timing.is_identity()) return motion;
   const std::string at = timing.arc_length ? timing.pointer + "/arc_length" : timing.pointer;
   try {
-    if (motion.is<SpacePoses>()) {
-      ArcLengthTable::Path3 path;
-      if (timing.arc_length) path = motion.point_path3(*timing.arc_length);
-      motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
-    } else {
+    // The warp, paced by the arc length of a point of the plane or of space.
+    const auto warp = [&](const auto& path) {
+      return TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
+    };
+    const auto plane_warp = [&] {
       std::function<Point(double)> path;
       if (timing.arc_length) path = motion.point_path(*timing.arc_length);
-      motion.warp_ = TimeWarp(timing.ease, timing.per, motion.knots_, path ? &path : nullptr);
-    }
+      return warp(path);
+    };
+    motion.warp_ = std::visit(overloaded{[&](const ArrowTrack&) { return plane_warp(); },
+                                         [&](const PointTrack&) { return plane_warp(); },
+                                         [&](const PlanePoses&) { return plane_warp(); },
+                                         [&](const SpacePoses&) {
+                                           ArcLengthTable::Path3 path;
+                                           if (timing.arc_length) {
+                                             path = motion.pose_point_path<Affine3>(*timing.arc_length);
+                                           }
+                                           return warp(path);
+                                         }},
+                              motion.built_);
   } catch (const NoMotion&) {
     throw;
   } catch (const std::exception& error) {
@@ -224,21 +221,26 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
 }
 
 void SceneMotion::not_of_kind(std::string_view wanted) const {
-  // A 3D scene asked for work in the plane: its "dimension" is at fault.
-  if (is<SpacePoses>()) {
-    throw NoMotion(file_, "/dimension", "this is a 3D pose scene: this command works on poses of the plane only");
-  }
-  const std::string_view kind =
-      std::visit(overloaded{[](const ArrowTrack&) { return std::string_view("keyframe arrows"); },
-                            [](const PointTrack&) { return std::string_view("timed points"); },
-                            [](const PlanePoses&) { return std::string_view("poses of the plane"); },
-                            [](const SpacePoses&) { return std::string_view("poses of space"); }},
-                 built_);
-  if (is<PointTrack>() && wanted == "keyframe arrows") {
-    throw NoMotion(file_, pointer_,
-                   "this panel has timed \"points\", not keyframes: draw it with a \"point-trajectory\" layer");
-  }
-  throw NoMotion(file_, pointer_, fmt::format("this motion is of {}, not of {}", kind, wanted));
+  const auto refuse = [&](std::string_view kind) {
+    throw NoMotion(file_, pointer_, fmt::format("this motion is of {}, not of {}", kind, wanted));
+  };
+  std::visit(overloaded{[&](const ArrowTrack&) { refuse("keyframe arrows"); },
+                        [&](const PointTrack&) {
+                          if (wanted == "keyframe arrows") {
+                            throw NoMotion(file_, pointer_,
+                                           "this panel has timed \"points\", not keyframes: draw it with a "
+                                           "\"point-trajectory\" layer");
+                          }
+                          refuse("timed points");
+                        },
+                        [&](const PlanePoses&) { refuse(PoseTraits<Affine2>::noun); },
+                        [&](const SpacePoses&) {
+                          // A 3D scene asked for work in the plane: its "dimension" is at fault.
+                          throw NoMotion(file_, "/dimension",
+                                         "this is a 3D pose scene: this command works on poses of the plane only");
+                        }},
+             built_);
+  throw NoMotion(file_, pointer_, fmt::format("this motion is not of {}", wanted));  // not reached
 }
 
 template <class Kind>
@@ -256,7 +258,6 @@ std::optional<Chain> SceneMotion::chain() const {
 }
 
 const Motion& SceneMotion::arrows() const { return *as<ArrowTrack>("keyframe arrows").motion; }
-const PoseMotion& SceneMotion::poses() const { return *as<PlanePoses>("poses of the plane").motion; }
 
 std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) const {
   using Path = std::function<Point(double)>;
@@ -265,23 +266,21 @@ std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) 
                    return [motion = track.motion, point](double tau) { return tracked(motion->at(tau), point); };
                  },
                  [&](const PointTrack&) -> Path { not_of_kind("keyframe arrows"); },
-                 [&](const PlanePoses& poses) -> Path {
-                   const std::array<Point, 3>& reference = poses.reference;
-                   const Point origin = point == scene::TrackedPoint::start ? reference[0]
-                                        : point == scene::TrackedPoint::end ? reference[1]
-                                                                            : 0.5 * (reference[0] + reference[1]);
-                   return [motion = poses.motion, origin](double tau) { return pita::apply(motion->at(tau), origin); };
-                 },
+                 [&](const PlanePoses&) -> Path { return pose_point_path<Affine2>(point); },
                  [&](const SpacePoses&) -> Path { not_of_kind("poses of the plane"); }},
       built_);
 }
 
-std::function<Eigen::Vector3d(double)> SceneMotion::point_path3(scene::TrackedPoint point) const {
-  const SpacePoses& poses = as<SpacePoses>("poses of space");
-  const std::array<Eigen::Vector3d, 4>& reference = poses.reference;
-  const Eigen::Vector3d origin = point == scene::TrackedPoint::start ? reference[0]
-                                 : point == scene::TrackedPoint::end ? reference[1]
-                                                                     : 0.5 * (reference[0] + reference[1]);
+template <class Pose>
+std::function<typename PoseTraits<Pose>::BodyPoint(double)> SceneMotion::pose_point_path(
+    scene::TrackedPoint point) const {
+  const PoseTrack<Pose>& poses = as<PoseTrack<Pose>>(PoseTraits<Pose>::noun);
+  const auto& reference = poses.reference;
+  const typename PoseTraits<Pose>::BodyPoint origin = point == scene::TrackedPoint::start ? reference[0]
+                                                      : point == scene::TrackedPoint::end
+                                                          ? reference[1]
+                                                          : typename PoseTraits<Pose>::BodyPoint(
+                                                                0.5 * (reference[0] + reference[1]));
   return [motion = poses.motion, origin](double tau) { return pita::apply(motion->at(tau), origin); };
 }
 
@@ -332,11 +331,17 @@ Arrow SceneMotion::arrow_at(double t) const {
   return arrow;
 }
 
+template <class Pose>
+const typename PoseTraits<Pose>::Motion& SceneMotion::poses() const {
+  return *as<PoseTrack<Pose>>(PoseTraits<Pose>::noun).motion;
+}
+
 // A pose motion's pose at scene time t, refused with NoMotion when the
 // method throws or the pose is not finite.
-template <class Motion>
-auto SceneMotion::finite_pose(const Motion& motion, double t) const {
-  decltype(motion.at(0.0)) pose;
+template <class Pose>
+Pose SceneMotion::pose_at(double t) const {
+  const auto& motion = poses<Pose>();
+  Pose pose;
   try {
     pose = motion.at(warp_(t));
   } catch (const std::exception& error) {
@@ -351,13 +356,10 @@ auto SceneMotion::finite_pose(const Motion& motion, double t) const {
   return pose;
 }
 
-Affine3 SceneMotion::pose3_at(double t) const {
-  return finite_pose(*as<SpacePoses>("poses of space").motion, t);
-}
-
-template <class Motion>
-auto SceneMotion::pose_rate(const Motion& motion, double t) const {
-  decltype(motion.velocity(0.0)) rate;
+template <class Pose>
+Pose SceneMotion::pose_velocity(double t) const {
+  const auto& motion = poses<Pose>();
+  Pose rate;
   try {
     rate = motion.velocity(warp_(t));
   } catch (const std::exception& error) {
@@ -371,9 +373,14 @@ auto SceneMotion::pose_rate(const Motion& motion, double t) const {
   return rate;
 }
 
-Affine3 SceneMotion::pose3_velocity(double t) const {
-  return pose_rate(*as<SpacePoses>("poses of space").motion, t);
-}
+template const PoseMotion& SceneMotion::poses<Affine2>() const;
+template const PoseMotion3& SceneMotion::poses<Affine3>() const;
+template Affine2 SceneMotion::pose_at<Affine2>(double) const;
+template Affine3 SceneMotion::pose_at<Affine3>(double) const;
+template Affine2 SceneMotion::pose_velocity<Affine2>(double) const;
+template Affine3 SceneMotion::pose_velocity<Affine3>(double) const;
+template std::function<Point(double)> SceneMotion::pose_point_path<Affine2>(scene::TrackedPoint) const;
+template std::function<Eigen::Vector3d(double)> SceneMotion::pose_point_path<Affine3>(scene::TrackedPoint) const;
 
 double SceneMotion::warp_rate(double t) const {
   // d tau / d t by a central difference (the ease and the arc-length inverse
@@ -381,11 +388,5 @@ double SceneMotion::warp_rate(double t) const {
   const double h = limits::kWarpRateStep * (last() - first());
   return (warp_(t + h) - warp_(t - h)) / (2.0 * h);
 }
-
-Affine2 SceneMotion::pose_at(double t) const {
-  return finite_pose(poses(), t);
-}
-
-Affine2 SceneMotion::pose_velocity(double t) const { return pose_rate(poses(), t); }
 
 }  // namespace pita::motion

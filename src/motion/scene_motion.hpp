@@ -24,6 +24,7 @@
 #include "core/pitas/motion.hpp"
 #include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
+#include "core/pose_traits.hpp"
 #include "core/sam_family_motion.hpp"
 #include "core/time_warp.hpp"
 #include "motion/no_motion.hpp"
@@ -43,14 +44,14 @@ struct PointTrack {  // timed points (PITA Sec. 7.6): the curve of PITA Eq. 48-5
   std::shared_ptr<const PointCurveMotion> curve;
   std::optional<Chain> chain;  // the chain of the edge arrows' track
 };
-struct PlanePoses {  // poses of the plane (the SAM paper): A(tau)
-  std::shared_ptr<const PoseMotion> motion;
-  std::array<Point, 3> reference;  // the reference triangle
+// Poses of the plane (the SAM paper) or of space ("dimension": 3): A(tau).
+template <class Pose>
+struct PoseTrack {
+  std::shared_ptr<const typename PoseTraits<Pose>::Motion> motion;
+  typename PoseTraits<Pose>::Simplex reference;  // the reference triangle or tetrahedron
 };
-struct SpacePoses {  // poses of space ("dimension": 3): A(tau)
-  std::shared_ptr<const PoseMotion3> motion;
-  std::array<Eigen::Vector3d, 4> reference;  // the reference tetrahedron
-};
+using PlanePoses = PoseTrack<Affine2>;
+using SpacePoses = PoseTrack<Affine3>;
 using BuiltMotion = std::variant<ArrowTrack, PointTrack, PlanePoses, SpacePoses>;
 
 class SceneMotion {
@@ -83,29 +84,29 @@ class SceneMotion {
   double motion_time(double t) const { return warp_(t); }
   const TimeWarp& warp() const { return warp_; }
 
-  // D(t) (keyframes) and A(t) (poses of the plane) at scene time t. Throw
-  // NoMotion when the method is undefined there, its value is not finite, or
-  // the motion is of another kind.
+  // D(t) (keyframes) at scene time t, and A(t) and dA/dt (poses of the plane,
+  // Pose = Affine2, or of space, Affine3; the warp's rate included in dA/dt).
+  // Throw NoMotion when the method is undefined there, its value is not
+  // finite, or the motion is of another kind.
   Arrow arrow_at(double t) const;
-  Affine2 pose_at(double t) const;
-  // dA/dt at scene time t (poses of the plane), the warp's rate included.
-  Affine2 pose_velocity(double t) const;
-  // Poses of space: A(t) and dA/dt at scene time t.
-  Affine3 pose3_at(double t) const;
-  Affine3 pose3_velocity(double t) const;
+  template <class Pose>
+  Pose pose_at(double t) const;
+  template <class Pose>
+  Pose pose_velocity(double t) const;
 
   // The path of a point of the frame as a function of the motion's own time
   // tau (no warp): for arrows p, q or their midpoint; for poses the images of
-  // the reference triangle's first point, second point, or their midpoint.
+  // the reference simplex's first point, second point, or their midpoint.
+  // Throws NoMotion for timed points.
   std::function<Point(double)> point_path(scene::TrackedPoint point) const;
-  // Poses of space: the images of the reference tetrahedron's first point,
-  // second point, or their midpoint, as functions of tau.
-  std::function<Eigen::Vector3d(double)> point_path3(scene::TrackedPoint point) const;
+  template <class Pose>
+  std::function<typename PoseTraits<Pose>::BodyPoint(double)> pose_point_path(scene::TrackedPoint point) const;
 
   // The method's motion without the warp (for analysis and tests). Throw
   // NoMotion for a motion of another kind.
   const Motion& arrows() const;
-  const PoseMotion& poses() const;
+  template <class Pose>
+  const typename PoseTraits<Pose>::Motion& poses() const;
 
   // File and JSON Pointer this motion's errors name.
   const std::string& file() const { return file_; }
@@ -120,10 +121,6 @@ class SceneMotion {
   template <class Kind>
   const Kind& as(std::string_view wanted) const;
   double warp_rate(double t) const;  // d tau / d t
-  template <class Motion>
-  auto finite_pose(const Motion& motion, double t) const;
-  template <class Motion>  // dA/dt of a PoseMotion or PoseMotion3, the warp's rate included
-  auto pose_rate(const Motion& motion, double t) const;
 
   BuiltMotion built_;
   std::string method_id_, label_;

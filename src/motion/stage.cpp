@@ -59,9 +59,20 @@ bool own_is_first_panel(const scene::Scene& scene) {
   return scene.panels.size() == 1 && scene.panels.front().pointer.empty();
 }
 
-SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, Method method) {
+SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, const AnyMethod& method) {
   scene::Panel other = panel;
-  track_of(scene, other).method = method;
+  const auto arrows_asked = [&] {
+    throw NoMotion(scene.path, "/method", "a method of poses was asked for a panel of arrows");
+  };
+  std::visit(overloaded{[&](Method arrow_method) { track_of(scene, other).method = arrow_method; },
+                        [&](PoseMethod pose_method) {
+                          std::visit(overloaded{[&](scene::KeyframeKeys&) { arrows_asked(); },
+                                                [&](scene::PointKeys&) { arrows_asked(); },
+                                                [&](scene::PlanePoseKeys& given) { given.method = pose_method; },
+                                                [&](scene::SpacePoseKeys& given) { given.method = pose_method; }},
+                                     other.keys);
+                        }},
+             method);
   return build_motion(scene, other);
 }
 
@@ -77,17 +88,6 @@ scene::Panel layer_panel(const scene::Panel& panel, std::optional<Method> method
 SceneMotion with_layer_method(const scene::Scene& scene, const scene::Panel& panel, std::optional<Method> method,
                               const MethodOptions& options) {
   return build_motion(scene, layer_panel(panel, method, options));
-}
-
-SceneMotion with_pose_method(const scene::Scene& scene, const scene::Panel& panel, PoseMethod method) {
-  scene::Panel other = panel;
-  std::visit(overloaded{[&](scene::PlanePoseKeys& given) { given.method = method; },
-                        [&](scene::SpacePoseKeys& given) { given.method = method; },
-                        [&](scene::TrackMethod&) {
-                          throw NoMotion(scene.path, "/method", "a method of poses was asked for a panel of arrows");
-                        }},
-             other.keys);
-  return build_motion(scene, other);
 }
 
 SceneMotion untimed_with_keyframes(const scene::Scene& scene, const scene::Panel& panel,

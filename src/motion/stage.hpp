@@ -62,16 +62,16 @@ bool own_is_first_panel(const scene::Scene& scene);
 // keyframes or poses, timing and chain, with what the name says changed.
 // Each throws NoMotion when the changed motion does not exist.
 //
-// Another method of the keyframes (a "compare" layer, analysis/comparison).
-SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, Method method);
+// Another method of the panel's kind: of its keyframes (an arrow method: a
+// "compare" layer, analysis/comparison) or of its poses (a pose method: a
+// "versus" layer, the area chart of SAM Fig. 3). A method of the other kind
+// throws NoMotion at /method.
+SceneMotion with_method(const scene::Scene& scene, const scene::Panel& panel, const AnyMethod& method);
 // A method and options of a layer's own (a "pattern" layer with "method" or
 // "options", docs/paper-notes.md N57): the method when given, the options
 // over the panel's.
 SceneMotion with_layer_method(const scene::Scene& scene, const scene::Panel& panel, std::optional<Method> method,
                               const MethodOptions& options);
-// Another pose method through the panel's poses (a "versus" layer, the
-// area chart of SAM Fig. 3).
-SceneMotion with_pose_method(const scene::Scene& scene, const scene::Panel& panel, PoseMethod method);
 // Other keyframes under the panel's method, options and chain, without its
 // timing (the tweaks of analysis/measure: the method's own response, which
 // the timing only paces, docs/paper-notes.md N37).

@@ -209,18 +209,26 @@ struct SamExistence {
 
 SamExistence existence(const Pose& M) {
   SamExistence answer;
-  try {
-    std::visit(overloaded{[&](const Affine2& A) {
+  // The root case of Algorithm 1 is named in the plane only.
+  std::visit(overloaded{[&](const Affine2& A) {
+                          try {
                             const AffinePowers powers(A);
                             answer.root_case = std::string(name(powers.root_case()));
-                          },
-                          [&](const Affine3& A) { const AffinePowers3 powers(A); }},
-               M);
-    answer.exists = true;
-  } catch (const NoRealLogarithm& error) {
-    answer.root_case = M.index() == 0 ? std::string(name(error.root_case())) : "";
-    answer.reason = error.what();
-  }
+                            answer.exists = true;
+                          } catch (const NoRealLogarithm& error) {
+                            answer.root_case = std::string(name(error.root_case()));
+                            answer.reason = error.what();
+                          }
+                        },
+                        [&](const Affine3& A) {
+                          try {
+                            const AffinePowers3 powers(A);
+                            answer.exists = true;
+                          } catch (const NoRealLogarithm& error) {
+                            answer.reason = error.what();
+                          }
+                        }},
+             M);
   return answer;
 }
 

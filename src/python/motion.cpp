@@ -17,6 +17,7 @@
 #include "core/overloaded.hpp"
 #include "core/pitas/method_options.hpp"
 #include "core/pose_method.hpp"
+#include "core/pose_traits.hpp"
 #include "motion/evaluation.hpp"
 #include "python/bindings.hpp"
 #include "python/chunks.hpp"
@@ -59,7 +60,7 @@ Json pose_json(const Pose& pose) {
 Json motion_scene(const std::string& method, const py::sequence& keyframes, const py::object& times,
                   const py::kwargs& options) {
   const MethodEntry* entry = find_method_entry(method);
-  const bool poses = entry != nullptr && entry->kind == MotionKind::poses;
+  const bool poses = entry != nullptr && is_method_of<PoseMethod>(*entry);
   Json scene{{"method", method}};
   std::vector<double> knots;
   if (!times.is_none()) {
@@ -80,7 +81,7 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
       key = to_json(item);  // as a scene file gives it: {"t", "p", "m", "w"} or {"t", "matrix"}
     } else if (poses) {
       const Pose pose = read_pose(item, name.c_str());
-      if (pose.index() == 1) dimension = 3;
+      if (std::visit([]<class P>(const P&) { return PoseTraits<P>::dimension; }, pose) == 3) dimension = 3;
       key = pose_json(pose);
     } else {
       key = arrow_json(read_arrow(item, name.c_str()));
@@ -120,13 +121,6 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   return scene;
 }
 
-std::string kind_name(const motion::BuiltMotion& built) {
-  return std::visit(overloaded{[](const motion::ArrowTrack&) { return "arrows"; },
-                               [](const motion::PointTrack&) { return "points"; },
-                               [](const motion::PlanePoses&) { return "poses"; },
-                               [](const motion::SpacePoses&) { return "poses3"; }},
-                    built);
-}
 
 }  // namespace
 
@@ -181,22 +175,16 @@ py::object sample(const motion::SceneMotion& motion, const Times& times) {
             });
             return xy;
           },
-          [&](const motion::PlanePoses&) -> py::object {
-            if (times.scalar) return pose_object(motion.pose_at(t.front()));
-            py::array_t<double> out = new_array(times.shape, {2, 3});
+          [&]<class Pose>(const motion::PoseTrack<Pose>&) -> py::object {
+            // Poses of the plane (2 x 3 each) or of space (3 x 4 each).
+            constexpr int rows = PoseTraits<Pose>::dimension;
+            if (times.scalar) return pose_object(motion.pose_at<Pose>(t.front()));
+            py::array_t<double> out = new_array(times.shape, {py::ssize_t{rows}, py::ssize_t{rows + 1}});
             double* data = out.mutable_data();
             for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
-              for (std::size_t i = begin; i < end; ++i) write_pose(motion.pose_at(t[i]), data + 6 * i);
-              return true;
-            });
-            return out;
-          },
-          [&](const motion::SpacePoses&) -> py::object {
-            if (times.scalar) return pose_object(motion.pose3_at(t.front()));
-            py::array_t<double> out = new_array(times.shape, {3, 4});
-            double* data = out.mutable_data();
-            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
-              for (std::size_t i = begin; i < end; ++i) write_pose(motion.pose3_at(t[i]), data + 12 * i);
+              for (std::size_t i = begin; i < end; ++i) {
+                write_pose(motion.pose_at<Pose>(t[i]), data + rows * (rows + 1) * i);
+              }
               return true;
             });
             return out;
@@ -214,10 +202,13 @@ void bind_motion(py::module_& m) {
       [method_info]() {
         py::list all;
         for (const MethodEntry& entry : every_method()) {
-          const bool arrows = entry.kind == MotionKind::arrows;
-          all.append(method_info(std::string(entry.id), std::string(entry.mnemonic), std::string(entry.title),
-                                 arrows ? "arrows" : "poses", entry.min_count, entry.max_count,
-                                 !arrows && info(entry.pose_method).in_space));
+          // The kind of keys the method takes, and whether it also moves space.
+          const auto [kind, space] =
+              std::visit(overloaded{[](Method) { return std::pair{"arrows", false}; },
+                                    [](PoseMethod pose) { return std::pair{"poses", info(pose).in_space}; }},
+                         entry.method);
+          all.append(method_info(std::string(entry.id), std::string(entry.mnemonic), std::string(entry.title), kind,
+                                 entry.min_count, entry.max_count, space));
         }
         return all;
       },
@@ -245,7 +236,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
                              "The method's id: \"P6\", \"SAM\".")
       .def_property_readonly("label", [](const HeldMotion& held) { return held.evaluation->motion().label(); },
                              "The method as messages name it: \"P6 (La-LP)\".")
-      .def_property_readonly("kind", [](const HeldMotion& held) { return kind_name(held.evaluation->motion().built()); },
+      .def_property_readonly("kind", [](const HeldMotion& held) { return std::string(scene::kind_name(held.evaluation->panel().keys)); },
                              "\"arrows\", \"points\", \"poses\" or \"poses3\" (poses of space).")
       .def_property_readonly("knots", [](const HeldMotion& held) {
         return py::tuple(py::cast(held.evaluation->motion().knots()));

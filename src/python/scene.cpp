@@ -38,20 +38,12 @@ struct HeldScene {
   std::optional<std::filesystem::path> file;  // the file it was read from; none for a dict
 };
 
-std::string kind_of(const scene::MotionKeys& keys) {
-  return std::visit(overloaded{[](const scene::KeyframeKeys&) { return "arrows"; },
-                               [](const scene::PointKeys&) { return "points"; },
-                               [](const scene::PlanePoseKeys&) { return "poses"; },
-                               [](const scene::SpacePoseKeys&) { return "poses3"; }},
-                    keys);
-}
 
 // The scene with another method, as `pita eval --method` makes it.
 scene::Scene with_method(const scene::Scene& scene, const std::string& name) {
   const MethodEntry* entry = find_method_entry(name);
   if (entry == nullptr) throw py::value_error(fmt::format("method: {}", unknown_method_reason(name)));
-  return entry->kind == MotionKind::poses ? scene::with_pose_method(scene, entry->pose_method)
-                                          : scene::with_method(scene, entry->method);
+  return scene::with_method(scene, entry->method);
 }
 
 // No frames, shaped as the kind's (a scene without poses: sam-fig06-existence-3d).
@@ -237,7 +229,7 @@ checked once. In a Jupyter notebook it shows its figure.)")
                              "The file it was read from, or \"<dict>\".")
       .def_property_readonly("title", [](const HeldScene& s) { return s.scene.title; })
       .def_property_readonly("description", [](const HeldScene& s) { return s.scene.description; })
-      .def_property_readonly("kind", [](const HeldScene& s) { return kind_of(s.scene.keys); },
+      .def_property_readonly("kind", [](const HeldScene& s) { return std::string(scene::kind_name(s.scene.keys)); },
                              "\"arrows\", \"points\", \"poses\" or \"poses3\".")
       .def_property_readonly("method", [](const HeldScene& s) { return scene::method_id(s.scene.keys); })
       .def_property_readonly("panels", [](const HeldScene& s) { return s.scene.panels.size(); },
@@ -277,7 +269,7 @@ files, claims, lint).)")
       })
       .def("_repr_png_", [](const HeldScene& s) { return render_bytes(s, "png", 1.0, std::nullopt, 1.0); })
       .def("__repr__", [](const HeldScene& s) {
-        return fmt::format("<pita.Scene {} ({}, {}, {} panel{})>", s.scene.path, kind_of(s.scene.keys),
+        return fmt::format("<pita.Scene {} ({}, {}, {} panel{})>", s.scene.path, std::string(scene::kind_name(s.scene.keys)),
                            scene::method_id(s.scene.keys), s.scene.panels.size(), s.scene.panels.size() == 1 ? "" : "s");
       });
 

@@ -12,6 +12,7 @@
 #include "core/affine3.hpp"
 #include "core/arrow.hpp"
 #include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "python/bindings.hpp"
 
 namespace pita::python {
@@ -346,7 +347,9 @@ homogeneous matrix (3x3, 4x4); np.asarray(pose) is [L | b].
            py::arg("L"), py::arg("b") = py::none())
       .def_static("from_matrix", [](const py::handle& M) { return PoseValue{pose_from_matrix(M, "M")}; },
                   py::arg("M"), "A pose from [L | b] (2x3, 3x4) or its homogeneous matrix (3x3, 4x4).")
-      .def_property_readonly("dimension", [](const PoseValue& v) { return v.pose.index() == 0 ? 2 : 3; })
+      .def_property_readonly("dimension", [](const PoseValue& v) {
+        return std::visit([]<class P>(const P&) { return PoseTraits<P>::dimension; }, v.pose);
+      })
       .def_property_readonly("L", [](const PoseValue& v) { return linear_part(v.pose); }, "The linear part, a new array.")
       .def_property_readonly("b", [](const PoseValue& v) { return translation(v.pose); }, "The translation, a new array.")
       .def_property_readonly("matrix", [](const PoseValue& v) { return pose_matrix(v.pose); }, "[L | b], a new array.")

@@ -84,13 +84,10 @@ const std::vector<Keyframe>& LayerCost::keyframes() const {
 namespace {
 
 template <typename LayerType>
-void add_layers(const scene::Scene& scene, const scene::Panel& panel,
-                const std::optional<std::vector<LayerType>>& own,
-                const std::vector<LayerType>& scene_layers, FigureCost& cost) {
-  const std::vector<LayerType>& layers = own ? *own : scene_layers;
-  for (std::size_t i = 0; i < layers.size(); ++i) {
-    const std::string pointer = (own ? panel.pointer : std::string()) + "/layers/" + std::to_string(i);
-    std::visit(detail::LayerCost(scene, panel, pointer, cost), layers[i]);
+void add_layers(const scene::Scene& scene, const scene::Panel& panel, FigureCost& cost) {
+  const scene::LayersOf<LayerType> drawn = scene::layers_of<LayerType>(scene, panel);
+  for (std::size_t i = 0; i < drawn.layers.size(); ++i) {
+    std::visit(detail::LayerCost(scene, panel, drawn.pointer(i), cost), drawn.layers[i]);
   }
 }
 
@@ -107,8 +104,8 @@ FigureCost estimate_cost(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {
     // The title and frame of each panel.
     cost.units += 8 * kShapeUnits;
-    const auto arrows = [&](const auto&) { add_layers(scene, panel, panel.layers, scene.layers, cost); };
-    const auto poses = [&](const auto&) { add_layers(scene, panel, panel.pose_layers, scene.pose_layers, cost); };
+    const auto arrows = [&](const auto&) { add_layers<scene::Layer>(scene, panel, cost); };
+    const auto poses = [&](const auto&) { add_layers<scene::PoseLayer>(scene, panel, cost); };
     std::visit(overloaded{[&](const scene::KeyframeKeys& given) { arrows(given); },
                           [&](const scene::PointKeys& given) { arrows(given); },
                           [&](const scene::PlanePoseKeys& given) { poses(given); },

@@ -15,10 +15,10 @@ namespace pita::render {
 namespace detail {
 
 Drawing PanelBuilder::build() {
-  const bool own = panel_.layers.has_value();
-  const std::vector<scene::Layer>& layers = own ? *panel_.layers : scene_.layers;
+  const scene::LayersOf<scene::Layer> drawn = scene::layers_of<scene::Layer>(scene_, panel_);
+  const std::vector<scene::Layer>& layers = drawn.layers;
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    layer_ = (own ? panel_.pointer : std::string()) + "/layers/" + std::to_string(i);
+    layer_ = drawn.pointer(i);
     // The reader has checked that the layer draws the panel's kind of keys
     // (scene/layer_kinds.hpp, the "draws" column); a layer drawn on the
     // other kind fails as its motion does (NoMotion), with the layer's pointer.
@@ -110,20 +110,10 @@ RenderError::RenderError(const std::string& file, const std::string& pointer,
 
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {
-  // The least and greatest knots (keyframes "as-given" may come in any order).
-  double first = 0.0, last = 0.0;
-  const auto knots = [&](const auto& items) {
-    if (items.empty()) return;
-    const auto [low, high] = std::minmax_element(items.begin(), items.end(),
-                                                 [](const auto& a, const auto& b) { return a.t < b.t; });
-    first = low->t;
-    last = high->t;
-  };
-  std::visit(overloaded{[&](const scene::KeyframeKeys& given) { knots(given.keyframes); },
-                        [&](const scene::PointKeys& given) { knots(given.points); },
-                        [&](const scene::PlanePoseKeys& given) { knots(given.poses); },
-                        [&](const scene::SpacePoseKeys& given) { knots(given.poses); }},
-             panel.keys);
+  // The least and greatest knots.
+  const std::vector<double> knots = scene::knots(panel.keys);
+  const double first = knots.empty() ? 0.0 : knots.front();
+  const double last = knots.empty() ? 0.0 : knots.back();
   const double from = range ? range->from : first;
   const double to = range ? range->to : last;
   return motion::uniform_times(from, to, samples.value_or(panel.samples));

@@ -15,9 +15,10 @@ Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const 
   PosePanel<Pose> panel(stage, index, selection);
   const scene::Panel& own = panel.panel();
   // The panel's own layers, else the scene's.
-  const std::vector<scene::PoseLayer>& layers = own.pose_layers ? *own.pose_layers : panel.scene().pose_layers;
+  const scene::LayersOf<scene::PoseLayer> drawn = scene::layers_of<scene::PoseLayer>(panel.scene(), own);
+  const std::vector<scene::PoseLayer>& layers = drawn.layers;
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    panel.begin_layer((own.pose_layers ? own.pointer : std::string()) + "/layers/" + std::to_string(i));
+    panel.begin_layer(drawn.pointer(i));
     std::visit(
         [&panel]<class Layer>(const Layer& layer) {
           if constexpr (DrawnIn<Pose, Layer>) {

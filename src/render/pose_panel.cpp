@@ -36,7 +36,7 @@ std::vector<Affine3> seen_poses(const motion::Stage& stage, std::size_t index, c
   try {
     const motion::SceneMotion& motion = stage.motion(index);
     for (const double t : motion::uniform_times(motion.first(), motion.last(), stage.panel(index).samples)) {
-      poses.push_back(motion.pose3_at(t));
+      poses.push_back(motion.pose_at<Affine3>(t));
     }
   } catch (const motion::NoMotion&) {
     // The poses alone: the layers that draw the motion report its error.
@@ -138,11 +138,7 @@ const motion::SceneMotion& PosePanel<Pose>::motion() const {
 template <class Pose>
 Pose PosePanel<Pose>::pose_at(double t) const {
   try {
-    if constexpr (std::is_same_v<Pose, Affine2>) {
-      return motion().pose_at(t);
-    } else {
-      return motion().pose3_at(t);
-    }
+    return motion().template pose_at<Pose>(t);
   } catch (const motion::NoMotion& error) {
     fail(error.reason());
   }
@@ -153,11 +149,7 @@ Pose PosePanel<Pose>::velocity_at(double t) const {
   const double duration = motion().last() - motion().first();
   Pose rate;
   try {
-    if constexpr (std::is_same_v<Pose, Affine2>) {
-      rate = motion().pose_velocity(t);
-    } else {
-      rate = motion().pose3_velocity(t);
-    }
+    rate = motion().template pose_velocity<Pose>(t);
   } catch (const motion::NoMotion& error) {
     fail(error.reason());
   }

@@ -27,12 +27,12 @@ namespace {
 // The Neville-type curves take at most limits::kMaxNevillePoints points.
 void check_point_layers(const JsonReader& reader, const Scene& scene) {
   for (const Panel& panel : scene.panels) {
-    const bool own = panel.layers.has_value();
-    const std::vector<Layer>& layers = own ? *panel.layers : scene.layers;
-    const std::string where = own ? panel.pointer : std::string();
-    const std::string in_panel = !own && !panel.pointer.empty() ? " (in the panel at " + panel.pointer + ")" : "";
+    const LayersOf<Layer> drawn = layers_of<Layer>(scene, panel);
+    const std::vector<Layer>& layers = drawn.layers;
+    const std::string in_panel =
+        !drawn.own && !panel.pointer.empty() ? " (in the panel at " + panel.pointer + ")" : "";
     for (std::size_t i = 0; i < layers.size(); ++i) {
-      const std::string at = where + "/layers/" + std::to_string(i);
+      const std::string at = drawn.pointer(i);
       const auto* curve = std::get_if<PointTrajectoryLayer>(&layers[i]);
       const LayerDraws draws = kind_of(arrow_layer_table(), layers[i]).draws;
       const auto* given = std::get_if<PointKeys>(&panel.keys);
@@ -62,11 +62,10 @@ constexpr std::array<std::string_view, 19> kSceneFields = {
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
   if (!scene.shapes.empty()) return;
   for (const Panel& panel : scene.panels) {
-    const bool own = panel.layers.has_value();
-    const std::vector<Layer>& layers = own ? *panel.layers : scene.layers;
-    for (std::size_t i = 0; i < layers.size(); ++i) {
-      if (std::holds_alternative<ShapesLayer>(layers[i])) {
-        reader.fail((own ? panel.pointer : std::string()) + "/layers/" + std::to_string(i) + "/type",
+    const LayersOf<Layer> drawn = layers_of<Layer>(scene, panel);
+    for (std::size_t i = 0; i < drawn.layers.size(); ++i) {
+      if (std::holds_alternative<ShapesLayer>(drawn.layers[i])) {
+        reader.fail(drawn.pointer(i) + "/type",
                     "a \"shapes\" layer draws the scene's \"shapes\" carried by the handle, and the scene has none");
       }
     }
@@ -159,10 +158,13 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
     scene.layers = detail::read_layers(reader, *layers, "/layers");
-  } else if (std::holds_alternative<PointKeys>(scene.keys)) {
-    scene.layers = {PointTrajectoryLayer{}};
   } else {
-    scene.layers = {PatternLayer{}, KeyframesLayer{}};
+    // By default a curve through timed points, else the pattern and the keyframes.
+    scene.layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
+                                         [](const PointKeys&) { return std::vector<Layer>{PointTrajectoryLayer{}}; },
+                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // pose scenes
+                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // draw pose_layers
+                              scene.keys);
   }
   if (const Json* panels = JsonReader::member(document, "panels")) {
     scene.panels = read_panels(reader, *panels, "/panels", scene);

@@ -14,6 +14,7 @@
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
 #include "core/arrow.hpp"
+#include "core/pose_traits.hpp"
 
 namespace pita::scene {
 
@@ -39,19 +40,21 @@ std::string frames_to_csv(std::span<const Frame> frames);
 
 // The points of a curve through timed "points" (PITA Sec. 7.6):
 //   {"method": "P6", "curve": "pita", "frames": [{"t": 0.0, "p": [x, y]}, ...]}
-// and the CSV "t,x,y". Throw std::invalid_argument if a point is not finite.
+// (the CSV, printed by FramesPrinter<PointFrame>, is "t,x,y"). Throws
+// std::invalid_argument if a point is not finite.
 struct PointFrame {
   double t = 0.0;
   Point p;
 };
 std::string point_frames_to_json(std::string_view method_id, std::span<const PointFrame> frames,
                                  std::string_view chain = "");
-std::string point_frames_to_csv(std::span<const PointFrame> frames);
 
-// The pose A(t) of a pose scene's motion at time t.
+// The pose A(t) of a pose scene's motion at time t: an affinity of the plane
+// (Affine2) or of space (Affine3).
+template <class Pose>
 struct PoseFrame {
   double t = 0.0;
-  Affine2 pose;
+  Pose pose;
 };
 
 // {"method": "SAM", "frames": [
@@ -59,27 +62,17 @@ struct PoseFrame {
 //   ...
 // ]}
 // (x -> [[a, b], [c, d]] x + [tx, ty]), one frame per line, shortest
-// round-trip numbers. Throws std::invalid_argument if a frame is not finite.
-std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame> frames);
+// round-trip numbers; in space the rows are [a, b, c, tx], [d, e, f, ty],
+// [g, h, i, tz]. Throws std::invalid_argument if a frame is not finite.
+// (One template inside, FramesPrinter<PoseFrame<Pose>>; an overload per
+// dimension here, so that a vector of frames converts to the span.)
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame<Affine2>> frames);
+std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame<Affine3>> frames);
 
-// The header "t,a,b,tx,c,d,ty", then one line per frame ("{:.17g}").
-std::string pose_frames_to_csv(std::span<const PoseFrame> frames);
-
-// The pose A(t) of a 3D pose scene's motion at time t.
-struct PoseFrame3 {
-  double t = 0.0;
-  Affine3 pose;
-};
-
-// {"method": "SAM", "frames": [
-//   {"t": 0.0, "matrix": [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]]},
-//   ...
-// ]}
-// (x -> [[a, b, c], [d, e, f], [g, h, i]] x + [tx, ty, tz]), as for 2D.
-std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame3> frames);
-
-// The header "t,a,b,c,tx,d,e,f,ty,g,h,i,tz", then one line per frame.
-std::string pose_frames_to_csv(std::span<const PoseFrame3> frames);
+// The header PoseTraits<Pose>::csv_header ("t,a,b,tx,c,d,ty" in the plane,
+// "t,a,b,c,tx,d,e,f,ty,g,h,i,tz" in space), then one line per frame ("{:.17g}").
+std::string pose_frames_to_csv(std::span<const PoseFrame<Affine2>> frames);
+std::string pose_frames_to_csv(std::span<const PoseFrame<Affine3>> frames);
 
 enum class FramesFormat { json, csv };
 
@@ -88,38 +81,34 @@ enum class FramesFormat { json, csv };
 // formatting into it is about twice as fast as into a std::string). The
 // concatenation is byte for byte the text of the matching *_to_json or
 // *_to_csv function. row() throws std::invalid_argument, as they do, for a
-// frame that is not finite, and appends nothing then.
+// frame that is not finite, and appends nothing then. What the rows hold is
+// the type Row: Frame (arrows), PointFrame (the points of a curve), or
+// PoseFrame<Affine2> and PoseFrame<Affine3> (poses); instantiated for those.
+template <class Row>
 class FramesPrinter {
  public:
-  // What the rows hold: arrows, the points of a curve, poses of the plane or of space.
-  enum class Rows { arrows, points, poses, poses3 };
-
-  // `chain` is printed for arrows and points only (the others have no chain).
-  FramesPrinter(Rows rows, FramesFormat format, std::string_view method_id, std::string_view chain = "");
+  // `chain` is printed for arrows and points only (poses have no chain).
+  FramesPrinter(FramesFormat format, std::string_view method_id, std::string_view chain = "");
 
   using Buffer = fmt::memory_buffer;
   void head(Buffer& out) const;
-  void row(Buffer& out, const Frame& frame);
-  void row(Buffer& out, const PointFrame& frame);
-  void row(Buffer& out, const PoseFrame& frame);
-  void row(Buffer& out, const PoseFrame3& frame);
+  void row(Buffer& out, const Row& frame);
   void tail(Buffer& out) const;
 
   // What row() checks first, alone: throws std::invalid_argument, with the
   // same message, for a frame that is not finite.
-  static void require_finite(const Frame& frame);
-  static void require_finite(const PointFrame& frame);
-  static void require_finite(const PoseFrame& frame);
-  static void require_finite(const PoseFrame3& frame);
+  static void require_finite(const Row& frame);
 
  private:
   void separate(Buffer& out);  // JSON: the text before a row
 
-  Rows rows_;
   FramesFormat format_;
   std::string method_id_;
   std::string chain_;
   bool any_row_ = false;
 };
+
+// The buffer every printer appends to.
+using FramesBuffer = fmt::memory_buffer;
 
 }  // namespace pita::scene

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/limits.hpp"
+#include "core/overloaded.hpp"
 #include "scene/color.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/scene.hpp"
@@ -129,18 +130,23 @@ std::string quoted_choices(std::span<const std::string_view> names) {
   return alternatives(copies);
 }
 
-std::string unknown_method_reason(std::string_view name, MotionKind kind) {
+std::string unknown_scene_method_reason(std::string_view name, MethodFilter filter) {
   if (const MethodEntry* other = find_method_entry(name)) {
     // A method of the other kind of scene.
-    return kind == MotionKind::arrows
-               ? fmt::format("method {} interpolates poses, and this scene has keyframes (arrows): "
-                             "give it \"poses\" instead, or an arrow method such as P6",
-                             other->id)
-               : fmt::format("method {} interpolates arrows, and this is a pose scene: give it "
-                             "\"keyframes\" instead, or a pose method such as SAM",
-                             other->id);
+    return std::visit(overloaded{[&](PoseMethod) {
+                                   return fmt::format("method {} interpolates poses, and this scene has keyframes "
+                                                      "(arrows): give it \"poses\" instead, or an arrow method "
+                                                      "such as P6",
+                                                      other->id);
+                                 },
+                                 [&](Method) {
+                                   return fmt::format("method {} interpolates arrows, and this is a pose scene: "
+                                                      "give it \"keyframes\" instead, or a pose method such as SAM",
+                                                      other->id);
+                                 }},
+                      other->method);
   }
-  return pita::unknown_method_reason(name, kind);
+  return pita::unknown_method_reason(name, filter);
 }
 
 std::string keyframe_count_reason(Method method, std::size_t count) {
@@ -263,9 +269,9 @@ Color JsonReader::color(const Json& value, const std::string& pointer) const {
 
 Method JsonReader::method(const Json& value, const std::string& pointer) const {
   const std::string name = string(value, pointer);
-  const MethodEntry* found = find_method_entry(name, MotionKind::arrows);
-  if (found == nullptr) fail(pointer, unknown_method_reason(name, MotionKind::arrows));
-  return found->method;
+  const Method* found = find_method_of<Method>(name);
+  if (found == nullptr) fail(pointer, unknown_scene_method_reason(name, is_method_of<Method>));
+  return *found;
 }
 
 void JsonReader::choice_failed(const Json& value, const std::string& pointer,

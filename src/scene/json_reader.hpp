@@ -47,9 +47,10 @@ std::string value_text(const Json& value);
 std::string joined(std::span<const std::string_view> names);          // a, b, c
 std::string quoted_choices(std::span<const std::string_view> names);  // "a", "b" or "c"
 
-// unknown method "P66"; did you mean P6 (La-LP), ... (core/methods.hpp's one
-// wording), or, for a method of the other kind, what the scene needs instead.
-std::string unknown_method_reason(std::string_view name, MotionKind kind);
+// unknown method "P66"; did you mean P6 (La-LP), ... among the methods of the
+// scene's kind (`filter`: core/methods.hpp's one wording), or, for a method of
+// the other kind, what the scene needs instead.
+std::string unknown_scene_method_reason(std::string_view name, MethodFilter filter);
 // method SMA takes exactly 2 keyframes (got 3)
 std::string keyframe_count_reason(Method method, std::size_t count);
 

@@ -150,14 +150,14 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (at == std::string_view::npos || method.empty()) {
       return fmt::format("\"{}\" must be \"angle:M@t\", an arrow method M and a time t", text);
     }
-    const MethodEntry* entry = nullptr;
+    const Method* named = nullptr;
     if (method.starts_with(kPanelsPrefix)) {
       measure.panel = panel_index(method);
       if (!measure.panel) {
         return fmt::format("in \"{}\": \"{}\" must be \"/panels/\" and a panel's index", text, method);
       }
-    } else if ((entry = find_method_entry(method, MotionKind::arrows)) == nullptr) {
-      return fmt::format("in \"{}\": {}", text, unknown_method_reason(method, MotionKind::arrows));
+    } else if ((named = find_method_of<Method>(method)) == nullptr) {
+      return fmt::format("in \"{}\": {}", text, pita::unknown_method_reason(method, is_method_of<Method>));
     }
     const std::string_view time = rest.substr(at + 1);
     double t = 0.0;
@@ -165,7 +165,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (time.empty() || error != std::errc() || end != time.data() + time.size() || !std::isfinite(t)) {
       return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
     }
-    if (entry != nullptr) measure.method = entry->method;
+    if (named != nullptr) measure.method = *named;
     measure.t = t;
   }
   if (found->scene != scene) {

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "core/point_curves.hpp"
 #include "core/pose_method.hpp"
 #include "core/pose_motion.hpp"
+#include "core/pose_traits.hpp"
 #include "core/sam_family_motion.hpp"
 
 namespace pita::scene {
@@ -73,6 +75,17 @@ std::string method_id(const MotionKeys& keys);
 
 // The JSON field the keys come from: "/keyframes", "/points" or "/poses".
 const char* keys_field(const MotionKeys& keys);
+
+// "arrows", "points", "poses", "poses3d": the kind of the keys, as every
+// output names it (pita measure's "kind", the Python module's Scene.kind and
+// Motion.kind).
+std::string_view kind_name(const MotionKeys& keys);
+
+// The knots of the keys (keyframe, point or pose times), increasing:
+// keyframes "as-given" may come in any order (docs/paper-notes.md N41), and
+// their motion runs from the least to the greatest. Empty for a pose scene
+// without poses.
+std::vector<double> knots(const MotionKeys& keys);
 
 // The PITA of keyframes or points; nullptr for poses.
 TrackMethod* track_method(MotionKeys& keys);

@@ -256,7 +256,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
       own_poses = true;
     }
   }
-  const std::vector<PoseLayer>& layers = panel.pose_layers ? *panel.pose_layers : scene.pose_layers;
+  const std::vector<PoseLayer>& layers = layers_of<PoseLayer>(scene, panel).layers;
   if (needs_motion(layers)) {
     const PoseMethodInfo& about = info(keys.method);
     const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");

@@ -131,8 +131,8 @@ PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
                              value_text(value) + ")");
   }
   const std::string name = value.get<std::string>();
-  if (const MethodEntry* found = find_method_entry(name, MotionKind::poses)) return found->pose_method;
-  reader.fail(pointer, unknown_method_reason(name, MotionKind::poses));
+  if (const PoseMethod* found = find_method_of<PoseMethod>(name)) return *found;
+  reader.fail(pointer, unknown_scene_method_reason(name, is_method_of<PoseMethod>));
 }
 
 PoseSpace<Affine2>::Simplex PoseSpace<Affine2>::read_simplex(const JsonReader& reader, const Json& value,

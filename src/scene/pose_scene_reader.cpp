@@ -40,7 +40,7 @@ bool is_pose_scene(const Json& document) {
   if (JsonReader::member(document, "dimension") != nullptr) return true;
   const Json* method = JsonReader::member(document, "method");
   return method != nullptr && method->is_string() &&
-         find_method_entry(method->get<std::string>(), MotionKind::poses) != nullptr &&
+         find_method_of<PoseMethod>(method->get<std::string>()) != nullptr &&
          JsonReader::member(document, "keyframes") == nullptr;
 }
 

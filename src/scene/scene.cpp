@@ -4,6 +4,7 @@
 #include <array>
 #include <set>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
@@ -25,7 +27,6 @@ using detail::element_pointer;
 using detail::Json;
 using detail::JsonReader;
 using detail::keyframe_count_reason;
-using detail::unknown_method_reason;
 using detail::value_text;
 using detail::Interval;
 }  // namespace
@@ -75,8 +76,8 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
 }
 
 Method resolve_method(std::string_view name) {
-  if (const MethodEntry* entry = find_method_entry(name, MotionKind::arrows)) return entry->method;
-  throw std::invalid_argument(pita::unknown_method_reason(name, MotionKind::arrows));
+  if (const Method* method = find_method_of<Method>(name)) return *method;
+  throw std::invalid_argument(pita::unknown_method_reason(name, is_method_of<Method>));
 }
 
 namespace {
@@ -95,7 +96,7 @@ void replace_method(const Scene& scene, MotionKeys& keys, Method method) {
   const auto poses = [&](const auto&) {
     throw SceneError(scene.path, "/method",
                      fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})",
-                                 info(method).id, method_ids(MotionKind::poses)));
+                                 info(method).id, method_ids(is_method_of<PoseMethod>)));
   };
   std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given, given.track_length(), true); },
                         [&](PointKeys& given) { arrows(given, given.track_length(), false); },
@@ -104,12 +105,11 @@ void replace_method(const Scene& scene, MotionKeys& keys, Method method) {
              keys);
 }
 
-// The pose method of `keys` replaced by `method` (`in_space` when the keys are
-// poses of space); arrow keys are refused.
+// The pose method of `keys` replaced by `method`; arrow keys are refused.
 template <class Pose>
-void replace_pose_method(const Scene& scene, PoseKeys<Pose>& keys, PoseMethod method, bool in_space) {
+void replace_pose_method(const Scene& scene, PoseKeys<Pose>& keys, PoseMethod method) {
   const PoseMethodInfo& about = info(method);
-  if (in_space && !about.in_space) {
+  if (in_space_v<Pose> && !about.in_space) {
     throw SceneError(scene.path, "/dimension",
                      fmt::format("method {} moves poses of the plane only; this is a 3D scene", about.id));
   }
@@ -121,16 +121,21 @@ void replace_pose_method(const Scene& scene, PoseKeys<Pose>& keys, PoseMethod me
   keys.method = method;
 }
 
-}  // namespace
-
-Scene with_method(Scene scene, Method method) {
-  replace_method(scene, scene.keys, method);
-  // The panel that is the scene itself follows it; panels of their own keep theirs.
-  for (Panel& panel : scene.panels) {
-    if (panel.pointer.empty()) panel.keys = scene.keys;
-  }
-  return scene;
+// The pose method of `keys` replaced by `method`; arrow keys are refused.
+void replace_method(const Scene& scene, MotionKeys& keys, PoseMethod method) {
+  const auto arrows = [&](const auto&) {
+    throw SceneError(scene.path, "/method",
+                     fmt::format("method {} interpolates poses; this scene has keyframes (arrows)",
+                                 info(method).id));
+  };
+  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given); },
+                        [&](PointKeys& given) { arrows(given); },
+                        [&](PlanePoseKeys& given) { replace_pose_method(scene, given, method); },
+                        [&](SpacePoseKeys& given) { replace_pose_method(scene, given, method); }},
+             keys);
 }
+
+}  // namespace
 
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
   if (!error.where().empty()) {
@@ -140,17 +145,34 @@ std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
                      error.first() + 1, info(method).id);
 }
 
-Scene with_pose_method(Scene scene, PoseMethod method) {
-  const auto arrows = [&](const auto&) {
-    throw SceneError(scene.path, "/method",
-                     fmt::format("method {} interpolates poses; this scene has keyframes (arrows)",
-                                 info(method).id));
-  };
-  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given); },
-                        [&](PointKeys& given) { arrows(given); },
-                        [&](PlanePoseKeys& given) { replace_pose_method(scene, given, method, false); },
-                        [&](SpacePoseKeys& given) { replace_pose_method(scene, given, method, true); }},
-             scene.keys);
+namespace {
+
+// The panel's own layers of each family, when it gives "layers".
+const std::optional<std::vector<Layer>>& own_layers(const Panel& panel, std::type_identity<Layer>) {
+  return panel.layers;
+}
+const std::optional<std::vector<PoseLayer>>& own_layers(const Panel& panel, std::type_identity<PoseLayer>) {
+  return panel.pose_layers;
+}
+const std::vector<Layer>& scene_layers(const Scene& scene, std::type_identity<Layer>) { return scene.layers; }
+const std::vector<PoseLayer>& scene_layers(const Scene& scene, std::type_identity<PoseLayer>) {
+  return scene.pose_layers;
+}
+
+}  // namespace
+
+template <class LayerType>
+LayersOf<LayerType> layers_of(const Scene& scene, const Panel& panel) {
+  const auto& own = own_layers(panel, std::type_identity<LayerType>{});
+  if (own) return {*own, true, panel.pointer};
+  return {scene_layers(scene, std::type_identity<LayerType>{}), false, ""};
+}
+template LayersOf<Layer> layers_of(const Scene&, const Panel&);
+template LayersOf<PoseLayer> layers_of(const Scene&, const Panel&);
+
+Scene with_method(Scene scene, const AnyMethod& method) {
+  std::visit([&](auto chosen) { replace_method(scene, scene.keys, chosen); }, method);
+  // The panel that is the scene itself follows it; panels of their own keep theirs.
   for (Panel& panel : scene.panels) {
     if (panel.pointer.empty()) panel.keys = scene.keys;
   }

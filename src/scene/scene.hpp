@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/keyframe.hpp"
+#include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/sam_family_motion.hpp"
 #include "scene/claim.hpp"
@@ -75,6 +76,20 @@ struct Scene {
 };
 
 
+// The layers a panel draws, and where they are in the file: the panel's own
+// "layers" (at PANEL/layers), else the scene's (at /layers). LayerType is
+// Layer in an arrow scene (keyframes or points), PoseLayer in a pose scene.
+template <class LayerType>
+struct LayersOf {
+  const std::vector<LayerType>& layers;
+  bool own = false;    // the panel's own "layers"
+  std::string parent;  // the panel's pointer for its own layers, "" for the scene's
+  // "/panels/1/layers/0", "/layers/0": the JSON Pointer of layer i.
+  std::string pointer(std::size_t i) const { return parent + "/layers/" + std::to_string(i); }
+};
+template <class LayerType>
+LayersOf<LayerType> layers_of(const Scene& scene, const Panel& panel);
+
 // What is wrong with a scene, and where. what() is
 //   "FILE: /keyframes/1/m: magnitude must be > 0 (got -2)"   (a value; the
 //       JSON Pointer of RFC 6901 is left out when it is the whole document), or
@@ -121,18 +136,17 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
 //   unknown method "P66" (did you mean "P6"?)
 Method resolve_method(std::string_view name);
 
-// The scene with its method replaced by `method` (command-line override).
-// Throws SceneError at /keyframes when the method takes more keyframes than
-// the scene has, and at /chain when the scene's chain cannot extend it.
-Scene with_method(Scene scene, Method method);
+// The scene with its method replaced by `method` (command-line override, or
+// a method of either kind named by the user). An arrow method needs keyframes
+// or points: SceneError at /keyframes when it takes more keyframes than the
+// scene has, at /chain when the scene's chain cannot extend it, at /method for
+// a pose scene. A pose method needs poses: SceneError at /method for an arrow
+// scene, at /dimension for a plane-only method in a 3D scene, at /poses when it
+// takes another number of poses.
+Scene with_method(Scene scene, const AnyMethod& method);
 
 // "no SAM exists between these poses: ... (poses 0 and 1, method SAM)": the
 // reason of the error that refuses a pose motion whose SAM does not exist.
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method);
-
-// The pose scene with its method replaced (command-line override). Throws
-// SceneError when the scene has keyframes, the method takes another number of
-// poses, or a SAM it needs does not exist.
-Scene with_pose_method(Scene scene, PoseMethod method);
 
 }  // namespace pita::scene

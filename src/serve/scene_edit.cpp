@@ -1,5 +1,7 @@
 #include "serve/scene_edit.hpp"
 
+#include "core/overloaded.hpp"
+
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -75,22 +77,30 @@ std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
     const scene::Panel& panel = scene.panels[i];
     const render::ViewTransform& view = placements[i].transform;
     const std::string keys = keys_pointer(text, scene, panel);
-    if (const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys)) {
-      if (!arrows->keyframes_to.empty()) continue;  // moving keyframes: two arrows each
-      for (std::size_t k = 0; k < arrows->keyframes.size(); ++k) {
-        const Arrow& a = arrows->keyframes[k].arrow;
+    const auto arrow_handles = [&](const scene::KeyframeKeys& arrows) {
+      if (!arrows.keyframes_to.empty()) return;  // moving keyframes: two arrows each, not dragged
+      for (std::size_t k = 0; k < arrows.keyframes.size(); ++k) {
+        const Arrow& a = arrows.keyframes[k].arrow;
         const std::string pointer = fmt::format("{}/{}", keys, k);
         all.push_back({i, pointer, "tail", view(a.p)});
         all.push_back({i, pointer, "tip", view(a.q())});
       }
-    } else if (const auto* poses = std::get_if<scene::PlanePoseKeys>(&panel.keys)) {
-      for (std::size_t k = 0; k < poses->poses.size(); ++k) {
-        const auto points = corners(scene, poses->poses[k].pose);
+    };
+    const auto corner_handles = [&](const scene::PlanePoseKeys& poses) {
+      for (std::size_t k = 0; k < poses.poses.size(); ++k) {
+        const auto points = corners(scene, poses.poses[k].pose);
         for (int j = 0; j < 3; ++j) {
           all.push_back({i, fmt::format("{}/{}", keys, k), fmt::format("corner{}", j), view(points[j])});
         }
       }
-    }
+    };
+    // Timed points and poses of space have no handles yet: a point's drag and
+    // a drag through the 3D camera are not written (docs/reference/serve.md).
+    std::visit(overloaded{[&](const scene::KeyframeKeys& given) { arrow_handles(given); },
+                          [](const scene::PointKeys&) {},
+                          [&](const scene::PlanePoseKeys& given) { corner_handles(given); },
+                          [](const scene::SpacePoseKeys&) {}},
+               panel.keys);
   }
   return all;
 }

@@ -126,5 +126,17 @@ TEST(Timeline, PoseScenesRunOverTheirPoses) {
   EXPECT_EQ(timeline.last, 1.5);
 }
 
+// Keyframes in the order given ("knots": "as-given", docs/paper-notes.md N41)
+// play from the least knot to the greatest, not from the first listed.
+TEST(Timeline, KeyframesAsGivenRunFromTheLeastKnotToTheGreatest) {
+  const scene::Scene scene = scene::parse_scene(
+      R"({"method": "P6", "options": {"knots": "as-given"}, "keyframes": [{"t": 2, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 1, "p": [1, 1], "m": 1, "w": 0.5}, {"t": 4, "p": [2, 0], "m": 1, "w": 1}]})",
+      "as-given.json");
+  const Timeline timeline = make_timeline(scene);
+  EXPECT_EQ(timeline.first, 1.0);
+  EXPECT_EQ(timeline.last, 4.0);
+}
+
 }  // namespace
 }  // namespace pita::animate

@@ -22,7 +22,7 @@ TEST(Methods, EveryMethodOfBothKindsIsRegisteredOnce) {
   std::size_t arrows = 0, poses = 0;
   std::set<std::string> ids;
   for (const MethodEntry& entry : every_method()) {
-    (entry.kind == MotionKind::arrows ? arrows : poses)++;
+    (is_method_of<Method>(entry) ? arrows : poses)++;
     EXPECT_TRUE(ids.insert(upper(std::string(entry.id))).second) << entry.id;
   }
   EXPECT_EQ(arrows, all_methods().size());
@@ -38,24 +38,28 @@ TEST(Methods, EveryNameResolvesInAnyCase) {
       ASSERT_NE(found, nullptr) << name;
       EXPECT_EQ(found, &entry) << name;
     }
-    EXPECT_EQ(find_method_entry(entry.id, entry.kind), &entry);
-    EXPECT_EQ(find_method_entry(entry.id, entry.kind == MotionKind::arrows ? MotionKind::poses : MotionKind::arrows),
-              nullptr);
+    // Filtered by its own kind it is found; by the other kind it is not.
+    const bool arrow = is_method_of<Method>(entry);
+    EXPECT_EQ(find_method_entry(entry.id, arrow ? is_method_of<Method> : is_method_of<PoseMethod>), &entry);
+    EXPECT_EQ(find_method_entry(entry.id, arrow ? is_method_of<PoseMethod> : is_method_of<Method>), nullptr);
+    EXPECT_EQ(find_method_of<Method>(entry.id) != nullptr, arrow);
+    EXPECT_EQ(find_method_of<PoseMethod>(entry.id) != nullptr, !arrow);
   }
-  EXPECT_EQ(find_method_entry("6")->method, Method::P6);
-  EXPECT_EQ(find_method_entry("5s")->method, Method::P5S);
-  EXPECT_EQ(find_method_entry("P6:La-LP")->method, Method::P6);
-  EXPECT_EQ(find_method_entry("lo-pe")->method, Method::P8);
-  EXPECT_EQ(find_method_entry("POLYSAM")->pose_method, PoseMethod::poly_sam);
-  EXPECT_EQ(find_method_entry("four-point-sam")->pose_method, PoseMethod::four_point);
+  EXPECT_EQ(find_method_entry("6")->method, AnyMethod(Method::P6));
+  EXPECT_EQ(find_method_entry("5s")->method, AnyMethod(Method::P5S));
+  EXPECT_EQ(find_method_entry("P6:La-LP")->method, AnyMethod(Method::P6));
+  EXPECT_EQ(*find_method_of<Method>("lo-pe"), Method::P8);
+  EXPECT_EQ(find_method_entry("POLYSAM")->method, AnyMethod(PoseMethod::poly_sam));
+  EXPECT_EQ(*find_method_of<PoseMethod>("four-point-sam"), PoseMethod::four_point);
+  EXPECT_EQ(find_method_of<PoseMethod>("6"), nullptr);  // PITA numbers are arrow names only
   EXPECT_EQ(find_method_entry("P66"), nullptr);
 }
 
 TEST(Methods, UnknownNamesHaveOneWording) {
-  EXPECT_EQ(unknown_method_reason("P66", MotionKind::arrows),
+  EXPECT_EQ(unknown_method_reason("P66", is_method_of<Method>),
             "unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?");
-  EXPECT_EQ(unknown_method_reason("polysan", MotionKind::poses), "unknown method \"polysan\"; did you mean polySAM?");
-  const std::string none = unknown_method_reason("zzzzzz", MotionKind::poses);
+  EXPECT_EQ(unknown_method_reason("polysan", is_method_of<PoseMethod>), "unknown method \"polysan\"; did you mean polySAM?");
+  const std::string none = unknown_method_reason("zzzzzz", is_method_of<PoseMethod>);
   EXPECT_EQ(none, "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, rARAP, ASAP, TSB, Alexa");
 }
 
@@ -77,8 +81,8 @@ TEST(Methods, ReferenceListsEveryMethod) {
     pages += text.str();
   }
   for (const MethodEntry& entry : every_method()) {
-    const std::string cell = entry.kind == MotionKind::arrows ? "| " + std::string(entry.id) + " |"
-                                                              : "`" + std::string(entry.id) + "`";
+    const std::string cell = is_method_of<Method>(entry) ? "| " + std::string(entry.id) + " |"
+                                                         : "`" + std::string(entry.id) + "`";
     EXPECT_NE(pages.find(cell), std::string::npos) << "docs/reference does not list " << entry.id << " as " << cell;
   }
 }

@@ -73,7 +73,7 @@ TEST(SceneMotion, EachKindAnswersForItselfAndRefusesTheOthers) {
   EXPECT_TRUE(pose_motion.is<PlanePoses>());
   EXPECT_EQ(point_motion.knots(), (std::vector<double>{0.0, 1.0, 2.0, 3.0}));
   EXPECT_LT(std::abs(point_motion.point_at(1.0) - Point(1.0, 1.0)), 1e-12);
-  EXPECT_LT((pose_motion.pose_at(1.0).b - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-12);
+  EXPECT_LT((pose_motion.pose_at<Affine2>(1.0).b - Eigen::Vector2d(1.0, 0.0)).norm(), 1e-12);
 
   const auto refused = [](auto&& ask) {
     try {
@@ -83,11 +83,11 @@ TEST(SceneMotion, EachKindAnswersForItselfAndRefusesTheOthers) {
     }
     return std::string("(no error)");
   };
-  EXPECT_EQ(refused([&] { (void)arrow_motion.pose_at(0.5); }),
+  EXPECT_EQ(refused([&] { (void)arrow_motion.pose_at<Affine2>(0.5); }),
             "s.json /keyframes | this motion is of keyframe arrows, not of poses of the plane");
   EXPECT_EQ(refused([&] { (void)arrow_motion.point_at(0.5); }),
             "s.json /keyframes | this motion is of keyframe arrows, not of timed points");
-  EXPECT_EQ(refused([&] { (void)arrow_motion.pose3_at(0.5); }),
+  EXPECT_EQ(refused([&] { (void)arrow_motion.pose_at<Affine3>(0.5); }),
             "s.json /keyframes | this motion is of keyframe arrows, not of poses of space");
   EXPECT_EQ(refused([&] { (void)point_motion.arrow_at(0.5); }),
             "s.json /points | this panel has timed \"points\", not keyframes: draw it with a "
@@ -97,7 +97,7 @@ TEST(SceneMotion, EachKindAnswersForItselfAndRefusesTheOthers) {
             "\"point-trajectory\" layer");
   EXPECT_EQ(refused([&] { (void)pose_motion.arrows(); }),
             "s.json /poses | this motion is of poses of the plane, not of keyframe arrows");
-  EXPECT_EQ(refused([&] { (void)pose_motion.pose3_velocity(0.5); }),
+  EXPECT_EQ(refused([&] { (void)pose_motion.pose_velocity<Affine3>(0.5); }),
             "s.json /poses | this motion is of poses of the plane, not of poses of space");
   EXPECT_FALSE(point_motion.chain().has_value());
   EXPECT_FALSE(pose_motion.chain().has_value());
@@ -235,15 +235,15 @@ TEST(SceneMotion, PosesAreBuiltOnceWithTheirTiming) {
   EXPECT_TRUE(motion.is<PlanePoses>());
   EXPECT_EQ(motion.method_id(), "polySAM");
   for (const TimedPose& pose : plane_keys(scene).poses) {
-    EXPECT_LT((motion.pose_at(pose.t).L - pose.pose.L).norm(), 1e-12);
-    EXPECT_LT((motion.pose_at(pose.t).b - pose.pose.b).norm(), 1e-12);
+    EXPECT_LT((motion.pose_at<Affine2>(pose.t).L - pose.pose.L).norm(), 1e-12);
+    EXPECT_LT((motion.pose_at<Affine2>(pose.t).b - pose.pose.b).norm(), 1e-12);
   }
   // The image of the reference triangle's first point moves evenly within each span.
   const auto path = motion.point_path(scene::TrackedPoint::start);
   const Point at_quarter = path(motion.motion_time(0.25)), at_half = path(motion.motion_time(0.5));
   const Point start = path(0.0);
   EXPECT_NEAR(std::abs(at_half - start) / std::abs(at_quarter - start), 2.0, 0.05);
-  EXPECT_NO_THROW((void)motion.pose_velocity(0.5));
+  EXPECT_NO_THROW((void)motion.pose_velocity<Affine2>(0.5));
 }
 
 TEST(SceneMotion, NoSamBetweenPosesIsANoMotionAtThePoses) {
@@ -265,7 +265,7 @@ TEST(SceneMotion, NonFiniteFramesAreNoMotionNotNaN) {
   }
 }
 
-// 3D pose scenes: the stage builds PoseMotion3 once; pose3_at is its pose,
+// 3D pose scenes: the stage builds PoseMotion3 once; pose_at<Affine3> is its pose,
 // and the plane's verbs refuse the motion with NoMotion at /dimension.
 TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
   const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
@@ -276,18 +276,18 @@ TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
   ASSERT_TRUE(motion.is<SpacePoses>());
   EXPECT_EQ(motion.knots(), (std::vector<double>{1.0, 3.0}));
   // x -> 4x + 3 is a scaling by 4 about x = -1; half way it scales by 2 about it.
-  const Affine3 half = motion.pose3_at(2.0);
+  const Affine3 half = motion.pose_at<Affine3>(2.0);
   EXPECT_NEAR(half.L(0, 0), 2.0, 1e-15);
   EXPECT_NEAR(half.b(0), 1.0, 1e-15);
   EXPECT_EQ(half.L(1, 1), 1.0);
   try {
-    (void)motion.pose_at(2.0);
+    (void)motion.pose_at<Affine2>(2.0);
     ADD_FAILURE() << "no error";
   } catch (const NoMotion& error) {
     EXPECT_NE(std::string(error.what()).find("/dimension"), std::string::npos) << error.what();
   }
   const std::vector<double> times = {1.0, 2.0};
-  EXPECT_EQ(sample_poses3(motion, times).size(), 2u);
+  EXPECT_EQ(sample_poses<Affine3>(motion, times).size(), 2u);
   EXPECT_NE(frames_text(scene.panels[0], motion, times, FramesFormat::csv).find("t,a,b,c,tx"), std::string::npos);
 }
 
@@ -307,7 +307,7 @@ TEST(SceneMotion, SpaceScenesEaseTheirTime) {
   const SceneMotion plain = build_motion(space());
   for (double t : {0.0, 0.3, 1.0, 1.7, 2.5, 3.0}) {
     const double x = t / 3.0, tau = 3.0 * (3 * x * x - 2 * x * x * x);  // the cubic ease, chapter Eq. 3.20
-    const Affine3 got = eased.pose3_at(t), expected = plain.pose3_at(tau);
+    const Affine3 got = eased.pose_at<Affine3>(t), expected = plain.pose_at<Affine3>(tau);
     EXPECT_LT((got.L - expected.L).norm() + (got.b - expected.b).norm(), 1e-12) << t;
   }
 }
@@ -318,7 +318,7 @@ TEST(SceneMotion, SpaceScenesPacedByArcLengthMoveThePointEvenly) {
   const SceneMotion plain = build_motion(space());
   // Every pose at its knot.
   for (const TimedPose3& pose : space_keys(scene).poses) {
-    const Affine3 at = motion.pose3_at(pose.t);
+    const Affine3 at = motion.pose_at<Affine3>(pose.t);
     EXPECT_LT((at.L - pose.pose.L).norm() + (at.b - pose.pose.b).norm(), 1e-12) << pose.t;
   }
   // The midpoint of the reference tetrahedron's first two points covers equal
@@ -331,9 +331,9 @@ TEST(SceneMotion, SpaceScenesPacedByArcLengthMoveThePointEvenly) {
       const double a = motion.motion_time(from + (to - from) * i / 8.0);
       const double b = motion.motion_time(from + (to - from) * (i + 1) / 8.0);
       double length = 0.0;
-      Eigen::Vector3d previous = apply(plain.pose3_at(a), mid);
+      Eigen::Vector3d previous = apply(plain.pose_at<Affine3>(a), mid);
       for (int k = 1; k <= 4000; ++k) {
-        const Eigen::Vector3d next = apply(plain.pose3_at(a + (b - a) * k / 4000.0), mid);
+        const Eigen::Vector3d next = apply(plain.pose_at<Affine3>(a + (b - a) * k / 4000.0), mid);
         length += (next - previous).norm();
         previous = next;
       }
@@ -348,8 +348,8 @@ TEST(SceneMotion, SpaceVelocityIncludesTheWarpsRate) {
   const SceneMotion motion = build_motion(space(R"(, "timing": {"ease": "ease-in-out", "arc_length": "p"})"));
   for (double t : {0.4, 1.5, 2.2}) {
     const double h = 1e-5;
-    const Affine3 ahead = motion.pose3_at(t + h), behind = motion.pose3_at(t - h);
-    const Affine3 rate = motion.pose3_velocity(t);
+    const Affine3 ahead = motion.pose_at<Affine3>(t + h), behind = motion.pose_at<Affine3>(t - h);
+    const Affine3 rate = motion.pose_velocity<Affine3>(t);
     const Eigen::Matrix3d dL = (ahead.L - behind.L) / (2 * h);
     const Eigen::Vector3d db = (ahead.b - behind.b) / (2 * h);
     EXPECT_LT((rate.L - dL).norm() + (rate.b - db).norm(), 1e-5 * (dL.norm() + db.norm())) << t;

@@ -78,7 +78,7 @@ TEST(Stage, APanelWithoutAMotionKeepsItsErrorUntilAsked) {
   const scene::Scene scene = pose_panels();
   std::optional<Stage> stage;
   ASSERT_NO_THROW(stage.emplace(scene)) << "made without throwing: a layer may not need the motion";
-  EXPECT_NO_THROW((void)stage->motion(0).pose_at(0.5));
+  EXPECT_NO_THROW((void)stage->motion(0).pose_at<Affine2>(0.5));
   std::string built_alone;
   try {
     (void)build_motion(scene, scene.panels[1]);
@@ -147,15 +147,15 @@ TEST(Stage, DerivedMotionsAreThoseOfThePanelsTheyDescribe) {
 
 TEST(Stage, AnotherPoseMethodThroughThePanelsPoses) {
   const scene::Scene scene = pose_panels();
-  const SceneMotion linear = with_pose_method(scene, scene.panels[0], PoseMethod::linear);
+  const SceneMotion linear = with_method(scene, scene.panels[0], PoseMethod::linear);
   EXPECT_EQ(linear.method_id(), "linear");
   // The linear blend of the matrices at u = 1/2: (I + B) / 2.
-  const Affine2 half = linear.pose_at(0.5);
+  const Affine2 half = linear.pose_at<Affine2>(0.5);
   EXPECT_DOUBLE_EQ(half.L(0, 0), 0.5);
   EXPECT_DOUBLE_EQ(half.L(0, 1), -0.5);
   EXPECT_DOUBLE_EQ(half.b(0), 1.0);
   // The panel without a SAM has a linear motion all the same.
-  EXPECT_NO_THROW((void)with_pose_method(scene, scene.panels[1], PoseMethod::linear).pose_at(0.5));
+  EXPECT_NO_THROW((void)with_method(scene, scene.panels[1], PoseMethod::linear).pose_at<Affine2>(0.5));
 }
 
 }  // namespace

@@ -127,6 +127,6 @@ def test_pose_motions_of_the_plane_and_of_space():
     np.testing.assert_allclose(frames, pita.sam(A, B, np.linspace(0, 1, 5)), atol=1e-14)
     assert motion(1.0) == B or np.allclose(motion(1.0).matrix, B.matrix, atol=1e-14)
     space = pita.motion("SAM", [np.eye(3, 4), np.diag([2.0, 2.0, 2.0, 1.0])], [0, 1])
-    assert space.kind == "poses3" and space(np.zeros(3)).shape == (3, 3, 4)
+    assert space.kind == "poses3d" and space(np.zeros(3)).shape == (3, 3, 4)
     linear = pita.motion("linear", [A, B], [0, 1])
     np.testing.assert_allclose(linear(0.5), (A.matrix + B.matrix) / 2, atol=1e-15)

@@ -88,8 +88,8 @@ TEST(Frames, NonFiniteFramesAreRefused) {
 }
 
 // 3D poses: the rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz] of x -> L x + b.
-PoseFrame3 space_frame() {
-  PoseFrame3 frame;
+PoseFrame<Affine3> space_frame() {
+  PoseFrame<Affine3> frame;
   frame.t = 0.25;
   frame.pose.L << 1, 2, 3, 4, 5, 6, 7, 8, 9.5;
   frame.pose.b << -1, -2, 0.1;
@@ -97,7 +97,7 @@ PoseFrame3 space_frame() {
 }
 
 TEST(SpacePoseFrames, ExactJsonAndCsv) {
-  const std::vector<PoseFrame3> frames = {space_frame()};
+  const std::vector<PoseFrame<Affine3>> frames = {space_frame()};
   EXPECT_EQ(pose_frames_to_json("SAM", frames),
             "{\"method\": \"SAM\", \"frames\": [\n"
             "  {\"t\": 0.25, \"matrix\": [[1.0, 2.0, 3.0, -1.0], [4.0, 5.0, 6.0, -2.0], [7.0, 8.0, 9.5, 0.1]]}\n"
@@ -108,9 +108,9 @@ TEST(SpacePoseFrames, ExactJsonAndCsv) {
 }
 
 TEST(SpacePoseFrames, RefuseNonFiniteFrames) {
-  PoseFrame3 frame = space_frame();
+  PoseFrame<Affine3> frame = space_frame();
   frame.pose.L(2, 1) = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<PoseFrame3> frames = {frame};
+  const std::vector<PoseFrame<Affine3>> frames = {frame};
   EXPECT_THROW(pose_frames_to_json("SAM", frames), std::invalid_argument);
   EXPECT_THROW(pose_frames_to_csv(frames), std::invalid_argument);
 }
@@ -121,8 +121,8 @@ TEST(SpacePoseFrames, RefuseNonFiniteFrames) {
 TEST(FramesPrinter, ARefusedRowLeavesNoTrace) {
   const Frame bad{0.25, Arrow{make_point(std::numeric_limits<double>::infinity(), 0), 1.0, 0.0}};
   for (const FramesFormat format : {FramesFormat::json, FramesFormat::csv}) {
-    FramesPrinter printer(FramesPrinter::Rows::arrows, format, "P6");
-    FramesPrinter::Buffer text;
+    FramesPrinter<Frame> printer(format, "P6");
+    FramesBuffer text;
     printer.head(text);
     printer.row(text, kTwoFrames[0]);
     const std::string before = fmt::to_string(text);
@@ -135,21 +135,22 @@ TEST(FramesPrinter, ARefusedRowLeavesNoTrace) {
 }
 
 TEST(FramesPrinter, RequireFiniteIsWhatRowChecks) {
-  EXPECT_NO_THROW(FramesPrinter::require_finite(kTwoFrames[0]));
-  EXPECT_THROW(FramesPrinter::require_finite(Frame{std::nan(""), Arrow{}}), std::invalid_argument);
-  EXPECT_THROW(FramesPrinter::require_finite(PointFrame{0.0, make_point(0, std::nan(""))}), std::invalid_argument);
-  PoseFrame3 frame = space_frame();
-  EXPECT_NO_THROW(FramesPrinter::require_finite(frame));
+  EXPECT_NO_THROW(FramesPrinter<Frame>::require_finite(kTwoFrames[0]));
+  EXPECT_THROW(FramesPrinter<Frame>::require_finite(Frame{std::nan(""), Arrow{}}), std::invalid_argument);
+  EXPECT_THROW(FramesPrinter<PointFrame>::require_finite(PointFrame{0.0, make_point(0, std::nan(""))}),
+               std::invalid_argument);
+  PoseFrame<Affine3> frame = space_frame();
+  EXPECT_NO_THROW(FramesPrinter<PoseFrame<Affine3>>::require_finite(frame));
   frame.pose.b(2) = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(FramesPrinter::require_finite(frame), std::invalid_argument);
+  EXPECT_THROW(FramesPrinter<PoseFrame<Affine3>>::require_finite(frame), std::invalid_argument);
 }
 
 // Printed piece by piece into separate strings, the pieces join into the text
 // of the whole-document functions (a chunked stream is the same file).
 TEST(FramesPrinter, PiecesJoinIntoTheWholeDocument) {
   const std::vector<PointFrame> points = {{0.0, make_point(1, 2)}, {1.0, make_point(-3, 0.5)}};
-  FramesPrinter printer(FramesPrinter::Rows::points, FramesFormat::json, "P6", "blend");
-  FramesPrinter::Buffer head, first, second, tail;
+  FramesPrinter<PointFrame> printer(FramesFormat::json, "P6", "blend");
+  FramesBuffer head, first, second, tail;
   printer.head(head);
   printer.row(first, points[0]);
   printer.row(second, points[1]);

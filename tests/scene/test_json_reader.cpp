@@ -74,9 +74,13 @@ TEST(MethodReasons, SayHowManyKeyframesTheMethodTakes) {
   EXPECT_EQ(detail::keyframe_count_reason(Method::SMA, 1),
             "method SMA takes at least 2 keyframes (got 1); more are chained (\"chain\")");
   // A pose method in an arrow scene says what to give instead.
-  EXPECT_EQ(detail::unknown_method_reason("SAM", MotionKind::arrows),
+  EXPECT_EQ(detail::unknown_scene_method_reason("SAM", is_method_of<Method>),
             "method SAM interpolates poses, and this scene has keyframes (arrows): give it "
             "\"poses\" instead, or an arrow method such as P6");
+  // An arrow method in a pose scene, the other way round.
+  EXPECT_EQ(detail::unknown_scene_method_reason("P6", is_method_of<PoseMethod>),
+            "method P6 interpolates arrows, and this is a pose scene: give it \"keyframes\" instead, or a pose "
+            "method such as SAM");
   const std::array<std::string_view, 3> names = {"a", "b", "c"};
   EXPECT_EQ(detail::joined(names), "a, b, c");
 }

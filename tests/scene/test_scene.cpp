@@ -116,8 +116,8 @@ TEST(PoseScene, MethodOverride) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 2], [1, 0, 2]]}]})",
                                   "s.json");
-  EXPECT_EQ(method_id(with_pose_method(scene, PoseMethod::linear).keys), "linear");
-  EXPECT_THROW(with_pose_method(scene, PoseMethod::biarc_sam), SceneError);  // 3 poses
+  EXPECT_EQ(method_id(with_method(scene, PoseMethod::linear).keys), "linear");
+  EXPECT_THROW(with_method(scene, PoseMethod::biarc_sam), SceneError);  // 3 poses
   EXPECT_THROW(with_method(scene, Method::P6), SceneError);
 }
 

@@ -82,9 +82,9 @@ TEST(SpacePoseScene, MethodOverrideKeepsToTheSamFamily) {
   const Scene scene = parse_space(R"({"dimension": 3, "method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 1, "matrix": [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}]})");
-  EXPECT_EQ(pose_method_of(with_pose_method(scene, PoseMethod::linear).panels[0]), PoseMethod::linear);
+  EXPECT_EQ(pose_method_of(with_method(scene, PoseMethod::linear).panels[0]), PoseMethod::linear);
   try {
-    (void)with_pose_method(scene, PoseMethod::tsb);
+    (void)with_method(scene, PoseMethod::tsb);
     ADD_FAILURE() << "no error";
   } catch (const SceneError& error) {
     EXPECT_EQ(error.pointer(), "/dimension");

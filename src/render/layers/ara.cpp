@@ -22,7 +22,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::AraLayer& layer) {
   std::vector<Eigen::Vector2d> vertices;
   for (const Point p : panel.body_points()) vertices.emplace_back(p.real(), p.imag());
   const std::vector<Eigen::Vector2d> points = ara_grid(vertices, layer.grid);  // as pita measure's (N28)
-  const double ara = average_relative_acceleration(panel.motion().poses(), points);
+  const double ara = average_relative_acceleration(panel.motion().poses<Affine2>(), points);
   if (!std::isfinite(ara)) panel.fail("the ARA of this motion is not finite (a pose on the way is singular)");
   panel.push(-1, Label{fmt::format("ARA = {:.{}f}", ara, layer.digits), layer.at, layer.size, layer.color});
 }

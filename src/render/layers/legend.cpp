@@ -14,7 +14,7 @@ namespace pita::render::detail {
 void PanelBuilder::add(const scene::LegendLayer& layer) {
   Legend legend{layer.corner, layer.size, {}, true, layer_};
   scene::KeyframesLayer colors;  // the colours of the first keyframes layer, else the defaults
-  for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+  for (const scene::Layer& other : scene::layers_of<scene::Layer>(scene_, panel_).layers) {
     if (const auto* keys = std::get_if<scene::KeyframesLayer>(&other)) {
       colors = *keys;
       break;
@@ -25,7 +25,7 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
                               fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
   }
   // A panel of points: one entry per curve drawn, in its colour.
-  for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+  for (const scene::Layer& other : scene::layers_of<scene::Layer>(scene_, panel_).layers) {
     const auto* curve = std::get_if<scene::PointTrajectoryLayer>(&other);
     if (curve == nullptr || curve->curve == PointCurve::pita) continue;
     legend.entries.push_back({curve->line.color, std::string(info(curve->curve).name)});
@@ -38,7 +38,7 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
   Color method_color{0.2, 0.2, 0.2, 1.0};
   bool pattern_seen = false;
   std::vector<LegendEntry> paths, overlays;
-  for (const scene::Layer& other : panel_.layers ? *panel_.layers : scene_.layers) {
+  for (const scene::Layer& other : scene::layers_of<scene::Layer>(scene_, panel_).layers) {
     const auto* pattern = std::get_if<scene::PatternLayer>(&other);
     if (const auto* path = std::get_if<scene::TrajectoryLayer>(&other)) {
       // The path of an overlaid pattern's method (its own "method" or

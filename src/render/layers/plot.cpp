@@ -33,7 +33,7 @@ void draw_area_plot(PosePanel<Affine2>& panel, const scene::PlotLayer& layer) {
                              about.max_poses, count));
     }
     try {
-      const motion::SceneMotion moving = motion::with_pose_method(panel.scene(), panel.panel(), methods[k]);
+      const motion::SceneMotion moving = motion::with_method(panel.scene(), panel.panel(), methods[k]);
       series.push_back({std::string(about.id), layer.colors[k % layer.colors.size()],
                         analysis::area_over_time(moving, samples), analysis::area_over_time(moving, marks)});
     } catch (const motion::NoMotion& error) {

@@ -35,7 +35,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
   if (count < about.min_poses || count > about.max_poses) panel.fail(versus_count_reason(layer.method, poses.size()));
   std::optional<motion::SceneMotion> motion;
   try {
-    motion.emplace(motion::with_pose_method(panel.scene(), panel.panel(), layer.method));
+    motion.emplace(motion::with_method(panel.scene(), panel.panel(), layer.method));
   } catch (const motion::NoMotion& error) {
     panel.fail(fmt::format("method {}: {}", about.id, error.reason()));
   }
@@ -54,7 +54,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
   for (std::size_t i = 0; i < ts.size(); ++i) {
     Affine2 pose;
     try {
-      pose = motion->pose_at(ts[i]);
+      pose = motion->pose_at<Affine2>(ts[i]);
     } catch (const motion::NoMotion& error) {
       panel.fail(fmt::format("method {}: {}", about.id, error.reason()));
     }
