@@ -7,7 +7,7 @@
 
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "scene/scene.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/sweep.hpp"

@@ -22,13 +22,13 @@
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
 #include "animate/timeline.hpp"
+#include "io/output_file.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
 #include "scene/scene.hpp"
-#include "render/output_file.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/json_edit.hpp"
 #include "serve/scene_edit.hpp"
@@ -268,7 +268,7 @@ class Server {
     // The file itself (through a link, its target), with the permissions it had.
     const fs::path target = fs::canonical(path);
     const fs::perms permissions = fs::status(target).permissions();
-    render::write_file_atomically(target, edited);
+    io::write_file_atomically(target, edited);
     fs::permissions(target, permissions);
     return Json{{"previous", previous}};
   }

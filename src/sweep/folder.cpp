@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/grid.hpp"
 
@@ -89,18 +89,18 @@ void claim_folder(const fs::path& dir, const std::string& option, const fs::path
                                       error ? error.message() : "a file of that name exists"));
   }
   if (fs::equivalent(dir / kSweepFile, base_scene, error)) {
-    throw render::OutputError(fmt::format("{}: cannot write: the sweep's definition {} would replace the base scene "
+    throw io::OutputError(fmt::format("{}: cannot write: the sweep's definition {} would replace the base scene "
                                           "{}; give another output folder",
                                           option, (dir / kSweepFile).string(), base_scene.string()));
   }
   if (!is_sweep_folder(dir)) {
     if (const std::string other = first_foreign_entry(dir); !other.empty()) {
-      throw render::OutputError(fmt::format(
+      throw io::OutputError(fmt::format(
           "{}: cannot write: the folder holds files that a sweep did not write ({} among them; a sweep's folder "
           "has a {} file); give a new or empty folder, so that nothing of yours is replaced",
           option, other, kFolderMarker));
     }
-    render::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
+    io::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
   }
 }
 
@@ -108,7 +108,7 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
   const fs::path path = dir / ("." + manifest + ".lock");
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd_ < 0) {
-    throw render::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
+    throw io::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
   }
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     if (errno == ENOSYS || errno == EOPNOTSUPP || errno == ENOLCK) {
@@ -123,7 +123,7 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
     if (errno != EWOULDBLOCK) {
       const int saved = errno;
       ::close(fd_);
-      throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+      throw io::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
     }
     if (!wait) {
       char text[32] = {};
@@ -140,7 +140,7 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
       if (errno != EINTR) {
         const int saved = errno;
         ::close(fd_);
-        throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+        throw io::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
       }
     }
   }

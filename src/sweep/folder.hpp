@@ -16,7 +16,7 @@ namespace pita::sweep {
 inline constexpr std::string_view kFolderMarker = ".pita-sweep";
 
 // Creates DIR when missing and marks it as a sweep's. Throws
-// render::OutputError (exit 3) when DIR holds files and is not a sweep's
+// io::OutputError (exit 3) when DIR holds files and is not a sweep's
 // folder, or when its sweep.json is the base scene itself; SweepUsageError
 // when DIR cannot be created. `option` names DIR in messages ("-o out").
 void claim_folder(const std::filesystem::path& dir, const std::string& option,

@@ -90,7 +90,7 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
     const int saved = errno;
     std::error_code ignored;
     if (!std::filesystem::exists(path, ignored)) return std::nullopt;
-    throw render::OutputError(fmt::format("{}: cannot read ({})", path.string(), std::strerror(saved)));
+    throw io::OutputError(fmt::format("{}: cannot read ({})", path.string(), std::strerror(saved)));
   }
   reader.path_ = path.string();
   reader.pointers_ = pointers.size();

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/folder.hpp"
 #include "sweep/manifest.hpp"
@@ -97,7 +97,7 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   for (const fs::path& part : parts) {
     try {
       if (!ManifestReader::open(part, pointers)) continue;
-    } catch (const render::OutputError&) {  // there, but cannot be read: never left out
+    } catch (const io::OutputError&) {  // there, but cannot be read: never left out
       throw;
     } catch (const std::runtime_error& e) {  // the header of another sweep
       summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
@@ -114,7 +114,7 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
         sources.push_back(std::move(*reader));
         summary.parts.push_back(part.filename().string());
       }
-    } catch (const render::OutputError&) {
+    } catch (const io::OutputError&) {
       throw;
     } catch (const std::runtime_error& e) {
       throw SweepUsageError(fmt::format("--merge: {}", e.what()));
@@ -151,7 +151,7 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   try {
     merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, SameIndex::refuse_conflict);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
+    if (dynamic_cast<const io::OutputError*>(&e) != nullptr) throw;
     throw SweepUsageError(fmt::format("--merge: {}", e.what()));
   }
   missing(expected, definition.variants);

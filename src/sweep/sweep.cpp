@@ -18,8 +18,8 @@
 
 #include "animate/progress.hpp"
 #include "core/worker_pool.hpp"
-#include "render/interrupt.hpp"
-#include "render/output_file.hpp"
+#include "io/interrupt.hpp"
+#include "io/output_file.hpp"
 #include "scene/scene.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/folder.hpp"
@@ -179,7 +179,7 @@ class SweepRun {
     if (!options_.force) resume();
     std::error_code ignored;
     fs::remove(journal_path_, ignored);
-    render::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
+    io::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
     run_variants();
     write_manifest();
     if (options_.shard) {
@@ -228,7 +228,7 @@ class SweepRun {
     std::optional<ManifestReader> old;
     try {
       old = ManifestReader::open(manifest_path_, pointers_);
-    } catch (const render::OutputError&) {
+    } catch (const io::OutputError&) {
       throw;  // there, but cannot be read (exit 3)
     } catch (const std::runtime_error& error) {
       refuse_folder(error);
@@ -255,7 +255,7 @@ class SweepRun {
             ++summary_.skipped;
           }
         }
-      } catch (const render::OutputError&) {
+      } catch (const io::OutputError&) {
         throw;
       } catch (const std::runtime_error& error) {
         refuse_folder(error);
@@ -298,7 +298,7 @@ class SweepRun {
   void run_variants() {
     std::FILE* journal = std::fopen(journal_path_.c_str(), "w");
     if (journal == nullptr) {
-      throw render::OutputError(fmt::format("{}: cannot write ({})", journal_path_.string(), std::strerror(errno)));
+      throw io::OutputError(fmt::format("{}: cannot write ({})", journal_path_.string(), std::strerror(errno)));
     }
     struct Closer {
       std::FILE* file;
@@ -328,7 +328,7 @@ class SweepRun {
     const auto work = static_cast<int>(std::min<std::int64_t>(mine_ - summary_.skipped, INT32_MAX));
     animate::Progress progress("pita sweep", work, options_.progress, true);
     {
-      const render::DeferredInterrupts deferred;
+      const io::DeferredInterrupts deferred;
       PoolOptions pool;
       pool.threads = static_cast<int>(std::min<std::int64_t>(options_.jobs, std::max<std::int64_t>(mine_, 1)));
       // Rows finished ahead of an earlier, slower variant wait in memory: at
@@ -337,7 +337,7 @@ class SweepRun {
       pool.window = std::max<std::int64_t>(kRowsAhead, 64 * static_cast<std::int64_t>(pool.threads));
       const auto tick = [&] {
         progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
-        return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
+        return io::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
       };
       try {
         run_ordered(
@@ -361,7 +361,7 @@ class SweepRun {
   // left out: their variants are done again). Then the journal goes; a
   // pending signal ends the process here.
   void write_manifest() {
-    const int sig = render::pending_interrupt();
+    const int sig = io::pending_interrupt();
     std::vector<ManifestReader> sources;
     if (have_manifest_) {
       if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
@@ -375,13 +375,13 @@ class SweepRun {
     };
     try {
       merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, SameIndex::later_wins);
-    } catch (const render::OutputError&) {
-      if (sig != 0) render::exit_interrupted(sig);  // the journal stays: the next run folds it
+    } catch (const io::OutputError&) {
+      if (sig != 0) io::exit_interrupted(sig);  // the journal stays: the next run folds it
       throw;
     }
     std::error_code ignored;
     fs::remove(journal_path_, ignored);
-    if (sig != 0) render::exit_interrupted(sig);
+    if (sig != 0) io::exit_interrupted(sig);
   }
 
   const SweepOptions& options_;

@@ -53,7 +53,7 @@ std::vector<OutputKind> parse_output_kinds(const std::string& text);
 std::pair<int, int> parse_shard(const std::string& text);
 
 // Runs the sweep. Throws SweepUsageError (exit 2), scene::SceneError (a bad
-// base scene, exit 2), render::OutputError (the manifest could not be
+// base scene, exit 2), io::OutputError (the manifest could not be
 // written, exit 3). An interruption writes the manifest of what finished
 // and exits with 128 + the signal.
 SweepSummary run_sweep(const SweepOptions& options);
