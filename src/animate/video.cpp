@@ -356,10 +356,9 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   return request.out;
 }
 
-std::string find_ffmpeg() {
-  if (const char* given = std::getenv("PITA_FFMPEG")) return ::access(given, X_OK) == 0 ? given : "";
-  const char* path = std::getenv("PATH");
-  const std::string dirs = path ? path : "/usr/bin:/bin";
+std::string find_ffmpeg(std::optional<std::string_view> given, std::optional<std::string_view> search_path) {
+  if (given) return ::access(std::string(*given).c_str(), X_OK) == 0 ? std::string(*given) : "";
+  const std::string dirs(search_path.value_or("/usr/bin:/bin"));
   std::size_t start = 0;
   while (start <= dirs.size()) {
     const std::size_t end = dirs.find(':', start);
