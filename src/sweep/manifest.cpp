@@ -102,7 +102,7 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
     std::string expected = "index";
     for (const std::string& p : pointers) expected += "," + p;
     throw std::runtime_error(fmt::format("{}: not the manifest of this sweep (its header does not start with {}); "
-                                         "use another -o folder, or remove it",
+                                         "use another output folder, or remove it",
                                          path.string(), expected));
   }
   return reader;

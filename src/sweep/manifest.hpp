@@ -153,7 +153,7 @@ void merge_sources(const std::filesystem::path& path, const std::vector<std::str
       if (!heads[s] || heads[s]->index != *least) continue;
       if (best && same == SameIndex::refuse_conflict && !(*heads[s] == *heads[*best])) {
         throw std::runtime_error(fmt::format("variant {} has two different rows, {} and {}: remove the part that is "
-                                             "stale (a run with another --shard N?) and merge again",
+                                             "stale (a run split into another number of shards?) and merge again",
                                              *least, sources[*best].where(), sources[s].where()));
       }
       best = s;
