@@ -5,8 +5,6 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -28,6 +26,8 @@
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
+#include "scene/json_text.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/json_edit.hpp"
@@ -96,10 +96,7 @@ class Server {
     Json claims = Json::array();
     std::string text;
     try {
-      {
-        std::ifstream in(state.path, std::ios::binary);
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-      }
+      text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
       scene = std::make_shared<const scene::Scene>(
           scene::parse_scene(text, state.path.string(), {settings_.allow_absolute_paths}));
       const motion::Stage stage(*scene);
@@ -229,10 +226,7 @@ class Server {
   Json edit(std::size_t i, const Json& request) {
     const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
     const fs::path path = scenes_[i]->path;
-    std::ifstream in(path, std::ios::binary);
-    in.exceptions(std::ios::goodbit);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw std::invalid_argument("cannot read " + path.string());
+    const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
     std::vector<Change> changes;
     if (request.contains("drag")) {
       const Json& d = request.at("drag");
