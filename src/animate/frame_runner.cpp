@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "core/worker_pool.hpp"
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 
 namespace pita::animate {
 
@@ -16,7 +16,7 @@ void run_frames(int count, int threads, const std::function<std::string(int)>& r
   options.window = 2 * options.threads;
   options.tick = std::chrono::milliseconds(50);  // how soon a signal is seen
   const auto interrupted = [] {
-    if (const int sig = render::pending_interrupt()) throw Interrupted{sig};
+    if (const int sig = io::pending_interrupt()) throw Interrupted{sig};
     return true;
   };
   run_ordered(

@@ -9,7 +9,7 @@
 
 namespace pita::animate {
 
-// Thrown when SIGINT, SIGTERM or SIGHUP arrived (render/interrupt.hpp's
+// Thrown when SIGINT, SIGTERM or SIGHUP arrived (io/interrupt.hpp's
 // deferred mode): the caller removes what it wrote and exits.
 struct Interrupted {
   int signal = 0;

@@ -22,10 +22,10 @@
 #include "animate/progress.hpp"
 #include "animate/svg_animation.hpp"
 #include "animate/video.hpp"
+#include "io/interrupt.hpp"
+#include "io/output_file.hpp"
 #include "render/backdrop.hpp"
 #include "render/budget.hpp"
-#include "render/interrupt.hpp"
-#include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 
 namespace pita::animate {
@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 namespace detail {
 
 void output_failed(const fs::path& path, const std::string& reason) {
-  throw render::OutputError(fmt::format("{}: cannot write: {}", path.string(), reason));
+  throw io::OutputError(fmt::format("{}: cannot write: {}", path.string(), reason));
 }
 
 mode_t ordinary_mode(mode_t full) {
@@ -154,7 +154,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   } catch (const Interrupted& interrupted) {
     fs::remove_all(temporary, error);
     cleanup.path.clear();
-    render::exit_interrupted(interrupted.signal);
+    io::exit_interrupted(interrupted.signal);
   }
   Json index{{"scene", scene.path},
              {"what", what_name(timeline.what)},
@@ -168,10 +168,10 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
              {"height", static_cast<int>(std::round(scene.canvas.height * (request.frame_format == render::Format::png ? request.scale : 1.0)))},
              {"frame_list", std::move(records)}};
   write_bytes(temporary / "frames.json", index.dump(1) + "\n");
-  if (const int sig = render::pending_interrupt()) {
+  if (const int sig = io::pending_interrupt()) {
     fs::remove_all(temporary, error);
     cleanup.path.clear();
-    render::exit_interrupted(sig);
+    io::exit_interrupted(sig);
   }
   // Into place: a new directory is renamed; an older one is swapped with the
   // new one atomically (renameat2 RENAME_EXCHANGE), then removed.
@@ -260,16 +260,16 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   // The first frame before any output exists: a scene that cannot be drawn
   // fails here, having written nothing.
   frame_figure(scene, timeline, timeline.time(0), placements, shared);
-  const render::DeferredInterrupts deferred;
+  const io::DeferredInterrupts deferred;
   switch (request.kind) {
     case OutputKind::svg: {
       Progress progress("frames", timeline.frames, request.progress);
       const std::string svg = animated_svg(scene, timeline, [&](int k) {
-        if (const int sig = render::pending_interrupt()) render::exit_interrupted(sig);
+        if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
         progress.update(k + 1);
       });
-      if (const int sig = render::pending_interrupt()) render::exit_interrupted(sig);
-      render::write_file_atomically(request.out, svg);
+      if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
+      io::write_file_atomically(request.out, svg);
       return {request.out};
     }
     case OutputKind::directory: return {write_directory(scene, timeline, request, shared, placements)};

@@ -56,7 +56,7 @@ struct Request {
 // Renders every frame and writes OUT. Returns the paths written (OUT; for a
 // directory, OUT itself). Throws AnimationError or RenderError (exit 2),
 // OutputError (exit 3), and on a signal removes its temporaries and exits
-// with 128 + signal (render/interrupt.hpp).
+// with 128 + signal (io/interrupt.hpp).
 std::vector<std::filesystem::path> write_animation(const scene::Scene& scene, const Timeline& timeline,
                                                    const Request& request);
 
@@ -66,7 +66,7 @@ std::string frame_file_name(int k, int count, render::Format format);
 
 namespace detail {  // shared by the writers of output.cpp and video.cpp
 
-// Throws render::OutputError "PATH: cannot write: REASON".
+// Throws io::OutputError "PATH: cannot write: REASON".
 [[noreturn]] void output_failed(const std::filesystem::path& path, const std::string& reason);
 
 // The ordinary permissions of a new file or directory (0666 or 0777 less the

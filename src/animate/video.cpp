@@ -23,10 +23,10 @@
 #include "animate/frame.hpp"
 #include "animate/frame_runner.hpp"
 #include "animate/progress.hpp"
+#include "io/interrupt.hpp"
+#include "io/output_file.hpp"
 #include "render/backdrop.hpp"
 #include "render/budget.hpp"
-#include "render/interrupt.hpp"
-#include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 
 extern char** environ;
@@ -47,33 +47,33 @@ class TemporaryFile {
   explicit TemporaryFile(const fs::path& target) : reservation_(1), target_(target) {
     const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
     const std::string pattern = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
-    slot_ = render::register_in_flight(pattern);
+    slot_ = io::register_in_flight(pattern);
     if (slot_ < 0) output_failed(target, std::strerror(ENAMETOOLONG));  // a slot is reserved
-    const int fd = ::mkstemp(render::slot_path(slot_));
+    const int fd = ::mkstemp(io::slot_path(slot_));
     if (fd < 0) {
       const std::string reason = std::strerror(errno);
-      render::release_in_flight(slot_);
+      io::release_in_flight(slot_);
       output_failed(target, reason);
     }
     ::close(fd);
-    path_ = render::slot_path(slot_);
+    path_ = io::slot_path(slot_);
   }
   ~TemporaryFile() {
     if (slot_ >= 0) {
       ::unlink(path_.c_str());
-      render::release_in_flight(slot_);
+      io::release_in_flight(slot_);
     }
   }
   const std::string& path() const { return path_; }
   void commit() {
     ::chmod(path_.c_str(), ordinary_mode(0666));
     if (::rename(path_.c_str(), target_.c_str()) != 0) output_failed(target_, std::strerror(errno));
-    render::release_in_flight(slot_);
+    io::release_in_flight(slot_);
     slot_ = -1;
   }
 
  private:
-  render::InFlightReservation reservation_;  // released after the slot
+  io::InFlightReservation reservation_;  // released after the slot
   fs::path target_;
   std::string path_;
   int slot_ = -1;
@@ -251,7 +251,7 @@ class FfmpegProcess {
     while (done < bytes.size()) {
       const ssize_t n = ::write(pipe_, bytes.data() + done, bytes.size() - done);
       if (n < 0 && errno == EINTR) {
-        if (const int sig = render::pending_interrupt()) throw Interrupted{sig};
+        if (const int sig = io::pending_interrupt()) throw Interrupted{sig};
         continue;
       }
       if (n <= 0) return false;
@@ -319,7 +319,7 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
         },
         [&](int k, std::string&& bytes) {
           if (!process.write(bytes)) {
-            throw render::OutputError(
+            throw io::OutputError(
                 fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)", request.out.string()));
           }
           progress.update(k + 1);
@@ -327,15 +327,15 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   } catch (const Interrupted& interrupted) {
     process.stop(true);
     ::unlink(temporary.path().c_str());
-    render::exit_interrupted(interrupted.signal);
+    io::exit_interrupted(interrupted.signal);
   } catch (...) {
     process.stop(true);
     throw;
   }
   const int status = process.stop(false);
-  if (const int sig = render::pending_interrupt()) {
+  if (const int sig = io::pending_interrupt()) {
     ::unlink(temporary.path().c_str());
-    render::exit_interrupted(sig);
+    io::exit_interrupted(sig);
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     output_failed(request.out, fmt::format("ffmpeg failed ({})", WIFEXITED(status)
@@ -348,18 +348,17 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
     output_failed(request.out, fmt::format("ffmpeg reported an error: {}", last_line(process.errors())));
   }
   verify_video(ffmpeg, temporary.path(), request.out);
-  if (const int sig = render::pending_interrupt()) {  // a signal during the check
+  if (const int sig = io::pending_interrupt()) {  // a signal during the check
     ::unlink(temporary.path().c_str());
-    render::exit_interrupted(sig);
+    io::exit_interrupted(sig);
   }
   temporary.commit();
   return request.out;
 }
 
-std::string find_ffmpeg() {
-  if (const char* given = std::getenv("PITA_FFMPEG")) return ::access(given, X_OK) == 0 ? given : "";
-  const char* path = std::getenv("PATH");
-  const std::string dirs = path ? path : "/usr/bin:/bin";
+std::string find_ffmpeg(std::optional<std::string_view> given, std::optional<std::string_view> search_path) {
+  if (given) return ::access(std::string(*given).c_str(), X_OK) == 0 ? std::string(*given) : "";
+  const std::string dirs(search_path.value_or("/usr/bin:/bin"));
   std::size_t start = 0;
   while (start <= dirs.size()) {
     const std::size_t end = dirs.find(':', start);

@@ -6,7 +6,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "animate/output.hpp"
@@ -17,9 +19,11 @@
 
 namespace pita::animate {
 
-// The ffmpeg that writes videos: $PITA_FFMPEG if set (when it is executable),
-// else "ffmpeg" found on PATH; "" when there is none.
-std::string find_ffmpeg();
+// The ffmpeg that writes videos, from what a front end read in its environment
+// (animate reads none): `given` (PITA_FFMPEG) when set, if it is executable;
+// else "ffmpeg" in one of the directories of `search_path` (PATH; when unset,
+// /usr/bin:/bin); "" when there is none.
+std::string find_ffmpeg(std::optional<std::string_view> given, std::optional<std::string_view> search_path);
 
 // Writes request.out. `stage`: the scene's motions for a "motion" timeline
 // (frame_figure), else nullptr. Throws AnimationError (no ffmpeg, exit 2),

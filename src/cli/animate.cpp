@@ -8,7 +8,6 @@
 
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"
-#include "animate/video.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "render/budget.hpp"
@@ -124,7 +123,7 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.budget = options.budget;
   request.progress = progress_allowed(options.quiet);
   request.threads = threads_from_environment();
-  request.ffmpeg = animate::find_ffmpeg();
+  request.ffmpeg = ffmpeg_from_environment();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
     const animate::Timeline timeline =

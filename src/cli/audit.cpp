@@ -21,8 +21,8 @@
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
 #include "core/methods.hpp"
+#include "io/output_file.hpp"
 #include "render/figure.hpp"
-#include "render/output_file.hpp"
 #include "render/property_table.hpp"
 #include "scene/scene.hpp"
 
@@ -146,7 +146,7 @@ std::vector<std::string> write_counterexamples(const analysis::AuditReport& repo
     svg.replace_extension(".svg");
     const std::vector<std::pair<fs::path, std::string>> pair = {
         {json, scene}, {svg, render::render_figure(parsed, figure, render::Format::svg)}};
-    render::write_files_atomically(pair);
+    io::write_files_atomically(pair);
   }
   return files;
 }
@@ -214,7 +214,7 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     const analysis::AuditReport report = analysis::run_audit(audit);
 
     if (table_format) {
-      render::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
+      io::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
     }
     const std::vector<std::string> files =
         options.counterexamples ? write_counterexamples(report, *options.counterexamples)

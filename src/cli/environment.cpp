@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
+#include <string_view>
 #include <thread>
+
+#include "animate/video.hpp"
 
 namespace pita::cli {
 
@@ -19,6 +23,14 @@ int threads_from_environment() {
 bool progress_allowed(bool quiet) {
   const char* ci = std::getenv("CI");
   return !quiet && (ci == nullptr || *ci == '\0');
+}
+
+std::string ffmpeg_from_environment() {
+  const auto value = [](const char* name) -> std::optional<std::string_view> {
+    const char* set = std::getenv(name);
+    return set ? std::optional<std::string_view>(set) : std::nullopt;
+  };
+  return animate::find_ffmpeg(value("PITA_FFMPEG"), value("PATH"));
 }
 
 }  // namespace pita::cli

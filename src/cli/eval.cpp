@@ -19,11 +19,11 @@
 #include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
+#include "io/output_file.hpp"
 #include "scene/frames.hpp"
 #include "motion/evaluation.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
-#include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -49,7 +49,7 @@ std::string_view trimmed(std::string_view text) {
 motion::TextSink stdout_sink() {
   return {[](std::string_view bytes) {
             if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size()) {
-              throw render::OutputError(
+              throw io::OutputError(
                   fmt::format("cannot write the frames to standard output ({})", std::strerror(errno)));
             }
           },
@@ -414,7 +414,7 @@ ExitCode run_eval(const EvalOptions& options) {
   // The file is opened at the first bytes, so that a bad scene is reported
   // (exit 2) before an unwritable output (exit 3), and dropped unless every
   // frame was written.
-  std::optional<render::StreamingOutput> file;
+  std::optional<io::StreamingOutput> file;
   const motion::TextSink file_sink{[&](std::string_view bytes) {
                                      if (!file) file.emplace(*options.output);
                                      file->write(bytes);
@@ -425,7 +425,7 @@ ExitCode run_eval(const EvalOptions& options) {
     try {
       if (!file) file.emplace(*options.output);
       file->commit();
-    } catch (const render::OutputError& error) {
+    } catch (const io::OutputError& error) {
       outcome = {ExitCode::failure, {}, fmt::format("pita: {}\n", error.what())};
     }
   }

@@ -7,9 +7,9 @@
 
 #include "animate/timeline.hpp"
 #include "golden/image_compare.hpp"
+#include "io/output_file.hpp"
 #include "motion/no_motion.hpp"
 #include "render/image_cache.hpp"
-#include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
 
@@ -46,7 +46,7 @@ Failure classify(const std::string& input) {
     return {ExitCode::bad_input, e.what()};
   } catch (const golden::GoldenError& e) {
     return {ExitCode::bad_input, e.what()};
-  } catch (const render::OutputError& e) {
+  } catch (const io::OutputError& e) {
     return {ExitCode::failure, e.what()};
   } catch (const std::bad_alloc&) {
     // Within the render budget a figure needs well under 1 GB: the machine

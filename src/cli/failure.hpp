@@ -17,7 +17,7 @@ struct Failure {
 
 // The exception being handled (call it inside a catch block):
 //   SceneError, NoMotion, RenderError, GoldenError    -> bad_input, their what()
-//   render::OutputError                                -> failure, its what()
+//   io::OutputError                                -> failure, its what()
 //   std::bad_alloc                                     -> bad_input, "INPUT: out of memory ..."
 //   anything else                                      -> internal_error, "INPUT: internal error ..."
 // `input` is the scene (or golden) being worked on, for the last two.

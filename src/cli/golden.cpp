@@ -12,7 +12,7 @@
 #include "golden/check.hpp"
 #include "golden/golden_file.hpp"
 #include "golden/report.hpp"
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
 
@@ -248,7 +248,7 @@ ExitCode run_update_goldens(const GoldenOptions& options) {
             for (const UpdatedFile& file : updated.files) {
               if (file.bytes) {
                 fs::create_directories(file.path.parent_path());
-                render::write_file_atomically(file.path, *file.bytes);
+                io::write_file_atomically(file.path, *file.bytes);
               }
               std::cout << file.path.string() << ": " << file.status << '\n';
             }

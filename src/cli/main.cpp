@@ -26,7 +26,7 @@
 #include "cli/sweep.hpp"
 #include "cli/watch.hpp"
 #include "cli/render.hpp"
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
 
 #ifndef PITA_VERSION
@@ -88,7 +88,7 @@ int main(int argc, char** argv) {
   using pita::cli::to_int;
 
   // SIGINT, SIGTERM, SIGHUP: remove the temporary files in flight, exit 128 + signal.
-  pita::render::install_interrupt_cleanup();
+  pita::io::install_interrupt_cleanup();
   // A closed pipe (pita eval ... | head) is a write error (EPIPE) that the code
   // reports with exit 3, not a silent death by SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);

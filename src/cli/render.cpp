@@ -15,10 +15,10 @@
 #include "animate/timeline.hpp"
 #include "cli/failure.hpp"
 #include "cli/scene_jobs.hpp"
+#include "io/output_file.hpp"
 #include "motion/stage.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
-#include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/limits.hpp"
@@ -365,9 +365,9 @@ RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan,
   return rendered;
 }
 
-// The files of a scene are written all or none (render/output_file.hpp).
+// The files of a scene are written all or none (io/output_file.hpp).
 void write_scene(const RenderedScene& rendered) {
-  render::write_files_atomically(rendered.files);
+  io::write_files_atomically(rendered.files);
   for (const auto& [file, bytes] : rendered.files) std::cout << "wrote " << file.string() << '\n';
   // Flushed, so that an interrupted run still lists what it wrote.
   std::cout.flush();
@@ -392,7 +392,7 @@ std::vector<std::string> render_and_write(const RenderOptions& options, std::str
   }
   const RenderedScene rendered = render_scene(options, plan, options.scene_paths.at(0));
   warnings += rendered.warnings;
-  render::write_files_atomically(rendered.files);
+  io::write_files_atomically(rendered.files);
   std::vector<std::string> written;
   for (const auto& [file, bytes] : rendered.files) written.push_back(file.string());
   return written;

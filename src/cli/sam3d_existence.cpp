@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "analysis/sam3d_existence.hpp"
+#include "analysis/sam3d_existence_report.hpp"
 #include "animate/progress.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
@@ -39,16 +41,6 @@ Examples:
   pita audit sam3d-existence --curve 12
 
 Exit codes: 0 success (whatever the bounds are), 2 bad usage.)";
-
-std::string matrix_text(const Eigen::Matrix3d& M) {
-  return fmt::format("[[{:g}, {:g}, {:g}], [{:g}, {:g}, {:g}], [{:g}, {:g}, {:g}]]", M(0, 0), M(0, 1), M(0, 2),
-                     M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1), M(2, 2));
-}
-
-std::string configuration_text(const analysis::NoSamConfiguration& c) {
-  return fmt::format("axis [{:.4f}, {:.4f}, {:.4f}], angle {:.4f}, p {:g}, signs {}", c.axis.x(), c.axis.y(),
-                     c.axis.z(), c.angle, c.p, matrix_text(c.signs));
-}
 
 }  // namespace
 
@@ -176,46 +168,16 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
     return ExitCode::bad_input;
   }
   const auto start = std::chrono::steady_clock::now();
-  std::string text = fmt::format(
-      "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), {} angles over "
-      "[-theta, theta], 3^9 perturbations each: {} matrices per (theta, p)\n\n",
-      axes, search.subdivisions, search.angles, axes * static_cast<std::size_t>(search.angles) * 19683);
-  if (options.curve) {
-    text = fmt::format(
-        "SAM existence in 3D (SAM paper Sec. 5.2): {} axes (icosahedron subdivided {} times), rotations by j pi/{}, "
-        "3^9 perturbations each; for each theta, every angle up to it\n\n| theta | largest safe p |\n|---|---|\n",
-        axes, search.subdivisions, *options.curve);
-    animate::Progress progress("sam3d-existence", 100, progress_allowed(options.quiet));
-    const analysis::SafeCurve curve = analysis::largest_safe_perturbation_curve(
-        *options.curve, search, [&](double fraction) { progress.update(static_cast<int>(100.0 * fraction)); });
-    for (std::size_t k = 0; k < curve.thetas.size(); ++k) {
-      text += fmt::format("| {}pi/{} ({:.4f}) | {:.{}f} |\n", k, *options.curve, curve.thetas[k], curve.largest_p[k],
-                          search.p_step >= 0.01 ? 2 : 4);
+  analysis::Sam3dExistenceReportRequest request{search, thetas, theta_texts, options.p, options.curve};
+  std::string text;
+  {
+    std::optional<animate::Progress> progress;
+    if (const int units = analysis::sam3d_existence_report_units(request); units > 0) {
+      progress.emplace("sam3d-existence", units, progress_allowed(options.quiet));
     }
-  } else if (options.p) {
-    text += "| theta | p | every configuration has a SAM | a configuration without one |\n|---|---|---|---|\n";
-    for (std::size_t i = 0; i < thetas.size(); ++i) {
-      const auto failure = analysis::find_no_sam(thetas[i], *options.p, search);
-      text += fmt::format("| {} ({:.4f}) | {:g} | {} | {} |\n", theta_texts[i], thetas[i], *options.p,
-                          failure ? "no" : "yes", failure ? configuration_text(*failure) : "");
-    }
-  } else {
-    text += "| theta | largest safe p (ours) | paper's bound | | fails one step above at |\n|---|---|---|---|---|\n";
-    animate::Progress progress("sam3d-existence", static_cast<int>(thetas.size() * 100), progress_allowed(options.quiet));
-    for (std::size_t i = 0; i < thetas.size(); ++i) {
-      const analysis::SafePerturbation safe = analysis::largest_safe_perturbation(
-          thetas[i], search, [&](double fraction) { progress.update(static_cast<int>(100.0 * (static_cast<double>(i) + fraction))); });
-      std::string paper = "(none stated)", verdict;
-      for (const analysis::PaperExistenceBound& bound : analysis::paper_existence_bounds()) {
-        if (std::abs(bound.theta - thetas[i]) > 1e-12) continue;
-        paper = fmt::format("{:.2f}", bound.p);
-        verdict = std::abs(bound.p - safe.largest_p) <= search.p_step + 1e-12 ? "agrees"
-                                                                             : "differs: we keep our measurement";
-      }
-      text += fmt::format("| {} ({:.4f}) | {:.{}f} | {} | {} | {} |\n", theta_texts[i], thetas[i], safe.largest_p,
-                          search.p_step >= 0.01 ? 2 : 4, paper, verdict,
-                          safe.at_next ? configuration_text(*safe.at_next) : "(none up to p = 1)");
-    }
+    text = analysis::sam3d_existence_report(request, [&](int done) {
+      if (progress) progress->update(done);
+    });
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {

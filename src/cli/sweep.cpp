@@ -7,7 +7,8 @@
 
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
-#include "render/output_file.hpp"
+#include "cli/sweep_options.hpp"
+#include "io/output_file.hpp"
 #include "scene/scene.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/sweep.hpp"
@@ -61,6 +62,15 @@ Exit codes: 0 every variant written, 1 some variants failed (listed on stderr,
 every other variant still written) or --merge found variants missing, 2 bad usage
 or a bad base scene (nothing written), or another run writing DIR, 3 an output
 could not be written or DIR holds files a sweep did not write.)";
+}
+
+// The run's notes, then how its shard joins the others.
+void print_sweep_notes(const sweep::SweepSummary& summary, const sweep::SweepOptions& options) {
+  for (const std::string& note : summary.notes) std::cerr << "pita: " << note << '\n';
+  if (options.shard) {
+    std::cerr << fmt::format("pita: shard {}/{}: join the shards with pita sweep --merge {}\n", options.shard->first,
+                             options.shard->second, options.output);
+  }
 }
 
 }  // namespace
@@ -144,9 +154,9 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     options.vary = command.vary;
     options.zip = command.zip;
     options.output = *command.output;
-    options.formats = sweep::parse_output_kinds(command.formats);
+    options.formats = parse_output_kinds(command.formats);
     options.jobs = command.jobs.value_or(threads_from_environment());
-    if (command.shard) options.shard = sweep::parse_shard(*command.shard);
+    if (command.shard) options.shard = parse_shard(*command.shard);
     options.force = command.force;
     options.wait = command.wait;
     options.progress = progress_allowed(command.quiet);
@@ -159,9 +169,7 @@ ExitCode run_sweep_command(const SweepCommand& command) {
       std::cerr << fmt::format("pita: ... and {} more failed variants (manifest.csv lists them all)\n",
                                summary.failed - static_cast<std::int64_t>(kMaxListed));
     }
-    if (!command.quiet) {
-      for (const std::string& note : summary.notes) std::cerr << "pita: " << note << '\n';
-    }
+    if (!command.quiet) print_sweep_notes(summary, options);
     std::cout << fmt::format("{} variants: {} written, {} resumed, {} failed; see {}/{}\n", summary.variants,
                              summary.ok, summary.skipped, summary.failed, options.output,
                              options.shard ? fmt::format("manifest.{}-of-{}.csv", options.shard->first,
@@ -170,8 +178,11 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     if (summary.write_failed) return ExitCode::failure;
     return summary.failed > 0 ? ExitCode::golden_mismatch : ExitCode::success;
   } catch (const sweep::SweepUsageError& error) {
-    std::cerr << "pita: " << printable_text(error.what()) << '\n';
+    std::cerr << "pita: " << printable_text(sweep_error_message(error)) << '\n';
     return ExitCode::bad_input;
+  } catch (const sweep::SweepOutputError& error) {
+    std::cerr << "pita: " << printable_text(sweep_error_message(error)) << '\n';
+    return ExitCode::failure;
   } catch (...) {
     const Failure failure = current_failure(command.merge.value_or(command.scene_path.value_or("sweep")));
     std::cerr << "pita: " << failure.message << '\n';

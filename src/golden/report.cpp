@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 
 namespace pita::golden {
 
@@ -124,13 +124,13 @@ img { max-width: 420px; border: 1px solid #999; }
       std::string expected, actual, diff;
       if (!f.expected.empty()) {
         expected = e.check.name + ".expected.png";
-        render::write_file_atomically(dir / expected, f.expected);
+        io::write_file_atomically(dir / expected, f.expected);
       }
       actual = e.check.name + ".actual.png";
-      render::write_file_atomically(dir / actual, f.actual);
+      io::write_file_atomically(dir / actual, f.actual);
       if (!f.diff_png.empty() && f.verdict != Verdict::match) {
         diff = e.check.name + ".diff.png";
-        render::write_file_atomically(dir / diff, f.diff_png);
+        io::write_file_atomically(dir / diff, f.diff_png);
       }
       html += "<table><tr>" + image_cell(expected, "expected (golden)") +
               image_cell(actual, "actual") + image_cell(diff, "differing pixels in red") +
@@ -138,12 +138,12 @@ img { max-width: 420px; border: 1px solid #999; }
     }
     for (const FileCheck& f : e.check.files) {
       if (f.kind != FileKind::svg || f.verdict == Verdict::match) continue;
-      if (!f.expected.empty()) render::write_file_atomically(dir / (e.check.name + ".expected.svg"), f.expected);
-      render::write_file_atomically(dir / (e.check.name + ".actual.svg"), f.actual);
+      if (!f.expected.empty()) io::write_file_atomically(dir / (e.check.name + ".expected.svg"), f.expected);
+      io::write_file_atomically(dir / (e.check.name + ".actual.svg"), f.actual);
     }
   }
   html += "</body></html>\n";
-  render::write_file_atomically(dir / "index.html", html);
+  io::write_file_atomically(dir / "index.html", html);
 }
 
 }  // namespace pita::golden

@@ -13,10 +13,10 @@
 #include "animate/timeline.hpp"
 #include "core/affine_power.hpp"
 #include "golden/image_compare.hpp"
+#include "io/output_file.hpp"
 #include "motion/no_motion.hpp"
 #include "python/bindings.hpp"
 #include "render/image_cache.hpp"
-#include "render/output_file.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
 
@@ -138,7 +138,7 @@ void bind_errors(py::module_& m) {
       raise(t.animation, py::reinterpret_borrow<py::object>(t.animation)(e.what()));
     } catch (const golden::GoldenError& e) {
       raise(t.golden, py::reinterpret_borrow<py::object>(t.golden)(e.what()));
-    } catch (const render::OutputError& e) {
+    } catch (const io::OutputError& e) {
       raise(t.output, py::reinterpret_borrow<py::object>(t.output)(e.what()));
     } catch (const NoRealLogarithm& e) {
       raise(t.no_sam, py::reinterpret_borrow<py::object>(t.no_sam)(e.what(), e.what()));

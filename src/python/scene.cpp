@@ -4,10 +4,12 @@
 // Scene.eval is `pita eval`, render `pita render`, animate `pita animate`,
 // measure `pita measure --format json`, check `pita check`.
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -153,7 +155,10 @@ py::object animate_scene(const HeldScene& held, const py::object& out, std::opti
   request.scale = scale;
   request.progress = false;
   request.threads = std::clamp(threads, 1, 64);
-  request.ffmpeg = animate::find_ffmpeg();
+  const char* given = std::getenv("PITA_FFMPEG");  // the front end reads the environment, animate does not
+  const char* search_path = std::getenv("PATH");
+  request.ffmpeg = animate::find_ffmpeg(given ? std::optional<std::string_view>(given) : std::nullopt,
+                                        search_path ? std::optional<std::string_view>(search_path) : std::nullopt);
   animate::check_total_work(held.scene, timeline, request);
   std::vector<std::filesystem::path> written;
   {

@@ -5,8 +5,6 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -22,13 +20,15 @@
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
 #include "animate/timeline.hpp"
+#include "io/output_file.hpp"
 #include "motion/no_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
+#include "scene/json_text.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
-#include "render/output_file.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/json_edit.hpp"
 #include "serve/scene_edit.hpp"
@@ -96,10 +96,7 @@ class Server {
     Json claims = Json::array();
     std::string text;
     try {
-      {
-        std::ifstream in(state.path, std::ios::binary);
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-      }
+      text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
       scene = std::make_shared<const scene::Scene>(
           scene::parse_scene(text, state.path.string(), {settings_.allow_absolute_paths}));
       const motion::Stage stage(*scene);
@@ -229,10 +226,7 @@ class Server {
   Json edit(std::size_t i, const Json& request) {
     const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
     const fs::path path = scenes_[i]->path;
-    std::ifstream in(path, std::ios::binary);
-    in.exceptions(std::ios::goodbit);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw std::invalid_argument("cannot read " + path.string());
+    const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
     std::vector<Change> changes;
     if (request.contains("drag")) {
       const Json& d = request.at("drag");
@@ -268,7 +262,7 @@ class Server {
     // The file itself (through a link, its target), with the permissions it had.
     const fs::path target = fs::canonical(path);
     const fs::perms permissions = fs::status(target).permissions();
-    render::write_file_atomically(target, edited);
+    io::write_file_atomically(target, edited);
     fs::permissions(target, permissions);
     return Json{{"previous", previous}};
   }

@@ -33,8 +33,8 @@ std::string definition_json(const Definition& d) {
 Definition read_definition(const fs::path& dir) {
   std::ifstream in(dir / kSweepFile, std::ios::binary);
   if (!in) {
-    throw SweepUsageError(fmt::format("--merge {}: no {} there: it is not the output folder of a pita sweep",
-                                      dir.string(), kSweepFile));
+    throw SweepUsageError(About{Input::merge, dir.string()},
+                          fmt::format("no {} there: it is not the output folder of a pita sweep", kSweepFile));
   }
   std::stringstream text;
   text << in.rdbuf();
@@ -56,8 +56,8 @@ Definition read_definition(const fs::path& dir) {
     if (d.variants < 0 || d.variants > kMaxVariants) throw std::runtime_error("bad variant count");
     return d;
   } catch (const std::exception& error) {
-    throw SweepUsageError(fmt::format("--merge {}: {} is not a sweep definition ({})", dir.string(),
-                                      (dir / kSweepFile).string(), error.what()));
+    throw SweepUsageError(About{Input::merge, dir.string()},
+                          fmt::format("{} is not a sweep definition ({})", (dir / kSweepFile).string(), error.what()));
   }
 }
 

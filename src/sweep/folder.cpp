@@ -14,7 +14,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/grid.hpp"
 
@@ -77,38 +77,40 @@ std::string first_foreign_entry(const fs::path& dir) {
 
 }  // namespace
 
-void claim_folder(const fs::path& dir, const std::string& option, const fs::path& base_scene) {
+void claim_folder(const fs::path& dir, const std::string& given, const fs::path& base_scene) {
+  const About about{Input::output, given};
   std::error_code error;
   const fs::file_status status = fs::symlink_status(dir, error);
   if (fs::exists(status) && !fs::is_directory(fs::status(dir, error))) {
-    throw SweepUsageError(fmt::format("{}: cannot create the output folder (a file of that name exists)", option));
+    throw SweepUsageError(about, "cannot create the output folder (a file of that name exists)");
   }
   fs::create_directories(dir, error);
   if (error || !fs::is_directory(dir)) {
-    throw SweepUsageError(fmt::format("{}: cannot create the output folder ({})", option,
-                                      error ? error.message() : "a file of that name exists"));
+    throw SweepUsageError(about, fmt::format("cannot create the output folder ({})",
+                                             error ? error.message() : "a file of that name exists"));
   }
   if (fs::equivalent(dir / kSweepFile, base_scene, error)) {
-    throw render::OutputError(fmt::format("{}: cannot write: the sweep's definition {} would replace the base scene "
-                                          "{}; give another output folder",
-                                          option, (dir / kSweepFile).string(), base_scene.string()));
+    throw SweepOutputError(about, fmt::format("cannot write: the sweep's definition {} would replace the base scene "
+                                              "{}; give another output folder",
+                                              (dir / kSweepFile).string(), base_scene.string()));
   }
   if (!is_sweep_folder(dir)) {
     if (const std::string other = first_foreign_entry(dir); !other.empty()) {
-      throw render::OutputError(fmt::format(
-          "{}: cannot write: the folder holds files that a sweep did not write ({} among them; a sweep's folder "
-          "has a {} file); give a new or empty folder, so that nothing of yours is replaced",
-          option, other, kFolderMarker));
+      throw SweepOutputError(
+          about, fmt::format("cannot write: the folder holds files that a sweep did not write ({} among them; a "
+                             "sweep's folder has a {} file); give a new or empty folder, so that nothing of yours "
+                             "is replaced",
+                             other, kFolderMarker));
     }
-    render::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
+    io::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
   }
 }
 
-FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const std::string& option, bool wait) {
+FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, About about, bool wait) {
   const fs::path path = dir / ("." + manifest + ".lock");
   fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0666);
   if (fd_ < 0) {
-    throw render::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
+    throw io::OutputError(fmt::format("{}: cannot create the lock file ({})", path.string(), std::strerror(errno)));
   }
   if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
     if (errno == ENOSYS || errno == EOPNOTSUPP || errno == ENOLCK) {
@@ -123,7 +125,7 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
     if (errno != EWOULDBLOCK) {
       const int saved = errno;
       ::close(fd_);
-      throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+      throw io::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
     }
     if (!wait) {
       char text[32] = {};
@@ -132,15 +134,16 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, const s
       while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
       ::close(fd_);
       fd_ = -1;
-      throw SweepUsageError(fmt::format(
-          "{}: another pita sweep ({}) is writing {} there; wait for it to finish, or give --wait to wait for it",
-          option, pid.empty() ? std::string("its PID unknown") : "PID " + pid, manifest));
+      about.remedy = Input::wait;
+      throw SweepUsageError(std::move(about),
+                            fmt::format("another pita sweep ({}) is writing {} there; wait for it to finish",
+                                        pid.empty() ? std::string("its PID unknown") : "PID " + pid, manifest));
     }
     while (::flock(fd_, LOCK_EX) != 0) {
       if (errno != EINTR) {
         const int saved = errno;
         ::close(fd_);
-        throw render::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
+        throw io::OutputError(fmt::format("{}: cannot lock ({})", path.string(), std::strerror(saved)));
       }
     }
   }

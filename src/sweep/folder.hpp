@@ -10,23 +10,29 @@
 #include <functional>
 #include <string>
 
+#include "io/output_file.hpp"
+#include "sweep/grid.hpp"
+
 namespace pita::sweep {
 
 // The marker of a folder that a sweep made.
 inline constexpr std::string_view kFolderMarker = ".pita-sweep";
 
+// An output refused for the folder a sweep was given (exit 3), about its input.
+using SweepOutputError = AboutInput<io::OutputError>;
+
 // Creates DIR when missing and marks it as a sweep's. Throws
-// render::OutputError (exit 3) when DIR holds files and is not a sweep's
+// SweepOutputError (exit 3) when DIR holds files and is not a sweep's
 // folder, or when its sweep.json is the base scene itself; SweepUsageError
-// when DIR cannot be created. `option` names DIR in messages ("-o out").
-void claim_folder(const std::filesystem::path& dir, const std::string& option,
-                  const std::filesystem::path& base_scene);
+// when DIR cannot be created. `given`: DIR as the user gave it (the output).
+void claim_folder(const std::filesystem::path& dir, const std::string& given, const std::filesystem::path& base_scene);
 
 // Holds the lock of DIR/<manifest> while it lives. Another holder: throws
-// SweepUsageError (exit 2) naming its PID, or with `wait` waits for it.
+// SweepUsageError (exit 2) naming its PID, about `about` with the remedy
+// wait, or with `wait` waits for it.
 class FolderLock {
  public:
-  FolderLock(const std::filesystem::path& dir, const std::string& manifest, const std::string& option, bool wait);
+  FolderLock(const std::filesystem::path& dir, const std::string& manifest, About about, bool wait);
   ~FolderLock();
   FolderLock(const FolderLock&) = delete;
   FolderLock& operator=(const FolderLock&) = delete;

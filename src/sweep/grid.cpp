@@ -11,6 +11,9 @@ namespace pita::sweep {
 
 namespace {
 
+// What an error about the argument `argument` of an axis names.
+About about_vary(std::string_view argument) { return About(Input::vary, std::string(argument)); }
+
 // Integral values within 2^53 become JSON integers, so that a swept count
 // ("/samples") reads as an integer and "0:1:3" sets 0, 0.5 and 1.
 Json number_value(double v) {
@@ -29,7 +32,7 @@ bool parse_double(std::string_view text, double& out) {
 double finite_number(std::string_view text, std::string_view argument, std::string_view what) {
   double v = 0;
   if (!parse_double(text, v) || !std::isfinite(v)) {
-    throw SweepUsageError(fmt::format("--vary {}: {} must be a finite number (got \"{}\")", argument, what, text));
+    throw SweepUsageError(about_vary(argument), fmt::format("{} must be a finite number (got \"{}\")", what, text));
   }
   return v;
 }
@@ -38,11 +41,13 @@ std::int64_t count(std::string_view text, std::string_view argument) {
   std::int64_t n = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), n);
   if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-    throw SweepUsageError(fmt::format("--vary {}: the count n must be a whole number >= 1 (got \"{}\")", argument, text));
+    throw SweepUsageError(about_vary(argument),
+                          fmt::format("the count n must be a whole number >= 1 (got \"{}\")", text));
   }
-  if (n < 1) throw SweepUsageError(fmt::format("--vary {}: the count n must be >= 1 (got {})", argument, n));
+  if (n < 1) throw SweepUsageError(about_vary(argument), fmt::format("the count n must be >= 1 (got {})", n));
   if (n > kMaxVariants) {
-    throw SweepUsageError(fmt::format("--vary {}: the count n must be at most {} (got {})", argument, kMaxVariants, n));
+    throw SweepUsageError(about_vary(argument),
+                          fmt::format("the count n must be at most {} (got {})", kMaxVariants, n));
   }
   return n;
 }
@@ -77,7 +82,7 @@ std::vector<std::string_view> split_list(std::string_view text, std::string_view
       start = i + 1;
     }
   }
-  if (quoted) throw SweepUsageError(fmt::format("--vary {}: a quoted value is not closed", argument));
+  if (quoted) throw SweepUsageError(about_vary(argument), "a quoted value is not closed");
   items.push_back(text.substr(start));
   return items;
 }
@@ -108,7 +113,8 @@ void check_printable(const std::string& text, std::string_view item) {
   for (const char c : text) {
     const auto u = static_cast<unsigned char>(c);
     if ((u < 0x20 && c != '\t' && c != '\n') || u == 0x7f) {
-      throw SweepUsageError(fmt::format("--vary: {} contains the control character U+{:04X}: a swept string must be "
+      throw SweepUsageError(About{Input::vary},
+                            fmt::format("{} contains the control character U+{:04X}: a swept string must be "
                                         "printable text",
                                         printable_item(item), static_cast<unsigned>(u)));
     }
@@ -120,23 +126,24 @@ void check_printable(const std::string& text, std::string_view item) {
 Axis parse_axis(std::string_view argument) {
   const std::size_t equals = argument.find('=');
   if (equals == std::string_view::npos) {
-    throw SweepUsageError(fmt::format("--vary {}: expected POINTER=SPEC, for example /keyframes/1/t=0.2:0.8:7", argument));
+    throw SweepUsageError(about_vary(argument), "expected POINTER=SPEC, for example /keyframes/1/t=0.2:0.8:7");
   }
   Axis axis;
   axis.pointer = std::string(argument.substr(0, equals));
   axis.spec = std::string(argument.substr(equals + 1));
   if (axis.pointer.empty() || axis.pointer.front() != '/') {
-    throw SweepUsageError(fmt::format("--vary {}: the pointer must be a JSON Pointer starting with '/' (got \"{}\")",
-                                      argument, axis.pointer));
+    throw SweepUsageError(
+        about_vary(argument),
+        fmt::format("the pointer must be a JSON Pointer starting with '/' (got \"{}\")", axis.pointer));
   }
   try {
     (void)Json::json_pointer(axis.pointer);
   } catch (const Json::exception& error) {
-    throw SweepUsageError(fmt::format("--vary {}: \"{}\" is not a JSON Pointer ({})", argument, axis.pointer,
-                                      error.what()));
+    throw SweepUsageError(about_vary(argument),
+                          fmt::format("\"{}\" is not a JSON Pointer ({})", axis.pointer, error.what()));
   }
   const std::string_view spec = argument.substr(equals + 1);
-  if (spec.empty()) throw SweepUsageError(fmt::format("--vary {}: the SPEC after '=' is empty", argument));
+  if (spec.empty()) throw SweepUsageError(about_vary(argument), "the SPEC after '=' is empty");
   const std::vector<std::string_view> colon = split(spec, ':');
   const bool geometric = colon.size() == 4 && colon[0] == "log";
   const bool has_quotes = spec.find('"') != std::string_view::npos;  // a list of JSON strings
@@ -146,14 +153,14 @@ Axis parse_axis(std::string_view argument) {
     const double b = finite_number(colon[k + 1], argument, "b");
     const std::int64_t n = count(colon[k + 2], argument);
     if (geometric && !(a * b > 0)) {
-      throw SweepUsageError(fmt::format("--vary {}: log:a:b:n needs a and b of one sign and not 0 (got {} and {})",
-                                        argument, a, b));
+      throw SweepUsageError(about_vary(argument),
+                            fmt::format("log:a:b:n needs a and b of one sign and not 0 (got {} and {})", a, b));
     }
     // Every value between the ends must be a finite number too.
     // (A geometric axis steps in logarithms, so log:1e-300:1e300:5 is fine.)
     if (!geometric && !std::isfinite(b - a)) {
-      throw SweepUsageError(fmt::format("--vary {}: the values between {} and {} are not all finite numbers",
-                                        argument, a, b));
+      throw SweepUsageError(about_vary(argument),
+                            fmt::format("the values between {} and {} are not all finite numbers", a, b));
     }
     axis.kind = geometric ? Axis::Kind::geometric : Axis::Kind::linear;
     axis.a = a;
@@ -162,11 +169,13 @@ Axis parse_axis(std::string_view argument) {
     return axis;
   }
   if (colon.size() != 1 && spec.find(',') == std::string_view::npos && !has_quotes) {
-    throw SweepUsageError(fmt::format("--vary {}: SPEC must be a:b:n, log:a:b:n or a list v1,v2,... (got \"{}\")",
-                                      argument, spec));
+    throw SweepUsageError(about_vary(argument),
+                          fmt::format("SPEC must be a:b:n, log:a:b:n or a list v1,v2,... (got \"{}\")", spec));
   }
   for (const std::string_view item : split_list(spec, argument)) {
-    if (item.empty()) throw SweepUsageError(fmt::format("--vary {}: an empty value in the list \"{}\"", argument, spec));
+    if (item.empty()) {
+      throw SweepUsageError(about_vary(argument), fmt::format("an empty value in the list \"{}\"", spec));
+    }
     if (item.front() == '"') {
       // A JSON string: any text, commas and quotes included ("1" is a string).
       try {
@@ -174,7 +183,7 @@ Axis parse_axis(std::string_view argument) {
         if (!parsed.is_string()) throw std::runtime_error("not a string");
         axis.items.push_back(parsed);
       } catch (const std::exception&) {
-        throw SweepUsageError(fmt::format("--vary {}: {} is not a JSON string", argument, item));
+        throw SweepUsageError(about_vary(argument), fmt::format("{} is not a JSON string", item));
       }
       check_printable(axis.items.back().get_ref<const std::string&>(), item);
       continue;
@@ -203,20 +212,20 @@ Json Axis::value(std::size_t i) const {
 }
 
 Grid::Grid(std::vector<Axis> axes, bool zip) : axes_(std::move(axes)), zip_(zip) {
-  if (axes_.empty()) throw SweepUsageError("give at least one --vary POINTER=SPEC");
+  if (axes_.empty()) throw SweepUsageError(About{Input::vary}, "give at least one POINTER=SPEC");
   std::set<std::string> seen;
   for (const Axis& axis : axes_) {
     if (!seen.insert(axis.pointer).second) {
-      throw SweepUsageError(fmt::format("--vary: the pointer {} is varied twice", axis.pointer));
+      throw SweepUsageError(About{Input::vary}, fmt::format("the pointer {} is varied twice", axis.pointer));
     }
   }
   if (zip_) {
     for (const Axis& axis : axes_) {
       if (axis.size() != axes_.front().size()) {
-        throw SweepUsageError(fmt::format("--zip pairs values one by one, so every --vary needs as many: {} has {}, "
-                                          "{} has {}",
-                                          axes_.front().pointer, axes_.front().size(), axis.pointer,
-                                          axis.size()));
+        throw SweepUsageError(About{Input::zip},
+                              fmt::format("values are paired one by one, so every axis needs as "
+                                          "many: {} has {}, {} has {}",
+                                          axes_.front().pointer, axes_.front().size(), axis.pointer, axis.size()));
       }
     }
     size_ = static_cast<std::int64_t>(axes_.front().size());
@@ -228,7 +237,8 @@ Grid::Grid(std::vector<Axis> axes, bool zip) : axes_(std::move(axes)), zip_(zip)
     if (size_ > kMaxVariants / n) {
       std::string sizes;
       for (const Axis& a : axes_) sizes += fmt::format("{}{}", sizes.empty() ? "" : " x ", a.size());
-      throw SweepUsageError(fmt::format("--vary: {} variants is more than the limit of {}; sweep fewer values or "
+      throw SweepUsageError(About{Input::vary},
+                            fmt::format("{} variants is more than the limit of {}; sweep fewer values or "
                                         "split the sweep",
                                         sizes, kMaxVariants));
     }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,11 +19,43 @@ namespace pita::sweep {
 
 using Json = nlohmann::ordered_json;
 
-// Bad usage of pita sweep (exit 2): the message names the option and what is wrong.
-class SweepUsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
+// The inputs of a sweep that its errors are about. A front end names each in
+// its own words (the CLI: --vary, --zip, -o, --jobs, --merge, --shard, --wait,
+// --force; cli/sweep_options.cpp): no message of src/sweep names an option.
+enum class Input { none, vary, zip, output, jobs, merge, shard, wait, force };
+
+// What an error of a sweep is about: the input and the argument given for it
+// ("/keyframes/1/t=0:1:3", "out"), and the input that would let it pass (wait,
+// force) or make what is missing (shard), which a front end may suggest.
+struct About {
+  About() = default;
+  explicit About(Input about, std::string given = {}, Input would_pass = Input::none)
+      : input(about), argument(std::move(given)), remedy(would_pass) {}
+  Input input = Input::none;
+  std::string argument;
+  Input remedy = Input::none;
 };
+
+// An error of `Base` about an input: what() is "ARGUMENT: REASON" (REASON
+// when no argument is given); a front end names the input before it.
+template <class Base>
+class AboutInput : public Base {
+ public:
+  explicit AboutInput(const std::string& reason) : Base(reason), reason_(reason) {}
+  AboutInput(About about, const std::string& reason)
+      : Base(about.argument.empty() ? reason : about.argument + ": " + reason),
+        about_(std::move(about)),
+        reason_(reason) {}
+  const About& about() const { return about_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  About about_;
+  std::string reason_;
+};
+
+// Bad usage of pita sweep (exit 2).
+using SweepUsageError = AboutInput<std::runtime_error>;
 
 // The largest sweep: product (or zipped length) of the axes.
 inline constexpr std::int64_t kMaxVariants = 10'000'000;

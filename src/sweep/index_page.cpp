@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "sweep/folder.hpp"
 #include "sweep/manifest.hpp"
 
@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Data files written in one pass over the manifest, at most (each holds a
-// buffer and a slot of render::InFlightReservation); more columns take more passes.
+// buffer and a slot of io::InFlightReservation); more columns take more passes.
 constexpr std::size_t kColumnsPerPass = 16;
 // A column file's write buffer: small, since kColumnsPerPass are open at once.
 constexpr std::size_t kColumnBuffer = std::size_t{64} << 10;
@@ -306,20 +306,20 @@ std::string write_index_html(const SheetInput& input) {
   std::error_code error;
   fs::create_directories(data, error);
   if (error) {
-    throw render::OutputError(fmt::format("{}: cannot create the folder ({})", data.string(), error.message()));
+    throw io::OutputError(fmt::format("{}: cannot create the folder ({})", data.string(), error.message()));
   }
   const std::vector<Column> columns = columns_of(input);
   std::int64_t count = 0, failed = 0;
   // Pass p writes the columns [p * kColumnsPerPass, ...), the first also the rows files.
   for (std::size_t from = 0; from < columns.size(); from += kColumnsPerPass) {
     const std::size_t to = std::min(columns.size(), from + kColumnsPerPass);
-    std::vector<std::unique_ptr<render::StreamingOutput>> outs;
+    std::vector<std::unique_ptr<io::StreamingOutput>> outs;
     for (std::size_t c = from; c < to; ++c) {
-      outs.push_back(std::make_unique<render::StreamingOutput>(data / fmt::format("column-{}.js", columns[c].key),
+      outs.push_back(std::make_unique<io::StreamingOutput>(data / fmt::format("column-{}.js", columns[c].key),
                                                                kColumnBuffer));
       outs.back()->write(fmt::format("pitaColumn(\"{}\",[", columns[c].key));
     }
-    std::optional<render::StreamingOutput> rows_file;
+    std::optional<io::StreamingOutput> rows_file;
     std::int64_t position = 0;
     std::string text;
     std::optional<ManifestReader> reader = ManifestReader::open(input.dir / "manifest.csv", input.pointers);
@@ -405,7 +405,7 @@ std::string write_index_html(const SheetInput& input) {
   out += fmt::format("<script>const sweep = {};</script>\n", meta_text);
   out += kScript;
   out += "</body></html>\n";
-  render::write_file_atomically(input.dir / "index.html", out);
+  io::write_file_atomically(input.dir / "index.html", out);
   return "";
 }
 

@@ -90,7 +90,7 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
     const int saved = errno;
     std::error_code ignored;
     if (!std::filesystem::exists(path, ignored)) return std::nullopt;
-    throw render::OutputError(fmt::format("{}: cannot read ({})", path.string(), std::strerror(saved)));
+    throw io::OutputError(fmt::format("{}: cannot read ({})", path.string(), std::strerror(saved)));
   }
   reader.path_ = path.string();
   reader.pointers_ = pointers.size();
@@ -102,7 +102,7 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
     std::string expected = "index";
     for (const std::string& p : pointers) expected += "," + p;
     throw std::runtime_error(fmt::format("{}: not the manifest of this sweep (its header does not start with {}); "
-                                         "use another -o folder, or remove it",
+                                         "use another output folder, or remove it",
                                          path.string(), expected));
   }
   return reader;

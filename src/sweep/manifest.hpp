@@ -19,7 +19,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 
 namespace pita::sweep {
 
@@ -53,7 +53,7 @@ void append_row(std::string& out, const Row& row);
 // of variants resumes and merges from.
 class ManifestReader {
  public:
-  // nullopt when the file does not exist. Throws render::OutputError naming
+  // nullopt when the file does not exist. Throws io::OutputError naming
   // the file when it exists but cannot be opened, std::runtime_error when its
   // header is not that of these pointers; `headless`: a journal, rows only.
   static std::optional<ManifestReader> open(const std::filesystem::path& path, const std::vector<std::string>& pointers,
@@ -119,7 +119,7 @@ enum class SameIndex {
 template <typename Accept, typename OnRow>
 void merge_sources(const std::filesystem::path& path, const std::vector<std::string>& pointers,
                    std::vector<ManifestReader>& sources, Accept accept, OnRow on_row, SameIndex same) {
-  render::StreamingOutput out(path);
+  io::StreamingOutput out(path);
   out.write(manifest_header(pointers));
   std::vector<std::optional<Row>> heads(sources.size());
   std::vector<std::int64_t> last(sources.size(), -1);
@@ -153,7 +153,7 @@ void merge_sources(const std::filesystem::path& path, const std::vector<std::str
       if (!heads[s] || heads[s]->index != *least) continue;
       if (best && same == SameIndex::refuse_conflict && !(*heads[s] == *heads[*best])) {
         throw std::runtime_error(fmt::format("variant {} has two different rows, {} and {}: remove the part that is "
-                                             "stale (a run with another --shard N?) and merge again",
+                                             "stale (a run split into another number of shards?) and merge again",
                                              *least, sources[*best].where(), sources[s].where()));
       }
       best = s;

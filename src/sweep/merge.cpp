@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/folder.hpp"
 #include "sweep/manifest.hpp"
@@ -41,9 +41,10 @@ void ensure_open_files(std::size_t parts, const std::string& dir_text) {
     if (::setrlimit(RLIMIT_NOFILE, &raised) == 0) limit = raised;
   }
   if (limit.rlim_cur != RLIM_INFINITY && limit.rlim_cur < needed) {
-    throw SweepUsageError(fmt::format("--merge {}: its {} parts need {} open files, more than this process may open "
-                                      "({}, the hard limit of ulimit -n); merge fewer, larger shards (a smaller N)",
-                                      dir_text, parts, needed, limit.rlim_cur));
+    throw SweepUsageError(About{Input::merge, dir_text},
+                          fmt::format("its {} parts need {} open files, more than this process may open ({}, the hard "
+                                      "limit of ulimit -n); merge fewer, larger shards (a smaller N)",
+                                      parts, needed, limit.rlim_cur));
   }
 }
 
@@ -52,7 +53,7 @@ void ensure_open_files(std::size_t parts, const std::string& dir_text) {
 MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   const fs::path dir(dir_text);
   const Definition definition = read_definition(dir);
-  const FolderLock lock(dir, manifest_name(std::nullopt), "--merge " + dir_text, wait);
+  const FolderLock lock(dir, manifest_name(std::nullopt), About{Input::merge, dir_text}, wait);
   const std::vector<std::string> pointers = pointers_of(definition);
   // The sweep again, from its definition: each row of the parts must be its
   // variant (same values, same content hash), else it is another sweep's.
@@ -60,8 +61,9 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   for (const auto& [pointer, spec] : definition.axes) axes.push_back(parse_axis(pointer + "=" + spec));
   const Grid grid(std::move(axes), definition.zip);
   if (grid.size() != definition.variants) {
-    throw SweepUsageError(fmt::format("--merge {}: {} does not add up ({} variants, its axes make {})", dir_text,
-                                      kSweepFile, definition.variants, grid.size()));
+    throw SweepUsageError(About{Input::merge, dir_text},
+                          fmt::format("{} does not add up ({} variants, its axes make {})", kSweepFile,
+                                      definition.variants, grid.size()));
   }
   const BaseScene base{definition.scene, definition.base};
   MergeSummary summary;
@@ -88,16 +90,14 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   std::vector<std::int64_t> missing_in_shard(
       summary.shards > 0 && summary.shards <= kMaxShardsCounted ? static_cast<std::size_t>(summary.shards) : 0, 0);
   if (parts.empty()) {
-    throw SweepUsageError(fmt::format("--merge {}: no manifest.K-of-N.csv there (run the shards with --shard K/N "
-                                      "-o {} first)",
-                                      dir_text, dir_text));
+    throw SweepUsageError(About{Input::merge, dir_text, Input::shard}, "no manifest.K-of-N.csv there");
   }
   ensure_open_files(parts.size(), dir_text);
   std::vector<ManifestReader> sources;
   for (const fs::path& part : parts) {
     try {
       if (!ManifestReader::open(part, pointers)) continue;
-    } catch (const render::OutputError&) {  // there, but cannot be read: never left out
+    } catch (const io::OutputError&) {  // there, but cannot be read: never left out
       throw;
     } catch (const std::runtime_error& e) {  // the header of another sweep
       summary.notes.push_back(fmt::format("{} ignored: {}", part.filename().string(), e.what()));
@@ -114,10 +114,10 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
         sources.push_back(std::move(*reader));
         summary.parts.push_back(part.filename().string());
       }
-    } catch (const render::OutputError&) {
+    } catch (const io::OutputError&) {
       throw;
     } catch (const std::runtime_error& e) {
-      throw SweepUsageError(fmt::format("--merge: {}", e.what()));
+      throw SweepUsageError(About{Input::merge}, e.what());
     }
   }
   const auto accept = [&](const Row& row, std::size_t) {
@@ -151,8 +151,8 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   try {
     merge_sources(dir / "manifest.csv", pointers, sources, accept, on_row, SameIndex::refuse_conflict);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const render::OutputError*>(&e) != nullptr) throw;
-    throw SweepUsageError(fmt::format("--merge: {}", e.what()));
+    if (dynamic_cast<const io::OutputError*>(&e) != nullptr) throw;
+    throw SweepUsageError(About{Input::merge}, e.what());
   }
   missing(expected, definition.variants);
   for (std::size_t k = 0; k < missing_in_shard.size() && summary.missing_shards.size() < kMaxRangesKept; ++k) {

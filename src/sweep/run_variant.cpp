@@ -11,11 +11,11 @@
 #include <fmt/format.h>
 
 #include "analysis/measure.hpp"
+#include "io/output_file.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
-#include "render/output_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "sweep/variant.hpp"
@@ -170,9 +170,9 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
     } else {
       outcome.metrics_skipped = true;
     }
-    render::write_files_atomically(files);
+    io::write_files_atomically(files);
     row.status = "ok";
-  } catch (const render::OutputError& error) {
+  } catch (const io::OutputError& error) {
     row.status = fmt::format("cannot write: {}", error.what());
     row.outputs.clear();
     write_failed = true;
@@ -186,9 +186,9 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
     remove_outputs(job.dir, job.name, index, variants);
     // The failed variant's scene stays, to reproduce the error by hand.
     try {
-      render::write_file_atomically(job.dir / scene_file, text);
+      io::write_file_atomically(job.dir / scene_file, text);
       row.outputs.push_back(scene_file);
-    } catch (const render::OutputError&) {
+    } catch (const io::OutputError&) {
       write_failed = true;
     }
   }

@@ -13,10 +13,10 @@
 #include <cairo.h>
 #include <fmt/format.h>
 
+#include "io/output_file.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
 #include "render/cairo_handles.hpp"
-#include "render/output_file.hpp"
 #include "render/painter.hpp"
 #include "render/png_writer.hpp"
 #include "scene/scene.hpp"
@@ -144,7 +144,7 @@ class SheetPainter {
       why += fmt::format("{}contact.png not drawn: cairo: {}", why.empty() ? "" : "; ",
                          cairo_status_to_string(png_status));
     }
-    render::write_files_atomically(files);
+    io::write_files_atomically(files);
     return why;
   }
 

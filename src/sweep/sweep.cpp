@@ -18,8 +18,8 @@
 
 #include "animate/progress.hpp"
 #include "core/worker_pool.hpp"
-#include "render/interrupt.hpp"
-#include "render/output_file.hpp"
+#include "io/interrupt.hpp"
+#include "io/output_file.hpp"
 #include "scene/scene.hpp"
 #include "sweep/definition.hpp"
 #include "sweep/folder.hpp"
@@ -62,43 +62,6 @@ std::string failure_line(const std::vector<std::string>& pointers, const Row& ro
 
 }  // namespace
 
-std::vector<OutputKind> parse_output_kinds(const std::string& text) {
-  std::vector<OutputKind> kinds;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const std::optional<OutputKind> found = output_kind_named(item);
-    if (!found) {
-      throw SweepUsageError(fmt::format("--format: \"{}\" is not an output (use svg, png, pdf, csv, json or metrics, "
-                                        "comma-separated: --format svg,csv)",
-                                        item));
-    }
-    if (std::find(kinds.begin(), kinds.end(), *found) == kinds.end()) kinds.push_back(*found);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return kinds;
-}
-
-std::pair<int, int> parse_shard(const std::string& text) {
-  const std::size_t slash = text.find('/');
-  const auto digits = [](std::string_view t) {
-    return !t.empty() && t.size() <= 9 && t.find_first_not_of("0123456789") == std::string_view::npos;
-  };
-  if (slash == std::string::npos || !digits(std::string_view(text).substr(0, slash)) ||
-      !digits(std::string_view(text).substr(slash + 1))) {
-    throw SweepUsageError(fmt::format("--shard: expected K/N with whole numbers 0 <= K < N, for example 0/4 "
-                                      "(got \"{}\")",
-                                      text));
-  }
-  const int k = std::stoi(text.substr(0, slash)), n = std::stoi(text.substr(slash + 1));
-  if (n < 1 || k >= n) {
-    throw SweepUsageError(fmt::format("--shard {}: K must be in 0..N-1 and N >= 1 (got K = {}, N = {})", text, k, n));
-  }
-  return {k, n};
-}
-
 std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>>& ranges) {
   std::string out;
   for (const auto& [first, last] : ranges) {
@@ -113,7 +76,7 @@ namespace {
 // sweep did not write (folder.hpp).
 fs::path output_folder(const SweepOptions& options) {
   const fs::path dir(options.output);
-  claim_folder(dir, "-o " + options.output, options.scene_path);
+  claim_folder(dir, options.output, options.scene_path);
   return dir;
 }
 
@@ -174,20 +137,15 @@ class SweepRun {
   SweepSummary run() {
     // One run per manifest at a time; then what a killed run of this shard
     // left half-written goes.
-    const FolderLock lock(dir_, manifest_name(options_.shard), "-o " + options_.output, options_.wait);
+    const FolderLock lock(dir_, manifest_name(options_.shard), About{Input::output, options_.output}, options_.wait);
     remove_stale_temporaries(dir_, [this](const std::string& target) { return stale_is_mine(target); });
     if (!options_.force) resume();
     std::error_code ignored;
     fs::remove(journal_path_, ignored);
-    render::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
+    io::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
     run_variants();
     write_manifest();
-    if (options_.shard) {
-      summary_.notes.push_back(fmt::format("shard {}/{}: join the shards with pita sweep --merge {}", shard_k_,
-                                           shard_n_, options_.output));
-    } else {
-      write_reports(dir_, definition_, summary_.notes);
-    }
+    if (!options_.shard) write_reports(dir_, definition_, summary_.notes);
     return summary_;
   }
 
@@ -216,8 +174,7 @@ class SweepRun {
     return in_shard(variant_index_of(target, definition_.name));
   }
   [[noreturn]] void refuse_folder(const std::runtime_error& error) const {
-    throw SweepUsageError(
-        fmt::format("-o {}: {} (or --force to start this sweep over there)", options_.output, error.what()));
+    throw SweepUsageError(About{Input::output, options_.output, Input::force}, error.what());
   }
 
   // Resume: the valid rows of an earlier run (its manifest, or the journal of
@@ -228,7 +185,7 @@ class SweepRun {
     std::optional<ManifestReader> old;
     try {
       old = ManifestReader::open(manifest_path_, pointers_);
-    } catch (const render::OutputError&) {
+    } catch (const io::OutputError&) {
       throw;  // there, but cannot be read (exit 3)
     } catch (const std::runtime_error& error) {
       refuse_folder(error);
@@ -255,7 +212,7 @@ class SweepRun {
             ++summary_.skipped;
           }
         }
-      } catch (const render::OutputError&) {
+      } catch (const io::OutputError&) {
         throw;
       } catch (const std::runtime_error& error) {
         refuse_folder(error);
@@ -298,7 +255,7 @@ class SweepRun {
   void run_variants() {
     std::FILE* journal = std::fopen(journal_path_.c_str(), "w");
     if (journal == nullptr) {
-      throw render::OutputError(fmt::format("{}: cannot write ({})", journal_path_.string(), std::strerror(errno)));
+      throw io::OutputError(fmt::format("{}: cannot write ({})", journal_path_.string(), std::strerror(errno)));
     }
     struct Closer {
       std::FILE* file;
@@ -328,7 +285,7 @@ class SweepRun {
     const auto work = static_cast<int>(std::min<std::int64_t>(mine_ - summary_.skipped, INT32_MAX));
     animate::Progress progress("pita sweep", work, options_.progress, true);
     {
-      const render::DeferredInterrupts deferred;
+      const io::DeferredInterrupts deferred;
       PoolOptions pool;
       pool.threads = static_cast<int>(std::min<std::int64_t>(options_.jobs, std::max<std::int64_t>(mine_, 1)));
       // Rows finished ahead of an earlier, slower variant wait in memory: at
@@ -337,14 +294,15 @@ class SweepRun {
       pool.window = std::max<std::int64_t>(kRowsAhead, 64 * static_cast<std::int64_t>(pool.threads));
       const auto tick = [&] {
         progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
-        return render::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
+        return io::pending_interrupt() == 0;  // a signal: stop, keep what is journaled
       };
       try {
         run_ordered(
             mine_, pool, [this](std::int64_t j, const std::atomic<bool>&) { return produce(j); }, journal_row,
             tick);
       } catch (const std::system_error& error) {
-        throw SweepUsageError(fmt::format("--jobs {}: cannot start a thread ({})", options_.jobs, error.what()));
+        throw SweepUsageError(About{Input::jobs, std::to_string(options_.jobs)},
+                              fmt::format("cannot start a thread ({})", error.what()));
       }
     }
     progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
@@ -361,7 +319,7 @@ class SweepRun {
   // left out: their variants are done again). Then the journal goes; a
   // pending signal ends the process here.
   void write_manifest() {
-    const int sig = render::pending_interrupt();
+    const int sig = io::pending_interrupt();
     std::vector<ManifestReader> sources;
     if (have_manifest_) {
       if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
@@ -375,13 +333,13 @@ class SweepRun {
     };
     try {
       merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, SameIndex::later_wins);
-    } catch (const render::OutputError&) {
-      if (sig != 0) render::exit_interrupted(sig);  // the journal stays: the next run folds it
+    } catch (const io::OutputError&) {
+      if (sig != 0) io::exit_interrupted(sig);  // the journal stays: the next run folds it
       throw;
     }
     std::error_code ignored;
     fs::remove(journal_path_, ignored);
-    if (sig != 0) render::exit_interrupted(sig);
+    if (sig != 0) io::exit_interrupted(sig);
   }
 
   const SweepOptions& options_;
@@ -405,7 +363,7 @@ class SweepRun {
 }  // namespace
 
 SweepSummary run_sweep(const SweepOptions& options) {
-  if (options.jobs < 1) throw SweepUsageError(fmt::format("--jobs: must be >= 1 (got {})", options.jobs));
+  if (options.jobs < 1) throw SweepUsageError(About{Input::jobs}, fmt::format("must be >= 1 (got {})", options.jobs));
   std::vector<Axis> axes;
   for (const std::string& v : options.vary) axes.push_back(parse_axis(v));
   const Grid grid(std::move(axes), options.zip);

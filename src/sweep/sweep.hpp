@@ -47,13 +47,8 @@ struct SweepSummary {
   std::vector<std::string> notes;     // what else was (not) written
 };
 
-// "svg,png,csv" -> kinds; throws SweepUsageError.
-std::vector<OutputKind> parse_output_kinds(const std::string& text);
-// "K/N" -> (K, N), 0 <= K < N; throws SweepUsageError.
-std::pair<int, int> parse_shard(const std::string& text);
-
 // Runs the sweep. Throws SweepUsageError (exit 2), scene::SceneError (a bad
-// base scene, exit 2), render::OutputError (the manifest could not be
+// base scene, exit 2), io::OutputError (the manifest could not be
 // written, exit 3). An interruption writes the manifest of what finished
 // and exits with 128 + the signal.
 SweepSummary run_sweep(const SweepOptions& options);

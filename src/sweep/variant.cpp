@@ -12,6 +12,9 @@ namespace pita::sweep {
 
 namespace {
 
+// What an error about `axis` names: its POINTER=SPEC.
+About about_axis(const Axis& axis) { return About(Input::vary, axis.pointer + "=" + axis.spec); }
+
 bool is_index(const std::string& token) {
   return !token.empty() && token.find_first_not_of("0123456789") == std::string::npos &&
          (token.size() == 1 || token.front() != '0');
@@ -79,21 +82,21 @@ void set_at(Json& document, const Axis& axis, const std::vector<std::string>& to
         // A missing member is created as an object; an array cannot be made
         // up, element by element, from a pointer.
         if (is_index(tokens[i + 1]) || tokens[i + 1] == "-") {
-          throw SweepUsageError(fmt::format("--vary {}={}: {} has no \"{}\", and a pointer cannot create an array; "
-                                            "the nearest pointer that exists is {}",
-                                            axis.pointer, axis.spec, walked.empty() ? "the scene" : walked, token,
-                                            nearest_pointer(base, tokens_of(axis.pointer))));
+          throw SweepUsageError(about_axis(axis), fmt::format("{} has no \"{}\", and a pointer cannot create an array; "
+                                                              "the nearest pointer that exists is {}",
+                                                              walked.empty() ? "the scene" : walked, token,
+                                                              nearest_pointer(base, tokens_of(axis.pointer))));
         }
         (*at)[token] = Json::object();
       }
       at = &(*at)[token];
     } else if (at->is_array()) {
       if (!is_index(token) || token.size() > 18 || std::stoull(token) >= at->size()) {
-        throw SweepUsageError(fmt::format("--vary {}={}: {} has no element \"{}\" ({} element{}); the nearest "
+        throw SweepUsageError(about_axis(axis),
+                              fmt::format("{} has no element \"{}\" ({} element{}); the nearest "
                                           "pointer that exists is {}",
-                                          axis.pointer, axis.spec, walked.empty() ? "the scene" : walked, token,
-                                          at->size(), at->size() == 1 ? "" : "s",
-                                          nearest_pointer(base, tokens_of(axis.pointer))));
+                                          walked.empty() ? "the scene" : walked, token, at->size(),
+                                          at->size() == 1 ? "" : "s", nearest_pointer(base, tokens_of(axis.pointer))));
       }
       const std::size_t index = std::stoull(token);
       if (last) {
@@ -102,10 +105,10 @@ void set_at(Json& document, const Axis& axis, const std::vector<std::string>& to
       }
       at = &(*at)[index];
     } else {
-      throw SweepUsageError(fmt::format("--vary {}={}: {} is {}, not an object or array, so it has no \"{}\"; the "
+      throw SweepUsageError(about_axis(axis),
+                            fmt::format("{} is {}, not an object or array, so it has no \"{}\"; the "
                                         "nearest pointer that exists is {}",
-                                        axis.pointer, axis.spec, walked.empty() ? "the scene" : walked,
-                                        std::string(at->type_name()), token,
+                                        walked.empty() ? "the scene" : walked, std::string(at->type_name()), token,
                                         nearest_pointer(base, tokens_of(axis.pointer))));
     }
     walked = scene::detail::member_pointer(walked, token);
@@ -137,10 +140,10 @@ BaseScene load_base(const std::string& path, const Grid& grid) {
         const bool created = !base.document.contains(Json::json_pointer(axis.pointer));
         const bool under = axis.pointer == error.pointer() || axis.pointer.starts_with(error.pointer() + "/");
         if (created && under) {
-          throw SweepUsageError(fmt::format("--vary {}={}: {} is not in {} and the scene may not have it: {}; the "
-                                            "nearest pointer that exists is {}",
-                                            axis.pointer, axis.spec, axis.pointer, path, error.reason(),
-                                            nearest_pointer(base.document, tokens_of(axis.pointer))));
+          throw SweepUsageError(about_axis(axis), fmt::format("{} is not in {} and the scene may not have it: {}; the "
+                                                              "nearest pointer that exists is {}",
+                                                              axis.pointer, path, error.reason(),
+                                                              nearest_pointer(base.document, tokens_of(axis.pointer))));
         }
       }
     }

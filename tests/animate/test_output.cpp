@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "animate/output.hpp"
+#include "io/output_file.hpp"
 #include "render/budget.hpp"
-#include "render/output_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
@@ -73,7 +73,7 @@ TEST(Output, DirectoryOfFramesWithTheirTimes) {
   EXPECT_EQ(entries, 1u);
   // a file of the user's in it: not pita's own directory any more, refused and kept
   std::ofstream(dir / "frames" / "notes.txt") << "x";
-  EXPECT_THROW(write_animation(scene, timeline, request), render::OutputError);
+  EXPECT_THROW(write_animation(scene, timeline, request), io::OutputError);
   EXPECT_TRUE(fs::exists(dir / "frames" / "notes.txt"));
   fs::remove_all(dir);
 }

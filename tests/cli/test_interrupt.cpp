@@ -1,4 +1,4 @@
-// Interruption through the real binary (src/render/interrupt.cpp): SIGINT,
+// Interruption through the real binary (src/io/interrupt.cpp): SIGINT,
 // SIGTERM and SIGHUP remove the temporary files in flight and exit with
 // 128 + signal, as a normal exit after a message; a signal ignored at start
 // stays ignored; a closed stdout pipe is a write error, not a death by SIGPIPE.

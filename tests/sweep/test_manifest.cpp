@@ -118,7 +118,7 @@ TEST(Manifest, OneThatCannotBeOpenedIsAnErrorNotAbsent) {
   std::string message;
   try {
     if (thrown) std::rethrow_exception(thrown);
-  } catch (const render::OutputError& e) {  // exit 3, never "no manifest"
+  } catch (const io::OutputError& e) {  // exit 3, never "no manifest"
     message = e.what();
   }
   EXPECT_NE(message.find(path.string() + ": cannot read (Too many open files)"), std::string::npos) << message;

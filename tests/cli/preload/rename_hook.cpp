@@ -1,6 +1,6 @@
 // An LD_PRELOAD shim for the CLI tests of interruption and of all-or-none
 // writes (tests/cli/test_interrupt.cpp, test_render_outputs.cpp). It takes over
-// rename(2), the commit step of every output (src/render/output_file.cpp), so
+// rename(2), the commit step of every output (src/io/output_file.cpp), so
 // that a test can catch pita with its temporaries written but not yet renamed,
 // however fast the write, or make one rename fail, as a full or read-only file
 // system could. Without its variables it is the system's rename.

@@ -1,4 +1,4 @@
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 
-namespace pita::render {
+namespace pita::io {
 
 namespace {
 
@@ -212,4 +212,4 @@ void write_files_atomically(std::span<const std::pair<fs::path, std::string>> fi
   write_all_or_none(views);
 }
 
-}  // namespace pita::render
+}  // namespace pita::io

@@ -1,8 +1,8 @@
-// Writing outputs atomically (src/render/output_file.cpp): the bytes arrive
+// Writing outputs atomically (src/io/output_file.cpp): the bytes arrive
 // whole, replace what was there, leave no temporary file behind (nor one
 // registered for the interrupt cleanup), get the ordinary permissions, a set
 // of files is written all or none, and a failure names the path and the reason.
-#include "render/output_file.hpp"
+#include "io/output_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 
-namespace pita::render {
+namespace pita::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -195,4 +195,4 @@ TEST_F(OutputFile, ReservationsWaitForFreeSlots) {
 }
 
 }  // namespace
-}  // namespace pita::render
+}  // namespace pita::io

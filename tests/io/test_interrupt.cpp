@@ -1,9 +1,9 @@
-// The registry of temporary files in flight (src/render/interrupt.cpp), without
+// The registry of temporary files in flight (src/io/interrupt.cpp), without
 // signals: what is registered is removed by remove_in_flight, what was
 // released is not, and a full registry or an overlong path is refused rather
 // than left unprotected. The handler itself is tested through the real binary
 // (tests/cli/test_interrupt.cpp).
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace pita::render {
+namespace pita::io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -106,4 +106,4 @@ TEST_F(InFlight, FullRegistryAndOverlongPathsAreRefused) {
 }
 
 }  // namespace
-}  // namespace pita::render
+}  // namespace pita::io

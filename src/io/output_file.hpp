@@ -13,7 +13,7 @@
 #include <string_view>
 #include <utility>
 
-namespace pita::render {
+namespace pita::io {
 
 // An output that could not be written (exit 3): what() names the path and
 // the system's reason.
@@ -57,4 +57,4 @@ class StreamingOutput {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace pita::render
+}  // namespace pita::io

@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <string_view>
 
-namespace pita::render {
+namespace pita::io {
 
 // Temporary files that can be in flight at once. Writers reserve their slots
 // first (InFlightReservation) and wait while all are taken, so that this is
@@ -88,4 +88,4 @@ int pending_interrupt();
 // removed unfinished outputs" and exits with 128 + sig.
 [[noreturn]] void exit_interrupted(int sig);
 
-}  // namespace pita::render
+}  // namespace pita::io

@@ -1,4 +1,4 @@
-#include "render/interrupt.hpp"
+#include "io/interrupt.hpp"
 
 #include <signal.h>
 #include <unistd.h>
@@ -11,7 +11,7 @@
 #include <string>
 #include <cstring>
 
-namespace pita::render {
+namespace pita::io {
 
 namespace {
 
@@ -158,4 +158,4 @@ void install_interrupt_cleanup() {
   }
 }
 
-}  // namespace pita::render
+}  // namespace pita::io
