@@ -2,9 +2,9 @@
 // linear part L and a translation b. A keyframe "triangle" of PAM (PITA Eq. 37-39)
 // is an affinity; an arrow is the special case of a similarity (affine_of).
 //
-// The verbs are the ones every value type of the core shares (STYLE.md):
-// apply, compose, inverse here; pow, log, exp in affine_power.hpp (EAR). Twirl
-// (twirl.hpp) has the same six.
+// The verbs are the ones every value type of the core shares, under the same
+// names, so that generic code calls any of them: apply, compose, inverse here;
+// pow, log, exp in affine_power.hpp (EAR). Twirl (twirl.hpp) has the same six.
 #pragma once
 
 #include <Eigen/Core>

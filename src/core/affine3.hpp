@@ -1,9 +1,10 @@
 // Affinities of space (SAM paper Sec. 2.1, appendix A.6): x -> L x + b, with a
 // 3x3 linear part L and a translation b, the 3D sibling of Affine2.
 //
-// The verbs are the ones every value type of the core shares (STYLE.md):
-// apply, compose, inverse here; pow, log, exp in affine_power3.hpp (EAR in
-// 3D). Affine2 (affine2.hpp) has the same six.
+// The verbs are the ones every value type of the core shares, under the same
+// names, so that generic code calls any of them: apply, compose, inverse here;
+// pow, log, exp in affine_power3.hpp (EAR in 3D). Affine2 (affine2.hpp) has the
+// same six.
 #pragma once
 
 #include <Eigen/Core>
