@@ -1,6 +1,7 @@
 #include "scene/pose_reader.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -221,7 +222,7 @@ std::vector<ShapeOutline> builtin_outline(std::string_view name) {
     // as line art): frame, ground, a house with a door, a tree and the sun.
     std::vector<Point> sun;
     for (int i = 0; i < 24; ++i) {
-      const double angle = 2.0 * 3.141592653589793 * i / 24.0;
+      const double angle = 2.0 * std::numbers::pi * i / 24.0;
       sun.push_back(Point{0.8, 0.58} + 0.08 * Point{std::cos(angle), std::sin(angle)});
     }
     return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.75}, {0.0, 0.75}}),
