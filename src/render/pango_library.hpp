@@ -44,8 +44,4 @@ struct PangoLibrary {
 // Debian package to install when it cannot be loaded or lacks a function.
 const PangoLibrary& pango();
 
-// Whether pango has been loaded in this process yet (for the test that a
-// figure without text never loads it).
-bool pango_loaded();
-
 }  // namespace pita::render

@@ -180,10 +180,6 @@ std::string point_frames_to_json(std::string_view method_id, std::span<const Poi
   return whole_text(FramesPrinter(FramesPrinter::Rows::points, FramesFormat::json, method_id, chain), frames);
 }
 
-std::string point_frames_to_csv(std::span<const PointFrame> frames) {
-  return whole_text(FramesPrinter(FramesPrinter::Rows::points, FramesFormat::csv, ""), frames);
-}
-
 std::string pose_frames_to_json(std::string_view method_id, std::span<const PoseFrame> frames) {
   return whole_text(FramesPrinter(FramesPrinter::Rows::poses, FramesFormat::json, method_id), frames);
 }

@@ -39,14 +39,14 @@ std::string frames_to_csv(std::span<const Frame> frames);
 
 // The points of a curve through timed "points" (PITA Sec. 7.6):
 //   {"method": "P6", "curve": "pita", "frames": [{"t": 0.0, "p": [x, y]}, ...]}
-// and the CSV "t,x,y". Throw std::invalid_argument if a point is not finite.
+// Throws std::invalid_argument if a point is not finite. (Their CSV, "t,x,y",
+// is written by FramesPrinter, below.)
 struct PointFrame {
   double t = 0.0;
   Point p;
 };
 std::string point_frames_to_json(std::string_view method_id, std::span<const PointFrame> frames,
                                  std::string_view chain = "");
-std::string point_frames_to_csv(std::span<const PointFrame> frames);
 
 // The pose A(t) of a pose scene's motion at time t.
 struct PoseFrame {
