@@ -23,7 +23,7 @@
 #include "core/methods.hpp"
 #include "render/figure.hpp"
 #include "render/output_file.hpp"
-#include "render/property_table.hpp"
+#include "render/audit_table.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
