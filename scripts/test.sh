@@ -8,15 +8,15 @@
 #                                included), plus the fuzz targets' replays
 #   scripts/test.sh --quick [LAYER...]
 #                                the edit loop: builds only the unit tests of
-#                                the layers named (core scene motion analysis
-#                                render lint animate golden sweep; default: all of
+#                                the layers named (core text scene motion analysis
+#                                render lint animate golden sweep serve; default: all of
 #                                them) and runs them (ctest -L). Not the
 #                                suite: the CLI, oracle, golden, packaging and
 #                                script tests run only without --quick.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-PITA_UNIT_LAYERS=(core scene motion analysis render lint animate golden sweep serve)
+PITA_UNIT_LAYERS=(core text scene motion analysis render lint animate golden sweep serve)
 mode=full
 layers=()
 for arg in "$@"; do

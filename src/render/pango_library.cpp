@@ -53,7 +53,6 @@ PangoLibrary load_pango() {
   find_symbol(handle, "pango_parse_markup", library.parse_markup);
   // GObject and GLib are dependencies of pangocairo: dlsym looks there too.
   find_symbol(handle, "g_object_unref", library.object_unref);
-  find_symbol(handle, "g_markup_escape_text", library.markup_escape_text);
   find_symbol(handle, "g_base64_encode", library.base64_encode);
   find_symbol(handle, "g_free", library.free);
   return library;

@@ -34,7 +34,6 @@ struct PangoLibrary {
   decltype(&::pango_font_description_free) font_description_free;
   decltype(&::pango_parse_markup) parse_markup;
   decltype(&::g_object_unref) object_unref;
-  decltype(&::g_markup_escape_text) markup_escape_text;
   decltype(&::g_base64_encode) base64_encode;
   decltype(&::g_free) free;
 };

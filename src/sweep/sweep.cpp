@@ -28,6 +28,7 @@
 #include "sweep/sheet.hpp"
 #include "sweep/run_variant.hpp"
 #include "sweep/variant.hpp"
+#include "text/list.hpp"
 
 namespace pita::sweep {
 
@@ -64,10 +65,7 @@ std::string failure_line(const std::vector<std::string>& pointers, const Row& ro
 
 std::vector<OutputKind> parse_output_kinds(const std::string& text) {
   std::vector<OutputKind> kinds;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  text::for_each_item(text, [&](std::string_view item) {
     const std::optional<OutputKind> found = output_kind_named(item);
     if (!found) {
       throw SweepUsageError(fmt::format("--format: \"{}\" is not an output (use svg, png, pdf, csv, json or metrics, "
@@ -75,9 +73,7 @@ std::vector<OutputKind> parse_output_kinds(const std::string& text) {
                                         item));
     }
     if (std::find(kinds.begin(), kinds.end(), *found) == kinds.end()) kinds.push_back(*found);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  });
   return kinds;
 }
 
