@@ -11,6 +11,7 @@
 #include "motion/stage.hpp"
 #include "render/label_placement.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/arrow_json.hpp"
 
 namespace pita::animate {
 
@@ -27,10 +28,13 @@ void append(std::vector<render::Drawing>& into, std::vector<render::Drawing> mor
   }
 }
 
-Json point(Point p) { return Json::array({p.real(), p.imag()}); }
+using scene::point_json;
 
-Json arrow_json(const Arrow& a) {
-  return Json{{"p", point(a.p)}, {"m", a.m}, {"w", a.w}, {"q", point(a.q())}};
+// An arrow of a frame: scene::arrow_json's members and the tip "q".
+Json frame_arrow_json(const Arrow& a) {
+  Json arrow = scene::arrow_json(a);
+  arrow["q"] = point_json(a.q());
+  return arrow;
 }
 
 // A pose of space as `pita eval` prints it: rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz].
@@ -113,18 +117,15 @@ void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage*
     const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys);
     for (const Keyframe& key : arrows != nullptr ? arrows->keyframes : std::vector<Keyframe>{}) {
       Json entry{{"t", key.t}};
-      // Named: a range-for over arrow_json(...).items() would iterate a
-      // destroyed temporary (only the items() proxy lives on).
-      const Json arrow = arrow_json(key.arrow);
-      for (const auto& [name, value] : arrow.items()) entry[name] = value;
+      entry.update(frame_arrow_json(key.arrow));
       keys.push_back(std::move(entry));
     }
     into["keyframes"] = std::move(keys);
     return;
   }
   const motion::SceneMotion& motion = stage->motion(index);
-  std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = arrow_json(motion.arrow_at(t)); },
-                        [&](const motion::PointTrack&) { into["p"] = point(motion.point_at(t)); },
+  std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = frame_arrow_json(motion.arrow_at(t)); },
+                        [&](const motion::PointTrack&) { into["p"] = point_json(motion.point_at(t)); },
                         [&](const motion::PlanePoses&) {
                           const Affine2 A = motion.pose_at(t);
                           into["A"] = Json::array({Json::array({A.L(0, 0), A.L(0, 1), A.b(0)}),
