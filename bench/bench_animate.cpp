@@ -33,7 +33,7 @@ void BM_AnimateFrames(benchmark::State& state) {
   const fs::path dir = fs::temp_directory_path() / ("pita-bench-frames-" + std::to_string(::getpid()));
   animate::Request request;
   request.out = dir / "frames";
-  request.kind = animate::OutputKind::directory;
+  request.kind = animate::AnimationOutput::directory;
   request.progress = false;
   request.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));  // every core
   for (auto _ : state) animate::write_animation(scene, timeline, request);

@@ -8,7 +8,7 @@
 #                                included), plus the fuzz targets' replays
 #   scripts/test.sh --quick [LAYER...]
 #                                the edit loop: builds only the unit tests of
-#                                the layers named (io core scene motion analysis
+#                                the layers named (io core text scene motion analysis
 #                                render lint animate golden sweep serve; default: all of
 #                                them) and runs them (ctest -L). Not the
 #                                suite: the CLI, oracle, golden, packaging and
@@ -16,7 +16,7 @@
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-PITA_UNIT_LAYERS=(io core scene motion analysis render lint animate golden sweep serve)
+PITA_UNIT_LAYERS=(io core text scene motion analysis render lint animate golden sweep serve)
 mode=full
 layers=()
 for arg in "$@"; do

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/paper_table.hpp"
+#include "scene/arrow_json.hpp"
 
 namespace pita::analysis {
 
@@ -16,11 +17,16 @@ using Json = nlohmann::ordered_json;
 std::string id(Method m) { return std::string(info(m).id); }
 std::string id(Property p) { return std::string(info(p).id); }
 
-Json arrow_json(const Keyframe& k) {
-  return Json{{"t", k.t}, {"p", {k.arrow.p.real(), k.arrow.p.imag()}}, {"m", k.arrow.m}, {"w", k.arrow.w}};
+// A keyframe: its time, then its arrow.
+Json keyframe_json(const Keyframe& k) {
+  Json keyframe{{"t", k.t}};
+  keyframe.update(scene::arrow_json(k.arrow));
+  return keyframe;
 }
 
-Json keyframes_json(const KeyframeTriple& k) { return Json::array({arrow_json(k.a), arrow_json(k.b), arrow_json(k.c)}); }
+Json keyframes_json(const KeyframeTriple& k) {
+  return Json::array({keyframe_json(k.a), keyframe_json(k.b), keyframe_json(k.c)});
+}
 
 
 // A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a newline.

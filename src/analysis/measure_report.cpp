@@ -1,95 +1,134 @@
 #include "analysis/measure_report.hpp"
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <set>
 #include <string_view>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 namespace pita::analysis {
 
 namespace {
 
-// A JSON string literal (RFC 8259 escapes).
-std::string json_string(std::string_view text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          out += fmt::format("\\u{:04x}", static_cast<int>(c));
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
-}
+using Json = nlohmann::ordered_json;
 
 // Shortest round-trip form; the measures are finite (analysis/measure.hpp).
 std::string report_number(double x) { return fmt::format("{}", x); }
 
-std::string json_motion(const MotionMeasures& m) {
-  std::string s = fmt::format("    {{\"pointer\": {}, \"title\": {}, \"method\": {}, \"kind\": {}", json_string(m.pointer),
-                              json_string(m.title), json_string(m.method), json_string(measured_kind_name(m.kind)));
-  if (m.no_motion) return s + fmt::format(", \"no_motion\": {}}}", json_string(*m.no_motion));
-  if (m.kind == MeasuredKind::arrows) {
-    s += fmt::format(", \"samples\": {}, \"extent\": {}", m.samples, report_number(m.extent));
-    s += ",\n     \"discrepancy\": {";
-    for (std::size_t i = 0; i < m.discrepancy.size(); ++i) {
-      const auto& d = m.discrepancy[i];
-      s += fmt::format("{}{}: {{\"frames\": {}, \"max\": {}, \"mean\": {}, \"t_of_max\": {}}}", i ? ", " : "",
-                       json_string(d.predictor), d.frames, report_number(d.max), report_number(d.mean), report_number(d.t_of_max));
+// A string as JSON, escaped by nlohmann-json (bytes that are not UTF-8, from
+// a file name, become U+FFFD).
+std::string json_string(std::string_view text) {
+  return Json(text).dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+// `value` written on one line, ": " after each key and ", " between entries,
+// numbers in report_number's form; but an array (the overreaction's
+// parameters) one element to a line.
+void write_json(const Json& value, std::string& out) {
+  switch (value.type()) {
+    case Json::value_t::object: {
+      out += '{';
+      const char* separator = "";
+      for (const auto& [key, item] : value.items()) {
+        out += separator + json_string(key) + ": ";
+        write_json(item, out);
+        separator = ", ";
+      }
+      out += '}';
+      return;
     }
-    s += "}";
+    case Json::value_t::array:
+      out += '[';
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        out += i ? ",\n       " : "\n       ";
+        write_json(value[i], out);
+      }
+      out += ']';
+      return;
+    case Json::value_t::number_float: out += report_number(value.get<double>()); return;
+    case Json::value_t::string: out += json_string(value.get_ref<const std::string&>()); return;
+    default: out += value.dump(); return;  // integers and booleans
+  }
+}
+
+// The overreaction to each keyframe parameter, the most sensitive one first.
+Json overreaction_json(const MotionMeasures& m) {
+  Json overreaction = Json::object();
+  if (m.most_sensitive >= 0) {
+    const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
+    overreaction["most_sensitive"] = best.name;
+    overreaction["gain"] = best.gain;
+  }
+  Json parameters = Json::array();
+  for (const auto& p : m.parameters) {
+    parameters.push_back(Json{{"name", p.name}, {"defined", p.defined}, {"gain", p.gain}, {"turn", p.turn},
+                              {"jump", p.jump}, {"pop", p.pop}});
+  }
+  overreaction["parameters"] = std::move(parameters);
+  return overreaction;
+}
+
+// A motion's measures, each present only where it applies, in the order they are written.
+Json motion_json(const MotionMeasures& m) {
+  Json j{{"pointer", m.pointer}, {"title", m.title}, {"method", m.method},
+         {"kind", std::string(measured_kind_name(m.kind))}};
+  if (m.no_motion) {
+    j["no_motion"] = *m.no_motion;
+    return j;
+  }
+  if (m.kind == MeasuredKind::arrows) {
+    j["samples"] = m.samples;
+    j["extent"] = m.extent;
+    Json discrepancy = Json::object();
+    for (const auto& d : m.discrepancy) {
+      discrepancy[d.predictor] = Json{{"frames", d.frames}, {"max", d.max}, {"mean", d.mean}, {"t_of_max", d.t_of_max}};
+    }
+    j["discrepancy"] = std::move(discrepancy);
   }
   if (m.path_p) {
-    s += fmt::format(",\n     \"path\": {{\"p\": {{\"length\": {}, \"turning\": {}}}", report_number(m.path_p->length),
-                     report_number(m.path_p->turning));
-    if (m.path_q) {
-      s += fmt::format(", \"q\": {{\"length\": {}, \"turning\": {}}}", report_number(m.path_q->length),
-                       report_number(m.path_q->turning));
-    }
-    s += "}";
+    j["path"] = Json{{"p", Json{{"length", m.path_p->length}, {"turning", m.path_p->turning}}}};
+    if (m.path_q) j["path"]["q"] = Json{{"length", m.path_q->length}, {"turning", m.path_q->turning}};
   }
-  if (m.winding_min) {
-    s += fmt::format(",\n     \"winding\": {{\"min\": {}, \"max\": {}}}", report_number(*m.winding_min),
-                     report_number(*m.winding_max));
-  }
+  if (m.winding_min) j["winding"] = Json{{"min", *m.winding_min}, {"max", *m.winding_max}};
   if (m.kind == MeasuredKind::arrows) {
-    s += ",\n     \"overreaction\": {";
-    if (m.most_sensitive >= 0) {
-      const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
-      s += fmt::format("\"most_sensitive\": {}, \"gain\": {}, ", json_string(best.name), report_number(best.gain));
-    }
-    s += "\"parameters\": [";
-    for (std::size_t i = 0; i < m.parameters.size(); ++i) {
-      const auto& p = m.parameters[i];
-      s += fmt::format("{}\n       {{\"name\": {}, \"defined\": {}, \"gain\": {}, \"turn\": {}, \"jump\": {}, \"pop\": {}}}",
-                       i ? "," : "", json_string(p.name), p.defined, report_number(p.gain), report_number(p.turn), report_number(p.jump),
-                       p.pop);
-    }
-    s += "]}";
-    s += fmt::format(",\n     \"pop\": {{\"detected\": {}", m.pops);
+    j["overreaction"] = overreaction_json(m);
+    j["pop"] = Json{{"detected", m.pops}};
     if (m.largest_jump >= 0) {
       const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
-      s += fmt::format(", \"parameter\": {}, \"jump\": {}", json_string(worst.name), report_number(worst.jump));
+      j["pop"]["parameter"] = worst.name;
+      j["pop"]["jump"] = worst.jump;
     }
-    s += "}";
   }
-  if (m.ara) s += fmt::format(",\n     \"ara\": {}", report_number(*m.ara));
-  if (m.velocity_jump) s += fmt::format(",\n     \"velocity_jump\": {}", report_number(*m.velocity_jump));
+  if (m.ara) j["ara"] = *m.ara;
+  if (m.velocity_jump) j["velocity_jump"] = *m.velocity_jump;
   if (m.area) {
     // det L: the area of the plane's poses, the volume of poses of space.
-    s += fmt::format(
-        ",\n     \"{}\": {{\"monotone\": {}, \"excursion\": {}, \"t_of_excursion\": {}, \"first\": {}, \"last\": {}}}",
-        m.kind == MeasuredKind::space_poses ? "volume" : "area", m.area->monotone, report_number(m.area->excursion),
-        report_number(m.area->t_of_excursion), report_number(m.area->first), report_number(m.area->last));
+    j[m.kind == MeasuredKind::space_poses ? "volume" : "area"] =
+        Json{{"monotone", m.area->monotone}, {"excursion", m.area->excursion},
+             {"t_of_excursion", m.area->t_of_excursion}, {"first", m.area->first}, {"last", m.area->last}};
+  }
+  return j;
+}
+
+// The members of a motion that begin a line of their own.
+bool on_own_line(std::string_view key) {
+  constexpr std::array<std::string_view, 9> kKeys = {"discrepancy", "path",          "winding", "overreaction", "pop",
+                                                     "ara",         "velocity_jump", "area",    "volume"};
+  return std::find(kKeys.begin(), kKeys.end(), key) != kKeys.end();
+}
+
+std::string json_motion(const MotionMeasures& m) {
+  std::string s = "    {";
+  bool first = true;
+  const Json motion = motion_json(m);  // named: items() of a temporary would outlive it
+  for (const auto& [key, item] : motion.items()) {
+    if (!first) s += on_own_line(key) ? ",\n     " : ", ";
+    first = false;
+    s += json_string(key) + ": ";
+    write_json(item, s);
   }
   return s + "}";
 }
@@ -97,7 +136,7 @@ std::string json_motion(const MotionMeasures& m) {
 }  // namespace
 
 std::string measures_json(const std::string& path, const std::vector<MotionMeasures>& all) {
-  std::string s = fmt::format("{{\"scene\": {}, \"motions\": [\n", json_string(path));
+  std::string s = "{\"scene\": " + json_string(path) + ", \"motions\": [\n";
   for (std::size_t i = 0; i < all.size(); ++i) s += json_motion(all[i]) + (i + 1 < all.size() ? ",\n" : "\n");
   return s + "]}\n";
 }

@@ -11,6 +11,7 @@
 
 #include "analysis/arrow_distance.hpp"
 #include "analysis/audit_configs.hpp"
+#include "core/finite_difference.hpp"
 #include "core/limits.hpp"
 
 namespace pita::analysis {
@@ -177,9 +178,8 @@ Probe probe_smooth(Method m, const KeyframeTriple& k) {
     for (int which = 0; which < 2; ++which) {
       const auto x = [&](double u) { const Arrow f = D->at(u); return which == 0 ? f.p : f.q(); };
       const auto jump = [&](double h, double& size) {
-        const Complex x0 = x(t);
-        const Complex left = (2.0 * x0 - 5.0 * x(t - h) + 4.0 * x(t - 2 * h) - x(t - 3 * h)) / (h * h) * (span * span);
-        const Complex right = (2.0 * x0 - 5.0 * x(t + h) + 4.0 * x(t + 2 * h) - x(t + 3 * h)) / (h * h) * (span * span);
+        const Complex left = one_sided_second_derivative(x, t, -h) * (span * span);
+        const Complex right = one_sided_second_derivative(x, t, h) * (span * span);
         size = std::max({size, std::abs(left), std::abs(right)});
         return left - right;
       };
@@ -402,8 +402,7 @@ Probe probe_perseverant(Property kind, Method m, const KeyframeTriple& k) {
     double scale = ext;
     for (std::size_t i = 0; i < ss.size(); ++i) {
       const double s = ss[i];
-      acc[i] = (-pick(at(s + 2 * h)) + 16.0 * pick(at(s + h)) - 30.0 * pick(at(s)) + 16.0 * pick(at(s - h)) -
-                pick(at(s - 2 * h))) / (12.0 * h * h);
+      acc[i] = central_second_derivative4([&](double v) { return pick(at(v)); }, s, h);
       pos[i] = pick(at(s));
       vec[i] = at(s).vector();
       scale = std::max(scale, std::abs(acc[i]) + ext);

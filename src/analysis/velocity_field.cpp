@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/finite_difference.hpp"
+
 namespace pita::analysis {
 
 FieldCheck check_integral_curves(const SamVelocityField& field, std::span<const Eigen::Vector2d> starts,
@@ -11,10 +13,9 @@ FieldCheck check_integral_curves(const SamVelocityField& field, std::span<const 
   const double h = kFieldStep;
   for (const Eigen::Vector2d& x0 : starts) {
     for (const double u : times) {
-      const auto x = [&](double k) { return field.trajectory(x0, u + k * h); };
-      // f'(u) ~ (f(u - 2h) - 8 f(u - h) + 8 f(u + h) - f(u + 2h)) / (12 h)
-      const Eigen::Vector2d derivative = (x(-2) - 8.0 * x(-1) + 8.0 * x(1) - x(2)) / (12.0 * h);
-      const Eigen::Vector2d velocity = field.at(x(0));
+      const auto x = [&](double v) { return field.trajectory(x0, v); };
+      const Eigen::Vector2d derivative = central_derivative4(x, u, h);
+      const Eigen::Vector2d velocity = field.at(x(u));
       worst = std::max(worst, (derivative - velocity).norm());
       check.largest_speed = std::max(check.largest_speed, velocity.norm());
       ++check.samples;

@@ -12,6 +12,7 @@
 #include "motion/stage.hpp"
 #include "render/label_placement.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/arrow_json.hpp"
 
 namespace pita::animate {
 
@@ -28,13 +29,15 @@ void append(std::vector<render::Drawing>& into, std::vector<render::Drawing> mor
   }
 }
 
-Json point(Point p) { return Json::array({p.real(), p.imag()}); }
+using scene::point_json;
 
-Json arrow_json(const Arrow& a) {
-  return Json{{"p", point(a.p)}, {"m", a.m}, {"w", a.w}, {"q", point(a.q())}};
+// An arrow of a frame: scene::arrow_json's members and the tip "q".
+Json frame_arrow_json(const Arrow& a) {
+  Json arrow = scene::arrow_json(a);
+  arrow["q"] = point_json(a.q());
+  return arrow;
 }
 
-// A pose of space as `pita eval` prints it: rows [a, b, c, tx], [d, e, f, ty], [g, h, i, tz].
 // A pose's matrix as rows [L(r, 0), ..., b(r)], in the plane or in space.
 template <class Pose>
 Json pose_json(const Pose& A) {
@@ -122,18 +125,15 @@ void add_panel_state(Json& into, const scene::Panel& panel, const motion::Stage*
     const auto* arrows = std::get_if<scene::KeyframeKeys>(&panel.keys);
     for (const Keyframe& key : arrows != nullptr ? arrows->keyframes : std::vector<Keyframe>{}) {
       Json entry{{"t", key.t}};
-      // Named: a range-for over arrow_json(...).items() would iterate a
-      // destroyed temporary (only the items() proxy lives on).
-      const Json arrow = arrow_json(key.arrow);
-      for (const auto& [name, value] : arrow.items()) entry[name] = value;
+      entry.update(frame_arrow_json(key.arrow));
       keys.push_back(std::move(entry));
     }
     into["keyframes"] = std::move(keys);
     return;
   }
   const motion::SceneMotion& motion = stage->motion(index);
-  std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = arrow_json(motion.arrow_at(t)); },
-                        [&](const motion::PointTrack&) { into["p"] = point(motion.point_at(t)); },
+  std::visit(overloaded{[&](const motion::ArrowTrack&) { into["D"] = frame_arrow_json(motion.arrow_at(t)); },
+                        [&](const motion::PointTrack&) { into["p"] = point_json(motion.point_at(t)); },
                         [&](const motion::PlanePoses&) { into["A"] = pose_json(motion.pose_at<Affine2>(t)); },
                         [&](const motion::SpacePoses&) { into["A"] = pose_json(motion.pose_at<Affine3>(t)); }},
              motion.built());

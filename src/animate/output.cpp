@@ -192,18 +192,18 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
 
 }  // namespace
 
-OutputKind output_kind(const std::string& out) {
+AnimationOutput output_kind(const std::string& out) {
   if (out.empty()) throw AnimationError("-o: the output is empty: give OUT.svg, OUT.mp4, OUT.webm or a directory");
   const fs::path path(out);
   const fs::path last = path.filename().empty() ? path.parent_path().filename() : path.filename();
   if (last.empty() || last == "." || last == "..") {
     throw AnimationError(fmt::format("-o {}: not a directory pita can write frames into", out));
   }
-  if (!path.has_filename() || !path.has_extension()) return OutputKind::directory;
+  if (!path.has_filename() || !path.has_extension()) return AnimationOutput::directory;
   const std::string extension = lower(path.extension().string());
-  if (extension == ".svg") return OutputKind::svg;
-  if (extension == ".mp4") return OutputKind::mp4;
-  if (extension == ".webm") return OutputKind::webm;
+  if (extension == ".svg") return AnimationOutput::svg;
+  if (extension == ".mp4") return AnimationOutput::mp4;
+  if (extension == ".webm") return AnimationOutput::webm;
   throw AnimationError(fmt::format("-o {}: \"{}\" is not an output pita animates into: give OUT.svg (an animated SVG), "
                                    "OUT.mp4 or OUT.webm (a video), or a directory (no extension, or ending in \"/\") "
                                    "for a sequence of frames",
@@ -216,8 +216,8 @@ std::string frame_file_name(int k, int count, render::Format format) {
 }
 
 void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
-  const bool vector = request.kind == OutputKind::svg ||
-                      (request.kind == OutputKind::directory && request.frame_format == render::Format::svg);
+  const bool vector = request.kind == AnimationOutput::svg ||
+                      (request.kind == AnimationOutput::directory && request.frame_format == render::Format::svg);
   const double units = render::estimate_cost(scene).units * timeline.frames;
   const double limit = kMaxAnimationUnits * request.budget;
   if (units > limit) {
@@ -262,7 +262,7 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   frame_figure(scene, timeline, timeline.time(0), placements, shared);
   const io::DeferredInterrupts deferred;
   switch (request.kind) {
-    case OutputKind::svg: {
+    case AnimationOutput::svg: {
       Progress progress("frames", timeline.frames, request.progress);
       const std::string svg = animated_svg(scene, timeline, [&](int k) {
         if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
@@ -272,9 +272,9 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
       io::write_file_atomically(request.out, svg);
       return {request.out};
     }
-    case OutputKind::directory: return {write_directory(scene, timeline, request, shared, placements)};
-    case OutputKind::mp4:
-    case OutputKind::webm: return {write_video(scene, timeline, request, shared, placements)};
+    case AnimationOutput::directory: return {write_directory(scene, timeline, request, shared, placements)};
+    case AnimationOutput::mp4:
+    case AnimationOutput::webm: return {write_video(scene, timeline, request, shared, placements)};
   }
   return {};
 }

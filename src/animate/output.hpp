@@ -20,7 +20,8 @@
 
 namespace pita::animate {
 
-enum class OutputKind { svg, directory, mp4, webm };
+// What OUT of `pita animate` is: an animated SVG, a folder of frames, or a video.
+enum class AnimationOutput { svg, directory, mp4, webm };
 
 // The total work of an animation, beyond one frame's budget (render/budget.hpp):
 // raster frames (PNG, video) at most kMaxPixelFrames pixels in all (about 4
@@ -40,11 +41,11 @@ void check_total_work(const scene::Scene& scene, const Timeline& timeline, const
 
 // The kind of OUT. Throws AnimationError for an extension pita does not write
 // (".gif", ".png": frames go into a directory).
-OutputKind output_kind(const std::string& out);
+AnimationOutput output_kind(const std::string& out);
 
 struct Request {
   std::filesystem::path out;
-  OutputKind kind = OutputKind::directory;
+  AnimationOutput kind = AnimationOutput::directory;
   render::Format frame_format = render::Format::png;  // directory frames: png or svg
   double scale = 1.0;                                 // PNG and video pixels per canvas pixel
   double budget = 1.0;                                // render --budget

@@ -13,6 +13,7 @@
 #include "render/painter.hpp"
 #include "render/pango_library.hpp"
 #include "render/panel_drawing.hpp"
+#include "text/html.hpp"
 
 namespace pita::animate {
 
@@ -33,15 +34,6 @@ std::string num(double x) {
 std::string rgb(const scene::Color& c) {
   const auto byte = [](double v) { return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
   return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
-}
-
-// Text in XML (g_markup_escape_text: &, <, >, quotes).
-std::string xml_escape(const std::string& text) {
-  const render::PangoLibrary& glib = render::pango();
-  gchar* escaped = glib.markup_escape_text(text.c_str(), static_cast<gssize>(text.size()));
-  std::string out(escaped);
-  glib.free(escaped);
-  return out;
 }
 
 std::string stroke(const LineStyle& line) {
@@ -189,7 +181,7 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
       "width=\"{0}px\" height=\"{1}px\" viewBox=\"0 0 {0} {1}\">\n"
       "<title>{2}</title>\n"
       "<desc>pita animate: {3} frames at {4:g} frames per second ({5:g} s), {6}, {7}</desc>\n",
-      width, height, xml_escape(scene.title.empty() ? scene.path : scene.title), timeline.frames, timeline.fps,
+      width, height, text::html_escaped(scene.title.empty() ? scene.path : scene.title), timeline.frames, timeline.fps,
       timeline.seconds(), what_name(timeline.what), timeline.loop ? "looping" : "once");
 
   // Shared geometry: the images, and one clip rectangle per panel.

@@ -303,7 +303,7 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
   const int height = static_cast<int>(std::round(scene.canvas.height * request.scale));
   render::check_pixel_budget(scene, request.scale, request.budget);
   TemporaryFile temporary(request.out);
-  FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == OutputKind::webm,
+  FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == AnimationOutput::webm,
                                          temporary.path()),
                         request.out);
   // Every frame is painted over the layers they share, painted once.

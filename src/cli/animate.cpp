@@ -97,7 +97,7 @@ ExitCode run_animate(const AnimateOptions& options) {
     request.kind = animate::output_kind(options.output);
     if (options.format) {
       const auto format = render::format_from_name(*options.format);
-      if (request.kind != animate::OutputKind::directory) {
+      if (request.kind != animate::AnimationOutput::directory) {
         throw animate::AnimationError(fmt::format("--format {}: only a directory of frames takes a format; -o {} "
                                                   "is a single file",
                                                   *options.format, options.output));

@@ -23,8 +23,9 @@
 #include "core/methods.hpp"
 #include "io/output_file.hpp"
 #include "render/figure.hpp"
-#include "render/property_table.hpp"
+#include "render/audit_table.hpp"
 #include "scene/scene.hpp"
+#include "text/list.hpp"
 
 namespace pita::cli {
 
@@ -37,10 +38,8 @@ class UsageError : public std::runtime_error {
 
 std::vector<Method> parse_methods(const std::string& list) {
   std::vector<Method> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = list.find(',', start);
-    std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  text::for_each_item(list, [&](std::string_view item) {
+    std::string name(item);
     while (!name.empty() && name.front() == ' ') name.erase(name.begin());
     while (!name.empty() && name.back() == ' ') name.pop_back();
     if (name.empty()) throw UsageError("--methods: an empty name (give comma-separated methods, e.g. P1,P6,P8)");
@@ -53,9 +52,7 @@ std::vector<Method> parse_methods(const std::string& list) {
     }
     const Method method = std::get<Method>(entry->method);  // the filter kept arrow methods only
     if (std::find(out.begin(), out.end(), method) == out.end()) out.push_back(method);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  });
   return out;
 }
 

@@ -2,7 +2,7 @@
 //            [--counterexamples DIR] [-o TABLE.svg|png|pdf] [--quiet]
 //
 // PITA Fig. 10 measured (docs/reference/audit.md "pita audit"): analysis/audit.hpp does the
-// work, analysis/audit_report.hpp the text, render/property_table.hpp the figure.
+// work, analysis/audit_report.hpp the text, render/audit_table.hpp the figure.
 #pragma once
 
 #include <memory>

@@ -25,6 +25,7 @@
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "scene/scene.hpp"
+#include "text/list.hpp"
 
 namespace pita::cli {
 
@@ -72,11 +73,8 @@ int parse_samples(const std::string& text) {
 // --t T1,T2,...: finite reals, any order, values outside [a, c] extrapolate.
 std::vector<double> parse_times(const std::string& text) {
   std::vector<double> times;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::size_t stop = comma == std::string::npos ? text.size() : comma;
-    std::string_view item = trimmed(std::string_view(text).substr(start, stop - start));
+  text::for_each_item(text, [&](std::string_view listed) {
+    std::string_view item = trimmed(listed);
     if (times.size() == kMaxTimes) {
       throw InputError(fmt::format("--t: at most {} times may be given", kMaxTimes));
     }
@@ -99,9 +97,7 @@ std::vector<double> parse_times(const std::string& text) {
       throw InputError(fmt::format("--t: \"{}\" is not a finite number", as_typed));
     }
     times.push_back(t);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  });
   return times;
 }
 

@@ -8,10 +8,8 @@
 #include "animate/timeline.hpp"
 #include "golden/image_compare.hpp"
 #include "io/output_file.hpp"
-#include "motion/no_motion.hpp"
 #include "render/image_cache.hpp"
-#include "render/panel_drawing.hpp"
-#include "scene/scene.hpp"
+#include "scene/located_error.hpp"
 
 namespace pita::cli {
 
@@ -34,16 +32,12 @@ namespace {
 Failure classify(const std::string& input) {
   try {
     throw;
-  } catch (const scene::SceneError& e) {
-    return {ExitCode::bad_input, e.what()};
-  } catch (const motion::NoMotion& e) {
-    return {ExitCode::bad_input, e.what()};
+  } catch (const scene::LocatedError& e) {  // SceneError, NoMotion, RenderError
+    return {static_cast<ExitCode>(scene::answer(e.kind()).exit_code), e.what()};
   } catch (const animate::AnimationError& e) {
     return {ExitCode::bad_input, e.what()};
   } catch (const render::ImageError& e) {
     return {ExitCode::bad_input, input + ": " + e.what()};
-  } catch (const render::RenderError& e) {
-    return {ExitCode::bad_input, e.what()};
   } catch (const golden::GoldenError& e) {
     return {ExitCode::bad_input, e.what()};
   } catch (const io::OutputError& e) {

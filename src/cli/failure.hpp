@@ -16,8 +16,12 @@ struct Failure {
 };
 
 // The exception being handled (call it inside a catch block):
-//   SceneError, NoMotion, RenderError, GoldenError    -> bad_input, their what()
-//   io::OutputError                                -> failure, its what()
+//   a located error (SceneError, NoMotion, RenderError)
+//                                                      -> its kind's exit code (scene::kLocatedAnswers:
+//                                                         bad_input), its what()
+//   AnimationError, GoldenError                        -> bad_input, their what()
+//   render::ImageError                                 -> bad_input, "INPUT: " and its what()
+//   io::OutputError                                    -> failure, its what()
 //   std::bad_alloc                                     -> bad_input, "INPUT: out of memory ..."
 //   anything else                                      -> internal_error, "INPUT: internal error ..."
 // `input` is the scene (or golden) being worked on, for the last two.

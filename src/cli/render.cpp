@@ -23,6 +23,7 @@
 #include "scene/figure_reader.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
+#include "text/list.hpp"
 
 namespace pita::cli {
 
@@ -40,10 +41,7 @@ class UsageError : public std::runtime_error {
 
 std::vector<render::Format> parse_formats(const std::string& text) {
   std::vector<render::Format> formats;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  text::for_each_item(text, [&](std::string_view item) {
     const auto format = render::format_from_name(item);
     if (!format) {
       throw UsageError(fmt::format("--format: \"{}\" is not a format (use svg, png or pdf, "
@@ -51,9 +49,7 @@ std::vector<render::Format> parse_formats(const std::string& text) {
                                    item));
     }
     if (std::find(formats.begin(), formats.end(), *format) == formats.end()) formats.push_back(*format);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  });
   return formats;
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "sweep/run_variant.hpp"
+#include "text/list.hpp"
 
 namespace pita::cli {
 
@@ -62,10 +63,7 @@ std::string named_sweep_error(const sweep::About& about, const std::string& reas
 
 std::vector<sweep::OutputKind> parse_output_kinds(const std::string& text) {
   std::vector<sweep::OutputKind> kinds;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+  text::for_each_item(text, [&](std::string_view item) {
     const std::optional<sweep::OutputKind> found = sweep::output_kind_named(item);
     if (!found) {
       throw sweep::SweepUsageError(
@@ -74,9 +72,7 @@ std::vector<sweep::OutputKind> parse_output_kinds(const std::string& text) {
                       item));
     }
     if (std::find(kinds.begin(), kinds.end(), *found) == kinds.end()) kinds.push_back(*found);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  });
   return kinds;
 }
 

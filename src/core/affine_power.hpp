@@ -140,8 +140,9 @@ class AffinePowers {
 Affine2 affine_power(const Affine2& A, double t);
 
 // ------------------------------------------------------------ shared verbs
-// The verbs every value type of the core shares (STYLE.md): apply, compose,
-// inverse (affine2.hpp), and pow, log, exp here. A generator (an element of
+// The verbs every value type of the core shares under the same names, so that
+// generic code calls any of them: apply, compose, inverse (affine2.hpp), and
+// pow, log, exp here. A generator (an element of
 // the Lie algebra, the velocity field x -> C x + v) is written as an
 // affinity-shaped pair {C, v}, as velocities are.
 

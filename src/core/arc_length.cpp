@@ -9,6 +9,7 @@
 
 #include <Eigen/Dense>
 
+#include "core/finite_difference.hpp"
 #include "core/limits.hpp"
 
 namespace pita {
@@ -59,24 +60,11 @@ bool finite_point(const Eigen::Vector3d& p) { return p.allFinite(); }
 // step.
 template <class AnyPath>
 double path_speed(const AnyPath& path, double tau, double from, double to, double width) {
-  using Value = decltype(path(tau));
   const double h = limits::kDerivativeStep * width;
-  Value derivative;
-  if (tau - 4.0 * h >= from && tau + 4.0 * h <= to) {
-    static constexpr double c[4] = {4.0 / 5.0, -1.0 / 5.0, 4.0 / 105.0, -1.0 / 280.0};
-    derivative = c[0] * (path(tau + h) - path(tau - h));
-    for (int k = 1; k < 4; ++k) {
-      derivative += c[k] * (path(tau + (k + 1) * h) - path(tau - (k + 1) * h));
-    }
-    derivative /= h;
-  } else {
-    const double g = 0.1 * h;
-    const double side = tau - from < to - tau ? 1.0 : -1.0;  // forward near `from`, backward near `to`
-    const double s = side * g;
-    derivative = (-25.0 * path(tau) + 48.0 * path(tau + s) - 36.0 * path(tau + 2.0 * s) +
-                  16.0 * path(tau + 3.0 * s) - 3.0 * path(tau + 4.0 * s)) / (12.0 * s);
-  }
-  return magnitude(derivative);
+  if (tau - 4.0 * h >= from && tau + 4.0 * h <= to) return magnitude(central_derivative8(path, tau, h));
+  const double g = 0.1 * h;
+  const double side = tau - from < to - tau ? 1.0 : -1.0;  // forward near `from`, backward near `to`
+  return magnitude(one_sided_derivative4(path, tau, side * g));
 }
 
 // The speeds at the nodes of [a, b] and their Gauss-Legendre integral.

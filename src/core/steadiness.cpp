@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 
+#include "core/finite_difference.hpp"
 #include "core/limits.hpp"
 
 namespace pita {
@@ -24,7 +25,7 @@ double relative_acceleration_mean(const Motion& motion, std::span<const Vector> 
   for (int i = 0; i < time_samples; ++i) {
     const double u = (i + 0.5) / time_samples;
     for (const Vector& p : points) {
-      sum += ((relative_velocity(u + h, p) - relative_velocity(u - h, p)) / (2.0 * h)).norm();
+      sum += central_derivative([&](double v) { return relative_velocity(v, p); }, u, h).norm();
     }
   }
   return sum / (static_cast<double>(time_samples) * static_cast<double>(points.size()));

@@ -126,8 +126,9 @@ inline std::optional<Point> fixed_point(const Twirl& T) {
 }
 
 // ------------------------------------------------------------ shared verbs
-// The verbs every value type of the core shares (STYLE.md, as Sophus's groups
-// do): apply, compose, inverse, pow above, and log / exp below.
+// The verbs every value type of the core shares under the same names (as
+// Sophus's groups do), so that generic code calls any of them: apply,
+// compose, inverse, pow above, and log / exp below.
 
 // T . x and T . A, spelled as the verb. (Points are std::complex, so an
 // unqualified call also finds std::apply by ADL: write pita::apply.)

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
+
 namespace pita::golden {
 
 namespace {
@@ -21,7 +23,7 @@ class Walker {
     }
     for (std::size_t i = 0; i < e.size() && r_.structure.empty(); ++i) {
       const std::string at = "/panels/" + std::to_string(i);
-      extent_ = std::max(e[i].at("extent").get<double>(), 1e-300);
+      extent_ = std::max(e[i].at("extent").get<double>(), limits::kTinyScale);
       panel_ = e[i].at("pointer").get<std::string>();
       const Json& ei = e[i].at("items");
       const Json& ai = a[i].at("items");

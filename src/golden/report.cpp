@@ -3,26 +3,14 @@
 #include <fmt/format.h>
 
 #include "io/output_file.hpp"
+#include "text/html.hpp"
 
 namespace pita::golden {
 
 namespace fs = std::filesystem;
+using text::html_escaped;
 
 namespace {
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string_view kind_name(FileKind kind) {
   switch (kind) {
@@ -44,9 +32,9 @@ std::string_view verdict_name(Verdict v) {
 
 // An image cell: the file if it was written, else a note.
 std::string image_cell(const std::string& file, const std::string& caption) {
-  if (file.empty()) return "<td><em>none</em><br>" + escaped(caption) + "</td>";
+  if (file.empty()) return "<td><em>none</em><br>" + html_escaped(caption) + "</td>";
   return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>",
-                     escaped(file), escaped(caption));
+                     html_escaped(file), html_escaped(caption));
 }
 
 }  // namespace
@@ -78,22 +66,22 @@ img { max-width: 420px; border: 1px solid #999; }
                                : !e.check.legible()      ? "LINT"
                                                          : "match";
     html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
-                        escaped(e.check.name), result);
+                        html_escaped(e.check.name), result);
   }
   html += "</table>\n";
 
   for (const ReportEntry& e : entries) {
-    html += fmt::format("<h2 id=\"{0}\">{0}</h2>\n<p>{1}</p>\n", escaped(e.check.name),
-                        escaped(e.check.scene_path));
+    html += fmt::format("<h2 id=\"{0}\">{0}</h2>\n<p>{1}</p>\n", html_escaped(e.check.name),
+                        html_escaped(e.check.scene_path));
     if (!e.error.empty()) {
-      html += "<p class=\"ERROR\">" + escaped(e.error) + "</p>\n";
+      html += "<p class=\"ERROR\">" + html_escaped(e.error) + "</p>\n";
       continue;
     }
     html += "<table><tr><th>output</th><th>golden</th><th>result</th><th>details</th></tr>\n";
     for (const FileCheck& f : e.check.files) {
       html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
-                          kind_name(f.kind), escaped(f.golden.string()), verdict_name(f.verdict),
-                          verdict_name(f.verdict), escaped(f.detail));
+                          kind_name(f.kind), html_escaped(f.golden.string()), verdict_name(f.verdict),
+                          verdict_name(f.verdict), html_escaped(f.detail));
     }
     html += "</table>\n";
     // Every claim, held or not (docs/reference/check.md "Claims").
@@ -101,8 +89,8 @@ img { max-width: 420px; border: 1px solid #999; }
       html += "<table><tr><th>claim</th><th>says</th><th>result</th><th>measured</th></tr>\n";
       for (const analysis::ClaimOutcome& c : e.check.claims) {
         const std::string_view held = c.held ? "match" : "DIFFERS";
-        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", escaped(c.pointer),
-                            escaped(c.says), held, c.held ? "holds" : "FAILS", escaped(c.measured));
+        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(c.pointer),
+                            html_escaped(c.says), held, c.held ? "holds" : "FAILS", html_escaped(c.measured));
       }
       html += "</table>\n";
     }
@@ -111,9 +99,9 @@ img { max-width: 420px; border: 1px solid #999; }
       html += "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
       for (const lint::Finding& f : e.check.lint.findings) {
         const bool accepted = !f.reason.empty();
-        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", escaped(f.check),
-                            escaped(f.pointer), accepted ? "match" : "DIFFERS",
-                            accepted ? "accepted: " + escaped(f.reason) : std::string("FINDING"), escaped(f.message));
+        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
+                            html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
+                            accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
       }
       html += "</table>\n";
     }

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "core/finite_difference.hpp"
 #include "core/limits.hpp"
 #include "core/overloaded.hpp"
 #include "core/pitas/registry.hpp"
@@ -386,7 +387,7 @@ double SceneMotion::warp_rate(double t) const {
   // d tau / d t by a central difference (the ease and the arc-length inverse
   // are smooth inside each span).
   const double h = limits::kWarpRateStep * (last() - first());
-  return (warp_(t + h) - warp_(t - h)) / (2.0 * h);
+  return central_derivative(warp_, t, h);
 }
 
 }  // namespace pita::motion

@@ -4,6 +4,7 @@
 // "" for the whole document), .reason, and .line and .column for malformed
 // JSON (0 otherwise). A C++ exception never escapes as a crash: what is not
 // one of these becomes RuntimeError (pybind11's translation).
+#include <array>
 #include <exception>
 #include <optional>
 #include <string>
@@ -14,11 +15,9 @@
 #include "core/affine_power.hpp"
 #include "golden/image_compare.hpp"
 #include "io/output_file.hpp"
-#include "motion/no_motion.hpp"
 #include "python/bindings.hpp"
 #include "render/image_cache.hpp"
-#include "render/panel_drawing.hpp"
-#include "scene/scene.hpp"
+#include "scene/located_error.hpp"
 
 namespace pita::python {
 
@@ -76,9 +75,15 @@ class NoSamError(Error, ValueError):
         return (type(self), (str(self), self.reason, self.index))
 )";
 
-// The classes, kept for the process's life (the module is never unloaded).
+// The classes, kept for the process's life (the module is never unloaded);
+// those of the located errors by kind, from scene::kLocatedAnswers.
 struct ErrorTypes {
-  py::handle scene, no_motion, render, animation, golden, output, no_sam;
+  std::array<py::handle, scene::kLocatedAnswers.size()> located;
+  py::handle animation, golden, output, no_sam;
+
+  py::handle of(scene::LocatedKind kind) const {
+    return located[static_cast<std::size_t>(&scene::answer(kind) - scene::kLocatedAnswers.data())];
+  }
 };
 ErrorTypes& types() {
   static ErrorTypes all;
@@ -113,9 +118,9 @@ void bind_errors(py::module_& m) {
   }
   ErrorTypes& all = types();
   const auto kept = [&](const char* name) { return py::object(scope[name]).release(); };  // never freed
-  all.scene = kept("SceneError");
-  all.no_motion = kept("NoMotionError");
-  all.render = kept("RenderError");
+  for (std::size_t k = 0; k < scene::kLocatedAnswers.size(); ++k) {
+    all.located[k] = kept(std::string(scene::kLocatedAnswers[k].python_class).c_str());
+  }
   all.animation = kept("AnimationError");
   all.golden = kept("GoldenError");
   all.output = kept("OutputError");
@@ -126,14 +131,10 @@ void bind_errors(py::module_& m) {
     const ErrorTypes& t = types();
     try {
       std::rethrow_exception(thrown);
-    } catch (const scene::SceneError& e) {
-      raise_located(t.scene, e.what(), e.file(), e.pointer(), e.reason(), e.line(), e.column());
-    } catch (const motion::NoMotion& e) {
-      raise_located(t.no_motion, e.what(), e.file(), e.pointer(), e.reason());
-    } catch (const render::RenderError& e) {
-      raise_located(t.render, e.what(), e.file(), e.pointer(), e.reason());
+    } catch (const scene::LocatedError& e) {  // SceneError, NoMotion, RenderError
+      raise_located(t.of(e.kind()), e.what(), e.file(), e.pointer(), e.reason(), e.line(), e.column());
     } catch (const render::ImageError& e) {
-      raise_located(t.render, e.what(), "", "", e.what());
+      raise_located(t.of(scene::LocatedKind::render), e.what(), "", "", e.what());
     } catch (const animate::AnimationError& e) {
       raise(t.animation, py::reinterpret_borrow<py::object>(t.animation)(e.what()));
     } catch (const golden::GoldenError& e) {
@@ -143,7 +144,7 @@ void bind_errors(py::module_& m) {
     } catch (const NoRealLogarithm& e) {
       raise(t.no_sam, py::reinterpret_borrow<py::object>(t.no_sam)(e.what(), e.what()));
     } catch (const MotionDomainError& e) {
-      raise_located(t.no_motion, e.what(), "", "", e.what());
+      raise_located(t.of(scene::LocatedKind::no_motion), e.what(), "", "", e.what());
     }
   });
 }

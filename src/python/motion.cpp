@@ -22,6 +22,7 @@
 #include "python/bindings.hpp"
 #include "python/chunks.hpp"
 #include "python/held_scene.hpp"
+#include "scene/arrow_json.hpp"
 
 namespace pita::python {
 
@@ -36,9 +37,6 @@ Json to_json(const py::handle& value) {
   return Json::parse(text);
 }
 
-Json point_json(Point p) { return Json::array({p.real(), p.imag()}); }
-
-Json arrow_json(const Arrow& a) { return Json{{"p", point_json(a.p)}, {"m", a.m}, {"w", a.w}}; }
 
 Json pose_json(const Pose& pose) {
   return std::visit(
@@ -84,7 +82,7 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
       if (std::visit([]<class P>(const P&) { return PoseTraits<P>::dimension; }, pose) == 3) dimension = 3;
       key = pose_json(pose);
     } else {
-      key = arrow_json(read_arrow(item, name.c_str()));
+      key = scene::arrow_json(read_arrow(item, name.c_str()));
     }
     if (!knots.empty()) {
       Json timed{{"t", knots[i]}};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/overloaded.hpp"
 
@@ -55,7 +56,7 @@ std::optional<CanvasOutline> canvas_outline(const Shape& shape, const ViewTransf
                           const Point c = view(s.center);
                           const double r = s.radius * view.scale;
                           for (int k = 0; k < kCircleEdges; ++k) {
-                            points.push_back(c + std::polar(r, 2.0 * M_PI * k / kCircleEdges));
+                            points.push_back(c + std::polar(r, 2.0 * std::numbers::pi * k / kCircleEdges));
                           }
                           add_path(out, points, true);
                           if (s.fill) out.areas.push_back(points);

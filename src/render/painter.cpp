@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 
 namespace pita::render {
 
@@ -60,7 +61,7 @@ struct ShapePainter {
   void operator()(const Circle& s) const {
     const Point c = view(s.center);
     cairo_new_sub_path(cr);
-    cairo_arc(cr, c.real(), c.imag(), s.radius * view.scale, 0.0, 2.0 * M_PI);
+    cairo_arc(cr, c.real(), c.imag(), s.radius * view.scale, 0.0, 2.0 * std::numbers::pi);
     if (s.fill) {
       set_color(cr, *s.fill, s.line.opacity);
       cairo_fill_preserve(cr);

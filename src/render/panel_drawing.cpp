@@ -104,10 +104,6 @@ std::vector<analysis::FrameDerivatives> PanelBuilder::derivatives(const std::vec
 }  // namespace detail
 
 
-RenderError::RenderError(const std::string& file, const std::string& pointer,
-                         const std::string& reason)
-    : std::runtime_error(scene::located(file, pointer, reason)), file_(file), pointer_(pointer), reason_(reason) {}
-
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {
   // The least and greatest knots.

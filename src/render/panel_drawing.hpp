@@ -4,9 +4,11 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/drawing.hpp"
+#include "scene/located_error.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::motion {
@@ -16,19 +18,12 @@ class Stage;  // motion/stage.hpp
 namespace pita::render {
 
 // A figure that cannot be drawn: the motion does not exist, or a frame is not
-// finite. what() is "FILE: POINTER: reason", as scene errors are.
-class RenderError : public std::runtime_error {
+// finite. A located error (scene/located_error.hpp): what() is
+// "FILE: POINTER: reason", as scene errors are.
+class RenderError : public scene::LocatedError {
  public:
-  RenderError(const std::string& file, const std::string& pointer, const std::string& reason);
-
-  const std::string& file() const { return file_; }
-  const std::string& pointer() const { return pointer_; }
-  const std::string& reason() const { return reason_; }
-
- private:
-  std::string file_;
-  std::string pointer_;
-  std::string reason_;
+  RenderError(std::string file, std::string pointer, std::string reason)
+      : LocatedError(scene::LocatedKind::render, std::move(file), std::move(pointer), std::move(reason)) {}
 };
 
 // One frame of an animation ("what": "motion", docs/reference/animate.md "Animation"): the

@@ -2,7 +2,6 @@
 
 #include <dlfcn.h>
 
-#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -13,8 +12,6 @@ namespace {
 // The run-time library of Debian's libpangocairo-1.0-0 (a Depends of the
 // package, cmake/PitaInstall.cmake): its soname, stable since pango 1.0.
 constexpr const char* kPangoCairoLibrary = "libpangocairo-1.0.so.0";
-
-std::atomic<bool> pango_is_loaded{false};
 
 template <class Function>
 void find_symbol(void* handle, const char* name, Function& function) {
@@ -56,10 +53,8 @@ PangoLibrary load_pango() {
   find_symbol(handle, "pango_parse_markup", library.parse_markup);
   // GObject and GLib are dependencies of pangocairo: dlsym looks there too.
   find_symbol(handle, "g_object_unref", library.object_unref);
-  find_symbol(handle, "g_markup_escape_text", library.markup_escape_text);
   find_symbol(handle, "g_base64_encode", library.base64_encode);
   find_symbol(handle, "g_free", library.free);
-  pango_is_loaded = true;
   return library;
 }
 
@@ -69,7 +64,5 @@ const PangoLibrary& pango() {
   static const PangoLibrary library = load_pango();
   return library;
 }
-
-bool pango_loaded() { return pango_is_loaded.load(); }
 
 }  // namespace pita::render

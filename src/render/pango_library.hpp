@@ -34,7 +34,6 @@ struct PangoLibrary {
   decltype(&::pango_font_description_free) font_description_free;
   decltype(&::pango_parse_markup) parse_markup;
   decltype(&::g_object_unref) object_unref;
-  decltype(&::g_markup_escape_text) markup_escape_text;
   decltype(&::g_base64_encode) base64_encode;
   decltype(&::g_free) free;
 };
@@ -43,9 +42,5 @@ struct PangoLibrary {
 // of the process. Throws std::runtime_error naming the library and the
 // Debian package to install when it cannot be loaded or lacks a function.
 const PangoLibrary& pango();
-
-// Whether pango has been loaded in this process yet (for the test that a
-// figure without text never loads it).
-bool pango_loaded();
 
 }  // namespace pita::render

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -160,7 +161,7 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
       fail(pointer + "/w", fmt::format("winding must be within +-{:g} radians (about {:.0f} "
                                        "turns; beyond, 2 pi k loses the angle's precision) "
                                        "(got {})",
-                                       kMaxWinding, kMaxWinding / (2 * 3.141592653589793),
+                                       kMaxWinding, kMaxWinding / (2 * std::numbers::pi),
                                        number_text(keyframe.arrow.w)));
     }
   }

@@ -168,7 +168,7 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
 // the panel's poses, scaled so that the smallest and the largest area met by
 // any curve span the box's height (a constant area sits at mid-height), with
 // each curve's summary printed under the box: monotone and end/start, or its
-// interior extremum (render/plot.cpp).
+// interior extremum (render/time_chart.cpp).
 enum class PlotOf { distance, area };
 struct PlotLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn

@@ -60,6 +60,26 @@ inline constexpr int kMaxKeyframes = 1000;
 inline constexpr int kMinPoints = 4;
 inline constexpr int kMaxPoints = kMaxKeyframes + 1;
 
+// ---------------------------------------------------------------- poses
+// The pose readers' numerical tests (scene/pose_reader.cpp,
+// scene/space_pose_reader.cpp). They are relative, so that a pose's units do
+// not matter, and the schema cannot state them.
+
+// A reference triangle is degenerate when twice its area is at most this
+// fraction of the product of its two edges from the first point; a reference
+// tetrahedron, when six times its volume is at most this fraction of the
+// product of its three edges from the first point.
+inline constexpr double kDegenerateSimplex = 1e-12;
+// A pose is too close to singular to invert when |det L| is at most this
+// fraction of |L|_F^2 (in the plane: about the ratio of its singular values,
+// |det| = |L|_F^2 / 2 for a similarity) or of |L|_F^3 (in space). The readers'
+// messages quote it ("1e-16", "differ by more than 1e16").
+inline constexpr double kSingularPose = 1e-16;
+// A 3D pose that fails that test is called singular (it flattens space), not
+// only ill-conditioned, when its smallest singular value is at most this
+// fraction of its largest.
+inline constexpr double kSingularValueRatio = 1e-15;
+
 // ---------------------------------------------------------------- figures
 
 inline constexpr int kMinCanvasSide = 16;        // pixels

@@ -1,11 +1,13 @@
 #include "scene/pose_reader.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
 #include "scene/did_you_mean.hpp"
 #include "scene/image_file.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene::detail {
@@ -50,11 +52,11 @@ std::array<Point, 3> read_three_points(const JsonReader& reader, const Json& val
 }
 
 // Twice the signed area of the triangle, and whether it is degenerate: the
-// area below 1e-12 of the product of its two edge lengths.
+// area below kDegenerateSimplex (1e-12) of the product of its two edge lengths.
 bool degenerate(const std::array<Point, 3>& p, double& cross) {
   const Point e1 = p[1] - p[0], e2 = p[2] - p[0];
   cross = e1.real() * e2.imag() - e1.imag() * e2.real();
-  return !(std::abs(cross) > 1e-12 * std::abs(e1) * std::abs(e2)) || !std::isfinite(cross);
+  return !(std::abs(cross) > kDegenerateSimplex * std::abs(e1) * std::abs(e2)) || !std::isfinite(cross);
 }
 
 Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -78,12 +80,12 @@ Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::stri
   }
   // A pose may reverse orientation (a mirrored shape); the SAM between two
   // poses needs C o B^-1 to preserve it, which the motion checks. A pose must
-  // be invertible, numerically: |det| above 1e-16 of |L|_F^2, which is about
+  // be invertible, numerically: |det| above kSingularPose (1e-16) of |L|_F^2, which is about
   // the ratio of its singular values (|det| = |L|_F^2 / 2 for a similarity):
   // a matrix singular but for rounding, such as [[0.1, 0.3], [0.2, 0.6]], is
   // below; a stretch diag(1e7, 1e-7) (ratio 1e-14) is above.
   const double det = A.L.determinant();
-  if (!(std::abs(det) > 1e-16 * A.L.squaredNorm()) || !std::isfinite(det)) {
+  if (!(std::abs(det) > kSingularPose * A.L.squaredNorm()) || !std::isfinite(det)) {
     reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {} (its "
                                      "singular values differ by more than 1e16): the pose is "
                                      "singular, it flattens the plane onto a line or a point",
@@ -221,7 +223,7 @@ std::vector<ShapeOutline> builtin_outline(std::string_view name) {
     // as line art): frame, ground, a house with a door, a tree and the sun.
     std::vector<Point> sun;
     for (int i = 0; i < 24; ++i) {
-      const double angle = 2.0 * 3.141592653589793 * i / 24.0;
+      const double angle = 2.0 * std::numbers::pi * i / 24.0;
       sun.push_back(Point{0.8, 0.58} + 0.08 * Point{std::cos(angle), std::sin(angle)});
     }
     return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.75}, {0.0, 0.75}}),

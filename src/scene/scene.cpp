@@ -31,11 +31,6 @@ using detail::value_text;
 using detail::Interval;
 }  // namespace
 
-std::string located(const std::string& file, const std::string& pointer,
-                    const std::string& reason) {
-  return pointer.empty() ? file + ": " + reason : file + ": " + pointer + ": " + reason;
-}
-
 Panel scene_panel(const Scene& scene, std::string pointer) {
   Panel panel;
   panel.keys = scene.keys;
@@ -47,19 +42,6 @@ Panel scene_panel(const Scene& scene, std::string pointer) {
   panel.motion_pointer = keys_field(scene.keys);
   return panel;
 }
-
-SceneError::SceneError(std::string file, std::string pointer, std::string reason)
-    : std::runtime_error(located(file, pointer, reason)),
-      file_(std::move(file)),
-      pointer_(std::move(pointer)),
-      reason_(std::move(reason)) {}
-
-SceneError::SceneError(std::string file, int line, int column, std::string reason)
-    : std::runtime_error(fmt::format("{}:{}:{}: {}", file, line, column, reason)),
-      file_(std::move(file)),
-      reason_(std::move(reason)),
-      line_(line),
-      column_(column) {}
 
 Scene load_scene(const std::filesystem::path& path, const ReadOptions& options) {
   return parse_scene(read_input_file(path, kMaxSceneFileBytes, "scene file"), path.string(), options);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <array>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "scene/lint_settings.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
+#include "scene/located_error.hpp"
 #include "scene/motion_keys.hpp"
 #include "scene/read_options.hpp"
 
@@ -94,29 +96,14 @@ LayersOf<LayerType> layers_of(const Scene& scene, const Panel& panel);
 //   "FILE: /keyframes/1/m: magnitude must be > 0 (got -2)"   (a value; the
 //       JSON Pointer of RFC 6901 is left out when it is the whole document), or
 //   "FILE:3:14: malformed JSON: ..."                         (a position of the text).
-class SceneError : public std::runtime_error {
+// (A located error: scene/located_error.hpp.)
+class SceneError : public LocatedError {
  public:
-  SceneError(std::string file, std::string pointer, std::string reason);
-  SceneError(std::string file, int line, int column, std::string reason);
-
-  const std::string& file() const { return file_; }
-  const std::string& pointer() const { return pointer_; }  // "" for the whole document
-  const std::string& reason() const { return reason_; }
-  int line() const { return line_; }      // 1-based; 0 when the error is not at a position
-  int column() const { return column_; }  // 1-based; 0 when the error is not at a position
-
- private:
-  std::string file_;
-  std::string pointer_;
-  std::string reason_;
-  int line_ = 0;
-  int column_ = 0;
+  SceneError(std::string file, std::string pointer, std::string reason)
+      : LocatedError(LocatedKind::scene, std::move(file), std::move(pointer), std::move(reason)) {}
+  SceneError(std::string file, int line, int column, std::string reason)
+      : LocatedError(LocatedKind::scene, std::move(file), line, column, std::move(reason)) {}
 };
-
-// "FILE: POINTER: reason", or "FILE: reason" for the whole document (""): how
-// every error about a scene is worded (SceneError, the motion stage's
-// NoMotion, render errors).
-std::string located(const std::string& file, const std::string& pointer, const std::string& reason);
 
 // The panel that is the scene itself: its method, keyframes or poses, shapes,
 // options, timing and samples (a scene without "panels" draws this one).

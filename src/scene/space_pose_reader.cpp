@@ -11,6 +11,7 @@
 #include "scene/pose_reader.hpp"
 #include "scene/scene_readers.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/limits.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -60,13 +61,13 @@ Affine3 frame_of(const std::array<Eigen::Vector3d, 4>& p) {
   return A;
 }
 
-// Whether the tetrahedron is flat: its volume (times 6) below 1e-12 of the
+// Whether the tetrahedron is flat: its volume (times 6) below kDegenerateSimplex (1e-12) of the
 // product of its three edge lengths from p0.
 bool degenerate(const std::array<Eigen::Vector3d, 4>& p) {
   const Affine3 frame = frame_of(p);
   const double volume = frame.L.determinant();
   const double edges = frame.L.col(0).norm() * frame.L.col(1).norm() * frame.L.col(2).norm();
-  return !(std::abs(volume) > 1e-12 * edges) || !std::isfinite(volume);
+  return !(std::abs(volume) > kDegenerateSimplex * edges) || !std::isfinite(volume);
 }
 
 Affine3 read_matrix3(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -95,18 +96,18 @@ Affine3 read_matrix3(const JsonReader& reader, const Json& value, const std::str
       }
     }
   }
-  // Invertible, numerically: |det| above 1e-16 of |L|_F^3 (as in 2D with
+  // Invertible, numerically: |det| above kSingularPose (1e-16) of |L|_F^3 (as in 2D with
   // |L|_F^2: about the ratio of the smallest singular value to the largest
   // times that of the middle one). A mirrored pose is allowed; the SAM
   // between two poses needs C o B^-1 to preserve orientation, which the
   // motion checks.
   const double det = A.L.determinant();
   const double norm = A.L.norm();
-  if (!(std::abs(det) > 1e-16 * norm * norm * norm) || !std::isfinite(det)) {
+  if (!(std::abs(det) > kSingularPose * norm * norm * norm) || !std::isfinite(det)) {
     // Say which: singular (a singular value is zero to rounding), or only
     // ill-conditioned (a strong shear of determinant 1 fails the test too).
     const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(A.L).singularValues();
-    if (!std::isfinite(det) || !(sigma(2) > 1e-15 * sigma(0))) {
+    if (!std::isfinite(det) || !(sigma(2) > kSingularValueRatio * sigma(0))) {
       reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}: the "
                                        "pose is singular, it flattens space onto a plane, a line or a point",
                                        number_text(det)));

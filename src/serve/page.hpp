@@ -1,6 +1,7 @@
 // The page of `pita serve` (src/serve/page.html), built into the binary:
-// CMake writes its text into page.cpp (src/serve/CMakeLists.txt), so that
-// nothing is fetched or installed beside pita to show it.
+// CMake writes its text into serve_page.cpp in the build folder
+// (src/CMakeLists.txt), so that nothing is fetched or installed beside pita
+// to show it.
 #pragma once
 
 #include <string_view>

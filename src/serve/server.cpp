@@ -28,6 +28,7 @@
 #include "scene/image_file.hpp"
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
+#include "scene/located_error.hpp"
 #include "scene/scene.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/json_edit.hpp"
@@ -49,17 +50,26 @@ Json error_json(const std::exception_ptr& thrown, const std::string& path) {
   Json error{{"file", path}, {"line", 0}, {"column", 0}, {"pointer", ""}, {"reason", ""}, {"message", ""}};
   try {
     std::rethrow_exception(thrown);
-  } catch (const scene::SceneError& e) {
+  } catch (const scene::LocatedError& e) {  // SceneError, NoMotion, RenderError
     error.update({{"file", e.file()}, {"line", e.line()}, {"column", e.column()}, {"pointer", e.pointer()},
                   {"reason", e.reason()}, {"message", e.what()}});
-  } catch (const motion::NoMotion& e) {
-    error.update({{"file", e.file()}, {"pointer", e.pointer()}, {"reason", e.reason()}, {"message", e.what()}});
-  } catch (const render::RenderError& e) {
-    error.update({{"file", e.file()}, {"pointer", e.pointer()}, {"reason", e.reason()}, {"message", e.what()}});
   } catch (const std::exception& e) {
     error.update({{"reason", e.what()}, {"message", path + ": " + e.what()}});
   }
   return error;
+}
+
+// The HTTP status of the answer to a request that met the error: its kind's
+// row of scene::kLocatedAnswers for a located error, else 422 (the scene, as
+// it is, cannot be drawn or measured).
+int error_status(const std::exception_ptr& thrown) {
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const scene::LocatedError& e) {
+    return scene::answer(e.kind()).http_status;
+  } catch (...) {
+    return 422;
+  }
 }
 
 // One scene of the command line: its last good figure and what is wrong now.
@@ -308,6 +318,15 @@ void send_error(httplib::Response& res, int status, const std::string& message) 
   send_json(res, status, Json{{"error", message}}.dump());
 }
 
+// The answer to a request on the scene at `path` that met the exception being
+// handled: error_status, and error_json as the body (or as its member
+// `member`: "refused" for an edit the scene would not take).
+void send_failure(httplib::Response& res, const std::string& path, const char* member = nullptr) {
+  const std::exception_ptr thrown = std::current_exception();
+  const Json error = error_json(thrown, path);
+  send_json(res, error_status(thrown), (member == nullptr ? error : Json{{member, error}}).dump());
+}
+
 }  // namespace
 
 std::string random_token() {
@@ -384,7 +403,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
       // accepts it (380 ms for Fig. 1's 150 kB; 7 ms to send it as it is).
       res.set_content(*svg, "image/svg+xml; charset=utf-8");
     } catch (...) {
-      send_json(res, 422, error_json(std::current_exception(), settings.scenes[*i].string()).dump());
+      send_failure(res, settings.scenes[*i].string());
     }
   });
   http.Get(R"(/api/measures/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
@@ -395,7 +414,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
       if (!text) return send_error(res, 409, "the scene has no good figure yet: see its error");
       send_json(res, 200, *text);
     } catch (...) {
-      send_json(res, 422, error_json(std::current_exception(), settings.scenes[*i].string()).dump());
+      send_failure(res, settings.scenes[*i].string());
     }
   });
   http.Get("/api/events", [&](const httplib::Request&, httplib::Response& res) {
@@ -432,7 +451,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
       send_error(res, 400, e.what());
     } catch (...) {
       // The edit would make the scene bad: refused, with the reason; the file is as it was.
-      send_json(res, 422, Json{{"refused", error_json(std::current_exception(), settings.scenes[*i].string())}}.dump());
+      send_failure(res, settings.scenes[*i].string(), "refused");
     }
   });
 

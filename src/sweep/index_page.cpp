@@ -15,6 +15,7 @@
 #include "io/output_file.hpp"
 #include "sweep/folder.hpp"
 #include "sweep/manifest.hpp"
+#include "text/html.hpp"
 
 namespace pita::sweep {
 
@@ -37,20 +38,6 @@ std::string url(std::string_view name) {
       out += c;
     } else {
       out += fmt::format("%{:02X}", u);
-    }
-  }
-  return out;
-}
-
-std::string html(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
     }
   }
   return out;
@@ -387,11 +374,11 @@ std::string write_index_html(const SheetInput& input) {
       "tr.failed td{{background:#fee}} "
       "td img{{height:80px;width:auto;background:#fff;display:block}} #page{{width:6em}}</style></head>\n"
       "<body>\n<h1>pita sweep of {0}</h1>\n",
-      html(input.name));
+      text::html_escaped(input.name));
   out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", count, input.variants,
-                     failed, html(input.base_path));
+                     failed, text::html_escaped(input.base_path));
   for (std::size_t k = 0; k < input.pointers.size(); ++k) {
-    out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", html(input.pointers[k]));
+    out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", text::html_escaped(input.pointers[k]));
   }
   out += ". Every row is in <a href=\"manifest.csv\">manifest.csv</a>; click a heading to sort.</p>\n";
   out += "<p><label>Sort by <select id=\"sort\"><option value=\"index\">index</option></select></label> "

@@ -19,12 +19,12 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(Output, KindByExtension) {
-  EXPECT_EQ(output_kind("a.svg"), OutputKind::svg);
-  EXPECT_EQ(output_kind("dir/a.SVG"), OutputKind::svg);
-  EXPECT_EQ(output_kind("a.mp4"), OutputKind::mp4);
-  EXPECT_EQ(output_kind("a.webm"), OutputKind::webm);
-  EXPECT_EQ(output_kind("frames"), OutputKind::directory);
-  EXPECT_EQ(output_kind("frames.d/"), OutputKind::directory);
+  EXPECT_EQ(output_kind("a.svg"), AnimationOutput::svg);
+  EXPECT_EQ(output_kind("dir/a.SVG"), AnimationOutput::svg);
+  EXPECT_EQ(output_kind("a.mp4"), AnimationOutput::mp4);
+  EXPECT_EQ(output_kind("a.webm"), AnimationOutput::webm);
+  EXPECT_EQ(output_kind("frames"), AnimationOutput::directory);
+  EXPECT_EQ(output_kind("frames.d/"), AnimationOutput::directory);
   EXPECT_THROW(output_kind("a.gif"), AnimationError);
   EXPECT_THROW(output_kind("a.png"), AnimationError);
   try {
@@ -47,7 +47,7 @@ TEST(Output, DirectoryOfFramesWithTheirTimes) {
   const Timeline timeline = make_timeline(scene, {std::nullopt, std::nullopt, 5});
   Request request;
   request.out = dir / "frames";
-  request.kind = OutputKind::directory;
+  request.kind = AnimationOutput::directory;
   request.progress = false;
   request.threads = 2;
   write_animation(scene, timeline, request);
@@ -81,14 +81,14 @@ TEST(Output, DirectoryOfFramesWithTheirTimes) {
 TEST(Output, TotalWorkIsLimited) {
   const scene::Scene scene = scene::load_scene(fs::path(PITA_SOURCE_DIR) / "scenes" / "fig24-animation-frames.json");
   Request png;
-  png.kind = OutputKind::directory;
+  png.kind = AnimationOutput::directory;
   // 900 x 640 pixels a frame: 17 361 frames fit in 1e10 pixels, 17 362 do not
   EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 17361}), png));
   EXPECT_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 17362}), png), AnimationError);
   png.budget = 2.0;
   EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 30000}), png));
   Request svg;
-  svg.kind = OutputKind::svg;
+  svg.kind = AnimationOutput::svg;
   EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 5000}), svg));
   try {
     check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, 5001}), svg);
@@ -112,11 +112,11 @@ TEST(Output, TheFramesDrawingIsLimited) {
       "heavy.json");
   const double one = render::estimate_cost(scene).units;
   ASSERT_GT(one, 1000.0);
-  for (const OutputKind kind : {OutputKind::directory, OutputKind::svg, OutputKind::mp4}) {
+  for (const AnimationOutput kind : {AnimationOutput::directory, AnimationOutput::svg, AnimationOutput::mp4}) {
     Request request;
     request.kind = kind;
     request.scale = 0.1;  // the pixel budget is not what limits here
-    request.budget = kind == OutputKind::svg ? 3.0 : 1.0;  // nor the vector frames' (5000 x 3)
+    request.budget = kind == AnimationOutput::svg ? 3.0 : 1.0;  // nor the vector frames' (5000 x 3)
     const int fit = static_cast<int>(kMaxAnimationUnits * request.budget / one);
     ASSERT_LT(fit, 5000 * request.budget);
     EXPECT_NO_THROW(check_total_work(scene, make_timeline(scene, {std::nullopt, std::nullopt, fit}), request));
@@ -142,9 +142,9 @@ TEST(Output, VideoWithoutFfmpegIsRefusedNamingThePackage) {
   fs::create_directories(dir);
   const scene::Scene scene = scene::load_scene(fs::path(PITA_SOURCE_DIR) / "scenes" / "fig24-animation-frames.json");
   const Timeline timeline = make_timeline(scene, {std::nullopt, std::nullopt, 3});
-  for (const OutputKind kind : {OutputKind::mp4, OutputKind::webm}) {
+  for (const AnimationOutput kind : {AnimationOutput::mp4, AnimationOutput::webm}) {
     Request request;
-    request.out = dir / (kind == OutputKind::mp4 ? "clip.mp4" : "clip.webm");
+    request.out = dir / (kind == AnimationOutput::mp4 ? "clip.mp4" : "clip.webm");
     request.kind = kind;
     request.progress = false;
     request.ffmpeg = "";

@@ -1,4 +1,4 @@
-// The motion stage's one error (src/motion/no_motion.cpp).
+// The motion stage's one error (src/motion/no_motion.hpp).
 #include <gtest/gtest.h>
 
 #include "motion/no_motion.hpp"

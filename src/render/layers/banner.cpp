@@ -1,11 +1,11 @@
 // "banner" in an arrow scene (Sec. 7.3): a text's outlines mapped through the
-// quad strip of the frames (render/banner.hpp).
+// quad strip of the frames (render/text_outline.hpp).
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
-#include "render/banner.hpp"
+#include "render/text_outline.hpp"
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 

@@ -2,6 +2,7 @@
 // one file per layer kind whose drawing stands alone).
 #pragma once
 
+#include <numbers>
 #include <string>
 
 #include "render/drawing.hpp"
@@ -11,7 +12,7 @@ namespace pita::render {
 
 // The "existence" layer alone (Fig. 6 of the SAM paper): exposed for tests.
 // Cells are rectangles [a0, a1] x [h s0, h s1] with h = kExistenceHeight.
-inline constexpr double kExistenceHeight = 3.141592653589793;  // drawn height of s in [0, 1]
+inline constexpr double kExistenceHeight = std::numbers::pi;  // drawn height of s in [0, 1]
 Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string& pointer);
 
 }  // namespace pita::render

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
@@ -26,7 +27,7 @@ void PanelBuilder::add(const scene::FixedPointsLayer& layer) {
     // f at infinity (P7 degenerate to P1's parabola): nothing to draw.
     if (!global) return;
   }
-  const double dot = 0.025 * std::max(keyframes_.front().arrow.m, 1e-300);
+  const double dot = 0.025 * std::max(keyframes_.front().arrow.m, limits::kTinyScale);
   int index = 0;
   for (const analysis::FrameDerivatives& d : derivatives(times)) {
     std::optional<Point> center = global;

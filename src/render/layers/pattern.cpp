@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/spiral.hpp"
@@ -22,7 +23,7 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
   const std::vector<double> times = layer.times.empty() ? sequence_times(layer.samples, layer.range) : layer.times;
   const std::vector<Arrow> pattern = own ? frames(layer_motion(layer.method, layer.options), times) : frames(times);
   // A dot's radius: a fixed share of the first keyframe's magnitude.
-  const double dot = 0.015 * std::max(keyframes_.front().arrow.m, 1e-300);
+  const double dot = 0.015 * std::max(keyframes_.front().arrow.m, limits::kTinyScale);
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     const Arrow& frame = pattern[i];
     const Segment s = layer.extended ? extended_form(frame) : Segment{frame.p, frame.q()};

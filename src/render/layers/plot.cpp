@@ -1,4 +1,4 @@
-// "plot": a curve of the panel's motion against time (render/plot.hpp); in a
+// "plot": a curve of the panel's motion against time (render/time_chart.hpp); in a
 // pose scene also "of": "area" (SAM Fig. 9, docs/paper-notes.md N48), the area
 // of the frames over time under each of the layer's methods.
 #include <optional>
@@ -12,7 +12,7 @@
 #include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/panel_builder.hpp"
-#include "render/plot.hpp"
+#include "render/time_chart.hpp"
 
 namespace pita::render {
 

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/limits.hpp"
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 
@@ -52,7 +53,7 @@ void PanelBuilder::add(const scene::PointTrajectoryLayer& layer) {
     low = {std::min(low.real(), point.p.real()), std::min(low.imag(), point.p.imag())};
     high = {std::max(high.real(), point.p.real()), std::max(high.imag(), point.p.imag())};
   }
-  const double radius = 0.012 * std::max(std::abs(high - low), 1e-300);
+  const double radius = 0.012 * std::max(std::abs(high - low), limits::kTinyScale);
   for (std::size_t i = 0; i < points_.size(); ++i) {
     push(static_cast<int>(i), Circle{points_[i].p, radius, layer.line, layer.line.color});
   }

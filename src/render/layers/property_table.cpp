@@ -1,12 +1,12 @@
 // "property-table" in an arrow scene (Fig. 10): the properties of Sec. 4
-// measured as `pita audit` does, drawn as a table (render/property_table.hpp).
+// measured as `pita audit` does, drawn as a table (render/audit_table.hpp).
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
-#include "render/property_table.hpp"
+#include "render/audit_table.hpp"
 #include "render/decision_tree.hpp"
 #include "analysis/decision_tree.hpp"
 #include "scene/did_you_mean.hpp"

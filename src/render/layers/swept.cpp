@@ -12,6 +12,7 @@
 
 #include "analysis/swept_edge.hpp"
 #include "core/grazing_point.hpp"
+#include "core/limits.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
@@ -66,7 +67,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::SweptLayer& layer) 
       high = {std::max(high.real(), p.real()), std::max(high.imag(), p.imag())};
     }
   }
-  const double dot = 0.008 * std::max(std::abs(high - low), 1e-300);
+  const double dot = 0.008 * std::max(std::abs(high - low), limits::kTinyScale);
   if (layer.segments) {
     const std::vector<double> ts = panel.times(layer.samples, layer.range);
     for (std::size_t i = 0; i < ts.size(); ++i) {

@@ -1,4 +1,4 @@
-#include "render/plot.hpp"
+#include "render/time_chart.hpp"
 
 #include <algorithm>
 #include <optional>

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "render/banner.hpp"
+#include "render/text_outline.hpp"
 #include "render/panel_drawing.hpp"
 #include "render/strip.hpp"
 #include "render_support.hpp"

@@ -1,4 +1,4 @@
-#include "render/banner.hpp"
+#include "render/text_outline.hpp"
 
 #include <cairo.h>
 

@@ -1,4 +1,4 @@
-// The "plot" layer (src/render/plot.cpp): the distance-time curve placed in
+// The "plot" layer (src/render/time_chart.cpp): the distance-time curve placed in
 // its box, the diagonal, the marks at the frame times.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "motion/scene_motion.hpp"
-#include "render/plot.hpp"
+#include "render/time_chart.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {
