@@ -5,7 +5,10 @@
 #   scripts/test.sh              the Release build in build/ (gcc): every test
 #   scripts/test.sh --sanitize   the same suite in build-sanitize/: clang with
 #                                ASan + UBSan (every report fatal, leaks
-#                                included), plus the fuzz targets' replays
+#                                included), plus the fuzz targets' replays;
+#                                but the Slurm cluster test (label slurm),
+#                                which tests Slurm, not memory: the Release
+#                                step runs it
 #   scripts/test.sh --quick [LAYER...]
 #                                the edit loop: builds only the unit tests of
 #                                the layers named (io core text scene motion analysis
@@ -23,7 +26,7 @@ for arg in "$@"; do
   case "$arg" in
     --sanitize) mode=sanitize ;;
     --quick) mode=quick ;;
-    -h|--help) sed -n '2,15s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,18s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
     -*) echo "scripts/test.sh: unknown option \"$arg\" (use --sanitize, --quick [LAYER...] or nothing)" >&2; exit 2 ;;
     *)
       if [ "$mode" != quick ] || [[ ! " ${PITA_UNIT_LAYERS[*]} " == *" $arg "* ]]; then
@@ -37,7 +40,7 @@ done
 case "$mode" in
   sanitize)
     pita_build_sanitize
-    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" ;;
+    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" -LE '^slurm$' ;;
   quick)
     if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
     pita_build_tests "${layers[@]/#/test_}"

@@ -66,60 +66,68 @@ Json cell_json(const AuditReport& report, const AuditCell& cell, const std::stri
   return j;
 }
 
-}  // namespace
+// The counterexample file of cell i, or "".
+std::string file_of(const std::vector<std::string>& counterexamples, std::size_t i) {
+  return i < counterexamples.size() ? counterexamples[i] : std::string();
+}
 
-std::string counterexample_name(const AuditCell& cell) { return id(cell.method) + "-" + id(cell.property) + ".json"; }
+// The paper's table (Fig. 10) and where the measurement disagrees with it.
+Json paper_json(const AuditReport& report) {
+  Json paper;
+  paper["source"] = "PITA paper, Fig. 10 and Sec. 3.3, 4.1-4.11 (P1-P8 only)";
+  paper["table"] = Json::array();
+  for (const PrintedRow& row : printed_table()) {
+    Json methods = Json::array();
+    for (Method m : row.printed) methods.push_back(id(m));
+    paper["table"].push_back(Json{{"property", id(row.property)}, {"printed", methods}, {"source", row.source}});
+  }
+  paper["disagreements"] = Json::array();
+  for (const Disagreement& d : disagreements(report)) {
+    paper["disagreements"].push_back(Json{{"method", id(d.method)}, {"property", id(d.property)},
+                                          {"printed", d.printed}, {"measured", d.measured}, {"reason", d.reason}});
+  }
+  return paper;
+}
 
-std::string format_audit(const AuditReport& report, AuditFormat format, const std::vector<std::string>& counterexamples) {
-  const auto file_of = [&](std::size_t i) { return i < counterexamples.size() ? counterexamples[i] : std::string(); };
-  if (format == AuditFormat::json) {
-    Json j;
-    j["seed"] = report.options.seed;
-    j["configs"] = report.options.configs;
-    j["crafted"] = static_cast<int>(crafted_configs().size());
-    j["methods"] = Json::array();
-    for (Method m : report.methods) j["methods"].push_back(id(m));
-    j["properties"] = Json::array();
-    for (Property p : report.properties) {
-      const PropertyInfo& pi = info(p);
-      j["properties"].push_back(Json{{"id", pi.id}, {"letter", pi.letter}, {"section", pi.section},
-                                     {"measure", pi.measure}, {"holds_when", pi.reaction ? "smallest value > threshold"
-                                                                                         : "largest value <= threshold"},
-                                     {"threshold", pi.threshold}});
-    }
-    j["cells"] = Json::array();
-    for (std::size_t i = 0; i < report.cells.size(); ++i) j["cells"].push_back(cell_json(report, report.cells[i], file_of(i)));
-    Json paper;
-    paper["source"] = "PITA paper, Fig. 10 and Sec. 3.3, 4.1-4.11 (P1-P8 only)";
-    paper["table"] = Json::array();
-    for (const PrintedRow& row : printed_table()) {
-      Json methods = Json::array();
-      for (Method m : row.printed) methods.push_back(id(m));
-      paper["table"].push_back(Json{{"property", id(row.property)}, {"printed", methods}, {"source", row.source}});
-    }
-    paper["disagreements"] = Json::array();
-    for (const Disagreement& d : disagreements(report)) {
-      paper["disagreements"].push_back(Json{{"method", id(d.method)}, {"property", id(d.property)},
-                                            {"printed", d.printed}, {"measured", d.measured}, {"reason", d.reason}});
-    }
-    j["paper"] = paper;
-    return j.dump(2) + "\n";
+std::string audit_json(const AuditReport& report, const std::vector<std::string>& counterexamples) {
+  Json j;
+  j["seed"] = report.options.seed;
+  j["configs"] = report.options.configs;
+  j["crafted"] = static_cast<int>(crafted_configs().size());
+  j["methods"] = Json::array();
+  for (Method m : report.methods) j["methods"].push_back(id(m));
+  j["properties"] = Json::array();
+  for (Property p : report.properties) {
+    const PropertyInfo& pi = info(p);
+    j["properties"].push_back(Json{{"id", pi.id}, {"letter", pi.letter}, {"section", pi.section},
+                                   {"measure", pi.measure}, {"holds_when", pi.reaction ? "smallest value > threshold"
+                                                                                       : "largest value <= threshold"},
+                                   {"threshold", pi.threshold}});
   }
-  std::string out;
-  if (format == AuditFormat::csv) {
-    out = "method,property,holds,violation,measured,config,t,counterexample\n";
-    for (std::size_t i = 0; i < report.cells.size(); ++i) {
-      const AuditCell& c = report.cells[i];
-      const bool timed = c.worst.t && std::isfinite(*c.worst.t);
-      out += fmt::format("{},{},{},{:.6g},{},{},{},{}\n", id(c.method), id(c.property), c.holds ? "true" : "false",
-                         c.value, c.measured, csv_field(where(report, c)),
-                         timed ? fmt::format("{:.17g}", *c.worst.t) : "", csv_field(file_of(i)));
-    }
-    return out;
+  j["cells"] = Json::array();
+  for (std::size_t i = 0; i < report.cells.size(); ++i) {
+    j["cells"].push_back(cell_json(report, report.cells[i], file_of(counterexamples, i)));
   }
-  // Markdown: Fig. 10's layout, methods as rows, then the numbers.
-  out += fmt::format("# pita audit: seed {}, {} random configurations (+{} crafted)\n\n", report.options.seed,
-                     report.options.configs, crafted_configs().size());
+  j["paper"] = paper_json(report);
+  return j.dump(2) + "\n";
+}
+
+std::string audit_csv(const AuditReport& report, const std::vector<std::string>& counterexamples) {
+  std::string out = "method,property,holds,violation,measured,config,t,counterexample\n";
+  for (std::size_t i = 0; i < report.cells.size(); ++i) {
+    const AuditCell& c = report.cells[i];
+    const bool timed = c.worst.t && std::isfinite(*c.worst.t);
+    out += fmt::format("{},{},{},{:.6g},{},{},{},{}\n", id(c.method), id(c.property), c.holds ? "true" : "false",
+                       c.value, c.measured, csv_field(where(report, c)),
+                       timed ? fmt::format("{:.17g}", *c.worst.t) : "", csv_field(file_of(counterexamples, i)));
+  }
+  return out;
+}
+
+// Markdown: Fig. 10's layout, methods as rows, then the numbers.
+std::string audit_markdown(const AuditReport& report, const std::vector<std::string>& counterexamples) {
+  std::string out = fmt::format("# pita audit: seed {}, {} random configurations (+{} crafted)\n\n",
+                                report.options.seed, report.options.configs, crafted_configs().size());
   out += "| method |";
   for (Property p : report.properties) out += fmt::format(" {} |", id(p));
   out += "\n|---|";
@@ -149,11 +157,22 @@ std::string format_audit(const AuditReport& report, AuditFormat format, const st
   for (std::size_t i = 0; i < report.cells.size(); ++i) {
     const AuditCell& c = report.cells[i];
     if (c.holds || c.worst_config < 0) continue;
+    const std::string file = file_of(counterexamples, i);
     out += fmt::format("- {} {}: {:.3g} on {}{}{}\n", id(c.method), id(c.property), c.value, where(report, c),
                        finite_time(c.worst) ? fmt::format(" at t = {:.6g}", *c.worst.t) : "",
-                       file_of(i).empty() ? "" : fmt::format(" ({})", file_of(i)));
+                       file.empty() ? "" : fmt::format(" ({})", file));
   }
   return out;
+}
+
+}  // namespace
+
+std::string counterexample_name(const AuditCell& cell) { return id(cell.method) + "-" + id(cell.property) + ".json"; }
+
+std::string format_audit(const AuditReport& report, AuditFormat format, const std::vector<std::string>& counterexamples) {
+  if (format == AuditFormat::json) return audit_json(report, counterexamples);
+  if (format == AuditFormat::csv) return audit_csv(report, counterexamples);
+  return audit_markdown(report, counterexamples);
 }
 
 std::string counterexample_scene(const AuditReport& report, const AuditCell& cell) {

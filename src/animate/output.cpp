@@ -94,15 +94,32 @@ void write_bytes(const fs::path& path, const std::string& bytes) {
   if (!out) output_failed(path, std::strerror(errno));
 }
 
-fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                         const motion::Stage* stage,
-                         const std::vector<render::PanelPlacement>& placements) {
-  const fs::path target = request.out;
+// A folder being made beside OUT, removed unless it is moved into place (path cleared).
+struct TemporaryFolder {
+  fs::path path;
+  explicit TemporaryFolder(fs::path made) : path(std::move(made)) {}
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  ~TemporaryFolder() {
+    if (!path.empty()) {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  }
+  // Removes it now and exits as interrupted by `signal`.
+  [[noreturn]] void exit_interrupted(int signal) {
+    std::error_code error;
+    fs::remove_all(path, error);
+    path.clear();
+    io::exit_interrupted(signal);
+  }
+};
+
+// The folder OUT names (OUT/ names OUT), refused when it is something else
+// than a frame directory pita wrote.
+fs::path frame_folder(const fs::path& target) {
   std::error_code error;
-  // OUT/ names the directory OUT.
   const fs::path directory = target.filename().empty() ? target.parent_path() : target;
-  const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
-  const fs::path name = directory.filename();
   const fs::file_status status = fs::symlink_status(directory, error);
   if (fs::exists(status) && !fs::is_directory(status)) {
     output_failed(target, fs::is_symlink(status) ? "it is a symbolic link; give the directory itself"
@@ -112,21 +129,13 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
     output_failed(target, "it exists and is not a frame directory that pita wrote (only frame-NNNN files and "
                           "pita's frames.json): remove it or give another OUT");
   }
-  fs::create_directories(parent, error);
-  std::string pattern = (parent / ("." + name.string() + ".XXXXXX")).string();
-  if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
-  const fs::path temporary = pattern;
-  const fs::path final_path = parent / name;
-  struct Cleanup {
-    fs::path path;
-    ~Cleanup() {
-      if (!path.empty()) {
-        std::error_code ignored;
-        fs::remove_all(path, ignored);
-      }
-    }
-  } cleanup{temporary};
+  return directory;
+}
 
+// Draws every frame into `folder` (frame-NNNN.png or .svg); their records for frames.json.
+Json write_frames(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                  const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements,
+                  TemporaryFolder& folder) {
   // PNG frames are painted over the layers every frame shares, painted once.
   std::optional<render::FrameBackdrop> backdrop;
   if (request.frame_format == render::Format::png) {
@@ -147,48 +156,65 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
         },
         [&](int k, std::string&& bytes) {
           const std::string file = frame_file_name(k, timeline.frames, request.frame_format);
-          write_bytes(temporary / file, bytes);
+          write_bytes(folder.path / file, bytes);
           records.push_back(frame_record(scene, timeline, k, file, stage));
           progress.update(k + 1);
         });
   } catch (const Interrupted& interrupted) {
-    fs::remove_all(temporary, error);
-    cleanup.path.clear();
-    io::exit_interrupted(interrupted.signal);
+    folder.exit_interrupted(interrupted.signal);
   }
-  Json index{{"scene", scene.path},
-             {"what", what_name(timeline.what)},
-             {"frames", timeline.frames},
-             {"fps", timeline.fps},
-             {"duration", timeline.seconds()},
-             {"loop", timeline.loop},
-             {"first", timeline.first},
-             {"last", timeline.last},
-             {"width", static_cast<int>(std::round(scene.canvas.width * (request.frame_format == render::Format::png ? request.scale : 1.0)))},
-             {"height", static_cast<int>(std::round(scene.canvas.height * (request.frame_format == render::Format::png ? request.scale : 1.0)))},
-             {"frame_list", std::move(records)}};
-  write_bytes(temporary / "frames.json", index.dump(1) + "\n");
-  if (const int sig = io::pending_interrupt()) {
-    fs::remove_all(temporary, error);
-    cleanup.path.clear();
-    io::exit_interrupted(sig);
-  }
-  // Into place: a new directory is renamed; an older one is swapped with the
-  // new one atomically (renameat2 RENAME_EXCHANGE), then removed.
-  ::chmod(temporary.c_str(), ordinary_mode(0777));
-  if (!fs::exists(final_path, error)) {
-    if (::rename(temporary.c_str(), final_path.c_str()) != 0) output_failed(target, std::strerror(errno));
-  } else {
-    if (::renameat2(AT_FDCWD, temporary.c_str(), AT_FDCWD, final_path.c_str(), RENAME_EXCHANGE) != 0) {
-      output_failed(target, std::strerror(errno));
-    }
-    // `temporary` now holds the older frames.
-    return target;
-  }
-  cleanup.path.clear();
-  return target;
+  return records;
 }
 
+// frames.json: the animation and the record of every frame.
+Json frames_index(const scene::Scene& scene, const Timeline& timeline, const Request& request, Json records) {
+  const double scale = request.frame_format == render::Format::png ? request.scale : 1.0;
+  return Json{{"scene", scene.path},
+              {"what", what_name(timeline.what)},
+              {"frames", timeline.frames},
+              {"fps", timeline.fps},
+              {"duration", timeline.seconds()},
+              {"loop", timeline.loop},
+              {"first", timeline.first},
+              {"last", timeline.last},
+              {"width", static_cast<int>(std::round(scene.canvas.width * scale))},
+              {"height", static_cast<int>(std::round(scene.canvas.height * scale))},
+              {"frame_list", std::move(records)}};
+}
+
+// Into place: a new directory is renamed; an older one is swapped with the
+// new one atomically (renameat2 RENAME_EXCHANGE), then removed (as `folder`,
+// which then holds the older frames).
+void move_into_place(TemporaryFolder& folder, const fs::path& final_path, const fs::path& target) {
+  std::error_code error;
+  ::chmod(folder.path.c_str(), ordinary_mode(0777));
+  if (!fs::exists(final_path, error)) {
+    if (::rename(folder.path.c_str(), final_path.c_str()) != 0) output_failed(target, std::strerror(errno));
+    folder.path.clear();
+  } else if (::renameat2(AT_FDCWD, folder.path.c_str(), AT_FDCWD, final_path.c_str(), RENAME_EXCHANGE) != 0) {
+    output_failed(target, std::strerror(errno));
+  }
+}
+
+fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
+                         const motion::Stage* stage,
+                         const std::vector<render::PanelPlacement>& placements) {
+  const fs::path target = request.out;
+  std::error_code error;
+  const fs::path directory = frame_folder(target);
+  const fs::path parent = directory.parent_path().empty() ? fs::path(".") : directory.parent_path();
+  const fs::path name = directory.filename();
+  fs::create_directories(parent, error);
+  std::string pattern = (parent / ("." + name.string() + ".XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
+  TemporaryFolder folder{pattern};
+  Json records = write_frames(scene, timeline, request, stage, placements, folder);
+  write_bytes(folder.path / "frames.json",
+              frames_index(scene, timeline, request, std::move(records)).dump(1) + "\n");
+  if (const int sig = io::pending_interrupt()) folder.exit_interrupted(sig);
+  move_into_place(folder, parent / name, target);
+  return target;
+}
 
 }  // namespace
 

@@ -164,6 +164,78 @@ render::Figure static_part(const render::Figure& frame, bool after) {
   return part;
 }
 
+// The shared geometry: the images (their ids into `image_ids`), and one clip
+// rectangle per panel.
+std::string svg_defs(const scene::Scene& scene, const std::vector<render::PanelPlacement>& placements,
+                     std::map<std::string, std::string>& image_ids) {
+  std::string svg = "<defs>\n";
+  for (const scene::Panel& panel : scene.panels) {
+    for (const scene::ShapeOutline& shape : panel.shapes) {
+      if (!shape.image || image_ids.count(shape.image->path)) continue;
+      const std::string id = fmt::format("pita-image-{}", image_ids.size());
+      image_ids.emplace(shape.image->path, id);
+      svg += fmt::format("<image id=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" "
+                         "xlink:href=\"data:image/png;base64,{}\"/>\n",
+                         id, shape.image->width, shape.image->height, base64_file(shape.image->path));
+    }
+  }
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const render::PanelPlacement& place = placements[i];
+    svg += fmt::format("<clipPath id=\"pita-clip-{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
+                       i, num(place.cell.x), num(place.cell.y + place.title.height), num(place.cell.width),
+                       num(place.cell.height - place.title.height));
+  }
+  svg += "</defs>\n";
+  return svg;
+}
+
+// Frame k of n: its moving items, in a group visible from k/n to (k+1)/n of
+// the animation's duration (discrete).
+std::string frame_group(const render::Figure& frame, int k, const Timeline& timeline,
+                        const std::map<std::string, std::string>& image_ids) {
+  const int n = timeline.frames;
+  std::string values, times;
+  if (k == 0) {
+    values = "visible;hidden";
+    times = fmt::format("0;{:.6g}", 1.0 / n);
+  } else if (k == n - 1) {
+    values = "hidden;visible";
+    times = fmt::format("0;{:.6g}", static_cast<double>(k) / n);
+  } else {
+    values = "hidden;visible;hidden";
+    times = fmt::format("0;{:.6g};{:.6g}", static_cast<double>(k) / n, static_cast<double>(k + 1) / n);
+  }
+  std::string svg = fmt::format(
+      "<g visibility=\"{}\"><animate attributeName=\"visibility\" values=\"{}\" keyTimes=\"{}\" "
+      "dur=\"{:.6g}s\" calcMode=\"discrete\" {}/>",
+      k == 0 ? "visible" : "hidden", values, times, timeline.seconds(),
+      timeline.loop ? "repeatCount=\"indefinite\"" : "fill=\"freeze\"");
+  for (std::size_t i = 0; i < frame.drawings.size(); ++i) {
+    std::string items;
+    const ItemWriter writer{frame.placements[i].transform, image_ids, items};
+    for (const Item& item : frame.drawings[i].items) {
+      if (item.moving) std::visit(writer, item.shape);
+    }
+    if (!items.empty()) {
+      svg += fmt::format("<g clip-path=\"url(#pita-clip-{})\" stroke-linecap=\"round\" stroke-linejoin=\"round\">{}</g>",
+                         i, items);
+    }
+  }
+  svg += "</g>\n";
+  return svg;
+}
+
+// Above the frames: the layers drawn after the first that moves, and the
+// legends, on a transparent canvas.
+std::string above_frames(const scene::Scene& scene, const render::Figure& first) {
+  scene::Scene above = scene;
+  above.canvas.background.reset();
+  above.title.clear();
+  for (scene::Panel& panel : above.panels) panel.title.clear();
+  return prefixed_ids(nested(render::render_figure(above, static_part(first, true), render::Format::svg)),
+                      "pita-above-");
+}
+
 }  // namespace
 
 std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, const std::function<void(int)>& progress) {
@@ -183,73 +255,19 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
       "<desc>pita animate: {3} frames at {4:g} frames per second ({5:g} s), {6}, {7}</desc>\n",
       width, height, text::html_escaped(scene.title.empty() ? scene.path : scene.title), timeline.frames, timeline.fps,
       timeline.seconds(), what_name(timeline.what), timeline.loop ? "looping" : "once");
-
-  // Shared geometry: the images, and one clip rectangle per panel.
   std::map<std::string, std::string> image_ids;
-  svg += "<defs>\n";
-  for (const scene::Panel& panel : scene.panels) {
-    for (const scene::ShapeOutline& shape : panel.shapes) {
-      if (!shape.image || image_ids.count(shape.image->path)) continue;
-      const std::string id = fmt::format("pita-image-{}", image_ids.size());
-      image_ids.emplace(shape.image->path, id);
-      svg += fmt::format("<image id=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" "
-                         "xlink:href=\"data:image/png;base64,{}\"/>\n",
-                         id, shape.image->width, shape.image->height, base64_file(shape.image->path));
-    }
-  }
-  for (std::size_t i = 0; i < placements.size(); ++i) {
-    const render::PanelPlacement& place = placements[i];
-    svg += fmt::format("<clipPath id=\"pita-clip-{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
-                       i, num(place.cell.x), num(place.cell.y + place.title.height), num(place.cell.width),
-                       num(place.cell.height - place.title.height));
-  }
-  svg += "</defs>\n";
+  svg += svg_defs(scene, placements, image_ids);
 
   // Below the frames: background, titles and the layers drawn before the
-  // first that moves. Above: the rest, on a transparent canvas.
+  // first that moves.
   svg += prefixed_ids(nested(render::render_figure(scene, static_part(first, false), render::Format::svg)), "pita-below-");
   svg += "\n";
-
-  const double total = timeline.seconds();
-  const int n = timeline.frames;
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < timeline.frames; ++k) {
     const render::Figure frame = k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements, shared);
-    // Visible from k/N to (k+1)/N of the animation's duration (discrete).
-    std::string values, times;
-    if (k == 0) {
-      values = "visible;hidden";
-      times = fmt::format("0;{:.6g}", 1.0 / n);
-    } else if (k == n - 1) {
-      values = "hidden;visible";
-      times = fmt::format("0;{:.6g}", static_cast<double>(k) / n);
-    } else {
-      values = "hidden;visible;hidden";
-      times = fmt::format("0;{:.6g};{:.6g}", static_cast<double>(k) / n, static_cast<double>(k + 1) / n);
-    }
-    svg += fmt::format("<g visibility=\"{}\"><animate attributeName=\"visibility\" values=\"{}\" keyTimes=\"{}\" "
-                       "dur=\"{:.6g}s\" calcMode=\"discrete\" {}/>",
-                       k == 0 ? "visible" : "hidden", values, times, total,
-                       timeline.loop ? "repeatCount=\"indefinite\"" : "fill=\"freeze\"");
-    for (std::size_t i = 0; i < frame.drawings.size(); ++i) {
-      std::string items;
-      const ItemWriter writer{frame.placements[i].transform, image_ids, items};
-      for (const Item& item : frame.drawings[i].items) {
-        if (item.moving) std::visit(writer, item.shape);
-      }
-      if (!items.empty()) {
-        svg += fmt::format("<g clip-path=\"url(#pita-clip-{})\" stroke-linecap=\"round\" stroke-linejoin=\"round\">{}</g>",
-                           i, items);
-      }
-    }
-    svg += "</g>\n";
+    svg += frame_group(frame, k, timeline, image_ids);
     if (progress) progress(k);
   }
-
-  scene::Scene above = scene;
-  above.canvas.background.reset();
-  above.title.clear();
-  for (scene::Panel& panel : above.panels) panel.title.clear();
-  svg += prefixed_ids(nested(render::render_figure(above, static_part(first, true), render::Format::svg)), "pita-above-");
+  svg += above_frames(scene, first);
   svg += "\n</svg>\n";
   return svg;
 }

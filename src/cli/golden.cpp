@@ -180,83 +180,95 @@ ExitCode run_check(const GoldenOptions& options) {
   return result;
 }
 
+namespace {
+
+// A golden as update-goldens found it: what to write (unless unchanged) and
+// what it prints of it.
+struct UpdatedFile {
+  fs::path path;
+  std::optional<std::string> bytes;  // to write, unless unchanged
+  std::string status;
+};
+
+// A scene's goldens, rendered and compared on a worker thread.
+struct UpdatedScene {
+  std::vector<UpdatedFile> files;
+  std::optional<Failure> failure;
+};
+
+// The golden at `path` against `bytes`, exactly, to say by how much it changed.
+std::string golden_status(const golden::GoldenFile& file, const fs::path& path, const std::string& bytes) {
+  golden::Tolerances exact;
+  exact.numbers = 0.0;
+  exact.svg = 0.0;
+  exact.image = {0, 0.0};
+  try {
+    const golden::FileCheck c = golden::compare_file(file.kind, path, bytes, exact);
+    if (c.verdict == golden::Verdict::missing) return "new";
+    if (c.expected == bytes) return "unchanged";
+    return "changed: " + c.detail;
+  } catch (const golden::GoldenPathError&) {
+    throw;  // a link, FIFO or device: never written through (exit 2)
+  } catch (const golden::GoldenError& e) {
+    return std::string("replaced an unreadable golden (") + e.what() + ")";
+  }
+}
+
+// Renders a scene's goldens and compares each with the one in --golden.
+UpdatedScene update_scene(const GoldenOptions& options, const fs::path& scene) {
+  UpdatedScene updated;
+  try {
+    const golden::Outputs outputs = golden::render_outputs(scene);
+    const std::string name = golden::scene_name(scene);
+    for (const golden::GoldenFile& file : golden::golden_files(outputs)) {
+      const std::string& bytes = *file.bytes;
+      const fs::path path = golden::golden_path(options.golden_dir, name, file.suffix);
+      std::string status = golden_status(file, path, bytes);
+      std::optional<std::string> to_write;
+      if (status != "unchanged") {
+        golden::check_golden_folder(path);  // not a link out of --golden
+        to_write = bytes;
+      }
+      updated.files.push_back({path, std::move(to_write), std::move(status)});
+    }
+  } catch (...) {
+    updated.failure = current_failure(scene.string());
+  }
+  return updated;
+}
+
+// Writes what changed of a scene's goldens and prints each; its failure, if any.
+std::optional<Failure> write_updated(const fs::path& scene, const UpdatedScene& updated) {
+  if (updated.failure) return updated.failure;
+  try {
+    for (const UpdatedFile& file : updated.files) {
+      if (file.bytes) {
+        fs::create_directories(file.path.parent_path());
+        io::write_file_atomically(file.path, *file.bytes);
+      }
+      std::cout << file.path.string() << ": " << file.status << '\n';
+    }
+  } catch (...) {
+    return current_failure(scene.string());
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 ExitCode run_update_goldens(const GoldenOptions& options) {
   const std::vector<fs::path> scenes = scenes_of(options);
   if (scenes.empty()) {
     std::cerr << "pita: update-goldens: no scenes given and no scenes/*.json here\n";
     return ExitCode::bad_input;
   }
-  // Exact comparison, to say by how much each file changed.
-  golden::Tolerances exact;
-  exact.numbers = 0.0;
-  exact.svg = 0.0;
-  exact.image = {0, 0.0};
   ExitCode result = ExitCode::success;
-  // A scene's goldens rendered and compared on a worker thread; what changed
+  // Each scene rendered and compared on a worker thread; what changed
   // written and printed here, scene after scene.
-  struct UpdatedFile {
-    fs::path path;
-    std::optional<std::string> bytes;  // to write, unless unchanged
-    std::string status;
-  };
-  struct Updated {
-    std::vector<UpdatedFile> files;
-    std::optional<Failure> failure;
-  };
   for_each_scene(
-      scenes.size(), scene_jobs(options.jobs),
-      [&](std::size_t i) {
-        const fs::path& scene = scenes[i];
-        Updated updated;
-        try {
-          const golden::Outputs outputs = golden::render_outputs(scene);
-          const std::string name = golden::scene_name(scene);
-          for (const golden::GoldenFile& file : golden::golden_files(outputs)) {
-            const std::string& bytes = *file.bytes;
-            const fs::path path = golden::golden_path(options.golden_dir, name, file.suffix);
-            std::string status;
-            try {
-              const golden::FileCheck c = golden::compare_file(file.kind, path, bytes, exact);
-              if (c.verdict == golden::Verdict::missing) {
-                status = "new";
-              } else if (c.expected == bytes) {
-                status = "unchanged";
-              } else {
-                status = "changed: " + c.detail;
-              }
-            } catch (const golden::GoldenPathError&) {
-              throw;  // a link, FIFO or device: never written through (exit 2)
-            } catch (const golden::GoldenError& e) {
-              status = std::string("replaced an unreadable golden (") + e.what() + ")";
-            }
-            std::optional<std::string> to_write;
-            if (status != "unchanged") {
-              golden::check_golden_folder(path);  // not a link out of --golden
-              to_write = bytes;
-            }
-            updated.files.push_back({path, std::move(to_write), std::move(status)});
-          }
-        } catch (...) {
-          updated.failure = current_failure(scene.string());
-        }
-        return updated;
-      },
-      [&](std::size_t i, const Updated& updated) {
-        std::optional<Failure> failure = updated.failure;
-        if (!failure) {
-          try {
-            for (const UpdatedFile& file : updated.files) {
-              if (file.bytes) {
-                fs::create_directories(file.path.parent_path());
-                io::write_file_atomically(file.path, *file.bytes);
-              }
-              std::cout << file.path.string() << ": " << file.status << '\n';
-            }
-          } catch (...) {
-            failure = current_failure(scenes[i].string());
-          }
-        }
-        if (failure) {
+      scenes.size(), scene_jobs(options.jobs), [&](std::size_t i) { return update_scene(options, scenes[i]); },
+      [&](std::size_t i, const UpdatedScene& updated) {
+        if (const std::optional<Failure> failure = write_updated(scenes[i], updated)) {
           std::cerr << "pita: " << failure->message << '\n';
           result = worse(result, failure->code);
         }

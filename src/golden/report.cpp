@@ -37,6 +37,108 @@ std::string image_cell(const std::string& file, const std::string& caption) {
                      html_escaped(file), html_escaped(caption));
 }
 
+// The summary table: one row per scene, its result.
+std::string summary_table(const std::vector<ReportEntry>& entries) {
+  std::size_t bad = 0;
+  for (const ReportEntry& e : entries) {
+    bad += (!e.error.empty() || !e.check.passes()) ? 1 : 0;
+  }
+  std::string html = fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
+                                 entries.size(), bad);
+  html += "<table><tr><th>scene</th><th>result</th></tr>\n";
+  for (const ReportEntry& e : entries) {
+    const std::string result = !e.error.empty()          ? "ERROR"
+                               : !e.check.matches()      ? "DIFFERS"
+                               : !e.check.claims_hold() ? "CLAIM FAILED"
+                               : !e.check.legible()      ? "LINT"
+                                                         : "match";
+    html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
+                        html_escaped(e.check.name), result);
+  }
+  html += "</table>\n";
+  return html;
+}
+
+// A scene's outputs against its goldens, one row each.
+std::string files_table(const ReportEntry& e) {
+  std::string html = "<table><tr><th>output</th><th>golden</th><th>result</th><th>details</th></tr>\n";
+  for (const FileCheck& f : e.check.files) {
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
+                        kind_name(f.kind), html_escaped(f.golden.string()), verdict_name(f.verdict),
+                        verdict_name(f.verdict), html_escaped(f.detail));
+  }
+  html += "</table>\n";
+  return html;
+}
+
+// Every claim, held or not (docs/reference/check.md "Claims"); "" when none.
+std::string claims_table(const ReportEntry& e) {
+  if (e.check.claims.empty()) return "";
+  std::string html = "<table><tr><th>claim</th><th>says</th><th>result</th><th>measured</th></tr>\n";
+  for (const analysis::ClaimOutcome& c : e.check.claims) {
+    const std::string_view held = c.held ? "match" : "DIFFERS";
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(c.pointer),
+                        html_escaped(c.says), held, c.held ? "holds" : "FAILS", html_escaped(c.measured));
+  }
+  html += "</table>\n";
+  return html;
+}
+
+// Every finding of the lint, accepted or not (docs/reference/lint.md "Lint"); "" when none.
+std::string lint_table(const ReportEntry& e) {
+  if (e.check.lint.findings.empty()) return "";
+  std::string html = "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
+  for (const lint::Finding& f : e.check.lint.findings) {
+    const bool accepted = !f.reason.empty();
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
+                        html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
+                        accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
+  }
+  html += "</table>\n";
+  return html;
+}
+
+// The images of a scene that differs, written into DIR: each PNG's expected,
+// actual and diff (shown side by side), each differing SVG's expected and actual.
+std::string differing_images(const fs::path& dir, const ReportEntry& e) {
+  std::string html;
+  for (const FileCheck& f : e.check.files) {
+    if (f.kind != FileKind::png) continue;
+    std::string expected, actual, diff;
+    if (!f.expected.empty()) {
+      expected = e.check.name + ".expected.png";
+      io::write_file_atomically(dir / expected, f.expected);
+    }
+    actual = e.check.name + ".actual.png";
+    io::write_file_atomically(dir / actual, f.actual);
+    if (!f.diff_png.empty() && f.verdict != Verdict::match) {
+      diff = e.check.name + ".diff.png";
+      io::write_file_atomically(dir / diff, f.diff_png);
+    }
+    html += "<table><tr>" + image_cell(expected, "expected (golden)") +
+            image_cell(actual, "actual") + image_cell(diff, "differing pixels in red") +
+            "</tr></table>\n";
+  }
+  for (const FileCheck& f : e.check.files) {
+    if (f.kind != FileKind::svg || f.verdict == Verdict::match) continue;
+    if (!f.expected.empty()) io::write_file_atomically(dir / (e.check.name + ".expected.svg"), f.expected);
+    io::write_file_atomically(dir / (e.check.name + ".actual.svg"), f.actual);
+  }
+  return html;
+}
+
+// One scene's section: its error, or its tables and, when it differs, its images.
+std::string scene_section(const fs::path& dir, const ReportEntry& e) {
+  std::string html = fmt::format("<h2 id=\"{0}\">{0}</h2>\n<p>{1}</p>\n", html_escaped(e.check.name),
+                                 html_escaped(e.check.scene_path));
+  if (!e.error.empty()) return html + "<p class=\"ERROR\">" + html_escaped(e.error) + "</p>\n";
+  html += files_table(e);
+  html += claims_table(e);
+  html += lint_table(e);
+  if (!e.check.matches()) html += differing_images(dir, e);
+  return html;
+}
+
 }  // namespace
 
 void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries) {
@@ -52,84 +154,8 @@ img { max-width: 420px; border: 1px solid #999; }
 </style></head><body>
 <h1>pita check</h1>
 )";
-  std::size_t bad = 0;
-  for (const ReportEntry& e : entries) {
-    bad += (!e.error.empty() || !e.check.passes()) ? 1 : 0;
-  }
-  html += fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
-                      entries.size(), bad);
-  html += "<table><tr><th>scene</th><th>result</th></tr>\n";
-  for (const ReportEntry& e : entries) {
-    const std::string result = !e.error.empty()          ? "ERROR"
-                               : !e.check.matches()      ? "DIFFERS"
-                               : !e.check.claims_hold() ? "CLAIM FAILED"
-                               : !e.check.legible()      ? "LINT"
-                                                         : "match";
-    html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
-                        html_escaped(e.check.name), result);
-  }
-  html += "</table>\n";
-
-  for (const ReportEntry& e : entries) {
-    html += fmt::format("<h2 id=\"{0}\">{0}</h2>\n<p>{1}</p>\n", html_escaped(e.check.name),
-                        html_escaped(e.check.scene_path));
-    if (!e.error.empty()) {
-      html += "<p class=\"ERROR\">" + html_escaped(e.error) + "</p>\n";
-      continue;
-    }
-    html += "<table><tr><th>output</th><th>golden</th><th>result</th><th>details</th></tr>\n";
-    for (const FileCheck& f : e.check.files) {
-      html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
-                          kind_name(f.kind), html_escaped(f.golden.string()), verdict_name(f.verdict),
-                          verdict_name(f.verdict), html_escaped(f.detail));
-    }
-    html += "</table>\n";
-    // Every claim, held or not (docs/reference/check.md "Claims").
-    if (!e.check.claims.empty()) {
-      html += "<table><tr><th>claim</th><th>says</th><th>result</th><th>measured</th></tr>\n";
-      for (const analysis::ClaimOutcome& c : e.check.claims) {
-        const std::string_view held = c.held ? "match" : "DIFFERS";
-        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(c.pointer),
-                            html_escaped(c.says), held, c.held ? "holds" : "FAILS", html_escaped(c.measured));
-      }
-      html += "</table>\n";
-    }
-    // Every finding of the lint, accepted or not (docs/reference/lint.md "Lint").
-    if (!e.check.lint.findings.empty()) {
-      html += "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
-      for (const lint::Finding& f : e.check.lint.findings) {
-        const bool accepted = !f.reason.empty();
-        html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
-                            html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
-                            accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
-      }
-      html += "</table>\n";
-    }
-    if (e.check.matches()) continue;
-    // The images: expected, actual, diff.
-    for (const FileCheck& f : e.check.files) {
-      if (f.kind != FileKind::png) continue;
-      std::string expected, actual, diff;
-      if (!f.expected.empty()) {
-        expected = e.check.name + ".expected.png";
-        io::write_file_atomically(dir / expected, f.expected);
-      }
-      actual = e.check.name + ".actual.png";
-      io::write_file_atomically(dir / actual, f.actual);
-      if (!f.diff_png.empty() && f.verdict != Verdict::match) {
-        diff = e.check.name + ".diff.png";
-        io::write_file_atomically(dir / diff, f.diff_png);
-      }
-      html += "<table><tr>" + image_cell(expected, "expected (golden)") +
-              image_cell(actual, "actual") + image_cell(diff, "differing pixels in red") +
-              "</tr></table>\n";
-    }
-    for (const FileCheck& f : e.check.files) {
-      if (f.kind != FileKind::svg || f.verdict == Verdict::match) continue;
-      if (!f.expected.empty()) io::write_file_atomically(dir / (e.check.name + ".expected.svg"), f.expected);
-      io::write_file_atomically(dir / (e.check.name + ".actual.svg"), f.actual);
-    }
-  }
+  html += summary_table(entries);
+  for (const ReportEntry& e : entries) html += scene_section(dir, e);
   html += "</body></html>\n";
   io::write_file_atomically(dir / "index.html", html);
 }

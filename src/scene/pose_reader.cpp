@@ -1,7 +1,9 @@
 #include "scene/pose_reader.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -237,6 +239,135 @@ std::vector<ShapeOutline> builtin_outline(std::string_view name) {
   return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}})};  // square
 }
 
+namespace {
+
+// The shape kinds, in the order a shape's fields are looked at: a shape is one of them.
+constexpr std::array<std::string_view, 5> kShapeKindFields{"polygon", "polyline", "triangle", "outline", "image"};
+
+// The images of one list of shapes so far: how many, and their pixels in all.
+struct ShapeImages {
+  int count = 0;
+  double pixels = 0.0;
+};
+
+// {"polygon": [[x, y], ...]} or {"polyline": ...}: 2 to kMaxShapePoints points.
+void read_shape_points(const JsonReader& reader, const Json& given, const std::string& where, bool closed,
+                       ShapeOutline& shape) {
+  if (!given.is_array() || given.size() < 2 || given.size() > static_cast<std::size_t>(kMaxShapePoints)) {
+    reader.fail(where, fmt::format("must be an array of 2 to {} points [x, y] (got {})", kMaxShapePoints,
+                                   value_text(given)));
+  }
+  for (std::size_t j = 0; j < given.size(); ++j) {
+    shape.points.push_back(bounded_point(reader, given[j], element_pointer(where, j)));
+  }
+  shape.closed = closed;
+}
+
+// {"triangle": "reference"}: the reference triangle itself.
+void read_shape_triangle(const JsonReader& reader, const Json& given, const std::string& where,
+                         const std::array<Point, 3>& reference, ShapeOutline& shape) {
+  if (!given.is_string() || given.get<std::string>() != "reference") {
+    reader.fail(where, "must be \"reference\" (the reference triangle; got " + value_text(given) + ")");
+  }
+  shape.points.assign(reference.begin(), reference.end());
+}
+
+// {"outline": "F" | "house" | "square" | "picture"}: a builtin outline. Its
+// parts after the first, in the shape's color, are returned: they follow the shape.
+std::vector<ShapeOutline> read_shape_outline(const JsonReader& reader, const Json& given, const std::string& where,
+                                             ShapeOutline& shape) {
+  std::vector<ShapeOutline> parts = builtin_outline(reader.choice(given, where, kOutlineNames, kOutlineNames));
+  shape.points = std::move(parts.front().points);
+  shape.closed = parts.front().closed;
+  std::vector<ShapeOutline> extra;
+  for (std::size_t part = 1; part < parts.size(); ++part) {
+    parts[part].color = shape.color;
+    extra.push_back(std::move(parts[part]));
+  }
+  return extra;
+}
+
+// {"image": "picture.png", "box": [[x0, y0], [x1, y1]]} (PITA Sec. 7.1): the
+// image file, within the limits of kMaxImages and kMaxImagePixels for the
+// list, and the box it fills.
+void read_shape_image(const JsonReader& reader, const Json& item, const Json& given, const std::string& at,
+                      ShapeImages& images, ShapeOutline& shape) {
+  const std::string where = at + "/image";
+  if (++images.count > kMaxImages) {
+    reader.fail(where, fmt::format("at most {} images in a scene", kMaxImages));
+  }
+  const std::string file = reader.string(given, where);
+  try {
+    shape.image = check_image_file(reader.file(), file, reader.options());
+  } catch (const std::invalid_argument& error) {
+    reader.fail(where, error.what());
+  }
+  shape.image->pointer = where;
+  images.pixels += static_cast<double>(shape.image->width) * shape.image->height;
+  if (images.pixels > kMaxImagePixels) {
+    reader.fail(where, fmt::format("the images of these shapes have {:.0f} pixels in all, more than the limit of "
+                                   "{:.0f} (8192 x 8192: each is decoded in memory, 4 bytes a pixel, once per "
+                                   "drawing thread)",
+                                   images.pixels, kMaxImagePixels));
+  }
+  const Json* box = JsonReader::member(item, "box");
+  if (box == nullptr) {
+    reader.fail(at + "/box", "missing required field (where the image goes: [[x0, y0], [x1, y1]], its "
+                             "lower-left and upper-right corners)");
+  }
+  if (!box->is_array() || box->size() != 2) {
+    reader.fail(at + "/box", "must be [[x0, y0], [x1, y1]] (got " + value_text(*box) + ")");
+  }
+  const Point low = bounded_point(reader, (*box)[0], at + "/box/0");
+  const Point high = bounded_point(reader, (*box)[1], at + "/box/1");
+  if (!(low.real() < high.real() && low.imag() < high.imag())) {
+    reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1 (got " + value_text(*box) + ")");
+  }
+  shape.points = {low, Point{high.real(), low.imag()}, high, Point{low.real(), high.imag()}};
+  shape.closed = true;
+}
+
+// One shape of the list at `at`, by the one kind it gives; the parts of a
+// builtin outline after its first go into `extra`.
+ShapeOutline read_shape(const JsonReader& reader, const Json& item, const std::string& at,
+                        const std::array<Point, 3>& reference, ShapeImages& images, std::vector<ShapeOutline>& extra) {
+  reader.object(item, at, "a shape");
+  reader.check_fields(item, at, kShapeKinds);
+  ShapeOutline shape;
+  if (const Json* color = JsonReader::member(item, "color")) {
+    shape.color = reader.color(*color, at + "/color");
+  }
+  if (const Json* box = JsonReader::member(item, "box"); box != nullptr && JsonReader::member(item, "image") == nullptr) {
+    reader.fail(at + "/box", "\"box\" places an \"image\"; this shape has none");
+  }
+  int kinds = 0;
+  for (const std::string_view kind : kShapeKindFields) {
+    const Json* given = JsonReader::member(item, std::string(kind));
+    if (given == nullptr) continue;
+    const std::string where = at + "/" + std::string(kind);
+    if (++kinds > 1) {
+      reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\", "
+                         "\"outline\" or \"image\"; give only one");
+    }
+    if (kind == "image") {
+      read_shape_image(reader, item, *given, at, images, shape);
+    } else if (kind == "polygon" || kind == "polyline") {
+      read_shape_points(reader, *given, where, kind == "polygon", shape);
+    } else if (kind == "triangle") {
+      read_shape_triangle(reader, *given, where, reference, shape);
+    } else {
+      extra = read_shape_outline(reader, *given, where, shape);
+    }
+  }
+  if (kinds == 0) {
+    reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\", "
+                    "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\", or \"image\" and \"box\"");
+  }
+  return shape;
+}
+
+}  // namespace
+
 std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
                                       const std::string& pointer,
                                       const std::array<Point, 3>& reference) {
@@ -244,101 +375,12 @@ std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& valu
     reader.fail(pointer, fmt::format("must be an array of 1 to {} shapes (got {})", kMaxShapes,
                                      value_text(value)));
   }
-  std::vector<ShapeOutline> shapes, extra;
-  int images = 0;
-  double image_pixels = 0.0;
+  std::vector<ShapeOutline> shapes;
+  ShapeImages images;
   for (std::size_t i = 0; i < value.size(); ++i) {
-    const std::string at = element_pointer(pointer, i);
-    const Json& item = value[i];
-    reader.object(item, at, "a shape");
-    reader.check_fields(item, at, kShapeKinds);
-    ShapeOutline shape;
-    if (const Json* color = JsonReader::member(item, "color")) {
-      shape.color = reader.color(*color, at + "/color");
-    }
-    int kinds = 0;
-    if (const Json* box = JsonReader::member(item, "box"); box != nullptr && JsonReader::member(item, "image") == nullptr) {
-      reader.fail(at + "/box", "\"box\" places an \"image\"; this shape has none");
-    }
-    for (const std::string_view kind : {"polygon", "polyline", "triangle", "outline", "image"}) {
-      const Json* given = JsonReader::member(item, std::string(kind));
-      if (given == nullptr) continue;
-      const std::string where = at + "/" + std::string(kind);
-      if (++kinds > 1) {
-        reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\", "
-                           "\"outline\" or \"image\"; give only one");
-      }
-      if (kind == "image") {
-        // {"image": "picture.png", "box": [[x0, y0], [x1, y1]]} (PITA Sec. 7.1).
-        if (++images > kMaxImages) {
-          reader.fail(where, fmt::format("at most {} images in a scene", kMaxImages));
-        }
-        const std::string file = reader.string(*given, where);
-        try {
-          shape.image = check_image_file(reader.file(), file, reader.options());
-        } catch (const std::invalid_argument& error) {
-          reader.fail(where, error.what());
-        }
-        shape.image->pointer = where;
-        image_pixels += static_cast<double>(shape.image->width) * shape.image->height;
-        if (image_pixels > kMaxImagePixels) {
-          reader.fail(where, fmt::format("the images of these shapes have {:.0f} pixels in all, more than the limit of "
-                                         "{:.0f} (8192 x 8192: each is decoded in memory, 4 bytes a pixel, once per "
-                                         "drawing thread)",
-                                         image_pixels, kMaxImagePixels));
-        }
-        const Json* box = JsonReader::member(item, "box");
-        if (box == nullptr) {
-          reader.fail(at + "/box", "missing required field (where the image goes: [[x0, y0], [x1, y1]], its "
-                                   "lower-left and upper-right corners)");
-        }
-        if (!box->is_array() || box->size() != 2) {
-          reader.fail(at + "/box", "must be [[x0, y0], [x1, y1]] (got " + value_text(*box) + ")");
-        }
-        const Point low = bounded_point(reader, (*box)[0], at + "/box/0");
-        const Point high = bounded_point(reader, (*box)[1], at + "/box/1");
-        if (!(low.real() < high.real() && low.imag() < high.imag())) {
-          reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1 (got " + value_text(*box) + ")");
-        }
-        shape.points = {low, Point{high.real(), low.imag()}, high, Point{low.real(), high.imag()}};
-        shape.closed = true;
-        continue;
-      }
-      if (kind == "polygon" || kind == "polyline") {
-        if (!given->is_array() || given->size() < 2 ||
-            given->size() > static_cast<std::size_t>(kMaxShapePoints)) {
-          reader.fail(where, fmt::format("must be an array of 2 to {} points [x, y] (got {})",
-                                         kMaxShapePoints, value_text(*given)));
-        }
-        for (std::size_t j = 0; j < given->size(); ++j) {
-          shape.points.push_back(bounded_point(reader, (*given)[j], element_pointer(where, j)));
-        }
-        shape.closed = kind == "polygon";
-      } else if (kind == "triangle") {
-        if (!given->is_string() || given->get<std::string>() != "reference") {
-          reader.fail(where, "must be \"reference\" (the reference triangle; got " +
-                                 value_text(*given) + ")");
-        }
-        shape.points.assign(reference.begin(), reference.end());
-      } else {
-        // A builtin outline may have several parts: they follow this shape.
-        std::vector<ShapeOutline> parts =
-            builtin_outline(reader.choice(*given, where, kOutlineNames, kOutlineNames));
-        shape.points = std::move(parts.front().points);
-        shape.closed = parts.front().closed;
-        for (std::size_t part = 1; part < parts.size(); ++part) {
-          parts[part].color = shape.color;
-          extra.push_back(std::move(parts[part]));
-        }
-      }
-    }
-    if (kinds == 0) {
-      reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\", "
-                      "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\", or \"image\" and \"box\"");
-    }
-    shapes.push_back(std::move(shape));
+    std::vector<ShapeOutline> extra;
+    shapes.push_back(read_shape(reader, value[i], element_pointer(pointer, i), reference, images, extra));
     for (ShapeOutline& part : extra) shapes.push_back(std::move(part));
-    extra.clear();
   }
   return shapes;
 }

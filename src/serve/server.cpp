@@ -1,5 +1,6 @@
 #include "serve/server.hpp"
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <chrono>
@@ -327,6 +328,192 @@ void send_failure(httplib::Response& res, const std::string& path, const char* m
   send_json(res, error_status(thrown), (member == nullptr ? error : Json{{member, error}}).dump());
 }
 
+// The request's token matches the server's, compared in constant time: how
+// long a refusal takes says nothing of the token.
+bool token_matches(const std::string& given, const std::string& token) {
+  unsigned difference = given.size() == token.size() ? 0U : 1U;
+  for (std::size_t k = 0; k < given.size() && k < token.size(); ++k) {
+    difference |= static_cast<unsigned>(given[k] ^ token[k]);
+  }
+  return difference == 0;
+}
+
+// The time of /api/figure/N?at=t: a finite number within 10^6; nullopt
+// when not given. Throws std::invalid_argument for anything else.
+std::optional<double> figure_time(const httplib::Request& req) {
+  if (!req.has_param("at")) return std::nullopt;
+  std::size_t used = 0;
+  const std::string text = req.get_param_value("at");
+  const double at = std::stod(text, &used);
+  if (used != text.size() || !std::isfinite(at) || std::abs(at) > 1e6) throw std::invalid_argument(text);
+  return at;
+}
+
+// What every route handler is given: the scenes and the command line's settings.
+struct Site {
+  Server& state;
+  const Settings& settings;
+};
+
+void get_page(Site&, const httplib::Request&, httplib::Response& res) {
+  res.set_header("Cache-Control", "no-store");
+  res.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline'");
+  res.set_content(std::string(page_html()), "text/html; charset=utf-8");
+}
+
+void get_scenes(Site& site, const httplib::Request&, httplib::Response& res) {
+  send_json(res, 200, site.state.scenes_json().dump());
+}
+
+void get_figure(Site& site, const httplib::Request& req, httplib::Response& res) {
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  std::optional<double> at;
+  try {
+    at = figure_time(req);
+  } catch (const std::exception&) {
+    return send_error(res, 400, "at: a finite number, please");
+  }
+  try {
+    const auto svg = site.state.figure(*i, at);
+    if (!svg) return send_error(res, 409, "the scene has no good figure yet: see its error");
+    res.set_header("Cache-Control", "no-store");
+    // With the charset, not the bare type: cpp-httplib compresses a bare
+    // image/svg+xml with brotli at its slowest setting when the browser
+    // accepts it (380 ms for Fig. 1's 150 kB; 7 ms to send it as it is).
+    res.set_content(*svg, "image/svg+xml; charset=utf-8");
+  } catch (...) {
+    send_failure(res, site.settings.scenes[*i].string());
+  }
+}
+
+void get_measures(Site& site, const httplib::Request& req, httplib::Response& res) {
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  try {
+    const auto text = site.state.measures(*i);
+    if (!text) return send_error(res, 409, "the scene has no good figure yet: see its error");
+    send_json(res, 200, *text);
+  } catch (...) {
+    send_failure(res, site.settings.scenes[*i].string());
+  }
+}
+
+// Server-sent events: one per render of a scene, and a comment every 5 s
+// that keeps proxies and the browser patient.
+void get_events(Site& site, const httplib::Request&, httplib::Response& res) {
+  res.set_header("Cache-Control", "no-store");
+  Server& state = site.state;
+  auto seen = std::make_shared<std::vector<std::uint64_t>>(state.versions_after({}, std::chrono::milliseconds(0)));
+  res.set_chunked_content_provider("text/event-stream", [&state, seen](std::size_t, httplib::DataSink& sink) {
+    const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(5));
+    if (state.stopping()) return false;
+    std::string events;
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      if (now[i] != (*seen)[i]) events += fmt::format("data: {{\"scene\": {}, \"version\": {}}}\n\n", i, now[i]);
+    }
+    if (events.empty()) events = ": still here\n\n";
+    *seen = now;
+    return sink.write(events.data(), events.size());
+  });
+}
+
+void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) {
+  if (!site.settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  Json request;
+  try {
+    request = Json::parse(req.body);
+  } catch (const std::exception&) {
+    return send_error(res, 400, "the request is not JSON");
+  }
+  try {
+    send_json(res, 200, site.state.edit(*i, request).dump());
+  } catch (const nlohmann::json::exception& e) {
+    send_error(res, 400, std::string("the request lacks a field: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    send_error(res, 400, e.what());
+  } catch (...) {
+    // The edit would make the scene bad: refused, with the reason; the file is as it was.
+    send_failure(res, site.settings.scenes[*i].string(), "refused");
+  }
+}
+
+// The routes (server.hpp lists them): nothing else is served.
+enum class Verb { get, post };
+struct Route {
+  Verb verb;
+  const char* pattern;
+  void (*handle)(Site&, const httplib::Request&, httplib::Response&);
+};
+constexpr std::array kRoutes{
+    Route{Verb::get, "/", get_page},
+    Route{Verb::get, "/api/scenes", get_scenes},
+    Route{Verb::get, R"(/api/figure/(\d+))", get_figure},
+    Route{Verb::get, R"(/api/measures/(\d+))", get_measures},
+    Route{Verb::get, "/api/events", get_events},
+    Route{Verb::post, R"(/api/edit/(\d+))", post_edit},
+};
+
+// The HTTP server's limits, its token check and its routes.
+void set_up(httplib::Server& http, Site& site) {
+  http.set_payload_max_length(64 * 1024);  // no request of the page is larger: a larger one is refused (413)
+  http.set_keep_alive_max_count(100);
+  // Each page holds a worker for its event stream: room for many tabs, and
+  // idle connections let go of theirs soon.
+  http.new_task_queue = [] { return new httplib::ThreadPool(64); };
+  http.set_keep_alive_timeout(1);
+  // Every request carries the token (as Jupyter's): a page of another site
+  // cannot guess it, so it can neither read nor drive this server.
+  http.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {
+    const std::string given = req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
+    if (!token_matches(given, site.settings.token)) {
+      send_error(res, 403, "a token is needed: use the address pita serve printed");
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
+  for (const Route& route : kRoutes) {
+    auto handler = [&site, handle = route.handle](const httplib::Request& req, httplib::Response& res) {
+      handle(site, req, res);
+    };
+    if (route.verb == Verb::get) {
+      http.Get(route.pattern, handler);
+    } else {
+      http.Post(route.pattern, handler);
+    }
+  }
+}
+
+// Binds the settings' host and port (0: any free one); the port, or -1.
+int bind_port(httplib::Server& http, const Settings& settings) {
+  if (settings.port == 0) return http.bind_to_any_port(settings.host);
+  return http.bind_to_port(settings.host, settings.port) ? settings.port : -1;
+}
+
+// Renders each saved scene again, until stopped; watches the files of the
+// last good figures (`files` are those watched now). Returns 0 when
+// stopped, 3 when watching fails.
+int render_saves(Server& state, FileWatcher& watcher, std::vector<fs::path> files, std::ostream& log,
+                 const std::function<bool()>& stopped) {
+  try {
+    std::vector<fs::path> now = state.watched();
+    if (now != files) watcher.watch(files = std::move(now));  // the images of the first renders
+    while (!stopped()) {
+      const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
+      if (saved.empty()) continue;
+      for (const std::size_t i : state.scenes_of(saved)) state.render(i);
+      now = state.watched();
+      if (now != files) watcher.watch(files = std::move(now));
+    }
+  } catch (const std::exception& error) {
+    log << "pita: stopped watching the scenes (" << error.what() << ")\n";
+    return 3;
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string random_token() {
@@ -341,7 +528,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
   // Watching starts before the first renders, so that no save is missed;
   // a watch that cannot be set up is said before anything is served.
   FileWatcher watcher;
-  std::vector<fs::path> files = state.watched();
+  const std::vector<fs::path> files = state.watched();
   try {
     watcher.watch(files);
   } catch (const std::system_error& error) {
@@ -351,111 +538,9 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
   for (std::size_t i = 0; i < state.size(); ++i) state.render(i);
 
   httplib::Server http;
-  http.set_payload_max_length(64 * 1024);  // no request of the page is larger: a larger one is refused (413)
-  http.set_keep_alive_max_count(100);
-  // Each page holds a worker for its event stream: room for many tabs, and
-  // idle connections let go of theirs soon.
-  http.new_task_queue = [] { return new httplib::ThreadPool(64); };
-  http.set_keep_alive_timeout(1);
-  // Every request carries the token (as Jupyter's): a page of another site
-  // cannot guess it, so it can neither read nor drive this server.
-  http.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
-    const std::string given = req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
-    // Compared in constant time: how long a refusal takes says nothing of the token.
-    unsigned difference = given.size() == settings.token.size() ? 0U : 1U;
-    for (std::size_t k = 0; k < given.size() && k < settings.token.size(); ++k) {
-      difference |= static_cast<unsigned>(given[k] ^ settings.token[k]);
-    }
-    if (difference != 0) {
-      send_error(res, 403, "a token is needed: use the address pita serve printed");
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    return httplib::Server::HandlerResponse::Unhandled;
-  });
-  http.Get("/", [](const httplib::Request&, httplib::Response& res) {
-    res.set_header("Cache-Control", "no-store");
-    res.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline'");
-    res.set_content(std::string(page_html()), "text/html; charset=utf-8");
-  });
-  http.Get("/api/scenes", [&](const httplib::Request&, httplib::Response& res) {
-    send_json(res, 200, state.scenes_json().dump());
-  });
-  http.Get(R"(/api/figure/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
-    const auto i = scene_index(req.matches[1], state.size());
-    if (!i) return send_error(res, 404, "no such scene");
-    std::optional<double> at;
-    if (req.has_param("at")) {
-      try {
-        std::size_t used = 0;
-        const std::string text = req.get_param_value("at");
-        at = std::stod(text, &used);
-        if (used != text.size() || !std::isfinite(*at) || std::abs(*at) > 1e6) throw std::invalid_argument(text);
-      } catch (const std::exception&) {
-        return send_error(res, 400, "at: a finite number, please");
-      }
-    }
-    try {
-      const auto svg = state.figure(*i, at);
-      if (!svg) return send_error(res, 409, "the scene has no good figure yet: see its error");
-      res.set_header("Cache-Control", "no-store");
-      // With the charset, not the bare type: cpp-httplib compresses a bare
-      // image/svg+xml with brotli at its slowest setting when the browser
-      // accepts it (380 ms for Fig. 1's 150 kB; 7 ms to send it as it is).
-      res.set_content(*svg, "image/svg+xml; charset=utf-8");
-    } catch (...) {
-      send_failure(res, settings.scenes[*i].string());
-    }
-  });
-  http.Get(R"(/api/measures/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
-    const auto i = scene_index(req.matches[1], state.size());
-    if (!i) return send_error(res, 404, "no such scene");
-    try {
-      const auto text = state.measures(*i);
-      if (!text) return send_error(res, 409, "the scene has no good figure yet: see its error");
-      send_json(res, 200, *text);
-    } catch (...) {
-      send_failure(res, settings.scenes[*i].string());
-    }
-  });
-  http.Get("/api/events", [&](const httplib::Request&, httplib::Response& res) {
-    res.set_header("Cache-Control", "no-store");
-    auto seen = std::make_shared<std::vector<std::uint64_t>>(state.versions_after({}, std::chrono::milliseconds(0)));
-    res.set_chunked_content_provider("text/event-stream", [&state, seen](std::size_t, httplib::DataSink& sink) {
-      const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(5));
-      if (state.stopping()) return false;
-      std::string events;
-      for (std::size_t i = 0; i < now.size(); ++i) {
-        if (now[i] != (*seen)[i]) events += fmt::format("data: {{\"scene\": {}, \"version\": {}}}\n\n", i, now[i]);
-      }
-      if (events.empty()) events = ": still here\n\n";  // keeps proxies and the browser patient
-      *seen = now;
-      return sink.write(events.data(), events.size());
-    });
-  });
-
-  http.Post(R"(/api/edit/(\d+))", [&](const httplib::Request& req, httplib::Response& res) {
-    if (!settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
-    const auto i = scene_index(req.matches[1], state.size());
-    if (!i) return send_error(res, 404, "no such scene");
-    Json request;
-    try {
-      request = Json::parse(req.body);
-    } catch (const std::exception&) {
-      return send_error(res, 400, "the request is not JSON");
-    }
-    try {
-      send_json(res, 200, state.edit(*i, request).dump());
-    } catch (const nlohmann::json::exception& e) {
-      send_error(res, 400, std::string("the request lacks a field: ") + e.what());
-    } catch (const std::invalid_argument& e) {
-      send_error(res, 400, e.what());
-    } catch (...) {
-      // The edit would make the scene bad: refused, with the reason; the file is as it was.
-      send_failure(res, settings.scenes[*i].string(), "refused");
-    }
-  });
-
-  const int port = settings.port == 0 ? http.bind_to_any_port(settings.host) : (http.bind_to_port(settings.host, settings.port) ? settings.port : -1);
+  Site site{state, settings};
+  set_up(http, site);
+  const int port = bind_port(http, settings);
   if (port < 0) {
     log << fmt::format("pita: cannot listen on {}:{} (in use, or not an address of this machine)\n", settings.host,
                        settings.port);
@@ -467,22 +552,7 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
                      state.size() == 1 ? "" : "s", host, port, settings.token)
       << std::flush;
 
-  // Renders each saved scene again, until stopped.
-  int code = 0;
-  try {
-    std::vector<fs::path> now = state.watched();
-    if (now != files) watcher.watch(files = std::move(now));  // the images of the first renders
-    while (!stopped()) {
-      const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
-      if (saved.empty()) continue;
-      for (const std::size_t i : state.scenes_of(saved)) state.render(i);
-      now = state.watched();
-      if (now != files) watcher.watch(files = std::move(now));
-    }
-  } catch (const std::exception& error) {
-    log << "pita: stopped watching the scenes (" << error.what() << ")\n";
-    code = 3;
-  }
+  const int code = render_saves(state, watcher, files, log, stopped);
   state.stop();
   http.stop();
   listener.join();

@@ -5,6 +5,7 @@
 // embeds no markup from the data. The page itself in Chromium:
 // tests/sweep/test_index_page.py.
 #include "sweep/index_page.hpp"
+#include "sweep/index_script.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -141,6 +142,12 @@ TEST_F(IndexPage, ThePageEmbedsNoMarkupFromTheData) {
   EXPECT_EQ(page.find("/a</script>"), std::string::npos);
   EXPECT_NE(page.find("3 of 3 variants (1 failed)"), std::string::npos);
   EXPECT_NE(page.find("\"count\":3"), std::string::npos);
+}
+
+TEST_F(IndexPage, ThePageEndsWithTheBuiltInScript) {
+  write_index_html(write_manifest(3));
+  const std::string page = read(dir_ / "index.html");
+  EXPECT_TRUE(page.ends_with("<script>\n" + std::string(index_script()) + "</script>\n</body></html>\n"));
 }
 
 }  // namespace
