@@ -86,7 +86,7 @@ Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& ke
 template <class Pose>
 PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const scene::PoseKeys<Pose>& keys,
                          double& ground) {
-  if constexpr (std::is_same_v<Pose, Affine2>) {
+  if constexpr (!in_space_v<Pose>) {
     (void)stage;
     (void)index;
     (void)keys;
@@ -169,7 +169,7 @@ std::vector<double> PosePanel<Pose>::times(const std::optional<int>& samples,
 template <class Pose>
 std::vector<BodyPoint<Pose>> PosePanel<Pose>::body_points() const {
   std::vector<BodyPoint<Pose>> points;
-  if constexpr (std::is_same_v<Pose, Affine2>) {
+  if constexpr (!in_space_v<Pose>) {
     for (const scene::ShapeOutline& shape : panel_.shapes) points.insert(points.end(), shape.points.begin(), shape.points.end());
   } else {
     for (const scene::Solid& solid : scene_.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
@@ -179,7 +179,7 @@ std::vector<BodyPoint<Pose>> PosePanel<Pose>::body_points() const {
 
 template <class Pose>
 Point PosePanel<Pose>::image(const BodyPoint<Pose>& x) const {
-  if constexpr (std::is_same_v<Pose, Affine2>) {
+  if constexpr (!in_space_v<Pose>) {
     return x;
   } else {
     const std::optional<Point> p = view_.project(x);
@@ -212,7 +212,7 @@ void PosePanel<Pose>::cast_shadow(int index, std::vector<std::vector<Eigen::Vect
 
 template <class Pose>
 Drawing PosePanel<Pose>::take() {
-  if constexpr (std::is_same_v<Pose, Affine3>) {
+  if constexpr (in_space_v<Pose>) {
     if (!shadows_.empty() && scene_.camera.shadow) {
       double ground = ground_;
       for (const Shadow& shadow : shadows_) {

@@ -16,6 +16,7 @@
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
+#include "core/pose_traits.hpp"
 #include "render/drawing.hpp"
 #include "render/panel_drawing.hpp"
 #include "render/projection.hpp"
@@ -29,11 +30,11 @@ namespace pita::render {
 
 // A point of the body a pose moves: a point of the plane, or of space.
 template <class Pose>
-using BodyPoint = std::conditional_t<std::is_same_v<Pose, Affine2>, Point, Eigen::Vector3d>;
+using BodyPoint = typename PoseTraits<Pose>::BodyPoint;
 
 // How the figure sees a body point: nothing in the plane, the camera in space.
 template <class Pose>
-using PoseView = std::conditional_t<std::is_same_v<Pose, Affine2>, std::monostate, Projection>;
+using PoseView = std::conditional_t<in_space_v<Pose>, Projection, std::monostate>;
 
 template <class Pose>
 class PosePanel {

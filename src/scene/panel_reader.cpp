@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/space_pose_reader.hpp"
@@ -220,7 +221,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     own_method = true;
   } else {
     reader.object(item, at, "a panel (a pose method name or an object)");
-    if constexpr (std::is_same_v<Pose, Affine3>) {
+    if constexpr (in_space_v<Pose>) {
       if (JsonReader::member(item, "shapes") != nullptr) {
         reader.fail(at + "/shapes", "the solids are the scene's \"shapes\": a panel of a 3D scene moves them by its "
                                     "own method, poses or timing");
@@ -243,7 +244,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
       keys.subdivisions = reader.integer(*subdivisions, at + "/subdivisions", 0, kMaxSubdivisions);
       own_method = true;  // the motion changes: check it again
     }
-    if constexpr (std::is_same_v<Pose, Affine2>) {
+    if constexpr (!in_space_v<Pose>) {
       if (const Json* shapes = JsonReader::member(item, "shapes")) {
         panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
       }

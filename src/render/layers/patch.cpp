@@ -95,7 +95,7 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer) {
   } catch (const NoRealLogarithm& error) {
     panel.fail(fmt::format("the patch needs a SAM that does not exist: {}", error.what()));
   }
-  if constexpr (std::is_same_v<Pose, Affine3>) paint_faces(panel, std::move(faces), false);
+  if constexpr (in_space_v<Pose>) paint_faces(panel, std::move(faces), false);
 }
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::PatchLayer&);

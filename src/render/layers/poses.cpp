@@ -67,7 +67,7 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PosesLayer& layer) {
   for (std::size_t i = 0; i < poses.size(); ++i) {
     draw_pose_body(panel, layer, static_cast<int>(i), poses[i].pose, layer.colors[i % layer.colors.size()], faces);
   }
-  if constexpr (std::is_same_v<Pose, Affine3>) paint_faces(panel, std::move(faces), false);
+  if constexpr (in_space_v<Pose>) paint_faces(panel, std::move(faces), false);
 }
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::PosesLayer&);

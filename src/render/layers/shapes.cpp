@@ -73,7 +73,7 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer) {
     const double white = whites.empty() ? 0.0 : whites[i];
     draw_shapes_body(panel, layer, panel.pose_at(ts[i]), white, fade, selection != nullptr, static_cast<int>(i), faces);
   }
-  if constexpr (std::is_same_v<Pose, Affine3>) paint_faces(panel, std::move(faces), selection != nullptr);
+  if constexpr (in_space_v<Pose>) paint_faces(panel, std::move(faces), selection != nullptr);
 }
 
 template void draw_pose_layer(PosePanel<Affine2>&, const scene::ShapesLayer&);
