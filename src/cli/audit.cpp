@@ -148,20 +148,46 @@ std::vector<std::string> write_counterexamples(const analysis::AuditReport& repo
   return files;
 }
 
+// The audit the options ask for: its methods, configurations, seed and threads.
+analysis::AuditOptions audit_options_of(const AuditCliOptions& options) {
+  analysis::AuditOptions audit;
+  if (options.methods) audit.methods = parse_methods(*options.methods);
+  if (options.configs < 1 || options.configs > analysis::kMaxAuditConfigs) {
+    throw UsageError(fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs,
+                                 options.configs));
+  }
+  audit.configs = options.configs;
+  audit.seed = parse_seed(options.seed);
+  audit.jobs = options.jobs > 0 ? options.jobs : threads_from_environment();
+  return audit;
+}
+
+// The folder of --counterexamples, made (UsageError when it cannot be, or
+// when -o names it: the table is a file, the counterexamples a folder; -o
+// inside it is fine).
+void make_counterexample_folder(const AuditCliOptions& options) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (options.output && (fs::path(*options.output).lexically_normal() ==
+                             fs::path(*options.counterexamples).lexically_normal() ||
+                         fs::equivalent(*options.output, *options.counterexamples, error))) {
+    throw UsageError(fmt::format("-o {} and --counterexamples {} name the same path: the table is a file, the "
+                                 "counterexamples a folder; give two different paths",
+                                 *options.output, *options.counterexamples));
+  }
+  fs::create_directories(*options.counterexamples, error);
+  if (error || !fs::is_directory(*options.counterexamples)) {
+    throw UsageError(fmt::format("--counterexamples: cannot create the folder {} ({})", *options.counterexamples,
+                                 error ? error.message() : "a file is in the way"));
+  }
+}
+
 }  // namespace
 
 ExitCode run_audit_command(const AuditCliOptions& options) {
   namespace fs = std::filesystem;
   try {
-    analysis::AuditOptions audit;
-    if (options.methods) audit.methods = parse_methods(*options.methods);
-    if (options.configs < 1 || options.configs > analysis::kMaxAuditConfigs) {
-      throw UsageError(fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs,
-                                   options.configs));
-    }
-    audit.configs = options.configs;
-    audit.seed = parse_seed(options.seed);
-    audit.jobs = options.jobs > 0 ? options.jobs : threads_from_environment();
+    analysis::AuditOptions audit = audit_options_of(options);
     std::optional<render::Format> table_format;
     if (options.output) {
       const std::string extension = fs::path(*options.output).extension().string();
@@ -181,23 +207,7 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     }
     // The counterexample folder is made before the work, so that a folder
     // that cannot be made costs nothing (and nothing is written).
-    if (options.counterexamples) {
-      std::error_code error;
-      // -o inside it is fine; -o naming it is not (the table would be a file
-      // where the folder must be).
-      if (options.output && (fs::path(*options.output).lexically_normal() ==
-                                 fs::path(*options.counterexamples).lexically_normal() ||
-                             fs::equivalent(*options.output, *options.counterexamples, error))) {
-        throw UsageError(fmt::format("-o {} and --counterexamples {} name the same path: the table is a file, the "
-                                     "counterexamples a folder; give two different paths",
-                                     *options.output, *options.counterexamples));
-      }
-      fs::create_directories(*options.counterexamples, error);
-      if (error || !fs::is_directory(*options.counterexamples)) {
-        throw UsageError(fmt::format("--counterexamples: cannot create the folder {} ({})", *options.counterexamples,
-                                     error ? error.message() : "a file is in the way"));
-      }
-    }
+    if (options.counterexamples) make_counterexample_folder(options);
     const analysis::AuditFormat format = options.format == "csv"    ? analysis::AuditFormat::csv
                                          : options.format == "json" ? analysis::AuditFormat::json
                                                                     : analysis::AuditFormat::md;

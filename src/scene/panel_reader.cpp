@@ -60,6 +60,34 @@ void set_method(const JsonReader& reader, Panel& panel, Method method, const std
   panel.title = method_title(method);
 }
 
+// The panel's own "keyframes" or "points", under its method and options (set
+// before), and the pointer its motion's errors name.
+void read_own_keys(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene,
+                   Panel& panel) {
+  const Json* keyframes = JsonReader::member(value, "keyframes");
+  const Json* points = JsonReader::member(value, "points");
+  if (keyframes != nullptr && points != nullptr) {
+    reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
+  }
+  if (keyframes != nullptr) {
+    KeyframeKeys arrows;
+    static_cast<TrackMethod&>(arrows) = track_of(panel);
+    arrows.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to,
+                                        arrows.options.knots);
+    if (const auto* own = std::get_if<KeyframeKeys>(&scene.keys)) arrows.given_handle = own->given_handle;
+    panel.keys = std::move(arrows);
+    panel.motion_pointer = pointer + "/keyframes";
+  } else if (points != nullptr) {
+    PointKeys curve;
+    static_cast<TrackMethod&>(curve) = track_of(panel);
+    curve.points = reader.points(*points, pointer + "/points");
+    panel.keys = std::move(curve);
+    panel.motion_pointer = pointer + "/points";
+  } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
+    panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
+  }
+}
+
 // A panel is a method name ("P2") or an object whose fields override the scene's.
 Panel read_panel(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene) {
   Panel panel = scene_panel(scene, pointer);
@@ -89,27 +117,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     const TrackMethod* own = track_method(scene.keys);
     track.options = reader.options(*options, pointer + "/options", own != nullptr ? own->options : MethodOptions{});
   }
-  const Json* points = JsonReader::member(value, "points");
-  if (keyframes != nullptr && points != nullptr) {
-    reader.fail(pointer + "/points", "give either \"keyframes\" (arrows) or \"points\" (timed points), not both");
-  }
-  if (keyframes != nullptr) {
-    KeyframeKeys arrows;
-    static_cast<TrackMethod&>(arrows) = track_of(panel);
-    arrows.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to,
-                                        arrows.options.knots);
-    if (const auto* own = std::get_if<KeyframeKeys>(&scene.keys)) arrows.given_handle = own->given_handle;
-    panel.keys = std::move(arrows);
-    panel.motion_pointer = pointer + "/keyframes";
-  } else if (points != nullptr) {
-    PointKeys curve;
-    static_cast<TrackMethod&>(curve) = track_of(panel);
-    curve.points = reader.points(*points, pointer + "/points");
-    panel.keys = std::move(curve);
-    panel.motion_pointer = pointer + "/points";
-  } else if (JsonReader::member(value, "method") != nullptr || JsonReader::member(value, "options") != nullptr) {
-    panel.motion_pointer = pointer;  // the scene's keyframes, the panel's method
-  }
+  read_own_keys(reader, value, pointer, scene, panel);
   if (const Json* chain = JsonReader::member(value, "chain")) {
     track_of(panel).chain = reader.chain(*chain, pointer + "/chain");
   }
