@@ -1,3 +1,4 @@
+#include "scene/animation_reader.hpp"
 #include "scene/space_pose_reader.hpp"
 
 #include <algorithm>
@@ -18,9 +19,10 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 18> kSpaceSceneFields = {
-    "$schema", "description", "dimension", "method", "poses", "reference_tetrahedron", "samples", "subdivisions",
-    "timing", "golden", "claims", "lint", "shapes", "camera", "layers", "title", "canvas", "panels"};
+constexpr std::array<std::string_view, 19> kSpaceSceneFields = {
+    "$schema", "description", "dimension", "method",    "poses",  "reference_tetrahedron", "samples",
+    "subdivisions", "timing", "golden",    "claims",    "lint",   "shapes",                "camera",
+    "layers",  "title",       "canvas",    "panels",    "animation"};
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 7> kCameraFields = {"azimuth", "elevation", "distance", "projection",
@@ -377,6 +379,11 @@ Scene read_space_pose_scene(const JsonReader& reader, const Json& document) {
     scene.claims = read_claims(reader, *claims, scene, true);
   }
   if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
+  // "animation", as a scene of poses of the plane reads it (poses do not move).
+  if (const Json* animation = JsonReader::member(document, "animation")) {
+    scene.animation = detail::read_animation(reader, *animation, "/animation", false, true);
+    scene.has_animation = true;
+  }
   return scene;
 }
 

@@ -187,7 +187,7 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
             (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
                                    "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "claims", "lint", "shapes",
-                                   "camera", "layers", "title", "canvas", "panels"}));
+                                   "camera", "layers", "title", "canvas", "panels", "animation"}));
   // Their panels (panel_reader.cpp's PosePanelSpace<Affine3>): no shapes, the solids are the scene's.
   EXPECT_EQ(keys_of(definitions.at("spacePosePanel").at("anyOf").at(1).at("properties")),
             (std::set<std::string>{"method", "poses", "title", "samples", "layers", "subdivisions", "timing"}));

@@ -68,6 +68,24 @@ TEST(SpacePoseScene, TimingIsReadAsInThePlane) {
   EXPECT_EQ(timing.pointer, "/timing");
 }
 
+// "animation" is read as in a scene of poses of the plane (the refusals:
+// tests/data/bad/space-animation-*).
+TEST(SpacePoseScene, AnimationIsReadAsInThePlane) {
+  const Scene scene = parse_space(R"({"dimension": 3, "method": "SAM",
+      "animation": {"frames": 12, "loop": false, "trail": 3}, "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 1, "matrix": [[2, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})");
+  EXPECT_TRUE(scene.has_animation);
+  EXPECT_EQ(scene.animation.frames, 12);
+  EXPECT_FALSE(scene.animation.loop);
+  EXPECT_EQ(scene.animation.trail, 3);
+  EXPECT_EQ(scene.animation.what, Animation::What::motion);
+  EXPECT_FALSE(parse_space(R"({"dimension": 3, "method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+      {"t": 1, "matrix": [[2, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})")
+                   .has_animation);
+}
+
 // "dimension": 2 is the plane's scene as before.
 TEST(SpacePoseScene, DimensionTwoIsThePlane) {
   const Scene plane = parse_scene(R"({"dimension": 2, "method": "SAM", "poses": [
