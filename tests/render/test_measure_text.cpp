@@ -39,10 +39,8 @@ analysis::MotionMeasures arrows_measured() {
 std::vector<scene::MeasureName> parsed(std::initializer_list<std::string_view> names) {
   std::vector<scene::MeasureName> out;
   for (const std::string_view name : names) {
-    auto measure = scene::parse_measure(name, scene::MeasureScene::arrows);
-    if (!std::holds_alternative<scene::MeasureName>(measure)) {
-      measure = scene::parse_measure(name, scene::MeasureScene::poses);
-    }
+    auto measure = scene::parse_measure<scene::Layer>(name);
+    if (!std::holds_alternative<scene::MeasureName>(measure)) measure = scene::parse_measure<scene::PoseLayer>(name);
     out.push_back(std::get<scene::MeasureName>(measure));
   }
   return out;
