@@ -16,6 +16,7 @@
 #include "core/steadiness.hpp"
 #include "motion/sampler.hpp"
 #include "motion/stage.hpp"
+#include "scene/body_points.hpp"
 
 namespace pita::analysis {
 
@@ -229,26 +230,20 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
   }
 }
 
-// The points whose relative acceleration ARA averages (Sec. 2.4): the
-// regular grid over the box of the panel's shapes (image boxes included),
-// else of the reference triangle, as an "ara" layer prints it (N28).
-std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
-  std::vector<Eigen::Vector2d> vertices;
-  for (const scene::ShapeOutline& shape : panel.shapes) {
-    for (const Point& x : shape.points) vertices.emplace_back(x.real(), x.imag());
+// The points whose relative acceleration ARA averages (Sec. 2.4), from the
+// body's points (scene::body_points, what the figure draws): in the plane the
+// regular grid over their box, as an "ara" layer prints it (N28); in space
+// the vertices themselves.
+template <class Pose>
+std::vector<typename PoseTraits<Pose>::Vector> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
+  const auto body = scene::body_points<Pose>(scene, panel);
+  if constexpr (!in_space_v<Pose>) {
+    std::vector<Eigen::Vector2d> vertices;
+    for (const Point& x : body) vertices.emplace_back(x.real(), x.imag());
+    return ara_grid(vertices);
+  } else {
+    return body;
   }
-  if (vertices.empty()) {
-    for (const Point& x : scene.reference_triangle) vertices.emplace_back(x.real(), x.imag());
-  }
-  return ara_grid(vertices);
-}
-
-// In space: the vertices of the scene's solids, else the reference tetrahedron.
-std::vector<Eigen::Vector3d> ara_points3(const scene::Scene& scene) {
-  std::vector<Eigen::Vector3d> points;
-  for (const scene::Solid& solid : scene.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
-  if (points.empty()) points.assign(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end());
-  return points;
 }
 
 // The largest jump of a point's velocity between consecutive samples,
@@ -322,12 +317,12 @@ KindMeasures measure_motion(const scene::Scene& scene, const scene::Panel& panel
                    return PointMeasures{path_stats(p)};
                  },
                  [&](const motion::PlanePoses& poses) -> KindMeasures {
-                   const std::vector<Eigen::Vector2d> points = ara_points(scene, panel);
+                   const std::vector<Eigen::Vector2d> points = ara_points<Affine2>(scene, panel);
                    return measure_pose_motion<Affine2>(*poses.motion, std::span<const Eigen::Vector2d>(points),
                                                        motion.first(), motion.last(), options);
                  },
                  [&](const motion::SpacePoses& poses) -> KindMeasures {
-                   const std::vector<Eigen::Vector3d> points = ara_points3(scene);
+                   const std::vector<Eigen::Vector3d> points = ara_points<Affine3>(scene, panel);
                    return measure_pose_motion<Affine3>(*poses.motion, std::span<const Eigen::Vector3d>(points),
                                                        motion.first(), motion.last(), options);
                  }},
