@@ -102,32 +102,16 @@ void Measurer::need_keyframes(std::size_t panel, const scene::MeasureName& measu
   }
 }
 
-double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
-  const motion::Stage& stage = *stage_;
-  switch (measure.kind) {
-    case MeasureKind::scale_step:
-    case MeasureKind::turn_step:
-    case MeasureKind::scale_min:
-    case MeasureKind::scale_max: {  // the drawn frames
-      need_keyframes(panel, measure, pointer);
-      std::optional<FrameSteps>& kept = steps_.at(panel);
-      if (!kept) kept = frame_steps(stage, panel);
-      return *frame_step(*kept, measure.kind);
-    }
-    case MeasureKind::angle:
-      need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
-      return vector_angle(stage, panel, measure.method, measure.t);
-    case MeasureKind::frame_distance:
-      need_keyframes(panel, measure, pointer, measure.panel);
-      return frame_distance(stage, panel, *measure.panel);
-    case MeasureKind::handle_shift:
-      need_keyframes(panel, measure, pointer);
-      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
-      return handle_shift(stage, panel);
-    case MeasureKind::property:
-      need_keyframes(panel, measure, pointer);
-      return property_value(stage, panel, measure, pointer);
+namespace {
+
+// Where a claim's number comes from: pita measure's measures of the panel
+// (measure_panel, kept once per panel), the frames its pattern draws, a
+// comparison with another motion, or a property of Sec. 4. What value()
+// computes and what claims_cost counts, from one list.
+enum class Source { measures, frame_steps, comparison, property };
+
+Source source_of(MeasureKind kind) {
+  switch (kind) {
     case MeasureKind::discrepancy_max:
     case MeasureKind::discrepancy_of:
     case MeasureKind::discrepancy_time:
@@ -141,8 +125,43 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
     case MeasureKind::area:
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump:
-      return measured_value(panel, measure, pointer);
+    case MeasureKind::jump: return Source::measures;
+    case MeasureKind::scale_step:
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max: return Source::frame_steps;
+    case MeasureKind::angle:
+    case MeasureKind::frame_distance:
+    case MeasureKind::handle_shift: return Source::comparison;
+    case MeasureKind::property: return Source::property;
+  }
+  return Source::measures;  // unreachable: every kind is listed
+}
+
+}  // namespace
+
+double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+  const motion::Stage& stage = *stage_;
+  switch (source_of(measure.kind)) {
+    case Source::measures: return measured_value(panel, measure, pointer);
+    case Source::frame_steps: {  // the drawn frames
+      need_keyframes(panel, measure, pointer);
+      std::optional<FrameSteps>& kept = steps_.at(panel);
+      if (!kept) kept = frame_steps(stage, panel);
+      return *frame_step(*kept, measure.kind);
+    }
+    case Source::comparison:  // with another panel (angle, frame-distance) or method
+      need_keyframes(panel, measure, pointer, measure.panel);
+      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::angle) {
+        if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
+        return vector_angle(stage, panel, measure.method, measure.t);
+      }
+      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      return handle_shift(stage, panel);
+    case Source::property:
+      need_keyframes(panel, measure, pointer);
+      return property_value(stage, panel, measure, pointer);
   }
   unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
 }
@@ -323,33 +342,15 @@ double claims_cost(const scene::Scene& scene) {
   double cost = 0.0;
   const auto add = [&](std::size_t panel, const scene::MeasureName& measure) {
     const scene::Panel& p = scene.panels.at(panel);
-    switch (measure.kind) {
-      case MeasureKind::scale_step:  // the drawn frames, once per panel
-      case MeasureKind::turn_step:
-      case MeasureKind::scale_min:
-      case MeasureKind::scale_max:
+    switch (source_of(measure.kind)) {
+      case Source::frame_steps:  // the drawn frames, once per panel
         if (stepped.insert(panel).second) cost += (kScaleSamples + p.samples) * motion::frame_cost(p);
         break;
-      case MeasureKind::angle:
-      case MeasureKind::handle_shift:
-      case MeasureKind::frame_distance:  // both panels' frames
+      case Source::comparison:  // both panels' frames
         cost += (kHandleShiftSamples + 2 * kFrameDistanceSamples) * motion::frame_cost(p);
         break;
-      case MeasureKind::discrepancy_max:  // the panel's measures (measure_panel), once per panel
-      case MeasureKind::discrepancy_of:
-      case MeasureKind::discrepancy_time:
-      case MeasureKind::path_length:
-      case MeasureKind::turning:
-      case MeasureKind::winding_range:
-      case MeasureKind::overreaction:
-      case MeasureKind::pop:
-      case MeasureKind::ara:
-      case MeasureKind::velocity_jump:
-      case MeasureKind::area:
-      case MeasureKind::gain:
-      case MeasureKind::turn:
-      case MeasureKind::jump:
-      case MeasureKind::property:
+      case Source::measures:  // the panel's measures (measure_panel), once per panel
+      case Source::property:
         if (measured.insert(panel).second) cost += measure_cost(p);
         break;
     }
