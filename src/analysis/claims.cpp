@@ -102,32 +102,16 @@ void Measurer::need_keyframes(std::size_t panel, const scene::MeasureName& measu
   }
 }
 
-double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
-  const motion::Stage& stage = *stage_;
-  switch (measure.kind) {
-    case MeasureKind::scale_step:
-    case MeasureKind::turn_step:
-    case MeasureKind::scale_min:
-    case MeasureKind::scale_max: {  // the drawn frames
-      need_keyframes(panel, measure, pointer);
-      std::optional<FrameSteps>& kept = steps_.at(panel);
-      if (!kept) kept = frame_steps(stage, panel);
-      return *frame_step(*kept, measure.kind);
-    }
-    case MeasureKind::angle:
-      need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
-      return vector_angle(stage, panel, measure.method, measure.t);
-    case MeasureKind::frame_distance:
-      need_keyframes(panel, measure, pointer, measure.panel);
-      return frame_distance(stage, panel, *measure.panel);
-    case MeasureKind::handle_shift:
-      need_keyframes(panel, measure, pointer);
-      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
-      return handle_shift(stage, panel);
-    case MeasureKind::property:
-      need_keyframes(panel, measure, pointer);
-      return property_value(stage, panel, measure, pointer);
+namespace {
+
+// Where a claim's number comes from: pita measure's measures of the panel
+// (measure_panel, kept once per panel), the frames its pattern draws, a
+// comparison with another motion, or a property of Sec. 4. What value()
+// computes and what claims_cost counts, from one list.
+enum class Source { measures, frame_steps, comparison, property };
+
+Source source_of(MeasureKind kind) {
+  switch (kind) {
     case MeasureKind::discrepancy_max:
     case MeasureKind::discrepancy_of:
     case MeasureKind::discrepancy_time:
@@ -141,67 +125,66 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
     case MeasureKind::area:
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump:
-      return measured_value(panel, measure, pointer);
+    case MeasureKind::jump: return Source::measures;
+    case MeasureKind::scale_step:
+    case MeasureKind::turn_step:
+    case MeasureKind::scale_min:
+    case MeasureKind::scale_max: return Source::frame_steps;
+    case MeasureKind::angle:
+    case MeasureKind::frame_distance:
+    case MeasureKind::handle_shift: return Source::comparison;
+    case MeasureKind::property: return Source::property;
+  }
+  return Source::measures;  // unreachable: every kind is listed
+}
+
+}  // namespace
+
+double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+  const motion::Stage& stage = *stage_;
+  switch (source_of(measure.kind)) {
+    case Source::measures: return measured_value(panel, measure, pointer);
+    case Source::frame_steps: {  // the drawn frames
+      need_keyframes(panel, measure, pointer);
+      std::optional<FrameSteps>& kept = steps_.at(panel);
+      if (!kept) kept = frame_steps(stage, panel);
+      return *frame_step(*kept, measure.kind);
+    }
+    case Source::comparison:  // with another panel (angle, frame-distance) or method
+      need_keyframes(panel, measure, pointer, measure.panel);
+      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::angle) {
+        if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
+        return vector_angle(stage, panel, measure.method, measure.t);
+      }
+      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      return handle_shift(stage, panel);
+    case Source::property:
+      need_keyframes(panel, measure, pointer);
+      return property_value(stage, panel, measure, pointer);
   }
   unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
 }
 
-double Measurer::measured_value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
-  const motion::Stage& stage = *stage_;
-  const MotionMeasures& m = measures(panel);
-  switch (measure.kind) {
-    case MeasureKind::discrepancy_max: {
-      double largest = -1.0;
-      for (const DiscrepancyStats& d : m.discrepancy) {
-        if (d.frames > 0) largest = std::max(largest, d.max);
-      }
-      if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no frame of its pattern has a prediction");
-      return largest;
-    }
+namespace {
+
+// Why a panel's measures lack the number `kind` reads.
+std::string_view why_unmeasured(MeasureKind kind) {
+  switch (kind) {
+    case MeasureKind::discrepancy_max: return "no frame of its pattern has a prediction";
     case MeasureKind::discrepancy_of:
-    case MeasureKind::discrepancy_time:
-      for (const DiscrepancyStats& d : m.discrepancy) {
-        if (d.predictor != measure.parameter) continue;
-        if (d.frames == 0) break;
-        return measure.kind == MeasureKind::discrepancy_of ? d.max : d.t_of_max;
-      }
-      unmeasured(stage, pointer, panel, measure, "no frame of its pattern has this prediction");
+    case MeasureKind::discrepancy_time: return "no frame of its pattern has this prediction";
     case MeasureKind::path_length:
-    case MeasureKind::turning:
-      if (!m.path_p) unmeasured(stage, pointer, panel, measure, "its motion has no path");
-      return measure.kind == MeasureKind::path_length ? m.path_p->length : m.path_p->turning;
-    case MeasureKind::winding_range:
-      if (!m.winding_min) unmeasured(stage, pointer, panel, measure, "its frames have no winding");
-      return *m.winding_max - *m.winding_min;
-    case MeasureKind::overreaction:
-      if (m.most_sensitive < 0) unmeasured(stage, pointer, panel, measure, "no keyframe parameter was tweaked");
-      return m.parameters[static_cast<std::size_t>(m.most_sensitive)].gain;
-    case MeasureKind::pop:
-      if (m.kind != MeasuredKind::arrows) unmeasured(stage, pointer, panel, measure, "pops are measured on keyframes");
-      return m.pops ? 1.0 : 0.0;
-    case MeasureKind::ara:
-      if (!m.ara) unmeasured(stage, pointer, panel, measure, "ARA is measured on poses");
-      return *m.ara;
-    case MeasureKind::velocity_jump:
-      if (!m.velocity_jump) unmeasured(stage, pointer, panel, measure, "velocity jumps are measured on poses");
-      return *m.velocity_jump;
-    case MeasureKind::area:
-      if (!m.area) unmeasured(stage, pointer, panel, measure, "the area is measured on poses");
-      return m.area->excursion;
+    case MeasureKind::turning: return "its motion has no path";
+    case MeasureKind::winding_range: return "its frames have no winding";
+    case MeasureKind::overreaction: return "no keyframe parameter was tweaked";
+    case MeasureKind::pop: return "pops are measured on keyframes";
+    case MeasureKind::ara: return "ARA is measured on poses";
+    case MeasureKind::velocity_jump: return "velocity jumps are measured on poses";
+    case MeasureKind::area: return "the area is measured on poses";
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump: {
-      double largest = -1.0;
-      for (const ParameterReaction& p : m.parameters) {
-        if (p.name != measure.parameter && !p.name.starts_with(measure.parameter + ".")) continue;
-        largest = std::max(largest, measure.kind == MeasureKind::gain   ? p.gain
-                                    : measure.kind == MeasureKind::turn ? p.turn
-                                                                        : p.jump);
-      }
-      if (largest < 0.0) unmeasured(stage, pointer, panel, measure, "no keyframe has that parameter");
-      return largest;
-    }
+    case MeasureKind::jump: return "no keyframe has that parameter";
     case MeasureKind::scale_step:  // computed from the panel itself by value()
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
@@ -212,7 +195,77 @@ double Measurer::measured_value(std::size_t panel, const scene::MeasureName& mea
     case MeasureKind::property:
       break;
   }
-  unmeasured(stage, pointer, panel, measure, "not a measure of a claim");
+  return "not a measure of a claim";
+}
+
+// The largest gain, turn or jump of the parameters named `measure.parameter` or under it.
+std::optional<double> largest_reaction(const ArrowMeasures& m, const scene::MeasureName& measure) {
+  std::optional<double> largest;
+  for (const ParameterReaction& p : m.parameters) {
+    if (p.name != measure.parameter && !p.name.starts_with(measure.parameter + ".")) continue;
+    const double x = measure.kind == MeasureKind::gain ? p.gain : measure.kind == MeasureKind::turn ? p.turn : p.jump;
+    largest = std::max(largest.value_or(-1.0), x);
+  }
+  return largest;
+}
+
+// The largest E over the predictors, or of one predictor (or the time of it).
+std::optional<double> largest_discrepancy(const ArrowMeasures& m, const scene::MeasureName& measure) {
+  std::optional<double> largest;
+  for (const DiscrepancyStats& d : m.discrepancy) {
+    if (d.frames == 0) continue;
+    if (measure.kind == MeasureKind::discrepancy_max) {
+      largest = std::max(largest.value_or(-1.0), d.max);
+    } else if (d.predictor == measure.parameter) {
+      return measure.kind == MeasureKind::discrepancy_of ? d.max : d.t_of_max;
+    }
+  }
+  return largest;
+}
+
+// The number a claim reads from each kind's measures; nullopt when the kind
+// lacks it (why_unmeasured says why).
+std::optional<double> claimed_number(const ArrowMeasures& m, const scene::MeasureName& measure) {
+  const MeasureKind kind = measure.kind;
+  if (kind == MeasureKind::discrepancy_max || kind == MeasureKind::discrepancy_of ||
+      kind == MeasureKind::discrepancy_time) {
+    return largest_discrepancy(m, measure);
+  }
+  if (kind == MeasureKind::path_length) return m.path_p.length;
+  if (kind == MeasureKind::turning) return m.path_p.turning;
+  if (kind == MeasureKind::winding_range) return m.winding_max - m.winding_min;
+  if (kind == MeasureKind::overreaction && m.most_sensitive >= 0) {
+    return m.parameters[static_cast<std::size_t>(m.most_sensitive)].gain;
+  }
+  if (kind == MeasureKind::pop) return m.pops ? 1.0 : 0.0;
+  if (kind == MeasureKind::gain || kind == MeasureKind::turn || kind == MeasureKind::jump) {
+    return largest_reaction(m, measure);
+  }
+  return std::nullopt;  // a measure of poses, or one value() computes from the panel
+}
+
+std::optional<double> claimed_number(const PointMeasures& m, const scene::MeasureName& measure) {
+  if (measure.kind == MeasureKind::path_length) return m.path.length;
+  if (measure.kind == MeasureKind::turning) return m.path.turning;
+  return std::nullopt;
+}
+
+template <class Pose>
+std::optional<double> claimed_number(const PoseMeasures<Pose>& m, const scene::MeasureName& measure) {
+  if (measure.kind == MeasureKind::ara) return m.ara;
+  if (measure.kind == MeasureKind::velocity_jump) return m.velocity_jump;
+  if (measure.kind == MeasureKind::area) return m.area.excursion;
+  return std::nullopt;
+}
+
+}  // namespace
+
+double Measurer::measured_value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+  const MotionMeasures& m = measures(panel);
+  const std::optional<double> x =
+      std::visit([&](const auto& measured) { return claimed_number(measured, measure); }, m.measured);
+  if (!x) unmeasured(*stage_, pointer, panel, measure, why_unmeasured(measure.kind));
+  return *x;
 }
 
 namespace {
@@ -289,33 +342,15 @@ double claims_cost(const scene::Scene& scene) {
   double cost = 0.0;
   const auto add = [&](std::size_t panel, const scene::MeasureName& measure) {
     const scene::Panel& p = scene.panels.at(panel);
-    switch (measure.kind) {
-      case MeasureKind::scale_step:  // the drawn frames, once per panel
-      case MeasureKind::turn_step:
-      case MeasureKind::scale_min:
-      case MeasureKind::scale_max:
+    switch (source_of(measure.kind)) {
+      case Source::frame_steps:  // the drawn frames, once per panel
         if (stepped.insert(panel).second) cost += (kScaleSamples + p.samples) * motion::frame_cost(p);
         break;
-      case MeasureKind::angle:
-      case MeasureKind::handle_shift:
-      case MeasureKind::frame_distance:  // both panels' frames
+      case Source::comparison:  // both panels' frames
         cost += (kHandleShiftSamples + 2 * kFrameDistanceSamples) * motion::frame_cost(p);
         break;
-      case MeasureKind::discrepancy_max:  // the panel's measures (measure_panel), once per panel
-      case MeasureKind::discrepancy_of:
-      case MeasureKind::discrepancy_time:
-      case MeasureKind::path_length:
-      case MeasureKind::turning:
-      case MeasureKind::winding_range:
-      case MeasureKind::overreaction:
-      case MeasureKind::pop:
-      case MeasureKind::ara:
-      case MeasureKind::velocity_jump:
-      case MeasureKind::area:
-      case MeasureKind::gain:
-      case MeasureKind::turn:
-      case MeasureKind::jump:
-      case MeasureKind::property:
+      case Source::measures:  // the panel's measures (measure_panel), once per panel
+      case Source::property:
         if (measured.insert(panel).second) cost += measure_cost(p);
         break;
     }

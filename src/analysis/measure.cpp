@@ -16,6 +16,7 @@
 #include "core/steadiness.hpp"
 #include "motion/sampler.hpp"
 #include "motion/stage.hpp"
+#include "scene/body_points.hpp"
 
 namespace pita::analysis {
 
@@ -119,7 +120,7 @@ double largest_change(const std::vector<Arrow>& x, const std::vector<Arrow>& y) 
   return change;
 }
 
-void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& motion, MotionMeasures& out) {
+void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& motion, ArrowMeasures& out) {
   const scene::TrackMethod& track = std::get<scene::KeyframeKeys>(panel.keys);
   const std::vector<double> times = motion::uniform_times(motion, panel.samples);
   std::vector<Arrow> frames;
@@ -162,7 +163,7 @@ std::vector<Arrow> dense_arrows(const motion::SceneMotion& motion, int samples) 
   return arrows;
 }
 
-void measure_paths(const motion::SceneMotion& motion, const MeasureOptions& options, MotionMeasures& out) {
+void measure_paths(const motion::SceneMotion& motion, const MeasureOptions& options, ArrowMeasures& out) {
   const std::vector<Arrow> arrows = dense_arrows(motion, options.path_samples);
   std::vector<Point> p, q;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -182,7 +183,7 @@ void measure_paths(const motion::SceneMotion& motion, const MeasureOptions& opti
 }
 
 void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, const motion::SceneMotion& motion,
-                       const MeasureOptions& options, MotionMeasures& out) {
+                       const MeasureOptions& options, ArrowMeasures& out) {
   // Motion times (the timing is left out, docs/paper-notes.md N37).
   const std::vector<double> times = motion::uniform_times(motion.first(), motion.last(), options.tweak_samples);
   const double extent = out.extent, duration = motion.last() - motion.first();
@@ -229,26 +230,20 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
   }
 }
 
-// The points whose relative acceleration ARA averages (Sec. 2.4): the
-// regular grid over the box of the panel's shapes (image boxes included),
-// else of the reference triangle, as an "ara" layer prints it (N28).
-std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
-  std::vector<Eigen::Vector2d> vertices;
-  for (const scene::ShapeOutline& shape : panel.shapes) {
-    for (const Point& x : shape.points) vertices.emplace_back(x.real(), x.imag());
+// The points whose relative acceleration ARA averages (Sec. 2.4), from the
+// body's points (scene::body_points, what the figure draws): in the plane the
+// regular grid over their box, as an "ara" layer prints it (N28); in space
+// the vertices themselves.
+template <class Pose>
+std::vector<typename PoseTraits<Pose>::Vector> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
+  const auto body = scene::body_points<Pose>(scene, panel);
+  if constexpr (!in_space_v<Pose>) {
+    std::vector<Eigen::Vector2d> vertices;
+    for (const Point& x : body) vertices.emplace_back(x.real(), x.imag());
+    return ara_grid(vertices);
+  } else {
+    return body;
   }
-  if (vertices.empty()) {
-    for (const Point& x : scene.reference_triangle) vertices.emplace_back(x.real(), x.imag());
-  }
-  return ara_grid(vertices);
-}
-
-// In space: the vertices of the scene's solids, else the reference tetrahedron.
-std::vector<Eigen::Vector3d> ara_points3(const scene::Scene& scene) {
-  std::vector<Eigen::Vector3d> points;
-  for (const scene::Solid& solid : scene.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
-  if (points.empty()) points.assign(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end());
-  return points;
 }
 
 // The largest jump of a point's velocity between consecutive samples,
@@ -280,9 +275,10 @@ double velocity_jump(const PoseMotionT& poses, std::span<const Vector> points, c
 
 // ARA of the pose motion (its own time, no warp) and the monotonicity of
 // det L: the area in the plane, the volume in space. One template for both.
-template <class PoseMotionT, class Vector>
-void measure_pose_motion(const PoseMotionT& poses, std::span<const Vector> points, double first, double last,
-                         const MeasureOptions& options, MotionMeasures& out) {
+template <class Pose, class PoseMotionT, class Vector>
+PoseMeasures<Pose> measure_pose_motion(const PoseMotionT& poses, std::span<const Vector> points, double first,
+                                       double last, const MeasureOptions& options) {
+  PoseMeasures<Pose> out;
   out.ara = average_relative_acceleration(poses, points);
   std::vector<double> times, dets;
   const double step = (last - first) / options.path_samples;
@@ -292,8 +288,54 @@ void measure_pose_motion(const PoseMotionT& poses, std::span<const Vector> point
     dets.push_back(poses.at(tau).L.determinant());
   }
   out.area = area_stats(times, dets);
-  if (!std::isfinite(*out.ara)) throw std::domain_error("ARA is not finite");
+  if (!std::isfinite(out.ara)) throw std::domain_error("ARA is not finite");
   out.velocity_jump = velocity_jump(poses, points, times);
+  return out;
+}
+
+// The measures of the panel's motion, of the alternative its keys have.
+KindMeasures measure_motion(const scene::Scene& scene, const scene::Panel& panel, const motion::SceneMotion& motion,
+                            const MeasureOptions& options) {
+  return std::visit(
+      overloaded{[&](const motion::ArrowTrack&) -> KindMeasures {
+                   ArrowMeasures out;
+                   out.samples = panel.samples;
+                   out.extent = keyframe_extent(std::get<scene::KeyframeKeys>(panel.keys).keyframes);
+                   measure_discrepancy(panel, motion, out);
+                   measure_paths(motion, options, out);
+                   measure_reactions(scene, panel, motion, options, out);
+                   return out;
+                 },
+                 [&](const motion::PointTrack&) -> KindMeasures {
+                   // A curve through timed points (Sec. 7.6): its path only.
+                   const double first = motion.first();
+                   const double step = (motion.last() - first) / options.path_samples;
+                   std::vector<Point> p;
+                   for (int i = -1; i <= options.path_samples + 1; ++i) {
+                     p.push_back(motion.point_at(i == options.path_samples ? motion.last() : first + step * i));
+                   }
+                   return PointMeasures{path_stats(p)};
+                 },
+                 [&](const motion::PlanePoses& poses) -> KindMeasures {
+                   const std::vector<Eigen::Vector2d> points = ara_points<Affine2>(scene, panel);
+                   return measure_pose_motion<Affine2>(*poses.motion, std::span<const Eigen::Vector2d>(points),
+                                                       motion.first(), motion.last(), options);
+                 },
+                 [&](const motion::SpacePoses& poses) -> KindMeasures {
+                   const std::vector<Eigen::Vector3d> points = ara_points<Affine3>(scene, panel);
+                   return measure_pose_motion<Affine3>(*poses.motion, std::span<const Eigen::Vector3d>(points),
+                                                       motion.first(), motion.last(), options);
+                 }},
+      motion.built());
+}
+
+// The alternative of the panel's keys with nothing measured.
+KindMeasures unmeasured_kind(const scene::MotionKeys& keys) {
+  return std::visit(overloaded{[](const scene::KeyframeKeys&) -> KindMeasures { return ArrowMeasures{}; },
+                               [](const scene::PointKeys&) -> KindMeasures { return PointMeasures{}; },
+                               [](const scene::PlanePoseKeys&) -> KindMeasures { return PoseMeasures<Affine2>{}; },
+                               [](const scene::SpacePoseKeys&) -> KindMeasures { return PoseMeasures<Affine3>{}; }},
+                    keys);
 }
 
 }  // namespace
@@ -374,14 +416,18 @@ double measure_cost(const scene::Panel& panel, const MeasureOptions& options) {
          static_cast<double>(poses) * (options.path_samples + 64.0);
 }
 
-std::string_view measured_kind_name(MeasuredKind kind) {
-  switch (kind) {
-    case MeasuredKind::arrows: return "arrows";
-    case MeasuredKind::points: return "points";
-    case MeasuredKind::plane_poses: return "poses";
-    case MeasuredKind::space_poses: return "poses3d";
-  }
-  return "?";
+std::string_view measured_kind_name(const MotionMeasures& measures) {
+  return std::visit([](const auto& measured) { return std::decay_t<decltype(measured)>::kind_name; },
+                    measures.measured);
+}
+
+std::span<const ParameterReaction> parameters_of(const MotionMeasures& measures) {
+  return std::visit(overloaded{[](const ArrowMeasures& arrows) { return std::span(arrows.parameters); },
+                               [](const PointMeasures&) { return std::span<const ParameterReaction>(); },
+                               []<class Pose>(const PoseMeasures<Pose>&) {
+                                 return std::span<const ParameterReaction>();
+                               }},
+                    measures.measured);
 }
 
 MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options) {
@@ -391,56 +437,14 @@ MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, cons
   out.pointer = panel.pointer;
   out.title = panel.title;
   out.method = motion::method_label(scene, panel);
-  out.kind = std::visit(overloaded{[](const scene::KeyframeKeys&) { return MeasuredKind::arrows; },
-                                   [](const scene::PointKeys&) { return MeasuredKind::points; },
-                                   [](const scene::PlanePoseKeys&) { return MeasuredKind::plane_poses; },
-                                   [](const scene::SpacePoseKeys&) { return MeasuredKind::space_poses; }},
-                        panel.keys);
-  out.samples = panel.samples;
+  out.measured = unmeasured_kind(panel.keys);  // nothing half measured when the motion fails
   try {
-    const motion::SceneMotion& motion = stage.motion(index);
-    std::visit(overloaded{[&](const motion::ArrowTrack&) {
-                            out.extent = keyframe_extent(std::get<scene::KeyframeKeys>(panel.keys).keyframes);
-                            measure_discrepancy(panel, motion, out);
-                            measure_paths(motion, options, out);
-                            measure_reactions(scene, panel, motion, options, out);
-                          },
-                          [&](const motion::PointTrack&) {
-                            // A curve through timed points (Sec. 7.6): its path only.
-                            const double first = motion.first();
-                            const double step = (motion.last() - first) / options.path_samples;
-                            std::vector<Point> p;
-                            for (int i = -1; i <= options.path_samples + 1; ++i) {
-                              p.push_back(motion.point_at(i == options.path_samples ? motion.last() : first + step * i));
-                            }
-                            out.path_p = path_stats(p);
-                          },
-                          [&](const motion::PlanePoses& poses) {
-                            const std::vector<Eigen::Vector2d> points = ara_points(scene, panel);
-                            measure_pose_motion(*poses.motion, std::span<const Eigen::Vector2d>(points),
-                                                motion.first(), motion.last(), options, out);
-                          },
-                          [&](const motion::SpacePoses& poses) {
-                            const std::vector<Eigen::Vector3d> points = ara_points3(scene);
-                            measure_pose_motion(*poses.motion, std::span<const Eigen::Vector3d>(points),
-                                                motion.first(), motion.last(), options, out);
-                          }},
-               motion.built());
+    out.measured = measure_motion(scene, panel, stage.motion(index), options);
   } catch (const motion::NoMotion& error) {
     out.no_motion = error.what();
   } catch (const std::exception& error) {
     out.no_motion = scene::located(scene.path, panel.motion_pointer,
                                    fmt::format("method {} cannot be measured: {}", out.method, error.what()));
-  }
-  if (out.no_motion) {  // nothing half measured
-    const MotionMeasures header = out;
-    out = MotionMeasures{};
-    out.pointer = header.pointer;
-    out.title = header.title;
-    out.method = header.method;
-    out.kind = header.kind;
-    out.samples = header.samples;
-    out.no_motion = header.no_motion;
   }
   return out;
 }

@@ -17,8 +17,11 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
+#include "core/pose_traits.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "scene/scene.hpp"
@@ -79,45 +82,62 @@ struct AreaStats {
   double first = 0.0, last = 0.0;  // det L at the first and last knot
 };
 
-// What a MotionMeasures measured: the alternative of the panel's
-// scene::MotionKeys (keyframes, points, poses of the plane, poses of space).
-// Set from the keys by measure_panel only; it names the output's sections.
-enum class MeasuredKind { arrows, points, plane_poses, space_poses };
-
-// "arrows", "points", "poses", "poses3d": the "kind" of `pita measure`'s JSON and CSV.
-std::string_view measured_kind_name(MeasuredKind kind);
-// Poses of the plane or of space (ARA and det L are measured).
-inline bool of_poses(MeasuredKind kind) {
-  return kind == MeasuredKind::plane_poses || kind == MeasuredKind::space_poses;
-}
-
-struct MotionMeasures {
-  std::string pointer;   // the panel's JSON Pointer ("" for the scene itself)
-  std::string title;     // panel title, or "" 
-  std::string method;    // "P6 (La-LP)", "SAM"
-  MeasuredKind kind = MeasuredKind::arrows;
-  std::optional<std::string> no_motion;  // "file: pointer: reason" when it does not exist
+// The measures of a motion through keyframes (arrows): discrepancy of its
+// pattern, paths of p and q, winding range, overreaction and pops.
+struct ArrowMeasures {
+  static constexpr std::string_view kind_name = "arrows";  // in `pita measure`'s JSON and CSV
   int samples = 0;       // pattern frames (discrepancy)
-  double extent = 0.0;   // diameter of the keyframes' endpoints (arrows)
-
-  // Arrows (and points: path_p only).
+  double extent = 0.0;   // diameter of the keyframes' endpoints
   std::vector<DiscrepancyStats> discrepancy;
-  std::optional<PathStats> path_p, path_q;
-  std::optional<double> winding_min, winding_max;
+  PathStats path_p, path_q;
+  double winding_min = 0.0, winding_max = 0.0;
   std::vector<ParameterReaction> parameters;
   int most_sensitive = -1;  // index into parameters; -1 when none
   int largest_jump = -1;    // index of the largest jump; -1 when none
   bool pops = false;
+};
 
-  // Poses.
-  std::optional<double> ara;
-  std::optional<AreaStats> area;
+// The measures of a curve through timed points (Sec. 7.6): its path only.
+struct PointMeasures {
+  static constexpr std::string_view kind_name = "points";
+  PathStats path;
+};
+
+// The measures of a motion through poses of the plane or of space: ARA
+// (SAM paper Sec. 2.4) and whether det L (an area, or a volume in space)
+// varies monotonically (SAM paper Sec. 6).
+template <class Pose>
+struct PoseMeasures {
+  static constexpr std::string_view kind_name = PoseTraits<Pose>::kind_name;  // "poses", "poses3d"
+  // What det L measures: the name of its table and JSON member.
+  static constexpr std::string_view det_name = in_space_v<Pose> ? "volume" : "area";
+  double ara = 0.0;
+  AreaStats area;
   // How much the velocity of the ARA points jumps: the largest change between
   // consecutive chords of their paths sampled at path_samples times, over
   // the mean chord. A velocity that jumps at a pose (a polySAM's) keeps it
   // near its relative jump; a smooth motion's shrinks as samples grow.
-  std::optional<double> velocity_jump;
+  double velocity_jump = 0.0;
 };
+
+// One alternative per alternative of scene::MotionKeys, in its order: what
+// is measured depends on the kind of the panel's keys, and the writers visit it.
+using KindMeasures = std::variant<ArrowMeasures, PointMeasures, PoseMeasures<Affine2>, PoseMeasures<Affine3>>;
+
+struct MotionMeasures {
+  std::string pointer;   // the panel's JSON Pointer ("" for the scene itself)
+  std::string title;     // panel title, or ""
+  std::string method;    // "P6 (La-LP)", "SAM"
+  std::optional<std::string> no_motion;  // "file: pointer: reason" when it does not exist
+  // The kind's measures; default values (nothing measured) when no_motion is set.
+  KindMeasures measured;
+};
+
+// "arrows", "points", "poses", "poses3d": the "kind" of `pita measure`'s JSON and CSV.
+std::string_view measured_kind_name(const MotionMeasures& measures);
+
+// The overreaction of each keyframe parameter: empty but for keyframes.
+std::span<const ParameterReaction> parameters_of(const MotionMeasures& measures);
 
 // The diameter of the set of keyframe endpoints {p, q}: the length unit of
 // the similarity-invariant measures. > 0 since every m > 0.

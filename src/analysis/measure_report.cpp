@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "core/overloaded.hpp"
+
 namespace pita::analysis {
 
 namespace {
@@ -55,7 +57,7 @@ void write_json(const Json& value, std::string& out) {
 }
 
 // The overreaction to each keyframe parameter, the most sensitive one first.
-Json overreaction_json(const MotionMeasures& m) {
+Json overreaction_json(const ArrowMeasures& m) {
   Json overreaction = Json::object();
   if (m.most_sensitive >= 0) {
     const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
@@ -71,45 +73,47 @@ Json overreaction_json(const MotionMeasures& m) {
   return overreaction;
 }
 
+Json path_json(const PathStats& path) { return Json{{"length", path.length}, {"turning", path.turning}}; }
+
+// The members of each kind's measures, in the order they are written.
+void add_json(const ArrowMeasures& m, Json& j) {
+  j["samples"] = m.samples;
+  j["extent"] = m.extent;
+  Json discrepancy = Json::object();
+  for (const auto& d : m.discrepancy) {
+    discrepancy[d.predictor] = Json{{"frames", d.frames}, {"max", d.max}, {"mean", d.mean}, {"t_of_max", d.t_of_max}};
+  }
+  j["discrepancy"] = std::move(discrepancy);
+  j["path"] = Json{{"p", path_json(m.path_p)}, {"q", path_json(m.path_q)}};
+  j["winding"] = Json{{"min", m.winding_min}, {"max", m.winding_max}};
+  j["overreaction"] = overreaction_json(m);
+  j["pop"] = Json{{"detected", m.pops}};
+  if (m.largest_jump >= 0) {
+    const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
+    j["pop"]["parameter"] = worst.name;
+    j["pop"]["jump"] = worst.jump;
+  }
+}
+
+void add_json(const PointMeasures& m, Json& j) { j["path"] = Json{{"p", path_json(m.path)}}; }
+
+template <class Pose>
+void add_json(const PoseMeasures<Pose>& m, Json& j) {
+  j["ara"] = m.ara;
+  j["velocity_jump"] = m.velocity_jump;
+  j[std::string(m.det_name)] = Json{{"monotone", m.area.monotone}, {"excursion", m.area.excursion},
+                       {"t_of_excursion", m.area.t_of_excursion}, {"first", m.area.first}, {"last", m.area.last}};
+}
+
 // A motion's measures, each present only where it applies, in the order they are written.
 Json motion_json(const MotionMeasures& m) {
   Json j{{"pointer", m.pointer}, {"title", m.title}, {"method", m.method},
-         {"kind", std::string(measured_kind_name(m.kind))}};
+         {"kind", std::string(measured_kind_name(m))}};
   if (m.no_motion) {
     j["no_motion"] = *m.no_motion;
     return j;
   }
-  if (m.kind == MeasuredKind::arrows) {
-    j["samples"] = m.samples;
-    j["extent"] = m.extent;
-    Json discrepancy = Json::object();
-    for (const auto& d : m.discrepancy) {
-      discrepancy[d.predictor] = Json{{"frames", d.frames}, {"max", d.max}, {"mean", d.mean}, {"t_of_max", d.t_of_max}};
-    }
-    j["discrepancy"] = std::move(discrepancy);
-  }
-  if (m.path_p) {
-    j["path"] = Json{{"p", Json{{"length", m.path_p->length}, {"turning", m.path_p->turning}}}};
-    if (m.path_q) j["path"]["q"] = Json{{"length", m.path_q->length}, {"turning", m.path_q->turning}};
-  }
-  if (m.winding_min) j["winding"] = Json{{"min", *m.winding_min}, {"max", *m.winding_max}};
-  if (m.kind == MeasuredKind::arrows) {
-    j["overreaction"] = overreaction_json(m);
-    j["pop"] = Json{{"detected", m.pops}};
-    if (m.largest_jump >= 0) {
-      const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
-      j["pop"]["parameter"] = worst.name;
-      j["pop"]["jump"] = worst.jump;
-    }
-  }
-  if (m.ara) j["ara"] = *m.ara;
-  if (m.velocity_jump) j["velocity_jump"] = *m.velocity_jump;
-  if (m.area) {
-    // det L: the area of the plane's poses, the volume of poses of space.
-    j[m.kind == MeasuredKind::space_poses ? "volume" : "area"] =
-        Json{{"monotone", m.area->monotone}, {"excursion", m.area->excursion},
-             {"t_of_excursion", m.area->t_of_excursion}, {"first", m.area->first}, {"last", m.area->last}};
-  }
+  std::visit([&](const auto& measured) { add_json(measured, j); }, m.measured);
   return j;
 }
 
@@ -153,12 +157,66 @@ std::string csv_field(std::string_view text) {
 
 }  // namespace
 
+namespace {
+
+// The cells of a kind's measures, from "samples" to "velocity_jump" (27 columns).
+constexpr std::size_t kMeasureColumns = 27;
+using MeasureCells = std::vector<std::string>;
+
+std::string yes_no(bool value) { return value ? "true" : "false"; }
+
+MeasureCells csv_cells(const ArrowMeasures& m) {
+  MeasureCells row{std::to_string(m.samples), report_number(m.extent)};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const bool has = m.discrepancy.size() > i && m.discrepancy[i].frames > 0;
+    row.push_back(has ? report_number(m.discrepancy[i].max) : "");
+    row.push_back(has ? report_number(m.discrepancy[i].mean) : "");
+    row.push_back(has ? report_number(m.discrepancy[i].t_of_max) : "");
+  }
+  for (const PathStats& path : {m.path_p, m.path_q}) {
+    row.push_back(report_number(path.length));
+    row.push_back(report_number(path.turning));
+  }
+  row.push_back(report_number(m.winding_min));
+  row.push_back(report_number(m.winding_max));
+  const auto* best = m.most_sensitive >= 0 ? &m.parameters[static_cast<std::size_t>(m.most_sensitive)] : nullptr;
+  const auto* jump = m.largest_jump >= 0 ? &m.parameters[static_cast<std::size_t>(m.largest_jump)] : nullptr;
+  row.push_back(best ? best->name : "");
+  row.push_back(best ? report_number(best->gain) : "");
+  row.push_back(yes_no(m.pops));
+  row.push_back(jump ? jump->name : "");
+  row.push_back(jump ? report_number(jump->jump) : "");
+  row.resize(kMeasureColumns);  // no ARA, area or velocity jump
+  return row;
+}
+
+MeasureCells csv_cells(const PointMeasures& m) {
+  MeasureCells row(11);  // no samples, extent or discrepancy
+  row.push_back(report_number(m.path.length));
+  row.push_back(report_number(m.path.turning));
+  row.resize(kMeasureColumns);  // no q, winding, overreaction, ARA or area
+  return row;
+}
+
+template <class Pose>
+MeasureCells csv_cells(const PoseMeasures<Pose>& m) {
+  MeasureCells row(kMeasureColumns - 5);  // the measures of keyframes' paths and tweaks
+  row.push_back(report_number(m.ara));
+  row.push_back(yes_no(m.area.monotone));
+  row.push_back(report_number(m.area.excursion));
+  row.push_back(report_number(m.area.t_of_excursion));
+  row.push_back(report_number(m.velocity_jump));
+  return row;
+}
+
+}  // namespace
+
 std::string measures_csv(const std::vector<MotionMeasures>& all) {
   // The union of the parameter names, in first-seen order.
   std::vector<std::string> names;
   std::set<std::string> seen;
   for (const auto& m : all) {
-    for (const auto& p : m.parameters) {
+    for (const auto& p : parameters_of(m)) {
       if (seen.insert(p.name).second) names.push_back(p.name);
     }
   }
@@ -170,41 +228,16 @@ std::string measures_csv(const std::vector<MotionMeasures>& all) {
       "area_t,velocity_jump";
   for (const auto& name : names) s += ",gain_" + name;
   s += '\n';
-  const auto opt = [](const std::optional<double>& x) { return x ? report_number(*x) : std::string(); };
   for (const auto& m : all) {
     std::vector<std::string> row{csv_field(m.pointer), csv_field(m.title), csv_field(m.method),
-                                 std::string(measured_kind_name(m.kind)),
-                                 csv_field(m.no_motion.value_or(""))};
-    const bool arrows = m.kind == MeasuredKind::arrows && !m.no_motion;
-    row.push_back(arrows ? std::to_string(m.samples) : "");
-    row.push_back(arrows ? report_number(m.extent) : "");
-    for (int i = 0; i < 3; ++i) {
-      const bool has = arrows && m.discrepancy.size() > static_cast<std::size_t>(i) && m.discrepancy[i].frames > 0;
-      row.push_back(has ? report_number(m.discrepancy[i].max) : "");
-      row.push_back(has ? report_number(m.discrepancy[i].mean) : "");
-      row.push_back(has ? report_number(m.discrepancy[i].t_of_max) : "");
-    }
-    row.push_back(m.path_p ? report_number(m.path_p->length) : "");
-    row.push_back(m.path_p ? report_number(m.path_p->turning) : "");
-    row.push_back(m.path_q ? report_number(m.path_q->length) : "");
-    row.push_back(m.path_q ? report_number(m.path_q->turning) : "");
-    row.push_back(opt(m.winding_min));
-    row.push_back(opt(m.winding_max));
-    const auto* best = m.most_sensitive >= 0 ? &m.parameters[static_cast<std::size_t>(m.most_sensitive)] : nullptr;
-    const auto* jump = m.largest_jump >= 0 ? &m.parameters[static_cast<std::size_t>(m.largest_jump)] : nullptr;
-    row.push_back(best ? best->name : "");
-    row.push_back(best ? report_number(best->gain) : "");
-    row.push_back(arrows ? (m.pops ? "true" : "false") : "");
-    row.push_back(jump ? jump->name : "");
-    row.push_back(jump ? report_number(jump->jump) : "");
-    row.push_back(opt(m.ara));
-    row.push_back(m.area ? (m.area->monotone ? "true" : "false") : "");
-    row.push_back(m.area ? report_number(m.area->excursion) : "");
-    row.push_back(m.area ? report_number(m.area->t_of_excursion) : "");
-    row.push_back(opt(m.velocity_jump));
+                                 std::string(measured_kind_name(m)), csv_field(m.no_motion.value_or(""))};
+    const MeasureCells cells = m.no_motion ? MeasureCells(kMeasureColumns)
+                                           : std::visit([](const auto& measured) { return csv_cells(measured); },
+                                                        m.measured);
+    row.insert(row.end(), cells.begin(), cells.end());
     for (const auto& name : names) {
       std::string cell;
-      for (const auto& p : m.parameters) {
+      for (const auto& p : parameters_of(m)) {
         if (p.name == name && p.defined) cell = report_number(p.gain);
       }
       row.push_back(cell);
@@ -232,99 +265,129 @@ std::string report_panel_name(const MotionMeasures& m) {
 
 }  // namespace
 
+namespace {
+
+// The cells of the table of paths: "E max prev / avg / pita" to "pop (jump)".
+std::string path_row(const ArrowMeasures& m) {
+  std::string max, mean;
+  for (const auto& d : m.discrepancy) {
+    max += (max.empty() ? "" : " / ") + (d.frames ? short_number(d.max) : std::string("-"));
+    mean += (mean.empty() ? "" : " / ") + (d.frames ? short_number(d.mean) : std::string("-"));
+  }
+  std::string sensitive = "-";
+  if (m.most_sensitive >= 0) {
+    const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
+    sensitive = fmt::format("{} ({})", best.name, short_number(best.gain));
+  }
+  std::string pop = m.pops ? "yes" : "no";
+  if (m.largest_jump >= 0) {
+    const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
+    pop += fmt::format(" ({} {})", worst.name, short_number(worst.jump));
+  }
+  return fmt::format("{} | {} | {}, {} | {}, {} | [{}, {}] | {} | {}", max.empty() ? "-" : max,
+                     mean.empty() ? "-" : mean, short_number(m.path_p.length), short_number(m.path_q.length),
+                     short_number(m.path_p.turning), short_number(m.path_q.turning), short_number(m.winding_min),
+                     short_number(m.winding_max), sensitive, pop);
+}
+
+std::string path_row(const PointMeasures& m) {
+  return fmt::format("- | - | {} | {} | - | - | -", short_number(m.path.length), short_number(m.path.turning));
+}
+
+// The table of a kind of poses: "ARA" to "velocity jump".
+template <class Pose>
+std::string pose_row(const PoseMeasures<Pose>& m) {
+  return fmt::format("{} | {} | {} (t = {}) | {}, {} | {}", short_number(m.ara), m.area.monotone ? "yes" : "no",
+                     short_number(m.area.excursion), short_number(m.area.t_of_excursion), short_number(m.area.first),
+                     short_number(m.area.last), short_number(m.velocity_jump));
+}
+
+// A table: its header, then a row for each measured motion that `cells`
+// gives cells ("" for a motion of another table); "" when no motion has a row.
+template <class Cells>
+std::string md_table(const std::vector<MotionMeasures>& all, std::string_view header, Cells cells) {
+  std::string rows;
+  for (const auto& m : all) {
+    if (m.no_motion) continue;
+    const std::string row = std::visit(cells, m.measured);
+    if (!row.empty()) rows += fmt::format("| {} | {} | {} |\n", report_panel_name(m), md_cell(m.method), row);
+  }
+  return rows.empty() ? std::string() : std::string(header) + rows + "\n";
+}
+
+// The table of the poses of one kind: det L an area for the plane, a volume for space.
+template <class Pose>
+std::string pose_table(const std::vector<MotionMeasures>& all) {
+  const std::string header = fmt::format(
+      "| panel | method | ARA | {} monotone | largest excursion (at t) | det L first, last | velocity jump |\n"
+      "|---|---|---|---|---|---|---|\n",
+      PoseMeasures<Pose>::det_name);
+  return md_table(all, header,
+                  overloaded{[](const PoseMeasures<Pose>& m) { return pose_row(m); },
+                             [](const ArrowMeasures&) { return std::string(); },
+                             [](const PointMeasures&) { return std::string(); },
+                             []<class Other>(const PoseMeasures<Other>&) { return std::string(); }});
+}
+
+// The table of paths (keyframes and points), then one per kind of poses.
+std::string md_tables(const std::vector<MotionMeasures>& all) {
+  constexpr std::string_view kPathHeader =
+      "| panel | method | E max prev / avg / pita | E mean prev / avg / pita | length p, q | turning p, q (rad) "
+      "| winding range (rad) | most sensitive (gain) | pop (jump) |\n"
+      "|---|---|---|---|---|---|---|---|---|\n";
+  return md_table(all, kPathHeader,
+                  overloaded{[](const ArrowMeasures& m) { return path_row(m); },
+                             [](const PointMeasures& m) { return path_row(m); },
+                             []<class Pose>(const PoseMeasures<Pose>&) { return std::string(); }}) +
+         pose_table<Affine2>(all) + pose_table<Affine3>(all);
+}
+
+// Overreaction gains, one column per arrow panel.
+std::string md_gains(const std::vector<MotionMeasures>& all) {
+  std::vector<const MotionMeasures*> reacting;
+  for (const auto& m : all) {
+    if (!parameters_of(m).empty()) reacting.push_back(&m);
+  }
+  if (reacting.empty()) return "";
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const auto* m : reacting) {
+    for (const auto& p : parameters_of(*m)) {
+      if (seen.insert(p.name).second) names.push_back(p.name);
+    }
+  }
+  std::string s = "\nOverreaction gain per parameter (max frame displacement / extent per unit normalised tweak; "
+                  "* marks a pop):\n\n| parameter |";
+  std::string rule = "|---|";
+  for (const auto* m : reacting) {
+    s += " " + report_panel_name(*m) + " |";
+    rule += "---|";
+  }
+  s += "\n" + rule + "\n";
+  for (const auto& name : names) {
+    s += "| " + name + " |";
+    for (const auto* m : reacting) {
+      std::string cell = " ";
+      for (const auto& p : parameters_of(*m)) {
+        if (p.name != name) continue;
+        cell = p.defined ? short_number(p.gain) : std::string("undefined");
+        if (p.pop) cell += " *";
+      }
+      s += " " + cell + " |";
+    }
+    s += '\n';
+  }
+  return s;
+}
+
+}  // namespace
+
 std::string measures_markdown(const std::string& path, const std::vector<MotionMeasures>& all) {
-  std::string s = fmt::format("# pita measure {}\n\n", path);
-  bool any_arrows = false;
-  for (const auto& m : all) any_arrows = any_arrows || (!of_poses(m.kind) && !m.no_motion);
-  if (any_arrows) {
-    s += "| panel | method | E max prev / avg / pita | E mean prev / avg / pita | length p, q | turning p, q (rad) "
-         "| winding range (rad) | most sensitive (gain) | pop (jump) |\n"
-         "|---|---|---|---|---|---|---|---|---|\n";
-    for (const auto& m : all) {
-      if (of_poses(m.kind) || m.no_motion) continue;
-      std::string max, mean;
-      for (const auto& d : m.discrepancy) {
-        max += (max.empty() ? "" : " / ") + (d.frames ? short_number(d.max) : std::string("-"));
-        mean += (mean.empty() ? "" : " / ") + (d.frames ? short_number(d.mean) : std::string("-"));
-      }
-      const std::string length = m.path_p ? short_number(m.path_p->length) + (m.path_q ? ", " + short_number(m.path_q->length) : "") : "-";
-      const std::string turning =
-          m.path_p ? short_number(m.path_p->turning) + (m.path_q ? ", " + short_number(m.path_q->turning) : "") : "-";
-      const std::string winding =
-          m.winding_min ? fmt::format("[{}, {}]", short_number(*m.winding_min), short_number(*m.winding_max)) : "-";
-      std::string sensitive = "-", pop = "-";
-      if (m.most_sensitive >= 0) {
-        const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
-        sensitive = fmt::format("{} ({})", best.name, short_number(best.gain));
-      }
-      if (m.kind == MeasuredKind::arrows) {
-        pop = m.pops ? "yes" : "no";
-        if (m.largest_jump >= 0) {
-          const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
-          pop += fmt::format(" ({} {})", worst.name, short_number(worst.jump));
-        }
-      }
-      s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", report_panel_name(m), md_cell(m.method),
-                       max.empty() ? "-" : max, mean.empty() ? "-" : mean, length, turning, winding, sensitive, pop);
-    }
-    s += '\n';
-  }
-  // One table for the poses of the plane (det L an area), one for those of
-  // space (det L a volume).
-  for (const MeasuredKind kind : {MeasuredKind::plane_poses, MeasuredKind::space_poses}) {
-    const auto shown = [&](const MotionMeasures& m) { return m.kind == kind && !m.no_motion; };
-    if (std::none_of(all.begin(), all.end(), shown)) continue;
-    s += fmt::format("| panel | method | ARA | {0} monotone | largest excursion (at t) | det L first, last | velocity jump |\n"
-                     "|---|---|---|---|---|---|---|\n",
-                     kind == MeasuredKind::plane_poses ? "area" : "volume");
-    for (const auto& m : all) {
-      if (!shown(m)) continue;
-      s += fmt::format("| {} | {} | {} | {} | {} (t = {}) | {}, {} | {} |\n", report_panel_name(m), md_cell(m.method),
-                       short_number(*m.ara), m.area->monotone ? "yes" : "no", short_number(m.area->excursion),
-                       short_number(m.area->t_of_excursion), short_number(m.area->first), short_number(m.area->last),
-                       short_number(m.velocity_jump.value_or(0.0)));
-    }
-    s += '\n';
-  }
+  std::string s = fmt::format("# pita measure {}\n\n", path) + md_tables(all);
   for (const auto& m : all) {
     if (m.no_motion) s += fmt::format("- {}: no motion: {}\n", report_panel_name(m), md_cell(*m.no_motion));
   }
-  // Overreaction gains, one column per arrow panel.
-  std::vector<const MotionMeasures*> reacting;
-  for (const auto& m : all) {
-    if (!m.parameters.empty()) reacting.push_back(&m);
-  }
-  if (!reacting.empty()) {
-    std::vector<std::string> names;
-    std::set<std::string> seen;
-    for (const auto* m : reacting) {
-      for (const auto& p : m->parameters) {
-        if (seen.insert(p.name).second) names.push_back(p.name);
-      }
-    }
-    s += "\nOverreaction gain per parameter (max frame displacement / extent per unit normalised tweak; "
-         "* marks a pop):\n\n| parameter |";
-    std::string rule = "|---|";
-    for (const auto* m : reacting) {
-      s += " " + report_panel_name(*m) + " |";
-      rule += "---|";
-    }
-    s += "\n" + rule + "\n";
-    for (const auto& name : names) {
-      s += "| " + name + " |";
-      for (const auto* m : reacting) {
-        std::string cell = " ";
-        for (const auto& p : m->parameters) {
-          if (p.name != name) continue;
-          cell = p.defined ? short_number(p.gain) : std::string("undefined");
-          if (p.pop) cell += " *";
-        }
-        s += " " + cell + " |";
-      }
-      s += '\n';
-    }
-  }
-  return s;
+  return s + md_gains(all);
 }
 
 }  // namespace pita::analysis

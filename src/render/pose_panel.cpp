@@ -15,6 +15,7 @@
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/camera_choice.hpp"
+#include "scene/body_points.hpp"
 
 namespace pita::render {
 
@@ -168,13 +169,7 @@ std::vector<double> PosePanel<Pose>::times(const std::optional<int>& samples,
 
 template <class Pose>
 std::vector<BodyPoint<Pose>> PosePanel<Pose>::body_points() const {
-  std::vector<BodyPoint<Pose>> points;
-  if constexpr (!in_space_v<Pose>) {
-    for (const scene::ShapeOutline& shape : panel_.shapes) points.insert(points.end(), shape.points.begin(), shape.points.end());
-  } else {
-    for (const scene::Solid& solid : scene_.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
-  }
-  return points;
+  return scene::body_points<Pose>(scene_, panel_);
 }
 
 template <class Pose>

@@ -70,7 +70,8 @@ class PosePanel {
   std::vector<double> times(const std::optional<int>& samples, const std::optional<scene::TimeRange>& range) const;
 
   // The points of the body, in the order the layers draw them: every point of
-  // every shape (plane), every vertex of every solid (space).
+  // every shape (plane), every vertex of every solid (space); scene::body_points,
+  // the rule pita measure's ARA follows too.
   std::vector<BodyPoint<Pose>> body_points() const;
   // Where a point of the world is drawn; in space, fails when it is behind a
   // perspective camera.

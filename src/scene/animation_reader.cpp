@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "scene/layer_family.hpp"
 #include "scene/limits.hpp"
 
 namespace pita::scene::detail {
@@ -24,8 +25,9 @@ Animation default_animation(bool moving) {
   return animation;
 }
 
-Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving,
-                         bool poses) {
+template <class LayerType>
+Animation read_animation(const JsonReader& reader, const Json& value, const std::string& pointer, bool moving) {
+  constexpr bool poses = LayerFamily<LayerType>::moves_poses;
   reader.object(value, pointer, "the animation");
   reader.check_fields(value, pointer, kAnimationFields);
   Animation animation = default_animation(moving);
@@ -83,5 +85,8 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
   }
   return animation;
 }
+
+template Animation read_animation<Layer>(const JsonReader&, const Json&, const std::string&, bool);
+template Animation read_animation<PoseLayer>(const JsonReader&, const Json&, const std::string&, bool);
 
 }  // namespace pita::scene::detail

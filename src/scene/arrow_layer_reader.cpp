@@ -384,13 +384,11 @@ LabelLayer read_label(const Fields& fields) {
   return layer;
 }
 
-// "measures"; `poses`: in a pose scene (the names it may show differ,
-// scene/measure_name.hpp).
-MeasuresLayer read_measures(const Fields& fields, bool poses) {
+template <class LayerType>
+MeasuresLayer read_measures(const Fields& fields) {
   MeasuresLayer layer;
   const JsonReader& reader = fields.reader();
-  const MeasureScene scene = poses ? MeasureScene::poses : MeasureScene::arrows;
-  layer.show = default_measures(scene);
+  layer.show = default_measures<LayerType>();
   if (const Json* show = fields.get("show")) {
     const std::string at = fields.at("show");
     if (!show->is_array() || show->empty() || show->size() > kMaxMeasures) {
@@ -400,7 +398,7 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
     layer.show.clear();
     for (std::size_t i = 0; i < show->size(); ++i) {
       const std::string item_at = element_pointer(at, i);
-      auto parsed = parse_measure(reader.string((*show)[i], item_at), scene);
+      auto parsed = parse_measure<LayerType>(reader.string((*show)[i], item_at));
       if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(item_at, *reason);
       if (std::get<MeasureName>(parsed).panel) {
         reader.fail(item_at, fmt::format("\"{}\" compares with another panel, which only a claim does "
@@ -421,8 +419,8 @@ MeasuresLayer read_measures(const Fields& fields, bool poses) {
   return layer;
 }
 
-// "plot"; `poses`: in a pose scene, where "of": "area" and its methods are read.
-PlotLayer read_plot(const Fields& fields, bool poses) {
+template <class LayerType>
+PlotLayer read_plot(const Fields& fields) {
   PlotLayer layer;
   const Json& box = fields.required("box", "the box {\"min\": [x, y], \"max\": [x, y]} the plot fills");
   const std::string at = fields.at("box");
@@ -434,7 +432,7 @@ PlotLayer read_plot(const Fields& fields, bool poses) {
   read_line(fields, layer.line);
   fields.boolean("marks", layer.marks);
   fields.choice("of", kPlotOfNames, kPlotOfs, layer.of);
-  if (layer.of == PlotOf::area && !poses) {
+  if (layer.of == PlotOf::area && !LayerFamily<LayerType>::moves_poses) {
     fields.reader().fail(fields.at("of"), "\"area\" plots the area of a pose scene's shapes; an arrow scene's "
                                           "plot is of \"distance\"");
   }
@@ -456,6 +454,11 @@ PlotLayer read_plot(const Fields& fields, bool poses) {
   if (layer.of == PlotOf::area) layer.colors = read_colors(fields, layer.colors);
   return layer;
 }
+
+template MeasuresLayer read_measures<Layer>(const Fields&);
+template MeasuresLayer read_measures<PoseLayer>(const Fields&);
+template PlotLayer read_plot<Layer>(const Fields&);
+template PlotLayer read_plot<PoseLayer>(const Fields&);
 
 namespace {
 
@@ -479,16 +482,16 @@ constexpr std::array<LayerKind<Layer>, 18> kArrowLayerKinds{{
      false, LayerDraws::either},
     {"legend", kLegendFields, [](const Fields& f) -> Layer { return read_legend(f); }, arrow_alternative<LegendLayer>,
      false, LayerDraws::either},
-    {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot(f, false); }, arrow_alternative<PlotLayer>},
+    {"plot", kPlotFields, [](const Fields& f) -> Layer { return read_plot<Layer>(f); }, arrow_alternative<PlotLayer>},
     {"point-trajectory", kPointTrajectoryFields, [](const Fields& f) -> Layer { return read_point_trajectory(f); },
      arrow_alternative<PointTrajectoryLayer>, false, LayerDraws::points},
-    {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer(f, false); },
+    {"shapes", kShapesFields, [](const Fields& f) -> Layer { return read_shapes_layer<Layer>(f); },
      arrow_alternative<ShapesLayer>},
     {"handle", kHandleFields, [](const Fields& f) -> Layer { return read_handle_layer(f); },
      arrow_alternative<HandleLayer>},
     {"property-table", kPropertyTableFields, [](const Fields& f) -> Layer { return read_property_table(f); },
      arrow_alternative<PropertyTableLayer>},
-    {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures(f, false); },
+    {"measures", kMeasuresFields, [](const Fields& f) -> Layer { return read_measures<Layer>(f); },
      arrow_alternative<MeasuresLayer>},
     {"vectors", kVectorsFields, [](const Fields& f) -> Layer { return read_vectors(f); },
      arrow_alternative<VectorsLayer>},

@@ -173,7 +173,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
   if (const Json* claims = JsonReader::member(document, "claims")) {
-    scene.claims = read_claims(reader, *claims, scene, false);
+    scene.claims = read_claims<Layer>(reader, *claims, scene);
   }
   if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   check_point_layers(reader, scene);
@@ -184,7 +184,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
                                     return given != nullptr && !given->keyframes_to.empty();
                                   });
   if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation(reader, *animation, "/animation", moving);
+    scene.animation = detail::read_animation<Layer>(reader, *animation, "/animation", moving);
     scene.has_animation = true;
   } else {
     scene.animation = detail::default_animation(moving);

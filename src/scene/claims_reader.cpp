@@ -34,9 +34,10 @@ std::size_t read_panel_index(const JsonReader& reader, const Json& object, const
       reader.integer(*panel, pointer + "/panel", 0, static_cast<int>(scene.panels.size()) - 1));
 }
 
+template <class LayerType>
 MeasureName read_measure(const JsonReader& reader, const Json& value, const std::string& pointer,
-                         const Scene& scene, bool poses) {
-  auto parsed = parse_measure(reader.text(value, pointer, 200), poses ? MeasureScene::poses : MeasureScene::arrows);
+                         const Scene& scene) {
+  auto parsed = parse_measure<LayerType>(reader.text(value, pointer, 200));
   if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(pointer, *reason);
   MeasureName measure = std::move(std::get<MeasureName>(parsed));
   if (measure.panel && *measure.panel >= scene.panels.size()) {
@@ -46,8 +47,9 @@ MeasureName read_measure(const JsonReader& reader, const Json& value, const std:
   return measure;
 }
 
+template <class LayerType>
 ClaimBound read_bound(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene,
-                      bool poses, const Claim& claim) {
+                      const Claim& claim) {
   if (value.is_number()) return reader.number(value, pointer);
   if (!value.is_object()) {
     reader.fail(pointer, fmt::format("must be a number or a panel's measure {{\"panel\", \"measure\", \"times\", "
@@ -59,15 +61,15 @@ ClaimBound read_bound(const JsonReader& reader, const Json& value, const std::st
   operand.panel = read_panel_index(reader, value, pointer, scene, claim.panel, false);
   operand.measure = claim.measure;
   if (const Json* measure = JsonReader::member(value, "measure")) {
-    operand.measure = read_measure(reader, *measure, pointer + "/measure", scene, poses);
+    operand.measure = read_measure<LayerType>(reader, *measure, pointer + "/measure", scene);
   }
   if (const Json* times = JsonReader::member(value, "times")) operand.times = reader.number(*times, pointer + "/times");
   if (const Json* plus = JsonReader::member(value, "plus")) operand.plus = reader.number(*plus, pointer + "/plus");
   return operand;
 }
 
-Claim read_claim(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene,
-                 bool poses) {
+template <class LayerType>
+Claim read_claim(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene) {
   reader.object(value, pointer, "a claim");
   reader.check_fields(value, pointer, kClaimFields);
   Claim claim;
@@ -78,7 +80,7 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
   claim.panel = read_panel_index(reader, value, pointer, scene, 0, true);
   const Json* measure = JsonReader::member(value, "measure");
   if (measure == nullptr) reader.fail(pointer, "a claim names the measure it compares: \"measure\"");
-  claim.measure = read_measure(reader, *measure, pointer + "/measure", scene, poses);
+  claim.measure = read_measure<LayerType>(reader, *measure, pointer + "/measure", scene);
   if (const Json* absolute = JsonReader::member(value, "absolute")) {
     claim.absolute = reader.boolean(*absolute, pointer + "/absolute");
   }
@@ -104,11 +106,11 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
     reader.fail(pointer + "/within", "\"within\" is the tolerance of \"near\", and this claim has none");
   }
   if (test_name == "below") {
-    claim.test = Below{read_bound(reader, *test, at, scene, poses, claim)};
+    claim.test = Below{read_bound<LayerType>(reader, *test, at, scene, claim)};
   } else if (test_name == "above") {
-    claim.test = Above{read_bound(reader, *test, at, scene, poses, claim)};
+    claim.test = Above{read_bound<LayerType>(reader, *test, at, scene, claim)};
   } else if (test_name == "near") {
-    Near near{read_bound(reader, *test, at, scene, poses, claim), 0.0};
+    Near near{read_bound<LayerType>(reader, *test, at, scene, claim), 0.0};
     if (within != nullptr) near.within = reader.number(*within, pointer + "/within", Interval{0.0, 1e6});
     claim.test = near;
   } else {
@@ -124,16 +126,20 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
 
 }  // namespace
 
-std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene, bool poses) {
+template <class LayerType>
+std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene) {
   if (!value.is_array() || value.size() > static_cast<std::size_t>(kMaxClaims)) {
     reader.fail("/claims", fmt::format("must be a list of at most {} claims (got {})", kMaxClaims,
                                        value_text(value)));
   }
   std::vector<Claim> claims;
   for (std::size_t i = 0; i < value.size(); ++i) {
-    claims.push_back(read_claim(reader, value[i], element_pointer("/claims", i), scene, poses));
+    claims.push_back(read_claim<LayerType>(reader, value[i], element_pointer("/claims", i), scene));
   }
   return claims;
 }
+
+template std::vector<Claim> read_claims<Layer>(const JsonReader&, const Json&, const Scene&);
+template std::vector<Claim> read_claims<PoseLayer>(const JsonReader&, const Json&, const Scene&);
 
 }  // namespace pita::scene::detail

@@ -14,6 +14,7 @@
 
 #include "scene/figure.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/layer_family.hpp"
 #include "scene/layer_fields.hpp"
 
 namespace pita::scene::detail {
@@ -52,8 +53,8 @@ const LayerKind<LayerType>& kind_of(std::span<const LayerKind<LayerType>> table,
 std::span<const LayerKind<Layer>> arrow_layer_table();
 std::span<const LayerKind<PoseLayer>> pose_layer_table();
 
-// Kinds that both kinds of scene draw: their fields and readers (`poses`: in
-// a pose scene).
+// Kinds that both kinds of scene draw: their fields and readers, templates
+// over the family of the scene's layers (Layer or PoseLayer).
 inline constexpr std::array<std::string_view, 6> kLabelFields = {"type", "text", "at", "size", "color", "place"};
 inline constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
 inline constexpr std::array<std::string_view, 12> kPlotFields = {
@@ -63,14 +64,17 @@ inline constexpr std::array<std::string_view, 11> kShapesFields = {
 
 LabelLayer read_label(const Fields& fields);
 
-// "measures"; `poses`: in a pose scene (the names it may show differ,
-// scene/measure_name.hpp).
-MeasuresLayer read_measures(const Fields& fields, bool poses);
+// "measures" in a scene whose layers are `LayerType` (scene/layer_family.hpp):
+// the names it may show differ (scene/measure_name.hpp).
+template <class LayerType>
+MeasuresLayer read_measures(const Fields& fields);
 
-// "plot"; `poses`: in a pose scene, where "of": "area" and its methods are read.
-PlotLayer read_plot(const Fields& fields, bool poses);
+// "plot"; "of": "area" and its methods are read in pose scenes only.
+template <class LayerType>
+PlotLayer read_plot(const Fields& fields);
 
-// "shapes"; `poses`: in a pose scene, where "lightness": "area" is read.
-ShapesLayer read_shapes_layer(const Fields& fields, bool poses);
+// "shapes"; "lightness": "area" is read in pose scenes only.
+template <class LayerType>
+ShapesLayer read_shapes_layer(const Fields& fields);
 
 }  // namespace pita::scene::detail

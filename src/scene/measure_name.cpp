@@ -9,6 +9,7 @@
 
 #include "scene/did_you_mean.hpp"
 #include "scene/json_reader.hpp"
+#include "scene/layers.hpp"
 
 namespace pita::scene {
 
@@ -16,30 +17,63 @@ namespace {
 
 using detail::quoted_choices;
 
+// The measures of arrow scenes, then those of pose scenes (plain names before
+// those with an argument in each).
 constexpr std::array<MeasureEntry, 22> kMeasures{{
-    {"discrepancy-max", MeasureKind::discrepancy_max, MeasureScene::arrows},
-    {"path-length", MeasureKind::path_length, MeasureScene::arrows},
-    {"turning", MeasureKind::turning, MeasureScene::arrows},
-    {"winding-range", MeasureKind::winding_range, MeasureScene::arrows},
-    {"overreaction", MeasureKind::overreaction, MeasureScene::arrows},
-    {"pop", MeasureKind::pop, MeasureScene::arrows},
-    {"handle-shift", MeasureKind::handle_shift, MeasureScene::arrows},
-    {"scale-step", MeasureKind::scale_step, MeasureScene::arrows},
-    {"turn-step", MeasureKind::turn_step, MeasureScene::arrows},
-    {"scale-min", MeasureKind::scale_min, MeasureScene::arrows},
-    {"scale-max", MeasureKind::scale_max, MeasureScene::arrows},
-    {"ara", MeasureKind::ara, MeasureScene::poses},
-    {"area", MeasureKind::area, MeasureScene::poses},
-    {"velocity-jump", MeasureKind::velocity_jump, MeasureScene::poses},
-    {"gain:", MeasureKind::gain, MeasureScene::arrows, true},
-    {"turn:", MeasureKind::turn, MeasureScene::arrows, true},
-    {"jump:", MeasureKind::jump, MeasureScene::arrows, true},
-    {"angle:", MeasureKind::angle, MeasureScene::arrows, true},
-    {"frame-distance:", MeasureKind::frame_distance, MeasureScene::arrows, true},
-    {"property:", MeasureKind::property, MeasureScene::arrows, true},
-    {"discrepancy:", MeasureKind::discrepancy_of, MeasureScene::arrows, true},
-    {"discrepancy-t:", MeasureKind::discrepancy_time, MeasureScene::arrows, true},
+    {"discrepancy-max", MeasureKind::discrepancy_max},
+    {"path-length", MeasureKind::path_length},
+    {"turning", MeasureKind::turning},
+    {"winding-range", MeasureKind::winding_range},
+    {"overreaction", MeasureKind::overreaction},
+    {"pop", MeasureKind::pop},
+    {"handle-shift", MeasureKind::handle_shift},
+    {"scale-step", MeasureKind::scale_step},
+    {"turn-step", MeasureKind::turn_step},
+    {"scale-min", MeasureKind::scale_min},
+    {"scale-max", MeasureKind::scale_max},
+    {"gain:", MeasureKind::gain, true},
+    {"turn:", MeasureKind::turn, true},
+    {"jump:", MeasureKind::jump, true},
+    {"angle:", MeasureKind::angle, true},
+    {"frame-distance:", MeasureKind::frame_distance, true},
+    {"property:", MeasureKind::property, true},
+    {"discrepancy:", MeasureKind::discrepancy_of, true},
+    {"discrepancy-t:", MeasureKind::discrepancy_time, true},
+    {"ara", MeasureKind::ara},
+    {"area", MeasureKind::area},
+    {"velocity-jump", MeasureKind::velocity_jump},
 }};
+constexpr std::size_t kArrowMeasures = 19;  // the first ones
+
+// What depends on the scene's family of layers: its measures, how messages
+// name its scenes, the other family, and what a layer that names none shows.
+template <class LayerType>
+struct MeasureFamily;
+
+template <>
+struct MeasureFamily<Layer> {
+  static constexpr std::span<const MeasureEntry> entries{kMeasures.data(), kArrowMeasures};
+  static constexpr std::string_view words = "arrow (keyframe) scenes";
+  using Other = PoseLayer;
+  static constexpr std::array<std::string_view, 2> defaults = {"overreaction", "pop"};
+  // What else arrow scenes measure, for the message of an unknown name.
+  static constexpr std::string_view more =
+      ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
+      "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
+      "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
+      "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
+};
+
+template <>
+struct MeasureFamily<PoseLayer> {
+  static constexpr std::span<const MeasureEntry> entries{kMeasures.data() + kArrowMeasures,
+                                                         kMeasures.size() - kArrowMeasures};
+  static constexpr std::string_view words = "pose scenes";
+  using Other = Layer;
+  static constexpr std::array<std::string_view, 2> defaults = {"ara", "area"};
+  static constexpr std::string_view more = "";
+};
 
 // The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).
 constexpr std::array<std::string_view, 3> kPredictors = {"previous", "average", "pita"};
@@ -76,47 +110,43 @@ bool is_keyframe_parameter(std::string_view rest) {
   return false;
 }
 
-std::string_view scene_words(MeasureScene scene) {
-  return scene == MeasureScene::arrows ? "arrow (keyframe) scenes" : "pose scenes";
-}
-
-// The names a scene of `scene`'s kind may show, for messages: "pop", ...,
-// "gain:K.x", "angle:M@t".
-std::vector<std::string_view> names_of(MeasureScene scene) {
+// The names a scene of the family may show, for messages: "pop", ...
+// (without "gain:K.x", "angle:M@t", ...).
+template <class LayerType>
+std::vector<std::string_view> names_of() {
   std::vector<std::string_view> names;
-  for (const MeasureEntry& entry : kMeasures) {
-    if (entry.scene != scene) continue;
+  for (const MeasureEntry& entry : MeasureFamily<LayerType>::entries) {
     if (!entry.argument) names.push_back(entry.name);
   }
   return names;
 }
 
-std::string unknown(std::string_view text, MeasureScene scene) {
-  const std::vector<std::string_view> names = names_of(scene);
+template <class LayerType>
+std::string unknown(std::string_view text) {
+  using Family = MeasureFamily<LayerType>;
+  const std::vector<std::string_view> names = names_of<LayerType>();
   const std::vector<std::string> close = closest_names(text, names);
   if (!close.empty()) return fmt::format("unknown measure \"{}\"{}", text, did_you_mean(close));
-  std::string reason = fmt::format("unknown measure \"{}\"; {} measure {}", text, scene_words(scene),
-                                   quoted_choices(names));
-  if (scene == MeasureScene::arrows) {
-    reason += ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
-              "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
-              "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-              "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
-              "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
-  }
-  return reason;
+  return fmt::format("unknown measure \"{}\"; {} measure {}{}", text, Family::words, quoted_choices(names),
+                     Family::more);
 }
 
 }  // namespace
 
 std::span<const MeasureEntry> measure_entries() { return kMeasures; }
 
-std::variant<MeasureName, std::string> parse_measure(std::string_view text, MeasureScene scene) {
+template <class LayerType>
+std::span<const MeasureEntry> measure_entries_of() {
+  return MeasureFamily<LayerType>::entries;
+}
+
+template <class LayerType>
+std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
   const MeasureEntry* found = nullptr;
   for (const MeasureEntry& entry : kMeasures) {
     if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
   }
-  if (found == nullptr) return unknown(text, scene);
+  if (found == nullptr) return unknown<LayerType>(text);
   MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0};
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
@@ -168,24 +198,29 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text, Meas
     if (named != nullptr) measure.method = *named;
     measure.t = t;
   }
-  if (found->scene != scene) {
-    return fmt::format("\"{}\" is measured in {} only; {} measure {}", text, scene_words(found->scene),
-                       scene_words(scene), quoted_choices(names_of(scene)));
+  const std::span<const MeasureEntry> own = MeasureFamily<LayerType>::entries;
+  if (found < own.data() || found >= own.data() + own.size()) {
+    return fmt::format("\"{}\" is measured in {} only; {} measure {}", text,
+                       MeasureFamily<typename MeasureFamily<LayerType>::Other>::words, MeasureFamily<LayerType>::words,
+                       quoted_choices(names_of<LayerType>()));
   }
   return measure;
 }
 
-std::vector<MeasureName> default_measures(MeasureScene scene) {
+template <class LayerType>
+std::vector<MeasureName> default_measures() {
   std::vector<MeasureName> out;
-  const auto add = [&](std::string_view name) { out.push_back(std::get<MeasureName>(parse_measure(name, scene))); };
-  if (scene == MeasureScene::arrows) {
-    add("overreaction");
-    add("pop");
-  } else {
-    add("ara");
-    add("area");
+  for (const std::string_view name : MeasureFamily<LayerType>::defaults) {
+    out.push_back(std::get<MeasureName>(parse_measure<LayerType>(name)));
   }
   return out;
 }
+
+template std::span<const MeasureEntry> measure_entries_of<Layer>();
+template std::span<const MeasureEntry> measure_entries_of<PoseLayer>();
+template std::variant<MeasureName, std::string> parse_measure<Layer>(std::string_view);
+template std::variant<MeasureName, std::string> parse_measure<PoseLayer>(std::string_view);
+template std::vector<MeasureName> default_measures<Layer>();
+template std::vector<MeasureName> default_measures<PoseLayer>();
 
 }  // namespace pita::scene

@@ -46,20 +46,23 @@ enum class MeasureKind {
   velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
 };
 
-// Which scenes measure it: `pita measure` measures arrow motions and pose
-// motions differently (analysis/measure.hpp), and a name the scene's motion
-// has no number for is refused rather than printed as "-".
-enum class MeasureScene { arrows, poses };
-
 struct MeasureEntry {
   std::string_view name;  // "pop"; for the kinds with an argument, the prefix "gain:"
   MeasureKind kind;
-  MeasureScene scene;
   bool argument = false;  // "gain:B.q", "angle:P8@0.25"
 };
 
 // Every measure, in the order messages, the schema and docs/reference/render.md list them.
 std::span<const MeasureEntry> measure_entries();
+
+// Which scenes measure a name: `pita measure` measures arrow motions and pose
+// motions differently (analysis/measure.hpp), and a name the scene's motion
+// has no number for is refused rather than printed as "-". The scenes are
+// named by the family of their layers, as scene::layers_of<LayerType> does:
+// `Layer` for arrow scenes, `PoseLayer` for pose scenes (of the plane or of
+// space); both are instantiated in measure_name.cpp.
+template <class LayerType>
+std::span<const MeasureEntry> measure_entries_of();
 
 struct MeasureName {
   MeasureKind kind = MeasureKind::overreaction;
@@ -74,13 +77,15 @@ struct MeasureName {
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 
-// `text` parsed for a scene of `scene`'s kind, or why it is refused (a
-// sentence without the pointer: "unknown measure \"x\"; ...", "\"ara\" is
-// measured in pose scenes only ...").
-std::variant<MeasureName, std::string> parse_measure(std::string_view text, MeasureScene scene);
+// `text` parsed for a scene whose layers are `LayerType`, or why it is
+// refused (a sentence without the pointer: "unknown measure \"x\"; ...",
+// "\"ara\" is measured in pose scenes only ...").
+template <class LayerType>
+std::variant<MeasureName, std::string> parse_measure(std::string_view text);
 
 // The default of a layer that names none: ["overreaction", "pop"] in arrow
 // scenes, ["ara", "area"] in pose scenes.
-std::vector<MeasureName> default_measures(MeasureScene scene);
+template <class LayerType>
+std::vector<MeasureName> default_measures();
 
 }  // namespace pita::scene

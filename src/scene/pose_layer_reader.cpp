@@ -220,8 +220,8 @@ VersusLayer read_versus(const Fields& fields) {
 
 }  // namespace
 
-// "shapes"; `poses`: in a pose scene, where "lightness": "area" is read.
-ShapesLayer read_shapes_layer(const Fields& fields, bool poses) {
+template <class LayerType>
+ShapesLayer read_shapes_layer(const Fields& fields) {
   ShapesLayer layer;
   read_line(fields, layer.line);
   fields.color("fill", layer.fill);
@@ -230,12 +230,15 @@ ShapesLayer read_shapes_layer(const Fields& fields, bool poses) {
   read_range(fields, layer.range);
   read_frame_times(fields, layer.times);
   fields.choice("lightness", kLightnessNames, kLightnessByArea, layer.lightness_by_area);
-  if (layer.lightness_by_area && !poses) {
+  if (layer.lightness_by_area && !LayerFamily<LayerType>::moves_poses) {
     fields.reader().fail(fields.at("lightness"), "\"area\" shades a pose scene's shapes by their area; an arrow "
                                                  "scene's carry a similarity (use \"constant\")");
   }
   return layer;
 }
+
+template ShapesLayer read_shapes_layer<Layer>(const Fields&);
+template ShapesLayer read_shapes_layer<PoseLayer>(const Fields&);
 
 namespace {
 
@@ -244,7 +247,7 @@ template <typename Kind>
 constexpr std::size_t pose_alternative = alternative_of<Kind, PoseLayer>();
 
 constexpr std::array<LayerKind<PoseLayer>, 14> kPoseLayerKinds{{
-    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer(f, true); },
+    {"shapes", kShapesFields, [](const Fields& f) -> PoseLayer { return read_shapes_layer<PoseLayer>(f); },
      pose_alternative<ShapesLayer>, true},
     {"poses", kPosesFields, [](const Fields& f) -> PoseLayer { return read_poses_layer(f); },
      pose_alternative<PosesLayer>, true},
@@ -259,9 +262,10 @@ constexpr std::array<LayerKind<PoseLayer>, 14> kPoseLayerKinds{{
     {"label", kLabelFields, [](const Fields& f) -> PoseLayer { return read_label(f); }, pose_alternative<LabelLayer>},
     {"patch", kPatchFields, [](const Fields& f) -> PoseLayer { return read_patch(f); }, pose_alternative<PatchLayer>,
      true},
-    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot(f, true); }, pose_alternative<PlotLayer>},
+    {"plot", kPlotFields, [](const Fields& f) -> PoseLayer { return read_plot<PoseLayer>(f); },
+     pose_alternative<PlotLayer>},
     {"ara", kAraFields, [](const Fields& f) -> PoseLayer { return read_ara(f); }, pose_alternative<AraLayer>},
-    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures(f, true); },
+    {"measures", kMeasuresFields, [](const Fields& f) -> PoseLayer { return read_measures<PoseLayer>(f); },
      pose_alternative<MeasuresLayer>},
     {"swept", kSweptFields, [](const Fields& f) -> PoseLayer { return read_swept(f); }, pose_alternative<SweptLayer>},
     {"versus", kVersusFields, [](const Fields& f) -> PoseLayer { return read_versus(f); },

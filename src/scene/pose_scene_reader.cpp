@@ -108,11 +108,11 @@ Scene read_pose_scene(const JsonReader& reader, const Json& document) {
   }
   if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
   if (const Json* claims = JsonReader::member(document, "claims")) {
-    scene.claims = read_claims(reader, *claims, scene, true);
+    scene.claims = read_claims<PoseLayer>(reader, *claims, scene);
   }
   if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation(reader, *animation, "/animation", false, true);
+    scene.animation = detail::read_animation<PoseLayer>(reader, *animation, "/animation", false);
     scene.has_animation = true;
   }
   return scene;

@@ -40,8 +40,10 @@ void check_track_chain(const JsonReader& reader, const MotionKeys& keys, const s
 void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenTolerances& out);
 
 // "claims" (scene/claim.hpp), read after the panels: each names a panel by
-// its index and a measure the scene's kind has (`poses`: a pose scene).
-std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene, bool poses);
+// its index and a measure the scene's kind has, the kind named by the family
+// of its layers (Layer: an arrow scene; PoseLayer: a pose scene).
+template <class LayerType>
+std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene);
 
 // "lint": {"min_content_share", "min_frame_pixels", "allow": [{"check", "pointer", "reason"}]}.
 LintSettings read_lint(const JsonReader& reader, const Json& value);

@@ -6,6 +6,7 @@
 #include <string>
 #include <system_error>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -70,21 +71,16 @@ std::optional<render::Format> figure_format(OutputKind kind) {
 
 std::string number(double v) { return fmt::format("{:.6g}", v); }
 
-// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
-std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& own) {
-  std::array<std::string, kMetricColumns.size()> m{};
-  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
-  if (r.no_motion) return m;
-  if (r.path_p) {
-    m[0] = number(r.path_p->length);
-    m[2] = number(r.path_p->turning);
-  }
-  if (r.path_q) {
-    m[1] = number(r.path_q->length);
-    m[3] = number(r.path_q->turning);
-  }
-  if (r.winding_min) m[4] = number(*r.winding_min);
-  if (r.winding_max) m[5] = number(*r.winding_max);
+using Metrics = std::array<std::string, kMetricColumns.size()>;
+
+// The columns of kMetricColumns each kind measures.
+void add_metrics(const analysis::ArrowMeasures& r, Metrics& m) {
+  m[0] = number(r.path_p.length);
+  m[1] = number(r.path_q.length);
+  m[2] = number(r.path_p.turning);
+  m[3] = number(r.path_q.turning);
+  m[4] = number(r.winding_min);
+  m[5] = number(r.winding_max);
   for (const analysis::DiscrepancyStats& d : r.discrepancy) {
     if (d.frames == 0) continue;
     if (d.predictor == "pita") {
@@ -101,8 +97,25 @@ std::array<std::string, kMetricColumns.size()> metrics_of(const motion::Stage& o
   }
   if (r.largest_jump >= 0) m[12] = number(r.parameters[static_cast<std::size_t>(r.largest_jump)].jump);
   if (!r.parameters.empty()) m[13] = r.pops ? "yes" : "no";
-  if (r.ara) m[14] = number(*r.ara);
-  if (r.area) m[15] = r.area->monotone ? "yes" : "no";
+}
+
+void add_metrics(const analysis::PointMeasures& r, Metrics& m) {
+  m[0] = number(r.path.length);
+  m[2] = number(r.path.turning);
+}
+
+template <class Pose>
+void add_metrics(const analysis::PoseMeasures<Pose>& r, Metrics& m) {
+  m[14] = number(r.ara);
+  m[15] = r.area.monotone ? "yes" : "no";
+}
+
+// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
+Metrics metrics_of(const motion::Stage& own) {
+  Metrics m{};
+  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
+  if (r.no_motion) return m;
+  std::visit([&](const auto& measured) { add_metrics(measured, m); }, r.measured);
   return m;
 }
 

@@ -131,8 +131,9 @@ TEST(Claims, DiscrepancyOfOnePredictorAndWhen) {
   EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "discrepancy:previous", "above": 1e-3})").held);
   const scene::Scene scene = with_claims(R"({"says": "s", "panel": 1, "measure": "pop", "is": false})");
   const MotionMeasures p1 = measure_panel(motion::Stage(scene), 1);
+  const ArrowMeasures& arrows = std::get<ArrowMeasures>(p1.measured);
   int predictors = 0;
-  for (const DiscrepancyStats& d : p1.discrepancy) {
+  for (const DiscrepancyStats& d : arrows.discrepancy) {
     if (d.frames == 0) continue;
     ++predictors;
     EXPECT_TRUE(only(fmt::format(R"({{"says": "s", "panel": 1, "measure": "discrepancy:{}", "near": {:.17g}}})",
@@ -146,7 +147,7 @@ TEST(Claims, DiscrepancyOfOnePredictorAndWhen) {
   }
   EXPECT_EQ(predictors, 3);
   // The predictors differ here, so that a claim reading the wrong one would fail.
-  EXPECT_NE(p1.discrepancy[0].max, p1.discrepancy[1].max);
+  EXPECT_NE(arrows.discrepancy[0].max, arrows.discrepancy[1].max);
 }
 
 TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {

@@ -18,6 +18,10 @@ namespace pita::analysis {
 namespace {
 
 
+// The measures of a panel of keyframes, of poses of the plane.
+const ArrowMeasures& arrows(const MotionMeasures& m) { return std::get<ArrowMeasures>(m.measured); }
+const PoseMeasures<Affine2>& poses(const MotionMeasures& m) { return std::get<PoseMeasures<Affine2>>(m.measured); }
+
 MotionMeasures measure_text(const std::string& text) {
   const scene::Scene scene = scene::parse_scene(text, "test.json");
   const std::vector<MotionMeasures> all = measure_scene(scene);
@@ -26,7 +30,7 @@ MotionMeasures measure_text(const std::string& text) {
 }
 
 const ParameterReaction& reaction(const MotionMeasures& m, const std::string& name) {
-  for (const ParameterReaction& r : m.parameters) {
+  for (const ParameterReaction& r : parameters_of(m)) {
     if (r.name == name) return r;
   }
   ADD_FAILURE() << "no parameter " << name;
@@ -47,17 +51,18 @@ TEST(Measure, SteadyRotationTracesCircleArcs) {
           {{"t": 1, "p": [{}, {}], "m": 1, "w": {}}}]}})",
       A.p.real(), A.p.imag(), A.w, B.p.real(), B.p.imag(), B.w));
   ASSERT_FALSE(m.no_motion) << *m.no_motion;
-  ASSERT_TRUE(m.path_p && m.path_q);
-  EXPECT_NEAR(m.path_p->length, 2.0 * theta, 1e-5);                 // chords: O(h^2)
-  EXPECT_NEAR(m.path_q->length, std::sqrt(5.0) * theta, 1e-5);
-  EXPECT_NEAR(m.path_p->turning, theta, 1e-9);
-  EXPECT_NEAR(m.path_q->turning, theta, 1e-9);
-  EXPECT_NEAR(*m.winding_min, A.w, 1e-12);
-  EXPECT_NEAR(*m.winding_max, B.w, 1e-12);
+  ASSERT_FALSE(m.no_motion);
+  ASSERT_TRUE(std::holds_alternative<ArrowMeasures>(m.measured));
+  EXPECT_NEAR(arrows(m).path_p.length, 2.0 * theta, 1e-5);                 // chords: O(h^2)
+  EXPECT_NEAR(arrows(m).path_q.length, std::sqrt(5.0) * theta, 1e-5);
+  EXPECT_NEAR(arrows(m).path_p.turning, theta, 1e-9);
+  EXPECT_NEAR(arrows(m).path_q.turning, theta, 1e-9);
+  EXPECT_NEAR(arrows(m).winding_min, A.w, 1e-12);
+  EXPECT_NEAR(arrows(m).winding_max, B.w, 1e-12);
   // The steady average of the neighbours is the frame itself (PITA Eq. 23).
-  ASSERT_EQ(m.discrepancy.size(), 3u);
-  EXPECT_EQ(m.discrepancy[1].predictor, "average");
-  EXPECT_LT(m.discrepancy[1].max, 1e-20);
+  ASSERT_EQ(arrows(m).discrepancy.size(), 3u);
+  EXPECT_EQ(arrows(m).discrepancy[1].predictor, "average");
+  EXPECT_LT(arrows(m).discrepancy[1].max, 1e-20);
 }
 
 TEST(Measure, CollinearParabolaDoesNotTurn) {
@@ -68,10 +73,10 @@ TEST(Measure, CollinearParabolaDoesNotTurn) {
       {"t": 1,   "p": [3, 3], "q": [4.5, 4.5]}]})");
   ASSERT_FALSE(m.no_motion);
   // q = p + m e^{iw} with w = pi/4 rounds off the line by ~1e-16: turning to rounding.
-  EXPECT_LT(m.path_p->turning, 1e-9);
-  EXPECT_LT(m.path_q->turning, 1e-9);
-  EXPECT_NEAR(m.path_p->length, 3.0 * std::sqrt(2.0), 1e-9);
-  EXPECT_NEAR(m.path_q->length, 4.0 * std::sqrt(2.0), 1e-9);
+  EXPECT_LT(arrows(m).path_p.turning, 1e-9);
+  EXPECT_LT(arrows(m).path_q.turning, 1e-9);
+  EXPECT_NEAR(arrows(m).path_p.length, 3.0 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(arrows(m).path_q.length, 4.0 * std::sqrt(2.0), 1e-9);
 }
 
 TEST(Measure, MethodPredictsItselfWhereItIsQuadratic) {
@@ -83,11 +88,11 @@ TEST(Measure, MethodPredictsItselfWhereItIsQuadratic) {
         {{"t": 0, "p": [0, 0], "m": 1, "w": 0.4}}, {{"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0}},
         {{"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}}]}})", method));
     ASSERT_FALSE(m.no_motion);
-    EXPECT_EQ(m.discrepancy[2].predictor, "pita");
-    EXPECT_EQ(m.discrepancy[2].frames, 17 - 3);
-    EXPECT_LT(m.discrepancy[2].max, 1e-12) << method;
-    EXPECT_EQ(m.discrepancy[0].frames, 16);
-    EXPECT_GT(m.discrepancy[0].max, 0.1) << method;
+    EXPECT_EQ(arrows(m).discrepancy[2].predictor, "pita");
+    EXPECT_EQ(arrows(m).discrepancy[2].frames, 17 - 3);
+    EXPECT_LT(arrows(m).discrepancy[2].max, 1e-12) << method;
+    EXPECT_EQ(arrows(m).discrepancy[0].frames, 16);
+    EXPECT_GT(arrows(m).discrepancy[0].max, 0.1) << method;
   }
 }
 
@@ -106,8 +111,8 @@ TEST(Measure, TranslationGainOfP1IsTheLagrangeWeightBound) {
   EXPECT_NEAR(reaction(m, "B.p.y").gain, bound, 1e-6);
   EXPECT_NEAR(reaction(m, "B.q.x").gain, bound, 1e-6);
   EXPECT_NEAR(reaction(m, "A.p.x").gain, 1.0, 1e-6);
-  EXPECT_EQ(m.parameters.size(), 21u);
-  EXPECT_FALSE(m.pops);
+  EXPECT_EQ(arrows(m).parameters.size(), 21u);
+  EXPECT_FALSE(arrows(m).pops);
 }
 
 TEST(Measure, GainsAreSimilarityInvariant) {
@@ -124,17 +129,18 @@ TEST(Measure, GainsAreSimilarityInvariant) {
     return measure_text(R"({"method": "P6", "keyframes": [)" + keys + "]}");
   };
   const MotionMeasures a = scene_of(1.0, 0.0), b = scene_of(std::polar(3.0, 0.7), Complex{5, -2});
-  ASSERT_EQ(a.parameters.size(), b.parameters.size());
-  EXPECT_NEAR(b.extent, 3.0 * a.extent, 1e-9);
+  ASSERT_EQ(arrows(a).parameters.size(), arrows(b).parameters.size());
+  EXPECT_NEAR(arrows(b).extent, 3.0 * arrows(a).extent, 1e-9);
   // q.x and q.y mix under a rotation; p.x, p.y too: compare the larger of each pair.
-  for (std::size_t i = 0; i < a.parameters.size(); ++i) {
-    const std::string& name = a.parameters[i].name;
+  for (std::size_t i = 0; i < arrows(a).parameters.size(); ++i) {
+    const std::string& name = arrows(a).parameters[i].name;
     if (name.find(".p.") != std::string::npos || name.find(".q.") != std::string::npos) continue;
-    EXPECT_NEAR(a.parameters[i].gain, b.parameters[i].gain, 1e-5 * a.parameters[i].gain) << name;
+    const double gain = arrows(a).parameters[i].gain;
+    EXPECT_NEAR(gain, arrows(b).parameters[i].gain, 1e-5 * gain) << name;
   }
-  EXPECT_NEAR(a.path_p->turning, b.path_p->turning, 1e-9);
-  EXPECT_NEAR(b.path_q->length, 3.0 * a.path_q->length, 1e-9);
-  EXPECT_NEAR(a.discrepancy[0].max, b.discrepancy[0].max, 1e-9);
+  EXPECT_NEAR(arrows(a).path_p.turning, arrows(b).path_p.turning, 1e-9);
+  EXPECT_NEAR(arrows(b).path_q.length, 3.0 * arrows(a).path_q.length, 1e-9);
+  EXPECT_NEAR(arrows(a).discrepancy[0].max, arrows(b).discrepancy[0].max, 1e-9);
 }
 
 // tests/core/test_fig10.cpp pop_config(0, 0): a, b, c collinear with c
@@ -146,7 +152,7 @@ const char* kP2PopKeyframes = R"("keyframes": [
 TEST(Measure, PopOfP2AtItsBranchCutNoneForP6) {
   const MotionMeasures p2 = measure_text(std::string(R"({"method": "P2", )") + kP2PopKeyframes + "}");
   ASSERT_FALSE(p2.no_motion);
-  EXPECT_TRUE(p2.pops);
+  EXPECT_TRUE(arrows(p2).pops);
   // Moving c or b off the line flips the principal angle between pi and -pi.
   EXPECT_TRUE(reaction(p2, "C.p.y").pop);
   EXPECT_GT(reaction(p2, "C.p.y").jump, 1e-2);  // O(1), not O(1e-9)
@@ -154,8 +160,8 @@ TEST(Measure, PopOfP2AtItsBranchCutNoneForP6) {
   EXPECT_FALSE(reaction(p2, "C.p.x").pop);
 
   const MotionMeasures p6 = measure_text(std::string(R"({"method": "P6", )") + kP2PopKeyframes + "}");
-  EXPECT_FALSE(p6.pops);
-  for (const ParameterReaction& r : p6.parameters) {
+  EXPECT_FALSE(arrows(p6).pops);
+  for (const ParameterReaction& r : arrows(p6).parameters) {
     EXPECT_LT(r.jump, 1e-6) << r.name;
     EXPECT_FALSE(r.pop) << r.name;
   }
@@ -167,7 +173,7 @@ TEST(Measure, PopOfP8AtTheCutOfAcosh) {
       {"t": 0, "p": [0, 0], "m": 1.5, "w": 3.141592653589793}, {"t": 0.5, "p": [2, 1], "m": 1, "w": 0},
       {"t": 1, "p": [4, 0], "m": 1.5, "w": 3.141592653589793}]})");
   ASSERT_FALSE(p8.no_motion) << *p8.no_motion;
-  EXPECT_TRUE(p8.pops);
+  EXPECT_TRUE(arrows(p8).pops);
 }
 
 TEST(Measure, PoseMotionsAraAndArea) {
@@ -182,13 +188,13 @@ TEST(Measure, PoseMotionsAraAndArea) {
   };
   const MotionMeasures sam = measure_text(scene_text("SAM"));
   ASSERT_FALSE(sam.no_motion) << *sam.no_motion;
-  EXPECT_LT(*sam.ara, 1e-6);
-  EXPECT_TRUE(sam.area->monotone);
+  EXPECT_LT(poses(sam).ara, 1e-6);
+  EXPECT_TRUE(poses(sam).area.monotone);
   const MotionMeasures linear = measure_text(scene_text("linear"));
-  EXPECT_GT(*linear.ara, 0.1);
-  EXPECT_FALSE(linear.area->monotone);
-  EXPECT_NEAR(linear.area->excursion, (1.0 - c) / 2.0, 1e-9);
-  EXPECT_NEAR(linear.area->t_of_excursion, 0.5, 1e-12);
+  EXPECT_GT(poses(linear).ara, 0.1);
+  EXPECT_FALSE(poses(linear).area.monotone);
+  EXPECT_NEAR(poses(linear).area.excursion, (1.0 - c) / 2.0, 1e-9);
+  EXPECT_NEAR(poses(linear).area.t_of_excursion, 0.5, 1e-12);
 }
 
 // The velocity jump: a polySAM of two translations, by (1, 0) then by (0, 1),
@@ -200,18 +206,18 @@ TEST(Measure, VelocityJumpOfAPolySamAtItsMiddlePose) {
       "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[1, 0, 1], [0, 1, 0]]},
                 {"t": 2, "matrix": [[1, 0, 1], [0, 1, 1]]}]})");
   ASSERT_FALSE(two.no_motion) << *two.no_motion;
-  ASSERT_TRUE(two.velocity_jump);
-  EXPECT_NEAR(*two.velocity_jump, std::sqrt(2.0), 1e-9);
+  ASSERT_TRUE(std::holds_alternative<PoseMeasures<Affine2>>(two.measured));
+  EXPECT_NEAR(poses(two).velocity_jump, std::sqrt(2.0), 1e-9);
   const MotionMeasures one = measure_text(R"({"method": "SAM",
       "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[1, 0, 1], [0, 1, 0]]}]})");
-  EXPECT_LT(*one.velocity_jump, 1e-9);
+  EXPECT_LT(poses(one).velocity_jump, 1e-9);
   const MotionMeasures turn = measure_text(R"({"method": "SAM",
       "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 0], [1, 0, 0]]}]})");
   // A point at radius r: chords of 2 r sin(phi / 2), each turned by phi = (pi / 2) / 2048 from
   // the last: a jump of 2 sin(phi / 2) times the farthest point's radius over the mean one.
   const double phi = M_PI / 2.0 / 2048.0;
-  EXPECT_GT(*turn.velocity_jump, 2.0 * std::sin(phi / 2.0));
-  EXPECT_LT(*turn.velocity_jump, 4.0 * phi);
+  EXPECT_GT(poses(turn).velocity_jump, 2.0 * std::sin(phi / 2.0));
+  EXPECT_LT(poses(turn).velocity_jump, 4.0 * phi);
 }
 
 // The ARA that pita measure (and claims) report is the one an "ara" layer
@@ -227,8 +233,8 @@ TEST(Measure, AraIsTheFiguresOverTheGridOfTheShapesBox) {
   for (int i = 0; i < 11; ++i) {
     for (int j = 0; j < 11; ++j) mean += std::hypot(-1.0 + 0.2 * i, -1.0 + 0.2 * j) / 121.0;
   }
-  ASSERT_TRUE(linear.ara);
-  EXPECT_NEAR(*linear.ara, mean / 2.0, 1e-4);
+  ASSERT_FALSE(linear.no_motion) << *linear.no_motion;
+  EXPECT_NEAR(poses(linear).ara, mean / 2.0, 1e-4);
 }
 
 TEST(Measure, AreaStatsOfMonotoneAndDippingSequences) {
@@ -247,8 +253,35 @@ TEST(Measure, NoMotionIsReportedNotThrown) {
       {"t": 1, "p": [4, 0], "m": 1, "w": 3.141592653589793}]})");
   ASSERT_TRUE(m.no_motion.has_value());
   EXPECT_NE(m.no_motion->find("test.json"), std::string::npos) << *m.no_motion;
-  EXPECT_TRUE(m.parameters.empty());
-  EXPECT_FALSE(m.path_p.has_value());
+  EXPECT_TRUE(parameters_of(m).empty());
+  ASSERT_TRUE(std::holds_alternative<ArrowMeasures>(m.measured));  // its kind, nothing measured
+  EXPECT_EQ(arrows(m).path_p.length, 0.0);
+  EXPECT_EQ(measured_kind_name(m), "arrows");
+}
+
+MotionMeasures with_measures(KindMeasures measured) {
+  MotionMeasures m;
+  m.measured = std::move(measured);
+  return m;
+}
+
+// The kind's name as `pita measure` prints it, and the tweaked parameters (of keyframes only).
+TEST(Measure, KindNameAndParametersOfEachKind) {
+  ArrowMeasures arrow_numbers;
+  arrow_numbers.parameters = {{.name = "A.p.x"}, {.name = "A.p.y"}};
+  const MotionMeasures keyframes = with_measures(arrow_numbers);
+  EXPECT_EQ(measured_kind_name(keyframes), "arrows");
+  ASSERT_EQ(parameters_of(keyframes).size(), 2u);
+  EXPECT_EQ(parameters_of(keyframes)[1].name, "A.p.y");
+  const MotionMeasures points = with_measures(PointMeasures{});
+  const MotionMeasures plane = with_measures(PoseMeasures<Affine2>{});
+  const MotionMeasures space = with_measures(PoseMeasures<Affine3>{});
+  EXPECT_EQ(measured_kind_name(points), "points");
+  EXPECT_EQ(measured_kind_name(plane), "poses");
+  EXPECT_EQ(measured_kind_name(space), "poses3d");
+  for (const MotionMeasures* m : {&points, &plane, &space}) EXPECT_TRUE(parameters_of(*m).empty());
+  EXPECT_EQ(PoseMeasures<Affine2>::det_name, "area");
+  EXPECT_EQ(PoseMeasures<Affine3>::det_name, "volume");
 }
 
 TEST(Measure, ExtentIsTheDiameterOfTheEndpoints) {
@@ -273,7 +306,7 @@ TEST(Measure, TurnGainOfShortFramesOfP1) {
       {"t": 1, "p": [6, 0], "q": [6, 2.4]}]})");
   ASSERT_FALSE(m.no_motion);
   const double extent = std::hypot(6.0, 2.4);  // from A.p to C.q
-  EXPECT_NEAR(m.extent, extent, 1e-12);
+  EXPECT_NEAR(arrows(m).extent, extent, 1e-12);
   double expected = 0.0;
   for (int i = 0; i <= 64; ++i) {
     const double t = i / 64.0;

@@ -29,8 +29,9 @@ TEST(MeasureReport, JsonReadsBackWithEveryPanel) {
   ASSERT_EQ(report["motions"].size(), 2u);
   EXPECT_EQ(report["motions"][0]["title"], "a");
   EXPECT_EQ(report["motions"][1]["method"], all[1].method);
-  EXPECT_DOUBLE_EQ(report["motions"][0]["path"]["p"]["length"].get<double>(), all[0].path_p->length);
-  EXPECT_EQ(report["motions"][0]["overreaction"]["parameters"].size(), all[0].parameters.size());
+  EXPECT_DOUBLE_EQ(report["motions"][0]["path"]["p"]["length"].get<double>(),
+                   std::get<ArrowMeasures>(all[0].measured).path_p.length);
+  EXPECT_EQ(report["motions"][0]["overreaction"]["parameters"].size(), parameters_of(all[0]).size());
 }
 
 TEST(MeasureReport, CsvHasARowPerPanelAndAGainColumnPerParameter) {
@@ -41,7 +42,7 @@ TEST(MeasureReport, CsvHasARowPerPanelAndAGainColumnPerParameter) {
   ASSERT_TRUE(std::getline(csv, header));
   ASSERT_TRUE(std::getline(csv, row));
   EXPECT_FALSE(std::getline(csv, extra));
-  EXPECT_NE(header.find(",gain_" + all[0].parameters.front().name), std::string::npos);
+  EXPECT_NE(header.find(",gain_" + parameters_of(all[0]).front().name), std::string::npos);
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(row.begin(), row.end(), ','));
 }
 

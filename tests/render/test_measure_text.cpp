@@ -17,9 +17,8 @@
 namespace pita::render {
 namespace {
 
-analysis::MotionMeasures arrows_measured() {
-  analysis::MotionMeasures m;
-  m.kind = analysis::MeasuredKind::arrows;
+analysis::ArrowMeasures arrow_numbers() {
+  analysis::ArrowMeasures m;
   m.discrepancy = {{"previous", 8, 1.5, 0.7, 0.25}, {"average", 7, 0.0125, 0.01, 0.5}, {"pita", 0, 0.0, 0.0, 0.0}};
   m.path_p = analysis::PathStats{6.5, 1.25};
   m.path_q = analysis::PathStats{7.0, 2.0};
@@ -34,15 +33,21 @@ analysis::MotionMeasures arrows_measured() {
   return m;
 }
 
+analysis::MotionMeasures with_measures(analysis::KindMeasures measured) {
+  analysis::MotionMeasures m;
+  m.measured = std::move(measured);
+  return m;
+}
+
+analysis::MotionMeasures arrows_measured() { return with_measures(arrow_numbers()); }
+
 // The names as the reader parses them (scene/measure_name.hpp), of either
 // scene kind: the lines do not depend on it.
 std::vector<scene::MeasureName> parsed(std::initializer_list<std::string_view> names) {
   std::vector<scene::MeasureName> out;
   for (const std::string_view name : names) {
-    auto measure = scene::parse_measure(name, scene::MeasureScene::arrows);
-    if (!std::holds_alternative<scene::MeasureName>(measure)) {
-      measure = scene::parse_measure(name, scene::MeasureScene::poses);
-    }
+    auto measure = scene::parse_measure<scene::Layer>(name);
+    if (!std::holds_alternative<scene::MeasureName>(measure)) measure = scene::parse_measure<scene::PoseLayer>(name);
     out.push_back(std::get<scene::MeasureName>(measure));
   }
   return out;
@@ -77,19 +82,28 @@ TEST(MeasureText, DiscrepancyOfOnePredictor) {
 }
 
 TEST(MeasureText, PoseLinesAndNoPop) {
-  analysis::MotionMeasures m;
-  m.kind = analysis::MeasuredKind::plane_poses;
-  m.ara = 4.25;
-  m.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
-  m.velocity_jump = 0.375;
+  analysis::PoseMeasures<Affine2> poses;
+  poses.ara = 4.25;
+  poses.area = analysis::AreaStats{false, 0.125, 0.5, 1.0, 1.0};
+  poses.velocity_jump = 0.375;
+  const analysis::MotionMeasures m = with_measures(poses);
   const std::vector<scene::MeasureName> show = parsed({"ara", "area", "pop", "velocity-jump"});
   EXPECT_EQ(measure_lines(m, show), (std::vector<std::string>{"ARA 4.25", "area not monotone (dip 0.125 at t = 0.5)",
                                                               "pop: -", "velocity jump 0.375"}));
-  analysis::MotionMeasures calm = arrows_measured();
-  calm.pops = false;
-  calm.largest_jump = 0;
+  analysis::ArrowMeasures numbers = arrow_numbers();
+  numbers.pops = false;
+  numbers.largest_jump = 0;
+  const analysis::MotionMeasures calm = with_measures(numbers);
   const std::vector<scene::MeasureName> pop = parsed({"pop"});
   EXPECT_EQ(measure_lines(calm, pop).front(), "no pop (largest jump 3e-09)");
+}
+
+// A curve through points has a path (one: no q) and nothing else.
+TEST(MeasureText, PointLinesHaveOnePath) {
+  const analysis::MotionMeasures m = with_measures(analysis::PointMeasures{analysis::PathStats{6.5, 1.25}});
+  const std::vector<scene::MeasureName> show = parsed({"path-length", "turning", "winding-range", "pop", "gain:B.q"});
+  EXPECT_EQ(measure_lines(m, show),
+            (std::vector<std::string>{"length 6.5", "turning 1.25 rad", "winding: -", "pop: -", "gain B.q: -"}));
 }
 
 scene::Scene scene_with_layer(const std::string& layer) {

@@ -25,7 +25,7 @@ using test::kReader;
 using test::failure;
 
 Animation read(const std::string& text, bool moving = false) {
-  return detail::read_animation(kReader, Json::parse(text), "/animation", moving);
+  return detail::read_animation<Layer>(kReader, Json::parse(text), "/animation", moving);
 }
 
 std::string refusal(const std::string& text, bool moving = false) {
@@ -114,7 +114,7 @@ TEST(AnimationReader, PatternAndOverlayNeedAMovingKeyframe) {
             "/animation/overlay: must be an array of 1 to 64 values of tau in [0, 1] (got array [])");
   // A pose scene: nothing moves, and the messages say why.
   EXPECT_EQ(failure([] {
-              detail::read_animation(kReader, Json::parse(R"({"what": "pattern"})"), "/animation", false, true);
+              detail::read_animation<PoseLayer>(kReader, Json::parse(R"({"what": "pattern"})"), "/animation", false);
             }),
             "/animation/what: \"pattern\" animates a pattern whose keyframes move, and a pose scene has no "
             "keyframes: animate the \"motion\"");

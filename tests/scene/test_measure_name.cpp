@@ -6,13 +6,16 @@
 #include <string>
 #include <variant>
 
+#include "scene/layers.hpp"
 #include "scene/measure_name.hpp"
 
 namespace pita::scene {
 namespace {
 
-MeasureName accepted(std::string_view text, MeasureScene scene = MeasureScene::arrows) {
-  auto parsed = parse_measure(text, scene);
+// Parsed in an arrow scene (layers Layer), or a pose scene (PoseLayer).
+template <class LayerType = Layer>
+MeasureName accepted(std::string_view text) {
+  auto parsed = parse_measure<LayerType>(text);
   if (const std::string* reason = std::get_if<std::string>(&parsed)) {
     ADD_FAILURE() << text << " refused: " << *reason;
     return {};
@@ -20,8 +23,9 @@ MeasureName accepted(std::string_view text, MeasureScene scene = MeasureScene::a
   return std::get<MeasureName>(parsed);
 }
 
-std::string refused(std::string_view text, MeasureScene scene = MeasureScene::arrows) {
-  auto parsed = parse_measure(text, scene);
+template <class LayerType = Layer>
+std::string refused(std::string_view text) {
+  auto parsed = parse_measure<LayerType>(text);
   if (std::holds_alternative<MeasureName>(parsed)) {
     ADD_FAILURE() << text << " was accepted";
     return {};
@@ -37,13 +41,16 @@ TEST(MeasureName, PlainNamesAndTheirKinds) {
   EXPECT_EQ(accepted("overreaction").kind, MeasureKind::overreaction);
   EXPECT_EQ(accepted("pop").kind, MeasureKind::pop);
   EXPECT_EQ(accepted("handle-shift").kind, MeasureKind::handle_shift);
-  EXPECT_EQ(accepted("ara", MeasureScene::poses).kind, MeasureKind::ara);
-  EXPECT_EQ(accepted("area", MeasureScene::poses).kind, MeasureKind::area);
+  EXPECT_EQ(accepted<PoseLayer>("ara").kind, MeasureKind::ara);
+  EXPECT_EQ(accepted<PoseLayer>("area").kind, MeasureKind::area);
   EXPECT_EQ(accepted("pop").text, "pop");
 }
 
-TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
-  for (const MeasureEntry& entry : measure_entries()) {
+// Each family's names parse in its scenes to their own kind, and are refused
+// in the other family's, "only"; together they are every measure.
+template <class LayerType, class Other>
+void check_family_entries() {
+  for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
     const std::string argument = entry.kind == MeasureKind::angle            ? "P6@0.5"
                                  : entry.kind == MeasureKind::frame_distance ? "/panels/1"
                                  : entry.kind == MeasureKind::property       ? "pop-free"
@@ -52,10 +59,16 @@ TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
                                      ? "average"
                                      : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
-    EXPECT_EQ(accepted(text, entry.scene).kind, entry.kind) << text;
-    const MeasureScene other = entry.scene == MeasureScene::arrows ? MeasureScene::poses : MeasureScene::arrows;
-    EXPECT_NE(refused(text, other).find("only"), std::string::npos) << text;
+    EXPECT_EQ(accepted<LayerType>(text).kind, entry.kind) << text;
+    EXPECT_NE(refused<Other>(text).find("only"), std::string::npos) << text;
   }
+}
+
+TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
+  check_family_entries<Layer, PoseLayer>();
+  check_family_entries<PoseLayer, Layer>();
+  EXPECT_EQ(measure_entries_of<Layer>().size() + measure_entries_of<PoseLayer>().size(), measure_entries().size());
+  EXPECT_EQ(measure_entries_of<PoseLayer>().size(), 3u);  // "ara", "area", "velocity-jump"
 }
 
 // "property:NAME": a name of lower-case words; which names exist is the
@@ -127,24 +140,25 @@ TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
   EXPECT_EQ(refused("ara"), "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
                             "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
                             "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
-  EXPECT_EQ(refused("handle-shift", MeasureScene::poses),
+  EXPECT_EQ(refused<PoseLayer>("handle-shift"),
             "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
-  EXPECT_NE(refused("angle:P6@0.5", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
-  EXPECT_NE(refused("gain:A.p", MeasureScene::poses).find("arrow (keyframe) scenes only"), std::string::npos);
+  EXPECT_NE(refused<PoseLayer>("angle:P6@0.5").find("arrow (keyframe) scenes only"), std::string::npos);
+  EXPECT_NE(refused<PoseLayer>("gain:A.p").find("arrow (keyframe) scenes only"), std::string::npos);
 }
 
 TEST(MeasureName, UnknownNamesGetSuggestionsOrTheList) {
   EXPECT_EQ(refused("pops"), "unknown measure \"pops\"; did you mean \"pop\"?");
   EXPECT_NE(refused("zzzzzz").find("\"angle:M@t\""), std::string::npos);
-  EXPECT_EQ(refused("zzzzzz", MeasureScene::poses), "unknown measure \"zzzzzz\"; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
+  EXPECT_EQ(refused<PoseLayer>("zzzzzz"),
+            "unknown measure \"zzzzzz\"; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
 }
 
 TEST(MeasureName, DefaultsOfEachSceneKind) {
-  const std::vector<MeasureName> arrows = default_measures(MeasureScene::arrows);
+  const std::vector<MeasureName> arrows = default_measures<Layer>();
   ASSERT_EQ(arrows.size(), 2u);
   EXPECT_EQ(arrows[0].kind, MeasureKind::overreaction);
   EXPECT_EQ(arrows[1].kind, MeasureKind::pop);
-  const std::vector<MeasureName> poses = default_measures(MeasureScene::poses);
+  const std::vector<MeasureName> poses = default_measures<PoseLayer>();
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[0].kind, MeasureKind::ara);
   EXPECT_EQ(poses[1].kind, MeasureKind::area);
