@@ -12,7 +12,6 @@
 #include "core/limits.hpp"
 #include "core/overloaded.hpp"
 
-#include "scene/animation_reader.hpp"
 #include "scene/layer_kinds.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
@@ -171,11 +170,6 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   } else {
     scene.panels = {scene_panel(scene, "")};
   }
-  if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
-  if (const Json* claims = JsonReader::member(document, "claims")) {
-    scene.claims = read_claims(reader, *claims, scene, false);
-  }
-  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
@@ -183,12 +177,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
                                     const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
                                     return given != nullptr && !given->keyframes_to.empty();
                                   });
-  if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation(reader, *animation, "/animation", moving);
-    scene.has_animation = true;
-  } else {
-    scene.animation = detail::default_animation(moving);
-  }
+  read_scene_tail(reader, document, scene, moving);
   return scene;
 }
 

@@ -15,7 +15,6 @@
 #include "core/pose_traits.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
-#include "scene/space_pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -189,15 +188,13 @@ namespace {
 
 // What differs between the panels of a pose scene of the plane and of space:
 // their fields (solids are the scene's: a panel of space has no "shapes"),
-// the methods they take, the reference simplex and the layers they draw.
+// the reference simplex and the layers they draw (the methods they take:
+// read_pose_method_of).
 template <class Pose>
 struct PosePanelSpace;
 template <>
 struct PosePanelSpace<Affine2> {
   static constexpr std::array<std::string_view, 8> kFields = kPosePanelFields;
-  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
-    return read_pose_method(reader, value, pointer);
-  }
   static const PoseSpace<Affine2>::Simplex& reference(const Scene& scene) { return scene.reference_triangle; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_pose_layers(reader, value, pointer);
@@ -207,9 +204,6 @@ template <>
 struct PosePanelSpace<Affine3> {
   static constexpr std::array<std::string_view, 7> kFields = {"method", "poses",        "title", "samples",
                                                               "layers", "subdivisions", "timing"};
-  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
-    return read_space_pose_method(reader, value, pointer);
-  }
   static const PoseSpace<Affine3>::Simplex& reference(const Scene& scene) { return scene.reference_tetrahedron; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_space_pose_layers(reader, value, pointer);
@@ -225,7 +219,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
   PoseKeys<Pose>& keys = std::get<PoseKeys<Pose>>(panel.keys);
   bool own_method = false, own_poses = false;
   if (item.is_string()) {
-    keys.method = Space::method(reader, item, at);
+    keys.method = read_pose_method_of<Pose>(reader, item, at);
     own_method = true;
   } else {
     reader.object(item, at, "a panel (a pose method name or an object)");
@@ -237,7 +231,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     }
     reader.check_fields(item, at, Space::kFields);
     if (const Json* method = JsonReader::member(item, "method")) {
-      keys.method = Space::method(reader, *method, at + "/method");
+      keys.method = read_pose_method_of<Pose>(reader, *method, at + "/method");
       own_method = true;
     }
     if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");

@@ -31,6 +31,50 @@ using test::failure;
 
 Eigen::Vector2d image(const Affine2& A, double x, double y) { return apply(A, Eigen::Vector2d(x, y)); }
 
+// One reader over the dimension: the frame of a simplex maps the unit
+// simplex onto it, and a flat simplex is degenerate, in the plane and in space.
+TEST(PoseReaderOverTheDimension, FrameOfMapsTheUnitSimplexOntoThePoints) {
+  const std::array<Point, 3> triangle = {Point{1.0, 2.0}, Point{4.0, 2.0}, Point{1.0, 7.0}};
+  const Affine2 plane = detail::frame_of<Affine2>(triangle);
+  EXPECT_EQ(image(plane, 0.0, 0.0), Eigen::Vector2d(1.0, 2.0));
+  EXPECT_EQ(image(plane, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
+  EXPECT_EQ(image(plane, 0.0, 1.0), Eigen::Vector2d(1.0, 7.0));
+  const std::array<Eigen::Vector3d, 4> tetrahedron = {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(2, 2, 3),
+                                                      Eigen::Vector3d(1, 4, 3), Eigen::Vector3d(1, 2, 6)};
+  const Affine3 space = detail::frame_of<Affine3>(tetrahedron);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(apply(space, Eigen::Vector3d::Unit(i)), tetrahedron[static_cast<std::size_t>(i) + 1]) << i;
+  }
+  EXPECT_EQ(apply(space, Eigen::Vector3d::Zero()), tetrahedron[0]);
+}
+
+TEST(PoseReaderOverTheDimension, FlatSimplicesAreDegenerate) {
+  EXPECT_FALSE(detail::degenerate<Affine2>(kUnitTriangle));
+  EXPECT_TRUE(detail::degenerate<Affine2>({Point{0.0, 0.0}, Point{1.0, 1.0}, Point{3.0, 3.0}}));
+  EXPECT_FALSE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                            Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}));
+  EXPECT_TRUE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                           Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0)}));
+}
+
+TEST(PoseReaderOverTheDimension, MatricesAndReferencesSayTheirDimension) {
+  const Affine3 A = detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 2, 3, 4], [0, 1, 0, 5], [0, 0, 2, 6]]"),
+                                                 "/m");
+  EXPECT_EQ(A.L(0, 2), 3.0);
+  EXPECT_EQ(A.b, Eigen::Vector3d(4, 5, 6));
+  EXPECT_TRUE(failure([] { detail::read_matrix<Affine2>(kReader, Json::parse("[[1, 0], [0, 1]]"), "/m"); })
+                  .starts_with("/m: must be a 2x3 matrix [[a, b, tx], [c, d, ty]] (x -> [[a, b], [c, d]] x + "
+                               "[tx, ty]; got array "));
+  EXPECT_TRUE(failure([] { detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 0, 0], [0, 1, 0]]"), "/m"); })
+                  .starts_with("/m: a 2x3 matrix is a pose of the plane; the poses of a 3D scene (\"dimension\": "
+                               "3) are 3x4 matrices [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]] (got array "));
+  EXPECT_EQ(failure([] {
+              detail::read_reference<Affine3>(kReader, Json::parse("[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]"),
+                                              "/reference_tetrahedron");
+            }),
+            "/reference_tetrahedron: the reference tetrahedron is degenerate (its points are coplanar)");
+}
+
 TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   const Scene scene = parse_scene(R"({"method": "sam", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[1, 2, 3], [-4, 5, 6]]}]})",
@@ -172,7 +216,7 @@ TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
             }),
             "/poses/0/triangle: give either \"matrix\" or \"triangle\", not both");
   EXPECT_EQ(failure([] {
-              detail::read_reference_triangle(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
+              detail::read_reference<Affine2>(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
                                               "/reference_triangle");
             }),
             "/reference_triangle: the reference triangle is degenerate (its points are collinear)");
