@@ -123,7 +123,7 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       return frame_distance(stage, panel, *measure.panel);
     case MeasureKind::handle_shift:
       need_keyframes(panel, measure, pointer);
-      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      if (scene::figure_of<scene::KeyframeKeys>(stage.panel(panel)).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
       return handle_shift(stage, panel);
     case MeasureKind::property:
       need_keyframes(panel, measure, pointer);

@@ -234,11 +234,11 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
 // else of the reference triangle, as an "ara" layer prints it (N28).
 std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::Panel& panel) {
   std::vector<Eigen::Vector2d> vertices;
-  for (const scene::ShapeOutline& shape : panel.shapes) {
+  for (const scene::ShapeOutline& shape : scene::figure_of<scene::PlanePoseKeys>(panel).shapes) {
     for (const Point& x : shape.points) vertices.emplace_back(x.real(), x.imag());
   }
   if (vertices.empty()) {
-    for (const Point& x : scene.reference_triangle) vertices.emplace_back(x.real(), x.imag());
+    for (const Point& x : scene::figure_of<scene::PlanePoseKeys>(scene).reference) vertices.emplace_back(x.real(), x.imag());
   }
   return ara_grid(vertices);
 }
@@ -246,8 +246,9 @@ std::vector<Eigen::Vector2d> ara_points(const scene::Scene& scene, const scene::
 // In space: the vertices of the scene's solids, else the reference tetrahedron.
 std::vector<Eigen::Vector3d> ara_points3(const scene::Scene& scene) {
   std::vector<Eigen::Vector3d> points;
-  for (const scene::Solid& solid : scene.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
-  if (points.empty()) points.assign(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end());
+  const scene::PoseFigure<Affine3>& figure = scene::figure_of<scene::SpacePoseKeys>(scene);
+  for (const scene::Solid& solid : figure.shapes) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
+  if (points.empty()) points.assign(figure.reference.begin(), figure.reference.end());
   return points;
 }
 

@@ -59,7 +59,7 @@ constexpr std::array<std::string_view, 19> kSceneFields = {
 
 // A "shapes" layer draws the scene's shapes, which it must have.
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
-  if (!scene.shapes.empty()) return;
+  if (!figure_of<KeyframeKeys>(scene).shapes.empty()) return;
   for (const Panel& panel : scene.panels) {
     const LayersOf<Layer> drawn = layers_of<Layer>(scene, panel);
     for (std::size_t i = 0; i < drawn.layers.size(); ++i) {
@@ -73,7 +73,7 @@ void check_shape_layers(const JsonReader& reader, const Scene& scene) {
 
 // The motion of an arrow scene: "method", "options", "keyframes" or
 // "points", "handle" and "chain"; the "shapes" the keyframes carry are read
-// into the scene.
+// into the scene's figure (an ArrowFigure, the default).
 MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene& scene) {
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a method such as \"P6\")");
@@ -103,7 +103,8 @@ MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene
       reader.fail("/shapes", "shapes are carried by keyframe arrows (a \"handle\" and \"shapes\" layers); a scene of "
                              "\"points\" has none to carry them");
     }
-    scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
+    figure_of<KeyframeKeys>(scene).shapes =
+        detail::read_shapes(reader, *shapes, "/shapes", FigureTraits<Affine2>::unit_simplex());
   }
   if (const Json* handle = JsonReader::member(document, "handle")) {
     if (points != nullptr) reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
@@ -156,13 +157,13 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     scene.canvas = detail::read_canvas(reader, *canvas, "/canvas");
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
-    scene.layers = detail::read_layers(reader, *layers, "/layers");
+    figure_of<KeyframeKeys>(scene).layers = detail::read_layers(reader, *layers, "/layers");
   } else {
     // By default a curve through timed points, else the pattern and the keyframes.
-    scene.layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
+    figure_of<KeyframeKeys>(scene).layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
                                          [](const PointKeys&) { return std::vector<Layer>{PointTrajectoryLayer{}}; },
-                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // pose scenes
-                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // draw pose_layers
+                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // not read here:
+                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // pose scenes
                               scene.keys);
   }
   if (const Json* panels = JsonReader::member(document, "panels")) {

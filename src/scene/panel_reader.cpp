@@ -144,7 +144,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     panel.samples_pointer = pointer + "/samples";
   }
   if (const Json* layers = JsonReader::member(value, "layers")) {
-    panel.layers = detail::read_layers(reader, *layers, pointer + "/layers");
+    figure_of<KeyframeKeys>(panel).layers = detail::read_layers(reader, *layers, pointer + "/layers");
   }
   if (const Json* timing = JsonReader::member(value, "timing")) {
     panel.timing = detail::read_timing(reader, *timing, pointer + "/timing");
@@ -188,14 +188,13 @@ namespace {
 
 // What differs between the panels of a pose scene of the plane and of space:
 // their fields (solids are the scene's: a panel of space has no "shapes"),
-// the reference simplex and the layers they draw (the methods they take:
-// read_pose_method_of).
+// and the layers they draw (the methods they take: read_pose_method_of; the
+// reference simplex: the scene's figure).
 template <class Pose>
 struct PosePanelSpace;
 template <>
 struct PosePanelSpace<Affine2> {
   static constexpr std::array<std::string_view, 8> kFields = kPosePanelFields;
-  static const PoseSpace<Affine2>::Simplex& reference(const Scene& scene) { return scene.reference_triangle; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_pose_layers(reader, value, pointer);
   }
@@ -204,7 +203,6 @@ template <>
 struct PosePanelSpace<Affine3> {
   static constexpr std::array<std::string_view, 7> kFields = {"method", "poses",        "title", "samples",
                                                               "layers", "subdivisions", "timing"};
-  static const PoseSpace<Affine3>::Simplex& reference(const Scene& scene) { return scene.reference_tetrahedron; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_space_pose_layers(reader, value, pointer);
   }
@@ -217,6 +215,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
   using Space = PosePanelSpace<Pose>;
   Panel panel = scene_panel(scene, at);
   PoseKeys<Pose>& keys = std::get<PoseKeys<Pose>>(panel.keys);
+  const auto& reference = figure_of<PoseKeys<Pose>>(scene).reference;
   bool own_method = false, own_poses = false;
   if (item.is_string()) {
     keys.method = read_pose_method_of<Pose>(reader, item, at);
@@ -248,14 +247,14 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     }
     if constexpr (!in_space_v<Pose>) {
       if (const Json* shapes = JsonReader::member(item, "shapes")) {
-        panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
+        figure_of<PoseKeys<Pose>>(panel).shapes = detail::read_shapes(reader, *shapes, at + "/shapes", reference);
       }
     }
     if (const Json* layers = JsonReader::member(item, "layers")) {
-      panel.pose_layers = Space::layers(reader, *layers, at + "/layers");
+      figure_of<PoseKeys<Pose>>(panel).layers = Space::layers(reader, *layers, at + "/layers");
     }
     if (const Json* poses = JsonReader::member(item, "poses")) {
-      keys.poses = detail::read_poses<Pose>(reader, *poses, at + "/poses", Space::reference(scene), keys.method);
+      keys.poses = detail::read_poses<Pose>(reader, *poses, at + "/poses", reference, keys.method);
       own_poses = true;
     }
   }

@@ -20,8 +20,8 @@ namespace pita::scene::detail {
 namespace {
 
 // What the scene reader does differently in the plane and in space: the
-// fields it takes, where the reference simplex goes, the shapes (outlines of
-// the plane; solids and a camera in space), the layers it draws, and whether
+// fields it takes, the shapes (outlines of the plane; solids and a camera in
+// space), the layers it draws, and whether
 // the scene itself must have poses (a scene of the plane may leave them to
 // its panels, or draw only figures that need none).
 template <class Pose>
@@ -34,14 +34,12 @@ struct PoseSceneSpace<Affine2> {
       "samples", "title",       "canvas", "layers", "panels",             "golden", "claims", "lint",
       "subdivisions", "timing", "animation", "dimension"};
   static constexpr bool kPosesRequired = false;
-  static std::array<Point, 3>& reference(Scene& scene) { return scene.reference_triangle; }
-  static void read_shapes(const JsonReader& reader, const Json& document, Scene& scene) {
+  static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine2>& figure) {
     if (const Json* shapes = JsonReader::member(document, "shapes")) {
-      scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
+      figure.shapes = detail::read_shapes(reader, *shapes, "/shapes", figure.reference);
     } else {
-      scene.shapes = {ShapeOutline{std::vector<Point>(scene.reference_triangle.begin(),
-                                                      scene.reference_triangle.end()),
-                                   true, std::nullopt, std::nullopt}};
+      figure.shapes = {ShapeOutline{std::vector<Point>(figure.reference.begin(), figure.reference.end()), true,
+                                    std::nullopt, std::nullopt}};
     }
   }
   static std::vector<PoseLayer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -56,15 +54,14 @@ struct PoseSceneSpace<Affine3> {
       "subdivisions", "timing", "golden",    "claims",    "lint",   "shapes",                "camera",
       "layers",  "title",       "canvas",    "panels",    "animation"};
   static constexpr bool kPosesRequired = true;
-  static std::array<Eigen::Vector3d, 4>& reference(Scene& scene) { return scene.reference_tetrahedron; }
-  static void read_shapes(const JsonReader& reader, const Json& document, Scene& scene) {
+  static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine3>& figure) {
     if (const Json* shapes = JsonReader::member(document, "shapes")) {
-      scene.solids = read_solids(reader, *shapes, "/shapes", scene.reference_tetrahedron);
+      figure.shapes = read_solids(reader, *shapes, "/shapes", figure.reference);
     } else {
-      scene.solids = default_solids(scene.reference_tetrahedron);
+      figure.shapes = default_solids(figure.reference);
     }
     if (const Json* camera = JsonReader::member(document, "camera")) {
-      scene.camera = read_camera(reader, *camera, "/camera");
+      figure.camera = read_camera(reader, *camera, "/camera");
     }
   }
   static std::vector<PoseLayer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -84,6 +81,7 @@ Scene read_pose_scene_of(const JsonReader& reader, const Json& document) {
   reader.check_fields(document, "", Space::kFields);
   Scene scene;
   PoseKeys<Pose> keys;
+  PoseFigure<Pose> figure;
   scene.path = reader.file();
   if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
   if (const Json* description = JsonReader::member(document, "description")) {
@@ -94,9 +92,9 @@ Scene read_pose_scene_of(const JsonReader& reader, const Json& document) {
   keys.method = read_pose_method_of<Pose>(reader, *method, "/method");
   const std::string reference_field = std::string("reference_") + PoseSpace<Pose>::kSimplex;
   if (const Json* reference = JsonReader::member(document, reference_field)) {
-    Space::reference(scene) = read_reference<Pose>(reader, *reference, "/" + reference_field);
+    figure.reference = read_reference<Pose>(reader, *reference, "/" + reference_field);
   }
-  Space::read_shapes(reader, document, scene);
+  Space::read_shapes(reader, document, figure);
   if (const Json* samples = JsonReader::member(document, "samples")) {
     scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
   }
@@ -111,17 +109,18 @@ Scene read_pose_scene_of(const JsonReader& reader, const Json& document) {
     scene.canvas = read_canvas(reader, *canvas, "/canvas");
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
-    scene.pose_layers = Space::read_layers(reader, *layers, "/layers");
+    figure.layers = Space::read_layers(reader, *layers, "/layers");
   } else {
-    scene.pose_layers = {ShapesLayer{}, PosesLayer{}};
+    figure.layers = {ShapesLayer{}, PosesLayer{}};
   }
   const Json* panels = JsonReader::member(document, "panels");
   if (const Json* poses = JsonReader::member(document, "poses")) {
-    keys.poses = read_poses<Pose>(reader, *poses, "/poses", Space::reference(scene), keys.method);
-  } else if (Space::kPosesRequired || (panels == nullptr && needs_motion(scene.pose_layers))) {
+    keys.poses = read_poses<Pose>(reader, *poses, "/poses", figure.reference, keys.method);
+  } else if (Space::kPosesRequired || (panels == nullptr && needs_motion(figure.layers))) {
     reader.fail("/poses", missing_poses_reason<Pose>());
   }
   scene.keys = std::move(keys);
+  scene.figure = std::move(figure);
   if (panels != nullptr) {
     scene.panels = read_pose_panels(reader, *panels, "/panels", scene);
   } else {

@@ -87,11 +87,11 @@ TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
   EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 0.0, 1.0), Eigen::Vector2d(5.0, 11.0));
   // Defaults: the reference triangle as the shape; shapes and poses drawn.
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  EXPECT_EQ(scene.shapes[0].points.size(), 3u);
-  ASSERT_EQ(scene.pose_layers.size(), 2u);
-  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
-  EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 3u);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).layers.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(figure_of<PlanePoseKeys>(scene).layers[0]));
+  EXPECT_TRUE(std::holds_alternative<PosesLayer>(figure_of<PlanePoseKeys>(scene).layers[1]));
   ASSERT_EQ(scene.panels.size(), 1u);
   EXPECT_EQ(plane_keys(scene.panels[0]).poses.size(), 2u);
 }
@@ -108,8 +108,8 @@ TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
   EXPECT_LT((image(second, 3, 1) - Eigen::Vector2d(5, 9)).norm(), 1e-14);
   EXPECT_LT((image(second, 1, 2) - Eigen::Vector2d(3.5, 5)).norm(), 1e-14);
   // "triangle": "reference" is the reference triangle's outline.
-  ASSERT_EQ(scene.shapes[0].points.size(), 3u);
-  EXPECT_EQ(scene.shapes[0].points[1], Point(3, 1));
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 3u);
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points[1], Point(3, 1));
 }
 
 // Two mirrored poses: C o B^-1 preserves orientation, so the SAM exists and
@@ -128,18 +128,18 @@ TEST(PoseScene, BuiltinOutlines) {
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}],
       "shapes": [{"outline": "F"}, {"outline": "picture", "color": "red"}, {"outline": "square"}]})",
                                   "s.json");
-  ASSERT_EQ(scene.shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
-  EXPECT_EQ(scene.shapes[0].points.size(), 10u);
-  EXPECT_FALSE(scene.shapes[0].color.has_value());
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 10u);
+  EXPECT_FALSE(figure_of<PlanePoseKeys>(scene).shapes[0].color.has_value());
   for (std::size_t i = 1; i <= 7; ++i) {
-    ASSERT_TRUE(scene.shapes[i].color.has_value()) << i;
-    EXPECT_EQ(*scene.shapes[i].color, *scene.shapes[1].color) << i;
-    for (const Point p : scene.shapes[i].points) {
+    ASSERT_TRUE(figure_of<PlanePoseKeys>(scene).shapes[i].color.has_value()) << i;
+    EXPECT_EQ(*figure_of<PlanePoseKeys>(scene).shapes[i].color, *figure_of<PlanePoseKeys>(scene).shapes[1].color) << i;
+    for (const Point p : figure_of<PlanePoseKeys>(scene).shapes[i].points) {
       EXPECT_TRUE(p.real() >= 0.0 && p.real() <= 1.0 && p.imag() >= 0.0 && p.imag() <= 0.75) << i;
     }
   }
-  EXPECT_FALSE(scene.shapes[2].closed);  // the ground line
-  EXPECT_EQ(scene.shapes[8].points.size(), 4u);
+  EXPECT_FALSE(figure_of<PlanePoseKeys>(scene).shapes[2].closed);  // the ground line
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[8].points.size(), 4u);
 }
 
 // The refusals (no SAM, singular or degenerate poses, knots too close, ...)
@@ -312,9 +312,9 @@ TEST(PoseScene, ImageShapes) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "images/picture.png", "box": [[0, 0], [1, 0.75]]}]})",
                                   (std::filesystem::path(PITA_SOURCE_DIR) / "scenes" / "s.json").string());
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  ASSERT_TRUE(scene.shapes[0].image.has_value());
-  EXPECT_EQ(scene.shapes[0].image->width, 160);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);
+  ASSERT_TRUE(figure_of<PlanePoseKeys>(scene).shapes[0].image.has_value());
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].image->width, 160);
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "/etc/passwd", "box": [[0, 0], [1, 1]]}]})"),
             "s.json: /shapes/0/image: \"/etc/passwd\" is an absolute path; images are found relative to the scene's "
