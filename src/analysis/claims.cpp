@@ -157,7 +157,9 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);
       }
-      if (stage.panel(panel).shapes.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      if (scene::figure_of<scene::KeyframeKeys>(stage.panel(panel)).shapes.empty()) {
+        unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
+      }
       return handle_shift(stage, panel);
     case Source::property:
       need_keyframes(panel, measure, pointer);

@@ -49,7 +49,7 @@ double handle_shift(const motion::Stage& stage, std::size_t index) {
   for (const double t : motion::uniform_times(first, last, kHandleShiftSamples)) {
     const Affine2 S = carrier(mine.handle(), own.arrow_at(t));
     const Affine2 S0 = carrier(theirs.handle(), base.arrow_at(t));
-    for (const scene::ShapeOutline& shape : panel.shapes) {
+    for (const scene::ShapeOutline& shape : scene::figure_of(panel, mine).shapes) {
       for (const Point x : shape.points) shift = std::max(shift, std::abs(apply(S, x) - apply(S0, x)));
     }
   }

@@ -170,7 +170,7 @@ std::string svg_defs(const scene::Scene& scene, const std::vector<render::PanelP
                      std::map<std::string, std::string>& image_ids) {
   std::string svg = "<defs>\n";
   for (const scene::Panel& panel : scene.panels) {
-    for (const scene::ShapeOutline& shape : panel.shapes) {
+    for (const scene::ShapeOutline& shape : scene::outlines_of(panel)) {
       if (!shape.image || image_ids.count(shape.image->path)) continue;
       const std::string id = fmt::format("pita-image-{}", image_ids.size());
       image_ids.emplace(shape.image->path, id);

@@ -59,12 +59,16 @@ std::string layer_type_at(const scene::Scene& scene, const scene::Panel& panel, 
     const auto& layers = slash > 0 ? drawn.layers : scene_layers;
     return index < layers.size() ? std::string(scene::layer_type(layers[index])) : std::string();
   };
-  const auto arrows = [&] { return type_in(scene.layers, scene::layers_of<scene::Layer>(scene, panel)); };
-  const auto poses = [&] { return type_in(scene.pose_layers, scene::layers_of<scene::PoseLayer>(scene, panel)); };
-  return std::visit(overloaded{[&](const scene::KeyframeKeys&) { return arrows(); },
-                               [&](const scene::PointKeys&) { return arrows(); },
-                               [&](const scene::PlanePoseKeys&) { return poses(); },
-                               [&](const scene::SpacePoseKeys&) { return poses(); }},
+  const auto arrows = [&](const auto& keys) {
+    return type_in(scene::figure_of(scene, keys).layers, scene::layers_of<scene::Layer>(scene, panel));
+  };
+  const auto poses = [&](const auto& keys) {
+    return type_in(scene::figure_of(scene, keys).layers, scene::layers_of<scene::PoseLayer>(scene, panel));
+  };
+  return std::visit(overloaded{[&](const scene::KeyframeKeys& keys) { return arrows(keys); },
+                               [&](const scene::PointKeys& keys) { return arrows(keys); },
+                               [&](const scene::PlanePoseKeys& keys) { return poses(keys); },
+                               [&](const scene::SpacePoseKeys& keys) { return poses(keys); }},
                     panel.keys);
 }
 

@@ -124,12 +124,12 @@ namespace {
 // plane's motions also take the reference triangle (rARAP, ASAP and TSB move
 // it, core/pose_motion.hpp).
 PlanePoses make_pose_track(const scene::Scene& scene, const scene::PlanePoseKeys& keys) {
-  return {std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions, scene.reference_triangle),
-          scene.reference_triangle};
+  const auto& reference = scene::figure_of(scene, keys).reference;
+  return {std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions, reference), reference};
 }
 SpacePoses make_pose_track(const scene::Scene& scene, const scene::SpacePoseKeys& keys) {
   return {std::make_shared<const PoseMotion3>(keys.method, keys.poses, keys.subdivisions),
-          scene.reference_tetrahedron};
+          scene::figure_of(scene, keys).reference};
 }
 
 // The motion of the panel's keyframes, points or poses, refused with NoMotion

@@ -43,34 +43,56 @@ void LayerCost::frames(const std::optional<int>& samples, const char* what, doub
   add(pointer, fmt::format("{} frames of {}", n, what), n * (per_frame + motion::frame_cost(panel_) - 1.0));
 }
 
-// 3D scenes draw solids: a shape per face, each vertex of each face projected.
-double LayerCost::shape_points() const {
-  double points = 0.0;
-  if (in_space()) {
-    for (const scene::Solid& solid : scene_.solids) {
-      points += static_cast<double>(solid.vertices.size());
-      for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
-    }
-    return points;
-  }
-  for (const scene::ShapeOutline& shape : panel_.shapes) points += static_cast<double>(shape.points.size());
+namespace {
+
+// What one shape costs to draw: an outline, its points, once; a solid of a 3D
+// scene, a shape per face, each vertex and each face's corners projected.
+double drawn_shapes(const scene::ShapeOutline&) { return 1.0; }
+double drawn_shapes(const scene::Solid& solid) { return static_cast<double>(solid.faces.size()); }
+double drawn_points(const scene::ShapeOutline& shape) { return static_cast<double>(shape.points.size()); }
+double drawn_points(const scene::Solid& solid) {
+  double points = static_cast<double>(solid.vertices.size());
+  for (const std::vector<int>& face : solid.faces) points += static_cast<double>(face.size());
   return points;
 }
 
-double LayerCost::shapes_units() const {
-  double shapes = static_cast<double>(panel_.shapes.size());
-  double shadows = 0.0;  // "camera": {"shadow": ...}: a shape per solid, every face's corners again
-  if (in_space()) {
-    shapes = 0.0;
-    for (const scene::Solid& solid : scene_.solids) {
-      shapes += static_cast<double>(solid.faces.size());
-      if (scene_.camera.shadow) {
-        shadows += kShapeUnits;
-        for (const std::vector<int>& face : solid.faces) shadows += static_cast<double>(face.size());
-      }
+// The sum of `cost` over the shapes the panel draws.
+template <class Cost>
+double over_shapes(const scene::Panel& panel, Cost cost) {
+  return std::visit(
+      [&](const auto& figure) {
+        double sum = 0.0;
+        for (const auto& shape : figure.shapes) sum += cost(shape);
+        return sum;
+      },
+      panel.figure);
+}
+
+}  // namespace
+
+double LayerCost::shape_points() const {
+  return over_shapes(panel_, [](const auto& shape) { return drawn_points(shape); });
+}
+
+// "camera": {"shadow": ...} in a 3D scene: a shape per solid, every face's corners again.
+double LayerCost::shadow_units() const {
+  const auto solids = [&](const scene::PosePanelFigure<Affine3>& figure) {
+    double shadows = 0.0;
+    if (!scene::figure_of<scene::SpacePoseKeys>(scene_).camera.shadow) return shadows;
+    for (const scene::Solid& solid : figure.shapes) {
+      shadows += kShapeUnits;
+      for (const std::vector<int>& face : solid.faces) shadows += static_cast<double>(face.size());
     }
-  }
-  return shapes * kShapeUnits + shape_points() + shadows;
+    return shadows;
+  };
+  return std::visit(overloaded{[](const scene::ArrowPanelFigure&) { return 0.0; },
+                               [](const scene::PosePanelFigure<Affine2>&) { return 0.0; }, solids},
+                    panel_.figure);
+}
+
+double LayerCost::shapes_units() const {
+  const double shapes = over_shapes(panel_, [](const auto& shape) { return drawn_shapes(shape); });
+  return shapes * kShapeUnits + shape_points() + shadow_units();
 }
 
 const std::vector<Keyframe>& LayerCost::keyframes() const {

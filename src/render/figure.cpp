@@ -162,7 +162,7 @@ std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelec
 
 void check_images(const scene::Scene& scene) {
   for (const scene::Panel& panel : scene.panels) {
-    for (const scene::ShapeOutline& shape : panel.shapes) {
+    for (const scene::ShapeOutline& shape : scene::outlines_of(panel)) {
       if (!shape.image) continue;
       try {
         cached_image(shape.image->path, shape.image->given);

@@ -61,9 +61,10 @@ class LayerCost {
   double shape_points() const;
   // The body drawn once: a shape per outline (per face in 3D) and its points.
   double shapes_units() const;
+  // The shadows of a 3D scene's solids (none without "shadow", nor in the plane).
+  double shadow_units() const;
   // The panel's keyframes (none for the other kinds, which draw no arrow layers).
   const std::vector<Keyframe>& keyframes() const;
-  bool in_space() const { return std::holds_alternative<scene::SpacePoseKeys>(panel_.keys); }
   void add(std::string pointer, std::string what, double units) {
     cost_.units += units;
     cost_.parts.push_back({std::move(pointer), layer_, std::move(what), units});

@@ -59,13 +59,14 @@ double lowest_point(const std::vector<scene::Solid>& solids, const std::vector<A
 // In space, the camera looks at its target: given, else the centre of the
 // solids' vertices at the poses; "auto" turns it (render/camera_choice.hpp).
 Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& keys, const std::vector<Affine3>& seen) {
+  const scene::PoseFigure<Affine3>& figure = scene::figure_of(scene, keys);
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
-  if (scene.camera.target) {
-    target = *scene.camera.target;
+  if (figure.camera.target) {
+    target = *figure.camera.target;
   } else {
     double count = 0.0;
     for (const TimedPose3& pose : keys.poses) {
-      for (const scene::Solid& solid : scene.solids) {
+      for (const scene::Solid& solid : figure.shapes) {
         for (const Eigen::Vector3d& v : solid.vertices) {
           target += apply(pose.pose, v);
           count += 1.0;
@@ -75,7 +76,7 @@ Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& ke
     if (count > 0.0) target /= count;
   }
   const scene::Camera camera =
-      scene.camera.automatic ? chosen_camera(scene.camera, scene.solids, seen) : scene.camera;
+      figure.camera.automatic ? chosen_camera(figure.camera, figure.shapes, seen) : figure.camera;
   try {
     return Projection(camera, target);
   } catch (const std::invalid_argument& error) {
@@ -95,9 +96,10 @@ PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const sc
     return {};
   } else {
     // The poses "auto" and "shadow" look at, found once.
-    const bool looks = stage.scene().camera.automatic || stage.scene().camera.shadow;
+    const scene::PoseFigure<Affine3>& figure = scene::figure_of(stage.scene(), keys);
+    const bool looks = figure.camera.automatic || figure.camera.shadow;
     const std::vector<Affine3> seen = looks ? seen_poses(stage, index, keys) : std::vector<Affine3>{};
-    if (stage.scene().camera.shadow) ground = lowest_point(stage.scene().solids, seen);
+    if (figure.camera.shadow) ground = lowest_point(figure.shapes, seen);
     return camera_view(stage.scene(), keys, seen);
   }
 }
@@ -208,7 +210,7 @@ void PosePanel<Pose>::cast_shadow(int index, std::vector<std::vector<Eigen::Vect
 template <class Pose>
 Drawing PosePanel<Pose>::take() {
   if constexpr (in_space_v<Pose>) {
-    if (!shadows_.empty() && scene_.camera.shadow) {
+    if (!shadows_.empty() && figure().camera.shadow) {
       double ground = ground_;
       for (const Shadow& shadow : shadows_) {
         for (const auto& face : shadow.faces) {
@@ -229,7 +231,7 @@ Drawing PosePanel<Pose>::take() {
         Item& item = under.emplace_back();
         item.layer = "/camera/shadow";
         item.index = shadow.index;
-        item.shape = FilledPath{std::move(contours), *scene_.camera.shadow, shadow.opacity, std::nullopt};
+        item.shape = FilledPath{std::move(contours), *figure().camera.shadow, shadow.opacity, std::nullopt};
         item.moving = shadow.moving;
       }
       drawing_.items.insert(drawing_.items.begin(), std::make_move_iterator(under.begin()),

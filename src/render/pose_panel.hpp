@@ -50,6 +50,11 @@ class PosePanel {
   const scene::Scene& scene() const { return scene_; }
   const scene::Panel& panel() const { return panel_; }
   const Keys& keys() const { return keys_; }
+  // The scene's figure data (reference simplex, shapes, layers, camera in
+  // space), and the shapes this panel draws: the scene's, or in the plane the
+  // panel's own.
+  const scene::PoseFigure<Pose>& figure() const { return scene::figure_of<Keys>(scene_); }
+  const std::vector<scene::ShapeOf<Pose>>& shapes() const { return scene::figure_of<Keys>(panel_).shapes; }
   // An animation frame's time and trail, or nullptr for the static figure.
   const FrameSelection* selection() const { return selection_; }
 

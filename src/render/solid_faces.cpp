@@ -74,7 +74,7 @@ void add_solid_faces(const PosePanel<Affine3>& panel, const scene::Solid& solid,
 }
 
 void paint_faces(PosePanel<Affine3>& panel, std::vector<Face> faces, bool moving) {
-  if (panel.scene().camera.shadow) {
+  if (panel.figure().camera.shadow) {
     for (std::size_t i = 0; i < faces.size();) {
       std::size_t end = i;
       std::vector<std::vector<Vector3d>> body;

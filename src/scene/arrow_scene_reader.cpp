@@ -12,7 +12,6 @@
 #include "core/limits.hpp"
 #include "core/overloaded.hpp"
 
-#include "scene/animation_reader.hpp"
 #include "scene/layer_kinds.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
@@ -60,7 +59,7 @@ constexpr std::array<std::string_view, 19> kSceneFields = {
 
 // A "shapes" layer draws the scene's shapes, which it must have.
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
-  if (!scene.shapes.empty()) return;
+  if (!figure_of<KeyframeKeys>(scene).shapes.empty()) return;
   for (const Panel& panel : scene.panels) {
     const LayersOf<Layer> drawn = layers_of<Layer>(scene, panel);
     for (std::size_t i = 0; i < drawn.layers.size(); ++i) {
@@ -74,7 +73,7 @@ void check_shape_layers(const JsonReader& reader, const Scene& scene) {
 
 // The motion of an arrow scene: "method", "options", "keyframes" or
 // "points", "handle" and "chain"; the "shapes" the keyframes carry are read
-// into the scene.
+// into the scene's figure (an ArrowFigure, the default).
 MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene& scene) {
   const Json* method = JsonReader::member(document, "method");
   if (method == nullptr) reader.fail("/method", "missing required field (a method such as \"P6\")");
@@ -104,7 +103,8 @@ MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene
       reader.fail("/shapes", "shapes are carried by keyframe arrows (a \"handle\" and \"shapes\" layers); a scene of "
                              "\"points\" has none to carry them");
     }
-    scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
+    figure_of<KeyframeKeys>(scene).shapes =
+        detail::read_shapes(reader, *shapes, "/shapes", FigureTraits<Affine2>::unit_simplex());
   }
   if (const Json* handle = JsonReader::member(document, "handle")) {
     if (points != nullptr) reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
@@ -157,13 +157,13 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     scene.canvas = detail::read_canvas(reader, *canvas, "/canvas");
   }
   if (const Json* layers = JsonReader::member(document, "layers")) {
-    scene.layers = detail::read_layers(reader, *layers, "/layers");
+    figure_of<KeyframeKeys>(scene).layers = detail::read_layers(reader, *layers, "/layers");
   } else {
     // By default a curve through timed points, else the pattern and the keyframes.
-    scene.layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
+    figure_of<KeyframeKeys>(scene).layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
                                          [](const PointKeys&) { return std::vector<Layer>{PointTrajectoryLayer{}}; },
-                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // pose scenes
-                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // draw pose_layers
+                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // not read here:
+                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // pose scenes
                               scene.keys);
   }
   if (const Json* panels = JsonReader::member(document, "panels")) {
@@ -171,11 +171,6 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   } else {
     scene.panels = {scene_panel(scene, "")};
   }
-  if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
-  if (const Json* claims = JsonReader::member(document, "claims")) {
-    scene.claims = read_claims<Layer>(reader, *claims, scene);
-  }
-  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
@@ -183,12 +178,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
                                     const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
                                     return given != nullptr && !given->keyframes_to.empty();
                                   });
-  if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation<Layer>(reader, *animation, "/animation", moving);
-    scene.has_animation = true;
-  } else {
-    scene.animation = detail::default_animation(moving);
-  }
+  read_scene_tail<Layer>(reader, document, scene, moving);
   return scene;
 }
 

@@ -5,14 +5,14 @@ namespace pita::scene {
 template <class Pose>
 std::vector<typename PoseTraits<Pose>::BodyPoint> body_points(const Scene& scene, const Panel& panel) {
   std::vector<typename PoseTraits<Pose>::BodyPoint> points;
-  if constexpr (!in_space_v<Pose>) {
-    for (const ShapeOutline& shape : panel.shapes) {
-      points.insert(points.end(), shape.points.begin(), shape.points.end());
-    }
-    if (points.empty()) points.assign(scene.reference_triangle.begin(), scene.reference_triangle.end());
-  } else {
-    for (const Solid& solid : scene.solids) points.insert(points.end(), solid.vertices.begin(), solid.vertices.end());
-    if (points.empty()) points.assign(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end());
+  using Keys = PoseKeys<Pose>;
+  for (const ShapeOf<Pose>& shape : figure_of<Keys>(panel).shapes) {
+    const std::vector<typename PoseTraits<Pose>::BodyPoint>& given = points_of(shape);
+    points.insert(points.end(), given.begin(), given.end());
+  }
+  if (points.empty()) {
+    const typename PoseTraits<Pose>::Simplex& reference = figure_of<Keys>(scene).reference;
+    points.assign(reference.begin(), reference.end());
   }
   return points;
 }

@@ -11,8 +11,8 @@
 
 namespace pita::scene {
 
-// Every vertex of the body, in order: of the panel's shapes in the plane, of
-// the scene's solids in space; the reference simplex (the triangle, the
+// Every vertex of the body, in order: of the shapes the panel draws (its
+// outlines in the plane, the scene's solids in space); the reference simplex (the triangle, the
 // tetrahedron) when there are none, as in a scene built without shapes (the
 // readers always give some: "shapes" defaults to the reference simplex).
 template <class Pose>

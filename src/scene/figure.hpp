@@ -1,15 +1,19 @@
 // The figure part of a scene (docs/reference/render.md "Figures"): the canvas, the animation,
-// the solids and camera of 3D scenes, and the panels of a grid. Everything
+// each kind's figure data (the layers and shapes of arrow scenes; the
+// reference simplex, shapes, layers and, in space, the camera of pose
+// scenes), and the panels of a grid. Everything
 // here is resolved: defaults applied, colours parsed, names looked up, so that
 // render/ never sees JSON. The layers are in layers.hpp.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "core/pose_traits.hpp"
 #include "scene/layers.hpp"
 #include "scene/motion_keys.hpp"
 #include "scene/timing.hpp"
@@ -77,6 +81,95 @@ struct Camera {
   std::optional<Color> shadow;
 };
 
+// ---------------------------------------------------------------- each kind's figure data
+
+// A pose scene of the plane is drawn in the plane's own coordinates: it has
+// no camera.
+struct NoCamera {};
+
+// What the figure of a pose scene is made of, by the dimension of its poses:
+// poses of the plane move outlines (and images) of the plane; poses of space
+// move solids, seen through a camera. The reference simplex defaults to the
+// unit one (docs/reference/pose-scenes.md "Pose scenes" and "3D pose scenes").
+template <class Pose>
+struct FigureTraits;
+template <>
+struct FigureTraits<Affine2> {
+  using Shape = ShapeOutline;
+  using Camera = NoCamera;
+  static PoseTraits<Affine2>::Simplex unit_simplex() { return {Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}}; }
+};
+template <>
+struct FigureTraits<Affine3> {
+  using Shape = Solid;
+  using Camera = scene::Camera;
+  static PoseTraits<Affine3>::Simplex unit_simplex() {
+    return {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.0, 1.0, 0.0),
+            Eigen::Vector3d(0.0, 0.0, 1.0)};
+  }
+};
+template <class Pose>
+using ShapeOf = typename FigureTraits<Pose>::Shape;
+
+// The points of a shape that a pose moves: an outline's, a solid's vertices.
+inline const std::vector<Point>& points_of(const ShapeOutline& shape) { return shape.points; }
+inline const std::vector<Eigen::Vector3d>& points_of(const Solid& solid) { return solid.vertices; }
+
+// The figure of an arrow scene (keyframes or points): its layers, and the
+// shapes its keyframes carry (PITA Sec. 7.1).
+struct ArrowFigure {
+  std::vector<Layer> layers;         // in drawing order; default: pattern, then keyframes (points: their curve)
+  std::vector<ShapeOutline> shapes;  // carried by the handle; default none
+};
+
+// The figure of a pose scene: the reference simplex ("reference_triangle",
+// "reference_tetrahedron") that poses given as simplices map, the shapes the
+// poses move, the layers, and in space the camera.
+template <class Pose>
+struct PoseFigure {
+  typename PoseTraits<Pose>::Simplex reference = FigureTraits<Pose>::unit_simplex();
+  std::vector<ShapeOf<Pose>> shapes;  // default: the reference simplex (a triangle, a tetrahedron)
+  std::vector<PoseLayer> layers;      // default: shapes, then poses
+  [[no_unique_address]] typename FigureTraits<Pose>::Camera camera;
+};
+
+// A panel's part of the figure, of the scene's family: its own layers, drawn
+// instead of the scene's (Fig. 1 draws different trajectories per panel;
+// nullopt: the scene's), and the shapes it draws (the scene's, or in the
+// plane the panel's own "shapes").
+template <class LayerType, class Shape>
+struct PanelFigureData {
+  std::optional<std::vector<LayerType>> layers;
+  std::vector<Shape> shapes;
+};
+using ArrowPanelFigure = PanelFigureData<Layer, ShapeOutline>;
+template <class Pose>
+using PosePanelFigure = PanelFigureData<PoseLayer, ShapeOf<Pose>>;
+
+// The figure data of each family of kinds: arrows (keyframes and points, as a
+// panel may draw points in a scene of keyframes), poses of the plane, poses of
+// space. Which alternative a scene holds follows from its keys: figure_of
+// below is the one way to reach it.
+using SceneFigure = std::variant<ArrowFigure, PoseFigure<Affine2>, PoseFigure<Affine3>>;
+using PanelFigure = std::variant<ArrowPanelFigure, PosePanelFigure<Affine2>, PosePanelFigure<Affine3>>;
+
+// The figure types of the family of `Keys` (an alternative of MotionKeys):
+// FigureOf<KeyframeKeys> is ArrowFigure, FigureOf<PoseKeys<Pose>> is PoseFigure<Pose>.
+template <class Keys>
+struct FamilyOf {  // KeyframeKeys, PointKeys
+  using OfScene = ArrowFigure;
+  using OfPanel = ArrowPanelFigure;
+};
+template <class Pose>
+struct FamilyOf<PoseKeys<Pose>> {
+  using OfScene = PoseFigure<Pose>;
+  using OfPanel = PosePanelFigure<Pose>;
+};
+template <class Keys>
+using FigureOf = typename FamilyOf<Keys>::OfScene;
+template <class Keys>
+using PanelFigureOf = typename FamilyOf<Keys>::OfPanel;
+
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
 struct Panel {
@@ -95,14 +188,9 @@ struct Panel {
   // poses, else the panel (its method with the scene's keyframes), else the
   // scene's "/keyframes", "/points" or "/poses".
   std::string motion_pointer = "/keyframes";
-  // The panel's own "layers", drawn instead of the scene's (Fig. 1 draws
-  // different trajectories per panel); nullopt: the scene's layers.
-  std::optional<std::vector<Layer>> layers;
-
-  // Shapes: of a pose scene in the plane, and of an arrow scene (carried by
-  // the handle); the panel's pose layers, nullopt: the scene's.
-  std::vector<ShapeOutline> shapes;
-  std::optional<std::vector<PoseLayer>> pose_layers;
+  // The panel's part of the figure, of the family of `keys`: its own layers
+  // and the shapes it draws (figure_of, scene.hpp).
+  PanelFigure figure;
 
   // "timing": the scene's unless the panel gives its own.
   Timing timing;

@@ -97,7 +97,7 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
 std::vector<std::filesystem::path> image_files(const Scene& scene) {
   std::vector<std::filesystem::path> files;
   for (const Panel& panel : scene.panels) {
-    for (const ShapeOutline& shape : panel.shapes) {
+    for (const ShapeOutline& shape : outlines_of(panel)) {
       if (shape.image && std::find(files.begin(), files.end(), shape.image->path) == files.end()) {
         files.emplace_back(shape.image->path);
       }

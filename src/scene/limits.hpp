@@ -53,6 +53,11 @@ inline constexpr int kMaxPoses = 1000;
 inline constexpr int kMaxSolids = 64;
 inline constexpr int kMaxSolidVertices = 10'000;
 inline constexpr int kMaxSolidFaces = 10'000;
+// The camera of a 3D scene: its azimuth within +-kMaxCameraAzimuth degrees
+// (a turn either way), its elevation within +-kMaxCameraElevation (straight
+// down to straight up).
+inline constexpr double kMaxCameraAzimuth = 360.0;
+inline constexpr double kMaxCameraElevation = 90.0;
 // Arrow scenes: keyframes of a track (the chains of core/chains/chain.hpp;
 // "neville" takes at most limits::kMaxNevilleKeyframes of them).
 inline constexpr int kMaxKeyframes = 1000;
@@ -61,9 +66,9 @@ inline constexpr int kMinPoints = 4;
 inline constexpr int kMaxPoints = kMaxKeyframes + 1;
 
 // ---------------------------------------------------------------- poses
-// The pose readers' numerical tests (scene/pose_reader.cpp,
-// scene/space_pose_reader.cpp). They are relative, so that a pose's units do
-// not matter, and the schema cannot state them.
+// The pose reader's numerical tests (scene/pose_reader.cpp). They are
+// relative, so that a pose's units do not matter, and the schema cannot state
+// them.
 
 // A reference triangle is degenerate when twice its area is at most this
 // fraction of the product of its two edges from the first point; a reference

@@ -1,7 +1,8 @@
 // What a panel's motion is made of, as the scene gives it: one alternative per
 // kind of motion (timed arrows, timed points, poses of the plane, poses of
-// space). The kind of a scene or panel is which alternative it holds; nothing
-// else records it. A site whose work depends on the kind visits the variant
+// space). The kind of a scene or panel is which alternative it holds; its
+// figure data (scene/figure.hpp) are of the kind's family, and figure_of
+// (scene.hpp) takes that family from the keys' type. A site whose work depends on the kind visits the variant
 // with one overload per alternative (core/overloaded.hpp), so that a kind it
 // leaves out does not compile; a site that concerns one kind asks for it with
 // std::get_if. The motion stage builds motion::BuiltMotion from these.

@@ -15,7 +15,6 @@
 #include "core/pose_traits.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
-#include "scene/space_pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -145,7 +144,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
     panel.samples_pointer = pointer + "/samples";
   }
   if (const Json* layers = JsonReader::member(value, "layers")) {
-    panel.layers = detail::read_layers(reader, *layers, pointer + "/layers");
+    figure_of<KeyframeKeys>(panel).layers = detail::read_layers(reader, *layers, pointer + "/layers");
   }
   if (const Json* timing = JsonReader::member(value, "timing")) {
     panel.timing = detail::read_timing(reader, *timing, pointer + "/timing");
@@ -189,16 +188,13 @@ namespace {
 
 // What differs between the panels of a pose scene of the plane and of space:
 // their fields (solids are the scene's: a panel of space has no "shapes"),
-// the methods they take, the reference simplex and the layers they draw.
+// and the layers they draw (the methods they take: read_pose_method_of; the
+// reference simplex: the scene's figure).
 template <class Pose>
 struct PosePanelSpace;
 template <>
 struct PosePanelSpace<Affine2> {
   static constexpr std::array<std::string_view, 8> kFields = kPosePanelFields;
-  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
-    return read_pose_method(reader, value, pointer);
-  }
-  static const PoseSpace<Affine2>::Simplex& reference(const Scene& scene) { return scene.reference_triangle; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_pose_layers(reader, value, pointer);
   }
@@ -207,10 +203,6 @@ template <>
 struct PosePanelSpace<Affine3> {
   static constexpr std::array<std::string_view, 7> kFields = {"method", "poses",        "title", "samples",
                                                               "layers", "subdivisions", "timing"};
-  static PoseMethod method(const JsonReader& reader, const Json& value, const std::string& pointer) {
-    return read_space_pose_method(reader, value, pointer);
-  }
-  static const PoseSpace<Affine3>::Simplex& reference(const Scene& scene) { return scene.reference_tetrahedron; }
   static std::vector<PoseLayer> layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
     return read_space_pose_layers(reader, value, pointer);
   }
@@ -223,9 +215,10 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
   using Space = PosePanelSpace<Pose>;
   Panel panel = scene_panel(scene, at);
   PoseKeys<Pose>& keys = std::get<PoseKeys<Pose>>(panel.keys);
+  const auto& reference = figure_of<PoseKeys<Pose>>(scene).reference;
   bool own_method = false, own_poses = false;
   if (item.is_string()) {
-    keys.method = Space::method(reader, item, at);
+    keys.method = read_pose_method_of<Pose>(reader, item, at);
     own_method = true;
   } else {
     reader.object(item, at, "a panel (a pose method name or an object)");
@@ -237,7 +230,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     }
     reader.check_fields(item, at, Space::kFields);
     if (const Json* method = JsonReader::member(item, "method")) {
-      keys.method = Space::method(reader, *method, at + "/method");
+      keys.method = read_pose_method_of<Pose>(reader, *method, at + "/method");
       own_method = true;
     }
     if (const Json* title = JsonReader::member(item, "title")) panel.title = reader.string(*title, at + "/title");
@@ -254,14 +247,14 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     }
     if constexpr (!in_space_v<Pose>) {
       if (const Json* shapes = JsonReader::member(item, "shapes")) {
-        panel.shapes = detail::read_shapes(reader, *shapes, at + "/shapes", scene.reference_triangle);
+        figure_of<PoseKeys<Pose>>(panel).shapes = detail::read_shapes(reader, *shapes, at + "/shapes", reference);
       }
     }
     if (const Json* layers = JsonReader::member(item, "layers")) {
-      panel.pose_layers = Space::layers(reader, *layers, at + "/layers");
+      figure_of<PoseKeys<Pose>>(panel).layers = Space::layers(reader, *layers, at + "/layers");
     }
     if (const Json* poses = JsonReader::member(item, "poses")) {
-      keys.poses = detail::read_poses<Pose>(reader, *poses, at + "/poses", Space::reference(scene), keys.method);
+      keys.poses = detail::read_poses<Pose>(reader, *poses, at + "/poses", reference, keys.method);
       own_poses = true;
     }
   }

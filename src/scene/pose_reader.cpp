@@ -5,6 +5,8 @@
 #include <numbers>
 #include <string_view>
 
+#include <Eigen/LU>
+#include <Eigen/SVD>
 #include <fmt/format.h>
 
 #include "scene/did_you_mean.hpp"
@@ -20,82 +22,6 @@ constexpr std::array<std::string_view, 7> kShapeKinds = {"polygon", "polyline", 
                                                          "image",   "box",      "color"};
 constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square", "picture"};
 
-Point bounded_point(const JsonReader& reader, const Json& value, const std::string& pointer) {
-  const Point p = reader.point(value, pointer);
-  for (int axis = 0; axis < 2; ++axis) {
-    const double x = axis == 0 ? p.real() : p.imag();
-    if (std::abs(x) > kMaxKeyframeValue) {
-      reader.fail(element_pointer(pointer, static_cast<std::size_t>(axis)),
-                  fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(x)));
-    }
-  }
-  return p;
-}
-
-// The affinity [p1 - p0, p2 - p0 | p0] mapping the unit triangle onto (p0, p1, p2).
-Affine2 frame_of(const std::array<Point, 3>& p) {
-  Affine2 A;
-  A.L << (p[1] - p[0]).real(), (p[2] - p[0]).real(), (p[1] - p[0]).imag(), (p[2] - p[0]).imag();
-  A.b << p[0].real(), p[0].imag();
-  return A;
-}
-
-std::array<Point, 3> read_three_points(const JsonReader& reader, const Json& value,
-                                       const std::string& pointer) {
-  if (!value.is_array() || value.size() != 3) {
-    reader.fail(pointer, "must be an array of three points [[x, y], [x, y], [x, y]] (got " +
-                             value_text(value) + ")");
-  }
-  std::array<Point, 3> points;
-  for (std::size_t i = 0; i < 3; ++i) {
-    points[i] = bounded_point(reader, value[i], element_pointer(pointer, i));
-  }
-  return points;
-}
-
-// Twice the signed area of the triangle, and whether it is degenerate: the
-// area below kDegenerateSimplex (1e-12) of the product of its two edge lengths.
-bool degenerate(const std::array<Point, 3>& p, double& cross) {
-  const Point e1 = p[1] - p[0], e2 = p[2] - p[0];
-  cross = e1.real() * e2.imag() - e1.imag() * e2.real();
-  return !(std::abs(cross) > kDegenerateSimplex * std::abs(e1) * std::abs(e2)) || !std::isfinite(cross);
-}
-
-Affine2 read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
-  const auto shape_error = [&] {
-    reader.fail(pointer, "must be a 2x3 matrix [[a, b, tx], [c, d, ty]] (x -> [[a, b], [c, d]] x "
-                         "+ [tx, ty]; got " + value_text(value) + ")");
-  };
-  if (!value.is_array() || value.size() != 2) shape_error();
-  Affine2 A;
-  for (std::size_t row = 0; row < 2; ++row) {
-    if (!value[row].is_array() || value[row].size() != 3) shape_error();
-    const std::string at = element_pointer(pointer, row);
-    for (std::size_t column = 0; column < 3; ++column) {
-      const double x = bounded(reader, value[row][column], element_pointer(at, column));
-      if (column < 2) {
-        A.L(static_cast<Eigen::Index>(row), static_cast<Eigen::Index>(column)) = x;
-      } else {
-        A.b(static_cast<Eigen::Index>(row)) = x;
-      }
-    }
-  }
-  // A pose may reverse orientation (a mirrored shape); the SAM between two
-  // poses needs C o B^-1 to preserve it, which the motion checks. A pose must
-  // be invertible, numerically: |det| above kSingularPose (1e-16) of |L|_F^2, which is about
-  // the ratio of its singular values (|det| = |L|_F^2 / 2 for a similarity):
-  // a matrix singular but for rounding, such as [[0.1, 0.3], [0.2, 0.6]], is
-  // below; a stretch diag(1e7, 1e-7) (ratio 1e-14) is above.
-  const double det = A.L.determinant();
-  if (!(std::abs(det) > kSingularPose * A.L.squaredNorm()) || !std::isfinite(det)) {
-    reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {} (its "
-                                     "singular values differ by more than 1e16): the pose is "
-                                     "singular, it flattens the plane onto a line or a point",
-                                     number_text(det)));
-  }
-  return A;
-}
-
 }  // namespace
 
 double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
@@ -107,12 +33,159 @@ double bounded(const JsonReader& reader, const Json& value, const std::string& p
   return x;
 }
 
-std::array<Point, 3> read_reference_triangle(const JsonReader& reader, const Json& value,
-                                             const std::string& pointer) {
-  const std::array<Point, 3> points = read_three_points(reader, value, pointer);
-  double cross = 0.0;
-  if (degenerate(points, cross)) {
-    reader.fail(pointer, "the reference triangle is degenerate (its points are collinear)");
+// ---------------------------------------------------------------- the plane
+
+Point PoseSpace<Affine2>::read_point(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const Point p = reader.point(value, pointer);
+  for (int axis = 0; axis < 2; ++axis) {
+    const double x = axis == 0 ? p.real() : p.imag();
+    if (std::abs(x) > kMaxKeyframeValue) {
+      reader.fail(element_pointer(pointer, static_cast<std::size_t>(axis)),
+                  fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(x)));
+    }
+  }
+  return p;
+}
+
+// A pose may reverse orientation (a mirrored shape); the SAM between two
+// poses needs C o B^-1 to preserve it, which the motion checks. A pose must
+// be invertible, numerically: |det| above kSingularPose (1e-16) of |L|_F^2, which is about
+// the ratio of its singular values (|det| = |L|_F^2 / 2 for a similarity):
+// a matrix singular but for rounding, such as [[0.1, 0.3], [0.2, 0.6]], is
+// below; a stretch diag(1e7, 1e-7) (ratio 1e-14) is above.
+void PoseSpace<Affine2>::refuse_singular(const JsonReader& reader, const std::string& pointer,
+                                         const Traits::LinearPart&, double det, double) {
+  reader.fail(pointer, fmt::format("the linear part [[a, b], [c, d]] has determinant {} (its "
+                                   "singular values differ by more than 1e16): the pose is "
+                                   "singular, it flattens the plane onto a line or a point",
+                                   number_text(det)));
+}
+
+// ---------------------------------------------------------------- space
+
+Eigen::Vector3d PoseSpace<Affine3>::read_point(const JsonReader& reader, const Json& value,
+                                               const std::string& pointer) {
+  if (!value.is_array() || value.size() != 3) {
+    reader.fail(pointer, "must be a point [x, y, z] of space (got " + value_text(value) + ")");
+  }
+  Eigen::Vector3d p;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    p(static_cast<Eigen::Index>(axis)) = bounded(reader, value[axis], element_pointer(pointer, axis));
+  }
+  return p;
+}
+
+// Invertible, numerically: |det| above kSingularPose (1e-16) of |L|_F^3. A
+// mirrored pose is allowed, as in the plane. The message says which: singular
+// (a singular value is zero to rounding), or only ill-conditioned (a strong
+// shear of determinant 1 fails the test too).
+void PoseSpace<Affine3>::refuse_singular(const JsonReader& reader, const std::string& pointer,
+                                         const Traits::LinearPart& L, double det, double scale) {
+  const Eigen::Vector3d sigma = Eigen::JacobiSVD<Eigen::Matrix3d>(L).singularValues();
+  if (!std::isfinite(det) || !(sigma(2) > kSingularValueRatio * sigma(0))) {
+    reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}: the "
+                                     "pose is singular, it flattens space onto a plane, a line or a point",
+                                     number_text(det)));
+  }
+  reader.fail(pointer, fmt::format("the linear part [[a, b, c], [d, e, f], [g, h, i]] has determinant {}, below "
+                                   "1e-16 of |L|_F^3 = {:.3g} (the test is relative to the matrix's norm): it is "
+                                   "not singular, but too ill-conditioned to invert reliably (its singular values "
+                                   "range from {:.3g} to {:.3g}: a shear or stretch this strong)",
+                                   number_text(det), scale, sigma(2), sigma(0)));
+}
+
+void PoseSpace<Affine3>::refuse_other_simplex(const JsonReader& reader, const Json& item, const std::string& pointer) {
+  if (JsonReader::member(item, "triangle") != nullptr) {
+    reader.fail(pointer + "/triangle", "a triangle is a pose of the plane; a 3D scene (\"dimension\": 3) gives "
+                                       "\"tetrahedron\": four points [x, y, z], or a 3x4 \"matrix\"");
+  }
+}
+
+void PoseSpace<Affine3>::refuse_other_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  if (value.is_array() && value.size() == 2) {
+    reader.fail(pointer, fmt::format("a 2x3 matrix is a pose of the plane; the poses of a 3D scene (\"dimension\": "
+                                     "3) are 3x4 matrices {} (got {})",
+                                     kMatrixShape, value_text(value)));
+  }
+}
+
+// ---------------------------------------------------------------- both
+
+template <class Pose>
+typename PoseSpace<Pose>::Simplex read_simplex(const JsonReader& reader, const Json& value,
+                                               const std::string& pointer) {
+  using Space = PoseSpace<Pose>;
+  typename Space::Simplex points;
+  if (!value.is_array() || value.size() != points.size()) {
+    reader.fail(pointer, fmt::format("must be an array of {} (got {})", Space::kSimplexPoints, value_text(value)));
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i] = Space::read_point(reader, value[i], element_pointer(pointer, i));
+  }
+  return points;
+}
+
+template <class Pose>
+Pose frame_of(const typename PoseSpace<Pose>::Simplex& p) {
+  using Space = PoseSpace<Pose>;
+  Pose A;
+  for (int i = 0; i < PoseTraits<Pose>::dimension; ++i) {
+    A.L.col(i) = Space::vector_of(p[static_cast<std::size_t>(i) + 1]) - Space::vector_of(p[0]);
+  }
+  A.b = Space::vector_of(p[0]);
+  return A;
+}
+
+template <class Pose>
+bool degenerate(const typename PoseSpace<Pose>::Simplex& p) {
+  const Pose frame = frame_of<Pose>(p);
+  const double volume = frame.L.determinant();
+  double edges = 1.0;
+  for (int i = 0; i < PoseTraits<Pose>::dimension; ++i) edges *= frame.L.col(i).norm();
+  return !(std::abs(volume) > kDegenerateSimplex * edges) || !std::isfinite(volume);
+}
+
+template <class Pose>
+Pose read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  using Space = PoseSpace<Pose>;
+  constexpr std::size_t n = PoseTraits<Pose>::dimension;
+  const auto shape_error = [&] {
+    Space::refuse_other_matrix(reader, value, pointer);
+    reader.fail(pointer, fmt::format("must be a {}x{} matrix {} (x -> {} x + {}; got {})", n, n + 1,
+                                     Space::kMatrixShape, Space::kLinearShape, Space::kTranslationShape,
+                                     value_text(value)));
+  };
+  if (!value.is_array() || value.size() != n) shape_error();
+  Pose A;
+  for (std::size_t row = 0; row < n; ++row) {
+    if (!value[row].is_array() || value[row].size() != n + 1) shape_error();
+    const std::string at = element_pointer(pointer, row);
+    for (std::size_t column = 0; column <= n; ++column) {
+      const double x = bounded(reader, value[row][column], element_pointer(at, column));
+      const auto r = static_cast<Eigen::Index>(row);
+      if (column < n) {
+        A.L(r, static_cast<Eigen::Index>(column)) = x;
+      } else {
+        A.b(r) = x;
+      }
+    }
+  }
+  const double det = A.L.determinant();
+  const double scale = Space::singular_scale(A.L);
+  if (!(std::abs(det) > kSingularPose * scale) || !std::isfinite(det)) {
+    Space::refuse_singular(reader, pointer, A.L, det, scale);
+  }
+  return A;
+}
+
+template <class Pose>
+typename PoseSpace<Pose>::Simplex read_reference(const JsonReader& reader, const Json& value,
+                                                 const std::string& pointer) {
+  using Space = PoseSpace<Pose>;
+  const typename Space::Simplex points = read_simplex<Pose>(reader, value, pointer);
+  if (degenerate<Pose>(points)) {
+    reader.fail(pointer, fmt::format("the reference {} is degenerate (its points are {})", Space::kSimplex,
+                                     Space::kFlat));
   }
   return points;
 }
@@ -139,17 +212,31 @@ PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
   reader.fail(pointer, unknown_scene_method_reason(name, is_method_of<PoseMethod>));
 }
 
-PoseSpace<Affine2>::Simplex PoseSpace<Affine2>::read_simplex(const JsonReader& reader, const Json& value,
-                                                             const std::string& pointer) {
-  return read_three_points(reader, value, pointer);
+template <class Pose>
+PoseMethod read_pose_method_of(const JsonReader& reader, const Json& value, const std::string& pointer) {
+  const PoseMethod method = read_pose_method(reader, value, pointer);
+  if (in_space_v<Pose> && !info(method).in_space) {
+    std::vector<std::string_view> ids;
+    for (const PoseMethodInfo& entry : all_pose_methods()) {
+      if (entry.in_space) ids.push_back(entry.id);
+    }
+    reader.fail(pointer, fmt::format("method {} moves poses of the plane only; 3D scenes take {}", info(method).id,
+                                     quoted_choices(ids)));
+  }
+  return method;
 }
-bool PoseSpace<Affine2>::degenerate(const Simplex& points) {
-  double cross = 0.0;
-  return detail::degenerate(points, cross);
-}
-Affine2 PoseSpace<Affine2>::frame_of(const Simplex& points) { return detail::frame_of(points); }
-Affine2 PoseSpace<Affine2>::read_matrix(const JsonReader& reader, const Json& value, const std::string& pointer) {
-  return detail::read_matrix(reader, value, pointer);
+
+template <class Pose>
+std::string missing_poses_reason() {
+  using Space = PoseSpace<Pose>;
+  if constexpr (in_space_v<Pose>) {
+    return fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}})",
+                       Space::kMatrixShape);
+  } else {
+    return fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}} or {{\"t\": ..., "
+                       "\"{}\": {}}})",
+                       Space::kMatrixShape, Space::kSimplex, Space::kPointsShape);
+  }
 }
 
 template <class Pose>
@@ -168,7 +255,7 @@ std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& 
     reader.fail(pointer, pose_count_reason(method, value.size()));
   }
   const std::array<std::string_view, 3> fields = {"t", "matrix", Space::kSimplex};
-  const Pose reference_frame = Space::frame_of(reference);
+  const Pose reference_frame = frame_of<Pose>(reference);
   std::vector<TimedPoseOf<Pose>> poses;
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
@@ -190,13 +277,13 @@ std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& 
       reader.fail(at + "/" + simplex, fmt::format("give either \"matrix\" or \"{}\", not both", simplex));
     }
     if (matrix != nullptr) {
-      pose.pose = Space::read_matrix(reader, *matrix, at + "/matrix");
+      pose.pose = read_matrix<Pose>(reader, *matrix, at + "/matrix");
     } else if (points != nullptr) {
-      const typename Space::Simplex given = Space::read_simplex(reader, *points, at + "/" + simplex);
-      if (Space::degenerate(given)) {
+      const typename Space::Simplex given = read_simplex<Pose>(reader, *points, at + "/" + simplex);
+      if (degenerate<Pose>(given)) {
         reader.fail(at + "/" + simplex, fmt::format("the {} is degenerate (its points are {})", simplex, Space::kFlat));
       }
-      pose.pose = compose(Space::frame_of(given), inverse(reference_frame));
+      pose.pose = compose(frame_of<Pose>(given), inverse(reference_frame));
     } else {
       reader.fail(at, fmt::format("a pose needs \"matrix\": {} or \"{}\": {} (the images of the reference {}'s "
                                   "points)",
@@ -207,10 +294,20 @@ std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& 
   return poses;
 }
 
-template std::vector<TimedPoseOf<Affine2>> read_poses<Affine2>(const JsonReader&, const Json&, const std::string&,
-                                                               const PoseSpace<Affine2>::Simplex&, PoseMethod);
-template std::vector<TimedPoseOf<Affine3>> read_poses<Affine3>(const JsonReader&, const Json&, const std::string&,
-                                                               const PoseSpace<Affine3>::Simplex&, PoseMethod);
+// The two dimensions.
+#define PITA_POSE_READERS(Pose)                                                                                      \
+  template PoseSpace<Pose>::Simplex read_simplex<Pose>(const JsonReader&, const Json&, const std::string&);          \
+  template Pose frame_of<Pose>(const PoseSpace<Pose>::Simplex&);                                                     \
+  template bool degenerate<Pose>(const PoseSpace<Pose>::Simplex&);                                                   \
+  template Pose read_matrix<Pose>(const JsonReader&, const Json&, const std::string&);                               \
+  template PoseSpace<Pose>::Simplex read_reference<Pose>(const JsonReader&, const Json&, const std::string&);        \
+  template std::vector<TimedPoseOf<Pose>> read_poses<Pose>(const JsonReader&, const Json&, const std::string&,       \
+                                                           const PoseSpace<Pose>::Simplex&, PoseMethod);             \
+  template std::string missing_poses_reason<Pose>();                                                                 \
+  template PoseMethod read_pose_method_of<Pose>(const JsonReader&, const Json&, const std::string&);
+PITA_POSE_READERS(Affine2)
+PITA_POSE_READERS(Affine3)
+#undef PITA_POSE_READERS
 
 std::vector<ShapeOutline> builtin_outline(std::string_view name) {
   const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}, {}}; };
@@ -258,7 +355,7 @@ void read_shape_points(const JsonReader& reader, const Json& given, const std::s
                                    value_text(given)));
   }
   for (std::size_t j = 0; j < given.size(); ++j) {
-    shape.points.push_back(bounded_point(reader, given[j], element_pointer(where, j)));
+    shape.points.push_back(PoseSpace<Affine2>::read_point(reader, given[j], element_pointer(where, j)));
   }
   shape.closed = closed;
 }
@@ -318,8 +415,8 @@ void read_shape_image(const JsonReader& reader, const Json& item, const Json& gi
   if (!box->is_array() || box->size() != 2) {
     reader.fail(at + "/box", "must be [[x0, y0], [x1, y1]] (got " + value_text(*box) + ")");
   }
-  const Point low = bounded_point(reader, (*box)[0], at + "/box/0");
-  const Point high = bounded_point(reader, (*box)[1], at + "/box/1");
+  const Point low = PoseSpace<Affine2>::read_point(reader, (*box)[0], at + "/box/0");
+  const Point high = PoseSpace<Affine2>::read_point(reader, (*box)[1], at + "/box/1");
   if (!(low.real() < high.real() && low.imag() < high.imag())) {
     reader.fail(at + "/box", "the box must have x0 < x1 and y0 < y1 (got " + value_text(*box) + ")");
   }

@@ -1,4 +1,5 @@
-// Pose scenes: timed affine poses (the SAM paper; docs/reference/pose-scenes.md "Pose scenes").
+// Pose scenes: timed affine poses (the SAM paper; docs/reference/pose-scenes.md "Pose scenes"),
+// of the plane or of space ("dimension": 3), read by one reader over the pose.
 #include "scene/scene_readers.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "scene/animation_reader.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/space_pose_reader.hpp"
@@ -18,10 +18,117 @@
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 18> kPoseSceneFields = {
-    "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
-    "samples", "title",       "canvas", "layers", "panels",             "golden", "claims", "lint",
-    "subdivisions", "timing", "animation", "dimension"};
+
+// What the scene reader does differently in the plane and in space: the
+// fields it takes, the shapes (outlines of the plane; solids and a camera in
+// space), the layers it draws, and whether
+// the scene itself must have poses (a scene of the plane may leave them to
+// its panels, or draw only figures that need none).
+template <class Pose>
+struct PoseSceneSpace;
+
+template <>
+struct PoseSceneSpace<Affine2> {
+  static constexpr std::array<std::string_view, 18> kFields = {
+      "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
+      "samples", "title",       "canvas", "layers", "panels",             "golden", "claims", "lint",
+      "subdivisions", "timing", "animation", "dimension"};
+  static constexpr bool kPosesRequired = false;
+  static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine2>& figure) {
+    if (const Json* shapes = JsonReader::member(document, "shapes")) {
+      figure.shapes = detail::read_shapes(reader, *shapes, "/shapes", figure.reference);
+    } else {
+      figure.shapes = {ShapeOutline{std::vector<Point>(figure.reference.begin(), figure.reference.end()), true,
+                                    std::nullopt, std::nullopt}};
+    }
+  }
+  static std::vector<PoseLayer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_pose_layers(reader, value, pointer);
+  }
+};
+
+template <>
+struct PoseSceneSpace<Affine3> {
+  static constexpr std::array<std::string_view, 19> kFields = {
+      "$schema", "description", "dimension", "method",    "poses",  "reference_tetrahedron", "samples",
+      "subdivisions", "timing", "golden",    "claims",    "lint",   "shapes",                "camera",
+      "layers",  "title",       "canvas",    "panels",    "animation"};
+  static constexpr bool kPosesRequired = true;
+  static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine3>& figure) {
+    if (const Json* shapes = JsonReader::member(document, "shapes")) {
+      figure.shapes = read_solids(reader, *shapes, "/shapes", figure.reference);
+    } else {
+      figure.shapes = default_solids(figure.reference);
+    }
+    if (const Json* camera = JsonReader::member(document, "camera")) {
+      figure.camera = read_camera(reader, *camera, "/camera");
+    }
+  }
+  static std::vector<PoseLayer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
+    return read_space_pose_layers(reader, value, pointer);
+  }
+};
+
+// The pose scene of `Pose`: method, reference simplex, shapes, samples,
+// subdivisions and timing, the figure, the poses, the panels, then what every
+// scene ends with (read_scene_tail). "timing" is as in the plane
+// (docs/reference/scene-format.md "Timing"); in space arc_length follows the
+// image of the reference tetrahedron's first point ("p"), second point ("q")
+// or their midpoint ("mid").
+template <class Pose>
+Scene read_pose_scene_of(const JsonReader& reader, const Json& document) {
+  using Space = PoseSceneSpace<Pose>;
+  reader.check_fields(document, "", Space::kFields);
+  Scene scene;
+  PoseKeys<Pose> keys;
+  PoseFigure<Pose> figure;
+  scene.path = reader.file();
+  if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
+  if (const Json* description = JsonReader::member(document, "description")) {
+    scene.description = reader.string(*description, "/description");
+  }
+  const Json* method = JsonReader::member(document, "method");
+  if (method == nullptr) reader.fail("/method", "missing required field (a pose method such as \"SAM\")");
+  keys.method = read_pose_method_of<Pose>(reader, *method, "/method");
+  const std::string reference_field = std::string("reference_") + PoseSpace<Pose>::kSimplex;
+  if (const Json* reference = JsonReader::member(document, reference_field)) {
+    figure.reference = read_reference<Pose>(reader, *reference, "/" + reference_field);
+  }
+  Space::read_shapes(reader, document, figure);
+  if (const Json* samples = JsonReader::member(document, "samples")) {
+    scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
+  }
+  if (const Json* subdivisions = JsonReader::member(document, "subdivisions")) {
+    keys.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
+  }
+  if (const Json* timing = JsonReader::member(document, "timing")) {
+    scene.timing = read_timing(reader, *timing, "/timing");
+  }
+  if (const Json* title = JsonReader::member(document, "title")) scene.title = reader.string(*title, "/title");
+  if (const Json* canvas = JsonReader::member(document, "canvas")) {
+    scene.canvas = read_canvas(reader, *canvas, "/canvas");
+  }
+  if (const Json* layers = JsonReader::member(document, "layers")) {
+    figure.layers = Space::read_layers(reader, *layers, "/layers");
+  } else {
+    figure.layers = {ShapesLayer{}, PosesLayer{}};
+  }
+  const Json* panels = JsonReader::member(document, "panels");
+  if (const Json* poses = JsonReader::member(document, "poses")) {
+    keys.poses = read_poses<Pose>(reader, *poses, "/poses", figure.reference, keys.method);
+  } else if (Space::kPosesRequired || (panels == nullptr && needs_motion(figure.layers))) {
+    reader.fail("/poses", missing_poses_reason<Pose>());
+  }
+  scene.keys = std::move(keys);
+  scene.figure = std::move(figure);
+  if (panels != nullptr) {
+    scene.panels = read_pose_panels(reader, *panels, "/panels", scene);
+  } else {
+    scene.panels = {scene_panel(scene, "")};
+  }
+  read_scene_tail<PoseLayer>(reader, document, scene, false);
+  return scene;
+}
 
 }  // namespace
 
@@ -44,78 +151,12 @@ bool is_pose_scene(const Json& document) {
          JsonReader::member(document, "keyframes") == nullptr;
 }
 
-
 Scene read_pose_scene(const JsonReader& reader, const Json& document) {
-  // "dimension": 2 (the default) or 3 (space_pose_reader.hpp).
+  // "dimension": 2 (the default) or 3.
   if (const Json* dimension = JsonReader::member(document, "dimension")) {
-    if (reader.integer(*dimension, "/dimension", 2, 3) == 3) return read_space_pose_scene(reader, document);
+    if (reader.integer(*dimension, "/dimension", 2, 3) == 3) return read_pose_scene_of<Affine3>(reader, document);
   }
-  reader.check_fields(document, "", kPoseSceneFields);
-  Scene scene;
-  PlanePoseKeys keys;
-  scene.path = reader.file();
-  if (const Json* schema = JsonReader::member(document, "$schema")) reader.string(*schema, "/$schema");
-  if (const Json* description = JsonReader::member(document, "description")) {
-    scene.description = reader.string(*description, "/description");
-  }
-  const Json* method = JsonReader::member(document, "method");
-  if (method == nullptr) {
-    reader.fail("/method", "missing required field (a pose method such as \"SAM\")");
-  }
-  keys.method = detail::read_pose_method(reader, *method, "/method");
-  if (const Json* reference = JsonReader::member(document, "reference_triangle")) {
-    scene.reference_triangle =
-        detail::read_reference_triangle(reader, *reference, "/reference_triangle");
-  }
-  if (const Json* shapes = JsonReader::member(document, "shapes")) {
-    scene.shapes = detail::read_shapes(reader, *shapes, "/shapes", scene.reference_triangle);
-  } else {
-    scene.shapes = {ShapeOutline{std::vector<Point>(scene.reference_triangle.begin(),
-                                                    scene.reference_triangle.end()),
-                                 true, std::nullopt, std::nullopt}};
-  }
-  if (const Json* samples = JsonReader::member(document, "samples")) {
-    scene.samples = reader.integer(*samples, "/samples", kMinSamples, kMaxSamples);
-  }
-  if (const Json* subdivisions = JsonReader::member(document, "subdivisions")) {
-    keys.subdivisions = reader.integer(*subdivisions, "/subdivisions", 0, kMaxSubdivisions);
-  }
-  if (const Json* timing = JsonReader::member(document, "timing")) {
-    scene.timing = detail::read_timing(reader, *timing, "/timing");
-  }
-  if (const Json* title = JsonReader::member(document, "title")) scene.title = reader.string(*title, "/title");
-  if (const Json* canvas = JsonReader::member(document, "canvas")) {
-    scene.canvas = detail::read_canvas(reader, *canvas, "/canvas");
-  }
-  if (const Json* layers = JsonReader::member(document, "layers")) {
-    scene.pose_layers = detail::read_pose_layers(reader, *layers, "/layers");
-  } else {
-    scene.pose_layers = {ShapesLayer{}, PosesLayer{}};
-  }
-  const Json* panels = JsonReader::member(document, "panels");
-  const Json* poses = JsonReader::member(document, "poses");
-  if (poses != nullptr) {
-    keys.poses = detail::read_poses<Affine2>(reader, *poses, "/poses", scene.reference_triangle, keys.method);
-  } else if (panels == nullptr && needs_motion(scene.pose_layers)) {
-    reader.fail("/poses", "missing required field (an array of poses {\"t\": ..., \"matrix\": [[a, b, "
-                   "tx], [c, d, ty]]} or {\"t\": ..., \"triangle\": [[x, y], [x, y], [x, y]]})");
-  }
-  scene.keys = std::move(keys);
-  if (panels != nullptr) {
-    scene.panels = read_pose_panels(reader, *panels, "/panels", scene);
-  } else {
-    scene.panels = {scene_panel(scene, "")};
-  }
-  if (const Json* golden = JsonReader::member(document, "golden")) read_golden(reader, *golden, scene.golden);
-  if (const Json* claims = JsonReader::member(document, "claims")) {
-    scene.claims = read_claims<PoseLayer>(reader, *claims, scene);
-  }
-  if (const Json* lint = JsonReader::member(document, "lint")) scene.lint = read_lint(reader, *lint);
-  if (const Json* animation = JsonReader::member(document, "animation")) {
-    scene.animation = detail::read_animation<PoseLayer>(reader, *animation, "/animation", false);
-    scene.has_animation = true;
-  }
-  return scene;
+  return read_pose_scene_of<Affine2>(reader, document);
 }
 
 }  // namespace pita::scene::detail

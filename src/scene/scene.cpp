@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <set>
+#include <stdexcept>
 #include <string_view>
 #include <type_traits>
 #include <utility>
@@ -34,7 +35,13 @@ using detail::Interval;
 Panel scene_panel(const Scene& scene, std::string pointer) {
   Panel panel;
   panel.keys = scene.keys;
-  panel.shapes = scene.shapes;
+  // The scene's shapes, and no layers of its own.
+  panel.figure = std::visit(
+      overloaded{[](const ArrowFigure& figure) -> PanelFigure { return ArrowPanelFigure{std::nullopt, figure.shapes}; },
+                 []<class Pose>(const PoseFigure<Pose>& figure) -> PanelFigure {
+                   return PosePanelFigure<Pose>{std::nullopt, figure.shapes};
+                 }},
+      scene.figure);
   panel.timing = scene.timing;
   panel.samples = scene.samples.value_or(kDefaultFigureSamples);
   panel.samples_pointer = scene.samples ? "/samples" : "";
@@ -53,8 +60,38 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
   if (!document.is_object()) {
     reader.fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
   }
-  return detail::is_pose_scene(document) ? detail::read_pose_scene(reader, document)
-                                         : detail::read_arrow_scene(reader, document);
+  Scene scene = detail::is_pose_scene(document) ? detail::read_pose_scene(reader, document)
+                                               : detail::read_arrow_scene(reader, document);
+  const bool panels_agree = std::all_of(scene.panels.begin(), scene.panels.end(), [](const Panel& panel) {
+    return figure_agrees(panel.keys, panel.figure);
+  });
+  if (!figure_agrees(scene.keys, scene.figure) || !panels_agree) {
+    throw std::logic_error("the scene reader gave " + scene.path + " figure data of another kind than its keys");
+  }
+  return scene;
+}
+
+const std::vector<ShapeOutline>& outlines_of(const Panel& panel) {
+  static const std::vector<ShapeOutline> kNone;
+  return std::visit(overloaded{[](const ArrowPanelFigure& figure) -> const std::vector<ShapeOutline>& {
+                                 return figure.shapes;
+                               },
+                               [](const PosePanelFigure<Affine2>& figure) -> const std::vector<ShapeOutline>& {
+                                 return figure.shapes;
+                               },
+                               [](const PosePanelFigure<Affine3>&) -> const std::vector<ShapeOutline>& {
+                                 return kNone;
+                               }},
+                    panel.figure);
+}
+
+bool figure_agrees(const MotionKeys& keys, const SceneFigure& figure) {
+  return std::visit([&]<class Keys>(const Keys&) { return std::holds_alternative<FigureOf<Keys>>(figure); }, keys);
+}
+
+bool figure_agrees(const MotionKeys& keys, const PanelFigure& figure) {
+  return std::visit([&]<class Keys>(const Keys&) { return std::holds_alternative<PanelFigureOf<Keys>>(figure); },
+                    keys);
 }
 
 Method resolve_method(std::string_view name) {
@@ -127,27 +164,20 @@ std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
                      error.first() + 1, info(method).id);
 }
 
-namespace {
-
-// The panel's own layers of each family, when it gives "layers".
-const std::optional<std::vector<Layer>>& own_layers(const Panel& panel, std::type_identity<Layer>) {
-  return panel.layers;
-}
-const std::optional<std::vector<PoseLayer>>& own_layers(const Panel& panel, std::type_identity<PoseLayer>) {
-  return panel.pose_layers;
-}
-const std::vector<Layer>& scene_layers(const Scene& scene, std::type_identity<Layer>) { return scene.layers; }
-const std::vector<PoseLayer>& scene_layers(const Scene& scene, std::type_identity<PoseLayer>) {
-  return scene.pose_layers;
-}
-
-}  // namespace
-
 template <class LayerType>
 LayersOf<LayerType> layers_of(const Scene& scene, const Panel& panel) {
-  const auto& own = own_layers(panel, std::type_identity<LayerType>{});
-  if (own) return {*own, true, panel.pointer};
-  return {scene_layers(scene, std::type_identity<LayerType>{}), false, ""};
+  return std::visit(
+      [&]<class Keys>(const Keys&) -> LayersOf<LayerType> {
+        const FigureOf<Keys>& figure = figure_of<Keys>(scene);
+        const auto& own = figure_of<Keys>(panel).layers;
+        if constexpr (std::is_same_v<typename decltype(figure.layers)::value_type, LayerType>) {
+          if (own) return {*own, true, panel.pointer};
+          return {figure.layers, false, ""};
+        } else {
+          throw std::logic_error("layers_of: the panel at \"" + panel.pointer + "\" draws layers of another kind");
+        }
+      },
+      panel.keys);
 }
 template LayersOf<Layer> layers_of(const Scene&, const Panel&);
 template LayersOf<PoseLayer> layers_of(const Scene&, const Panel&);

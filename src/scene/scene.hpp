@@ -44,21 +44,13 @@ struct Scene {
   std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
   Timing timing;                    // "timing": how scene time runs through the motion
 
-  // Pose scenes in the plane: the reference triangle of "triangle" poses and
-  // shapes; shapes (arrow scenes: carried by the handle; default none) and layers.
-  std::array<Point, 3> reference_triangle{Point{0.0, 0.0}, Point{1.0, 0.0}, Point{0.0, 1.0}};
-  std::vector<ShapeOutline> shapes;        // pose scenes: default the reference triangle
-  std::vector<PoseLayer> pose_layers;      // default: shapes, then poses
-  // Pose scenes in space (docs/reference/pose-scenes.md "3D pose scenes").
-  std::vector<Solid> solids;  // "shapes" of a 3D scene; default the reference tetrahedron
-  Camera camera;
-  std::array<Eigen::Vector3d, 4> reference_tetrahedron{Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(1.0, 0.0, 0.0),
-                                                       Eigen::Vector3d(0.0, 1.0, 0.0), Eigen::Vector3d(0.0, 0.0, 1.0)};
-
-  // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores it.
+  // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores
+  // it (but for a pose scene's reference simplex, which poses given as
+  // simplices map). `figure` holds the figure data of the family of `keys`:
+  // reach it with figure_of below.
   std::string title;                // "" = none; drawn above the panels
   Canvas canvas;
-  std::vector<Layer> layers;        // in drawing order; default: pattern, then keyframes
+  SceneFigure figure;
   std::vector<Panel> panels;        // at least one: the scene itself when it has no "panels"
 
   // "golden": this scene's tolerances for `pita check` (docs/reference/check.md "Goldens");
@@ -77,6 +69,49 @@ struct Scene {
   LintSettings lint;
 };
 
+
+// The figure data of the family of `Keys`, an alternative of MotionKeys
+// (ArrowFigure for KeyframeKeys and PointKeys, PoseFigure<Pose> for
+// PoseKeys<Pose>): the scene's, or the panel's (PanelFigureOf<Keys>). The
+// figure's type follows from the keys' type, so that a site that visits the
+// keys cannot take another family's figure; the readers give every scene and
+// panel the figure of its keys' family (parse_scene checks it once: see
+// figure_agrees), and a panel overrides keys only within its family.
+template <class Keys>
+const FigureOf<Keys>& figure_of(const Scene& scene) {
+  return std::get<FigureOf<Keys>>(scene.figure);
+}
+template <class Keys>
+FigureOf<Keys>& figure_of(Scene& scene) {
+  return std::get<FigureOf<Keys>>(scene.figure);
+}
+template <class Keys>
+const PanelFigureOf<Keys>& figure_of(const Panel& panel) {
+  return std::get<PanelFigureOf<Keys>>(panel.figure);
+}
+template <class Keys>
+PanelFigureOf<Keys>& figure_of(Panel& panel) {
+  return std::get<PanelFigureOf<Keys>>(panel.figure);
+}
+// The same, the family given by the keys a visit holds: figure_of(scene, keys).
+template <class Keys>
+const FigureOf<Keys>& figure_of(const Scene& scene, const Keys&) {
+  return figure_of<Keys>(scene);
+}
+template <class Keys>
+const PanelFigureOf<Keys>& figure_of(const Panel& panel, const Keys&) {
+  return figure_of<Keys>(panel);
+}
+
+// The outlines of the plane that a panel draws, images included: an arrow
+// panel's shapes (carried by the handle), a plane pose panel's; none in
+// space, whose shapes are solids.
+const std::vector<ShapeOutline>& outlines_of(const Panel& panel);
+
+// Whether the figure data are of the family of the keys (what the readers
+// guarantee of every scene and panel).
+bool figure_agrees(const MotionKeys& keys, const SceneFigure& figure);
+bool figure_agrees(const MotionKeys& keys, const PanelFigure& figure);
 
 // The layers a panel draws, and where they are in the file: the panel's own
 // "layers" (at PANEL/layers), else the scene's (at /layers). LayerType is

@@ -1,7 +1,8 @@
 // The readers of a scene document, one concept per file (internal to
-// src/scene/): arrow scenes (arrow_scene_reader.cpp), pose scenes
-// (pose_scene_reader.cpp), panels of both (panel_reader.cpp) and the golden
-// tolerances (golden_reader.cpp). scene.cpp parses the text (json_text.cpp)
+// src/scene/): arrow scenes (arrow_scene_reader.cpp), pose scenes of the
+// plane and of space (pose_scene_reader.cpp), panels of both
+// (panel_reader.cpp), the golden tolerances (golden_reader.cpp) and the
+// tail every scene shares (scene_tail_reader.cpp). scene.cpp parses the text (json_text.cpp)
 // and chooses the reader.
 #pragma once
 
@@ -47,5 +48,12 @@ std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, cons
 
 // "lint": {"min_content_share", "min_frame_pixels", "allow": [{"check", "pointer", "reason"}]}.
 LintSettings read_lint(const JsonReader& reader, const Json& value);
+
+// What every scene ends with, after its panels (scene_tail_reader.cpp):
+// "golden", "claims", "lint" and "animation" (or its default). `moving`:
+// whether a keyframe of a panel moves (never in a pose scene). LayerType: the
+// family of the scene's layers (Layer: an arrow scene; PoseLayer: a pose scene).
+template <class LayerType>
+void read_scene_tail(const JsonReader& reader, const Json& document, Scene& scene, bool moving);
 
 }  // namespace pita::scene::detail

@@ -1,7 +1,8 @@
-// Reading 3D pose scenes ("dimension": 3; docs/reference/pose-scenes.md "3D pose scenes"): the
-// reference tetrahedron, the poses (3x4 matrices or tetrahedra), and the
-// scene itself. Internal to src/scene/; errors are SceneErrors naming the
-// JSON Pointer of the bad value.
+// Reading what only 3D pose scenes have ("dimension": 3; docs/reference/pose-scenes.md "3D
+// pose scenes"): the solids ("shapes") and the camera. The scene itself, its
+// reference tetrahedron and its poses are read as in the plane, by one reader
+// over the pose (pose_scene_reader.cpp, pose_reader.hpp). Internal to
+// src/scene/; errors are SceneErrors naming the JSON Pointer of the bad value.
 #pragma once
 
 #include <array>
@@ -10,23 +11,21 @@
 
 #include <Eigen/Core>
 
-#include "core/sam_family_motion.hpp"
+#include "scene/figure.hpp"
 #include "scene/json_reader.hpp"
-#include "scene/scene.hpp"
 
 namespace pita::scene::detail {
 
-// "reference_tetrahedron": four points [x, y, z], not coplanar.
-std::array<Eigen::Vector3d, 4> read_reference_tetrahedron(const JsonReader& reader, const Json& value,
-                                                          const std::string& pointer);
+// "shapes" of a 3D scene: 1 to kMaxSolids {"solid": "cube" | "tetrahedron" |
+// "F" | "house"} or {"polyhedron": {"vertices", "faces"}}, each with an
+// optional "color"; the builtin tetrahedron is the reference one.
+std::vector<Solid> read_solids(const JsonReader& reader, const Json& value, const std::string& pointer,
+                               const std::array<Eigen::Vector3d, 4>& reference);
 
-// "poses" of space: read_poses<Affine3> (pose_reader.hpp).
+// The solids of a 3D scene without "shapes": the reference tetrahedron.
+std::vector<Solid> default_solids(const std::array<Eigen::Vector3d, 4>& reference);
 
-// The method of a 3D scene or panel: one of the SAM family (in_space).
-PoseMethod read_space_pose_method(const JsonReader& reader, const Json& value, const std::string& pointer);
-
-// The whole 3D pose scene (the document has "dimension": 3). Refused at
-// /dimension unless the reader's options allow 3D scenes.
-Scene read_space_pose_scene(const JsonReader& reader, const Json& document);
+// "camera": {"azimuth", "elevation", "distance", "projection", "target", "auto", "shadow"}.
+Camera read_camera(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 }  // namespace pita::scene::detail

@@ -44,10 +44,11 @@ Point world_of(const render::ViewTransform& view, Point canvas) {
 
 std::string point_json(Point p) { return fmt::format("[{}, {}]", number_json(p.real()), number_json(p.imag())); }
 
-// The reference triangle's corners moved by a pose.
-std::array<Point, 3> corners(const scene::Scene& scene, const Affine2& pose) {
+// The reference triangle's corners moved by a pose of the scene's.
+std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKeys& keys, const Affine2& pose) {
+  const std::array<Point, 3>& reference = scene::figure_of(scene, keys).reference;
   std::array<Point, 3> out;
-  for (int j = 0; j < 3; ++j) out[j] = apply(pose, scene.reference_triangle[j]);
+  for (int j = 0; j < 3; ++j) out[j] = apply(pose, reference[j]);
   return out;
 }
 
@@ -88,7 +89,7 @@ std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
     };
     const auto corner_handles = [&](const scene::PlanePoseKeys& poses) {
       for (std::size_t k = 0; k < poses.poses.size(); ++k) {
-        const auto points = corners(scene, poses.poses[k].pose);
+        const auto points = corners(scene, poses, poses.poses[k].pose);
         for (int j = 0; j < 3; ++j) {
           all.push_back({i, fmt::format("{}/{}", keys, k), fmt::format("corner{}", j), view(points[j])});
         }
@@ -134,10 +135,10 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
   const auto& poses = std::get<scene::PlanePoseKeys>(drawn.keys);
   const int corner = part.back() - '0';
   if (given.contains("triangle")) return {{fmt::format("{}/triangle/{}", pointer, corner), point_json(world)}};
-  auto moved = corners(scene, poses.poses.at(index).pose);
+  auto moved = corners(scene, poses, poses.poses.at(index).pose);
   moved[static_cast<std::size_t>(corner)] = world;
   // The affinity that maps the reference triangle r onto `moved`.
-  const auto& r = scene.reference_triangle;
+  const auto& r = scene::figure_of(scene, poses).reference;
   Eigen::Matrix2d R, M;
   R << (r[1] - r[0]).real(), (r[2] - r[0]).real(), (r[1] - r[0]).imag(), (r[2] - r[0]).imag();
   M << (moved[1] - moved[0]).real(), (moved[2] - moved[0]).real(), (moved[1] - moved[0]).imag(),

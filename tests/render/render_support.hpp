@@ -28,7 +28,7 @@ inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<sce
   scene::Scene s;
   s.path = "test.json";
   s.keys = panels.front().keys;
-  s.layers = std::move(layers);
+  scene::figure_of<scene::KeyframeKeys>(s).layers = std::move(layers);
   s.panels = std::move(panels);
   return s;
 }

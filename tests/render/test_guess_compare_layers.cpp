@@ -68,7 +68,7 @@ Arrow core_frame(Method method, const std::vector<Keyframe>& keyframes, double t
 TEST(GuessesLayer, Fig16PrintsEachPitasDiscrepanciesFromTheGuesses) {
   const scene::Scene scene = scene::load_scene(kScenes / "fig16-inbetweening.json");
   ASSERT_EQ(scene.panels.size(), 8u);
-  const auto& layer = std::get<scene::GuessesLayer>(scene.layers.at(2));
+  const auto& layer = std::get<scene::GuessesLayer>(scene::figure_of<scene::KeyframeKeys>(scene).layers.at(2));
   ASSERT_EQ(layer.guesses.size(), 2u);
   std::vector<double> all;
   for (const scene::Panel& panel : scene.panels) {
@@ -99,7 +99,7 @@ TEST(GuessesLayer, Fig16PrintsEachPitasDiscrepanciesFromTheGuesses) {
 TEST(GuessesLayer, Fig18FourMovesBringDQuarterCloseToTheTarget) {
   const scene::Scene scene = scene::load_scene(kScenes / "fig18-editing.json");
   ASSERT_EQ(scene.panels.size(), 2u);
-  const scene::Guess target = std::get<scene::GuessesLayer>(scene.layers.at(2)).guesses.at(0);
+  const scene::Guess target = std::get<scene::GuessesLayer>(scene::figure_of<scene::KeyframeKeys>(scene).layers.at(2)).guesses.at(0);
   ASSERT_EQ(target.t, 0.25);
   std::vector<double> distances;
   for (const scene::Panel& panel : scene.panels) {

@@ -232,7 +232,7 @@ TEST(PatternLayer, OverlayWhoseMethodCannotTakeTheKeyframesIsTheLayersError) {
   p.pointer = "/panels/1";
   scene::PatternLayer overlay;
   overlay.method = Method::P6;  // three keyframes, the panel has two
-  p.layers = std::vector<scene::Layer>{scene::KeyframesLayer{}, overlay};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{scene::KeyframesLayer{}, overlay};
   try {
     panel_drawing(scene_with({}, {p}), p);
     FAIL() << "expected a RenderError";
@@ -249,7 +249,7 @@ TEST(PatternLayer, OverlayOptionItsMethodDoesNotReadIsRefused) {
   scene::PatternLayer overlay;
   overlay.options.values.permutation = Permutation::CBA;
   overlay.options.given = kPermutationOption;
-  p.layers = std::vector<scene::Layer>{overlay};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{overlay};
   try {
     panel_drawing(scene_with({}, {p}), p);
     FAIL() << "expected a RenderError";
@@ -260,16 +260,16 @@ TEST(PatternLayer, OverlayOptionItsMethodDoesNotReadIsRefused) {
   }
   // The same option with a method that reads it is drawn.
   overlay.method = Method::LaT1;
-  p.layers = std::vector<scene::Layer>{overlay};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{overlay};
   EXPECT_EQ(shapes<Polyline>(panel_drawing(scene_with({}, {p}), p)).size(), frames_of(p, 9).size());
   // The means: read by SMA and P9, and by a chain's steady morphs.
   overlay = scene::PatternLayer{};
   overlay.options.given = kPathMeanOption;
-  p.layers = std::vector<scene::Layer>{overlay};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{overlay};
   EXPECT_THROW(panel_drawing(scene_with({}, {p}), p), RenderError);
   scene::Panel chained = panel(Method::P6, {{0.0, Arrow{{0, 0}, 1.0, 0.0}}, {1.0, Arrow{{2, 0}, 0.5, 1.0}},
                                             {2.0, Arrow{{3, 1}, 0.7, 1.5}}, {3.0, Arrow{{5, 0}, 1.0, 2.0}}});
-  chained.layers = std::vector<scene::Layer>{overlay};
+  scene::figure_of<scene::KeyframeKeys>(chained).layers = std::vector<scene::Layer>{overlay};
   EXPECT_NO_THROW(panel_drawing(scene_with({}, {chained}), chained));
 }
 
@@ -282,7 +282,7 @@ TEST(TrajectoryLayer, OwnMethodDrawsThatMethodsPath) {
   scene::TrajectoryLayer path;
   path.method = Method::P1;
   path.samples = 5;
-  p.layers = std::vector<scene::Layer>{path, scene::LegendLayer{}};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{path, scene::LegendLayer{}};
   const Drawing drawing = panel_drawing(scene_with({}, {p}), p);
   const auto lines = shapes<Polyline>(drawing);
   ASSERT_EQ(lines.size(), 1u);
@@ -295,7 +295,7 @@ TEST(TrajectoryLayer, OwnMethodDrawsThatMethodsPath) {
   path = scene::TrajectoryLayer{};
   path.options.values.permutation = Permutation::CBA;
   path.options.given = kPermutationOption;
-  p.layers = std::vector<scene::Layer>{path};
+  scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{path};
   try {
     panel_drawing(scene_with({}, {p}), p);
     FAIL() << "expected a RenderError";

@@ -46,11 +46,13 @@ scene::Scene sam_scene(std::vector<scene::PoseLayer> layers, PoseMethod method =
   keys.method = method;
   keys.poses = {{0.0, affinity(1.0, 0.2, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(-0.5, -1.4, 5.0, 1.1, 0.3, 2.0)}};
   s.keys = keys;
-  s.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
-  s.pose_layers = std::move(layers);
+  scene::PoseFigure<Affine2> figure;
+  figure.shapes = {scene::ShapeOutline{{{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
+  figure.layers = std::move(layers);
   scene::Panel panel;
   panel.keys = keys;
-  panel.shapes = s.shapes;
+  panel.figure = scene::PosePanelFigure<Affine2>{std::nullopt, figure.shapes};
+  s.figure = std::move(figure);
   panel.samples = 5;
   s.panels = {panel};
   return s;
@@ -68,7 +70,7 @@ TEST(PoseDrawing, ShapesFollowTheSam) {
     EXPECT_TRUE(outline.closed);
     const Eigen::Matrix3d pose = oracle::pow(A, i / 4.0) * B;
     for (std::size_t k = 0; k < 3; ++k) {
-      EXPECT_LT(std::abs(outline.points[k] - through(pose, scene.shapes[0].points[k])), 1e-11)
+      EXPECT_LT(std::abs(outline.points[k] - through(pose, scene::figure_of<scene::PlanePoseKeys>(scene).shapes[0].points[k])), 1e-11)
           << "frame " << i << ", vertex " << k;
     }
   }
@@ -124,7 +126,7 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
   layer.columns = 3;
   layer.rows = 2;
   layer.regular = true;
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 6u);
   const auto corner = [&](std::size_t item) {
@@ -152,7 +154,7 @@ TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
   layer.regular = true;
   const scene::Color red{0.9, 0.0, 0.0, 1.0};
   layer.corner = scene::LineStyle{red, 3.5, 1.0, {}};
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 12u);
   for (std::size_t k = 0; k < drawing.items.size(); ++k) {
@@ -226,7 +228,7 @@ TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   EXPECT_LT(std::abs(triangle.points[2] - Point{shift, 1.0}), 1e-13);
   // Power 1: the mid-way pose e^{(log B + log C)/2}, by Eigen's generic log/exp.
   layer.power = 1;
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   const Drawing middle = pose_panel_drawing(scene, scene.panels[0]);
   const Eigen::Matrix3d expected = oracle::exp(Eigen::Matrix3d(0.5 * (oracle::log(homogeneous(B)) + oracle::log(homogeneous(C)))));
   const auto& mid = std::get<Polyline>(middle.items.at(0).shape);
@@ -234,17 +236,17 @@ TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   // SAM squared at the middle: the last pose.
   layer.method = PoseMethod::sam;
   layer.power = 2;
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   const Drawing sam = pose_panel_drawing(scene, scene.panels[0]);
   EXPECT_LT(std::abs(std::get<Polyline>(sam.items.at(0).shape).points[1] - Point{7.0, 0.0}), 1e-13);
   // Samples over the knots when no "at" is given; a method that needs other
   // pose counts is refused, naming the layer.
   layer.at.clear();
   layer.power = 1;
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 5u);
   layer.method = PoseMethod::biarc_sam;
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   try {
     (void)pose_panel_drawing(scene, scene.panels[0]);
     FAIL() << "biarc-SAM takes 3 poses";
@@ -273,7 +275,7 @@ TEST(PoseDrawing, VersusLayerPowerThatOverflowsIsRefused) {
     EXPECT_NE(std::string(error.what()).find("to the power 16 is not finite"), std::string::npos) << error.what();
   }
   layer.power = 8;  // 1e240: finite, drawn
-  scene.pose_layers = {layer};
+  scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   EXPECT_EQ(pose_panel_drawing(scene, scene.panels[0]).items.size(), 1u);
 }
 
@@ -288,7 +290,7 @@ TEST(PoseDrawing, AraLayerPrintsTheMeasuredUnsteadiness) {
   layer.grid = 2;
   scene::Scene scene = sam_scene({layer}, PoseMethod::linear);
   plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
-  scene.panels[0].shapes = {scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
+  scene::figure_of<scene::PlanePoseKeys>(scene.panels[0]).shapes = {scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 1u);
   const auto& label = std::get<Label>(drawing.items[0].shape);
@@ -314,7 +316,7 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
   layer.trace_samples = 129;
   const auto drawn = [&](PoseMethod method) {
     scene::Scene scene = sam_scene({layer}, method);
-    scene.reference_triangle = {Point(-0.6, 0.9), Point(2.4, 0.9), Point(0.9, 1.8)};
+    scene::figure_of<scene::PlanePoseKeys>(scene).reference = {Point(-0.6, 0.9), Point(2.4, 0.9), Point(0.9, 1.8)};
     plane_keys(scene.panels[0]).poses = {{0.0, Affine2::identity()}, {1.0, last}};
     return pose_panel_drawing(scene, scene.panels[0]);
   };
@@ -527,7 +529,7 @@ TEST(SpacePanelDrawing, VelocitiesAreArrowsPerVertexAndFrame) {
 // rather than read (the reader refuses it), is refused at the layer.
 TEST(SpacePanelDrawing, LayerOfThePlaneOnlyIsRefused) {
   scene::Scene scene = space_scene(R"([{"type": "shapes"}])");
-  scene.pose_layers.push_back(scene::LabelLayer{});
+  scene::figure_of<scene::SpacePoseKeys>(scene).layers.push_back(scene::LabelLayer{});
   try {
     (void)space_panel_drawing(scene, scene.panels[0]);
     FAIL() << "no error";

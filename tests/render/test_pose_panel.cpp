@@ -46,11 +46,11 @@ TEST(PosePanel, SpaceBodyIsTheSolidsVerticesThroughTheCamera) {
   const scene::Scene scene = moving_cube(kFromX);
   const motion::Stage stage(scene);
   const PosePanel<Affine3> panel(stage, 0, nullptr);
-  ASSERT_EQ(scene.solids.size(), 1u);
+  ASSERT_EQ(scene::figure_of<scene::SpacePoseKeys>(scene).shapes.size(), 1u);
   const auto points = panel.body_points();
-  ASSERT_EQ(points.size(), scene.solids[0].vertices.size());
+  ASSERT_EQ(points.size(), scene::figure_of<scene::SpacePoseKeys>(scene).shapes[0].vertices.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
-    EXPECT_EQ(points[k], scene.solids[0].vertices[k]);
+    EXPECT_EQ(points[k], scene::figure_of<scene::SpacePoseKeys>(scene).shapes[0].vertices[k]);
     EXPECT_LT(std::abs(panel.image(points[k]) - Point(points[k].y(), points[k].z())), 1e-12);
   }
 }

@@ -77,9 +77,9 @@ std::string failure(Read&& read, const std::string& file = "s.json") {
 template <typename T>
 T only_layer(const std::string& layer) {
   const Scene scene = parse_scene(p6_with(R"(, "layers": [)" + layer + "]"), "s.json");
-  EXPECT_EQ(scene.layers.size(), 1U);
-  EXPECT_TRUE(std::holds_alternative<T>(scene.layers.at(0)));
-  return std::get<T>(scene.layers.at(0));
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers.size(), 1U);
+  EXPECT_TRUE(std::holds_alternative<T>(figure_of<KeyframeKeys>(scene).layers.at(0)));
+  return std::get<T>(figure_of<KeyframeKeys>(scene).layers.at(0));
 }
 
 }  // namespace pita::scene::test

@@ -94,17 +94,17 @@ TEST(Scene, HandleAndShapesAreRead) {
   ASSERT_TRUE(arrow_keys(scene).given_handle.has_value());
   EXPECT_EQ(arrow_keys(scene).given_handle->p, make_point(5, 5));
   EXPECT_EQ(arrow_keys(scene).given_handle->m, 2.0);
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  EXPECT_EQ(scene.shapes[0].points.size(), 4u);
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene).shapes.size(), 1u);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).shapes[0].points.size(), 4u);
   ASSERT_EQ(scene.panels.size(), 1u);
   EXPECT_EQ(arrow_keys(scene.panels[0]).handle().p, make_point(5, 5));
-  EXPECT_EQ(scene.panels[0].shapes.size(), 1u);
-  ASSERT_EQ(scene.layers.size(), 2u);
-  ASSERT_TRUE(std::holds_alternative<ShapesLayer>(scene.layers[0]));
-  EXPECT_TRUE(std::get<ShapesLayer>(scene.layers[0]).fill.has_value());
-  ASSERT_TRUE(std::holds_alternative<HandleLayer>(scene.layers[1]));
-  EXPECT_EQ(std::get<HandleLayer>(scene.layers[1]).width, 3.0);
-  EXPECT_FALSE(std::get<HandleLayer>(scene.layers[1]).shapes);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene.panels[0]).shapes.size(), 1u);
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene).layers.size(), 2u);
+  ASSERT_TRUE(std::holds_alternative<ShapesLayer>(figure_of<KeyframeKeys>(scene).layers[0]));
+  EXPECT_TRUE(std::get<ShapesLayer>(figure_of<KeyframeKeys>(scene).layers[0]).fill.has_value());
+  ASSERT_TRUE(std::holds_alternative<HandleLayer>(figure_of<KeyframeKeys>(scene).layers[1]));
+  EXPECT_EQ(std::get<HandleLayer>(figure_of<KeyframeKeys>(scene).layers[1]).width, 3.0);
+  EXPECT_FALSE(std::get<HandleLayer>(figure_of<KeyframeKeys>(scene).layers[1]).shapes);
 }
 
 TEST(Scene, HandleDefaultsToTheFirstKeyframe) {
@@ -116,7 +116,7 @@ TEST(Scene, HandleDefaultsToTheFirstKeyframe) {
   EXPECT_EQ(arrow_keys(scene.panels[0]).handle().w, arrow_keys(scene).keyframes[0].arrow.w);
   // Arrow scenes have no shapes unless they give them (pose scenes default to
   // the reference triangle).
-  EXPECT_TRUE(parse_scene(p6_with(""), "s.json").shapes.empty());
+  EXPECT_TRUE(figure_of<KeyframeKeys>(parse_scene(p6_with(""), "s.json")).shapes.empty());
 }
 
 TEST(Scene, MovingKeyframesGiveTargetsToEveryPanel) {

@@ -52,11 +52,11 @@ TEST(FigureDefaults, SceneWithoutFigureFields) {
   EXPECT_EQ(scene.canvas.columns, 0);
   EXPECT_EQ(scene.canvas.font, "Sans");
 
-  ASSERT_EQ(scene.layers.size(), 2U);
-  ASSERT_TRUE(std::holds_alternative<PatternLayer>(scene.layers[0]));
-  ASSERT_TRUE(std::holds_alternative<KeyframesLayer>(scene.layers[1]));
-  expect_same_line(std::get<PatternLayer>(scene.layers[0]).line, PatternLayer{}.line);
-  EXPECT_EQ(std::get<KeyframesLayer>(scene.layers[1]).colors, KeyframesLayer{}.colors);
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene).layers.size(), 2U);
+  ASSERT_TRUE(std::holds_alternative<PatternLayer>(figure_of<KeyframeKeys>(scene).layers[0]));
+  ASSERT_TRUE(std::holds_alternative<KeyframesLayer>(figure_of<KeyframeKeys>(scene).layers[1]));
+  expect_same_line(std::get<PatternLayer>(figure_of<KeyframeKeys>(scene).layers[0]).line, PatternLayer{}.line);
+  EXPECT_EQ(std::get<KeyframesLayer>(figure_of<KeyframeKeys>(scene).layers[1]).colors, KeyframesLayer{}.colors);
 
   ASSERT_EQ(scene.panels.size(), 1U);
   const Panel& panel = scene.panels[0];
@@ -65,7 +65,7 @@ TEST(FigureDefaults, SceneWithoutFigureFields) {
   EXPECT_EQ(track_keys(panel).method, Method::P6);
   EXPECT_EQ(method_id(panel.keys), "P6");
   EXPECT_EQ(panel.samples, kDefaultFigureSamples);
-  EXPECT_FALSE(panel.layers.has_value());
+  EXPECT_FALSE(figure_of<KeyframeKeys>(panel).layers.has_value());
   expect_same_keyframes(arrow_keys(panel).keyframes, arrow_keys(scene).keyframes);
 }
 
@@ -76,7 +76,7 @@ TEST(FigureDefaults, ScenePanelTakesTheScenesSamplesAndOptions) {
   EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, Anchor::midpoint);
 }
 
-TEST(FigureDefaults, EmptyLayersDrawNothing) { EXPECT_TRUE(p6(R"(, "layers": [])").layers.empty()); }
+TEST(FigureDefaults, EmptyLayersDrawNothing) { EXPECT_TRUE(figure_of<KeyframeKeys>(p6(R"(, "layers": [])")).layers.empty()); }
 
 TEST(FigureDefaults, WithMethodMovesTheScenePanel) {
   const Scene scene = with_method(p6(""), Method::P1);
@@ -128,11 +128,11 @@ TEST(Canvas, ViewAutoAndShared) {
 TEST(Layers, KeepTheirOrder) {
   const Scene scene = p6(R"(, "layers": [{"type": "legend"}, {"type": "stroke"},
       {"type": "pattern"}, {"type": "legend"}])");
-  ASSERT_EQ(scene.layers.size(), 4U);
-  EXPECT_EQ(scene.layers[0].index(), 7U);
-  EXPECT_EQ(scene.layers[1].index(), 3U);
-  EXPECT_EQ(scene.layers[2].index(), 0U);
-  EXPECT_EQ(scene.layers[3].index(), 7U);
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene).layers.size(), 4U);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers[0].index(), 7U);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers[1].index(), 3U);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers[2].index(), 0U);
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers[3].index(), 7U);
 }
 
 // ------------------------------------------------------------ panels
@@ -152,7 +152,7 @@ TEST(Panels, MethodNames) {
   for (const Panel& panel : scene.panels) {
     expect_same_keyframes(arrow_keys(panel).keyframes, arrow_keys(scene).keyframes);
     EXPECT_EQ(panel.samples, 5);
-    EXPECT_FALSE(panel.layers.has_value());
+    EXPECT_FALSE(figure_of<KeyframeKeys>(panel).layers.has_value());
   }
 }
 
@@ -211,11 +211,11 @@ TEST(Panels, ObjectsOverrideTheScene) {
   EXPECT_EQ(sma.title, "SMA");
   EXPECT_EQ(arrow_keys(sma).keyframes.size(), 2U);
 
-  ASSERT_TRUE(scene.panels[6].layers.has_value());
-  ASSERT_EQ(scene.panels[6].layers->size(), 1U);
-  EXPECT_TRUE(std::holds_alternative<TrajectoryLayer>(scene.panels[6].layers->at(0)));
+  ASSERT_TRUE(figure_of<KeyframeKeys>(scene.panels[6]).layers.has_value());
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene.panels[6]).layers->size(), 1U);
+  EXPECT_TRUE(std::holds_alternative<TrajectoryLayer>(figure_of<KeyframeKeys>(scene.panels[6]).layers->at(0)));
   EXPECT_EQ(scene.panels[6].pointer, "/panels/6");
-  EXPECT_EQ(scene.layers.size(), 2U);  // the scene's own layers are still the defaults
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).layers.size(), 2U);  // the scene's own layers are still the defaults
 }
 
 TEST(Panels, SamplesDefaultWithoutTheScenesSamples) {

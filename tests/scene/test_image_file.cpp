@@ -210,10 +210,10 @@ TEST_F(ImageFile, SceneReaderChecksImageShapes) {
     std::ofstream(scene_file_) << scene_with("images/wide.png");
   }
   const Scene scene = load_scene(scene_file_);
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  ASSERT_TRUE(scene.shapes[0].image.has_value());
-  EXPECT_EQ(scene.shapes[0].image->given, "images/wide.png");
-  EXPECT_EQ(scene.shapes[0].image->width, 300);
+  ASSERT_EQ(figure_of<KeyframeKeys>(scene).shapes.size(), 1u);
+  ASSERT_TRUE(figure_of<KeyframeKeys>(scene).shapes[0].image.has_value());
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).shapes[0].image->given, "images/wide.png");
+  EXPECT_EQ(figure_of<KeyframeKeys>(scene).shapes[0].image->width, 300);
 
   const std::string absolute = (root_ / "outside.png").string();
   {
@@ -226,10 +226,10 @@ TEST_F(ImageFile, SceneReaderChecksImageShapes) {
     EXPECT_EQ(error.pointer(), "/shapes/0/image");
   }
   const Scene allowed = load_scene(scene_file_, ReadOptions{true});
-  ASSERT_TRUE(allowed.shapes[0].image.has_value());
-  EXPECT_EQ(allowed.shapes[0].image->path, absolute);
+  ASSERT_TRUE(figure_of<KeyframeKeys>(allowed).shapes[0].image.has_value());
+  EXPECT_EQ(figure_of<KeyframeKeys>(allowed).shapes[0].image->path, absolute);
   // parse_scene finds images from the folder of its source name too.
-  EXPECT_EQ(parse_scene(scene_with("picture.png"), scene_file_).shapes[0].image->height, 120);
+  EXPECT_EQ(figure_of<KeyframeKeys>(parse_scene(scene_with("picture.png"), scene_file_)).shapes[0].image->height, 120);
 }
 
 }  // namespace

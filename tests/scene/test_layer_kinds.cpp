@@ -59,11 +59,15 @@ TEST(LayerKinds, KindOfFindsTheRowOfEveryLayerOfTheScenes) {
     if (!document.contains("layers")) continue;
     const Scene scene = load_scene(entry.path().string());
     const std::string where = entry.path().filename().string() + " /layers/";
-    if (std::holds_alternative<KeyframeKeys>(scene.keys) || std::holds_alternative<PointKeys>(scene.keys)) {
-      expect_rows_of(scene.layers, document["layers"], arrow_layer_table(), where);
-    } else {
-      expect_rows_of(scene.pose_layers, document["layers"], pose_layer_table(), where);
-    }
+    std::visit(
+        [&]<class Keys>(const Keys& keys) {
+          if constexpr (std::is_same_v<FigureOf<Keys>, ArrowFigure>) {
+            expect_rows_of(figure_of(scene, keys).layers, document["layers"], arrow_layer_table(), where);
+          } else {
+            expect_rows_of(figure_of(scene, keys).layers, document["layers"], pose_layer_table(), where);
+          }
+        },
+        scene.keys);
     checked += static_cast<int>(document["layers"].size());
   }
   EXPECT_GT(checked, 100);

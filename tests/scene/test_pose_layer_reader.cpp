@@ -23,8 +23,8 @@ TEST(FigureReader, SweptLayer) {
       {"t": 1, "matrix": [[0, -1, 2], [1, 0, 0]]}], "layers": [{"type": "swept", "edge": [[0, 1], [2, 1]],
       "instants": 5, "trace_samples": 64, "ends": false, "grazing": {"width": 3}, "claim_at": [0, -1]}]})",
                                   "s.json");
-  ASSERT_EQ(scene.pose_layers.size(), 1u);
-  const auto& layer = std::get<SweptLayer>(scene.pose_layers[0]);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).layers.size(), 1u);
+  const auto& layer = std::get<SweptLayer>(figure_of<PlanePoseKeys>(scene).layers[0]);
   EXPECT_EQ(layer.edge[0], Point(0.0, 1.0));
   EXPECT_EQ(layer.edge[1], Point(2.0, 1.0));
   EXPECT_EQ(layer.instants, 5);

@@ -31,6 +31,50 @@ using test::failure;
 
 Eigen::Vector2d image(const Affine2& A, double x, double y) { return apply(A, Eigen::Vector2d(x, y)); }
 
+// One reader over the dimension: the frame of a simplex maps the unit
+// simplex onto it, and a flat simplex is degenerate, in the plane and in space.
+TEST(PoseReaderOverTheDimension, FrameOfMapsTheUnitSimplexOntoThePoints) {
+  const std::array<Point, 3> triangle = {Point{1.0, 2.0}, Point{4.0, 2.0}, Point{1.0, 7.0}};
+  const Affine2 plane = detail::frame_of<Affine2>(triangle);
+  EXPECT_EQ(image(plane, 0.0, 0.0), Eigen::Vector2d(1.0, 2.0));
+  EXPECT_EQ(image(plane, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
+  EXPECT_EQ(image(plane, 0.0, 1.0), Eigen::Vector2d(1.0, 7.0));
+  const std::array<Eigen::Vector3d, 4> tetrahedron = {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(2, 2, 3),
+                                                      Eigen::Vector3d(1, 4, 3), Eigen::Vector3d(1, 2, 6)};
+  const Affine3 space = detail::frame_of<Affine3>(tetrahedron);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(apply(space, Eigen::Vector3d::Unit(i)), tetrahedron[static_cast<std::size_t>(i) + 1]) << i;
+  }
+  EXPECT_EQ(apply(space, Eigen::Vector3d::Zero()), tetrahedron[0]);
+}
+
+TEST(PoseReaderOverTheDimension, FlatSimplicesAreDegenerate) {
+  EXPECT_FALSE(detail::degenerate<Affine2>(kUnitTriangle));
+  EXPECT_TRUE(detail::degenerate<Affine2>({Point{0.0, 0.0}, Point{1.0, 1.0}, Point{3.0, 3.0}}));
+  EXPECT_FALSE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                            Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}));
+  EXPECT_TRUE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
+                                           Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0)}));
+}
+
+TEST(PoseReaderOverTheDimension, MatricesAndReferencesSayTheirDimension) {
+  const Affine3 A = detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 2, 3, 4], [0, 1, 0, 5], [0, 0, 2, 6]]"),
+                                                 "/m");
+  EXPECT_EQ(A.L(0, 2), 3.0);
+  EXPECT_EQ(A.b, Eigen::Vector3d(4, 5, 6));
+  EXPECT_TRUE(failure([] { detail::read_matrix<Affine2>(kReader, Json::parse("[[1, 0], [0, 1]]"), "/m"); })
+                  .starts_with("/m: must be a 2x3 matrix [[a, b, tx], [c, d, ty]] (x -> [[a, b], [c, d]] x + "
+                               "[tx, ty]; got array "));
+  EXPECT_TRUE(failure([] { detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 0, 0], [0, 1, 0]]"), "/m"); })
+                  .starts_with("/m: a 2x3 matrix is a pose of the plane; the poses of a 3D scene (\"dimension\": "
+                               "3) are 3x4 matrices [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz]] (got array "));
+  EXPECT_EQ(failure([] {
+              detail::read_reference<Affine3>(kReader, Json::parse("[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]"),
+                                              "/reference_tetrahedron");
+            }),
+            "/reference_tetrahedron: the reference tetrahedron is degenerate (its points are coplanar)");
+}
+
 TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   const Scene scene = parse_scene(R"({"method": "sam", "poses": [
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 2, "matrix": [[1, 2, 3], [-4, 5, 6]]}]})",
@@ -43,11 +87,11 @@ TEST(PoseScene, MatricesAreRowsOfTheAffinity) {
   EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 1.0, 0.0), Eigen::Vector2d(4.0, 2.0));
   EXPECT_EQ(image(plane_keys(scene).poses[1].pose, 0.0, 1.0), Eigen::Vector2d(5.0, 11.0));
   // Defaults: the reference triangle as the shape; shapes and poses drawn.
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  EXPECT_EQ(scene.shapes[0].points.size(), 3u);
-  ASSERT_EQ(scene.pose_layers.size(), 2u);
-  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
-  EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 3u);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).layers.size(), 2u);
+  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(figure_of<PlanePoseKeys>(scene).layers[0]));
+  EXPECT_TRUE(std::holds_alternative<PosesLayer>(figure_of<PlanePoseKeys>(scene).layers[1]));
   ASSERT_EQ(scene.panels.size(), 1u);
   EXPECT_EQ(plane_keys(scene.panels[0]).poses.size(), 2u);
 }
@@ -64,8 +108,8 @@ TEST(PoseScene, TrianglesMapTheReferenceTriangle) {
   EXPECT_LT((image(second, 3, 1) - Eigen::Vector2d(5, 9)).norm(), 1e-14);
   EXPECT_LT((image(second, 1, 2) - Eigen::Vector2d(3.5, 5)).norm(), 1e-14);
   // "triangle": "reference" is the reference triangle's outline.
-  ASSERT_EQ(scene.shapes[0].points.size(), 3u);
-  EXPECT_EQ(scene.shapes[0].points[1], Point(3, 1));
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 3u);
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points[1], Point(3, 1));
 }
 
 // Two mirrored poses: C o B^-1 preserves orientation, so the SAM exists and
@@ -84,18 +128,18 @@ TEST(PoseScene, BuiltinOutlines) {
       {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}],
       "shapes": [{"outline": "F"}, {"outline": "picture", "color": "red"}, {"outline": "square"}]})",
                                   "s.json");
-  ASSERT_EQ(scene.shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
-  EXPECT_EQ(scene.shapes[0].points.size(), 10u);
-  EXPECT_FALSE(scene.shapes[0].color.has_value());
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u + 7u + 1u);  // the picture has seven parts, all red
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 10u);
+  EXPECT_FALSE(figure_of<PlanePoseKeys>(scene).shapes[0].color.has_value());
   for (std::size_t i = 1; i <= 7; ++i) {
-    ASSERT_TRUE(scene.shapes[i].color.has_value()) << i;
-    EXPECT_EQ(*scene.shapes[i].color, *scene.shapes[1].color) << i;
-    for (const Point p : scene.shapes[i].points) {
+    ASSERT_TRUE(figure_of<PlanePoseKeys>(scene).shapes[i].color.has_value()) << i;
+    EXPECT_EQ(*figure_of<PlanePoseKeys>(scene).shapes[i].color, *figure_of<PlanePoseKeys>(scene).shapes[1].color) << i;
+    for (const Point p : figure_of<PlanePoseKeys>(scene).shapes[i].points) {
       EXPECT_TRUE(p.real() >= 0.0 && p.real() <= 1.0 && p.imag() >= 0.0 && p.imag() <= 0.75) << i;
     }
   }
-  EXPECT_FALSE(scene.shapes[2].closed);  // the ground line
-  EXPECT_EQ(scene.shapes[8].points.size(), 4u);
+  EXPECT_FALSE(figure_of<PlanePoseKeys>(scene).shapes[2].closed);  // the ground line
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[8].points.size(), 4u);
 }
 
 // The refusals (no SAM, singular or degenerate poses, knots too close, ...)
@@ -172,7 +216,7 @@ TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
             }),
             "/poses/0/triangle: give either \"matrix\" or \"triangle\", not both");
   EXPECT_EQ(failure([] {
-              detail::read_reference_triangle(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
+              detail::read_reference<Affine2>(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
                                               "/reference_triangle");
             }),
             "/reference_triangle: the reference triangle is degenerate (its points are collinear)");
@@ -268,9 +312,9 @@ TEST(PoseScene, ImageShapes) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "images/picture.png", "box": [[0, 0], [1, 0.75]]}]})",
                                   (std::filesystem::path(PITA_SOURCE_DIR) / "scenes" / "s.json").string());
-  ASSERT_EQ(scene.shapes.size(), 1u);
-  ASSERT_TRUE(scene.shapes[0].image.has_value());
-  EXPECT_EQ(scene.shapes[0].image->width, 160);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);
+  ASSERT_TRUE(figure_of<PlanePoseKeys>(scene).shapes[0].image.has_value());
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].image->width, 160);
   EXPECT_EQ(error_of(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}], "shapes": [{"image": "/etc/passwd", "box": [[0, 0], [1, 1]]}]})"),
             "s.json: /shapes/0/image: \"/etc/passwd\" is an absolute path; images are found relative to the scene's "

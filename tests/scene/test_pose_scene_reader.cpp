@@ -24,11 +24,11 @@ TEST(PoseSceneReader, DefaultsApplied) {
       {"t": 1, "triangle": [[1, 0], [2, 0], [1, 1]]}]})", "s.json");
   EXPECT_TRUE(std::holds_alternative<PlanePoseKeys>(scene.keys));
   EXPECT_EQ(method_id(scene.keys), "SAM");
-  ASSERT_EQ(scene.shapes.size(), 1u);  // the reference triangle
-  EXPECT_EQ(scene.shapes[0].points.size(), 3u);
-  ASSERT_EQ(scene.pose_layers.size(), 2u);  // shapes, then poses
-  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(scene.pose_layers[0]));
-  EXPECT_TRUE(std::holds_alternative<PosesLayer>(scene.pose_layers[1]));
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);  // the reference triangle
+  EXPECT_EQ(figure_of<PlanePoseKeys>(scene).shapes[0].points.size(), 3u);
+  ASSERT_EQ(figure_of<PlanePoseKeys>(scene).layers.size(), 2u);  // shapes, then poses
+  EXPECT_TRUE(std::holds_alternative<ShapesLayer>(figure_of<PlanePoseKeys>(scene).layers[0]));
+  EXPECT_TRUE(std::holds_alternative<PosesLayer>(figure_of<PlanePoseKeys>(scene).layers[1]));
   EXPECT_EQ(plane_keys(scene).subdivisions, kDefaultSubdivisions);
   EXPECT_EQ(plane_keys(scene).poses[1].pose.b, Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
   ASSERT_EQ(scene.panels.size(), 1u);
@@ -48,7 +48,7 @@ TEST(PoseSceneReader, Sam3dExistenceLayerFields) {
   const Scene scene = parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "steps": 12,
       "subdivisions": 1, "step": 0.02, "color": "#ff0000", "fill": "none", "paper": {"width": 3}}]})",
                                   "s.json");
-  const auto& layer = std::get<Sam3dExistenceLayer>(scene.pose_layers.at(0));
+  const auto& layer = std::get<Sam3dExistenceLayer>(figure_of<PlanePoseKeys>(scene).layers.at(0));
   EXPECT_EQ(layer.steps, 12);
   EXPECT_EQ(layer.subdivisions, 1);
   EXPECT_DOUBLE_EQ(layer.step, 0.02);
@@ -58,7 +58,7 @@ TEST(PoseSceneReader, Sam3dExistenceLayerFields) {
   EXPECT_DOUBLE_EQ(layer.paper_line.width, 3.0);
   const Scene defaults = parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "paper": false}]})",
                                      "s.json");
-  const auto& plain = std::get<Sam3dExistenceLayer>(defaults.pose_layers.at(0));
+  const auto& plain = std::get<Sam3dExistenceLayer>(figure_of<PlanePoseKeys>(defaults).layers.at(0));
   EXPECT_EQ(plain.steps, 48);
   EXPECT_EQ(plain.subdivisions, 2);
   EXPECT_TRUE(plain.fill.has_value());

@@ -12,7 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <variant>
 
 #include <unistd.h>
 
@@ -119,6 +121,64 @@ TEST(PoseScene, MethodOverride) {
   EXPECT_EQ(method_id(with_method(scene, PoseMethod::linear).keys), "linear");
   EXPECT_THROW(with_method(scene, PoseMethod::biarc_sam), SceneError);  // 3 poses
   EXPECT_THROW(with_method(scene, Method::P6), SceneError);
+}
+
+
+// ------------------------------------------------------------ figure data
+
+// Each kind's figure data is of its keys' family: arrows (keyframes and
+// points), poses of the plane, poses of space; figure_of takes the family
+// from the keys' type.
+TEST(SceneFigure, EachKindHoldsTheFigureOfItsFamily) {
+  const Scene arrows = parse_scene(p6_with(""), "s.json");
+  EXPECT_TRUE(figure_agrees(arrows.keys, arrows.figure));
+  EXPECT_EQ(figure_of<KeyframeKeys>(arrows).layers.size(), 2u);  // pattern, keyframes
+  EXPECT_TRUE(figure_of<KeyframeKeys>(arrows.panels[0]).shapes.empty());
+  const Scene plane = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}]})", "s.json");
+  const PoseFigure<Affine2>& flat = figure_of<PlanePoseKeys>(plane);
+  EXPECT_EQ(flat.reference[1], Point(1.0, 0.0));
+  ASSERT_EQ(flat.shapes.size(), 1u);  // the reference triangle
+  EXPECT_EQ(figure_of(plane.panels[0], std::get<PlanePoseKeys>(plane.panels[0].keys)).shapes.size(), 1u);
+  const Scene space = parse_scene(R"({"dimension": 3, "method": "SAM", "camera": {"azimuth": 10},
+      "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                {"t": 1, "matrix": [[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0]]}]})", "s.json");
+  const PoseFigure<Affine3>& solid = figure_of<SpacePoseKeys>(space);
+  EXPECT_EQ(solid.camera.azimuth, 10.0);
+  ASSERT_EQ(solid.shapes.size(), 1u);  // the reference tetrahedron
+  EXPECT_EQ(solid.shapes[0].vertices.size(), 4u);
+  // A space panel draws the scene's solids; it has no outlines of the plane.
+  EXPECT_EQ(figure_of<SpacePoseKeys>(space.panels[0]).shapes.size(), 1u);
+  EXPECT_TRUE(outlines_of(space.panels[0]).empty());
+  EXPECT_EQ(outlines_of(plane.panels[0]).size(), 1u);
+  // Another family's figure is refused, not reinterpreted.
+  EXPECT_FALSE(figure_agrees(plane.keys, arrows.figure));
+  EXPECT_FALSE(figure_agrees(space.keys, plane.panels[0].figure));
+  EXPECT_THROW((void)figure_of<PlanePoseKeys>(arrows), std::bad_variant_access);
+}
+
+// A panel of points in a scene of keyframes is of the same family: it draws
+// the scene's arrow layers.
+TEST(SceneFigure, PointPanelsOfAKeyframeSceneShareItsFigure) {
+  const Scene scene = parse_scene(p6_with(R"(, "layers": [{"type": "label", "text": "x", "at": [0, 0]}],
+      "panels": [{"points": [{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 0]}, {"t": 2, "p": [1, 1]},
+                             {"t": 3, "p": [0, 1]}]}])"),
+                                  "s.json");
+  ASSERT_TRUE(std::holds_alternative<PointKeys>(scene.panels[0].keys));
+  EXPECT_TRUE(figure_agrees(scene.panels[0].keys, scene.panels[0].figure));
+  const LayersOf<Layer> drawn = layers_of<Layer>(scene, scene.panels[0]);
+  EXPECT_FALSE(drawn.own);
+  EXPECT_EQ(drawn.layers.size(), 1u);
+  EXPECT_THROW((void)layers_of<PoseLayer>(scene, scene.panels[0]), std::logic_error);
+}
+
+// The points a pose moves: an outline's points, a solid's vertices.
+TEST(SceneFigure, PointsOfAShape) {
+  const ShapeOutline outline{{Point{0.0, 0.0}, Point{1.0, 2.0}}, false, std::nullopt, std::nullopt};
+  EXPECT_EQ(points_of(outline).size(), 2u);
+  Solid solid;
+  solid.vertices = {Eigen::Vector3d(1, 2, 3)};
+  EXPECT_EQ(points_of(solid).front(), Eigen::Vector3d(1, 2, 3));
 }
 
 }  // namespace

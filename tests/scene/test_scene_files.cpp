@@ -322,9 +322,9 @@ TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig35-neville-variants.json");
   ASSERT_EQ(scene.panels.size(), 2u);
   for (const Panel& panel : scene.panels) {
-    ASSERT_TRUE(panel.layers.has_value());
+    ASSERT_TRUE(figure_of<KeyframeKeys>(panel).layers.has_value());
     std::vector<MethodOptions> drawn;
-    for (const Layer& layer : *panel.layers) {
+    for (const Layer& layer : *figure_of<KeyframeKeys>(panel).layers) {
       if (const auto* pattern = std::get_if<PatternLayer>(&layer)) {
         EXPECT_FALSE(pattern->method.has_value());
         drawn.push_back(pattern->options.over(track_keys(panel).options));
@@ -421,7 +421,7 @@ TEST(SceneFiles, AppendixD36PrintsTheDistancesBetweenTheMeans) {
 // The texts of a pose panel's label layers (the panel's own layers, else the scene's).
 std::vector<std::string> label_texts(const Scene& scene, const Panel& panel) {
   std::vector<std::string> texts;
-  for (const PoseLayer& layer : panel.pose_layers ? *panel.pose_layers : scene.pose_layers) {
+  for (const PoseLayer& layer : layers_of<PoseLayer>(scene, panel).layers) {
     if (const auto* label = std::get_if<LabelLayer>(&layer)) texts.push_back(label->text);
   }
   return texts;
@@ -480,10 +480,11 @@ TEST(SceneFiles, SamFig05PrintsItsMeasuredSteps) {
   ASSERT_EQ(scene.panels.size(), 1u);
   const Panel& panel = scene.panels.front();
   ASSERT_EQ(plane_keys(panel).poses.size(), 2u);
-  ASSERT_EQ(panel.shapes.size(), 1u);  // the reference triangle
+  const std::vector<ShapeOutline>& shapes = figure_of<PlanePoseKeys>(panel).shapes;
+  ASSERT_EQ(shapes.size(), 1u);  // the reference triangle
   Point centre{0.0, 0.0};
-  for (const Point p : panel.shapes.front().points) centre += p;
-  centre /= static_cast<double>(panel.shapes.front().points.size());
+  for (const Point p : shapes.front().points) centre += p;
+  centre /= static_cast<double>(shapes.front().points.size());
   const auto steps = [&](PoseMethod method) {
     const PoseMotion motion(method, plane_keys(panel).poses);
     const double t0 = plane_keys(panel).poses[0].t, t1 = plane_keys(panel).poses[1].t;

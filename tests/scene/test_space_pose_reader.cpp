@@ -135,8 +135,8 @@ TEST(SpacePoseScene, PanelsOverrideTheMethodPosesAndLayers) {
   EXPECT_TRUE(second.poses[1].pose.L.isIdentity());
   EXPECT_EQ(scene.panels[1].motion_pointer, "/panels/1/poses");
   EXPECT_EQ(scene.panels[1].samples, 3);
-  ASSERT_TRUE(scene.panels[1].pose_layers.has_value());
-  EXPECT_TRUE(std::holds_alternative<PathsLayer>(scene.panels[1].pose_layers->at(0)));
+  ASSERT_TRUE(figure_of<SpacePoseKeys>(scene.panels[1]).layers.has_value());
+  EXPECT_TRUE(std::holds_alternative<PathsLayer>(figure_of<SpacePoseKeys>(scene.panels[1]).layers->at(0)));
 }
 
 }  // namespace

@@ -17,7 +17,7 @@ namespace pita::render {
 static_assert(scene::AraLayer{}.grid == kDefaultAraGrid);
 
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::AraLayer& layer) {
-  const std::vector<scene::ShapeOutline>& shapes = panel.panel().shapes;
+  const std::vector<scene::ShapeOutline>& shapes = panel.shapes();
   if (shapes.empty()) panel.fail("an ara layer samples the panel's shapes, and the panel has none");
   std::vector<Eigen::Vector2d> vertices;
   for (const Point p : panel.body_points()) vertices.emplace_back(p.real(), p.imag());

@@ -11,7 +11,7 @@ namespace pita::render::detail {
 void PanelBuilder::add(const scene::HandleLayer& layer) {
   if (layer.shapes) {
     scene::ShapesLayer style;
-    for (Shape& shape : carried_shapes(panel_.shapes, Affine2::identity(), style, scene_.canvas.y_up)) {
+    for (Shape& shape : carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, Affine2::identity(), style, scene_.canvas.y_up)) {
       push(-1, std::move(shape));
     }
   }

@@ -43,7 +43,7 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
     const std::string at = layer_ + "/show/" + std::to_string(i);
     try {
       if (name.kind == scene::MeasureKind::handle_shift) {
-        if (panel_.shapes.empty()) {
+        if (scene::outlines_of(panel_).empty()) {
           fail(at, "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
                    "give the scene or the panel \"shapes\" (docs/reference/render.md \"Figure fields of a scene\")");
         }

@@ -18,7 +18,7 @@ namespace {
 
 void draw_patch_body(PosePanel<Affine2>& panel, const scene::PatchLayer& layer, int index, const Affine2& pose,
                      bool corner, std::vector<Face>&) {
-  for (const scene::ShapeOutline& shape : panel.panel().shapes) {
+  for (const scene::ShapeOutline& shape : panel.shapes()) {
     LineStyle line = layer.line;
     if (shape.color) line.color = *shape.color;
     if (corner && layer.corner) line = *layer.corner;  // F_D highlighted
@@ -35,7 +35,7 @@ void draw_patch_body(PosePanel<Affine2>& panel, const scene::PatchLayer& layer, 
 
 void draw_patch_body(PosePanel<Affine3>& panel, const scene::PatchLayer& layer, int index, const Affine3& pose,
                      bool corner, std::vector<Face>& faces) {
-  for (const scene::Solid& solid : panel.scene().solids) {
+  for (const scene::Solid& solid : panel.shapes()) {
     const LineStyle line = corner && layer.corner ? *layer.corner : layer.line;
     std::optional<Color> fill;
     if (layer.fill) fill = solid.color.value_or(*layer.fill);

@@ -20,7 +20,7 @@ namespace {
 void draw_pose_body(PosePanel<Affine2>& panel, const scene::PosesLayer& layer, int index, const Affine2& pose,
                     Color color, std::vector<Face>&) {
   const LineStyle line{color, layer.width, 1.0, {}};
-  for (const scene::ShapeOutline& shape : panel.panel().shapes) {
+  for (const scene::ShapeOutline& shape : panel.shapes()) {
     std::vector<Point> points;
     points.reserve(shape.points.size());
     for (const Point p : shape.points) points.push_back(pita::apply(pose, p));
@@ -36,7 +36,7 @@ void draw_pose_body(PosePanel<Affine2>& panel, const scene::PosesLayer& layer, i
 void draw_pose_body(PosePanel<Affine3>& panel, const scene::PosesLayer& layer, int index, const Affine3& pose,
                     Color color, std::vector<Face>& faces) {
   const LineStyle line{color, layer.width, 1.0, {}};
-  for (const scene::Solid& solid : panel.scene().solids) {
+  for (const scene::Solid& solid : panel.shapes()) {
     add_solid_faces(panel, solid, pose, lightened(color, 0.55), line, 1.0, index, faces);
   }
 }

@@ -30,7 +30,7 @@ void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer
     style.line.color = lightened(style.line.color, white);
     if (style.fill) style.fill = lightened(*style.fill, white);
   }
-  for (Shape& shape : carried_shapes(panel.panel().shapes, pose, style, panel.scene().canvas.y_up, fade)) {
+  for (Shape& shape : carried_shapes(panel.shapes(), pose, style, panel.scene().canvas.y_up, fade)) {
     panel.push(index, std::move(shape), moving);
   }
 }
@@ -38,7 +38,7 @@ void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer
 // A solid's own colour fills its faces (and outlines it without a fill).
 void draw_shapes_body(PosePanel<Affine3>& panel, const scene::ShapesLayer& layer, const Affine3& pose, double white,
                double fade, bool, int index, std::vector<Face>& faces) {
-  for (const scene::Solid& solid : panel.scene().solids) {
+  for (const scene::Solid& solid : panel.shapes()) {
     LineStyle line = layer.line;
     if (solid.color && !layer.fill) line.color = *solid.color;
     line.color = lightened(line.color, white);
@@ -90,7 +90,7 @@ void PanelBuilder::add(const scene::ShapesLayer& layer) {
   const std::vector<Arrow> pattern = fixed ? frames(motion_, layer.times) : frames(sequence_times(layer.samples, layer.range));
   const bool moving = selection_ != nullptr && !fixed;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
-    for (Shape& shape : carried_shapes(panel_.shapes, carrier(handle(), pattern[i]), layer, scene_.canvas.y_up,
+    for (Shape& shape : carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, carrier(handle(), pattern[i]), layer, scene_.canvas.y_up,
                                        moving ? fade(i, pattern.size()) : 1.0)) {
       push(static_cast<int>(i), std::move(shape));
       drawing_.items.back().moving = moving;

@@ -69,7 +69,7 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
                              about.id, ts[i], layer.power));
     }
     const double fade = selection != nullptr ? trail_fade(i, ts.size()) : 1.0;
-    for (Shape& shape : carried_shapes(panel.panel().shapes, pose, style, panel.scene().canvas.y_up, fade)) {
+    for (Shape& shape : carried_shapes(panel.shapes(), pose, style, panel.scene().canvas.y_up, fade)) {
       panel.push(static_cast<int>(i), std::move(shape), selection != nullptr);
     }
   }
