@@ -1,4 +1,4 @@
-// EAR in 3D (core/space_affine_power.hpp) against Eigen's MatrixFunctions pow on the
+// EAR in 3D (core/affine_power_of_space.hpp) against Eigen's MatrixFunctions pow on the
 // 4x4 homogeneous matrix (issue 17 asks >= 10x faster): time per call and the
 // worst relative error against a long-double reference, in one run. Run:
 //   build/pita_bench --benchmark_filter=Power3
@@ -26,7 +26,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/Dense>
 
-#include "core/space_affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "support/matrix_functions.hpp"
 
 namespace {
@@ -77,7 +77,7 @@ const std::vector<Sample>& samples() {
 
 // Ill-conditioned ones for the log: eigenvalue ratio exactly 1e4 (its two
 // ends taken), V = U diag(1, s, 1/200) W^T, condition numbers to ~1e8 (as in
-// tests/core/test_space_affine_power.cpp, ExpOfLogHoldsOneE12NearConditionOneE8).
+// tests/core/test_affine_power_of_space.cpp, ExpOfLogHoldsOneE12NearConditionOneE8).
 const std::vector<Sample>& ill_conditioned_samples() {
   static const std::vector<Sample> result = [] {
     std::mt19937_64 rng(18);

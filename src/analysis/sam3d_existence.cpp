@@ -13,8 +13,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
-#include "core/space_affine_power.hpp"
 #include "core/worker_pool.hpp"
 
 namespace pita::analysis {

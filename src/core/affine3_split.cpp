@@ -8,8 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
-#include "core/space_affine_power.hpp"
 
 namespace pita {
 

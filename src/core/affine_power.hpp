@@ -87,7 +87,7 @@ Eigenvalues eigenvalues(const Eigen::Matrix2d& L);
 std::optional<Eigen::Vector2d> fixed_point(const Affine2& A);
 
 // The real powers A^t of one affinity of the plane or of space: one class
-// template, the 2D EAR below and the 3D EAR of appendix A.6 (space_affine_power.hpp)
+// template, the 2D EAR below and the 3D EAR of appendix A.6 (affine_power_of_space.hpp)
 // its two specializations. Both have the same verbs, so that generic code
 // (SteadyAffineMorph<Pose>, steady_affine_morph.hpp) calls either:
 //   AffinePowers(A)       the analysis of A's linear part, once; throws NoRealLogarithm

@@ -1,14 +1,14 @@
 // The Steady Affine Morph (SAM paper Sec. 2.2) of poses of the plane or of
 // space: from pose B (time 0) to pose C (time 1), A^u o B with A = C o B^-1,
 // the power by EAR (affine_power.hpp in 2D, appendix A.1-A.5;
-// space_affine_power.hpp in 3D, appendix A.6). Instantiated for Affine2 and
+// affine_power_of_space.hpp in 3D, appendix A.6). Instantiated for Affine2 and
 // Affine3 in steady_affine_morph.cpp.
 #pragma once
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
 #include "core/affine_power.hpp"
-#include "core/space_affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 
 namespace pita {
 

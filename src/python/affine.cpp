@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 
 #include "core/affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/overloaded.hpp"
-#include "core/space_affine_power.hpp"
 #include "core/steady_affine_morph.hpp"
 #include "core/steady_morph.hpp"
 #include "python/bindings.hpp"

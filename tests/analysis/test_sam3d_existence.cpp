@@ -17,7 +17,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "core/space_affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 
 namespace pita::analysis {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/space_affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 
 #include <Eigen/LU>
 #include <unsupported/Eigen/MatrixFunctions>

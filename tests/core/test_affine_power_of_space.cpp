@@ -1,4 +1,4 @@
-// EAR in 3D (core/space_affine_power.hpp, SAM paper appendix A.6): log and real
+// EAR in 3D (core/affine_power_of_space.hpp, SAM paper appendix A.6): log and real
 // powers of 3D affinities, checked by their properties (exp(log A) = A,
 // A^s A^t = A^{s+t}), by closed forms for each singular sub-case of A.6, by
 // the 2D EAR on embedded planar affinities, and against Eigen's
@@ -17,8 +17,8 @@
 #include <Eigen/Dense>
 
 #include "core/affine_power.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
-#include "core/space_affine_power.hpp"
 #include "support/matrix_functions.hpp"
 
 namespace pita {
