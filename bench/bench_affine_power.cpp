@@ -3,7 +3,7 @@
 // against a long-double reference, in one run. Run:
 //   build/pita_bench --benchmark_filter=Power
 //   BM_PowerEar:          AffinePowers(A).at(t): case selection, log and power per call
-//   BM_PowerEarPrepared:  at(t) of a prepared AffinePowers (sampling a SAM)
+//   BM_PowerEarPrepared:  at(t) of a prepared AffinePowers<Affine2> (sampling a SAM)
 //   BM_PowerEigen:        Eigen::Matrix3d::pow(t) (Schur-Pade)
 // The counters worst_rel_error and mean_rel_error are |X - R|_F / |R|_F over
 // the same 1024 random affinities and times, R from Eigen's pow in long double
@@ -109,7 +109,7 @@ void BM_PowerEar(benchmark::State& state) {
 }
 
 void BM_PowerEarPrepared(benchmark::State& state) {
-  std::vector<AffinePowers> prepared;
+  std::vector<AffinePowers<Affine2>> prepared;
   for (const Sample& s : samples()) prepared.emplace_back(s.A);
   std::size_t i = 0;
   for (auto _ : state) {

@@ -1,11 +1,11 @@
-// EAR in 3D (core/affine_power3.hpp) against Eigen's MatrixFunctions pow on the
+// EAR in 3D (core/affine_power_of_space.hpp) against Eigen's MatrixFunctions pow on the
 // 4x4 homogeneous matrix (issue 17 asks >= 10x faster): time per call and the
 // worst relative error against a long-double reference, in one run. Run:
 //   build/pita_bench --benchmark_filter=Power3
-//   BM_Power3Ear:          AffinePowers3(A).at(t): split, 2D EARs and power per call
-//   BM_Power3EarPrepared:  at(t) of a prepared AffinePowers3 (sampling a 3D SAM)
+//   BM_Power3Ear:          AffinePowers(A).at(t): split, 2D EARs and power per call
+//   BM_Power3EarPrepared:  at(t) of a prepared AffinePowers<Affine3> (sampling a 3D SAM)
 //   BM_Power3Eigen:        Eigen::Matrix4d::pow(t) (Schur-Pade)
-//   BM_Log3:               log() of a prepared AffinePowers3 (a 3D SAM's velocity
+//   BM_Log3:               log() of a prepared AffinePowers<Affine3> (a 3D SAM's velocity
 //                          field): the split's log and, where exp of it misses A
 //                          by more than 1e-13, Newton steps (N58)
 //   BM_Log3Eigen:          Eigen::Matrix4d::log() (Schur-Pade)
@@ -26,7 +26,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/Dense>
 
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "support/matrix_functions.hpp"
 
 namespace {
@@ -77,7 +77,7 @@ const std::vector<Sample>& samples() {
 
 // Ill-conditioned ones for the log: eigenvalue ratio exactly 1e4 (its two
 // ends taken), V = U diag(1, s, 1/200) W^T, condition numbers to ~1e8 (as in
-// tests/core/test_affine_power3.cpp, ExpOfLogHoldsOneE12NearConditionOneE8).
+// tests/core/test_affine_power_of_space.cpp, ExpOfLogHoldsOneE12NearConditionOneE8).
 const std::vector<Sample>& ill_conditioned_samples() {
   static const std::vector<Sample> result = [] {
     std::mt19937_64 rng(18);
@@ -139,7 +139,7 @@ void report_errors(benchmark::State& state, Power power) {
   state.counters["mean_rel_error"] = sum / static_cast<double>(samples().size());
 }
 
-Matrix4d ear(const Sample& s) { return homogeneous(AffinePowers3(s.A).at(s.t)); }
+Matrix4d ear(const Sample& s) { return homogeneous(AffinePowers(s.A).at(s.t)); }
 Matrix4d eigen(const Sample& s) { return oracle::pow(homogeneous(s.A), s.t); }
 
 void BM_Power3Ear(benchmark::State& state) {
@@ -147,14 +147,14 @@ void BM_Power3Ear(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const Sample& s = all[i++ & 1023];
-    benchmark::DoNotOptimize(AffinePowers3(s.A).at(s.t));
+    benchmark::DoNotOptimize(AffinePowers(s.A).at(s.t));
   }
   state.SetItemsProcessed(state.iterations());
   report_errors(state, ear);
 }
 
 void BM_Power3EarPrepared(benchmark::State& state) {
-  std::vector<AffinePowers3> prepared;
+  std::vector<AffinePowers<Affine3>> prepared;
   for (const Sample& s : samples()) prepared.emplace_back(s.A);
   std::size_t i = 0;
   for (auto _ : state) {
@@ -190,13 +190,13 @@ void report_log_errors(benchmark::State& state, Log log) {
 }
 
 void BM_Log3(benchmark::State& state) {
-  std::vector<AffinePowers3> prepared;
+  std::vector<AffinePowers<Affine3>> prepared;
   for (const Sample& s : log_samples(state)) prepared.emplace_back(s.A);
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(prepared[i++ & 1023].log());
   state.SetItemsProcessed(state.iterations());
   report_log_errors(state, [](const Affine3& A) {
-    Matrix4d X = homogeneous(AffinePowers3(A).log());
+    Matrix4d X = homogeneous(AffinePowers(A).log());
     X(3, 3) = 0.0;
     return X;
   });

@@ -13,7 +13,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
 #include "core/worker_pool.hpp"
 
@@ -177,7 +177,7 @@ bool has_real_logarithm(const Eigen::Matrix3d& L) {
   try {
     Affine3 A;
     A.L = L;
-    (void)AffinePowers3(A);
+    (void)AffinePowers(A);
     return true;
   } catch (const NoRealLogarithm&) {
     return false;

@@ -7,7 +7,7 @@
 //
 // The verbs are the ones every value type of the core shares: apply,
 // compose, inverse here; pow, log, exp in affine_power.hpp and
-// affine_power3.hpp (EAR). Twirl (twirl.hpp) has the same six.
+// affine_power_of_space.hpp (EAR). Twirl (twirl.hpp) has the same six.
 #pragma once
 
 #include <Eigen/Core>

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
 
 namespace pita {

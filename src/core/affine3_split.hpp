@@ -2,8 +2,8 @@
 // N58): one real eigenvalue lambda and an orthonormal right-handed basis
 // Q = [u, q2, q3] with L u ~ lambda u, the first step of the real Schur form,
 // so that Q^T L Q = [[lambda, w^T], [0, M]] up to the residual of u. Internal
-// to EAR in 3D (core/affine_power3.cpp); the eigenvalues themselves are
-// pita::eigenvalues (core/affine_power3.hpp).
+// to EAR in 3D (core/affine_power_of_space.cpp); the eigenvalues themselves are
+// pita::eigenvalues (core/affine_power_of_space.hpp).
 #pragma once
 
 #include <array>

@@ -279,7 +279,7 @@ std::optional<Vector2d> fixed_point(const Affine2& A) {
   return Vector2d(inverse_of_identity_minus(A.L, k) * A.b);  // (I - L) q = b
 }
 
-AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
+AffinePowers<Affine2>::AffinePowers(const Affine2& A) : A_(A) {
   if (!A.L.allFinite() || !A.b.allFinite()) {
     throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
   }
@@ -351,20 +351,20 @@ AffinePowers::AffinePowers(const Affine2& A) : A_(A) {
 // P1 = (E - mu2 I)/(mu1 - mu2), P2 = (E - mu1 I)/(mu2 - mu1) (the eigenvalues
 // are real and at least 1/8 apart here). Not g0 I + g1 E: g0 = f(mu1) - g1 mu1
 // would cancel when f(mu1) >> f(mu2) (a large t).
-Matrix2d AffinePowers::unit_function(double f1, double f2) const {
+Matrix2d AffinePowers<Affine2>::unit_function(double f1, double f2) const {
   const Matrix2d I = Matrix2d::Identity();
   const Matrix2d P1 = (E_ - mu2_ * I) / (mu1_ - mu2_);
   const Matrix2d P2 = (E_ - mu1_ * I) / (mu2_ - mu1_);
   return f1 * P1 + f2 * P2;
 }
 
-Matrix2d AffinePowers::power_of_linear(double t) const { return exp_of_parts(c_, M_, gamma_, t); }
+Matrix2d AffinePowers<Affine2>::power_of_linear(double t) const { return exp_of_parts(c_, M_, gamma_, t); }
 
-Matrix2d AffinePowers::power_minus_identity(double t) const {
+Matrix2d AffinePowers<Affine2>::power_minus_identity(double t) const {
   return exp_of_parts_minus_identity(c_, M_, gamma_, t);
 }
 
-Affine2 AffinePowers::at_small(double t, const Vector2d& b) const {
+Affine2 AffinePowers<Affine2>::at_small(double t, const Vector2d& b) const {
   Affine2 result;
   result.L = power_of_linear(t);
   switch (translation_) {
@@ -400,9 +400,9 @@ Affine2 AffinePowers::at_small(double t, const Vector2d& b) const {
   return result;
 }
 
-Affine2 AffinePowers::at(double t) const { return power_with_translation(t, A_.b); }
+Affine2 AffinePowers<Affine2>::at(double t) const { return power_with_translation(t, A_.b); }
 
-Affine2 AffinePowers::power_with_translation(double t, const Vector2d& b) const {
+Affine2 AffinePowers<Affine2>::power_with_translation(double t, const Vector2d& b) const {
   if (!std::isfinite(t)) {  // no power: callers see a non-finite pose
     const double nan = std::numeric_limits<double>::quiet_NaN();
     return Affine2{Matrix2d::Constant(nan), Vector2d::Constant(nan)};
@@ -424,61 +424,22 @@ Affine2 AffinePowers::power_with_translation(double t, const Vector2d& b) const 
   return result;
 }
 
+AffinePowers<Affine2> AffinePowers<Affine2>::with_translation(const Vector2d& b) const {
+  if (!b.allFinite()) throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
+  AffinePowers powers = *this;
+  powers.A_.b = b;
+  powers.v_ = log_ratio_ * b;  // as the constructor's v_
+  return powers;
+}
+
+Affine2 AffinePowers<Affine2>::velocity(double t) const {
+  const Affine2 power = at(t);
+  return {C_ * power.L, power.L * v_};
+}
+
 Affine2 affine_power(const Affine2& A, double t) { return AffinePowers(A).at(t); }
 
-NoRealLogarithm no_sam_between_poses(const NoRealLogarithm& error, bool mirrored) {
-  if (mirrored) {
-    return NoRealLogarithm(std::string("no SAM exists between these poses: one is mirrored and "
-                                       "the other is not (") +
-                               error.what() + "); no middle pose can help: mirror both poses or neither",
-                           error.root_case());
-  }
-  return NoRealLogarithm(std::string("no SAM exists between these poses: A = C o B^-1 has no "
-                                     "real power (") +
-                             error.what() +
-                             "); insert a middle pose between them and use a polySAM or a "
-                             "SAM bi-arc through it (Sec. 5.3)",
-                         error.root_case());
-}
-
-AffinePowers SteadyAffineMorph::checked(const Affine2& B, const Affine2& C) {
-  const Affine2 A = compose(C, inverse(B));
-  try {
-    return AffinePowers(A);
-  } catch (const NoRealLogarithm& error) {
-    throw no_sam_between_poses(error, !(A.L.determinant() > 0.0) && A.L.allFinite());
-  }
-}
-
-SteadyAffineMorph::SteadyAffineMorph(const Affine2& B, const Affine2& C)
-    : B_(B), C_(C), powers_(checked(B, C)), translation_change_(C.b - B.b) {}
-
-// A^u o B = [L^u L_B | b_B + g_u(L) (b_C - b_B)], L the linear part of A and
-// g_u(L) = (L^u - I)(L - I)^-1: the translation of A^u o B written without
-// A's own translation b_C - L b_B, which is huge when B is small (a motion
-// from a pose 1e-8 the size of the other) and would cancel in L^u b_B + g_u b.
-Affine2 SteadyAffineMorph::at(double u) const {
-  if (u == 0.0) return B_;
-  if (u == 1.0) return C_;
-  const Affine2 power = powers_.power_with_translation(u, translation_change_);
-  return Affine2{power.L * B_.L, B_.b + power.b};
-}
-
-Affine2 SteadyAffineMorph::velocity(double u) const {
-  // d/du: L' = log(L) L(u); b' = L^u l(L) (b_C - b_B), l(L) = log(L) (L - I)^-1.
-  const Affine2 power = powers_.power_with_translation(u, translation_change_);
-  return Affine2{powers_.linear_log() * power.L * B_.L,
-                 power.L * powers_.log_translation(translation_change_)};
-}
-
-Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t) {
-  return SteadyAffineMorph(B, C).at(t);
-}
-
-Affine2 log(const Affine2& A) {
-  const AffinePowers powers(A);
-  return {powers.linear_log(), powers.velocity_translation()};
-}
+Affine2 log(const Affine2& A) { return AffinePowers(A).log(); }
 
 Affine2 exp(const Affine2& generator) {
   Eigen::Matrix3d H = Eigen::Matrix3d::Zero();

@@ -25,7 +25,8 @@
 //      with a single eigenvector: no real logarithm, no SAM (A.3, Sec. 5.1).
 // Every threshold is in core/limits.hpp ("EAR").
 //
-// The SAM from pose B to pose C is A^t o B with A = C o B^-1 (Sec. 2.2).
+// The SAM from pose B to pose C is A^t o B with A = C o B^-1 (Sec. 2.2,
+// steady_affine_morph.hpp).
 #pragma once
 
 #include <optional>
@@ -85,9 +86,23 @@ Eigenvalues eigenvalues(const Eigen::Matrix2d& L);
 // L (S1: no unique fixed point).
 std::optional<Eigen::Vector2d> fixed_point(const Affine2& A);
 
-// The real powers A^t of one affinity (EAR). The constructor does the case
-// selection and the log once; at(t) is then a few exp/cos calls.
-class AffinePowers {
+// The real powers A^t of one affinity of the plane or of space: one class
+// template, the 2D EAR below and the 3D EAR of appendix A.6 (affine_power_of_space.hpp)
+// its two specializations. Both have the same verbs, so that generic code
+// (SteadyAffineMorph<Pose>, steady_affine_morph.hpp) calls either:
+//   AffinePowers(A)       the analysis of A's linear part, once; throws NoRealLogarithm
+//   at(t)                 A^t: at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t)
+//   log()                 the homogeneous log {log L, v} of A
+//   velocity(t)           d/dt A^t as (dL/dt, db/dt)
+//   with_translation(b)   the powers of [L | b], sharing the analysis of L
+//   affinity()            A
+template <class Pose>
+class AffinePowers;
+
+// The 2D EAR. The constructor does the case selection and the log once;
+// at(t) is then a few exp/cos calls.
+template <>
+class AffinePowers<Affine2> {
  public:
   // Throws NoRealLogarithm (G3, or det L <= 0, or non-finite entries).
   explicit AffinePowers(const Affine2& A);
@@ -96,6 +111,11 @@ class AffinePowers {
   // A non-finite t gives a non-finite affinity (NaN), as an overflow does.
   Affine2 at(double t) const;
 
+  // The powers of [L | b], A's linear part with another translation b: the
+  // same as AffinePowers(Affine2{L, b}) without redoing the analysis of L.
+  // Throws NoRealLogarithm for a non-finite b, as the constructor does.
+  AffinePowers with_translation(const Eigen::Vector2d& b) const;
+
   // The power of [L | b], the affinity with A's linear part and another
   // translation b: [L^t | g_t(L) b], g_t(L) = (L^t - I)(L - I)^-1.
   Affine2 power_with_translation(double t, const Eigen::Vector2d& b) const;
@@ -103,13 +123,17 @@ class AffinePowers {
   RootCase root_case() const { return case_; }
   const Affine2& affinity() const { return A_; }
 
-  // log L, and the homogeneous log [[log L, v], [0, 0]] of A: the velocity
+  // The homogeneous log {log L, v} of A ([[log L, v], [0, 0]]): the velocity
   // field x -> log(L) x + v of the SAM, the same at every time (Sec. 2.3 (6)).
+  Affine2 log() const { return {C_, v_}; }
   const Eigen::Matrix2d& linear_log() const { return C_; }
   Eigen::Vector2d velocity_translation() const { return v_; }
   // The translation of log [L | b] for another translation b: l(L) b with
   // l(lambda) = ln(lambda)/(lambda - 1).
   Eigen::Vector2d log_translation(const Eigen::Vector2d& b) const { return log_ratio_ * b; }
+
+  // d/dt A^t = A^t log A, as (dL/dt, db/dt) = (log(L) L^t, L^t v).
+  Affine2 velocity(double t) const;
 
  private:
   // How g_t(L) = (L^t - I)(L - I)^-1, the translation part of A^t applied to
@@ -136,6 +160,8 @@ class AffinePowers {
   Eigen::Matrix2d log_ratio_;          // l(L) = log(L) (L - I)^-1
 };
 
+AffinePowers(const Affine2&) -> AffinePowers<Affine2>;
+
 // A^t (builds AffinePowers; use the class for many t).
 Affine2 affine_power(const Affine2& A, double t);
 
@@ -156,32 +182,5 @@ Affine2 log(const Affine2& A);
 // exp of a generator {C, v}: [e^C | phi(C) v], phi(C) = sum C^k / (k + 1)!,
 // the exponential of the homogeneous matrix [[C, v], [0, 0]]. exp(t log A) = A^t.
 Affine2 exp(const Affine2& generator);
-
-// The Steady Affine Morph from pose B (time 0) to pose C (time 1):
-// A^t o B with A = C o B^-1 (Sec. 2.2). Throws NoRealLogarithm with the
-// message "no SAM exists between these poses: ..." when A has no real power.
-class SteadyAffineMorph {
- public:
-  SteadyAffineMorph(const Affine2& B, const Affine2& C);
-  // A^u o B; exactly B at u = 0 and C at u = 1.
-  Affine2 at(double u) const;
-  // d/du of at(u), as (dL/du, db/du) (Sec. 2.3 (6): log(A) applied to the pose).
-  Affine2 velocity(double u) const;
-  const AffinePowers& powers() const { return powers_; }
-
- private:
-  static AffinePowers checked(const Affine2& B, const Affine2& C);
-  Affine2 B_, C_;
-  AffinePowers powers_;
-  Eigen::Vector2d translation_change_;  // b_C - b_B
-};
-
-Affine2 steady_affine_morph(const Affine2& B, const Affine2& C, double t);
-
-// The error of a SAM (2D or 3D) whose A = C o B^-1 has no real power (`error`
-// from EAR): "no SAM exists between these poses: ...", with the advice that
-// fits: mirror both poses or neither (`mirrored`: det A <= 0), or insert a
-// middle pose (Sec. 5.3).
-NoRealLogarithm no_sam_between_poses(const NoRealLogarithm& error, bool mirrored);
 
 }  // namespace pita

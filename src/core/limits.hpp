@@ -144,7 +144,7 @@ inline constexpr double kExpSeries = 1e-2;
 inline constexpr double kExpProjectors = 0.5;
 
 // ------------------------------------------------------------ EAR in 3D
-// Real powers of 3D affinities (affine_power3.hpp, SAM paper appendix A.6,
+// Real powers of 3D affinities (affine_power_of_space.hpp, SAM paper appendix A.6,
 // docs/paper-notes.md N58). The 2D block reuses every threshold above; the
 // corner's series uses kUnitSeriesRadius and kUnitSeriesMaxTime, the fixed
 // point kUnitEigenvalue, as in 2D.
@@ -158,7 +158,7 @@ inline constexpr double kExpProjectors = 0.5;
 // 1e-5 apart), while the mean of the three is exact to rounding. The factor
 // 10 is room. A genuinely distinct cluster within 1e-4 loses nothing: the
 // split only needs a vector with a small residual |L u - (u.L u) u|, which
-// inverse iteration from that start provides (affine_power3.cpp,
+// inverse iteration from that start provides (affine_power_of_space.cpp,
 // eigenvector()). The plane block within kHalfTurn of -rho I is set to
 // -rho I, as 2D snaps its real negative eigenvalues.
 inline constexpr double kEigenvalueCluster = 1e-4;
@@ -168,7 +168,7 @@ inline constexpr double kEigenvalueCluster = 1e-4;
 // away from both eigenvalues of the plane block, so that lambda I - M is well
 // conditioned; closer, the 2D EAR's l(M / lambda) / lambda, exact in the
 // confluent limit. 0.1 is a round value, checked only on the random tests of
-// test_affine_power3.cpp, not tuned (N58).
+// test_affine_power_of_space.cpp, not tuned (N58).
 inline constexpr double kSylvesterLeanGap = 0.1;
 
 // log() ends with up to kLogRefineSteps Newton steps on exp(X) = A whose
@@ -277,7 +277,7 @@ inline constexpr double kFarCenter = 1e6;
 inline constexpr double kFarGrazingPoint = 1e6;
 
 // Series and iterations (perseverant.cpp, pam.cpp, affine_power.cpp,
-// affine_power3.cpp) stop when a term falls below this fraction of the sum
+// affine_power_of_space.cpp) stop when a term falls below this fraction of the sum
 // (or of the sum's scale): two orders of magnitude under double's unit
 // roundoff, 1.1e-16, so that the terms left out cannot change the sum.
 inline constexpr double kSeriesTermCutoff = 1e-18;

@@ -6,12 +6,12 @@ namespace pita {
 
 template <class Pose>
 Pose sam(const Pose& from, double t, const Pose& to) {
-  return SteadyMorph<Pose>(from, to).at(t);
+  return SteadyAffineMorph<Pose>(from, to).at(t);
 }
 
 template <class Pose>
 Pose sam_moved(const Pose& pose, const Pose& from, double t, const Pose& to) {
-  return compose(SteadyMorph<Pose>(from, to).powers().at(t), pose);
+  return compose(SteadyAffineMorph<Pose>(from, to).powers().at(t), pose);
 }
 
 template <class Pose>

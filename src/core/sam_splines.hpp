@@ -1,7 +1,7 @@
 // Motions through more than two poses built from SAMs (SAM paper Sec. 5.3 and
 // 7.3): the polySAM, the quadratic and cubic Bezier SAMs, the bi-arc
 // retrofit, the SAM patch and the four-point subdivision. Each uses SAM
-// (core/affine_power.hpp) as its only interpolation primitive, so each throws
+// (core/steady_affine_morph.hpp) as its only interpolation primitive, so each throws
 // NoRealLogarithm ("no SAM exists between these poses: ...") when a SAM it
 // needs does not exist.
 //
@@ -14,25 +14,9 @@
 
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
-#include "core/affine_power.hpp"
-#include "core/steady_affine_morph3.hpp"
+#include "core/steady_affine_morph.hpp"
 
 namespace pita {
-
-// The SAM class of a pose type: SteadyAffineMorph for Affine2,
-// SteadyAffineMorph3 for Affine3.
-template <class Pose>
-struct SteadyMorphOf;
-template <>
-struct SteadyMorphOf<Affine2> {
-  using type = SteadyAffineMorph;
-};
-template <>
-struct SteadyMorphOf<Affine3> {
-  using type = SteadyAffineMorph3;
-};
-template <class Pose>
-using SteadyMorph = typename SteadyMorphOf<Pose>::type;
 
 // SAM(F_A, t, F_B): the pose at time t of the SAM from F_A to F_B (Sec. 5.3).
 template <class Pose>

@@ -4,7 +4,7 @@ namespace pita {
 
 SamVelocityField::SamVelocityField(const Affine2& A)
     : powers_(A),
-      generator_{powers_.linear_log(), powers_.velocity_translation()},
+      generator_(powers_.log()),
       fixed_point_(pita::fixed_point(A)) {}
 
 SamVelocityField SamVelocityField::between(const Affine2& B, const Affine2& C) {

@@ -38,7 +38,7 @@ class SamVelocityField {
   const Affine2& generator() const { return generator_; }
 
  private:
-  AffinePowers powers_;
+  AffinePowers<Affine2> powers_;
   Affine2 generator_;
   std::optional<Eigen::Vector2d> fixed_point_;
 };

@@ -8,9 +8,9 @@
 #include <fmt/format.h>
 
 #include "core/affine_power.hpp"
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/overloaded.hpp"
-#include "core/steady_affine_morph3.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "core/steady_morph.hpp"
 #include "python/bindings.hpp"
 #include "python/chunks.hpp"
@@ -97,7 +97,7 @@ void check_homogeneous(const MatrixStack& stack, const char* name) {
   }
 }
 
-template <class Powers, class Affine>
+template <class Affine>
 py::array ear_powers(const MatrixStack& stack, const Times& times, const std::vector<py::ssize_t>& shape) {
   // The broadcast of the stack's batch and the times' shape, element by element.
   const py::module_ np = py::module_::import("numpy");
@@ -117,7 +117,7 @@ py::array ear_powers(const MatrixStack& stack, const Times& times, const std::ve
   const std::size_t n = static_cast<std::size_t>(matrix_index.size());
   // EAR's case selection and log once per matrix: consecutive elements of one
   // matrix (a single matrix at many times) share them.
-  std::optional<Powers> powers;
+  std::optional<AffinePowers<Affine>> powers;
   std::int64_t built = -1;
   std::optional<std::string> failure;
   std::size_t failed = 0;
@@ -148,8 +148,8 @@ py::object ear_power(const py::handle& M, const py::handle& t) {
   for (const double x : stack.values) {
     if (!std::isfinite(x)) throw py::value_error("M: every entry must be finite");
   }
-  return stack.dimension == 2 ? ear_powers<AffinePowers, Affine2>(stack, times, {})
-                              : ear_powers<AffinePowers3, Affine3>(stack, times, {});
+  return stack.dimension == 2 ? ear_powers<Affine2>(stack, times, {})
+                              : ear_powers<Affine3>(stack, times, {});
 }
 
 py::object sma(const py::handle& a, const py::handle& b, const py::handle& t) {
@@ -180,8 +180,7 @@ py::object sam(const py::handle& a, const py::handle& b, const py::handle& t) {
       [&](const auto& from) -> py::object {
         using Affine = std::decay_t<decltype(from)>;
         const Affine& to = std::get<Affine>(B);
-        using Morph = std::conditional_t<std::is_same_v<Affine, Affine2>, SteadyAffineMorph, SteadyAffineMorph3>;
-        std::optional<Morph> morph;
+        std::optional<SteadyAffineMorph<Affine>> morph;
         try {
           morph.emplace(from, to);
         } catch (const NoRealLogarithm& error) {
@@ -222,7 +221,7 @@ SamExistence existence(const Pose& M) {
                         },
                         [&](const Affine3& A) {
                           try {
-                            const AffinePowers3 powers(A);
+                            const AffinePowers powers(A);
                             answer.exists = true;
                           } catch (const NoRealLogarithm& error) {
                             answer.reason = error.what();

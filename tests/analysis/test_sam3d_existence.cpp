@@ -17,7 +17,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 
 namespace pita::analysis {
 namespace {
@@ -68,7 +68,7 @@ TEST(Sam3dExistence, HasRealLogarithmAgreesWithEigenAndWithEar) {
     EXPECT_EQ(ours, eigen_says_real_log(L)) << L;
     bool ear = true;
     try {
-      (void)AffinePowers3(Affine3{L, Vector3d::Zero()});
+      (void)AffinePowers(Affine3{L, Vector3d::Zero()});
     } catch (const NoRealLogarithm&) {
       ear = false;
     }

@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 
 #include "core/affine_power.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "core/limits.hpp"
 #include "support/matrix_functions.hpp"
 
@@ -551,6 +552,39 @@ TEST(AffinePower, NoRealPowerIsRefused) {
   }
   EXPECT_THROW(AffinePowers(Affine2{mat(1.0, 0.0, 0.0, -1.0), Vector2d::Zero()}), NoRealLogarithm);
   EXPECT_THROW(AffinePowers(Affine2{mat(NAN, 0.0, 0.0, 1.0), Vector2d::Zero()}), NoRealLogarithm);
+}
+
+// with_translation(b) is AffinePowers(Affine2{L, b}) bit for bit, in each way
+// of computing the translation (series near I, fixed point, eigenvalues).
+TEST(AffinePower, WithTranslationIsAFreshConstruction) {
+  const Vector2d b(-0.7, 2.5);
+  for (const Matrix2d& L : {Matrix2d(mat(1.05, 0.02, -0.01, 0.97)), Matrix2d(2.0 * rotation(0.8)),
+                            Matrix2d(mat(1.1, 0.3, 0.0, 3.0)), Matrix2d(mat(1.0, 2.0, 0.0, 1.0))}) {
+    const AffinePowers fresh(Affine2{L, b});
+    const AffinePowers moved = AffinePowers(Affine2{L, Vector2d(4.0, -1.0)}).with_translation(b);
+    EXPECT_EQ(moved.affinity().b, b);
+    EXPECT_EQ(moved.log().L, fresh.log().L);
+    EXPECT_EQ(moved.log().b, fresh.log().b);
+    for (const double t : {-1.3, 0.25, 0.5, 2.0, 7.0}) {
+      EXPECT_EQ(moved.at(t).L, fresh.at(t).L) << t;
+      EXPECT_EQ(moved.at(t).b, fresh.at(t).b) << t;
+      EXPECT_EQ(moved.velocity(t).b, fresh.velocity(t).b) << t;
+    }
+  }
+  EXPECT_THROW((void)AffinePowers(Affine2::identity()).with_translation(Vector2d(NAN, 0.0)), NoRealLogarithm);
+}
+
+// velocity(t) = d/dt A^t = log(A) A^t (central differences).
+TEST(AffinePower, VelocityIsTheDerivative) {
+  const AffinePowers powers(Affine2{1.5 * rotation(0.6), Vector2d(1.0, -2.0)});
+  const double h = 1e-6;
+  for (const double t : {-0.5, 0.0, 0.4, 1.0, 2.5}) {
+    const Affine2 before = powers.at(t - h), after = powers.at(t + h), rate = powers.velocity(t);
+    EXPECT_LT((rate.L - (after.L - before.L) / (2.0 * h)).norm(), 1e-7) << t;
+    EXPECT_LT((rate.b - (after.b - before.b) / (2.0 * h)).norm(), 1e-7) << t;
+  }
+  EXPECT_EQ(powers.velocity(0.0).L, powers.log().L);
+  EXPECT_EQ(powers.velocity(0.0).b, powers.log().b);
 }
 
 // -------------------------------------------------------- Steady Affine Morph

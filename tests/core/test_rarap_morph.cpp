@@ -11,6 +11,7 @@
 #include "core/affine_power.hpp"
 #include "core/rarap_morph.hpp"
 #include "core/steadiness.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "fig2_morph_support.hpp"
 
 namespace pita {

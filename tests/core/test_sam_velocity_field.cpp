@@ -11,6 +11,7 @@
 
 #include "core/affine_power.hpp"
 #include "core/sam_velocity_field.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "support/matrix_functions.hpp"
 
 namespace pita {

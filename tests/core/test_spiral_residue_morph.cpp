@@ -8,6 +8,7 @@
 
 #include "core/affine_power.hpp"
 #include "core/spiral_residue_morph.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "fig2_morph_support.hpp"
 
 namespace pita {

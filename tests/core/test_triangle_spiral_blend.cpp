@@ -7,6 +7,7 @@
 #include <complex>
 
 #include "core/affine_power.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "core/triangle_spiral_blend.hpp"
 #include "fig2_morph_support.hpp"
 

@@ -1,4 +1,4 @@
-// A test-only window on EAR in 3D (core/affine_power3.hpp) for the
+// A test-only window on EAR in 3D (core/affine_power_of_space.hpp) for the
 // independent oracle tests/oracle/sam3d_oracle.py (ctest oracle.sam3d_compare):
 // 3D scenes do not exist in the CLI yet, so the oracle asks this instead of
 // `pita eval`.
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 
 int main() {
   std::string line;

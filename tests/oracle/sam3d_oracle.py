@@ -2,7 +2,7 @@
 """Independent high-precision oracle for real powers A^t of 3D affinities (EAR in 3D).
 
 Pure Python 3 standard library (decimal, 60 significant digits), sharing nothing with
-pita's split of src/core/affine_power3.cpp (no eigenvector, no 2D block): the principal
+pita's split of src/core/affine_power_of_space.cpp (no eigenvector, no 2D block): the principal
 real logarithm of the 4x4 homogeneous matrix H = [[L, b], [0, 0, 0, 1]] is computed by
 inverse scaling and squaring, as tests/oracle/sam_oracle.py does in 2D,
 
@@ -13,7 +13,7 @@ and A^t = exp(t log H) by scaling and squaring of the Taylor series.  The iterat
 converges to the principal square root whenever H has no eigenvalue on the closed negative
 real axis (Jordan blocks, shears and translations included).  An exact rotation by pi has
 no principal log (pita takes the rotation by +pi, docs/paper-notes.md N58); the oracle
-refuses it and the comparison leaves it to tests/core/test_affine_power3.cpp.
+refuses it and the comparison leaves it to tests/core/test_affine_power_of_space.cpp.
 
 Usage:
   sam3d_oracle.py                      self-check (exit 0 when every check holds to 1e-40)
@@ -409,7 +409,7 @@ def compare(probe):
         "stretch 1e4": [[1e4, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1]],
         "stretch 1e2, 1e-2": [[1e2, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1e-2, 1]],
     }
-    # the two random cases of tests/core/test_affine_power3.cpp where a 1e-12
+    # the two random cases of tests/core/test_affine_power_of_space.cpp where a 1e-12
     # check failed: exp(log A) at 1.08e-12 (condition 3.3e6: ours is 6e-12 from
     # the oracle at t = 0.37, the floor of double for that conditioning) and
     # Eigen's pow 7.4e-10 from ours (ours 1.6e-14 from the oracle)

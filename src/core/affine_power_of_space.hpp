@@ -65,18 +65,25 @@ std::array<std::complex<double>, 3> eigenvalues(const Eigen::Matrix3d& L);
 // of L (within limits::kUnitEigenvalue: no unique fixed point).
 std::optional<Eigen::Vector3d> fixed_point(const Affine3& A);
 
-// The real powers A^t of one 3D affinity (EAR, A.6). The constructor makes
-// the split and the 2D EARs once; at(t) is then a few 2D powers.
-class AffinePowers3 {
+// The real powers A^t of one 3D affinity (EAR, A.6), with the verbs of the
+// 2D EAR (affine_power.hpp). The constructor makes the split and the 2D EARs
+// once; at(t) is then a few 2D powers.
+template <>
+class AffinePowers<Affine3> {
  public:
   // Throws NoRealLogarithm (case G3) when L has no real log (a negative
   // eigenvalue of odd multiplicity or a negative Jordan block, Culver, Sec.
   // 5.1), det L <= 0, or a non-finite entry; what() lists the eigenvalues.
-  explicit AffinePowers3(const Affine3& A);
+  explicit AffinePowers(const Affine3& A);
 
   // A^t: at(0) = identity, at(1) = A, at(s) o at(t) = at(s + t). A
   // non-finite t gives a non-finite affinity (NaN).
   Affine3 at(double t) const;
+
+  // The powers of [L | b], A's linear part with another translation b: the
+  // same as AffinePowers(Affine3{L, b}) without redoing the split and the
+  // 2D EARs. Throws NoRealLogarithm for a non-finite b, as the constructor does.
+  AffinePowers with_translation(const Eigen::Vector3d& b) const;
 
   const Affine3& affinity() const { return A_; }
 
@@ -85,6 +92,11 @@ class AffinePowers3 {
   // does not need it). The split's log, then Newton steps in extended
   // precision where exp of it misses A by more than 1e-13 (N58).
   Affine3 log() const;
+
+  // d/dt A^t = log A A^t, as (dL/dt, db/dt) = (log(L) L^t, log(L) b_t + v),
+  // b_t the translation of A^t. Takes log() each call (about 2 us, more where
+  // its Newton steps are needed, N58); at() never does.
+  Affine3 velocity(double t) const;
 
   // The log by the split alone (A.6), before log()'s refinement (for tests
   // and the paper note).
@@ -99,6 +111,7 @@ class AffinePowers3 {
   // How the corner f[lambda, M, 1] (the translation along u) is computed.
   enum class Corner { unit_series, over_lambda_minus_one, over_lambda_minus_M };
 
+  void set_translation(const Eigen::Vector3d& b);  // A_.b, and beta_ and c_ from it
   Affine3 at_small(double t) const;
   Eigen::Vector3d unit_series(double t) const;  // g_t(L) b, |t| <= kUnitSeriesMaxTime
 
@@ -108,14 +121,16 @@ class AffinePowers3 {
   double log_lambda_ = 0.0;
   Eigen::Vector2d w_, c_, lean_solve_;  // lean_solve_ = (lambda I - M)^-1 c
   double beta_ = 0.0;
-  std::optional<AffinePowers> plane_;     // [M | c]
-  std::optional<AffinePowers> relative_;  // [M^T / lambda | 0]
+  std::optional<AffinePowers<Affine2>> plane_;     // [M | c]
+  std::optional<AffinePowers<Affine2>> relative_;  // [M^T / lambda | 0]
   Corner corner_ = Corner::over_lambda_minus_one;
   Eigen::Matrix2d M_;               // the plane block
   bool lean_by_sylvester_ = false;  // log(): the lean row by Sylvester (N58)
 };
 
-// A^t (builds AffinePowers3; use the class for many t).
+AffinePowers(const Affine3&) -> AffinePowers<Affine3>;
+
+// A^t (builds AffinePowers; use the class for many t).
 Affine3 affine_power(const Affine3& A, double t);
 
 // ------------------------------------------------------------ shared verbs

@@ -1,4 +1,4 @@
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 
 #include <Eigen/LU>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -86,7 +86,7 @@ std::optional<Vector3d> fixed_point(const Affine3& A) {
   return q;
 }
 
-AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
+AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
   if (!A.L.allFinite() || !A.b.allFinite()) {
     throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
   }
@@ -105,13 +105,11 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
   const Split s = detail::split(A.L);
   Q_ = s.Q;
   const Matrix3d T = detail::standardised_split(A.L, Q_);
-  const Vector3d moved = Q_.transpose() * A.b;
   lambda_ = T(0, 0);
   w_ = T.block<1, 2>(0, 1).transpose();
   Matrix2d M = T.block<2, 2>(1, 1);
   snap_to_half_turn(M);
-  beta_ = moved(0);
-  c_ = moved.tail<2>();
+  set_translation(A.b);
 
   const Eigenvalues plane_values = pita::eigenvalues(M);
   const Complex mu1(plane_values.re1, plane_values.im1), mu2(plane_values.re2, plane_values.im2);
@@ -157,7 +155,31 @@ AffinePowers3::AffinePowers3(const Affine3& A) : A_(A) {
 
 }
 
-Affine3 AffinePowers3::split_log() const {
+void AffinePowers<Affine3>::set_translation(const Vector3d& b) {
+  A_.b = b;
+  const Vector3d moved = Q_.transpose() * b;
+  beta_ = moved(0);
+  c_ = moved.tail<2>();
+}
+
+AffinePowers<Affine3> AffinePowers<Affine3>::with_translation(const Vector3d& b) const {
+  if (!b.allFinite()) throw NoRealLogarithm("the affinity has a non-finite entry", RootCase::G3);
+  AffinePowers powers = *this;
+  powers.set_translation(b);
+  powers.plane_ = plane_->with_translation(powers.c_);  // [M | c]
+  if (corner_ == Corner::over_lambda_minus_M) {
+    powers.lean_solve_ = (lambda_ * Matrix2d::Identity() - M_).inverse() * powers.c_;  // as the constructor's
+  }
+  return powers;
+}
+
+Affine3 AffinePowers<Affine3>::velocity(double t) const {
+  const Affine3 generator = log();
+  const Affine3 power = at(t);
+  return {generator.L * power.L, generator.L * power.b + generator.b};
+}
+
+Affine3 AffinePowers<Affine3>::split_log() const {
   Affine3 log;
   // log L = Q [[ln lambda, w^T ln[lambda, M]], [0, log M]] Q^T with
   // ln[lambda, M] = l(M / lambda) / lambda (transposed: the row w^T acts on the left).
@@ -221,7 +243,7 @@ long double log_residual(const Matrix4l& X, const Matrix4l& H) {
 
 }  // namespace
 
-Affine3 AffinePowers3::log() const {
+Affine3 AffinePowers<Affine3>::log() const {
   // Newton's method on exp(X) = A (N58, "refinement"): the residual
   // R = A - exp(X) in long double, the Frechet derivative of exp at X by the
   // block identity exp([[X, E], [0, X]]) = [[e^X, Dexp_X(E)], [0, e^X]]
@@ -268,7 +290,7 @@ Affine3 AffinePowers3::log() const {
   return best;
 }
 
-Vector3d AffinePowers3::unit_series(double t) const {
+Vector3d AffinePowers<Affine3>::unit_series(double t) const {
   // g_t(I + E) b = sum_{n>=1} C(t, n) E^{n-1} b (spectral radius of E <= 1/4).
   // Three small terms in a row end it: by Cayley-Hamilton every later one is
   // a combination of them.
@@ -286,7 +308,7 @@ Vector3d AffinePowers3::unit_series(double t) const {
   return sum;
 }
 
-Affine3 AffinePowers3::at_small(double t) const {
+Affine3 AffinePowers<Affine3>::at_small(double t) const {
   // The plane: [M | c]^t = [M^t | g_t(M) c] (2D EAR).
   const Affine2 plane = plane_->at(t);
   // The lean: w^T (z^t)[lambda, M] = lambda^(t-1) (g_t(M^T / lambda) w)^T.
@@ -312,7 +334,7 @@ Affine3 AffinePowers3::at_small(double t) const {
   return result;
 }
 
-Affine3 AffinePowers3::at(double t) const {
+Affine3 AffinePowers<Affine3>::at(double t) const {
   if (!std::isfinite(t)) return not_a_number();
   if (t == 0.0) return Affine3::identity();
   if (t == 1.0) return A_;
@@ -329,9 +351,9 @@ Affine3 AffinePowers3::at(double t) const {
   return result;
 }
 
-Affine3 affine_power(const Affine3& A, double t) { return AffinePowers3(A).at(t); }
+Affine3 affine_power(const Affine3& A, double t) { return AffinePowers(A).at(t); }
 
-Affine3 log(const Affine3& A) { return AffinePowers3(A).log(); }
+Affine3 log(const Affine3& A) { return AffinePowers(A).log(); }
 
 Affine3 exp(const Affine3& generator) {
   Eigen::Matrix4d H = Eigen::Matrix4d::Zero();

@@ -1,4 +1,4 @@
-// EAR in 3D (core/affine_power3.hpp, SAM paper appendix A.6): log and real
+// EAR in 3D (core/affine_power_of_space.hpp, SAM paper appendix A.6): log and real
 // powers of 3D affinities, checked by their properties (exp(log A) = A,
 // A^s A^t = A^{s+t}), by closed forms for each singular sub-case of A.6, by
 // the 2D EAR on embedded planar affinities, and against Eigen's
@@ -17,7 +17,7 @@
 #include <Eigen/Dense>
 
 #include "core/affine_power.hpp"
-#include "core/affine_power3.hpp"
+#include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
 #include "support/matrix_functions.hpp"
 
@@ -136,7 +136,7 @@ TEST(AffinePower3, IdentityAtZeroAndAAtOne) {
   RandomAffinities random(1);
   for (int i = 0; i < 50; ++i) {
     const Affine3 A = random.next(1e4, 10.0);
-    const AffinePowers3 powers(A);
+    const AffinePowers powers(A);
     EXPECT_EQ(homogeneous(powers.at(0.0)), Matrix4d::Identity());
     EXPECT_EQ(homogeneous(powers.at(1.0)), homogeneous(A));
   }
@@ -149,7 +149,7 @@ TEST(AffinePower3, IdentityAtZeroAndAAtOne) {
 struct LogErrors {
   double ours, floor, eigen;
 };
-LogErrors log_errors(const AffinePowers3& powers) {
+LogErrors log_errors(const AffinePowers<Affine3>& powers) {
   const Affine3& A = powers.affinity();
   const Eigen::Matrix<long double, 4, 4> H = homogeneous(A).cast<long double>();
   const Matrix4d rounded = oracle::log(H).cast<double>();
@@ -173,7 +173,7 @@ TEST(AffinePower3, ExpOfLogAndPowersAddOnIllConditionedAffinities) {
     const Affine3 A = random.next(1e4, 1e2, i % 2 == 0);
     const double condition = condition_number(A.L);
     worst_condition = std::max(worst_condition, condition);
-    const AffinePowers3 powers(A);
+    const AffinePowers powers(A);
     const LogErrors e = log_errors(powers);
     worst_exp = std::max(worst_exp, e.ours);
     EXPECT_LE(e.ours, std::max(1e-12, 8.0 * e.floor))
@@ -209,7 +209,7 @@ TEST(AffinePower3, ExpOfLogHoldsOneE12NearConditionOneE8) {
     const Affine3 A = random.next(1e4, 2e2, true);
     const double condition = condition_number(A.L);
     worst_condition = std::max(worst_condition, condition);
-    const AffinePowers3 powers(A);
+    const AffinePowers powers(A);
     const LogErrors e = log_errors(powers);
     worst_ours = std::max(worst_ours, e.ours);
     worst_eigen = std::max(worst_eigen, e.eigen);
@@ -236,7 +236,7 @@ TEST(AffinePower3, ExpOfLogOnAThousandCasesNearConditionOneE8) {
   double worst = 0.0;
   for (int i = 0; i < kCases; ++i) {
     const Affine3 A = random.next(1e4, 2e2, true);
-    const LogErrors e = log_errors(AffinePowers3(A));
+    const LogErrors e = log_errors(AffinePowers(A));
     worst = std::max(worst, e.ours);
     beyond += e.ours > 1e-12 ? 1 : 0;
     EXPECT_LE(e.ours, std::max(1e-12, 8.0 * e.floor)) << "case " << i << " (correctly rounded log: " << e.floor << ")";
@@ -256,7 +256,7 @@ TEST(AffinePower3, RefinedLogStaysOnTheSplitsBranch) {
     Affine3 A;
     A.L = S * rotation(Vector3d(1.0, 2.0, 3.0), kPi - e) * S.inverse();
     A.b = Vector3d(1.0, -2.0, 0.5);
-    const AffinePowers3 powers(A);
+    const AffinePowers powers(A);
     const Affine3 split = powers.split_log();
     EXPECT_LE(relative_error(powers.log(), split), 1e-6) << "e " << e;
     EXPECT_LE(relative_error(exp_long_double(powers.log()), A), std::max(1e-12, 4e-16 / e)) << "e " << e;
@@ -343,7 +343,7 @@ TEST(AffinePower3Cases, ScrewMotion) {
     const Matrix3d R = rotation(u, angle);
     return Affine3{R, p - R * p + slide * u};
   };
-  const AffinePowers3 powers(screw(theta, d));
+  const AffinePowers powers(screw(theta, d));
   for (double t : kTimes) EXPECT_AFFINE_NEAR(powers.at(t), screw(t * theta, t * d), 1e-14) << "t " << t;
   EXPECT_FALSE(fixed_point(screw(theta, d)).has_value());
 }
@@ -415,7 +415,7 @@ TEST(AffinePower3Cases, LargeTimesThroughSquaring) {
   Matrix3d N;
   N << 0, 0.4, 0.2, 0, 0, -0.3, 0, 0, 0;
   const Vector3d b(0.5, 1.0, -0.25);
-  const AffinePowers3 powers(Affine3{Matrix3d::Identity() + N, b});
+  const AffinePowers powers(Affine3{Matrix3d::Identity() + N, b});
   for (const double t : {-40.0, 37.5, 100.25}) {
     const double c2 = t * (t - 1.0) / 2.0, c3 = c2 * (t - 2.0) / 3.0;
     const Affine3 expected{Matrix3d::Identity() + t * N + c2 * N * N, t * b + c2 * N * b + c3 * N * N * b};
@@ -501,7 +501,7 @@ TEST(AffinePower3Cases, HalfTurnAboutAnAxis) {
     return Affine3{L, p - L * p + slide * axis};
   };
   const Affine3 A = turn(kPi, d, 1.0, 1.0);
-  const AffinePowers3 powers(A);
+  const AffinePowers powers(A);
   for (double t : kTimes) EXPECT_AFFINE_NEAR(powers.at(t), turn(t * kPi, t * d, 1.0, 1.0), 1e-14) << "t " << t;
   const Affine3 half = powers.at(0.5);
   EXPECT_AFFINE_NEAR(compose(half, half), A, 1e-15);
@@ -535,6 +535,46 @@ TEST(AffinePower3Cases, NearHalfTurns) {
 
 // ------------------------------------------------------------ no real log
 
+// with_translation(b) is AffinePowers(Affine3{L, b}) bit for bit, in each way
+// of computing the corner (series near I, over lambda - 1, over lambda I - M).
+TEST(AffinePower3, WithTranslationIsAFreshConstruction) {
+  const Vector3d b(-0.7, 2.5, 1.25);
+  Matrix3d near_identity = Matrix3d::Identity();
+  near_identity(0, 1) = 0.05;
+  near_identity(2, 0) = -0.03;
+  Matrix3d stretch = Matrix3d::Zero();
+  stretch.diagonal() << 3.0, 0.5, 0.6;
+  stretch(0, 2) = 0.4;
+  Matrix3d lean = Matrix3d::Zero();
+  lean.diagonal() << 1.5, 3.0, 3.2;
+  lean(0, 1) = 0.3;
+  lean(1, 2) = -0.2;
+  for (const Matrix3d& L : {near_identity, Matrix3d(2.0 * rotation(Vector3d(1, 2, 2), 0.9)), stretch, lean}) {
+    const AffinePowers fresh(Affine3{L, b});
+    const AffinePowers moved = AffinePowers(Affine3{L, Vector3d(4.0, -1.0, 0.5)}).with_translation(b);
+    EXPECT_EQ(moved.affinity().b, b);
+    EXPECT_EQ(moved.log().L, fresh.log().L);
+    EXPECT_EQ(moved.log().b, fresh.log().b);
+    for (const double t : {-1.3, 0.25, 0.5, 2.0, 7.0}) {
+      EXPECT_EQ(moved.at(t).L, fresh.at(t).L) << t;
+      EXPECT_EQ(moved.at(t).b, fresh.at(t).b) << t;
+      EXPECT_EQ(moved.velocity(t).b, fresh.velocity(t).b) << t;
+    }
+  }
+  EXPECT_THROW((void)AffinePowers(Affine3::identity()).with_translation(Vector3d(0.0, NAN, 0.0)), NoRealLogarithm);
+}
+
+// velocity(t) = d/dt A^t = log(A) A^t (central differences).
+TEST(AffinePower3, VelocityIsTheDerivative) {
+  const AffinePowers powers(Affine3{1.5 * rotation(Vector3d(1, 0, 1).normalized(), 0.6), Vector3d(1.0, -2.0, 0.5)});
+  const double h = 1e-6;
+  for (const double t : {-0.5, 0.0, 0.4, 1.0, 2.5}) {
+    const Affine3 before = powers.at(t - h), after = powers.at(t + h), rate = powers.velocity(t);
+    EXPECT_LT((rate.L - (after.L - before.L) / (2.0 * h)).norm(), 1e-7) << t;
+    EXPECT_LT((rate.b - (after.b - before.b) / (2.0 * h)).norm(), 1e-7) << t;
+  }
+}
+
 TEST(AffinePower3, NoRealLogarithmIsRefusedWithTheEigenvalues) {
   struct Case {
     Matrix3d L;
@@ -554,7 +594,7 @@ TEST(AffinePower3, NoRealLogarithmIsRefusedWithTheEigenvalues) {
   cases[4].words = {"-1", "-2", "5"};
   for (const Case& c : cases) {
     try {
-      AffinePowers3 powers(Affine3{c.L, Vector3d(1, 2, 3)});
+      AffinePowers powers(Affine3{c.L, Vector3d(1, 2, 3)});
       ADD_FAILURE() << "no refusal for\n" << c.L;
     } catch (const NoRealLogarithm& error) {
       EXPECT_EQ(error.root_case(), RootCase::G3);
