@@ -20,25 +20,27 @@ TEST(BodyPoints, PlaneBodyIsThePanelsShapesPoints) {
   EXPECT_EQ(body_points<Affine2>(scene, panel), (std::vector<Point>{{0, 0}, {1, 0}, {0, 1}, {2, 2}, {3, 2}}));
   // Without shapes (a scene the readers never give): the reference triangle.
   Panel bare = panel;
-  bare.shapes.clear();
-  EXPECT_EQ(body_points<Affine2>(scene, bare),
-            std::vector<Point>(scene.reference_triangle.begin(), scene.reference_triangle.end()));
+  figure_of<PlanePoseKeys>(bare).shapes.clear();
+  const auto& reference = figure_of<PlanePoseKeys>(scene).reference;
+  EXPECT_EQ(body_points<Affine2>(scene, bare), std::vector<Point>(reference.begin(), reference.end()));
 }
 
-// In space: every vertex of every solid of the scene; by default the
-// reference tetrahedron's solid, and the tetrahedron itself without solids.
+// In space: every vertex of every solid the panel draws (the scene's); by
+// default the reference tetrahedron's solid, and the tetrahedron itself
+// without solids.
 TEST(BodyPoints, SpaceBodyIsTheSolidsVertices) {
-  Scene scene = parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}], "poses": [
+  const Scene scene = parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}], "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 1, "matrix": [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
                             "space.json");
-  const Panel panel = scene_panel(scene);
-  ASSERT_EQ(scene.solids.size(), 1u);
-  EXPECT_EQ(body_points<Affine3>(scene, panel), scene.solids[0].vertices);
+  Panel panel = scene_panel(scene);
+  const auto& solids = figure_of<SpacePoseKeys>(scene).shapes;
+  ASSERT_EQ(solids.size(), 1u);
+  EXPECT_EQ(body_points<Affine3>(scene, panel), solids[0].vertices);
   EXPECT_EQ(body_points<Affine3>(scene, panel).size(), 8u);
-  scene.solids.clear();
-  EXPECT_EQ(body_points<Affine3>(scene, panel),
-            std::vector<Eigen::Vector3d>(scene.reference_tetrahedron.begin(), scene.reference_tetrahedron.end()));
+  figure_of<SpacePoseKeys>(panel).shapes.clear();
+  const auto& reference = figure_of<SpacePoseKeys>(scene).reference;
+  EXPECT_EQ(body_points<Affine3>(scene, panel), std::vector<Eigen::Vector3d>(reference.begin(), reference.end()));
 }
 
 }  // namespace
