@@ -1,19 +1,17 @@
 // The ARAP decomposition L = R(alpha + beta) B (core/arap_decomposition.hpp,
 // SAM paper Sec. 3.3.2): checked against the closed-form polar decomposition
 // of a 2x2 matrix (rotation angle atan2(c - b, a + d), B = sqrt(L^T L)).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
 
 #include "core/arap_decomposition.hpp"
 
 namespace pita {
 namespace {
-
 
 Eigen::Matrix2d matrix(double a, double b, double c, double d) {
   Eigen::Matrix2d M;
@@ -38,25 +36,25 @@ void expect_decomposes(const Eigen::Matrix2d& L) {
   EXPECT_GE(d.singular(0), d.singular(1));
   // The angle is the polar rotation's, in (-pi, pi], and alpha + beta modulo 2 pi.
   EXPECT_NEAR(d.angle, polar_angle(L), 1e-12);
-  EXPECT_GT(d.angle, -kPi);
-  EXPECT_LE(d.angle, kPi);
-  const double turns = (d.alpha + d.beta - d.angle) / (2.0 * kPi);
+  EXPECT_GT(d.angle, -std::numbers::pi);
+  EXPECT_LE(d.angle, std::numbers::pi);
+  const double turns = (d.alpha + d.beta - d.angle) / (2.0 * std::numbers::pi);
   EXPECT_NEAR(turns, std::round(turns), 1e-12);
 }
 
 TEST(ArapDecomposition, IsThePolarDecomposition) {
   expect_decomposes(matrix(2.2, 0.6, 0.3, 1.6));
   expect_decomposes(matrix(0.7, -1.6, 2.4, 1.1));
-  expect_decomposes(matrix(1.0, 0.0, 0.0, 2.0));   // an SVD with reflections to exchange
+  expect_decomposes(matrix(1.0, 0.0, 0.0, 2.0));     // an SVD with reflections to exchange
   expect_decomposes(matrix(-1.0, 0.3, -0.2, -2.0));  // turning by nearly pi
-  expect_decomposes(matrix(3.0, 0.0, 0.0, 3.0));   // a similarity: U, V not unique, U^T V is
+  expect_decomposes(matrix(3.0, 0.0, 0.0, 3.0));     // a similarity: U, V not unique, U^T V is
 }
 
 // Rotation and stretch are recovered whatever the angles alpha and beta: their
 // sum beyond pi comes back to (-pi, pi] (ARAP's recommendation).
 TEST(ArapDecomposition, RecoversRotationAndStretch) {
   const Eigen::Matrix2d S = rotation(-1.2) * Eigen::Vector2d(2.0, 0.5).asDiagonal() * rotation(1.2);
-  for (const double angle : {0.0, 0.4, -2.5, 3.0, -3.1, kPi - 1e-9}) {
+  for (const double angle : {0.0, 0.4, -2.5, 3.0, -3.1, std::numbers::pi - 1e-9}) {
     SCOPED_TRACE(angle);
     const ArapDecomposition d = arap_decomposition(rotation(angle) * S);
     EXPECT_NEAR(d.angle, angle, 1e-9);
@@ -68,9 +66,9 @@ TEST(ArapDecomposition, RecoversRotationAndStretch) {
 
 // The half turn L = -2 I turns by +pi, whatever the signs of its zeros.
 TEST(ArapDecomposition, HalfTurnIsPlusPi) {
-  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, 0.0, -2.0)).angle, kPi);
-  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, -0.0, -2.0)).angle, kPi);
-  EXPECT_EQ(arap_decomposition(matrix(-2.0, -0.0, 0.0, -2.0)).angle, kPi);
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, 0.0, -2.0)).angle, std::numbers::pi);
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, 0.0, -0.0, -2.0)).angle, std::numbers::pi);
+  EXPECT_EQ(arap_decomposition(matrix(-2.0, -0.0, 0.0, -2.0)).angle, std::numbers::pi);
 }
 
 TEST(ArapDecomposition, RefusesReflectionsAndSingularParts) {

@@ -1,11 +1,10 @@
 // Motions through several poses built from SAMs (core/sam_splines.hpp): the
 // properties Sec. 5.3 and 7.3 of the SAM paper state for them.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
@@ -20,31 +19,31 @@ using test::pose;
 using Eigen::Matrix2d;
 using Eigen::Vector2d;
 
-const Affine2& kA = test::kFig7A;
-const Affine2& kB = test::kFig7B;
-const Affine2& kC = test::kFig7C;
+const Affine2& kSplineA = test::kFig7A;
+const Affine2& kSplineB = test::kFig7B;
+const Affine2& kSplineC = test::kFig7C;
 
 TEST(SamSplines, TheFigureSevenPairHasNoSam) {
-  EXPECT_THROW(SteadyAffineMorph(kA, kC), NoRealLogarithm);
-  EXPECT_NO_THROW(SteadyAffineMorph(kA, kB));
-  EXPECT_NO_THROW(SteadyAffineMorph(kB, kC));
+  EXPECT_THROW(SteadyAffineMorph(kSplineA, kSplineC), NoRealLogarithm);
+  EXPECT_NO_THROW(SteadyAffineMorph(kSplineA, kSplineB));
+  EXPECT_NO_THROW(SteadyAffineMorph(kSplineB, kSplineC));
 }
 
 TEST(SamSplines, BiarcInterpolatesAndIsSmoothAtTheMiddlePose) {
-  const SamBiarc biarc(kA, kB, kC);
-  EXPECT_LT(distance(biarc.at(0.0), kA), 1e-12);
-  EXPECT_LT(distance(biarc.at(0.5), kB), 1e-12);
-  EXPECT_LT(distance(biarc.at(1.0), kC), 1e-12);
+  const SamBiarc biarc(kSplineA, kSplineB, kSplineC);
+  EXPECT_LT(distance(biarc.at(0.0), kSplineA), 1e-12);
+  EXPECT_LT(distance(biarc.at(0.5), kSplineB), 1e-12);
+  EXPECT_LT(distance(biarc.at(1.0), kSplineC), 1e-12);
   // C1 at B: one-sided velocities agree (Sec. 5.3), unlike the polySAM's.
   const double h = 1e-6;
   const auto velocity_gap = [&](auto&& motion, double at) {
     const Affine2 before = motion(at - h), middle = motion(at), after = motion(at + h);
-    const double gap = (after.L - middle.L - (middle.L - before.L)).norm() +
-                       (after.b - middle.b - (middle.b - before.b)).norm();
+    const double gap =
+        (after.L - middle.L - (middle.L - before.L)).norm() + (after.b - middle.b - (middle.b - before.b)).norm();
     return gap / h;
   };
   EXPECT_LT(velocity_gap([&](double u) { return biarc.at(u); }, 0.5), 1e-4);
-  const PoseMotion poly(PoseMethod::poly_sam, {{0.0, kA}, {0.5, kB}, {1.0, kC}});
+  const PoseMotion poly(PoseMethod::poly_sam, {{0.0, kSplineA}, {0.5, kSplineB}, {1.0, kSplineC}});
   EXPECT_GT(velocity_gap([&](double u) { return poly.at(u); }, 0.5), 0.5);
 }
 
@@ -55,9 +54,9 @@ TEST(SamSplines, BezierOfPosesOnOneSamIsThatSam) {
     EXPECT_LT(distance(bezier_sam(P, middle, Q, t), sam(P, t, Q)), 1e-12) << t;
   }
   // Passes through its end poses, not through the middle control.
-  EXPECT_LT(distance(bezier_sam(kA, kB, kC, 0.0), kA), 1e-15);
-  EXPECT_LT(distance(bezier_sam(kA, kB, kC, 1.0), kC), 1e-12);
-  EXPECT_GT(distance(bezier_sam(kA, kB, kC, 0.5), kB), 0.1);
+  EXPECT_LT(distance(bezier_sam(kSplineA, kSplineB, kSplineC, 0.0), kSplineA), 1e-15);
+  EXPECT_LT(distance(bezier_sam(kSplineA, kSplineB, kSplineC, 1.0), kSplineC), 1e-12);
+  EXPECT_GT(distance(bezier_sam(kSplineA, kSplineB, kSplineC, 0.5), kSplineB), 0.1);
 }
 
 TEST(SamSplines, SubdivisionKeepsARegularPatternRegular) {
