@@ -1,0 +1,69 @@
+// PoseLaLp (src/core/pose_pitas/la_lp.cpp, docs/paper-notes.md N75): interpolation, the
+// independent oracle, the arrow PoseLaLp on similarity poses, the invariances and
+// the refusals.
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "core/pitas/p06_la_lp.hpp"
+#include "core/pose_pitas/la_lp.hpp"
+#include "pose_pita_checks.hpp"
+
+namespace pita {
+namespace {
+
+TEST(PoseLaLp, InterpolatesInThePlane) { test::expect_interpolates<PoseLaLp, 2>(1); }
+TEST(PoseLaLp, InterpolatesInSpace) { test::expect_interpolates<PoseLaLp, 3>(2); }
+
+TEST(PoseLaLp, MatchesMatrixFunctionsInThePlane) {
+  EXPECT_GE((test::expect_matches_oracle<PoseLaLp, 2>(test::oracle_p6<2>, 3, test::kShapeOf<PoseLaLp>)), 150);
+  EXPECT_GE((test::expect_matches_oracle<PoseLaLp, 2>(test::oracle_p6<2>, 4, test::wider(test::kShapeOf<PoseLaLp>))),
+            120);
+}
+TEST(PoseLaLp, MatchesMatrixFunctionsInSpace) {
+  EXPECT_GE((test::expect_matches_oracle<PoseLaLp, 3>(test::oracle_p6<3>, 5, test::kShapeOf<PoseLaLp>)), 150);
+  EXPECT_GE((test::expect_matches_oracle<PoseLaLp, 3>(test::oracle_p6<3>, 6, test::wider(test::kShapeOf<PoseLaLp>))),
+            120);
+}
+
+TEST(PoseLaLp, IsTheArrowPitaOnSimilarities) {
+  const auto arrows = [](const KeyframeTriple& k) -> std::unique_ptr<Motion> { return std::make_unique<LaLp>(k); };
+  test::expect_matches_arrows<PoseLaLp>(arrows, 7);
+  test::expect_matches_arrows<PoseLaLp>(arrows, 8, true);
+}
+
+TEST(PoseLaLp, IsSymmetricAndAffineInvariantOnBothSides) {
+  for (const int n : {2, 3}) {
+    const auto measure = [&](bool left, bool right, bool translations) {
+      return n == 2 ? test::invariance_departure<PoseLaLp, 2>(9, left, right, translations)
+                    : test::invariance_departure<PoseLaLp, 3>(9, left, right, translations);
+    };
+    const double reversal =
+        n == 2 ? test::reversal_departure<PoseLaLp, 2>(10) : test::reversal_departure<PoseLaLp, 3>(10);
+    // Symmetric, and invariant to affinities on either side (docs/paper-notes.md N73).
+    EXPECT_LT(reversal, 1e-12) << n;
+    EXPECT_LT(measure(true, false, false), 1e-12) << n;
+    EXPECT_LT(measure(false, true, false), 1e-12) << n;
+    EXPECT_LT(measure(true, true, false), 1e-12) << n;
+  }
+}
+
+const Affine2 kPoseLaLpNegative{Eigen::Matrix2d{{-2.0, 0.0}, {0.0, -0.5}}, Eigen::Vector2d(1.0, 0.0)};  // G3 from I
+
+TEST(PoseLaLp, RefusesNeighboursWithoutSam) {
+  const PoseTriple<Affine2> k{{{0.0, Affine2{}}, {0.5, kPoseLaLpNegative}, {1.0, Affine2{}}}};
+  EXPECT_THROW(PoseLaLp<Affine2>{k}, NoSamBetweenPoses);
+}
+
+TEST(PoseLaLp, RefusesAtTheTimeAPowerIsMissing) {
+  for (const int n : {2, 3}) {
+    const test::Refusals seen = n == 2 ? test::refusals_in_wild_triples<PoseLaLp, 2>(test::oracle_p6<2>, 15)
+                                       : test::refusals_in_wild_triples<PoseLaLp, 3>(test::oracle_p6<3>, 16);
+    EXPECT_GT(seen.refused, 10) << n;
+    EXPECT_EQ(seen.disagreed, 0) << n;
+    EXPECT_GT(seen.frames, 3000) << n;
+  }
+}
+
+}  // namespace
+}  // namespace pita
