@@ -21,7 +21,7 @@ PoseBeLp<Pose>::PoseBeLp(const PoseTriple<Pose>& k, const SteadyAffineMorph<Pose
       b_to_r_(formed_morph(k[1].pose, right_control_, "between B and the control pose R of P4")),
       r_to_c_(formed_morph(right_control_, k[2].pose, "between the control pose R of P4 and C")) {}
 
-// The outer morph of Eq. 29 at s = 0 and 1 is its first or second pose
+// The outer morph of PITA Eq. 29 at s = 0 and 1 is its first or second pose
 // whatever the power (docs/paper-notes.md N74): u = 0, 1/2, 1 never refuse.
 template <class Pose>
 Pose PoseBeLp<Pose>::bezier(const SteadyAffineMorph<Pose>& first, const SteadyAffineMorph<Pose>& second, double s,

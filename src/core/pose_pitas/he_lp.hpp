@@ -4,7 +4,7 @@
 //   (1) translate the poses by -g, g the centroid of their origins (the
 //       translations b_A, b_B, b_C: where each pose puts the origin),
 //   (2) H(t) = exp(x log A' + y log B' + z log C')                (PITA Eq. 33)
-//       with the homogeneous logs of EAR and the Lagrange weights of Eq. 10,
+//       with the homogeneous logs of EAR and the Lagrange weights of PITA Eq. 10,
 //   (3) translate H(t) back by +g.
 // Only the three poses' own logs are taken, once: each pose needs a real log.
 #pragma once

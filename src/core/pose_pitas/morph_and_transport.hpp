@@ -1,6 +1,6 @@
 // The two steps every pose PITA is built from (docs/paper-notes.md N73): the
 // PITA paper's steady morph and transport of similarities (Sec. 2.3-2.6,
-// Eq. 9-14) with the similarity's power T_{A,B}^s replaced by the SAM's
+// PITA Eq. 9-14) with the similarity's power T_{A,B}^s replaced by the SAM's
 // (B o A^-1)^s (SAM paper Sec. 2.2), in the plane (Affine2) or in space
 // (Affine3):
 //   M(A, B, s) = (B o A^-1)^s o A       SteadyAffineMorph<Pose>(A, B).at(s)
