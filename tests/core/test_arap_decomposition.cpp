@@ -1,19 +1,17 @@
 // The ARAP decomposition L = R(alpha + beta) B (core/arap_decomposition.hpp,
 // SAM paper Sec. 3.3.2): checked against the closed-form polar decomposition
 // of a 2x2 matrix (rotation angle atan2(c - b, a + d), B = sqrt(L^T L)).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
 
 #include "core/arap_decomposition.hpp"
 
 namespace pita {
 namespace {
-
 
 Eigen::Matrix2d matrix(double a, double b, double c, double d) {
   Eigen::Matrix2d M;
@@ -47,9 +45,9 @@ void expect_decomposes(const Eigen::Matrix2d& L) {
 TEST(ArapDecomposition, IsThePolarDecomposition) {
   expect_decomposes(matrix(2.2, 0.6, 0.3, 1.6));
   expect_decomposes(matrix(0.7, -1.6, 2.4, 1.1));
-  expect_decomposes(matrix(1.0, 0.0, 0.0, 2.0));   // an SVD with reflections to exchange
+  expect_decomposes(matrix(1.0, 0.0, 0.0, 2.0));     // an SVD with reflections to exchange
   expect_decomposes(matrix(-1.0, 0.3, -0.2, -2.0));  // turning by nearly pi
-  expect_decomposes(matrix(3.0, 0.0, 0.0, 3.0));   // a similarity: U, V not unique, U^T V is
+  expect_decomposes(matrix(3.0, 0.0, 0.0, 3.0));     // a similarity: U, V not unique, U^T V is
 }
 
 // Rotation and stretch are recovered whatever the angles alpha and beta: their

@@ -1,11 +1,10 @@
 // Motions through several poses built from SAMs (core/sam_splines.hpp): the
 // properties Sec. 5.3 and 7.3 of the SAM paper state for them.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
@@ -39,8 +38,8 @@ TEST(SamSplines, BiarcInterpolatesAndIsSmoothAtTheMiddlePose) {
   const double h = 1e-6;
   const auto velocity_gap = [&](auto&& motion, double at) {
     const Affine2 before = motion(at - h), middle = motion(at), after = motion(at + h);
-    const double gap = (after.L - middle.L - (middle.L - before.L)).norm() +
-                       (after.b - middle.b - (middle.b - before.b)).norm();
+    const double gap =
+        (after.L - middle.L - (middle.L - before.L)).norm() + (after.b - middle.b - (middle.b - before.b)).norm();
     return gap / h;
   };
   EXPECT_LT(velocity_gap([&](double u) { return biarc.at(u); }, 0.5), 1e-4);
