@@ -10,8 +10,6 @@
 // (64-bit mantissa) on affinities at least 0.1 from the identity, where that
 // reference is good to ~1e-18 (near the identity it is not; see
 // tests/core/test_affine_power.cpp).
-#include <benchmark/benchmark.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -20,6 +18,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
+#include <benchmark/benchmark.h>
 
 #include "core/affine_power.hpp"
 #include "support/matrix_functions.hpp"

@@ -14,8 +14,6 @@
 // worst_rel_error and mean_rel_error are |X - R|_F / |R|_F over the same 1024
 // affinities and times, R from Eigen's pow in long double on affinities at
 // least 0.1 from the identity.
-#include <benchmark/benchmark.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -23,8 +21,9 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <benchmark/benchmark.h>
 
 #include "core/affine_power_of_space.hpp"
 #include "support/matrix_functions.hpp"
@@ -119,7 +118,8 @@ using Matrix4l = Eigen::Matrix<long double, 4, 4>;
 const std::vector<Matrix4l>& references() {
   static const std::vector<Matrix4l> result = [] {
     std::vector<Matrix4l> out;
-    for (const Sample& s : samples()) out.push_back(oracle::pow(Matrix4l(homogeneous(s.A).cast<long double>()), static_cast<long double>(s.t)));
+    for (const Sample& s : samples())
+      out.push_back(oracle::pow(Matrix4l(homogeneous(s.A).cast<long double>()), static_cast<long double>(s.t)));
     return out;
   }();
   return result;

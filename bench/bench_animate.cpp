@@ -6,13 +6,12 @@
 //   BM_AnimateFrame:       one frame of Fig. 23 as a PNG, one thread
 // Peak memory is measured outside the benchmark (docs/reference/animate.md "Animation"):
 //   /usr/bin/time -v build/pita animate scenes/fig23-image-motion.json -o /tmp/f --frames N
-#include <benchmark/benchmark.h>
-
-#include <unistd.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <thread>
+
+#include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include "animate/frame.hpp"
 #include "animate/frame_runner.hpp"
@@ -29,7 +28,8 @@ scene::Scene fig23() { return scene::load_scene(fs::path(PITA_SOURCE_DIR) / "sce
 
 void BM_AnimateFrames(benchmark::State& state) {
   const scene::Scene scene = fig23();
-  const animate::Timeline timeline = animate::make_timeline(scene, {std::nullopt, std::nullopt, static_cast<int>(state.range(0))});
+  const animate::Timeline timeline =
+      animate::make_timeline(scene, {std::nullopt, std::nullopt, static_cast<int>(state.range(0))});
   const fs::path dir = fs::temp_directory_path() / ("pita-bench-frames-" + std::to_string(::getpid()));
   animate::Request request;
   request.out = dir / "frames";
@@ -45,7 +45,8 @@ BENCHMARK(BM_AnimateFrames)->Arg(120)->Unit(benchmark::kMillisecond)->UseRealTim
 
 void BM_AnimateSvg(benchmark::State& state) {
   const scene::Scene scene = fig23();
-  const animate::Timeline timeline = animate::make_timeline(scene, {std::nullopt, std::nullopt, static_cast<int>(state.range(0))});
+  const animate::Timeline timeline =
+      animate::make_timeline(scene, {std::nullopt, std::nullopt, static_cast<int>(state.range(0))});
   std::size_t bytes = 0;
   for (auto _ : state) {
     const std::string svg = animate::animated_svg(scene, timeline);

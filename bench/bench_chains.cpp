@@ -7,13 +7,13 @@
 //   BM_ChainPrepare/blend/P6:       building the 12-keyframe blend track
 // Times cycle through kTimes values spread over the knot range, offset so that
 // no sample falls on a knot.
-#include <benchmark/benchmark.h>
-
 #include <cmath>
 #include <cstddef>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "core/chains/chain.hpp"
 #include "core/pitas/registry.hpp"
@@ -103,13 +103,12 @@ int register_chain_benchmarks() {
     Method method;
   };
   const Case cases[] = {
-      {Chain::blend, Method::P6},   {Chain::blend, Method::P8},          {Chain::blend, Method::P3},
-      {Chain::blend, Method::P9},   {Chain::neville, Method::P6},        {Chain::spiral, Method::SMA},
+      {Chain::blend, Method::P6},          {Chain::blend, Method::P8},   {Chain::blend, Method::P3},
+      {Chain::blend, Method::P9},          {Chain::neville, Method::P6}, {Chain::spiral, Method::SMA},
       {Chain::bezier_spiral, Method::SMA},
   };
   for (const Case& c : cases) {
-    const std::string name =
-        "BM_ChainFrame/" + std::string(info(c.chain).name) + "/" + std::string(info(c.method).id);
+    const std::string name = "BM_ChainFrame/" + std::string(info(c.chain).name) + "/" + std::string(info(c.method).id);
     benchmark::RegisterBenchmark(name.c_str(), BM_ChainFrame, c.chain, c.method);
   }
   for (const Method m : {Method::P6, Method::P8, Method::P3, Method::P9, Method::SMA}) {

@@ -1,12 +1,12 @@
 // `pita measure` on every scene of scenes/, in process (load + every panel's
 // measures; no output). Run: build/pita_bench --benchmark_filter=Measure
 //   BM_Measure/<scene>: ms per scene (the target: <= 200 ms each)
-#include <benchmark/benchmark.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "analysis/measure.hpp"
 #include "scene/scene.hpp"

@@ -6,10 +6,10 @@
 //                        built without NDEBUG ("Library was built as DEBUG"); the
 //                        timed loop is inlined from its header into this -O3
 //                        file, so only the code between batches is the library's.
-#include <benchmark/benchmark.h>
-
 #include <string>
 #include <vector>
+
+#include <benchmark/benchmark.h>
 
 #include "core/pitas/registry.hpp"
 

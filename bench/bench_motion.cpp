@@ -4,9 +4,9 @@
 //   BM_EasedFrame/<ease>: the same under an ease (no arc length)
 //   BM_ArcLength1000/P6: 1000 frames of P6 paced by the arc length of p,
 //                        building the arc-length table included
-#include <benchmark/benchmark.h>
-
 #include <string>
+
+#include <benchmark/benchmark.h>
 
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"

@@ -3,12 +3,11 @@
 // and by pita's with several row filters and zlib levels, to choose the
 // default. Run: build/pita_bench --benchmark_filter=PngEncode
 //   BM_PngEncode/<scene>/<writer>: ms per encoding; "bytes": the file's size
-#include <benchmark/benchmark.h>
-
-#include <png.h>
-
 #include <cmath>
 #include <string>
+
+#include <benchmark/benchmark.h>
+#include <png.h>
 
 #include "render/cairo_handles.hpp"
 #include "render/figure.hpp"
@@ -46,15 +45,15 @@ void BM_PngEncode(benchmark::State& state, std::string scene_file, int filters, 
   state.counters["bytes"] = static_cast<double>(size);
 }
 
-#define PITA_PNG_BENCH(name, file)                                                                         \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_cairo, file, -1, 0)->Unit(benchmark::kMillisecond);             \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_all_6, file, PNG_ALL_FILTERS, 6)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_6, file, PNG_FILTER_NONE, 6)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_1, file, PNG_FILTER_NONE, 1)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_3, file, PNG_FILTER_NONE, 3)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_4, file, PNG_FILTER_NONE, 4)->Unit(benchmark::kMillisecond); \
+#define PITA_PNG_BENCH(name, file)                                                                                \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_cairo, file, -1, 0)->Unit(benchmark::kMillisecond);                      \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_all_6, file, PNG_ALL_FILTERS, 6)->Unit(benchmark::kMillisecond);         \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_6, file, PNG_FILTER_NONE, 6)->Unit(benchmark::kMillisecond);        \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_1, file, PNG_FILTER_NONE, 1)->Unit(benchmark::kMillisecond);        \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_3, file, PNG_FILTER_NONE, 3)->Unit(benchmark::kMillisecond);        \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_none_4, file, PNG_FILTER_NONE, 4)->Unit(benchmark::kMillisecond);        \
   BENCHMARK_CAPTURE(BM_PngEncode, name##_none_6_rle, file, PNG_FILTER_NONE, 6, 3)->Unit(benchmark::kMillisecond); \
-  BENCHMARK_CAPTURE(BM_PngEncode, name##_up_6, file, PNG_FILTER_UP, 6)->Unit(benchmark::kMillisecond);     \
+  BENCHMARK_CAPTURE(BM_PngEncode, name##_up_6, file, PNG_FILTER_UP, 6)->Unit(benchmark::kMillisecond);            \
   BENCHMARK_CAPTURE(BM_PngEncode, name##_sub_6, file, PNG_FILTER_SUB, 6)->Unit(benchmark::kMillisecond)
 
 PITA_PNG_BENCH(fig01, "fig01-eight-pitas.json");

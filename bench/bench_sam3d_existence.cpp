@@ -5,8 +5,6 @@
 //   BM_Existence3EigenSolver: the same answer from Eigen's general eigensolver (the tests' oracle)
 //   BM_Existence3Curve/N:     largest_safe_perturbation_curve(N) over 21 axes, one thread
 // agree_percent: how often the two tests agree on the same 4096 matrices (100 expected).
-#include <benchmark/benchmark.h>
-
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -14,6 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <benchmark/benchmark.h>
 
 #include "analysis/sam3d_existence.hpp"
 
@@ -79,7 +78,8 @@ void BM_Existence3Curve(benchmark::State& state) {
   options.subdivisions = 1;
   options.jobs = 1;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(pita::analysis::largest_safe_perturbation_curve(static_cast<int>(state.range(0)), options));
+    benchmark::DoNotOptimize(
+        pita::analysis::largest_safe_perturbation_curve(static_cast<int>(state.range(0)), options));
   }
 }
 

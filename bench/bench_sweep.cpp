@@ -5,10 +5,10 @@
 //     manifest, index.html and the contact sheet included)
 // The comparisons (1000 variants against one process per variant,
 // peak memory of 10 000 variants) are scripts/bench-sweep.sh.
-#include <benchmark/benchmark.h>
-
 #include <filesystem>
 #include <string>
+
+#include <benchmark/benchmark.h>
 
 #include "sweep/sweep.hpp"
 

@@ -8,8 +8,6 @@
 // that folder is a frame directory pita may replace (is_frame_directory).
 // Refusals are SceneError and AnimationError (exit 2); a timeline that is made
 // has 2 to kMaxAnimationFrames frames at finite times in order.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -21,6 +19,7 @@
 #include <type_traits>
 
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "animate/output.hpp"
 #include "animate/timeline.hpp"

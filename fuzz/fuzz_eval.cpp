@@ -29,8 +29,8 @@ constexpr const char* kFile = "fuzz.json";
 void check_frames(const std::vector<scene::Frame>& frames, std::size_t count) {
   PITA_FUZZ_CHECK(frames.size() == count);
   for (const scene::Frame& f : frames) {
-    PITA_FUZZ_CHECK(std::isfinite(f.t) && std::isfinite(f.arrow.p.real()) &&
-                    std::isfinite(f.arrow.p.imag()) && std::isfinite(f.arrow.m) && std::isfinite(f.arrow.w));
+    PITA_FUZZ_CHECK(std::isfinite(f.t) && std::isfinite(f.arrow.p.real()) && std::isfinite(f.arrow.p.imag()) &&
+                    std::isfinite(f.arrow.m) && std::isfinite(f.arrow.w));
   }
 }
 
@@ -84,8 +84,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!scene::has_motion_keys(s.keys)) return 0;  // eval prints no frames
     motion::Stage(s).check();
     const motion::SceneMotion motion = motion::build_motion(s);
-    const std::vector<double> uniform =
-        motion::uniform_times(motion, s.samples.value_or(scene::kDefaultSamples));
+    const std::vector<double> uniform = motion::uniform_times(motion, s.samples.value_or(scene::kDefaultSamples));
     PITA_FUZZ_CHECK(uniform.size() == static_cast<std::size_t>(s.samples.value_or(scene::kDefaultSamples)));
     evaluate(s, motion, uniform);
     // --t: times outside the knots extrapolate; a frame that is not finite is NoMotion.

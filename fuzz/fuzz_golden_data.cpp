@@ -4,14 +4,14 @@
 // with a trailing newline (the same numbers, so every item is walked). A
 // golden that cannot be read must be a GoldenError (docs/reference/check.md "Goldens": exit
 // 2, naming the file); nothing else may escape.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "fuzz_support.hpp"
 #include "golden/check.hpp"

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "fuzz_support.hpp"
 #include "core/overloaded.hpp"
+#include "fuzz_support.hpp"
 #include "scene/scene.hpp"
 
 namespace {

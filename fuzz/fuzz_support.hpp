@@ -4,8 +4,6 @@
 // of the process removed at exit.
 #pragma once
 
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -15,12 +13,14 @@
 #include <string_view>
 #include <system_error>
 
-#define PITA_FUZZ_CHECK(condition)                                                     \
-  do {                                                                                 \
-    if (!(condition)) {                                                                \
+#include <unistd.h>
+
+#define PITA_FUZZ_CHECK(condition)                                                            \
+  do {                                                                                        \
+    if (!(condition)) {                                                                       \
       std::fprintf(stderr, "%s:%d: fuzz check failed: %s\n", __FILE__, __LINE__, #condition); \
-      std::abort();                                                                    \
-    }                                                                                  \
+      std::abort();                                                                           \
+    }                                                                                         \
   } while (false)
 
 namespace pita::fuzz {

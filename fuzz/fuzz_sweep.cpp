@@ -6,14 +6,14 @@
 // refusing conflicts. Bad usage must be a SweepUsageError and a bad manifest
 // a std::runtime_error naming the file; nothing else may escape, and a merge
 // that succeeds must write its rows in increasing order.
-#include <unistd.h>
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "fuzz_support.hpp"
 #include "sweep/grid.hpp"
@@ -52,8 +52,8 @@ void manifest(std::string_view text) {
     const bool sorted = sweep::ManifestReader::is_sorted(part, pointers);
     std::vector<sweep::ManifestReader> sources;
     for (int copy = 0; copy < 2; ++copy) {
-      auto reader = sorted ? sweep::ManifestReader::open(part, pointers)
-                           : sweep::ManifestReader::open_sorted(part, pointers);
+      auto reader =
+          sorted ? sweep::ManifestReader::open(part, pointers) : sweep::ManifestReader::open_sorted(part, pointers);
       PITA_FUZZ_CHECK(reader.has_value());
       sources.push_back(std::move(*reader));
     }

@@ -4,8 +4,6 @@
 // tests/cli/test_bad_scenes_cli.cpp (the pita binary). Needs PITA_SOURCE_DIR.
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cstddef>
@@ -16,6 +14,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace pita::test {
 
@@ -83,8 +83,7 @@ inline std::vector<BadSceneCase> bad_scene_cases() {
     if (path.extension() != ".json") continue;
     cases.push_back({path.stem().string()});
   }
-  std::sort(cases.begin(), cases.end(),
-            [](const BadSceneCase& a, const BadSceneCase& b) { return a.name < b.name; });
+  std::sort(cases.begin(), cases.end(), [](const BadSceneCase& a, const BadSceneCase& b) { return a.name < b.name; });
   return cases;
 }
 
@@ -144,7 +143,7 @@ inline std::vector<std::string> bad_scene_folder_problems() {
 //   reason: malformed JSON: ...
 // Returns nothing and sets `problem` when the file is not of this form.
 inline std::optional<BadSceneExpectation> read_bad_scene_expectation(const std::filesystem::path& path,
-                                                                    std::string& problem) {
+                                                                     std::string& problem) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     problem = "cannot open " + path.string();

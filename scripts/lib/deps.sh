@@ -32,6 +32,7 @@ PITA_TEST_PACKAGES=(
   libbenchmark-dev            # benchmarks
   libxml2-utils librsvg2-bin  # tests: SVG read back by xmllint and rsvg-convert
   python3                     # tests: the independent oracles (tests/oracle)
+  clang-format                # tests: the C++ layout (.clang-format, scripts/format.sh --check)
   python3-jsonschema          # tests: the scene schema checked by an independent validator
   ffmpeg                      # tests: `pita animate OUT.mp4` encodes video (read back by ffprobe)
   chromium                    # tests: the animated SVG played in a real browser (headless), pita serve's page

@@ -13,8 +13,8 @@ namespace pita::analysis {
 
 namespace {
 
-AuditCell measure_cell(Method method, Property property, const std::vector<AuditConfig>& configs,
-                       std::uint64_t seed, const std::atomic<bool>* stop) {
+AuditCell measure_cell(Method method, Property property, const std::vector<AuditConfig>& configs, std::uint64_t seed,
+                       const std::atomic<bool>* stop) {
   const PropertyInfo& p = info(property);
   AuditCell cell;
   cell.method = method;
@@ -28,8 +28,8 @@ AuditCell measure_cell(Method method, Property property, const std::vector<Audit
     // only tame and wild ones decide the reaction properties (N36).
     if (config.on_cut && property != Property::pop_free && property != Property::exists) continue;
     if (p.reaction && (config.mix == ConfigMix::crafted || config.mix == ConfigMix::near_singular)) continue;
-    const std::uint64_t stream = stream_seed(seed, 2 + static_cast<std::uint64_t>(property),
-                                             static_cast<std::uint64_t>(config.index));
+    const std::uint64_t stream =
+        stream_seed(seed, 2 + static_cast<std::uint64_t>(property), static_cast<std::uint64_t>(config.index));
     Probe probe = analysis::probe(property, method, config.keyframes, stream);
     if (property == Property::exists) {
       ++cell.measured;
@@ -77,16 +77,18 @@ const AuditCell& AuditReport::cell(Method m, Property p) const {
 
 AuditReport run_audit(const AuditOptions& options) {
   if (options.configs < 1 || options.configs > kMaxAuditConfigs) {
-    throw std::invalid_argument(
-        fmt::format("the number of configurations must be between 1 and {} (got {})", kMaxAuditConfigs, options.configs));
+    throw std::invalid_argument(fmt::format("the number of configurations must be between 1 and {} (got {})",
+                                            kMaxAuditConfigs, options.configs));
   }
   AuditReport report;
   report.options = options;
   report.methods = options.methods.empty() ? default_audit_methods() : options.methods;
   for (Method m : report.methods) {
     if (info(m).keyframe_count != 3) {
-      throw std::invalid_argument(fmt::format("{} takes {} keyframes; the properties of Sec. 4 are defined for "
-                                              "methods through three", info(m).id, info(m).keyframe_count));
+      throw std::invalid_argument(
+          fmt::format("{} takes {} keyframes; the properties of Sec. 4 are defined for "
+                      "methods through three",
+                      info(m).id, info(m).keyframe_count));
     }
   }
   if (options.properties.empty()) {

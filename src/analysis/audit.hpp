@@ -21,11 +21,11 @@ inline constexpr int kDefaultAuditConfigs = 200;
 inline constexpr int kMaxAuditConfigs = 1'000'000;
 
 struct AuditOptions {
-  std::vector<Method> methods;        // empty: default_audit_methods()
-  std::vector<Property> properties;   // empty: every property
-  int configs = kDefaultAuditConfigs; // random configurations (crafted ones come on top)
+  std::vector<Method> methods;         // empty: default_audit_methods()
+  std::vector<Property> properties;    // empty: every property
+  int configs = kDefaultAuditConfigs;  // random configurations (crafted ones come on top)
   std::uint64_t seed = 1;
-  int jobs = 0;                       // threads; 0: the number of cores
+  int jobs = 0;  // threads; 0: the number of cores
   // Called after each finished (method, property) cell with (done, total),
   // from any thread; may be empty.
   std::function<void(int, int)> progress;
@@ -40,10 +40,10 @@ struct AuditCell {
   Method method = Method::P1;
   Property property = Property::exists;
   bool holds = true;
-  double value = 0.0;      // the worst value (largest deviation, smallest reaction, share not built)
-  int measured = 0;        // configurations where the property could be measured
-  int worst_config = -1;   // index into AuditReport::configs, -1 if none
-  Probe worst;             // the measurement at worst_config
+  double value = 0.0;     // the worst value (largest deviation, smallest reaction, share not built)
+  int measured = 0;       // configurations where the property could be measured
+  int worst_config = -1;  // index into AuditReport::configs, -1 if none
+  Probe worst;            // the measurement at worst_config
 };
 
 struct AuditReport {

@@ -8,7 +8,6 @@ namespace pita::analysis {
 
 namespace {
 
-
 Keyframe key(double t, double x, double y, double m, double w) { return {t, Arrow{{x, y}, m, w}}; }
 
 AuditConfig crafted(std::string name, KeyframeTriple k, bool on_cut = false) {
@@ -98,10 +97,14 @@ std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t purpose, std::uint64
 
 std::string_view mix_name(ConfigMix mix) {
   switch (mix) {
-    case ConfigMix::crafted: return "crafted";
-    case ConfigMix::tame: return "tame";
-    case ConfigMix::wild: return "wild";
-    case ConfigMix::near_singular: return "near-singular";
+    case ConfigMix::crafted:
+      return "crafted";
+    case ConfigMix::tame:
+      return "tame";
+    case ConfigMix::wild:
+      return "wild";
+    case ConfigMix::near_singular:
+      return "near-singular";
   }
   return "?";
 }
@@ -116,26 +119,29 @@ std::vector<AuditConfig> crafted_configs() {
   out.push_back(crafted("-Pe cut, (vA + vC)/(2 vB) = -1.5",
                         {key(0.0, 0, 0, 1.5, kPi), key(0.5, 2, 1, 1.0, 0.0), key(1.0, 4, 0, 1.5, kPi)}, true));
   // Keyframes that are translates of one another (every twirl a translation).
-  out.push_back(crafted("translates", {key(0.0, 0, 0, 1.0, 0.4), key(0.5, 2, 1.5, 1.0, 0.4), key(1.0, 4, 0, 1.0, 0.4)}));
+  out.push_back(
+      crafted("translates", {key(0.0, 0, 0, 1.0, 0.4), key(0.5, 2, 1.5, 1.0, 0.4), key(1.0, 4, 0, 1.0, 0.4)}));
   // Rotations about one point (a circle), with two extra turns in all.
   out.push_back(crafted("rotations about the origin, several turns",
                         {key(0.0, 2, 0, 1.0, 0.5), key(0.5, -1, std::sqrt(3.0), 1.0, 0.5 + 2 * kPi / 3 + 2 * kPi),
                          key(1.0, -1, -std::sqrt(3.0), 1.0, 0.5 + 4 * kPi / 3 + 4 * kPi)}));
   // Uneven knots with a strong middle keyframe.
-  out.push_back(crafted("uneven knots", {key(0.0, 0, 0, 1.0, 0.3), key(0.2, 1.5, 2.0, 2.0, 1.4), key(1.0, 6, 0, 0.6, -0.8)}));
+  out.push_back(
+      crafted("uneven knots", {key(0.0, 0, 0, 1.0, 0.3), key(0.2, 1.5, 2.0, 2.0, 1.4), key(1.0, 6, 0, 0.6, -0.8)}));
   // A wild configuration of Sec. 6.6: large winding differences and magnitude ratios.
   out.push_back(crafted("wild, windings -6..9 and magnitudes 0.05..20",
                         {key(0.0, 0, 0, 0.05, -6.0), key(0.4, 3, 2, 20.0, 2.0), key(1.0, 7, -1, 1.0, 9.0)}));
   // Wild windings where P9's Neville step M(X(t), Y(t), s) passes close to a
   // singular steady morph just after b: its frames spike to 40 times the
   // extent within 1e-4 of the span (seed 42's wild #70; docs/paper-notes.md N36).
-  out.push_back(crafted("wild, P9's Neville step near a singular steady morph",
-                        {{-0.97198279966561074, Arrow{{-3.9447201213883254, -1.3859142052162801}, 0.42658816675212369,
-                                                      -17.610701059432373}},
-                         {-0.63010701541990588, Arrow{{-1.9201251662525176, 2.0951239954909129}, 0.18901055069773637,
-                                                      19.073163757885197}},
-                         {0.35239283002170696, Arrow{{-3.3103836393360475, -0.080703286568803989}, 0.022066145814316755,
-                                                     13.093670576051522}}}));
+  out.push_back(
+      crafted("wild, P9's Neville step near a singular steady morph",
+              {{-0.97198279966561074,
+                Arrow{{-3.9447201213883254, -1.3859142052162801}, 0.42658816675212369, -17.610701059432373}},
+               {-0.63010701541990588,
+                Arrow{{-1.9201251662525176, 2.0951239954909129}, 0.18901055069773637, 19.073163757885197}},
+               {0.35239283002170696,
+                Arrow{{-3.3103836393360475, -0.080703286568803989}, 0.022066145814316755, 13.093670576051522}}}));
   for (std::size_t i = 0; i < out.size(); ++i) out[i].index = static_cast<int>(i);
   return out;
 }

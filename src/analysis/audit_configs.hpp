@@ -16,9 +16,9 @@ namespace pita::analysis {
 enum class ConfigMix { crafted, tame, wild, near_singular };
 
 struct AuditConfig {
-  int index = 0;          // position in the list (crafted ones first)
+  int index = 0;  // position in the list (crafted ones first)
   ConfigMix mix = ConfigMix::tame;
-  std::string name;       // "tame #12", "crafted: P2 branch cut (collinear)"
+  std::string name;  // "tame #12", "crafted: P2 branch cut (collinear)"
   KeyframeTriple keyframes;
   // Exactly on a branch cut (PITA Fig. 12): measured for "exists" and
   // "pop-free" only; the other properties exclude such isolated singular

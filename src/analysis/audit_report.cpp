@@ -28,7 +28,6 @@ Json keyframes_json(const KeyframeTriple& k) {
   return Json::array({keyframe_json(k.a), keyframe_json(k.b), keyframe_json(k.c)});
 }
 
-
 // A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a newline.
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -52,7 +51,9 @@ Json cell_json(const AuditReport& report, const AuditCell& cell, const std::stri
   j["violation"] = std::isfinite(cell.value) ? Json(cell.value) : Json(nullptr);
   j["measured"] = cell.measured;
   if (cell.worst_config >= 0) {
-    Json config{{"index", cell.worst_config}, {"name", where(report, cell)}, {"keyframes", keyframes_json(cell.worst.original)}};
+    Json config{{"index", cell.worst_config},
+                {"name", where(report, cell)},
+                {"keyframes", keyframes_json(cell.worst.original)}};
     if (cell.worst.counterpart) config["counterpart"] = keyframes_json(*cell.worst.counterpart);
     if (finite_time(cell.worst)) config["t"] = *cell.worst.t;
     config["relation"] = cell.worst.relation;
@@ -83,8 +84,11 @@ Json paper_json(const AuditReport& report) {
   }
   paper["disagreements"] = Json::array();
   for (const Disagreement& d : disagreements(report)) {
-    paper["disagreements"].push_back(Json{{"method", id(d.method)}, {"property", id(d.property)},
-                                          {"printed", d.printed}, {"measured", d.measured}, {"reason", d.reason}});
+    paper["disagreements"].push_back(Json{{"method", id(d.method)},
+                                          {"property", id(d.property)},
+                                          {"printed", d.printed},
+                                          {"measured", d.measured},
+                                          {"reason", d.reason}});
   }
   return paper;
 }
@@ -99,10 +103,13 @@ std::string audit_json(const AuditReport& report, const std::vector<std::string>
   j["properties"] = Json::array();
   for (Property p : report.properties) {
     const PropertyInfo& pi = info(p);
-    j["properties"].push_back(Json{{"id", pi.id}, {"letter", pi.letter}, {"section", pi.section},
-                                   {"measure", pi.measure}, {"holds_when", pi.reaction ? "smallest value > threshold"
-                                                                                       : "largest value <= threshold"},
-                                   {"threshold", pi.threshold}});
+    j["properties"].push_back(
+        Json{{"id", pi.id},
+             {"letter", pi.letter},
+             {"section", pi.section},
+             {"measure", pi.measure},
+             {"holds_when", pi.reaction ? "smallest value > threshold" : "largest value <= threshold"},
+             {"threshold", pi.threshold}});
   }
   j["cells"] = Json::array();
   for (std::size_t i = 0; i < report.cells.size(); ++i) {
@@ -143,8 +150,9 @@ std::string audit_markdown(const AuditReport& report, const std::vector<std::str
     }
     out += "\n";
   }
-  out += "\nyes/no: the property holds / fails; the number is the worst measured value (docs/reference/audit.md "
-         "says what each measures); \"≠ paper\": Fig. 10 or the text says otherwise.\n";
+  out +=
+      "\nyes/no: the property holds / fails; the number is the worst measured value (docs/reference/audit.md "
+      "says what each measures); \"≠ paper\": Fig. 10 or the text says otherwise.\n";
   const std::vector<Disagreement> diffs = disagreements(report);
   if (!diffs.empty()) {
     out += "\n## Where the measurement disagrees with the paper\n\n";
@@ -169,7 +177,8 @@ std::string audit_markdown(const AuditReport& report, const std::vector<std::str
 
 std::string counterexample_name(const AuditCell& cell) { return id(cell.method) + "-" + id(cell.property) + ".json"; }
 
-std::string format_audit(const AuditReport& report, AuditFormat format, const std::vector<std::string>& counterexamples) {
+std::string format_audit(const AuditReport& report, AuditFormat format,
+                         const std::vector<std::string>& counterexamples) {
   if (format == AuditFormat::json) return audit_json(report, counterexamples);
   if (format == AuditFormat::csv) return audit_csv(report, counterexamples);
   return audit_markdown(report, counterexamples);

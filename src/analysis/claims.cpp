@@ -6,17 +6,16 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "analysis/comparison.hpp"
-#include "core/overloaded.hpp"
-#include "core/pose_traits.hpp"
-#include "scene/limits.hpp"
 #include "analysis/frame_steps.hpp"
 #include "analysis/properties.hpp"
-#include "scene/did_you_mean.hpp"
-
-#include <fmt/ranges.h>
+#include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "motion/sampler.hpp"
+#include "scene/did_you_mean.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::analysis {
 
@@ -48,15 +47,16 @@ double property_value(const motion::Stage& stage, std::size_t panel, const scene
   if (property == nullptr) {
     std::vector<std::string_view> names;
     for (const PropertyInfo& p : all_properties()) names.push_back(p.id);
-    throw scene::SceneError(stage.scene().path, pointer,
-                            fmt::format("unknown property \"{}\"{}; the properties are {}", measure.parameter,
-                                        scene::did_you_mean(scene::closest_names(measure.parameter, names)),
-                                        fmt::join(names, ", ")));
+    throw scene::SceneError(
+        stage.scene().path, pointer,
+        fmt::format("unknown property \"{}\"{}; the properties are {}", measure.parameter,
+                    scene::did_you_mean(scene::closest_names(measure.parameter, names)), fmt::join(names, ", ")));
   }
   const auto& keys = std::get<scene::KeyframeKeys>(stage.panel(panel).keys);
   if (keys.keyframes.size() != 3 || info(keys.method).keyframe_count != 3) {
-    unmeasured(stage, pointer, panel, measure, "the properties of Sec. 4 are measured on three keyframes and a method "
-                                               "through three");
+    unmeasured(stage, pointer, panel, measure,
+               "the properties of Sec. 4 are measured on three keyframes and a method "
+               "through three");
   }
   const KeyframeTriple triple{keys.keyframes[0], keys.keyframes[1], keys.keyframes[2]};
   return probe(property->property, keys.method, triple, 1).value;
@@ -64,8 +64,7 @@ double property_value(const motion::Stage& stage, std::size_t panel, const scene
 
 }  // namespace
 
-Measurer::Measurer(const motion::Stage& stage)
-    : stage_(&stage), measures_(stage.size()), steps_(stage.size()) {}
+Measurer::Measurer(const motion::Stage& stage) : stage_(&stage), measures_(stage.size()), steps_(stage.size()) {}
 
 const MotionMeasures& Measurer::measures(std::size_t panel) {
   std::optional<MotionMeasures>& kept = measures_.at(panel);
@@ -125,15 +124,19 @@ Source source_of(MeasureKind kind) {
     case MeasureKind::area:
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump: return Source::measures;
+    case MeasureKind::jump:
+      return Source::measures;
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
-    case MeasureKind::scale_max: return Source::frame_steps;
+    case MeasureKind::scale_max:
+      return Source::frame_steps;
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
-    case MeasureKind::handle_shift: return Source::comparison;
-    case MeasureKind::property: return Source::property;
+    case MeasureKind::handle_shift:
+      return Source::comparison;
+    case MeasureKind::property:
+      return Source::property;
   }
   return Source::measures;  // unreachable: every kind is listed
 }
@@ -143,7 +146,8 @@ Source source_of(MeasureKind kind) {
 double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
   const motion::Stage& stage = *stage_;
   switch (source_of(measure.kind)) {
-    case Source::measures: return measured_value(panel, measure, pointer);
+    case Source::measures:
+      return measured_value(panel, measure, pointer);
     case Source::frame_steps: {  // the drawn frames
       need_keyframes(panel, measure, pointer);
       std::optional<FrameSteps>& kept = steps_.at(panel);
@@ -173,20 +177,30 @@ namespace {
 // Why a panel's measures lack the number `kind` reads.
 std::string_view why_unmeasured(MeasureKind kind) {
   switch (kind) {
-    case MeasureKind::discrepancy_max: return "no frame of its pattern has a prediction";
+    case MeasureKind::discrepancy_max:
+      return "no frame of its pattern has a prediction";
     case MeasureKind::discrepancy_of:
-    case MeasureKind::discrepancy_time: return "no frame of its pattern has this prediction";
+    case MeasureKind::discrepancy_time:
+      return "no frame of its pattern has this prediction";
     case MeasureKind::path_length:
-    case MeasureKind::turning: return "its motion has no path";
-    case MeasureKind::winding_range: return "its frames have no winding";
-    case MeasureKind::overreaction: return "no keyframe parameter was tweaked";
-    case MeasureKind::pop: return "pops are measured on keyframes";
-    case MeasureKind::ara: return "ARA is measured on poses";
-    case MeasureKind::velocity_jump: return "velocity jumps are measured on poses";
-    case MeasureKind::area: return "the area is measured on poses";
+    case MeasureKind::turning:
+      return "its motion has no path";
+    case MeasureKind::winding_range:
+      return "its frames have no winding";
+    case MeasureKind::overreaction:
+      return "no keyframe parameter was tweaked";
+    case MeasureKind::pop:
+      return "pops are measured on keyframes";
+    case MeasureKind::ara:
+      return "ARA is measured on poses";
+    case MeasureKind::velocity_jump:
+      return "velocity jumps are measured on poses";
+    case MeasureKind::area:
+      return "the area is measured on poses";
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump: return "no keyframe has that parameter";
+    case MeasureKind::jump:
+      return "no keyframe has that parameter";
     case MeasureKind::scale_step:  // computed from the panel itself by value()
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
@@ -286,7 +300,8 @@ Bound bound_of(Measurer& measurer, const motion::Stage& stage, const scene::Clai
   const double value = operand.times * x + operand.plus;
   std::string text = fmt::format("{} of {}", operand.measure.text, panel_name(stage, operand.panel));
   if (operand.times != 1.0) text = fmt::format("{} x {}", number(operand.times), text);
-  if (operand.plus != 0.0) text += fmt::format(" {} {}", operand.plus < 0.0 ? "-" : "+", number(std::abs(operand.plus)));
+  if (operand.plus != 0.0)
+    text += fmt::format(" {} {}", operand.plus < 0.0 ? "-" : "+", number(std::abs(operand.plus)));
   return {value, fmt::format("{} ({})", number(value), text)};
 }
 
@@ -304,13 +319,13 @@ ClaimOutcome check_claim(Measurer& measurer, const motion::Stage& stage, const s
           const std::string at = claim.pointer + (below ? "/below" : "/above");
           const Bound bound = bound_of(measurer, stage, test.bound, at + "/measure", claim.absolute);
           outcome.held = below ? value < bound.value : value > bound.value;  // false for NaN
-          outcome.measured = fmt::format("{}, {}{} {}", left, outcome.held ? "" : "not ", below ? "below" : "above",
-                                         bound.text);
+          outcome.measured =
+              fmt::format("{}, {}{} {}", left, outcome.held ? "" : "not ", below ? "below" : "above", bound.text);
         } else if constexpr (std::is_same_v<Test, scene::Near>) {
           const Bound target = bound_of(measurer, stage, test.target, claim.pointer + "/near/measure", claim.absolute);
           outcome.held = std::abs(value - target.value) <= test.within;
-          outcome.measured = fmt::format("{}, {}within {} of {}", left, outcome.held ? "" : "not ",
-                                         number(test.within), target.text);
+          outcome.measured =
+              fmt::format("{}, {}within {} of {}", left, outcome.held ? "" : "not ", number(test.within), target.text);
         } else {
           outcome.held = (value != 0.0) == test.yes;
           outcome.measured = fmt::format("{}: {}", left, value != 0.0 ? "yes" : "no");

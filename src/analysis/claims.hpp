@@ -16,8 +16,8 @@
 namespace pita::analysis {
 
 struct ClaimOutcome {
-  std::string pointer;   // "/claims/2"
-  std::string says;      // the claim in words
+  std::string pointer;  // "/claims/2"
+  std::string says;     // the claim in words
   bool held = false;
   // What was measured and compared: "scale-step of panel 3 (P8 Lo-Pe) = 0.112, below 0.405
   // (scale-step of panel 0 (P1 Pa-Ca))".

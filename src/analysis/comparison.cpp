@@ -41,8 +41,7 @@ double handle_shift(const motion::Stage& stage, std::size_t index) {
   const scene::KeyframeKeys& theirs = std::get<scene::KeyframeKeys>(reference.keys);
   const auto by_knot = [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; };
   const auto [own_first, own_last] = std::minmax_element(mine.keyframes.begin(), mine.keyframes.end(), by_knot);
-  const auto [base_first, base_last] =
-      std::minmax_element(theirs.keyframes.begin(), theirs.keyframes.end(), by_knot);
+  const auto [base_first, base_last] = std::minmax_element(theirs.keyframes.begin(), theirs.keyframes.end(), by_knot);
   const double first = std::max(own_first->t, base_first->t);
   const double last = std::min(own_last->t, base_last->t);
   double shift = 0.0;
@@ -59,8 +58,8 @@ double handle_shift(const motion::Stage& stage, std::size_t index) {
 double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t other, double t) {
   const Arrow mine = stage.motion(index).arrow_at(t);  // NoMotion unless the panel has keyframes
   const Arrow theirs = stage.motion(other).arrow_at(t);
-  const double floor =
-      kAngleVectorFloor * std::max(largest_keyframe_magnitude(stage.panel(index)), largest_keyframe_magnitude(stage.panel(other)));
+  const double floor = kAngleVectorFloor * std::max(largest_keyframe_magnitude(stage.panel(index)),
+                                                    largest_keyframe_magnitude(stage.panel(other)));
   if (!(std::abs(mine.vector()) > floor) || !(std::abs(theirs.vector()) > floor)) {
     return std::numeric_limits<double>::quiet_NaN();
   }

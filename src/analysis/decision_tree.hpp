@@ -27,7 +27,6 @@ struct DecisionTree {
 
 // The key of `methods` by the properties of `order`, as the report measured
 // them. Throws std::out_of_range for a method or property the report lacks.
-DecisionTree decision_tree(const AuditReport& report, std::span<const Method> methods,
-                           std::span<const Property> order);
+DecisionTree decision_tree(const AuditReport& report, std::span<const Method> methods, std::span<const Property> order);
 
 }  // namespace pita::analysis

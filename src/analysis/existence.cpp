@@ -9,8 +9,7 @@
 
 namespace pita::analysis {
 
-namespace {
-}  // namespace
+namespace {}  // namespace
 
 bool sam_exists(double a, double s) {
   Eigen::Matrix2d scaling;

@@ -59,9 +59,7 @@ FrameDerivatives frame_derivatives(const motion::SceneMotion& motion, double t) 
   return d;
 }
 
-std::optional<Point> velocity_center(const FrameDerivatives& d) {
-  return pita::velocity_center(d.p, d.q, d.dp, d.dq);
-}
+std::optional<Point> velocity_center(const FrameDerivatives& d) { return pita::velocity_center(d.p, d.q, d.dp, d.dq); }
 
 std::optional<Point> acceleration_center(const FrameDerivatives& d) {
   return pita::acceleration_center(d.p, d.q, d.ddp, d.ddq);

@@ -23,9 +23,9 @@ namespace pita::analysis {
 
 struct FrameDerivatives {
   double t = 0.0;
-  Point p, q;          // D(t).p, D(t).q
-  Vector dp, dq;       // their velocities, per unit of scene time
-  Vector ddp, ddq;     // their accelerations, per unit of scene time squared
+  Point p, q;       // D(t).p, D(t).q
+  Vector dp, dq;    // their velocities, per unit of scene time
+  Vector ddp, ddq;  // their accelerations, per unit of scene time squared
 };
 
 // D and its first two derivatives at scene time t. Throws motion::NoMotion

@@ -14,7 +14,8 @@ namespace {
 
 double smallest_magnitude(const scene::Panel& panel) {
   double smallest = std::numeric_limits<double>::infinity();
-  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes) smallest = std::min(smallest, k.arrow.m);
+  for (const Keyframe& k : std::get<scene::KeyframeKeys>(panel.keys).keyframes)
+    smallest = std::min(smallest, k.arrow.m);
   return smallest;
 }
 
@@ -55,11 +56,16 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
 
 std::optional<double> frame_step(const FrameSteps& steps, scene::MeasureKind kind) {
   switch (kind) {
-    case scene::MeasureKind::scale_step: return steps.scale_step;
-    case scene::MeasureKind::turn_step: return steps.turn_step;
-    case scene::MeasureKind::scale_min: return steps.scale_min;
-    case scene::MeasureKind::scale_max: return steps.scale_max;
-    default: return std::nullopt;
+    case scene::MeasureKind::scale_step:
+      return steps.scale_step;
+    case scene::MeasureKind::turn_step:
+      return steps.turn_step;
+    case scene::MeasureKind::scale_min:
+      return steps.scale_min;
+    case scene::MeasureKind::scale_max:
+      return steps.scale_max;
+    default:
+      return std::nullopt;
   }
 }
 

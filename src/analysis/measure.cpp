@@ -41,24 +41,33 @@ constexpr std::array<const char*, 7> kParameterNames{"p.x", "p.y", "q.x", "q.y",
 Keyframe tweaked(Keyframe key, Parameter which, double delta, double extent, double duration) {
   Arrow& arrow = key.arrow;
   switch (which) {
-    case Parameter::px: arrow.p += Complex{delta * extent, 0.0}; break;
-    case Parameter::py: arrow.p += Complex{0.0, delta * extent}; break;
+    case Parameter::px:
+      arrow.p += Complex{delta * extent, 0.0};
+      break;
+    case Parameter::py:
+      arrow.p += Complex{0.0, delta * extent};
+      break;
     case Parameter::qx:
     case Parameter::qy: {
       const Vector before = arrow.vector();
-      const Vector after = before + (which == Parameter::qx ? Complex{delta * extent, 0.0}
-                                                             : Complex{0.0, delta * extent});
+      const Vector after =
+          before + (which == Parameter::qx ? Complex{delta * extent, 0.0} : Complex{0.0, delta * extent});
       arrow.m = std::abs(after);
       arrow.w += std::arg(after / before);  // the winding follows the tip continuously
       break;
     }
-    case Parameter::m: arrow.m *= std::exp(delta); break;
-    case Parameter::w: arrow.w += delta; break;
-    case Parameter::t: key.t += delta * duration; break;
+    case Parameter::m:
+      arrow.m *= std::exp(delta);
+      break;
+    case Parameter::w:
+      arrow.w += delta;
+      break;
+    case Parameter::t:
+      key.t += delta * duration;
+      break;
   }
   return key;
 }
-
 
 double knot_min(const std::vector<Keyframe>& keys) {
   double least = keys.front().t;
@@ -74,9 +83,8 @@ double knot_max(const std::vector<Keyframe>& keys) {
 // The frames of the panel with keyframe `index`'s parameter moved by delta,
 // at `times`; nullopt when that motion does not exist.
 std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, const scene::Panel& panel,
-                                                 std::size_t index, Parameter which, double delta,
-                                                 double extent, double duration,
-                                                 const std::vector<double>& times) {
+                                                 std::size_t index, Parameter which, double delta, double extent,
+                                                 double duration, const std::vector<double>& times) {
   // The method's own motion: the timing only paces it (docs/paper-notes.md N37).
   const std::vector<Keyframe>& given = std::get<scene::KeyframeKeys>(panel.keys).keyframes;
   std::vector<Keyframe> keys = given;
@@ -85,8 +93,7 @@ std::optional<std::vector<Arrow>> tweaked_frames(const scene::Scene& scene, cons
   // order of keyframes "as-given", docs/paper-notes.md N41).
   for (std::size_t j = 0; j < keys.size(); ++j) {
     if (j == index) continue;
-    if ((keys[index].t > keys[j].t) != (given[index].t > given[j].t) ||
-        keys[index].t == keys[j].t) {
+    if ((keys[index].t > keys[j].t) != (given[index].t > given[j].t) || keys[index].t == keys[j].t) {
       return std::nullopt;
     }
   }
@@ -126,7 +133,9 @@ void measure_discrepancy(const scene::Panel& panel, const motion::SceneMotion& m
   std::vector<Arrow> frames;
   for (const motion::Frame& frame : motion::sample_arrows(motion, times)) frames.push_back(frame.arrow);
   constexpr std::array<std::pair<scene::Predictor, const char*>, 3> kPredictors{
-      {{scene::Predictor::previous, "previous"}, {scene::Predictor::average, "average"}, {scene::Predictor::pita, "pita"}}};
+      {{scene::Predictor::previous, "previous"},
+       {scene::Predictor::average, "average"},
+       {scene::Predictor::pita, "pita"}}};
   for (const auto& [predictor, name] : kPredictors) {
     DiscrepancyStats stats;
     stats.predictor = name;
@@ -195,7 +204,8 @@ void measure_reactions(const scene::Scene& scene, const scene::Panel& panel, con
       const auto plus = tweaked_frames(scene, panel, k, kParameters[j], options.gain_step, extent, duration, times);
       const auto minus = tweaked_frames(scene, panel, k, kParameters[j], -options.gain_step, extent, duration, times);
       const auto pop_plus = tweaked_frames(scene, panel, k, kParameters[j], options.pop_step, extent, duration, times);
-      const auto pop_minus = tweaked_frames(scene, panel, k, kParameters[j], -options.pop_step, extent, duration, times);
+      const auto pop_minus =
+          tweaked_frames(scene, panel, k, kParameters[j], -options.pop_step, extent, duration, times);
       if (!plus || !minus || !pop_plus || !pop_minus) {
         reaction.defined = false;  // a tweak leaves the method's domain: a pop of its own kind
         reaction.pop = true;
@@ -422,12 +432,11 @@ std::string_view measured_kind_name(const MotionMeasures& measures) {
 }
 
 std::span<const ParameterReaction> parameters_of(const MotionMeasures& measures) {
-  return std::visit(overloaded{[](const ArrowMeasures& arrows) { return std::span(arrows.parameters); },
-                               [](const PointMeasures&) { return std::span<const ParameterReaction>(); },
-                               []<class Pose>(const PoseMeasures<Pose>&) {
-                                 return std::span<const ParameterReaction>();
-                               }},
-                    measures.measured);
+  return std::visit(
+      overloaded{[](const ArrowMeasures& arrows) { return std::span(arrows.parameters); },
+                 [](const PointMeasures&) { return std::span<const ParameterReaction>(); },
+                 []<class Pose>(const PoseMeasures<Pose>&) { return std::span<const ParameterReaction>(); }},
+      measures.measured);
 }
 
 MotionMeasures measure_panel(const motion::Stage& stage, std::size_t index, const MeasureOptions& options) {

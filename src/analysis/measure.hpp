@@ -52,11 +52,11 @@ constexpr double kPopAbsolute = 1e-7;
 constexpr double kPopRatio = 100.0;
 
 struct DiscrepancyStats {
-  std::string predictor;   // "previous", "average", "pita"
-  int frames = 0;          // frames that have a prediction (0: no statistics)
-  double max = 0.0;        // E, dimensionless (PITA Eq. 47)
+  std::string predictor;  // "previous", "average", "pita"
+  int frames = 0;         // frames that have a prediction (0: no statistics)
+  double max = 0.0;       // E, dimensionless (PITA Eq. 47)
   double mean = 0.0;
-  double t_of_max = 0.0;   // scene time of the worst frame
+  double t_of_max = 0.0;  // scene time of the worst frame
 };
 
 struct PathStats {
@@ -66,13 +66,13 @@ struct PathStats {
 
 // One keyframe parameter's reaction (Sec. 6.4).
 struct ParameterReaction {
-  std::string name;      // "B.q.x", "A.m", "C.t"
-  double gain = 0.0;     // max_t |dD(t)| / extent per unit normalised tweak
-  double turn = 0.0;     // max_t |dD(t).w| (radians) per unit normalised tweak: the
-                         // orientation's overreaction, large for short frames (Fig. 19)
-  double jump = 0.0;     // max_t |D+(t) - D-(t)| / extent under +-pop_step
+  std::string name;   // "B.q.x", "A.m", "C.t"
+  double gain = 0.0;  // max_t |dD(t)| / extent per unit normalised tweak
+  double turn = 0.0;  // max_t |dD(t).w| (radians) per unit normalised tweak: the
+                      // orientation's overreaction, large for short frames (Fig. 19)
+  double jump = 0.0;  // max_t |D+(t) - D-(t)| / extent under +-pop_step
   bool pop = false;
-  bool defined = true;   // false: a tweak leaves the method's domain (counted as a pop)
+  bool defined = true;  // false: a tweak leaves the method's domain (counted as a pop)
 };
 
 struct AreaStats {
@@ -86,8 +86,8 @@ struct AreaStats {
 // pattern, paths of p and q, winding range, overreaction and pops.
 struct ArrowMeasures {
   static constexpr std::string_view kind_name = "arrows";  // in `pita measure`'s JSON and CSV
-  int samples = 0;       // pattern frames (discrepancy)
-  double extent = 0.0;   // diameter of the keyframes' endpoints
+  int samples = 0;                                         // pattern frames (discrepancy)
+  double extent = 0.0;                                     // diameter of the keyframes' endpoints
   std::vector<DiscrepancyStats> discrepancy;
   PathStats path_p, path_q;
   double winding_min = 0.0, winding_max = 0.0;
@@ -125,9 +125,9 @@ struct PoseMeasures {
 using KindMeasures = std::variant<ArrowMeasures, PointMeasures, PoseMeasures<Affine2>, PoseMeasures<Affine3>>;
 
 struct MotionMeasures {
-  std::string pointer;   // the panel's JSON Pointer ("" for the scene itself)
-  std::string title;     // panel title, or ""
-  std::string method;    // "P6 (La-LP)", "SAM"
+  std::string pointer;                   // the panel's JSON Pointer ("" for the scene itself)
+  std::string title;                     // panel title, or ""
+  std::string method;                    // "P6 (La-LP)", "SAM"
   std::optional<std::string> no_motion;  // "file: pointer: reason" when it does not exist
   // The kind's measures; default values (nothing measured) when no_motion is set.
   KindMeasures measured;

@@ -50,9 +50,15 @@ void write_json(const Json& value, std::string& out) {
       }
       out += ']';
       return;
-    case Json::value_t::number_float: out += report_number(value.get<double>()); return;
-    case Json::value_t::string: out += json_string(value.get_ref<const std::string&>()); return;
-    default: out += value.dump(); return;  // integers and booleans
+    case Json::value_t::number_float:
+      out += report_number(value.get<double>());
+      return;
+    case Json::value_t::string:
+      out += json_string(value.get_ref<const std::string&>());
+      return;
+    default:
+      out += value.dump();
+      return;  // integers and booleans
   }
 }
 
@@ -66,8 +72,12 @@ Json overreaction_json(const ArrowMeasures& m) {
   }
   Json parameters = Json::array();
   for (const auto& p : m.parameters) {
-    parameters.push_back(Json{{"name", p.name}, {"defined", p.defined}, {"gain", p.gain}, {"turn", p.turn},
-                              {"jump", p.jump}, {"pop", p.pop}});
+    parameters.push_back(Json{{"name", p.name},
+                              {"defined", p.defined},
+                              {"gain", p.gain},
+                              {"turn", p.turn},
+                              {"jump", p.jump},
+                              {"pop", p.pop}});
   }
   overreaction["parameters"] = std::move(parameters);
   return overreaction;
@@ -101,14 +111,17 @@ template <class Pose>
 void add_json(const PoseMeasures<Pose>& m, Json& j) {
   j["ara"] = m.ara;
   j["velocity_jump"] = m.velocity_jump;
-  j[std::string(m.det_name)] = Json{{"monotone", m.area.monotone}, {"excursion", m.area.excursion},
-                       {"t_of_excursion", m.area.t_of_excursion}, {"first", m.area.first}, {"last", m.area.last}};
+  j[std::string(m.det_name)] = Json{{"monotone", m.area.monotone},
+                                    {"excursion", m.area.excursion},
+                                    {"t_of_excursion", m.area.t_of_excursion},
+                                    {"first", m.area.first},
+                                    {"last", m.area.last}};
 }
 
 // A motion's measures, each present only where it applies, in the order they are written.
 Json motion_json(const MotionMeasures& m) {
-  Json j{{"pointer", m.pointer}, {"title", m.title}, {"method", m.method},
-         {"kind", std::string(measured_kind_name(m))}};
+  Json j{
+      {"pointer", m.pointer}, {"title", m.title}, {"method", m.method}, {"kind", std::string(measured_kind_name(m))}};
   if (m.no_motion) {
     j["no_motion"] = *m.no_motion;
     return j;
@@ -231,9 +244,9 @@ std::string measures_csv(const std::vector<MotionMeasures>& all) {
   for (const auto& m : all) {
     std::vector<std::string> row{csv_field(m.pointer), csv_field(m.title), csv_field(m.method),
                                  std::string(measured_kind_name(m)), csv_field(m.no_motion.value_or(""))};
-    const MeasureCells cells = m.no_motion ? MeasureCells(kMeasureColumns)
-                                           : std::visit([](const auto& measured) { return csv_cells(measured); },
-                                                        m.measured);
+    const MeasureCells cells = m.no_motion
+                                   ? MeasureCells(kMeasureColumns)
+                                   : std::visit([](const auto& measured) { return csv_cells(measured); }, m.measured);
     row.insert(row.end(), cells.begin(), cells.end());
     for (const auto& name : names) {
       std::string cell;
@@ -322,11 +335,11 @@ std::string pose_table(const std::vector<MotionMeasures>& all) {
       "| panel | method | ARA | {} monotone | largest excursion (at t) | det L first, last | velocity jump |\n"
       "|---|---|---|---|---|---|---|\n",
       PoseMeasures<Pose>::det_name);
-  return md_table(all, header,
-                  overloaded{[](const PoseMeasures<Pose>& m) { return pose_row(m); },
-                             [](const ArrowMeasures&) { return std::string(); },
-                             [](const PointMeasures&) { return std::string(); },
-                             []<class Other>(const PoseMeasures<Other>&) { return std::string(); }});
+  return md_table(
+      all, header,
+      overloaded{[](const PoseMeasures<Pose>& m) { return pose_row(m); },
+                 [](const ArrowMeasures&) { return std::string(); }, [](const PointMeasures&) { return std::string(); },
+                 []<class Other>(const PoseMeasures<Other>&) { return std::string(); }});
 }
 
 // The table of paths (keyframes and points), then one per kind of poses.
@@ -356,8 +369,9 @@ std::string md_gains(const std::vector<MotionMeasures>& all) {
       if (seen.insert(p.name).second) names.push_back(p.name);
     }
   }
-  std::string s = "\nOverreaction gain per parameter (max frame displacement / extent per unit normalised tweak; "
-                  "* marks a pop):\n\n| parameter |";
+  std::string s =
+      "\nOverreaction gain per parameter (max frame displacement / extent per unit normalised tweak; "
+      "* marks a pop):\n\n| parameter |";
   std::string rule = "|---|";
   for (const auto* m : reacting) {
     s += " " + report_panel_name(*m) + " |";

@@ -9,8 +9,7 @@
 namespace pita::analysis {
 
 std::optional<Arrow> predict_frame(Predictor predictor, Method method, const MethodOptions& options,
-                                   std::span<const double> times, std::span<const Arrow> frames,
-                                   std::size_t i) {
+                                   std::span<const double> times, std::span<const Arrow> frames, std::size_t i) {
   switch (predictor) {
     case Predictor::previous:
       if (i < 1) return std::nullopt;
@@ -30,8 +29,7 @@ std::optional<Arrow> predict_frame(Predictor predictor, Method method, const Met
 }
 
 std::optional<double> frame_discrepancy(Predictor predictor, Method method, const MethodOptions& options,
-                                        std::span<const double> times, std::span<const Arrow> frames,
-                                        std::size_t i) {
+                                        std::span<const double> times, std::span<const Arrow> frames, std::size_t i) {
   const std::optional<Arrow> predicted = predict_frame(predictor, method, options, times, frames, i);
   if (!predicted) return std::nullopt;
   return discrepancy(frames[i], *predicted);

@@ -22,12 +22,10 @@ using Predictor = scene::Predictor;
 // predictor has too few neighbours. `method` and `options` serve the pita
 // predictor. Throws what make_motion throws when that motion does not exist.
 std::optional<Arrow> predict_frame(Predictor predictor, Method method, const MethodOptions& options,
-                                   std::span<const double> times, std::span<const Arrow> frames,
-                                   std::size_t i);
+                                   std::span<const double> times, std::span<const Arrow> frames, std::size_t i);
 
 // E(frames[i], prediction) for each frame, nullopt where there is no prediction.
 std::optional<double> frame_discrepancy(Predictor predictor, Method method, const MethodOptions& options,
-                                        std::span<const double> times, std::span<const Arrow> frames,
-                                        std::size_t i);
+                                        std::span<const double> times, std::span<const Arrow> frames, std::size_t i);
 
 }  // namespace pita::analysis

@@ -30,8 +30,8 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      "one-sided differences, relative to the second derivative plus the extent",
      false, 1e-2},
     {Property::similarity_invariant, "similarity-invariant", "", "4.3, PITA Eq. 40",
-     "largest distance between P(S A, S B, S C, t) and S P(A, B, C, t), over the extent of the moved keyframes",
-     false, 1e-7},
+     "largest distance between P(S A, S B, S C, t) and S P(A, B, C, t), over the extent of the moved keyframes", false,
+     1e-7},
     {Property::symmetric, "symmetric", "", "4.4, PITA Eq. 41",
      "largest distance between P(a, A, b, B, c, C, t) and P(a, C, a + c - b, B, c, A, a + c - t), over the extent",
      false, 1e-7},
@@ -72,7 +72,6 @@ constexpr std::array<PropertyInfo, 13> kProperties{{
      "knots, relative to the largest acceleration plus the extent",
      false, 1e-5},
 }};
-
 
 // Times in [a, c]: 17 uniform ones and the middle knot.
 std::vector<double> sample_times(const KeyframeTriple& k) {
@@ -176,7 +175,10 @@ Probe probe_smooth(Method m, const KeyframeTriple& k) {
   Worst w;
   for (double t : {k.b.t, k.a.t + 0.3 * span, k.a.t + 0.7 * span}) {
     for (int which = 0; which < 2; ++which) {
-      const auto x = [&](double u) { const Arrow f = D->at(u); return which == 0 ? f.p : f.q(); };
+      const auto x = [&](double u) {
+        const Arrow f = D->at(u);
+        return which == 0 ? f.p : f.q();
+      };
       const auto jump = [&](double h, double& size) {
         const Complex left = one_sided_second_derivative(x, t, -h) * (span * span);
         const Complex right = one_sided_second_derivative(x, t, h) * (span * span);
@@ -194,14 +196,22 @@ Probe probe_smooth(Method m, const KeyframeTriple& k) {
 }
 
 Probe probe_similarity(Method m, const KeyframeTriple& k, AuditRandom& r) {
-  const Similarity S{{r.uniform(-10, 10), r.uniform(-10, 10)}, std::exp(r.uniform(-2.0, 2.0)), r.uniform(-4 * kPi, 4 * kPi)};
+  const Similarity S{
+      {r.uniform(-10, 10), r.uniform(-10, 10)}, std::exp(r.uniform(-2.0, 2.0)), r.uniform(-4 * kPi, 4 * kPi)};
   const KeyframeTriple ks = map_arrows(k, [&](const Arrow& A) { return apply(S, A); });
   const auto D = try_motion(m, k), DS = try_motion(m, ks);
   if (!D || !DS) return not_built(k, "no motion");
   const Worst w = compare(*D, *DS, k, motion_scale(*DS, ks), [&](const Arrow& A) { return apply(S, A); });
-  Probe p{w.value, w.t, k, ks, "frames of the counterpart = S applied to frames of the original, at the same t",
-          {{"translation.x", S.translation.real()}, {"translation.y", S.translation.imag()}, {"scale", S.scale},
-           {"rotation", S.rotation}}, ""};
+  Probe p{w.value,
+          w.t,
+          k,
+          ks,
+          "frames of the counterpart = S applied to frames of the original, at the same t",
+          {{"translation.x", S.translation.real()},
+           {"translation.y", S.translation.imag()},
+           {"scale", S.scale},
+           {"rotation", S.rotation}},
+          ""};
   return p;
 }
 
@@ -227,10 +237,14 @@ Probe probe_handle(Method m, const KeyframeTriple& k, AuditRandom& r) {
   const auto D = try_motion(m, k), DG = try_motion(m, kg);
   if (!D || !DG) return not_built(k, "no motion");
   const Worst w = compare(*D, *DG, k, motion_scale(*DG, kg), [&](const Arrow& A) { return compose_handle(A, G); });
-  return {w.value, w.t, k, kg,
+  return {w.value,
+          w.t,
+          k,
+          kg,
           "frames of the counterpart (keyframes X o G) = frames of the original composed with G: "
           "p + vector(p_G), magnitude m m_G, winding w + w_G",
-          {{"handle.p.x", G.p.real()}, {"handle.p.y", G.p.imag()}, {"handle.m", G.m}, {"handle.w", G.w}}, ""};
+          {{"handle.p.x", G.p.real()}, {"handle.p.y", G.p.imag()}, {"handle.m", G.m}, {"handle.w", G.w}},
+          ""};
 }
 
 Probe probe_winding(Method m, const KeyframeTriple& k) {
@@ -252,8 +266,13 @@ Probe probe_winding(Method m, const KeyframeTriple& k) {
       w.take(turn + endpoint_distance(x, y) / ext, t);
     }
     if (w.value < best.value) {
-      best = {w.value, w.t, k, kt, "frames change when a whole turn is added to keyframe " + std::string(1, "ABC"[which]),
-              {{"keyframe", which}, {"turns", 1.0}}, ""};
+      best = {w.value,
+              w.t,
+              k,
+              kt,
+              "frames change when a whole turn is added to keyframe " + std::string(1, "ABC"[which]),
+              {{"keyframe", which}, {"turns", 1.0}},
+              ""};
     }
   }
   if (!std::isfinite(best.value)) return not_built(k, "no motion");
@@ -269,11 +288,21 @@ KeyframeTriple tweaked(const KeyframeTriple& k, int which, int parameter, double
   Keyframe& x = *kf[which];
   const double ext = extent(k), span = k.c.t - k.a.t;
   switch (parameter) {
-    case 0: x.arrow.p += Complex{d * ext, 0.0}; break;
-    case 1: x.arrow.p += Complex{0.0, d * ext}; break;
-    case 2: x.arrow.m *= 1.0 + d; break;
-    case 3: x.arrow.w += d; break;
-    default: x.t += d * span; break;
+    case 0:
+      x.arrow.p += Complex{d * ext, 0.0};
+      break;
+    case 1:
+      x.arrow.p += Complex{0.0, d * ext};
+      break;
+    case 2:
+      x.arrow.m *= 1.0 + d;
+      break;
+    case 3:
+      x.arrow.w += d;
+      break;
+    default:
+      x.t += d * span;
+      break;
   }
   return out;
 }
@@ -303,11 +332,16 @@ Probe probe_pop(Method m, const KeyframeTriple& k) {
         w.take(std::max(0.0, small - 0.1 * big) / scale, t);
       }
       if (w.value > best.value) {
-        best = {w.value, w.t, lo, hi,
+        best = {w.value,
+                w.t,
+                lo,
+                hi,
                 std::string("frames barely move when ") + "ABC"[which] + "." + kKeyframeParameterNames[parameter] +
                     " changes by 2e-9 (original: -1e-9, counterpart: +1e-9)",
-                {{"keyframe", which}, {"parameter", parameter}, {"tweak", 2 * kTweak}}, ""};
-        best.relation = std::string("frames barely move when ") + "ABC"[which] + "." + kKeyframeParameterNames[parameter] +
+                {{"keyframe", which}, {"parameter", parameter}, {"tweak", 2 * kTweak}},
+                ""};
+        best.relation = std::string("frames barely move when ") + "ABC"[which] + "." +
+                        kKeyframeParameterNames[parameter] +
                         " changes by 2e-9 (original: -1e-9, counterpart: +1e-9); the jump does not shrink for 2e-10";
       }
     }
@@ -353,9 +387,13 @@ Probe probe_knots(Method m, const KeyframeTriple& k) {
     const double t = k.a.t + span * i / 10.0;
     w.take(distance_to_curve(*D, samples, lo, hi, M->at(t).p) / extent(k), t);
   }
-  return {w.value, w.t, k, moved,
+  return {w.value,
+          w.t,
+          k,
+          moved,
           "the path of p of the counterpart (b moved by 0.2 of the span) lies on the path of p of the original",
-          {{"knot ratio", beta}, {"moved knot ratio", (moved.b.t - k.a.t) / span}}, ""};
+          {{"knot ratio", beta}, {"moved knot ratio", (moved.b.t - k.a.t) / span}},
+          ""};
 }
 
 Probe probe_order(Method m, const KeyframeTriple& k) {
@@ -363,7 +401,8 @@ Probe probe_order(Method m, const KeyframeTriple& k) {
   const auto D = try_motion(m, k), S = try_motion(m, swapped);
   if (!D || !S) return not_built(k, "no motion");
   const Worst w = compare(*D, *S, k, std::max(motion_scale(*D, k), motion_scale(*S, k)));
-  return {w.value, w.t, k, swapped, "P(b, B, a, A, c, C, t) = P(a, A, b, B, c, C, t): the same frames at the same t", {}, ""};
+  return {w.value, w.t, k, swapped, "P(b, B, a, A, c, C, t) = P(a, A, b, B, c, C, t): the same frames at the same t",
+          {},      ""};
 }
 
 Probe probe_affine(Method m, const KeyframeTriple& k, AuditRandom& r) {
@@ -381,10 +420,14 @@ Probe probe_affine(Method m, const KeyframeTriple& k, AuditRandom& r) {
     const Arrow x = D->at(t), y = DU->at(t);
     w.take(std::max(std::abs(y.p - U(x.p)), std::abs(y.q() - U(x.q()))) / ext, t);
   }
-  return {w.value, w.t, zk, uk,
+  return {w.value,
+          w.t,
+          zk,
+          uk,
           "ends of the counterpart's frames (keyframes' ends mapped by U) = U applied to the ends of the original's "
           "frames",
-          {{"U.xx", a}, {"U.xy", b}, {"U.yx", c}, {"U.yy", d}, {"U.tx", u.real()}, {"U.ty", u.imag()}}, ""};
+          {{"U.xx", a}, {"U.xy", b}, {"U.yx", c}, {"U.yy", d}, {"U.tx", u.real()}, {"U.ty", u.imag()}},
+          ""};
 }
 
 Probe probe_perseverant(Property kind, Method m, const KeyframeTriple& k) {
@@ -420,17 +463,23 @@ Probe probe_perseverant(Property kind, Method m, const KeyframeTriple& k) {
       sp /= 5.0, sa /= 5.0;
       Complex num = 0;
       double den = 0;
-      for (std::size_t i = 0; i < ss.size(); ++i) num += std::conj(pos[i] - sp) * (acc[i] - sa), den += std::norm(pos[i] - sp);
+      for (std::size_t i = 0; i < ss.size(); ++i)
+        num += std::conj(pos[i] - sp) * (acc[i] - sa), den += std::norm(pos[i] - sp);
       const Complex K = den > 0 ? num / den : Complex{};
       const Complex L = sa - K * sp;
       for (std::size_t i = 0; i < ss.size(); ++i) dev = std::max(dev, std::abs(K * pos[i] + L - acc[i]) / scale);
     }
   }
-  const std::string what = kind == Property::globally_perseverant ? "constant in the global frame"
+  const std::string what = kind == Property::globally_perseverant   ? "constant in the global frame"
                            : kind == Property::radially_perseverant ? "K (x - f) for one K and f"
                                                                     : "constant in the frame D(t)";
-  return {dev, std::nullopt, even, std::nullopt,
-          "the accelerations of p and q at s = 0.1, 0.3, 0.5, 0.7, 0.9 (even knots) are " + what, {}, ""};
+  return {dev,
+          std::nullopt,
+          even,
+          std::nullopt,
+          "the accelerations of p and q at s = 0.1, 0.3, 0.5, 0.7, 0.9 (even knots) are " + what,
+          {},
+          ""};
 }
 
 }  // namespace
@@ -458,19 +507,30 @@ Arrow apply(const Similarity& S, const Arrow& A) {
 Probe probe(Property property, Method method, const KeyframeTriple& k, std::uint64_t seed) {
   AuditRandom r(seed);
   switch (property) {
-    case Property::exists: return probe_exists(method, k);
-    case Property::smooth: return probe_smooth(method, k);
-    case Property::similarity_invariant: return probe_similarity(method, k, r);
-    case Property::symmetric: return probe_symmetric(method, k);
-    case Property::handle_invariant: return probe_handle(method, k, r);
-    case Property::winding_aware: return probe_winding(method, k);
-    case Property::pop_free: return probe_pop(method, k);
-    case Property::knot_controlled: return probe_knots(method, k);
-    case Property::order_independent: return probe_order(method, k);
-    case Property::affine_invariant: return probe_affine(method, k, r);
+    case Property::exists:
+      return probe_exists(method, k);
+    case Property::smooth:
+      return probe_smooth(method, k);
+    case Property::similarity_invariant:
+      return probe_similarity(method, k, r);
+    case Property::symmetric:
+      return probe_symmetric(method, k);
+    case Property::handle_invariant:
+      return probe_handle(method, k, r);
+    case Property::winding_aware:
+      return probe_winding(method, k);
+    case Property::pop_free:
+      return probe_pop(method, k);
+    case Property::knot_controlled:
+      return probe_knots(method, k);
+    case Property::order_independent:
+      return probe_order(method, k);
+    case Property::affine_invariant:
+      return probe_affine(method, k, r);
     case Property::globally_perseverant:
     case Property::radially_perseverant:
-    case Property::locally_perseverant: return probe_perseverant(property, method, k);
+    case Property::locally_perseverant:
+      return probe_perseverant(property, method, k);
   }
   throw std::logic_error("unknown property");
 }

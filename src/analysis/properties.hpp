@@ -37,9 +37,9 @@ enum class Property {
 
 struct PropertyInfo {
   Property property;
-  std::string_view id;        // "similarity-invariant"
-  std::string_view letter;    // Fig. 10's row letter ("H"), empty for the rows all PITAs share
-  std::string_view section;   // "4.3, PITA Eq. 40"
+  std::string_view id;       // "similarity-invariant"
+  std::string_view letter;   // Fig. 10's row letter ("H"), empty for the rows all PITAs share
+  std::string_view section;  // "4.3, PITA Eq. 40"
   // What the number measures, for docs/reference/audit.md and the JSON report.
   std::string_view measure;
   // false: the property holds when the largest value over the configurations

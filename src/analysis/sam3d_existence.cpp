@@ -1,10 +1,10 @@
 #include "analysis/sam3d_existence.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <complex>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <complex>
 #include <map>
 #include <numbers>
 #include <thread>
@@ -20,7 +20,6 @@
 namespace pita::analysis {
 
 namespace {
-
 
 constexpr std::array<PaperExistenceBound, 3> kPaperBounds = {{
     {2.0 * kPi / 3.0, 0.29, "2 pi/3"},
@@ -57,8 +56,8 @@ using Row = std::array<double, 3>;
 // loop computes the part of rows 1 and 2 once for the 27 choices of row 0
 // (and has_real_logarithm the same numbers, rounded the same way).
 struct LowerRows {
-  Row cross;     // u x w: det = v . (u x w); its first entry is the minor a11 a22 - a12 a21
-  double sum;    // a11 + a22
+  Row cross;   // u x w: det = v . (u x w); its first entry is the minor a11 a22 - a12 a21
+  double sum;  // a11 + a22
   double a10, a20;
   double norm2;  // |u|^2 + |w|^2
 };
@@ -108,7 +107,9 @@ struct Interval {
 };
 Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + b.hi}; }
 Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
-Interval operator*(double k, Interval a) { return k >= 0.0 ? Interval{k * a.lo, k * a.hi} : Interval{k * a.hi, k * a.lo}; }
+Interval operator*(double k, Interval a) {
+  return k >= 0.0 ? Interval{k * a.lo, k * a.hi} : Interval{k * a.hi, k * a.lo};
+}
 // Plain comparisons, not std::min and std::max: their instances are shared
 // with every other file, which under the fuzzer's instrumentation made this
 // loop ten times slower (scripts/sanitizers/coverage-ignore.txt).
@@ -186,9 +187,8 @@ bool has_real_logarithm(const Eigen::Matrix3d& L) {
 
 std::vector<Eigen::Vector3d> icosphere_axes(int subdivisions) {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> vertices = {
-      {-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Eigen::Vector3d> vertices = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                                           {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   for (Eigen::Vector3d& v : vertices) v.normalize();
   std::vector<std::array<int, 3>> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                            {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
@@ -268,8 +268,8 @@ std::optional<NoSamConfiguration> first_without_sam(std::span<const double> angl
             const std::optional<bool> decided = decided_by_invariants(rows[0][c0], lower);
             if (decided && *decided) continue;
             Eigen::Matrix3d L;
-            L << rows[0][c0][0], rows[0][c0][1], rows[0][c0][2], rows[1][c1][0], rows[1][c1][1],
-                rows[1][c1][2], rows[2][c2][0], rows[2][c2][1], rows[2][c2][2];
+            L << rows[0][c0][0], rows[0][c0][1], rows[0][c0][2], rows[1][c1][0], rows[1][c1][1], rows[1][c1][2],
+                rows[2][c2][0], rows[2][c2][1], rows[2][c2][2];
             if (!decided && has_real_logarithm(L)) continue;  // the eigenvalues decide
             without = c0 + 27 * c1 + 729 * c2;
             break;

@@ -55,9 +55,9 @@ std::optional<NoSamConfiguration> find_no_sam(double theta, double p, const Sam3
 
 struct SafePerturbation {
   double theta = 0.0;
-  double largest_p = 0.0;                       // on the grid; 0 when p_step itself fails
-  std::optional<NoSamConfiguration> at_next;    // what fails one step above (nullopt: p_max passes)
-  std::uint64_t matrices_checked = 0;           // per (theta, p) test: axes x angles x 3^9
+  double largest_p = 0.0;                     // on the grid; 0 when p_step itself fails
+  std::optional<NoSamConfiguration> at_next;  // what fails one step above (nullopt: p_max passes)
+  std::uint64_t matrices_checked = 0;         // per (theta, p) test: axes x angles x 3^9
 };
 
 // The largest p on the grid (multiples of p_step up to p_max) such that every

@@ -106,8 +106,8 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
     }
   } else {
     const render::FrameSelection selection{t, timeline.trail_times(t)};
-    figure.drawings = stage != nullptr ? render::frame_drawings(*stage, &selection)
-                                       : render::frame_drawings(scene, &selection);
+    figure.drawings =
+        stage != nullptr ? render::frame_drawings(*stage, &selection) : render::frame_drawings(scene, &selection);
   }
   figure.placements = placements;
   render::place_labels(scene, figure.drawings, figure.placements);  // against this frame's data

@@ -41,7 +41,7 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
 // (timed points) or "keyframes": [...] at tau ("pattern"); with several panels
 // also "panels": [{"pointer", "title", and the same state}, ...]}. `stage`:
 // as for frame_figure.
-nlohmann::ordered_json frame_record(const scene::Scene& scene, const Timeline& timeline, int k,
-                                    const std::string& file, const motion::Stage* stage = nullptr);
+nlohmann::ordered_json frame_record(const scene::Scene& scene, const Timeline& timeline, int k, const std::string& file,
+                                    const motion::Stage* stage = nullptr);
 
 }  // namespace pita::animate

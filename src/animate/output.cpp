@@ -1,9 +1,5 @@
 #include "animate/output.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -14,8 +10,11 @@
 #include <memory>
 #include <optional>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "animate/frame.hpp"
 #include "animate/frame_runner.hpp"
@@ -76,7 +75,8 @@ bool detail::is_frame_directory(const fs::path& path) {
       continue;
     }
     const bool frame = name.starts_with("frame-") && (name.ends_with(".png") || name.ends_with(".svg")) &&
-                       std::all_of(name.begin() + 6, name.end() - 4, [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+                       std::all_of(name.begin() + 6, name.end() - 4,
+                                   [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
     if (!frame) return false;
   }
   if (error) return false;
@@ -126,8 +126,9 @@ fs::path frame_folder(const fs::path& target) {
                                                  : "it exists and is not a directory (frames go into a directory)");
   }
   if (fs::exists(status) && !is_frame_directory(directory)) {
-    output_failed(target, "it exists and is not a frame directory that pita wrote (only frame-NNNN files and "
-                          "pita's frames.json): remove it or give another OUT");
+    output_failed(target,
+                  "it exists and is not a frame directory that pita wrote (only frame-NNNN files and "
+                  "pita's frames.json): remove it or give another OUT");
   }
   return directory;
 }
@@ -150,7 +151,8 @@ Json write_frames(const scene::Scene& scene, const Timeline& timeline, const Req
         timeline.frames, request.threads,
         [&](int k) {
           const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
-          if (!backdrop) return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
+          if (!backdrop)
+            return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
           render::checked_png_size(scene, figure, request.scale, request.budget);
           return render::encode_png(scene, backdrop->paint(figure).get());
         },
@@ -197,8 +199,7 @@ void move_into_place(TemporaryFolder& folder, const fs::path& final_path, const 
 }
 
 fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                         const motion::Stage* stage,
-                         const std::vector<render::PanelPlacement>& placements) {
+                         const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements) {
   const fs::path target = request.out;
   std::error_code error;
   const fs::path directory = frame_folder(target);
@@ -209,8 +210,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
   TemporaryFolder folder{pattern};
   Json records = write_frames(scene, timeline, request, stage, placements, folder);
-  write_bytes(folder.path / "frames.json",
-              frames_index(scene, timeline, request, std::move(records)).dump(1) + "\n");
+  write_bytes(folder.path / "frames.json", frames_index(scene, timeline, request, std::move(records)).dump(1) + "\n");
   if (const int sig = io::pending_interrupt()) folder.exit_interrupted(sig);
   move_into_place(folder, parent / name, target);
   return target;
@@ -230,10 +230,11 @@ AnimationOutput output_kind(const std::string& out) {
   if (extension == ".svg") return AnimationOutput::svg;
   if (extension == ".mp4") return AnimationOutput::mp4;
   if (extension == ".webm") return AnimationOutput::webm;
-  throw AnimationError(fmt::format("-o {}: \"{}\" is not an output pita animates into: give OUT.svg (an animated SVG), "
-                                   "OUT.mp4 or OUT.webm (a video), or a directory (no extension, or ending in \"/\") "
-                                   "for a sequence of frames",
-                                   out, path.extension().string()));
+  throw AnimationError(
+      fmt::format("-o {}: \"{}\" is not an output pita animates into: give OUT.svg (an animated SVG), "
+                  "OUT.mp4 or OUT.webm (a video), or a directory (no extension, or ending in \"/\") "
+                  "for a sequence of frames",
+                  out, path.extension().string()));
 }
 
 std::string frame_file_name(int k, int count, render::Format format) {
@@ -247,29 +248,31 @@ void check_total_work(const scene::Scene& scene, const Timeline& timeline, const
   const double units = render::estimate_cost(scene).units * timeline.frames;
   const double limit = kMaxAnimationUnits * request.budget;
   if (units > limit) {
-    throw AnimationError(fmt::format("--frames: {} frames of a figure of about {:.3g} drawn points ({:.3g} in all) "
-                                     "exceed the animation's drawing budget of {:.3g}; use fewer frames or fewer "
-                                     "samples, or raise the budget with --budget F",
-                                     timeline.frames, units / timeline.frames, units, limit));
+    throw AnimationError(
+        fmt::format("--frames: {} frames of a figure of about {:.3g} drawn points ({:.3g} in all) "
+                    "exceed the animation's drawing budget of {:.3g}; use fewer frames or fewer "
+                    "samples, or raise the budget with --budget F",
+                    timeline.frames, units / timeline.frames, units, limit));
   }
   if (vector) {
     if (timeline.frames > kMaxVectorFrames * request.budget) {
-      throw AnimationError(fmt::format("--frames: {} frames of vector output exceed the limit of {:.0f} (the file "
-                                       "grows with every frame); use fewer frames, PNG frames or a video, or raise "
-                                       "the limit with --budget F",
-                                       timeline.frames, kMaxVectorFrames * request.budget));
+      throw AnimationError(
+          fmt::format("--frames: {} frames of vector output exceed the limit of {:.0f} (the file "
+                      "grows with every frame); use fewer frames, PNG frames or a video, or raise "
+                      "the limit with --budget F",
+                      timeline.frames, kMaxVectorFrames * request.budget));
     }
     return;
   }
   const double pixels = static_cast<double>(timeline.frames) * std::round(scene.canvas.width * request.scale) *
                         std::round(scene.canvas.height * request.scale);
   if (pixels > kMaxPixelFrames * request.budget) {
-    throw AnimationError(fmt::format("--frames: {} frames of {} x {} pixels ({:.3g} pixels in all) exceed the "
-                                     "animation budget of {:.3g} pixels (about 4 minutes on 2 cores); use fewer "
-                                     "frames or a smaller --scale, or raise the budget with --budget F",
-                                     timeline.frames, std::round(scene.canvas.width * request.scale),
-                                     std::round(scene.canvas.height * request.scale), pixels,
-                                     kMaxPixelFrames * request.budget));
+    throw AnimationError(
+        fmt::format("--frames: {} frames of {} x {} pixels ({:.3g} pixels in all) exceed the "
+                    "animation budget of {:.3g} pixels (about 4 minutes on 2 cores); use fewer "
+                    "frames or a smaller --scale, or raise the budget with --budget F",
+                    timeline.frames, std::round(scene.canvas.width * request.scale),
+                    std::round(scene.canvas.height * request.scale), pixels, kMaxPixelFrames * request.budget));
   }
 }
 
@@ -298,9 +301,11 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
       io::write_file_atomically(request.out, svg);
       return {request.out};
     }
-    case AnimationOutput::directory: return {write_directory(scene, timeline, request, shared, placements)};
+    case AnimationOutput::directory:
+      return {write_directory(scene, timeline, request, shared, placements)};
     case AnimationOutput::mp4:
-    case AnimationOutput::webm: return {write_video(scene, timeline, request, shared, placements)};
+    case AnimationOutput::webm:
+      return {write_video(scene, timeline, request, shared, placements)};
   }
   return {};
 }

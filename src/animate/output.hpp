@@ -8,11 +8,11 @@
 // and an older OUT as it was.
 #pragma once
 
-#include <sys/types.h>
-
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <sys/types.h>
 
 #include "animate/timeline.hpp"
 #include "render/figure.hpp"

@@ -1,11 +1,10 @@
 #include "animate/progress.hpp"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 namespace pita::animate {
 
@@ -56,8 +55,8 @@ void Progress::update(int done) {
 void Progress::draw(int done) {
   constexpr int kWidth = 30;
   const int filled = total_ > 0 ? static_cast<int>(static_cast<long long>(kWidth) * done / total_) : kWidth;
-  const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
-                          std::string(static_cast<std::size_t>(kWidth - filled), '.');
+  const std::string bar =
+      std::string(static_cast<std::size_t>(filled), '#') + std::string(static_cast<std::size_t>(kWidth - filled), '.');
   // Trailing spaces clear the end of a longer previous line.
   std::fputs(fmt::format("\r{} [{}] {}   ", label_, bar, counts(done)).c_str(), stderr);
   std::fflush(stderr);

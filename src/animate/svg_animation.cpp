@@ -11,8 +11,8 @@
 
 #include "animate/frame.hpp"
 #include "render/painter.hpp"
-#include "render/pango_library.hpp"
 #include "render/panel_drawing.hpp"
+#include "render/pango_library.hpp"
 #include "text/html.hpp"
 
 namespace pita::animate {
@@ -174,16 +174,18 @@ std::string svg_defs(const scene::Scene& scene, const std::vector<render::PanelP
       if (!shape.image || image_ids.count(shape.image->path)) continue;
       const std::string id = fmt::format("pita-image-{}", image_ids.size());
       image_ids.emplace(shape.image->path, id);
-      svg += fmt::format("<image id=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" "
-                         "xlink:href=\"data:image/png;base64,{}\"/>\n",
-                         id, shape.image->width, shape.image->height, base64_file(shape.image->path));
+      svg += fmt::format(
+          "<image id=\"{}\" width=\"{}\" height=\"{}\" preserveAspectRatio=\"none\" "
+          "xlink:href=\"data:image/png;base64,{}\"/>\n",
+          id, shape.image->width, shape.image->height, base64_file(shape.image->path));
     }
   }
   for (std::size_t i = 0; i < placements.size(); ++i) {
     const render::PanelPlacement& place = placements[i];
-    svg += fmt::format("<clipPath id=\"pita-clip-{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
-                       i, num(place.cell.x), num(place.cell.y + place.title.height), num(place.cell.width),
-                       num(place.cell.height - place.title.height));
+    svg +=
+        fmt::format("<clipPath id=\"pita-clip-{}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
+                    i, num(place.cell.x), num(place.cell.y + place.title.height), num(place.cell.width),
+                    num(place.cell.height - place.title.height));
   }
   svg += "</defs>\n";
   return svg;
@@ -217,8 +219,8 @@ std::string frame_group(const render::Figure& frame, int k, const Timeline& time
       if (item.moving) std::visit(writer, item.shape);
     }
     if (!items.empty()) {
-      svg += fmt::format("<g clip-path=\"url(#pita-clip-{})\" stroke-linecap=\"round\" stroke-linejoin=\"round\">{}</g>",
-                         i, items);
+      svg += fmt::format(
+          "<g clip-path=\"url(#pita-clip-{})\" stroke-linecap=\"round\" stroke-linejoin=\"round\">{}</g>", i, items);
     }
   }
   svg += "</g>\n";
@@ -238,7 +240,8 @@ std::string above_frames(const scene::Scene& scene, const render::Figure& first)
 
 }  // namespace
 
-std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, const std::function<void(int)>& progress) {
+std::string animated_svg(const scene::Scene& scene, const Timeline& timeline,
+                         const std::function<void(int)>& progress) {
   const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
   // The motions, built once for every frame ("pattern" changes the scene per frame).
   std::optional<motion::Stage> stage;
@@ -260,7 +263,8 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
 
   // Below the frames: background, titles and the layers drawn before the
   // first that moves.
-  svg += prefixed_ids(nested(render::render_figure(scene, static_part(first, false), render::Format::svg)), "pita-below-");
+  svg +=
+      prefixed_ids(nested(render::render_figure(scene, static_part(first, false), render::Format::svg)), "pita-below-");
   svg += "\n";
   for (int k = 0; k < timeline.frames; ++k) {
     const render::Figure frame = k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements, shared);

@@ -35,8 +35,8 @@ std::string what_name(scene::Animation::What what) {
 Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   const scene::Animation& animation = scene.animation;
   if (overrides.fps && !(*overrides.fps > 0.0 && *overrides.fps <= scene::kMaxFps)) {
-    throw AnimationError(fmt::format("--fps: frames per second must be in (0, {:g}] (got {:g})", scene::kMaxFps,
-                                     *overrides.fps));
+    throw AnimationError(
+        fmt::format("--fps: frames per second must be in (0, {:g}] (got {:g})", scene::kMaxFps, *overrides.fps));
   }
   if (overrides.duration && !(*overrides.duration > 0.0 && *overrides.duration <= scene::kMaxAnimationDuration)) {
     throw AnimationError(fmt::format("--duration: seconds must be in (0, {:g}] (got {:g})",
@@ -44,8 +44,8 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   }
   if (overrides.frames &&
       (*overrides.frames < scene::kMinAnimationFrames || *overrides.frames > scene::kMaxAnimationFrames)) {
-    throw AnimationError(fmt::format("--frames: an animation has {} to {} frames (got {})",
-                                     scene::kMinAnimationFrames, scene::kMaxAnimationFrames, *overrides.frames));
+    throw AnimationError(fmt::format("--frames: an animation has {} to {} frames (got {})", scene::kMinAnimationFrames,
+                                     scene::kMaxAnimationFrames, *overrides.frames));
   }
   Timeline timeline;
   timeline.what = animation.what;
@@ -54,7 +54,7 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
   const double duration = overrides.duration.value_or(animation.duration);
   if (overrides.frames) {
     timeline.frames = *overrides.frames;
-    timeline.fps = overrides.fps ? *overrides.fps
+    timeline.fps = overrides.fps        ? *overrides.fps
                    : overrides.duration ? *overrides.frames / *overrides.duration
                                         : animation.fps;
   } else {
@@ -64,24 +64,28 @@ Timeline make_timeline(const scene::Scene& scene, const Overrides& overrides) {
     } else {
       const double count = std::round(duration * timeline.fps);
       if (!(count >= scene::kMinAnimationFrames && count <= scene::kMaxAnimationFrames)) {
-        throw AnimationError(fmt::format("{}: {:g} s at {:g} frames per second gives {:g} frames; an animation has "
-                                         "{} to {} frames",
-                                         overrides.duration ? "--duration" : overrides.fps ? "--fps" : scene.path + ": /animation",
-                                         duration, timeline.fps, count, scene::kMinAnimationFrames,
-                                         scene::kMaxAnimationFrames));
+        throw AnimationError(
+            fmt::format("{}: {:g} s at {:g} frames per second gives {:g} frames; an animation has "
+                        "{} to {} frames",
+                        overrides.duration ? "--duration"
+                        : overrides.fps    ? "--fps"
+                                           : scene.path + ": /animation",
+                        duration, timeline.fps, count, scene::kMinAnimationFrames, scene::kMaxAnimationFrames));
       }
       timeline.frames = static_cast<int>(count);
     }
   }
   if (!(timeline.seconds() <= scene::kMaxAnimationDuration)) {
-    throw AnimationError(fmt::format("{}: {} frames at {:g} frames per second play {:g} s; an animation plays at most "
-                                     "{:g} s",
-                                     overrides.fps ? "--fps" : scene.path + ": /animation/fps", timeline.frames, timeline.fps,
-                                     timeline.seconds(), scene::kMaxAnimationDuration));
+    throw AnimationError(
+        fmt::format("{}: {} frames at {:g} frames per second play {:g} s; an animation plays at most "
+                    "{:g} s",
+                    overrides.fps ? "--fps" : scene.path + ": /animation/fps", timeline.frames, timeline.fps,
+                    timeline.seconds(), scene::kMaxAnimationDuration));
   }
   if (!(timeline.fps > 0.0 && timeline.fps <= scene::kMaxFps)) {
-    throw AnimationError(fmt::format("--frames / --duration: {} frames in {:g} s is {:g} frames per second; at most {:g}",
-                                     timeline.frames, duration, timeline.fps, scene::kMaxFps));
+    throw AnimationError(
+        fmt::format("--frames / --duration: {} frames in {:g} s is {:g} frames per second; at most {:g}",
+                    timeline.frames, duration, timeline.fps, scene::kMaxFps));
   }
   if (timeline.what == scene::Animation::What::pattern) {
     timeline.first = 0.0;

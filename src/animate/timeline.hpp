@@ -38,12 +38,12 @@ struct Overrides {
 
 struct Timeline {
   scene::Animation::What what = scene::Animation::What::motion;
-  int frames = 2;        // N
-  double fps = 30.0;     // frames per second of playback
+  int frames = 2;     // N
+  double fps = 30.0;  // frames per second of playback
   bool loop = true;
   int trail = 0;
-  double first = 0.0;    // time of frame 0
-  double last = 1.0;     // end of the time range
+  double first = 0.0;  // time of frame 0
+  double last = 1.0;   // end of the time range
   // "pattern": the scene's timing ease, applied to the animation time t in
   // [0, 1] to give the keyframes' tau (linear without "timing").
   Ease tau_ease;

@@ -1,15 +1,5 @@
 #include "animate/video.hpp"
 
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cairo.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -18,7 +8,15 @@
 #include <cstring>
 #include <memory>
 
+#include <cairo.h>
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "animate/frame.hpp"
 #include "animate/frame_runner.hpp"
@@ -98,21 +96,24 @@ std::string raw_frame(const scene::Scene& scene, const render::Figure& figure, c
   return bytes;
 }
 
-
 // ffmpeg's arguments: raw BGRA frames on its standard input, encoded to
 // `path` as H.264 in MP4, or VP9 in WebM.
 std::vector<std::string> ffmpeg_arguments(const std::string& ffmpeg, int width, int height, double fps, bool webm,
                                           const std::string& path) {
   // -xerror: stop at the first error instead of finishing a broken file.
-  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-xerror", "-y",
-                                   "-f", "rawvideo", "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height),
-                                   "-framerate", fmt::format("{:.17g}", fps), "-i", "pipe:0", "-an",
+  std::vector<std::string> args = {ffmpeg, "-hide_banner", "-loglevel", "error", "-xerror", "-y", "-f", "rawvideo",
+                                   "-pix_fmt", "bgra", "-s", fmt::format("{}x{}", width, height), "-framerate",
+                                   fmt::format("{:.17g}", fps), "-i", "pipe:0", "-an",
                                    // yuv420p needs even sides.
                                    "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2:color=white", "-pix_fmt", "yuv420p"};
   if (webm) {
-    for (const char* a : {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"}) args.emplace_back(a);
+    for (const char* a :
+         {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "34", "-deadline", "realtime", "-cpu-used", "8", "-f", "webm"})
+      args.emplace_back(a);
   } else {
-    for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"}) args.emplace_back(a);
+    for (const char* a :
+         {"-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-movflags", "+faststart", "-f", "mp4"})
+      args.emplace_back(a);
   }
   args.push_back(path);
   return args;
@@ -290,25 +291,25 @@ class FfmpegProcess {
 }  // namespace
 
 fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                     const motion::Stage* stage,
-                     const std::vector<render::PanelPlacement>& placements) {
+                     const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements) {
   const std::string& ffmpeg = request.ffmpeg;
   if (ffmpeg.empty()) {
-    throw AnimationError(fmt::format("-o {}: writing video needs ffmpeg, which is not installed (install the Debian "
-                                     "package: apt-get install ffmpeg), or write an animated .svg or a directory "
-                                     "of frames instead",
-                                     request.out.string()));
+    throw AnimationError(
+        fmt::format("-o {}: writing video needs ffmpeg, which is not installed (install the Debian "
+                    "package: apt-get install ffmpeg), or write an animated .svg or a directory "
+                    "of frames instead",
+                    request.out.string()));
   }
   const int width = static_cast<int>(std::round(scene.canvas.width * request.scale));
   const int height = static_cast<int>(std::round(scene.canvas.height * request.scale));
   render::check_pixel_budget(scene, request.scale, request.budget);
   TemporaryFile temporary(request.out);
-  FfmpegProcess process(ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == AnimationOutput::webm,
-                                         temporary.path()),
-                        request.out);
+  FfmpegProcess process(
+      ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == AnimationOutput::webm, temporary.path()),
+      request.out);
   // Every frame is painted over the layers they share, painted once.
-  const render::FrameBackdrop backdrop(scene, frame_figure(scene, timeline, timeline.time(0), placements, stage),
-                                       width, height, request.scale);
+  const render::FrameBackdrop backdrop(scene, frame_figure(scene, timeline, timeline.time(0), placements, stage), width,
+                                       height, request.scale);
   Progress progress("video", timeline.frames, request.progress);
   try {
     run_frames(
@@ -338,9 +339,9 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
     io::exit_interrupted(sig);
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    output_failed(request.out, fmt::format("ffmpeg failed ({})", WIFEXITED(status)
-                                                                      ? fmt::format("exit status {}", WEXITSTATUS(status))
-                                                                      : fmt::format("signal {}", WTERMSIG(status))));
+    output_failed(request.out, fmt::format("ffmpeg failed ({})",
+                                           WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
+                                                             : fmt::format("signal {}", WTERMSIG(status))));
   }
   // Exit 0 is not enough: an error while finishing the file (its trailer)
   // is only said on stderr.

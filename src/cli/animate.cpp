@@ -65,26 +65,32 @@ std::shared_ptr<AnimateOptions> setup_animate(CLI::App& app) {
   animate->add_option("-o,--output", options->output, "OUT.svg, OUT.mp4, OUT.webm or a directory")
       ->required()
       ->type_name("OUT");
-  animate->add_option_function<double>("--fps", [options](double v) { options->fps = v; },
-                                       fmt::format("Frames per second, (0, {:g}]", scene::kMaxFps))
+  animate
+      ->add_option_function<double>(
+          "--fps", [options](double v) { options->fps = v; },
+          fmt::format("Frames per second, (0, {:g}]", scene::kMaxFps))
       ->type_name("F");
-  animate->add_option_function<double>("--duration", [options](double v) { options->duration = v; },
-                                       "Seconds, > 0")
+  animate
+      ->add_option_function<double>(
+          "--duration", [options](double v) { options->duration = v; }, "Seconds, > 0")
       ->type_name("S");
-  animate->add_option_function<int>("--frames", [options](int v) { options->frames = v; },
-                                    fmt::format("Number of frames, {} to {}", scene::kMinAnimationFrames,
-                                                scene::kMaxAnimationFrames))
+  animate
+      ->add_option_function<int>(
+          "--frames", [options](int v) { options->frames = v; },
+          fmt::format("Number of frames, {} to {}", scene::kMinAnimationFrames, scene::kMaxAnimationFrames))
       ->type_name("N");
-  animate->add_option("--scale", options->scale,
-                      fmt::format("Pixels per canvas pixel of PNG frames and video ({} to {}; default 1)",
-                                  render::kMinScale, render::kMaxScale))
+  animate
+      ->add_option("--scale", options->scale,
+                   fmt::format("Pixels per canvas pixel of PNG frames and video ({} to {}; default 1)",
+                               render::kMinScale, render::kMaxScale))
       ->type_name("S");
-  animate->add_option_function<std::string>("--format", [options](const std::string& v) { options->format = v; },
-                                            "Frames of a directory: png (default) or svg")
+  animate
+      ->add_option_function<std::string>(
+          "--format", [options](const std::string& v) { options->format = v; },
+          "Frames of a directory: png (default) or svg")
       ->type_name("FMT");
   animate->add_flag("-q,--quiet", options->quiet, "No progress bar");
-  animate->add_flag("--allow-absolute-paths", options->allow_absolute_paths,
-                    "Allow images given by absolute paths");
+  animate->add_flag("--allow-absolute-paths", options->allow_absolute_paths, "Allow images given by absolute paths");
   animate->add_option("--budget", options->budget, "Allow F times the default work budget of a frame")
       ->check(CLI::Range(1e-3, render::kMaxBudgetFactor))
       ->type_name("F");
@@ -98,12 +104,14 @@ ExitCode run_animate(const AnimateOptions& options) {
     if (options.format) {
       const auto format = render::format_from_name(*options.format);
       if (request.kind != animate::AnimationOutput::directory) {
-        throw animate::AnimationError(fmt::format("--format {}: only a directory of frames takes a format; -o {} "
-                                                  "is a single file",
-                                                  *options.format, options.output));
+        throw animate::AnimationError(
+            fmt::format("--format {}: only a directory of frames takes a format; -o {} "
+                        "is a single file",
+                        *options.format, options.output));
       }
       if (!format || *format == render::Format::pdf) {
-        throw animate::AnimationError(fmt::format("--format: \"{}\" is not a frame format (png or svg)", *options.format));
+        throw animate::AnimationError(
+            fmt::format("--format: \"{}\" is not a frame format (png or svg)", *options.format));
       }
       request.frame_format = *format;
     }
@@ -126,11 +134,9 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.ffmpeg = ffmpeg_from_environment();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
-    const animate::Timeline timeline =
-        animate::make_timeline(scene, {options.fps, options.duration, options.frames});
+    const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {
-      std::cout << "wrote " << path.string() << " (" << timeline.frames << " frames, " << timeline.seconds()
-                << " s)\n";
+      std::cout << "wrote " << path.string() << " (" << timeline.frames << " frames, " << timeline.seconds() << " s)\n";
     }
     return ExitCode::success;
   } catch (...) {

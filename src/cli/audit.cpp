@@ -3,11 +3,11 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdint>
-#include <limits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
@@ -22,8 +22,8 @@
 #include "cli/failure.hpp"
 #include "core/methods.hpp"
 #include "io/output_file.hpp"
-#include "render/figure.hpp"
 #include "render/audit_table.hpp"
+#include "render/figure.hpp"
 #include "scene/scene.hpp"
 #include "text/list.hpp"
 
@@ -46,9 +46,10 @@ std::vector<Method> parse_methods(const std::string& list) {
     const MethodEntry* entry = find_method_entry(name, is_method_of<Method>);
     if (entry == nullptr) throw UsageError("--methods: " + unknown_method_reason(name, is_method_of<Method>));
     if (entry->min_count != 3) {
-      throw UsageError(fmt::format("--methods: {} takes {} keyframes; the properties of Sec. 4 are defined for the "
-                                   "methods through three",
-                                   method_label(*entry), entry->min_count));
+      throw UsageError(
+          fmt::format("--methods: {} takes {} keyframes; the properties of Sec. 4 are defined for the "
+                      "methods through three",
+                      method_label(*entry), entry->min_count));
     }
     const Method method = std::get<Method>(entry->method);  // the filter kept arrow methods only
     if (std::find(out.begin(), out.end(), method) == out.end()) out.push_back(method);
@@ -84,7 +85,8 @@ std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   auto options = std::make_shared<AuditCliOptions>();
   CLI::App* audit = app.add_subcommand("audit", "Measure the properties of Sec. 4 (Fig. 10) for every method");
   audit->footer(kAuditFooter);
-  audit->add_option_function<std::string>(
+  audit
+      ->add_option_function<std::string>(
           "--methods", [options](const std::string& list) { options->methods = list; },
           "Comma-separated methods (default: every arrow method through three keyframes)")
       ->type_name("LIST");
@@ -101,11 +103,13 @@ std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
       ->check(CLI::IsMember({"md", "csv", "json"}))
       ->type_name("FORMAT")
       ->capture_default_str();
-  audit->add_option_function<std::string>(
+  audit
+      ->add_option_function<std::string>(
           "--counterexamples", [options](const std::string& dir) { options->counterexamples = dir; },
           "Write a scene and a figure for each cell that fails into this folder")
       ->type_name("DIR");
-  audit->add_option_function<std::string>(
+  audit
+      ->add_option_function<std::string>(
           "-o,--output", [options](const std::string& path) { options->output = path; },
           "Draw the table as a figure (.svg, .png or .pdf)")
       ->type_name("TABLE");
@@ -153,8 +157,8 @@ analysis::AuditOptions audit_options_of(const AuditCliOptions& options) {
   analysis::AuditOptions audit;
   if (options.methods) audit.methods = parse_methods(*options.methods);
   if (options.configs < 1 || options.configs > analysis::kMaxAuditConfigs) {
-    throw UsageError(fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs,
-                                 options.configs));
+    throw UsageError(
+        fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs, options.configs));
   }
   audit.configs = options.configs;
   audit.seed = parse_seed(options.seed);
@@ -168,12 +172,13 @@ analysis::AuditOptions audit_options_of(const AuditCliOptions& options) {
 void make_counterexample_folder(const AuditCliOptions& options) {
   namespace fs = std::filesystem;
   std::error_code error;
-  if (options.output && (fs::path(*options.output).lexically_normal() ==
-                             fs::path(*options.counterexamples).lexically_normal() ||
-                         fs::equivalent(*options.output, *options.counterexamples, error))) {
-    throw UsageError(fmt::format("-o {} and --counterexamples {} name the same path: the table is a file, the "
-                                 "counterexamples a folder; give two different paths",
-                                 *options.output, *options.counterexamples));
+  if (options.output &&
+      (fs::path(*options.output).lexically_normal() == fs::path(*options.counterexamples).lexically_normal() ||
+       fs::equivalent(*options.output, *options.counterexamples, error))) {
+    throw UsageError(
+        fmt::format("-o {} and --counterexamples {} name the same path: the table is a file, the "
+                    "counterexamples a folder; give two different paths",
+                    *options.output, *options.counterexamples));
   }
   fs::create_directories(*options.counterexamples, error);
   if (error || !fs::is_directory(*options.counterexamples)) {
@@ -223,9 +228,9 @@ ExitCode run_audit_command(const AuditCliOptions& options) {
     if (table_format) {
       io::write_file_atomically(*options.output, render::render_property_table(report, *table_format));
     }
-    const std::vector<std::string> files =
-        options.counterexamples ? write_counterexamples(report, *options.counterexamples)
-                                : std::vector<std::string>(report.cells.size());
+    const std::vector<std::string> files = options.counterexamples
+                                               ? write_counterexamples(report, *options.counterexamples)
+                                               : std::vector<std::string>(report.cells.size());
     const std::string text = analysis::format_audit(report, format, files);
     if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() || std::fflush(stdout) != 0) {
       std::cerr << "pita: cannot write the audit to standard output (" << std::strerror(errno) << ")\n";

@@ -119,7 +119,8 @@ SubcommandModel model_of(const CLI::App& app, std::string name) {
 
 std::vector<SubcommandModel> command_line_model(const CLI::App& app) {
   std::vector<SubcommandModel> model{model_of(app, "")};
-  for (const CLI::App* subcommand : app.get_subcommands([](const CLI::App* sub) { return !sub->get_group().empty(); })) {
+  for (const CLI::App* subcommand :
+       app.get_subcommands([](const CLI::App* sub) { return !sub->get_group().empty(); })) {
     model.push_back(model_of(*subcommand, subcommand->get_name()));
   }
   return model;

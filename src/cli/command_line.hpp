@@ -29,14 +29,14 @@ struct OptionModel {
   std::vector<std::string> names;  // "-o", "--output"; a positional's name ("SCENE")
   std::string first_line;          // the first sentence of the description
   bool positional = false;
-  bool repeatable = false;         // a positional taking several values
+  bool repeatable = false;  // a positional taking several values
   ValueKind kind = ValueKind::none;
   std::vector<std::string> choices;  // kind == choice
 };
 
 struct SubcommandModel {
-  std::string name;         // "" for pita itself
-  std::string description;  // as --help shows it
+  std::string name;                  // "" for pita itself
+  std::string description;           // as --help shows it
   std::vector<OptionModel> options;  // visible options (not the hidden ones), as --help lists them
 };
 

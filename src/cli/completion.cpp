@@ -27,13 +27,19 @@ const OptionModel* positional(const SubcommandModel& subcommand) {
 // The bash words that complete a value of `kind`.
 std::string bash_action(const OptionModel& option, const std::vector<std::string>& methods) {
   switch (option.kind) {
-    case ValueKind::method: return "_pita_words \"" + joined(methods) + "\"";
-    case ValueKind::choice: return "_pita_words \"" + joined(option.choices) + "\"";
-    case ValueKind::scene: return "_pita_scenes";
-    case ValueKind::file: return "_pita_files";
-    case ValueKind::directory: return "_pita_directories";
+    case ValueKind::method:
+      return "_pita_words \"" + joined(methods) + "\"";
+    case ValueKind::choice:
+      return "_pita_words \"" + joined(option.choices) + "\"";
+    case ValueKind::scene:
+      return "_pita_scenes";
+    case ValueKind::file:
+      return "_pita_files";
+    case ValueKind::directory:
+      return "_pita_directories";
     case ValueKind::none:
-    case ValueKind::other: break;
+    case ValueKind::other:
+      break;
   }
   return ":";  // a number or a list: nothing to offer
 }
@@ -58,13 +64,19 @@ std::string zsh_description(const std::string& text) {
 
 std::string zsh_action(const OptionModel& option, const std::vector<std::string>& methods) {
   switch (option.kind) {
-    case ValueKind::method: return "(" + joined(methods) + ")";
-    case ValueKind::choice: return "(" + joined(option.choices) + ")";
-    case ValueKind::scene: return "_files -g \"*.json\"";
-    case ValueKind::file: return "_files";
-    case ValueKind::directory: return "_files -/";
+    case ValueKind::method:
+      return "(" + joined(methods) + ")";
+    case ValueKind::choice:
+      return "(" + joined(option.choices) + ")";
+    case ValueKind::scene:
+      return "_files -g \"*.json\"";
+    case ValueKind::file:
+      return "_files";
+    case ValueKind::directory:
+      return "_files -/";
     case ValueKind::none:
-    case ValueKind::other: break;
+    case ValueKind::other:
+      break;
   }
   return " ";
 }
@@ -84,8 +96,10 @@ std::string bash_completion(const CLI::App& app) {
          "# when pita is built, from the command-line definitions that `pita --help` prints.\n"
          "# Do not edit.\n\n"
          "_pita_words() { local IFS=$' \\t\\n'; COMPREPLY=($(compgen -W \"$1\" -- \"$cur\")); }\n"
-         "_pita_files() { local IFS=$'\\n'; compopt -o filenames 2>/dev/null; COMPREPLY=($(compgen -f -- \"$cur\")); }\n"
-         "_pita_directories() { local IFS=$'\\n'; compopt -o filenames 2>/dev/null; COMPREPLY=($(compgen -d -- \"$cur\")); }\n"
+         "_pita_files() { local IFS=$'\\n'; compopt -o filenames 2>/dev/null; COMPREPLY=($(compgen -f -- \"$cur\")); "
+         "}\n"
+         "_pita_directories() { local IFS=$'\\n'; compopt -o filenames 2>/dev/null; COMPREPLY=($(compgen -d -- "
+         "\"$cur\")); }\n"
          "_pita_scenes() {\n"
          "  local IFS=$'\\n'\n"
          "  compopt -o filenames 2>/dev/null\n"
@@ -97,7 +111,9 @@ std::string bash_completion(const CLI::App& app) {
          "  COMPREPLY=()\n"
          "  for ((i = 1; i < COMP_CWORD; i++)); do\n"
          "    case \"${COMP_WORDS[i]}\" in\n"
-         "      " << joined(subcommands, "|") << ") subcommand=\"${COMP_WORDS[i]}\"; break ;;\n"
+         "      "
+      << joined(subcommands, "|")
+      << ") subcommand=\"${COMP_WORDS[i]}\"; break ;;\n"
          "    esac\n"
          "  done\n"
          "  # The value of the option before the cursor.\n"

@@ -1,12 +1,12 @@
 #include "cli/environment.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
 #include <thread>
+
+#include <unistd.h>
 
 #include "animate/video.hpp"
 

@@ -20,10 +20,10 @@
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
 #include "io/output_file.hpp"
-#include "scene/frames.hpp"
 #include "motion/evaluation.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
+#include "scene/frames.hpp"
 #include "scene/scene.hpp"
 #include "text/list.hpp"
 
@@ -48,13 +48,13 @@ std::string_view trimmed(std::string_view text) {
 
 // Standard output as a sink: what was written cannot be taken back.
 motion::TextSink stdout_sink() {
-  return {[](std::string_view bytes) {
-            if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size()) {
-              throw io::OutputError(
-                  fmt::format("cannot write the frames to standard output ({})", std::strerror(errno)));
-            }
-          },
-          false};
+  return {
+      [](std::string_view bytes) {
+        if (std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size()) {
+          throw io::OutputError(fmt::format("cannot write the frames to standard output ({})", std::strerror(errno)));
+        }
+      },
+      false};
 }
 
 // --samples N: an integer in [kMinSamples, kMaxSamples].
@@ -64,8 +64,8 @@ int parse_samples(const std::string& text) {
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
   const bool integer = !digits.empty() && error == std::errc{} && end == digits.data() + digits.size();
   if (!integer || count < scene::kMinSamples || count > scene::kMaxSamples) {
-    throw InputError(fmt::format("--samples: must be an integer between {} and {} (got \"{}\")",
-                                 scene::kMinSamples, scene::kMaxSamples, text));
+    throw InputError(fmt::format("--samples: must be an integer between {} and {} (got \"{}\")", scene::kMinSamples,
+                                 scene::kMaxSamples, text));
   }
   return static_cast<int>(count);
 }
@@ -79,9 +79,10 @@ std::vector<double> parse_times(const std::string& text) {
       throw InputError(fmt::format("--t: at most {} times may be given", kMaxTimes));
     }
     if (item.empty()) {
-      throw InputError(fmt::format("--t: time number {} is empty (give comma-separated numbers, "
-                                   "for example --t 0,0.5,1.5)",
-                                   times.size() + 1));
+      throw InputError(
+          fmt::format("--t: time number {} is empty (give comma-separated numbers, "
+                      "for example --t 0,0.5,1.5)",
+                      times.size() + 1));
     }
     const std::string_view as_typed = item;
     if (item.front() == '+') item.remove_prefix(1);  // from_chars refuses a leading '+'
@@ -184,23 +185,31 @@ Scene format (JSON; schema/scene.schema.json describes every field):
     q          end point [x, y], instead of m and w: the zero-turn arrow from p to q
     turns      integer (optional): adds 2*pi*turns to the winding
   chain        how a track of more keyframes than the method takes is built:
-               )" + chain_list() + R"(
+               )" +
+         chain_list() + R"(
                (default "blend", "spiral" for SMA; docs/reference/scene-format.md "Keyframe tracks")
   points       instead of keyframes: 4 or more {"t", "p": [x, y]}; the motion is the
                point of PITA Eq. 48-50 (docs/reference/scene-format.md "Timed points"), printed as t, x, y
   samples      frames printed when neither --samples nor --t is given (default 9)
   timing       optional, how scene time runs through the motion (docs/reference/scene-format.md "Timing"):
                {"ease": E, "arc_length": "p" | "q" | "mid", "per": "motion" | "span"}
-               E: )" + ease_names() + R"(
+               E: )" +
+         ease_names() + R"(
                frames still report the scene time t they were asked for
-  options      anchor ()" + readers(kAnchorOption) + "): " + choices(kAnchorNames) + R"(;
-               path_mean, magnitude_mean ()" + readers(kPathMeanOption) + R"(, and every chain's
-               steady morphs): )" + choices(kMeanNames) + R"(;
-               knots (every three-keyframe method): )" + choices(kKnotOrderNames) + R"(
+  options      anchor ()" +
+         readers(kAnchorOption) + "): " + choices(kAnchorNames) + R"(;
+               path_mean, magnitude_mean ()" +
+         readers(kPathMeanOption) + R"(, and every chain's
+               steady morphs): )" +
+         choices(kMeanNames) + R"(;
+               knots (every three-keyframe method): )" +
+         choices(kKnotOrderNames) + R"(
                ("as-given": three keyframes handed to the method in the order given,
                knots distinct in any order: order-independence, Sec. 4);
-               permutation ()" + readers(kPermutationOption) + R"(): )" + choices(kPermutationNames) + R"(;
-               symmetrize ()" + readers(kSymmetrizeOption) + R"(): true averages with the time reverse
+               permutation ()" +
+         readers(kPermutationOption) + R"(): )" + choices(kPermutationNames) + R"(;
+               symmetrize ()" +
+         readers(kSymmetrizeOption) + R"(): true averages with the time reverse
 
 Methods:
 )" + methods_table<Method>() +
@@ -222,7 +231,8 @@ Pose scenes (the Steady Affine Morphs paper; docs/reference/pose-scenes.md "Pose
   method       a pose method below (any case); "subdivisions": 0-6 steps of four-point-SAM
                (default 4)
   Pose methods (id, poses, what):
-)" + methods_table<PoseMethod>() + R"(
+)" + methods_table<PoseMethod>() +
+         R"(
   Output: {"method": "SAM", "frames": [{"t": 0.0, "matrix": [[a, b, tx], [c, d, ty]]}, ...]}
   or CSV with the header t,a,b,tx,c,d,ty. When no SAM exists between two poses (their
   relative affinity has no real logarithm) pita says so and exits 2.
@@ -261,8 +271,7 @@ renamed into place only when all were written.
 
 std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
   auto options = std::make_shared<EvalOptions>();
-  CLI::App* eval = app.add_subcommand(
-      "eval", "Evaluate the motion through a scene's keyframes and print its frames");
+  CLI::App* eval = app.add_subcommand("eval", "Evaluate the motion through a scene's keyframes and print its frames");
   eval->footer(eval_footer());
 
   // Not ->required(): --batch replaces it (run_eval says when neither is given).
@@ -271,18 +280,16 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
           "--method", [options](const std::string& name) { options->method = name; },
           "Use this method instead of the scene's (the keyframe count must fit it)")
       ->type_name("M");
-  CLI::Option* samples =
-      eval->add_option_function<std::string>(
-              "--samples", [options](const std::string& count) { options->samples = count; },
-              "Print N frames at evenly spaced times from the first knot to the last "
-              "(2 <= N <= 1000000; default: the scene's \"samples\", else 9)")
-          ->type_name("N");
-  CLI::Option* times =
-      eval->add_option_function<std::string>(
-              "--t", [options](const std::string& list) { options->times = list; },
-              "Print the frames at these times: comma-separated finite numbers, any order; "
-              "times outside the knots extrapolate")
-          ->type_name("T1,T2,...");
+  CLI::Option* samples = eval->add_option_function<std::string>(
+                                 "--samples", [options](const std::string& count) { options->samples = count; },
+                                 "Print N frames at evenly spaced times from the first knot to the last "
+                                 "(2 <= N <= 1000000; default: the scene's \"samples\", else 9)")
+                             ->type_name("N");
+  CLI::Option* times = eval->add_option_function<std::string>(
+                               "--t", [options](const std::string& list) { options->times = list; },
+                               "Print the frames at these times: comma-separated finite numbers, any order; "
+                               "times outside the knots extrapolate")
+                           ->type_name("T1,T2,...");
   samples->excludes(times);
   eval->add_option_function<int>(
           "--panel", [options](const int& index) { options->panel = index; },
@@ -335,10 +342,11 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
       // well-formed, empty result and a note on stderr, exit 0, so that a loop
       // over every scene (scripts/run.sh) goes through (docs/paper-notes.md N68).
       if (options.panel) {
-        throw InputError(fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate",
-                                     scene.path));
+        throw InputError(
+            fmt::format("--panel: {}: /poses: the scene has no poses, so no motion to evaluate", scene.path));
       }
-      sink.write(motion::no_frames_text(scene, options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json));
+      sink.write(motion::no_frames_text(
+          scene, options.format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json));
       outcome.err = fmt::format("pita: {}: /poses: the scene has no poses, so no motion: no frames\n", scene.path);
       return outcome;
     }
@@ -351,8 +359,9 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
       throw InputError(fmt::format("--panel: {}", error.what()));
     }
     if (options.panel && options.method) {
-      throw InputError("--panel and --method: a panel evaluates with its own method; give --method without "
-                       "--panel for the scene's motion, or change the panel's \"method\"");
+      throw InputError(
+          "--panel and --method: a panel evaluates with its own method; give --method without "
+          "--panel for the scene's motion, or change the panel's \"method\"");
     }
     const scene::Panel& panel = evaluation->panel();
     const motion::SceneMotion& motion = evaluation->motion();
@@ -401,7 +410,8 @@ ExitCode run_eval(const EvalOptions& options) {
   if (!options.output) {
     EvalOutcome outcome = evaluate_into(options, stdout_sink());
     if (outcome.code == ExitCode::success && std::fflush(stdout) != 0) {
-      outcome = {ExitCode::failure, {},
+      outcome = {ExitCode::failure,
+                 {},
                  fmt::format("pita: cannot write the frames to standard output ({})\n", std::strerror(errno))};
     }
     std::cerr << outcome.err;

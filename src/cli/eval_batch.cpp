@@ -78,8 +78,9 @@ std::vector<std::string> request_arguments(const std::string& text, const std::s
     throw scene::SceneError(where, "", fmt::format("column {}: {}", error.column(), error.reason()));
   }
   if (!request.is_array()) {
-    throw scene::SceneError(where, "", "a request is the arguments of one `pita eval` as a JSON array of "
-                                       "strings, for example [\"scene.json\", \"--t=0,0.5\"]");
+    throw scene::SceneError(where, "",
+                            "a request is the arguments of one `pita eval` as a JSON array of "
+                            "strings, for example [\"scene.json\", \"--t=0,0.5\"]");
   }
   std::vector<std::string> arguments;
   for (std::size_t i = 0; i < request.size(); ++i) {
@@ -109,8 +110,10 @@ EvalOutcome answer(const std::vector<std::string>& arguments, const std::string&
     return {ExitCode::bad_input, {}, fmt::format("pita: {}: a request cannot hold --batch\n", where), 0.0};
   }
   if (options->output) {
-    return {ExitCode::bad_input, {},
-            fmt::format("pita: {}: a request cannot hold -o: its frames are its answer's \"stdout\"\n", where), 0.0};
+    return {ExitCode::bad_input,
+            {},
+            fmt::format("pita: {}: a request cannot hold -o: its frames are its answer's \"stdout\"\n", where),
+            0.0};
   }
   if (options->scene_path.empty()) {
     return {ExitCode::bad_input, {}, fmt::format("pita: {}: SCENE is required\n", where), 0.0};
@@ -119,7 +122,8 @@ EvalOutcome answer(const std::vector<std::string>& arguments, const std::string&
 }
 
 std::string answer_line(const EvalOutcome& outcome) {
-  const nlohmann::ordered_json line = {{"exit", to_int(outcome.code)}, {"stdout", outcome.out}, {"stderr", outcome.err}};
+  const nlohmann::ordered_json line = {
+      {"exit", to_int(outcome.code)}, {"stdout", outcome.out}, {"stderr", outcome.err}};
   // A path or an argument echoed in a message may not be UTF-8: replaced, not refused.
   return line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + '\n';
 }
@@ -143,15 +147,16 @@ ExitCode run_eval_batch(const std::string& path) {
     const std::string where = fmt::format("{}:{}", name, number);
     EvalOutcome outcome;
     if (number > scene::kMaxBatchRequests) {
-      outcome = refused(fmt::format("{}: a batch holds at most {} requests: split it", where,
-                                    scene::kMaxBatchRequests));
+      outcome =
+          refused(fmt::format("{}: a batch holds at most {} requests: split it", where, scene::kMaxBatchRequests));
     } else if (line.too_long) {
-      outcome = refused(fmt::format("{}: the request is longer than the limit of {} MiB", where,
-                                    scene::kMaxBatchLineBytes >> 20));
+      outcome = refused(
+          fmt::format("{}: the request is longer than the limit of {} MiB", where, scene::kMaxBatchLineBytes >> 20));
     } else if (work > scene::kMaxBatchWork) {
-      outcome = refused(fmt::format("{}: the batch has done about {:.3g} frames of its methods, above the limit "
-                                    "of {:.0g}: split it",
-                                    where, work, scene::kMaxBatchWork));
+      outcome =
+          refused(fmt::format("{}: the batch has done about {:.3g} frames of its methods, above the limit "
+                              "of {:.0g}: split it",
+                              where, work, scene::kMaxBatchWork));
     } else {
       try {
         outcome = answer(request_arguments(line.text, where), where);

@@ -17,11 +17,16 @@ enum class ExitCode : int {
 inline ExitCode worse(ExitCode a, ExitCode b) {
   const auto rank = [](ExitCode c) {
     switch (c) {
-      case ExitCode::success: return 0;
-      case ExitCode::golden_mismatch: return 1;
-      case ExitCode::failure: return 2;
-      case ExitCode::bad_input: return 3;
-      case ExitCode::internal_error: return 4;
+      case ExitCode::success:
+        return 0;
+      case ExitCode::golden_mismatch:
+        return 1;
+      case ExitCode::failure:
+        return 2;
+      case ExitCode::bad_input:
+        return 3;
+      case ExitCode::internal_error:
+        return 4;
     }
     return 4;
   };

@@ -46,16 +46,16 @@ Failure classify(const std::string& input) {
     // Within the render budget a figure needs well under 1 GB: the machine
     // (or a ulimit) has less, or --budget was raised.
     return {ExitCode::bad_input,
-            input + ": out of memory (the input needs more memory than is available: lower its "
-                    "sizes (or the --budget of pita render and pita animate), or raise the memory limit)"};
+            input +
+                ": out of memory (the input needs more memory than is available: lower its "
+                "sizes (or the --budget of pita render and pita animate), or raise the memory limit)"};
   } catch (const std::exception& e) {
     return {ExitCode::internal_error,
-            input + ": internal error, a bug in pita (please report it with this input): " +
-                e.what()};
+            input + ": internal error, a bug in pita (please report it with this input): " + e.what()};
   } catch (...) {
-    return {ExitCode::internal_error,
-            input + ": internal error, a bug in pita (please report it with this input): an "
-                    "unknown exception"};
+    return {ExitCode::internal_error, input +
+                                          ": internal error, a bug in pita (please report it with this input): an "
+                                          "unknown exception"};
   }
 }
 

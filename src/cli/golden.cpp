@@ -55,30 +55,35 @@ std::shared_ptr<GoldenOptions> setup_check(CLI::App& app) {
   auto o = std::make_shared<GoldenOptions>();
   CLI::App* check = app.add_subcommand("check", "Compare each scene's figure with its goldens");
   add_common(check, *o);
-  check->add_option("--report", o->report_dir,
-                    "Write DIR/index.html with the expected, actual and diff images of each mismatch")
+  check
+      ->add_option("--report", o->report_dir,
+                   "Write DIR/index.html with the expected, actual and diff images of each mismatch")
       ->type_name("DIR");
-  check->add_option("--number-tolerance", o->number_tolerance,
-                    fmt::format("Largest difference of a drawn number, relative to its panel's "
-                                "extent (default {:g})",
-                                golden::kDefaultNumberTolerance))
+  check
+      ->add_option("--number-tolerance", o->number_tolerance,
+                   fmt::format("Largest difference of a drawn number, relative to its panel's "
+                               "extent (default {:g})",
+                               golden::kDefaultNumberTolerance))
       ->check(CLI::Range(0.0, 1.0))
       ->type_name("X");
-  check->add_option("--svg-tolerance", o->svg_tolerance,
-                    fmt::format("Largest difference of an SVG number, in pixels (default {:g})",
-                                golden::kDefaultSvgTolerance))
+  check
+      ->add_option(
+          "--svg-tolerance", o->svg_tolerance,
+          fmt::format("Largest difference of an SVG number, in pixels (default {:g})", golden::kDefaultSvgTolerance))
       ->check(CLI::Range(0.0, 1000.0))
       ->type_name("PX");
-  check->add_option("--pixel-tolerance", o->pixel_tolerance,
-                    fmt::format("A PNG pixel differs when a channel differs by more than N levels "
-                                "of 255 (default {})",
-                                golden::kDefaultChannelTolerance))
+  check
+      ->add_option("--pixel-tolerance", o->pixel_tolerance,
+                   fmt::format("A PNG pixel differs when a channel differs by more than N levels "
+                               "of 255 (default {})",
+                               golden::kDefaultChannelTolerance))
       ->check(CLI::Range(0, 255))
       ->type_name("N");
-  check->add_option("--max-differing", o->max_differing,
-                    fmt::format("Largest share of differing PNG pixels that still matches, 0-1 "
-                                "(default {:g})",
-                                golden::kDefaultDifferingShare))
+  check
+      ->add_option("--max-differing", o->max_differing,
+                   fmt::format("Largest share of differing PNG pixels that still matches, 0-1 "
+                               "(default {:g})",
+                               golden::kDefaultDifferingShare))
       ->check(CLI::Range(0.0, 1.0))
       ->type_name("SHARE");
   check->footer(R"(
@@ -99,8 +104,7 @@ Examples:
 
 std::shared_ptr<GoldenOptions> setup_update_goldens(CLI::App& app) {
   auto o = std::make_shared<GoldenOptions>();
-  CLI::App* update = app.add_subcommand(
-      "update-goldens", "Write the goldens of scenes (the only way goldens change)");
+  CLI::App* update = app.add_subcommand("update-goldens", "Write the goldens of scenes (the only way goldens change)");
   add_common(update, *o);
   update->footer(R"(
 Renders each scene and writes golden/<name>/<name>.{data.json,svg,png}, printing for

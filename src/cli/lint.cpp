@@ -46,8 +46,9 @@ bool write_stdout(const std::string& text) {
 std::shared_ptr<LintOptions> setup_lint(CLI::App& app) {
   auto options = std::make_shared<LintOptions>();
   CLI::App* lint = app.add_subcommand(
-      "lint", "Check that each scene's figure is legible: no text over text or data, nothing cut off, no tiny "
-              "content or frames, no two series in one colour");
+      "lint",
+      "Check that each scene's figure is legible: no text over text or data, nothing cut off, no tiny "
+      "content or frames, no two series in one colour");
   lint->footer(fmt::format(R"(
 The lint looks at the figure as `pita render` would draw it, in canvas pixels, before painting.
 Its checks:
@@ -83,7 +84,9 @@ ExitCode run_lint(const LintOptions& options) {
       if (options.format == "json") {
         nlohmann::json findings = nlohmann::json::array();
         for (const lint::Finding& f : report.findings) findings.push_back(finding_json(f));
-        all.push_back({{"scene", path}, {"clean", report.clean()}, {"findings", findings},
+        all.push_back({{"scene", path},
+                       {"clean", report.clean()},
+                       {"findings", findings},
                        {"unused_allows", report.unused_allows}});
         continue;
       }

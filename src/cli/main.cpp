@@ -14,18 +14,18 @@
 
 #include "cli/animate.hpp"
 #include "cli/audit.hpp"
-#include "cli/sam3d_existence.hpp"
 #include "cli/eval.hpp"
-#include "cli/failure.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/failure.hpp"
 #include "cli/generate.hpp"
 #include "cli/golden.hpp"
 #include "cli/lint.hpp"
 #include "cli/measure.hpp"
+#include "cli/render.hpp"
+#include "cli/sam3d_existence.hpp"
 #include "cli/serve.hpp"
 #include "cli/sweep.hpp"
 #include "cli/watch.hpp"
-#include "cli/render.hpp"
 #include "io/interrupt.hpp"
 #include "scene/did_you_mean.hpp"
 
@@ -146,9 +146,8 @@ int main(int argc, char** argv) {
       return to_int(pita::cli::run_update_goldens(*update_options));
     }
   } catch (...) {  // each subcommand names its input; this is the last resort
-    const pita::cli::Failure failure = pita::cli::current_failure(app.get_subcommands().empty()
-                                                                      ? std::string("pita")
-                                                                      : app.get_subcommands().front()->get_name());
+    const pita::cli::Failure failure = pita::cli::current_failure(
+        app.get_subcommands().empty() ? std::string("pita") : app.get_subcommands().front()->get_name());
     std::cerr << "pita: " << failure.message << '\n';
     return to_int(failure.code);
   }

@@ -49,7 +49,8 @@ void options(std::ostringstream& out, const CLI::App& app, const CLI::Formatter&
     out << ".TP\n";
     if (option->nonpositional()) {
       std::string names;
-      for (const std::string& name : option->get_snames()) names += (names.empty() ? "" : ", ") + ("\\fB\\-" + escaped(name) + "\\fR");
+      for (const std::string& name : option->get_snames())
+        names += (names.empty() ? "" : ", ") + ("\\fB\\-" + escaped(name) + "\\fR");
       for (const std::string& name : option->get_lnames()) {
         names += (names.empty() ? "" : ", ") + ("\\fB\\-\\-" + escaped(name) + "\\fR");
       }

@@ -17,9 +17,10 @@ namespace pita::cli {
 
 std::shared_ptr<MeasureOptions> setup_measure(CLI::App& app) {
   auto options = std::make_shared<MeasureOptions>();
-  CLI::App* measure = app.add_subcommand(
-      "measure", "Print goodness measures of a scene's motions: discrepancy, path length and turning, winding "
-                 "range, overreaction, pops, ARA and area monotonicity");
+  CLI::App* measure =
+      app.add_subcommand("measure",
+                         "Print goodness measures of a scene's motions: discrepancy, path length and turning, winding "
+                         "range, overreaction, pops, ARA and area monotonicity");
   measure->footer(R"(
 For each panel (or the scene itself): the discrepancy E (PITA Eq. 47) of each frame against the
 previous frame, the steady average of its neighbours and the method's own prediction (Sec. 6.1);

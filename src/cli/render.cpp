@@ -44,9 +44,10 @@ std::vector<render::Format> parse_formats(const std::string& text) {
   text::for_each_item(text, [&](std::string_view item) {
     const auto format = render::format_from_name(item);
     if (!format) {
-      throw UsageError(fmt::format("--format: \"{}\" is not a format (use svg, png or pdf, "
-                                   "comma-separated: --format svg,png)",
-                                   item));
+      throw UsageError(
+          fmt::format("--format: \"{}\" is not a format (use svg, png or pdf, "
+                      "comma-separated: --format svg,png)",
+                      item));
     }
     if (std::find(formats.begin(), formats.end(), *format) == formats.end()) formats.push_back(*format);
   });
@@ -90,9 +91,10 @@ void refuse_shared_outputs(const RenderOptions& options, const std::vector<rende
       throw UsageError(fmt::format("{} is given twice: it would write {} twice{}", path, target.string(),
                                    first == path ? "" : fmt::format(" (also as {})", first)));
     }
-    throw UsageError(fmt::format("{} and {} would both write {} (outputs are named by the scene "
-                                 "file's name); rename one, or render them into different directories",
-                                 first, path, target.string()));
+    throw UsageError(
+        fmt::format("{} and {} would both write {} (outputs are named by the scene "
+                    "file's name); rename one, or render them into different directories",
+                    first, path, target.string()));
   }
 }
 
@@ -184,51 +186,58 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   render->footer(render_footer());
   // Required unless --list: checked in run_render, with CLI11's words.
   render->add_option("SCENE", options->scene_paths, "Scene files (JSON)");
-  render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")
-      ->type_name("OUT");
+  render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")->type_name("OUT");
   render->add_flag("--list", options->list,
                    "Print every scene (of the SCENE files and folders given, else of ./scenes) with its title and "
                    "description, and render nothing");
-  render->add_option_function<std::string>(
+  render
+      ->add_option_function<std::string>(
           "--format", [options](const std::string& list) { options->formats = list; },
           "Formats to write into the OUT directory, comma-separated: svg,png,pdf (default svg)")
       ->type_name("LIST");
   CLI::Option* scale =
-      render->add_option_function<double>(
+      render
+          ->add_option_function<double>(
               "--scale", [options](double s) { options->scale = s; },
-              fmt::format("PNG pixels per canvas pixel ({} to {}; default 1)", render::kMinScale,
-                          render::kMaxScale))
+              fmt::format("PNG pixels per canvas pixel ({} to {}; default 1)", render::kMinScale, render::kMaxScale))
           ->type_name("S");
-  CLI::Option* dpi = render->add_option_function<double>(
-                               "--dpi", [options](double d) { options->dpi = d; },
-                               "PNG resolution: scale = DPI / 96")
+  CLI::Option* dpi = render
+                         ->add_option_function<double>(
+                             "--dpi", [options](double d) { options->dpi = d; }, "PNG resolution: scale = DPI / 96")
                          ->type_name("DPI");
   scale->excludes(dpi);
-  render->add_option("--budget", options->budget,
-                     fmt::format("Allow F times the default work budget of a figure ({:.0f} million "
-                                 "drawn points, {:.0f} million PNG pixels; about 5 s and 400 MB "
-                                 "each); at most {:g}",
-                                 render::kDefaultBudgetUnits / 1e6,
-                                 render::kDefaultBudgetPixels / 1e6, render::kMaxBudgetFactor))
+  render
+      ->add_option(
+          "--budget", options->budget,
+          fmt::format("Allow F times the default work budget of a figure ({:.0f} million "
+                      "drawn points, {:.0f} million PNG pixels; about 5 s and 400 MB "
+                      "each); at most {:g}",
+                      render::kDefaultBudgetUnits / 1e6, render::kDefaultBudgetPixels / 1e6, render::kMaxBudgetFactor))
       ->check(CLI::Range(1e-3, render::kMaxBudgetFactor))
       ->type_name("F");
-  render->add_option_function<double>(
-             "--at", [options](double t) { options->at = t; },
-             "Draw the scene's animation at time T (a scene time; tau in [0, 1] for an animated "
-             "pattern): the frame `pita animate` draws at T")
+  render
+      ->add_option_function<double>(
+          "--at", [options](double t) { options->at = t; },
+          "Draw the scene's animation at time T (a scene time; tau in [0, 1] for an animated "
+          "pattern): the frame `pita animate` draws at T")
       ->type_name("T");
-  CLI::Option* fps = render->add_option_function<double>("--fps", [options](double v) { options->fps = v; },
-                                                         "With --at: the animation's frames per second, as for `pita animate`")
-                        ->type_name("F");
-  CLI::Option* duration = render->add_option_function<double>("--duration", [options](double v) { options->duration = v; },
-                                                              "With --at: the animation's duration in seconds")
-                             ->type_name("S");
-  CLI::Option* frames = render->add_option_function<int>("--frames", [options](int v) { options->frames = v; },
-                                                         "With --at: the animation's number of frames")
-                           ->type_name("N");
+  CLI::Option* fps = render
+                         ->add_option_function<double>(
+                             "--fps", [options](double v) { options->fps = v; },
+                             "With --at: the animation's frames per second, as for `pita animate`")
+                         ->type_name("F");
+  CLI::Option* duration = render
+                              ->add_option_function<double>(
+                                  "--duration", [options](double v) { options->duration = v; },
+                                  "With --at: the animation's duration in seconds")
+                              ->type_name("S");
+  CLI::Option* frames =
+      render
+          ->add_option_function<int>(
+              "--frames", [options](int v) { options->frames = v; }, "With --at: the animation's number of frames")
+          ->type_name("N");
   for (CLI::Option* clock : {fps, duration, frames}) clock->needs("--at");
-  render->add_flag("--allow-absolute-paths", options->allow_absolute_paths,
-                   "Allow images given by absolute paths");
+  render->add_flag("--allow-absolute-paths", options->allow_absolute_paths, "Allow images given by absolute paths");
   add_scene_jobs_option(*render, options->jobs);
   return options;
 }
@@ -291,19 +300,20 @@ RenderPlan plan_render(const RenderOptions& options) {
   if (options.formats) plan.formats = parse_formats(*options.formats);
   if (plan.single_file) {
     if (options.scene_paths.size() != 1) {
-      throw UsageError(fmt::format("-o {}: a single output file takes one scene (got {}); give a "
-                                   "directory to render several",
-                                   options.output, options.scene_paths.size()));
+      throw UsageError(
+          fmt::format("-o {}: a single output file takes one scene (got {}); give a "
+                      "directory to render several",
+                      options.output, options.scene_paths.size()));
     }
     if (!plan.formats.empty() && (plan.formats.size() != 1 || plan.formats.front() != *by_extension)) {
-      throw UsageError(
-          fmt::format("--format {} contradicts the extension of -o {}", *options.formats, options.output));
+      throw UsageError(fmt::format("--format {} contradicts the extension of -o {}", *options.formats, options.output));
     }
     plan.formats = {*by_extension};
   } else if (plan.formats.empty()) {
     plan.formats = {render::Format::svg};
   }
-  if (!std::isfinite(options.budget)) throw UsageError(fmt::format("--budget: must be a number (got {})", options.budget));
+  if (!std::isfinite(options.budget))
+    throw UsageError(fmt::format("--budget: must be a number (got {})", options.budget));
   if (options.at && !(std::abs(*options.at) <= scene::kMaxKeyframeValue)) {
     throw UsageError(fmt::format("--at: the time must be a finite number within +-{:g} (got {})",
                                  scene::kMaxKeyframeValue, *options.at));
@@ -312,8 +322,7 @@ RenderPlan plan_render(const RenderOptions& options) {
   if (options.scale) plan.scale = *options.scale;
   if (!(plan.scale >= render::kMinScale && plan.scale <= render::kMaxScale)) {
     throw UsageError(fmt::format("{}: the PNG scale must be between {} and {} (got {})",
-                                 options.dpi ? "--dpi" : "--scale", render::kMinScale, render::kMaxScale,
-                                 plan.scale));
+                                 options.dpi ? "--dpi" : "--scale", render::kMinScale, render::kMaxScale, plan.scale));
   }
   if (!plan.single_file) refuse_shared_outputs(options, plan.formats);
   return plan;
@@ -347,11 +356,11 @@ RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan,
     // a failure in `pita check` (docs/reference/check.md "Claims").
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       if (claim.held) continue;
-      rendered.warnings += "pita: warning: " +
-                           scene::located(scene.path, claim.pointer,
-                                          fmt::format("the claim \"{}\" does not hold: {}", claim.says,
-                                                      claim.measured)) +
-                           '\n';
+      rendered.warnings +=
+          "pita: warning: " +
+          scene::located(scene.path, claim.pointer,
+                         fmt::format("the claim \"{}\" does not hold: {}", claim.says, claim.measured)) +
+          '\n';
     }
   }
   for (const Target& target : targets_for(options, path, plan.formats, plan.single_file)) {

@@ -29,9 +29,9 @@ struct RenderOptions {
   std::optional<double> fps;           // --fps, --duration, --frames: the animation's clock, as
   std::optional<double> duration;      // `pita animate` takes them (they space a trail's frames)
   std::optional<int> frames;
-  bool allow_absolute_paths = false;   // --allow-absolute-paths: images by absolute paths
-  bool list = false;                   // --list: print each scene's name, title and description
-  std::optional<int> jobs;             // --jobs: scenes rendered at once (cli/scene_jobs.hpp)
+  bool allow_absolute_paths = false;  // --allow-absolute-paths: images by absolute paths
+  bool list = false;                  // --list: print each scene's name, title and description
+  std::optional<int> jobs;            // --jobs: scenes rendered at once (cli/scene_jobs.hpp)
 };
 
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app);

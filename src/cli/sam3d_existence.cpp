@@ -92,12 +92,14 @@ std::shared_ptr<Sam3dExistenceCliOptions> setup_sam3d_existence(CLI::App& audit)
       ->check(CLI::Range(1, analysis::kMaxExistenceAngles))
       ->type_name("N")
       ->capture_default_str();
-  command->add_option_function<std::string>(
-             "--theta", [options](const std::string& text) { options->theta = text; },
-             "The largest rotation angle (radians, or 2pi/3, pi/2, ...); default: the paper's three")
+  command
+      ->add_option_function<std::string>(
+          "--theta", [options](const std::string& text) { options->theta = text; },
+          "The largest rotation angle (radians, or 2pi/3, pi/2, ...); default: the paper's three")
       ->type_name("T");
-  command->add_option_function<double>(
-             "--p", [options](double p) { options->p = p; }, "Check only this perturbation")
+  command
+      ->add_option_function<double>(
+          "--p", [options](double p) { options->p = p; }, "Check only this perturbation")
       ->check(CLI::Range(0.0, 10.0))
       ->type_name("P");
   command->add_option("--step", options->step, "The grid of p searched")
@@ -136,8 +138,7 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
       return ExitCode::bad_input;
     }
     if (!(theta >= 0.0 && theta <= std::numbers::pi)) {
-      std::cerr << "pita: audit sam3d-existence: --theta: must be between 0 and pi (got " << *options.theta
-                << ")\n";
+      std::cerr << "pita: audit sam3d-existence: --theta: must be between 0 and pi (got " << *options.theta << ")\n";
       return ExitCode::bad_input;
     }
     thetas.push_back(theta);
@@ -156,15 +157,15 @@ ExitCode run_sam3d_existence(const Sam3dExistenceCliOptions& options) {
   const std::size_t axes = analysis::icosphere_axes(search.subdivisions).size();
   // The work bound, refused before it starts: within the documented ranges
   // --subdivisions 4 --angles 1001 would run for many minutes.
-  const double work = static_cast<double>(options.curve ? analysis::existence_curve_work(*options.curve, search)
-                                                        : analysis::existence_work(search, thetas.size(),
-                                                                                   options.p.has_value()));
+  const double work =
+      static_cast<double>(options.curve ? analysis::existence_curve_work(*options.curve, search)
+                                        : analysis::existence_work(search, thetas.size(), options.p.has_value()));
   if (work > analysis::kExistenceWorkBudget * options.budget) {
-    std::cerr << fmt::format("pita: audit sam3d-existence: this run would check up to {:.3g} matrices ({} axes, {} "
-                             "angles, 3^9 perturbations, per test), above the budget of {:.3g}: lower "
-                             "--subdivisions, --angles or --curve, or raise the budget with --budget F\n",
-                             work, axes, options.curve ? 1 : search.angles,
-                             analysis::kExistenceWorkBudget * options.budget);
+    std::cerr << fmt::format(
+        "pita: audit sam3d-existence: this run would check up to {:.3g} matrices ({} axes, {} "
+        "angles, 3^9 perturbations, per test), above the budget of {:.3g}: lower "
+        "--subdivisions, --angles or --curve, or raise the budget with --budget F\n",
+        work, axes, options.curve ? 1 : search.angles, analysis::kExistenceWorkBudget * options.budget);
     return ExitCode::bad_input;
   }
   const auto start = std::chrono::steady_clock::now();

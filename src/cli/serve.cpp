@@ -1,7 +1,5 @@
 #include "cli/serve.hpp"
 
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <unistd.h>
 
 namespace pita::cli {
 
@@ -40,9 +39,10 @@ void add_serve_options(CLI::App& command, ServeOptions& options) {
       ->check(CLI::Range(0, 65535))
       ->capture_default_str()
       ->type_name("N");
-  command.add_option("--host", options.host,
-                     "Address to listen on; another than 127.0.0.1 or ::1 lets other machines connect, and is warned "
-                     "about")
+  command
+      .add_option("--host", options.host,
+                  "Address to listen on; another than 127.0.0.1 or ::1 lets other machines connect, and is warned "
+                  "about")
       ->capture_default_str()
       ->type_name("ADDRESS");
   command.add_flag("--allow-absolute-paths", options.allow_absolute_paths, "Allow images given by absolute paths");

@@ -1,8 +1,5 @@
 // pita-serve: the server of `pita serve` (cli/serve.hpp), a program of its
 // own so that only it loads the HTTP library.
-#include <pthread.h>
-#include <signal.h>
-
 #include <atomic>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <pthread.h>
+#include <signal.h>
 
 #include "cli/exit_code.hpp"
 #include "cli/serve.hpp"
@@ -29,9 +28,10 @@ int serve_main(const ServeOptions& options) {
     }
   }
   if (options.host != "127.0.0.1" && options.host != "::1" && options.host != "localhost") {
-    std::cerr << fmt::format("pita: warning: listening on {}: other machines can connect (each still needs the "
-                             "token)\n",
-                             options.host);
+    std::cerr << fmt::format(
+        "pita: warning: listening on {}: other machines can connect (each still needs the "
+        "token)\n",
+        options.host);
   }
   // SIGINT, SIGTERM and SIGHUP are taken by a thread of their own, which
   // stops the server: the page's requests in flight end, nothing is left.

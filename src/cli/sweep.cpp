@@ -77,32 +77,43 @@ void print_sweep_notes(const sweep::SweepSummary& summary, const sweep::SweepOpt
 
 std::shared_ptr<SweepCommand> setup_sweep(CLI::App& app) {
   auto command = std::make_shared<SweepCommand>();
-  CLI::App* sweep = app.add_subcommand("sweep", "Run many variants of a scene: figures, frames, a manifest of metrics "
-                                                "and a contact sheet");
+  CLI::App* sweep = app.add_subcommand("sweep",
+                                       "Run many variants of a scene: figures, frames, a manifest of metrics "
+                                       "and a contact sheet");
   sweep->footer(sweep_footer());
-  sweep->add_option_function<std::string>(
-           "SCENE", [command](const std::string& s) { command->scene_path = s; }, "The base scene file (JSON)")
+  sweep
+      ->add_option_function<std::string>(
+          "SCENE", [command](const std::string& s) { command->scene_path = s; }, "The base scene file (JSON)")
       ->type_name("SCENE");
   sweep->add_option("--vary", command->vary, "POINTER=SPEC: the values to set at a JSON Pointer (repeatable)")
       ->type_name("POINTER=SPEC")
       ->allow_extra_args(false);
   sweep->add_flag("--zip", command->zip, "Pair the --vary lists value by value instead of every combination");
-  sweep->add_option_function<std::string>("-o,--output", [command](const std::string& s) { command->output = s; },
-                                          "The output folder DIR (created if needed)")
+  sweep
+      ->add_option_function<std::string>(
+          "-o,--output", [command](const std::string& s) { command->output = s; },
+          "The output folder DIR (created if needed)")
       ->type_name("DIR");
-  sweep->add_option("--format", command->formats,
-                    "Outputs per variant, comma-separated: svg, png, pdf, csv, json; metrics: none, the manifest's "
-                    "row only")
+  sweep
+      ->add_option("--format", command->formats,
+                   "Outputs per variant, comma-separated: svg, png, pdf, csv, json; metrics: none, the manifest's "
+                   "row only")
       ->type_name("LIST")
       ->capture_default_str();
-  sweep->add_option_function<int>("--jobs,-j", [command](int j) { command->jobs = j; },
-                                   "Variants run at once (default: PITA_THREADS, else the number of cores)")
+  sweep
+      ->add_option_function<int>(
+          "--jobs,-j", [command](int j) { command->jobs = j; },
+          "Variants run at once (default: PITA_THREADS, else the number of cores)")
       ->type_name("J");
-  sweep->add_option_function<std::string>("--shard", [command](const std::string& s) { command->shard = s; },
-                                          "Run only the variants i with i mod N = K; writes manifest.K-of-N.csv")
+  sweep
+      ->add_option_function<std::string>(
+          "--shard", [command](const std::string& s) { command->shard = s; },
+          "Run only the variants i with i mod N = K; writes manifest.K-of-N.csv")
       ->type_name("K/N");
-  sweep->add_option_function<std::string>("--merge", [command](const std::string& s) { command->merge = s; },
-                                          "Join the shards' manifests in DIR into manifest.csv, index.html, contact.*")
+  sweep
+      ->add_option_function<std::string>(
+          "--merge", [command](const std::string& s) { command->merge = s; },
+          "Join the shards' manifests in DIR into manifest.csv, index.html, contact.*")
       ->type_name("DIR");
   sweep->add_flag("--force", command->force, "Redo variants that a previous run finished");
   sweep->add_flag("--wait", command->wait,
@@ -116,8 +127,9 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     if (command.merge) {
       if (command.scene_path || !command.vary.empty() || command.output || command.shard || command.zip ||
           command.jobs || command.force || command.formats != "svg") {
-        throw sweep::SweepUsageError("--merge DIR takes no scene, --vary, --zip, -o, --format, --jobs, --shard or "
-                                     "--force: the shards' folder holds the sweep's definition");
+        throw sweep::SweepUsageError(
+            "--merge DIR takes no scene, --vary, --zip, -o, --format, --jobs, --shard or "
+            "--force: the shards' folder holds the sweep's definition");
       }
       const sweep::MergeSummary merged = sweep::merge_sweep(*command.merge, command.wait);
       if (!command.quiet) {
@@ -127,12 +139,12 @@ ExitCode run_sweep_command(const SweepCommand& command) {
                                fmt::join(merged.parts, ", "), merged.rows, merged.variants, merged.failed,
                                *command.merge);
       if (merged.missing_count > 0) {
-        std::cerr << fmt::format("pita: {} variant{} missing: {}{} (run their shards again)\n", merged.missing_count,
-                                 merged.missing_count == 1 ? "" : "s", sweep::index_ranges(merged.missing),
-                                 merged.missing.size() < static_cast<std::size_t>(merged.missing_count) &&
-                                         merged.missing.size() >= 1000
-                                     ? ", ..."
-                                     : "");
+        std::cerr << fmt::format(
+            "pita: {} variant{} missing: {}{} (run their shards again)\n", merged.missing_count,
+            merged.missing_count == 1 ? "" : "s", sweep::index_ranges(merged.missing),
+            merged.missing.size() < static_cast<std::size_t>(merged.missing_count) && merged.missing.size() >= 1000
+                ? ", ..."
+                : "");
         if (!merged.missing_shards.empty()) {
           std::string shards;
           for (const auto& [k, count] : merged.missing_shards) {
@@ -172,9 +184,9 @@ ExitCode run_sweep_command(const SweepCommand& command) {
     if (!command.quiet) print_sweep_notes(summary, options);
     std::cout << fmt::format("{} variants: {} written, {} resumed, {} failed; see {}/{}\n", summary.variants,
                              summary.ok, summary.skipped, summary.failed, options.output,
-                             options.shard ? fmt::format("manifest.{}-of-{}.csv", options.shard->first,
-                                                         options.shard->second)
-                                           : "manifest.csv");
+                             options.shard
+                                 ? fmt::format("manifest.{}-of-{}.csv", options.shard->first, options.shard->second)
+                                 : "manifest.csv");
     if (summary.write_failed) return ExitCode::failure;
     return summary.failed > 0 ? ExitCode::golden_mismatch : ExitCode::success;
   } catch (const sweep::SweepUsageError& error) {

@@ -56,8 +56,8 @@ bool render(const RenderOptions& options) {
 
 std::shared_ptr<WatchOptions> setup_watch(CLI::App& app) {
   auto options = std::make_shared<WatchOptions>();
-  CLI::App* watch = app.add_subcommand(
-      "watch", "Render a scene, then again each time it (or an image it uses) is saved");
+  CLI::App* watch =
+      app.add_subcommand("watch", "Render a scene, then again each time it (or an image it uses) is saved");
   watch->footer(R"(
 Renders SCENE as `pita render SCENE -o OUT` does, then waits: each save of the scene file, or of
 an image its shapes use, renders it again (inotify; a burst of saves is one render). Every output
@@ -77,23 +77,27 @@ waits); 128 + N when signal N ends it.
   watch->add_option("-o,--output", options->render.output, "Output file (.svg/.png/.pdf) or directory")
       ->required()
       ->type_name("OUT");
-  watch->add_option_function<std::string>(
+  watch
+      ->add_option_function<std::string>(
           "--format", [options](const std::string& list) { options->render.formats = list; },
           "Formats to write into the OUT directory, comma-separated: svg,png,pdf (default svg)")
       ->type_name("LIST");
-  CLI::Option* scale = watch->add_option_function<double>(
-                                "--scale", [options](double s) { options->render.scale = s; },
-                                fmt::format("PNG pixels per canvas pixel ({} to {}; default 1)", render::kMinScale,
-                                            render::kMaxScale))
-                           ->type_name("S");
-  CLI::Option* dpi = watch->add_option_function<double>(
-                              "--dpi", [options](double d) { options->render.dpi = d; },
-                              "PNG resolution: scale = DPI / 96")
-                         ->type_name("DPI");
+  CLI::Option* scale =
+      watch
+          ->add_option_function<double>(
+              "--scale", [options](double s) { options->render.scale = s; },
+              fmt::format("PNG pixels per canvas pixel ({} to {}; default 1)", render::kMinScale, render::kMaxScale))
+          ->type_name("S");
+  CLI::Option* dpi =
+      watch
+          ->add_option_function<double>(
+              "--dpi", [options](double d) { options->render.dpi = d; }, "PNG resolution: scale = DPI / 96")
+          ->type_name("DPI");
   scale->excludes(dpi);
-  watch->add_option_function<double>(
-           "--at", [options](double t) { options->render.at = t; },
-           "Draw the scene's animation at time T, as `pita render --at`")
+  watch
+      ->add_option_function<double>(
+          "--at", [options](double t) { options->render.at = t; },
+          "Draw the scene's animation at time T, as `pita render --at`")
       ->type_name("T");
   watch->add_flag("--allow-absolute-paths", options->render.allow_absolute_paths,
                   "Allow images given by absolute paths");
@@ -122,9 +126,9 @@ ExitCode run_watch(const WatchOptions& options) {
   }
   int renders = 0;
   render(render_options);
-  std::cerr << fmt::format("pita: watching {}{} (Ctrl-C stops)\n", render_options.scene_paths.front(),
-                           images.empty() ? "" : fmt::format(" and {} image{}", images.size(),
-                                                             images.size() == 1 ? "" : "s"));
+  std::cerr << fmt::format(
+      "pita: watching {}{} (Ctrl-C stops)\n", render_options.scene_paths.front(),
+      images.empty() ? "" : fmt::format(" and {} image{}", images.size(), images.size() == 1 ? "" : "s"));
   while (options.max_renders == 0 || ++renders < options.max_renders) {
     std::set<fs::path> saved;
     while (saved.empty()) saved = watcher->wait(std::chrono::hours(1));

@@ -1,12 +1,12 @@
 #include "core/affine3_split.hpp"
 
-#include <Eigen/Geometry>
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include "core/affine_power_of_space.hpp"
 #include "core/limits.hpp"
@@ -51,9 +51,7 @@ Vector3d unit_orthogonal(const Vector3d& r) {
 Vector3d eigenvector(const Matrix3d& L, double lambda) {
   const Matrix3d B = L - lambda * Matrix3d::Identity();
   const double scale = std::max(L.norm(), std::numeric_limits<double>::min());
-  const auto residual = [&L](const Vector3d& v) {
-    return (L * v - v.dot(L * v) * v).norm();
-  };
+  const auto residual = [&L](const Vector3d& v) { return (L * v - v.dot(L * v) * v).norm(); };
   // The starts are judged by |B u|, not by the residual, so that u belongs to
   // lambda (e1 would win for diag(1, 3, 1) and lambda = 3).
   const Vector3d r0 = B.row(0), r1 = B.row(1), r2 = B.row(2);
@@ -95,8 +93,8 @@ Vector3d eigenvector(const Matrix3d& L, double lambda) {
 // may have made a complex pair of it, or three distinct reals).
 bool triple_cluster(const std::array<Complex, 3>& values) {
   const double size = std::max({modulus(values[0]), modulus(values[1]), modulus(values[2]), limits::kTinyScale});
-  const double spread = std::max({modulus(values[0] - values[1]), modulus(values[0] - values[2]),
-                                  modulus(values[1] - values[2])});
+  const double spread =
+      std::max({modulus(values[0] - values[1]), modulus(values[0] - values[2]), modulus(values[1] - values[2])});
   return spread <= limits::kEigenvalueCluster * size;
 }
 
@@ -172,8 +170,8 @@ std::array<std::complex<double>, 3> eigenvalues(const Eigen::Matrix3d& L) {
   const Matrix3d S = exponent == 0 ? L : Matrix3d(L * std::ldexp(1.0, -exponent));
   // z^3 - a z^2 + b z - c: a = trace, b = the principal 2x2 minors, c = det.
   const double a = S.trace();
-  const double b = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0) + S(0, 0) * S(2, 2) - S(0, 2) * S(2, 0) +
-                   S(1, 1) * S(2, 2) - S(1, 2) * S(2, 1);
+  const double b = S(0, 0) * S(1, 1) - S(0, 1) * S(1, 0) + S(0, 0) * S(2, 2) - S(0, 2) * S(2, 0) + S(1, 1) * S(2, 2) -
+                   S(1, 2) * S(2, 1);
   const double c = S.determinant();
   // z = x + a/3: x^3 + p x + q.
   const double p = b - a * a / 3.0;

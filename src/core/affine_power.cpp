@@ -1,13 +1,13 @@
 #include "core/affine_power.hpp"
 
-#include <unsupported/Eigen/MatrixFunctions>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <tuple>
+
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "core/exp_of_parts.hpp"
 #include "core/limits.hpp"
@@ -20,10 +20,9 @@ namespace {
 using Eigen::Matrix2d;
 using Eigen::Vector2d;
 
-
-using number_text::g6;
 using detail::exp_of_parts;
 using detail::exp_of_parts_minus_identity;
+using number_text::g6;
 
 // The quantities of A.5 read off L = [[a, b], [c, d]], computed on the scaled
 // L^ = 2^-exponent L so that no product of entries over- or underflows (the
@@ -37,8 +36,8 @@ struct Characteristics {
   double det;    //                                                 (of L^)
   double n_max;  // the largest entry of N = L - r I                (of L^)
   int exponent_E;
-  double delta_E;        // delta of 2^-exponent_E L
-  double trace_E;        // trace and determinant of 2^-exponent_E (L - I)
+  double delta_E;  // delta of 2^-exponent_E L
+  double trace_E;  // trace and determinant of 2^-exponent_E (L - I)
   double det_E;
   double det_minus_one;  // det L - 1 = trace E + det E (exponent_E = 0; exact near I)
 };
@@ -76,8 +75,7 @@ Characteristics characteristics(const Matrix2d& L) {
   k.exponent_E = std::max(k.exponent, 0);
   const double scale_E = std::ldexp(1.0, -k.exponent_E);
   const double one = scale_E;  // the identity, scaled
-  const double aE = L(0, 0) * scale_E, bE = L(0, 1) * scale_E, cE = L(1, 0) * scale_E,
-               dE = L(1, 1) * scale_E;
+  const double aE = L(0, 0) * scale_E, bE = L(0, 1) * scale_E, cE = L(1, 0) * scale_E, dE = L(1, 1) * scale_E;
   const double hE = (aE - dE) / 2.0;
   k.delta_E = cross_difference(hE, hE, -bE, cE);
   k.trace_E = (aE - one) + (dE - one);
@@ -139,22 +137,32 @@ std::string no_log_reason(const Matrix2d& L) {
 
 std::string_view name(RootCase kase) {
   switch (kase) {
-    case RootCase::G1: return "G1";
-    case RootCase::G2: return "G2";
-    case RootCase::S1: return "S1";
-    case RootCase::S2: return "S2";
-    case RootCase::G3: return "G3";
+    case RootCase::G1:
+      return "G1";
+    case RootCase::G2:
+      return "G2";
+    case RootCase::S1:
+      return "S1";
+    case RootCase::S2:
+      return "S2";
+    case RootCase::G3:
+      return "G3";
   }
   return "?";
 }
 
 std::string_view description(RootCase kase) {
   switch (kase) {
-    case RootCase::G1: return "complex eigenvalues";
-    case RootCase::G2: return "two positive eigenvalues";
-    case RootCase::S1: return "eigenvalue 1: translation, shear or one-directional scaling";
-    case RootCase::S2: return "rotation by pi with uniform scaling";
-    case RootCase::G3: return "no real logarithm";
+    case RootCase::G1:
+      return "complex eigenvalues";
+    case RootCase::G2:
+      return "two positive eigenvalues";
+    case RootCase::S1:
+      return "eigenvalue 1: translation, shear or one-directional scaling";
+    case RootCase::S2:
+      return "rotation by pi with uniform scaling";
+    case RootCase::G3:
+      return "no real logarithm";
   }
   return "?";
 }
@@ -198,11 +206,9 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
   // c = ln(sqrt(det L)) = ln |lambda| (G1, S2) = (ln lambda1 + ln lambda2)/2 (G2);
   // near the identity from det - 1 = trace E + det E, which has no cancellation there.
   // (On the scaled L^ = 2^-e L: ln det L = ln det L^ + 2 e ln 2.)
-  const bool near_identity =
-      k.exponent_E == 0 && std::abs(k.trace_E) + std::abs(k.det_E) < 0.5;
-  const double c = near_identity
-                       ? 0.5 * std::log1p(k.det_minus_one)
-                       : 0.5 * std::log(k.det) + k.exponent * std::numbers::ln2;
+  const bool near_identity = k.exponent_E == 0 && std::abs(k.trace_E) + std::abs(k.det_E) < 0.5;
+  const double c =
+      near_identity ? 0.5 * std::log1p(k.det_minus_one) : 0.5 * std::log(k.det) + k.exponent * std::numbers::ln2;
   if (kase == RootCase::S2) {
     Matrix2d J;
     J << 0.0, -kPi, kPi, 0.0;
@@ -233,7 +239,6 @@ LogParts log_parts(const Matrix2d& L, const Characteristics& k, RootCase kase) {
   const double root = coefficient * std::sqrt(std::abs(k.delta));
   return {c, coefficient * N, std::copysign(root * root, k.delta)};
 }
-
 
 // (I - L)^-1 on the scaled matrix: 2^-e (one I - L^)^-1 with e = exponent_E,
 // one = 2^-e, and det(one I - L^) = det(L^ - one I) = det E^ in 2D.
@@ -266,9 +271,7 @@ Matrix2d linear_exp(const Matrix2d& C, double t) {
   return exp_of_parts(x, C - x * Matrix2d::Identity(), h * h + C(0, 1) * C(1, 0), t);
 }
 
-Matrix2d linear_power(const Matrix2d& L, double t) {
-  return AffinePowers(Affine2{L, Vector2d::Zero()}).at(t).L;
-}
+Matrix2d linear_power(const Matrix2d& L, double t) { return AffinePowers(Affine2{L, Vector2d::Zero()}).at(t).L; }
 
 std::optional<Vector2d> fixed_point(const Affine2& A) {
   if (!A.L.allFinite()) return std::nullopt;
@@ -276,7 +279,7 @@ std::optional<Vector2d> fixed_point(const Affine2& A) {
   const RootCase kase = select_case(k);
   if (kase == RootCase::S1) return std::nullopt;
   if (kase == RootCase::G3 && k.det_E == 0.0) return std::nullopt;  // eigenvalue 1 (det <= 0)
-  return Vector2d(inverse_of_identity_minus(A.L, k) * A.b);  // (I - L) q = b
+  return Vector2d(inverse_of_identity_minus(A.L, k) * A.b);         // (I - L) q = b
 }
 
 AffinePowers<Affine2>::AffinePowers(const Affine2& A) : A_(A) {
@@ -328,7 +331,9 @@ AffinePowers<Affine2>::AffinePowers(const Affine2& A) : A_(A) {
         const double p_next = -det_E_ * q, q_next = p + trace_E_ * q;
         p = p_next;
         q = q_next;
-        if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) < limits::kSeriesTermCutoff * (std::abs(g0) + limits::kTinyScale)) break;
+        if (std::abs(p) + std::abs(q) * (1.0 + E_.norm()) <
+            limits::kSeriesTermCutoff * (std::abs(g0) + limits::kTinyScale))
+          break;
       }
       log_ratio_ = g0 * Matrix2d::Identity() + g1 * E_;
       break;

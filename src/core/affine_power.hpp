@@ -52,8 +52,7 @@ std::string_view description(RootCase kase);
 // with the eigenvalues.
 class NoRealLogarithm : public MotionDomainError {
  public:
-  NoRealLogarithm(const std::string& reason, RootCase kase)
-      : MotionDomainError(reason), kase_(kase) {}
+  NoRealLogarithm(const std::string& reason, RootCase kase) : MotionDomainError(reason), kase_(kase) {}
   // G3 when L has no real log; also G3 for det L <= 0 (no orientation).
   RootCase root_case() const { return kase_; }
 
@@ -141,26 +140,26 @@ class AffinePowers<Affine2> {
   enum class Translation { unit_series, fixed_point, eigenvalues };
 
   Affine2 at_small(double t, const Eigen::Vector2d& b) const;  // |t| <= kUnitSeriesMaxTime, or any t
-  Eigen::Matrix2d power_of_linear(double t) const;          // L^t
-  Eigen::Matrix2d power_minus_identity(double t) const;     // L^t - I, exact near t = 0
-  Eigen::Matrix2d unit_function(double f1, double f2) const;  // f(E) from f(mu1), f(mu2)
+  Eigen::Matrix2d power_of_linear(double t) const;             // L^t
+  Eigen::Matrix2d power_minus_identity(double t) const;        // L^t - I, exact near t = 0
+  Eigen::Matrix2d unit_function(double f1, double f2) const;   // f(E) from f(mu1), f(mu2)
 
   Affine2 A_;
   RootCase case_ = RootCase::G2;
-  double c_ = 0.0;           // log L = c I + M,
-  Eigen::Matrix2d M_;        // M traceless,
-  double gamma_ = 0.0;       // M^2 = gamma I
-  Eigen::Matrix2d C_;        // log L
-  Eigen::Vector2d v_;        // translation part of log A
+  double c_ = 0.0;      // log L = c I + M,
+  Eigen::Matrix2d M_;   // M traceless,
+  double gamma_ = 0.0;  // M^2 = gamma I
+  Eigen::Matrix2d C_;   // log L
+  Eigen::Vector2d v_;   // translation part of log A
   Translation translation_ = Translation::fixed_point;
-  Eigen::Matrix2d E_;        // L - I
+  Eigen::Matrix2d E_;  // L - I
   double trace_E_ = 0.0, det_E_ = 0.0;
-  double mu1_ = 0.0, mu2_ = 0.0;  // the eigenvalues of E (Translation::eigenvalues: real)
+  double mu1_ = 0.0, mu2_ = 0.0;       // the eigenvalues of E (Translation::eigenvalues: real)
   Eigen::Matrix2d inverse_I_minus_L_;  // (I - L)^-1 (Translation::fixed_point)
   Eigen::Matrix2d log_ratio_;          // l(L) = log(L) (L - I)^-1
 };
 
-AffinePowers(const Affine2&) -> AffinePowers<Affine2>;
+AffinePowers(const Affine2&)->AffinePowers<Affine2>;
 
 // A^t (builds AffinePowers; use the class for many t).
 Affine2 affine_power(const Affine2& A, double t);

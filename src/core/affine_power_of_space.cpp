@@ -1,14 +1,14 @@
 #include "core/affine_power_of_space.hpp"
 
-#include <Eigen/LU>
-#include <unsupported/Eigen/MatrixFunctions>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
+
+#include <Eigen/LU>
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "core/affine3_split.hpp"
 #include "core/limits.hpp"
@@ -116,8 +116,7 @@ AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
   if (!(lambda_ > 0.0)) {
     // Only with det L > 0 rounded away (the three eigenvalues ~ 0, or a negative
     // lambda picked from three nearly equal negatives): no real log either way.
-    throw NoRealLogarithm("the linear part has the eigenvalues " +
-                              eigenvalue_text(Complex(lambda_), mu1, mu2) +
+    throw NoRealLogarithm("the linear part has the eigenvalues " + eigenvalue_text(Complex(lambda_), mu1, mu2) +
                               ": no positive eigenvalue to split off (A.6); no real logarithm",
                           RootCase::G3);
   }
@@ -126,14 +125,13 @@ AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
     relative_.emplace(Affine2{Matrix2d(M.transpose() / lambda_), Vector2d::Zero()});
   } catch (const NoRealLogarithm&) {
     const bool real_pair = plane_values.im1 == 0.0;
-    throw NoRealLogarithm(
-        "the linear part has the eigenvalues " + eigenvalue_text(Complex(lambda_), mu1, mu2) +
-            (real_pair && plane_values.re1 != plane_values.re2
-                 ? ": two distinct negative eigenvalues"
-                 : ": a negative eigenvalue without two independent eigenvectors") +
-            " (case G3 on the plane beside the eigenvalue " + g6(lambda_) +
-            "): it has no real logarithm (Culver, Sec. 5.1)",
-        RootCase::G3);
+    throw NoRealLogarithm("the linear part has the eigenvalues " + eigenvalue_text(Complex(lambda_), mu1, mu2) +
+                              (real_pair && plane_values.re1 != plane_values.re2
+                                   ? ": two distinct negative eigenvalues"
+                                   : ": a negative eigenvalue without two independent eigenvectors") +
+                              " (case G3 on the plane beside the eigenvalue " + g6(lambda_) +
+                              "): it has no real logarithm (Culver, Sec. 5.1)",
+                          RootCase::G3);
   }
   log_lambda_ = std::log1p(lambda_ - 1.0);
 
@@ -152,7 +150,6 @@ AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
     corner_ = Corner::over_lambda_minus_M;
     lean_solve_ = (lambda_ * Matrix2d::Identity() - M).inverse() * c_;
   }
-
 }
 
 void AffinePowers<Affine3>::set_translation(const Vector3d& b) {
@@ -217,8 +214,7 @@ Affine3 AffinePowers<Affine3>::split_log() const {
     const double l_lambda = log_ratio(lambda_);
     const double corner = corner_ == Corner::over_lambda_minus_one
                               ? (lean_log.dot(c_) - w_.dot(plane_log)) / (lambda_ - 1.0)
-                              : l_lambda * w_.dot(lean_solve_) -
-                                    w_.dot(plane_->log_translation(lean_solve_));
+                              : l_lambda * w_.dot(lean_solve_) - w_.dot(plane_->log_translation(lean_solve_));
     log.b = Q_ * Vector3d(l_lambda * beta_ + corner, plane_log(0), plane_log(1));
   }
   return log;
@@ -312,8 +308,7 @@ Affine3 AffinePowers<Affine3>::at_small(double t) const {
   // The plane: [M | c]^t = [M^t | g_t(M) c] (2D EAR).
   const Affine2 plane = plane_->at(t);
   // The lean: w^T (z^t)[lambda, M] = lambda^(t-1) (g_t(M^T / lambda) w)^T.
-  const Vector2d lean =
-      std::exp((t - 1.0) * log_lambda_) * relative_->power_with_translation(t, w_).b;
+  const Vector2d lean = std::exp((t - 1.0) * log_lambda_) * relative_->power_with_translation(t, w_).b;
   Matrix3d T = Matrix3d::Zero();
   T(0, 0) = std::exp(t * log_lambda_);
   T.block<1, 2>(0, 1) = lean.transpose();
@@ -328,8 +323,7 @@ Affine3 AffinePowers<Affine3>::at_small(double t) const {
   const double g_lambda = power_ratio(lambda_, t);
   const double corner = corner_ == Corner::over_lambda_minus_one
                             ? (lean.dot(c_) - w_.dot(plane.b)) / (lambda_ - 1.0)
-                            : g_lambda * w_.dot(lean_solve_) -
-                                  w_.dot(plane_->power_with_translation(t, lean_solve_).b);
+                            : g_lambda * w_.dot(lean_solve_) - w_.dot(plane_->power_with_translation(t, lean_solve_).b);
   result.b = Q_ * Vector3d(g_lambda * beta_ + corner, plane.b(0), plane.b(1));
   return result;
 }

@@ -128,7 +128,7 @@ class AffinePowers<Affine3> {
   bool lean_by_sylvester_ = false;  // log(): the lean row by Sylvester (N58)
 };
 
-AffinePowers(const Affine3&) -> AffinePowers<Affine3>;
+AffinePowers(const Affine3&)->AffinePowers<Affine3>;
 
 // A^t (builds AffinePowers; use the class for many t).
 Affine3 affine_power(const Affine3& A, double t);

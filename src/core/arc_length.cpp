@@ -17,13 +17,11 @@ namespace pita {
 namespace {
 
 // 8-point Gauss-Legendre nodes on [-1, 1], ascending, and their weights.
-constexpr std::array<double, 8> kNodes{-0.96028985649753623168, -0.79666647741362673959,
-                                       -0.52553240991632898582, -0.18343464249564980494,
-                                       0.18343464249564980494,  0.52553240991632898582,
+constexpr std::array<double, 8> kNodes{-0.96028985649753623168, -0.79666647741362673959, -0.52553240991632898582,
+                                       -0.18343464249564980494, 0.18343464249564980494,  0.52553240991632898582,
                                        0.79666647741362673959,  0.96028985649753623168};
-constexpr std::array<double, 8> kWeights{0.10122853629037625915, 0.22238103445337447054,
-                                         0.31370664587788728734, 0.36268378337836198297,
-                                         0.36268378337836198297, 0.31370664587788728734,
+constexpr std::array<double, 8> kWeights{0.10122853629037625915, 0.22238103445337447054, 0.31370664587788728734,
+                                         0.36268378337836198297, 0.36268378337836198297, 0.31370664587788728734,
                                          0.22238103445337447054, 0.10122853629037625915};
 
 // The inverse of the Vandermonde matrix V_jk = x_j^k of the nodes: the
@@ -69,8 +67,7 @@ double path_speed(const AnyPath& path, double tau, double from, double to, doubl
 
 // The speeds at the nodes of [a, b] and their Gauss-Legendre integral.
 template <class AnyPath>
-double sample_cell(const AnyPath& path, double a, double b, double from, double to,
-                   double (&speeds)[8]) {
+double sample_cell(const AnyPath& path, double a, double b, double from, double to, double (&speeds)[8]) {
   const double half = 0.5 * (b - a), middle = 0.5 * (a + b);
   double sum = 0.0;
   for (std::size_t j = 0; j < 8; ++j) {
@@ -140,8 +137,8 @@ void ArcLengthTable::build(const AnyPath& path) {
 }
 
 template <class AnyPath>
-void ArcLengthTable::refine(const AnyPath& path, double a, double b, const double (&speeds)[8],
-                            double length, double tolerance, int depth) {
+void ArcLengthTable::refine(const AnyPath& path, double a, double b, const double (&speeds)[8], double length,
+                            double tolerance, int depth) {
   Cell whole;
   whole.from = a;
   whole.to = b;
@@ -149,7 +146,8 @@ void ArcLengthTable::refine(const AnyPath& path, double a, double b, const doubl
   interpolate(speeds, whole.coefficients);
   const auto keep = [&] { cells_.push_back(whole); };
   const double middle = 0.5 * (a + b);
-  if (depth >= limits::kArcLengthMaxDepth || cells_.size() >= static_cast<std::size_t>(limits::kArcLengthMaxCells) || !(a < middle && middle < b)) {
+  if (depth >= limits::kArcLengthMaxDepth || cells_.size() >= static_cast<std::size_t>(limits::kArcLengthMaxCells) ||
+      !(a < middle && middle < b)) {
     keep();
     return;
   }
@@ -216,7 +214,10 @@ double ArcLengthTable::parameter_at(double fraction) const {
   for (int iteration = 0; iteration < 60; ++iteration) {
     const double error = partial(cell, tau) - goal;
     if (std::abs(error) <= 1e-15 * total_) break;
-    if (error > 0.0) hi = tau; else lo = tau;
+    if (error > 0.0)
+      hi = tau;
+    else
+      lo = tau;
     const double slope = speed_in(cell, tau);
     double next = slope > 0.0 ? tau - error / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);

@@ -66,13 +66,13 @@ class ArcLengthTable {
     double coefficients[8] = {};  // of the speed's polynomial in x in [-1, 1] over [from, to],
                                   // interpolating it at the 8 Gauss-Legendre nodes
   };
-  double partial(const Cell& cell, double tau) const;     // length from cell.from to tau
-  double speed_in(const Cell& cell, double tau) const;    // the interpolated speed
+  double partial(const Cell& cell, double tau) const;   // length from cell.from to tau
+  double speed_in(const Cell& cell, double tau) const;  // the interpolated speed
   template <class AnyPath>
   void build(const AnyPath& path);
   template <class AnyPath>
-  void refine(const AnyPath& path, double a, double b, const double (&speeds)[8], double length,
-              double tolerance, int depth);
+  void refine(const AnyPath& path, double a, double b, const double (&speeds)[8], double length, double tolerance,
+              int depth);
 
   double from_ = 0.0, to_ = 1.0, total_ = 0.0;
   double noise_ = 0.0;  // the rounding floor of the tolerance (limits::kArcLengthNoise)

@@ -36,9 +36,7 @@ struct Arrow {
 
 // The arrow from p with magnitude and winding of vector v: A(p, v) (Sec. 2.1).
 // v is taken as a zero-turn vector: winding = Arg v in (-pi, pi].
-inline Arrow arrow_from_vector(Point p, Vector v) {
-  return {p, std::abs(v), std::arg(v)};
-}
+inline Arrow arrow_from_vector(Point p, Vector v) { return {p, std::abs(v), std::arg(v)}; }
 
 // The zero-turn arrow "pq" from point p to point q (Sec. 2.1).
 inline Arrow zero_turn_arrow(Point p, Point q) { return arrow_from_vector(p, q - p); }
@@ -47,9 +45,7 @@ inline Arrow zero_turn_arrow(Point p, Point q) { return arrow_from_vector(p, q -
 inline Arrow zero_turn(const Arrow& a) { return {a.p, a.m, principal_angle(a.w)}; }
 
 // Adds k whole turns (2 pi k) to the winding: same segment, more turns.
-inline Arrow with_turns(const Arrow& a, double k) {
-  return {a.p, a.m, a.w + 2.0 * std::numbers::pi * k};
-}
+inline Arrow with_turns(const Arrow& a, double k) { return {a.p, a.m, a.w + 2.0 * std::numbers::pi * k}; }
 
 // The extended form e(A), from p - vector to q (Sec. 2.1).
 struct Segment {
@@ -59,8 +55,7 @@ struct Segment {
 inline Segment extended_form(const Arrow& a) { return {a.p - a.vector(), a.q()}; }
 
 inline bool is_finite(const Arrow& a) {
-  return std::isfinite(a.p.real()) && std::isfinite(a.p.imag()) && std::isfinite(a.m) &&
-         std::isfinite(a.w);
+  return std::isfinite(a.p.real()) && std::isfinite(a.p.imag()) && std::isfinite(a.m) && std::isfinite(a.w);
 }
 
 }  // namespace pita

@@ -12,9 +12,7 @@ namespace pita {
 inline Complex segment_coordinates(Point a, Point b, Point x) { return (x - a) / (b - a); }
 
 // z(a, b, p) = x^2 + y^2 (PITA Eq. 46) = |p - a|^2 / |b - a|^2.
-inline double segment_z(Point a, Point b, Point x) {
-  return std::norm(segment_coordinates(a, b, x));
-}
+inline double segment_z(Point a, Point b, Point x) { return std::norm(segment_coordinates(a, b, x)); }
 
 // E(A, B) (PITA Eq. 47, last term read z(d, c, b), docs/paper-notes.md N5), with
 // a = A.p, b = A.q, c = B.p, d = B.q:

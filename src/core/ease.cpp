@@ -11,21 +11,21 @@ namespace pita {
 
 namespace {
 
-
 // CSS Easing Functions Level 1, Sec. 2.2: the named cubic Bezier easings.
 constexpr std::array<NamedEase, 7> kNamedEases{{
     {"linear", Ease{EaseKind::linear}, "constant speed, y = x (the default)"},
     {"ease", Ease{EaseKind::cubic_bezier, 0.25, 0.1, 0.25, 1.0}, "CSS ease: cubic-bezier(0.25, 0.1, 0.25, 1)"},
     {"ease-in", Ease{EaseKind::cubic_bezier, 0.42, 0.0, 1.0, 1.0}, "CSS ease-in: cubic-bezier(0.42, 0, 1, 1)"},
     {"ease-out", Ease{EaseKind::cubic_bezier, 0.0, 0.0, 0.58, 1.0}, "CSS ease-out: cubic-bezier(0, 0, 0.58, 1)"},
-    {"ease-in-out", Ease{EaseKind::cubic_bezier, 0.42, 0.0, 0.58, 1.0}, "CSS ease-in-out: cubic-bezier(0.42, 0, 0.58, 1)"},
-    {"sine", Ease{EaseKind::sine}, "the chapter's sinusoidal ease-in/ease-out, (sin(pi x - pi/2) + 1)/2 (chapter Eq. 3.18)"},
+    {"ease-in-out", Ease{EaseKind::cubic_bezier, 0.42, 0.0, 0.58, 1.0},
+     "CSS ease-in-out: cubic-bezier(0.42, 0, 0.58, 1)"},
+    {"sine", Ease{EaseKind::sine},
+     "the chapter's sinusoidal ease-in/ease-out, (sin(pi x - pi/2) + 1)/2 (chapter Eq. 3.18)"},
     {"cubic", Ease{EaseKind::cubic}, "the chapter's cubic ease-in/ease-out, 3x^2 - 2x^3 (chapter Eq. 3.20)"},
 }};
 
 constexpr std::array<EaseFamily, 3> kFamilies{{
-    {"cubic-bezier", "\"cubic-bezier(x1, y1, x2, y2)\"",
-     "CSS cubic Bezier timing, x1 and x2 in [0, 1], y1 and y2 any"},
+    {"cubic-bezier", "\"cubic-bezier(x1, y1, x2, y2)\"", "CSS cubic Bezier timing, x1 and x2 in [0, 1], y1 and y2 any"},
     {"sine", "{\"sine\": {\"k1\": K1, \"k2\": K2}}",
      "sine ease-in until k1, constant speed until k2, sine ease-out (chapter Eq. 3.19), 0 <= k1 <= k2 <= 1"},
     {"parabolic", "{\"parabolic\": {\"t1\": T1, \"t2\": T2}}",
@@ -133,7 +133,10 @@ double cubic_bezier_parameter(double x1, double x2, double x) {
   for (int iteration = 0; iteration < 100; ++iteration) {
     const double error = bezier(x1, x2, s) - x;
     if (std::abs(error) <= 1e-15) return s;
-    if (error > 0.0) hi = s; else lo = s;
+    if (error > 0.0)
+      hi = s;
+    else
+      lo = s;
     const double slope = bezier_slope(x1, x2, s);
     double next = slope > 0.0 ? s - error / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket
@@ -148,15 +151,20 @@ double ease(const Ease& e, double x) {
   if (x == 0.0) return 0.0;
   if (x == 1.0) return 1.0;
   switch (e.kind) {
-    case EaseKind::linear: return x;
+    case EaseKind::linear:
+      return x;
     case EaseKind::cubic_bezier: {
       const double s = cubic_bezier_parameter(e.a, e.c, x);
       return bezier(e.b, e.d, s);
     }
-    case EaseKind::sine: return 0.5 * (std::sin(kPi * x - kPi / 2.0) + 1.0);
-    case EaseKind::sine_cap: return sine_cap(e.a, e.b, x);
-    case EaseKind::parabolic: return parabolic(e.a, e.b, x);
-    case EaseKind::cubic: return x * x * (3.0 - 2.0 * x);
+    case EaseKind::sine:
+      return 0.5 * (std::sin(kPi * x - kPi / 2.0) + 1.0);
+    case EaseKind::sine_cap:
+      return sine_cap(e.a, e.b, x);
+    case EaseKind::parabolic:
+      return parabolic(e.a, e.b, x);
+    case EaseKind::cubic:
+      return x * x * (3.0 - 2.0 * x);
   }
   return x;
 }
@@ -168,9 +176,12 @@ std::string ease_label(const Ease& e) {
   switch (e.kind) {
     case EaseKind::cubic_bezier:
       return "cubic-bezier(" + number(e.a) + ", " + number(e.b) + ", " + number(e.c) + ", " + number(e.d) + ")";
-    case EaseKind::sine_cap: return "sine(k1 " + number(e.a) + ", k2 " + number(e.b) + ")";
-    case EaseKind::parabolic: return "parabolic(t1 " + number(e.a) + ", t2 " + number(e.b) + ")";
-    default: return "linear";
+    case EaseKind::sine_cap:
+      return "sine(k1 " + number(e.a) + ", k2 " + number(e.b) + ")";
+    case EaseKind::parabolic:
+      return "parabolic(t1 " + number(e.a) + ", t2 " + number(e.b) + ")";
+    default:
+      return "linear";
   }
 }
 

@@ -55,8 +55,8 @@ std::span<const EaseFamily> ease_families();
 // The eases with their parameters checked. Each throws std::invalid_argument
 // naming the parameter that is out of range.
 Ease cubic_bezier_ease(double x1, double y1, double x2, double y2);  // x1, x2 in [0, 1]
-Ease sine_cap_ease(double k1, double k2);                           // 0 <= k1 <= k2 <= 1
-Ease parabolic_ease(double t1, double t2);                          // 0 <= t1 <= t2 <= 1
+Ease sine_cap_ease(double k1, double k2);                            // 0 <= k1 <= k2 <= 1
+Ease parabolic_ease(double t1, double t2);                           // 0 <= t1 <= t2 <= 1
 
 // ease(x) for x in [0, 1] (x is clamped to it). Exact at 0 and 1.
 double ease(const Ease& e, double x);

@@ -59,8 +59,7 @@ bool use_projectors(double gamma, double t) {
 template <typename Function>
 Matrix2d spectral(double x, const Matrix2d& M, double sigma, Function f) {
   const Matrix2d half_M = M / (2.0 * sigma);
-  return f(x + sigma) * (0.5 * Matrix2d::Identity() + half_M) +
-         f(x - sigma) * (0.5 * Matrix2d::Identity() - half_M);
+  return f(x + sigma) * (0.5 * Matrix2d::Identity() + half_M) + f(x - sigma) * (0.5 * Matrix2d::Identity() - half_M);
 }
 
 }  // namespace

@@ -4,8 +4,7 @@ namespace pita {
 
 // Fornberg, "Generation of finite difference formulas on arbitrarily spaced
 // grids", Math. Comp. 51 (1988), the recurrence of his Table 1.
-std::vector<std::vector<double>> fornberg_weights(double x0, const std::vector<double>& nodes,
-                                                  int max_order) {
+std::vector<std::vector<double>> fornberg_weights(double x0, const std::vector<double>& nodes, int max_order) {
   const std::size_t n = nodes.size();
   const std::size_t orders = static_cast<std::size_t>(max_order) + 1;
   std::vector<std::vector<double>> c(orders, std::vector<double>(n, 0.0));

@@ -17,8 +17,7 @@ namespace pita {
 
 // weights[m][j]: the weight of f(nodes[j]) in the m-th derivative at x0, for
 // m = 0 .. max_order. The nodes must be distinct.
-std::vector<std::vector<double>> fornberg_weights(double x0, const std::vector<double>& nodes,
-                                                  int max_order);
+std::vector<std::vector<double>> fornberg_weights(double x0, const std::vector<double>& nodes, int max_order);
 
 // The classical stencils on equally spaced nodes, written out: the
 // derivatives of f, a function of one real variable whose values add and
@@ -57,8 +56,9 @@ StencilValue<F> central_derivative8(const F& f, double x, double h) {
 // one-sided, fourth order.
 template <class F>
 StencilValue<F> one_sided_derivative4(const F& f, double x, double h) {
-  return StencilValue<F>((-25.0 * f(x) + 48.0 * f(x + h) - 36.0 * f(x + 2.0 * h) + 16.0 * f(x + 3.0 * h) -
-                          3.0 * f(x + 4.0 * h)) / (12.0 * h));
+  return StencilValue<F>(
+      (-25.0 * f(x) + 48.0 * f(x + h) - 36.0 * f(x + 2.0 * h) + 16.0 * f(x + 3.0 * h) - 3.0 * f(x + 4.0 * h)) /
+      (12.0 * h));
 }
 
 // f''(x) ~ (-f(x + 2h) + 16 f(x + h) - 30 f(x) + 16 f(x - h) - f(x - 2h)) / (12 h^2): fourth order.

@@ -12,7 +12,7 @@ double knot_warp(double a, double b, double c, double t) {
     return 0.5 * l.y + l.z;
   }
   const double kappa = 2.0 * beta - 1.0;
-  if (s < 0.0) return 0.5 * (1.0 - kappa) / beta * s;                      // slope u'(0)
+  if (s < 0.0) return 0.5 * (1.0 - kappa) / beta * s;                        // slope u'(0)
   if (s > 1.0) return 1.0 + 0.5 * (1.0 + kappa) / (1.0 - beta) * (s - 1.0);  // slope u'(1)
   if (s <= beta) {
     const double sigma = s / beta;

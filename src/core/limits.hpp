@@ -78,7 +78,6 @@ inline constexpr double kPamBranchCut = 1e-8;
 // |L_B|_F^2 (the determinant of a rotation-scaling is |L|_F^2 / 2).
 inline constexpr double kPamSingularMiddle = 1e-12;
 
-
 // ------------------------------------------------------------------ EAR
 // Steady Affine Morphs (affine_power.hpp): the case selection of the SAM
 // paper's appendix A.5 (Algorithm 1), with tolerances where the paper writes

@@ -14,8 +14,8 @@ Affine2 pose_log(const Affine2& pose, const char* which) {
   try {
     return log(pose);
   } catch (const NoRealLogarithm& error) {
-    throw NoRealLogarithm(std::string("no Alexa blend of these poses: the ") + which +
-                              " pose has no real logarithm (" + error.what() +
+    throw NoRealLogarithm(std::string("no Alexa blend of these poses: the ") + which + " pose has no real logarithm (" +
+                              error.what() +
                               "); Alexa blends the logs of the poses themselves, so every pose "
                               "needs one, even where a SAM between them exists",
                           error.root_case());

@@ -18,7 +18,6 @@ double mean_of_one_and_minus_one(MeanKind kind, double log_lambda, double t);
 // Written relative to A.p, p(t) = A.p + (s(t) - 1)/(e^L - 1) (B.p - A.p) with
 // s(t) = e^{it theta} path_mean(1, lambda, t), so it stays finite as the twirl
 // tends to a translation.
-Arrow mean_morph(const Arrow& A, const Arrow& B, double t, MeanKind path_mean,
-                 MeanKind magnitude_mean);
+Arrow mean_morph(const Arrow& A, const Arrow& B, double t, MeanKind path_mean, MeanKind magnitude_mean);
 
 }  // namespace pita

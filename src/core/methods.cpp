@@ -112,8 +112,7 @@ const MethodEntry& entry_of(PoseMethod method) {
   return registry().front();
 }
 
-std::vector<std::string> suggest_methods(std::string_view name, MethodFilter filter,
-                                         std::size_t most) {
+std::vector<std::string> suggest_methods(std::string_view name, MethodFilter filter, std::size_t most) {
   const std::string key = lower(name);
   std::vector<std::pair<std::size_t, std::string>> scored;
   for (const MethodEntry& entry : registry()) {
@@ -122,8 +121,7 @@ std::vector<std::string> suggest_methods(std::string_view name, MethodFilter fil
     for (const std::string& n : names_of(entry)) best = std::min(best, edit_distance(key, n));
     if (best <= 2) scored.emplace_back(best, method_label(entry));
   }
-  std::stable_sort(scored.begin(), scored.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<std::string> out;
   for (auto& s : scored) {
     if (out.size() == most) break;

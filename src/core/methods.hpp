@@ -27,9 +27,9 @@ struct MethodEntry {
   std::string_view id;        // "P6", "SAM"
   std::string_view mnemonic;  // "La-LP"; the id again where there is none
   std::string_view title;
-  int min_count = 0;          // keyframes (arrows) or poses
+  int min_count = 0;  // keyframes (arrows) or poses
   int max_count = 0;
-  bool in_basket = true;      // false for Fig. 7's extra independent combinations
+  bool in_basket = true;  // false for Fig. 7's extra independent combinations
 };
 
 // Whether the entry is a method of kind M (Method: arrows; PoseMethod: poses).

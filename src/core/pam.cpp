@@ -116,8 +116,7 @@ AccelerationScalars acceleration_scalars(Complex kappa) {
 //    2 B(0) - B(-s2) = B(s2) - phi^(5)(m) s^4 / 60 + ...
 // The constructor has already refused eigenvalues on or beyond -1.
 template <std::size_t n, class Phi>
-std::array<Eigen::Matrix2d, n> matrix_functions(double m, double s2, const Eigen::Matrix2d& N,
-                                                Phi phi) {
+std::array<Eigen::Matrix2d, n> matrix_functions(double m, double s2, const Eigen::Matrix2d& N, Phi phi) {
   std::array<double, n> A{}, B{};
   const double h = limits::kPamComplexStep;
   if (s2 <= 0.0) {
@@ -155,8 +154,8 @@ std::array<Eigen::Matrix2d, n> matrix_functions(double m, double s2, const Eigen
 
 }  // namespace
 
-PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, double b,
-                                               const Affine2& B, double c, const Affine2& C)
+PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, double b, const Affine2& B, double c,
+                                               const Affine2& C)
     : a_(a), b_(b), c_(c), middle_(B) {
   const double det_B = B.L.determinant();
   if (!(std::abs(det_B) > limits::kPamSingularMiddle * B.L.squaredNorm())) {
@@ -174,8 +173,8 @@ PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, doubl
   const double half_difference = 0.5 * (K(0, 0) - K(1, 1));
   s2_ = half_difference * half_difference + K(0, 1) * K(1, 0);
   N_ = K - m_ * Eigen::Matrix2d::Identity();
-  if (!std::isfinite(m_) || !std::isfinite(s2_) || !w_.allFinite() ||
-      !half_L_change_.allFinite() || !half_b_change_.allFinite()) {
+  if (!std::isfinite(m_) || !std::isfinite(s2_) || !w_.allFinite() || !half_L_change_.allFinite() ||
+      !half_b_change_.allFinite()) {
     refuse("cannot be built: non-finite keyframes");
   }
   if (s2_ >= 0.0) {
@@ -184,8 +183,7 @@ PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, doubl
       refuse("does not exist: K = L_B^-1 (L_A + L_C)/2 has the eigenvalue -1 (cosh k = -1)");
     }
     if (lowest < -1.0) {
-      refuse("does not exist: K = L_B^-1 (L_A + L_C)/2 has the real eigenvalue " +
-             std::to_string(lowest) +
+      refuse("does not exist: K = L_B^-1 (L_A + L_C)/2 has the real eigenvalue " + std::to_string(lowest) +
              " < -1, on the branch cut of acosh, where no real (or no unique) M = acosh(K)^2 "
              "exists");
     }
@@ -195,32 +193,31 @@ PersistentAffineMotion::PersistentAffineMotion(double a, const Affine2& A, doubl
       refuse("does not exist: K = L_B^-1 (L_A + L_C)/2 has the eigenvalue -1 (cosh k = -1)");
     }
     if (m_ < -1.0 && t < limits::kPamBranchCut * std::abs(m_)) {
-      refuse("is not defined: the eigenvalues of K = L_B^-1 (L_A + L_C)/2 lie on the branch "
-             "cut of acosh (real and < -1 to within rounding)");
+      refuse(
+          "is not defined: the eigenvalues of K = L_B^-1 (L_A + L_C)/2 lie on the branch "
+          "cut of acosh (real and < -1 to within rounding)");
     }
   }
 }
 
 Affine2 PersistentAffineMotion::at(double t) const {
   const double tau = 2.0 * knot_warp(a_, b_, c_, t) - 1.0;
-  const auto f = matrix_functions<4>(m_, s2_, N_,
-                                     [tau](Complex kappa) { return motion_scalars(kappa, tau); });
+  const auto f = matrix_functions<4>(m_, s2_, N_, [tau](Complex kappa) { return motion_scalars(kappa, tau); });
   Affine2 U;
   // Lin(tau) = L_B C(tau) + (L_C - L_A)/2 S(tau): Lin'' = Lin M (PITA Eq. 39, F.1).
   U.L = middle_.L * f[kC] + half_L_change_ * f[kS];
   // b(tau) = b_B + (b_C - b_A)/2 tau + 1/2 L_B Q w + 1/4 (L_C - L_A) R w:
   // b'' = Lin g (PITA Eq. 39), b(-1) = b_A, b(0) = b_B, b(1) = b_C since
   // Q(+-1) = I, R(+-1) = 0 and Q(0) = R(0) = 0.
-  U.b = middle_.b + half_b_change_ * tau + 0.5 * (middle_.L * (f[kQ] * w_)) +
-        0.5 * (half_L_change_ * (f[kR] * w_));
+  U.b = middle_.b + half_b_change_ * tau + 0.5 * (middle_.L * (f[kQ] * w_)) + 0.5 * (half_L_change_ * (f[kR] * w_));
   return U;
 }
 
 Eigen::Matrix3d PersistentAffineMotion::local_acceleration() const {
   const auto f = matrix_functions<2>(m_, s2_, N_, acceleration_scalars);
   Eigen::Matrix3d E = Eigen::Matrix3d::Zero();
-  E.topLeftCorner<2, 2>() = f[0];                   // M = acosh(K)^2
-  E.topRightCorner<2, 1>() = 0.5 * (f[1] * w_);     // g = M (K - I)^-1 w / 2
+  E.topLeftCorner<2, 2>() = f[0];                // M = acosh(K)^2
+  E.topRightCorner<2, 1>() = 0.5 * (f[1] * w_);  // g = M (K - I)^-1 w / 2
   return E;
 }
 

@@ -50,8 +50,7 @@ class PersistentAffineMotion {
  public:
   // The affinities A, B, C at the distinct knots a, b, c (a < b < c for the
   // knot warp to be monotone). Throws MotionDomainError (see above).
-  PersistentAffineMotion(double a, const Affine2& A, double b, const Affine2& B, double c,
-                         const Affine2& C);
+  PersistentAffineMotion(double a, const Affine2& A, double b, const Affine2& B, double c, const Affine2& C);
 
   // U(t); values outside [a, c] extrapolate (Sec. 7.5).
   Affine2 at(double t) const;

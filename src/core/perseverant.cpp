@@ -39,10 +39,10 @@ SeriesValues series(Complex K, double tau) {
   // sinh(k tau)/k = sum K^n tau^(2n+1)/(2n+1)!, sinh(k)/k = sum K^n/(2n+1)!
   // (cosh(k tau)-1)/K = sum_{n>=1} K^(n-1) tau^(2n)/(2n)!, (cosh k - 1)/K likewise.
   Complex sinh_tau{0.0}, sinh_one{0.0}, cosh_tau{0.0}, cosh_one{0.0}, rem{0.0};
-  Complex Kn{1.0};  // K^n
-  double tau_pow = tau;  // tau^(2n+1)
-  double fact_odd = 1.0;  // (2n+1)!
-  double fact_even = 2.0;  // (2n+2)!
+  Complex Kn{1.0};              // K^n
+  double tau_pow = tau;         // tau^(2n+1)
+  double fact_odd = 1.0;        // (2n+1)!
+  double fact_even = 2.0;       // (2n+2)!
   double tau_even = tau * tau;  // tau^(2n+2)
   for (int n = 0; n < 30; ++n) {
     sinh_tau += Kn * (tau_pow / fact_odd);

@@ -45,8 +45,7 @@ const PointCurveInfo& info(PointCurve curve) {
   throw std::logic_error("unregistered point curve");
 }
 
-PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> points,
-                                   const ArrowTrackFactory& track)
+PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> points, const ArrowTrackFactory& track)
     : curve_(curve), points_(std::move(points)) {
   const std::string name(info(curve).name);
   const std::size_t n = points_.size();
@@ -55,8 +54,7 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
   }
   if (curve != PointCurve::pita && n > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
     throw std::invalid_argument(name + " takes at most " + std::to_string(limits::kMaxNevillePoints) +
-                                " points (Neville's recursion costs n^2 per time), got " +
-                                std::to_string(n));
+                                " points (Neville's recursion costs n^2 per time), got " + std::to_string(n));
   }
   for (std::size_t i = 0; i < n; ++i) {
     const TimedPoint& x = points_[i];
@@ -65,8 +63,8 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
                                   " must have a finite knot and finite coordinates");
     }
     if (i > 0 && !(points_[i - 1].t < x.t)) {
-      throw std::invalid_argument(name + ": knots must be strictly increasing (point " +
-                                  std::to_string(i) + " at t = " + std::to_string(x.t) +
+      throw std::invalid_argument(name + ": knots must be strictly increasing (point " + std::to_string(i) +
+                                  " at t = " + std::to_string(x.t) +
                                   " does not follow t = " + std::to_string(points_[i - 1].t) + ")");
     }
   }
@@ -75,8 +73,7 @@ PointCurveMotion::PointCurveMotion(PointCurve curve, std::vector<TimedPoint> poi
     for (std::size_t i = 0; i + 1 < n; ++i) {
       if (!(std::abs(points_[i + 1].p - points_[i].p) > 0.0)) {
         throw std::invalid_argument(
-            name + ": point " + std::to_string(i) + " and point " + std::to_string(i + 1) +
-            " coincide" +
+            name + ": point " + std::to_string(i) + " and point " + std::to_string(i + 1) + " coincide" +
             (curve == PointCurve::pita ? " (the edge arrow between them would have no direction)"
                                        : " (no centripetal parameter step between them)"));
       }

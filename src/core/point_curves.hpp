@@ -118,10 +118,10 @@ class PointCurveMotion {
 
   PointCurve curve_;
   std::vector<TimedPoint> points_;
-  std::vector<double> parameters_;                  // u_i (neville-*)
-  std::vector<LogSpiral> spirals_;                  // LS(p_j, p_{j+1}, p_{j+2}) (log-spiral-blend)
-  std::shared_ptr<const Motion> first_track_;       // X (pita)
-  std::shared_ptr<const Motion> second_track_;      // Y (pita)
+  std::vector<double> parameters_;              // u_i (neville-*)
+  std::vector<LogSpiral> spirals_;              // LS(p_j, p_{j+1}, p_{j+2}) (log-spiral-blend)
+  std::shared_ptr<const Motion> first_track_;   // X (pita)
+  std::shared_ptr<const Motion> second_track_;  // Y (pita)
 };
 
 }  // namespace pita

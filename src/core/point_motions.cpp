@@ -9,8 +9,8 @@ LogSpiral::LogSpiral(Point pa, Point pb, Point pc) : pa_(pa), pb_(pb), pc_(pc) {
   const Vector ab = pb - pa;
   const Vector bc = pc - pb;
   const double scale = std::abs(ab) + std::abs(bc);
-  degenerate_ = std::abs(ab) <= limits::kLogSpiralDegenerate * scale ||
-                std::abs(bc) <= limits::kLogSpiralDegenerate * scale;
+  degenerate_ =
+      std::abs(ab) <= limits::kLogSpiralDegenerate * scale || std::abs(bc) <= limits::kLogSpiralDegenerate * scale;
   // The twirl between zero-turn arrows ab and bc: anchor a, displacement b - a,
   // log = ln(|bc|/|ab|) + i Arg(bc/ab) (principal).
   if (!degenerate_) spiral_ = Twirl(pa, ab, std::log(bc / ab));

@@ -11,9 +11,7 @@ namespace pita {
 // Pa-: the parabolic point motion, the weighted arithmetic mean of the three
 // points with the Lagrange weights (PITA Eq. 11). Constant acceleration in the
 // global frame (global perseverance).
-inline Point parabolic_point(const LagrangeWeights& l, Point pa, Point pb, Point pc) {
-  return lagrange(l, pa, pb, pc);
-}
+inline Point parabolic_point(const LagrangeWeights& l, Point pa, Point pb, Point pc) { return lagrange(l, pa, pb, pc); }
 
 // LS-: the log-spiral point motion (PITA Eq. 26 as docs/paper-notes.md N2 reads it):
 // p(t) = T_{ab->bc}^{u(t)} . a, with T_{ab->bc} the twirl between the zero-turn

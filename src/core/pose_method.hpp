@@ -27,7 +27,7 @@ struct PoseMethodInfo {
   std::string_view title;  // "Steady Affine Morph"
   int min_poses;
   int max_poses;
-  bool in_space;           // also for 3D scenes (the SAM family: SamFamilyMotion<Affine3>)
+  bool in_space;  // also for 3D scenes (the SAM family: SamFamilyMotion<Affine3>)
 };
 
 std::span<const PoseMethodInfo> all_pose_methods();

@@ -18,12 +18,12 @@
 #include "core/affine2.hpp"
 #include "core/affine_power.hpp"
 #include "core/log_matrix_blend.hpp"
+#include "core/pose_method.hpp"
 #include "core/rarap_morph.hpp"
+#include "core/sam_family_motion.hpp"
 #include "core/sam_splines.hpp"
 #include "core/spiral_residue_morph.hpp"
 #include "core/triangle_spiral_blend.hpp"
-#include "core/pose_method.hpp"
-#include "core/sam_family_motion.hpp"
 
 namespace pita {
 
@@ -62,8 +62,7 @@ using TimedPose = TimedPoseOf<Affine2>;
 // through every control pose.
 class PoseMotion {
  public:
-  PoseMotion(PoseMethod method, std::vector<TimedPose> poses,
-             int subdivisions = kDefaultSubdivisions,
+  PoseMotion(PoseMethod method, std::vector<TimedPose> poses, int subdivisions = kDefaultSubdivisions,
              const std::array<Point, 3>& reference = default_reference_triangle());
 
   Affine2 at(double t) const;
@@ -71,10 +70,9 @@ class PoseMotion {
   // The derivative dA/dt as an affinity-shaped pair (dL/dt, db/dt), so that
   // the velocity of the point A(t) p0 is apply(velocity(t), p0). Exact for
   // SAM and polySAM ((log A_span) A(t) / span duration, Sec. 2.3 (6)), for
-  // linear, rARAP, ASAP, TSB and Alexa (the Frechet derivative of exp); for the Bezier SAM and the bi-arc a fourth-order central
-  // difference (one-sided second order at the ends). At an interior knot,
-  // where a polySAM's velocity jumps, the outgoing one; at the last, the
-  // incoming one.
+  // linear, rARAP, ASAP, TSB and Alexa (the Frechet derivative of exp); for the Bezier SAM and the bi-arc a
+  // fourth-order central difference (one-sided second order at the ends). At an interior knot, where a polySAM's
+  // velocity jumps, the outgoing one; at the last, the incoming one.
   Affine2 velocity(double t) const;
 
   PoseMethod method() const { return method_; }

@@ -3,8 +3,10 @@
 namespace pita {
 
 RarapMorph::RarapMorph(const Affine2& from, const Affine2& to, const Eigen::Vector2d& centre)
-    : from_(from), decomposition_(arap_decomposition(compose(to, inverse(from)).L)),
-      g0_(apply(from, centre)), g1_(apply(to, centre)) {}
+    : from_(from),
+      decomposition_(arap_decomposition(compose(to, inverse(from)).L)),
+      g0_(apply(from, centre)),
+      g1_(apply(to, centre)) {}
 
 Eigen::Matrix2d RarapMorph::linear(double u) const {
   const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();

@@ -67,16 +67,15 @@ SamFamilyMotion<Pose>::SamFamilyMotion(PoseMethod method, std::vector<Timed> pos
       } catch (const NoRealLogarithm& error) {
         throw NoSamBetweenPoses(error, 0,
                                 "between poses made by subdivision step " + std::to_string(step + 1) +
-                                    " of the four-point scheme (Sec. 7.3); at most " +
-                                    std::to_string(step) + " \"subdivisions\" work here");
+                                    " of the four-point scheme (Sec. 7.3); at most " + std::to_string(step) +
+                                    " \"subdivisions\" work here");
       }
     }
     for (std::size_t i = 0; i + 1 < span_poses_.size(); ++i) {
       if (!(span_poses_[i].t < span_poses_[i + 1].t)) {
-        throw std::invalid_argument(
-            "four-point-SAM: two knots are too close for " + std::to_string(subdivisions) +
-            " subdivisions (the middle time of a span rounds onto a knot near t = " +
-            std::to_string(span_poses_[i].t) + ")");
+        throw std::invalid_argument("four-point-SAM: two knots are too close for " + std::to_string(subdivisions) +
+                                    " subdivisions (the middle time of a span rounds onto a knot near t = " +
+                                    std::to_string(span_poses_[i].t) + ")");
       }
     }
   }
@@ -88,8 +87,8 @@ SamFamilyMotion<Pose>::SamFamilyMotion(PoseMethod method, std::vector<Timed> pos
       } catch (const NoRealLogarithm& error) {
         if (method == PoseMethod::four_point) {
           throw NoSamBetweenPoses(error, 0,
-                                  "between subdivided poses at t = " + std::to_string(span_poses_[i].t) +
-                                      " and " + std::to_string(span_poses_[i + 1].t));
+                                  "between subdivided poses at t = " + std::to_string(span_poses_[i].t) + " and " +
+                                      std::to_string(span_poses_[i + 1].t));
         }
         throw NoSamBetweenPoses(error, i);
       }
@@ -154,7 +153,8 @@ Pose SamFamilyMotion<Pose>::at(double t) const {
     case PoseMethod::four_point:
       return in_span([&](std::size_t i, double u) { return spans_[i].at(u); });
     case PoseMethod::linear:
-      return in_span([&](std::size_t i, double u) { return linear_mix(span_poses_[i].pose, span_poses_[i + 1].pose, u); });
+      return in_span(
+          [&](std::size_t i, double u) { return linear_mix(span_poses_[i].pose, span_poses_[i + 1].pose, u); });
     case PoseMethod::rarap:  // the plane's morphs of Fig. 2: PoseMotion; the constructor refuses them
     case PoseMethod::asap:
     case PoseMethod::tsb:

@@ -47,7 +47,7 @@ class SamFamilyMotion {
 
   PoseMethod method_;
   std::vector<Timed> poses_;
-  std::vector<Timed> span_poses_;         // the polySAM's poses (SAM, polySAM, linear, four-point)
+  std::vector<Timed> span_poses_;               // the polySAM's poses (SAM, polySAM, linear, four-point)
   std::vector<SteadyAffineMorph<Pose>> spans_;  // between span_poses_
   std::optional<SamBiarcOf<Pose>> biarc_;
 };

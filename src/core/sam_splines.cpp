@@ -71,15 +71,15 @@ std::vector<Pose> subdivide_four_point(const std::vector<Pose>& poses) {
   return result;
 }
 
-#define PITA_INSTANTIATE_SAM_SPLINES(Pose)                                                 \
-  template Pose sam(const Pose&, double, const Pose&);                                     \
-  template Pose sam_moved(const Pose&, const Pose&, double, const Pose&);                  \
-  template Pose bezier_sam(const Pose&, const Pose&, const Pose&, double);                 \
-  template Pose bezier_sam(const Pose&, const Pose&, const Pose&, const Pose&, double);    \
-  template Pose left_control(const Pose&, const Pose&, const Pose&);                       \
+#define PITA_INSTANTIATE_SAM_SPLINES(Pose)                                                     \
+  template Pose sam(const Pose&, double, const Pose&);                                         \
+  template Pose sam_moved(const Pose&, const Pose&, double, const Pose&);                      \
+  template Pose bezier_sam(const Pose&, const Pose&, const Pose&, double);                     \
+  template Pose bezier_sam(const Pose&, const Pose&, const Pose&, const Pose&, double);        \
+  template Pose left_control(const Pose&, const Pose&, const Pose&);                           \
   template Pose sam_patch(const Pose&, const Pose&, const Pose&, const Pose&, double, double); \
-  template Pose regular_patch_corner(const Pose&, const Pose&, const Pose&);               \
-  template class SamBiarcOf<Pose>;                                                         \
+  template Pose regular_patch_corner(const Pose&, const Pose&, const Pose&);                   \
+  template class SamBiarcOf<Pose>;                                                             \
   template std::vector<Pose> subdivide_four_point(const std::vector<Pose>&);
 
 PITA_INSTANTIATE_SAM_SPLINES(Affine2)

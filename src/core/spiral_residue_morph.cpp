@@ -18,8 +18,7 @@ Eigen::Vector2d vector_of(Point p) { return {p.real(), p.imag()}; }
 
 }  // namespace
 
-SpiralResidueMorph::SpiralResidueMorph(const Affine2& from, const Affine2& to,
-                                       const Eigen::Vector2d& centre)
+SpiralResidueMorph::SpiralResidueMorph(const Affine2& from, const Affine2& to, const Eigen::Vector2d& centre)
     : from_(from), g0_(apply(from, centre)) {
   const Eigen::Matrix2d L = compose(to, inverse(from)).L;
   const ArapDecomposition d = arap_decomposition(L);
@@ -40,8 +39,8 @@ Affine2 SpiralResidueMorph::at(double u) const {
 Affine2 SpiralResidueMorph::velocity(double u) const {
   const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
   const Complex e = std::exp(u * spiral_.log());
-  const Eigen::Matrix2d rate = matrix_of(spiral_.log() * e) * ((1.0 - u) * I + u * residue_) +
-                               matrix_of(e) * (residue_ - I);
+  const Eigen::Matrix2d rate =
+      matrix_of(spiral_.log() * e) * ((1.0 - u) * I + u * residue_) + matrix_of(e) * (residue_ - I);
   const Eigen::Vector2d centre_rate = vector_of(power_velocity(spiral_, u, point_of(g0_)));
   return {rate * from_.L, rate * (from_.b - g0_) + centre_rate};
 }

@@ -24,11 +24,9 @@ namespace pita {
 // dw/du by central differences of the exact (or fourth-order) velocity.
 // Poses of the plane (points of R^2) and of space (PoseMotion3, points of
 // R^3) alike: one template (steadiness.cpp).
-double average_relative_acceleration(const PoseMotion& motion,
-                                     std::span<const Eigen::Vector2d> points,
+double average_relative_acceleration(const PoseMotion& motion, std::span<const Eigen::Vector2d> points,
                                      int time_samples = 64);
-double average_relative_acceleration(const PoseMotion3& motion,
-                                     std::span<const Eigen::Vector3d> points,
+double average_relative_acceleration(const PoseMotion3& motion, std::span<const Eigen::Vector3d> points,
                                      int time_samples = 64);
 
 // The points ARA averages over (Sec. 2.4: "a regular grid of the shape's

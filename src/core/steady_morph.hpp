@@ -31,8 +31,7 @@ inline Arrow steady_average(const Arrow& A, const Arrow& B) {
   const double half_turn = 0.5 * (B.w - A.w);
   const Complex h = std::polar(root, half_turn);  // e^{L/2}
   const Complex den = (h - 1.0) * (h + 1.0);      // e^L - 1, for the fallback test
-  const bool translation =
-      std::norm(den) < limits::kTwirlTranslation * limits::kTwirlTranslation;
+  const bool translation = std::norm(den) < limits::kTwirlTranslation * limits::kTwirlTranslation;
   const Complex progress = translation ? Complex{0.5} : 1.0 / (h + 1.0);
   return {A.p + progress * (B.p - A.p), A.m * root, A.w + half_turn};
 }

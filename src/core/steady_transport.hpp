@@ -13,8 +13,7 @@ inline Arrow steady_transport(const Arrow& C, const Arrow& A, const Arrow& B, do
 }
 
 // The timed STA T(C, a, A, b, B, t) = T(C, A, B, (t - a)/(b - a)) (PITA Eq. 25).
-inline Arrow steady_transport(const Arrow& C, double a, const Arrow& A, double b, const Arrow& B,
-                              double t) {
+inline Arrow steady_transport(const Arrow& C, double a, const Arrow& A, double b, const Arrow& B, double t) {
   return steady_transport(C, A, B, (t - a) / (b - a));
 }
 

@@ -6,8 +6,7 @@
 
 namespace pita {
 
-TimeWarp::TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots,
-                   const ArcLengthTable::Path* path)
+TimeWarp::TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots, const ArcLengthTable::Path* path)
     : ease_(ease) {
   build(per, std::move(knots), path);
 }
@@ -32,8 +31,8 @@ void TimeWarp::build(WarpSpan per, std::vector<double> knots, const AnyPath* pat
         tables_.push_back(std::make_shared<const ArcLengthTable>(*path, knots_[i], knots_[i + 1]));
       } catch (const std::invalid_argument& error) {
         if (knots_.size() == 2) throw;
-        throw std::invalid_argument(std::string(error.what()) + " between the knots " +
-                                    std::to_string(knots_[i]) + " and " + std::to_string(knots_[i + 1]));
+        throw std::invalid_argument(std::string(error.what()) + " between the knots " + std::to_string(knots_[i]) +
+                                    " and " + std::to_string(knots_[i + 1]));
       }
     }
   }
@@ -46,8 +45,8 @@ const ArcLengthTable* TimeWarp::table(std::size_t span) const {
 double TimeWarp::warped(double t) const {
   if (!(t > knots_.front() && t < knots_.back())) return t;
   // The span of t: the last knot at or before it.
-  const std::size_t i = static_cast<std::size_t>(
-      std::upper_bound(knots_.begin(), knots_.end(), t) - knots_.begin() - 1);
+  const std::size_t i =
+      static_cast<std::size_t>(std::upper_bound(knots_.begin(), knots_.end(), t) - knots_.begin() - 1);
   const double from = knots_[i], to = knots_[i + 1];
   if (t == from) return t;
   const double y = ease(ease_, (t - from) / (to - from));

@@ -33,8 +33,7 @@ class TimeWarp {
   // `knots` strictly increasing (at least 2). `path`, when given, is the
   // tracked point's path for arc length; its tables are built here. Throws
   // std::invalid_argument when a span's path has zero length.
-  TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots,
-           const ArcLengthTable::Path* path = nullptr);
+  TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots, const ArcLengthTable::Path* path = nullptr);
   // The same with the tracked point's path in space (3D pose scenes).
   TimeWarp(const Ease& ease, WarpSpan per, std::vector<double> knots, const ArcLengthTable::Path3* path);
 

@@ -20,8 +20,7 @@ Affine2 frame_of(const std::array<Point, 3>& p) {
 
 }  // namespace
 
-TriangleSpiralBlend::TriangleSpiralBlend(const Affine2& from, const Affine2& to,
-                                         const std::array<Point, 3>& reference)
+TriangleSpiralBlend::TriangleSpiralBlend(const Affine2& from, const Affine2& to, const std::array<Point, 3>& reference)
     : reference_inverse_(inverse(frame_of(reference))) {
   // Between poses of opposite orientations the blended triangle would flatten
   // on the way (its signed area changes sign continuously).
@@ -60,9 +59,7 @@ Affine2 TriangleSpiralBlend::through(const std::array<Point, 3>& points) const {
   return compose(frame_of(points), reference_inverse_);
 }
 
-Affine2 TriangleSpiralBlend::at(double u) const {
-  return through({vertex(0, u), vertex(1, u), vertex(2, u)});
-}
+Affine2 TriangleSpiralBlend::at(double u) const { return through({vertex(0, u), vertex(1, u), vertex(2, u)}); }
 
 Affine2 TriangleSpiralBlend::velocity(double u) const {
   return through({vertex_velocity(0, u), vertex_velocity(1, u), vertex_velocity(2, u)});

@@ -54,7 +54,7 @@ class TriangleSpiralBlend {
 
   std::array<Point, 3> start_{};  // v_j = B(r_j)
   std::array<Twirl, 3> spirals_{};
-  Affine2 reference_inverse_;     // [r1 - r0, r2 - r0 | r0]^-1
+  Affine2 reference_inverse_;  // [r1 - r0, r2 - r0 | r0]^-1
 };
 
 }  // namespace pita

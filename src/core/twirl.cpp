@@ -4,8 +4,7 @@
 
 namespace pita {
 
-Twirl::Twirl(Point anchor, Vector displacement, Complex log)
-    : anchor_(anchor), displacement_(displacement), log_(log) {
+Twirl::Twirl(Point anchor, Vector displacement, Complex log) : anchor_(anchor), displacement_(displacement), log_(log) {
   const Complex den = expm1(log);
   translation_ = std::norm(den) < limits::kTwirlTranslation * limits::kTwirlTranslation;
   // a + e^L (f - a) + u = f  =>  a - f = u / (e^L - 1).

@@ -30,9 +30,9 @@ class Twirl {
   // log `log` = ln m + i w.
   Twirl(Point anchor, Vector displacement, Complex log);
 
-  Point anchor() const { return anchor_; }              // a
-  Vector displacement() const { return displacement_; }  // u = T.a - a
-  Complex log() const { return log_; }                  // L = ln m + i w
+  Point anchor() const { return anchor_; }                // a
+  Vector displacement() const { return displacement_; }   // u = T.a - a
+  Complex log() const { return log_; }                    // L = ln m + i w
   double ratio() const { return std::exp(log_.real()); }  // m (PITA Eq. 17)
   double winding() const { return log_.imag(); }          // w (PITA Eq. 18)
   // True when |e^L - 1| < kTwirlTranslation: no finite fixed point.

@@ -17,8 +17,7 @@ struct PolarVector {
 
 // -Ca: Lagrange interpolation (PITA Eq. 9) of the Cartesian components of the
 // zero-turn vectors. Not winding-aware.
-inline Vector cartesian_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B,
-                               const Arrow& C) {
+inline Vector cartesian_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B, const Arrow& C) {
   return lagrange(l, A.vector(), B.vector(), C.vector());
 }
 
@@ -26,16 +25,13 @@ inline Vector cartesian_vector(const LagrangeWeights& l, const Arrow& A, const A
 // is the quadratic through the three magnitudes; for very unequal magnitudes
 // it can pass through zero (the arrow then points backwards: we report m as
 // computed, so q = p + m e^{iw} always holds).
-inline PolarVector polar_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B,
-                                const Arrow& C) {
+inline PolarVector polar_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B, const Arrow& C) {
   return {lagrange(l, A.m, B.m, C.m), lagrange(l, A.w, B.w, C.w)};
 }
 
 // -LP: Lagrange interpolation of the log-polar coordinates (ln m, w).
-inline PolarVector log_polar_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B,
-                                    const Arrow& C) {
-  return {std::exp(lagrange(l, std::log(A.m), std::log(B.m), std::log(C.m))),
-          lagrange(l, A.w, B.w, C.w)};
+inline PolarVector log_polar_vector(const LagrangeWeights& l, const Arrow& A, const Arrow& B, const Arrow& C) {
+  return {std::exp(lagrange(l, std::log(A.m), std::log(B.m), std::log(C.m))), lagrange(l, A.w, B.w, C.w)};
 }
 
 }  // namespace pita

@@ -23,8 +23,8 @@
 namespace pita {
 
 struct PoolOptions {
-  int threads = 1;          // worker threads (at least one; never more than the tasks)
-  std::int64_t window = 0;  // results produced ahead of the consumer, at most; 0: no bound
+  int threads = 1;                      // worker threads (at least one; never more than the tasks)
+  std::int64_t window = 0;              // results produced ahead of the consumer, at most; 0: no bound
   std::chrono::milliseconds tick{100};  // `tick` runs at least this often while the caller waits
 };
 

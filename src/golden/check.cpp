@@ -23,24 +23,28 @@ namespace {
 
 const std::string& output(const Outputs& outputs, FileKind kind) {
   switch (kind) {
-    case FileKind::data: return outputs.data;
-    case FileKind::svg: return outputs.svg;
-    case FileKind::png: return outputs.png;
+    case FileKind::data:
+      return outputs.data;
+    case FileKind::svg:
+      return outputs.svg;
+    case FileKind::png:
+      return outputs.png;
   }
   return outputs.data;
 }
 
-Json parse_data(const std::string& text, const fs::path& path) {
-  return read_figure_data(text, path.string());
-}
+Json parse_data(const std::string& text, const fs::path& path) { return read_figure_data(text, path.string()); }
 
 }  // namespace
 
 std::string_view suffix(FileKind kind) {
   switch (kind) {
-    case FileKind::data: return ".data.json";
-    case FileKind::svg: return ".svg";
-    case FileKind::png: return ".png";
+    case FileKind::data:
+      return ".data.json";
+    case FileKind::svg:
+      return ".svg";
+    case FileKind::png:
+      return ".png";
   }
   return "";
 }
@@ -67,7 +71,7 @@ Outputs render_outputs(const fs::path& scene_path) {
   const motion::Stage stage(scene);
   const render::Figure figure = render::build_figure(stage);
   Outputs out;
-  out.claims = analysis::check_claims(stage);  // measured on the motions drawn
+  out.claims = analysis::check_claims(stage);   // measured on the motions drawn
   out.lint = lint::lint_figure(scene, figure);  // on the figure drawn
   out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
   out.svg = render::render_figure(scene, figure, render::Format::svg);
@@ -115,8 +119,7 @@ FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const st
   switch (kind) {
     case FileKind::data: {
       const Json expected = parse_data(check.expected, golden);  // the golden's errors first
-      const NumberComparison c =
-          compare_numbers(expected, parse_data(actual, "(fresh rendering)"), tolerances.numbers);
+      const NumberComparison c = compare_numbers(expected, parse_data(actual, "(fresh rendering)"), tolerances.numbers);
       check.verdict = c.matches ? Verdict::match : Verdict::differs;
       check.detail = c.matches ? fmt::format("within tolerance (worst {:.2g} of the extent)", c.relative)
                                : describe(c, tolerances.numbers);
@@ -125,8 +128,7 @@ FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const st
     case FileKind::svg: {
       const SvgComparison c = compare_svg(check.expected, actual, tolerances.svg);
       check.verdict = c.matches ? Verdict::match : Verdict::differs;
-      check.detail = c.matches ? fmt::format("geometry within {:g} px", tolerances.svg)
-                               : describe(c, tolerances.svg);
+      check.detail = c.matches ? fmt::format("geometry within {:g} px", tolerances.svg) : describe(c, tolerances.svg);
       break;
     }
     case FileKind::png: {
@@ -139,13 +141,14 @@ FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const st
       check.verdict = c.matches ? Verdict::match : Verdict::differs;
       check.diff_png = c.diff_png;
       if (!c.same_size) {
-        check.detail = fmt::format("the image is {}x{} instead of {}x{}", c.actual_width,
-                                   c.actual_height, c.expected_width, c.expected_height);
+        check.detail = fmt::format("the image is {}x{} instead of {}x{}", c.actual_width, c.actual_height,
+                                   c.expected_width, c.expected_height);
       } else {
-        check.detail = fmt::format("{} pixels ({:.3f}%) differ by more than {} levels (largest "
-                                   "difference {}); allowed: {:.3f}%",
-                                   c.differing, 100.0 * c.share, tolerances.image.channel,
-                                   c.max_channel_difference, 100.0 * tolerances.image.max_share);
+        check.detail = fmt::format(
+            "{} pixels ({:.3f}%) differ by more than {} levels (largest "
+            "difference {}); allowed: {:.3f}%",
+            c.differing, 100.0 * c.share, tolerances.image.channel, c.max_channel_difference,
+            100.0 * tolerances.image.max_share);
       }
       break;
     }
@@ -155,8 +158,7 @@ FileCheck compare_file_unchecked(FileKind kind, const fs::path& golden, const st
 
 }  // namespace
 
-FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string& actual,
-                       const Tolerances& tolerances) {
+FileCheck compare_file(FileKind kind, const fs::path& golden, const std::string& actual, const Tolerances& tolerances) {
   try {
     return compare_file_unchecked(kind, golden, actual, tolerances);
   } catch (const scene::SceneError& e) {  // the golden file's size, JSON text or nesting
@@ -173,13 +175,12 @@ Tolerances tolerances_of(const scene::Scene& scene, const ToleranceOverrides& gi
   return t;
 }
 
-SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir,
-                       const Tolerances& tolerances) {
+SceneCheck check_scene(const fs::path& scene_path, const fs::path& golden_dir, const Tolerances& tolerances) {
   const Outputs outputs = render_outputs(scene_path);
   SceneCheck result{scene_path.string(), scene_name(scene_path), {}, outputs.claims, outputs.lint};
   for (const GoldenFile& file : golden_files(outputs)) {
-    result.files.push_back(compare_file(file.kind, golden_path(golden_dir, result.name, file.suffix),
-                                        *file.bytes, tolerances));
+    result.files.push_back(
+        compare_file(file.kind, golden_path(golden_dir, result.name, file.suffix), *file.bytes, tolerances));
   }
   return result;
 }

@@ -21,7 +21,7 @@ namespace pita::golden {
 
 // PNGs are compared tolerantly (a newer cairo, pixman or FreeType may move
 // antialiasing by a level or two); the numbers are what catch a moved frame.
-inline constexpr int kDefaultChannelTolerance = 16;     // of 255
+inline constexpr int kDefaultChannelTolerance = 16;      // of 255
 inline constexpr double kDefaultDifferingShare = 0.002;  // of the pixels
 
 // Golden files are read as hostile input: at most this many bytes each
@@ -43,10 +43,9 @@ struct Outputs {
   std::string svg;
   std::string png;
   std::vector<std::pair<std::string, std::string>> frames;  // (suffix ".frame-0061.png", PNG bytes)
-  std::vector<analysis::ClaimOutcome> claims;  // the scene's "claims", measured (not a golden file)
-  lint::Report lint;                           // the legibility lint of the figure (not a golden file)
+  std::vector<analysis::ClaimOutcome> claims;               // the scene's "claims", measured (not a golden file)
+  lint::Report lint;                                        // the legibility lint of the figure (not a golden file)
 };
-
 
 enum class FileKind { data, svg, png };
 inline constexpr FileKind kFileKinds[] = {FileKind::data, FileKind::svg, FileKind::png};
@@ -55,13 +54,12 @@ std::string_view suffix(FileKind kind);  // ".data.json", ".svg", ".png"
 // Every golden file of the outputs: the three of kFileKinds, then the frames.
 struct GoldenFile {
   FileKind kind;
-  std::string suffix;         // ".png", ".frame-0061.png"
-  const std::string* bytes;   // into the Outputs
+  std::string suffix;        // ".png", ".frame-0061.png"
+  const std::string* bytes;  // into the Outputs
 };
 
 // golden_dir/<name>/<name><suffix>
-std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name,
-                                  FileKind kind);
+std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name, FileKind kind);
 std::filesystem::path golden_path(const std::filesystem::path& golden_dir, const std::string& name,
                                   const std::string& suffix);
 std::vector<GoldenFile> golden_files(const Outputs& outputs);
@@ -89,10 +87,10 @@ struct SceneCheck {
   std::string scene_path;
   std::string name;
   std::vector<FileCheck> files;
-  std::vector<analysis::ClaimOutcome> claims;  // every claim of the scene, in order
-  lint::Report lint;                           // the lint's findings (docs/reference/lint.md "Lint")
-  bool matches() const;      // every golden file matches
-  bool claims_hold() const;  // every claim holds
+  std::vector<analysis::ClaimOutcome> claims;    // every claim of the scene, in order
+  lint::Report lint;                             // the lint's findings (docs/reference/lint.md "Lint")
+  bool matches() const;                          // every golden file matches
+  bool claims_hold() const;                      // every claim holds
   bool legible() const { return lint.clean(); }  // every finding of the lint accepted by the scene
   bool passes() const { return matches() && claims_hold() && legible(); }
 };
@@ -110,8 +108,8 @@ Tolerances tolerances_of(const scene::Scene& scene, const ToleranceOverrides& gi
 
 // Throws SceneError/RenderError (bad scene) and GoldenError (a golden file
 // that cannot be read or decoded).
-SceneCheck check_scene(const std::filesystem::path& scene_path,
-                       const std::filesystem::path& golden_dir, const Tolerances& tolerances);
+SceneCheck check_scene(const std::filesystem::path& scene_path, const std::filesystem::path& golden_dir,
+                       const Tolerances& tolerances);
 
 // How a fresh output differs from its golden, in a line ("unchanged", "new",
 // "changed: 312 pixels (0.03%)", ...). Throws GoldenError, naming the file,

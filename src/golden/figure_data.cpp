@@ -30,12 +30,8 @@ struct ItemData {
   void operator()(const render::Circle& s) const {
     item["circle"] = Json{{"center", point(s.center)}, {"radius", s.radius}};
   }
-  void operator()(const render::ArrowShape& s) const {
-    item["arrow"] = Json::array({point(s.from), point(s.to)});
-  }
-  void operator()(const render::Label& s) const {
-    item["label"] = Json{{"text", s.text}, {"at", point(s.at)}};
-  }
+  void operator()(const render::ArrowShape& s) const { item["arrow"] = Json::array({point(s.from), point(s.to)}); }
+  void operator()(const render::Label& s) const { item["label"] = Json{{"text", s.text}, {"at", point(s.at)}}; }
   // An image by its file's name as the scene gives it and its corners.
   void operator()(const render::Image& s) const {
     const auto corners = render::image_corners(s);
@@ -99,8 +95,7 @@ Json read_figure_data(std::string_view text, const std::string& file) {
   return data;
 }
 
-Json figure_data(const std::string& scene_name, const scene::Scene& scene,
-                 const render::Figure& figure) {
+Json figure_data(const std::string& scene_name, const scene::Scene& scene, const render::Figure& figure) {
   Json panels = Json::array();
   for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
     const render::Drawing& drawing = figure.drawings[i];
@@ -125,8 +120,8 @@ std::string figure_data_text(const Json& data) {
   const Json& panels = data.at("panels");
   for (std::size_t i = 0; i < panels.size(); ++i) {
     const Json& panel = panels[i];
-    text += "{\"pointer\": " + panel.at("pointer").dump() + ", \"title\": " +
-            panel.at("title").dump(-1, ' ', false, Json::error_handler_t::replace) +
+    text += "{\"pointer\": " + panel.at("pointer").dump() +
+            ", \"title\": " + panel.at("title").dump(-1, ' ', false, Json::error_handler_t::replace) +
             ", \"extent\": " + panel.at("extent").dump() + ", \"items\": [\n";
     const Json& items = panel.at("items");
     for (std::size_t k = 0; k < items.size(); ++k) {

@@ -26,8 +26,7 @@ namespace pita::golden {
 
 using Json = nlohmann::ordered_json;
 
-Json figure_data(const std::string& scene_name, const scene::Scene& scene,
-                 const render::Figure& figure);
+Json figure_data(const std::string& scene_name, const scene::Scene& scene, const render::Figure& figure);
 
 // The data as text: one item per line, numbers in the shortest form that
 // reads back exactly, ending with a newline.

@@ -1,13 +1,12 @@
 #include "golden/golden_file.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace pita::golden {
 
@@ -32,9 +31,10 @@ std::string kind_of(mode_t mode) {
 }
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& what) {
-  throw GoldenPathError(fmt::format("{}: {}; a golden must be a plain file inside the golden folder "
-                                    "(docs/guide/goldens.md)",
-                                    path.string(), what));
+  throw GoldenPathError(
+      fmt::format("{}: {}; a golden must be a plain file inside the golden folder "
+                  "(docs/guide/goldens.md)",
+                  path.string(), what));
 }
 
 // GOLDEN/<name>, opened without following a link: -1 when it does not exist.
@@ -63,9 +63,7 @@ int open_name_folder(const fs::path& path) {
 
 }  // namespace
 
-void check_golden_folder(const fs::path& path) {
-  const Descriptor folder{open_name_folder(path)};
-}
+void check_golden_folder(const fs::path& path) { const Descriptor folder{open_name_folder(path)}; }
 
 std::optional<std::string> read_golden_file(const fs::path& path, std::size_t max_bytes) {
   const Descriptor folder{open_name_folder(path)};

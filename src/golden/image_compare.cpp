@@ -1,12 +1,11 @@
 #include "golden/image_compare.hpp"
 
-#include <cairo.h>
-
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <memory>
 
+#include <cairo.h>
 #include <fmt/format.h>
 
 #include "render/cairo_handles.hpp"
@@ -31,7 +30,6 @@ cairo_status_t read_chunk(void* closure, unsigned char* data, unsigned int lengt
   return CAIRO_STATUS_SUCCESS;
 }
 
-
 std::uint32_t big_endian(std::string_view bytes, std::size_t at) {
   std::uint32_t v = 0;
   for (std::size_t i = 0; i < 4; ++i) v = (v << 8) | static_cast<unsigned char>(bytes[at + i]);
@@ -51,11 +49,11 @@ PngSize declared_size(std::string_view png, const char* which) {
     throw GoldenError(std::string("the ") + which + " image is not a PNG file");
   }
   const PngSize size{big_endian(png, 16), big_endian(png, 20)};
-  if (size.width == 0 || size.height == 0 || size.width > kMaxImageSide ||
-      size.height > kMaxImageSide) {
-    throw GoldenError(fmt::format("the {} PNG declares {}x{} pixels; images are compared up to "
-                                  "{}x{} (not decoded)",
-                                  which, size.width, size.height, kMaxImageSide, kMaxImageSide));
+  if (size.width == 0 || size.height == 0 || size.width > kMaxImageSide || size.height > kMaxImageSide) {
+    throw GoldenError(
+        fmt::format("the {} PNG declares {}x{} pixels; images are compared up to "
+                    "{}x{} (not decoded)",
+                    which, size.width, size.height, kMaxImageSide, kMaxImageSide));
   }
   return size;
 }
@@ -67,8 +65,7 @@ Surface decode(std::string_view png, const char* which) {
   Surface decoded(cairo_image_surface_create_from_png_stream(read_chunk, &reader));
   if (cairo_surface_status(decoded.get()) != CAIRO_STATUS_SUCCESS) {
     throw GoldenError(std::string("the ") + which + " PNG cannot be decoded (" +
-                      cairo_status_to_string(cairo_surface_status(decoded.get())) +
-                      "; truncated or corrupted?)");
+                      cairo_status_to_string(cairo_surface_status(decoded.get())) + "; truncated or corrupted?)");
   }
   // Grey or palette PNGs decode to other formats: paint into ARGB32.
   const int w = cairo_image_surface_get_width(decoded.get());
@@ -144,8 +141,8 @@ ImageComparison compare_png(std::string_view expected_png, std::string_view actu
     c.max_channel_difference = 255;
     // The actual image inside a red border.
     const int border = 4;
-    Surface diff(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, c.actual_width + 2 * border,
-                                            c.actual_height + 2 * border));
+    Surface diff(
+        cairo_image_surface_create(CAIRO_FORMAT_ARGB32, c.actual_width + 2 * border, c.actual_height + 2 * border));
     cairo_t* cr = cairo_create(diff.get());
     cairo_set_source_rgb(cr, 1, 0, 0);
     cairo_paint(cr);

@@ -107,10 +107,10 @@ std::string describe(const NumberComparison& c, double relative) {
   std::string where = c.layer.empty() ? "" : "layer " + c.layer;
   if (!c.panel.empty()) where = "panel " + c.panel + (where.empty() ? "" : ", " + where);
   if (c.index >= 0) where += fmt::format(", frame {}", c.index);
-  return fmt::format("{} of {} numbers differ; worst at {} ({}): {} instead of {} ({:.3g} of the "
-                     "panel's extent; tolerance {:g})",
-                     c.differing, c.compared, c.pointer, where, c.actual, c.expected, c.relative,
-                     relative);
+  return fmt::format(
+      "{} of {} numbers differ; worst at {} ({}): {} instead of {} ({:.3g} of the "
+      "panel's extent; tolerance {:g})",
+      c.differing, c.compared, c.pointer, where, c.actual, c.expected, c.relative, relative);
 }
 
 }  // namespace pita::golden

@@ -13,16 +13,16 @@ inline constexpr double kDefaultNumberTolerance = 1e-9;  // of the panel's exten
 
 struct NumberComparison {
   bool matches = true;
-  std::string structure;        // non-empty when the structures differ: what and where
+  std::string structure;  // non-empty when the structures differ: what and where
   // The worst offender (largest relative difference), when structures agree.
-  std::string pointer;          // JSON Pointer in the data file, "/panels/0/items/12/polyline/1/0"
-  std::string panel;            // the panel's scene pointer ("" for the scene itself)
-  std::string layer;            // the item's layer pointer, "/layers/0"
-  int index = -1;               // the item's frame (or keyframe) index
+  std::string pointer;  // JSON Pointer in the data file, "/panels/0/items/12/polyline/1/0"
+  std::string panel;    // the panel's scene pointer ("" for the scene itself)
+  std::string layer;    // the item's layer pointer, "/layers/0"
+  int index = -1;       // the item's frame (or keyframe) index
   double expected = 0.0, actual = 0.0;
-  double relative = 0.0;        // |actual - expected| / extent
-  std::size_t compared = 0;     // numbers compared
-  std::size_t differing = 0;    // numbers beyond the tolerance
+  double relative = 0.0;      // |actual - expected| / extent
+  std::size_t compared = 0;   // numbers compared
+  std::size_t differing = 0;  // numbers beyond the tolerance
 };
 
 NumberComparison compare_numbers(const Json& expected, const Json& actual, double relative);

@@ -14,18 +14,24 @@ namespace {
 
 std::string_view kind_name(FileKind kind) {
   switch (kind) {
-    case FileKind::data: return "numbers";
-    case FileKind::svg: return "SVG geometry";
-    case FileKind::png: return "PNG pixels";
+    case FileKind::data:
+      return "numbers";
+    case FileKind::svg:
+      return "SVG geometry";
+    case FileKind::png:
+      return "PNG pixels";
   }
   return "";
 }
 
 std::string_view verdict_name(Verdict v) {
   switch (v) {
-    case Verdict::match: return "match";
-    case Verdict::differs: return "DIFFERS";
-    case Verdict::missing: return "MISSING";
+    case Verdict::match:
+      return "match";
+    case Verdict::differs:
+      return "DIFFERS";
+    case Verdict::missing:
+      return "MISSING";
   }
   return "";
 }
@@ -33,8 +39,8 @@ std::string_view verdict_name(Verdict v) {
 // An image cell: the file if it was written, else a note.
 std::string image_cell(const std::string& file, const std::string& caption) {
   if (file.empty()) return "<td><em>none</em><br>" + html_escaped(caption) + "</td>";
-  return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>",
-                     html_escaped(file), html_escaped(caption));
+  return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>", html_escaped(file),
+                     html_escaped(caption));
 }
 
 // The summary table: one row per scene, its result.
@@ -43,15 +49,15 @@ std::string summary_table(const std::vector<ReportEntry>& entries) {
   for (const ReportEntry& e : entries) {
     bad += (!e.error.empty() || !e.check.passes()) ? 1 : 0;
   }
-  std::string html = fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n",
-                                 entries.size(), bad);
+  std::string html =
+      fmt::format("<p>{} scene(s) checked, {} differ or could not be checked.</p>\n", entries.size(), bad);
   html += "<table><tr><th>scene</th><th>result</th></tr>\n";
   for (const ReportEntry& e : entries) {
-    const std::string result = !e.error.empty()          ? "ERROR"
-                               : !e.check.matches()      ? "DIFFERS"
+    const std::string result = !e.error.empty()         ? "ERROR"
+                               : !e.check.matches()     ? "DIFFERS"
                                : !e.check.claims_hold() ? "CLAIM FAILED"
-                               : !e.check.legible()      ? "LINT"
-                                                         : "match";
+                               : !e.check.legible()     ? "LINT"
+                                                        : "match";
     html += fmt::format("<tr><td><a href=\"#{0}\">{0}</a></td><td class=\"{1}\">{1}</td></tr>\n",
                         html_escaped(e.check.name), result);
   }
@@ -63,9 +69,9 @@ std::string summary_table(const std::vector<ReportEntry>& entries) {
 std::string files_table(const ReportEntry& e) {
   std::string html = "<table><tr><th>output</th><th>golden</th><th>result</th><th>details</th></tr>\n";
   for (const FileCheck& f : e.check.files) {
-    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n",
-                        kind_name(f.kind), html_escaped(f.golden.string()), verdict_name(f.verdict),
-                        verdict_name(f.verdict), html_escaped(f.detail));
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", kind_name(f.kind),
+                        html_escaped(f.golden.string()), verdict_name(f.verdict), verdict_name(f.verdict),
+                        html_escaped(f.detail));
   }
   html += "</table>\n";
   return html;
@@ -90,9 +96,10 @@ std::string lint_table(const ReportEntry& e) {
   std::string html = "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
   for (const lint::Finding& f : e.check.lint.findings) {
     const bool accepted = !f.reason.empty();
-    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
-                        html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
-                        accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
+    html +=
+        fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
+                    html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
+                    accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
   }
   html += "</table>\n";
   return html;
@@ -115,9 +122,8 @@ std::string differing_images(const fs::path& dir, const ReportEntry& e) {
       diff = e.check.name + ".diff.png";
       io::write_file_atomically(dir / diff, f.diff_png);
     }
-    html += "<table><tr>" + image_cell(expected, "expected (golden)") +
-            image_cell(actual, "actual") + image_cell(diff, "differing pixels in red") +
-            "</tr></table>\n";
+    html += "<table><tr>" + image_cell(expected, "expected (golden)") + image_cell(actual, "actual") +
+            image_cell(diff, "differing pixels in red") + "</tr></table>\n";
   }
   for (const FileCheck& f : e.check.files) {
     if (f.kind != FileKind::svg || f.verdict == Verdict::match) continue;

@@ -1,8 +1,8 @@
 #include "golden/svg_compare.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cctype>
 
 #include <fmt/format.h>
 
@@ -118,12 +118,13 @@ SvgComparison compare_svg(std::string_view expected, std::string_view actual, do
 
 std::string describe(const SvgComparison& c, double tolerance) {
   if (c.expected_count != c.actual_count) {
-    return fmt::format("the SVG draws {} numbers where the golden has {} (its paths changed)",
-                       c.actual_count, c.expected_count);
+    return fmt::format("the SVG draws {} numbers where the golden has {} (its paths changed)", c.actual_count,
+                       c.expected_count);
   }
-  return fmt::format("{} of {} SVG numbers differ by more than {:g} px; the worst, number {}, "
-                     "is {} instead of {}",
-                     c.differing, c.expected_count, tolerance, c.worst, c.actual, c.expected);
+  return fmt::format(
+      "{} of {} SVG numbers differ by more than {:g} px; the worst, number {}, "
+      "is {} instead of {}",
+      c.differing, c.expected_count, tolerance, c.worst, c.actual, c.expected);
 }
 
 }  // namespace pita::golden

@@ -20,7 +20,7 @@ std::vector<double> svg_numbers(std::string_view svg);
 struct SvgComparison {
   bool matches = true;
   std::size_t expected_count = 0, actual_count = 0;
-  std::size_t worst = 0;        // index of the number that differs most
+  std::size_t worst = 0;  // index of the number that differs most
   double expected = 0.0, actual = 0.0, difference = 0.0;
   std::size_t differing = 0;
 };

@@ -1,9 +1,5 @@
 #include "io/output_file.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -11,6 +7,10 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "io/interrupt.hpp"
 
@@ -201,9 +201,7 @@ void StreamingOutput::commit() {
   impl_->temporary.commit();
 }
 
-void write_file_atomically(const fs::path& path, std::string_view bytes) {
-  write_all_or_none({View{path, bytes}});
-}
+void write_file_atomically(const fs::path& path, std::string_view bytes) { write_all_or_none({View{path, bytes}}); }
 
 void write_files_atomically(std::span<const std::pair<fs::path, std::string>> files) {
   std::vector<View> views;

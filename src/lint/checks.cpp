@@ -101,8 +101,8 @@ void legend_over_data(const FigureGeometry& figure, const scene::LintSettings&, 
       const std::vector<std::string> layers = layers_under(panel, shrunk(legend.box, kSlack), legend.layer);
       if (layers.empty()) continue;
       findings.push_back({"legend-over-data", legend.layer,
-                          fmt::format("the legend ({:.0f}x{:.0f} px) lies over the data of {} in {}",
-                                      legend.box.width, legend.box.height, layer_list(panel, layers), panel.name),
+                          fmt::format("the legend ({:.0f}x{:.0f} px) lies over the data of {} in {}", legend.box.width,
+                                      legend.box.height, layer_list(panel, layers), panel.name),
                           "", ""});
     }
   }
@@ -113,12 +113,12 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
     const TextBox& t = figure.titles[k];
     const double beyond = overhang(t.box, figure.title_cells[k]);
     if (has_ink(t) && beyond > kSlack) {
-      findings.push_back({"outside", t.owner,
-                          fmt::format("the title {} is {:.0f} px wider than its space ({:.0f} px) and runs {:.0f} "
-                                      "px beyond it",
-                                      quoted(t.text), t.box.width - figure.title_cells[k].width,
-                                      figure.title_cells[k].width, beyond),
-                          "", ""});
+      findings.push_back(
+          {"outside", t.owner,
+           fmt::format("the title {} is {:.0f} px wider than its space ({:.0f} px) and runs {:.0f} "
+                       "px beyond it",
+                       quoted(t.text), t.box.width - figure.title_cells[k].width, figure.title_cells[k].width, beyond),
+           "", ""});
     }
   }
   for (const PanelGeometry& panel : figure.panels) {
@@ -144,18 +144,17 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
     for (const TextBox& t : panel.texts) {
       const double beyond = overhang(t.box, panel.area);
       if (has_ink(t) && beyond > kSlack) {
-        findings.push_back({"outside", t.owner,
-                            fmt::format("the {} {} reaches {:.0f} px beyond the edge of {}, where it is cut off",
-                                        t.kind == TextKind::legend ? "legend line" : "label", quoted(t.text), beyond,
-                                        panel.name),
-                            "", ""});
+        findings.push_back(
+            {"outside", t.owner,
+             fmt::format("the {} {} reaches {:.0f} px beyond the edge of {}, where it is cut off",
+                         t.kind == TextKind::legend ? "legend line" : "label", quoted(t.text), beyond, panel.name),
+             "", ""});
       }
     }
   }
 }
 
-void small_content(const FigureGeometry& figure, const scene::LintSettings& settings,
-                   std::vector<Finding>& findings) {
+void small_content(const FigureGeometry& figure, const scene::LintSettings& settings, std::vector<Finding>& findings) {
   for (const PanelGeometry& panel : figure.panels) {
     if (panel.data.empty()) continue;
     Rect content{0.0, 0.0, -1.0, -1.0};
@@ -165,13 +164,13 @@ void small_content(const FigureGeometry& figure, const scene::LintSettings& sett
     }
     const double share = std::max(content.width / panel.plot.width, content.height / panel.plot.height);
     if (share < settings.min_content_share) {
-      findings.push_back({"small-content", panel.pointer,
-                          fmt::format("the content of {} fills {:.0f}% of its width and {:.0f}% of its height "
-                                      "(less than min_content_share, {:.0f}%): it could be drawn {:.1f} times larger",
-                                      panel.name, 100.0 * content.width / panel.plot.width,
-                                      100.0 * content.height / panel.plot.height, 100.0 * settings.min_content_share,
-                                      1.0 / share),
-                          "", ""});
+      findings.push_back(
+          {"small-content", panel.pointer,
+           fmt::format("the content of {} fills {:.0f}% of its width and {:.0f}% of its height "
+                       "(less than min_content_share, {:.0f}%): it could be drawn {:.1f} times larger",
+                       panel.name, 100.0 * content.width / panel.plot.width, 100.0 * content.height / panel.plot.height,
+                       100.0 * settings.min_content_share, 1.0 / share),
+           "", ""});
     }
   }
 }
@@ -207,12 +206,12 @@ void short_frame(const FigureGeometry& figure, const scene::LintSettings& settin
         }
       }
       if (short_ones == 0) continue;
-      findings.push_back({"short-frame", layer,
-                          fmt::format("{} of the {} frames of {} in {} are drawn shorter than min_frame_pixels "
-                                      "({:g} px); frame {} is {:.2g} px",
-                                      short_ones, total, layer, panel.name, settings.min_frame_pixels,
-                                      shortest_index, shortest),
-                          "", ""});
+      findings.push_back(
+          {"short-frame", layer,
+           fmt::format("{} of the {} frames of {} in {} are drawn shorter than min_frame_pixels "
+                       "({:g} px); frame {} is {:.2g} px",
+                       short_ones, total, layer, panel.name, settings.min_frame_pixels, shortest_index, shortest),
+           "", ""});
     }
   }
 }
@@ -222,7 +221,7 @@ void same_color_series(const FigureGeometry& figure, const scene::LintSettings&,
     struct LayerColors {
       std::string type;
       std::map<int, scene::Color> of_index;  // keyframes, poses: the colour of each
-      std::map<std::string, int> counts;  // style -> shapes drawn in it
+      std::map<std::string, int> counts;     // style -> shapes drawn in it
       bool frames = false;
     };
     std::map<std::string, LayerColors> layers;

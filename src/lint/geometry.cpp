@@ -37,8 +37,8 @@ std::optional<DataShape> data_shape(const render::Shape& shape, const ViewTransf
                           if (s.outline) set_line(data, *s.outline);
                         },
                         [&](const render::Circle& s) { set_line(data, s.line); },
-                        [&](const render::ArrowShape& s) { set_line(data, s.line); },
-                        [](const render::Label&) {}, [](const render::Image&) {}},
+                        [&](const render::ArrowShape& s) { set_line(data, s.line); }, [](const render::Label&) {},
+                        [](const render::Image&) {}},
              shape);
   return data;
 }
@@ -90,9 +90,10 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
   FigureGeometry geometry;
   geometry.canvas = {0.0, 0.0, static_cast<double>(canvas.width), static_cast<double>(canvas.height)};
   if (!scene.title.empty()) {
-    geometry.titles.push_back({render::text_ink_box(scene.title, canvas.font, render::kTitleSize,
-                                                    render::scene_title_placement(canvas), render::is_markup(scene.title)),
-                               "/title", scene.title, TextKind::title});
+    geometry.titles.push_back(
+        {render::text_ink_box(scene.title, canvas.font, render::kTitleSize, render::scene_title_placement(canvas),
+                              render::is_markup(scene.title)),
+         "/title", scene.title, TextKind::title});
     geometry.title_cells.push_back(geometry.canvas);
   }
   for (std::size_t i = 0; i < figure.drawings.size(); ++i) {
@@ -100,11 +101,10 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
     const render::PanelPlacement& place = figure.placements[i];
     const render::Drawing& drawing = figure.drawings[i];
     if (!panel.title.empty()) {
-      geometry.titles.push_back({render::text_ink_box(panel.title, canvas.font, render::kPanelTitleSize,
-                                                      render::panel_title_placement(place),
-                                                      render::is_markup(panel.title)),
-                                 panel.pointer.empty() ? "/title" : panel.pointer + "/title", panel.title,
-                                 TextKind::title});
+      geometry.titles.push_back(
+          {render::text_ink_box(panel.title, canvas.font, render::kPanelTitleSize, render::panel_title_placement(place),
+                                render::is_markup(panel.title)),
+           panel.pointer.empty() ? "/title" : panel.pointer + "/title", panel.title, TextKind::title});
       geometry.title_cells.push_back(place.cell);
     }
     PanelGeometry out;
@@ -115,10 +115,10 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
     std::map<std::string, std::string> types;  // of each layer pointer met
     for (const render::Item& item : drawing.items) {
       if (const auto* label = std::get_if<render::Label>(&item.shape)) {
-        out.texts.push_back({render::text_ink_box(label->text, canvas.font, label->size,
-                                                  render::label_placement(*label, place.transform),
-                                                  render::is_markup(label->text)),
-                             item.layer, label->text, TextKind::label});
+        out.texts.push_back(
+            {render::text_ink_box(label->text, canvas.font, label->size,
+                                  render::label_placement(*label, place.transform), render::is_markup(label->text)),
+             item.layer, label->text, TextKind::label});
         continue;
       }
       std::optional<DataShape> data = data_shape(item.shape, place.transform);

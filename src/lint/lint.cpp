@@ -49,10 +49,9 @@ Report lint_figure(const scene::Scene& scene, const render::Figure& figure) {
 }
 
 std::string describe(const Finding& finding) {
-  return fmt::format("{}: {}: {}{}", finding.pointer.empty() ? "(the scene)" : finding.pointer, finding.check,
-                     finding.message,
-                     finding.reason.empty() ? "" : fmt::format(" (accepted by {}: {})", finding.allowed_at,
-                                                               finding.reason));
+  return fmt::format(
+      "{}: {}: {}{}", finding.pointer.empty() ? "(the scene)" : finding.pointer, finding.check, finding.message,
+      finding.reason.empty() ? "" : fmt::format(" (accepted by {}: {})", finding.allowed_at, finding.reason));
 }
 
 }  // namespace pita::lint

@@ -16,17 +16,17 @@
 namespace pita::lint {
 
 struct Finding {
-  std::string check;    // a name of scene::kLintChecks
-  std::string pointer;  // the layer, title or panel it names ("" = the scene)
-  std::string message;  // what is wrong, in canvas pixels
-  std::string reason;   // why the scene accepts it ("" = not accepted)
+  std::string check;       // a name of scene::kLintChecks
+  std::string pointer;     // the layer, title or panel it names ("" = the scene)
+  std::string message;     // what is wrong, in canvas pixels
+  std::string reason;      // why the scene accepts it ("" = not accepted)
   std::string allowed_at;  // the accepting entry, "/lint/allow/0"
 };
 
 struct Report {
-  std::vector<Finding> findings;            // in the order of the checks
-  std::vector<std::string> unused_allows;   // entries of "allow" that accept nothing ("/lint/allow/2")
-  bool clean() const;                       // every finding accepted
+  std::vector<Finding> findings;           // in the order of the checks
+  std::vector<std::string> unused_allows;  // entries of "allow" that accept nothing ("/lint/allow/2")
+  bool clean() const;                      // every finding accepted
   std::size_t accepted() const;
 };
 

@@ -31,8 +31,8 @@ class Evaluation {
   const Stage& chosen() const { return own_stage_ ? *own_stage_ : stage_; }
 
   Stage stage_;
-  scene::Panel own_;                 // the scene's own panel (scene::scene_panel)
-  std::optional<Stage> own_stage_;   // its motion, unless it is the first panel's
+  scene::Panel own_;                // the scene's own panel (scene::scene_panel)
+  std::optional<Stage> own_stage_;  // its motion, unless it is the first panel's
   std::size_t index_ = 0;
 };
 

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "core/chains/chain.hpp"
-#include "scene/limits.hpp"
 #include "core/overloaded.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::motion {
 

@@ -20,9 +20,12 @@ namespace {
 
 const char* point_name(scene::TrackedPoint point) {
   switch (point) {
-    case scene::TrackedPoint::start: return "p";
-    case scene::TrackedPoint::end: return "q";
-    case scene::TrackedPoint::middle: return "mid";
+    case scene::TrackedPoint::start:
+      return "p";
+    case scene::TrackedPoint::end:
+      return "q";
+    case scene::TrackedPoint::middle:
+      return "mid";
   }
   return "p";
 }
@@ -32,9 +35,12 @@ const char* point_name(scene::TrackedPoint point) {
 // their midpoint (docs/reference/scene-format.md "Timing").
 Point tracked(const Arrow& frame, scene::TrackedPoint point) {
   switch (point) {
-    case scene::TrackedPoint::start: return frame.p;
-    case scene::TrackedPoint::end: return frame.q();
-    case scene::TrackedPoint::middle: return 0.5 * (frame.p + frame.q());
+    case scene::TrackedPoint::start:
+      return frame.p;
+    case scene::TrackedPoint::end:
+      return frame.q();
+    case scene::TrackedPoint::middle:
+      return 0.5 * (frame.p + frame.q());
   }
   return frame.p;
 }
@@ -85,12 +91,12 @@ double frame_cost(const scene::Panel& panel) {
     const std::optional<Chain> chain = chain_of(panel);
     return chain ? chain_frame_cost(*chain, length) : 1.0;
   };
-  return std::visit(overloaded{[&](const scene::KeyframeKeys& given) { return track(given.track_length()); },
-                               // Two tracks per frame (PITA Eq. 48-50).
-                               [&](const scene::PointKeys& given) { return 2.0 * track(given.track_length()); },
-                               [](const scene::PlanePoseKeys&) { return 1.0; },
-                               [](const scene::SpacePoseKeys&) { return 1.0; }},
-                    panel.keys);
+  return std::visit(
+      overloaded{[&](const scene::KeyframeKeys& given) { return track(given.track_length()); },
+                 // Two tracks per frame (PITA Eq. 48-50).
+                 [&](const scene::PointKeys& given) { return 2.0 * track(given.track_length()); },
+                 [](const scene::PlanePoseKeys&) { return 1.0; }, [](const scene::SpacePoseKeys&) { return 1.0; }},
+      panel.keys);
 }
 
 PointCurveMotion point_curve(const scene::Scene& scene, const scene::Panel& panel, PointCurve curve) {
@@ -152,27 +158,27 @@ auto build_poses(const scene::Scene& scene, const scene::Panel& panel, const sce
 BuiltMotion build_kind(const scene::Scene& scene, const scene::Panel& panel, const std::string& label) {
   const auto refuse = [&](const std::string& reason) { return NoMotion(scene.path, panel.motion_pointer, reason); };
   return std::visit(
-      overloaded{[&](const scene::KeyframeKeys& given) -> BuiltMotion {
-                   try {
-                     std::optional<Chain> chain = chain_of(panel);
-                     return ArrowTrack{make_motion(given.method, given.keyframes, given.options, given.chain), chain};
-                   } catch (const MotionDomainError& error) {
-                     throw refuse(fmt::format("method {} has no motion through these keyframes: {}", label, error.what()));
-                   } catch (const std::invalid_argument& error) {
-                     throw refuse(fmt::format("method {} refuses these keyframes: {}", label, error.what()));
-                   }
-                 },
-                 [&](const scene::PointKeys&) -> BuiltMotion {
-                   if (!panel.timing.is_identity()) {
-                     throw NoMotion(scene.path, panel.timing.pointer,
-                                    "timing paces keyframes and poses; a panel of \"points\" has none");
-                   }
-                   return PointTrack{
-                       std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita)),
-                       chain_of(panel)};
-                 },
-                 [&](const scene::PlanePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); },
-                 [&](const scene::SpacePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); }},
+      overloaded{
+          [&](const scene::KeyframeKeys& given) -> BuiltMotion {
+            try {
+              std::optional<Chain> chain = chain_of(panel);
+              return ArrowTrack{make_motion(given.method, given.keyframes, given.options, given.chain), chain};
+            } catch (const MotionDomainError& error) {
+              throw refuse(fmt::format("method {} has no motion through these keyframes: {}", label, error.what()));
+            } catch (const std::invalid_argument& error) {
+              throw refuse(fmt::format("method {} refuses these keyframes: {}", label, error.what()));
+            }
+          },
+          [&](const scene::PointKeys&) -> BuiltMotion {
+            if (!panel.timing.is_identity()) {
+              throw NoMotion(scene.path, panel.timing.pointer,
+                             "timing paces keyframes and poses; a panel of \"points\" has none");
+            }
+            return PointTrack{std::make_shared<const PointCurveMotion>(point_curve(scene, panel, PointCurve::pita)),
+                              chain_of(panel)};
+          },
+          [&](const scene::PlanePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); },
+          [&](const scene::SpacePoseKeys& given) -> BuiltMotion { return build_poses(scene, panel, given); }},
       panel.keys);
 }
 
@@ -200,17 +206,17 @@ SceneMotion build_motion(const scene::Scene& scene, const scene::Panel& panel) {
       if (timing.arc_length) path = motion.point_path(*timing.arc_length);
       return warp(path);
     };
-    motion.warp_ = std::visit(overloaded{[&](const ArrowTrack&) { return plane_warp(); },
-                                         [&](const PointTrack&) { return plane_warp(); },
-                                         [&](const PlanePoses&) { return plane_warp(); },
-                                         [&](const SpacePoses&) {
-                                           ArcLengthTable::Path3 path;
-                                           if (timing.arc_length) {
-                                             path = motion.pose_point_path<Affine3>(*timing.arc_length);
-                                           }
-                                           return warp(path);
-                                         }},
-                              motion.built_);
+    motion.warp_ = std::visit(
+        overloaded{[&](const ArrowTrack&) { return plane_warp(); }, [&](const PointTrack&) { return plane_warp(); },
+                   [&](const PlanePoses&) { return plane_warp(); },
+                   [&](const SpacePoses&) {
+                     ArcLengthTable::Path3 path;
+                     if (timing.arc_length) {
+                       path = motion.pose_point_path<Affine3>(*timing.arc_length);
+                     }
+                     return warp(path);
+                   }},
+        motion.built_);
   } catch (const NoMotion&) {
     throw;
   } catch (const std::exception& error) {
@@ -262,14 +268,15 @@ const Motion& SceneMotion::arrows() const { return *as<ArrowTrack>("keyframe arr
 
 std::function<Point(double)> SceneMotion::point_path(scene::TrackedPoint point) const {
   using Path = std::function<Point(double)>;
-  return std::visit(
-      overloaded{[&](const ArrowTrack& track) -> Path {
-                   return [motion = track.motion, point](double tau) { return tracked(motion->at(tau), point); };
-                 },
-                 [&](const PointTrack&) -> Path { not_of_kind("keyframe arrows"); },
-                 [&](const PlanePoses&) -> Path { return pose_point_path<Affine2>(point); },
-                 [&](const SpacePoses&) -> Path { not_of_kind("poses of the plane"); }},
-      built_);
+  return std::visit(overloaded{[&](const ArrowTrack& track) -> Path {
+                                 return [motion = track.motion, point](double tau) {
+                                   return tracked(motion->at(tau), point);
+                                 };
+                               },
+                               [&](const PointTrack&) -> Path { not_of_kind("keyframe arrows"); },
+                               [&](const PlanePoses&) -> Path { return pose_point_path<Affine2>(point); },
+                               [&](const SpacePoses&) -> Path { not_of_kind("poses of the plane"); }},
+                    built_);
 }
 
 template <class Pose>
@@ -277,11 +284,10 @@ std::function<typename PoseTraits<Pose>::BodyPoint(double)> SceneMotion::pose_po
     scene::TrackedPoint point) const {
   const PoseTrack<Pose>& poses = as<PoseTrack<Pose>>(PoseTraits<Pose>::noun);
   const auto& reference = poses.reference;
-  const typename PoseTraits<Pose>::BodyPoint origin = point == scene::TrackedPoint::start ? reference[0]
-                                                      : point == scene::TrackedPoint::end
-                                                          ? reference[1]
-                                                          : typename PoseTraits<Pose>::BodyPoint(
-                                                                0.5 * (reference[0] + reference[1]));
+  const typename PoseTraits<Pose>::BodyPoint origin =
+      point == scene::TrackedPoint::start ? reference[0]
+      : point == scene::TrackedPoint::end ? reference[1]
+                                          : typename PoseTraits<Pose>::BodyPoint(0.5 * (reference[0] + reference[1]));
   return [motion = poses.motion, origin](double tau) { return pita::apply(motion->at(tau), origin); };
 }
 
@@ -319,9 +325,9 @@ Arrow SceneMotion::arrow_at(double t) const {
   // q = p + m e^{iw} is finite when p, m and w are and neither |p| nor m is
   // near the largest double; only then is it worth computing.
   constexpr double huge = limits::kHugeCoordinate;
-  const bool finite = is_finite(arrow) && ((std::abs(arrow.p.real()) < huge && std::abs(arrow.p.imag()) < huge &&
-                                            arrow.m < huge) ||
-                                           (std::isfinite(arrow.q().real()) && std::isfinite(arrow.q().imag())));
+  const bool finite =
+      is_finite(arrow) && ((std::abs(arrow.p.real()) < huge && std::abs(arrow.p.imag()) < huge && arrow.m < huge) ||
+                           (std::isfinite(arrow.q().real()) && std::isfinite(arrow.q().imag())));
   if (!finite) {
     throw NoMotion(file_, pointer_,
                    fmt::format("method {} has no finite frame at t = {}: its numbers overflow double "

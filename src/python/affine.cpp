@@ -21,11 +21,11 @@ namespace {
 
 // A stack of matrices (..., rows, cols) as NumPy gives it, read once.
 struct MatrixStack {
-  std::vector<double> values;            // C order
-  std::vector<py::ssize_t> batch;        // the shape before the last two axes
+  std::vector<double> values;      // C order
+  std::vector<py::ssize_t> batch;  // the shape before the last two axes
   py::ssize_t rows = 0, cols = 0;
-  int dimension = 2;                     // of the affinities
-  bool homogeneous = false;              // (n+1) x (n+1), else n x (n+1)
+  int dimension = 2;         // of the affinities
+  bool homogeneous = false;  // (n+1) x (n+1), else n x (n+1)
   std::size_t count() const { return values.size() / static_cast<std::size_t>(rows * cols); }
 };
 
@@ -47,9 +47,10 @@ MatrixStack read_stack(const py::handle& value, const char* name) {
   stack.dimension = static_cast<int>(stack.cols) - 1;
   stack.homogeneous = stack.rows == stack.cols;
   if ((stack.dimension != 2 && stack.dimension != 3) || !(stack.homogeneous || stack.rows == stack.cols - 1)) {
-    throw py::value_error(fmt::format("{}: an affinity is a 2x3 or 3x3 matrix (plane) or a 3x4 or 4x4 matrix "
-                                      "(space); got {}x{}",
-                                      name, stack.rows, stack.cols));
+    throw py::value_error(
+        fmt::format("{}: an affinity is a 2x3 or 3x3 matrix (plane) or a 3x4 or 4x4 matrix "
+                    "(space); got {}x{}",
+                    name, stack.rows, stack.cols));
   }
   for (py::ssize_t d = 0; d + 2 < array.ndim(); ++d) stack.batch.push_back(array.shape(d));
   const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
@@ -89,9 +90,10 @@ void check_homogeneous(const MatrixStack& stack, const char* name) {
   for (std::size_t k = 0; k < stack.count(); ++k) {
     for (std::size_t j = 0; j <= n; ++j) {
       if (stack.values[k * size + n * (n + 1) + j] != (j == n ? 1.0 : 0.0)) {
-        throw py::value_error(fmt::format("{}: the last row of a homogeneous matrix must be [0, ..., 0, 1] "
-                                          "(matrix {})",
-                                          name, k));
+        throw py::value_error(
+            fmt::format("{}: the last row of a homogeneous matrix must be [0, ..., 0, 1] "
+                        "(matrix {})",
+                        name, k));
       }
     }
   }
@@ -102,12 +104,17 @@ py::array ear_powers(const MatrixStack& stack, const Times& times, const std::ve
   // The broadcast of the stack's batch and the times' shape, element by element.
   const py::module_ np = py::module_::import("numpy");
   const py::tuple batch = py::cast(stack.batch), tshape = py::cast(times.shape);
-  const std::vector<py::ssize_t> out_batch = np.attr("broadcast_shapes")(batch, tshape).cast<std::vector<py::ssize_t>>();
+  const std::vector<py::ssize_t> out_batch =
+      np.attr("broadcast_shapes")(batch, tshape).cast<std::vector<py::ssize_t>>();
   // Index maps: which matrix and which time each output element uses.
-  const py::array_t<std::int64_t> matrix_index =
-      np.attr("ascontiguousarray")(np.attr("broadcast_to")(np.attr("arange")(stack.count()).attr("reshape")(batch), py::cast(out_batch)).attr("ravel")(), "int64");
-  const py::array_t<std::int64_t> time_index =
-      np.attr("ascontiguousarray")(np.attr("broadcast_to")(np.attr("arange")(times.values.size()).attr("reshape")(tshape), py::cast(out_batch)).attr("ravel")(), "int64");
+  const py::array_t<std::int64_t> matrix_index = np.attr("ascontiguousarray")(
+      np.attr("broadcast_to")(np.attr("arange")(stack.count()).attr("reshape")(batch), py::cast(out_batch))
+          .attr("ravel")(),
+      "int64");
+  const py::array_t<std::int64_t> time_index = np.attr("ascontiguousarray")(
+      np.attr("broadcast_to")(np.attr("arange")(times.values.size()).attr("reshape")(tshape), py::cast(out_batch))
+          .attr("ravel")(),
+      "int64");
   py::array_t<double> out = new_array(out_batch, {stack.rows, stack.cols});
   (void)shape;
   const std::int64_t* mi = matrix_index.data();
@@ -148,8 +155,7 @@ py::object ear_power(const py::handle& M, const py::handle& t) {
   for (const double x : stack.values) {
     if (!std::isfinite(x)) throw py::value_error("M: every entry must be finite");
   }
-  return stack.dimension == 2 ? ear_powers<Affine2>(stack, times, {})
-                              : ear_powers<Affine3>(stack, times, {});
+  return stack.dimension == 2 ? ear_powers<Affine2>(stack, times, {}) : ear_powers<Affine3>(stack, times, {});
 }
 
 py::object sma(const py::handle& a, const py::handle& b, const py::handle& t) {

@@ -43,8 +43,8 @@ using Pose = std::variant<Affine2, Affine3>;
 // real numbers of any shape (integers are converted; complex, strings and
 // objects are refused with TypeError, NaN and infinities with ValueError).
 struct Times {
-  std::vector<double> values;        // flattened, C order
-  std::vector<py::ssize_t> shape;    // empty for a scalar
+  std::vector<double> values;      // flattened, C order
+  std::vector<py::ssize_t> shape;  // empty for a scalar
   bool scalar = false;
 };
 Times read_times(const py::handle& t, const char* name);

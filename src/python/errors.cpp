@@ -100,8 +100,7 @@ void raise_located(py::handle type, const char* what, const std::string& file, c
 }  // namespace
 
 void raise_no_sam(const std::string& reason, std::optional<std::size_t> index) {
-  const std::string message =
-      index ? "matrix " + std::to_string(*index) + ": " + reason : reason;
+  const std::string message = index ? "matrix " + std::to_string(*index) + ": " + reason : reason;
   py::object error = py::reinterpret_borrow<py::object>(types().no_sam)(message, reason);
   if (index) error.attr("index") = *index;
   raise(types().no_sam, error);

@@ -33,10 +33,10 @@ using Json = nlohmann::ordered_json;
 // A Python value (numbers, strings, lists, dicts) as JSON, through Python's
 // own json module (a value it cannot write raises TypeError there).
 Json to_json(const py::handle& value) {
-  const std::string text = py::module_::import("json").attr("dumps")(value, py::arg("allow_nan") = false).cast<std::string>();
+  const std::string text =
+      py::module_::import("json").attr("dumps")(value, py::arg("allow_nan") = false).cast<std::string>();
   return Json::parse(text);
 }
-
 
 Json pose_json(const Pose& pose) {
   return std::visit(
@@ -63,7 +63,8 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   std::vector<double> knots;
   if (!times.is_none()) {
     const Times given = read_times(times, "times");
-    if (given.scalar || given.shape.size() != 1) throw py::value_error("times: expected a list of knots, one per keyframe");
+    if (given.scalar || given.shape.size() != 1)
+      throw py::value_error("times: expected a list of knots, one per keyframe");
     knots = given.values;
     if (knots.size() != py::len(keyframes)) {
       throw py::value_error(fmt::format("times: {} knots for {} keyframes", knots.size(), py::len(keyframes)));
@@ -91,9 +92,10 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
       }
       key = timed;
     } else if (!key.contains("t")) {
-      throw py::value_error(fmt::format("times: give the keyframes' times (knots), or a \"t\" in each keyframe "
-                                        "(keyframes[{}] has none)",
-                                        i));
+      throw py::value_error(
+          fmt::format("times: give the keyframes' times (knots), or a \"t\" in each keyframe "
+                      "(keyframes[{}] has none)",
+                      i));
     }
     items.push_back(key);
   }
@@ -119,7 +121,6 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   return scene;
 }
 
-
 }  // namespace
 
 std::shared_ptr<HeldMotion> hold_motion(scene::Scene scene, std::optional<int> panel) {
@@ -140,59 +141,60 @@ py::object sample(const motion::SceneMotion& motion, const Times& times) {
   const std::size_t n = times.values.size();
   const std::vector<double>& t = times.values;
   return std::visit(
-      overloaded{
-          [&](const motion::ArrowTrack&) -> py::object {
-            if (times.scalar) return arrow_object(motion.arrow_at(t.front()));
-            py::array_t<double> p = new_array(times.shape, {2}), m = new_array(times.shape, {}),
-                                w = new_array(times.shape, {}), q = new_array(times.shape, {2});
-            double *pp = p.mutable_data(), *pm = m.mutable_data(), *pw = w.mutable_data(), *pq = q.mutable_data();
-            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
-              for (std::size_t i = begin; i < end; ++i) {
-                const Arrow D = motion.arrow_at(t[i]);
-                const Point e = D.q();
-                pp[2 * i] = D.p.real(), pp[2 * i + 1] = D.p.imag(), pm[i] = D.m, pw[i] = D.w;
-                pq[2 * i] = e.real(), pq[2 * i + 1] = e.imag();
-              }
-              return true;
-            });
-            return arrow_samples_type()(p, m, w, q);
-          },
-          [&](const motion::PointTrack&) -> py::object {
-            if (times.scalar) {
-              const Point x = motion.point_at(t.front());
-              return py::make_tuple(x.real(), x.imag());
-            }
-            py::array_t<double> xy = new_array(times.shape, {2});
-            double* out = xy.mutable_data();
-            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
-              for (std::size_t i = begin; i < end; ++i) {
-                const Point x = motion.point_at(t[i]);
-                out[2 * i] = x.real(), out[2 * i + 1] = x.imag();
-              }
-              return true;
-            });
-            return xy;
-          },
-          [&]<class Pose>(const motion::PoseTrack<Pose>&) -> py::object {
-            // Poses of the plane (2 x 3 each) or of space (3 x 4 each).
-            constexpr int rows = PoseTraits<Pose>::dimension;
-            if (times.scalar) return pose_object(motion.pose_at<Pose>(t.front()));
-            py::array_t<double> out = new_array(times.shape, {py::ssize_t{rows}, py::ssize_t{rows + 1}});
-            double* data = out.mutable_data();
-            for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
-              for (std::size_t i = begin; i < end; ++i) {
-                write_pose(motion.pose_at<Pose>(t[i]), data + rows * (rows + 1) * i);
-              }
-              return true;
-            });
-            return out;
-          }},
+      overloaded{[&](const motion::ArrowTrack&) -> py::object {
+                   if (times.scalar) return arrow_object(motion.arrow_at(t.front()));
+                   py::array_t<double> p = new_array(times.shape, {2}), m = new_array(times.shape, {}),
+                                       w = new_array(times.shape, {}), q = new_array(times.shape, {2});
+                   double *pp = p.mutable_data(), *pm = m.mutable_data(), *pw = w.mutable_data(),
+                          *pq = q.mutable_data();
+                   for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+                     for (std::size_t i = begin; i < end; ++i) {
+                       const Arrow D = motion.arrow_at(t[i]);
+                       const Point e = D.q();
+                       pp[2 * i] = D.p.real(), pp[2 * i + 1] = D.p.imag(), pm[i] = D.m, pw[i] = D.w;
+                       pq[2 * i] = e.real(), pq[2 * i + 1] = e.imag();
+                     }
+                     return true;
+                   });
+                   return arrow_samples_type()(p, m, w, q);
+                 },
+                 [&](const motion::PointTrack&) -> py::object {
+                   if (times.scalar) {
+                     const Point x = motion.point_at(t.front());
+                     return py::make_tuple(x.real(), x.imag());
+                   }
+                   py::array_t<double> xy = new_array(times.shape, {2});
+                   double* out = xy.mutable_data();
+                   for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+                     for (std::size_t i = begin; i < end; ++i) {
+                       const Point x = motion.point_at(t[i]);
+                       out[2 * i] = x.real(), out[2 * i + 1] = x.imag();
+                     }
+                     return true;
+                   });
+                   return xy;
+                 },
+                 [&]<class Pose>(const motion::PoseTrack<Pose>&) -> py::object {
+                   // Poses of the plane (2 x 3 each) or of space (3 x 4 each).
+                   constexpr int rows = PoseTraits<Pose>::dimension;
+                   if (times.scalar) return pose_object(motion.pose_at<Pose>(t.front()));
+                   py::array_t<double> out = new_array(times.shape, {py::ssize_t{rows}, py::ssize_t{rows + 1}});
+                   double* data = out.mutable_data();
+                   for_each_chunk(n, [&](std::size_t begin, std::size_t end) {
+                     for (std::size_t i = begin; i < end; ++i) {
+                       write_pose(motion.pose_at<Pose>(t[i]), data + rows * (rows + 1) * i);
+                     }
+                     return true;
+                   });
+                   return out;
+                 }},
       motion.built());
 }
 
 void bind_motion(py::module_& m) {
-  const py::object method_info = py::module_::import("collections").attr("namedtuple")(
-      "MethodInfo", "id mnemonic title kind min_count max_count space");
+  const py::object method_info =
+      py::module_::import("collections")
+          .attr("namedtuple")("MethodInfo", "id mnemonic title kind min_count max_count space");
   method_info.attr("__module__") = "pita";
   m.attr("MethodInfo") = method_info;
   m.def(
@@ -201,10 +203,13 @@ void bind_motion(py::module_& m) {
         py::list all;
         for (const MethodEntry& entry : every_method()) {
           // The kind of keys the method takes, and whether it also moves space.
-          const auto [kind, space] =
-              std::visit(overloaded{[](Method) { return std::pair{"arrows", false}; },
-                                    [](PoseMethod pose) { return std::pair{"poses", info(pose).in_space}; }},
-                         entry.method);
+          const auto [kind, space] = std::visit(overloaded{[](Method) {
+                                                             return std::pair{"arrows", false};
+                                                           },
+                                                           [](PoseMethod pose) {
+                                                             return std::pair{"poses", info(pose).in_space};
+                                                           }},
+                                                entry.method);
           all.append(method_info(std::string(entry.id), std::string(entry.mnemonic), std::string(entry.title), kind,
                                  entry.min_count, entry.max_count, space));
         }
@@ -227,23 +232,32 @@ or an array of times (scene times; outside the knots it extrapolates).
 
 The frames are computed in C++ with the GIL released, exactly as `pita eval` computes them.
 Raises pita.NoMotionError where the motion is undefined or not finite.)")
-      .def("__call__", [](const HeldMotion& held, const py::handle& t) {
-        return sample(held.evaluation->motion(), read_times(t, "t"));
-      }, py::arg("t"))
-      .def_property_readonly("method", [](const HeldMotion& held) { return held.evaluation->motion().method_id(); },
-                             "The method's id: \"P6\", \"SAM\".")
-      .def_property_readonly("label", [](const HeldMotion& held) { return held.evaluation->motion().label(); },
-                             "The method as messages name it: \"P6 (La-LP)\".")
-      .def_property_readonly("kind", [](const HeldMotion& held) { return std::string(scene::kind_name(held.evaluation->panel().keys)); },
-                             "\"arrows\", \"points\", \"poses\" or \"poses3\" (poses of space).")
-      .def_property_readonly("knots", [](const HeldMotion& held) {
-        return py::tuple(py::cast(held.evaluation->motion().knots()));
-      }, "The keyframes' (or poses') times, increasing.")
-      .def_property_readonly("chain", [](const HeldMotion& held) -> py::object {
-        const auto chain = held.evaluation->motion().chain();
-        if (!chain) return py::none();
-        return py::str(std::string(info(*chain).name));
-      }, "The chain of a track of more keyframes than the method takes (\"blend\", ...), else None.")
+      .def(
+          "__call__",
+          [](const HeldMotion& held, const py::handle& t) {
+            return sample(held.evaluation->motion(), read_times(t, "t"));
+          },
+          py::arg("t"))
+      .def_property_readonly(
+          "method", [](const HeldMotion& held) { return held.evaluation->motion().method_id(); },
+          "The method's id: \"P6\", \"SAM\".")
+      .def_property_readonly(
+          "label", [](const HeldMotion& held) { return held.evaluation->motion().label(); },
+          "The method as messages name it: \"P6 (La-LP)\".")
+      .def_property_readonly(
+          "kind", [](const HeldMotion& held) { return std::string(scene::kind_name(held.evaluation->panel().keys)); },
+          "\"arrows\", \"points\", \"poses\" or \"poses3\" (poses of space).")
+      .def_property_readonly(
+          "knots", [](const HeldMotion& held) { return py::tuple(py::cast(held.evaluation->motion().knots())); },
+          "The keyframes' (or poses') times, increasing.")
+      .def_property_readonly(
+          "chain",
+          [](const HeldMotion& held) -> py::object {
+            const auto chain = held.evaluation->motion().chain();
+            if (!chain) return py::none();
+            return py::str(std::string(info(*chain).name));
+          },
+          "The chain of a track of more keyframes than the method takes (\"blend\", ...), else None.")
       .def("__repr__", [](const HeldMotion& held) {
         const motion::SceneMotion& motion = held.evaluation->motion();
         return fmt::format("<pita.Motion {} through {} {}, t in [{}, {}]>", motion.label(), motion.knots().size(),

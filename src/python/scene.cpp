@@ -3,6 +3,8 @@
 // measured and checked against goldens by the layers the commands use:
 // Scene.eval is `pita eval`, render `pita render`, animate `pita animate`,
 // measure `pita measure --format json`, check `pita check`.
+#include "scene/scene.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -29,7 +31,6 @@
 #include "python/bindings.hpp"
 #include "python/held_scene.hpp"
 #include "render/figure.hpp"
-#include "scene/scene.hpp"
 
 namespace pita::python {
 
@@ -39,7 +40,6 @@ struct HeldScene {
   scene::Scene scene;
   std::optional<std::filesystem::path> file;  // the file it was read from; none for a dict
 };
-
 
 // The scene with another method, as `pita eval --method` makes it.
 scene::Scene with_method(const scene::Scene& scene, const std::string& name) {
@@ -57,17 +57,18 @@ py::object no_frames(const scene::Scene& scene) {
 py::object eval(const HeldScene& held, const py::object& t, std::optional<int> samples, std::optional<int> panel,
                 std::optional<std::string> method, std::optional<std::string> format) {
   if (format && *format != "json" && *format != "csv") {
-    throw py::value_error(fmt::format("format: \"{}\" is not a format (use \"json\" or \"csv\", or None for arrays)",
-                                      *format));
+    throw py::value_error(
+        fmt::format("format: \"{}\" is not a format (use \"json\" or \"csv\", or None for arrays)", *format));
   }
   if (samples && (*samples < scene::kMinSamples || *samples > scene::kMaxSamples)) {
-    throw py::value_error(fmt::format("samples: must be between {} and {} (got {})", scene::kMinSamples,
-                                      scene::kMaxSamples, *samples));
+    throw py::value_error(
+        fmt::format("samples: must be between {} and {} (got {})", scene::kMinSamples, scene::kMaxSamples, *samples));
   }
   if (samples && !t.is_none()) throw py::value_error("samples and t: give one (t: the times; samples: how many)");
   if (panel && method) {
-    throw py::value_error("panel and method: a panel evaluates with its own method; give method without panel "
-                          "for the scene's motion");
+    throw py::value_error(
+        "panel and method: a panel evaluates with its own method; give method without panel "
+        "for the scene's motion");
   }
   const scene::Scene scene = method ? with_method(held.scene, *method) : held.scene;
   if (!scene::has_motion_keys(scene.keys)) {
@@ -88,12 +89,13 @@ py::object eval(const HeldScene& held, const py::object& t, std::optional<int> s
   if (given) {
     times = *given;
   } else if (evaluation) {
-    times.values = motion::uniform_times(evaluation->motion(),
-                                         samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
+    times.values =
+        motion::uniform_times(evaluation->motion(), samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
     times.shape = {static_cast<py::ssize_t>(times.values.size())};
   }
   if (format) {
-    const motion::FramesFormat frames_format = *format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json;
+    const motion::FramesFormat frames_format =
+        *format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json;
     if (!evaluation) return py::str(motion::no_frames_text(scene, frames_format));  // as `pita eval` prints it
     motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), times.values.size(),
                             "ask for fewer frames (samples=, t=)");
@@ -111,7 +113,8 @@ py::object eval(const HeldScene& held, const py::object& t, std::optional<int> s
 
 render::Format render_format(const std::string& name) {
   const auto format = render::format_from_name(name);
-  if (!format) throw py::value_error(fmt::format("format: \"{}\" is not a format (use \"svg\", \"png\" or \"pdf\")", name));
+  if (!format)
+    throw py::value_error(fmt::format("format: \"{}\" is not a format (use \"svg\", \"png\" or \"pdf\")", name));
   return *format;
 }
 
@@ -119,8 +122,8 @@ py::bytes render_bytes(const HeldScene& held, const std::string& format_name, do
                        double budget) {
   const render::Format format = render_format(format_name);
   if (!(scale >= render::kMinScale && scale <= render::kMaxScale)) {
-    throw py::value_error(fmt::format("scale: must be between {} and {} (got {})", render::kMinScale,
-                                      render::kMaxScale, scale));
+    throw py::value_error(
+        fmt::format("scale: must be between {} and {} (got {})", render::kMinScale, render::kMaxScale, scale));
   }
   if (!(budget > 0.0 && budget <= 1000.0)) throw py::value_error("budget: must be in (0, 1000]");
   std::string bytes;
@@ -184,8 +187,9 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
                  std::optional<double> svg_tolerance, std::optional<int> pixel_tolerance,
                  std::optional<double> max_differing) {
   if (!held.file) {
-    throw py::value_error("check: a scene made from a dict has no file, and goldens are named after the file: "
-                          "write it to NAME.json and load_scene(\"NAME.json\")");
+    throw py::value_error(
+        "check: a scene made from a dict has no file, and goldens are named after the file: "
+        "write it to NAME.json and load_scene(\"NAME.json\")");
   }
   const auto within = [](const auto& value, double low, double high, const char* name) {
     if (value && !(*value >= low && *value <= high)) {
@@ -209,8 +213,8 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
   const py::object file_check = collections.attr("namedtuple")("FileCheck", "kind golden verdict detail");
   const py::object claim = collections.attr("namedtuple")("ClaimOutcome", "pointer says held measured");
   const py::object finding = collections.attr("namedtuple")("LintFinding", "check pointer message accepted");
-  const py::object outcome = collections.attr("namedtuple")(
-      "CheckResult", "passes matches claims_hold legible files claims lint");
+  const py::object outcome =
+      collections.attr("namedtuple")("CheckResult", "passes matches claims_hold legible files claims lint");
   py::list files, claims, lint;
   for (const golden::FileCheck& file : result.files) {
     const char* verdict = file.verdict == golden::Verdict::match     ? "match"
@@ -230,19 +234,24 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
 void bind_scene(py::module_& m) {
   py::class_<HeldScene, std::shared_ptr<HeldScene>>(m, "Scene", R"(A scene (docs/reference/scene-format.md), read and
 checked once. In a Jupyter notebook it shows its figure.)")
-      .def_property_readonly("path", [](const HeldScene& s) { return s.scene.path; },
-                             "The file it was read from, or \"<dict>\".")
+      .def_property_readonly(
+          "path", [](const HeldScene& s) { return s.scene.path; }, "The file it was read from, or \"<dict>\".")
       .def_property_readonly("title", [](const HeldScene& s) { return s.scene.title; })
       .def_property_readonly("description", [](const HeldScene& s) { return s.scene.description; })
-      .def_property_readonly("kind", [](const HeldScene& s) { return std::string(scene::kind_name(s.scene.keys)); },
-                             "\"arrows\", \"points\", \"poses\" or \"poses3\".")
+      .def_property_readonly(
+          "kind", [](const HeldScene& s) { return std::string(scene::kind_name(s.scene.keys)); },
+          "\"arrows\", \"points\", \"poses\" or \"poses3\".")
       .def_property_readonly("method", [](const HeldScene& s) { return scene::method_id(s.scene.keys); })
-      .def_property_readonly("panels", [](const HeldScene& s) { return s.scene.panels.size(); },
-                             "How many panels the figure has (1 for a scene without \"panels\").")
-      .def_property_readonly("has_motion", [](const HeldScene& s) { return scene::has_motion_keys(s.scene.keys); },
-                             "False for a figure that needs no motion (a pose scene without poses).")
-      .def("motion", [](const HeldScene& s, std::optional<int> panel) { return hold_motion(s.scene, panel); }, py::arg("panel") = py::none(),
-      "The scene's own motion (or panel `panel`'s), built once, as pita.motion returns one.")
+      .def_property_readonly(
+          "panels", [](const HeldScene& s) { return s.scene.panels.size(); },
+          "How many panels the figure has (1 for a scene without \"panels\").")
+      .def_property_readonly(
+          "has_motion", [](const HeldScene& s) { return scene::has_motion_keys(s.scene.keys); },
+          "False for a figure that needs no motion (a pose scene without poses).")
+      .def(
+          "motion", [](const HeldScene& s, std::optional<int> panel) { return hold_motion(s.scene, panel); },
+          py::arg("panel") = py::none(),
+          "The scene's own motion (or panel `panel`'s), built once, as pita.motion returns one.")
       .def("eval", &eval, py::arg("t") = py::none(), py::kw_only(), py::arg("samples") = py::none(),
            py::arg("panel") = py::none(), py::arg("method") = py::none(), py::arg("format") = py::none(),
            R"(The frames `pita eval` prints: at times t (a number or an array; outside the knots they
@@ -269,13 +278,13 @@ writing returns (threads: 1 to 64 frames drawn at once).)")
            R"(Compares the scene's fresh figures with its goldens in golden_dir/NAME/ and checks its claims
 and lint, as `pita check` does. Returns CheckResult(passes, matches, claims_hold, legible,
 files, claims, lint).)")
-      .def("_repr_svg_", [](const HeldScene& s) {
-        return render_bytes(s, "svg", 1.0, std::nullopt, 1.0).cast<std::string>();
-      })
+      .def("_repr_svg_",
+           [](const HeldScene& s) { return render_bytes(s, "svg", 1.0, std::nullopt, 1.0).cast<std::string>(); })
       .def("_repr_png_", [](const HeldScene& s) { return render_bytes(s, "png", 1.0, std::nullopt, 1.0); })
       .def("__repr__", [](const HeldScene& s) {
-        return fmt::format("<pita.Scene {} ({}, {}, {} panel{})>", s.scene.path, std::string(scene::kind_name(s.scene.keys)),
-                           scene::method_id(s.scene.keys), s.scene.panels.size(), s.scene.panels.size() == 1 ? "" : "s");
+        return fmt::format("<pita.Scene {} ({}, {}, {} panel{})>", s.scene.path,
+                           std::string(scene::kind_name(s.scene.keys)), scene::method_id(s.scene.keys),
+                           s.scene.panels.size(), s.scene.panels.size() == 1 ? "" : "s");
       });
 
   m.def(

@@ -27,8 +27,8 @@ py::handle g_arrow_samples;
 std::string float_repr(double x) { return py::repr(py::float_(x)).cast<std::string>(); }
 
 std::string arrow_repr(const Arrow& a) {
-  return fmt::format("Arrow(p=({}, {}), m={}, w={})", float_repr(a.p.real()), float_repr(a.p.imag()),
-                     float_repr(a.m), float_repr(a.w));
+  return fmt::format("Arrow(p=({}, {}), m={}, w={})", float_repr(a.p.real()), float_repr(a.p.imag()), float_repr(a.m),
+                     float_repr(a.w));
 }
 
 template <class Matrix>
@@ -56,8 +56,7 @@ std::string pose_repr(const Pose& pose) {
 double real(const py::handle& value, const std::string& name) {
   if (PyBool_Check(value.ptr()) || !(PyFloat_Check(value.ptr()) || PyLong_Check(value.ptr()) ||
                                      py::isinstance(value, py::module_::import("numbers").attr("Real")))) {
-    throw py::type_error(fmt::format("{}: expected a real number, got {}", name,
-                                     py::repr(value).cast<std::string>()));
+    throw py::type_error(fmt::format("{}: expected a real number, got {}", name, py::repr(value).cast<std::string>()));
   }
   const double x = value.cast<double>();
   if (!std::isfinite(x)) throw py::value_error(fmt::format("{}: must be finite (got {})", name, float_repr(x)));
@@ -79,8 +78,8 @@ Point point(const py::handle& value, const std::string& name) {
   const py::array_t<double, py::array::c_style | py::array::forcecast> xy =
       py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
   if (!xy || xy.ndim() != 1 || xy.shape(0) != 2) {
-    throw py::value_error(fmt::format("{}: expected a point [x, y] of two numbers, got {}", name,
-                                      py::repr(value).cast<std::string>()));
+    throw py::value_error(
+        fmt::format("{}: expected a point [x, y] of two numbers, got {}", name, py::repr(value).cast<std::string>()));
   }
   const Point p{xy.at(0), xy.at(1)};
   if (!std::isfinite(p.real()) || !std::isfinite(p.imag())) {
@@ -132,9 +131,10 @@ Pose pose_from_matrix(const py::handle& value, const std::string& name) {
   const bool affine_rows = M.rows() == n;
   const bool homogeneous = M.rows() == n + 1;
   if ((n != 2 && n != 3) || !(affine_rows || homogeneous)) {
-    throw py::value_error(fmt::format("{}: a pose is a 2x3 or 3x3 matrix (plane) or a 3x4 or 4x4 matrix (space); "
-                                      "got {}x{}",
-                                      name, M.rows(), M.cols()));
+    throw py::value_error(
+        fmt::format("{}: a pose is a 2x3 or 3x3 matrix (plane) or a 3x4 or 4x4 matrix (space); "
+                    "got {}x{}",
+                    name, M.rows(), M.cols()));
   }
   if (homogeneous) {
     Eigen::VectorXd last = Eigen::VectorXd::Zero(n + 1);
@@ -208,9 +208,10 @@ Times read_times(const py::handle& t, const char* name) {
   const py::array raw = py::module_::import("numpy").attr("asarray")(t);
   const char kind = raw.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u') {
-    throw py::type_error(fmt::format("{}: expected real numbers (a float, an int or an array of them), got an array "
-                                     "of dtype {}",
-                                     name, py::str(raw.dtype()).cast<std::string>()));
+    throw py::type_error(
+        fmt::format("{}: expected real numbers (a float, an int or an array of them), got an array "
+                    "of dtype {}",
+                    name, py::str(raw.dtype()).cast<std::string>()));
   }
   const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(raw);
   times.scalar = values.ndim() == 0;
@@ -219,8 +220,8 @@ Times read_times(const py::handle& t, const char* name) {
   times.values.assign(data, data + values.size());
   for (std::size_t i = 0; i < times.values.size(); ++i) {
     if (!std::isfinite(times.values[i])) {
-      throw py::value_error(fmt::format("{}: every time must be finite (item {} is {})", name, i,
-                                        float_repr(times.values[i])));
+      throw py::value_error(
+          fmt::format("{}: every time must be finite (item {} is {})", name, i, float_repr(times.values[i])));
     }
   }
   return times;
@@ -241,9 +242,10 @@ Arrow read_arrow(const py::handle& value, const char* name) {
     const py::tuple t = py::reinterpret_borrow<py::tuple>(value);
     return make_arrow(t[0], t[1], t[2]);
   }
-  throw py::type_error(fmt::format("{}: expected a pita.Arrow, a dict {{\"p\", \"m\", \"w\"}} or {{\"p\", \"q\"}}, "
-                                   "or a tuple (p, m, w); got {}",
-                                   name, py::repr(value).cast<std::string>()));
+  throw py::type_error(
+      fmt::format("{}: expected a pita.Arrow, a dict {{\"p\", \"m\", \"w\"}} or {{\"p\", \"q\"}}, "
+                  "or a tuple (p, m, w); got {}",
+                  name, py::repr(value).cast<std::string>()));
 }
 
 Pose read_pose(const py::handle& value, const char* name) {
@@ -296,37 +298,41 @@ are the same segment but different arrows (the second carries one more turn).
     >>> pita.Arrow((0, 0), 1.0, 0.4)
     Arrow(p=(0.0, 0.0), m=1.0, w=0.4)
 )")
-      .def(py::init([](const py::handle& p, const py::handle& magnitude, const py::handle& w) { return make_arrow(p, magnitude, w); }),
+      .def(py::init([](const py::handle& p, const py::handle& magnitude, const py::handle& w) {
+             return make_arrow(p, magnitude, w);
+           }),
            py::arg("p"), py::arg("m"), py::arg("w"))
       .def_static(
-          "from_points", [](const py::handle& p, const py::handle& q) {
+          "from_points",
+          [](const py::handle& p, const py::handle& q) {
             const Point from = point(p, "p"), to = point(q, "q");
             if (from == to) throw py::value_error("q: must differ from p (an arrow has a magnitude > 0)");
             return zero_turn_arrow(from, to);
           },
           py::arg("p"), py::arg("q"), "The zero-turn arrow from point p to point q (winding in (-pi, pi]).")
-      .def_property_readonly("p", [](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag()); },
-                             "The start point (x, y).")
-      .def_property_readonly("m", [](const Arrow& a) { return a.m; }, "The magnitude, > 0.")
-      .def_property_readonly("w", [](const Arrow& a) { return a.w; }, "The winding, in radians, never reduced.")
-      .def_property_readonly("q", [](const Arrow& a) { return py::make_tuple(a.q().real(), a.q().imag()); },
-                             "The end point p + m e^{iw}.")
-      .def_property_readonly("turns", [](const Arrow& a) { return a.turns(); },
-                             "The whole turns k of the winding: |w - 2 k pi| <= pi.")
+      .def_property_readonly(
+          "p", [](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag()); }, "The start point (x, y).")
+      .def_property_readonly(
+          "m", [](const Arrow& a) { return a.m; }, "The magnitude, > 0.")
+      .def_property_readonly(
+          "w", [](const Arrow& a) { return a.w; }, "The winding, in radians, never reduced.")
+      .def_property_readonly(
+          "q", [](const Arrow& a) { return py::make_tuple(a.q().real(), a.q().imag()); }, "The end point p + m e^{iw}.")
+      .def_property_readonly(
+          "turns", [](const Arrow& a) { return a.turns(); }, "The whole turns k of the winding: |w - 2 k pi| <= pi.")
       .def("__repr__", &arrow_repr)
-      .def("__eq__", [](const Arrow& a, const py::object& other) -> py::object {
-        if (!py::isinstance<Arrow>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        const Arrow& b = other.cast<const Arrow&>();
-        return py::bool_(a.p == b.p && a.m == b.m && a.w == b.w);
-      })
-      .def("__hash__", [](const Arrow& a) {
-        return py::hash(py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w));
-      })
-      .def(py::pickle([](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w); },
-                      [](const py::tuple& t) {
-                        return Arrow{{t[0].cast<double>(), t[1].cast<double>()}, t[2].cast<double>(),
-                                     t[3].cast<double>()};
-                      }));
+      .def("__eq__",
+           [](const Arrow& a, const py::object& other) -> py::object {
+             if (!py::isinstance<Arrow>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+             const Arrow& b = other.cast<const Arrow&>();
+             return py::bool_(a.p == b.p && a.m == b.m && a.w == b.w);
+           })
+      .def("__hash__", [](const Arrow& a) { return py::hash(py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w)); })
+      .def(py::pickle(
+          [](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w); },
+          [](const py::tuple& t) {
+            return Arrow{{t[0].cast<double>(), t[1].cast<double>()}, t[2].cast<double>(), t[3].cast<double>()};
+          }));
 
   py::class_<PoseValue>(m, "Pose", R"(An affine pose x -> L x + b of the plane (L 2x2, b of 2) or of space (L 3x3,
 b of 3): the keyframes of the SAM paper. Pose.from_matrix takes [L | b] (2x3, 3x4) or the
@@ -339,54 +345,74 @@ homogeneous matrix (3x3, 4x4); np.asarray(pose) is [L | b].
              const Eigen::MatrixXd linear = matrix(L, "L");
              Eigen::VectorXd translation = Eigen::VectorXd::Zero(linear.rows());
              if (!b.is_none()) {
-               const Eigen::MatrixXd column = matrix(py::module_::import("numpy").attr("reshape")(b, py::make_tuple(-1, 1)), "b");
+               const Eigen::MatrixXd column =
+                   matrix(py::module_::import("numpy").attr("reshape")(b, py::make_tuple(-1, 1)), "b");
                translation = column.col(0);
              }
              return PoseValue{pose_from_parts(linear, translation, "Pose")};
            }),
            py::arg("L"), py::arg("b") = py::none())
-      .def_static("from_matrix", [](const py::handle& M) { return PoseValue{pose_from_matrix(M, "M")}; },
-                  py::arg("M"), "A pose from [L | b] (2x3, 3x4) or its homogeneous matrix (3x3, 4x4).")
-      .def_property_readonly("dimension", [](const PoseValue& v) {
-        return std::visit([]<class P>(const P&) { return PoseTraits<P>::dimension; }, v.pose);
-      })
-      .def_property_readonly("L", [](const PoseValue& v) { return linear_part(v.pose); }, "The linear part, a new array.")
-      .def_property_readonly("b", [](const PoseValue& v) { return translation(v.pose); }, "The translation, a new array.")
-      .def_property_readonly("matrix", [](const PoseValue& v) { return pose_matrix(v.pose); }, "[L | b], a new array.")
-      .def_property_readonly("homogeneous", [](const PoseValue& v) { return homogeneous(v.pose); },
-                             "The homogeneous matrix [[L, b], [0, 1]], a new array.")
-      .def("__array__", [](const PoseValue& v, const py::object& dtype, const py::object&) {
-        py::array_t<double> M = pose_matrix(v.pose);
-        return dtype.is_none() ? py::object(M) : py::object(M.attr("astype")(dtype));
-      }, py::arg("dtype") = py::none(), py::arg("copy") = py::none())
-      .def("__matmul__", [](const PoseValue& a, const PoseValue& b) -> PoseValue {
-        if (a.pose.index() != b.pose.index()) throw py::value_error("a pose of the plane and one of space do not compose");
-        return std::visit(overloaded{[&](const Affine2& A) { return PoseValue{compose(A, std::get<Affine2>(b.pose))}; },
-                                     [&](const Affine3& A) { return PoseValue{compose(A, std::get<Affine3>(b.pose))}; }},
-                          a.pose);
-      }, "a @ b: first b, then a.")
-      .def("inverse", [](const PoseValue& v) {
-        return std::visit([](const auto& A) -> PoseValue {
-          if (A.L.determinant() == 0.0) throw py::value_error("the pose is singular (det L = 0): no inverse");
-          return PoseValue{inverse(A)};
-        }, v.pose);
-      })
+      .def_static(
+          "from_matrix", [](const py::handle& M) { return PoseValue{pose_from_matrix(M, "M")}; }, py::arg("M"),
+          "A pose from [L | b] (2x3, 3x4) or its homogeneous matrix (3x3, 4x4).")
+      .def_property_readonly("dimension",
+                             [](const PoseValue& v) {
+                               return std::visit([]<class P>(const P&) { return PoseTraits<P>::dimension; }, v.pose);
+                             })
+      .def_property_readonly(
+          "L", [](const PoseValue& v) { return linear_part(v.pose); }, "The linear part, a new array.")
+      .def_property_readonly(
+          "b", [](const PoseValue& v) { return translation(v.pose); }, "The translation, a new array.")
+      .def_property_readonly(
+          "matrix", [](const PoseValue& v) { return pose_matrix(v.pose); }, "[L | b], a new array.")
+      .def_property_readonly(
+          "homogeneous", [](const PoseValue& v) { return homogeneous(v.pose); },
+          "The homogeneous matrix [[L, b], [0, 1]], a new array.")
+      .def(
+          "__array__",
+          [](const PoseValue& v, const py::object& dtype, const py::object&) {
+            py::array_t<double> M = pose_matrix(v.pose);
+            return dtype.is_none() ? py::object(M) : py::object(M.attr("astype")(dtype));
+          },
+          py::arg("dtype") = py::none(), py::arg("copy") = py::none())
+      .def(
+          "__matmul__",
+          [](const PoseValue& a, const PoseValue& b) -> PoseValue {
+            if (a.pose.index() != b.pose.index())
+              throw py::value_error("a pose of the plane and one of space do not compose");
+            return std::visit(
+                overloaded{[&](const Affine2& A) { return PoseValue{compose(A, std::get<Affine2>(b.pose))}; },
+                           [&](const Affine3& A) { return PoseValue{compose(A, std::get<Affine3>(b.pose))}; }},
+                a.pose);
+          },
+          "a @ b: first b, then a.")
+      .def("inverse",
+           [](const PoseValue& v) {
+             return std::visit(
+                 [](const auto& A) -> PoseValue {
+                   if (A.L.determinant() == 0.0) throw py::value_error("the pose is singular (det L = 0): no inverse");
+                   return PoseValue{inverse(A)};
+                 },
+                 v.pose);
+           })
       .def("__repr__", [](const PoseValue& v) { return pose_repr(v.pose); })
-      .def("__eq__", [](const PoseValue& a, const py::object& other) -> py::object {
-        if (!py::isinstance<PoseValue>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
-        const PoseValue& b = other.cast<const PoseValue&>();
-        if (a.pose.index() != b.pose.index()) return py::bool_(false);
-        return py::bool_(std::visit(
-            [&](const auto& A) {
-              const auto& B = std::get<std::decay_t<decltype(A)>>(b.pose);
-              return A.L == B.L && A.b == B.b;
-            },
-            a.pose));
-      })
-      .def("__hash__", [](const PoseValue& v) {
-        // of the numbers, as == compares them (-0.0 == 0.0 hash alike)
-        return py::hash(py::tuple(pose_matrix(v.pose).attr("ravel")().attr("tolist")()));
-      })
+      .def("__eq__",
+           [](const PoseValue& a, const py::object& other) -> py::object {
+             if (!py::isinstance<PoseValue>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+             const PoseValue& b = other.cast<const PoseValue&>();
+             if (a.pose.index() != b.pose.index()) return py::bool_(false);
+             return py::bool_(std::visit(
+                 [&](const auto& A) {
+                   const auto& B = std::get<std::decay_t<decltype(A)>>(b.pose);
+                   return A.L == B.L && A.b == B.b;
+                 },
+                 a.pose));
+           })
+      .def("__hash__",
+           [](const PoseValue& v) {
+             // of the numbers, as == compares them (-0.0 == 0.0 hash alike)
+             return py::hash(py::tuple(pose_matrix(v.pose).attr("ravel")().attr("tolist")()));
+           })
       .def(py::pickle([](const PoseValue& v) { return py::make_tuple(pose_matrix(v.pose)); },
                       [](const py::tuple& t) { return PoseValue{pose_from_matrix(t[0], "M")}; }));
 }

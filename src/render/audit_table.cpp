@@ -47,6 +47,9 @@ PropertyTable property_table(const analysis::AuditReport& report) {
   PropertyTable t;
   Drawing& d = t.drawing;
   const auto push = [&](Shape s) { d.items.push_back(Item{"/audit", -1, std::move(s), false}); };
+  const auto label = [&](std::string text, double x, double y, double size, const Color& ink) {
+    push(Label{std::move(text), {x, y}, size, ink});
+  };
   const double x0 = kMargin, y0 = kMargin;
   const std::size_t rows = report.properties.size(), columns = report.methods.size();
   const double grid_x = x0 + kPropertyWidth;
@@ -55,24 +58,24 @@ PropertyTable property_table(const analysis::AuditReport& report) {
   const auto row_y = [&](std::size_t i) { return y0 + kHeader + kRowHeight * static_cast<double>(i); };
   // Column headers: the methods, and the paper's column.
   for (std::size_t j = 0; j < columns; ++j) {
-    push(Label{std::string(info(report.methods[j]).id),
-               {grid_x + kColumnWidth * static_cast<double>(j) + 6.0, y0 + kHeader / 2}, 13.0, kTableInk});
+    label(std::string(info(report.methods[j]).id), grid_x + kColumnWidth * static_cast<double>(j) + 6.0,
+          y0 + kHeader / 2, 13.0, kTableInk);
   }
-  push(Label{"the paper (P1-P8)", {paper_x + 6.0, y0 + kHeader / 2}, 12.0, kTableInk});
+  label("the paper (P1-P8)", paper_x + 6.0, y0 + kHeader / 2, 12.0, kTableInk);
   for (std::size_t i = 0; i < rows; ++i) {
     const analysis::Property property = report.properties[i];
     const analysis::PropertyInfo& p = info(property);
     const double y = row_y(i);
-    push(Label{p.letter.empty() ? std::string("-") : std::string(p.letter), {x0 + 4.0, y + kRowHeight / 2}, 12.0,
-               kDiffers});
-    push(Label{std::string(p.id), {x0 + 22.0, y + kRowHeight / 2}, 12.0, kTableInk});
+    label(p.letter.empty() ? std::string("-") : std::string(p.letter), x0 + 4.0, y + kRowHeight / 2, 12.0, kDiffers);
+    label(std::string(p.id), x0 + 22.0, y + kRowHeight / 2, 12.0, kTableInk);
     for (std::size_t j = 0; j < columns; ++j) {
       const Method m = report.methods[j];
       const analysis::AuditCell& c = report.cell(m, property);
       const double x = grid_x + kColumnWidth * static_cast<double>(j);
-      push(FilledPath{{rectangle_corners(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
-      push(Label{fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), {x + 4.0, y + kRowHeight / 2},
-                 10.0, kTableInk});
+      push(FilledPath{
+          {rectangle_corners(x, y, kColumnWidth, kRowHeight)}, c.holds ? kHolds : kFails, 1.0, std::nullopt});
+      label(fmt::format("{} {}", c.holds ? "yes" : "no", value_text(c.value)), x + 4.0, y + kRowHeight / 2, 10.0,
+            kTableInk);
       const std::optional<bool> said = analysis::printed(m, property);
       if (said && *said != c.holds) {
         push(Polyline{rectangle_corners(x + 2.0, y + 2.0, kColumnWidth - 4.0, kRowHeight - 4.0), true,
@@ -80,16 +83,16 @@ PropertyTable property_table(const analysis::AuditReport& report) {
       }
     }
     for (const analysis::PrintedRow& row : analysis::printed_table()) {
-      if (row.property == property) push(Label{letters(row.printed), {paper_x + 6.0, y + kRowHeight / 2}, 11.0, kTableInk});
+      if (row.property == property) label(letters(row.printed), paper_x + 6.0, y + kRowHeight / 2, 11.0, kTableInk);
     }
   }
   // The inverse (Fig. 10's right half): per method, the letters it has.
   const double inverse_y = row_y(rows);
-  push(Label{"has (H W P K O A L)", {x0 + 4.0, inverse_y + kRowHeight / 2}, 12.0, kTableInk});
+  label("has (H W P K O A L)", x0 + 4.0, inverse_y + kRowHeight / 2, 12.0, kTableInk);
   for (std::size_t j = 0; j < columns; ++j) {
     const std::string has = property_letters(report, report.methods[j]);
-    push(Label{has.empty() ? std::string("-") : has,
-               {grid_x + kColumnWidth * static_cast<double>(j) + 6.0, inverse_y + kRowHeight / 2}, 12.0, kTableInk});
+    label(has.empty() ? std::string("-") : has, grid_x + kColumnWidth * static_cast<double>(j) + 6.0,
+          inverse_y + kRowHeight / 2, 12.0, kTableInk);
   }
   // The grid.
   const LineStyle grid{Color{0.4, 0.4, 0.4, 1.0}, 0.8, 1.0, {}};
@@ -101,14 +104,15 @@ PropertyTable property_table(const analysis::AuditReport& report) {
     push(Polyline{{{x, row_y(0)}, {x, row_y(rows + 1)}}, false, grid});
   }
   double y = row_y(rows + 1) + 26.0;
-  push(Label{fmt::format("Measured by pita audit: seed {}, {} random configurations and {} crafted. Green: holds; red: "
-                         "fails; ringed: the paper prints otherwise.",
-                         report.options.seed, report.options.configs, analysis::crafted_configs().size()),
-             {x0, y}, 12.0, kTableInk});
+  label(fmt::format("Measured by pita audit: seed {}, {} random configurations and {} crafted. Green: holds; red: "
+                    "fails; ringed: the paper prints otherwise.",
+                    report.options.seed, report.options.configs, analysis::crafted_configs().size()),
+        x0, y, 12.0, kTableInk);
   y += 18.0;
-  push(Label{"The number is the worst value measured: the largest deviation, or, for winding-aware and "
-             "knot-controlled, the smallest reaction (pita's docs/reference/audit.md).",
-             {x0, y}, 12.0, kTableInk});
+  label(
+      "The number is the worst value measured: the largest deviation, or, for winding-aware and "
+      "knot-controlled, the smallest reaction (pita's docs/reference/audit.md).",
+      x0, y, 12.0, kTableInk);
   t.width = table_w + 2 * kMargin;
   t.height = y + kMargin;
   return t;

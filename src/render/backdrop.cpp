@@ -1,11 +1,10 @@
 #include "render/backdrop.hpp"
 
-#include <cairo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
+#include <cairo.h>
 #include <fmt/format.h>
 
 #include "render/layout.hpp"
@@ -36,7 +35,8 @@ Rect grown(const Rect& r, double by) { return {r.x - by, r.y - by, r.width + 2 *
 SurfacePtr new_surface(const scene::Scene& scene, int width, int height) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) {
-    throw RenderError(scene.path, "", fmt::format("cairo failed: {}", cairo_status_to_string(cairo_surface_status(surface.get()))));
+    throw RenderError(scene.path, "",
+                      fmt::format("cairo failed: {}", cairo_status_to_string(cairo_surface_status(surface.get()))));
   }
   return surface;
 }
@@ -48,7 +48,8 @@ void paint_on(const scene::Scene& scene, cairo_surface_t* surface, double scale,
     cairo_scale(cr.get(), scale, scale);
     paint_figure(cr.get(), scene, figure, part);
     if (cairo_status(cr.get()) != CAIRO_STATUS_SUCCESS) {
-      throw RenderError(scene.path, "", fmt::format("cairo failed: {}", cairo_status_to_string(cairo_status(cr.get()))));
+      throw RenderError(scene.path, "",
+                        fmt::format("cairo failed: {}", cairo_status_to_string(cairo_status(cr.get()))));
     }
   }
   cairo_surface_flush(surface);
@@ -108,8 +109,7 @@ SurfacePtr FrameBackdrop::paint(const Figure& frame) const {
   bool over = active() && frame.drawings.size() == leading_.size();
   for (std::size_t i = 0; over && i < leading_.size(); ++i) {
     const std::vector<Item>& items = frame.drawings[i].items;
-    over = items.size() >= leading_[i] &&
-           std::equal(leading_items_[i].begin(), leading_items_[i].end(), items.begin());
+    over = items.size() >= leading_[i] && std::equal(leading_items_[i].begin(), leading_items_[i].end(), items.begin());
   }
   if (!over) {
     paint_on(scene_, surface.get(), scale_, frame, WholeFigure{});

@@ -46,9 +46,9 @@ class FrameBackdrop {
   const scene::Scene& scene_;
   int width_ = 0, height_ = 0;
   double scale_ = 1.0;
-  std::vector<std::size_t> leading_;  // per drawing: the items in the backdrop
+  std::vector<std::size_t> leading_;              // per drawing: the items in the backdrop
   std::vector<std::vector<Item>> leading_items_;  // and those items, as frames must begin
-  SurfacePtr surface_;                // null: every frame is painted whole
+  SurfacePtr surface_;                            // null: every frame is painted whole
 };
 
 // Per drawing, the number of leading items that do not move.

@@ -1,9 +1,5 @@
 #include "render/budget.hpp"
 
-#include "analysis/audit_configs.hpp"
-
-#include "motion/moving_keyframes.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -12,9 +8,11 @@
 
 #include <fmt/format.h>
 
+#include "analysis/audit_configs.hpp"
 #include "analysis/measure.hpp"
-#include "core/overloaded.hpp"
 #include "analysis/swept_edge.hpp"
+#include "core/overloaded.hpp"
+#include "motion/moving_keyframes.hpp"
 #include "motion/scene_motion.hpp"
 #include "render/figure.hpp"
 #include "render/layer_cost.hpp"
@@ -158,9 +156,8 @@ void check_budget(const scene::Scene& scene, const FigureCost& cost, double fact
       units += part.units;
       parts.push_back(&part);
     }
-    return *std::max_element(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
-      return a.second.first < b.second.first;
-    });
+    return *std::max_element(groups.begin(), groups.end(),
+                             [](const auto& a, const auto& b) { return a.second.first < b.second.first; });
   };
   const auto largest = [](const std::vector<const CostPart*>& parts) {
     return *std::max_element(parts.begin(), parts.end(),
@@ -168,21 +165,18 @@ void check_budget(const scene::Scene& scene, const FigureCost& cost, double fact
   };
   std::string pointer, what;
   double units = 0.0;
-  if (const auto [field, share] = group([](const CostPart& p) { return p.pointer; });
-      share.first >= 0.5 * cost.units) {
+  if (const auto [field, share] = group([](const CostPart& p) { return p.pointer; }); share.first >= 0.5 * cost.units) {
     pointer = field;
     units = share.first;
-    what = share.second.size() == 1 ? share.second.front()->what
-                                    : fmt::format("{} in each of {} places",
-                                                  share.second.front()->what, share.second.size());
-  } else if (const auto [list, in_list] = group([](const CostPart& p) {
-               return p.layer.substr(0, p.layer.rfind("/layers/")) + "/layers";
-             });
+    what = share.second.size() == 1
+               ? share.second.front()->what
+               : fmt::format("{} in each of {} places", share.second.front()->what, share.second.size());
+  } else if (const auto [list, in_list] =
+                 group([](const CostPart& p) { return p.layer.substr(0, p.layer.rfind("/layers/")) + "/layers"; });
              in_list.first >= 0.5 * cost.units) {
     pointer = list;
     units = in_list.first;
-    what = fmt::format("{} layer drawings, the largest {}", in_list.second.size(),
-                       largest(in_list.second)->what);
+    what = fmt::format("{} layer drawings, the largest {}", in_list.second.size(), largest(in_list.second)->what);
   } else {
     pointer = scene.panels.size() > 1 ? "/panels" : "";
     units = cost.units;
@@ -193,27 +187,25 @@ void check_budget(const scene::Scene& scene, const FigureCost& cost, double fact
                     fmt::format("{}: the figure would draw about {} points, beyond the budget of "
                                 "{} ({:.0f}% of it from here); lower this, or raise the budget "
                                 "with --budget F of pita render or pita animate (F times the default)",
-                                what, count_text(cost.units), count_text(budget),
-                                100.0 * units / cost.units));
+                                what, count_text(cost.units), count_text(budget), 100.0 * units / cost.units));
 }
 
 void check_pixel_budget(const scene::Scene& scene, double scale, double factor) {
   const double pixels = std::round(scene.canvas.width * scale) * std::round(scene.canvas.height * scale);
   const double budget = kDefaultBudgetPixels * factor;
   if (pixels <= budget) return;
-  throw RenderError(scene.path, "/canvas",
-                    fmt::format("a PNG of {} pixels ({}x{} at scale {}) is beyond the budget of {} "
-                                "pixels; lower the scale, or raise the budget with "
-                                "--budget F of pita render or pita animate",
-                                count_text(pixels), scene.canvas.width, scene.canvas.height, scale,
-                                count_text(budget)));
+  throw RenderError(
+      scene.path, "/canvas",
+      fmt::format("a PNG of {} pixels ({}x{} at scale {}) is beyond the budget of {} "
+                  "pixels; lower the scale, or raise the budget with "
+                  "--budget F of pita render or pita animate",
+                  count_text(pixels), scene.canvas.width, scene.canvas.height, scale, count_text(budget)));
 }
 
 namespace {
 
 // Canvas length of a polyline's segments, each at most `clip` long.
-double clipped_length(const std::vector<Point>& points, bool closed, const ViewTransform& view,
-                      double clip) {
+double clipped_length(const std::vector<Point>& points, bool closed, const ViewTransform& view, double clip) {
   double length = 0.0;
   for (std::size_t i = 1; i < points.size(); ++i) {
     length += std::min(std::abs(points[i] - points[i - 1]) * view.scale, clip);
@@ -237,9 +229,7 @@ struct Ink {
   double operator()(const Circle& s) const {
     return std::min(2.0 * std::numbers::pi * s.radius * view.scale, 4.0 * clip);
   }
-  double operator()(const ArrowShape& s) const {
-    return 2.0 * std::min(std::abs(s.to - s.from) * view.scale, clip);
-  }
+  double operator()(const ArrowShape& s) const { return 2.0 * std::min(std::abs(s.to - s.from) * view.scale, clip); }
   double operator()(const Label&) const { return 0.0; }
   // An image costs like a fill: its area, at most the panel's.
   double operator()(const Image&) const { return clip; }
@@ -265,15 +255,14 @@ void check_ink_budget(const scene::Scene& scene, const Figure& figure, double sc
   for (const auto& [layer, ink] : layers) total += ink * scale;
   const double budget = kDefaultBudgetInk * factor;
   if (total <= budget) return;
-  const auto worst = std::max_element(layers.begin(), layers.end(),
-                                      [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto worst =
+      std::max_element(layers.begin(), layers.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
   throw RenderError(scene.path, worst->first,
                     fmt::format("the PNG would stroke about {} pixels of lines ({:.0f}% of them "
                                 "drawn by this layer), beyond the budget of {}; lower the scale, "
                                 "the samples or the shapes' sizes, or raise the budget with --budget F of "
                                 "pita render or pita animate",
-                                count_text(total), 100.0 * worst->second * scale / total,
-                                count_text(budget)));
+                                count_text(total), 100.0 * worst->second * scale / total, count_text(budget)));
 }
 
 }  // namespace pita::render

@@ -67,7 +67,6 @@ std::vector<std::pair<std::string, double>> ink_by_layer(const Figure& figure);
 
 // Throws RenderError naming the layer with the most ink when a PNG at `scale`
 // would stroke more than factor x kDefaultBudgetInk pixels of lines.
-void check_ink_budget(const scene::Scene& scene, const Figure& figure, double scale,
-                      double factor = 1.0);
+void check_ink_budget(const scene::Scene& scene, const Figure& figure, double scale, double factor = 1.0);
 
 }  // namespace pita::render

@@ -61,7 +61,9 @@ std::optional<CanvasOutline> canvas_outline(const Shape& shape, const ViewTransf
                           add_path(out, points, true);
                           if (s.fill) out.areas.push_back(points);
                         },
-                        [&](const ArrowShape& s) { out.edges.push_back({view(s.from), view(s.to)}); },
+                        [&](const ArrowShape& s) {
+                          out.edges.push_back({view(s.from), view(s.to)});
+                        },
                         [&](const Label&) {},
                         [&](const Image& s) {
                           const auto corners = image_corners(s);

@@ -38,9 +38,9 @@ bool lies_under(const CanvasOutline& outline, const Rect& box, bool areas);
 bool intersects(const Rect& a, const Rect& b);  // overlap (touching sides do not)
 Rect united(const Rect& a, const Rect& b);      // an empty_rect() is nothing
 Rect empty_rect();
-Rect shrunk(const Rect& r, double by);          // by `by` on every side, never below 0
+Rect shrunk(const Rect& r, double by);  // by `by` on every side, never below 0
 bool contains(const Rect& outer, const Rect& inner);
-bool edge_meets(const Edge& e, const Rect& r);             // any point of e inside r
+bool edge_meets(const Edge& e, const Rect& r);            // any point of e inside r
 bool inside(const std::vector<Point>& contour, Point p);  // nonzero winding
 
 }  // namespace pita::render

@@ -20,7 +20,7 @@ std::vector<Shape> carried_shapes(const std::vector<scene::ShapeOutline>& shapes
   for (const scene::ShapeOutline& shape : shapes) {
     if (shape.image) {
       drawn.emplace_back(Image{shape.image->path, shape.image->given, shape.image->width, shape.image->height,
-                            compose(map, image_placement(shape, y_up)), fade});
+                               compose(map, image_placement(shape, y_up)), fade});
       continue;
     }
     LineStyle line = layer.line;

@@ -10,10 +10,10 @@ namespace pita::render {
 
 namespace {
 
-constexpr double kLevel = 64.0;       // pixels between the tops of two levels
+constexpr double kLevel = 64.0;  // pixels between the tops of two levels
 constexpr double kTitleHeight = 30.0;
-constexpr double kGap = 14.0;         // between two leaves
-constexpr double kPad = 6.0;          // inside a box
+constexpr double kGap = 14.0;  // between two leaves
+constexpr double kPad = 6.0;   // inside a box
 constexpr double kQuestionSize = 12.0, kLeafSize = 12.0, kLettersSize = 11.0, kBranchSize = 10.0;
 const Color kInk{0.1, 0.1, 0.1, 1.0};
 const Color kQuestionFill{0.93, 0.93, 0.93, 1.0};
@@ -34,17 +34,19 @@ class Layout {
   Label centred(const std::string& text, double size, Point centre, const Color& color) const {
     const Rect box = ink(text, size);
     // paint_text puts the layout's top 0.6 size above the anchor (render/painter.cpp).
-    return Label{text, {centre.real() - (box.x + 0.5 * box.width), centre.imag() - (box.y + 0.5 * box.height) + 0.6 * size},
-                 size, color};
+    return Label{text,
+                 {centre.real() - (box.x + 0.5 * box.width), centre.imag() - (box.y + 0.5 * box.height) + 0.6 * size},
+                 size,
+                 color};
   }
 
   std::string leaf_text(const analysis::DecisionNode& node) const {
     std::string text;
     for (const Method m : node.methods) {
       const MethodInfo& about = info(m);
-      text += fmt::format("{}{}", text.empty() ? "" : ", ",
-                          about.id == about.mnemonic ? std::string(about.id)
-                                                     : fmt::format("{} {}", about.id, about.mnemonic));
+      text += fmt::format(
+          "{}{}", text.empty() ? "" : ", ",
+          about.id == about.mnemonic ? std::string(about.id) : fmt::format("{} {}", about.id, about.mnemonic));
     }
     return text;
   }
@@ -87,13 +89,15 @@ class Layout {
     const double top = kTitleHeight + kLevel * depth;
     if (!n.question) {
       const double h = 38.0;
-      out.push_back(FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kLeafFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
+      out.push_back(
+          FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kLeafFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
       out.push_back(centred(leaf_text(n), kLeafSize, {x, top + 12.0}, kInk));
       out.push_back(centred(letters_text(n), kLettersSize, {x, top + 27.0}, kInk));
       return;
     }
     const double h = 24.0;
-    out.push_back(FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kQuestionFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
+    out.push_back(
+        FilledPath{{rectangle_corners(x - 0.5 * w, top, w, h)}, kQuestionFill, 1.0, LineStyle{kEdge, 0.8, 1.0, {}}});
     out.push_back(centred(std::string(info(*n.question).id) + "?", kQuestionSize, {x, top + 0.5 * h}, kInk));
     for (const auto& [child, word] : {std::pair{n.yes, "yes"}, std::pair{n.no, "no"}}) {
       const Point from{x, top + h}, to{x_[static_cast<std::size_t>(child)], top + kLevel};

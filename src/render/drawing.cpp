@@ -49,9 +49,8 @@ bool finite(Point p) { return std::isfinite(p.real()) && std::isfinite(p.imag())
 struct FiniteCheck {
   bool operator()(const Polyline& s) const { return std::all_of(s.points.begin(), s.points.end(), finite); }
   bool operator()(const FilledPath& s) const {
-    return std::all_of(s.contours.begin(), s.contours.end(), [](const auto& contour) {
-      return std::all_of(contour.begin(), contour.end(), finite);
-    });
+    return std::all_of(s.contours.begin(), s.contours.end(),
+                       [](const auto& contour) { return std::all_of(contour.begin(), contour.end(), finite); });
   }
   bool operator()(const Circle& s) const { return finite(s.center) && std::isfinite(s.radius); }
   bool operator()(const ArrowShape& s) const { return finite(s.from) && finite(s.to); }

@@ -72,10 +72,10 @@ struct Label {
 // pixel (u, v) of the file, v down, lands at to_world(u, v). The painter
 // reads the file through cairo (render/image_cache.hpp).
 struct Image {
-  std::string path;       // the file to read
-  std::string name;       // as the scene spells it
+  std::string path;  // the file to read
+  std::string name;  // as the scene spells it
   int width = 0, height = 0;
-  Affine2 to_world;       // pixel coordinates -> world
+  Affine2 to_world;  // pixel coordinates -> world
   double opacity = 1.0;
   friend bool operator==(const Image& a, const Image& b) {
     return a.path == b.path && a.name == b.name && a.width == b.width && a.height == b.height &&
@@ -108,7 +108,7 @@ struct Legend {
   scene::LegendLayer::Corner corner = scene::LegendLayer::Corner::top_left;
   double size = 11.0;
   std::vector<LegendEntry> entries;
-  bool swatches = true;  // false: text only, flush with the corner's side (a "measures" layer)
+  bool swatches = true;    // false: text only, flush with the corner's side (a "measures" layer)
   std::string layer = {};  // the JSON Pointer of the layer that prints it (what `pita lint` names)
 };
 

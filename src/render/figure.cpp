@@ -1,15 +1,14 @@
 #include "render/figure.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-#include <cairo.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <memory>
 
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
 #include <fmt/format.h>
 
 #include "core/overloaded.hpp"
@@ -20,9 +19,9 @@
 #include "render/image_cache.hpp"
 #include "render/label_placement.hpp"
 #include "render/painter.hpp"
+#include "render/panel_drawing.hpp"
 #include "render/png_writer.hpp"
 #include "render/pose_drawing.hpp"
-#include "render/panel_drawing.hpp"
 
 namespace pita::render {
 
@@ -31,8 +30,7 @@ namespace {
 constexpr auto append = append_to_string;
 
 bool finite_transform(const ViewTransform& t) {
-  return std::isfinite(t.scale) && std::isfinite(t.world_center.real()) &&
-         std::isfinite(t.world_center.imag());
+  return std::isfinite(t.scale) && std::isfinite(t.world_center.real()) && std::isfinite(t.world_center.imag());
 }
 
 }  // namespace
@@ -110,9 +108,7 @@ std::string canonical_ids(const std::string& svg, std::string_view kPrefix) {
 
 }  // namespace
 
-std::string canonical_svg_ids(const std::string& svg) {
-  return canonical_ids(canonical_ids(svg, "surface"), "image");
-}
+std::string canonical_svg_ids(const std::string& svg) { return canonical_ids(canonical_ids(svg, "surface"), "image"); }
 
 std::optional<Format> format_from_name(std::string_view name) {
   std::string lower(name);
@@ -126,9 +122,12 @@ std::optional<Format> format_from_name(std::string_view name) {
 
 std::string_view extension(Format format) {
   switch (format) {
-    case Format::svg: return "svg";
-    case Format::png: return "png";
-    case Format::pdf: return "pdf";
+    case Format::svg:
+      return "svg";
+    case Format::png:
+      return "png";
+    case Format::pdf:
+      return "pdf";
   }
   return "";
 }
@@ -152,8 +151,7 @@ std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelec
                    [&](const scene::SpacePoseKeys&) { return pose_panel_drawing<Affine3>(stage, i, selection); }},
         panel.keys);
     if (!is_finite(drawing)) {
-      throw RenderError(scene.path, panel.pointer,
-                        "the figure has non-finite coordinates (the motion overflows)");
+      throw RenderError(scene.path, panel.pointer, "the figure has non-finite coordinates (the motion overflows)");
     }
     drawings.push_back(std::move(drawing));
   }
@@ -222,8 +220,7 @@ Figure build_figure(const scene::Scene& scene, double budget) { return built_fig
 
 Figure build_figure(const motion::Stage& stage, double budget) { return built_figure(stage.scene(), &stage, budget); }
 
-std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& figure, double scale,
-                                     double budget) {
+std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& figure, double scale, double budget) {
   const double width = scene.canvas.width, height = scene.canvas.height;
   const double w = std::round(width * scale), h = std::round(height * scale);
   if (!(scale >= kMinScale && scale <= kMaxScale) || w > kMaxPngSide || h > kMaxPngSide) {
@@ -243,8 +240,7 @@ std::string encode_png(const scene::Scene& scene, cairo_surface_t* surface) {
   return bytes;
 }
 
-std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
-                          double scale, double budget) {
+std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format, double scale, double budget) {
   const double width = scene.canvas.width, height = scene.canvas.height;
   std::string bytes;
   SurfacePtr surface;
@@ -256,8 +252,7 @@ std::string render_figure(const scene::Scene& scene, const Figure& figure, Forma
     case Format::pdf:
       surface.reset(cairo_pdf_surface_create_for_stream(append, &bytes, width, height));
       // A fixed date keeps the output byte-identical from run to run.
-      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE,
-                                     "2000-01-01T00:00:00Z");
+      cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
       cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "pita");
       if (!scene.title.empty()) {
         cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, scene.title.c_str());

@@ -10,9 +10,9 @@
 #include <variant>
 #include <vector>
 
-#include "render/drawing.hpp"
 #include <cairo.h>
 
+#include "render/drawing.hpp"
 #include "render/layout.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
@@ -91,7 +91,7 @@ std::string canonical_svg_ids(const std::string& svg);
 // vector: 1 canvas pixel = 1 unit). The same scene gives the same bytes.
 // Throws RenderError, also when a PNG has more pixels than `budget` times the
 // default pixel budget.
-std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format,
-                          double scale = 1.0, double budget = 1.0);
+std::string render_figure(const scene::Scene& scene, const Figure& figure, Format format, double scale = 1.0,
+                          double budget = 1.0);
 
 }  // namespace pita::render

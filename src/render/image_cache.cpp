@@ -1,20 +1,19 @@
 #include "render/image_cache.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
-#include <iterator>
-#include <string>
-#include <system_error>
 #include <fstream>
+#include <iterator>
 #include <list>
 #include <memory>
+#include <string>
+#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include "render/cairo_handles.hpp"
 
@@ -40,8 +39,8 @@ std::string file_stamp(const std::string& path) {
   // The inode and the status change time too: a copy that keeps the
   // modification time (cp -p) or a rewrite of the same size in the same
   // tick is still another version.
-  return fmt::format("{}:{}:{}.{}:{}.{}", status.st_ino, status.st_size, status.st_mtim.tv_sec,
-                     status.st_mtim.tv_nsec, status.st_ctim.tv_sec, status.st_ctim.tv_nsec);
+  return fmt::format("{}:{}:{}.{}:{}.{}", status.st_ino, status.st_size, status.st_mtim.tv_sec, status.st_mtim.tv_nsec,
+                     status.st_ctim.tv_sec, status.st_ctim.tv_nsec);
 }
 
 // One thread's images, the most recently used first.
@@ -111,8 +110,7 @@ std::string decode_failure(const std::string& path, cairo_status_t status) {
     return fmt::format("out of memory decoding a PNG of {} x {} pixels", width, height);
   }
   return fmt::format("corrupt PNG (cairo: {}; a {} x {} image, truncated or damaged after its header)",
-                     status == CAIRO_STATUS_READ_ERROR ? "read error" : cairo_status_to_string(status), width,
-                     height);
+                     status == CAIRO_STATUS_READ_ERROR ? "read error" : cairo_status_to_string(status), width, height);
 }
 
 }  // namespace

@@ -6,11 +6,11 @@
 // painting: a thread evicts its least recently used images first.
 #pragma once
 
-#include <cairo.h>
-
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+
+#include <cairo.h>
 
 namespace pita::render {
 

@@ -42,14 +42,22 @@ Rect spot_box(const Rect& ink, Point at, Spot spot, double gap) {
   const double left = x - gap - w, right = x + gap, centre_x = x - 0.5 * w;
   const double above = y - gap - h, below = y + gap, centre_y = y - 0.5 * h;
   switch (spot) {
-    case Spot::right: return {right, centre_y, w, h};
-    case Spot::above_right: return {right, above, w, h};
-    case Spot::above: return {centre_x, above, w, h};
-    case Spot::above_left: return {left, above, w, h};
-    case Spot::left: return {left, centre_y, w, h};
-    case Spot::below_left: return {left, below, w, h};
-    case Spot::below: return {centre_x, below, w, h};
-    case Spot::below_right: return {right, below, w, h};
+    case Spot::right:
+      return {right, centre_y, w, h};
+    case Spot::above_right:
+      return {right, above, w, h};
+    case Spot::above:
+      return {centre_x, above, w, h};
+    case Spot::above_left:
+      return {left, above, w, h};
+    case Spot::left:
+      return {left, centre_y, w, h};
+    case Spot::below_left:
+      return {left, below, w, h};
+    case Spot::below:
+      return {centre_x, below, w, h};
+    case Spot::below_right:
+      return {right, below, w, h};
   }
   return ink;
 }

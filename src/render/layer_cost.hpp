@@ -18,8 +18,7 @@ namespace pita::render::detail {
 
 class LayerCost {
  public:
-  LayerCost(const scene::Scene& scene, const scene::Panel& panel, std::string layer,
-            FigureCost& cost)
+  LayerCost(const scene::Scene& scene, const scene::Panel& panel, std::string layer, FigureCost& cost)
       : scene_(scene), panel_(panel), layer_(std::move(layer)), cost_(cost) {}
 
   // One overload per layer struct of Layer and PoseLayer (the compiler refuses

@@ -65,8 +65,7 @@ double legend_height(const Legend& legend) {
   return kLegendLineHeight * legend.size * static_cast<double>(legend.entries.size());
 }
 
-std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
-                                          const std::vector<Drawing>& drawings) {
+std::vector<PanelPlacement> layout_panels(const scene::Scene& scene, const std::vector<Drawing>& drawings) {
   const scene::Canvas& canvas = scene.canvas;
   const int n = static_cast<int>(drawings.size());
   if (n == 0) return {};
@@ -100,8 +99,7 @@ std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
     p.cell = {cell_w * (i % columns), top + cell_h * (i / columns), cell_w, cell_h};
     const bool titled = !scene.panels[static_cast<std::size_t>(i)].title.empty();
     p.title = {p.cell.x, p.cell.y, p.cell.width, titled ? kPanelTitleBand : 0.0};
-    const Rect inner{p.cell.x, p.cell.y + p.title.height, p.cell.width,
-                     std::max(p.cell.height - p.title.height, 1.0)};
+    const Rect inner{p.cell.x, p.cell.y + p.title.height, p.cell.width, std::max(p.cell.height - p.title.height, 1.0)};
     const double margin = canvas.margin * std::min(inner.width, inner.height);
     const Bands bands = canvas.view || shared ? common : legend_bands(drawings[static_cast<std::size_t>(i)]);
     // A legend takes at most a third of the panel's height; beyond, it lies over the data (pita lint says so).

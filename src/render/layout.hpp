@@ -55,7 +55,6 @@ struct PanelPlacement {
 // plot area leaves room above and below for the legends in the panel's top
 // and bottom corners, so that they do not lie over the data (with a shared
 // or given view, every panel leaves the room of the most, to keep one scale).
-std::vector<PanelPlacement> layout_panels(const scene::Scene& scene,
-                                          const std::vector<Drawing>& drawings);
+std::vector<PanelPlacement> layout_panels(const scene::Scene& scene, const std::vector<Drawing>& drawings);
 
 }  // namespace pita::render

@@ -15,25 +15,38 @@ std::string number(double x) { return rounding_or_value(x); }
 std::string missing(const scene::MeasureName& name) {
   using scene::MeasureKind;
   switch (name.kind) {
-    case MeasureKind::discrepancy_max: return "E max: -";
+    case MeasureKind::discrepancy_max:
+      return "E max: -";
     case MeasureKind::discrepancy_of:
-    case MeasureKind::discrepancy_time: return fmt::format("E max ({}): -", name.parameter);
-    case MeasureKind::path_length: return "length: -";
-    case MeasureKind::turning: return "turning: -";
-    case MeasureKind::winding_range: return "winding: -";
-    case MeasureKind::overreaction: return "overreaction: -";
-    case MeasureKind::pop: return "pop: -";
-    case MeasureKind::ara: return "ARA: -";
-    case MeasureKind::velocity_jump: return "velocity jump: -";
-    case MeasureKind::area: return "area: -";
-    case MeasureKind::gain: return fmt::format("gain {}: -", name.parameter);
-    case MeasureKind::turn: return fmt::format("turn {}: -", name.parameter);
-    case MeasureKind::jump: return fmt::format("jump {}: -", name.parameter);
+    case MeasureKind::discrepancy_time:
+      return fmt::format("E max ({}): -", name.parameter);
+    case MeasureKind::path_length:
+      return "length: -";
+    case MeasureKind::turning:
+      return "turning: -";
+    case MeasureKind::winding_range:
+      return "winding: -";
+    case MeasureKind::overreaction:
+      return "overreaction: -";
+    case MeasureKind::pop:
+      return "pop: -";
+    case MeasureKind::ara:
+      return "ARA: -";
+    case MeasureKind::velocity_jump:
+      return "velocity jump: -";
+    case MeasureKind::area:
+      return "area: -";
+    case MeasureKind::gain:
+      return fmt::format("gain {}: -", name.parameter);
+    case MeasureKind::turn:
+      return fmt::format("turn {}: -", name.parameter);
+    case MeasureKind::jump:
+      return fmt::format("jump {}: -", name.parameter);
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:  // claims only
     case MeasureKind::property:        // claims only
-      break;  // compared with another motion by the panel's drawing, not measured here
+      break;                           // compared with another motion by the panel's drawing, not measured here
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
@@ -55,9 +68,7 @@ std::string reaction_line(const analysis::ArrowMeasures& m, const scene::Measure
   for (const analysis::ParameterReaction& p : m.parameters) {
     if (p.name != name.parameter && !p.name.starts_with(name.parameter + ".")) continue;
     found = true;
-    value = std::max(value, name.kind == MeasureKind::gain   ? p.gain
-                            : name.kind == MeasureKind::turn ? p.turn
-                                                             : p.jump);
+    value = std::max(value, name.kind == MeasureKind::gain ? p.gain : name.kind == MeasureKind::turn ? p.turn : p.jump);
     pop = pop || p.pop;
   }
   if (!found) return missing(name);
@@ -106,10 +117,12 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
       const auto& best = m.parameters[static_cast<std::size_t>(m.most_sensitive)];
       return fmt::format("most sensitive: {} (gain {})", best.name, number(best.gain));
     }
-    case MeasureKind::pop: return pop_line(m);
+    case MeasureKind::pop:
+      return pop_line(m);
     case MeasureKind::gain:
     case MeasureKind::turn:
-    case MeasureKind::jump: return reaction_line(m, name);
+    case MeasureKind::jump:
+      return reaction_line(m, name);
     case MeasureKind::ara:
     case MeasureKind::velocity_jump:
     case MeasureKind::area:  // of poses
@@ -155,9 +168,9 @@ std::vector<std::string> measure_lines(const analysis::MotionMeasures& measures,
   std::vector<std::string> lines;
   for (const scene::MeasureName& name : show) {
     // A motion that does not exist has no number (its panel fails first).
-    lines.push_back(measures.no_motion ? missing(name)
-                                       : std::visit([&](const auto& measured) { return line(measured, name); },
-                                                    measures.measured));
+    lines.push_back(measures.no_motion
+                        ? missing(name)
+                        : std::visit([&](const auto& measured) { return line(measured, name); }, measures.measured));
   }
   return lines;
 }

@@ -1,26 +1,23 @@
 #include "render/painter.hpp"
 
-#include "render/image_cache.hpp"
-#include "render/pango_library.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
 
+#include "render/image_cache.hpp"
+#include "render/pango_library.hpp"
+
 namespace pita::render {
 
 namespace {
 
-void set_color(cairo_t* cr, const Color& c, double opacity) {
-  cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a * opacity);
-}
+void set_color(cairo_t* cr, const Color& c, double opacity) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a * opacity); }
 
 void set_line(cairo_t* cr, const LineStyle& line) {
   set_color(cr, line.color, line.opacity);
   cairo_set_line_width(cr, line.width);
-  cairo_set_dash(cr, line.dash.empty() ? nullptr : line.dash.data(),
-                 static_cast<int>(line.dash.size()), 0.0);
+  cairo_set_dash(cr, line.dash.empty() ? nullptr : line.dash.data(), static_cast<int>(line.dash.size()), 0.0);
 }
 
 void move_to(cairo_t* cr, Point p) { cairo_move_to(cr, p.real(), p.imag()); }
@@ -192,8 +189,8 @@ Rect drawing_area(const PanelPlacement& placement) {
 
 bool is_markup(const std::string& text) {
   if (text.find('<') == std::string::npos) return false;
-  return pango().parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr,
-                            nullptr) != FALSE;
+  return pango().parse_markup(text.c_str(), static_cast<int>(text.size()), 0, nullptr, nullptr, nullptr, nullptr) !=
+         FALSE;
 }
 
 namespace {
@@ -231,8 +228,8 @@ double layout_left(PangoLayout* layout, const TextPlacement& at) {
 
 }  // namespace
 
-void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
-                const Color& color, double x, double y, TextAlign align, bool markup) {
+void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size, const Color& color,
+                double x, double y, TextAlign align, bool markup) {
   const LayoutPtr layout = text_layout(cr, text, font, size, markup);
   set_color(cr, color, 1.0);
   cairo_move_to(cr, layout_left(layout.get(), {x, y, align}), y);
@@ -240,8 +237,7 @@ void paint_text(cairo_t* cr, const std::string& text, const std::string& font, d
   cairo_new_path(cr);
 }
 
-Rect text_ink_box(const std::string& text, const std::string& font, double size, const TextPlacement& at,
-                  bool markup) {
+Rect text_ink_box(const std::string& text, const std::string& font, double size, const TextPlacement& at, bool markup) {
   // A context of its own per thread, on a 1x1 surface: the layout only needs its font options.
   thread_local const std::unique_ptr<cairo_t, decltype(&cairo_destroy)> measuring = [] {
     cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
@@ -256,8 +252,8 @@ Rect text_ink_box(const std::string& text, const std::string& font, double size,
           static_cast<double>(ink.height)};
 }
 
-void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
-                   const std::string& font, const ItemRange& range) {
+void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement, const std::string& font,
+                   const ItemRange& range) {
   cairo_save(cr);
   const Rect area = drawing_area(placement);
   cairo_rectangle(cr, area.x, area.y, area.width, area.height);

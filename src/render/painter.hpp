@@ -2,11 +2,11 @@
 // canvas pixels.
 #pragma once
 
-#include <cairo.h>
-
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include <cairo.h>
 
 #include "render/drawing.hpp"
 #include "render/layout.hpp"
@@ -27,8 +27,8 @@ struct ItemRange {
   bool legends = true;
 };
 
-void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement,
-                   const std::string& font, const ItemRange& range = {});
+void paint_drawing(cairo_t* cr, const Drawing& drawing, const PanelPlacement& placement, const std::string& font,
+                   const ItemRange& range = {});
 
 // Pixel coordinates of the image's file -> canvas pixels under `view`.
 Affine2 image_to_canvas(const Image& image, const ViewTransform& view);
@@ -36,8 +36,8 @@ Affine2 image_to_canvas(const Image& image, const ViewTransform& view);
 enum class TextAlign { left, center, right };
 // Draws `text` with its box's top at y, aligned on x; with `markup`, the text
 // is Pango markup ("F<sub>A</sub>"), else it is drawn as written.
-void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size,
-                const Color& color, double x, double y, TextAlign align, bool markup = false);
+void paint_text(cairo_t* cr, const std::string& text, const std::string& font, double size, const Color& color,
+                double x, double y, TextAlign align, bool markup = false);
 
 // Where paint_text draws: the top-left corner of the text's layout is
 // (x, y) moved left by its width (right) or half of it (center).
@@ -48,8 +48,7 @@ struct TextPlacement {
 
 // The box of the ink `text` leaves when paint_text draws it at `at`, in the
 // same units (canvas pixels): what `pita lint` checks (src/lint/).
-Rect text_ink_box(const std::string& text, const std::string& font, double size, const TextPlacement& at,
-                  bool markup);
+Rect text_ink_box(const std::string& text, const std::string& font, double size, const TextPlacement& at, bool markup);
 
 // Where each text of a figure is drawn, so that the painter and the lint
 // agree: a label at its world point, the scene's title, a panel's title.

@@ -12,13 +12,13 @@
 
 #include <fmt/format.h>
 
+#include "analysis/frame_derivatives.hpp"
 #include "core/methods.hpp"
-#include "render/measure_text.hpp"
-#include "render/panel_drawing.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
-#include "analysis/frame_derivatives.hpp"
+#include "render/measure_text.hpp"
+#include "render/panel_drawing.hpp"
 
 namespace pita::render::detail {
 
@@ -31,13 +31,15 @@ inline std::string keyframe_name(std::size_t i) {
 // A trajectory's legend text.
 inline std::string trajectory_name(scene::TrackedPoint point) {
   switch (point) {
-    case scene::TrackedPoint::start: return "path of p";
-    case scene::TrackedPoint::end: return "path of q";
-    case scene::TrackedPoint::middle: return "path of the midpoint";
+    case scene::TrackedPoint::start:
+      return "path of p";
+    case scene::TrackedPoint::end:
+      return "path of q";
+    case scene::TrackedPoint::middle:
+      return "path of the midpoint";
   }
   return "path";
 }
-
 
 // A method as legends name it: "P6 La-LP", "SMA".
 inline std::string method_name(Method method) {
@@ -64,8 +66,7 @@ class PanelBuilder {
   [[noreturn]] void fail(const std::string& pointer, const std::string& reason) const {
     // A scene-wide layer drawn in a panel: say which panel too.
     const bool elsewhere = !panel_.pointer.empty() && !pointer.starts_with(panel_.pointer);
-    throw RenderError(scene_.path, pointer,
-                      elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
+    throw RenderError(scene_.path, pointer, elsewhere ? reason + " (in the panel at " + panel_.pointer + ")" : reason);
   }
 
   // The panel's method, and its keyframes or points (the other empty).
@@ -94,10 +95,9 @@ class PanelBuilder {
 
   // The times of a layer that draws a sequence of frames: an animation
   // frame's trail and time, else the layer's samples over its range.
-  std::vector<double> sequence_times(const std::optional<int>& samples, const std::optional<scene::TimeRange>& range) const;
-  double fade(std::size_t i, std::size_t count) const {
-    return selection_ != nullptr ? trail_fade(i, count) : 1.0;
-  }
+  std::vector<double> sequence_times(const std::optional<int>& samples,
+                                     const std::optional<scene::TimeRange>& range) const;
+  double fade(std::size_t i, std::size_t count) const { return selection_ != nullptr ? trail_fade(i, count) : 1.0; }
 
   // A pattern layer with its own "method" or "options" draws the motion of
   // a copy of the panel that has them (N57); its errors are the layer's.

@@ -54,7 +54,8 @@ std::vector<Arrow> PanelBuilder::frames(const motion::SceneMotion& motion, const
 
 // The times of a layer that draws a sequence of frames: an animation
 // frame's trail and time, else the layer's samples over its range.
-std::vector<double> PanelBuilder::sequence_times(const std::optional<int>& samples, const std::optional<scene::TimeRange>& range) const {
+std::vector<double> PanelBuilder::sequence_times(const std::optional<int>& samples,
+                                                 const std::optional<scene::TimeRange>& range) const {
   if (selection_ == nullptr) return layer_times(panel_, samples, range);
   std::vector<double> times = selection_->trail;
   times.push_back(selection_->t);
@@ -103,7 +104,6 @@ std::vector<analysis::FrameDerivatives> PanelBuilder::derivatives(const std::vec
 
 }  // namespace detail
 
-
 std::vector<double> layer_times(const scene::Panel& panel, const std::optional<int>& samples,
                                 const std::optional<scene::TimeRange>& range) {
   // The least and greatest knots.
@@ -115,9 +115,7 @@ std::vector<double> layer_times(const scene::Panel& panel, const std::optional<i
   return motion::uniform_times(from, to, samples.value_or(panel.samples));
 }
 
-double trail_fade(std::size_t i, std::size_t count) {
-  return static_cast<double>(i + 1) / static_cast<double>(count);
-}
+double trail_fade(std::size_t i, std::size_t count) { return static_cast<double>(i + 1) / static_cast<double>(count); }
 
 std::vector<double> selected_times(const FrameSelection* selection, std::vector<double> all) {
   if (selection == nullptr) return all;
@@ -139,8 +137,8 @@ std::vector<double> lightness_whites(const std::vector<double>& measures) {
 }
 
 Color lightened(Color color, double white) {
-  return Color{color.r + (1.0 - color.r) * white, color.g + (1.0 - color.g) * white,
-               color.b + (1.0 - color.b) * white, color.a};
+  return Color{color.r + (1.0 - color.r) * white, color.g + (1.0 - color.g) * white, color.b + (1.0 - color.b) * white,
+               color.a};
 }
 
 Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection) {

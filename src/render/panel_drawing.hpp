@@ -56,8 +56,7 @@ Color lightened(Color color, double white);
 // drawing order, with the motion the stage built. Throws RenderError.
 Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
 // The same for `panel` alone (a stage of its own).
-Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel,
-                      const FrameSelection* selection = nullptr);
+Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection = nullptr);
 
 // The times a pattern-like layer samples: `samples` (else the panel's) evenly
 // over `range` (else [a, c], the first and last knots).

@@ -1,9 +1,9 @@
 #include "render/pango_library.hpp"
 
-#include <dlfcn.h>
-
 #include <stdexcept>
 #include <string>
+
+#include <dlfcn.h>
 
 namespace pita::render {
 

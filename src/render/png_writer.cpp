@@ -1,11 +1,11 @@
 #include "render/png_writer.hpp"
 
-#include <png.h>
-
 #include <cstdint>
 #include <cstring>
 #include <new>
 #include <vector>
+
+#include <png.h>
 
 #include "render/cairo_handles.hpp"
 
@@ -128,8 +128,8 @@ cairo_status_t write_png(cairo_surface_t* surface, std::string& bytes, const Png
   }
   cairo_surface_flush(surface);
   PixelRows image{cairo_image_surface_get_data(surface), cairo_image_surface_get_width(surface),
-                    cairo_image_surface_get_height(surface), cairo_image_surface_get_stride(surface),
-                    format == CAIRO_FORMAT_ARGB32};
+                  cairo_image_surface_get_height(surface), cairo_image_surface_get_stride(surface),
+                  format == CAIRO_FORMAT_ARGB32};
   if (image.width <= 0 || image.height <= 0 || image.data == nullptr) return CAIRO_STATUS_INVALID_SIZE;
   image.alpha = image.alpha && !opaque(image);
   std::vector<unsigned char> row;

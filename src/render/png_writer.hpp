@@ -11,9 +11,9 @@
 // the same format, from either file; only the compressed stream differs.
 #pragma once
 
-#include <cairo.h>
-
 #include <string>
+
+#include <cairo.h>
 
 namespace pita::render {
 

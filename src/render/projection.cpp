@@ -39,8 +39,7 @@ std::optional<Point> Projection::project(const Eigen::Vector3d& x) const {
 double Projection::depth(const Eigen::Vector3d& x) const { return (x - eye_).dot(forward_); }
 
 double face_shade(const Eigen::Vector3d& normal, const Projection& projection) {
-  const Eigen::Vector3d light =
-      (-projection.forward() + 0.8 * projection.up() - 0.5 * projection.right()).normalized();
+  const Eigen::Vector3d light = (-projection.forward() + 0.8 * projection.up() - 0.5 * projection.right()).normalized();
   return 0.35 + 0.65 * std::abs(normal.dot(light));
 }
 

@@ -1,10 +1,10 @@
 #include "render/text_outline.hpp"
 
-#include <cairo.h>
-
 #include <algorithm>
 #include <cmath>
 #include <memory>
+
+#include <cairo.h>
 
 #include "render/cairo_handles.hpp"
 #include "render/pango_library.hpp"
@@ -25,8 +25,7 @@ void unref_layout(PangoLayout* layout) { pango().object_unref(layout); }
 using LayoutPtr = std::unique_ptr<PangoLayout, Deleter<PangoLayout, unref_layout>>;
 void free_font_description(PangoFontDescription* description) { pango().font_description_free(description); }
 using FontPtr = std::unique_ptr<PangoFontDescription, Deleter<PangoFontDescription, free_font_description>>;
-using OptionsPtr =
-    std::unique_ptr<cairo_font_options_t, Deleter<cairo_font_options_t, cairo_font_options_destroy>>;
+using OptionsPtr = std::unique_ptr<cairo_font_options_t, Deleter<cairo_font_options_t, cairo_font_options_destroy>>;
 
 // Appends the edge a -> b, split into pieces no longer than max_edge.
 void add_edge(std::vector<Point>& contour, Point a, Point b, double max_edge) {
@@ -116,8 +115,7 @@ TextOutline text_outline(const std::string& text, const std::string& font) {
   return outline;
 }
 
-std::vector<std::vector<Point>> map_through_strip(const TextOutline& outline,
-                                                  const QuadStrip& strip, double padding) {
+std::vector<std::vector<Point>> map_through_strip(const TextOutline& outline, const QuadStrip& strip, double padding) {
   std::vector<std::vector<Point>> mapped;
   const double width = outline.right - outline.left, height = outline.bottom - outline.top;
   if (!(width > 0.0) || !(height > 0.0)) return mapped;

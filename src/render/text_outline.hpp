@@ -11,8 +11,8 @@
 
 namespace pita::render {
 
-inline constexpr double kBannerTolerance = 1e-3;   // flattening, in units of the text height
-inline constexpr double kBannerMaxEdge = 2e-2;     // longest edge before mapping, same units
+inline constexpr double kBannerTolerance = 1e-3;  // flattening, in units of the text height
+inline constexpr double kBannerMaxEdge = 2e-2;    // longest edge before mapping, same units
 
 // The text's outline contours in layout units, y down, as pango draws them
 // with `font` (a pango font description; its size is ignored).
@@ -28,7 +28,6 @@ TextOutline text_outline(const std::string& text, const std::string& font);
 // The contours mapped into the strip: the ink box's left edge goes to u = 0,
 // its right edge to u = n - 1, its top to v = 1 - padding (the q side) and its
 // bottom to v = padding.
-std::vector<std::vector<Point>> map_through_strip(const TextOutline& outline,
-                                                  const QuadStrip& strip, double padding);
+std::vector<std::vector<Point>> map_through_strip(const TextOutline& outline, const QuadStrip& strip, double padding);
 
 }  // namespace pita::render

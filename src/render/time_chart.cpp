@@ -64,8 +64,7 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
   PlotBox box(layer, pointer);
   const auto place = [&box](Point unit) { return box.place(unit); };
   const auto push = [&box](int index, Shape shape) { box.push(index, std::move(shape)); };
-  push(-1, Polyline{{place({0, 0}), place({1, 1})}, false,
-                    LineStyle{Color{0.6, 0.6, 0.6, 1.0}, 0.8, 1.0, {4.0, 3.0}}});
+  push(-1, Polyline{{place({0, 0}), place({1, 1})}, false, LineStyle{Color{0.6, 0.6, 0.6, 1.0}, 0.8, 1.0, {4.0, 3.0}}});
 
   const std::vector<double> times = motion::uniform_times(motion.first(), motion.last(), layer.samples);
   std::vector<Point> curve;
@@ -76,8 +75,8 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
     const std::vector<Point> dots = analysis::distance_time(motion, layer.point, marks);
     const double radius = 0.015 * box.smaller_side();
     for (std::size_t i = 0; i < dots.size(); ++i) {
-      push(static_cast<int>(i), Circle{place(dots[i]), radius, LineStyle{layer.line.color, 0.8, 1.0, {}},
-                                       layer.line.color});
+      push(static_cast<int>(i),
+           Circle{place(dots[i]), radius, LineStyle{layer.line.color, 0.8, 1.0, {}}, layer.line.color});
     }
   }
   const Color text{0.2, 0.2, 0.2, 1.0};
@@ -95,13 +94,12 @@ std::string area_summary(const std::string& name, const analysis::AreaCurve& cur
   }
   // The interior extremum: the largest area when it exceeds both ends, else the smallest.
   const bool bump = curve.largest > std::max(start, end);
-  return fmt::format("{}: area not monotone, {} at t = {:.3g} ({:.4g} x start)", name,
-                     bump ? "largest" : "smallest", bump ? curve.t_of_largest : curve.t_of_smallest,
-                     (bump ? curve.largest : curve.smallest) / start);
+  return fmt::format("{}: area not monotone, {} at t = {:.3g} ({:.4g} x start)", name, bump ? "largest" : "smallest",
+                     bump ? curve.t_of_largest : curve.t_of_smallest, (bump ? curve.largest : curve.smallest) / start);
 }
 
-std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series,
-                                  double first, double last, const std::string& pointer) {
+std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series, double first,
+                                  double last, const std::string& pointer) {
   PlotBox box(layer, pointer);
   const auto place = [&box](Point unit) { return box.place(unit); };
   const auto push = [&box](int index, Shape shape) { box.push(index, std::move(shape)); };
@@ -123,7 +121,8 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
     LineStyle line = layer.line;
     line.color = one.color;
     std::vector<Point> curve;
-    for (std::size_t i = 0; i < one.curve.times.size(); ++i) curve.push_back(unit(one.curve.times[i], one.curve.areas[i]));
+    for (std::size_t i = 0; i < one.curve.times.size(); ++i)
+      curve.push_back(unit(one.curve.times[i], one.curve.areas[i]));
     push(-1, Polyline{std::move(curve), false, line});
     if (layer.marks) {
       const double radius = 0.012 * box.smaller_side();
@@ -132,8 +131,8 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
                                          LineStyle{one.color, 0.8, 1.0, {}}, one.color});
       }
     }
-    push(-1, Label{area_summary(one.name, one.curve), place({0.0, -0.2 - 0.1 * static_cast<double>(k)}), 11.0,
-                   one.color});
+    push(-1,
+         Label{area_summary(one.name, one.curve), place({0.0, -0.2 - 0.1 * static_cast<double>(k)}), 11.0, one.color});
   }
   box.ticks(first, last, std::nullopt);
   push(-1, Label{"time", place({0.45, -0.08}), 10.0, text});

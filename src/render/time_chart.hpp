@@ -32,8 +32,8 @@ struct AreaSeries {
 // of time, between the smallest and the largest area of all series (printed
 // at the axis's ends), the marks when the layer asks for them, and under the
 // box one line per series with its measured monotonicity.
-std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series,
-                                  double first, double last, const std::string& pointer);
+std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vector<AreaSeries>& series, double first,
+                                  double last, const std::string& pointer);
 
 // The line printed for one series: "SAM: area monotone (falling), end/start = 0.5"
 // or "rARAP: area not monotone, largest at t = 0.5 (1.2 x start)".

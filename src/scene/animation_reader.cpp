@@ -32,8 +32,8 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
   reader.check_fields(value, pointer, kAnimationFields);
   Animation animation = default_animation(moving);
   if (const Json* duration = JsonReader::member(value, "duration")) {
-    animation.duration = reader.number(*duration, pointer + "/duration",
-                                       Interval{0.0, kMaxAnimationDuration, true, false});
+    animation.duration =
+        reader.number(*duration, pointer + "/duration", Interval{0.0, kMaxAnimationDuration, true, false});
   }
   if (const Json* fps = JsonReader::member(value, "fps")) {
     animation.fps = reader.number(*fps, pointer + "/fps", Interval{0.0, kMaxFps, true, false});
@@ -58,8 +58,9 @@ Animation read_animation(const JsonReader& reader, const Json& value, const std:
   if (const Json* what = JsonReader::member(value, "what")) {
     animation.what = reader.choice(*what, pointer + "/what", kWhatNames, kWhats);
     if (animation.what == Animation::What::pattern && poses) {
-      reader.fail(pointer + "/what", "\"pattern\" animates a pattern whose keyframes move, and a pose scene has no "
-                                     "keyframes: animate the \"motion\"");
+      reader.fail(pointer + "/what",
+                  "\"pattern\" animates a pattern whose keyframes move, and a pose scene has no "
+                  "keyframes: animate the \"motion\"");
     }
     if (animation.what == Animation::What::pattern && !moving) {
       reader.fail(pointer + "/what",

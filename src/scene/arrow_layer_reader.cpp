@@ -17,32 +17,31 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 15> kPatternFields = {
-    "type", "color", "width", "opacity", "dash", "extended", "coils", "heads", "dots", "samples", "range",
-    "times", "method", "options", "label"};
-constexpr std::array<std::string_view, 7> kKeyframesFields = {
-    "type", "colors", "width", "opacity", "winding", "spiral_center", "extended"};
-constexpr std::array<std::string_view, 10> kTrajectoryFields = {
-    "type", "point", "samples", "range", "color", "width", "opacity", "dash", "method", "options"};
-constexpr std::array<std::string_view, 6> kStrokeFields = {"type",    "fill",    "opacity",
-                                                           "outline", "samples", "range"};
-constexpr std::array<std::string_view, 9> kBannerFields = {
-    "type", "text", "font", "fill", "opacity", "outline", "padding", "samples", "range"};
-constexpr std::array<std::string_view, 10> kDiscrepancyFields = {
-    "type", "predictor", "method", "scale", "color", "width", "opacity", "dash", "fill", "samples"};
+constexpr std::array<std::string_view, 15> kPatternFields = {"type",     "color", "width",  "opacity", "dash",
+                                                             "extended", "coils", "heads",  "dots",    "samples",
+                                                             "range",    "times", "method", "options", "label"};
+constexpr std::array<std::string_view, 7> kKeyframesFields = {"type",    "colors",        "width",   "opacity",
+                                                              "winding", "spiral_center", "extended"};
+constexpr std::array<std::string_view, 10> kTrajectoryFields = {"type",  "point",   "samples", "range",  "color",
+                                                                "width", "opacity", "dash",    "method", "options"};
+constexpr std::array<std::string_view, 6> kStrokeFields = {"type", "fill", "opacity", "outline", "samples", "range"};
+constexpr std::array<std::string_view, 9> kBannerFields = {"type",    "text",    "font",    "fill", "opacity",
+                                                           "outline", "padding", "samples", "range"};
+constexpr std::array<std::string_view, 10> kDiscrepancyFields = {"type",  "predictor", "method", "scale", "color",
+                                                                 "width", "opacity",   "dash",   "fill",  "samples"};
 constexpr std::array<std::string_view, 3> kLegendFields = {"type", "corner", "size"};
 
-constexpr std::array<std::string_view, 8> kGuessesFields = {
-    "type", "guesses", "show", "width", "frame_color", "at", "size", "color"};
+constexpr std::array<std::string_view, 8> kGuessesFields = {"type",        "guesses", "show", "width",
+                                                            "frame_color", "at",      "size", "color"};
 constexpr std::array<std::string_view, 8> kGuessFields = {"t", "p", "q", "m", "w", "turns", "name", "color"};
 constexpr std::array<std::string_view, 2> kGuessMeasureNames = {"discrepancy", "distance"};
 constexpr std::array<GuessMeasure, 2> kGuessMeasures = {GuessMeasure::discrepancy, GuessMeasure::distance};
-constexpr std::array<std::string_view, 9> kCompareFields = {
-    "type", "method", "color", "width", "opacity", "dash", "samples", "at", "size"};
+constexpr std::array<std::string_view, 9> kCompareFields = {"type", "method",  "color", "width", "opacity",
+                                                            "dash", "samples", "at",    "size"};
 
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
-constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {
-    "type", "curve", "samples", "range", "color", "width", "opacity", "dash", "dots"};
+constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {"type",  "curve",   "samples", "range", "color",
+                                                                    "width", "opacity", "dash",    "dots"};
 constexpr std::array<std::string_view, 2> kPlotOfNames = {"distance", "area"};
 constexpr std::array<PlotOf, 2> kPlotOfs = {PlotOf::distance, PlotOf::area};
 
@@ -50,15 +49,13 @@ constexpr std::array<std::string_view, 6> kPropertyTableFields = {"type", "metho
 constexpr std::array<std::string_view, 3> kTreeFields = {"title", "order", "methods"};
 constexpr std::array<std::string_view, 12> kVectorsFields = {
     "type", "of", "at", "at_point", "scale", "colors", "width", "opacity", "dash", "heads", "samples", "range"};
-constexpr std::array<std::string_view, 10> kFixedPointsFields = {
-    "type", "center", "point", "color", "width", "opacity", "dash", "dots", "samples", "range"};
+constexpr std::array<std::string_view, 10> kFixedPointsFields = {"type",    "center", "point", "color",   "width",
+                                                                 "opacity", "dash",   "dots",  "samples", "range"};
 
 constexpr std::array<std::string_view, 2> kSpiralCenterNames = {"start", "midpoint"};
-constexpr std::array<SpiralCenter, 2> kSpiralCenters = {SpiralCenter::start,
-                                                        SpiralCenter::middle};
+constexpr std::array<SpiralCenter, 2> kSpiralCenters = {SpiralCenter::start, SpiralCenter::middle};
 constexpr std::array<std::string_view, 3> kPredictorNames = {"previous", "average", "pita"};
-constexpr std::array<Predictor, 3> kPredictors = {Predictor::previous, Predictor::average,
-                                                  Predictor::pita};
+constexpr std::array<Predictor, 3> kPredictors = {Predictor::previous, Predictor::average, Predictor::pita};
 
 PatternLayer read_pattern(const Fields& fields) {
   PatternLayer layer;
@@ -76,8 +73,9 @@ PatternLayer read_pattern(const Fields& fields) {
   }
   fields.boolean("dots", layer.dots);
   if (layer.dots && layer.heads) {
-    fields.reader().fail(fields.at("dots"), "draws each frame as the dot of its point p, and \"heads\" draws it "
-                                            "as an arrow: choose one");
+    fields.reader().fail(fields.at("dots"),
+                         "draws each frame as the dot of its point p, and \"heads\" draws it "
+                         "as an arrow: choose one");
   }
   return layer;
 }
@@ -87,8 +85,8 @@ KeyframesLayer read_keyframes_layer(const Fields& fields) {
   if (const Json* colors = fields.get("colors")) {
     const std::string pointer = fields.at("colors");
     if (!colors->is_array() || colors->empty() || colors->size() > kMaxKeyframeColors) {
-      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} colors (got {})",
-                                                kMaxKeyframeColors, value_text(*colors)));
+      fields.reader().fail(
+          pointer, fmt::format("must be an array of 1 to {} colors (got {})", kMaxKeyframeColors, value_text(*colors)));
     }
     layer.colors.clear();
     for (std::size_t i = 0; i < colors->size(); ++i) {
@@ -129,7 +127,8 @@ PointTrajectoryLayer read_point_trajectory(const Fields& fields) {
     if (found == nullptr) {
       std::vector<std::string_view> names;
       for (const PointCurveInfo& about : all_point_curves()) names.push_back(about.name);
-      fields.reader().fail(fields.at("curve"), "must be " + quoted_choices(names) + " (got " + value_text(*curve) + ")");
+      fields.reader().fail(fields.at("curve"),
+                           "must be " + quoted_choices(names) + " (got " + value_text(*curve) + ")");
     }
     layer.curve = found->curve;
   }
@@ -152,8 +151,7 @@ StrokeLayer read_stroke(const Fields& fields) {
 
 BannerLayer read_banner(const Fields& fields) {
   BannerLayer layer;
-  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"),
-                                    kMaxTextLength);
+  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"), kMaxTextLength);
   fields.text("font", kUnbounded, layer.font);
   fields.color("fill", layer.fill);
   fields.number("opacity", kOpacity, layer.opacity);
@@ -238,8 +236,8 @@ GuessesLayer read_guesses(const Fields& fields) {
 // "compare" (Fig. B.30): another method's pattern over the panel's.
 CompareLayer read_compare(const Fields& fields) {
   CompareLayer layer;
-  layer.method = fields.reader().method(fields.required("method", "the method compared with the panel's"),
-                                        fields.at("method"));
+  layer.method =
+      fields.reader().method(fields.required("method", "the method compared with the panel's"), fields.at("method"));
   layer.method_name = std::string(info(layer.method).id);
   read_line(fields, layer.line);
   read_figure_samples(fields, layer.samples);
@@ -255,8 +253,7 @@ constexpr std::array<int, 3> kVectorAts = {3, 1, 2};  // bit 1: p, bit 2: q
 constexpr std::array<std::string_view, 2> kAtPointNames = {"tail", "head"};
 constexpr std::array<bool, 2> kTailAtPoint = {true, false};
 constexpr std::array<std::string_view, 3> kCenterNames = {"global", "acceleration", "velocity"};
-constexpr std::array<CenterKind, 3> kCenters = {CenterKind::global, CenterKind::acceleration,
-                                                CenterKind::velocity};
+constexpr std::array<CenterKind, 3> kCenters = {CenterKind::global, CenterKind::acceleration, CenterKind::velocity};
 
 // "vectors": the defaults follow the paper's figures: accelerations at p
 // black and at q brown (Figs. 9, 14), velocities dark green (Fig. 15).
@@ -276,12 +273,12 @@ VectorsLayer read_vectors(const Fields& fields) {
   if (const Json* colors = fields.get("colors")) {
     const std::string pointer = fields.at("colors");
     if (!colors->is_array() || colors->empty() || colors->size() > 2) {
-      fields.reader().fail(pointer, "must be an array of 1 or 2 colors: [at p, at q] (got " +
-                                        value_text(*colors) + ")");
+      fields.reader().fail(pointer,
+                           "must be an array of 1 or 2 colors: [at p, at q] (got " + value_text(*colors) + ")");
     }
     layer.color_p = fields.reader().color((*colors)[0], element_pointer(pointer, 0));
-    layer.color_q = colors->size() == 2 ? fields.reader().color((*colors)[1], element_pointer(pointer, 1))
-                                        : layer.color_p;
+    layer.color_q =
+        colors->size() == 2 ? fields.reader().color((*colors)[1], element_pointer(pointer, 1)) : layer.color_p;
   }
   fields.number("width", kLineWidth, layer.line.width);
   fields.number("opacity", kOpacity, layer.line.opacity);
@@ -328,8 +325,8 @@ std::vector<Method> read_three_keyframe_methods(const JsonReader& reader, const 
 // checked against the properties when the table is drawn (render/).
 std::vector<DecisionTreeSpec> read_trees(const JsonReader& reader, const Json& trees, const std::string& at) {
   if (!trees.is_array() || trees.size() > kMaxDecisionTrees) {
-    reader.fail(at, fmt::format("must be a list of at most {} decision trees (got {})", kMaxDecisionTrees,
-                                value_text(trees)));
+    reader.fail(
+        at, fmt::format("must be a list of at most {} decision trees (got {})", kMaxDecisionTrees, value_text(trees)));
   }
   std::vector<DecisionTreeSpec> out;
   for (std::size_t i = 0; i < trees.size(); ++i) {
@@ -339,7 +336,8 @@ std::vector<DecisionTreeSpec> read_trees(const JsonReader& reader, const Json& t
     reader.check_fields(tree, pointer, kTreeFields);
     DecisionTreeSpec spec;
     spec.pointer = pointer;
-    if (const Json* title = JsonReader::member(tree, "title")) spec.title = reader.text(*title, pointer + "/title", 200);
+    if (const Json* title = JsonReader::member(tree, "title"))
+      spec.title = reader.text(*title, pointer + "/title", 200);
     const Json* order = JsonReader::member(tree, "order");
     if (order == nullptr) reader.fail(pointer, "a decision tree lists the properties it asks, in order: \"order\"");
     if (!order->is_array() || order->empty() || order->size() > 20) {
@@ -374,10 +372,8 @@ PropertyTableLayer read_property_table(const Fields& fields) {
 
 LabelLayer read_label(const Fields& fields) {
   LabelLayer layer;
-  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"),
-                                    kMaxTextLength);
-  layer.at = fields.reader().point(fields.required("at", "the point [x, y] of the text"),
-                                   fields.at("at"));
+  layer.text = fields.reader().text(fields.required("text", "the text to draw"), fields.at("text"), kMaxTextLength);
+  layer.at = fields.reader().point(fields.required("at", "the point [x, y] of the text"), fields.at("at"));
   fields.number("size", kTextSize, layer.size);
   fields.color("color", layer.color);
   fields.choice("place", kLabelPlaceNames, kLabelPlaces, layer.avoid_data);
@@ -392,8 +388,7 @@ MeasuresLayer read_measures(const Fields& fields) {
   if (const Json* show = fields.get("show")) {
     const std::string at = fields.at("show");
     if (!show->is_array() || show->empty() || show->size() > kMaxMeasures) {
-      reader.fail(at, fmt::format("must be a list of 1 to {} measure names (got {})", kMaxMeasures,
-                                  value_text(*show)));
+      reader.fail(at, fmt::format("must be a list of 1 to {} measure names (got {})", kMaxMeasures, value_text(*show)));
     }
     layer.show.clear();
     for (std::size_t i = 0; i < show->size(); ++i) {
@@ -406,9 +401,10 @@ MeasuresLayer read_measures(const Fields& fields) {
                                          std::get<MeasureName>(parsed).text));
       }
       if (std::get<MeasureName>(parsed).kind == MeasureKind::property) {
-        reader.fail(item_at, fmt::format("\"{}\" is measured by claims only (docs/reference/check.md \"Claims\"); the property "
-                                         "table of pita audit prints every property",
-                                         std::get<MeasureName>(parsed).text));
+        reader.fail(item_at,
+                    fmt::format("\"{}\" is measured by claims only (docs/reference/check.md \"Claims\"); the property "
+                                "table of pita audit prints every property",
+                                std::get<MeasureName>(parsed).text));
       }
       layer.show.push_back(std::move(std::get<MeasureName>(parsed)));
     }
@@ -433,8 +429,9 @@ PlotLayer read_plot(const Fields& fields) {
   fields.boolean("marks", layer.marks);
   fields.choice("of", kPlotOfNames, kPlotOfs, layer.of);
   if (layer.of == PlotOf::area && !LayerFamily<LayerType>::moves_poses) {
-    fields.reader().fail(fields.at("of"), "\"area\" plots the area of a pose scene's shapes; an arrow scene's "
-                                          "plot is of \"distance\"");
+    fields.reader().fail(fields.at("of"),
+                         "\"area\" plots the area of a pose scene's shapes; an arrow scene's "
+                         "plot is of \"distance\"");
   }
   for (const std::string_view key : {std::string_view("methods"), std::string_view("colors")}) {
     if (layer.of != PlotOf::area && fields.get(key) != nullptr) {
@@ -445,7 +442,7 @@ PlotLayer read_plot(const Fields& fields) {
     const std::string where = fields.at("methods");
     if (!methods->is_array() || methods->empty() || methods->size() > kMaxPlotMethods) {
       fields.reader().fail(where, fmt::format("must be an array of 1 to {} pose methods (got {})", kMaxPlotMethods,
-                                           value_text(*methods)));
+                                              value_text(*methods)));
     }
     for (std::size_t i = 0; i < methods->size(); ++i) {
       layer.methods.push_back(detail::read_pose_method(fields.reader(), (*methods)[i], element_pointer(where, i)));

@@ -1,6 +1,4 @@
 // Arrow scenes: timed keyframes (the PITA paper; docs/reference/scene-format.md "Scene format").
-#include "scene/scene_readers.hpp"
-
 #include <algorithm>
 #include <array>
 #include <string>
@@ -11,10 +9,10 @@
 
 #include "core/limits.hpp"
 #include "core/overloaded.hpp"
-
-#include "scene/layer_kinds.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/layer_kinds.hpp"
 #include "scene/pose_reader.hpp"
+#include "scene/scene_readers.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
@@ -28,34 +26,37 @@ void check_point_layers(const JsonReader& reader, const Scene& scene) {
   for (const Panel& panel : scene.panels) {
     const LayersOf<Layer> drawn = layers_of<Layer>(scene, panel);
     const std::vector<Layer>& layers = drawn.layers;
-    const std::string in_panel =
-        !drawn.own && !panel.pointer.empty() ? " (in the panel at " + panel.pointer + ")" : "";
+    const std::string in_panel = !drawn.own && !panel.pointer.empty() ? " (in the panel at " + panel.pointer + ")" : "";
     for (std::size_t i = 0; i < layers.size(); ++i) {
       const std::string at = drawn.pointer(i);
       const auto* curve = std::get_if<PointTrajectoryLayer>(&layers[i]);
       const LayerDraws draws = kind_of(arrow_layer_table(), layers[i]).draws;
       const auto* given = std::get_if<PointKeys>(&panel.keys);
       if (given == nullptr && draws == LayerDraws::points) {
-        reader.fail(at + "/type", "a point-trajectory draws a curve through timed \"points\"; this panel has "
-                                  "keyframes" + in_panel);
+        reader.fail(at + "/type",
+                    "a point-trajectory draws a curve through timed \"points\"; this panel has "
+                    "keyframes" +
+                        in_panel);
       }
       if (given != nullptr && draws == LayerDraws::keyframes) {
-        reader.fail(at + "/type", "this layer draws a motion of keyframes, and the panel has timed \"points\": "
-                                  "draw them with \"point-trajectory\" (labels and legends are fine too)" + in_panel);
+        reader.fail(at + "/type",
+                    "this layer draws a motion of keyframes, and the panel has timed \"points\": "
+                    "draw them with \"point-trajectory\" (labels and legends are fine too)" +
+                        in_panel);
       }
-      if (curve != nullptr && curve->curve != PointCurve::pita &&
-          given != nullptr && given->points.size() > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
-        reader.fail(at + "/curve", fmt::format("the {} curve takes at most {} points (got {}){}",
-                                               info(curve->curve).name, limits::kMaxNevillePoints,
-                                               given->points.size(), in_panel));
+      if (curve != nullptr && curve->curve != PointCurve::pita && given != nullptr &&
+          given->points.size() > static_cast<std::size_t>(limits::kMaxNevillePoints)) {
+        reader.fail(at + "/curve",
+                    fmt::format("the {} curve takes at most {} points (got {}){}", info(curve->curve).name,
+                                limits::kMaxNevillePoints, given->points.size(), in_panel));
       }
     }
   }
 }
 
 constexpr std::array<std::string_view, 19> kSceneFields = {
-    "$schema", "description", "method", "keyframes", "points", "chain",  "samples", "options", "title",
-    "canvas",  "layers",      "panels", "golden", "claims", "lint",    "timing", "shapes", "handle",  "animation"};
+    "$schema", "description", "method", "keyframes", "points", "chain",  "samples", "options", "title",    "canvas",
+    "layers",  "panels",      "golden", "claims",    "lint",   "timing", "shapes",  "handle",  "animation"};
 
 // A "shapes" layer draws the scene's shapes, which it must have.
 void check_shape_layers(const JsonReader& reader, const Scene& scene) {
@@ -95,19 +96,22 @@ MotionKeys read_track_keys(const JsonReader& reader, const Json& document, Scene
   KeyframeKeys arrows;
   static_cast<TrackMethod&>(arrows) = track;
   if (keyframes != nullptr) {
-    arrows.keyframes = reader.keyframes(*keyframes, "/keyframes", track.method, &arrows.keyframes_to, track.options.knots);
+    arrows.keyframes =
+        reader.keyframes(*keyframes, "/keyframes", track.method, &arrows.keyframes_to, track.options.knots);
   }
   // Shapes carried by the frames (Sec. 7.1): drawn in the handle's frame.
   if (const Json* shapes = JsonReader::member(document, "shapes")) {
     if (points != nullptr) {
-      reader.fail("/shapes", "shapes are carried by keyframe arrows (a \"handle\" and \"shapes\" layers); a scene of "
-                             "\"points\" has none to carry them");
+      reader.fail("/shapes",
+                  "shapes are carried by keyframe arrows (a \"handle\" and \"shapes\" layers); a scene of "
+                  "\"points\" has none to carry them");
     }
     figure_of<KeyframeKeys>(scene).shapes =
         detail::read_shapes(reader, *shapes, "/shapes", FigureTraits<Affine2>::unit_simplex());
   }
   if (const Json* handle = JsonReader::member(document, "handle")) {
-    if (points != nullptr) reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
+    if (points != nullptr)
+      reader.fail("/handle", "a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
     arrows.given_handle = reader.arrow(*handle, "/handle");
   }
   if (points != nullptr) {
@@ -160,11 +164,14 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
     figure_of<KeyframeKeys>(scene).layers = detail::read_layers(reader, *layers, "/layers");
   } else {
     // By default a curve through timed points, else the pattern and the keyframes.
-    figure_of<KeyframeKeys>(scene).layers = std::visit(overloaded{[](const KeyframeKeys&) { return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}}; },
-                                         [](const PointKeys&) { return std::vector<Layer>{PointTrajectoryLayer{}}; },
-                                         [](const PlanePoseKeys&) { return std::vector<Layer>{}; },  // not read here:
-                                         [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // pose scenes
-                              scene.keys);
+    figure_of<KeyframeKeys>(scene).layers =
+        std::visit(overloaded{[](const KeyframeKeys&) {
+                                return std::vector<Layer>{PatternLayer{}, KeyframesLayer{}};
+                              },
+                              [](const PointKeys&) { return std::vector<Layer>{PointTrajectoryLayer{}}; },
+                              [](const PlanePoseKeys&) { return std::vector<Layer>{}; },   // not read here:
+                              [](const SpacePoseKeys&) { return std::vector<Layer>{}; }},  // pose scenes
+                   scene.keys);
   }
   if (const Json* panels = JsonReader::member(document, "panels")) {
     scene.panels = read_panels(reader, *panels, "/panels", scene);
@@ -173,11 +180,10 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
-  const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(),
-                                  [](const Panel& panel) {
-                                    const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
-                                    return given != nullptr && !given->keyframes_to.empty();
-                                  });
+  const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(), [](const Panel& panel) {
+    const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
+    return given != nullptr && !given->keyframes_to.empty();
+  });
   read_scene_tail<Layer>(reader, document, scene, moving);
   return scene;
 }

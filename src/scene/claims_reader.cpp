@@ -13,7 +13,7 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kClaimFields = {"says", "panel", "measure", "absolute", "below",
+constexpr std::array<std::string_view, 9> kClaimFields = {"says",  "panel", "measure", "absolute", "below",
                                                           "above", "near",  "within",  "is"};
 constexpr std::array<std::string_view, 4> kOperandFields = {"panel", "measure", "times", "plus"};
 constexpr std::array<std::string_view, 4> kTests = {"below", "above", "near", "is"};
@@ -35,8 +35,7 @@ std::size_t read_panel_index(const JsonReader& reader, const Json& object, const
 }
 
 template <class LayerType>
-MeasureName read_measure(const JsonReader& reader, const Json& value, const std::string& pointer,
-                         const Scene& scene) {
+MeasureName read_measure(const JsonReader& reader, const Json& value, const std::string& pointer, const Scene& scene) {
   auto parsed = parse_measure<LayerType>(reader.text(value, pointer, 200));
   if (const std::string* reason = std::get_if<std::string>(&parsed)) reader.fail(pointer, *reason);
   MeasureName measure = std::move(std::get<MeasureName>(parsed));
@@ -129,8 +128,7 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
 template <class LayerType>
 std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene) {
   if (!value.is_array() || value.size() > static_cast<std::size_t>(kMaxClaims)) {
-    reader.fail("/claims", fmt::format("must be a list of at most {} claims (got {})", kMaxClaims,
-                                       value_text(value)));
+    reader.fail("/claims", fmt::format("must be a list of at most {} claims (got {})", kMaxClaims, value_text(value)));
   }
   std::vector<Claim> claims;
   for (std::size_t i = 0; i < value.size(); ++i) {

@@ -67,10 +67,10 @@ std::span<const NamedColor> named_colors() { return kNamedColors; }
 Color parse_color(std::string_view text) {
   if (!text.empty() && text[0] == '#') {
     if (const std::optional<Color> color = parse_hex(text)) return *color;
-    throw std::invalid_argument(fmt::format(
-        "\"{}\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits (\"#rgb\", "
-        "\"#rrggbb\" or \"#rrggbbaa\")",
-        text));
+    throw std::invalid_argument(
+        fmt::format("\"{}\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits (\"#rgb\", "
+                    "\"#rrggbb\" or \"#rrggbbaa\")",
+                    text));
   }
   std::vector<std::string_view> names;
   for (const NamedColor& named : kNamedColors) {
@@ -82,8 +82,7 @@ Color parse_color(std::string_view text) {
   if (!suggestions.empty()) throw std::invalid_argument(reason + did_you_mean(suggestions));
   std::string known;
   for (std::string_view name : names) known += (known.empty() ? "" : ", ") + std::string(name);
-  throw std::invalid_argument(
-      reason + "; a color is \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or one of " + known);
+  throw std::invalid_argument(reason + "; a color is \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or one of " + known);
 }
 
 }  // namespace pita::scene

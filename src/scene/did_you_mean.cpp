@@ -28,8 +28,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-std::vector<std::string> closest_names(std::string_view name,
-                                       std::span<const std::string_view> known) {
+std::vector<std::string> closest_names(std::string_view name, std::span<const std::string_view> known) {
   std::vector<std::size_t> distances;
   distances.reserve(known.size());
   for (std::string_view candidate : known) distances.push_back(edit_distance(name, candidate));

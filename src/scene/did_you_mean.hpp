@@ -20,8 +20,7 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 // smallest distance d, provided d <= kMaxSuggestionDistance and d is smaller
 // than the length of `name` (so that "x" does not suggest every one-letter
 // field). Empty when nothing is close.
-std::vector<std::string> closest_names(std::string_view name,
-                                       std::span<const std::string_view> known);
+std::vector<std::string> closest_names(std::string_view name, std::span<const std::string_view> known);
 
 // `a`, `a or b`, `a, b or c`: for messages; each name in double quotes when
 // `quoted`.

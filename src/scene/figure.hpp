@@ -21,25 +21,25 @@
 namespace pita::scene {
 
 struct Canvas {
-  int width = 800;                          // pixels, [kMinCanvasSide, kMaxCanvasSide]
+  int width = 800;  // pixels, [kMinCanvasSide, kMaxCanvasSide]
   int height = 600;
   std::optional<Color> background = Color{1.0, 1.0, 1.0, 1.0};  // nullopt: transparent ("none")
   // World box shown in every panel; nullopt: each panel fits its own drawing
   // ("auto"), shared_fit: one box that fits every panel's drawing ("shared").
   std::optional<Box> view;
   bool shared_fit = false;
-  double margin = 0.06;                      // fraction of the panel's smaller side, [0, 0.45]
-  bool y_up = true;                          // mathematical axes (y up) unless "y_axis": "down"
-  int columns = 0;                           // panels per row; 0 = automatic (ceil(sqrt(n)))
-  std::string font = "Sans";                 // pango family for titles, labels and legends
+  double margin = 0.06;       // fraction of the panel's smaller side, [0, 0.45]
+  bool y_up = true;           // mathematical axes (y up) unless "y_axis": "down"
+  int columns = 0;            // panels per row; 0 = automatic (ceil(sqrt(n)))
+  std::string font = "Sans";  // pango family for titles, labels and legends
 };
 
 // "animation" (docs/reference/animate.md "Animation"): how `pita animate` and `pita render --at`
 // play the scene. Command-line flags override these fields.
 struct Animation {
   enum class What { motion, pattern };
-  double duration = 4.0;   // seconds, > 0
-  double fps = 30.0;       // (0, kMaxFps]
+  double duration = 4.0;      // seconds, > 0
+  double fps = 30.0;          // (0, kMaxFps]
   std::optional<int> frames;  // [kMinAnimationFrames, kMaxAnimationFrames]; default round(duration * fps)
   bool loop = true;
   // "motion": one frame D(t) (and the shapes it carries) runs over the knots;
@@ -47,7 +47,7 @@ struct Animation {
   // keyframes move (PITA Sec. 7.4). Default: "pattern" when a keyframe
   // moves, else "motion".
   What what = What::motion;
-  int trail = 0;           // "motion": how many earlier frames fade behind, [0, kMaxTrail]
+  int trail = 0;  // "motion": how many earlier frames fade behind, [0, kMaxTrail]
   // The values of tau that a static figure of moving keyframes overlays
   // (Fig. 27), each in [0, 1]; default [0].
   std::vector<double> overlay{0.0};
@@ -74,7 +74,7 @@ struct Solid {
 struct Camera {
   double azimuth = 35.0;
   double elevation = 25.0;
-  double distance = 10.0;                 // > 0 for perspective
+  double distance = 10.0;  // > 0 for perspective
   bool perspective = false;
   std::optional<Eigen::Vector3d> target;  // default: the centre of the solids at the poses
   bool automatic = false;
@@ -173,8 +173,8 @@ using PanelFigureOf = typename FamilyOf<Keys>::OfPanel;
 // One cell of the grid: the scene's keyframes, method and options unless the
 // panel overrides them. A scene without "panels" has one panel.
 struct Panel {
-  std::string title;                   // "" = no title; default for a panel given by
-                                       // its method: "P6 La-LP"
+  std::string title;  // "" = no title; default for a panel given by
+                      // its method: "P6 La-LP"
   // What the panel's motion is made of (the scene's unless the panel gives
   // its own method, keyframes, points or poses); its alternative is the kind
   // of the panel's motion.
@@ -183,7 +183,7 @@ struct Panel {
   // Where `samples` came from: "/panels/2/samples", the scene's "/samples",
   // or "" for the default (what the render budget's messages name).
   std::string samples_pointer;
-  std::string pointer;                 // JSON Pointer of the panel ("" = the scene itself)
+  std::string pointer;  // JSON Pointer of the panel ("" = the scene itself)
   // JSON Pointer that errors of the panel's motion name: its own keyframes or
   // poses, else the panel (its method with the scene's keyframes), else the
   // scene's "/keyframes", "/points" or "/poses".

@@ -20,8 +20,8 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 8> kCanvasFields = {
-    "width", "height", "background", "view", "margin", "y_axis", "columns", "font"};
+constexpr std::array<std::string_view, 8> kCanvasFields = {"width",  "height", "background", "view",
+                                                           "margin", "y_axis", "columns",    "font"};
 
 constexpr std::array<std::string_view, 2> kYAxisNames = {"up", "down"};
 constexpr std::array<bool, 2> kYUp = {true, false};
@@ -73,16 +73,15 @@ LayerType read_layer_of(const JsonReader& reader, const Json& value, const std::
       return std::find(kind.fields.begin(), kind.fields.end(), key) != kind.fields.end();
     });
     if (!elsewhere) break;  // check_fields below reports it
-    reader.fail(fields.at(key), fmt::format("field \"{}\" is not used by a \"{}\" layer (its fields: {})",
-                                            key, found->type, joined(known)));
+    reader.fail(fields.at(key), fmt::format("field \"{}\" is not used by a \"{}\" layer (its fields: {})", key,
+                                            found->type, joined(known)));
   }
   reader.check_fields(value, pointer, known);
   return found->read(fields);
 }
 
 // "view": "auto", "shared" or {"min": [x, y], "max": [x, y]}.
-void read_view(const JsonReader& reader, const Json& value, const std::string& pointer,
-               Canvas& canvas) {
+void read_view(const JsonReader& reader, const Json& value, const std::string& pointer, Canvas& canvas) {
   if (value.is_string() && value.get<std::string>() == "auto") {
     canvas.view.reset();
     canvas.shared_fit = false;
@@ -94,8 +93,10 @@ void read_view(const JsonReader& reader, const Json& value, const std::string& p
     return;
   }
   if (!value.is_object()) {
-    reader.fail(pointer, "must be \"auto\", \"shared\" or a box {\"min\": [x, y], \"max\": [x, y]} "
-                         "(got " + value_text(value) + ")");
+    reader.fail(pointer,
+                "must be \"auto\", \"shared\" or a box {\"min\": [x, y], \"max\": [x, y]} "
+                "(got " +
+                    value_text(value) + ")");
   }
   reader.check_fields(value, pointer, kBoxFields);
   canvas.view = read_box(Fields(reader, value, pointer));
@@ -104,14 +105,13 @@ void read_view(const JsonReader& reader, const Json& value, const std::string& p
 
 // "layers": an array of at most kMaxLayers layers, each read by `read_one`.
 template <typename LayerType, typename ReadOne>
-std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& value,
-                                        const std::string& pointer, ReadOne read_one) {
+std::vector<LayerType> read_layer_array(const JsonReader& reader, const Json& value, const std::string& pointer,
+                                        ReadOne read_one) {
   if (!value.is_array()) {
     reader.fail(pointer, "must be an array of layers (got " + value_text(value) + ")");
   }
   if (value.size() > static_cast<std::size_t>(kMaxLayers)) {
-    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers,
-                                     value.size()));
+    reader.fail(pointer, fmt::format("must have at most {} layers (got {})", kMaxLayers, value.size()));
   }
   std::vector<LayerType> layers;
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -150,13 +150,11 @@ std::string_view layer_type(const PoseLayer& layer) { return detail::kind_of(det
 
 namespace pita::scene::detail {
 
-std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
-                                        const std::string& pointer) {
+std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
   return read_layer_array<PoseLayer>(reader, value, pointer, read_pose_layer);
 }
 
-std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value,
-                                              const std::string& pointer) {
+std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
   std::vector<PoseLayer> layers = read_pose_layers(reader, value, pointer);
   std::vector<std::string_view> space;
   const std::span<const LayerKind<PoseLayer>> kinds = pose_layer_table();
@@ -207,8 +205,7 @@ Canvas read_canvas(const JsonReader& reader, const Json& value, const std::strin
   return canvas;
 }
 
-std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
-                               const std::string& pointer) {
+std::vector<Layer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer) {
   return read_layer_array<Layer>(reader, value, pointer, read_layer);
 }
 

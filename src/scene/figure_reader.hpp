@@ -36,15 +36,11 @@ std::vector<LayerKindInfo> pose_layer_kinds();
 Canvas read_canvas(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 // "layers": an array of at most kMaxLayers layers, each {"type": ..., ...}.
-std::vector<Layer> read_layers(const JsonReader& reader, const Json& value,
-                               const std::string& pointer);
-
+std::vector<Layer> read_layers(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 // "layers" of a pose scene or panel.
-std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value,
-                                        const std::string& pointer);
+std::vector<PoseLayer> read_pose_layers(const JsonReader& reader, const Json& value, const std::string& pointer);
 // The same, for a 3D scene: only the kinds marked in_space in the table.
-std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value,
-                                              const std::string& pointer);
+std::vector<PoseLayer> read_space_pose_layers(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 }  // namespace pita::scene::detail

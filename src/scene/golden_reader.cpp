@@ -1,6 +1,4 @@
 // "golden": a scene's own tolerances for `pita check` (docs/reference/check.md "Goldens").
-#include "scene/scene_readers.hpp"
-
 #include <array>
 #include <string>
 #include <string_view>
@@ -8,11 +6,13 @@
 
 #include <fmt/format.h>
 
+#include "scene/scene_readers.hpp"
+
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 4> kGoldenFields = {"number_tolerance", "svg_tolerance",
-                                                           "pixel_tolerance", "max_differing"};
+constexpr std::array<std::string_view, 4> kGoldenFields = {"number_tolerance", "svg_tolerance", "pixel_tolerance",
+                                                           "max_differing"};
 }  // namespace
 
 // "golden": {"number_tolerance", "svg_tolerance", "pixel_tolerance", "max_differing"}.
@@ -32,6 +32,5 @@ void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenToler
     out.max_differing = reader.number(*x, "/golden/max_differing", Interval{0.0, 1.0});
   }
 }
-
 
 }  // namespace pita::scene::detail

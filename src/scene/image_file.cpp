@@ -39,36 +39,41 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
   if (given.empty()) throw std::invalid_argument("the image path is empty");
   if (given.find('\0') != std::string::npos) throw std::invalid_argument("the image path contains a NUL character");
   const fs::path path(given);
-  const fs::path folder = fs::path(scene_file).parent_path().empty() ? fs::path(".") : fs::path(scene_file).parent_path();
+  const fs::path folder =
+      fs::path(scene_file).parent_path().empty() ? fs::path(".") : fs::path(scene_file).parent_path();
   std::error_code error;
   fs::path resolved;
   if (path.is_absolute()) {
     if (!options.allow_absolute_paths) {
-      throw std::invalid_argument(fmt::format("\"{}\" is an absolute path; images are found relative to the scene's "
-                                              "folder (pass --allow-absolute-paths to allow absolute ones)",
-                                              given));
+      throw std::invalid_argument(
+          fmt::format("\"{}\" is an absolute path; images are found relative to the scene's "
+                      "folder (pass --allow-absolute-paths to allow absolute ones)",
+                      given));
     }
     resolved = path;
   } else {
     const fs::path root = fs::canonical(folder, error);
     if (error) {
-      throw std::invalid_argument(fmt::format("cannot resolve the scene's folder {} ({})", folder.string(), error.message()));
+      throw std::invalid_argument(
+          fmt::format("cannot resolve the scene's folder {} ({})", folder.string(), error.message()));
     }
     const fs::path candidate = fs::weakly_canonical(root / path, error);
     if (error) {
       throw std::invalid_argument(fmt::format("image \"{}\" cannot be resolved ({})", given, error.message()));
     }
     if (!inside(root, candidate)) {
-      throw std::invalid_argument(fmt::format("image \"{}\" lies outside the scene's folder (images must be in the "
-                                              "scene's folder or below it: no \"..\" and no symbolic link out)",
-                                              given));
+      throw std::invalid_argument(
+          fmt::format("image \"{}\" lies outside the scene's folder (images must be in the "
+                      "scene's folder or below it: no \"..\" and no symbolic link out)",
+                      given));
     }
     resolved = folder / path;
   }
   const fs::file_status status = fs::status(resolved, error);
   if (error || !fs::exists(status)) {
-    throw std::invalid_argument(fmt::format("image \"{}\" does not exist{}", given,
-                                            path.is_absolute() ? "" : " (image paths are relative to the scene's folder)"));
+    throw std::invalid_argument(
+        fmt::format("image \"{}\" does not exist{}", given,
+                    path.is_absolute() ? "" : " (image paths are relative to the scene's folder)"));
   }
   if (!fs::is_regular_file(status)) {
     throw std::invalid_argument(fmt::format("image \"{}\" is not a regular file", given));

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "scene/figure.hpp"
-#include "scene/scene.hpp"
 #include "scene/read_options.hpp"
+#include "scene/scene.hpp"
 
 namespace pita::scene {
 
@@ -21,8 +21,7 @@ namespace pita::scene {
 // ".." and symbolic links are resolved; an existing regular file that can be
 // read; a PNG (its signature and IHDR header) of 1 to kMaxImageSide pixels a
 // side. Throws std::invalid_argument with the reason.
-ImageRef check_image_file(const std::string& scene_file, const std::string& given,
-                          const ReadOptions& options);
+ImageRef check_image_file(const std::string& scene_file, const std::string& given, const ReadOptions& options);
 
 // The image files the scene's shapes name (every panel's), resolved, each
 // once, in the order they first appear: what `pita watch` and `pita serve`

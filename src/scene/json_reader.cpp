@@ -19,12 +19,10 @@ namespace {
 // The keys of "options" and their values: core/pitas/method_options.hpp.
 constexpr auto kOptionFields = method_option_names();
 
-
 // Characters (Unicode code points) of UTF-8 text; nlohmann has checked the encoding.
 std::size_t character_count(std::string_view text) {
-  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
-    return (static_cast<unsigned char>(c) & 0xC0U) != 0x80U;
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0U) != 0x80U; }));
 }
 
 std::string interval_text(const Interval& bounds) {
@@ -134,15 +132,17 @@ std::string unknown_scene_method_reason(std::string_view name, MethodFilter filt
   if (const MethodEntry* other = find_method_entry(name)) {
     // A method of the other kind of scene.
     return std::visit(overloaded{[&](PoseMethod) {
-                                   return fmt::format("method {} interpolates poses, and this scene has keyframes "
-                                                      "(arrows): give it \"poses\" instead, or an arrow method "
-                                                      "such as P6",
-                                                      other->id);
+                                   return fmt::format(
+                                       "method {} interpolates poses, and this scene has keyframes "
+                                       "(arrows): give it \"poses\" instead, or an arrow method "
+                                       "such as P6",
+                                       other->id);
                                  },
                                  [&](Method) {
-                                   return fmt::format("method {} interpolates arrows, and this is a pose scene: "
-                                                      "give it \"keyframes\" instead, or a pose method such as SAM",
-                                                      other->id);
+                                   return fmt::format(
+                                       "method {} interpolates arrows, and this is a pose scene: "
+                                       "give it \"keyframes\" instead, or a pose method such as SAM",
+                                       other->id);
                                  }},
                       other->method);
   }
@@ -170,8 +170,7 @@ const Json* JsonReader::member(const Json& object, const std::string& key) {
   return found == object.end() ? nullptr : &*found;
 }
 
-void JsonReader::object(const Json& value, const std::string& pointer,
-                        std::string_view what) const {
+void JsonReader::object(const Json& value, const std::string& pointer, std::string_view what) const {
   if (!value.is_object()) {
     fail(pointer, fmt::format("{} must be an object (got {})", what, value_text(value)));
   }
@@ -193,8 +192,7 @@ std::string JsonReader::string(const Json& value, const std::string& pointer) co
   return value.get<std::string>();
 }
 
-std::string JsonReader::text(const Json& value, const std::string& pointer,
-                             std::size_t max_length) const {
+std::string JsonReader::text(const Json& value, const std::string& pointer, std::size_t max_length) const {
   std::string result = string(value, pointer);
   if (result.empty()) fail(pointer, "must not be empty");
   const std::size_t length = character_count(result);
@@ -220,8 +218,7 @@ double JsonReader::number(const Json& value, const std::string& pointer) const {
   return x;
 }
 
-double JsonReader::number(const Json& value, const std::string& pointer,
-                          const Interval& bounds) const {
+double JsonReader::number(const Json& value, const std::string& pointer, const Interval& bounds) const {
   const double x = number(value, pointer);
   const bool above = bounds.min_open ? x > bounds.min : x >= bounds.min;
   const bool below = bounds.max_open ? x < bounds.max : x <= bounds.max;
@@ -232,8 +229,8 @@ double JsonReader::number(const Json& value, const std::string& pointer,
 }
 
 double JsonReader::integer(const Json& value, const std::string& pointer) const {
-  const bool ok = value.is_number() && std::isfinite(value.get<double>()) &&
-                  value.get<double>() == std::trunc(value.get<double>());
+  const bool ok =
+      value.is_number() && std::isfinite(value.get<double>()) && value.get<double>() == std::trunc(value.get<double>());
   if (!ok) fail(pointer, "must be an integer (got " + value_text(value) + ")");
   return value.get<double>();
 }
@@ -241,8 +238,7 @@ double JsonReader::integer(const Json& value, const std::string& pointer) const 
 int JsonReader::integer(const Json& value, const std::string& pointer, int min, int max) const {
   const double x = integer(value, pointer);
   if (x < min || x > max) {
-    fail(pointer, fmt::format("must be an integer between {} and {} (got {})", min, max,
-                              number_text(x)));
+    fail(pointer, fmt::format("must be an integer between {} and {} (got {})", min, max, number_text(x)));
   }
   return static_cast<int>(x);
 }
@@ -251,14 +247,15 @@ Point JsonReader::point(const Json& value, const std::string& pointer) const {
   if (!value.is_array() || value.size() != 2) {
     fail(pointer, "must be an array of two numbers [x, y] (got " + value_text(value) + ")");
   }
-  return make_point(number(value[0], element_pointer(pointer, 0)),
-                    number(value[1], element_pointer(pointer, 1)));
+  return make_point(number(value[0], element_pointer(pointer, 0)), number(value[1], element_pointer(pointer, 1)));
 }
 
 Color JsonReader::color(const Json& value, const std::string& pointer) const {
   if (!value.is_string()) {
-    fail(pointer, "must be a color: a string \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or a name such "
-                  "as \"red\" (got " + value_text(value) + ")");
+    fail(pointer,
+         "must be a color: a string \"#rgb\", \"#rrggbb\", \"#rrggbbaa\" or a name such "
+         "as \"red\" (got " +
+             value_text(value) + ")");
   }
   try {
     return parse_color(value.get<std::string>());
@@ -289,7 +286,8 @@ std::vector<TimedPoint> JsonReader::points(const Json& value, const std::string&
   for (std::size_t i = 0; i < value.size(); ++i) {
     const std::string at = element_pointer(pointer, i);
     const Json& item = value[i];
-    if (!item.is_object()) fail(at, "a timed point must be an object {\"t\": knot, \"p\": [x, y]} (got " + value_text(item) + ")");
+    if (!item.is_object())
+      fail(at, "a timed point must be an object {\"t\": knot, \"p\": [x, y]} (got " + value_text(item) + ")");
     static constexpr std::array<std::string_view, 2> kPointFields = {"t", "p"};
     check_fields(item, at, kPointFields);
     const Json* knot = member(item, "t");
@@ -332,8 +330,7 @@ void JsonReader::check_chain(Method method, std::optional<Chain> chain, std::siz
   }
 }
 
-MethodOptions JsonReader::options(const Json& value, const std::string& pointer,
-                                  MethodOptions base) const {
+MethodOptions JsonReader::options(const Json& value, const std::string& pointer, MethodOptions base) const {
   if (!value.is_object()) fail(pointer, "must be an object (got " + value_text(value) + ")");
   check_fields(value, pointer, kOptionFields);
   if (const Json* anchor = member(value, "anchor")) {

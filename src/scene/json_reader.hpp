@@ -18,8 +18,8 @@
 
 #include "core/arrow.hpp"
 #include "core/keyframe.hpp"
-#include "core/pitas/method_options.hpp"
 #include "core/methods.hpp"
+#include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
 #include "scene/figure.hpp"
 #include "scene/read_options.hpp"
@@ -66,8 +66,7 @@ struct Interval {
 
 class JsonReader {
  public:
-  explicit JsonReader(std::string file, ReadOptions options = {})
-      : file_(std::move(file)), options_(options) {}
+  explicit JsonReader(std::string file, ReadOptions options = {}) : file_(std::move(file)), options_(options) {}
 
   const std::string& file() const { return file_; }
   const ReadOptions& options() const { return options_; }
@@ -81,8 +80,7 @@ class JsonReader {
 
   // Fails at the first member of `object` whose key is not in `known`, with a
   // "did you mean" among `known`.
-  void check_fields(const Json& object, const std::string& pointer,
-                    std::span<const std::string_view> known) const;
+  void check_fields(const Json& object, const std::string& pointer, std::span<const std::string_view> known) const;
 
   std::string string(const Json& value, const std::string& pointer) const;
   // A string of 1 .. max_length characters (code points).
@@ -100,8 +98,8 @@ class JsonReader {
 
   // One of `names`, mapped to the value at the same index.
   template <typename T, std::size_t N>
-  T choice(const Json& value, const std::string& pointer,
-           const std::array<std::string_view, N>& names, const std::array<T, N>& values) const {
+  T choice(const Json& value, const std::string& pointer, const std::array<std::string_view, N>& names,
+           const std::array<T, N>& values) const {
     if (value.is_string()) {
       const std::string given = value.get<std::string>();
       for (std::size_t i = 0; i < N; ++i) {
@@ -132,9 +130,8 @@ class JsonReader {
   // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4) read `from` as the
   // keyframe; when any moves, `targets` receives every keyframe's `to` (a
   // keyframe that does not move is its own target), else stays empty.
-  std::vector<Keyframe> keyframes(const Json& value, const std::string& pointer,
-                                  Method method, std::vector<Arrow>* targets = nullptr,
-                                  KnotOrder order = KnotOrder::increasing) const;
+  std::vector<Keyframe> keyframes(const Json& value, const std::string& pointer, Method method,
+                                  std::vector<Arrow>* targets = nullptr, KnotOrder order = KnotOrder::increasing) const;
   // An arrow: {"p", and "q" or "m" and "w"; "turns" optional}.
   Arrow arrow(const Json& value, const std::string& pointer) const;
 

@@ -27,9 +27,7 @@ std::pair<int, int> line_and_column(std::string_view text, std::size_t index) {
   index = std::min(index, text.size());
   const std::string_view before = text.substr(0, index);
   const auto line = 1 + std::count(before.begin(), before.end(), '\n');
-  const std::size_t line_start = before.rfind('\n') == std::string_view::npos
-                                     ? 0
-                                     : before.rfind('\n') + 1;
+  const std::size_t line_start = before.rfind('\n') == std::string_view::npos ? 0 : before.rfind('\n') + 1;
   return {static_cast<int>(line), static_cast<int>(index - line_start + 1)};
 }
 
@@ -60,8 +58,7 @@ class NumberOverflowLocator : public nlohmann::json_sax<Json> {
   bool end_object() override { return true; }
   bool start_array(std::size_t) override { return true; }
   bool end_array() override { return true; }
-  bool parse_error(std::size_t position, const std::string& last_token,
-                   const Json::exception&) override {
+  bool parse_error(std::size_t position, const std::string& last_token, const Json::exception&) override {
     end = position;
     token = last_token;
     return false;
@@ -101,7 +98,9 @@ class DuplicateKeyFinder {
         stack_.pop_back();
         next_element();
         break;
-      case Event::value: next_element(); break;
+      case Event::value:
+        next_element();
+        break;
     }
     return true;
   }
@@ -125,7 +124,8 @@ class DuplicateKeyFinder {
         text += '/' + std::to_string(frame.index);
       } else {
         text += '/';
-        for (char c : frame.key) text += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
+        for (char c : frame.key)
+          text += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);
       }
     }
     return text;
@@ -153,7 +153,9 @@ std::size_t too_deep_at(std::string_view text) {
       continue;
     }
     switch (c) {
-      case '"': in_string = true; break;
+      case '"':
+        in_string = true;
+        break;
       case '[':
       case '{':
         if (++depth > kMaxJsonDepth) return i;
@@ -162,7 +164,8 @@ std::size_t too_deep_at(std::string_view text) {
       case '}':
         if (depth > 0) --depth;
         break;
-      default: break;
+      default:
+        break;
     }
   }
   return std::string_view::npos;
@@ -170,8 +173,7 @@ std::size_t too_deep_at(std::string_view text) {
 
 }  // namespace
 
-std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes,
-                            std::string_view what) {
+std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes, std::string_view what) {
   const std::string name = path.string();
   std::error_code ignored;
   if (std::filesystem::is_directory(path, ignored)) {
@@ -186,15 +188,13 @@ std::string read_input_file(const std::filesystem::path& path, std::size_t max_b
   std::string text;
   char chunk[1 << 16];
   while (in && text.size() <= max_bytes) {
-    in.read(chunk, static_cast<std::streamsize>(
-                       std::min<std::size_t>(sizeof chunk, max_bytes + 1 - text.size())));
+    in.read(chunk, static_cast<std::streamsize>(std::min<std::size_t>(sizeof chunk, max_bytes + 1 - text.size())));
     text.append(chunk, static_cast<std::size_t>(in.gcount()));
   }
   if (in.bad()) throw SceneError(name, "", fmt::format("cannot read the {}", what));
   if (text.size() > max_bytes) {
     throw SceneError(name, "",
-                     fmt::format("the {} is larger than the limit of {} MiB", what,
-                                 max_bytes / (1024 * 1024)));
+                     fmt::format("the {} is larger than the limit of {} MiB", what, max_bytes / (1024 * 1024)));
   }
   return text;
 }
@@ -226,12 +226,10 @@ Json parse_json(std::string_view text, const std::string& file) {
   } catch (const Json::out_of_range&) {
     NumberOverflowLocator locator;
     Json::sax_parse(text, &locator);
-    const std::size_t start =
-        locator.end >= locator.token.size() ? locator.end - locator.token.size() : 0;
+    const std::size_t start = locator.end >= locator.token.size() ? locator.end - locator.token.size() : 0;
     const auto [line, column] = line_and_column(text, start);
     throw SceneError(file, line, column,
-                     fmt::format("number {} is out of range (too large for a double)",
-                                 locator.token));
+                     fmt::format("number {} is out of range (too large for a double)", locator.token));
   }
 }
 

@@ -18,8 +18,7 @@ namespace pita::scene {
 // endless one, /dev/zero) is refused after reading max_bytes + 1, never read
 // whole. `what` names the file in messages ("scene file", "golden data file").
 // Throws SceneError.
-std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes,
-                            std::string_view what);
+std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes, std::string_view what);
 
 // The document, or SceneError at the file's line and column (malformed JSON,
 // a NUL byte, nesting deeper than kMaxJsonDepth, a number too large for a

@@ -2,8 +2,6 @@
 // keyframes in their two forms (an arrow p, m, w or its end points p, q, with
 // whole turns), moving keyframes, arrows, and the checks of their coordinates
 // and knots.
-#include "scene/json_reader.hpp"
-
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -14,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "core/limits.hpp"
+#include "scene/json_reader.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::scene::detail {
@@ -26,8 +25,8 @@ constexpr std::array<std::string_view, 5> kArrowFields = {"p", "m", "w", "q", "t
 
 }  // namespace
 
-std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string& pointer,
-                                            Method method, std::vector<Arrow>* targets, KnotOrder order) const {
+std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string& pointer, Method method,
+                                            std::vector<Arrow>* targets, KnotOrder order) const {
   if (!value.is_array()) {
     fail(pointer, "must be an array of keyframes (got " + value_text(value) + ")");
   }
@@ -49,8 +48,10 @@ std::vector<Keyframe> JsonReader::keyframes(const Json& value, const std::string
       // A moving keyframe (Sec. 7.4): {"t", "from": ARROW, "to": ARROW}.
       if (targets == nullptr) fail(at + (from ? "/from" : "/to"), "moving keyframes are not allowed here");
       check_fields(value[i], at, kMovingKeyframeFields);
-      if (from == nullptr) fail(at + "/from", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
-      if (target == nullptr) fail(at + "/to", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+      if (from == nullptr)
+        fail(at + "/from", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
+      if (target == nullptr)
+        fail(at + "/to", "missing required field (a moving keyframe needs \"from\" and \"to\" arrows)");
       const Json* knot = member(value[i], "t");
       if (knot == nullptr) fail(at + "/t", "missing required field (the knot, a time value)");
       next.t = number(*knot, at + "/t");
@@ -112,8 +113,8 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
   Keyframe keyframe;
   keyframe.t = number(*knot, pointer + "/t");
   if (std::abs(keyframe.t) > kMaxKeyframeValue) {
-    fail(pointer + "/t", fmt::format("knot must be within +-{:g} (got {})", kMaxKeyframeValue,
-                                     number_text(keyframe.t)));
+    fail(pointer + "/t",
+         fmt::format("knot must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(keyframe.t)));
   }
 
   const Json* start = member(value, "p");
@@ -153,16 +154,16 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
     const double m = number(*magnitude, pointer + "/m");
     if (!(m > 0.0)) fail(pointer + "/m", "magnitude must be > 0 (got " + number_text(m) + ")");
     if (m < kMinMagnitude || m > kMaxKeyframeValue) {
-      fail(pointer + "/m", fmt::format("magnitude must be between {:g} and {:g} (got {})",
-                                       kMinMagnitude, kMaxKeyframeValue, number_text(m)));
+      fail(pointer + "/m", fmt::format("magnitude must be between {:g} and {:g} (got {})", kMinMagnitude,
+                                       kMaxKeyframeValue, number_text(m)));
     }
     keyframe.arrow = Arrow{p, m, number(*winding, pointer + "/w")};
     if (std::abs(keyframe.arrow.w) > kMaxWinding) {
-      fail(pointer + "/w", fmt::format("winding must be within +-{:g} radians (about {:.0f} "
-                                       "turns; beyond, 2 pi k loses the angle's precision) "
-                                       "(got {})",
-                                       kMaxWinding, kMaxWinding / (2 * std::numbers::pi),
-                                       number_text(keyframe.arrow.w)));
+      fail(pointer + "/w",
+           fmt::format("winding must be within +-{:g} radians (about {:.0f} "
+                       "turns; beyond, 2 pi k loses the angle's precision) "
+                       "(got {})",
+                       kMaxWinding, kMaxWinding / (2 * std::numbers::pi), number_text(keyframe.arrow.w)));
     }
   }
 
@@ -170,10 +171,9 @@ Keyframe JsonReader::keyframe(const Json& value, const std::string& pointer) con
     const double k = integer(*turns, pointer + "/turns");
     keyframe.arrow = with_turns(keyframe.arrow, k);
     if (!(std::abs(keyframe.arrow.w) <= kMaxWinding)) {
-      fail(pointer + "/turns",
-           fmt::format("too many turns: the winding must stay within +-{:g} radians (got {} "
-                       "turns)",
-                       kMaxWinding, number_text(k)));
+      fail(pointer + "/turns", fmt::format("too many turns: the winding must stay within +-{:g} radians (got {} "
+                                           "turns)",
+                                           kMaxWinding, number_text(k)));
     }
   }
   return keyframe;
@@ -184,8 +184,7 @@ void JsonReader::check_coordinates(Point x, const std::string& pointer) const {
     const double v = i == 0 ? x.real() : x.imag();
     if (std::abs(v) > kMaxKeyframeValue) {
       fail(pointer + "/" + std::to_string(i),
-           fmt::format("coordinate must be within +-{:g} (got {})", kMaxKeyframeValue,
-                       number_text(v)));
+           fmt::format("coordinate must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(v)));
     }
   }
 }

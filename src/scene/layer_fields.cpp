@@ -7,15 +7,13 @@
 namespace pita::scene::detail {
 
 // "dash": [on, off, ...], at most kMaxDashes lengths > 0; [] is solid.
-std::vector<double> read_dash(const JsonReader& reader, const Json& value,
-                              const std::string& pointer) {
+std::vector<double> read_dash(const JsonReader& reader, const Json& value, const std::string& pointer) {
   if (!value.is_array()) {
-    reader.fail(pointer, fmt::format("must be an array of at most {} dash lengths > 0 (got {})",
-                                     kMaxDashes, value_text(value)));
+    reader.fail(pointer,
+                fmt::format("must be an array of at most {} dash lengths > 0 (got {})", kMaxDashes, value_text(value)));
   }
   if (value.size() > kMaxDashes) {
-    reader.fail(pointer, fmt::format("must have at most {} dash lengths (got {})", kMaxDashes,
-                                     value.size()));
+    reader.fail(pointer, fmt::format("must have at most {} dash lengths (got {})", kMaxDashes, value.size()));
   }
   std::vector<double> dash;
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -58,8 +56,8 @@ void read_frame_times(const Fields& fields, std::vector<double>& out) {
       }
     }
     if (!times->is_array() || times->empty() || times->size() > static_cast<std::size_t>(kMaxFigureSamples)) {
-      fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples,
-                                                value_text(*times)));
+      fields.reader().fail(
+          pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxFigureSamples, value_text(*times)));
     }
     for (std::size_t i = 0; i < times->size(); ++i) {
       out.push_back(fields.reader().number((*times)[i], element_pointer(pointer, i)));
@@ -73,16 +71,14 @@ void read_range(const Fields& fields, std::optional<TimeRange>& out) {
   if (value == nullptr) return;
   const std::string pointer = fields.at("range");
   if (!value->is_array() || value->size() != 2) {
-    fields.reader().fail(pointer, "must be an array of two times [from, to] (got " +
-                                      value_text(*value) + ")");
+    fields.reader().fail(pointer, "must be an array of two times [from, to] (got " + value_text(*value) + ")");
   }
   const double from = fields.reader().number((*value)[0], element_pointer(pointer, 0));
   const double to = fields.reader().number((*value)[1], element_pointer(pointer, 1));
   if (!(to > from)) {
-    fields.reader().fail(
-        element_pointer(pointer, 1),
-        fmt::format("the end of a range must be greater than its start {} (got {})",
-                    number_text(from), number_text(to)));
+    fields.reader().fail(element_pointer(pointer, 1),
+                         fmt::format("the end of a range must be greater than its start {} (got {})", number_text(from),
+                                     number_text(to)));
   }
   out = TimeRange{from, to};
 }
@@ -98,8 +94,9 @@ void read_figure_samples(const Fields& fields, std::optional<int>& out) {
 MethodOptionsPatch read_options_patch(const Fields& fields, const Json& value) {
   const std::string pointer = fields.at("options");
   if (value.is_object() && JsonReader::member(value, "knots") != nullptr) {
-    fields.reader().fail(pointer + "/knots", "the knot order belongs to the panel's keyframes; give it in the "
-                                             "panel's or the scene's \"options\"");
+    fields.reader().fail(pointer + "/knots",
+                         "the knot order belongs to the panel's keyframes; give it in the "
+                         "panel's or the scene's \"options\"");
   }
   MethodOptionsPatch patch;
   patch.values = fields.reader().options(value, pointer, MethodOptions{});
@@ -129,18 +126,16 @@ void read_text_place(const Fields& fields, std::optional<Point>& at, LegendLayer
 // {"min": [x, y], "max": [x, y]} with min < max on both axes.
 Box read_box(const Fields& box) {
   const JsonReader& reader = box.reader();
-  const Point min = reader.point(box.required("min", "the corner [x, y] with the least x and y"),
-                                 box.at("min"));
-  const Point max = reader.point(box.required("max", "the corner [x, y] with the greatest x and y"),
-                                 box.at("max"));
+  const Point min = reader.point(box.required("min", "the corner [x, y] with the least x and y"), box.at("min"));
+  const Point max = reader.point(box.required("max", "the corner [x, y] with the greatest x and y"), box.at("max"));
   const std::array<double, 2> low = {min.real(), min.imag()};
   const std::array<double, 2> high = {max.real(), max.imag()};
   for (std::size_t axis = 0; axis < 2; ++axis) {
     if (!(high[axis] > low[axis])) {
       const char* name = axis == 0 ? "x" : "y";
       reader.fail(element_pointer(box.at("max"), axis),
-                  fmt::format("max {} must be greater than min {} {} (got {})", name, name,
-                              number_text(low[axis]), number_text(high[axis])));
+                  fmt::format("max {} must be greater than min {} {} (got {})", name, name, number_text(low[axis]),
+                              number_text(high[axis])));
     }
   }
   return Box{min, max};
@@ -161,8 +156,8 @@ std::vector<Color> read_colors(const Fields& fields, std::vector<Color> defaults
   if (colors == nullptr) return defaults;
   const std::string pointer = fields.at("colors");
   if (!colors->is_array() || colors->empty() || colors->size() > kMaxKeyframeColors) {
-    fields.reader().fail(pointer, fmt::format("must be an array of 1 to {} colors (got {})",
-                                              kMaxKeyframeColors, value_text(*colors)));
+    fields.reader().fail(
+        pointer, fmt::format("must be an array of 1 to {} colors (got {})", kMaxKeyframeColors, value_text(*colors)));
   }
   std::vector<Color> result;
   for (std::size_t i = 0; i < colors->size(); ++i) {
@@ -180,9 +175,9 @@ void read_optional_line(const Fields& fields, std::string_view key, std::optiona
     return;
   }
   if (!value->is_object()) {
-    fields.reader().fail(fields.at(key),
-                         "must be a line style {\"color\", \"width\", \"opacity\", \"dash\"} or false (got " +
-                             value_text(*value) + ")");
+    fields.reader().fail(
+        fields.at(key),
+        "must be a line style {\"color\", \"width\", \"opacity\", \"dash\"} or false (got " + value_text(*value) + ")");
   }
   LineStyle style = line.value_or(LineStyle{});
   read_line_object(fields, key, style);

@@ -35,10 +35,10 @@ inline constexpr std::array<std::string_view, 2> kLabelPlaceNames = {"at", "auto
 inline constexpr std::array<bool, 2> kLabelPlaces = {false, true};
 
 inline constexpr std::array<std::string_view, 4> kCornerNames = {"top-left", "top-right", "bottom-left",
-                                                          "bottom-right"};
+                                                                 "bottom-right"};
 inline constexpr std::array<LegendLayer::Corner, 4> kCorners = {
-    LegendLayer::Corner::top_left, LegendLayer::Corner::top_right,
-    LegendLayer::Corner::bottom_left, LegendLayer::Corner::bottom_right};
+    LegendLayer::Corner::top_left, LegendLayer::Corner::top_right, LegendLayer::Corner::bottom_left,
+    LegendLayer::Corner::bottom_right};
 
 // An object being read: its members and where it is.
 class Fields {
@@ -49,9 +49,7 @@ class Fields {
   const JsonReader& reader() const { return reader_; }
   const Json& object() const { return object_; }
   const std::string& pointer() const { return pointer_; }
-  const Json* get(std::string_view key) const {
-    return JsonReader::member(object_, std::string(key));
-  }
+  const Json* get(std::string_view key) const { return JsonReader::member(object_, std::string(key)); }
   std::string at(std::string_view key) const { return member_pointer(pointer_, key); }
 
   // Each reads the member `key` into `out` when it is there.
@@ -77,8 +75,8 @@ class Fields {
     if (const Json* value = get(key)) out = reader_.integer(*value, at(key), min, max);
   }
   template <typename T, std::size_t N>
-  void choice(std::string_view key, const std::array<std::string_view, N>& names,
-              const std::array<T, N>& values, T& out) const {
+  void choice(std::string_view key, const std::array<std::string_view, N>& names, const std::array<T, N>& values,
+              T& out) const {
     if (const Json* value = get(key)) out = reader_.choice(*value, at(key), names, values);
   }
 
@@ -95,8 +93,7 @@ class Fields {
 };
 
 // "dash": [on, off, ...], at most kMaxDashes lengths > 0; [] is solid.
-std::vector<double> read_dash(const JsonReader& reader, const Json& value,
-                              const std::string& pointer);
+std::vector<double> read_dash(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 // "color", "width", "opacity", "dash" of a line, over `line`'s defaults.
 void read_line(const Fields& fields, LineStyle& line);

@@ -36,8 +36,8 @@ struct LayerKind {
   std::string_view type;
   std::span<const std::string_view> fields;
   LayerType (*read)(const Fields&);
-  std::size_t alternative;  // alternative_of<its struct, LayerType>()
-  bool in_space = false;    // pose layers that 3D scenes draw too (render/layers/pose_layers.hpp)
+  std::size_t alternative;                   // alternative_of<its struct, LayerType>()
+  bool in_space = false;                     // pose layers that 3D scenes draw too (render/layers/pose_layers.hpp)
   LayerDraws draws = LayerDraws::keyframes;  // arrow layers: the keys they need
 };
 

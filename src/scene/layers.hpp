@@ -1,8 +1,7 @@
-// The layers of a figure (docs/reference/render.md "Figures", docs/reference/pose-scenes.md "Pose scenes"): one struct per
-// layer kind with its fields resolved (defaults applied, colours parsed, names
-// looked up), the styles they share, and the variants of the layers of arrow
-// scenes (Layer) and of pose scenes (PoseLayer). Read by
-// arrow_layer_reader.cpp and pose_layer_reader.cpp; drawn by render/.
+// The layers of a figure (docs/reference/render.md "Figures", docs/reference/pose-scenes.md "Pose scenes"): one struct
+// per layer kind with its fields resolved (defaults applied, colours parsed, names looked up), the styles they share,
+// and the variants of the layers of arrow scenes (Layer) and of pose scenes (PoseLayer). Read by arrow_layer_reader.cpp
+// and pose_layer_reader.cpp; drawn by render/.
 #pragma once
 #include <array>
 #include <optional>
@@ -16,15 +15,14 @@
 #include "core/pitas/method_options.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/point_curves.hpp"
-#include "core/sam_family_motion.hpp"
 #include "core/pose_motion.hpp"
+#include "core/sam_family_motion.hpp"
 #include "scene/limits.hpp"
 #include "scene/measure_name.hpp"
 #include "scene/motion_keys.hpp"
 #include "scene/timing.hpp"
 
 namespace pita::scene {
-
 
 // sRGB colour with alpha, each channel in [0, 1].
 struct Color {
@@ -36,9 +34,9 @@ struct Color {
 // scale 1 (they do not grow with the view).
 struct LineStyle {
   Color color;
-  double width = 1.0;          // > 0
-  double opacity = 1.0;        // in [0, 1], multiplies color.a
-  std::vector<double> dash;    // on, off, ... lengths (> 0); empty = solid
+  double width = 1.0;        // > 0
+  double opacity = 1.0;      // in [0, 1], multiplies color.a
+  std::vector<double> dash;  // on, off, ... lengths (> 0); empty = solid
   friend bool operator==(const LineStyle&, const LineStyle&) = default;
 };
 
@@ -47,8 +45,6 @@ struct Box {
   Point min;
   Point max;
 };
-
-
 
 // Where a keyframe's winding spiral is centred (Fig. 1: midpoint; others: start).
 enum class SpiralCenter { start, middle };  // "start", "midpoint"
@@ -84,13 +80,13 @@ struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   std::optional<Method> method;
   MethodOptionsPatch options;
   std::string label;
-  bool extended = false;               // draw from p - (q - p) to q (Sec. 2.1)
-  bool coils = false;                  // each frame's winding as a spiral at p (Fig. 3)
-  bool heads = false;                  // each frame as an arrow, head at q (Figs. 7, 28)
-  std::optional<int> samples;          // default: the panel's samples
-  std::optional<TimeRange> range;      // default: [a, c]
-  std::vector<double> times;           // set: exactly these times (Fig. 5's D(1/4)), not samples/range
-  bool dots = false;                   // a dot at each frame's p instead of its segment (Fig. 6)
+  bool extended = false;           // draw from p - (q - p) to q (Sec. 2.1)
+  bool coils = false;              // each frame's winding as a spiral at p (Fig. 3)
+  bool heads = false;              // each frame as an arrow, head at q (Figs. 7, 28)
+  std::optional<int> samples;      // default: the panel's samples
+  std::optional<TimeRange> range;  // default: [a, c]
+  std::vector<double> times;       // set: exactly these times (Fig. 5's D(1/4)), not samples/range
+  bool dots = false;               // a dot at each frame's p instead of its segment (Fig. 6)
 };
 
 struct KeyframesLayer {  // "keyframes": A, B, C as arrows with heads and winding spirals
@@ -98,14 +94,14 @@ struct KeyframesLayer {  // "keyframes": A, B, C as arrows with heads and windin
                             Color{0.0, 0.0, 0.85, 1.0}};  // one per keyframe, cycled
   double width = 2.0;
   double opacity = 1.0;
-  bool winding = true;                 // draw the spiral whose turns show w
+  bool winding = true;  // draw the spiral whose turns show w
   SpiralCenter spiral_center = SpiralCenter::start;
   bool extended = false;
 };
 
 struct TrajectoryLayer {  // "trajectory": the smooth path of p, q or the midpoint
   TrackedPoint point = TrackedPoint::start;
-  int samples = 512;                   // [2, kMaxTrajectorySamples], independent of the pattern
+  int samples = 512;  // [2, kMaxTrajectorySamples], independent of the pattern
   std::optional<TimeRange> range;
   LineStyle line{Color{0.45, 0.45, 0.45, 1.0}, 1.0, 1.0, {}};
   // The path of another method, or of the panel's with other options, as
@@ -117,26 +113,26 @@ struct TrajectoryLayer {  // "trajectory": the smooth path of p, q or the midpoi
 struct StrokeLayer {  // "stroke": the filled quads between consecutive frames (Sec. 7.2)
   Color fill{0.25, 0.4, 0.65, 1.0};
   double opacity = 1.0;
-  std::optional<LineStyle> outline;    // the strip's boundary
+  std::optional<LineStyle> outline;  // the strip's boundary
   std::optional<int> samples;
   std::optional<TimeRange> range;
 };
 
-struct BannerLayer {  // "banner": a text mapped through the pattern's quad strip (Sec. 7.3)
-  std::string text;                    // required, 1..kMaxTextLength characters
-  std::string font = "Sans Bold";      // pango font description (the size is irrelevant)
+struct BannerLayer {               // "banner": a text mapped through the pattern's quad strip (Sec. 7.3)
+  std::string text;                // required, 1..kMaxTextLength characters
+  std::string font = "Sans Bold";  // pango font description (the size is irrelevant)
   Color fill{0.1, 0.1, 0.1, 1.0};
   double opacity = 1.0;
   std::optional<LineStyle> outline;
-  double padding = 0.1;                // fraction of the strip's width left free on each side, [0, 0.45]
+  double padding = 0.1;  // fraction of the strip's width left free on each side, [0, 0.45]
   std::optional<int> samples;
   std::optional<TimeRange> range;
 };
 
 struct DiscrepancyLayer {  // "discrepancy": circles of radius scale * E (Sec. 6.2, Fig. 17)
   Predictor predictor = Predictor::previous;
-  std::optional<Method> method;        // predictor "pita": default the panel's method
-  double scale = 30.0;                 // world units per unit of E, > 0
+  std::optional<Method> method;  // predictor "pita": default the panel's method
+  double scale = 30.0;           // world units per unit of E, > 0
   LineStyle line{Color{0.8, 0.3, 0.0, 1.0}, 1.0, 1.0, {}};
   std::optional<Color> fill;
   std::optional<int> samples;
@@ -145,7 +141,7 @@ struct DiscrepancyLayer {  // "discrepancy": circles of radius scale * E (Sec. 6
 struct LabelLayer {  // "label": a text at a point of the plane
   std::string text;
   Point at;
-  double size = 12.0;                  // pixels
+  double size = 12.0;  // pixels
   Color color{0.0, 0.0, 0.0, 1.0};
   // "place": "at" (the text starts at `at`) or "auto": the figure moves it
   // around `at` to where it covers no data (render/label_placement.hpp).
@@ -155,7 +151,7 @@ struct LabelLayer {  // "label": a text at a point of the plane
 struct LegendLayer {  // "legend": the keyframes' colours and knots, and the method
   enum class Corner { top_left, top_right, bottom_left, bottom_right };
   Corner corner = Corner::top_left;
-  double size = 11.0;                  // pixels
+  double size = 11.0;  // pixels
 };
 
 // "plot": the distance-time function of the panel's timing (the chapter's
@@ -173,11 +169,11 @@ enum class PlotOf { distance, area };
 struct PlotLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn
   PlotOf of = PlotOf::distance;
-  std::vector<PoseMethod> methods;            // "area": empty = the panel's method
+  std::vector<PoseMethod> methods;  // "area": empty = the panel's method
   std::vector<Color> colors{Color{0.0, 0.45, 0.0, 1.0}, Color{0.75, 0.1, 0.1, 1.0},
                             Color{0.1, 0.3, 0.7, 1.0}};  // "area": one per method, cycled
   TrackedPoint point = TrackedPoint::start;
-  int samples = 200;                          // [2, kMaxTrajectorySamples]
+  int samples = 200;  // [2, kMaxTrajectorySamples]
   LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 1.5, 1.0, {}};
   bool marks = true;
 };
@@ -188,10 +184,10 @@ inline constexpr std::size_t kMaxPlotMethods = 8;
 // chain, or one of the curves it is compared with (core/point_curves.hpp).
 struct PointTrajectoryLayer {
   PointCurve curve = PointCurve::pita;
-  int samples = 512;                   // [2, kMaxTrajectorySamples]
-  std::optional<TimeRange> range;      // default: first to last point's knot
+  int samples = 512;               // [2, kMaxTrajectorySamples]
+  std::optional<TimeRange> range;  // default: first to last point's knot
   LineStyle line{Color{0.1, 0.1, 0.1, 1.0}, 1.5, 1.0, {}};
-  bool dots = true;                    // a dot at each timed point
+  bool dots = true;  // a dot at each timed point
 };
 
 // "vectors" (PITA Figs. 9, 14, 15; docs/paper-notes.md N40): at each frame
@@ -202,13 +198,13 @@ struct PointTrajectoryLayer {
 enum class VectorKind { velocity, acceleration };  // "of"
 struct VectorsLayer {
   VectorKind of = VectorKind::acceleration;
-  bool at_p = true, at_q = true;               // "at": "both", "p" or "q"
-  bool tail_at_point = true;                   // "at_point": "tail" (from the point) or "head" (onto it)
-  double scale = 0.1;                          // > 0; default by `of` (reader)
-  Color color_p{0.0, 0.0, 0.0, 1.0};           // "colors": [at p, at q]; default by `of` (reader)
+  bool at_p = true, at_q = true;      // "at": "both", "p" or "q"
+  bool tail_at_point = true;          // "at_point": "tail" (from the point) or "head" (onto it)
+  double scale = 0.1;                 // > 0; default by `of` (reader)
+  Color color_p{0.0, 0.0, 0.0, 1.0};  // "colors": [at p, at q]; default by `of` (reader)
   Color color_q{139.0 / 255.0, 69.0 / 255.0, 19.0 / 255.0, 1.0};  // brown, #8b4513
-  LineStyle line{Color{}, 1.2, 1.0, {}};        // width, opacity, dash (colour from color_p/q)
-  bool heads = true;                           // arrowheads
+  LineStyle line{Color{}, 1.2, 1.0, {}};                          // width, opacity, dash (colour from color_p/q)
+  bool heads = true;                                              // arrowheads
   std::optional<int> samples;
   std::optional<TimeRange> range;
 };
@@ -222,7 +218,7 @@ struct FixedPointsLayer {
   CenterKind center = CenterKind::acceleration;
   TrackedPoint point = TrackedPoint::start;
   LineStyle line{Color{1.0, 140.0 / 255.0, 0.0, 1.0}, 1.0, 1.0, {}};  // orange, #ff8c00
-  bool dots = true;                            // a dot at each center
+  bool dots = true;                                                   // a dot at each center
   std::optional<int> samples;
   std::optional<TimeRange> range;
 };
@@ -245,10 +241,10 @@ struct ImageRef {
 // arrow scene). An image's points are the corners of its box, counter-
 // clockwise from (x0, y0); it is drawn upright in that box.
 struct ShapeOutline {
-  std::vector<Point> points;             // at least 2
+  std::vector<Point> points;  // at least 2
   bool closed = true;
-  std::optional<Color> color;            // nullopt: the layer's colour
-  std::optional<ImageRef> image;         // set: an image in the box of `points`
+  std::optional<Color> color;     // nullopt: the layer's colour
+  std::optional<ImageRef> image;  // set: an image in the box of `points`
 };
 
 // "shapes": the shapes at each frame (a pattern of shapes). In pose scenes
@@ -256,11 +252,11 @@ struct ShapeOutline {
 // similarity that takes the handle onto D(t) (PITA Sec. 7.1).
 struct ShapesLayer {
   LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
-  std::optional<Color> fill;             // filled with fill_opacity when given
+  std::optional<Color> fill;  // filled with fill_opacity when given
   double fill_opacity = 0.25;
-  std::optional<int> samples;            // default: the panel's samples
-  std::optional<TimeRange> range;        // default: first to last knot
-  std::vector<double> times;             // set: exactly these times (Fig. 24's square at B)
+  std::optional<int> samples;      // default: the panel's samples
+  std::optional<TimeRange> range;  // default: first to last knot
+  std::vector<double> times;       // set: exactly these times (Fig. 24's square at B)
   // "lightness": "area" (pose scenes; SAM paper Fig. 9, docs/paper-notes.md
   // N48): each frame's line and fill mixed with white in proportion to its
   // area among the layer's frames (the smallest as given, the largest lightest).
@@ -272,7 +268,7 @@ struct ShapesLayer {
 struct HandleLayer {
   Color color{0.85, 0.0, 0.0, 1.0};
   double width = 2.0;
-  bool shapes = true;                  // draw the shapes (images, outlines) under the handle
+  bool shapes = true;  // draw the shapes (images, outlines) under the handle
 };
 
 // "property-table" (PITA Fig. 10): the properties of Sec. 4 measured as
@@ -310,9 +306,9 @@ struct MeasuresLayer {
   // and checked against the scene's kind by the reader. Default:
   // default_measures() of the scene's kind.
   std::vector<MeasureName> show;
-  std::optional<Point> at;                              // world point; nullopt: `corner`
+  std::optional<Point> at;  // world point; nullopt: `corner`
   LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
-  double size = 11.0;                                   // pixels
+  double size = 11.0;  // pixels
   Color color{0.1, 0.1, 0.1, 1.0};
 };
 
@@ -320,9 +316,9 @@ struct MeasuresLayer {
 // guesses L and R of Fig. 16, the editing target E of Fig. 18.
 struct Guess {
   double t = 0.0;
-  Arrow arrow;                         // as drawn: {"p", "q"} or {"p", "m", "w"}
-  std::string name;                    // what the printed lines call it ("L"); default "G1", "G2", ...
-  Color color;                         // default brown, magenta, orange, cycled
+  Arrow arrow;       // as drawn: {"p", "q"} or {"p", "m", "w"}
+  std::string name;  // what the printed lines call it ("L"); default "G1", "G2", ...
+  Color color;       // default brown, magenta, orange, cycled
 };
 
 // What a "guesses" layer prints for each guess G at t: the discrepancy
@@ -334,14 +330,14 @@ enum class GuessMeasure { discrepancy, distance };
 // arrow in its colour, the panel's frame D(t) at its time as an arrow in
 // `frame_color`, and one printed line per guess and measure.
 struct GuessesLayer {
-  std::vector<Guess> guesses;                          // required, 1..kMaxGuesses
+  std::vector<Guess> guesses;  // required, 1..kMaxGuesses
   std::vector<GuessMeasure> show{GuessMeasure::discrepancy};
-  double width = 2.0;                                  // of the guesses and the frames
+  double width = 2.0;  // of the guesses and the frames
   Color frame_color{0.1, 0.1, 0.1, 1.0};
-  std::optional<Point> at;                             // world point of the text; nullopt: `corner`
+  std::optional<Point> at;  // world point of the text; nullopt: `corner`
   LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
-  double size = 11.0;                                  // pixels
-  Color color{0.1, 0.1, 0.1, 1.0};                     // of the text
+  double size = 11.0;               // pixels
+  Color color{0.1, 0.1, 0.1, 1.0};  // of the text
 };
 inline constexpr int kMaxGuesses = 16;
 
@@ -350,26 +346,24 @@ inline constexpr int kMaxGuesses = 16;
 // panel's, and the printed largest distance between their frames at the same
 // times, max_i max(|dp|, |dq|).
 struct CompareLayer {
-  Method method = Method::P10;                         // required
+  Method method = Method::P10;  // required
   std::string method_name = "P10";
   LineStyle line{Color{0.9, 0.45, 0.0, 1.0}, 1.2, 1.0, {4.0, 3.0}};
-  std::optional<int> samples;                          // default: the panel's samples
-  std::optional<Point> at;                             // world point of the text; nullopt: `corner`
+  std::optional<int> samples;  // default: the panel's samples
+  std::optional<Point> at;     // world point of the text; nullopt: `corner`
   LegendLayer::Corner corner = LegendLayer::Corner::bottom_left;
-  double size = 11.0;                                  // pixels
+  double size = 11.0;  // pixels
 };
 
-using Layer = std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer,
-                           BannerLayer, DiscrepancyLayer, LabelLayer, LegendLayer, PlotLayer,
-                           PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer, MeasuresLayer,
-                           VectorsLayer, FixedPointsLayer, GuessesLayer, CompareLayer>;
-
+using Layer =
+    std::variant<PatternLayer, KeyframesLayer, TrajectoryLayer, StrokeLayer, BannerLayer, DiscrepancyLayer, LabelLayer,
+                 LegendLayer, PlotLayer, PointTrajectoryLayer, ShapesLayer, HandleLayer, PropertyTableLayer,
+                 MeasuresLayer, VectorsLayer, FixedPointsLayer, GuessesLayer, CompareLayer>;
 
 // ------------------------------------------------------------ pose scenes
 // Scenes of timed affine poses (SAM paper; docs/reference/pose-scenes.md "Pose scenes"). Their
 // shapes are outlines in the frame of the reference pose, drawn through the
 // pose of each frame.
-
 
 struct PosesLayer {  // "poses": the shapes at the control poses
   std::vector<Color> colors{Color{0.85, 0.0, 0.0, 1.0}, Color{0.0, 0.6, 0.0, 1.0},
@@ -382,7 +376,7 @@ struct PosesLayer {  // "poses": the shapes at the control poses
 };
 
 struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each frame
-  double scale = 0.25;                   // drawn length = scale * velocity (per unit of time)
+  double scale = 0.25;    // drawn length = scale * velocity (per unit of time)
   LineStyle line{Color{0.8, 0.2, 0.1, 1.0}, 1.0, 1.0, {}};
   std::optional<int> samples;
   std::optional<TimeRange> range;
@@ -396,14 +390,14 @@ struct VelocitiesLayer {  // "velocities": the velocity of each vertex at each f
 // The measured agreement of the curves with the field is printed under the box.
 struct FieldLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required
-  int columns = 15;                            // nodes per row, [2, kMaxFieldSide]
-  int rows = 11;                               // nodes per column, [2, kMaxFieldSide]
-  double scale = 0.15;                         // > 0
+  int columns = 15;                           // nodes per row, [2, kMaxFieldSide]
+  int rows = 11;                              // nodes per column, [2, kMaxFieldSide]
+  double scale = 0.15;                        // > 0
   LineStyle line{Color{0.25, 0.25, 0.25, 1.0}, 0.8, 1.0, {}};
-  int curves = 0;                              // every curves-th node in both directions; 0: none
+  int curves = 0;  // every curves-th node in both directions; 0: none
   LineStyle curve{Color{0.2, 0.45, 0.8, 1.0}, 0.8, 1.0, {}};
   std::optional<TimeRange> range;
-  bool fixed_point = true;                     // a dot at the field's zero (A's fixed point)
+  bool fixed_point = true;  // a dot at the field's zero (A's fixed point)
 };
 inline constexpr int kMaxFieldSide = 100;
 
@@ -413,15 +407,15 @@ struct PathsLayer {  // "paths": the trajectory of each vertex of each shape
   LineStyle line{Color{0.55, 0.55, 0.55, 1.0}, 0.8, 1.0, {}};
 };
 
-struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses as corners
-  int columns = 5;                       // shapes per row, [2, 100]
-  int rows = 4;                          // shapes per column, [2, 100]
-  bool regular = false;                  // replace the 4th pose by SAM(C, A, 1, B)
+struct PatchLayer {      // "patch": SAM paper Fig. 11, the panel's first four poses as corners
+  int columns = 5;       // shapes per row, [2, 100]
+  int rows = 4;          // shapes per column, [2, 100]
+  bool regular = false;  // replace the 4th pose by SAM(C, A, 1, B)
   LineStyle line{Color{0.15, 0.3, 0.6, 1.0}, 1.0, 1.0, {}};
   std::optional<Color> fill;
   double fill_opacity = 0.25;
-  std::optional<LineStyle> corner;       // the bottom-right shape's line (Fig. 11's F_D), if given
-  std::optional<LineStyle> grid;         // lines through the bodies' centres along rows and columns, if given
+  std::optional<LineStyle> corner;  // the bottom-right shape's line (Fig. 11's F_D), if given
+  std::optional<LineStyle> grid;    // lines through the bodies' centres along rows and columns, if given
 };
 
 // "existence": Fig. 6 of the SAM paper in the plane (a, s): L = R(a) diag(1/s, s)
@@ -431,7 +425,7 @@ struct PatchLayer {  // "patch": SAM paper Fig. 11, the panel's first four poses
 struct ExistenceLayer {
   int columns = 360;
   int rows = 200;
-  Color fill{0.85, 0.2, 0.2, 1.0};       // no SAM
+  Color fill{0.85, 0.2, 0.2, 1.0};  // no SAM
   std::optional<Color> exists_fill = Color{0.93, 0.96, 0.93, 1.0};
   LineStyle boundary{Color{0.0, 0.0, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};  // SAM Eq. 4
   LineStyle trapezoid{Color{0.0, 0.0, 0.0, 1.0}, 2.0, 1.0, {}};
@@ -444,13 +438,13 @@ struct ExistenceLayer {
 // staircase over x = theta, y = kSafeCurveScale p, with the paper's three
 // stated bounds beside it.
 struct Sam3dExistenceLayer {
-  int steps = 48;          // angles k pi / steps, k = 0..steps: [1, kMaxSam3dExistenceSteps]
-  int subdivisions = 2;    // of the icosahedron: [0, kMaxSam3dExistenceSubdivisions]
-  double step = 0.01;      // the grid of p
+  int steps = 48;        // angles k pi / steps, k = 0..steps: [1, kMaxSam3dExistenceSteps]
+  int subdivisions = 2;  // of the icosahedron: [0, kMaxSam3dExistenceSubdivisions]
+  double step = 0.01;    // the grid of p
   LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 2.0, 1.0, {}};
   std::optional<Color> fill = Color{0.1, 0.3, 0.7, 1.0};  // under the curve, at fill_opacity; or "none"
   double fill_opacity = 0.12;
-  bool paper = true;                                      // the paper's bounds
+  bool paper = true;  // the paper's bounds
   LineStyle paper_line{Color{0.85, 0.35, 0.0, 1.0}, 1.5, 1.0, {6.0, 4.0}};
 };
 inline constexpr double kSafeCurveScale = 5.0;  // drawn height of p = 1
@@ -462,11 +456,11 @@ inline constexpr double kSafeCurveScale = 5.0;  // drawn height of p = 1
 // reference coordinates (the paper's "dense regular sampling of a vicinity of
 // the moving shape").
 struct AraLayer {
-  Point at;                            // required: where the text goes
-  double size = 12.0;                  // pixels
+  Point at;            // required: where the text goes
+  double size = 12.0;  // pixels
   Color color{0.0, 0.0, 0.0, 1.0};
-  int digits = 3;                      // decimals, [0, kMaxAraDigits]
-  int grid = 11;                       // points per side, [2, kMaxAraGrid]; core's kDefaultAraGrid (pita measure's)
+  int digits = 3;  // decimals, [0, kMaxAraDigits]
+  int grid = 11;   // points per side, [2, kMaxAraGrid]; core's kDefaultAraGrid (pita measure's)
 };
 inline constexpr int kMaxAraDigits = 9;
 inline constexpr int kMaxAraGrid = 100;
@@ -480,18 +474,18 @@ inline constexpr int kMaxAraGrid = 100;
 // With `claim_at`, it prints how far the grazing parameter moves along the
 // edge over the layer's range (constant under a SAM).
 struct SweptLayer {
-  std::array<Point, 2> edge{};           // required, reference coordinates
-  std::optional<int> samples;            // copies of the edge (the panel's samples)
+  std::array<Point, 2> edge{};  // required, reference coordinates
+  std::optional<int> samples;   // copies of the edge (the panel's samples)
   std::optional<TimeRange> range;
-  int trace_samples = 512;               // times of the envelope and the paths, [2, kMaxTrajectorySamples]
-  int instants = 3;                      // grazing paths, [0, kMaxSweptInstants]
+  int trace_samples = 512;  // times of the envelope and the paths, [2, kMaxTrajectorySamples]
+  int instants = 3;         // grazing paths, [0, kMaxSweptInstants]
   std::optional<LineStyle> segments = LineStyle{Color{0.35, 0.35, 0.35, 1.0}, 0.8, 1.0, {}};
   std::optional<LineStyle> ends = LineStyle{Color{0.55, 0.55, 0.55, 1.0}, 0.8, 1.0, {4.0, 3.0}};
   std::optional<LineStyle> envelope = LineStyle{Color{0.8, 0.1, 0.1, 1.0}, 2.5, 1.0, {}};
   std::optional<LineStyle> grazing = LineStyle{Color{0.0, 0.62, 0.0, 1.0}, 1.5, 1.0, {}};
-  std::optional<Point> claim_at;         // where the measured claim goes; nullopt: not printed
-  double size = 12.0;                    // pixels
-  Color color{0.0, 0.0, 0.0, 1.0};       // of the claim
+  std::optional<Point> claim_at;    // where the measured claim goes; nullopt: not printed
+  double size = 12.0;               // pixels
+  Color color{0.0, 0.0, 0.0, 1.0};  // of the claim
 };
 inline constexpr int kMaxSweptInstants = 64;
 
@@ -503,21 +497,21 @@ inline constexpr int kMaxSweptInstants = 64;
 // first pose applied k times (k = 2 at t = 1/2 is Fig. 4's "squared" pose,
 // which is the last pose exactly when the motion is steady).
 struct VersusLayer {
-  PoseMethod method = PoseMethod::sam;   // required
-  std::vector<double> at;                // the times drawn; empty: `samples` over `range`
-  int power = 1;                         // [1, kMaxComparePower]
+  PoseMethod method = PoseMethod::sam;  // required
+  std::vector<double> at;               // the times drawn; empty: `samples` over `range`
+  int power = 1;                        // [1, kMaxComparePower]
   LineStyle line{Color{0.0, 0.0, 0.85, 1.0}, 1.0, 1.0, {}};
-  std::optional<Color> fill;             // filled with fill_opacity when given
+  std::optional<Color> fill;  // filled with fill_opacity when given
   double fill_opacity = 0.25;
-  std::optional<int> samples;            // default: the panel's samples
-  std::optional<TimeRange> range;        // default: first to last knot
+  std::optional<int> samples;      // default: the panel's samples
+  std::optional<TimeRange> range;  // default: first to last knot
 };
 inline constexpr int kMaxComparePower = 16;
 inline constexpr std::size_t kMaxCompareTimes = 64;
 
-using PoseLayer = std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer,
-                               ExistenceLayer, LabelLayer, PatchLayer, PlotLayer, AraLayer, MeasuresLayer,
-                               SweptLayer, VersusLayer, FieldLayer, Sam3dExistenceLayer>;
+using PoseLayer =
+    std::variant<ShapesLayer, PosesLayer, VelocitiesLayer, PathsLayer, ExistenceLayer, LabelLayer, PatchLayer,
+                 PlotLayer, AraLayer, MeasuresLayer, SweptLayer, VersusLayer, FieldLayer, Sam3dExistenceLayer>;
 
 // A layer's "type" ("pattern", "poses", ...), from the one table of layer
 // kinds of its scene's kind (scene/layer_kinds.hpp).

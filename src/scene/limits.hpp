@@ -87,28 +87,28 @@ inline constexpr double kSingularValueRatio = 1e-15;
 
 // ---------------------------------------------------------------- figures
 
-inline constexpr int kMinCanvasSide = 16;        // pixels
-inline constexpr int kMaxCanvasSide = 8192;      // pixels, per side
-inline constexpr int kMaxColumns = 64;           // "columns" of the panel grid
+inline constexpr int kMinCanvasSide = 16;    // pixels
+inline constexpr int kMaxCanvasSide = 8192;  // pixels, per side
+inline constexpr int kMaxColumns = 64;       // "columns" of the panel grid
 inline constexpr int kMaxPanels = 64;
-inline constexpr int kMaxLayers = 64;            // per scene or panel
-inline constexpr int kMaxClaims = 64;            // "claims" of a scene
-inline constexpr std::size_t kMaxClaimText = 400;  // characters of a claim's "says"
-inline constexpr int kMaxFigureSamples = 10'000;      // frames of a drawn pattern, stroke, banner
-inline constexpr int kMaxTrajectorySamples = 100'000; // points of a trajectory, path or plot
-inline constexpr int kDefaultFigureSamples = 17;      // frames of a pattern when nothing says
-inline constexpr std::size_t kMaxTextLength = 1000;   // characters of a banner or label
-inline constexpr std::size_t kMaxDashes = 16;         // lengths of a "dash" pattern
-inline constexpr std::size_t kMaxKeyframeColors = 16; // "colors" of a keyframes or poses layer
+inline constexpr int kMaxLayers = 64;                  // per scene or panel
+inline constexpr int kMaxClaims = 64;                  // "claims" of a scene
+inline constexpr std::size_t kMaxClaimText = 400;      // characters of a claim's "says"
+inline constexpr int kMaxFigureSamples = 10'000;       // frames of a drawn pattern, stroke, banner
+inline constexpr int kMaxTrajectorySamples = 100'000;  // points of a trajectory, path or plot
+inline constexpr int kDefaultFigureSamples = 17;       // frames of a pattern when nothing says
+inline constexpr std::size_t kMaxTextLength = 1000;    // characters of a banner or label
+inline constexpr std::size_t kMaxDashes = 16;          // lengths of a "dash" pattern
+inline constexpr std::size_t kMaxKeyframeColors = 16;  // "colors" of a keyframes or poses layer
 
 // Pose layers and shapes.
 inline constexpr int kMaxShapes = 64;
 inline constexpr int kMaxShapePoints = 10'000;
-inline constexpr int kMaxExistenceSide = 4000;           // "columns", "rows" of "existence"
-inline constexpr int kMaxExistenceCells = 4'000'000;     // columns x rows of "existence"
-inline constexpr int kMaxPatchSide = 100;                // "columns", "rows" of "patch"
-inline constexpr int kMaxSam3dExistenceSteps = 720;      // "steps" of "sam3d-existence"
-inline constexpr int kMaxSam3dExistenceSubdivisions = 4; // "subdivisions" of "sam3d-existence" (1281 axes)
+inline constexpr int kMaxExistenceSide = 4000;            // "columns", "rows" of "existence"
+inline constexpr int kMaxExistenceCells = 4'000'000;      // columns x rows of "existence"
+inline constexpr int kMaxPatchSide = 100;                 // "columns", "rows" of "patch"
+inline constexpr int kMaxSam3dExistenceSteps = 720;       // "steps" of "sam3d-existence"
+inline constexpr int kMaxSam3dExistenceSubdivisions = 4;  // "subdivisions" of "sam3d-existence" (1281 axes)
 
 // Images in "shapes" (PITA Sec. 7.1): PNG files of at most this many pixels a
 // side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per list

@@ -36,8 +36,8 @@ LintAllow read_allow(const JsonReader& reader, const Json& value, const std::str
   if (const Json* at = JsonReader::member(value, "pointer")) {
     allow.pointer = reader.text(*at, pointer + "/pointer", 200);
     if (!allow.pointer.empty() && allow.pointer.front() != '/') {
-      reader.fail(pointer + "/pointer", fmt::format("must be a JSON Pointer such as \"/layers/2\" (got \"{}\")",
-                                                    allow.pointer));
+      reader.fail(pointer + "/pointer",
+                  fmt::format("must be a JSON Pointer such as \"/layers/2\" (got \"{}\")", allow.pointer));
     }
   }
   const Json* reason = JsonReader::member(value, "reason");

@@ -151,17 +151,19 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
     if (!is_keyframe_parameter(rest)) {
-      return fmt::format("\"{}\" must name a keyframe and a parameter, \"{}K.x\" with K a keyframe (A, B, ...) "
-                         "and x one of p, q, p.x, p.y, q.x, q.y, m, w, t",
-                         text, found->name);
+      return fmt::format(
+          "\"{}\" must name a keyframe and a parameter, \"{}K.x\" with K a keyframe (A, B, ...) "
+          "and x one of p, q, p.x, p.y, q.x, q.y, m, w, t",
+          text, found->name);
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::property) {
     // The name is checked against the properties when measured (analysis/properties.hpp).
     if (rest.empty() || rest.find_first_not_of("abcdefghijklmnopqrstuvwxyz-") != std::string_view::npos) {
-      return fmt::format("\"{}\" must be \"property:NAME\", NAME a property of Sec. 4 as `pita audit` names it "
-                         "(\"locally-perseverant\", \"handle-invariant\", ...)",
-                         text);
+      return fmt::format(
+          "\"{}\" must be \"property:NAME\", NAME a property of Sec. 4 as `pita audit` names it "
+          "(\"locally-perseverant\", \"handle-invariant\", ...)",
+          text);
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::discrepancy_of || found->kind == MeasureKind::discrepancy_time) {

@@ -35,14 +35,27 @@
 namespace pita::scene {
 
 enum class MeasureKind {
-  discrepancy_max, path_length, turning, winding_range, overreaction, pop, handle_shift,
-  ara, area,
-  gain, turn, jump,  // "gain:K.x" ...: one keyframe parameter
-  angle,             // "angle:M@t"
-  scale_step, turn_step, scale_min, scale_max,  // the drawn frames (analysis/frame_steps.hpp)
-  frame_distance,    // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
-  property,          // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
-  discrepancy_of, discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
+  discrepancy_max,
+  path_length,
+  turning,
+  winding_range,
+  overreaction,
+  pop,
+  handle_shift,
+  ara,
+  area,
+  gain,
+  turn,
+  jump,   // "gain:K.x" ...: one keyframe parameter
+  angle,  // "angle:M@t"
+  scale_step,
+  turn_step,
+  scale_min,
+  scale_max,       // the drawn frames (analysis/frame_steps.hpp)
+  frame_distance,  // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
+  property,  // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
+  discrepancy_of,
+  discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
   velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
 };
 
@@ -66,14 +79,14 @@ std::span<const MeasureEntry> measure_entries_of();
 
 struct MeasureName {
   MeasureKind kind = MeasureKind::overreaction;
-  std::string text;        // as written: "gain:B.q", "angle:P8@0.25"
-  std::string parameter;   // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor
-  Method method{};         // angle: the other arrow method
+  std::string text;       // as written: "gain:B.q", "angle:P8@0.25"
+  std::string parameter;  // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor
+  Method method{};        // angle: the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
   // frame-distance: the other panel. Only a claim may name a panel (its
   // reader checks the index).
   std::optional<std::size_t> panel;
-  double t = 0.0;          // angle: the time
+  double t = 0.0;  // angle: the time
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

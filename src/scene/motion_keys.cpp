@@ -11,11 +11,10 @@ std::string method_id(const MotionKeys& keys) {
 }
 
 const char* keys_field(const MotionKeys& keys) {
-  return std::visit(overloaded{[](const KeyframeKeys&) { return "/keyframes"; },
-                               [](const PointKeys&) { return "/points"; },
-                               [](const PlanePoseKeys&) { return "/poses"; },
-                               [](const SpacePoseKeys&) { return "/poses"; }},
-                    keys);
+  return std::visit(
+      overloaded{[](const KeyframeKeys&) { return "/keyframes"; }, [](const PointKeys&) { return "/points"; },
+                 [](const PlanePoseKeys&) { return "/poses"; }, [](const SpacePoseKeys&) { return "/poses"; }},
+      keys);
 }
 
 std::string_view kind_name(const MotionKeys& keys) {
@@ -54,8 +53,7 @@ TrackMethod* track_method(MotionKeys& keys) {
 const TrackMethod* track_method(const MotionKeys& keys) { return track_method(const_cast<MotionKeys&>(keys)); }
 
 bool has_motion_keys(const MotionKeys& keys) {
-  return std::visit(overloaded{[](const KeyframeKeys&) { return true; },
-                               [](const PointKeys&) { return true; },
+  return std::visit(overloaded{[](const KeyframeKeys&) { return true; }, [](const PointKeys&) { return true; },
                                [](const PlanePoseKeys& given) { return !given.poses.empty(); },
                                [](const SpacePoseKeys& given) { return !given.poses.empty(); }},
                     keys);

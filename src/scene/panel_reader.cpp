@@ -1,12 +1,10 @@
 // "panels": the grid of a figure, each panel overriding the scene's method,
 // keyframes or poses, options, shapes, timing, samples and layers.
-#include "scene/scene_readers.hpp"
-
 #include <array>
-#include <type_traits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -15,15 +13,16 @@
 #include "core/pose_traits.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
+#include "scene/scene_readers.hpp"
 #include "scene/timing_reader.hpp"
 
 namespace pita::scene::detail {
 
 namespace {
-constexpr std::array<std::string_view, 10> kPanelFields = {
-    "method", "options", "keyframes", "points", "chain", "title", "samples", "layers", "timing", "handle"};
-constexpr std::array<std::string_view, 8> kPosePanelFields = {
-    "method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"};
+constexpr std::array<std::string_view, 10> kPanelFields = {"method", "options", "keyframes", "points", "chain",
+                                                           "title",  "samples", "layers",    "timing", "handle"};
+constexpr std::array<std::string_view, 8> kPosePanelFields = {"method",  "poses",  "shapes",       "title",
+                                                              "samples", "layers", "subdivisions", "timing"};
 
 // A panel given by its method is titled "P6 La-LP" ("SMA" for SMA).
 std::string method_title(Method method) {
@@ -53,7 +52,7 @@ void set_method(const JsonReader& reader, Panel& panel, Method method, const std
   if (const auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
       arrows != nullptr && arrows->keyframes.size() < static_cast<std::size_t>(info(method).keyframe_count)) {
     reader.fail(pointer, keyframe_count_reason(method, arrows->keyframes.size()) +
-                      " from the scene; give the panel its own \"keyframes\"");
+                             " from the scene; give the panel its own \"keyframes\"");
   }
   track_of(panel).method = method;
   panel.title = method_title(method);
@@ -71,8 +70,8 @@ void read_own_keys(const JsonReader& reader, const Json& value, const std::strin
   if (keyframes != nullptr) {
     KeyframeKeys arrows;
     static_cast<TrackMethod&>(arrows) = track_of(panel);
-    arrows.keyframes = reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to,
-                                        arrows.options.knots);
+    arrows.keyframes =
+        reader.keyframes(*keyframes, pointer + "/keyframes", arrows.method, &arrows.keyframes_to, arrows.options.knots);
     if (const auto* own = std::get_if<KeyframeKeys>(&scene.keys)) arrows.given_handle = own->given_handle;
     panel.keys = std::move(arrows);
     panel.motion_pointer = pointer + "/keyframes";
@@ -124,23 +123,23 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
   // scene's): the pointer names the panel's own field when it has one.
   {
     const Json* chain = JsonReader::member(value, "chain");
-    const std::string at = chain != nullptr                            ? pointer + "/chain"
+    const std::string at = chain != nullptr                                 ? pointer + "/chain"
                            : JsonReader::member(value, "method") != nullptr ? pointer + "/method"
-                           : keyframes != nullptr                      ? pointer + "/keyframes"
-                                                                       : pointer;
+                           : keyframes != nullptr                           ? pointer + "/keyframes"
+                                                                            : pointer;
     check_track_chain(reader, panel.keys, at);
   }
   if (const Json* handle = JsonReader::member(value, "handle")) {
     auto* arrows = std::get_if<KeyframeKeys>(&panel.keys);
-    if (arrows == nullptr) reader.fail(pointer + "/handle", "a handle carries shapes with keyframe arrows; this panel has \"points\"");
+    if (arrows == nullptr)
+      reader.fail(pointer + "/handle", "a handle carries shapes with keyframe arrows; this panel has \"points\"");
     arrows->given_handle = reader.arrow(*handle, pointer + "/handle");
   }
   if (const Json* title = JsonReader::member(value, "title")) {
     panel.title = reader.string(*title, pointer + "/title");
   }
   if (const Json* samples = JsonReader::member(value, "samples")) {
-    panel.samples = reader.integer(*samples, pointer + "/samples", kMinSamples,
-                                    kMaxFigureSamples);
+    panel.samples = reader.integer(*samples, pointer + "/samples", kMinSamples, kMaxFigureSamples);
     panel.samples_pointer = pointer + "/samples";
   }
   if (const Json* layers = JsonReader::member(value, "layers")) {
@@ -160,21 +159,20 @@ void check_track_chain(const JsonReader& reader, const TrackMethod& track, std::
 }
 
 void check_track_chain(const JsonReader& reader, const MotionKeys& keys, const std::string& pointer) {
-  std::visit(overloaded{[&](const KeyframeKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
-                        [&](const PointKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
-                        [](const PlanePoseKeys&) {}, [](const SpacePoseKeys&) {}},
-             keys);
+  std::visit(
+      overloaded{[&](const KeyframeKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
+                 [&](const PointKeys& given) { check_track_chain(reader, given, given.track_length(), pointer); },
+                 [](const PlanePoseKeys&) {}, [](const SpacePoseKeys&) {}},
+      keys);
 }
 
 std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
                                const Scene& scene) {
   if (!value.is_array()) {
-    reader.fail(pointer, "must be an array of panels, each a method name or an object (got " +
-                      value_text(value) + ")");
+    reader.fail(pointer, "must be an array of panels, each a method name or an object (got " + value_text(value) + ")");
   }
   if (value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
-    reader.fail(pointer, fmt::format("must have between 1 and {} panels (got {})", kMaxPanels,
-                              value.size()));
+    reader.fail(pointer, fmt::format("must have between 1 and {} panels (got {})", kMaxPanels, value.size()));
   }
   std::vector<Panel> panels;
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -182,7 +180,6 @@ std::vector<Panel> read_panels(const JsonReader& reader, const Json& value, cons
   }
   return panels;
 }
-
 
 namespace {
 
@@ -224,8 +221,9 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     reader.object(item, at, "a panel (a pose method name or an object)");
     if constexpr (in_space_v<Pose>) {
       if (JsonReader::member(item, "shapes") != nullptr) {
-        reader.fail(at + "/shapes", "the solids are the scene's \"shapes\": a panel of a 3D scene moves them by its "
-                                    "own method, poses or timing");
+        reader.fail(at + "/shapes",
+                    "the solids are the scene's \"shapes\": a panel of a 3D scene moves them by its "
+                    "own method, poses or timing");
       }
     }
     reader.check_fields(item, at, Space::kFields);
@@ -264,8 +262,9 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
     const std::string poses_at = own_poses ? at + "/poses" : std::string("/poses");
     const auto count = static_cast<int>(keys.poses.size());
     if (keys.poses.empty()) {
-      reader.fail(at, "the panel draws a motion but has no poses: give it \"poses\" or give the "
-                      "scene \"poses\"");
+      reader.fail(at,
+                  "the panel draws a motion but has no poses: give it \"poses\" or give the "
+                  "scene \"poses\"");
     }
     if (count < about.min_poses || count > about.max_poses) {
       reader.fail(own_method ? at : poses_at,
@@ -282,8 +281,7 @@ Panel read_pose_panel(const JsonReader& reader, const Json& item, const std::str
 std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value, const std::string& pointer,
                                     const Scene& scene) {
   if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxPanels)) {
-    reader.fail(pointer, fmt::format("must be an array of 1 to {} panels (got {})", kMaxPanels,
-                              value_text(value)));
+    reader.fail(pointer, fmt::format("must be an array of 1 to {} panels (got {})", kMaxPanels, value_text(value)));
   }
   std::vector<Panel> panels;
   for (std::size_t i = 0; i < value.size(); ++i) {
@@ -291,9 +289,7 @@ std::vector<Panel> read_pose_panels(const JsonReader& reader, const Json& value,
     panels.push_back(std::visit(
         overloaded{[&](const PlanePoseKeys&) { return read_pose_panel<Affine2>(reader, value[i], at, scene); },
                    [&](const SpacePoseKeys&) { return read_pose_panel<Affine3>(reader, value[i], at, scene); },
-                   [&](const TrackMethod&) -> Panel {
-                     reader.fail(pointer, "panels of poses take a scene of poses");
-                   }},
+                   [&](const TrackMethod&) -> Panel { reader.fail(pointer, "panels of poses take a scene of poses"); }},
         scene.keys));
   }
   return panels;

@@ -16,27 +16,25 @@ namespace {
 
 constexpr std::array<std::string_view, 2> kLightnessNames = {"constant", "area"};
 constexpr std::array<bool, 2> kLightnessByArea = {false, true};
-constexpr std::array<std::string_view, 13> kFieldFields = {
-    "type", "box", "columns", "rows", "scale", "color", "width", "opacity", "dash", "curves", "curve", "range",
-    "fixed_point"};
-constexpr std::array<std::string_view, 5> kPosesFields = {"type", "colors", "width",
-                                                          "fill_opacity", "inserted"};
-constexpr std::array<std::string_view, 8> kVelocitiesFields = {
-    "type", "scale", "color", "width", "opacity", "dash", "samples", "range"};
+constexpr std::array<std::string_view, 13> kFieldFields = {"type",  "box",   "columns",    "rows", "scale",
+                                                           "color", "width", "opacity",    "dash", "curves",
+                                                           "curve", "range", "fixed_point"};
+constexpr std::array<std::string_view, 5> kPosesFields = {"type", "colors", "width", "fill_opacity", "inserted"};
+constexpr std::array<std::string_view, 8> kVelocitiesFields = {"type",    "scale", "color",   "width",
+                                                               "opacity", "dash",  "samples", "range"};
 constexpr std::array<std::string_view, 7> kPathsFields = {"type",  "samples", "range", "color",
                                                           "width", "opacity", "dash"};
-constexpr std::array<std::string_view, 7> kExistenceFields = {
-    "type", "columns", "rows", "fill", "exists_fill", "boundary", "trapezoid"};
-constexpr std::array<std::string_view, 12> kPatchFields = {
-    "type", "columns", "rows", "regular", "color", "width", "opacity", "dash", "fill", "fill_opacity",
-    "corner", "grid"};
+constexpr std::array<std::string_view, 7> kExistenceFields = {"type",        "columns",  "rows",     "fill",
+                                                              "exists_fill", "boundary", "trapezoid"};
+constexpr std::array<std::string_view, 12> kPatchFields = {"type",  "columns",      "rows",    "regular",
+                                                           "color", "width",        "opacity", "dash",
+                                                           "fill",  "fill_opacity", "corner",  "grid"};
 constexpr std::array<std::string_view, 6> kAraFields = {"type", "at", "size", "color", "digits", "grid"};
 constexpr std::array<std::string_view, 13> kSweptFields = {
-    "type", "edge", "samples", "range", "trace_samples", "instants", "segments", "ends", "envelope",
-    "grazing", "claim_at", "size", "color"};
+    "type", "edge",     "samples", "range",    "trace_samples", "instants", "segments",
+    "ends", "envelope", "grazing", "claim_at", "size",          "color"};
 constexpr std::array<std::string_view, 12> kVersusFields = {
-    "type", "method", "at", "power", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples",
-    "range"};
+    "type", "method", "at", "power", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range"};
 constexpr std::array<std::string_view, 11> kSam3dExistenceFields = {
     "type", "steps", "subdivisions", "step", "color", "width", "opacity", "dash", "fill", "fill_opacity", "paper"};
 constexpr Interval kSafeCurveStep{0.001, 0.1};
@@ -93,8 +91,8 @@ ExistenceLayer read_existence(const Fields& fields) {
   fields.integer("columns", 2, kMaxExistenceSide, layer.columns);
   fields.integer("rows", 2, kMaxExistenceSide, layer.rows);
   if (static_cast<long long>(layer.columns) * layer.rows > kMaxExistenceCells) {
-    reader.fail(fields.at("rows"), fmt::format("columns x rows must be at most {} (got {} x {})",
-                                               kMaxExistenceCells, layer.columns, layer.rows));
+    reader.fail(fields.at("rows"), fmt::format("columns x rows must be at most {} (got {} x {})", kMaxExistenceCells,
+                                               layer.columns, layer.rows));
   }
   fields.color("fill", layer.fill);
   if (const Json* exists = fields.get("exists_fill")) {
@@ -197,13 +195,13 @@ SweptLayer read_swept(const Fields& fields) {
 VersusLayer read_versus(const Fields& fields) {
   const JsonReader& reader = fields.reader();
   VersusLayer layer;
-  layer.method = read_pose_method(reader, fields.required("method", "the pose method to compare with"),
-                                  fields.at("method"));
+  layer.method =
+      read_pose_method(reader, fields.required("method", "the pose method to compare with"), fields.at("method"));
   if (const Json* at = fields.get("at")) {
     const std::string pointer = fields.at("at");
     if (!at->is_array() || at->empty() || at->size() > kMaxCompareTimes) {
-      reader.fail(pointer, fmt::format("must be an array of 1 to {} times (got {})", kMaxCompareTimes,
-                                       value_text(*at)));
+      reader.fail(pointer,
+                  fmt::format("must be an array of 1 to {} times (got {})", kMaxCompareTimes, value_text(*at)));
     }
     for (std::size_t i = 0; i < at->size(); ++i) {
       layer.at.push_back(reader.number((*at)[i], element_pointer(pointer, i)));
@@ -231,8 +229,9 @@ ShapesLayer read_shapes_layer(const Fields& fields) {
   read_frame_times(fields, layer.times);
   fields.choice("lightness", kLightnessNames, kLightnessByArea, layer.lightness_by_area);
   if (layer.lightness_by_area && !LayerFamily<LayerType>::moves_poses) {
-    fields.reader().fail(fields.at("lightness"), "\"area\" shades a pose scene's shapes by their area; an arrow "
-                                                 "scene's carry a similarity (use \"constant\")");
+    fields.reader().fail(fields.at("lightness"),
+                         "\"area\" shades a pose scene's shapes by their area; an arrow "
+                         "scene's carry a similarity (use \"constant\")");
   }
   return layer;
 }

@@ -27,8 +27,7 @@ constexpr std::array<std::string_view, 4> kOutlineNames = {"F", "house", "square
 double bounded(const JsonReader& reader, const Json& value, const std::string& pointer) {
   const double x = reader.number(value, pointer);
   if (std::abs(x) > kMaxKeyframeValue) {
-    reader.fail(pointer, fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue,
-                                     number_text(x)));
+    reader.fail(pointer, fmt::format("must be within +-{:g} (got {})", kMaxKeyframeValue, number_text(x)));
   }
   return x;
 }
@@ -96,8 +95,9 @@ void PoseSpace<Affine3>::refuse_singular(const JsonReader& reader, const std::st
 
 void PoseSpace<Affine3>::refuse_other_simplex(const JsonReader& reader, const Json& item, const std::string& pointer) {
   if (JsonReader::member(item, "triangle") != nullptr) {
-    reader.fail(pointer + "/triangle", "a triangle is a pose of the plane; a 3D scene (\"dimension\": 3) gives "
-                                       "\"tetrahedron\": four points [x, y, z], or a 3x4 \"matrix\"");
+    reader.fail(pointer + "/triangle",
+                "a triangle is a pose of the plane; a 3D scene (\"dimension\": 3) gives "
+                "\"tetrahedron\": four points [x, y, z], or a 3x4 \"matrix\"");
   }
 }
 
@@ -151,9 +151,9 @@ Pose read_matrix(const JsonReader& reader, const Json& value, const std::string&
   constexpr std::size_t n = PoseTraits<Pose>::dimension;
   const auto shape_error = [&] {
     Space::refuse_other_matrix(reader, value, pointer);
-    reader.fail(pointer, fmt::format("must be a {}x{} matrix {} (x -> {} x + {}; got {})", n, n + 1,
-                                     Space::kMatrixShape, Space::kLinearShape, Space::kTranslationShape,
-                                     value_text(value)));
+    reader.fail(pointer,
+                fmt::format("must be a {}x{} matrix {} (x -> {} x + {}; got {})", n, n + 1, Space::kMatrixShape,
+                            Space::kLinearShape, Space::kTranslationShape, value_text(value)));
   };
   if (!value.is_array() || value.size() != n) shape_error();
   Pose A;
@@ -184,8 +184,8 @@ typename PoseSpace<Pose>::Simplex read_reference(const JsonReader& reader, const
   using Space = PoseSpace<Pose>;
   const typename Space::Simplex points = read_simplex<Pose>(reader, value, pointer);
   if (degenerate<Pose>(points)) {
-    reader.fail(pointer, fmt::format("the reference {} is degenerate (its points are {})", Space::kSimplex,
-                                     Space::kFlat));
+    reader.fail(pointer,
+                fmt::format("the reference {} is degenerate (its points are {})", Space::kSimplex, Space::kFlat));
   }
   return points;
 }
@@ -193,19 +193,16 @@ typename PoseSpace<Pose>::Simplex read_reference(const JsonReader& reader, const
 std::string pose_count_reason(PoseMethod method, std::size_t count) {
   const PoseMethodInfo& about = info(method);
   const int most = std::min(about.max_poses, kMaxPoses);
-  const std::string wanted = about.min_poses == most
-                                 ? fmt::format("exactly {}", about.min_poses)
-                                 : fmt::format("{} to {}", about.min_poses, most);
+  const std::string wanted = about.min_poses == most ? fmt::format("exactly {}", about.min_poses)
+                                                     : fmt::format("{} to {}", about.min_poses, most);
   return fmt::format("method {} takes {} poses (got {})", about.id, wanted, count);
 }
 
-PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
-                            const std::string& pointer) {
+PoseMethod read_pose_method(const JsonReader& reader, const Json& value, const std::string& pointer) {
   std::vector<std::string_view> ids;
   for (const PoseMethodInfo& entry : all_pose_methods()) ids.push_back(entry.id);
   if (!value.is_string()) {
-    reader.fail(pointer, "must be a pose method: " + quoted_choices(ids) + " (got " +
-                             value_text(value) + ")");
+    reader.fail(pointer, "must be a pose method: " + quoted_choices(ids) + " (got " + value_text(value) + ")");
   }
   const std::string name = value.get<std::string>();
   if (const PoseMethod* found = find_method_of<PoseMethod>(name)) return *found;
@@ -233,9 +230,10 @@ std::string missing_poses_reason() {
     return fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}})",
                        Space::kMatrixShape);
   } else {
-    return fmt::format("missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}} or {{\"t\": ..., "
-                       "\"{}\": {}}})",
-                       Space::kMatrixShape, Space::kSimplex, Space::kPointsShape);
+    return fmt::format(
+        "missing required field (an array of poses {{\"t\": ..., \"matrix\": {}}} or {{\"t\": ..., "
+        "\"{}\": {}}})",
+        Space::kMatrixShape, Space::kSimplex, Space::kPointsShape);
   }
 }
 
@@ -295,15 +293,15 @@ std::vector<TimedPoseOf<Pose>> read_poses(const JsonReader& reader, const Json& 
 }
 
 // The two dimensions.
-#define PITA_POSE_READERS(Pose)                                                                                      \
-  template PoseSpace<Pose>::Simplex read_simplex<Pose>(const JsonReader&, const Json&, const std::string&);          \
-  template Pose frame_of<Pose>(const PoseSpace<Pose>::Simplex&);                                                     \
-  template bool degenerate<Pose>(const PoseSpace<Pose>::Simplex&);                                                   \
-  template Pose read_matrix<Pose>(const JsonReader&, const Json&, const std::string&);                               \
-  template PoseSpace<Pose>::Simplex read_reference<Pose>(const JsonReader&, const Json&, const std::string&);        \
-  template std::vector<TimedPoseOf<Pose>> read_poses<Pose>(const JsonReader&, const Json&, const std::string&,       \
-                                                           const PoseSpace<Pose>::Simplex&, PoseMethod);             \
-  template std::string missing_poses_reason<Pose>();                                                                 \
+#define PITA_POSE_READERS(Pose)                                                                                \
+  template PoseSpace<Pose>::Simplex read_simplex<Pose>(const JsonReader&, const Json&, const std::string&);    \
+  template Pose frame_of<Pose>(const PoseSpace<Pose>::Simplex&);                                               \
+  template bool degenerate<Pose>(const PoseSpace<Pose>::Simplex&);                                             \
+  template Pose read_matrix<Pose>(const JsonReader&, const Json&, const std::string&);                         \
+  template PoseSpace<Pose>::Simplex read_reference<Pose>(const JsonReader&, const Json&, const std::string&);  \
+  template std::vector<TimedPoseOf<Pose>> read_poses<Pose>(const JsonReader&, const Json&, const std::string&, \
+                                                           const PoseSpace<Pose>::Simplex&, PoseMethod);       \
+  template std::string missing_poses_reason<Pose>();                                                           \
   template PoseMethod read_pose_method_of<Pose>(const JsonReader&, const Json&, const std::string&);
 PITA_POSE_READERS(Affine2)
 PITA_POSE_READERS(Affine3)
@@ -313,8 +311,16 @@ std::vector<ShapeOutline> builtin_outline(std::string_view name) {
   const auto closed = [](std::vector<Point> points) { return ShapeOutline{std::move(points), true, {}, {}}; };
   const auto open = [](std::vector<Point> points) { return ShapeOutline{std::move(points), false, {}, {}}; };
   if (name == "F") {
-    return {closed({{0.0, 0.0}, {0.25, 0.0}, {0.25, 0.4}, {0.6, 0.4}, {0.6, 0.6},
-                    {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8}, {0.75, 1.0}, {0.0, 1.0}})};
+    return {closed({{0.0, 0.0},
+                    {0.25, 0.0},
+                    {0.25, 0.4},
+                    {0.6, 0.4},
+                    {0.6, 0.6},
+                    {0.25, 0.6},
+                    {0.25, 0.8},
+                    {0.75, 0.8},
+                    {0.75, 1.0},
+                    {0.0, 1.0}})};
   }
   if (name == "house") return {closed({{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.6}, {0.5, 1.0}, {0.0, 0.6}})};
   if (name == "picture") {
@@ -351,8 +357,8 @@ struct ShapeImages {
 void read_shape_points(const JsonReader& reader, const Json& given, const std::string& where, bool closed,
                        ShapeOutline& shape) {
   if (!given.is_array() || given.size() < 2 || given.size() > static_cast<std::size_t>(kMaxShapePoints)) {
-    reader.fail(where, fmt::format("must be an array of 2 to {} points [x, y] (got {})", kMaxShapePoints,
-                                   value_text(given)));
+    reader.fail(where,
+                fmt::format("must be an array of 2 to {} points [x, y] (got {})", kMaxShapePoints, value_text(given)));
   }
   for (std::size_t j = 0; j < given.size(); ++j) {
     shape.points.push_back(PoseSpace<Affine2>::read_point(reader, given[j], element_pointer(where, j)));
@@ -409,8 +415,9 @@ void read_shape_image(const JsonReader& reader, const Json& item, const Json& gi
   }
   const Json* box = JsonReader::member(item, "box");
   if (box == nullptr) {
-    reader.fail(at + "/box", "missing required field (where the image goes: [[x0, y0], [x1, y1]], its "
-                             "lower-left and upper-right corners)");
+    reader.fail(at + "/box",
+                "missing required field (where the image goes: [[x0, y0], [x1, y1]], its "
+                "lower-left and upper-right corners)");
   }
   if (!box->is_array() || box->size() != 2) {
     reader.fail(at + "/box", "must be [[x0, y0], [x1, y1]] (got " + value_text(*box) + ")");
@@ -434,7 +441,8 @@ ShapeOutline read_shape(const JsonReader& reader, const Json& item, const std::s
   if (const Json* color = JsonReader::member(item, "color")) {
     shape.color = reader.color(*color, at + "/color");
   }
-  if (const Json* box = JsonReader::member(item, "box"); box != nullptr && JsonReader::member(item, "image") == nullptr) {
+  if (const Json* box = JsonReader::member(item, "box");
+      box != nullptr && JsonReader::member(item, "image") == nullptr) {
     reader.fail(at + "/box", "\"box\" places an \"image\"; this shape has none");
   }
   int kinds = 0;
@@ -443,8 +451,9 @@ ShapeOutline read_shape(const JsonReader& reader, const Json& item, const std::s
     if (given == nullptr) continue;
     const std::string where = at + "/" + std::string(kind);
     if (++kinds > 1) {
-      reader.fail(where, "a shape is one of \"polygon\", \"polyline\", \"triangle\", "
-                         "\"outline\" or \"image\"; give only one");
+      reader.fail(where,
+                  "a shape is one of \"polygon\", \"polyline\", \"triangle\", "
+                  "\"outline\" or \"image\"; give only one");
     }
     if (kind == "image") {
       read_shape_image(reader, item, *given, at, images, shape);
@@ -457,20 +466,19 @@ ShapeOutline read_shape(const JsonReader& reader, const Json& item, const std::s
     }
   }
   if (kinds == 0) {
-    reader.fail(at, "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\", "
-                    "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\", or \"image\" and \"box\"");
+    reader.fail(at,
+                "a shape needs \"polygon\", \"polyline\", \"triangle\": \"reference\", "
+                "\"outline\": \"F\" | \"house\" | \"square\" | \"picture\", or \"image\" and \"box\"");
   }
   return shape;
 }
 
 }  // namespace
 
-std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
-                                      const std::string& pointer,
+std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value, const std::string& pointer,
                                       const std::array<Point, 3>& reference) {
   if (!value.is_array() || value.empty() || value.size() > static_cast<std::size_t>(kMaxShapes)) {
-    reader.fail(pointer, fmt::format("must be an array of 1 to {} shapes (got {})", kMaxShapes,
-                                     value_text(value)));
+    reader.fail(pointer, fmt::format("must be an array of 1 to {} shapes (got {})", kMaxShapes, value_text(value)));
   }
   std::vector<ShapeOutline> shapes;
   ShapeImages images;

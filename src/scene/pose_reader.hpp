@@ -5,15 +5,14 @@
 // naming the JSON Pointer of the bad value.
 #pragma once
 
-#include <Eigen/Core>
-
-#include "core/affine2.hpp"
-#include "core/affine3.hpp"
-
 #include <array>
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
+#include "core/affine2.hpp"
+#include "core/affine3.hpp"
 #include "core/pose_motion.hpp"
 #include "core/pose_traits.hpp"
 #include "scene/figure.hpp"
@@ -84,8 +83,7 @@ struct PoseSpace<Affine3> {
 
 // The simplex's points, as many as it has (three points [x, y], four [x, y, z]).
 template <class Pose>
-typename PoseSpace<Pose>::Simplex read_simplex(const JsonReader& reader, const Json& value,
-                                               const std::string& pointer);
+typename PoseSpace<Pose>::Simplex read_simplex(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 // The affinity [p1 - p0, p2 - p0 (, p3 - p0) | p0] that maps the unit simplex onto `p`.
 template <class Pose>
@@ -124,8 +122,7 @@ std::string missing_poses_reason();
 // "picture"} | {"image": path, "box": [[x0, y0], [x1, y1]]}, each with an
 // optional "color". A "picture" is several outlines; an image's file is
 // checked by check_image_file (image_file.hpp).
-std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value,
-                                      const std::string& pointer,
+std::vector<ShapeOutline> read_shapes(const JsonReader& reader, const Json& value, const std::string& pointer,
                                       const std::array<Point, 3>& reference);
 
 // The builtin outlines, in the unit box [0, 1]^2; "picture" has several parts.
@@ -135,8 +132,7 @@ std::vector<ShapeOutline> builtin_outline(std::string_view name);
 std::string pose_count_reason(PoseMethod method, std::size_t count);
 
 // The method of a pose scene or panel ("SAM", "polySAM", ...).
-PoseMethod read_pose_method(const JsonReader& reader, const Json& value,
-                            const std::string& pointer);
+PoseMethod read_pose_method(const JsonReader& reader, const Json& value, const std::string& pointer);
 
 // The method of a scene or panel of poses of `Pose`: of space, one of the
 // SAM family that moves space (in_space).

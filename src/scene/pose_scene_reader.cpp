@@ -1,7 +1,5 @@
 // Pose scenes: timed affine poses (the SAM paper; docs/reference/pose-scenes.md "Pose scenes"),
 // of the plane or of space ("dimension": 3), read by one reader over the pose.
-#include "scene/scene_readers.hpp"
-
 #include <algorithm>
 #include <array>
 #include <string>
@@ -12,6 +10,7 @@
 
 #include "scene/figure_reader.hpp"
 #include "scene/pose_reader.hpp"
+#include "scene/scene_readers.hpp"
 #include "scene/space_pose_reader.hpp"
 #include "scene/timing_reader.hpp"
 
@@ -30,9 +29,10 @@ struct PoseSceneSpace;
 template <>
 struct PoseSceneSpace<Affine2> {
   static constexpr std::array<std::string_view, 18> kFields = {
-      "$schema", "description", "method", "poses",  "reference_triangle", "shapes",
-      "samples", "title",       "canvas", "layers", "panels",             "golden", "claims", "lint",
-      "subdivisions", "timing", "animation", "dimension"};
+      "$schema", "description", "method",   "poses",  "reference_triangle",
+      "shapes",  "samples",     "title",    "canvas", "layers",
+      "panels",  "golden",      "claims",   "lint",   "subdivisions",
+      "timing",  "animation",   "dimension"};
   static constexpr bool kPosesRequired = false;
   static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine2>& figure) {
     if (const Json* shapes = JsonReader::member(document, "shapes")) {
@@ -50,9 +50,10 @@ struct PoseSceneSpace<Affine2> {
 template <>
 struct PoseSceneSpace<Affine3> {
   static constexpr std::array<std::string_view, 19> kFields = {
-      "$schema", "description", "dimension", "method",    "poses",  "reference_tetrahedron", "samples",
-      "subdivisions", "timing", "golden",    "claims",    "lint",   "shapes",                "camera",
-      "layers",  "title",       "canvas",    "panels",    "animation"};
+      "$schema",  "description",  "dimension", "method", "poses",  "reference_tetrahedron",
+      "samples",  "subdivisions", "timing",    "golden", "claims", "lint",
+      "shapes",   "camera",       "layers",    "title",  "canvas", "panels",
+      "animation"};
   static constexpr bool kPosesRequired = true;
   static void read_shapes(const JsonReader& reader, const Json& document, PoseFigure<Affine3>& figure) {
     if (const Json* shapes = JsonReader::member(document, "shapes")) {

@@ -25,23 +25,24 @@ namespace pita::scene {
 namespace {
 
 using detail::element_pointer;
+using detail::Interval;
 using detail::Json;
 using detail::JsonReader;
 using detail::keyframe_count_reason;
 using detail::value_text;
-using detail::Interval;
 }  // namespace
 
 Panel scene_panel(const Scene& scene, std::string pointer) {
   Panel panel;
   panel.keys = scene.keys;
   // The scene's shapes, and no layers of its own.
-  panel.figure = std::visit(
-      overloaded{[](const ArrowFigure& figure) -> PanelFigure { return ArrowPanelFigure{std::nullopt, figure.shapes}; },
-                 []<class Pose>(const PoseFigure<Pose>& figure) -> PanelFigure {
-                   return PosePanelFigure<Pose>{std::nullopt, figure.shapes};
-                 }},
-      scene.figure);
+  panel.figure = std::visit(overloaded{[](const ArrowFigure& figure) -> PanelFigure {
+                                         return ArrowPanelFigure{std::nullopt, figure.shapes};
+                                       },
+                                       []<class Pose>(const PoseFigure<Pose>& figure) -> PanelFigure {
+                                         return PosePanelFigure<Pose>{std::nullopt, figure.shapes};
+                                       }},
+                            scene.figure);
   panel.timing = scene.timing;
   panel.samples = scene.samples.value_or(kDefaultFigureSamples);
   panel.samples_pointer = scene.samples ? "/samples" : "";
@@ -61,10 +62,9 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
     reader.fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
   }
   Scene scene = detail::is_pose_scene(document) ? detail::read_pose_scene(reader, document)
-                                               : detail::read_arrow_scene(reader, document);
-  const bool panels_agree = std::all_of(scene.panels.begin(), scene.panels.end(), [](const Panel& panel) {
-    return figure_agrees(panel.keys, panel.figure);
-  });
+                                                : detail::read_arrow_scene(reader, document);
+  const bool panels_agree = std::all_of(scene.panels.begin(), scene.panels.end(),
+                                        [](const Panel& panel) { return figure_agrees(panel.keys, panel.figure); });
   if (!figure_agrees(scene.keys, scene.figure) || !panels_agree) {
     throw std::logic_error("the scene reader gave " + scene.path + " figure data of another kind than its keys");
   }
@@ -73,16 +73,12 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
 
 const std::vector<ShapeOutline>& outlines_of(const Panel& panel) {
   static const std::vector<ShapeOutline> kNone;
-  return std::visit(overloaded{[](const ArrowPanelFigure& figure) -> const std::vector<ShapeOutline>& {
-                                 return figure.shapes;
-                               },
-                               [](const PosePanelFigure<Affine2>& figure) -> const std::vector<ShapeOutline>& {
-                                 return figure.shapes;
-                               },
-                               [](const PosePanelFigure<Affine3>&) -> const std::vector<ShapeOutline>& {
-                                 return kNone;
-                               }},
-                    panel.figure);
+  return std::visit(
+      overloaded{
+          [](const ArrowPanelFigure& figure) -> const std::vector<ShapeOutline>& { return figure.shapes; },
+          [](const PosePanelFigure<Affine2>& figure) -> const std::vector<ShapeOutline>& { return figure.shapes; },
+          [](const PosePanelFigure<Affine3>&) -> const std::vector<ShapeOutline>& { return kNone; }},
+      panel.figure);
 }
 
 bool figure_agrees(const MotionKeys& keys, const SceneFigure& figure) {
@@ -90,8 +86,7 @@ bool figure_agrees(const MotionKeys& keys, const SceneFigure& figure) {
 }
 
 bool figure_agrees(const MotionKeys& keys, const PanelFigure& figure) {
-  return std::visit([&]<class Keys>(const Keys&) { return std::holds_alternative<PanelFigureOf<Keys>>(figure); },
-                    keys);
+  return std::visit([&]<class Keys>(const Keys&) { return std::holds_alternative<PanelFigureOf<Keys>>(figure); }, keys);
 }
 
 Method resolve_method(std::string_view name) {
@@ -114,13 +109,12 @@ void replace_method(const Scene& scene, MotionKeys& keys, Method method) {
   };
   const auto poses = [&](const auto&) {
     throw SceneError(scene.path, "/method",
-                     fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})",
-                                 info(method).id, method_ids(is_method_of<PoseMethod>)));
+                     fmt::format("method {} interpolates arrows; this is a pose scene (methods: {})", info(method).id,
+                                 method_ids(is_method_of<PoseMethod>)));
   };
   std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given, given.track_length(), true); },
                         [&](PointKeys& given) { arrows(given, given.track_length(), false); },
-                        [&](PlanePoseKeys& given) { poses(given); },
-                        [&](SpacePoseKeys& given) { poses(given); }},
+                        [&](PlanePoseKeys& given) { poses(given); }, [&](SpacePoseKeys& given) { poses(given); }},
              keys);
 }
 
@@ -144,11 +138,9 @@ void replace_pose_method(const Scene& scene, PoseKeys<Pose>& keys, PoseMethod me
 void replace_method(const Scene& scene, MotionKeys& keys, PoseMethod method) {
   const auto arrows = [&](const auto&) {
     throw SceneError(scene.path, "/method",
-                     fmt::format("method {} interpolates poses; this scene has keyframes (arrows)",
-                                 info(method).id));
+                     fmt::format("method {} interpolates poses; this scene has keyframes (arrows)", info(method).id));
   };
-  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given); },
-                        [&](PointKeys& given) { arrows(given); },
+  std::visit(overloaded{[&](KeyframeKeys& given) { arrows(given); }, [&](PointKeys& given) { arrows(given); },
                         [&](PlanePoseKeys& given) { replace_pose_method(scene, given, method); },
                         [&](SpacePoseKeys& given) { replace_pose_method(scene, given, method); }},
              keys);
@@ -160,8 +152,8 @@ std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
   if (!error.where().empty()) {
     return fmt::format("{} ({}, method {})", error.what(), error.where(), info(method).id);
   }
-  return fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(),
-                     error.first() + 1, info(method).id);
+  return fmt::format("{} (poses {} and {}, method {})", error.what(), error.first(), error.first() + 1,
+                     info(method).id);
 }
 
 template <class LayerType>

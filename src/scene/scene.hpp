@@ -5,13 +5,13 @@
 // as schema/scene.schema.json.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
-#include <array>
 #include <vector>
 
 #include "core/keyframe.hpp"
@@ -19,20 +19,18 @@
 #include "core/pitas/registry.hpp"
 #include "core/sam_family_motion.hpp"
 #include "scene/claim.hpp"
-#include "scene/lint_settings.hpp"
 #include "scene/figure.hpp"
 #include "scene/limits.hpp"
+#include "scene/lint_settings.hpp"
 #include "scene/located_error.hpp"
 #include "scene/motion_keys.hpp"
 #include "scene/read_options.hpp"
 
 namespace pita::scene {
 
-
-
 struct Scene {
-  std::string path;           // where the scene came from (a file name, as given)
-  std::string description;    // "" when the scene has none
+  std::string path;         // where the scene came from (a file name, as given)
+  std::string description;  // "" when the scene has none
   // What the scene's own motion is made of: keyframes (the PITA paper),
   // points (PITA Sec. 7.6), poses of the plane (the SAM paper) or of space
   // ("dimension": 3); its alternative is the kind of the scene. Panels start
@@ -40,18 +38,18 @@ struct Scene {
   MotionKeys keys;
   // "animation": how `pita animate` and `pita render --at` play the scene.
   Animation animation;
-  bool has_animation = false;       // the scene gave "animation"
-  std::optional<int> samples;       // in [kMinSamples, kMaxSamples] when given
-  Timing timing;                    // "timing": how scene time runs through the motion
+  bool has_animation = false;  // the scene gave "animation"
+  std::optional<int> samples;  // in [kMinSamples, kMaxSamples] when given
+  Timing timing;               // "timing": how scene time runs through the motion
 
   // The figure (scene/figure.hpp), read by `pita render`; `pita eval` ignores
   // it (but for a pose scene's reference simplex, which poses given as
   // simplices map). `figure` holds the figure data of the family of `keys`:
   // reach it with figure_of below.
-  std::string title;                // "" = none; drawn above the panels
+  std::string title;  // "" = none; drawn above the panels
   Canvas canvas;
   SceneFigure figure;
-  std::vector<Panel> panels;        // at least one: the scene itself when it has no "panels"
+  std::vector<Panel> panels;  // at least one: the scene itself when it has no "panels"
 
   // "golden": this scene's tolerances for `pita check` (docs/reference/check.md "Goldens");
   // unset fields take the command line's values, else the defaults.
@@ -68,7 +66,6 @@ struct Scene {
   // "lint": the legibility lint's thresholds and accepted findings (scene/lint_settings.hpp).
   LintSettings lint;
 };
-
 
 // The figure data of the family of `Keys`, an alternative of MotionKeys
 // (ArrowFigure for KeyframeKeys and PointKeys, PoseFigure<Pose> for

@@ -1,8 +1,7 @@
 // What every scene ends with, read once for arrow scenes and pose scenes of
 // either dimension: "golden", "claims", "lint" and "animation".
-#include "scene/scene_readers.hpp"
-
 #include "scene/animation_reader.hpp"
+#include "scene/scene_readers.hpp"
 
 namespace pita::scene::detail {
 

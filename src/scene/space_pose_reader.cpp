@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "scene/pose_reader.hpp"
 #include "scene/limits.hpp"
+#include "scene/pose_reader.hpp"
 
 namespace pita::scene::detail {
 
@@ -19,7 +19,7 @@ namespace {
 constexpr std::array<std::string_view, 3> kSolidFields = {"solid", "polyhedron", "color"};
 constexpr std::array<std::string_view, 2> kPolyhedronFields = {"vertices", "faces"};
 constexpr std::array<std::string_view, 7> kCameraFields = {"azimuth", "elevation", "distance", "projection",
-                                                          "target",  "auto",      "shadow"};
+                                                           "target",  "auto",      "shadow"};
 // "shadow": true: a light grey of the ground.
 constexpr Color kDefaultShadow{0.0, 0.0, 0.0, 0.14};
 constexpr std::array<std::string_view, 4> kSolidNames = {"cube", "tetrahedron", "F", "house"};
@@ -44,7 +44,7 @@ Solid builtin_solid(std::string_view name, const std::array<Eigen::Vector3d, 4>&
   std::vector<Eigen::Vector2d> outline;
   double depth = 0.25;
   if (name == "F") {
-    outline = {{0.0, 0.0}, {0.25, 0.0}, {0.25, 0.4}, {0.6, 0.4}, {0.6, 0.6},
+    outline = {{0.0, 0.0},  {0.25, 0.0}, {0.25, 0.4}, {0.6, 0.4},  {0.6, 0.6},
                {0.25, 0.6}, {0.25, 0.8}, {0.75, 0.8}, {0.75, 1.0}, {0.0, 1.0}};
   } else {  // house: the gable outline, 0.8 deep
     outline = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 0.6}, {0.5, 1.0}, {0.0, 0.6}};
@@ -71,15 +71,16 @@ Solid read_polyhedron(const JsonReader& reader, const Json& value, const std::st
   const Json* vertices = JsonReader::member(value, "vertices");
   if (vertices == nullptr) reader.fail(pointer + "/vertices", "missing required field (the points [x, y, z])");
   if (!vertices->is_array() || vertices->size() < 4 || vertices->size() > static_cast<std::size_t>(kMaxSolidVertices)) {
-    reader.fail(pointer + "/vertices",
-                fmt::format("must be an array of 4 to {} points [x, y, z] (got {})", kMaxSolidVertices,
-                            value_text(*vertices)));
+    reader.fail(pointer + "/vertices", fmt::format("must be an array of 4 to {} points [x, y, z] (got {})",
+                                                   kMaxSolidVertices, value_text(*vertices)));
   }
   for (std::size_t i = 0; i < vertices->size(); ++i) {
-    solid.vertices.push_back(PoseSpace<Affine3>::read_point(reader, (*vertices)[i], element_pointer(pointer + "/vertices", i)));
+    solid.vertices.push_back(
+        PoseSpace<Affine3>::read_point(reader, (*vertices)[i], element_pointer(pointer + "/vertices", i)));
   }
   const Json* faces = JsonReader::member(value, "faces");
-  if (faces == nullptr) reader.fail(pointer + "/faces", "missing required field (the faces, as lists of vertex indices)");
+  if (faces == nullptr)
+    reader.fail(pointer + "/faces", "missing required field (the faces, as lists of vertex indices)");
   if (!faces->is_array() || faces->empty() || faces->size() > static_cast<std::size_t>(kMaxSolidFaces)) {
     reader.fail(pointer + "/faces", fmt::format("must be an array of 1 to {} faces [i, j, k, ...] (got {})",
                                                 kMaxSolidFaces, value_text(*faces)));
@@ -89,15 +90,15 @@ Solid read_polyhedron(const JsonReader& reader, const Json& value, const std::st
     const std::string at = element_pointer(pointer + "/faces", f);
     const Json& face = (*faces)[f];
     if (!face.is_array() || face.size() < 3 || face.size() > static_cast<std::size_t>(kMaxSolidVertices)) {
-      reader.fail(at, "must be an array of at least 3 vertex indices, in order around the face (got " +
-                          value_text(face) + ")");
+      reader.fail(
+          at, "must be an array of at least 3 vertex indices, in order around the face (got " + value_text(face) + ")");
     }
     std::vector<int> indices;
     for (std::size_t k = 0; k < face.size(); ++k) {
       const std::string index_at = element_pointer(at, k);
       if (!face[k].is_number_integer() || face[k].get<long long>() < 0 || face[k].get<long long>() >= count) {
-        reader.fail(index_at, fmt::format("must be the index of a vertex, 0 to {} (got {})", count - 1,
-                                          value_text(face[k])));
+        reader.fail(index_at,
+                    fmt::format("must be the index of a vertex, 0 to {} (got {})", count - 1, value_text(face[k])));
       }
       indices.push_back(face[k].get<int>());
     }
@@ -153,7 +154,8 @@ Camera read_camera(const JsonReader& reader, const Json& value, const std::strin
     camera.azimuth = reader.number(*azimuth, pointer + "/azimuth", Interval{-kMaxCameraAzimuth, kMaxCameraAzimuth});
   }
   if (const Json* elevation = JsonReader::member(value, "elevation")) {
-    camera.elevation = reader.number(*elevation, pointer + "/elevation", Interval{-kMaxCameraElevation, kMaxCameraElevation});
+    camera.elevation =
+        reader.number(*elevation, pointer + "/elevation", Interval{-kMaxCameraElevation, kMaxCameraElevation});
   }
   if (const Json* projection = JsonReader::member(value, "projection")) {
     const std::string text = projection->is_string() ? projection->get<std::string>() : std::string();
@@ -166,13 +168,14 @@ Camera read_camera(const JsonReader& reader, const Json& value, const std::strin
   if (const Json* distance = JsonReader::member(value, "distance")) {
     camera.distance = bounded(reader, *distance, pointer + "/distance");
     if (!(camera.distance > 0.0)) {
-      reader.fail(pointer + "/distance",
-                  fmt::format("must be > 0: the camera stands that far from the target (got {})",
-                              number_text(camera.distance)));
+      reader.fail(pointer + "/distance", fmt::format("must be > 0: the camera stands that far from the target (got {})",
+                                                     number_text(camera.distance)));
     }
   }
-  if (const Json* target = JsonReader::member(value, "target")) camera.target = PoseSpace<Affine3>::read_point(reader, *target, pointer + "/target");
-  if (const Json* automatic = JsonReader::member(value, "auto")) camera.automatic = reader.boolean(*automatic, pointer + "/auto");
+  if (const Json* target = JsonReader::member(value, "target"))
+    camera.target = PoseSpace<Affine3>::read_point(reader, *target, pointer + "/target");
+  if (const Json* automatic = JsonReader::member(value, "auto"))
+    camera.automatic = reader.boolean(*automatic, pointer + "/auto");
   if (const Json* shadow = JsonReader::member(value, "shadow")) {
     if (shadow->is_boolean()) {
       if (shadow->get<bool>()) camera.shadow = kDefaultShadow;

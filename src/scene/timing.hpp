@@ -15,10 +15,10 @@ namespace pita::scene {
 enum class TrackedPoint { start, end, middle };  // "p", "q", "mid"
 
 struct Timing {
-  Ease ease;                                // "ease": default linear
-  std::optional<TrackedPoint> arc_length;   // "arc_length": reparameterise by this point's path
-  WarpSpan per = WarpSpan::motion;          // "per": "motion" | "span"
-  std::string pointer;                      // JSON Pointer of "timing" ("" when not given)
+  Ease ease;                               // "ease": default linear
+  std::optional<TrackedPoint> arc_length;  // "arc_length": reparameterise by this point's path
+  WarpSpan per = WarpSpan::motion;         // "per": "motion" | "span"
+  std::string pointer;                     // JSON Pointer of "timing" ("" when not given)
 
   // The motion's time is the scene's (no "timing", or linear without arc length).
   bool is_identity() const { return ease.kind == EaseKind::linear && !arc_length; }

@@ -39,12 +39,10 @@ std::string_view trim(std::string_view text) {
 
 // "cubic-bezier(x1, y1, x2, y2)" (CSS syntax, any spacing).
 Ease read_cubic_bezier(const JsonReader& reader, const std::string& text, const std::string& pointer) {
-  const std::string usage =
-      "must be \"cubic-bezier(x1, y1, x2, y2)\" with four numbers, x1 and x2 in [0, 1]";
+  const std::string usage = "must be \"cubic-bezier(x1, y1, x2, y2)\" with four numbers, x1 and x2 in [0, 1]";
   const std::string_view whole = trim(text);
   const std::size_t open = whole.find('(');
-  if (open == std::string_view::npos || whole.back() != ')' ||
-      trim(whole.substr(0, open)) != kCubicBezier) {
+  if (open == std::string_view::npos || whole.back() != ')' || trim(whole.substr(0, open)) != kCubicBezier) {
     reader.fail(pointer, fmt::format("{} (got \"{}\")", usage, text));
   }
   std::string_view inside = whole.substr(open + 1, whole.size() - open - 2);
@@ -56,8 +54,8 @@ Ease read_cubic_bezier(const JsonReader& reader, const std::string& text, const 
     double x = 0.0;
     const auto [end, error] = std::from_chars(item.data(), item.data() + item.size(), x);
     if (item.empty() || error != std::errc{} || end != item.data() + item.size() || !std::isfinite(x)) {
-      reader.fail(pointer, fmt::format("{}: \"{}\" is not a finite number (got \"{}\")", usage,
-                                       std::string(item), text));
+      reader.fail(pointer,
+                  fmt::format("{}: \"{}\" is not a finite number (got \"{}\")", usage, std::string(item), text));
     }
     numbers.push_back(x);
     if (comma == std::string_view::npos) break;
@@ -76,8 +74,8 @@ Ease read_cubic_bezier(const JsonReader& reader, const std::string& text, const 
 // {"sine": {"k1": .., "k2": ..}} or {"parabolic": {"t1": .., "t2": ..}}.
 Ease read_ease_family(const JsonReader& reader, const Json& value, const std::string& pointer) {
   if (value.size() != 1) {
-    reader.fail(pointer, fmt::format("an ease object has one member, \"sine\" or \"parabolic\" (got {})",
-                                     value_text(value)));
+    reader.fail(pointer,
+                fmt::format("an ease object has one member, \"sine\" or \"parabolic\" (got {})", value_text(value)));
   }
   const std::string key = value.begin().key();
   const Json& parameters = value.begin().value();
@@ -91,8 +89,9 @@ Ease read_ease_family(const JsonReader& reader, const Json& value, const std::st
                                               : did_you_mean(close)));
   }
   const auto& fields = sine ? kSineFields : kParabolicFields;
-  reader.object(parameters, at, sine ? "the sine ease's parameters {\"k1\", \"k2\"}"
-                                     : "the parabolic ease's parameters {\"t1\", \"t2\"}");
+  reader.object(
+      parameters, at,
+      sine ? "the sine ease's parameters {\"k1\", \"k2\"}" : "the parabolic ease's parameters {\"t1\", \"t2\"}");
   reader.check_fields(parameters, at, fields);
   std::array<double, 2> numbers{};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -126,9 +125,9 @@ Ease read_ease(const JsonReader& reader, const Json& value, const std::string& p
   const std::vector<std::string_view> names = ease_names();
   const std::vector<std::string> close = closest_names(text, names);
   reader.fail(pointer, fmt::format("unknown ease \"{}\"{}", text,
-                                   close.empty() ? "; eases: " + joined(names) +
-                                                       ", and {\"sine\": {...}}, {\"parabolic\": {...}}"
-                                                 : did_you_mean(close)));
+                                   close.empty()
+                                       ? "; eases: " + joined(names) + ", and {\"sine\": {...}}, {\"parabolic\": {...}}"
+                                       : did_you_mean(close)));
 }
 
 Timing read_timing(const JsonReader& reader, const Json& value, const std::string& pointer) {

@@ -12,8 +12,7 @@ namespace pita::scene::detail {
 
 // The names of a tracked point ("point" of a trajectory, "arc_length").
 inline constexpr std::array<std::string_view, 3> kPointNames = {"p", "q", "mid"};
-inline constexpr std::array<TrackedPoint, 3> kPoints = {TrackedPoint::start, TrackedPoint::end,
-                                                        TrackedPoint::middle};
+inline constexpr std::array<TrackedPoint, 3> kPoints = {TrackedPoint::start, TrackedPoint::end, TrackedPoint::middle};
 
 // {"ease": ..., "arc_length": "p" | "q" | "mid", "per": "motion" | "span"},
 // every field optional. The ease is a name ("ease-in-out"), a CSS

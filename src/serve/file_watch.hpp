@@ -40,7 +40,7 @@ class FileWatcher {
   void drain(std::set<std::filesystem::path>& saved);
 
   int fd_ = -1;
-  std::map<int, std::filesystem::path> folders_;       // watch descriptor -> folder
+  std::map<int, std::filesystem::path> folders_;  // watch descriptor -> folder
   // Where an event may name a watched file (absolute, lexically normal: the
   // file, and the target of its links) -> the file as watch() was given it.
   std::map<std::filesystem::path, std::filesystem::path> files_;

@@ -1,7 +1,5 @@
 #include "serve/scene_edit.hpp"
 
-#include "core/overloaded.hpp"
-
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -13,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/affine2.hpp"
+#include "core/overloaded.hpp"
 #include "serve/json_edit.hpp"
 
 namespace pita::serve {
@@ -56,7 +55,8 @@ std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKe
 
 void check_change(const std::string& text, const Change& change) {
   // /keyframes/K/(p|q|m|w), /poses/K/(triangle/J|matrix), or the same under /panels/N.
-  static const std::regex editable(R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix))$)");
+  static const std::regex editable(
+      R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix))$)");
   if (!std::regex_match(change.pointer, editable)) {
     throw std::invalid_argument("\"" + change.pointer + "\" is not a value a drag writes");
   }
@@ -97,11 +97,11 @@ std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
     };
     // Timed points and poses of space have no handles yet: a point's drag and
     // a drag through the 3D camera are not written (docs/reference/serve.md).
-    std::visit(overloaded{[&](const scene::KeyframeKeys& given) { arrow_handles(given); },
-                          [](const scene::PointKeys&) {},
-                          [&](const scene::PlanePoseKeys& given) { corner_handles(given); },
-                          [](const scene::SpacePoseKeys&) {}},
-               panel.keys);
+    std::visit(
+        overloaded{[&](const scene::KeyframeKeys& given) { arrow_handles(given); }, [](const scene::PointKeys&) {},
+                   [&](const scene::PlanePoseKeys& given) { corner_handles(given); },
+                   [](const scene::SpacePoseKeys&) {}},
+        panel.keys);
   }
   return all;
 }
@@ -146,9 +146,9 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
   Affine2 A;
   A.L = M * R.inverse();
   A.b = Eigen::Vector2d(moved[0].real(), moved[0].imag()) - A.L * Eigen::Vector2d(r[0].real(), r[0].imag());
-  return {{pointer + "/matrix", fmt::format("[[{}, {}, {}], [{}, {}, {}]]", number_json(A.L(0, 0)),
-                                            number_json(A.L(0, 1)), number_json(A.b(0)), number_json(A.L(1, 0)),
-                                            number_json(A.L(1, 1)), number_json(A.b(1)))}};
+  return {{pointer + "/matrix",
+           fmt::format("[[{}, {}, {}], [{}, {}, {}]]", number_json(A.L(0, 0)), number_json(A.L(0, 1)),
+                       number_json(A.b(0)), number_json(A.L(1, 0)), number_json(A.L(1, 1)), number_json(A.b(1)))}};
 }
 
 }  // namespace pita::serve

@@ -2,8 +2,8 @@
 
 #include <array>
 #include <atomic>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -33,8 +33,8 @@
 #include "scene/scene.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/json_edit.hpp"
-#include "serve/scene_edit.hpp"
 #include "serve/page.hpp"
+#include "serve/scene_edit.hpp"
 
 // Last: it includes <resolv.h>, whose macro _res would rename a parameter of Eigen's.
 #include <httplib.h>
@@ -52,8 +52,12 @@ Json error_json(const std::exception_ptr& thrown, const std::string& path) {
   try {
     std::rethrow_exception(thrown);
   } catch (const scene::LocatedError& e) {  // SceneError, NoMotion, RenderError
-    error.update({{"file", e.file()}, {"line", e.line()}, {"column", e.column()}, {"pointer", e.pointer()},
-                  {"reason", e.reason()}, {"message", e.what()}});
+    error.update({{"file", e.file()},
+                  {"line", e.line()},
+                  {"column", e.column()},
+                  {"pointer", e.pointer()},
+                  {"reason", e.reason()},
+                  {"message", e.what()}});
   } catch (const std::exception& e) {
     error.update({{"reason", e.what()}, {"message", path + ": " + e.what()}});
   }
@@ -77,10 +81,10 @@ int error_status(const std::exception_ptr& thrown) {
 struct SceneState {
   fs::path path;
   std::uint64_t version = 0;
-  std::shared_ptr<const scene::Scene> scene;  // the last good one
-  std::string svg;                            // its figure
-  std::optional<Json> error;                  // the last save's, when it could not be drawn
-  std::vector<fs::path> files;                // the scene and its images (what is watched)
+  std::shared_ptr<const scene::Scene> scene;       // the last good one
+  std::string svg;                                 // its figure
+  std::optional<Json> error;                       // the last save's, when it could not be drawn
+  std::vector<fs::path> files;                     // the scene and its images (what is watched)
   std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
   Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
   std::string text;                                // the file it was read from
@@ -114,8 +118,8 @@ class Server {
       figure = render::build_figure(stage);
       svg = render::render_figure(*scene, figure, render::Format::svg);
       for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
-        claims.push_back({{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held},
-                          {"measured", claim.measured}});
+        claims.push_back(
+            {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
       }
     } catch (...) {
       error = error_json(std::current_exception(), state.path.string());
@@ -164,24 +168,34 @@ class Server {
     Json all = Json::array();
     for (std::size_t i = 0; i < scenes_.size(); ++i) {
       const SceneState& state = *scenes_[i];
-      Json entry{{"index", i}, {"name", state.path.stem().string()}, {"path", state.path.string()},
-                 {"version", state.version}, {"title", state.scene ? state.scene->title : ""},
-                 {"error", state.error ? *state.error : Json(nullptr)}, {"timeline", nullptr},
-                 {"handles", Json::array()}, {"claims", state.claims}, {"panels", Json::array()}};
+      Json entry{{"index", i},
+                 {"name", state.path.stem().string()},
+                 {"path", state.path.string()},
+                 {"version", state.version},
+                 {"title", state.scene ? state.scene->title : ""},
+                 {"error", state.error ? *state.error : Json(nullptr)},
+                 {"timeline", nullptr},
+                 {"handles", Json::array()},
+                 {"claims", state.claims},
+                 {"panels", Json::array()}};
       // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
       for (const render::PanelPlacement& placement : state.placements) {
         entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
       }
       if (settings_.edit && state.scene) {
         for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
-          entry["handles"].push_back({{"panel", handle.panel}, {"pointer", handle.pointer}, {"part", handle.part},
+          entry["handles"].push_back({{"panel", handle.panel},
+                                      {"pointer", handle.pointer},
+                                      {"part", handle.part},
                                       {"at", {handle.at.real(), handle.at.imag()}}});
         }
       }
       if (state.scene) {
         try {
           const animate::Timeline timeline = animate::make_timeline(*state.scene);
-          entry["timeline"] = Json{{"first", timeline.first}, {"last", timeline.last}, {"frames", timeline.frames},
+          entry["timeline"] = Json{{"first", timeline.first},
+                                   {"last", timeline.last},
+                                   {"frames", timeline.frames},
                                    {"fps", timeline.fps},
                                    {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
         } catch (const std::exception&) {
@@ -251,8 +265,9 @@ class Server {
       const scene::Scene scene = scene::parse_scene(text, path.string(), {settings_.allow_absolute_paths});
       const motion::Stage stage(scene);
       const render::Figure figure = render::build_figure(stage);
-      changes = drag(text, scene, figure.placements, d.at("panel").get<std::size_t>(), d.at("pointer").get<std::string>(),
-                     d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
+      changes =
+          drag(text, scene, figure.placements, d.at("panel").get<std::size_t>(), d.at("pointer").get<std::string>(),
+               d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
     } else {
       for (const Json& change : request.at("changes")) {
         changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
@@ -357,7 +372,9 @@ struct Site {
 
 void get_page(Site&, const httplib::Request&, httplib::Response& res) {
   res.set_header("Cache-Control", "no-store");
-  res.set_header("Content-Security-Policy", "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline'");
+  res.set_header(
+      "Content-Security-Policy",
+      "default-src 'self'; img-src 'self' data:; style-src 'self' 'unsafe-inline'; script-src 'self' 'unsafe-inline'");
   res.set_content(std::string(page_html()), "text/html; charset=utf-8");
 }
 
@@ -467,7 +484,8 @@ void set_up(httplib::Server& http, Site& site) {
   // Every request carries the token (as Jupyter's): a page of another site
   // cannot guess it, so it can neither read nor drive this server.
   http.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {
-    const std::string given = req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
+    const std::string given =
+        req.has_param("token") ? req.get_param_value("token") : req.get_header_value("X-Pita-Token");
     if (!token_matches(given, site.settings.token)) {
       send_error(res, 403, "a token is needed: use the address pita serve printed");
       return httplib::Server::HandlerResponse::Handled;
@@ -548,8 +566,8 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
   }
   std::thread listener([&] { http.listen_after_bind(); });
   const std::string host = settings.host.find(':') != std::string::npos ? "[" + settings.host + "]" : settings.host;
-  log << fmt::format("pita: serving {} scene{} at http://{}:{}/?token={}\n", state.size(),
-                     state.size() == 1 ? "" : "s", host, port, settings.token)
+  log << fmt::format("pita: serving {} scene{} at http://{}:{}/?token={}\n", state.size(), state.size() == 1 ? "" : "s",
+                     host, port, settings.token)
       << std::flush;
 
   const int code = render_saves(state, watcher, files, log, stopped);

@@ -28,10 +28,10 @@ namespace pita::serve {
 struct Settings {
   std::vector<std::filesystem::path> scenes;
   std::string host = "127.0.0.1";
-  int port = 8765;                 // 0: any free port
-  std::string token;               // every request must give it
+  int port = 8765;    // 0: any free port
+  std::string token;  // every request must give it
   bool allow_absolute_paths = false;
-  bool edit = false;               // --edit: drags are written into the scene files
+  bool edit = false;  // --edit: drags are written into the scene files
 };
 
 // A random token: 32 hexadecimal digits from the system's random source.

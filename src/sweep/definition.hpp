@@ -18,15 +18,15 @@ inline constexpr std::string_view kSweepFile = "sweep.json";
 
 // What defines a sweep in DIR (read back by --merge).
 struct Definition {
-  std::string scene;  // the base scene's path, as given
-  std::string name;   // its stem: the variants' file names
+  std::string scene;                                      // the base scene's path, as given
+  std::string name;                                       // its stem: the variants' file names
   std::vector<std::pair<std::string, std::string>> axes;  // pointer, spec
   std::vector<std::size_t> axis_sizes;
   bool zip = false;
   std::vector<std::string> formats;
   std::int64_t variants = 0;
-  std::string salt;   // what else the content hashes cover (formats, pita's version)
-  Json base;          // the base scene's document: --merge rebuilds each variant's hash from it
+  std::string salt;  // what else the content hashes cover (formats, pita's version)
+  Json base;         // the base scene's document: --merge rebuilds each variant's hash from it
 };
 
 // DIR/sweep.json's text, and the definition read back from it (throws

@@ -1,10 +1,5 @@
 #include "sweep/folder.hpp"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -12,7 +7,11 @@
 #include <string_view>
 #include <system_error>
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "io/output_file.hpp"
 #include "sweep/definition.hpp"
@@ -116,8 +115,8 @@ FolderLock::FolderLock(const fs::path& dir, const std::string& manifest, About a
     if (errno == ENOSYS || errno == EOPNOTSUPP || errno == ENOLCK) {
       // A file system without locks (Lustre mounted noflock, some NFS): run
       // unguarded, as before locks existed, and say so.
-      std::fprintf(stderr, "pita: %s: cannot lock (%s): run one sweep at a time into this folder\n",
-                   path.c_str(), std::strerror(errno));
+      std::fprintf(stderr, "pita: %s: cannot lock (%s): run one sweep at a time into this folder\n", path.c_str(),
+                   std::strerror(errno));
       ::close(fd_);
       fd_ = -1;
       return;

@@ -202,9 +202,10 @@ Json Axis::value(std::size_t i) const {
   if (k == n - 1) return number_value(b);
   const double u = static_cast<double>(k) / static_cast<double>(n - 1);
   // Geometric: a (b/a)^u in logarithms (b/a may overflow: log:1e-300:1e300:5).
-  const double v = kind == Kind::geometric
-                       ? std::copysign(std::exp(std::log(std::abs(a)) + (std::log(std::abs(b)) - std::log(std::abs(a))) * u), a)
-                       : a + (b - a) * u;
+  const double v =
+      kind == Kind::geometric
+          ? std::copysign(std::exp(std::log(std::abs(a)) + (std::log(std::abs(b)) - std::log(std::abs(a))) * u), a)
+          : a + (b - a) * u;
   // Rounded to 15 significant digits, so that 0.1:0.9:5 sets 0.3, not
   // 0.30000000000000004 (the step's rounding is not the user's value).
   const std::string rounded = fmt::format("{:.15g}", v);

@@ -168,8 +168,8 @@ RowCounts write_pass(const SheetInput& input, const fs::path& data, const std::v
                      std::size_t from, std::size_t to) {
   std::vector<std::unique_ptr<io::StreamingOutput>> outs;
   for (std::size_t c = from; c < to; ++c) {
-    outs.push_back(std::make_unique<io::StreamingOutput>(data / fmt::format("column-{}.js", columns[c].key),
-                                                             kColumnBuffer));
+    outs.push_back(
+        std::make_unique<io::StreamingOutput>(data / fmt::format("column-{}.js", columns[c].key), kColumnBuffer));
     outs.back()->write(fmt::format("pitaColumn(\"{}\",[", columns[c].key));
   }
   RowCounts counts;
@@ -246,19 +246,20 @@ std::string page_top(const SheetInput& input, const RowCounts& counts) {
       "td img{{height:80px;width:auto;background:#fff;display:block}} #page{{width:6em}}</style></head>\n"
       "<body>\n<h1>pita sweep of {0}</h1>\n",
       text::html_escaped(input.name));
-  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", counts.rows,
-                     input.variants, counts.failed, text::html_escaped(input.base_path));
+  out += fmt::format("<p>{} of {} variants ({} failed) of <code>{}</code>; the values at ", counts.rows, input.variants,
+                     counts.failed, text::html_escaped(input.base_path));
   for (std::size_t k = 0; k < input.pointers.size(); ++k) {
     out += fmt::format("{}<code>{}</code>", k == 0 ? "" : ", ", text::html_escaped(input.pointers[k]));
   }
   out += ". Every row is in <a href=\"manifest.csv\">manifest.csv</a>; click a heading to sort.</p>\n";
-  out += "<p><label>Sort by <select id=\"sort\"><option value=\"index\">index</option></select></label> "
-         "<select id=\"order\"><option value=\"asc\">ascending</option><option value=\"desc\">descending</option>"
-         "</select> <button id=\"first\">« first</button> <button id=\"prev\">‹ previous</button> "
-         "<label>page <input id=\"page\" type=\"number\" min=\"1\" value=\"1\"></label> <span id=\"pages\"></span> "
-         "<button id=\"next\">next ›</button> <button id=\"last\">last »</button> "
-         "<label>rows <select id=\"size\"><option>50</option><option selected>100</option><option>500</option>"
-         "</select></label> <span id=\"status\" role=\"status\"></span></p>\n";
+  out +=
+      "<p><label>Sort by <select id=\"sort\"><option value=\"index\">index</option></select></label> "
+      "<select id=\"order\"><option value=\"asc\">ascending</option><option value=\"desc\">descending</option>"
+      "</select> <button id=\"first\">« first</button> <button id=\"prev\">‹ previous</button> "
+      "<label>page <input id=\"page\" type=\"number\" min=\"1\" value=\"1\"></label> <span id=\"pages\"></span> "
+      "<button id=\"next\">next ›</button> <button id=\"last\">last »</button> "
+      "<label>rows <select id=\"size\"><option>50</option><option selected>100</option><option>500</option>"
+      "</select></label> <span id=\"status\" role=\"status\"></span></p>\n";
   return out;
 }
 

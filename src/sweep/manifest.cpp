@@ -81,7 +81,7 @@ std::string manifest_csv(const std::vector<std::string>& pointers, const std::ma
 }
 
 std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& path,
-                                                  const std::vector<std::string>& pointers, bool headless) {
+                                                   const std::vector<std::string>& pointers, bool headless) {
   ManifestReader reader;
   reader.in_ = std::make_unique<std::ifstream>(path, std::ios::binary);
   if (!*reader.in_) {
@@ -101,9 +101,10 @@ std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& 
       !std::equal(pointers.begin(), pointers.end(), fields.begin() + 1)) {
     std::string expected = "index";
     for (const std::string& p : pointers) expected += "," + p;
-    throw std::runtime_error(fmt::format("{}: not the manifest of this sweep (its header does not start with {}); "
-                                         "use another output folder, or remove it",
-                                         path.string(), expected));
+    throw std::runtime_error(
+        fmt::format("{}: not the manifest of this sweep (its header does not start with {}); "
+                    "use another output folder, or remove it",
+                    path.string(), expected));
   }
   return reader;
 }
@@ -159,7 +160,7 @@ bool ManifestReader::is_sorted(const std::filesystem::path& path, const std::vec
 }
 
 std::optional<ManifestReader> ManifestReader::open_sorted(const std::filesystem::path& path,
-                                                         const std::vector<std::string>& pointers) {
+                                                          const std::vector<std::string>& pointers) {
   std::optional<ManifestReader> reader = open(path, pointers);
   if (!reader) return std::nullopt;
   Row row;

@@ -25,10 +25,22 @@ namespace pita::sweep {
 
 // The metrics of the scene's own motion (pita measure, docs/reference/measure.md "pita measure"):
 // empty where they do not apply (pose metrics on arrows and the reverse).
-inline constexpr std::array<std::string_view, 16> kMetricColumns = {
-    "path_length_p", "path_length_q", "turning_p", "turning_q", "winding_min", "winding_max",
-    "discrepancy_max", "discrepancy_max_previous", "discrepancy_max_average", "discrepancy_t_of_max",
-    "most_sensitive", "gain", "pop_jump", "pops", "ara", "area_monotone"};
+inline constexpr std::array<std::string_view, 16> kMetricColumns = {"path_length_p",
+                                                                    "path_length_q",
+                                                                    "turning_p",
+                                                                    "turning_q",
+                                                                    "winding_min",
+                                                                    "winding_max",
+                                                                    "discrepancy_max",
+                                                                    "discrepancy_max_previous",
+                                                                    "discrepancy_max_average",
+                                                                    "discrepancy_t_of_max",
+                                                                    "most_sensitive",
+                                                                    "gain",
+                                                                    "pop_jump",
+                                                                    "pops",
+                                                                    "ara",
+                                                                    "area_monotone"};
 
 struct Row {
   std::int64_t index = 0;
@@ -128,10 +140,10 @@ void merge_sources(const std::filesystem::path& path, const std::vector<std::str
     Row row;
     while (sources[s].next(row)) {
       if (row.index <= last[s]) {
-        throw std::runtime_error(fmt::format("{}: variant {} {} (the rows must be in increasing order of index, each "
-                                             "once)",
-                                             sources[s].where(), row.index,
-                                             row.index == last[s] ? "appears twice" : "comes after a later one"));
+        throw std::runtime_error(fmt::format(
+            "{}: variant {} {} (the rows must be in increasing order of index, each "
+            "once)",
+            sources[s].where(), row.index, row.index == last[s] ? "appears twice" : "comes after a later one"));
       }
       last[s] = row.index;
       if (accept(row, s)) {
@@ -152,9 +164,10 @@ void merge_sources(const std::filesystem::path& path, const std::vector<std::str
     for (std::size_t s = 0; s < heads.size(); ++s) {
       if (!heads[s] || heads[s]->index != *least) continue;
       if (best && same == SameIndex::refuse_conflict && !(*heads[s] == *heads[*best])) {
-        throw std::runtime_error(fmt::format("variant {} has two different rows, {} and {}: remove the part that is "
-                                             "stale (a run split into another number of shards?) and merge again",
-                                             *least, sources[*best].where(), sources[s].where()));
+        throw std::runtime_error(
+            fmt::format("variant {} has two different rows, {} and {}: remove the part that is "
+                        "stale (a run split into another number of shards?) and merge again",
+                        *least, sources[*best].where(), sources[s].where()));
       }
       best = s;
     }

@@ -1,13 +1,12 @@
 // `pita sweep --merge DIR`: the shards' manifest.K-of-N.csv joined into one
 // manifest.csv, each row checked against its variant, and the gaps named.
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <system_error>
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 
 #include "io/output_file.hpp"
 #include "sweep/definition.hpp"
@@ -132,9 +131,9 @@ class MissingVariants {
  public:
   explicit MissingVariants(MergeSummary& summary)
       : summary_(summary),
-        in_shard_(summary.shards > 0 && summary.shards <= kMaxShardsCounted ? static_cast<std::size_t>(summary.shards)
-                                                                            : 0,
-                  0) {}
+        in_shard_(
+            summary.shards > 0 && summary.shards <= kMaxShardsCounted ? static_cast<std::size_t>(summary.shards) : 0,
+            0) {}
 
   // The variants [from, to).
   void add(std::int64_t from, std::int64_t to) {
@@ -207,9 +206,10 @@ MergeSummary merge_sweep(const std::string& dir_text, bool wait) {
   missing.add(expected, definition.variants);
   missing.name_shards();
   if (summary.foreign > 0) {
-    summary.notes.push_back(fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
-                                        "{}'s) and were ignored",
-                                        summary.foreign, kSweepFile));
+    summary.notes.push_back(
+        fmt::format("{} rows of the parts belong to another sweep (their variants differ from "
+                    "{}'s) and were ignored",
+                    summary.foreign, kSweepFile));
   }
   write_reports(dir, definition, summary.notes);
   return summary;

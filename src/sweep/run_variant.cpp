@@ -62,10 +62,14 @@ namespace {
 
 std::optional<render::Format> figure_format(OutputKind kind) {
   switch (kind) {
-    case OutputKind::svg: return render::Format::svg;
-    case OutputKind::png: return render::Format::png;
-    case OutputKind::pdf: return render::Format::pdf;
-    default: return std::nullopt;
+    case OutputKind::svg:
+      return render::Format::svg;
+    case OutputKind::png:
+      return render::Format::png;
+    case OutputKind::pdf:
+      return render::Format::pdf;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -167,8 +171,7 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
         files.emplace_back(job.dir / file, render::render_figure(scene, *figure, *format));
       } else {
         const motion::SceneMotion& motion = own_stage.motion(0);
-        const std::vector<double> at =
-            motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
+        const std::vector<double> at = motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
         motion::check_eval_work(scene, own_stage.panel(0), motion, at.size(), "ask for fewer frames (/samples)");
         files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
                                                                kind == OutputKind::csv ? motion::FramesFormat::csv

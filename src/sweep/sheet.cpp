@@ -15,8 +15,8 @@
 
 #include "io/output_file.hpp"
 #include "render/budget.hpp"
-#include "render/figure.hpp"
 #include "render/cairo_handles.hpp"
+#include "render/figure.hpp"
 #include "render/painter.hpp"
 #include "render/png_writer.hpp"
 #include "scene/scene.hpp"
@@ -39,8 +39,8 @@ std::string read_text(const fs::path& path) {
   return s.str();
 }
 
-constexpr double kLabel = 16;   // caption height under a cell
-constexpr double kTitle = 36;   // the sheet's title
+constexpr double kLabel = 16;  // caption height under a cell
+constexpr double kTitle = 36;  // the sheet's title
 constexpr double kFontSize = 11;
 const scene::Color kInk{0.1, 0.1, 0.1, 1.0};
 const scene::Color kFailed{0.8, 0.0, 0.0, 1.0};
@@ -163,7 +163,8 @@ void paint_title(SheetPainter& painter, const SheetInput& input, const ContactGr
     std::string title = fmt::format("pita sweep of {}: ", input.name);
     for (std::size_t k = 0; k < input.pointers.size(); ++k) title += (k ? ", " : "") + input.pointers[k];
     if (grid.two_d) {
-      title += fmt::format("  (rows: {}, columns: {})", input.pointers[grid.row_axis], input.pointers[grid.column_axis]);
+      title +=
+          fmt::format("  (rows: {}, columns: {})", input.pointers[grid.row_axis], input.pointers[grid.column_axis]);
     }
     if (static_cast<std::int64_t>(cells) < input.variants) {
       title += fmt::format("  ({} of {} variants, evenly spaced; index.html lists all)", cells, input.variants);
@@ -184,8 +185,8 @@ void paint_cell(SheetPainter& painter, const SheetInput& input, const ContactGri
   if (grid.two_d && row != nullptr) {
     if (i % grid.columns == 0) {
       painter.each([&](cairo_t* cr) {
-        render::paint_text(cr, row->values[grid.row_axis], "Sans", kFontSize, kInk, grid.left - 8,
-                           y + cell_h / 2 - 6, render::TextAlign::right);
+        render::paint_text(cr, row->values[grid.row_axis], "Sans", kFontSize, kInk, grid.left - 8, y + cell_h / 2 - 6,
+                           render::TextAlign::right);
       });
     }
     if (i / grid.columns == 0) {
@@ -275,9 +276,10 @@ std::string write_contact_sheet(const SheetInput& input) {
     }
   }
   if (units > kMaxContactUnits) {
-    return fmt::format("contact.svg and contact.png not drawn: their {} figures would draw about {:.3g} points, more "
-                       "than the contact sheet's budget of {:.3g} (index.html shows every figure)",
-                       figures, units, kMaxContactUnits);
+    return fmt::format(
+        "contact.svg and contact.png not drawn: their {} figures would draw about {:.3g} points, more "
+        "than the contact sheet's budget of {:.3g} (index.html shows every figure)",
+        figures, units, kMaxContactUnits);
   }
   const ContactGrid grid = contact_grid(input, by_index, sampled);
   SheetPainter painter(grid);

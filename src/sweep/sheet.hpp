@@ -33,7 +33,7 @@ struct SheetInput {
   std::vector<std::size_t> axis_sizes;
   bool zip = false;
   std::int64_t variants = 0;
-  bool figures = false;               // the sweep wrote figures (svg, png or pdf)
+  bool figures = false;  // the sweep wrote figures (svg, png or pdf)
 };
 
 // The variants a contact sheet of `variants` shows, in increasing order: all

@@ -2,17 +2,17 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cerrno>
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <regex>
-#include <system_error>
 #include <set>
 #include <sstream>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -25,8 +25,8 @@
 #include "sweep/folder.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/manifest.hpp"
-#include "sweep/sheet.hpp"
 #include "sweep/run_variant.hpp"
+#include "sweep/sheet.hpp"
 #include "sweep/variant.hpp"
 
 namespace pita::sweep {
@@ -65,7 +65,8 @@ std::string failure_line(const std::vector<std::string>& pointers, const Row& ro
 std::string index_ranges(const std::vector<std::pair<std::int64_t, std::int64_t>>& ranges) {
   std::string out;
   for (const auto& [first, last] : ranges) {
-    out += fmt::format("{}{}", out.empty() ? "" : ", ", first == last ? std::to_string(first) : fmt::format("{}-{}", first, last));
+    out += fmt::format("{}{}", out.empty() ? "" : ", ",
+                       first == last ? std::to_string(first) : fmt::format("{}-{}", first, last));
   }
   return out;
 }
@@ -151,9 +152,7 @@ class SweepRun {
 
  private:
   std::int64_t position(std::int64_t index) const { return (index - shard_k_) / shard_n_; }
-  bool in_shard(std::int64_t index) const {
-    return index >= 0 && index < grid_.size() && index % shard_n_ == shard_k_;
-  }
+  bool in_shard(std::int64_t index) const { return index >= 0 && index < grid_.size() && index % shard_n_ == shard_k_; }
   // A row of an earlier run is kept when its variant is unchanged (same
   // content hash), it is ok and its outputs all exist.
   bool valid(const Row& row) const {
@@ -201,9 +200,10 @@ class SweepRun {
           // Rows in increasing order, each once, as every run writes them:
           // a manifest edited out of order is refused here, before any work.
           if (row.index <= last) {
-            throw std::runtime_error(fmt::format("{}: variant {} is out of order or repeated (a manifest lists each "
-                                                 "variant once, in increasing order)",
-                                                 reader->where(), row.index));
+            throw std::runtime_error(
+                fmt::format("{}: variant {} is out of order or repeated (a manifest lists each "
+                            "variant once, in increasing order)",
+                            reader->where(), row.index));
           }
           last = row.index;
           const auto j = static_cast<std::size_t>(position(row.index));
@@ -223,8 +223,9 @@ class SweepRun {
       std::vector<ManifestReader> sources;
       if (auto m = ManifestReader::open(manifest_path_, pointers_)) sources.push_back(std::move(*m));
       if (auto j = ManifestReader::open(journal_path_, pointers_, true)) sources.push_back(std::move(*j));
-      merge_sources(manifest_path_, pointers_, sources, [&](const Row& row, std::size_t) { return valid(row); },
-                    [](const Row&) {}, SameIndex::later_wins);
+      merge_sources(
+          manifest_path_, pointers_, sources, [&](const Row& row, std::size_t) { return valid(row); },
+          [](const Row&) {}, SameIndex::later_wins);
       have_manifest_ = true;
     }
   }
@@ -298,8 +299,7 @@ class SweepRun {
       };
       try {
         run_ordered(
-            mine_, pool, [this](std::int64_t j, const std::atomic<bool>&) { return produce(j); }, journal_row,
-            tick);
+            mine_, pool, [this](std::int64_t j, const std::atomic<bool>&) { return produce(j); }, journal_row, tick);
       } catch (const std::system_error& error) {
         throw SweepUsageError(About{Input::jobs, std::to_string(options_.jobs)},
                               fmt::format("cannot start a thread ({})", error.what()));
@@ -307,10 +307,11 @@ class SweepRun {
     }
     progress.update(static_cast<int>(std::min<std::int64_t>(done, INT32_MAX)));
     if (metrics_skipped_ > 0) {
-      summary_.notes.push_back(fmt::format("{} variant{} without metrics: measuring their motion costs more than "
-                                           "the limit of pita measure (fewer keyframes, or the local \"blend\" "
-                                           "chain)",
-                                           metrics_skipped_, metrics_skipped_ == 1 ? "" : "s"));
+      summary_.notes.push_back(
+          fmt::format("{} variant{} without metrics: measuring their motion costs more than "
+                      "the limit of pita measure (fewer keyframes, or the local \"blend\" "
+                      "chain)",
+                      metrics_skipped_, metrics_skipped_ == 1 ? "" : "s"));
     }
   }
 
@@ -332,7 +333,8 @@ class SweepRun {
       return source == journal_source || kept_[static_cast<std::size_t>(position(row.index))] != 0;
     };
     try {
-      merge_sources(manifest_path_, pointers_, sources, accept, [](const Row&) {}, SameIndex::later_wins);
+      merge_sources(
+          manifest_path_, pointers_, sources, accept, [](const Row&) {}, SameIndex::later_wins);
     } catch (const io::OutputError&) {
       if (sig != 0) io::exit_interrupted(sig);  // the journal stays: the next run folds it
       throw;

@@ -27,22 +27,22 @@ struct SweepOptions {
   std::string scene_path;
   std::vector<std::string> vary;  // POINTER=SPEC, as typed
   bool zip = false;
-  std::string output;             // DIR
+  std::string output;  // DIR
   std::vector<OutputKind> formats = {OutputKind::svg};
   int jobs = 1;
   std::optional<std::pair<int, int>> shard;  // K, N
   bool force = false;
-  bool wait = false;              // another run holds the folder's lock: wait for it (else exit 2)
-  bool progress = false;         // a bar on a terminal, else a line every 10 s (the CLI: not --quiet, not in CI)
-  std::string version;            // pita's version: part of every content hash
+  bool wait = false;      // another run holds the folder's lock: wait for it (else exit 2)
+  bool progress = false;  // a bar on a terminal, else a line every 10 s (the CLI: not --quiet, not in CI)
+  std::string version;    // pita's version: part of every content hash
 };
 
 struct SweepSummary {
-  std::int64_t variants = 0;   // in this run (this shard's)
-  std::int64_t ok = 0;         // written now
-  std::int64_t skipped = 0;    // resumed: already done
-  std::int64_t failed = 0;     // invalid or without motion
-  bool write_failed = false;   // an output could not be written (exit 3)
+  std::int64_t variants = 0;          // in this run (this shard's)
+  std::int64_t ok = 0;                // written now
+  std::int64_t skipped = 0;           // resumed: already done
+  std::int64_t failed = 0;            // invalid or without motion
+  bool write_failed = false;          // an output could not be written (exit 3)
   std::vector<std::string> failures;  // "variant 7 (/keyframes/1/m = -1): ..."
   std::vector<std::string> notes;     // what else was (not) written
 };
@@ -57,8 +57,8 @@ struct MergeSummary {
   std::int64_t variants = 0;
   std::int64_t rows = 0;
   std::int64_t failed = 0;
-  std::int64_t foreign = 0;        // rows of another sweep, ignored
-  std::int64_t missing_count = 0;  // variants in no part
+  std::int64_t foreign = 0;                                    // rows of another sweep, ignored
+  std::int64_t missing_count = 0;                              // variants in no part
   std::vector<std::pair<std::int64_t, std::int64_t>> missing;  // their first ranges [first, last]
   // When every part is of one split into N shards: N, and for each shard K
   // with variants missing, (K, how many) in order of K (at most 1000 listed).

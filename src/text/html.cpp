@@ -20,18 +20,28 @@ std::string html_escaped(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     switch (c) {
-      case '&': out += "&amp;"; continue;
-      case '<': out += "&lt;"; continue;
-      case '>': out += "&gt;"; continue;
-      case '"': out += "&quot;"; continue;
-      case '\'': out += "&apos;"; continue;
-      default: break;
+      case '&':
+        out += "&amp;";
+        continue;
+      case '<':
+        out += "&lt;";
+        continue;
+      case '>':
+        out += "&gt;";
+        continue;
+      case '"':
+        out += "&quot;";
+        continue;
+      case '\'':
+        out += "&apos;";
+        continue;
+      default:
+        break;
     }
     const auto byte = static_cast<unsigned char>(c);
     if (escaped_control(byte) && byte < 0x80) {
       out += fmt::format("&#x{:x};", byte);
-    } else if (byte == 0xc2 && i + 1 < text.size() &&
-               escaped_control(static_cast<unsigned char>(text[i + 1])) &&
+    } else if (byte == 0xc2 && i + 1 < text.size() && escaped_control(static_cast<unsigned char>(text[i + 1])) &&
                static_cast<unsigned char>(text[i + 1]) >= 0x80) {
       // U+0080-U+009F in UTF-8 are 0xC2 0x80-0x9F.
       out += fmt::format("&#x{:x};", static_cast<unsigned char>(text[i + 1]));

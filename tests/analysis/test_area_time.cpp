@@ -2,10 +2,10 @@
 // paper Sec. 6.3, Fig. 9): SAM's det L(t) = det(B) det(A)^t, monotonic;
 // rARAP's computed directly from core's RarapMorph, not monotonic for the
 // poses of scenes/sam-fig09-area.json.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "analysis/area_time.hpp"
 #include "core/rarap_morph.hpp"

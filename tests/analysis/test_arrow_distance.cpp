@@ -1,10 +1,10 @@
 // analysis/arrow_distance.hpp: the endpoint distance of two arrows and of two
 // patterns (Figs. 16, 18, B.30; docs/paper-notes.md N53, N54).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "analysis/arrow_distance.hpp"
 

@@ -2,10 +2,10 @@
 // read it. The expected sets are written out here, from the paper and from
 // tests/core/test_fig10.cpp (an independent implementation of the same
 // measurements), not from the audit's own output.
-#include <gtest/gtest.h>
-
 #include <map>
 #include <set>
+
+#include <gtest/gtest.h>
 
 #include "analysis/audit.hpp"
 
@@ -16,8 +16,8 @@ using M = Method;
 using Set = std::set<Method>;
 
 const std::map<Property, Set>& expected_holders() {
-  static const Set all{M::P1, M::P2, M::P3, M::P4, M::P5, M::P5S, M::P6, M::P7,
-                       M::P8, M::P9, M::P10, M::PaPo, M::LSCa, M::LSLP};
+  static const Set all{M::P1, M::P2, M::P3, M::P4,  M::P5,   M::P5S,  M::P6,
+                       M::P7, M::P8, M::P9, M::P10, M::PaPo, M::LSCa, M::LSLP};
   static const std::map<Property, Set> sets{
       {Property::exists, all},
       // Sec. 4.2 claims C-infinity; P4 joins Bezier halves C1 at b (N3), P7
@@ -44,8 +44,8 @@ const std::map<Property, Set>& expected_holders() {
 void expect_table(const AuditReport& report, std::uint64_t seed) {
   for (const AuditCell& cell : report.cells) {
     const bool expected = expected_holders().at(cell.property).count(cell.method) > 0;
-    EXPECT_EQ(cell.holds, expected) << "seed " << seed << ": " << info(cell.method).id << " "
-                                    << info(cell.property).id << " measured " << cell.value;
+    EXPECT_EQ(cell.holds, expected) << "seed " << seed << ": " << info(cell.method).id << " " << info(cell.property).id
+                                    << " measured " << cell.value;
   }
 }
 
@@ -88,7 +88,8 @@ TEST(Audit, ReportsTheConfigurationWhereAFailingCellFailed) {
   ASSERT_GE(cell.worst_config, 0);
   EXPECT_GT(cell.value, 1e-4);
   ASSERT_TRUE(cell.worst.counterpart.has_value());
-  EXPECT_EQ(cell.worst.original.a.arrow.p, report.configs[static_cast<std::size_t>(cell.worst_config)].keyframes.a.arrow.p);
+  EXPECT_EQ(cell.worst.original.a.arrow.p,
+            report.configs[static_cast<std::size_t>(cell.worst_config)].keyframes.a.arrow.p);
 }
 
 TEST(Audit, RefusesCountsOutOfRangeAndTwoKeyframeMethods) {

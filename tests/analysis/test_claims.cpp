@@ -1,12 +1,11 @@
 // analysis/claims.cpp: each test kind holds and fails where it must, on
 // values known in closed form (the steady morph: m(t) = 2^t, w(t) = 1.2 t),
 // and a claim the panel cannot measure is a SceneError at its pointer.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "analysis/claims.hpp"
 #include "analysis/measure.hpp"
@@ -38,8 +37,10 @@ ClaimOutcome only(const std::string& claim) {
 const double kStep = std::log(2.0) / 4.0;
 
 TEST(Claims, BelowAndAboveANumber) {
-  EXPECT_TRUE(only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep + 1e-9)).held);
-  EXPECT_FALSE(only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep - 1e-9)).held);
+  EXPECT_TRUE(
+      only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep + 1e-9)).held);
+  EXPECT_FALSE(
+      only(fmt::format(R"({{"says": "s", "panel": 0, "measure": "scale-step", "below": {}}})", kStep - 1e-9)).held);
   EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": 0.29})").held);
   EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": 0.31})").held);
 }
@@ -56,8 +57,12 @@ TEST(Claims, AgainstAnotherPanelsMeasureScaledAndShifted) {
             std::string::npos)
       << failed.measured;
   // "plus" and another measure of the same panel: ln 2 / 4 + 0.1 > 0.26 ... the SMA's scale step.
-  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.1}})").held);
-  EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.2}})").held);
+  EXPECT_TRUE(
+      only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.1}})")
+          .held);
+  EXPECT_FALSE(
+      only(R"({"says": "s", "panel": 0, "measure": "turn-step", "above": {"measure": "scale-step", "plus": 0.2}})")
+          .held);
 }
 
 TEST(Claims, NearWithinAndAbsolute) {
@@ -65,16 +70,24 @@ TEST(Claims, NearWithinAndAbsolute) {
   EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": 0.3001, "within": 1e-6})").held);
   // The signed angle from the SMA's D(1/2) to P1's: their vectors are
   // 2^(1/2) e^(0.6 i) and -2 i, an angle of -pi/2 - 0.6.
-  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "near": -2.1707963267948966, "within": 1e-9})").held);
-  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "absolute": true, "above": 2.17})").held);
+  EXPECT_TRUE(
+      only(
+          R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "near": -2.1707963267948966, "within": 1e-9})")
+          .held);
+  EXPECT_TRUE(
+      only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "absolute": true, "above": 2.17})").held);
   EXPECT_FALSE(only(R"({"says": "s", "panel": 0, "measure": "angle:/panels/1@0.5", "above": 0})").held);
 }
 
 TEST(Claims, NearAnotherPanelsMeasure) {
   // P1's turn step is pi: pi / 10 is within 0.02 of the SMA's 0.3 ... and not within 0.01.
-  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "turn-step", "near": {"panel": 0, "times": 10.471975511965978},
-                       "within": 1e-9})").held);
-  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": {"panel": 1, "times": 0.1}, "within": 0.02})").held);
+  EXPECT_TRUE(
+      only(R"({"says": "s", "panel": 1, "measure": "turn-step", "near": {"panel": 0, "times": 10.471975511965978},
+                       "within": 1e-9})")
+          .held);
+  EXPECT_TRUE(
+      only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": {"panel": 1, "times": 0.1}, "within": 0.02})")
+          .held);
   const ClaimOutcome far =
       only(R"({"says": "s", "panel": 0, "measure": "turn-step", "near": {"panel": 1, "times": 0.1}, "within": 0.01})");
   EXPECT_FALSE(far.held);

@@ -1,8 +1,6 @@
 // The comparisons of analysis/comparison.cpp against closed forms: Fig. 5's
 // angles between vector motions (Lagrange weights by hand) and Fig. 11's
 // handle shift (0 for handle-invariant methods, the Pa-LP shift by hand).
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <complex>
@@ -10,13 +8,13 @@
 #include <string>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "analysis/comparison.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::analysis {
 namespace {
-
 
 // Quadratic Lagrange weights of knots 0, 1/2, 1 at t (PITA Eq. 9).
 std::array<double, 3> lagrange(double t) {
@@ -156,8 +154,15 @@ TEST(Comparison, PaLpShiftByHand) {
     }
     return std::pair{p, std::polar(std::exp(log_m), w)};
   };
-  const std::array<std::complex<double>, 10> corners{{{0, 0}, {0, 1.35}, {0.9, 1.35}, {0.9, 1.08}, {0.27, 1.08},
-                                                      {0.27, 0.765}, {0.72, 0.765}, {0.72, 0.495}, {0.27, 0.495},
+  const std::array<std::complex<double>, 10> corners{{{0, 0},
+                                                      {0, 1.35},
+                                                      {0.9, 1.35},
+                                                      {0.9, 1.08},
+                                                      {0.27, 1.08},
+                                                      {0.27, 0.765},
+                                                      {0.72, 0.765},
+                                                      {0.72, 0.495},
+                                                      {0.27, 0.495},
                                                       {0.27, 0}}};
   const std::complex<double> e0 = std::polar(kRed[0].m, kRed[0].w), e1 = kEq - kEp;
   double by_hand = 0.0;
@@ -181,24 +186,25 @@ TEST(Comparison, PanelAngleOfTwoPanels) {
   const std::string panel = R"({{"method": "P1", "keyframes": [
       {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [{}, 0.2]}},
       {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}]}})";
-  const scene::Scene scene = scene::parse_scene(
-      fmt::format(R"({{"method": "P1", "keyframes": [
+  const scene::Scene scene =
+      scene::parse_scene(fmt::format(R"({{"method": "P1", "keyframes": [
       {{"t": 0, "p": [0, 0], "q": [0, 2.4]}}, {{"t": 0.5, "p": [3, 1], "q": [3.15, 0.2]}},
       {{"t": 1, "p": [6, 0], "q": [6, 2.4]}}], "panels": [{}, {}]}})",
-                  fmt::format(fmt::runtime(panel), 3.15), fmt::format(fmt::runtime(panel), 2.85)),
-      "test.json");
+                                     fmt::format(fmt::runtime(panel), 3.15), fmt::format(fmt::runtime(panel), 2.85)),
+                         "test.json");
   const motion::Stage stage(scene);
   EXPECT_NEAR(std::abs(panel_angle(stage, 1, 0, 0.25)), std::numbers::pi, 1e-9);
   EXPECT_NEAR(panel_angle(stage, 1, 0, 0.0), 0.0, 1e-12);  // the keyframes agree at A
   // At t = 1/2 the vectors are B's: (0.15, -0.8) and (-0.15, -0.8).
-  EXPECT_NEAR(panel_angle(stage, 0, 1, 0.5), std::arg(std::complex<double>(-0.15, -0.8) / std::complex<double>(0.15, -0.8)),
-              1e-12);
+  EXPECT_NEAR(panel_angle(stage, 0, 1, 0.5),
+              std::arg(std::complex<double>(-0.15, -0.8) / std::complex<double>(0.15, -0.8)), 1e-12);
 }
 
 TEST(Comparison, FrameDistanceOfTranslatedKeyframesIsTheTranslation) {
   // Every PITA commutes with translations (similarity invariance, Sec. 4.3):
   // keyframes moved by (0.5, 0) move every frame by (0.5, 0).
-  const std::string keys = R"([{{"t": 0, "p": [{0}, 0], "m": 1, "w": 0.2}}, {{"t": 1, "p": [{1}, 2], "m": 0.6, "w": 1.9}},
+  const std::string keys =
+      R"([{{"t": 0, "p": [{0}, 0], "m": 1, "w": 0.2}}, {{"t": 1, "p": [{1}, 2], "m": 0.6, "w": 1.9}},
       {{"t": 2, "p": [{2}, 0], "m": 1.3, "w": 3.1}}])";
   const scene::Scene scene = scene::parse_scene(
       fmt::format(R"({{"method": "P6", "keyframes": {}, "panels": [{{"method": "P6", "keyframes": {}}}, "P6"]}})",

@@ -2,21 +2,21 @@
 // tables of properties written here by hand: every method reaches one leaf,
 // the answers on its path are its own, a question that splits nothing is
 // not asked, and the paper's printed table gives the tree worked out below.
-#include "analysis/decision_tree.hpp"
-
-#include <gtest/gtest.h>
-
 #include <map>
 #include <set>
 #include <string>
+
+#include <gtest/gtest.h>
+
+#include "analysis/decision_tree.hpp"
 
 namespace pita::analysis {
 namespace {
 
 constexpr Method kEight[] = {Method::P1, Method::P2, Method::P3, Method::P4,
                              Method::P5, Method::P6, Method::P7, Method::P8};
-constexpr Property kLettered[] = {Property::winding_aware,  Property::handle_invariant, Property::pop_free,
-                                  Property::knot_controlled, Property::order_independent, Property::affine_invariant,
+constexpr Property kLettered[] = {Property::winding_aware,      Property::handle_invariant,  Property::pop_free,
+                                  Property::knot_controlled,    Property::order_independent, Property::affine_invariant,
                                   Property::locally_perseverant};
 
 // A report whose cells say that each method has exactly the properties of
@@ -30,7 +30,8 @@ AuditReport report_of(const std::map<Method, std::string>& letters) {
       const char letter = p.property == Property::locally_perseverant ? 'L'
                           : p.property == Property::globally_perseverant || p.property == Property::radially_perseverant
                               ? '?'
-                          : p.letter.empty() ? '*' : p.letter.front();
+                          : p.letter.empty() ? '*'
+                                             : p.letter.front();
       AuditCell cell;
       cell.method = method;
       cell.property = p.property;
@@ -42,9 +43,9 @@ AuditReport report_of(const std::map<Method, std::string>& letters) {
 }
 
 // Fig. 10 as printed, read per PITA (the reading notes' column).
-const std::map<Method, std::string> kPrinted = {
-    {Method::P1, "HPKOAL"}, {Method::P2, "W"}, {Method::P3, "WPKO"}, {Method::P4, "HP"},
-    {Method::P5, "KO"},     {Method::P6, "HWPK"}, {Method::P7, "H"}, {Method::P8, "HAL"}};
+const std::map<Method, std::string> kPrinted = {{Method::P1, "HPKOAL"}, {Method::P2, "W"},  {Method::P3, "WPKO"},
+                                                {Method::P4, "HP"},     {Method::P5, "KO"}, {Method::P6, "HWPK"},
+                                                {Method::P7, "H"},      {Method::P8, "HAL"}};
 
 // Walks the tree: every method reaches exactly one leaf, along answers that are its own.
 void expect_consistent(const DecisionTree& tree, const AuditReport& report, std::span<const Method> methods) {

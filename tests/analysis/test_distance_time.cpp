@@ -1,10 +1,10 @@
 // The distance-time function (src/analysis/distance_time.cpp): the diagonal
 // for constant speed, the ease itself under arc length, the knots' share of
 // the path otherwise.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "analysis/distance_time.hpp"
 #include "motion/sampler.hpp"
@@ -17,7 +17,9 @@ namespace {
 scene::Scene p6(const std::string& timing) {
   return scene::parse_scene(R"({"method": "P6", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2},
-      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])" + timing + "}", "s.json");
+      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])" +
+                                timing + "}",
+                            "s.json");
 }
 
 TEST(DistanceTime, ArcLengthWithLinearEaseIsTheDiagonal) {

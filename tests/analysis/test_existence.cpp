@@ -1,16 +1,15 @@
 // Where a SAM exists (src/analysis/existence.cpp): EAR's classification of
 // R(a) diag(1/s, s) against the closed-form boundary of the SAM paper's SAM Eq. 4.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "analysis/existence.hpp"
 #include "core/complex_math.hpp"
 
 namespace pita::analysis {
 namespace {
-
 
 TEST(Existence, ClassificationAgreesWithEq4AwayFromTheBoundary) {
   int checked = 0;
@@ -32,7 +31,7 @@ TEST(Existence, TheTrapezoidLiesInsideTheRegion) {
     const double s = j / 100.0;
     EXPECT_LE(std::min(existence_trapezoid(s), kPi), existence_boundary(s) + 1e-12) << s;
   }
-  EXPECT_NEAR(existence_boundary(1.0), kPi, 1e-7);      // rotations: every angle but pi
+  EXPECT_NEAR(existence_boundary(1.0), kPi, 1e-7);       // rotations: every angle but pi
   EXPECT_NEAR(existence_boundary(1e-9), kPi / 2, 1e-8);  // extreme stretches: up to a quarter turn
 }
 

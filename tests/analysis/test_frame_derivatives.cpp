@@ -3,12 +3,12 @@
 // against closed forms (the steady morph, P1's parabolas), the perseverance
 // of P7 and P8 (PITA Sec. 3.3, PITA Eq. 35 and 39), and an independent
 // difference of the motion at the centers.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "analysis/frame_derivatives.hpp"
 #include "motion/scene_motion.hpp"

@@ -1,11 +1,11 @@
 // analysis/frame_steps.cpp against closed forms: the steady morph of two
 // arrows (m(t) = m_0 (m_1/m_0)^t, w(t) linear: equal steps) and P1 through
 // a flipped middle keyframe (Lagrange weights by hand).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "analysis/frame_steps.hpp"
 #include "scene/scene.hpp"

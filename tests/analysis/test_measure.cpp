@@ -2,21 +2,19 @@
 // independent value: closed forms of circle arcs and Lagrange weights, the
 // zeros the papers imply (self-prediction, ARA of a SAM), the pops of Fig. 12
 // (tests/core/test_fig10.cpp's configurations) and similarity invariance.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include "analysis/measure.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::analysis {
 namespace {
-
 
 // The measures of a panel of keyframes, of poses of the plane.
 const ArrowMeasures& arrows(const MotionMeasures& m) { return std::get<ArrowMeasures>(m.measured); }
@@ -53,7 +51,7 @@ TEST(Measure, SteadyRotationTracesCircleArcs) {
   ASSERT_FALSE(m.no_motion) << *m.no_motion;
   ASSERT_FALSE(m.no_motion);
   ASSERT_TRUE(std::holds_alternative<ArrowMeasures>(m.measured));
-  EXPECT_NEAR(arrows(m).path_p.length, 2.0 * theta, 1e-5);                 // chords: O(h^2)
+  EXPECT_NEAR(arrows(m).path_p.length, 2.0 * theta, 1e-5);  // chords: O(h^2)
   EXPECT_NEAR(arrows(m).path_q.length, std::sqrt(5.0) * theta, 1e-5);
   EXPECT_NEAR(arrows(m).path_p.turning, theta, 1e-9);
   EXPECT_NEAR(arrows(m).path_q.turning, theta, 1e-9);
@@ -86,7 +84,8 @@ TEST(Measure, MethodPredictsItselfWhereItIsQuadratic) {
   for (const char* method : {"P1", "P3"}) {
     const MotionMeasures m = measure_text(fmt::format(R"({{"method": "{}", "samples": 17, "keyframes": [
         {{"t": 0, "p": [0, 0], "m": 1, "w": 0.4}}, {{"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0}},
-        {{"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}}]}})", method));
+        {{"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}}]}})",
+                                                      method));
     ASSERT_FALSE(m.no_motion);
     EXPECT_EQ(arrows(m).discrepancy[2].predictor, "pita");
     EXPECT_EQ(arrows(m).discrepancy[2].frames, 17 - 3);
@@ -184,7 +183,8 @@ TEST(Measure, PoseMotionsAraAndArea) {
   const double theta = 3.0, c = std::cos(theta), s = std::sin(theta);
   const auto scene_text = [&](const char* method) {
     return fmt::format(R"({{"method": "{}", "poses": [{{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}},
-        {{"t": 1, "matrix": [[{}, {}, 2], [{}, {}, 1]]}}]}})", method, c, -s, s, c);
+        {{"t": 1, "matrix": [[{}, {}, 2], [{}, {}, 1]]}}]}})",
+                       method, c, -s, s, c);
   };
   const MotionMeasures sam = measure_text(scene_text("SAM"));
   ASSERT_FALSE(sam.no_motion) << *sam.no_motion;

@@ -1,12 +1,11 @@
 // The reports of `pita measure` (src/analysis/measure_report.cpp): the JSON
 // reads back with every panel and its numbers, a panel without a motion says
 // so, and the CSV has a row per panel and a gain column per parameter.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <sstream>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "analysis/measure.hpp"

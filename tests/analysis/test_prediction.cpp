@@ -1,10 +1,10 @@
 // Frame predictions and their discrepancy (src/analysis/prediction.cpp, the
 // PITA paper's Sec. 6.1-6.2): each predictor's neighbours, and the zeros the
 // paper implies on steady motions.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "analysis/prediction.hpp"
 #include "core/discrepancy.hpp"

@@ -1,9 +1,9 @@
 // The measurements behind pita audit, on configurations whose answer is
 // known from the paper or by hand.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "analysis/audit_configs.hpp"
 #include "analysis/properties.hpp"
@@ -11,10 +11,7 @@
 namespace pita::analysis {
 namespace {
 
-
-KeyframeTriple tame() {
-  return {{0.0, {{0, 0}, 1.0, 0.4}}, {0.5, {{3, 1.5}, 0.6, 2.0}}, {1.0, {{6, 0}, 1.2, 3.5}}};
-}
+KeyframeTriple tame() { return {{0.0, {{0, 0}, 1.0, 0.4}}, {0.5, {{3, 1.5}, 0.6, 2.0}}, {1.0, {{6, 0}, 1.2, 3.5}}}; }
 
 TEST(Properties, TableIsComplete) {
   EXPECT_EQ(all_properties().size(), 13u);

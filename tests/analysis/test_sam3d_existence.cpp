@@ -2,21 +2,19 @@
 // Sec. 5.2): the existence test against EAR in 3D and against Eigen's general
 // eigensolver, the icosahedron's axes, and the bound the search finds against
 // a closed form and a brute-force recount with the independent test.
-#include "analysis/sam3d_existence.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <optional>
+#include <random>
 #include <utility>
 #include <vector>
-#include <random>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
+#include "analysis/sam3d_existence.hpp"
 #include "core/affine_power_of_space.hpp"
 
 namespace pita::analysis {
@@ -24,7 +22,6 @@ namespace {
 
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
-
 
 // Independent of the code under test: Eigen's general (Hessenberg-QR)
 // eigenvalues, and Culver for 3x3 away from the measure-zero cases: a real
@@ -172,7 +169,8 @@ TEST(Sam3dExistence, SearchFindsWhatTestingEachMatrixFinds) {
   options.angles = 1;
   options.jobs = 1;
   int failures = 0, passes = 0;
-  for (const double theta : {0.0, kPi / 3.0, 0.6 * kPi, 2.0 * kPi / 3.0, 0.75 * kPi, 5.0 * kPi / 6.0, 11.0 * kPi / 12.0, kPi}) {
+  for (const double theta :
+       {0.0, kPi / 3.0, 0.6 * kPi, 2.0 * kPi / 3.0, 0.75 * kPi, 5.0 * kPi / 6.0, 11.0 * kPi / 12.0, kPi}) {
     for (const double p : {0.0, 0.05, 0.12, 0.17, 0.25, 0.29, 0.34, 0.5}) {
       std::optional<std::pair<int, int>> expected;  // axis, pattern
       const std::vector<Vector3d> axes = icosphere_axes(0);

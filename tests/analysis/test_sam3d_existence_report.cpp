@@ -1,11 +1,11 @@
 // The table of `pita audit sam3d-existence` (src/analysis/sam3d_existence_report.cpp),
 // on the smallest experiment: the icosahedron's 6 axes, one angle. The
 // command's options and output end to end: tests/cli/test_sam3d_existence.cpp.
-#include <gtest/gtest.h>
-
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "analysis/sam3d_existence_report.hpp"
 

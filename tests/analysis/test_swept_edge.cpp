@@ -3,17 +3,17 @@
 // of the intersections of neighbouring copies, computed here from the poses
 // alone), every copy lies on one side of it, it ends where the grazing point
 // leaves the edge, and the grazing parameter is constant under a SAM only.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "../core/pose_test_support.hpp"
 #include "analysis/swept_edge.hpp"
 #include "core/affine_power.hpp"
 #include "core/pose_motion.hpp"
-#include "../core/pose_test_support.hpp"
 
 namespace pita::analysis {
 namespace {

@@ -1,11 +1,11 @@
 // The check of a SAM's integral curves against its field
 // (src/analysis/velocity_field.cpp; SAM Fig. 8): the SAM's trajectories
 // follow its field to the accuracy of the finite differences.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "analysis/velocity_field.hpp"
 

@@ -1,8 +1,8 @@
 // Animation frames as figures (src/animate/frame.cpp).
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <filesystem>
+
+#include <gtest/gtest.h>
 
 #include "animate/frame.hpp"
 #include "core/carrier.hpp"
@@ -10,8 +10,8 @@
 #include "motion/scene_motion.hpp"
 #include "render/drawing.hpp"
 #include "scene/scene.hpp"
-#include "support/source_paths.hpp"
 #include "support/keys.hpp"
+#include "support/source_paths.hpp"
 
 namespace pita::animate {
 namespace {
@@ -27,7 +27,8 @@ constexpr const char* kSquare = R"({"method": "P6", "keyframes": [{"t": 0, "p": 
 std::size_t moving_items(const render::Figure& figure) {
   std::size_t n = 0;
   for (const render::Drawing& d : figure.drawings) {
-    n += static_cast<std::size_t>(std::count_if(d.items.begin(), d.items.end(), [](const render::Item& i) { return i.moving; }));
+    n += static_cast<std::size_t>(
+        std::count_if(d.items.begin(), d.items.end(), [](const render::Item& i) { return i.moving; }));
   }
   return n;
 }

@@ -1,11 +1,11 @@
 // Frames rendered in parallel and consumed in order (src/animate/frame_runner.cpp).
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "animate/frame_runner.hpp"
 

@@ -1,11 +1,10 @@
 // What `pita animate` writes, by OUT (src/animate/output.cpp). The command's
 // behaviour end to end (files, ffmpeg, interrupts) is in tests/cli/test_animate.cpp.
-#include <gtest/gtest.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "animate/output.hpp"
@@ -115,7 +114,7 @@ TEST(Output, TheFramesDrawingIsLimited) {
   for (const AnimationOutput kind : {AnimationOutput::directory, AnimationOutput::svg, AnimationOutput::mp4}) {
     Request request;
     request.kind = kind;
-    request.scale = 0.1;  // the pixel budget is not what limits here
+    request.scale = 0.1;                                        // the pixel budget is not what limits here
     request.budget = kind == AnimationOutput::svg ? 3.0 : 1.0;  // nor the vector frames' (5000 x 3)
     const int fit = static_cast<int>(kMaxAnimationUnits * request.budget / one);
     ASSERT_LT(fit, 5000 * request.budget);

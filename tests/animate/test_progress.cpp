@@ -1,11 +1,6 @@
 // The progress of long work (src/animate/progress.cpp): off a terminal, plain
 // lines when asked for (a sweep), nothing otherwise, nothing in CI or when
 // silenced. stderr is redirected to a file for the test.
-#include <gtest/gtest.h>
-
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +8,10 @@
 #include <sstream>
 #include <string>
 #include <thread>
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "animate/progress.hpp"
 
@@ -25,9 +24,10 @@ std::string stderr_of(Work work, const char* ci) {
   // A file of this process's own: ctest runs the tests of this file in
   // parallel processes, and a shared name let one truncate another's output.
   static int calls = 0;
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("pita-test-progress-" + std::to_string(::getpid()) + "-" + std::to_string(++calls) + ".txt"))
-                               .string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() /
+       ("pita-test-progress-" + std::to_string(::getpid()) + "-" + std::to_string(++calls) + ".txt"))
+          .string();
   std::fflush(stderr);
   const int saved = ::dup(STDERR_FILENO);
   const int file = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -1,9 +1,9 @@
 // The animated SVG (src/animate/svg_animation.cpp). Its playback in a real
 // browser is tested by tests/cli/test_animate.cpp (headless Chromium).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "animate/svg_animation.hpp"
 #include "scene/scene.hpp"

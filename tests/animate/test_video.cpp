@@ -1,14 +1,13 @@
 // Which ffmpeg writes videos (src/animate/video.cpp): find_ffmpeg looks only at
 // the files it is given; the front ends read PITA_FFMPEG and PATH. Videos end
 // to end (ffmpeg, its errors, interrupts) are in tests/cli/test_animate.cpp.
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "animate/video.hpp"
 

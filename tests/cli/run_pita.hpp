@@ -3,14 +3,6 @@
 // while it runs, and waits for it (finish_pita).
 #pragma once
 
-#include <gtest/gtest.h>
-
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +13,13 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace pita::test {
 
@@ -41,7 +40,7 @@ inline const char* pita_binary() {
 }
 
 struct RunResult {
-  int exit_code = -1;  // 128 + signal number when killed by a signal
+  int exit_code = -1;     // 128 + signal number when killed by a signal
   bool signaled = false;  // killed by a signal (not an exit with a status)
   std::string out;
   std::string err;
@@ -119,8 +118,8 @@ struct Started {
 // without waiting for it.
 inline Started start_pita(const std::vector<std::string>& args, const std::filesystem::path& directory,
                           const std::vector<std::string>& environment = {},
-                          const std::vector<int>& ignored_signals = {},
-                          std::size_t address_space = 0, const std::filesystem::path& input = {}) {
+                          const std::vector<int>& ignored_signals = {}, std::size_t address_space = 0,
+                          const std::filesystem::path& input = {}) {
   // The captured streams go to a directory of their own, so that they never
   // collide with the files of the test.
   Started started;

@@ -5,12 +5,6 @@
 // frames show it), videos read back by ffprobe, bad input refused before
 // anything is written, interrupted runs leaving nothing, and the progress bar
 // only on a terminal.
-#include <gtest/gtest.h>
-
-#include <signal.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,7 +17,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "golden/check.hpp"
 #include "golden/image_compare.hpp"
@@ -37,8 +35,8 @@ using Json = nlohmann::ordered_json;
 using namespace std::chrono_literals;
 
 const fs::path kScenes = fs::path(PITA_SOURCE_DIR) / "scenes";
-const fs::path kFig23 = kScenes / "fig23-image-motion.json";         // looping, an image, 120 frames
-const fs::path kFig27 = kScenes / "fig27-animated-pattern.json";     // "what": "pattern", not looping
+const fs::path kFig23 = kScenes / "fig23-image-motion.json";          // looping, an image, 120 frames
+const fs::path kFig27 = kScenes / "fig27-animated-pattern.json";      // "what": "pattern", not looping
 const fs::path kPoses = kScenes / "sam-fig01-regular-patterns.json";  // a pose scene (SAM), looping
 
 // ------------------------------------------------------------ helpers
@@ -59,7 +57,8 @@ SceneClock clock_of(const fs::path& scene_path) {
   SceneClock clock;
   const Json animation = scene.value("animation", Json::object());
   clock.loop = animation.value("loop", true);
-  const Json canvas = scene.value("canvas", Json::object());  // the defaults: docs/reference/scene-format.md "Scene format"
+  const Json canvas =
+      scene.value("canvas", Json::object());  // the defaults: docs/reference/scene-format.md "Scene format"
   clock.width = canvas.value("width", 800);
   clock.height = canvas.value("height", 600);
   if (animation.value("what", std::string("motion")) == "pattern") return clock;  // tau over [0, 1]
@@ -239,8 +238,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, AnimateFrames,
 // SVG frames: frame-0001.svg ..., each a whole SVG document.
 TEST(AnimateFrameFormats, SvgFrames) {
   const ScratchDir dir;
-  const RunResult r = run_pita({"animate", kFig23.string(), "-o", "frames/", "--frames", "3", "--format", "svg"},
-                               dir.path());
+  const RunResult r =
+      run_pita({"animate", kFig23.string(), "-o", "frames/", "--frames", "3", "--format", "svg"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(names_in(dir.path() / "frames"),
             (std::set<std::string>{"frame-0001.svg", "frame-0002.svg", "frame-0003.svg", "frames.json"}));
@@ -294,18 +293,25 @@ TEST_P(AnimateFrameEqualsRenderAt, ByteForByte) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, AnimateFrameEqualsRenderAt,
-    ::testing::Values(AtCase{"fig23_image_motion", kFig23, 0, {0, 1, 3, 60, 119}, {"--scale", "0.5"}},
-                      AtCase{"fig27_pattern", kFig27, 7, {0, 3, 6}, {"--scale", "0.5"}},
-                      AtCase{"fig27_pattern_own_timeline", kFig27, 0, {0, 45, 89}, {"--scale", "0.25"}},
-                      AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}},
-                      AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}},
-                      AtCase{"space_polysam", kScenes / "sam-3d-fig13-polysam.json", 0, {0, 4, 8},
-                             {"--frames", "9", "--scale", "0.5"}},
-                      // two panels whose strokes do not move: PNG frames over a backdrop (render/backdrop.hpp)
-                      AtCase{"two_panels_over_a_backdrop", kScenes / "tracks-fig01-eight-keyframes.json", 0, {0, 4, 8},
-                             {"--frames", "9", "--scale", "0.5"}},
-                      AtCase{"two_panels_at_a_fractional_scale", kScenes / "tracks-fig01-eight-keyframes.json", 0,
-                             {0, 5}, {"--frames", "6", "--scale", "0.37"}}),
+    ::testing::Values(
+        AtCase{"fig23_image_motion", kFig23, 0, {0, 1, 3, 60, 119}, {"--scale", "0.5"}},
+        AtCase{"fig27_pattern", kFig27, 7, {0, 3, 6}, {"--scale", "0.5"}},
+        AtCase{"fig27_pattern_own_timeline", kFig27, 0, {0, 45, 89}, {"--scale", "0.25"}},
+        AtCase{"sam_poses", kPoses, 0, {0, 2, 45, 89}, {"--scale", "0.5"}},
+        AtCase{"fig23_trail_on_nine_frames", kFig23, 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}},
+        AtCase{
+            "space_polysam", kScenes / "sam-3d-fig13-polysam.json", 0, {0, 4, 8}, {"--frames", "9", "--scale", "0.5"}},
+        // two panels whose strokes do not move: PNG frames over a backdrop (render/backdrop.hpp)
+        AtCase{"two_panels_over_a_backdrop",
+               kScenes / "tracks-fig01-eight-keyframes.json",
+               0,
+               {0, 4, 8},
+               {"--frames", "9", "--scale", "0.5"}},
+        AtCase{"two_panels_at_a_fractional_scale",
+               kScenes / "tracks-fig01-eight-keyframes.json",
+               0,
+               {0, 5},
+               {"--frames", "6", "--scale", "0.37"}}),
     [](const ::testing::TestParamInfo<AtCase>& param) { return param.param.name; });
 
 // ------------------------------------------------------------ 3. animated SVG
@@ -341,8 +347,8 @@ TEST(AnimateSvg, Fig23IsValidXmlWithOneGroupPerFrameUnderTwoMegabytes) {
 TEST(AnimateSvg, FramesFlagAndANonLoopingScene) {
   if (!have_program("xmllint")) GTEST_SKIP() << "xmllint is not installed (Debian libxml2-utils)";
   const ScratchDir dir;
-  const RunResult r = run_pita({"animate", kFig27.string(), "-o", "fig27.svg", "--frames", "7", "--fps", "7"},
-                               dir.path());
+  const RunResult r =
+      run_pita({"animate", kFig27.string(), "-o", "fig27.svg", "--frames", "7", "--fps", "7"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string svg = read_file(dir.path() / "fig27.svg");
   const CommandResult lint = run_command("xmllint --noout " + quoted((dir.path() / "fig27.svg").string()) + " 2>&1");
@@ -391,11 +397,11 @@ CommandResult chromium_screenshot(const std::string& svg_text, double seconds, i
          "svg{display:block}</style></head><body>"
       << svg << "<script>const s=document.querySelector(\"svg\"); s.pauseAnimations(); s.setCurrentTime("
       << fmt::format("{:.17g}", seconds) << ");</script></body></html>\n";
-  const std::string command =
-      fmt::format("timeout 120 {} --headless --no-sandbox --disable-gpu --hide-scrollbars --force-device-scale-factor=1 "
-                  "--user-data-dir={} --window-size={},{} --screenshot={} {} 2>&1",
-                  quoted(chromium_path()), quoted((dir / (name + "-profile")).string()), width, height,
-                  quoted(shot.string()), quoted("file://" + page.string()));
+  const std::string command = fmt::format(
+      "timeout 120 {} --headless --no-sandbox --disable-gpu --hide-scrollbars --force-device-scale-factor=1 "
+      "--user-data-dir={} --window-size={},{} --screenshot={} {} 2>&1",
+      quoted(chromium_path()), quoted((dir / (name + "-profile")).string()), width, height, quoted(shot.string()),
+      quoted("file://" + page.string()));
   CommandResult r = run_command(command);
   r.out = command + "\n" + r.out;
   return r;
@@ -433,24 +439,25 @@ TEST(AnimateChromium, TheAnimatedSvgShowsFrameKDuringItsTime) {
     const double seconds = (k + 0.5) / kFps;
     EXPECT_EQ(runs[i].exit_code, 0) << runs[i].out;
     const std::string shot = read_file(dir.path() / fmt::format("chromium-{}.png", k));
-    const std::string frame = render_at(kFig23, frame_time(clock, k, kFrames), fmt::format("frame-{}.png", k),
-                                        dir.path());
+    const std::string frame =
+        render_at(kFig23, frame_time(clock, k, kFrames), fmt::format("frame-{}.png", k), dir.path());
     ASSERT_FALSE(shot.empty());
     const golden::ImageComparison same = golden::compare_png(frame, shot, browser);
     EXPECT_TRUE(same.same_size) << same.actual_width << " x " << same.actual_height;
-    const golden::ImageComparison strict = golden::compare_png(
-        frame, shot, {golden::kDefaultChannelTolerance, golden::kDefaultDifferingShare});
-    std::printf("[ chromium ] frame %d: %.2f%% of the pixels differ by more than %d, %.2f%% by more than %d "
-                "(largest channel difference %d)\n",
-                k, 100.0 * strict.share, golden::kDefaultChannelTolerance, 100.0 * same.share,
-                kBrowserChannelTolerance, same.max_channel_difference);
+    const golden::ImageComparison strict =
+        golden::compare_png(frame, shot, {golden::kDefaultChannelTolerance, golden::kDefaultDifferingShare});
+    std::printf(
+        "[ chromium ] frame %d: %.2f%% of the pixels differ by more than %d, %.2f%% by more than %d "
+        "(largest channel difference %d)\n",
+        k, 100.0 * strict.share, golden::kDefaultChannelTolerance, 100.0 * same.share, kBrowserChannelTolerance,
+        same.max_channel_difference);
     EXPECT_TRUE(same.matches) << "Chromium's frame at " << seconds << " s differs from render --at in "
                               << 100.0 * same.share << "% of the pixels";
     // Not some other frame: the neighbours (1/30 s away) do not match, and are
     // further away than the frame itself.
     for (const int other : {k - 1, k + 1}) {
-      const std::string neighbour = render_at(kFig23, frame_time(clock, other, kFrames),
-                                              fmt::format("frame-{}.png", other), dir.path());
+      const std::string neighbour =
+          render_at(kFig23, frame_time(clock, other, kFrames), fmt::format("frame-{}.png", other), dir.path());
       const golden::ImageComparison near = golden::compare_png(neighbour, shot, browser);
       EXPECT_FALSE(near.matches) << "frame " << other << " matches the screenshot of frame " << k << " ("
                                  << 100.0 * near.share << "% differ)";
@@ -508,9 +515,9 @@ TEST(AnimateVideoVerified, ABrokenVideoIsNeverCommitted) {
   const ScratchDir dir;
   struct Fake {
     const char* name;
-    std::string body;      // the script after reading its input
-    bool with_ffprobe;     // /usr/bin/ffprobe linked beside it
-    std::string message;   // part of pita's stderr
+    std::string body;     // the script after reading its input
+    bool with_ffprobe;    // /usr/bin/ffprobe linked beside it
+    std::string message;  // part of pita's stderr
   };
   const std::vector<Fake> fakes = {
       {"trailer", "printf 'partial' > \"$out\"; echo \"Error writing trailer of $out: No space left on device\" >&2",
@@ -555,8 +562,8 @@ TEST(AnimateVideoWithoutFfmpeg, ExitTwoNamingThePackage) {
   const ScratchDir dir;
   fs::create_directories(dir.path() / "out");
   for (const char* out : {"out/clip.mp4", "out/clip.webm"}) {
-    Started started = start_pita({"animate", kFig23.string(), "-o", out, "--frames", "3"}, dir.path(),
-                                 {"PITA_FFMPEG=/nonexistent"});
+    Started started =
+        start_pita({"animate", kFig23.string(), "-o", out, "--frames", "3"}, dir.path(), {"PITA_FFMPEG=/nonexistent"});
     const RunResult r = finish_pita(started);
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("ffmpeg"), std::string::npos) << r.err;
@@ -595,19 +602,20 @@ TEST_P(AnimateBadInput, ExitTwoNamingTheFlagAndNothingWritten) {
 
 INSTANTIATE_TEST_SUITE_P(
     Flags, AnimateBadInput,
-    ::testing::Values(BadCase{"fps_zero", {"--fps", "0"}, "frames", "--fps"},
-                      BadCase{"fps_241", {"--fps", "241"}, "frames", "--fps"},
-                      BadCase{"fps_zero_svg", {"--fps", "0"}, "a.svg", "--fps"},
-                      BadCase{"duration_zero", {"--duration", "0"}, "frames", "--duration"},
-                      BadCase{"frames_one", {"--frames", "1"}, "frames", "--frames"},
-                      BadCase{"frames_100001", {"--frames", "100001"}, "a.mp4", "--frames"},
-                      BadCase{"gif_output", {}, "a.gif", "-o out/a.gif"},
-                      BadCase{"pdf_frames", {"--format", "pdf"}, "frames", "--format"},
-                      BadCase{"png_format_for_svg_output", {"--format", "png"}, "a.svg", "--format"},
-                      BadCase{"scale_zero", {"--scale", "0"}, "frames", "--scale"},
-                      // total work: 5001 frames of vector output, 20 834 frames of 800 x 600 pixels
-                      BadCase{"svg_frames_beyond_the_limit", {"--frames", "5001"}, "a.svg", "--frames: 5001 frames of vector output"},
-                      BadCase{"pixels_beyond_the_budget", {"--frames", "20834"}, "frames", "--frames: 20834 frames of 800 x 600 pixels"}),
+    ::testing::Values(
+        BadCase{"fps_zero", {"--fps", "0"}, "frames", "--fps"}, BadCase{"fps_241", {"--fps", "241"}, "frames", "--fps"},
+        BadCase{"fps_zero_svg", {"--fps", "0"}, "a.svg", "--fps"},
+        BadCase{"duration_zero", {"--duration", "0"}, "frames", "--duration"},
+        BadCase{"frames_one", {"--frames", "1"}, "frames", "--frames"},
+        BadCase{"frames_100001", {"--frames", "100001"}, "a.mp4", "--frames"},
+        BadCase{"gif_output", {}, "a.gif", "-o out/a.gif"},
+        BadCase{"pdf_frames", {"--format", "pdf"}, "frames", "--format"},
+        BadCase{"png_format_for_svg_output", {"--format", "png"}, "a.svg", "--format"},
+        BadCase{"scale_zero", {"--scale", "0"}, "frames", "--scale"},
+        // total work: 5001 frames of vector output, 20 834 frames of 800 x 600 pixels
+        BadCase{"svg_frames_beyond_the_limit", {"--frames", "5001"}, "a.svg", "--frames: 5001 frames of vector output"},
+        BadCase{
+            "pixels_beyond_the_budget", {"--frames", "20834"}, "frames", "--frames: 20834 frames of 800 x 600 pixels"}),
     [](const ::testing::TestParamInfo<BadCase>& param) { return param.param.name; });
 
 // Issue 37: frames x the figure's drawing is refused before anything is drawn
@@ -622,8 +630,8 @@ TEST(AnimateBudget, TheFramesDrawingIsRefusedUpFront) {
                  {"type": "pattern"}]})");
   fs::create_directories(dir.path() / "out");
   for (const char* out : {"out/frames", "out/a.svg", "out/a.mp4"}) {
-    const RunResult r = run_pita({"animate", "heavy.json", "-o", out, "--frames", "100000", "--scale", "0.1"},
-                                 dir.path());
+    const RunResult r =
+        run_pita({"animate", "heavy.json", "-o", out, "--frames", "100000", "--scale", "0.1"}, dir.path());
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("--frames: 100000 frames"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("drawing budget"), std::string::npos) << r.err;
@@ -811,12 +819,11 @@ TEST_P(AnimateInterrupt, LeavesNothingAndExits128PlusSignal) {
   // The SVG is built in memory, 4 times faster than PNG frames: more of them.
   // (12 000 vector frames exceed the default limit of 5000: --budget 3 allows them.)
   const std::string frames = c.out.ends_with(".svg") ? "12000" : "3000";
-  Started started = start_pita({"animate", kFig23.string(), "-o", "out/" + c.out, "--frames", frames, "--budget", "3"},
-                               dir.path());
+  Started started =
+      start_pita({"animate", kFig23.string(), "-o", "out/" + c.out, "--frames", frames, "--budget", "3"}, dir.path());
   std::string temporary;
   if (!c.out.ends_with(".svg")) {
-    ASSERT_TRUE(wait_until([&] { return !hidden_in(dir.path() / "out").empty(); }, 60s))
-        << "no temporary appeared";
+    ASSERT_TRUE(wait_until([&] { return !hidden_in(dir.path() / "out").empty(); }, 60s)) << "no temporary appeared";
     temporary = hidden_in(dir.path() / "out").front();
     EXPECT_EQ(temporary.rfind("." + c.out + ".", 0), 0u) << temporary;
   }
@@ -837,14 +844,13 @@ TEST_P(AnimateInterrupt, LeavesNothingAndExits128PlusSignal) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Jobs, AnimateInterrupt,
-    ::testing::Values(InterruptCase{"directory_SIGTERM", "frames", SIGTERM},
-                      InterruptCase{"directory_SIGINT", "frames", SIGINT},
-                      InterruptCase{"mp4_SIGTERM", "clip.mp4", SIGTERM},
-                      InterruptCase{"mp4_SIGINT", "clip.mp4", SIGINT},
-                      InterruptCase{"svg_SIGTERM", "a.svg", SIGTERM}),
-    [](const ::testing::TestParamInfo<InterruptCase>& param) { return param.param.name; });
+INSTANTIATE_TEST_SUITE_P(Jobs, AnimateInterrupt,
+                         ::testing::Values(InterruptCase{"directory_SIGTERM", "frames", SIGTERM},
+                                           InterruptCase{"directory_SIGINT", "frames", SIGINT},
+                                           InterruptCase{"mp4_SIGTERM", "clip.mp4", SIGTERM},
+                                           InterruptCase{"mp4_SIGINT", "clip.mp4", SIGINT},
+                                           InterruptCase{"svg_SIGTERM", "a.svg", SIGTERM}),
+                         [](const ::testing::TestParamInfo<InterruptCase>& param) { return param.param.name; });
 
 // An interrupted run over an earlier frame directory leaves it as it was.
 TEST(AnimateInterruptOverOlder, TheEarlierFramesStay) {

@@ -1,14 +1,12 @@
 // pita audit from the outside: formats, counterexamples that replay through
 // pita eval, the table figure, and bad usage (exit 2, nothing written).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <filesystem>
 
-#include <nlohmann/json.hpp>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
 
@@ -20,7 +18,8 @@ namespace fs = std::filesystem;
 
 TEST(Audit, JsonHasEveryCellAndThePapersTable) {
   ScratchDir dir;
-  const RunResult r = run_pita({"audit", "--methods", "P1,P4,P5", "--configs", "20", "--format", "json", "-q"}, dir.path());
+  const RunResult r =
+      run_pita({"audit", "--methods", "P1,P4,P5", "--configs", "20", "--format", "json", "-q"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(j["methods"], Json::array({"P1", "P4", "P5"}));
@@ -34,7 +33,8 @@ TEST(Audit, JsonHasEveryCellAndThePapersTable) {
     }
   }
   for (const Json& d : j["paper"]["disagreements"]) {
-    if (d["method"] == "P4" && d["property"] == "winding-aware") p4_disagreement = !d["reason"].get<std::string>().empty();
+    if (d["method"] == "P4" && d["property"] == "winding-aware")
+      p4_disagreement = !d["reason"].get<std::string>().empty();
   }
   EXPECT_TRUE(p5_similarity);
   EXPECT_TRUE(p4_disagreement);
@@ -55,7 +55,8 @@ TEST(Audit, MarkdownAndCsv) {
 
 TEST(Audit, SameSeedSameOutput) {
   ScratchDir dir;
-  const std::vector<std::string> args{"audit", "--methods", "P2,P6", "--configs", "15", "--seed", "4", "--format", "json"};
+  const std::vector<std::string> args{"audit",  "--methods", "P2,P6",    "--configs", "15",
+                                      "--seed", "4",         "--format", "json"};
   auto one = args, two = args;
   one.insert(one.end(), {"--jobs", "1"});
   two.insert(two.end(), {"--jobs", "2"});
@@ -65,7 +66,7 @@ TEST(Audit, SameSeedSameOutput) {
 }
 
 std::vector<std::pair<double, std::complex<double>>> eval_p(const fs::path& dir, const std::string& scene, double t,
-                                                           bool panel_one, std::complex<double>* q) {
+                                                            bool panel_one, std::complex<double>* q) {
   std::vector<std::string> args{"eval", scene, "--t", fmt::format("{:.17g}", t)};
   if (panel_one) args.insert(args.end(), {"--panel", "1"});
   const RunResult r = run_pita(args, dir);
@@ -93,9 +94,8 @@ TEST(Audit, SimilarityCounterexampleReplaysThroughEval) {
   // Independent of the audit's code: read S from the report, evaluate both
   // panels with pita eval, apply S by hand and measure the distance.
   ScratchDir dir;
-  const RunResult r = run_pita({"audit", "--methods", "P5", "--configs", "20", "--format", "json", "--counterexamples",
-                                "cx"},
-                               dir.path());
+  const RunResult r = run_pita(
+      {"audit", "--methods", "P5", "--configs", "20", "--format", "json", "--counterexamples", "cx"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = Json::parse(r.out);
   for (const Json& cell : j["cells"]) {
@@ -127,9 +127,8 @@ TEST(Audit, OrderCounterexampleReplaysThroughEval) {
   // than the configuration's extent), and each still passes through its
   // keyframes, whatever their order.
   ScratchDir dir;
-  const RunResult r = run_pita({"audit", "--methods", "P2", "--configs", "20", "--format", "json", "--counterexamples",
-                                "cx"},
-                               dir.path());
+  const RunResult r = run_pita(
+      {"audit", "--methods", "P2", "--configs", "20", "--format", "json", "--counterexamples", "cx"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Json j = Json::parse(r.out);
   for (const Json& cell : j["cells"]) {
@@ -200,24 +199,24 @@ TEST(Audit, BadUsageExitsTwoAndWritesNothing) {
 
 TEST(EvalPanel, OutOfRangeIsBadInputAndInRangeEvaluatesThatPanel) {
   ScratchDir dir;
-  const RunResult r = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "8"},
-                               dir.path());
+  const RunResult r =
+      run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "8"}, dir.path());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--panel: "), std::string::npos) << r.err;
-  const RunResult ok = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "7",
-                                 "--t", "0.4"},
-                                dir.path());
+  const RunResult ok =
+      run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "7", "--t", "0.4"},
+               dir.path());
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.out.find("\"P6\""), std::string::npos);  // panel 7 is P6 at ratio 0.40
   // Panel 0 is P1: its frames are labelled P1, and equal those of --method P1.
-  const RunResult first = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel",
-                                    "0", "--t", "0.3"},
-                                   dir.path());
+  const RunResult first =
+      run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "0", "--t", "0.3"},
+               dir.path());
   ASSERT_EQ(first.exit_code, 0) << first.err;
   EXPECT_NE(first.out.find("\"method\": \"P1\""), std::string::npos) << first.out;
-  const RunResult refused = run_pita({"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json",
-                                      "--panel", "0", "--method", "P8"},
-                                     dir.path());
+  const RunResult refused = run_pita(
+      {"eval", std::string(PITA_SOURCE_DIR) + "/scenes/fig13-knot-ratio.json", "--panel", "0", "--method", "P8"},
+      dir.path());
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("--panel and --method"), std::string::npos) << refused.err;
   EXPECT_TRUE(refused.out.empty());
@@ -230,13 +229,15 @@ TEST(Audit, SeedMustBeAnUnsignedInteger) {
     EXPECT_EQ(r.exit_code, 2) << seed;
     EXPECT_NE(r.err.find("--seed"), std::string::npos) << r.err;
   }
-  const RunResult r = run_pita({"audit", "--methods", "P1", "--configs", "1", "--seed", "18446744073709551615"}, dir.path());
+  const RunResult r =
+      run_pita({"audit", "--methods", "P1", "--configs", "1", "--seed", "18446744073709551615"}, dir.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
 TEST(Audit, TableFolderMissingIsExitThreeBeforeTheWork) {
   ScratchDir dir;
-  const RunResult r = run_pita({"audit", "--configs", "1", "--counterexamples", "cx", "-o", "missing/t.svg"}, dir.path());
+  const RunResult r =
+      run_pita({"audit", "--configs", "1", "--counterexamples", "cx", "-o", "missing/t.svg"}, dir.path());
   EXPECT_EQ(r.exit_code, 3);
   EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
   EXPECT_TRUE(!fs::exists(dir.path() / "cx") || fs::is_empty(dir.path() / "cx"));  // nothing written

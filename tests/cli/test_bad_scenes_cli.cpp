@@ -6,14 +6,14 @@
 // Each case is copied into a scratch directory, with the fixture folders it
 // may name (images/), and given by its file name alone, as
 // tests/cli/test_eval.cpp gives its scenes.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "../bad_scene_cases.hpp"
 #include "run_pita.hpp"

@@ -2,22 +2,20 @@
 // and stderr. Bad input exits 2 with one message naming the file, the JSON
 // Pointer and the reason, and prints nothing on stdout (the bad scenes of
 // tests/data/bad/: test_bad_scenes_cli.cpp; bad options: here).
-#include <gtest/gtest.h>
-
-#include <fstream>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "run_pita.hpp"
 #include "support/matrix_functions.hpp"
@@ -230,8 +228,9 @@ TEST_F(Eval, TimesMustBeFiniteNumbers) {
       {"0.5,inf", "pita: --t: \"inf\" is not a finite number\n"},
       {"0.5,abc", "pita: --t: \"abc\" is not a number\n"},
       {"0.5x", "pita: --t: \"0.5x\" is not a number\n"},
-      {"0,,1", "pita: --t: time number 2 is empty (give comma-separated numbers, for example --t "
-               "0,0.5,1.5)\n"},
+      {"0,,1",
+       "pita: --t: time number 2 is empty (give comma-separated numbers, for example --t "
+       "0,0.5,1.5)\n"},
   };
   for (const auto& [times, error] : cases) {
     const RunResult result = run({"eval", "scene.json", "--t", times});
@@ -268,8 +267,7 @@ TEST_F(Eval, SingularConfigurationExitsTwoWithoutNumbers) {
     EXPECT_EQ(result.exit_code, 2) << method;
     EXPECT_EQ(result.out, "") << method;
     const std::string prefix = "pita: singular.json: /keyframes: method " + method +
-                               (method == "P7" ? " (Ra-Pe)" : " (Lo-Pe)") +
-                               " has no motion through these keyframes: ";
+                               (method == "P7" ? " (Ra-Pe)" : " (Lo-Pe)") + " has no motion through these keyframes: ";
     EXPECT_EQ(result.err.rfind(prefix, 0), 0u) << result.err;
   }
 }
@@ -279,7 +277,8 @@ TEST_F(Eval, NonFiniteFrameExitsTwoAndPrintsNothing) {
   const RunResult result = run({"eval", "scene.json", "--t", "0,1e300"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err.rfind("pita: scene.json: /keyframes: method P6 (La-LP) has no finite frame at t = 1e+300: ", 0), 0u)
+  EXPECT_EQ(result.err.rfind("pita: scene.json: /keyframes: method P6 (La-LP) has no finite frame at t = 1e+300: ", 0),
+            0u)
       << result.err;
   EXPECT_EQ(result.err.find("nan"), std::string::npos) << result.err;
 }
@@ -296,8 +295,8 @@ TEST_F(Eval, EndlessFileIsRefusedAtTheSizeLimit) {
 }
 
 TEST_F(Eval, DeepNestingIsAnErrorNotACrash) {
-  dir.write("deep.json", "{\"keyframes\": " + std::string(100'000, '[') + std::string(100'000, ']') +
-                             ", \"method\": \"P6\"}");
+  dir.write("deep.json",
+            "{\"keyframes\": " + std::string(100'000, '[') + std::string(100'000, ']') + ", \"method\": \"P6\"}");
   const RunResult result = run({"eval", "deep.json"});
   EXPECT_FALSE(result.signaled) << result.err;
   EXPECT_EQ(result.exit_code, 2) << result.err;
@@ -331,8 +330,8 @@ TEST_F(Eval, AMillionFramesStreamUnderASmallMemoryLimit) {
 #endif
 #endif
   const std::size_t limit = std::size_t{120} << 20;
-  const RunResult to_file =
-      run_pita({"eval", "scene.json", "--samples", "1000000", "--format", "csv", "-o", "frames.csv"}, dir.path(), limit);
+  const RunResult to_file = run_pita(
+      {"eval", "scene.json", "--samples", "1000000", "--format", "csv", "-o", "frames.csv"}, dir.path(), limit);
   ASSERT_EQ(to_file.exit_code, 0) << to_file.err;
   EXPECT_EQ(to_file.out, "");
   const std::string frames = read_file(dir.path() / "frames.csv");
@@ -410,8 +409,7 @@ TEST_F(Eval, ClosedPipeIsExitThreeWithAMessage) {
     const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (err < 0 || ::dup2(fds[1], 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
     ::close(fds[0]);
-    ::execl(pita_binary(), pita_binary(), "eval", scene.c_str(), "--samples", "100000",
-            static_cast<char*>(nullptr));
+    ::execl(pita_binary(), pita_binary(), "eval", scene.c_str(), "--samples", "100000", static_cast<char*>(nullptr));
     ::_exit(127);
   }
   ::close(fds[1]);
@@ -447,8 +445,8 @@ std::string matrix_json(const std::vector<double>& rows) {
 // A polySAM scene of these poses at these knots, with `timing` when not empty.
 std::string space_scene(const std::vector<std::vector<double>>& poses, const std::vector<double>& knots,
                         const std::string& timing = "") {
-  std::string scene = R"({"dimension": 3, "method": "polySAM", )" + (timing.empty() ? "" : timing + ", ") +
-                      R"("poses": [)";
+  std::string scene =
+      R"({"dimension": 3, "method": "polySAM", )" + (timing.empty() ? "" : timing + ", ") + R"("poses": [)";
   for (std::size_t i = 0; i < poses.size(); ++i) {
     scene += fmt::format(R"({}{{"t": {}, "matrix": {}}})", i == 0 ? "" : ", ", knots[i], matrix_json(poses[i]));
   }
@@ -459,8 +457,7 @@ std::string space_scene(const std::vector<std::vector<double>>& poses, const std
 // span (the knots' spans; t before the first or after the last extrapolates
 // the first or last span). Returns the number of rows.
 int expect_space_rows_match(const std::string& csv, const std::vector<std::vector<double>>& poses,
-                            const std::vector<double>& knots,
-                            const std::function<long double(long double)>& ease) {
+                            const std::vector<double>& knots, const std::function<long double(long double)>& ease) {
   std::istringstream lines(csv);
   std::string line;
   std::getline(lines, line);
@@ -527,8 +524,7 @@ TEST_F(Eval, SpaceSceneWithoutASamExitsTwo) {
   // pita render refuses it with the same message, and writes nothing.
   const RunResult render = run({"render", "space.json", "-o", "out"});
   EXPECT_EQ(render.exit_code, 2);
-  EXPECT_NE(render.err.find("space.json: /poses: no SAM exists between these poses"), std::string::npos)
-      << render.err;
+  EXPECT_NE(render.err.find("space.json: /poses: no SAM exists between these poses"), std::string::npos) << render.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "out" / "space.svg"));
 }
 

@@ -1,13 +1,12 @@
 // pita eval --batch, through the real binary (src/cli/eval_batch.cpp): each
 // answer is what a separate `pita eval` prints, byte for byte; bad requests
 // (tests/data/bad-batch/) are answered and the batch goes on; the limits.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -32,8 +31,8 @@ std::vector<Answer> answers_of(const std::string& out) {
   for (const std::string& line : lines_of(out)) {
     const Json answer = Json::parse(line);
     EXPECT_EQ(answer.size(), 3u) << line;
-    answers.push_back({answer.at("exit").get<int>(), answer.at("stdout").get<std::string>(),
-                       answer.at("stderr").get<std::string>()});
+    answers.push_back(
+        {answer.at("exit").get<int>(), answer.at("stdout").get<std::string>(), answer.at("stderr").get<std::string>()});
   }
   return answers;
 }

@@ -2,8 +2,6 @@
 // 4-12 keyframes pass every keyframe, are C1 at interior knots (blend,
 // neville), equal the method at n = 3, continue past the ends, and sample
 // [t_0, t_n]. Everything is read back from the binary's output.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -11,6 +9,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -147,7 +146,8 @@ TEST_F(EvalChains, ThreeKeyframesWithAChainAreTheMethodItself) {
     for (int i = -8; i <= 24; ++i) times.push_back(keys[0].t + i / 16.0 * (keys[2].t - keys[0].t));
     const std::vector<Frame> plain = eval(scene_text(method, keys), times);
     for (const std::string chain : {"blend", "neville"}) {
-      const std::vector<Frame> chained = eval(scene_text(method, keys, fmt::format(R"(, "chain": "{}")", chain)), times);
+      const std::vector<Frame> chained =
+          eval(scene_text(method, keys, fmt::format(R"(, "chain": "{}")", chain)), times);
       ASSERT_EQ(chained.size(), plain.size());
       for (std::size_t i = 0; i < plain.size(); ++i) {
         EXPECT_NEAR(chained[i].px, plain[i].px, 1e-12 * 6) << method << " " << chain;

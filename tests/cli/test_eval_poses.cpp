@@ -1,11 +1,10 @@
 // `pita eval` on pose scenes (SAM paper): frames as 2x3 matrices, the method
 // override, and the clear refusal when no SAM exists (exit 2).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -103,8 +102,7 @@ TEST_F(EvalPoses, NoSamExitsTwoWithTheReason) {
   const RunResult result = run({"eval", "nosam.json"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err.rfind("pita: nosam.json: /poses: no SAM exists between these poses: ", 0), 0u)
-      << result.err;
+  EXPECT_EQ(result.err.rfind("pita: nosam.json: /poses: no SAM exists between these poses: ", 0), 0u) << result.err;
   EXPECT_NE(result.err.find("-0.5 and -2"), std::string::npos) << result.err;  // the eigenvalues
   EXPECT_NE(result.err.find("polySAM or a SAM bi-arc"), std::string::npos) << result.err;
   // render refuses it the same way, and writes nothing.

@@ -1,11 +1,10 @@
 // `pita eval` with "timing" (docs/reference/scene-format.md "Timing"): frames keep the scene times
 // asked for, a linear timing changes no byte, eased frames are the method's
 // frames at the eased times, and the help lists every ease.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -33,9 +32,9 @@ class EvalTiming : public ::testing::Test {
 TEST_F(EvalTiming, LinearTimingChangesNoByte) {
   const RunResult plain = eval("", {"--samples", "33"});
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
-  for (const std::string timing : {R"(, "timing": {})", R"(, "timing": {"ease": "linear"})",
-                                   R"(, "timing": {"ease": "linear", "per": "span"})",
-                                   R"js(, "timing": {"ease": "cubic-bezier(0, 0, 1, 1)"})js"}) {
+  for (const std::string timing :
+       {R"(, "timing": {})", R"(, "timing": {"ease": "linear"})", R"(, "timing": {"ease": "linear", "per": "span"})",
+        R"js(, "timing": {"ease": "cubic-bezier(0, 0, 1, 1)"})js"}) {
     const RunResult timed = eval(timing, {"--samples", "33"});
     ASSERT_EQ(timed.exit_code, 0) << timed.err;
     if (timing.find("cubic") == std::string::npos) {
@@ -87,15 +86,17 @@ TEST_F(EvalTiming, ZeroLengthArcLengthExitsTwoWithThePointer) {
   const RunResult result = run_pita({"eval", "still.json"}, dir.path());
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err, "pita: still.json: /panels/0/timing/arc_length: cannot pace SMA by the arc length of p: "
-                        "the path has zero length: the point does not move\n");
+  EXPECT_EQ(result.err,
+            "pita: still.json: /panels/0/timing/arc_length: cannot pace SMA by the arc length of p: "
+            "the path has zero length: the point does not move\n");
 }
 
 TEST_F(EvalTiming, HelpListsEveryEase) {
   const RunResult help = run_pita({"eval", "--help"}, dir.path());
   ASSERT_EQ(help.exit_code, 0);
-  for (const char* name : {"\"linear\"", "\"ease\"", "\"ease-in\"", "\"ease-out\"", "\"ease-in-out\"", "\"sine\"",
-                           "\"cubic\"", "cubic-bezier(x1, y1, x2, y2)", "{\"sine\": {\"k1\"", "{\"parabolic\": {\"t1\""}) {
+  for (const char* name :
+       {"\"linear\"", "\"ease\"", "\"ease-in\"", "\"ease-out\"", "\"ease-in-out\"", "\"sine\"", "\"cubic\"",
+        "cubic-bezier(x1, y1, x2, y2)", "{\"sine\": {\"k1\"", "{\"parabolic\": {\"t1\""}) {
     EXPECT_NE(help.out.find(name), std::string::npos) << name;
   }
 }

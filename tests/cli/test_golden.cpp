@@ -1,13 +1,12 @@
 // `pita check` and `pita update-goldens` (src/cli/golden.cpp) through the real
 // binary, on scenes and goldens made in a scratch directory.
-#include <gtest/gtest.h>
-
-#include <sys/stat.h>
-
 #include <filesystem>
 #include <functional>
 #include <regex>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "run_pita.hpp"
 
@@ -19,7 +18,8 @@ namespace fs = std::filesystem;
 std::string scene(const std::string& middle_x) {
   return R"({"method": "P6", "keyframes": [
   {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
-  {"t": 0.5, "p": [)" + middle_x + R"(, 1.5], "m": 0.6, "w": 2.0},
+  {"t": 0.5, "p": [)" +
+         middle_x + R"(, 1.5], "m": 0.6, "w": 2.0},
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}],
   "layers": [{"type": "pattern"}, {"type": "stroke"}, {"type": "discrepancy", "scale": 0.1}, {"type": "keyframes"}]})";
 }
@@ -103,7 +103,9 @@ TEST_F(Check, AClaimThatFailsIsAMismatchNamingIt) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("FAIL  fig.json"), std::string::npos) << r.err;
   EXPECT_TRUE(std::regex_search(
-      r.err, std::regex(R"(/claims/0: claim failed: "the frames never turn": turn-step of the scene \(P6[^)]*\) = [0-9.]+, not below 0\.01)")))
+      r.err,
+      std::regex(
+          R"(/claims/0: claim failed: "the frames never turn": turn-step of the scene \(P6[^)]*\) = [0-9.]+, not below 0\.01)")))
       << r.err;
   EXPECT_EQ(r.err.find("golden/fig/"), std::string::npos) << r.err;  // the goldens match
 
@@ -201,8 +203,7 @@ TEST_F(Check, HostileGoldensAreBadInputNamingTheFile) {
     expect = expect.substr(7, expect.find('\n') - 7);
     const fs::path target = dir.path() / "golden/fig" / replaced;
     const std::string original = read_file(target);
-    fs::copy_file(cases / (name + fs::path(replaced).string().substr(3)), target,
-                  fs::copy_options::overwrite_existing);
+    fs::copy_file(cases / (name + fs::path(replaced).string().substr(3)), target, fs::copy_options::overwrite_existing);
     const RunResult r = run({"check", "fig.json"});
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("golden/fig/" + replaced), std::string::npos) << r.err;
@@ -235,8 +236,8 @@ TEST_F(Check, GoldensThatAreLinksFifosOrDevicesAreRefused) {
     fs::remove(svg);
     c.make();
     for (const std::string command : {"check", "update-goldens"}) {
-      const RunResult r = command == "check" ? run({"check", "fig.json", "--report", "rep"})
-                                             : run({"update-goldens", "fig.json"});
+      const RunResult r =
+          command == "check" ? run({"check", "fig.json", "--report", "rep"}) : run({"update-goldens", "fig.json"});
       EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
       EXPECT_NE(r.err.find("golden/fig/fig.svg"), std::string::npos) << r.err;
       EXPECT_NE(r.err.find("a golden must be a plain file"), std::string::npos) << r.err;
@@ -343,7 +344,8 @@ TEST(CheckTolerances, SceneToleranceAppliesAndCommandLineOverridesIt) {
   const ScratchDir dir;
   const auto write = [&](const std::string& x) {
     dir.write("fig.json", R"({"method": "P3", "keyframes": [
-      {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [)" + x + R"(, 1.5], "m": 0.6, "w": 2.0},
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [)" +
+                              x + R"(, 1.5], "m": 0.6, "w": 2.0},
       {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}],
       "golden": {"number_tolerance": 0.01, "svg_tolerance": 1000, "pixel_tolerance": 255, "max_differing": 1}})");
   };

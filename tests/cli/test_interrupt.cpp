@@ -6,12 +6,6 @@
 // To catch pita with its temporaries written but not renamed, however fast the
 // write, an LD_PRELOAD shim (preload/rename_hook.cpp) holds it at its first
 // rename; a second test kills a real render at increasing delays.
-#include <gtest/gtest.h>
-
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -20,6 +14,11 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "run_pita.hpp"
 
@@ -33,7 +32,6 @@ const std::string kInterruptScene = R"({"method": "P6", "keyframes": [
   {"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
   {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2.0},
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
-
 
 template <class Condition>
 bool wait_for(Condition condition, std::chrono::milliseconds limit) {
@@ -102,12 +100,10 @@ TEST_P(Interrupt, RemovesEveryTemporaryInFlightAndExits128PlusSignal) {
   EXPECT_EQ(read_file(dir.path() / "out/x.png"), "older");
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, Interrupt, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
-                         [](const ::testing::TestParamInfo<int>& signal) {
-                           return std::string(signal.param == SIGINT    ? "SIGINT"
-                                              : signal.param == SIGTERM ? "SIGTERM"
-                                                                        : "SIGHUP");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Signals, Interrupt, ::testing::Values(SIGINT, SIGTERM, SIGHUP), [](const ::testing::TestParamInfo<int>& signal) {
+      return std::string(signal.param == SIGINT ? "SIGINT" : signal.param == SIGTERM ? "SIGTERM" : "SIGHUP");
+    });
 
 // Interrupted at the second scene: the first one's files, renamed into place
 // before the signal, stay whole and are listed on stdout; the second one's
@@ -117,9 +113,9 @@ TEST(InterruptLater, ScenesWrittenBeforeTheSignalStay) {
   dir.write("a.json", kInterruptScene);
   dir.write("x.json", kInterruptScene);
   const fs::path marker = dir.path() / "renaming";
-  Started started = start_pita({"render", "a.json", "x.json", "-o", "out", "--format", "svg,png"}, dir.path(),
-                               with_rename_hook({"PITA_TEST_PAUSE_BEFORE_RENAME=" + marker.string(),
-                                                 "PITA_TEST_PAUSE_AT=x.svg"}));
+  Started started =
+      start_pita({"render", "a.json", "x.json", "-o", "out", "--format", "svg,png"}, dir.path(),
+                 with_rename_hook({"PITA_TEST_PAUSE_BEFORE_RENAME=" + marker.string(), "PITA_TEST_PAUSE_AT=x.svg"}));
   ASSERT_TRUE(wait_for([&] { return fs::exists(marker); }, 60s)) << "pita never reached the rename onto x.svg";
   EXPECT_EQ(hidden_in(dir.path() / "out").size(), 2u);
   ASSERT_EQ(::kill(started.pid, SIGINT), 0);

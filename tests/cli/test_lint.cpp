@@ -2,12 +2,11 @@
 // ok, a finding is exit 1 naming the file, pointer and check, the JSON form
 // parses, a bad scene is exit 2 while the others are still linted, and
 // every scene of scenes/ lints clean (or accepts each finding with a reason).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -18,8 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kClean = "{" + kFigureOneFields + R"(, "layers": [{"type": "pattern"}, {"type": "keyframes"}]})";
-const std::string kOver = "{" + kFigureOneFields +
-                          R"(, "layers": [{"type": "pattern"}, {"type": "label", "text": "on top", "at": [3, 1.5], "size": 20}]})";
+const std::string kOver =
+    "{" + kFigureOneFields +
+    R"(, "layers": [{"type": "pattern"}, {"type": "label", "text": "on top", "at": [3, 1.5], "size": 20}]})";
 
 class Lint : public ::testing::Test {
  protected:

@@ -1,8 +1,8 @@
 // The pita command itself (src/cli/main.cpp): help, version, and usage errors
 // mapped to exit code 2 (CLI11's own codes would be 100 and above).
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "run_pita.hpp"
 
@@ -15,9 +15,7 @@ class Main : public ::testing::Test {
   ScratchDir dir;
 };
 
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST_F(Main, HelpExitsZero) {
   const RunResult result = run({"--help"});
@@ -32,9 +30,9 @@ TEST_F(Main, EvalHelpDescribesTheSceneFormat) {
   const RunResult result = run({"eval", "--help"});
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_EQ(result.err, "");
-  for (const std::string part : {"Usage: pita eval [OPTIONS] [SCENE]", "--samples", "--batch FILE", "--t", "--method",
-                                 "--format", "Scene format", "\"keyframes\"", "turns", "P6    La-LP",
-                                 "SMA   SMA", "Examples:", "Exit codes"}) {
+  for (const std::string part :
+       {"Usage: pita eval [OPTIONS] [SCENE]", "--samples", "--batch FILE", "--t", "--method", "--format",
+        "Scene format", "\"keyframes\"", "turns", "P6    La-LP", "SMA   SMA", "Examples:", "Exit codes"}) {
     EXPECT_TRUE(contains(result.out, part)) << "no \"" << part << "\" in\n" << result.out;
   }
 }

@@ -2,13 +2,12 @@
 // formats parse and agree, bad input exits 2 with nothing on stdout, a
 // motion that does not exist is reported, and every scene of scenes/ is
 // measured. Its timing is a benchmark (bench/bench_measure.cpp), not a test.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -62,8 +61,7 @@ TEST_F(Measure, JsonHasOneObjectPerPanel) {
   // P7 through these keyframes does not exist (docs/paper-notes.md N13): reported, not fatal.
   const Json& p7 = document["motions"][2];
   ASSERT_TRUE(p7.contains("no_motion"));
-  EXPECT_NE(p7["no_motion"].get<std::string>().find("panels.json: /panels/2"), std::string::npos)
-      << p7["no_motion"];
+  EXPECT_NE(p7["no_motion"].get<std::string>().find("panels.json: /panels/2"), std::string::npos) << p7["no_motion"];
   EXPECT_FALSE(p7.contains("path"));
 }
 
@@ -135,8 +133,8 @@ TEST_F(Measure, WorkBeyondTheLimitIsRefused) {
   // of P6, and measuring tweaks every keyframe: far above 1e8 frames.
   std::string keys;
   for (int i = 0; i < 64; ++i) {
-    keys += (i ? ", " : "") + std::string(R"({"t": )") + std::to_string(i) + R"(, "p": [)" + std::to_string(i) +
-            ", " + std::to_string(i % 3) + R"(], "m": 1, "w": 0})";
+    keys += (i ? ", " : "") + std::string(R"({"t": )") + std::to_string(i) + R"(, "p": [)" + std::to_string(i) + ", " +
+            std::to_string(i % 3) + R"(], "m": 1, "w": 0})";
   }
   dir.write("long.json", R"({"method": "P6", "chain": "neville", "keyframes": [)" + keys + "]}");
   const RunResult result = run({"measure", "long.json"});

@@ -1,13 +1,12 @@
 // `pita render` through the real binary: files written (and only when the
 // scene is good), formats, sizes, determinism, and the SVG read back by an
 // XML parser (xmllint) and by a second renderer (librsvg's rsvg-convert).
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -85,8 +84,8 @@ TEST(Render, SameSceneGivesIdenticalBytes) {
   dir.write("other.json", kGoodScene);
   ASSERT_EQ(run_pita({"render", "good.json", "-o", "one", "--format", "svg,png,pdf"}, dir.path()).exit_code, 0);
   // Rendered second in a process that has rendered another scene first.
-  ASSERT_EQ(run_pita({"render", "other.json", "good.json", "-o", "two", "--format", "svg,png,pdf"},
-                     dir.path()).exit_code, 0);
+  ASSERT_EQ(
+      run_pita({"render", "other.json", "good.json", "-o", "two", "--format", "svg,png,pdf"}, dir.path()).exit_code, 0);
   for (const char* name : {"good.svg", "good.png", "good.pdf"}) {
     EXPECT_TRUE(read_file(dir.path() / "one" / name) == read_file(dir.path() / "two" / name)) << name;
   }
@@ -183,8 +182,8 @@ TEST(Render, EveryStarterSceneRenders) {
 TEST(Render, JobsGiveTheSameFilesAndLinesInOrder) {
   const ScratchDir dir;
   std::vector<std::string> args{"render"};
-  for (const std::string name : {"fig01-eight-pitas", "fig13-knot-ratio", "sam-fig01-regular-patterns",
-                                 "fig07-independent-pitas"}) {
+  for (const std::string name :
+       {"fig01-eight-pitas", "fig13-knot-ratio", "sam-fig01-regular-patterns", "fig07-independent-pitas"}) {
     args.push_back((fs::path(PITA_SOURCE_DIR) / "scenes" / (name + ".json")).string());
   }
   dir.write("bad.json", kBadScene);
@@ -217,7 +216,7 @@ TEST(Render, UsageErrorsExitTwo) {
       {"render", "good.json", "good.json", "-o", "one.svg"},  // one file, two scenes
       {"render", "good.json", "-o", "x", "--format", "gif"},
       {"render", "good.json", "-o", "x.png", "--format", "svg"},
-      {"render", "good.json"},                                 // no -o
+      {"render", "good.json"},  // no -o
       {"render", "good.json", "-o", "x.png", "--scale", "1", "--dpi", "96"},
       {"render", "missing.json", "-o", "x.svg"},
   };

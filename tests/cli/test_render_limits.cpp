@@ -2,11 +2,11 @@
 // every figure within the budget renders in 1 GB of address space, and every
 // figure beyond it is refused with exit 2 and the field's pointer. Never a
 // signal, never "internal error".
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <filesystem>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "run_pita.hpp"
 
@@ -64,37 +64,53 @@ struct Case {
 std::vector<Case> cases() {
   return {
       {"trajectories-at-the-budget",
-       "{" + kKeyframes + R"(, "layers": [)" +
-           repeated(R"({"type": "trajectory", "samples": 100000})", 19) + "]}",
-       {"--format", "svg,png"}, 0, ""},
+       "{" + kKeyframes + R"(, "layers": [)" + repeated(R"({"type": "trajectory", "samples": 100000})", 19) + "]}",
+       {"--format", "svg,png"},
+       0,
+       ""},
       {"patterns-at-the-budget",
-       "{" + kKeyframes + R"(, "layers": [)" +
-           repeated(R"({"type": "pattern", "samples": 10000})", 11) + "]}",
-       {"--format", "svg,pdf"}, 0, ""},
-      {"largest-canvas", "{" + kKeyframes + R"(, "canvas": {"width": 8192, "height": 8192}})",
-       {"--format", "png"}, 0, ""},
+       "{" + kKeyframes + R"(, "layers": [)" + repeated(R"({"type": "pattern", "samples": 10000})", 11) + "]}",
+       {"--format", "svg,pdf"},
+       0,
+       ""},
+      {"largest-canvas",
+       "{" + kKeyframes + R"(, "canvas": {"width": 8192, "height": 8192}})",
+       {"--format", "png"},
+       0,
+       ""},
       {"largest-existence-map",
        "{" + kPoses + R"(, "layers": [{"type": "existence", "columns": 4000, "rows": 1000}]})",
-       {"--format", "svg,png"}, 0, ""},
+       {"--format", "svg,png"},
+       0,
+       ""},
       {"largest-shapes",
        "{" + kPoses + R"(, "shapes": [)" + repeated("{\"polygon\": " + polygon(10000) + "}", 64) +
            R"(], "layers": [{"type": "shapes", "samples": 2}]})",
-       {"--format", "svg,png"}, 0, ""},
+       {"--format", "svg,png"},
+       0,
+       ""},
       {"zigzag-shapes",
        "{" + kPoses + R"(, "shapes": [)" + repeated("{\"polygon\": " + polygon(10000, true) + "}", 64) +
            R"(], "layers": [{"type": "shapes", "samples": 2}]})",
-       {"--format", "png"}, 2, "/layers/0: the PNG would stroke about"},
+       {"--format", "png"},
+       2,
+       "/layers/0: the PNG would stroke about"},
       {"every-limit-at-once",
-       "{" + kKeyframes + R"(, "layers": [)" +
-           repeated(R"({"type": "pattern", "samples": 10000})", 64) + R"(], "panels": [)" +
-           repeated("\"P6\"", 64) + "]}",
-       {}, 2, "/layers: 4096 layer drawings"},
-      {"top-level-samples", "{" + kKeyframes + R"(, "samples": 1000000, "panels": [)" +
-                                repeated("\"P6\"", 9) + "]}",
-       {}, 2, "/samples: 1000000 frames for the figure's layers exceeds the figure limit"},
+       "{" + kKeyframes + R"(, "layers": [)" + repeated(R"({"type": "pattern", "samples": 10000})", 64) +
+           R"(], "panels": [)" + repeated("\"P6\"", 64) + "]}",
+       {},
+       2,
+       "/layers: 4096 layer drawings"},
+      {"top-level-samples",
+       "{" + kKeyframes + R"(, "samples": 1000000, "panels": [)" + repeated("\"P6\"", 9) + "]}",
+       {},
+       2,
+       "/samples: 1000000 frames for the figure's layers exceeds the figure limit"},
       {"canvas-scaled-beyond-the-pixel-budget",
        "{" + kKeyframes + R"(, "canvas": {"width": 8192, "height": 8192}})",
-       {"--format", "png", "--scale", "2"}, 2, "/canvas: a PNG of 268 million pixels"},
+       {"--format", "png", "--scale", "2"},
+       2,
+       "/canvas: a PNG of 268 million pixels"},
   };
 }
 
@@ -112,7 +128,8 @@ TEST(RenderLimits, EveryLimitRendersInOneGigabyteOrIsRefused) {
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("out of memory"), std::string::npos) << r.err;
     if (c.exit_code == 0) {
-      EXPECT_TRUE(fs::exists(dir.path() / "out" / (std::string(c.name) + "." + (c.options.empty() ? "svg" : c.options[1].substr(0, 3)))));
+      EXPECT_TRUE(fs::exists(dir.path() / "out" /
+                             (std::string(c.name) + "." + (c.options.empty() ? "svg" : c.options[1].substr(0, 3)))));
     } else {
       EXPECT_NE(r.err.find(std::string(c.name) + ".json: " + c.error), std::string::npos) << r.err;
       EXPECT_FALSE(fs::exists(dir.path() / "out" / (std::string(c.name) + ".svg")));
@@ -125,8 +142,8 @@ TEST(RenderLimits, EveryLimitRendersInOneGigabyteOrIsRefused) {
 TEST(RenderLimits, OutOfMemoryNamesTheScene) {
   if (kAddressSanitizer) GTEST_SKIP() << "ulimit -v and AddressSanitizer do not mix";
   const ScratchDir dir;
-  dir.write("big.json", "{" + kKeyframes + R"(, "layers": [)" +
-                            repeated(R"({"type": "pattern", "samples": 10000})", 11) + "]}");
+  dir.write("big.json",
+            "{" + kKeyframes + R"(, "layers": [)" + repeated(R"({"type": "pattern", "samples": 10000})", 11) + "]}");
   const RunResult r = run_pita({"render", "big.json", "-o", "out.svg"}, dir.path(), 160u << 20);
   EXPECT_FALSE(r.signaled) << r.err;
   EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -2,12 +2,12 @@
 // write one file are refused before anything is written, a scene's formats are
 // written all or none, and no scene name can put a file outside the output
 // directory (docs/reference/render.md "Figures: pita render").
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "run_pita.hpp"
 
@@ -141,15 +141,14 @@ TEST(RenderOutputs, NoSceneNameLeavesTheOutputDirectory) {
   fs::create_directories(root.path() / "elsewhere");
   root.write("up.json", kScene);
   root.write("elsewhere/absolute.json", kScene);
-  const std::vector<std::string> names = {"..json",          ".json",           "...json",
-                                          "-dash.json",      "with space.json", "ünïcødé ☃.json",
-                                          "back\\slash.json", "x.svg.json"};
+  const std::vector<std::string> names = {"..json",          ".json",          "...json",          "-dash.json",
+                                          "with space.json", "ünïcødé ☃.json", "back\\slash.json", "x.svg.json"};
   for (const std::string& name : names) root.write("work/" + name, kScene);
   const std::set<std::string> before = entries_under(root.path());
 
   // After "--" a name starting with "-" is a scene (so is ./-dash.json anywhere).
-  std::vector<std::string> args = {"render", "-o", "out", "--format", "svg,png", "--", "../up.json",
-                                   (root.path() / "elsewhere/absolute.json").string()};
+  std::vector<std::string> args = {"render",  "-o", "out",        "--format",
+                                   "svg,png", "--", "../up.json", (root.path() / "elsewhere/absolute.json").string()};
   args.insert(args.end(), names.begin(), names.end());
   const RunResult r = run_pita(args, root.path() / "work");
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -159,8 +158,8 @@ TEST(RenderOutputs, NoSceneNameLeavesTheOutputDirectory) {
     if (!before.count(entry)) created.insert(entry);
   }
   std::set<std::string> expected;
-  for (const std::string stem : {"up", "absolute", ".", ".json", "..", "-dash", "with space",
-                                 "ünïcødé ☃", "back\\slash", "x.svg"}) {
+  for (const std::string stem :
+       {"up", "absolute", ".", ".json", "..", "-dash", "with space", "ünïcødé ☃", "back\\slash", "x.svg"}) {
     expected.insert("work/out/" + stem + ".svg");
     expected.insert("work/out/" + stem + ".png");
   }

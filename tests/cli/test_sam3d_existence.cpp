@@ -1,9 +1,9 @@
 // pita audit sam3d-existence through the binary (src/cli/sam3d_existence.cpp):
 // the table, --p, angles as multiples of pi, bad usage. The search itself:
 // tests/analysis/test_sam3d_existence.cpp.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "run_pita.hpp"
 
@@ -19,8 +19,7 @@ RunResult run_audit(const std::vector<std::string>& args) {
 }
 
 TEST(Sam3dExistenceCli, ReportsTheBoundBesideThePapers) {
-  const RunResult result =
-      run_audit({"--theta", "pi/4", "--subdivisions", "0", "--angles", "5", "-q"});
+  const RunResult result = run_audit({"--theta", "pi/4", "--subdivisions", "0", "--angles", "5", "-q"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   // The identity perturbed by -0.34 everywhere has the eigenvalue 1 - 3(0.34) < 0: 0.33 at most.
   EXPECT_NE(result.out.find("| pi/4 (0.7854) | 0.33 | 0.50 | differs: we keep our measurement |"), std::string::npos)
@@ -30,12 +29,10 @@ TEST(Sam3dExistenceCli, ReportsTheBoundBesideThePapers) {
 }
 
 TEST(Sam3dExistenceCli, ChecksOneP) {
-  const RunResult yes = run_audit(
-      {"--theta", "2pi/3", "--p", "0.2", "--subdivisions", "0", "--angles", "5"});
+  const RunResult yes = run_audit({"--theta", "2pi/3", "--p", "0.2", "--subdivisions", "0", "--angles", "5"});
   ASSERT_EQ(yes.exit_code, 0) << yes.err;
   EXPECT_NE(yes.out.find("| 2pi/3 (2.0944) | 0.2 | yes |"), std::string::npos) << yes.out;
-  const RunResult no = run_audit(
-      {"--theta", "0.5", "--p", "0.5", "--subdivisions", "0", "--angles", "3"});
+  const RunResult no = run_audit({"--theta", "0.5", "--p", "0.5", "--subdivisions", "0", "--angles", "3"});
   ASSERT_EQ(no.exit_code, 0) << no.err;
   EXPECT_NE(no.out.find("| 0.5 (0.5000) | 0.5 | no | axis ["), std::string::npos) << no.out;
 }
@@ -47,9 +44,9 @@ TEST(Sam3dExistenceCli, PrintsTheFiguresCurve) {
   EXPECT_NE(result.out.find("| 0pi/2 (0.0000) | 0.33 |"), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("| 1pi/2 (1.5708) | "), std::string::npos) << result.out;
   EXPECT_NE(result.out.find("| 2pi/2 (3.1416) | 0.00 |"), std::string::npos) << result.out;
-  for (const std::vector<std::string>& both :
-       {std::vector<std::string>{"--curve", "2", "--theta", "pi/2"}, {"--curve", "2", "--p", "0.1"},
-        {"--curve", "0"}}) {
+  for (const std::vector<std::string>& both : {std::vector<std::string>{"--curve", "2", "--theta", "pi/2"},
+                                               {"--curve", "2", "--p", "0.1"},
+                                               {"--curve", "0"}}) {
     const RunResult refused = run_audit(both);
     EXPECT_EQ(refused.exit_code, 2) << both[2];
     EXPECT_EQ(refused.out, "");

@@ -2,26 +2,23 @@
 // through pita render and pita eval; failed variants are rows; resume, --force,
 // shards and --merge, an interrupted sweep resumed; bad usage (exit 2, nothing
 // written); the HTML index sorted in a real browser.
-#include <gtest/gtest.h>
-
-#include <fcntl.h>
-#include <signal.h>
-#include <sys/file.h>
-#include <sys/wait.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cstdlib>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <thread>
 
-#include <nlohmann/json.hpp>
-
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "run_pita.hpp"
 
@@ -54,7 +51,8 @@ TEST(Sweep, EachVariantIsTheHandEditedScene) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("4 variants: 4 written"), std::string::npos) << r.out;
   const Json base = Json::parse(read_file(kFig13));
-  const std::vector<std::pair<double, std::string>> expected = {{0.3, "P1"}, {0.3, "La-LP"}, {0.6, "P1"}, {0.6, "La-LP"}};
+  const std::vector<std::pair<double, std::string>> expected = {
+      {0.3, "P1"}, {0.3, "La-LP"}, {0.6, "P1"}, {0.6, "La-LP"}};
   for (std::size_t i = 0; i < expected.size(); ++i) {
     SCOPED_TRACE(i);
     // The scene a user would write by hand, next to the base so that it reads alike.
@@ -88,8 +86,8 @@ TEST(Sweep, PathLengthMetricIsTheEvaluatedPath) {
   // Independent of pita measure: the polyline through 2001 frames of pita eval.
   ScratchDir dir;
   dir.write("s.json", kFigureOneScene);
-  const RunResult r = run_pita({"sweep", "s.json", "--vary", "/keyframes/2/m=1.2", "-o", "out", "--format", "csv", "-q"},
-                               dir.path());
+  const RunResult r =
+      run_pita({"sweep", "s.json", "--vary", "/keyframes/2/m=1.2", "-o", "out", "--format", "csv", "-q"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const RunResult frames = run_pita({"eval", "s.json", "--samples", "2001", "--format", "csv"}, dir.path());
   double length = 0, x0 = 0, y0 = 0;
@@ -107,8 +105,7 @@ TEST(Sweep, PathLengthMetricIsTheEvaluatedPath) {
 
 TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
   ScratchDir dir;
-  const RunResult r =
-      run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=-1,0.8,abc", "-o", "out", "-q"}, dir.path());
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=-1,0.8,abc", "-o", "out", "-q"}, dir.path());
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("variant 0 (/keyframes/1/m = -1)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("/keyframes/1/m"), std::string::npos) << r.err;
@@ -160,9 +157,9 @@ TEST(Sweep, ProgressBarOnATerminalLinesOffIt) {
   if (::access("/usr/bin/script", X_OK) != 0) GTEST_SKIP() << "script(1) is not installed (util-linux)";
   ScratchDir dir;
   // A terminal (script(1) gives pita one), CI unset: the bar, redrawn with \r.
-  const std::string command = fmt::format(
-      "cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty' /dev/null 2>&1",
-      dir.path().string(), pita_binary(), kFig13);
+  const std::string command =
+      fmt::format("cd {} && env -u CI script -qec '{} sweep {} --vary /keyframes/1/t=0.1:0.9:20 -o tty' /dev/null 2>&1",
+                  dir.path().string(), pita_binary(), kFig13);
   FILE* pipe = ::popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
   std::string shown;
@@ -209,8 +206,8 @@ TEST(Sweep, ResumesSkipsWhatIsDoneAndForceRedoesIt) {
 
 TEST(Sweep, ShardsMergeIntoTheUnshardedRun) {
   ScratchDir dir;
-  const std::vector<std::string> base = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.2:0.8:4", "--vary",
-                                         "/method=P1,P6", "--format", "svg,csv", "-q"};
+  const std::vector<std::string> base = {
+      "sweep", kFig13, "--vary", "/keyframes/1/t=0.2:0.8:4", "--vary", "/method=P1,P6", "--format", "svg,csv", "-q"};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());
@@ -249,11 +246,11 @@ TEST(Sweep, MergeOfManyPartsRaisesTheOpenFilesLimitOrSaysWhy) {
                                      dir.path());
     ASSERT_EQ(shard.exit_code, 0) << shard.err;
   }
-  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:80", "--format", "metrics", "-o", "whole",
-                      "-q"},
-                     dir.path())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:80", "--format", "metrics", "-o", "whole", "-q"},
+               dir.path())
+          .exit_code,
+      0);
   const auto merge_with = [&](const std::string& limits) {
     const std::string command =
         fmt::format("cd '{}' && bash -c '{}; exec \"$0\" sweep --merge parts' '{}' >merge.out 2>merge.err",
@@ -284,7 +281,8 @@ TEST(Sweep, MergeIgnoresTheRowsOfAnotherSweep) {
   };
   ASSERT_EQ(run("0.5:1.5:5", {"-o", "d", "--shard", "0/2"}).exit_code, 0);
   ASSERT_EQ(run("0.5:1.5:5", {"-o", "d", "--shard", "1/2"}).exit_code, 0);
-  for (const std::string k : {"0", "1", "2"}) ASSERT_EQ(run("0.6,0.7,0.8,0.9,1", {"-o", "d", "--shard", k + "/3"}).exit_code, 0);
+  for (const std::string k : {"0", "1", "2"})
+    ASSERT_EQ(run("0.6,0.7,0.8,0.9,1", {"-o", "d", "--shard", k + "/3"}).exit_code, 0);
   ASSERT_EQ(run("0.6,0.7,0.8,0.9,1", {"-o", "whole"}).exit_code, 0);
   const RunResult merged = run_pita({"sweep", "--merge", "d"}, dir.path());
   ASSERT_EQ(merged.exit_code, 0) << merged.err;
@@ -294,7 +292,8 @@ TEST(Sweep, MergeIgnoresTheRowsOfAnotherSweep) {
 
 TEST(Sweep, AFolderOfAnotherSweepIsRefusedUnlessForced) {
   ScratchDir dir;
-  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5:1.5:3", "-o", "d", "-q"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5:1.5:3", "-o", "d", "-q"}, dir.path()).exit_code,
+            0);
   const std::string definition = read_file(dir.path() / "d/sweep.json");
   const RunResult other = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.3,0.5", "-o", "d", "-q"}, dir.path());
   EXPECT_EQ(other.exit_code, 2);
@@ -328,8 +327,8 @@ TEST(Sweep, TinyValuesListsOfStringsAndFileModes) {
         << e.path();
   }
   // JSON strings in a list: commas and quotes inside, a string that looks like a number.
-  const RunResult titles = run_pita({"sweep", kFig13, "--vary", R"(/title="a, \"b\"",c,"1")", "-o", "t", "-q"},
-                                    dir.path());
+  const RunResult titles =
+      run_pita({"sweep", kFig13, "--vary", R"(/title="a, \"b\"",c,"1")", "-o", "t", "-q"}, dir.path());
   ASSERT_EQ(titles.exit_code, 0) << titles.err << titles.out;
   EXPECT_EQ(Json::parse(read_file(dir.path() / "t/fig13-knot-ratio-0.scene.json"))["title"], "a, \"b\"");
   EXPECT_EQ(Json::parse(read_file(dir.path() / "t/fig13-knot-ratio-2.scene.json"))["title"], "1");
@@ -337,8 +336,8 @@ TEST(Sweep, TinyValuesListsOfStringsAndFileModes) {
 
 TEST(Sweep, InterruptedSweepLeavesCompleteFilesAndResumes) {
   ScratchDir dir;
-  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out",
-                                         "--format", "svg", "--jobs", "2", "-q"};
+  const std::vector<std::string> args = {
+      "sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out", "--format", "svg", "--jobs", "2", "-q"};
   Started started = start_pita(args, dir.path());
   // Signalled once a row is journaled (a variant's file can be in place a
   // moment before its row is recorded: a run stopped then has no row yet,
@@ -381,8 +380,8 @@ TEST(Sweep, AKilledSweepResumesFromItsJournal) {
   // SIGKILL leaves no chance to write the manifest: the rows journaled so far
   // (a hidden file, in index order) are what the next run resumes from.
   ScratchDir dir;
-  const std::vector<std::string> args = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out",
-                                         "--format", "csv", "--jobs", "1", "-q"};
+  const std::vector<std::string> args = {
+      "sweep", kFig13, "--vary", "/keyframes/1/t=0.05:0.95:150", "-o", "out", "--format", "csv", "--jobs", "1", "-q"};
   Started started = start_pita(args, dir.path());
   const fs::path journal = dir.path() / "out/.manifest.csv.journal";
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -427,8 +426,8 @@ TEST(Sweep, NeverOverwritesWhatASweepDidNotWrite) {
 
   const std::string base = read_file(kFig13);
   dir.write("here/sweep.json", base);
-  const RunResult self = run_pita({"sweep", "sweep.json", "--vary", "/keyframes/1/m=0.5,1", "-o", ".", "-q"},
-                                  dir.path() / "here");
+  const RunResult self =
+      run_pita({"sweep", "sweep.json", "--vary", "/keyframes/1/m=0.5,1", "-o", ".", "-q"}, dir.path() / "here");
   EXPECT_EQ(self.exit_code, 3) << self.err;
   EXPECT_NE(self.err.find("would replace the base scene"), std::string::npos) << self.err;
   EXPECT_EQ(read_file(dir.path() / "here/sweep.json"), base);
@@ -438,8 +437,7 @@ TEST(Sweep, NeverOverwritesWhatASweepDidNotWrite) {
   ASSERT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1", "-o", "empty", "-q"}, dir.path()).exit_code,
             0);
   EXPECT_TRUE(fs::exists(dir.path() / "empty/.pita-sweep"));
-  EXPECT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1,2", "-o", "empty", "-q", "--force"},
-                     dir.path())
+  EXPECT_EQ(run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=0.5,1,2", "-o", "empty", "-q", "--force"}, dir.path())
                 .exit_code,
             0);
 }
@@ -509,13 +507,13 @@ TEST(Sweep, FramesOfAVariantObeyEvalsWorkLimit) {
   ScratchDir dir;
   std::string keyframes;
   for (int i = 0; i < 64; ++i) {
-    keyframes += fmt::format("{}{{\"t\": {}, \"p\": [{}, {}], \"m\": 1, \"w\": 0.1}}", i == 0 ? "" : ", ", i, i,
-                             (i % 2) * 0.5);
+    keyframes +=
+        fmt::format("{}{{\"t\": {}, \"p\": [{}, {}], \"m\": 1, \"w\": 0.1}}", i == 0 ? "" : ", ", i, i, (i % 2) * 0.5);
   }
   dir.write("n64.json", R"({"method": "P6", "chain": "neville", "keyframes": [)" + keyframes + "]}");
   const auto start = std::chrono::steady_clock::now();
-  const RunResult r = run_pita({"sweep", "n64.json", "--vary", "/samples=1000000", "--format", "csv", "-o", "out", "-q"},
-                               dir.path());
+  const RunResult r =
+      run_pita({"sweep", "n64.json", "--vary", "/samples=1000000", "--format", "csv", "-o", "out", "-q"}, dir.path());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));  // generous: refused up front
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("/chain: 1000000 frames of the"), std::string::npos) << r.err;
@@ -526,8 +524,7 @@ TEST(Sweep, FramesOfAVariantObeyEvalsWorkLimit) {
 // A swept bare string with a control character is refused (exit 2).
 TEST(Sweep, ControlCharactersInSweptStringsAreRefused) {
   ScratchDir dir;
-  const RunResult r =
-      run_pita({"sweep", kFig13, "--vary", "/title=plain,\x1b[31mred", "-o", "out", "-q"}, dir.path());
+  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/title=plain,\x1b[31mred", "-o", "out", "-q"}, dir.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("\\x1b[31mred contains the control character U+001B"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
@@ -538,8 +535,8 @@ TEST(Sweep, ControlCharactersInSweptStringsAreRefused) {
 // part or two different rows of one variant, naming part and line.
 TEST(Sweep, MergeSortsAndRefusesDuplicatesAndConflicts) {
   ScratchDir dir;
-  const std::vector<std::string> base = {"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:9", "--format", "csv",
-                                         "-q"};
+  const std::vector<std::string> base = {"sweep",    kFig13, "--vary", "/keyframes/1/t=0.1:0.9:9",
+                                         "--format", "csv",  "-q"};
   const auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());
@@ -629,7 +626,8 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   const std::vector<std::string> index = column(manifest, 0), e = column(manifest, 11);  // discrepancy_max
   std::vector<std::size_t> order(index.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::stod(e[a]) > std::stod(e[b]); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return std::stod(e[a]) > std::stod(e[b]); });
   std::vector<std::string> want;
   for (const std::size_t i : order) want.push_back(index[i]);
   ASSERT_NE(want.front(), "0");  // the sort moves something
@@ -658,10 +656,9 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
 // polySAM, steady within each span: about 0).
 TEST(Sweep, SweepsAnEntryOfAPoseOfSpace) {
   const ScratchDir dir;
-  const RunResult result =
-      run_pita({"sweep", std::string(PITA_SOURCE_DIR) + "/scenes/sam-3d-fig13-polysam.json", "--vary",
-                "/poses/1/matrix/0/3=2:4:3", "-o", "out", "--format", "png,json", "-q"},
-               dir.path());
+  const RunResult result = run_pita({"sweep", std::string(PITA_SOURCE_DIR) + "/scenes/sam-3d-fig13-polysam.json",
+                                     "--vary", "/poses/1/matrix/0/3=2:4:3", "-o", "out", "--format", "png,json", "-q"},
+                                    dir.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const std::string manifest = read_file(dir.path() / "out" / "manifest.csv");
   EXPECT_EQ(std::count(manifest.begin(), manifest.end(), '\n'), 4) << manifest;  // the header and 3 variants

@@ -1,9 +1,9 @@
 // The options of pita sweep in the command line's words (src/cli/sweep_options.cpp):
 // --shard and --format parsed, and the errors of src/sweep, which name no
 // option, told with its flag. Compiled into test_cli with that file.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "cli/sweep_options.hpp"
 

@@ -2,14 +2,14 @@
 // save of the scene (in place or by a rename over it) or of an image it uses,
 // keeps the last good output when a save is bad and says why, and leaves no
 // temporary behind after a hundred saves or a signal.
-#include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/wait.h>
-
 #include <chrono>
 #include <filesystem>
 #include <string>
 #include <thread>
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
 
 #include "cli/run_pita.hpp"
 
@@ -94,8 +94,7 @@ TEST(Watch, ABadSaveKeepsTheLastGoodOutputAndSaysWhereTheErrorIs) {
   ASSERT_TRUE(eventually([&] { return watch.err().find("s.json:2:") != std::string::npos; })) << watch.err();
   EXPECT_NE(watch.err().find("the last good output is kept"), std::string::npos);
   save_by_rename(dir, "s.json", kWatchScene + "3.6, \"m\": -1}]}");
-  ASSERT_TRUE(eventually([&] { return watch.err().find("s.json: /keyframes/1") != std::string::npos; }))
-      << watch.err();
+  ASSERT_TRUE(eventually([&] { return watch.err().find("s.json: /keyframes/1") != std::string::npos; })) << watch.err();
   EXPECT_EQ(read_file(dir.path() / "out.svg"), good);
   dir.write("s.json", sma_scene(2.0));
   ASSERT_TRUE(watch.renders(2)) << watch.err();

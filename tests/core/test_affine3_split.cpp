@@ -1,13 +1,12 @@
 // The split of a 3x3 linear part (core/affine3_split.hpp, SAM A.6): an
 // orthonormal right-handed basis whose first vector is an eigenvector, and
 // the plane block standardised so that its diagonal entries are equal.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <gtest/gtest.h>
 
 #include "core/affine3_split.hpp"
 
@@ -45,10 +44,10 @@ TEST(Affine3Split, SplitsOffTheRealEigenvalueOfAComplexPair) {
   const Matrix3d T = standardised_split(L, Q);
   expect_right_handed_basis(Q);
   EXPECT_LT((T - Q.transpose() * L * Q).norm(), 1e-13);
-  EXPECT_NEAR(T(1, 1), T(2, 2), 1e-13);                                   // equal diagonal
-  EXPECT_LT(std::abs(T(1, 0)) + std::abs(T(2, 0)), 1e-13);                // u an eigenvector
-  EXPECT_NEAR(T(1, 1) * T(2, 2) - T(1, 2) * T(2, 1), 4.0, 1e-12);         // |2 e^{0.3 i}|^2
-  EXPECT_NEAR(T(1, 1), 2.0 * std::cos(0.3), 1e-12);                       // the pair's real part
+  EXPECT_NEAR(T(1, 1), T(2, 2), 1e-13);                            // equal diagonal
+  EXPECT_LT(std::abs(T(1, 0)) + std::abs(T(2, 0)), 1e-13);         // u an eigenvector
+  EXPECT_NEAR(T(1, 1) * T(2, 2) - T(1, 2) * T(2, 1), 4.0, 1e-12);  // |2 e^{0.3 i}|^2
+  EXPECT_NEAR(T(1, 1), 2.0 * std::cos(0.3), 1e-12);                // the pair's real part
 }
 
 // Three positive eigenvalues: the most isolated is split off (here 5, beside 1 and 1.2).

@@ -3,8 +3,6 @@
 // the SAM paper (Sec. 2.3, 5, 6.1, appendix A) and against Eigen's
 // MatrixFunctions module (Schur-Pade log and pow on the 3x3 homogeneous
 // matrix) as an independent oracle.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -16,10 +14,11 @@
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
-#include "core/steady_affine_morph.hpp"
 #include "core/limits.hpp"
+#include "core/steady_affine_morph.hpp"
 #include "support/matrix_functions.hpp"
 
 namespace pita {
@@ -28,7 +27,6 @@ namespace {
 using Eigen::Matrix2d;
 using Eigen::Matrix3d;
 using Eigen::Vector2d;
-
 
 Matrix2d mat(double a, double b, double c, double d) {
   Matrix2d L;
@@ -48,9 +46,7 @@ Matrix3d homogeneous(const Affine2& A) {
 double relative_error(const Affine2& X, const Affine2& Y) {
   return (homogeneous(X) - homogeneous(Y)).norm() / std::max(homogeneous(Y).norm(), 1.0);
 }
-double relative_error(const Matrix2d& X, const Matrix2d& Y) {
-  return (X - Y).norm() / std::max(Y.norm(), 1e-300);
-}
+double relative_error(const Matrix2d& X, const Matrix2d& Y) { return (X - Y).norm() / std::max(Y.norm(), 1e-300); }
 
 // Eigen's real power of the homogeneous matrix: the independent oracle.
 Affine2 eigen_power(const Affine2& A, double t) {
@@ -107,9 +103,9 @@ TEST(SelectCase, TheFiveCasesOfAlgorithmOne) {
   EXPECT_EQ(select_case(mat(2.0, 0.3, 0.0, 0.5)), RootCase::G2);
   EXPECT_EQ(select_case(mat(2.0, 1.0, 0.0, 2.0)), RootCase::G2);  // Jordan block, double eigenvalue
   EXPECT_EQ(select_case(3.0 * Matrix2d::Identity()), RootCase::G2);
-  EXPECT_EQ(select_case(Matrix2d::Identity()), RootCase::S1);             // translation
-  EXPECT_EQ(select_case(mat(1.0, 4.0, 0.0, 1.0)), RootCase::S1);          // shear
-  EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, 3.0)), RootCase::S1);          // one-directional scaling
+  EXPECT_EQ(select_case(Matrix2d::Identity()), RootCase::S1);     // translation
+  EXPECT_EQ(select_case(mat(1.0, 4.0, 0.0, 1.0)), RootCase::S1);  // shear
+  EXPECT_EQ(select_case(mat(1.0, 0.0, 0.0, 3.0)), RootCase::S1);  // one-directional scaling
   EXPECT_EQ(select_case(-2.0 * Matrix2d::Identity()), RootCase::S2);
   // cos/sin of +-pi leave +-1.2e-16 off the diagonal: complex eigenvalues, G1
   // with the principal angle +-(pi - 1.2e-16), not snapped to S2.
@@ -200,7 +196,8 @@ TEST(LinearLog, AgreesWithEigenLog) {
 
 TEST(LinearLog, SpecialCasesHaveTheirClosedForms) {
   // S2: rotation by +pi with scaling 2 (docs/paper-notes.md N15, N23): ln 2 I + pi J.
-  EXPECT_LT(relative_error(linear_log(-2.0 * Matrix2d::Identity()), mat(std::log(2.0), -kPi, kPi, std::log(2.0))), 1e-15);
+  EXPECT_LT(relative_error(linear_log(-2.0 * Matrix2d::Identity()), mat(std::log(2.0), -kPi, kPi, std::log(2.0))),
+            1e-15);
   // Shear: log [[1, k], [0, 1]] = [[0, k], [0, 0]].
   EXPECT_LT(relative_error(linear_log(mat(1.0, 4.0, 0.0, 1.0)), mat(0.0, 4.0, 0.0, 0.0)), 1e-15);
   // Jordan block: log [[r, 1], [0, r]] = [[ln r, 1/r], [0, ln r]].
@@ -345,8 +342,7 @@ TEST(AffinePower, HalfTurnBoundaryWithASubnormalEntry) {
     ASSERT_TRUE(power.L.allFinite() && power.b.allFinite()) << t;
     const double scale = std::exp(t * c);
     EXPECT_NEAR(power.L.trace(), 2.0 * scale * std::cos(t * theta), 1e-9 * scale) << t;
-    EXPECT_NEAR(power.L(0, 0) * power.L(1, 1) - power.L(0, 1) * power.L(1, 0),
-                std::pow(r * r, t), 1e-9 * scale * scale)
+    EXPECT_NEAR(power.L(0, 0) * power.L(1, 1) - power.L(0, 1) * power.L(1, 0), std::pow(r * r, t), 1e-9 * scale * scale)
         << t;
   }
   EXPECT_LT(relative_error(powers.at(5.472998286124e-310), Affine2::identity()), 1e-12);
@@ -506,16 +502,27 @@ TEST(AffinePower, HomogeneousLogAgreesWithEigen) {
 TEST(AffinePower, IdentitiesOnEveryCaseAndBoundary) {
   const double half = limits::kHalfTurn, unit = limits::kUnitEigenvalue;
   const std::vector<Matrix2d> linear = {
-      rotation(1.0), 2.0 * rotation(2.9), rotation(kPi - 1e-9),                    // G1
-      mat(2.0, 0.3, 0.0, 0.5), mat(2.0, 1.0, 0.0, 2.0), 3.0 * Matrix2d::Identity(),  // G2
-      mat(2.0, 1.0, 1e-9, 2.0), mat(2.0, 1.0, -1e-9, 2.0),                          // G1 | G2
-      Matrix2d::Identity(), mat(1.0, 4.0, 0.0, 1.0), mat(1.0, 0.0, 0.0, 3.0),      // S1
-      mat(1.0 + 0.5 * unit, 0.0, 0.0, 3.0), mat(1.0 + 2.0 * unit, 0.0, 0.0, 3.0),  // S1 | G2
-      -2.0 * Matrix2d::Identity(), rotation(kPi), rotation(-kPi),                  // S2, G1 at +-pi
-      -2.0 * (Matrix2d::Identity() + 0.4 * half * mat(1, 0, 0, -1)),               // S2 | G3
-      -2.0 * (Matrix2d::Identity() + 3.0 * half * mat(0, -1, 1, 0)),               // S2 | G1
-      mat(1e6, 0.0, 0.0, 1e-6), rotation(0.3) * mat(1e3, 0.0, 0.0, 1e-3) * rotation(-0.3),  // stretches
-      mat(-2.0, 1.0, -1e-12, -2.0),                                                 // G1 | G3
+      rotation(1.0),
+      2.0 * rotation(2.9),
+      rotation(kPi - 1e-9),  // G1
+      mat(2.0, 0.3, 0.0, 0.5),
+      mat(2.0, 1.0, 0.0, 2.0),
+      3.0 * Matrix2d::Identity(),  // G2
+      mat(2.0, 1.0, 1e-9, 2.0),
+      mat(2.0, 1.0, -1e-9, 2.0),  // G1 | G2
+      Matrix2d::Identity(),
+      mat(1.0, 4.0, 0.0, 1.0),
+      mat(1.0, 0.0, 0.0, 3.0),  // S1
+      mat(1.0 + 0.5 * unit, 0.0, 0.0, 3.0),
+      mat(1.0 + 2.0 * unit, 0.0, 0.0, 3.0),  // S1 | G2
+      -2.0 * Matrix2d::Identity(),
+      rotation(kPi),
+      rotation(-kPi),                                                 // S2, G1 at +-pi
+      -2.0 * (Matrix2d::Identity() + 0.4 * half * mat(1, 0, 0, -1)),  // S2 | G3
+      -2.0 * (Matrix2d::Identity() + 3.0 * half * mat(0, -1, 1, 0)),  // S2 | G1
+      mat(1e6, 0.0, 0.0, 1e-6),
+      rotation(0.3) * mat(1e3, 0.0, 0.0, 1e-3) * rotation(-0.3),  // stretches
+      mat(-2.0, 1.0, -1e-12, -2.0),                               // G1 | G3
   };
   for (const Matrix2d& L : linear) {
     const Affine2 A{L, Vector2d(1.5, -0.5)};
@@ -646,9 +653,7 @@ TEST(SteadyAffineMorph, VelocityConstantInTheLocalFrame) {
       EXPECT_LT((global(t) - global0).norm(), 1e-7 * (1.0 + global0.norm()));
     }
     // An unsteady motion fails the same check: linear interpolation of the matrices.
-    const auto linear = [&](double t) {
-      return Matrix3d((1.0 - t) * homogeneous(B) + t * homogeneous(C));
-    };
+    const auto linear = [&](double t) { return Matrix3d((1.0 - t) * homogeneous(B) + t * homogeneous(C)); };
     const auto linear_local = [&](double t) {
       return Matrix3d(linear(t).inverse() * (linear(t + h) - linear(t - h)) / (2.0 * h));
     };

@@ -4,8 +4,6 @@
 // the 2D EAR on embedded planar affinities, and against Eigen's
 // MatrixFunctions (Schur-Pade pow on the 4x4 homogeneous matrix) as an
 // independent oracle.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -13,8 +11,9 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/affine_power_of_space.hpp"
@@ -30,7 +29,6 @@ using Eigen::Matrix4d;
 using Eigen::Vector2d;
 using Eigen::Vector3d;
 
-
 // |X - Y|_F / max(|Y|_F, 1) on the homogeneous matrices.
 double relative_error(const Affine3& X, const Affine3& Y) {
   return (homogeneous(X) - homogeneous(Y)).norm() / std::max(homogeneous(Y).norm(), 1.0);
@@ -45,8 +43,7 @@ std::string where(const Affine3& X, const Affine3& Y) {
          " (got " + std::to_string(homogeneous(X)(r, c)) + ", expected " + std::to_string(homogeneous(Y)(r, c)) + ")";
 }
 
-#define EXPECT_AFFINE_NEAR(X, Y, tolerance) \
-  EXPECT_LE(relative_error((X), (Y)), (tolerance)) << where((X), (Y))
+#define EXPECT_AFFINE_NEAR(X, Y, tolerance) EXPECT_LE(relative_error((X), (Y)), (tolerance)) << where((X), (Y))
 
 // The rotation by angle about the unit axis u (Rodrigues).
 Matrix3d rotation(const Vector3d& axis, double angle) {
@@ -153,8 +150,7 @@ LogErrors log_errors(const AffinePowers<Affine3>& powers) {
   const Affine3& A = powers.affinity();
   const Eigen::Matrix<long double, 4, 4> H = homogeneous(A).cast<long double>();
   const Matrix4d rounded = oracle::log(H).cast<double>();
-  return {relative_error(exp_long_double(powers.log()), A),
-          relative_error(exp_long_double(affine3_of(rounded)), A),
+  return {relative_error(exp_long_double(powers.log()), A), relative_error(exp_long_double(affine3_of(rounded)), A),
           relative_error(exp_long_double(affine3_of(oracle::log(homogeneous(A)))), A)};
 }
 
@@ -190,8 +186,8 @@ TEST(AffinePower3, ExpOfLogAndPowersAddOnIllConditionedAffinities) {
     EXPECT_LE(h, 1e-12) << "case " << i;
   }
   EXPECT_GE(worst_condition, 1e7);  // the range asked for is covered
-  std::printf("condition up to %.2g: exp(log A) %.2g, A^s A^t %.2g, A^1/2 A^1/2 %.2g\n", worst_condition,
-              worst_exp, worst_add, worst_half);
+  std::printf("condition up to %.2g: exp(log A) %.2g, A^s A^t %.2g, A^1/2 A^1/2 %.2g\n", worst_condition, worst_exp,
+              worst_add, worst_half);
 }
 
 // Condition numbers up to 1e8 (eigenvalue ratio 1e4, basis condition 2e2).
@@ -462,10 +458,10 @@ TEST(AffinePower3Cases, DiagonalStretches) {
 // A planar affinity beside a scaling equals the 2D EAR on its plane.
 TEST(AffinePower3Cases, EmbeddedPlanarAffinitiesEqualTheTwoDimensionalEar) {
   std::vector<Matrix2d> planes(5);
-  planes[0] << 1.2, -0.8, 0.6, 0.9;                                            // G1
-  planes[1] << 2.0, 0.5, 0.3, 0.7;                                             // G2
-  planes[2] << 1.0, 0.0, 0.0, 2.5;                                             // S1
-  planes[3] = -1.5 * Matrix2d::Identity();                                     // S2
+  planes[0] << 1.2, -0.8, 0.6, 0.9;                                                                      // G1
+  planes[1] << 2.0, 0.5, 0.3, 0.7;                                                                       // G2
+  planes[2] << 1.0, 0.0, 0.0, 2.5;                                                                       // S1
+  planes[3] = -1.5 * Matrix2d::Identity();                                                               // S2
   planes[4] << std::cos(kPi - 1e-7), -std::sin(kPi - 1e-7), std::sin(kPi - 1e-7), std::cos(kPi - 1e-7);  // near pi
   const Vector2d c(0.3, -1.4);
   for (std::size_t i = 0; i < planes.size(); ++i) {
@@ -492,7 +488,7 @@ TEST(AffinePower3Cases, EmbeddedPlanarAffinitiesEqualTheTwoDimensionalEar) {
 // largest component positive, turning counter-clockwise seen from its tip).
 TEST(AffinePower3Cases, HalfTurnAboutAnAxis) {
   const Vector3d u = Vector3d(0.3, -0.9, 0.2).normalized();  // largest component negative
-  const Vector3d axis = -u;                                    // the canonical direction
+  const Vector3d axis = -u;                                  // the canonical direction
   const Vector3d p(1.0, 0.5, -0.25);
   const double d = 0.6, scale = 2.0;
   const auto turn = [&](double angle, double slide, double lambda_t, double rho_t) {
@@ -509,7 +505,8 @@ TEST(AffinePower3Cases, HalfTurnAboutAnAxis) {
   // plane -2 I: S2 beside a scaling; no slide, a fixed point p).
   const Affine3 B = turn(kPi, 0.0, 3.0, scale);
   for (double t : kTimes) {
-    EXPECT_AFFINE_NEAR(affine_power(B, t), turn(t * kPi, 0.0, std::pow(3.0, t), std::pow(scale, t)), 1e-14) << "t " << t;
+    EXPECT_AFFINE_NEAR(affine_power(B, t), turn(t * kPi, 0.0, std::pow(3.0, t), std::pow(scale, t)), 1e-14)
+        << "t " << t;
   }
 }
 

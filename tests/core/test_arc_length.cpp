@@ -1,19 +1,18 @@
 // Arc length and its inverse (src/core/arc_length.cpp) against closed forms:
 // circles, a log-spiral, a parabola, a path clamped outside its interval, and
 // the refusal of a still point (docs/paper-notes.md N20).
-#include <gtest/gtest.h>
-
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <stdexcept>
 
+#include <gtest/gtest.h>
+
 #include "core/arc_length.hpp"
 
 namespace pita {
 namespace {
-
 
 TEST(ArcLength, CircleLengthAndInverseAreExact) {
   const double r = 2.5;
@@ -45,7 +44,9 @@ TEST(ArcLength, LogSpiralOfManyTurnsMatchesItsClosedForm) {
 TEST(ArcLength, HelixInSpaceMatchesItsClosedForm) {
   // (r cos t, r sin t, c t): speed sqrt(r^2 + c^2), constant.
   const double r = 1.5, c = 0.4, T = 4 * kPi;
-  const ArcLengthTable::Path3 helix = [&](double t) { return Eigen::Vector3d(r * std::cos(t), r * std::sin(t), c * t); };
+  const ArcLengthTable::Path3 helix = [&](double t) {
+    return Eigen::Vector3d(r * std::cos(t), r * std::sin(t), c * t);
+  };
   const ArcLengthTable table(helix, 0.0, T);
   const double speed = std::sqrt(r * r + c * c);
   EXPECT_NEAR(table.length(), speed * T, 1e-11 * speed * T);
@@ -71,7 +72,10 @@ TEST(ArcLength, ParabolaMatchesItsClosedForm) {
 
 TEST(ArcLength, PathClampedOutsideItsIntervalIsMeasuredInside) {
   // Like the Bezier SAM, which holds its end poses outside its knots.
-  const auto clamped = [](double t) { const double u = std::clamp(t, 0.0, 1.0); return Point{u, 0.0}; };
+  const auto clamped = [](double t) {
+    const double u = std::clamp(t, 0.0, 1.0);
+    return Point{u, 0.0};
+  };
   const ArcLengthTable table(clamped, 0.0, 1.0);
   EXPECT_NEAR(table.length(), 1.0, 1e-12);
   EXPECT_NEAR(table.parameter_at(0.3), 0.3, 1e-12);

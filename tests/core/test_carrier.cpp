@@ -1,7 +1,7 @@
 // The carrier similarity of Sec. 7.1 (core/carrier.hpp): (X, E) ~ (X_t, D(t)).
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "core/carrier.hpp"
 #include "core/methods.hpp"
@@ -60,7 +60,8 @@ TEST(Carrier, OfTheHandleItselfIsTheIdentity) {
 TEST(Carrier, AnotherHandleGivesTheSameAnimationForHandleInvariantPitas) {
   const Arrow e1{{6.3, 3.25}, 1.0, 0.0};
   const Arrow e2 = zero_turn_arrow({6.05, 3.05}, {7.28, 3.96});
-  const KeyframeTriple k1{{0.0, {{0.0, 0.0}, 1.3, 0.35}}, {1.0, {{3.2, 1.6}, 1.0, 1.4}}, {2.0, {{6.2, -0.8}, 1.5, -0.3}}};
+  const KeyframeTriple k1{
+      {0.0, {{0.0, 0.0}, 1.3, 0.35}}, {1.0, {{3.2, 1.6}, 1.0, 1.4}}, {2.0, {{6.2, -0.8}, 1.5, -0.3}}};
   const auto moved = [&](const Keyframe& key) {
     const Affine2 S = carrier(e1, key.arrow);
     Arrow a = zero_turn_arrow(apply(S, e2.p), apply(S, e2.q()));

@@ -2,17 +2,16 @@
 // independent bisection solver written here, the chapter's sine, sine-cap and
 // parabolic eases against their defining properties (chapter Eq. 3.18-3.22,
 // docs/paper-notes.md N16, N20).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include <gtest/gtest.h>
 
 #include "core/ease.hpp"
 
 namespace pita {
 namespace {
-
 
 // CSS cubic-bezier by plain bisection on x(s) (no Newton), 200 halvings.
 double css_reference(double x1, double y1, double x2, double y2, double x) {
@@ -48,7 +47,10 @@ TEST(Ease, EveryEaseFixesTheEnds) {
 }
 
 TEST(Ease, CssNamedCurvesMatchAnIndependentSolverTo1e12) {
-  struct Named { const char* name; double x1, y1, x2, y2; };
+  struct Named {
+    const char* name;
+    double x1, y1, x2, y2;
+  };
   for (const Named& n : {Named{"ease", 0.25, 0.1, 0.25, 1.0}, Named{"ease-in", 0.42, 0.0, 1.0, 1.0},
                          Named{"ease-out", 0.0, 0.0, 0.58, 1.0}, Named{"ease-in-out", 0.42, 0.0, 0.58, 1.0}}) {
     SCOPED_TRACE(n.name);
@@ -118,7 +120,7 @@ TEST(Ease, SineIsTheChaptersEq318WithItsQuotedValues) {
 TEST(Ease, SineCapIsC1WithUnitSlopeBetweenK1AndK2ScaledByF) {
   const double k1 = 0.3, k2 = 0.75;
   const Ease e = sine_cap_ease(k1, k2);
-  const double f = 2 * k1 / kPi + k2 - k1 + 2 * (1 - k2) / kPi;  // total distance before normalising
+  const double f = 2 * k1 / kPi + k2 - k1 + 2 * (1 - k2) / kPi;                    // total distance before normalising
   for (double x : {0.35, 0.5, 0.7}) EXPECT_NEAR(slope(e, x), 1.0 / f, 1e-8) << x;  // constant speed
   for (double x : {k1, k2}) EXPECT_NEAR(slope(e, x - 1e-4), slope(e, x + 1e-4), 1e-3) << "C1 at " << x;
   EXPECT_NEAR(slope(e, 1e-5), 0.0, 1e-3);
@@ -136,7 +138,10 @@ TEST(Ease, ParabolicHasConstantAccelerationThenSpeedV0ThenDeceleration) {
   const double v0 = 2.0 / (t2 - t1 + 1.0);  // chapter Eq. 3.22 (as corrected, N16)
   for (double x : {0.3, 0.45, 0.6}) EXPECT_NEAR(slope(e, x), v0, 1e-8) << x;
   // Constant acceleration v0 / t1 and deceleration v0 / (1 - t2): second differences.
-  const auto second = [&](double x) { const double h = 1e-4; return (ease(e, x + h) - 2 * ease(e, x) + ease(e, x - h)) / (h * h); };
+  const auto second = [&](double x) {
+    const double h = 1e-4;
+    return (ease(e, x + h) - 2 * ease(e, x) + ease(e, x - h)) / (h * h);
+  };
   EXPECT_NEAR(second(0.1), v0 / t1, 1e-4);
   EXPECT_NEAR(second(0.8), -v0 / (1 - t2), 1e-4);
   // chapter Eq. 3.21: the areas under the speed add up to one, so ease(t1) = v0 t1 / 2.

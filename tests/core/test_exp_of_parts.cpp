@@ -1,11 +1,10 @@
 // e^{tC} for C = x I + M (core/exp_of_parts.hpp, SAM Eq. 11) against closed
 // forms: a Jordan block (gamma = 0), a rotation (gamma < 0), and a stretch
 // whose eigenvalues are far apart (the projector branch, exact per entry).
-#include <gtest/gtest.h>
-
 #include <cmath>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "core/exp_of_parts.hpp"
 

@@ -12,12 +12,12 @@ namespace pita::test {
 namespace {
 
 using MethodSet = std::set<Method>;
-constexpr double kHolds = 1e-8;      // relative deviation allowed where a property holds
-constexpr double kViolated = 1e-3;   // relative deviation that counts as a measurable violation
+constexpr double kHolds = 1e-8;     // relative deviation allowed where a property holds
+constexpr double kViolated = 1e-3;  // relative deviation that counts as a measurable violation
 
 struct Measure {
-  double worst_holding = 0.0;  // largest deviation seen (should be ~0 if the property holds)
-  double best_violation = 0.0; // largest deviation seen on any configuration
+  double worst_holding = 0.0;   // largest deviation seen (should be ~0 if the property holds)
+  double best_violation = 0.0;  // largest deviation seen on any configuration
 };
 
 // Runs `deviation(method, config)` over random configurations plus extra
@@ -47,9 +47,7 @@ double max_frame_change(const Motion& x, const Motion& y, const KeyframeTriple& 
 
 // Right composition X o G, G given as an arrow (the handle's placement in the
 // shape's frame): origin X.p + X.vec G.p, magnitude X.m G.m, winding X.w + G.w.
-Arrow compose_handle(const Arrow& X, const Arrow& G) {
-  return {X.p + X.vector() * G.p, X.m * G.m, X.w + G.w};
-}
+Arrow compose_handle(const Arrow& X, const Arrow& G) { return {X.p + X.vector() * G.p, X.m * G.m, X.w + G.w}; }
 
 TEST(Fig10, HandleInvariant) {
   // Sec. 4.5: moving the handle within the shape (A o G, B o G, C o G) moves
@@ -58,7 +56,8 @@ TEST(Fig10, HandleInvariant) {
   Sampler g(1);
   check_property("handle-invariance", H, [&](Method m, const KeyframeTriple& k) {
     const Arrow G{g.point(0.8), std::exp(g.uniform(-0.5, 0.5)), g.uniform(-2.5, 2.5)};
-    const KeyframeTriple kg{{k.a.t, compose_handle(k.a.arrow, G)}, {k.b.t, compose_handle(k.b.arrow, G)},
+    const KeyframeTriple kg{{k.a.t, compose_handle(k.a.arrow, G)},
+                            {k.b.t, compose_handle(k.b.arrow, G)},
                             {k.c.t, compose_handle(k.c.arrow, G)}};
     const auto D = motion(m, k), DG = motion(m, kg);
     double d = 0.0;
@@ -158,7 +157,10 @@ double distance_to_curve(const Motion& D, Point x, double lo, double hi) {
     double l = lo + step * (i - 1), r = lo + step * (i + 1);
     for (int it = 0; it < 60; ++it) {
       const double m1 = r - g * (r - l), m2 = l + g * (r - l);
-      if (std::abs(D.at(m1).p - x) < std::abs(D.at(m2).p - x)) r = m2; else l = m1;
+      if (std::abs(D.at(m1).p - x) < std::abs(D.at(m2).p - x))
+        r = m2;
+      else
+        l = m1;
     }
     best = std::min(best, std::abs(D.at(0.5 * (l + r)).p - x));
   }
@@ -211,10 +213,9 @@ TEST(Fig10, AffineInvariantOnArrows) {
     return Point{1.3 * x.real() + 0.4 * x.imag() + 0.7, -0.2 * x.real() + 0.8 * x.imag() - 0.3};
   };
   check_property("affine invariance", A, [&](Method m, const KeyframeTriple& k) {
-    const auto moved = [&](const Keyframe& x) {
-      return Keyframe{x.t, zero_turn_arrow(U(x.arrow.p), U(x.arrow.q()))};
-    };
-    const KeyframeTriple zk{{k.a.t, zero_turn(k.a.arrow)}, {k.b.t, zero_turn(k.b.arrow)}, {k.c.t, zero_turn(k.c.arrow)}};
+    const auto moved = [&](const Keyframe& x) { return Keyframe{x.t, zero_turn_arrow(U(x.arrow.p), U(x.arrow.q()))}; };
+    const KeyframeTriple zk{
+        {k.a.t, zero_turn(k.a.arrow)}, {k.b.t, zero_turn(k.b.arrow)}, {k.c.t, zero_turn(k.c.arrow)}};
     const auto D = motion(m, zk), DU = motion(m, {moved(zk.a), moved(zk.b), moved(zk.c)});
     double d = 0.0;
     for (double t : sample_times(k, 17, 0.0)) {

@@ -2,13 +2,12 @@
 // the classical centred stencils, and exactness on polynomials of degree
 // below the node count on uneven nodes (derivatives taken by hand); and the
 // stencils written out in core/finite_difference.hpp.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "core/finite_difference.hpp"
 
@@ -29,7 +28,9 @@ TEST(FiniteDifference, CentredFivePointStencilsAreTheClassicalOnes) {
 
 TEST(FiniteDifference, ExactOnPolynomialsOfDegreeBelowTheNodeCount) {
   // f(x) = 2 - x + 3 x^2 - 0.5 x^3 + 0.25 x^4 - 0.1 x^5 on six uneven nodes.
-  const auto f = [](double x) { return 2.0 - x + 3.0 * x * x - 0.5 * x * x * x + 0.25 * std::pow(x, 4) - 0.1 * std::pow(x, 5); };
+  const auto f = [](double x) {
+    return 2.0 - x + 3.0 * x * x - 0.5 * x * x * x + 0.25 * std::pow(x, 4) - 0.1 * std::pow(x, 5);
+  };
   const auto df = [](double x) { return -1.0 + 6.0 * x - 1.5 * x * x + std::pow(x, 3) - 0.5 * std::pow(x, 4); };
   const auto ddf = [](double x) { return 6.0 - 3.0 * x + 3.0 * x * x - 2.0 * std::pow(x, 3); };
   const std::vector<double> nodes = {-0.3, 0.1, 0.25, 0.7, 0.8, 1.3};
@@ -90,7 +91,8 @@ TEST(Stencils, TakeComplexAndVectorValues) {
   EXPECT_LT(std::abs(central_derivative4(spiral, t, h) - velocity), 1e-11);
   EXPECT_LT((central_derivative(curve, t, h) - Eigen::Vector2d(2.0 * t, std::cos(t))).norm(), 1e-6);
   // The same bits as the formula written at the call site.
-  const Eigen::Vector2d by_hand = (curve(t - 2 * h) - 8.0 * curve(t - h) + 8.0 * curve(t + h) - curve(t + 2 * h)) / (12.0 * h);
+  const Eigen::Vector2d by_hand =
+      (curve(t - 2 * h) - 8.0 * curve(t - h) + 8.0 * curve(t + h) - curve(t + 2 * h)) / (12.0 * h);
   EXPECT_EQ(central_derivative4(curve, t, h), by_hand);
 }
 

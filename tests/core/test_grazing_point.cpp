@@ -3,11 +3,11 @@
 // finite difference of the motion, not its velocity), it is the foot of the
 // perpendicular from the centre of a rotation, it stays the same point of
 // the edge under a SAM (SAM Eq. 8) and moves along the edge under rARAP.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/grazing_point.hpp"

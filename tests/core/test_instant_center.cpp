@@ -1,10 +1,10 @@
 // The instantaneous centers of a similarity motion (src/core/instant_center.cpp):
 // on a rotation about a known point both centers are that point, and a
 // translation has none.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+
+#include <gtest/gtest.h>
 
 #include "core/instant_center.hpp"
 

@@ -1,9 +1,8 @@
 // The knot warp of P4, P7 and P8 (src/core/knot_warp.cpp): knots to 0, 1/2, 1,
 // identity for even knots, increasing, C1 and symmetric (PITA Eq. 41).
-#include "core/knot_warp.hpp"
-
 #include <cmath>
 
+#include "core/knot_warp.hpp"
 #include "test_support.hpp"
 
 namespace pita::test {
@@ -52,7 +51,7 @@ TEST(KnotWarp, FollowsItsQuadraticPiecesAndLinearEnds) {
   EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, 2.5), 0.3125, 1e-15);  // s = 1/8: 1/2 h(1/2)
   EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, 4.5), 0.8125, 1e-15);  // s = 5/8: 1/2 + 1/2 h(1/2)
   // Slopes at the ends: (1 - beta)/beta = 3 before a, beta/(1 - beta) = 1/3 after c.
-  EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, -2.0), -3.0, 1e-14);      // s = -1
+  EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, -2.0), -3.0, 1e-14);             // s = -1
   EXPECT_NEAR(knot_warp(2.0, 3.0, 6.0, 10.0), 1.0 + 1.0 / 3.0, 1e-14);  // s = 2
 }
 

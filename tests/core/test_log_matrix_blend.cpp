@@ -1,16 +1,14 @@
 // Alexa's log-matrix blend (core/log_matrix_blend.hpp), the motion the SAM
 // paper compares SAM with in Sec. 3.3.2 and Figs. 4, 5: e^{(1-u) log B + u log C}.
-#include "core/log_matrix_blend.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
+#include "core/log_matrix_blend.hpp"
 #include "core/pose_motion.hpp"
 #include "pose_test_support.hpp"
 #include "support/matrix_functions.hpp"
@@ -20,7 +18,6 @@ namespace {
 
 using test::distance;
 using test::pose;
-
 
 Eigen::Matrix3d homogeneous(const Affine2& A) {
   Eigen::Matrix3d H = Eigen::Matrix3d::Identity();
@@ -77,8 +74,7 @@ TEST(LogMatrixBlend, ThePapersMidwayExample) {
   const Affine2 x_sam = compose(sam.at(0.5), inverse(kRotate90));
   const Affine2 x_alexa = compose(alexa.at(0.5), inverse(kRotate90));
   EXPECT_LT(distance(x_sam, pose(1.0 / r2, 1.0 / r2, -1.0 / r2, 1.0 / r2, 3.0, 3.0 * r2 - 3.0)), 1e-14);
-  EXPECT_LT(distance(x_alexa, pose(1.0 / r2, 1.0 / r2, -1.0 / r2, 1.0 / r2, 6.0 * r2 / kPi,
-                                   -6.0 * (r2 - 2.0) / kPi)),
+  EXPECT_LT(distance(x_alexa, pose(1.0 / r2, 1.0 / r2, -1.0 / r2, 1.0 / r2, 6.0 * r2 / kPi, -6.0 * (r2 - 2.0) / kPi)),
             1e-14);
   // Both turn by the same amount.
   EXPECT_LT((x_sam.L - x_alexa.L).norm(), 1e-15);

@@ -1,9 +1,8 @@
 // The non-steady variants of the SMA (src/core/mean_morph.cpp, Sec. 2.7,
 // Fig. 4): the Pythagorean means of the path and of the magnitude.
-#include "core/mean_morph.hpp"
-
 #include <cmath>
 
+#include "core/mean_morph.hpp"
 #include "core/steady_morph.hpp"
 #include "test_support.hpp"
 
@@ -15,8 +14,8 @@ TEST(MeanMorph, GeometricMeansGiveTheSteadyMorph) {
   for (int i = 0; i < 200; ++i) {
     const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
     const double t = s.uniform(-0.5, 1.5);
-    EXPECT_TRUE(arrows_near(mean_morph(A, B, t, MeanKind::geometric, MeanKind::geometric),
-                            steady_morph(A, B, t), 1e-9, 10.0, false));
+    EXPECT_TRUE(arrows_near(mean_morph(A, B, t, MeanKind::geometric, MeanKind::geometric), steady_morph(A, B, t), 1e-9,
+                            10.0, false));
   }
 }
 
@@ -29,15 +28,14 @@ TEST(MeanMorph, VariantsInterpolateWithTheirMeans) {
         EXPECT_TRUE(arrows_near(mean_morph(A, B, 0.0, path, mag), A, 1e-12, 10.0, false));
         EXPECT_TRUE(arrows_near(mean_morph(A, B, 1.0, path, mag), B, 1e-10, 10.0, false));
         const Arrow mid = mean_morph(A, B, 0.5, path, mag);
-        const double expected_m = mag == MeanKind::arithmetic ? 0.5 * (A.m + B.m)
+        const double expected_m = mag == MeanKind::arithmetic  ? 0.5 * (A.m + B.m)
                                   : mag == MeanKind::geometric ? std::sqrt(A.m * B.m)
                                                                : 2.0 / (1.0 / A.m + 1.0 / B.m);
         EXPECT_NEAR(mid.m, expected_m, 1e-12 * expected_m);
         // The radius about the SMA's fixed point follows the path mean.
         const Point f = *fixed_point(twirl_between(A, B));
         const double ra = std::abs(A.p - f), rb = std::abs(B.p - f);
-        const double expected_r = path == MeanKind::arithmetic ? 0.5 * (ra + rb)
-                                                               : 2.0 / (1.0 / ra + 1.0 / rb);
+        const double expected_r = path == MeanKind::arithmetic ? 0.5 * (ra + rb) : 2.0 / (1.0 / ra + 1.0 / rb);
         EXPECT_NEAR(std::abs(mid.p - f), expected_r, 1e-9 * (1 + expected_r));
       }
     }

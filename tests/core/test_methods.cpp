@@ -1,12 +1,12 @@
 // The one registry of methods (src/core/methods.cpp): every name of every
 // method of both kinds resolves, no name means two methods, the one wording of
 // unknown names, and the method tables of docs/reference agree with the registry.
-#include <gtest/gtest.h>
-
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "core/methods.hpp"
 
@@ -32,8 +32,7 @@ TEST(Methods, EveryMethodOfBothKindsIsRegisteredOnce) {
 TEST(Methods, EveryNameResolvesInAnyCase) {
   for (const MethodEntry& entry : every_method()) {
     SCOPED_TRACE(std::string(entry.id));
-    for (const std::string& name : {std::string(entry.id), upper(std::string(entry.id)),
-                                    std::string(entry.mnemonic)}) {
+    for (const std::string& name : {std::string(entry.id), upper(std::string(entry.id)), std::string(entry.mnemonic)}) {
       const MethodEntry* found = find_method_entry(name);
       ASSERT_NE(found, nullptr) << name;
       EXPECT_EQ(found, &entry) << name;
@@ -58,9 +57,12 @@ TEST(Methods, EveryNameResolvesInAnyCase) {
 TEST(Methods, UnknownNamesHaveOneWording) {
   EXPECT_EQ(unknown_method_reason("P66", is_method_of<Method>),
             "unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?");
-  EXPECT_EQ(unknown_method_reason("polysan", is_method_of<PoseMethod>), "unknown method \"polysan\"; did you mean polySAM?");
+  EXPECT_EQ(unknown_method_reason("polysan", is_method_of<PoseMethod>),
+            "unknown method \"polysan\"; did you mean polySAM?");
   const std::string none = unknown_method_reason("zzzzzz", is_method_of<PoseMethod>);
-  EXPECT_EQ(none, "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, rARAP, ASAP, TSB, Alexa");
+  EXPECT_EQ(none,
+            "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, "
+            "rARAP, ASAP, TSB, Alexa");
 }
 
 TEST(Methods, LabelsAsMessagesNameThem) {
@@ -81,8 +83,8 @@ TEST(Methods, ReferenceListsEveryMethod) {
     pages += text.str();
   }
   for (const MethodEntry& entry : every_method()) {
-    const std::string cell = is_method_of<Method>(entry) ? "| " + std::string(entry.id) + " |"
-                                                         : "`" + std::string(entry.id) + "`";
+    const std::string cell =
+        is_method_of<Method>(entry) ? "| " + std::string(entry.id) + " |" : "`" + std::string(entry.id) + "`";
     EXPECT_NE(pages.find(cell), std::string::npos) << "docs/reference does not list " << entry.id << " as " << cell;
   }
 }

@@ -4,8 +4,8 @@
 #include <Eigen/Dense>
 
 #include "core/lagrange_weights.hpp"
-#include "test_support.hpp"
 #include "support/matrix_functions.hpp"
+#include "test_support.hpp"
 
 namespace pita::test {
 namespace {
@@ -14,7 +14,7 @@ Eigen::Matrix3d homogeneous(const Arrow& A, Point origin) {  // PITA Eq. A.1, ab
   Eigen::Matrix3d H;
   const Vector v = A.vector();
   H << v.real(), -v.imag(), A.p.real() - origin.real(),  //
-      v.imag(), v.real(), A.p.imag() - origin.imag(),     //
+      v.imag(), v.real(), A.p.imag() - origin.imag(),    //
       0, 0, 1;
   return H;
 }
@@ -99,8 +99,8 @@ TEST(PaEl, MatchesGenericMatrixLogAndExp) {
       const Arrow d = P10->at(t);
       EXPECT_NEAR(std::abs(d.vector() - Complex{E(0, 0), E(1, 0)}), 0.0, 1e-9 * d.m) << i << " t=" << t;
       // The blended angle is the weighted sum of principal angles, unreduced.
-      const double w = lagrange(l, principal_angle(k.a.arrow.w), principal_angle(k.b.arrow.w),
-                                principal_angle(k.c.arrow.w));
+      const double w =
+          lagrange(l, principal_angle(k.a.arrow.w), principal_angle(k.b.arrow.w), principal_angle(k.c.arrow.w));
       EXPECT_NEAR(d.w, w, 1e-12 * (1 + std::abs(w)));
     }
   }
@@ -126,8 +126,8 @@ TEST(HeLp, RotationAndDilationViolateSimilarityInvarianceMeasurably) {
   const double dilation = invariance_violation(Method::P5, k, twirl(o, 2.0, 0.0));
   ::testing::Test::RecordProperty("p5_rotation_0.1rad_violation", std::to_string(rotation));
   ::testing::Test::RecordProperty("p5_dilation_2_violation", std::to_string(dilation));
-  std::printf("P5 invariance violation: rotation 0.1 rad %.3g, dilation x2 %.3g (relative to the figure)\n",
-              rotation, dilation);
+  std::printf("P5 invariance violation: rotation 0.1 rad %.3g, dilation x2 %.3g (relative to the figure)\n", rotation,
+              dilation);
   EXPECT_GT(rotation, 1e-4);
   EXPECT_GT(dilation, 1e-3);
   // The similarity-invariant variant has none.
@@ -140,10 +140,9 @@ TEST(HeLp, RotationAndDilationViolateSimilarityInvarianceMeasurably) {
 // matrix log and exp (the oracle of the tests above).
 Arrow blended_oracle(const KeyframeTriple& k, double t, Point center) {
   const LagrangeWeights l = lagrange_weights(k.a.t, k.b.t, k.c.t, t);
-  const Eigen::Matrix3d H =
-      oracle::exp(Eigen::Matrix3d(l.x * oracle::log(homogeneous(k.a.arrow, center)) +
-                                  l.y * oracle::log(homogeneous(k.b.arrow, center)) +
-                                  l.z * oracle::log(homogeneous(k.c.arrow, center))));
+  const Eigen::Matrix3d H = oracle::exp(Eigen::Matrix3d(l.x * oracle::log(homogeneous(k.a.arrow, center)) +
+                                                        l.y * oracle::log(homogeneous(k.b.arrow, center)) +
+                                                        l.z * oracle::log(homogeneous(k.c.arrow, center))));
   return arrow_of(H, center);
 }
 
@@ -171,7 +170,8 @@ double oracle_violation(const KeyframeTriple& k, const Twirl& S, bool about_cent
 TEST(HeG, RotationsAndDilationsAboutTheGlobalOriginChangeIt) {
   const KeyframeTriple k{{0.0, {{1, 0.5}, 1.0, -0.4}}, {0.5, {{2.5, 2.5}, 0.7, 1.6}}, {1.0, {{4.5, 1}, 1.2, 2.9}}};
   const Twirl rotation = twirl({0, 0}, 1.0, -0.3), dilation = twirl({0, 0}, 1.7, 0.0);
-  const double he_g_rotation = oracle_violation(k, rotation, false), he_g_dilation = oracle_violation(k, dilation, false);
+  const double he_g_rotation = oracle_violation(k, rotation, false),
+               he_g_dilation = oracle_violation(k, dilation, false);
   const double p5_rotation = oracle_violation(k, rotation, true), p5_dilation = oracle_violation(k, dilation, true);
   EXPECT_NEAR(he_g_rotation, 0.079, 0.0005);  // N56's printed values, to their digits
   EXPECT_NEAR(he_g_dilation, 0.26, 0.005);

@@ -3,9 +3,9 @@
 // independent implementations, one in complex numbers, one in 2x2 matrices),
 // is affine-invariant (PITA Eq. 43, the property P8 owes to PAM in Fig. 10), and its
 // acceleration is constant in the moving frame (PITA Eq. 39), by finite differences.
-#include <gtest/gtest.h>
-
 #include <optional>
+
+#include <gtest/gtest.h>
 
 #include "core/pam.hpp"
 #include "core/pitas/motion.hpp"
@@ -21,16 +21,13 @@ Eigen::Matrix3d homogeneous(const Affine2& A) {
   return H;
 }
 
-double distance(const Affine2& X, const Affine2& Y) {
-  return (homogeneous(X) - homogeneous(Y)).cwiseAbs().maxCoeff();
-}
+double distance(const Affine2& X, const Affine2& Y) { return (homogeneous(X) - homogeneous(Y)).cwiseAbs().maxCoeff(); }
 
 Affine2 random_affinity(Sampler& s) {
   Affine2 A;
   // Close to a rotation-scaling so that K stays away from acosh's cut.
   const double angle = s.uniform(-1.0, 1.0), scale = std::exp(s.uniform(-0.5, 0.5));
-  A.L << scale * std::cos(angle), -scale * std::sin(angle), scale * std::sin(angle),
-      scale * std::cos(angle);
+  A.L << scale * std::cos(angle), -scale * std::sin(angle), scale * std::sin(angle), scale * std::cos(angle);
   A.L += Eigen::Matrix2d::NullaryExpr([&](Eigen::Index, Eigen::Index) { return s.uniform(-0.3, 0.3); });
   A.b << s.uniform(-3.0, 3.0), s.uniform(-3.0, 3.0);
   return A;
@@ -93,8 +90,7 @@ TEST(Pam, AccelerationIsConstantInTheMovingFrame) {
   // d/dt = 2 d/dtau, hence U''(t) = 4 U(tau) E.
   Sampler s(14);
   for (int i = 0; i < 50; ++i) {
-    const PersistentAffineMotion U(0.0, random_affinity(s), 0.5, random_affinity(s), 1.0,
-                                   random_affinity(s));
+    const PersistentAffineMotion U(0.0, random_affinity(s), 0.5, random_affinity(s), 1.0, random_affinity(s));
     const Eigen::Matrix3d E = U.local_acceleration();
     const double h = 1e-3;
     for (double t : {0.1, 0.35, 0.6, 0.9}) {
@@ -109,8 +105,7 @@ TEST(Pam, AccelerationIsConstantInTheMovingFrame) {
 TEST(Pam, RefusesASingularMiddleAffinity) {
   Affine2 B;
   B.L << 1.0, 2.0, 2.0, 4.0;
-  EXPECT_THROW(PersistentAffineMotion(0.0, Affine2::identity(), 0.5, B, 1.0, Affine2::identity()),
-               MotionDomainError);
+  EXPECT_THROW(PersistentAffineMotion(0.0, Affine2::identity(), 0.5, B, 1.0, Affine2::identity()), MotionDomainError);
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 // The -Pe machinery of P7/P8 (docs/paper-notes.md N13).
 #include "core/perseverant.hpp"
-
 #include "core/pitas/motion.hpp"
 #include "test_support.hpp"
 
@@ -19,10 +18,8 @@ TEST(Perseverant, VectorMotionSolvesTheBoundaryValueProblem) {
     // v'' = K v with K = k^2, by finite differences.
     const double h = 1e-3;
     for (double tau : {-0.7, 0.1, 0.8, 1.6}) {
-      const Vector acc =
-          (pe.vector_at(tau + h) - 2.0 * pe.vector_at(tau) + pe.vector_at(tau - h)) / (h * h);
-      EXPECT_NEAR(std::abs(acc - pe.k() * pe.k() * pe.vector_at(tau)), 0.0,
-                  1e-5 * (1 + std::abs(acc)));
+      const Vector acc = (pe.vector_at(tau + h) - 2.0 * pe.vector_at(tau) + pe.vector_at(tau - h)) / (h * h);
+      EXPECT_NEAR(std::abs(acc - pe.k() * pe.k() * pe.vector_at(tau)), 0.0, 1e-5 * (1 + std::abs(acc)));
     }
   }
 }

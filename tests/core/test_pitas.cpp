@@ -1,10 +1,10 @@
 // One property suite run over every PITA (Sophus's tests.hpp habit): the
 // interpolation constraints, symmetry (PITA Eq. 41), similarity invariance (PITA Eq. 40),
 // extrapolation, plus the cross-checks the papers state between methods.
+#include "core/lagrange_weights.hpp"
 #include "core/pitas/p04_be_lp.hpp"
 #include "core/pitas/p07_ra_pe.hpp"
 #include "core/steady_morph.hpp"
-#include "core/lagrange_weights.hpp"
 #include "core/steady_transport.hpp"
 #include "test_support.hpp"
 
@@ -56,8 +56,8 @@ TEST_P(EveryPita, IsSymmetric) {
 }
 
 // PITA Eq. 40 with S drawn from the given family of similarities.
-void expect_similarity_invariance(Method m, Config c, std::uint64_t seed,
-                                  const std::function<Twirl(Sampler&)>& draw, double tol) {
+void expect_similarity_invariance(Method m, Config c, std::uint64_t seed, const std::function<Twirl(Sampler&)>& draw,
+                                  double tol) {
   Sampler s(seed);
   for (int i = 0; i < 150; ++i) {
     const KeyframeTriple k = s.triple(c);
@@ -72,9 +72,7 @@ void expect_similarity_invariance(Method m, Config c, std::uint64_t seed,
   }
 }
 
-Twirl any_similarity(Sampler& s) {
-  return twirl(s.point(10), std::exp(s.uniform(-2, 2)), s.uniform(-12, 12));
-}
+Twirl any_similarity(Sampler& s) { return twirl(s.point(10), std::exp(s.uniform(-2, 2)), s.uniform(-12, 12)); }
 Twirl any_translation(Sampler& s) { return translation(s.point(10)); }
 
 TEST_P(EveryPita, IsSimilarityInvariant) {
@@ -195,8 +193,7 @@ TEST(CrossCheck, P4ControlArrowsAverageToTheMiddleKeyframe) {
   for (int i = 0; i < 200; ++i) {
     const KeyframeTriple k = s.triple(Config::wild);
     const BeLp P4(k);
-    EXPECT_TRUE(arrows_near(steady_average(P4.left_control(), P4.right_control()), k.b.arrow, 1e-9,
-                            extent(k), false));
+    EXPECT_TRUE(arrows_near(steady_average(P4.left_control(), P4.right_control()), k.b.arrow, 1e-9, extent(k), false));
   }
 }
 

@@ -1,17 +1,16 @@
 // Point curves through n timed points (src/core/point_curves.cpp; PITA
 // Sec. 7.6, PITA Eq. 48-50, Fig. 29): the PITA-based curve, uniform and
 // centripetal Neville, and the log-spiral blend.
-#include "core/point_curves.hpp"
-
 #include <array>
-#include <limits>
-#include <optional>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/limits.hpp"
+#include "core/point_curves.hpp"
 #include "test_support.hpp"
 
 namespace pita::test {
@@ -134,9 +133,7 @@ TEST(PointCurvePita, IsEq48To50WrittenOut) {
     for (int i = 0; i < 5; ++i) {
       const std::vector<TimedPoint> points = random_points(s, paper_knots());
       const Point a = points[0].p, b = points[1].p, c = points[2].p, d = points[3].p;
-      const auto edge = [](Point from, Point to) {
-        return Arrow{from, std::abs(to - from), std::arg(to - from)};
-      };
+      const auto edge = [](Point from, Point to) { return Arrow{from, std::abs(to - from), std::arg(to - from)}; };
       Arrow ab = edge(a, b), bc = edge(b, c), cd = edge(c, d);
       bc.w = ab.w + std::remainder(bc.w - ab.w, 2.0 * kPi);
       cd.w = bc.w + std::remainder(cd.w - bc.w, 2.0 * kPi);
@@ -254,8 +251,7 @@ TEST(PointCurveNevilleCentripetal, ParameterStepsAreSquareRootsOfDistances) {
   const Point origin{1.0, -2.0};
   const Vector direction = std::polar(1.0, 0.4);
   const std::array<double, 4> t{0.0, 0.25, 0.5, 1.5};
-  const std::array<Point, 4> p{origin, origin + 1.0 * direction, origin + 5.0 * direction,
-                               origin + 6.0 * direction};
+  const std::array<Point, 4> p{origin, origin + 1.0 * direction, origin + 5.0 * direction, origin + 6.0 * direction};
   std::vector<TimedPoint> points;
   for (int i = 0; i < 4; ++i) points.push_back({t[i], p[i]});
   const PointCurveMotion centripetal(PointCurve::neville_centripetal, points);
@@ -267,8 +263,9 @@ TEST(PointCurveNevilleCentripetal, ParameterStepsAreSquareRootsOfDistances) {
     EXPECT_NEAR(std::abs(centripetal.at(x) - expected), 0.0, 1e-12) << x;
     // Still on the line (only the speed along it differs).
     EXPECT_NEAR(std::imag((centripetal.at(x) - origin) / direction), 0.0, 1e-12) << x;
-    EXPECT_NEAR(std::abs(uniform.at(x) - lagrange_cubic(u_uniform, p, four_point_parameter(t, u_uniform, x))),
-                0.0, 1e-12) << x;
+    EXPECT_NEAR(std::abs(uniform.at(x) - lagrange_cubic(u_uniform, p, four_point_parameter(t, u_uniform, x))), 0.0,
+                1e-12)
+        << x;
     largest_gap = std::max(largest_gap, std::abs(centripetal.at(x) - uniform.at(x)));
   }
   EXPECT_GT(largest_gap, 0.1);  // the two parameterisations differ
@@ -366,13 +363,12 @@ TEST(PointCurve, SimilarityInvariance) {
                                    {PointCurve::log_spiral_blend, std::nullopt}}};
   Sampler s(5500);
   for (const Case& c : cases) {
-    const std::string label =
-        std::string(info(c.curve).name) + (c.track ? " " + name(*c.track) : std::string());
+    const std::string label = std::string(info(c.curve).name) + (c.track ? " " + name(*c.track) : std::string());
     const ArrowTrackFactory track = c.track ? pita_track(*c.track) : ArrowTrackFactory{};
     for (int i = 0; i < 20; ++i) {
       const int n = c.track ? 4 : 4 + i % 5;
       const std::vector<TimedPoint> points =
-          random_points(s, c.track                                  ? paper_knots()
+          random_points(s, c.track                                   ? paper_knots()
                            : c.curve == PointCurve::log_spiral_blend ? nearly_even_knots(s, n)
                                                                      : random_knots(s, n));
       const double scale = std::exp(s.uniform(-2.0, 2.0));

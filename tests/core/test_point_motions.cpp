@@ -1,11 +1,10 @@
 // The point motions of the PITAs (src/core/point_motions.cpp, Sec. 3.1): the
 // parabolic Pa- (PITA Eq. 11) and the log-spiral LS- (PITA Eq. 26).
-#include "core/point_motions.hpp"
-
 #include <cmath>
 #include <complex>
 #include <numbers>
 
+#include "core/point_motions.hpp"
 #include "test_support.hpp"
 
 namespace pita::test {

@@ -1,10 +1,10 @@
 // The table of pose methods (src/core/pose_method.cpp).
-#include "core/pose_method.hpp"
+#include <set>
+#include <string>
 
 #include <gtest/gtest.h>
 
-#include <set>
-#include <string>
+#include "core/pose_method.hpp"
 
 namespace pita {
 namespace {

@@ -1,9 +1,5 @@
 // The motions of pose scenes (src/core/pose_motion.cpp): SAM, polySAM,
 // Bezier SAM, bi-arc, linear and four-point, through timed poses.
-#include "core/pose_motion.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -12,7 +8,9 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
+#include "core/pose_motion.hpp"
 #include "core/sam_splines.hpp"
 #include "pose_test_support.hpp"
 
@@ -38,8 +36,8 @@ TEST(PoseMotion, PolySamInterpolatesEveryPose) {
 // PoseMotion::velocity against central differences of PoseMotion::at.
 TEST(PoseMotion, VelocityIsTheDerivative) {
   const std::vector<TimedPose> poses = {{0.0, kA}, {0.4, kB}, {1.0, kC}};
-  for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam,
-                                  PoseMethod::biarc_sam}) {
+  for (const PoseMethod method :
+       {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam, PoseMethod::biarc_sam}) {
     const PoseMotion motion(method, poses);
     for (const double t : {0.1, 0.3, 0.55, 0.9}) {
       const double h = 1e-6;
@@ -67,11 +65,10 @@ TEST(PoseMotion, RefusesTheMissingSamAndNamesThePair) {
 
 // The four-point polySAM (Sec. 7.3, Fig. 13).
 TEST(PoseMotion, FourPointPolySam) {
-  const std::vector<TimedPose> controls = {
-      {0.0, pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)},
-      {1.0, pose(0.4, -1.2, 1.2, 0.4, 3.0, 4.0)},
-      {2.0, pose(-1.2, -0.6, 0.5, -1.1, 7.0, 3.5)},
-      {3.0, pose(-0.9, 0.5, -0.3, -1.0, 9.0, -1.0)}};
+  const std::vector<TimedPose> controls = {{0.0, pose(1.0, 0.0, 0.0, 1.0, 0.0, 0.0)},
+                                           {1.0, pose(0.4, -1.2, 1.2, 0.4, 3.0, 4.0)},
+                                           {2.0, pose(-1.2, -0.6, 0.5, -1.1, 7.0, 3.5)},
+                                           {3.0, pose(-0.9, 0.5, -0.3, -1.0, 9.0, -1.0)}};
   // Through every control pose, whatever the number of steps.
   for (const int steps : {0, 1, 2, 4}) {
     const PoseMotion motion(PoseMethod::four_point, controls, steps);
@@ -133,8 +130,7 @@ TEST(PoseMotion, RefusesWrongPoseCountsAndUnorderedKnots) {
   EXPECT_THROW(PoseMotion(PoseMethod::poly_sam, {{0.0, kA}}), std::invalid_argument);
   EXPECT_THROW(PoseMotion(PoseMethod::biarc_sam, {{0.0, kA}, {1.0, kB}}), std::invalid_argument);
   EXPECT_THROW(PoseMotion(PoseMethod::linear, {{1.0, kA}, {1.0, kB}}), std::invalid_argument);
-  EXPECT_THROW(PoseMotion(PoseMethod::poly_sam, {{0.0, kA}, {2.0, kB}, {1.0, kA}}),
-               std::invalid_argument);
+  EXPECT_THROW(PoseMotion(PoseMethod::poly_sam, {{0.0, kA}, {2.0, kB}, {1.0, kA}}), std::invalid_argument);
   EXPECT_THROW(PoseMotion(PoseMethod::four_point, {{0.0, kA}, {1.0, kB}, {2.0, kA}}, kMaxSubdivisions + 1),
                std::invalid_argument);
 }
@@ -169,8 +165,7 @@ TEST(PoseMotion, Fig2MorphsThroughTimedPoses) {
       EXPECT_LT(distance(motion.velocity(t), expected), 1e-6 * (1.0 + expected.L.norm() + expected.b.norm()))
           << "t = " << t;
     }
-    EXPECT_THROW(PoseMotion(method, {{0.0, from}, {1.0, pose(1.0, 0.0, 0.0, -1.0, 0.0, 0.0)}}),
-                 std::invalid_argument);
+    EXPECT_THROW(PoseMotion(method, {{0.0, from}, {1.0, pose(1.0, 0.0, 0.0, -1.0, 0.0, 0.0)}}), std::invalid_argument);
     EXPECT_THROW(PoseMotion(method, {{0.0, from}, {1.0, to}, {2.0, from}}), std::invalid_argument);
   }
   // The reference triangle matters to TSB (its sides) and rARAP (its barycentre).

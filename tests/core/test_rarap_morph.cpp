@@ -2,11 +2,11 @@
 // the poses, turns at a constant rate (the polar angle of L(u) is linear in
 // u), moves the barycentre at constant speed on a line, is similarity-
 // invariant, and is not steady.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/rarap_morph.hpp"
@@ -24,7 +24,8 @@ const Eigen::Vector2d kCentre(1.0 / 3.0, 1.0 / 3.0);  // of the unit triangle
 double polar_angle(const Eigen::Matrix2d& L) { return std::atan2(L(1, 0) - L(0, 1), L(0, 0) + L(1, 1)); }
 
 TEST(RarapMorph, InterpolatesBothPoses) {
-  for (const auto& [from, to] : {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
+  for (const auto& [from, to] :
+       {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
     const RarapMorph morph(from, to, kCentre);
     EXPECT_LT(distance(morph.at(0.0), from), 1e-12);
     EXPECT_LT(distance(morph.at(1.0), to), 1e-12);
@@ -86,8 +87,7 @@ TEST(RarapMorph, NotTheSamBetweenSimilarPoses) {
 }
 
 TEST(RarapMorph, RefusesOppositeOrientations) {
-  EXPECT_THROW(RarapMorph(test::kFig2From, test::pose(1.0, 0.0, 0.0, -1.0, 0.0, 0.0), kCentre),
-               std::invalid_argument);
+  EXPECT_THROW(RarapMorph(test::kFig2From, test::pose(1.0, 0.0, 0.0, -1.0, 0.0, 0.0), kCentre), std::invalid_argument);
 }
 
 }  // namespace

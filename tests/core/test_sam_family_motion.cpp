@@ -5,19 +5,17 @@
 // 3D motion must be the 2D motion with z carried along. (Both dimensions run
 // the same template, tested in 2D by test_pose_motion.cpp and
 // test_sam_splines.cpp; the comparison checks the 3D SAM under it.)
-#include "core/sam_family_motion.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "core/pose_motion.hpp"
+#include "core/sam_family_motion.hpp"
 #include "pose_test_support.hpp"
 #include "support/matrix_functions.hpp"
 
@@ -129,8 +127,8 @@ TEST(PoseMotion3, BezierEndsAndBiarcPassesTheMiddlePose) {
 }
 
 TEST(PoseMotion3, VelocityIsTheDerivative) {
-  for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam,
-                                  PoseMethod::biarc_sam}) {
+  for (const PoseMethod method :
+       {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam, PoseMethod::biarc_sam}) {
     const PoseMotion3 motion(method, kPoses);
     for (const double t : {0.1, 0.3, 0.55, 0.9}) {
       const double h = 1e-6;

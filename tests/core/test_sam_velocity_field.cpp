@@ -2,12 +2,11 @@
 // SAM paper Sec. 6.2, SAM Eq. 7, Fig. 8), against an independent oracle: Eigen's
 // generic matrix log and exp (MatrixFunctions) and the fixed point solved
 // directly, and against the SAM's own samples by finite differences.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
 #include <Eigen/Dense>
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/sam_velocity_field.hpp"
@@ -41,8 +40,8 @@ TEST(SamVelocityField, IsEquation7WithTheFixedPoint) {
   const Eigen::Vector2d q = (Eigen::Matrix2d::Identity() - A.L).partialPivLu().solve(A.b);
   ASSERT_TRUE(field.fixed_point().has_value());
   EXPECT_NEAR((*field.fixed_point() - q).norm(), 0.0, 1e-12);
-  for (const Eigen::Vector2d& x : {Eigen::Vector2d(-1.0, -2.6), Eigen::Vector2d(7.0, 5.4), Eigen::Vector2d(3.0, 2.0),
-                                  Eigen::Vector2d(0.5, 4.0)}) {
+  for (const Eigen::Vector2d& x :
+       {Eigen::Vector2d(-1.0, -2.6), Eigen::Vector2d(7.0, 5.4), Eigen::Vector2d(3.0, 2.0), Eigen::Vector2d(0.5, 4.0)}) {
     const Eigen::Vector2d expected = log_L * (x - q);  // SAM Eq. 7, t_N = 0 (1 is no eigenvalue)
     EXPECT_NEAR((field.at(x) - expected).norm(), 0.0, 1e-12) << x.transpose();
   }

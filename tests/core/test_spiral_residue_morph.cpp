@@ -1,10 +1,10 @@
 // ASAP, Fig. 2 (c) of the SAM paper (core/spiral_residue_morph.hpp): a log
 // spiral for position, orientation and uniform scale, and a linear residue.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/spiral_residue_morph.hpp"
@@ -21,7 +21,8 @@ const Eigen::Vector2d kSpiralCentre(1.0 / 3.0, 1.0 / 3.0);
 Point point_of(const Eigen::Vector2d& x) { return {x.x(), x.y()}; }
 
 TEST(SpiralResidueMorph, InterpolatesBothPoses) {
-  for (const auto& [from, to] : {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
+  for (const auto& [from, to] :
+       {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
     const SpiralResidueMorph morph(from, to, kSpiralCentre);
     EXPECT_LT(distance(morph.at(0.0), from), 1e-12);
     EXPECT_LT(distance(morph.at(1.0), to), 1e-12);

@@ -1,10 +1,9 @@
 // ARA (core/steadiness.hpp): 0 for a SAM and for each span of a polySAM,
 // clearly positive for the unsteady motions (SAM paper Sec. 2.4).
-#include <gtest/gtest.h>
-
 #include <vector>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "core/steadiness.hpp"
 #include "pose_test_support.hpp"
@@ -35,7 +34,8 @@ TEST(Steadiness, AraGridSpansTheBoxOfTheVertices) {
 }
 
 TEST(Steadiness, SamIsSteadyOthersAreNot) {
-  const double sam = average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
+  const double sam =
+      average_relative_acceleration(PoseMotion(PoseMethod::sam, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
   const double linear =
       average_relative_acceleration(PoseMotion(PoseMethod::linear, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
   const std::vector<TimedPose> three = {{0.0, kSamFig2B}, {0.5, kMiddle}, {1.0, kSamFig2C}};
@@ -84,7 +84,8 @@ TEST(Steadiness, SpaceMeasureAgreesWithThePlaneAndFindsTheSamSteady) {
   std::vector<Eigen::Vector3d> flat;
   for (const Eigen::Vector2d& p : kTriangle) flat.emplace_back(p.x(), p.y(), 0.0);
   for (const PoseMethod method : {PoseMethod::linear, PoseMethod::sam}) {
-    const double plane = average_relative_acceleration(PoseMotion(method, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
+    const double plane =
+        average_relative_acceleration(PoseMotion(method, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
     const double space = average_relative_acceleration(
         PoseMotion3(method, {{0.0, embedded(kSamFig2B)}, {1.0, embedded(kSamFig2C)}}, 0), flat);
     EXPECT_NEAR(space, plane, 1e-6 * (1.0 + plane)) << info(method).id;
@@ -94,7 +95,8 @@ TEST(Steadiness, SpaceMeasureAgreesWithThePlaneAndFindsTheSamSteady) {
   const Affine3 to{1.5 * Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 2).normalized()).toRotationMatrix(),
                    Eigen::Vector3d(3, -1, 2)};
   const std::vector<Eigen::Vector3d> tetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  const double sam = average_relative_acceleration(PoseMotion3(PoseMethod::sam, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
+  const double sam =
+      average_relative_acceleration(PoseMotion3(PoseMethod::sam, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
   const double linear =
       average_relative_acceleration(PoseMotion3(PoseMethod::linear, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
   EXPECT_LT(sam, 1e-6);

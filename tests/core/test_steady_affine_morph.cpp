@@ -1,14 +1,13 @@
 // The Steady Affine Morph of the plane and of space, one template
 // (src/core/steady_affine_morph.cpp). The 2D SAM's properties are tested
 // beside the 2D EAR (test_affine_power.cpp, suite SteadyAffineMorph).
-#include "core/steady_affine_morph.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include "core/steady_affine_morph.hpp"
 
 namespace pita {
 namespace {

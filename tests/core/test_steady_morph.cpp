@@ -1,6 +1,5 @@
 // Steady morph, steady average and steady transport (Sec. 2.5-2.7).
 #include "core/steady_morph.hpp"
-
 #include "core/steady_transport.hpp"
 #include "test_support.hpp"
 
@@ -41,9 +40,7 @@ TEST(SteadyMorph, IsSymmetric) {
   for (int i = 0; i < 300; ++i) {
     const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
     const double t = s.uniform(-1, 2);
-    EXPECT_TRUE(arrows_near(steady_morph(0.0, A, 1.0, B, t), steady_morph(1.0, B, 0.0, A, t),
-                            1e-10, 10.0, false))
-        << i;
+    EXPECT_TRUE(arrows_near(steady_morph(0.0, A, 1.0, B, t), steady_morph(1.0, B, 0.0, A, t), 1e-10, 10.0, false)) << i;
   }
 }
 
@@ -78,8 +75,7 @@ TEST(SteadyMorph, IsSimilarityCovariant) {
     const Arrow A = s.arrow(Config::wild), B = s.arrow(Config::wild);
     const Twirl S = twirl(s.point(), std::exp(s.uniform(-1, 1)), s.uniform(-7, 7));
     const double t = s.uniform(-1, 2);
-    EXPECT_TRUE(arrows_near(steady_morph(S * A, S * B, t),
-                            S * steady_morph(A, B, t), 1e-9, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_morph(S * A, S * B, t), S * steady_morph(A, B, t), 1e-9, 10.0, false));
   }
 }
 
@@ -94,8 +90,8 @@ TEST(SteadyTransport, MovesByTheMorphSimilarity) {
     // Windings: the twirl A -> M(A,B,t) has winding t (B.w - A.w) exactly.
     EXPECT_TRUE(arrows_near(steady_transport(C, A, B, t), via_frame, 1e-9, 10.0, false));
     EXPECT_TRUE(arrows_near(steady_transport(A, A, B, t), steady_morph(A, B, t), 1e-12, 10.0, false));
-    EXPECT_TRUE(arrows_near(steady_transport(C, 1.0, A, 3.0, B, 1.0 + 2.0 * t),
-                            steady_transport(C, A, B, t), 1e-12, 10.0, false));
+    EXPECT_TRUE(arrows_near(steady_transport(C, 1.0, A, 3.0, B, 1.0 + 2.0 * t), steady_transport(C, A, B, t), 1e-12,
+                            10.0, false));
   }
 }
 

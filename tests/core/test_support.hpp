@@ -3,13 +3,13 @@
 // which frame differs and by how much (libigl's tests/test_common.h habit).
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/arrow.hpp"
 #include "core/keyframe.hpp"
@@ -22,9 +22,9 @@ inline constexpr double kPi = std::numbers::pi;
 
 // Kinds of random configurations the property suites run over.
 enum class Config {
-  tame,        // magnitudes within e^{+-0.7}, windings in (-pi, pi], even knots
-  uneven,      // tame arrows, middle knot anywhere in [0.2, 0.8]
-  wild,        // magnitudes over 1e-2..1e2 and windings up to +-20 (several turns)
+  tame,    // magnitudes within e^{+-0.7}, windings in (-pi, pi], even knots
+  uneven,  // tame arrows, middle knot anywhere in [0.2, 0.8]
+  wild,    // magnitudes over 1e-2..1e2 and windings up to +-20 (several turns)
 };
 
 struct Sampler {
@@ -48,8 +48,7 @@ struct Sampler {
 inline double extent(const KeyframeTriple& k) {
   double e = 0.0;
   for (const Keyframe* x : {&k.a, &k.b, &k.c}) {
-    e = std::max({e, std::abs(x->arrow.p - k.b.arrow.p), std::abs(x->arrow.q() - k.b.arrow.p),
-                  x->arrow.m});
+    e = std::max({e, std::abs(x->arrow.p - k.b.arrow.p), std::abs(x->arrow.q() - k.b.arrow.p), x->arrow.m});
   }
   return e;
 }
@@ -66,8 +65,7 @@ inline std::vector<double> sample_times(const KeyframeTriple& k, int n = 13, dou
   return ts;
 }
 
-inline std::unique_ptr<Motion> motion(Method m, const KeyframeTriple& k,
-                                      const MethodOptions& o = {}) {
+inline std::unique_ptr<Motion> motion(Method m, const KeyframeTriple& k, const MethodOptions& o = {}) {
   return make_pita(m, k, o);
 }
 
@@ -89,8 +87,8 @@ inline double winding_distance(double w1, double w2, bool modulo_turns) {
 
 // Checks that two arrows agree: p and q within tol * scale, m relatively, and
 // w exactly or modulo 2 pi. Reports the field and the size of the difference.
-inline ::testing::AssertionResult arrows_near(const Arrow& actual, const Arrow& expected,
-                                              double tol, double scale, bool winding_modulo) {
+inline ::testing::AssertionResult arrows_near(const Arrow& actual, const Arrow& expected, double tol, double scale,
+                                              bool winding_modulo) {
   const double dp = std::abs(actual.p - expected.p) / scale;
   const double dq = std::abs(actual.q() - expected.q()) / scale;
   const double dm = std::abs(actual.m - expected.m) / std::max(std::abs(expected.m), 1e-300);
@@ -103,8 +101,8 @@ inline ::testing::AssertionResult arrows_near(const Arrow& actual, const Arrow& 
   if (what.empty()) return ::testing::AssertionSuccess();
   char buf[256];
   std::snprintf(buf, sizeof buf, " [actual p=(%.12g,%.12g) m=%.12g w=%.12g; expected p=(%.12g,%.12g) m=%.12g w=%.12g]",
-                actual.p.real(), actual.p.imag(), actual.m, actual.w, expected.p.real(),
-                expected.p.imag(), expected.m, expected.w);
+                actual.p.real(), actual.p.imag(), actual.m, actual.w, expected.p.real(), expected.p.imag(), expected.m,
+                expected.w);
   return ::testing::AssertionFailure() << what << buf;
 }
 

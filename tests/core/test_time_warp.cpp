@@ -1,9 +1,9 @@
 // Time warps (src/core/time_warp.cpp): the ease over the knot range or per
 // span, arc length, and the identity outside the knots (docs/paper-notes.md N20).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
+
+#include <gtest/gtest.h>
 
 #include "core/time_warp.hpp"
 

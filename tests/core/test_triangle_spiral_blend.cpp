@@ -1,10 +1,10 @@
 // TSB, Fig. 2 (d) of the SAM paper (core/triangle_spiral_blend.hpp): each
 // side's log spiral, their blend with weight 1/2 per vertex, the pose through
 // the blended vertices.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+
+#include <gtest/gtest.h>
 
 #include "core/affine_power.hpp"
 #include "core/steady_affine_morph.hpp"
@@ -18,7 +18,8 @@ using test::distance;
 using test::kUnitTriangle;
 
 TEST(TriangleSpiralBlend, InterpolatesBothPoses) {
-  for (const auto& [from, to] : {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
+  for (const auto& [from, to] :
+       {std::pair{test::kFig2From, test::kFig2To}, std::pair{test::kOtherFrom, test::kOtherTo}}) {
     const TriangleSpiralBlend morph(from, to, kUnitTriangle);
     EXPECT_LT(distance(morph.at(0.0), from), 1e-12);
     EXPECT_LT(distance(morph.at(1.0), to), 1e-12);

@@ -1,7 +1,6 @@
 // Twirls (PITA Eq. 5-8) and the twirl between two arrows (PITA Eq. 17-19), checked
 // against plain complex arithmetic f + m e^{iw}(x - f) as the oracle.
 #include "core/twirl.hpp"
-
 #include "test_support.hpp"
 
 namespace pita::test {
@@ -52,8 +51,7 @@ TEST(Twirl, FixedPointIsFixedAndMatchesEq19) {
     EXPECT_NEAR(std::abs((T * *f) - *f), 0.0, 1e-10 * (1 + std::abs(*f)));
     // docs/paper-notes.md N1: f = (B.p - lambda A.p) / (1 - lambda), lambda = m e^{iw}.
     const Complex lambda = std::polar(B.m / A.m, B.w - A.w);
-    EXPECT_NEAR(std::abs(*f - (B.p - lambda * A.p) / (1.0 - lambda)), 0.0,
-                1e-10 * (1 + std::abs(*f)));
+    EXPECT_NEAR(std::abs(*f - (B.p - lambda * A.p) / (1.0 - lambda)), 0.0, 1e-10 * (1 + std::abs(*f)));
   }
 }
 

@@ -1,14 +1,14 @@
 // The one worker pool (src/core/worker_pool.hpp): results consumed in index
 // order whatever the order they finish in, at most `window` ahead, and every
 // way of stopping early (consume, tick, an exception) ends every worker.
-#include <gtest/gtest.h>
-
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <thread>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/worker_pool.hpp"
 
@@ -94,8 +94,7 @@ TEST(WorkerPool, TickReturningFalseStopsAndTheStopIsVisibleToTasks) {
         saw_stop = saw_stop || stopping.load();
         return 0;
       },
-      [](std::int64_t, int&&) { return true; },
-      [&] { return started.load() == 0; });  // stop once a task runs
+      [](std::int64_t, int&&) { return true; }, [&] { return started.load() == 0; });  // stop once a task runs
   EXPECT_EQ(consumed, 0);
   EXPECT_GE(started.load(), 1);
   EXPECT_LE(started.load(), 2);  // the two workers' first tasks; no other began after the stop
@@ -127,11 +126,11 @@ TEST(WorkerPool, TheFirstExceptionIsRethrownAfterEveryWorkerEnded) {
                    [](std::int64_t i, std::int64_t&&) -> bool { throw std::logic_error(std::to_string(i)); },
                    [] { return true; }),
                std::logic_error);
-  EXPECT_THROW(run_ordered(
-                   10, threads_and_window(2, 0), [](std::int64_t i, const std::atomic<bool>&) { return i; },
-                   [](std::int64_t, std::int64_t&&) { return true; },
-                   []() -> bool { throw std::out_of_range("tick"); }),
-               std::out_of_range);
+  EXPECT_THROW(
+      run_ordered(
+          10, threads_and_window(2, 0), [](std::int64_t i, const std::atomic<bool>&) { return i; },
+          [](std::int64_t, std::int64_t&&) { return true; }, []() -> bool { throw std::out_of_range("tick"); }),
+      std::out_of_range);
 }
 
 TEST(WorkerPool, NoTasksNoCallsAndMoreThreadsThanTasks) {

@@ -2,15 +2,14 @@
 // (src/golden/check.cpp): where the files live, what a missing, identical,
 // tolerably or really different file gives, and a whole scene checked
 // against goldens written in a scratch directory.
-#include "golden/check.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "golden/check.hpp"
 
 namespace pita::golden {
 namespace {
@@ -20,9 +19,8 @@ namespace fs = std::filesystem;
 class GoldenCheck : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pita-test-golden-check-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("pita-test-golden-check-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -38,7 +36,8 @@ class GoldenCheck : public ::testing::Test {
   // A P6 scene whose middle keyframe has x = `middle_x`.
   static std::string scene(const std::string& middle_x) {
     return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0.4},
-      {"t": 0.5, "p": [)" + middle_x + R"(, 1.5], "m": 0.6, "w": 2.0}, {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
+      {"t": 0.5, "p": [)" +
+           middle_x + R"(, 1.5], "m": 0.6, "w": 2.0}, {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}]})";
   }
 
   fs::path dir_;
@@ -83,7 +82,8 @@ TEST_F(GoldenCheck, IdenticalBytesMatchWithoutBeingParsed) {
 
 TEST_F(GoldenCheck, SvgGeometryIsComparedWithinItsTolerance) {
   const fs::path golden = write("g.svg", R"(<svg><path d="M 0 0 L 1 1"/></svg>)");
-  const FileCheck close = compare_file(FileKind::svg, golden, R"(<svg><path d="M 0 0 L 1 1.0001"/></svg>)", Tolerances{});
+  const FileCheck close =
+      compare_file(FileKind::svg, golden, R"(<svg><path d="M 0 0 L 1 1.0001"/></svg>)", Tolerances{});
   EXPECT_EQ(close.verdict, Verdict::match);
   EXPECT_EQ(close.detail, "geometry within 0.001 px");
   const FileCheck moved = compare_file(FileKind::svg, golden, R"(<svg><path d="M 0 0 L 1 2"/></svg>)", Tolerances{});
@@ -91,7 +91,8 @@ TEST_F(GoldenCheck, SvgGeometryIsComparedWithinItsTolerance) {
   EXPECT_EQ(moved.detail, "1 of 4 SVG numbers differ by more than 0.001 px; the worst, number 3, is 2 instead of 1");
   Tolerances loose;
   loose.svg = 2.0;
-  EXPECT_EQ(compare_file(FileKind::svg, golden, R"(<svg><path d="M 0 0 L 1 2"/></svg>)", loose).verdict, Verdict::match);
+  EXPECT_EQ(compare_file(FileKind::svg, golden, R"(<svg><path d="M 0 0 L 1 2"/></svg>)", loose).verdict,
+            Verdict::match);
 }
 
 TEST_F(GoldenCheck, UnreadableGoldensAreGoldenErrorsNamingTheFile) {
@@ -100,8 +101,7 @@ TEST_F(GoldenCheck, UnreadableGoldensAreGoldenErrorsNamingTheFile) {
     compare_file(FileKind::data, data, R"({"panels": []})", Tolerances{});
     FAIL() << "no error";
   } catch (const GoldenError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind(data.string() + ":1:4: malformed JSON: ", 0), 0u)
-        << error.what();
+    EXPECT_EQ(std::string(error.what()).rfind(data.string() + ":1:4: malformed JSON: ", 0), 0u) << error.what();
   }
   const fs::path png = write("g.png", "not a PNG");
   try {

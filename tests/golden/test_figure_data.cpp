@@ -1,13 +1,12 @@
 // The numbers a figure draws, as JSON (src/golden/figure_data.cpp): one item
 // per shape with its layer and frame, the panel's extent, and the text form
 // that reads back exactly.
-#include "golden/figure_data.hpp"
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <string>
 
+#include <gtest/gtest.h>
+
+#include "golden/figure_data.hpp"
 #include "golden_support.hpp"
 
 namespace pita::golden {
@@ -86,7 +85,9 @@ TEST(FigureData, TextHasOneItemPerLineAndReadsBackExactly) {
   const std::string text = figure_data_text(data);
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + 1 + 6 + 1 + 1);
   EXPECT_EQ(text.rfind("{\"scene\": \"fig\", \"panels\": [\n{\"pointer\": \"/panels/0\", \"title\": ", 0), 0u) << text;
-  EXPECT_NE(text.find("\n  {\"layer\":\"/layers/0\",\"index\":0,\"polyline\":[[0.0,0.0],[3.0,4.0]]},\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n  {\"layer\":\"/layers/0\",\"index\":0,\"polyline\":[[0.0,0.0],[3.0,4.0]]},\n"),
+            std::string::npos)
+      << text;
   EXPECT_NE(text.find("0.1,"), std::string::npos) << text;
   EXPECT_EQ(text.substr(text.size() - 6), "]}\n]}\n");
   const Json back = Json::parse(text);

@@ -1,10 +1,9 @@
 // PNG comparison (golden/image_compare.hpp) on images drawn here with cairo.
-#include <gtest/gtest.h>
-
-#include <cairo.h>
-
 #include <cstring>
 #include <string>
+
+#include <cairo.h>
+#include <gtest/gtest.h>
 
 #include "golden/image_compare.hpp"
 
@@ -67,7 +66,10 @@ TEST(ImageCompare, DiffImageIsRedExactlyWhereImagesDiffer) {
   const ImageComparison reread = compare_png(c.diff_png, c.diff_png, {0, 0.0});  // decodes
   EXPECT_TRUE(reread.matches);
   // Decode the diff and count saturated red pixels.
-  struct Reader { const std::string* bytes; std::size_t at; } reader{&c.diff_png, 0};
+  struct Reader {
+    const std::string* bytes;
+    std::size_t at;
+  } reader{&c.diff_png, 0};
   cairo_surface_t* s = cairo_image_surface_create_from_png_stream(
       [](void* closure, unsigned char* data, unsigned int length) {
         auto* r = static_cast<Reader*>(closure);

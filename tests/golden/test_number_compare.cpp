@@ -1,9 +1,8 @@
 // Golden numbers (src/golden/number_compare.cpp): what must match, what must
 // not, and what the messages name.
-#include "golden/number_compare.hpp"
-
 #include <gtest/gtest.h>
 
+#include "golden/number_compare.hpp"
 #include "golden_support.hpp"
 
 namespace pita::golden {

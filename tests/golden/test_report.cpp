@@ -1,17 +1,16 @@
 // The report of `pita check --report DIR` (src/golden/report.cpp): one
 // index.html listing every scene, and the expected, actual and diff images
 // (and SVGs) of the scenes that differ, written as given.
-#include "golden/report.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "golden/report.hpp"
 
 namespace pita::golden {
 namespace {
@@ -21,9 +20,8 @@ namespace fs = std::filesystem;
 class Report : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pita-test-report-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("pita-test-report-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -36,21 +34,27 @@ class Report : public ::testing::Test {
   fs::path dir_;
 };
 
-FileCheck file(FileKind kind, Verdict verdict, std::string expected, std::string actual,
-               std::string diff = "") {
-  return FileCheck{kind, "golden/x/x" + std::string(suffix(kind)), verdict, "detail <" + std::string(suffix(kind)) + ">",
-                   std::move(expected), std::move(actual), std::move(diff)};
+FileCheck file(FileKind kind, Verdict verdict, std::string expected, std::string actual, std::string diff = "") {
+  return FileCheck{kind,
+                   "golden/x/x" + std::string(suffix(kind)),
+                   verdict,
+                   "detail <" + std::string(suffix(kind)) + ">",
+                   std::move(expected),
+                   std::move(actual),
+                   std::move(diff)};
 }
 
 TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
-  ReportEntry same{SceneCheck{"scenes/same.json", "same",
-                              {file(FileKind::data, Verdict::match, "d", "d"),
-                               file(FileKind::svg, Verdict::match, "s", "s"),
-                               file(FileKind::png, Verdict::match, "P", "P")},
-                              {},
-                              {}},
-                   ""};
-  ReportEntry moved{SceneCheck{"scenes/moved.json", "moved",
+  ReportEntry same{
+      SceneCheck{"scenes/same.json",
+                 "same",
+                 {file(FileKind::data, Verdict::match, "d", "d"), file(FileKind::svg, Verdict::match, "s", "s"),
+                  file(FileKind::png, Verdict::match, "P", "P")},
+                 {},
+                 {}},
+      ""};
+  ReportEntry moved{SceneCheck{"scenes/moved.json",
+                               "moved",
                                {file(FileKind::data, Verdict::differs, "d1", "d2"),
                                 file(FileKind::svg, Verdict::differs, "<svg>1</svg>", "<svg>2</svg>"),
                                 file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")},
@@ -63,8 +67,11 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
   const std::string html = read("index.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<p>3 scene(s) checked, 2 differ or could not be checked.</p>"), std::string::npos) << html;
-  EXPECT_NE(html.find("<tr><td><a href=\"#same\">same</a></td><td class=\"match\">match</td></tr>"), std::string::npos) << html;
-  EXPECT_NE(html.find("<tr><td><a href=\"#moved\">moved</a></td><td class=\"DIFFERS\">DIFFERS</td></tr>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<tr><td><a href=\"#same\">same</a></td><td class=\"match\">match</td></tr>"), std::string::npos)
+      << html;
+  EXPECT_NE(html.find("<tr><td><a href=\"#moved\">moved</a></td><td class=\"DIFFERS\">DIFFERS</td></tr>"),
+            std::string::npos)
+      << html;
   EXPECT_NE(html.find("<td class=\"ERROR\">ERROR</td>"), std::string::npos) << html;
   // Names, paths and messages are escaped.
   EXPECT_NE(html.find("bad&lt;&amp;&gt;"), std::string::npos) << html;
@@ -88,13 +95,14 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
 // Every claim is listed, held or not; a failed one marks its scene though
 // its goldens match, and no image is written for it.
 TEST_F(Report, ListsEveryClaim) {
-  ReportEntry claimed{SceneCheck{"scenes/c.json", "c",
-                                 {file(FileKind::data, Verdict::match, "d", "d"),
-                                  file(FileKind::png, Verdict::match, "P", "P")},
-                                 {{"/claims/0", "P8 is <soft>", true, "scale-step of panel 3 = 0.06, below 0.24"},
-                                  {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}},
-                                 {}},
-                      ""};
+  ReportEntry claimed{
+      SceneCheck{"scenes/c.json",
+                 "c",
+                 {file(FileKind::data, Verdict::match, "d", "d"), file(FileKind::png, Verdict::match, "P", "P")},
+                 {{"/claims/0", "P8 is <soft>", true, "scale-step of panel 3 = 0.06, below 0.24"},
+                  {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}},
+                 {}},
+      ""};
   write_report(dir_, {claimed});
   const std::string html = read("index.html");
   EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
@@ -114,8 +122,8 @@ TEST_F(Report, ListsEveryClaim) {
 TEST_F(Report, ListsEveryLintFinding) {
   lint::Report findings;
   findings.findings.push_back({"text-over-data", "/layers/3", "the label \"<q>\" lies over /layers/0", "", ""});
-  findings.findings.push_back({"same-color", "/layers/2", "items 1 and 2 are both #d08000", "the inner control poses",
-                               "/lint/allow/0"});
+  findings.findings.push_back(
+      {"same-color", "/layers/2", "items 1 and 2 are both #d08000", "the inner control poses", "/lint/allow/0"});
   ReportEntry linted{SceneCheck{"scenes/l.json", "l", {file(FileKind::data, Verdict::match, "d", "d")}, {}, findings},
                      ""};
   write_report(dir_, {linted});
@@ -131,13 +139,14 @@ TEST_F(Report, ListsEveryLintFinding) {
 
 // A new scene: no golden, so no expected image; the actual one is written.
 TEST_F(Report, MissingGoldenHasNoExpectedImage) {
-  ReportEntry fresh{SceneCheck{"scenes/new.json", "new",
-                               {file(FileKind::data, Verdict::missing, "", "d"),
-                                file(FileKind::svg, Verdict::missing, "", "<svg/>"),
-                                file(FileKind::png, Verdict::missing, "", "ACTUAL")},
-                               {},
-                               {}},
-                    ""};
+  ReportEntry fresh{
+      SceneCheck{"scenes/new.json",
+                 "new",
+                 {file(FileKind::data, Verdict::missing, "", "d"), file(FileKind::svg, Verdict::missing, "", "<svg/>"),
+                  file(FileKind::png, Verdict::missing, "", "ACTUAL")},
+                 {},
+                 {}},
+      ""};
   write_report(dir_, {fresh});
   const std::string html = read("index.html");
   EXPECT_NE(html.find("<td><em>none</em><br>expected (golden)</td>"), std::string::npos) << html;

@@ -1,18 +1,19 @@
 // Comparing SVG figures by their geometry (src/golden/svg_compare.cpp): the
 // numbers of attribute values outside <defs>, compared with a tolerance in
 // pixels, and what the message says.
-#include "golden/svg_compare.hpp"
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
-#include <string>
-#include <vector>
+#include "golden/svg_compare.hpp"
 
 namespace pita::golden {
 namespace {
 
 TEST(SvgCompare, ReadsGeometryNotIdsOrGlyphs) {
-  const std::string svg = R"(<svg width="100px" version="1.1"><defs><symbol id="glyph0-1"><path d="M 1 2 L 3 4"/></symbol></defs>
+  const std::string svg =
+      R"(<svg width="100px" version="1.1"><defs><symbol id="glyph0-1"><path d="M 1 2 L 3 4"/></symbol></defs>
 <g id="surface12"><path style="stroke-width:0.8;" d="M 10.5 20 L -3e2 .5 "/><use xlink:href="#glyph0-1" x="7" y="8"/></g></svg>)";
   const std::vector<double> numbers = svg_numbers(svg);
   EXPECT_EQ(numbers, (std::vector<double>{100, 0.8, 10.5, 20, -300, 0.5, 7, 8}));
@@ -29,12 +30,12 @@ TEST(SvgCompare, FormattingChangesMatchAndMovesDoNot) {
   EXPECT_EQ(c.worst, 3u);
   EXPECT_DOUBLE_EQ(c.difference, 0.5);
   EXPECT_FALSE(compare_svg(a, extra, 1e-3).matches);
-  EXPECT_NE(describe(compare_svg(a, extra, 1e-3), 1e-3).find("6 numbers where the golden has 4"),
-            std::string::npos);
+  EXPECT_NE(describe(compare_svg(a, extra, 1e-3), 1e-3).find("6 numbers where the golden has 4"), std::string::npos);
 }
 
 TEST(SvgCompare, SkipsNamesIdsNamespacesAndText) {
-  const std::string svg = R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" version="1.1" id="s2">
+  const std::string svg =
+      R"svg(<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" version="1.1" id="s2">
 <g transform="matrix(1,0,0,1,5.5,-6)" fill="rgb(20%,40%,60%)"><text x='+3' y="1e1">123</text></g></svg>)svg";
   EXPECT_EQ(svg_numbers(svg), (std::vector<double>{1, 0, 0, 1, 5.5, -6, 20, 40, 60, 3, 10}));
   // An unterminated <defs> hides the rest.

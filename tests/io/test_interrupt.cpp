@@ -3,17 +3,16 @@
 // released is not, and a full registry or an overlong path is refused rather
 // than left unprotected. The handler itself is tested through the real binary
 // (tests/cli/test_interrupt.cpp).
-#include "io/interrupt.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include "io/interrupt.hpp"
 
 namespace pita::io {
 namespace {
@@ -23,9 +22,8 @@ namespace fs = std::filesystem;
 class InFlight : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pita-test-interrupt-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("pita-test-interrupt-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -2,13 +2,6 @@
 // whole, replace what was there, leave no temporary file behind (nor one
 // registered for the interrupt cleanup), get the ordinary permissions, a set
 // of files is written all or none, and a failure names the path and the reason.
-#include "io/output_file.hpp"
-
-#include <gtest/gtest.h>
-
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
 #include <filesystem>
@@ -20,7 +13,12 @@
 #include <utility>
 #include <vector>
 
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "io/interrupt.hpp"
+#include "io/output_file.hpp"
 
 namespace pita::io {
 namespace {
@@ -30,9 +28,8 @@ namespace fs = std::filesystem;
 class OutputFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pita-test-output-file-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / ("pita-test-output-file-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -17,8 +17,8 @@ inline std::string arrow_scene(const std::string& rest,
   return R"({"method": "P6", "samples": 9,
     "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 1.2}, {"t": 0.5, "p": [3, 1.5], "m": 0.7, "w": 2},
                   {"t": 1, "p": [6, 0], "m": 1.3, "w": 1.9}],
-    "canvas": )" + canvas +
-         (rest.empty() ? std::string() : ", " + rest) + "}";
+    "canvas": )" +
+         canvas + (rest.empty() ? std::string() : ", " + rest) + "}";
 }
 
 inline Report lint_text(const std::string& json) {

@@ -1,9 +1,8 @@
 // Each check of the lint (src/lint/checks.cpp) on a scene made to trip it,
 // and the same scene with the defect removed, which it must pass.
-#include "lint/checks.hpp"
-
 #include <gtest/gtest.h>
 
+#include "lint/checks.hpp"
 #include "lint_support.hpp"
 #include "scene/lint_settings.hpp"
 
@@ -15,9 +14,7 @@ using test::count;
 using test::lint_text;
 using test::listed;
 
-TEST(LintChecks, OneFunctionPerCheckOfTheTable) {
-  EXPECT_EQ(check_functions().size(), scene::kLintChecks.size());
-}
+TEST(LintChecks, OneFunctionPerCheckOfTheTable) { EXPECT_EQ(check_functions().size(), scene::kLintChecks.size()); }
 
 TEST(LintChecks, AFigureWithRoomIsClean) {
   const Report report = lint_text(arrow_scene(R"("layers": [{"type": "pattern"}, {"type": "keyframes"},
@@ -60,7 +57,8 @@ TEST(LintChecks, TextOverlap) {
 TEST(LintChecks, LegendOverData) {
   // A legend of five lines in a low panel: the room it gets above the drawing is capped at a
   // third of the panel, and it lies on the trajectory along the top of the view.
-  const std::string dense = R"("canvas": {"width": 300, "height": 150, "margin": 0, "view": {"min": [0, 0], "max": [6, 6]}},
+  const std::string dense =
+      R"("canvas": {"width": 300, "height": 150, "margin": 0, "view": {"min": [0, 0], "max": [6, 6]}},
       "layers": [{"type": "trajectory", "point": "p"}, {"type": "legend", "corner": "top-left"}],
       "keyframes": [{"t": 0, "p": [0, 5.8], "m": 1, "w": 0}, {"t": 0.5, "p": [3, 5.8], "m": 1, "w": 0},
                     {"t": 1, "p": [6, 5.8], "m": 1, "w": 0}])";
@@ -74,8 +72,9 @@ TEST(LintChecks, LegendOverData) {
 
 TEST(LintChecks, OutsideThePanel) {
   // A fixed view that leaves out the last keyframe, and a label beyond the canvas.
-  const Report cut = lint_text(arrow_scene(R"("layers": [{"type": "keyframes"}, {"type": "label", "text": "far away", "at": [7.5, 0]}])",
-                                           R"({"width": 600, "height": 400, "view": {"min": [-1, -2], "max": [4, 3]}})"));
+  const Report cut = lint_text(
+      arrow_scene(R"("layers": [{"type": "keyframes"}, {"type": "label", "text": "far away", "at": [7.5, 0]}])",
+                  R"({"width": 600, "height": 400, "view": {"min": [-1, -2], "max": [4, 3]}})"));
   EXPECT_EQ(count(cut, "outside"), 2) << listed(cut);
   bool keyframes = false, label = false;
   for (const Finding& f : cut.findings) {
@@ -84,7 +83,8 @@ TEST(LintChecks, OutsideThePanel) {
   }
   EXPECT_TRUE(keyframes && label) << listed(cut);
   // A title wider than the canvas.
-  const Report title = lint_text(arrow_scene(R"("title": "a title far too long for a canvas that is only six hundred pixels wide, at eighteen pixels",
+  const Report title = lint_text(arrow_scene(
+      R"("title": "a title far too long for a canvas that is only six hundred pixels wide, at eighteen pixels",
       "layers": [{"type": "pattern"}])"));
   ASSERT_EQ(count(title, "outside"), 1) << listed(title);
   EXPECT_EQ(title.findings[0].pointer, "/title");

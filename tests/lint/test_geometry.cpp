@@ -1,10 +1,9 @@
 // The figure as the lint sees it (src/lint/geometry.cpp): each text, stroke
 // and legend lands on the canvas where the painter puts it, tagged with its
 // layer (the geometry of edges and boxes: tests/render/test_canvas_geometry.cpp).
-#include "lint/geometry.hpp"
-
 #include <gtest/gtest.h>
 
+#include "lint/geometry.hpp"
 #include "lint_support.hpp"
 
 namespace pita::lint {
@@ -15,7 +14,8 @@ namespace {
 // /layers/0, one segment each, inside the panel.
 TEST(LintGeometry, LabelsAndFramesLandWhereThePainterPutsThem) {
   const scene::Scene scene = scene::parse_scene(
-      test::arrow_scene(R"("layers": [{"type": "pattern"}, {"type": "label", "text": "Hello", "at": [3, -1], "size": 20}])"),
+      test::arrow_scene(
+          R"("layers": [{"type": "pattern"}, {"type": "label", "text": "Hello", "at": [3, -1], "size": 20}])"),
       "test.json");
   const render::Figure figure = render::build_figure(scene);
   const FigureGeometry geometry = figure_geometry(scene, figure);

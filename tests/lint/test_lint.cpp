@@ -1,10 +1,9 @@
 // The lint of a scene (src/lint/lint.cpp): a scene accepts a finding with its
 // reason, by check and pointer (a panel's entry covers its layers), and an
 // entry that accepts nothing is reported.
-#include "lint/lint.hpp"
-
 #include <gtest/gtest.h>
 
+#include "lint/lint.hpp"
 #include "lint_support.hpp"
 
 namespace pita::lint {
@@ -39,8 +38,8 @@ TEST(Lint, AnotherPointerOrCheckDoesNotAccept) {
 }
 
 TEST(Lint, AnEntryWithoutPointerAcceptsTheCheckEverywhere) {
-  const Report report =
-      lint_text(arrow_scene(kOver + R"(, "lint": {"allow": [{"check": "text-over-data", "reason": "labels on frames"}]})"));
+  const Report report = lint_text(
+      arrow_scene(kOver + R"(, "lint": {"allow": [{"check": "text-over-data", "reason": "labels on frames"}]})"));
   EXPECT_TRUE(report.clean());
 }
 

@@ -3,12 +3,12 @@
 // refused, by a SceneError or a motion::NoMotion, with exactly the pointer (or
 // line and column) and the reason of its .expect file. The same cases through the pita binary:
 // tests/cli/test_bad_scenes_cli.cpp.
-#include <gtest/gtest.h>
-
 #include <exception>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "../bad_scene_cases.hpp"
 #include "motion/scene_motion.hpp"
@@ -69,8 +69,7 @@ TEST_P(BadScene, IsRefusedWithItsPointerAndReason) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, BadScene, ::testing::ValuesIn(test::bad_scene_cases()),
-                         test::bad_scene_test_name);
+INSTANTIATE_TEST_SUITE_P(Files, BadScene, ::testing::ValuesIn(test::bad_scene_cases()), test::bad_scene_test_name);
 
 }  // namespace
 }  // namespace pita::scene

@@ -2,10 +2,10 @@
 // the scene's own motion, which is not the first panel's when the panels
 // change the method, or a panel's; a panel the scene does not have is refused
 // with the count; a panel whose motion does not exist fails the whole scene.
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "motion/evaluation.hpp"
 #include "motion/no_motion.hpp"

@@ -1,8 +1,8 @@
 // Moving keyframes (src/motion/moving_keyframes.cpp, PITA Sec. 7.4).
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
+
+#include <gtest/gtest.h>
 
 #include "core/steady_morph.hpp"
 #include "motion/moving_keyframes.hpp"
@@ -72,8 +72,9 @@ TEST(MovingKeyframes, PanelsMoveTheirOwnKeyframes) {
   const scene::Scene half = scene_at(scene, 0.5);
   ASSERT_EQ(half.panels.size(), 2u);
   EXPECT_LT(frame_distance(arrow_keys(half.panels[0]).keyframes[0].arrow, arrow_keys(half).keyframes[0].arrow), 1e-15);
-  EXPECT_LT(frame_distance(arrow_keys(half.panels[1]).keyframes[2].arrow, steady_morph(arrow_keys(scene.panels[1]).keyframes[2].arrow,
-                                                                           arrow_keys(scene.panels[1]).keyframes_to[2], 0.5)),
+  EXPECT_LT(frame_distance(arrow_keys(half.panels[1]).keyframes[2].arrow,
+                           steady_morph(arrow_keys(scene.panels[1]).keyframes[2].arrow,
+                                        arrow_keys(scene.panels[1]).keyframes_to[2], 0.5)),
             1e-15);
   // The pattern at tau goes through the keyframes at tau.
   const SceneMotion motion = build_motion(half, half.panels[1]);

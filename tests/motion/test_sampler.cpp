@@ -1,9 +1,9 @@
 // The sampler (src/motion/sampler.cpp): uniform times and frames.
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
@@ -24,9 +24,7 @@ TEST(UniformTimes, EvenlySpacedWithExactEnds) {
   }
 }
 
-TEST(UniformTimes, MiddleSampleOfAnOddCountIsTheMidpoint) {
-  EXPECT_EQ(uniform_times(0.0, 1.0, 9)[4], 0.5);
-}
+TEST(UniformTimes, MiddleSampleOfAnOddCountIsTheMidpoint) { EXPECT_EQ(uniform_times(0.0, 1.0, 9)[4], 0.5); }
 
 TEST(UniformTimes, NeedsTwoSamples) {
   EXPECT_THROW(uniform_times(0.0, 1.0, 1), std::invalid_argument);
@@ -77,7 +75,8 @@ TEST(WriteFrames, ChunksJoinIntoTheWholeDocument) {
       joined += chunks[i];
     }
     const std::vector<Frame> frames = sample_arrows(motion, times);
-    EXPECT_EQ(joined, format == FramesFormat::json ? scene::frames_to_json("P6", frames) : scene::frames_to_csv(frames));
+    EXPECT_EQ(joined,
+              format == FramesFormat::json ? scene::frames_to_json("P6", frames) : scene::frames_to_csv(frames));
   }
 }
 

@@ -1,12 +1,12 @@
 // The motion stage (src/motion/scene_motion.cpp): one build per scene or
 // panel for arrows and poses, the typed NoMotion error with its pointer, and
 // timing applied on top of the method.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numeric>
 #include <string>
 #include <utility>
+
+#include <gtest/gtest.h>
 
 #include "core/ease.hpp"
 #include "core/pitas/registry.hpp"
@@ -186,7 +186,8 @@ TEST(SceneMotion, NoMotionNamesTheKeyframesAndTheMethod) {
   // P7 at kappa = -1: A and C both against B with its magnitude.
   const scene::Scene scene = scene::parse_scene(R"({"method": "P7", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 3.141592653589793}, {"t": 0.5, "p": [1, 0], "m": 1, "w": 0},
-      {"t": 1, "p": [2, 0], "m": 1, "w": 3.141592653589793}]})", "s.json");
+      {"t": 1, "p": [2, 0], "m": 1, "w": 3.141592653589793}]})",
+                                                "s.json");
   const std::string error = error_of(scene);
   EXPECT_EQ(error.rfind("/keyframes | method P7 (Ra-Pe) has no motion through these keyframes: ", 0), 0u) << error;
 }
@@ -195,12 +196,15 @@ TEST(SceneMotion, ArcLengthOfAStillPointIsRefusedAtItsPointer) {
   // Every keyframe starts at the origin: P1's point p never moves.
   const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
-      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "p"}})", "s.json");
-  EXPECT_EQ(error_of(scene), "/timing/arc_length | cannot pace P1 (Pa-Ca) by the arc length of p: the path "
-                             "has zero length: the point does not move");
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "p"}})",
+                                                "s.json");
+  EXPECT_EQ(error_of(scene),
+            "/timing/arc_length | cannot pace P1 (Pa-Ca) by the arc length of p: the path "
+            "has zero length: the point does not move");
   EXPECT_NO_THROW((void)build_motion(scene::parse_scene(R"({"method": "P1", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
-      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "q"}})", "s.json")));
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}], "timing": {"arc_length": "q"}})",
+                                                        "s.json")));
 }
 
 TEST(SceneMotion, PanelsGetTheirOwnMotionAndPointer) {
@@ -220,9 +224,8 @@ TEST(SceneMotion, PanelsGetTheirOwnMotionAndPointer) {
 }
 
 TEST(SceneMotion, TimingAtTheTopIsEveryPanelsDefault) {
-  const scene::Scene scene = scene::parse_scene("{\"method\": \"P6\", " + kKeyframes +
-                                                    R"(, "timing": {"ease": "sine"}, "panels": ["P1", "P6"]})",
-                                                "s.json");
+  const scene::Scene scene = scene::parse_scene(
+      "{\"method\": \"P6\", " + kKeyframes + R"(, "timing": {"ease": "sine"}, "panels": ["P1", "P6"]})", "s.json");
   for (const scene::Panel& panel : scene.panels) EXPECT_EQ(panel.timing.ease, *find_named_ease("sine"));
 }
 
@@ -363,8 +366,9 @@ TEST(SceneMotion, SpaceArcLengthOfAStillPointIsRefusedAtItsPointer) {
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 1, "matrix": [[0, -1, 0, 0], [1, 0, 0, 0], [0, 0, 1, 0]]}], "timing": {"arc_length": "p"}})",
                                                 "s.json");
-  EXPECT_EQ(error_of(scene), "/timing/arc_length | cannot pace SAM by the arc length of p: the path has zero "
-                             "length: the point does not move");
+  EXPECT_EQ(error_of(scene),
+            "/timing/arc_length | cannot pace SAM by the arc length of p: the path has zero "
+            "length: the point does not move");
 }
 
 }  // namespace

@@ -3,10 +3,10 @@
 // NoMotion until asked, a pose panel without poses having none, and the
 // derived motions (another method, a layer's options, other keyframes)
 // equal to the motions of the panels they describe.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/pitas/registry.hpp"
 #include "motion/scene_motion.hpp"
@@ -97,8 +97,7 @@ TEST(Stage, APanelWithoutAMotionKeepsItsErrorUntilAsked) {
 }
 
 TEST(Stage, APosePanelWithoutPosesHasNoMotionAndPassesTheCheck) {
-  const scene::Scene scene = scene::parse_scene(
-      R"({"method": "SAM", "layers": [{"type": "existence"}]})", "e.json");
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SAM", "layers": [{"type": "existence"}]})", "e.json");
   const Stage stage(scene);
   ASSERT_EQ(stage.size(), 1u);
   EXPECT_FALSE(stage.has_motion(0));

@@ -19,9 +19,7 @@ inline scene::Panel panel(Method method, std::vector<Keyframe> keyframes, int sa
 }
 
 inline std::vector<Keyframe> three_keyframes() {
-  return {{0.0, Arrow{{0.0, 0.0}, 1.0, 1.2}},
-          {0.5, Arrow{{3.0, 1.5}, 0.7, 2.0}},
-          {1.0, Arrow{{6.0, 0.0}, 1.3, 1.9}}};
+  return {{0.0, Arrow{{0.0, 0.0}, 1.0, 1.2}}, {0.5, Arrow{{3.0, 1.5}, 0.7, 2.0}}, {1.0, Arrow{{6.0, 0.0}, 1.3, 1.9}}};
 }
 
 inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<scene::Panel> panels) {
@@ -36,8 +34,7 @@ inline scene::Scene scene_with(std::vector<scene::Layer> layers, std::vector<sce
 // Eight panels (P1-P8) of the same keyframes, four columns, titled.
 inline scene::Scene eight_panels() {
   std::vector<scene::Panel> panels;
-  for (Method m : {Method::P1, Method::P2, Method::P3, Method::P4, Method::P5, Method::P6,
-                   Method::P7, Method::P8}) {
+  for (Method m : {Method::P1, Method::P2, Method::P3, Method::P4, Method::P5, Method::P6, Method::P7, Method::P8}) {
     panels.push_back(panel(m, three_keyframes()));
   }
   scene::Scene s = scene_with({scene::PatternLayer{}, scene::KeyframesLayer{}}, panels);

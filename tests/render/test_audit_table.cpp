@@ -1,14 +1,14 @@
 // The property table (src/render/audit_table.cpp): one filled cell per
 // method and property, coloured by the verdict, ringed where the paper
 // prints otherwise; and the "property-table" layer that draws it in a panel.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "analysis/audit.hpp"
 #include "analysis/paper_table.hpp"
-#include "render/figure.hpp"
 #include "render/audit_table.hpp"
+#include "render/figure.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::render {

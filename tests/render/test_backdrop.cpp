@@ -1,15 +1,14 @@
 // The backdrop of raster animation frames (src/render/backdrop.cpp): painted
 // over the backdrop, a figure has exactly the pixels of painting it whole,
 // wherever the backdrop is used; where that cannot be promised it is not used.
-#include <gtest/gtest.h>
-
-#include <cairo.h>
-
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <string>
 #include <variant>
+
+#include <cairo.h>
+#include <gtest/gtest.h>
 
 #include "render/backdrop.hpp"
 #include "render/figure.hpp"

@@ -1,12 +1,12 @@
 // The work budget of a figure (src/render/budget.cpp): the estimate made
 // before drawing, its refusal naming the field that dominates, and that the
 // estimate does not undercount what is really drawn.
-#include <gtest/gtest.h>
-
 #include <chrono>
 #include <filesystem>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "render/budget.hpp"
 #include "render/figure.hpp"
@@ -66,15 +66,14 @@ double drawn_units(const Drawing& drawing) {
 // Issue 11: within every field's limit, 64 panels x 64 layers x 10 000 frames
 // ran out of memory after 2.6 GB. It is refused before anything is drawn.
 TEST(Budget, PanelsTimesLayersTimesSamplesIsRefusedNamingTheLayers) {
-  const scene::Scene s = arrow_scene(
-      "\"layers\": [" + repeated(R"({"type": "pattern", "samples": 10000})", 64) + "], \"panels\": [" +
-      repeated("\"P6\"", 64) + "]");
+  const scene::Scene s = arrow_scene("\"layers\": [" + repeated(R"({"type": "pattern", "samples": 10000})", 64) +
+                                     "], \"panels\": [" + repeated("\"P6\"", 64) + "]");
   const auto start = std::chrono::steady_clock::now();
   const std::string e = budget_error(s);
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));  // no drawing
   EXPECT_NE(e.find("big.json: /layers: 4096 layer drawings, the largest 10000 "
-                                       "frames of a pattern: the figure would draw about 737 "
-                                       "million points, beyond the budget of 2 million"),
+                   "frames of a pattern: the figure would draw about 737 "
+                   "million points, beyond the budget of 2 million"),
             std::string::npos)
       << e;
   EXPECT_THROW(build_figure(s), RenderError);
@@ -85,7 +84,7 @@ TEST(Budget, PanelsTimesLayersTimesSamplesIsRefusedNamingTheLayers) {
 TEST(Budget, TopLevelSamplesFeedingAFigureKeepTheFigureLimit) {
   const std::string e = budget_error(arrow_scene(R"("samples": 1000000, "layers": [{"type": "pattern"}])"));
   EXPECT_NE(e.find("big.json: /samples: 1000000 frames for the figure's layers "
-                                       "exceeds the figure limit of 10000"),
+                   "exceeds the figure limit of 10000"),
             std::string::npos)
       << e;
   // The same samples for eval, with layers that have their own: drawn.
@@ -114,8 +113,7 @@ TEST(Budget, TheDominantFieldIsNamedByItsPointer) {
   const std::string field = budget_error(arrow_scene(
       R"("layers": [{"type": "trajectory", "samples": 100000}, {"type": "stroke", "samples": 10000}], "panels": [)" +
       repeated(R"("P6")", 40) + "]"));
-  EXPECT_NE(field.find("big.json: /layers/1/samples: 10000 frames of a stroke in each of 40 places"),
-            std::string::npos)
+  EXPECT_NE(field.find("big.json: /layers/1/samples: 10000 frames of a stroke in each of 40 places"), std::string::npos)
       << field;
 }
 
@@ -129,14 +127,14 @@ TEST(Budget, ExistenceCellsAndShapesCount) {
             std::string::npos)
       << budget_error(cells);
   std::string polygon = "[";
-  for (int i = 0; i < 10000; ++i) polygon += (i ? ", [" : "[") + std::to_string(i % 7) + ", " + std::to_string(i % 5) + "]";
+  for (int i = 0; i < 10000; ++i)
+    polygon += (i ? ", [" : "[") + std::to_string(i % 7) + ", " + std::to_string(i % 5) + "]";
   polygon += "]";
-  const scene::Scene shapes = scene::parse_scene(
-      "{" + poses + R"(, "shapes": [)" + repeated("{\"polygon\": " + polygon + "}", 64) +
-          R"(], "layers": [{"type": "shapes", "samples": 100}]})",
-      "shapes.json");
-  EXPECT_NE(budget_error(shapes).find("shapes.json: /layers/0/samples: 100 frames of shapes"),
-            std::string::npos)
+  const scene::Scene shapes =
+      scene::parse_scene("{" + poses + R"(, "shapes": [)" + repeated("{\"polygon\": " + polygon + "}", 64) +
+                             R"(], "layers": [{"type": "shapes", "samples": 100}]})",
+                         "shapes.json");
+  EXPECT_NE(budget_error(shapes).find("shapes.json: /layers/0/samples: 100 frames of shapes"), std::string::npos)
       << budget_error(shapes);
 }
 
@@ -164,21 +162,21 @@ TEST(Budget, PngPixelsHaveABudget) {
 // length is the budget that catches it, after layout and before painting.
 TEST(Budget, LongLinesInAPngHaveABudget) {
   std::string zigzag = "[";
-  for (int i = 0; i < 10000; ++i) zigzag += (i ? ", [" : "[") + std::to_string(i % 7) + ", " + std::to_string(i % 5) + "]";
+  for (int i = 0; i < 10000; ++i)
+    zigzag += (i ? ", [" : "[") + std::to_string(i % 7) + ", " + std::to_string(i % 5) + "]";
   zigzag += "]";
   const std::string poses = R"("method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
                                 {"t": 1, "matrix": [[0, -1, 3], [1, 0, 0]]}])";
-  const scene::Scene s = scene::parse_scene(
-      "{" + poses + R"(, "shapes": [)" + repeated("{\"polyline\": " + zigzag + "}", 16) +
-          R"(], "layers": [{"type": "poses"}, {"type": "shapes", "samples": 3}]})",
-      "zigzag.json");
+  const scene::Scene s =
+      scene::parse_scene("{" + poses + R"(, "shapes": [)" + repeated("{\"polyline\": " + zigzag + "}", 16) +
+                             R"(], "layers": [{"type": "poses"}, {"type": "shapes", "samples": 3}]})",
+                         "zigzag.json");
   const Figure f = build_figure(s);  // within the point budget
   try {
     render_figure(s, f, Format::png);
     ADD_FAILURE() << "no error";
   } catch (const RenderError& e) {
-    EXPECT_NE(std::string(e.what()).find("zigzag.json: /layers/1: the PNG would stroke about"),
-              std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("zigzag.json: /layers/1: the PNG would stroke about"), std::string::npos)
         << e.what();
   }
   EXPECT_NO_THROW(render_figure(s, f, Format::svg));  // vector output is not rasterized here

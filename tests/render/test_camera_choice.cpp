@@ -1,12 +1,11 @@
 // "camera": {"auto": true} (render/camera_choice.hpp): the openness of a
 // posed solid against the closed forms of a cube and a plate, and the
 // direction chosen for a plate that the given camera sees edge-on.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "render/camera_choice.hpp"
 

@@ -1,10 +1,10 @@
 // Shapes on the canvas (render/canvas_geometry.hpp): edges and boxes meet as
 // geometry says, areas hold points by winding, and each shape's outline is
 // its canvas image under the panel's view.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "render/canvas_geometry.hpp"
 
@@ -12,13 +12,13 @@ namespace pita::render {
 namespace {
 
 TEST(CanvasGeometry, SegmentMeetsBox) {
-  const Rect box{10, 10, 20, 10};  // x 10..30, y 10..20
-  EXPECT_TRUE(edge_meets({{0, 15}, {40, 15}}, box));   // through it
-  EXPECT_TRUE(edge_meets({{12, 12}, {14, 14}}, box));  // inside it
-  EXPECT_TRUE(edge_meets({{0, 0}, {20, 15}}, box));    // ends inside
-  EXPECT_FALSE(edge_meets({{0, 0}, {40, 5}}, box));    // above it
-  EXPECT_FALSE(edge_meets({{0, 25}, {40, 25}}, box));  // below, parallel
-  EXPECT_FALSE(edge_meets({{0, 29}, {14, 0}}, box));   // passes the corner (10, 10) on its outer side
+  const Rect box{10, 10, 20, 10};                                // x 10..30, y 10..20
+  EXPECT_TRUE(edge_meets({{0, 15}, {40, 15}}, box));             // through it
+  EXPECT_TRUE(edge_meets({{12, 12}, {14, 14}}, box));            // inside it
+  EXPECT_TRUE(edge_meets({{0, 0}, {20, 15}}, box));              // ends inside
+  EXPECT_FALSE(edge_meets({{0, 0}, {40, 5}}, box));              // above it
+  EXPECT_FALSE(edge_meets({{0, 25}, {40, 25}}, box));            // below, parallel
+  EXPECT_FALSE(edge_meets({{0, 29}, {14, 0}}, box));             // passes the corner (10, 10) on its outer side
   EXPECT_FALSE(edge_meets({{0, 40}, {40, 0}}, {30, 30, 5, 5}));  // the diagonal x + y = 40 misses x, y >= 30
 }
 

@@ -1,11 +1,10 @@
 // Shapes and images carried by an affinity (src/render/carried_shapes.cpp),
 // and an image painted where it belongs (the painter, through cairo).
-#include <gtest/gtest.h>
-
-#include <cairo.h>
-
 #include <filesystem>
 #include <string>
+
+#include <cairo.h>
+#include <gtest/gtest.h>
 
 #include "render/carried_shapes.hpp"
 #include "render/figure.hpp"

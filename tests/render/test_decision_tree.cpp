@@ -2,15 +2,13 @@
 // property-table layer's "trees"): one box per question and per leaf, none
 // over another, a "yes" and a "no" per question, each parent above the
 // middle of its children; an unknown property is the tree's error.
-#include "render/decision_tree.hpp"
-
-#include <gtest/gtest.h>
-
 #include <fstream>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "render/decision_tree.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
 
@@ -61,8 +59,8 @@ TEST(DecisionTreeDrawing, BoxesApartAndParentsOverTheirChildren) {
   EXPECT_EQ(boxes.size(), 5u);  // two questions, three leaves
   EXPECT_EQ(yes, 2);
   EXPECT_EQ(no, 2);
-  for (const std::string expected : {"winding-aware?", "handle-invariant?", "P1 Pa-Ca", "P2 LS-Po", "P3 Pa-LP",
-                                     "HWPKOAL", "W", "H", "a tree"}) {
+  for (const std::string expected :
+       {"winding-aware?", "handle-invariant?", "P1 Pa-Ca", "P2 LS-Po", "P3 Pa-LP", "HWPKOAL", "W", "H", "a tree"}) {
     EXPECT_NE(std::find(texts.begin(), texts.end(), expected), texts.end()) << expected;
   }
   // Boxes on one row do not overlap.
@@ -112,8 +110,15 @@ TEST(DecisionTreeDrawing, TheSchemaNamesEveryProperty) {
   const nlohmann::json schema = nlohmann::json::parse(in);
   std::vector<std::string> names;
   for (const analysis::PropertyInfo& p : analysis::all_properties()) names.emplace_back(p.id);
-  EXPECT_EQ(schema.at("definitions").at("propertyTableLayer").at("properties").at("trees").at("items").at("properties")
-                .at("order").at("items").at("enum"),
+  EXPECT_EQ(schema.at("definitions")
+                .at("propertyTableLayer")
+                .at("properties")
+                .at("trees")
+                .at("items")
+                .at("properties")
+                .at("order")
+                .at("items")
+                .at("enum"),
             nlohmann::json(names));
 }
 

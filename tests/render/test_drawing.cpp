@@ -1,10 +1,10 @@
 // Drawings as numbers (src/render/drawing.cpp): the box of every shape's
 // points and the finiteness check.
-#include "render/drawing.hpp"
+#include <limits>
 
 #include <gtest/gtest.h>
 
-#include <limits>
+#include "render/drawing.hpp"
 
 namespace pita::render {
 namespace {

@@ -1,9 +1,9 @@
 // Whole figures (src/render/figure.cpp): output formats, sizes, determinism.
 // Where the panels go is test_layout.cpp.
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"  // RenderError

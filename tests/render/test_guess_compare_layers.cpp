@@ -6,14 +6,14 @@
 // (PITA Eq. 47 as corrected, N5), and the figures' claims are checked: Fig. B.30's
 // two patterns agree on the left and P10 pops on the right, Fig. 18's moves
 // bring D(1/4) close to E.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/pitas/registry.hpp"
 #include "render/panel_drawing.hpp"
@@ -48,8 +48,8 @@ double printed_value(const std::vector<std::string>& lines, const std::string& p
 
 // Printed with three significant digits ({:.3g}).
 void expect_printed(double printed, double expected, const std::string& what) {
-  EXPECT_LE(std::abs(printed - expected), 5e-3 * std::abs(expected) + 1e-300) << what << ": printed " << printed
-                                                                               << ", recomputed " << expected;
+  EXPECT_LE(std::abs(printed - expected), 5e-3 * std::abs(expected) + 1e-300)
+      << what << ": printed " << printed << ", recomputed " << expected;
 }
 
 double closed_form_discrepancy(const Arrow& A, const Arrow& B) {
@@ -57,9 +57,7 @@ double closed_form_discrepancy(const Arrow& A, const Arrow& B) {
   return (std::norm(B.p - A.p) + std::norm(B.q() - A.q())) * (1.0 / a2 + 1.0 / b2);
 }
 
-double endpoint_gap(const Arrow& A, const Arrow& B) {
-  return std::max(std::abs(A.p - B.p), std::abs(A.q() - B.q()));
-}
+double endpoint_gap(const Arrow& A, const Arrow& B) { return std::max(std::abs(A.p - B.p), std::abs(A.q() - B.q())); }
 
 Arrow core_frame(Method method, const std::vector<Keyframe>& keyframes, double t) {
   return make_motion(method, keyframes)->at(t);
@@ -99,7 +97,8 @@ TEST(GuessesLayer, Fig16PrintsEachPitasDiscrepanciesFromTheGuesses) {
 TEST(GuessesLayer, Fig18FourMovesBringDQuarterCloseToTheTarget) {
   const scene::Scene scene = scene::load_scene(kScenes / "fig18-editing.json");
   ASSERT_EQ(scene.panels.size(), 2u);
-  const scene::Guess target = std::get<scene::GuessesLayer>(scene::figure_of<scene::KeyframeKeys>(scene).layers.at(2)).guesses.at(0);
+  const scene::Guess target =
+      std::get<scene::GuessesLayer>(scene::figure_of<scene::KeyframeKeys>(scene).layers.at(2)).guesses.at(0);
   ASSERT_EQ(target.t, 0.25);
   std::vector<double> distances;
   for (const scene::Panel& panel : scene.panels) {
@@ -114,8 +113,8 @@ TEST(GuessesLayer, Fig18FourMovesBringDQuarterCloseToTheTarget) {
   // Only B moved: A and C are the same in both panels.
   EXPECT_EQ(arrow_keys(scene.panels[0]).keyframes[0].arrow.p, arrow_keys(scene.panels[1]).keyframes[0].arrow.p);
   EXPECT_EQ(arrow_keys(scene.panels[0]).keyframes[2].arrow.q(), arrow_keys(scene.panels[1]).keyframes[2].arrow.q());
-  EXPECT_GT(distances[0], 0.5);                   // the target is visibly off at first
-  EXPECT_LT(distances[1], 0.05);                  // a slight expansion covers it after the moves
+  EXPECT_GT(distances[0], 0.5);   // the target is visibly off at first
+  EXPECT_LT(distances[1], 0.05);  // a slight expansion covers it after the moves
   EXPECT_LT(distances[1], distances[0] / 10.0);
 }
 

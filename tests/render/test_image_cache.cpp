@@ -3,18 +3,16 @@
 // a multi-scene render held every one of them: 815 MB for twelve 4096²
 // images), the image asked for is always there, and a file that is not a PNG
 // or is cut short is named as such, not as "out of memory".
-#include "render/image_cache.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 
+#include <gtest/gtest.h>
+#include <unistd.h>
+
 #include "render/cairo_handles.hpp"
+#include "render/image_cache.hpp"
 
 namespace pita::render {
 namespace {

@@ -1,10 +1,10 @@
 // "place": "auto" labels (render/label_placement.hpp): the spots around a
 // point, and a label over a pattern moved to where its ink meets no data
 // while a free one, and an "at" one, stay where they are.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "render/canvas_geometry.hpp"
 #include "render/figure.hpp"

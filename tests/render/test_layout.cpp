@@ -1,13 +1,12 @@
 // Where panels go and how the plane maps onto them (src/render/layout.cpp):
 // the grid below the title, the view of each panel (given, its own drawing's
 // box, or one shared box) and the similarity that fits it into the plot area.
-#include "render/layout.hpp"
+#include <vector>
 
 #include <gtest/gtest.h>
 
-#include <vector>
-
 #include "render/figure.hpp"
+#include "render/layout.hpp"
 #include "render_support.hpp"
 
 namespace pita::render::test {

@@ -1,13 +1,13 @@
 // The "measures" layer (src/render/measure_text.cpp): the lines it prints for
 // given numbers, and where a panel's drawing puts them (a label at a world
 // point, or a text-only legend in a corner).
-#include <gtest/gtest.h>
-
 #include <initializer_list>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "render/measure_text.hpp"
 #include "render/panel_drawing.hpp"
@@ -54,9 +54,9 @@ std::vector<scene::MeasureName> parsed(std::initializer_list<std::string_view> n
 }
 
 TEST(MeasureText, OneLinePerNameWithTheNumbers) {
-  const std::vector<scene::MeasureName> show = parsed({"discrepancy-max", "path-length", "turning", "winding-range",
-                                      "overreaction",    "pop",         "gain:B.q", "jump:C.t", "ara",
-                                      "turn:B.q"});
+  const std::vector<scene::MeasureName> show =
+      parsed({"discrepancy-max", "path-length", "turning", "winding-range", "overreaction", "pop", "gain:B.q",
+              "jump:C.t", "ara", "turn:B.q"});
   const std::vector<std::string> lines = measure_lines(arrows_measured(), show);
   ASSERT_EQ(lines.size(), show.size());
   EXPECT_EQ(lines[0], "E max: previous 1.5, average 0.0125, pita -");
@@ -73,8 +73,8 @@ TEST(MeasureText, OneLinePerNameWithTheNumbers) {
 
 // One predictor's largest E and when; a predictor without frames is "-".
 TEST(MeasureText, DiscrepancyOfOnePredictor) {
-  const std::vector<std::string> lines = measure_lines(
-      arrows_measured(), parsed({"discrepancy:average", "discrepancy-t:previous", "discrepancy:pita"}));
+  const std::vector<std::string> lines =
+      measure_lines(arrows_measured(), parsed({"discrepancy:average", "discrepancy-t:previous", "discrepancy:pita"}));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[0], "E max (average): 0.0125 at t = 0.5");
   EXPECT_EQ(lines[1], "E max (previous): 1.5 at t = 0.25");
@@ -109,7 +109,9 @@ TEST(MeasureText, PointLinesHaveOnePath) {
 scene::Scene scene_with_layer(const std::string& layer) {
   return scene::parse_scene(R"({"method": "P2", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 1}, {"t": 0.5, "p": [2, 0], "m": 0.8, "w": 1.6},
-      {"t": 1, "p": [0.5, 0], "m": 1.2, "w": 2.2}], "layers": [)" + layer + "]}", "s.json");
+      {"t": 1, "p": [0.5, 0], "m": 1.2, "w": 2.2}], "layers": [)" +
+                                layer + "]}",
+                            "s.json");
 }
 
 TEST(MeasureText, LabelAtAWorldPoint) {

@@ -2,14 +2,13 @@
 // view transform puts them, in their colours, clipped to their panel below
 // its title; arrows get a head; texts and legends are placed as asked.
 // Checked on the pixels of an image surface.
-#include "render/painter.hpp"
-
-#include <gtest/gtest.h>
-
-#include <cairo.h>
-
 #include <cstdint>
 #include <memory>
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+
+#include "render/painter.hpp"
 
 namespace pita::render {
 namespace {
@@ -105,8 +104,8 @@ TEST(Painter, FilledPathsGoWhereTheViewPutsThem) {
 
 TEST(Painter, ShapesAreClippedToTheirCellBelowTheTitle) {
   const Surface canvas(100, 100);
-  const FilledPath everything{{{{-100.0, -100.0}, {100.0, -100.0}, {100.0, 100.0}, {-100.0, 100.0}}},
-                              kGreenColor, 1.0, {}};
+  const FilledPath everything{
+      {{{-100.0, -100.0}, {100.0, -100.0}, {100.0, 100.0}, {-100.0, 100.0}}}, kGreenColor, 1.0, {}};
   paint_drawing(canvas.cr(), with(everything), placement(0, 0, 50, 100, 20.0), "Sans");
   EXPECT_EQ(canvas.pixel(25, 50), kGreen);
   EXPECT_EQ(canvas.pixel(25, 20), kGreen);
@@ -154,13 +153,13 @@ TEST(Painter, ArrowsEndInAHeadAtTheirTip) {
                 placement(0, 0, 100, 100), "Sans");
   EXPECT_EQ(canvas.pixel(74, 51), kRed);  // inside the head, off the body
   EXPECT_EQ(canvas.pixel(74, 48), kRed);
-  EXPECT_EQ(canvas.pixel(60, 51), 0u);    // beside the body
+  EXPECT_EQ(canvas.pixel(60, 51), 0u);  // beside the body
   // The body from y = 49.5 to 50.5 covers half of rows 49 and 50.
   EXPECT_GT(canvas.alpha(40, 50), 64u);
   EXPECT_LT(canvas.alpha(40, 50), 192u);
   EXPECT_GT(canvas.alpha(40, 49), 64u);
-  EXPECT_EQ(canvas.pixel(82, 50), 0u);    // beyond the tip
-  EXPECT_EQ(canvas.pixel(76, 47), 0u);    // beside the head, which narrows to its tip
+  EXPECT_EQ(canvas.pixel(82, 50), 0u);  // beyond the tip
+  EXPECT_EQ(canvas.pixel(76, 47), 0u);  // beside the head, which narrows to its tip
 }
 
 TEST(Painter, TextIsAlignedOnItsX) {
@@ -221,8 +220,8 @@ TEST(Painter, LabelsTakeMarkupOnlyWhenItParses) {
   };
   const auto [markup_first, markup_last] = ink(true);
   const auto [plain_first, plain_last] = ink(false);
-  EXPECT_LT(markup_last - markup_first, 45);   // "F" and a small "A"
-  EXPECT_GT(plain_last - plain_first, 100);    // fourteen characters
+  EXPECT_LT(markup_last - markup_first, 45);  // "F" and a small "A"
+  EXPECT_GT(plain_last - plain_first, 100);   // fourteen characters
   // Drawn through a Label, the same text is markup.
   const Surface canvas(400, 60);
   paint_drawing(canvas.cr(), with(Label{"F<sub>A</sub>", {-10.0, 0.0}, 20.0, kBlueColor}),

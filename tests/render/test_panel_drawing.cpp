@@ -1,19 +1,19 @@
 // Geometry of what is drawn (render/panel_drawing.hpp), checked against the
 // motions themselves and the paper's definitions, not against saved output.
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <complex>
 #include <numbers>
 
+#include <gtest/gtest.h>
+
 #include "core/discrepancy.hpp"
 #include "core/steady_morph.hpp"
 #include "motion/stage.hpp"
 #include "render/panel_drawing.hpp"
-#include "scene/scene.hpp"
 #include "render/spiral.hpp"
 #include "render_support.hpp"
+#include "scene/scene.hpp"
 #include "support/keys.hpp"
 
 namespace pita::render::test {
@@ -143,8 +143,7 @@ TEST(LegendLayer, MethodInThePatternsColourThenTheTrajectoriesDrawn) {
   path.line.dash = {4.0, 3.0};
   scene::PatternLayer frames;
   frames.line.color = Color{0.1, 0.3, 0.8, 1.0};
-  const Drawing d = panel_drawing(
-      scene_with({path, frames, scene::KeyframesLayer{}, scene::LegendLayer{}}, {p}), p);
+  const Drawing d = panel_drawing(scene_with({path, frames, scene::KeyframesLayer{}, scene::LegendLayer{}}, {p}), p);
   ASSERT_EQ(d.legends.size(), 1u);
   const auto& entries = d.legends[0].entries;
   ASSERT_EQ(entries.size(), 5u);  // A, B, C, the method, the path of p
@@ -267,8 +266,10 @@ TEST(PatternLayer, OverlayOptionItsMethodDoesNotReadIsRefused) {
   overlay.options.given = kPathMeanOption;
   scene::figure_of<scene::KeyframeKeys>(p).layers = std::vector<scene::Layer>{overlay};
   EXPECT_THROW(panel_drawing(scene_with({}, {p}), p), RenderError);
-  scene::Panel chained = panel(Method::P6, {{0.0, Arrow{{0, 0}, 1.0, 0.0}}, {1.0, Arrow{{2, 0}, 0.5, 1.0}},
-                                            {2.0, Arrow{{3, 1}, 0.7, 1.5}}, {3.0, Arrow{{5, 0}, 1.0, 2.0}}});
+  scene::Panel chained = panel(Method::P6, {{0.0, Arrow{{0, 0}, 1.0, 0.0}},
+                                            {1.0, Arrow{{2, 0}, 0.5, 1.0}},
+                                            {2.0, Arrow{{3, 1}, 0.7, 1.5}},
+                                            {3.0, Arrow{{5, 0}, 1.0, 2.0}}});
   scene::figure_of<scene::KeyframeKeys>(chained).layers = std::vector<scene::Layer>{overlay};
   EXPECT_NO_THROW(panel_drawing(scene_with({}, {chained}), chained));
 }
@@ -300,8 +301,10 @@ TEST(TrajectoryLayer, OwnMethodDrawsThatMethodsPath) {
     panel_drawing(scene_with({}, {p}), p);
     FAIL() << "expected a RenderError";
   } catch (const RenderError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind("test.json: /panels/0/layers/0/options/permutation: P6 La-LP does not "
-                                              "read \"permutation\"", 0),
+    EXPECT_EQ(std::string(error.what())
+                  .rfind("test.json: /panels/0/layers/0/options/permutation: P6 La-LP does not "
+                         "read \"permutation\"",
+                         0),
               0u)
         << error.what();
   }
@@ -383,8 +386,9 @@ TEST(DiscrepancyLayer, RadiusIsScaleTimesE) {
     const Drawing d = panel_drawing(scene_with({layer}, {p}), p);
     const auto circles = shapes<Circle>(d);
     const auto frames = frames_of(p, 9);
-    const std::size_t first = predictor == scene::Predictor::previous ? 1
-                              : predictor == scene::Predictor::average ? 1 : 3;
+    const std::size_t first = predictor == scene::Predictor::previous  ? 1
+                              : predictor == scene::Predictor::average ? 1
+                                                                       : 3;
     const std::size_t count = predictor == scene::Predictor::average ? 7 : 9 - first;
     ASSERT_EQ(circles.size(), count);
     for (std::size_t k = 0; k < circles.size(); ++k) {
@@ -394,8 +398,8 @@ TEST(DiscrepancyLayer, RadiusIsScaleTimesE) {
       if (predictor == scene::Predictor::average) predicted = steady_average(frames[i - 1], frames[i + 1]);
       if (predictor == scene::Predictor::pita) {
         const double ti = static_cast<double>(i) / 8.0, h = 1.0 / 8.0;
-        const std::vector<Keyframe> seen{{ti - 3 * h, frames[i - 3]}, {ti - 2 * h, frames[i - 2]},
-                                         {ti - h, frames[i - 1]}};
+        const std::vector<Keyframe> seen{
+            {ti - 3 * h, frames[i - 3]}, {ti - 2 * h, frames[i - 2]}, {ti - h, frames[i - 1]}};
         predicted = make_motion(Method::P1, seen)->at(ti);
       }
       // E by its closed form (docs/paper-notes.md N5), independent of PITA Eq. 44-47.
@@ -449,9 +453,8 @@ TEST(TrajectoryLayer, FollowsTheChosenPoint) {
 
 TEST(PanelDrawing, NonexistentMotionIsARenderErrorNamingTheKeyframes) {
   // P8 has no motion when v_A + v_C = -2 v_B (kappa = -1).
-  std::vector<Keyframe> keys{{0.0, Arrow{{0, 0}, 1.0, 0.0}},
-                             {0.5, Arrow{{1, 0}, 1.0, std::numbers::pi}},
-                             {1.0, Arrow{{2, 0}, 1.0, 0.0}}};
+  std::vector<Keyframe> keys{
+      {0.0, Arrow{{0, 0}, 1.0, 0.0}}, {0.5, Arrow{{1, 0}, 1.0, std::numbers::pi}}, {1.0, Arrow{{2, 0}, 1.0, 0.0}}};
   scene::Panel p = panel(Method::P8, keys);
   p.pointer = "/panels/2";
   p.motion_pointer = "/panels/2";  // the panel's method with the scene's keyframes
@@ -459,8 +462,11 @@ TEST(PanelDrawing, NonexistentMotionIsARenderErrorNamingTheKeyframes) {
     panel_drawing(scene_with({scene::PatternLayer{}}, {p}), p);
     FAIL() << "expected a RenderError";
   } catch (const RenderError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind("test.json: /panels/2: method P8 (Lo-Pe) has no motion through "
-                                              "these keyframes: ", 0), 0u)
+    EXPECT_EQ(std::string(error.what())
+                  .rfind("test.json: /panels/2: method P8 (Lo-Pe) has no motion through "
+                         "these keyframes: ",
+                         0),
+              0u)
         << error.what();
   }
 }

@@ -2,16 +2,15 @@
 // (cairo_surface_write_to_png, the independent reference): both files decode
 // to the very same pixels, on every figure of scenes/ and on surfaces with
 // every alpha; pita's files are no larger in all; errors are statuses.
-#include <gtest/gtest.h>
-
-#include <cairo.h>
-#include <png.h>
-
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <string>
 #include <string_view>
+
+#include <cairo.h>
+#include <gtest/gtest.h>
+#include <png.h>
 
 #include "render/cairo_handles.hpp"
 #include "render/figure.hpp"
@@ -42,10 +41,11 @@ std::string decoded(std::string_view png) {
   SurfacePtr surface(cairo_image_surface_create_from_png_stream(read_from, &reader));
   EXPECT_EQ(cairo_surface_status(surface.get()), CAIRO_STATUS_SUCCESS);
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return {};
-  const int width = cairo_image_surface_get_width(surface.get()), height = cairo_image_surface_get_height(surface.get());
+  const int width = cairo_image_surface_get_width(surface.get()),
+            height = cairo_image_surface_get_height(surface.get());
   const int stride = cairo_image_surface_get_stride(surface.get());
-  std::string out = std::to_string(cairo_image_surface_get_format(surface.get())) + " " + std::to_string(width) +
-                    "x" + std::to_string(height) + ":";
+  std::string out = std::to_string(cairo_image_surface_get_format(surface.get())) + " " + std::to_string(width) + "x" +
+                    std::to_string(height) + ":";
   const unsigned char* data = cairo_image_surface_get_data(surface.get());
   for (int y = 0; y < height; ++y) {
     out.append(reinterpret_cast<const char*>(data + static_cast<std::ptrdiff_t>(y) * stride),

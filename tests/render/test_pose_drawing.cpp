@@ -3,8 +3,6 @@
 // checked against an independent computation (Eigen's matrix power and log);
 // in space the painter's order and the faces of a drawn solid. The charts drawn
 // without a motion: tests/render/layers/.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,17 +12,17 @@
 
 #include <Eigen/Core>
 #include <Eigen/Dense>
+#include <gtest/gtest.h>
 
-#include "render/pose_drawing.hpp"
 #include "../core/pose_test_support.hpp"
-#include "support/matrix_functions.hpp"
+#include "render/pose_drawing.hpp"
 #include "support/keys.hpp"
+#include "support/matrix_functions.hpp"
 
 namespace pita::render {
 namespace {
 
 using pita::test::affinity;
-
 
 Eigen::Matrix3d homogeneous(const Affine2& A) {
   Eigen::Matrix3d H = Eigen::Matrix3d::Identity();
@@ -63,14 +61,17 @@ TEST(PoseDrawing, ShapesFollowTheSam) {
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 5u);
   // Independently: A = C B^-1 by Eigen, A^u by Eigen's pow, at u = i/4.
-  const Eigen::Matrix3d B = homogeneous(plane_keys(scene).poses[0].pose), C = homogeneous(plane_keys(scene).poses[1].pose);
+  const Eigen::Matrix3d B = homogeneous(plane_keys(scene).poses[0].pose),
+                        C = homogeneous(plane_keys(scene).poses[1].pose);
   const Eigen::Matrix3d A = C * B.inverse();
   for (int i = 0; i < 5; ++i) {
     const auto& outline = std::get<Polyline>(drawing.items[static_cast<std::size_t>(i)].shape);
     EXPECT_TRUE(outline.closed);
     const Eigen::Matrix3d pose = oracle::pow(A, i / 4.0) * B;
     for (std::size_t k = 0; k < 3; ++k) {
-      EXPECT_LT(std::abs(outline.points[k] - through(pose, scene::figure_of<scene::PlanePoseKeys>(scene).shapes[0].points[k])), 1e-11)
+      EXPECT_LT(std::abs(outline.points[k] -
+                         through(pose, scene::figure_of<scene::PlanePoseKeys>(scene).shapes[0].points[k])),
+                1e-11)
           << "frame " << i << ", vertex " << k;
     }
   }
@@ -84,7 +85,8 @@ TEST(PoseDrawing, SamVelocitiesAreTheLogField) {
   const scene::Scene scene = sam_scene({layer});
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 15u);  // 5 frames x 3 vertices
-  const Eigen::Matrix3d A = homogeneous(plane_keys(scene).poses[1].pose) * homogeneous(plane_keys(scene).poses[0].pose).inverse();
+  const Eigen::Matrix3d A =
+      homogeneous(plane_keys(scene).poses[1].pose) * homogeneous(plane_keys(scene).poses[0].pose).inverse();
   const Eigen::Matrix3d field = oracle::log(A);
   for (const Item& item : drawing.items) {
     const auto& arrow = std::get<ArrowShape>(item.shape);
@@ -136,8 +138,8 @@ TEST(PoseDrawing, PatchCornersAreThePoses) {
   EXPECT_LT(std::abs(corner(0) - through(homogeneous(poses[0].pose), {1.0, 0.0})), 1e-12);
   EXPECT_LT(std::abs(corner(2) - through(homogeneous(poses[1].pose), {1.0, 0.0})), 1e-12);
   EXPECT_LT(std::abs(corner(3) - through(homogeneous(poses[2].pose), {1.0, 0.0})), 1e-12);
-  const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
-                            homogeneous(poses[2].pose);
+  const Eigen::Matrix3d D =
+      homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() * homogeneous(poses[2].pose);
   EXPECT_LT(std::abs(corner(5) - through(D, {1.0, 0.0})), 1e-11);
   plane_keys(scene.panels[0]).poses.resize(2);
   EXPECT_THROW(pose_panel_drawing(scene, scene.panels[0]), RenderError);
@@ -164,8 +166,8 @@ TEST(PoseDrawing, PatchCornerHasItsOwnLine) {
     EXPECT_EQ(line.color.r, corner ? red.r : layer.line.color.r) << k;
   }
   const auto& poses = plane_keys(scene.panels[0]).poses;
-  const Eigen::Matrix3d D = homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() *
-                            homogeneous(poses[2].pose);
+  const Eigen::Matrix3d D =
+      homogeneous(poses[1].pose) * homogeneous(poses[0].pose).inverse() * homogeneous(poses[2].pose);
   EXPECT_LT(std::abs(std::get<Polyline>(drawing.items[11].shape).points[2] - through(D, {0.0, 1.0})), 1e-11);
 }
 
@@ -230,7 +232,8 @@ TEST(PoseDrawing, VersusLayerDrawsAnotherMethodAndItsPowers) {
   layer.power = 1;
   scene::figure_of<scene::PlanePoseKeys>(scene).layers = {layer};
   const Drawing middle = pose_panel_drawing(scene, scene.panels[0]);
-  const Eigen::Matrix3d expected = oracle::exp(Eigen::Matrix3d(0.5 * (oracle::log(homogeneous(B)) + oracle::log(homogeneous(C)))));
+  const Eigen::Matrix3d expected =
+      oracle::exp(Eigen::Matrix3d(0.5 * (oracle::log(homogeneous(B)) + oracle::log(homogeneous(C)))));
   const auto& mid = std::get<Polyline>(middle.items.at(0).shape);
   EXPECT_LT(std::abs(mid.points[1] - through(expected, {1.0, 0.0})), 1e-12);
   // SAM squared at the middle: the last pose.
@@ -266,7 +269,8 @@ TEST(PoseDrawing, VersusLayerPowerThatOverflowsIsRefused) {
   layer.at = {1.0};
   layer.power = 16;
   scene::Scene scene = sam_scene({layer});
-  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {1.0, affinity(1e30, 0.0, 0.0, 0.0, 1e30, 0.0)}};
+  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)},
+                                       {1.0, affinity(1e30, 0.0, 0.0, 0.0, 1e30, 0.0)}};
   try {
     (void)pose_panel_drawing(scene, scene.panels[0]);
     FAIL() << "a pose of scale 1e480 was drawn";
@@ -289,8 +293,10 @@ TEST(PoseDrawing, AraLayerPrintsTheMeasuredUnsteadiness) {
   layer.at = {3.0, -1.0};
   layer.grid = 2;
   scene::Scene scene = sam_scene({layer}, PoseMethod::linear);
-  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)}, {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
-  scene::figure_of<scene::PlanePoseKeys>(scene.panels[0]).shapes = {scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
+  plane_keys(scene.panels[0]).poses = {{0.0, affinity(1.0, 0.0, 0.0, 0.0, 1.0, 0.0)},
+                                       {2.0, affinity(2.0, 0.0, 0.0, 0.0, 2.0, 0.0)}};
+  scene::figure_of<scene::PlanePoseKeys>(scene.panels[0]).shapes = {
+      scene::ShapeOutline{{{-1.0, -1.0}, {1.0, 0.5}, {0.0, 1.0}}, true, std::nullopt, std::nullopt}};
   const Drawing drawing = pose_panel_drawing(scene, scene.panels[0]);
   ASSERT_EQ(drawing.items.size(), 1u);
   const auto& label = std::get<Label>(drawing.items[0].shape);
@@ -321,9 +327,8 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
     return pose_panel_drawing(scene, scene.panels[0]);
   };
   const auto count = [](const Drawing& drawing, auto kind) {
-    return std::count_if(drawing.items.begin(), drawing.items.end(), [](const Item& item) {
-      return std::holds_alternative<decltype(kind)>(item.shape);
-    });
+    return std::count_if(drawing.items.begin(), drawing.items.end(),
+                         [](const Item& item) { return std::holds_alternative<decltype(kind)>(item.shape); });
   };
 
   const Drawing sam = drawn(PoseMethod::sam);
@@ -344,8 +349,8 @@ TEST(PoseDrawing, SweptLayerPrintsTheGrazingParameter) {
   const Drawing rarap = drawn(PoseMethod::rarap);
   const std::string& moving = std::get<Label>(rarap.items.back().shape).text;
   double low = 0.0, high = 0.0;
-  ASSERT_EQ(std::sscanf(moving.c_str(), "grazing parameter s ranges from %lf to %lf over %d times", &low, &high, &times),
-            3)
+  ASSERT_EQ(
+      std::sscanf(moving.c_str(), "grazing parameter s ranges from %lf to %lf over %d times", &low, &high, &times), 3)
       << moving;
   EXPECT_EQ(times, 129);
   const PoseMotion motion(PoseMethod::rarap, {{0.0, Affine2::identity()}, {1.0, last}}, 4,
@@ -374,7 +379,8 @@ scene::Scene space_scene(const std::string& layers) {
       "camera": {"azimuth": 0, "elevation": 0, "distance": 10, "target": [0, 0, 0]},
       "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
                 {"t": 1, "matrix": [[1, 0, 0, -3], [0, 1, 0, 0], [0, 0, 1, 0]]}],
-      "samples": 2, "layers": )" + layers + "}",
+      "samples": 2, "layers": )" +
+                                layers + "}",
                             "s.json");
 }
 

@@ -1,12 +1,11 @@
 // A panel of a pose scene as its layers see it (render/pose_panel.hpp), in
 // the plane and in space: the body's points, the camera's image, the
 // velocity per unit of normalised time, and the errors it names.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "motion/stage.hpp"
 #include "render/pose_panel.hpp"

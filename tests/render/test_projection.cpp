@@ -1,7 +1,5 @@
 // The camera of 3D pose scenes (render/projection.hpp): its projections
 // against their closed forms, and the shading of a face.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -9,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include "render/projection.hpp"
 

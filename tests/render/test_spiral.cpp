@@ -1,15 +1,14 @@
 // The coil that shows an arrow's winding (src/render/spiral.cpp): it turns
 // through w from angle 0, its radius growing linearly from 0.1 m to 0.3 m.
-#include "render/spiral.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 
+#include <gtest/gtest.h>
+
+#include "render/spiral.hpp"
+
 namespace pita::render {
 namespace {
-
 
 TEST(WindingSpiral, StartsAlongXAndEndsInTheArrowsDirection) {
   const Point c{2.0, -1.0};
@@ -43,8 +42,7 @@ TEST(WindingSpiral, PointCountFollowsTheTurnsWithinItsLimits) {
   EXPECT_EQ(winding_spiral({0.0, 0.0}, 1.0, 4.0 * kPi).size(), 146u);
   EXPECT_EQ(winding_spiral({0.0, 0.0}, 1.0, 1e-3).size(), 9u);
   // 1000 turns are drawn with the most points allowed.
-  EXPECT_EQ(winding_spiral({0.0, 0.0}, 1.0, 2000.0 * kPi).size(),
-            static_cast<std::size_t>(kMaxSpiralPoints) + 1u);
+  EXPECT_EQ(winding_spiral({0.0, 0.0}, 1.0, 2000.0 * kPi).size(), static_cast<std::size_t>(kMaxSpiralPoints) + 1u);
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
 // The quad strip of a pattern (src/render/strip.cpp): quads between
 // consecutive frames and their bilinear (along, across) parameterisation.
-#include "render/strip.hpp"
+#include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
-#include <vector>
+#include "render/strip.hpp"
 
 namespace pita::render {
 namespace {

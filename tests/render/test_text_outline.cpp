@@ -1,12 +1,12 @@
 // Sec. 7.3: a banner's outline lies inside the quad strip of its pattern, and
 // the text keeps its shape where the strip is a rectangle.
-#include <gtest/gtest.h>
-
 #include <cmath>
 
-#include "render/text_outline.hpp"
+#include <gtest/gtest.h>
+
 #include "render/panel_drawing.hpp"
 #include "render/strip.hpp"
+#include "render/text_outline.hpp"
 #include "render_support.hpp"
 #include "support/keys.hpp"
 
@@ -96,8 +96,7 @@ TEST(Banner, RectangularStripKeepsTheTextProportional) {
   for (std::size_t c = 0; c < mapped.size(); ++c) {
     for (std::size_t k = 0; k < mapped[c].size(); ++k) {
       const Point x = outline.contours[c][k];
-      const Point expected{(x.real() - outline.left) / w * 10.0,
-                           0.8 - 0.6 * (x.imag() - outline.top) / h};
+      const Point expected{(x.real() - outline.left) / w * 10.0, 0.8 - 0.6 * (x.imag() - outline.top) / h};
       EXPECT_NEAR(std::abs(mapped[c][k] - expected), 0.0, 1e-12);
     }
   }

@@ -1,10 +1,10 @@
 // The "plot" layer (src/render/time_chart.cpp): the distance-time curve placed in
 // its box, the diagonal, the marks at the frame times.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "motion/scene_motion.hpp"
 #include "render/time_chart.hpp"
@@ -16,7 +16,9 @@ namespace {
 scene::Scene p6(const std::string& timing) {
   return scene::parse_scene(R"({"method": "P6", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 0.5, "p": [3, 1.5], "m": 0.6, "w": 2},
-      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])" + timing + "}", "s.json");
+      {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5}])" +
+                                timing + "}",
+                            "s.json");
 }
 
 TEST(Plot, CurveRunsFromTheBoxsLowCornerToItsHighCorner) {
@@ -49,7 +51,8 @@ TEST(Plot, CurveRunsFromTheBoxsLowCornerToItsHighCorner) {
 TEST(Plot, AxesHaveTicksAndTheirEndValues) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "P6", "keyframes": [
       {"t": 2, "p": [0, 0], "m": 1, "w": 0.4}, {"t": 3, "p": [3, 1.5], "m": 0.6, "w": 2},
-      {"t": 4.5, "p": [6, 0], "m": 1.2, "w": 3.5}]})", "s.json");
+      {"t": 4.5, "p": [6, 0], "m": 1.2, "w": 3.5}]})",
+                                                "s.json");
   const motion::SceneMotion motion = motion::build_motion(scene);
   scene::PlotLayer layer;
   layer.box = {Point{0.0, 0.0}, Point{4.0, 2.0}};
@@ -57,8 +60,8 @@ TEST(Plot, AxesHaveTicksAndTheirEndValues) {
   int ticks = 0;
   for (const Item& item : plot_items(layer, motion, {2.0, 4.5}, "/layers/0")) {
     if (const auto* label = std::get_if<Label>(&item.shape)) texts.push_back(label->text);
-    if (const auto* line = std::get_if<Polyline>(&item.shape); line && line->points.size() == 2 &&
-                                                               std::abs(line->points[1] - line->points[0]) < 0.1) {
+    if (const auto* line = std::get_if<Polyline>(&item.shape);
+        line && line->points.size() == 2 && std::abs(line->points[1] - line->points[0]) < 0.1) {
       ++ticks;
     }
   }
@@ -80,7 +83,8 @@ TEST(Plot, MarksCanBeLeftOut) {
 TEST(Plot, StillPointCannotBePlotted) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "P1", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 0.5, "p": [0, 0], "m": 2, "w": 1},
-      {"t": 1, "p": [0, 0], "m": 1, "w": 2}]})", "s.json");
+      {"t": 1, "p": [0, 0], "m": 1, "w": 2}]})",
+                                                "s.json");
   const motion::SceneMotion motion = motion::build_motion(scene);
   EXPECT_THROW(plot_items(scene::PlotLayer{}, motion, {0.0}, "/layers/0"), std::invalid_argument);
   scene::PlotLayer of_q;

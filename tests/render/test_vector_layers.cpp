@@ -4,12 +4,12 @@
 // accelerations are one similarity of the drawn segments to f (PITA Eq. 35), P8's
 // are constant in the drawn frames (PITA Eq. 39), and the placement, colours,
 // scale and errors follow the fields.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <complex>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "render/panel_drawing.hpp"
 #include "render_support.hpp"
@@ -33,7 +33,8 @@ std::vector<T> shapes_of(const Drawing& drawing) {
   return result;
 }
 
-Drawing draw(Method method, std::vector<scene::Layer> layers, int samples = 9, std::vector<Keyframe> keys = even_keyframes()) {
+Drawing draw(Method method, std::vector<scene::Layer> layers, int samples = 9,
+             std::vector<Keyframe> keys = even_keyframes()) {
   const scene::Panel p = panel(method, std::move(keys), samples);
   return panel_drawing(scene_with(std::move(layers), {p}), p);
 }
@@ -67,7 +68,7 @@ TEST(VectorsLayer, P7AccelerationsAreOneSimilarityOfTheSegmentsToF) {
   const Point f = lines[0].points[1];
   Complex S0;
   for (std::size_t i = 0; i < 13; ++i) {
-    EXPECT_EQ(lines[i].points[1], f);                      // one global point
+    EXPECT_EQ(lines[i].points[1], f);                                 // one global point
     EXPECT_LT(std::abs(lines[i].points[0] - arrows[i].from), 1e-12);  // both start at D(t).p
     const Complex S = (arrows[i].to - arrows[i].from) / (f - lines[i].points[0]);
     if (i == 0) S0 = S;
@@ -140,9 +141,10 @@ TEST(FixedPointsLayer, VelocityCenterOfASteadyMotionIsItsFixedPoint) {
 TEST(FixedPointsLayer, NoCenterForATranslatingFrame) {
   // Equal keyframe vectors: kappa = 1, P7 is P1's parabola with f at infinity,
   // and the frame only translates (v' = v'' = 0): no segment is drawn.
-  const std::vector<Keyframe> keys = {{0.0, Arrow{{0.0, 0.0}, 1.0, 0.5}}, {0.5, Arrow{{2.0, 1.0}, 1.0, 0.5}},
-                                      {1.0, Arrow{{4.0, 0.0}, 1.0, 0.5}}};
-  for (const scene::CenterKind center : {scene::CenterKind::global, scene::CenterKind::acceleration, scene::CenterKind::velocity}) {
+  const std::vector<Keyframe> keys = {
+      {0.0, Arrow{{0.0, 0.0}, 1.0, 0.5}}, {0.5, Arrow{{2.0, 1.0}, 1.0, 0.5}}, {1.0, Arrow{{4.0, 0.0}, 1.0, 0.5}}};
+  for (const scene::CenterKind center :
+       {scene::CenterKind::global, scene::CenterKind::acceleration, scene::CenterKind::velocity}) {
     scene::FixedPointsLayer layer;
     layer.center = center;
     EXPECT_TRUE(draw(Method::P7, {layer}, 9, keys).items.empty()) << static_cast<int>(center);

@@ -2,13 +2,12 @@
 // defaults, what each field sets, the frames that duration x fps gives, and
 // "what" following whether a keyframe moves. Refusals through pita:
 // tests/data/bad/animation-*.
-#include "scene/animation_reader.hpp"
-
-#include <gtest/gtest.h>
-
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "scene/animation_reader.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -36,7 +35,8 @@ std::string refusal(const std::string& text, bool moving = false) {
 std::string moving_with(const std::string& extra) {
   return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
     {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, -1], "m": 2, "w": 1}},
-    {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" + extra + "}";
+    {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
+         extra + "}";
 }
 
 TEST(AnimationReader, DefaultsFollowWhetherAKeyframeMoves) {
@@ -124,7 +124,8 @@ TEST(AnimationReader, UnknownFieldsAndWrongTypes) {
   EXPECT_EQ(refusal("[]"), "/animation: the animation must be an object (got array [])");
   EXPECT_EQ(refusal(R"({"fsp": 30})"), "/animation/fsp: unknown field \"fsp\"; did you mean \"fps\"?");
   EXPECT_EQ(refusal(R"({"loop": 1})"), "/animation/loop: must be true or false (got 1)");
-  EXPECT_EQ(refusal(R"({"what": "Motion"})"), "/animation/what: must be \"motion\" or \"pattern\" (got string \"Motion\")");
+  EXPECT_EQ(refusal(R"({"what": "Motion"})"),
+            "/animation/what: must be \"motion\" or \"pattern\" (got string \"Motion\")");
 }
 
 // Through the scene readers: "what" defaults to "pattern" exactly when some

@@ -1,6 +1,5 @@
 // The one writer of points and arrows as JSON (src/scene/arrow_json.cpp).
 #include <gtest/gtest.h>
-
 #include <nlohmann/json.hpp>
 
 #include "scene/arrow_json.hpp"

@@ -2,11 +2,11 @@
 // kind's fields over its defaults. "guesses", "compare": test_arrow_layer_reader_guesses.cpp;
 // "vectors", "fixed-points": test_arrow_layer_reader_vectors.cpp. The pointer and reason of
 // every kind of error: the layers-* files of tests/data/bad/ (test_bad_scenes.cpp).
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
@@ -43,8 +43,8 @@ TEST(Layers, Pattern) {
 }
 
 TEST(Layers, PatternTimesMethodDots) {
-  const PatternLayer layer = only_layer<PatternLayer>(
-      R"({"type": "pattern", "times": [0.25, -1, 3], "method": "pa-po", "dots": true})");
+  const PatternLayer layer =
+      only_layer<PatternLayer>(R"({"type": "pattern", "times": [0.25, -1, 3], "method": "pa-po", "dots": true})");
   EXPECT_EQ(layer.times, (std::vector<double>{0.25, -1, 3}));
   ASSERT_TRUE(layer.method.has_value());
   EXPECT_EQ(*layer.method, Method::PaPo);
@@ -81,8 +81,7 @@ TEST(Layers, Trajectory) {
   EXPECT_EQ(layer.samples, kMaxTrajectorySamples);
   EXPECT_EQ(layer.range->to, 0.5);
   expect_same_line(layer.line, LineStyle{parse_color("cyan"), 100, 0, {1}});
-  EXPECT_EQ(only_layer<TrajectoryLayer>(R"({"type": "trajectory", "point": "q"})").point,
-            TrackedPoint::end);
+  EXPECT_EQ(only_layer<TrajectoryLayer>(R"({"type": "trajectory", "point": "q"})").point, TrackedPoint::end);
   const TrajectoryLayer plain = only_layer<TrajectoryLayer>(R"({"type": "trajectory"})");
   EXPECT_EQ(plain.point, TrackedPoint::start);
   EXPECT_EQ(plain.samples, 512);
@@ -99,8 +98,7 @@ TEST(Layers, Stroke) {
   EXPECT_EQ(layer.samples, 2);
   EXPECT_EQ(layer.range->from, 0.25);
   EXPECT_FALSE(only_layer<StrokeLayer>(R"({"type": "stroke"})").outline.has_value());
-  expect_same_line(*only_layer<StrokeLayer>(R"({"type": "stroke", "outline": {}})").outline,
-                   LineStyle{});
+  expect_same_line(*only_layer<StrokeLayer>(R"({"type": "stroke", "outline": {}})").outline, LineStyle{});
 }
 
 TEST(Layers, Banner) {
@@ -122,8 +120,7 @@ TEST(Layers, Banner) {
   // The length counts characters, not bytes: 1000 two-byte characters fit.
   std::string long_text;
   for (std::size_t i = 0; i < kMaxTextLength; ++i) long_text += "é";
-  EXPECT_EQ(only_layer<BannerLayer>(R"({"type": "banner", "text": ")" + long_text + "\"}").text,
-            long_text);
+  EXPECT_EQ(only_layer<BannerLayer>(R"({"type": "banner", "text": ")" + long_text + "\"}").text, long_text);
 }
 
 TEST(Layers, Discrepancy) {
@@ -137,29 +134,25 @@ TEST(Layers, Discrepancy) {
   expect_same_line(layer.line, LineStyle{parse_color("green"), 0.1, 1, {5}});
   EXPECT_EQ(layer.fill, parse_color("yellow"));
   EXPECT_EQ(layer.samples, 12);
-  const DiscrepancyLayer plain =
-      only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "pita"})");
+  const DiscrepancyLayer plain = only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "pita"})");
   EXPECT_FALSE(plain.method.has_value());  // the panel's method
   EXPECT_FALSE(plain.fill.has_value());
   EXPECT_EQ(plain.scale, 30);
-  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "average"})")
-                .predictor,
+  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "predictor": "average"})").predictor,
             Predictor::average);
-  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy"})").predictor,
-            Predictor::previous);
+  EXPECT_EQ(only_layer<DiscrepancyLayer>(R"({"type": "discrepancy"})").predictor, Predictor::previous);
 }
 
 TEST(Layers, LabelAndLegend) {
-  const LabelLayer label = only_layer<LabelLayer>(
-      R"({"type": "label", "text": "A", "at": [1.5, -2], "size": 200, "color": "#808080"})");
+  const LabelLayer label =
+      only_layer<LabelLayer>(R"({"type": "label", "text": "A", "at": [1.5, -2], "size": 200, "color": "#808080"})");
   EXPECT_EQ(label.text, "A");
   EXPECT_EQ(label.at, make_point(1.5, -2));
   EXPECT_EQ(label.size, 200);
   EXPECT_EQ(label.color, parse_color("gray"));
   EXPECT_EQ(only_layer<LabelLayer>(R"({"type": "label", "text": "B", "at": [0, 0]})").size, 12);
 
-  const LegendLayer legend =
-      only_layer<LegendLayer>(R"({"type": "legend", "corner": "bottom-left", "size": 9})");
+  const LegendLayer legend = only_layer<LegendLayer>(R"({"type": "legend", "corner": "bottom-left", "size": 9})");
   EXPECT_EQ(legend.corner, LegendLayer::Corner::bottom_left);
   EXPECT_EQ(legend.size, 9);
   const LegendLayer plain = only_layer<LegendLayer>(R"({"type": "legend"})");

@@ -1,10 +1,10 @@
 // The "guesses" and "compare" layers of src/scene/arrow_layer_reader.cpp (PITA
 // Figs. 16, 18, B.30; docs/paper-notes.md N53, N54): defaults, fields and
 // errors with their pointers.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
@@ -16,7 +16,6 @@ namespace {
 using test::error_of;
 using test::only_layer;
 using test::p6_with;
-
 
 TEST(GuessesLayerReader, NamesAndColoursByPositionByDefault) {
   const GuessesLayer layer = only_layer<GuessesLayer>(
@@ -55,7 +54,8 @@ TEST(GuessesLayerReader, EveryField) {
 TEST(GuessesLayerReader, ErrorsNameTheField) {
   EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses"}])")).find("/layers/0/guesses: missing required field"),
             std::string::npos);
-  EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": []}])")).find("/layers/0/guesses: must be an array"),
+  EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": []}])"))
+                .find("/layers/0/guesses: must be an array"),
             std::string::npos);
   EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": [{"p": [0, 0], "q": [1, 0]}]}])"))
                 .find("/layers/0/guesses/0/t: missing required field"),
@@ -63,12 +63,17 @@ TEST(GuessesLayerReader, ErrorsNameTheField) {
   EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": [{"t": 0, "p": [0, 0], "q": [0, 0]}]}])"))
                 .find("/layers/0/guesses/0/q"),
             std::string::npos);
-  EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": [{"t": 0, "p": [0, 0], "q": [1, 0], "nmae": "L"}]}])"))
-                .find("/layers/0/guesses/0/nmae"),
-            std::string::npos);
-  EXPECT_NE(error_of(p6_with(R"(, "layers": [{"type": "guesses", "guesses": [{"t": 0, "p": [0, 0], "q": [1, 0]}], "show": ["error"]}])"))
-                .find("/layers/0/show/0"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(
+          p6_with(R"(, "layers": [{"type": "guesses", "guesses": [{"t": 0, "p": [0, 0], "q": [1, 0], "nmae": "L"}]}])"))
+          .find("/layers/0/guesses/0/nmae"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(
+          p6_with(
+              R"(, "layers": [{"type": "guesses", "guesses": [{"t": 0, "p": [0, 0], "q": [1, 0]}], "show": ["error"]}])"))
+          .find("/layers/0/show/0"),
+      std::string::npos);
 }
 
 TEST(CompareLayerReader, MethodRequiredAndDashedOrangeByDefault) {

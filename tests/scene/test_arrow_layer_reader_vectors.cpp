@@ -1,10 +1,10 @@
 // The "vectors" and "fixed-points" layers of src/scene/arrow_layer_reader.cpp:
 // defaults that follow the paper's figures (Figs. 9, 14, 15), the fields, and
 // the errors with their pointers.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
@@ -16,7 +16,6 @@ namespace {
 using test::error_of;
 using test::only_layer;
 using test::p6_with;
-
 
 TEST(VectorsLayerReader, AccelerationsBlackAndBrownByDefault) {
   const VectorsLayer layer = only_layer<VectorsLayer>(R"({"type": "vectors"})");
@@ -64,12 +63,14 @@ TEST(VectorsLayerReader, Errors) {
             "s.json: /layers/0/of: must be \"velocity\" or \"acceleration\" (got string \"jerk\")");
   EXPECT_NE(error(R"({"type": "vectors", "colors": []})").find("/layers/0/colors: must be an array of 1 or 2 colors"),
             std::string::npos);
-  EXPECT_NE(error(R"({"type": "vectors", "colors": ["red", "red", "red"]})").find("/layers/0/colors"), std::string::npos);
+  EXPECT_NE(error(R"({"type": "vectors", "colors": ["red", "red", "red"]})").find("/layers/0/colors"),
+            std::string::npos);
   EXPECT_NE(error(R"({"type": "vectors", "scale": 0})").find("/layers/0/scale"), std::string::npos);
   EXPECT_NE(error(R"({"type": "vectors", "at_point": "middle"})").find("/layers/0/at_point"), std::string::npos);
   // A field of another layer kind says so.
-  EXPECT_NE(error(R"({"type": "vectors", "center": "global"})").find("field \"center\" is not used by a \"vectors\" layer"),
-            std::string::npos);
+  EXPECT_NE(
+      error(R"({"type": "vectors", "center": "global"})").find("field \"center\" is not used by a \"vectors\" layer"),
+      std::string::npos);
 }
 
 TEST(FixedPointsLayerReader, DefaultsAndFields) {

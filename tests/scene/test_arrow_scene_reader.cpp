@@ -1,10 +1,10 @@
 // Arrow scenes (src/scene/arrow_scene_reader.cpp): keyframes in both forms,
 // defaults, samples, options, method names. Refusals: tests/data/bad/.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -13,8 +13,8 @@
 namespace pita::scene {
 namespace {
 
-using test::p6_with;
 using test::error_of;
+using test::p6_with;
 using test::p6_with_middle;
 
 TEST(Scene, ReadsMagnitudeWindingForm) {
@@ -52,10 +52,10 @@ TEST(Scene, DefaultsApplied) {
 }
 
 TEST(Scene, ReadsSamplesAndOptions) {
-  const Scene scene = parse_scene(
-      p6_with(R"(, "samples": 1000000, "options": {"anchor": "midpoint", "path_mean": "arithmetic",
+  const Scene scene =
+      parse_scene(p6_with(R"(, "samples": 1000000, "options": {"anchor": "midpoint", "path_mean": "arithmetic",
                   "magnitude_mean": "harmonic"})"),
-      "s.json");
+                  "s.json");
   EXPECT_EQ(scene.samples, 1000000);
   EXPECT_EQ(track_keys(scene).options.anchor, Anchor::midpoint);
   EXPECT_EQ(track_keys(scene).options.path_mean, MeanKind::arithmetic);
@@ -87,10 +87,10 @@ TEST(Scene, SmaTakesTwoKeyframes) {
 // "handle" (default: the first keyframe); moving keyframes (Sec. 7.4).
 
 TEST(Scene, HandleAndShapesAreRead) {
-  const Scene scene = parse_scene(
-      p6_with(R"(, "handle": {"p": [5, 5], "q": [5, 7]}, "shapes": [{"outline": "square", "color": "red"}],
+  const Scene scene =
+      parse_scene(p6_with(R"(, "handle": {"p": [5, 5], "q": [5, 7]}, "shapes": [{"outline": "square", "color": "red"}],
                  "layers": [{"type": "shapes", "fill": "blue"}, {"type": "handle", "width": 3, "shapes": false}])"),
-      "s.json");
+                  "s.json");
   ASSERT_TRUE(arrow_keys(scene).given_handle.has_value());
   EXPECT_EQ(arrow_keys(scene).given_handle->p, make_point(5, 5));
   EXPECT_EQ(arrow_keys(scene).given_handle->m, 2.0);
@@ -148,7 +148,8 @@ TEST(Scene, ShapesLayersNeedShapes) {
 }
 
 TEST(Scene, HandlesNeedKeyframes) {
-  const std::string points = R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
+  const std::string points =
+      R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
   EXPECT_EQ(error_of(R"({"method": "P6", "points": )" + points + R"(, "handle": {"p": [0, 0], "q": [1, 0]}})"),
             "s.json: /handle: a handle carries shapes with keyframe arrows; a scene of \"points\" has none");
   EXPECT_EQ(error_of(p6_with(R"(, "handle": {"p": [1, 1], "q": [1, 1]})")),

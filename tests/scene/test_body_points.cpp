@@ -1,8 +1,8 @@
 // The points of the body a pose panel moves (src/scene/body_points.cpp): one
 // rule for the figure's layers and pita measure's ARA.
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/body_points.hpp"
 #include "scene/scene.hpp"
@@ -32,7 +32,7 @@ TEST(BodyPoints, SpaceBodyIsTheSolidsVertices) {
   const Scene scene = parse_scene(R"({"dimension": 3, "method": "SAM", "shapes": [{"solid": "cube"}], "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
       {"t": 1, "matrix": [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
-                            "space.json");
+                                  "space.json");
   Panel panel = scene_panel(scene);
   const auto& solids = figure_of<SpacePoseKeys>(scene).shapes;
   ASSERT_EQ(solids.size(), 1u);

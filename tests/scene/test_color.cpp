@@ -1,8 +1,8 @@
 // Colors of a scene (src/scene/color.cpp).
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 
@@ -47,8 +47,9 @@ TEST(Color, RefusesOtherText) {
             "\"#12345\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits (\"#rgb\", "
             "\"#rrggbb\" or \"#rrggbbaa\")");
   EXPECT_EQ(color_error("#ggg").substr(0, 22), "\"#ggg\" is not a color:");
-  EXPECT_EQ(color_error("#"), "\"#\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits "
-                           "(\"#rgb\", \"#rrggbb\" or \"#rrggbbaa\")");
+  EXPECT_EQ(color_error("#"),
+            "\"#\" is not a color: \"#\" must be followed by 3, 6 or 8 hex digits "
+            "(\"#rgb\", \"#rrggbb\" or \"#rrggbbaa\")");
   EXPECT_EQ(color_error("#1234567").substr(0, 26), "\"#1234567\" is not a color:");
   EXPECT_EQ(color_error(" #fff").substr(0, 15), "unknown color \"");
   EXPECT_EQ(color_error("rde"), "unknown color \"rde\"; did you mean \"red\"?");

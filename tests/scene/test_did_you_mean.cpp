@@ -1,10 +1,10 @@
 // "Did you mean" suggestions (src/scene/did_you_mean.cpp).
-#include <gtest/gtest.h>
-
 #include <array>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/did_you_mean.hpp"
 

@@ -2,11 +2,11 @@
 // src/scene/scene.cpp): title, canvas, layers and panels, and their defaults.
 // The pointer and reason of every kind of error: the canvas-*, layers-*,
 // panels-* and title-* files of tests/data/bad/ (test_bad_scenes.cpp).
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"
@@ -25,8 +25,7 @@ Scene p6(const std::string& extra) { return parse_scene(p6_with(extra), "s.json"
 
 Color rgb(double r, double g, double b, double a = 1.0) { return Color{r, g, b, a}; }
 
-void expect_same_keyframes(const std::vector<Keyframe>& actual,
-                           const std::vector<Keyframe>& expected) {
+void expect_same_keyframes(const std::vector<Keyframe>& actual, const std::vector<Keyframe>& expected) {
   ASSERT_EQ(actual.size(), expected.size());
   for (std::size_t i = 0; i < actual.size(); ++i) {
     EXPECT_EQ(actual[i].t, expected[i].t);
@@ -76,7 +75,9 @@ TEST(FigureDefaults, ScenePanelTakesTheScenesSamplesAndOptions) {
   EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, Anchor::midpoint);
 }
 
-TEST(FigureDefaults, EmptyLayersDrawNothing) { EXPECT_TRUE(figure_of<KeyframeKeys>(p6(R"(, "layers": [])")).layers.empty()); }
+TEST(FigureDefaults, EmptyLayersDrawNothing) {
+  EXPECT_TRUE(figure_of<KeyframeKeys>(p6(R"(, "layers": [])")).layers.empty());
+}
 
 TEST(FigureDefaults, WithMethodMovesTheScenePanel) {
   const Scene scene = with_method(p6(""), Method::P1);

@@ -1,11 +1,10 @@
 // The frame writers (src/scene/frames.cpp): exact JSON and CSV forms.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "scene/frames.hpp"
@@ -27,9 +26,7 @@ TEST(FramesToJson, ExactForm) {
             "]}\n");
 }
 
-TEST(FramesToJson, NoFrames) {
-  EXPECT_EQ(frames_to_json("SMA", {}), "{\"method\": \"SMA\", \"frames\": []}\n");
-}
+TEST(FramesToJson, NoFrames) { EXPECT_EQ(frames_to_json("SMA", {}), "{\"method\": \"SMA\", \"frames\": []}\n"); }
 
 TEST(FramesToJson, KeysInOrderAndDoublesRoundTrip) {
   const std::vector<Frame> frames = {
@@ -130,7 +127,8 @@ TEST(FramesPrinter, ARefusedRowLeavesNoTrace) {
     EXPECT_EQ(fmt::to_string(text), before);
     printer.row(text, kTwoFrames[1]);
     printer.tail(text);
-    EXPECT_EQ(fmt::to_string(text), format == FramesFormat::json ? frames_to_json("P6", kTwoFrames) : frames_to_csv(kTwoFrames));
+    EXPECT_EQ(fmt::to_string(text),
+              format == FramesFormat::json ? frames_to_json("P6", kTwoFrames) : frames_to_csv(kTwoFrames));
   }
 }
 

@@ -1,7 +1,7 @@
 // "golden" (src/scene/golden_reader.cpp): a scene's own tolerances.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -14,7 +14,8 @@ using test::p6_with_middle;
 
 TEST(GoldenReader, EveryToleranceIsReadAndTheRestStayUnset) {
   const Scene all = parse_scene(p6_with(R"(, "golden": {"number_tolerance": 1e-6, "svg_tolerance": 0.5,
-      "pixel_tolerance": 20, "max_differing": 0.01})"), "s.json");
+      "pixel_tolerance": 20, "max_differing": 0.01})"),
+                                "s.json");
   EXPECT_EQ(all.golden.numbers, 1e-6);
   EXPECT_EQ(all.golden.svg, 0.5);
   EXPECT_EQ(all.golden.pixel, 20);

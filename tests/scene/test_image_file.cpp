@@ -5,18 +5,16 @@
 // of 1 to kMaxImageSide pixels a side) and the size read from its IHDR
 // header. Each test builds its scene folder in a temporary directory. The
 // same refusals through pita: tests/data/bad/images-*.
-#include "scene/image_file.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
+#include "scene/image_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
@@ -38,7 +36,7 @@ std::string png_header(std::uint32_t width, std::uint32_t height) {
   be32(width);
   be32(height);
   bytes += std::string("\x08\x06\x00\x00\x00", 5);  // 8-bit RGBA, no interlace
-  be32(0);                                            // CRC (not read)
+  be32(0);                                          // CRC (not read)
   return bytes;
 }
 
@@ -103,9 +101,11 @@ TEST_F(ImageFile, SidesUpToTheLimitAreAccepted) {
 
 TEST_F(ImageFile, TooLargeOrEmptyImagesAreRefused) {
   write("scene/too-wide.png", png_header(9000, 10));
-  EXPECT_EQ(refusal("too-wide.png"), "image \"too-wide.png\" is 9000 x 10 pixels; images may have 1 to 8192 pixels a side");
+  EXPECT_EQ(refusal("too-wide.png"),
+            "image \"too-wide.png\" is 9000 x 10 pixels; images may have 1 to 8192 pixels a side");
   write("scene/too-tall.png", png_header(10, kMaxImageSide + 1));
-  EXPECT_EQ(refusal("too-tall.png"), "image \"too-tall.png\" is 10 x 8193 pixels; images may have 1 to 8192 pixels a side");
+  EXPECT_EQ(refusal("too-tall.png"),
+            "image \"too-tall.png\" is 10 x 8193 pixels; images may have 1 to 8192 pixels a side");
   write("scene/empty.png", png_header(0, 10));
   EXPECT_EQ(refusal("empty.png"), "image \"empty.png\" is 0 x 10 pixels; images may have 1 to 8192 pixels a side");
   // A width that would be negative as a signed 32-bit number.
@@ -204,11 +204,10 @@ TEST_F(ImageFile, SceneReaderChecksImageShapes) {
   const auto scene_with = [](const std::string& image) {
     return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
       {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}],
-      "shapes": [{"image": ")" + image + R"(", "box": [[0, 0], [2, 1.5]]}]})";
+      "shapes": [{"image": ")" +
+           image + R"(", "box": [[0, 0], [2, 1.5]]}]})";
   };
-  {
-    std::ofstream(scene_file_) << scene_with("images/wide.png");
-  }
+  { std::ofstream(scene_file_) << scene_with("images/wide.png"); }
   const Scene scene = load_scene(scene_file_);
   ASSERT_EQ(figure_of<KeyframeKeys>(scene).shapes.size(), 1u);
   ASSERT_TRUE(figure_of<KeyframeKeys>(scene).shapes[0].image.has_value());
@@ -216,9 +215,7 @@ TEST_F(ImageFile, SceneReaderChecksImageShapes) {
   EXPECT_EQ(figure_of<KeyframeKeys>(scene).shapes[0].image->width, 300);
 
   const std::string absolute = (root_ / "outside.png").string();
-  {
-    std::ofstream(scene_file_) << scene_with(absolute);
-  }
+  { std::ofstream(scene_file_) << scene_with(absolute); }
   try {
     load_scene(scene_file_);
     ADD_FAILURE() << "an absolute path was accepted without --allow-absolute-paths";

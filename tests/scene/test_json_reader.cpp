@@ -2,10 +2,6 @@
 // JSON Pointers and value texts of messages, the checks of numbers, integers,
 // texts, points, fields and choices. Each error test asserts the pointer and
 // the whole reason (keyframes: test_keyframe_reader.cpp).
-#include "scene/json_reader.hpp"
-
-#include <gtest/gtest.h>
-
 #include <array>
 #include <cmath>
 #include <limits>
@@ -14,6 +10,9 @@
 #include <string_view>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "scene/json_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
 #include "support/keys.hpp"
@@ -90,13 +89,18 @@ TEST(MethodReasons, SayHowManyKeyframesTheMethodTakes) {
 TEST(JsonReader, NumbersMustBeFiniteAndInTheirInterval) {
   EXPECT_EQ(kReader.number(Json(1.25), "/n"), 1.25);
   EXPECT_EQ(failure([] { kReader.number(Json("1"), "/n"); }), "/n: must be a number (got string \"1\")");
-  EXPECT_EQ(failure([] { kReader.number(Json(2.0), "/n", Interval{0.0, 1.0}); }),
+  EXPECT_EQ(failure([] {
+              kReader.number(Json(2.0), "/n", Interval{0.0, 1.0});
+            }),
             "/n: must be between 0 and 1 (got 2)");
-  EXPECT_EQ(failure([] { kReader.number(Json(0.0), "/n", Interval{0.0, kInf, true}); }),
-            "/n: must be > 0 (got 0)");
-  EXPECT_EQ(failure([] { kReader.number(Json(5.0), "/n", Interval{-kInf, 5.0, false, true}); }),
+  EXPECT_EQ(failure([] { kReader.number(Json(0.0), "/n", Interval{0.0, kInf, true}); }), "/n: must be > 0 (got 0)");
+  EXPECT_EQ(failure([] {
+              kReader.number(Json(5.0), "/n", Interval{-kInf, 5.0, false, true});
+            }),
             "/n: must be < 5 (got 5)");
-  EXPECT_EQ(failure([] { kReader.number(Json(0.0), "/n", Interval{0.0, 1.0, true, false}); }),
+  EXPECT_EQ(failure([] {
+              kReader.number(Json(0.0), "/n", Interval{0.0, 1.0, true, false});
+            }),
             "/n: must be > 0 and <= 1 (got 0)");
   EXPECT_EQ(kReader.number(Json(1.0), "/n", Interval{0.0, 1.0}), 1.0);  // closed end
 }
@@ -105,8 +109,7 @@ TEST(JsonReader, IntegersHaveNoFractionalPart) {
   EXPECT_EQ(kReader.integer(Json(3.0), "/i"), 3.0);
   EXPECT_EQ(kReader.integer(Json(4), "/i", 1, 5), 4);
   EXPECT_EQ(failure([] { kReader.integer(Json(2.5), "/i"); }), "/i: must be an integer (got 2.5)");
-  EXPECT_EQ(failure([] { kReader.integer(Json(7), "/i", 1, 5); }),
-            "/i: must be an integer between 1 and 5 (got 7)");
+  EXPECT_EQ(failure([] { kReader.integer(Json(7), "/i", 1, 5); }), "/i: must be an integer between 1 and 5 (got 7)");
 }
 
 TEST(JsonReader, TextsAreCountedInCharactersNotBytes) {
@@ -127,13 +130,13 @@ TEST(JsonReader, PointsAreTwoNumbers) {
 
 TEST(JsonReader, UnknownFieldsAreNamedWithTheClosestKnownOnes) {
   const std::array<std::string_view, 3> known = {"t", "color", "width"};
-  const std::string misspelt = failure([&] { kReader.check_fields(Json::parse(R"({"t": 0, "colour": 1})"), "/x", known); });
+  const std::string misspelt =
+      failure([&] { kReader.check_fields(Json::parse(R"({"t": 0, "colour": 1})"), "/x", known); });
   EXPECT_EQ(misspelt.rfind("/x/colour: unknown field \"colour\"; did you mean", 0), 0u) << misspelt;
   EXPECT_NE(misspelt.find("\"color\""), std::string::npos) << misspelt;
   EXPECT_EQ(failure([&] { kReader.check_fields(Json::parse(R"({"zzzzzz": 0})"), "", known); }),
             "/zzzzzz: unknown field \"zzzzzz\"; known fields: t, color, width");
-  EXPECT_EQ(failure([&] { kReader.check_fields(Json::parse(R"({"width": 0, "t": 1})"), "/x", known); }),
-            "(no error)");
+  EXPECT_EQ(failure([&] { kReader.check_fields(Json::parse(R"({"width": 0, "t": 1})"), "/x", known); }), "(no error)");
 }
 
 TEST(JsonReader, ChoicesMapNamesToValues) {

@@ -1,14 +1,13 @@
 // The JSON text of a scene (src/scene/json_text.cpp): positions of syntax
 // errors, NUL bytes, numbers beyond a double, members given twice, the
 // nesting limit and the file size limit.
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
@@ -101,8 +100,8 @@ TEST(JsonText, BracketsInsideStringsDoNotCount) {
 class InputFile : public ::testing::Test {
  protected:
   void TearDown() override { std::filesystem::remove(path_); }
-  std::filesystem::path path_ = std::filesystem::temp_directory_path() /
-                                ("pita-test-input-" + std::to_string(::getpid()) + ".json");
+  std::filesystem::path path_ =
+      std::filesystem::temp_directory_path() / ("pita-test-input-" + std::to_string(::getpid()) + ".json");
 };
 
 TEST_F(InputFile, AFileAtTheLimitIsRead) {

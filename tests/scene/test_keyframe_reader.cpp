@@ -2,16 +2,15 @@
 // (src/scene/keyframe_reader.cpp): both forms of a keyframe, whole turns, the
 // method's keyframe count and the knots' order. Each error test asserts the
 // pointer and the whole reason.
-#include "scene/json_reader.hpp"
-
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "scene/json_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
 #include "support/keys.hpp"
@@ -65,8 +64,7 @@ TEST(Keyframes, EndPointFormWindingIsPrincipal) {
 }
 
 TEST(Keyframes, TurnsAddWholeTurnsToEitherForm) {
-  const Scene polar =
-      parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0.5, "turns": 2})"), "s.json");
+  const Scene polar = parse_scene(p6_with_middle(R"({"t": 0.5, "p": [1, 1], "m": 2, "w": 0.5, "turns": 2})"), "s.json");
   EXPECT_DOUBLE_EQ(arrow_keys(polar).keyframes[1].arrow.w, 0.5 + 4.0 * kPi);
   EXPECT_EQ(arrow_keys(polar).keyframes[1].arrow.m, 2.0);
 

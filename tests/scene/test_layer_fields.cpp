@@ -1,11 +1,11 @@
 // The fields several layer kinds share (src/scene/layer_fields.cpp): line
 // styles, ranges, boxes, dashes and colours, read over their defaults, and
 // their errors with the field's pointer.
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/layer_fields.hpp"
@@ -16,9 +16,9 @@ namespace pita::scene {
 namespace {
 
 using test::expect_same_line;
-using test::only_layer;
 using test::failure;
 using test::kReader;
+using test::only_layer;
 using test::p6_with;
 
 // The object `text` as the fields of a layer at /layers/0.
@@ -38,14 +38,12 @@ TEST(Layers, LineFieldsOverrideOnlyWhatIsGiven) {
   EXPECT_FALSE(pattern.extended);
   EXPECT_FALSE(pattern.coils);
 
-  const TrajectoryLayer trajectory =
-      only_layer<TrajectoryLayer>(R"({"type": "trajectory", "color": "blue"})");
+  const TrajectoryLayer trajectory = only_layer<TrajectoryLayer>(R"({"type": "trajectory", "color": "blue"})");
   expected = TrajectoryLayer{}.line;
   expected.color = parse_color("blue");
   expect_same_line(trajectory.line, expected);
 
-  const DiscrepancyLayer discrepancy =
-      only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "dash": []})");
+  const DiscrepancyLayer discrepancy = only_layer<DiscrepancyLayer>(R"({"type": "discrepancy", "dash": []})");
   expect_same_line(discrepancy.line, DiscrepancyLayer{}.line);
 }
 
@@ -99,7 +97,8 @@ TEST(LayerFields, DashLengthsArePositiveAndFew) {
 TEST(LayerFields, ColorsReplaceTheDefaultsOnlyWhenGiven) {
   const std::vector<Color> defaults = {parse_color("red")};
   EXPECT_EQ(detail::read_colors(FieldsOf("{}").fields(), defaults), defaults);
-  const std::vector<Color> given = detail::read_colors(FieldsOf(R"({"colors": ["blue", "#00ff00"]})").fields(), defaults);
+  const std::vector<Color> given =
+      detail::read_colors(FieldsOf(R"({"colors": ["blue", "#00ff00"]})").fields(), defaults);
   ASSERT_EQ(given.size(), 2U);
   EXPECT_EQ(given[0], parse_color("blue"));
   EXPECT_EQ(given[1], (Color{0.0, 1.0, 0.0, 1.0}));

@@ -2,8 +2,6 @@
 // Layer and PoseLayer variants has exactly one row, each row names the struct
 // its reader returns, and the "draws" column of arrow layers is what the
 // reader enforces (the bad-input files points-*-layer of tests/data/bad/).
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -12,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "scene/figure_reader.hpp"
@@ -75,9 +74,9 @@ TEST(LayerKinds, KindOfFindsTheRowOfEveryLayerOfTheScenes) {
 
 TEST(LayerKinds, WhatArrowLayersDraw) {
   for (const LayerKindInfo& kind : arrow_layer_kinds()) {
-    const LayerDraws expected = kind.type == "point-trajectory"                   ? LayerDraws::points
+    const LayerDraws expected = kind.type == "point-trajectory"                 ? LayerDraws::points
                                 : kind.type == "label" || kind.type == "legend" ? LayerDraws::either
-                                                                                 : LayerDraws::keyframes;
+                                                                                : LayerDraws::keyframes;
     EXPECT_EQ(kind.draws, expected) << kind.type;
   }
 }

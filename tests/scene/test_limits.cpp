@@ -1,8 +1,8 @@
 // The limits of scene/limits.hpp: each is enforced at its bound (the value at
 // the bound is accepted, one step beyond is refused with the field's pointer).
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
@@ -71,8 +71,7 @@ TEST(Limits, ExistenceAndPatchSides) {  // and the 3D existence plot's steps
   EXPECT_EQ(pose(R"({"type": "existence", "columns": 4000, "rows": 1001})"), "/layers/0/rows");  // cells
   EXPECT_EQ(pose(R"({"type": "patch", "rows": )" + n(kMaxPatchSide + 1) + "}"), "/layers/0/rows");
   EXPECT_EQ(pose(R"({"type": "sam3d-existence", "steps": )" + n(kMaxSam3dExistenceSteps) + "}"), "(no error)");
-  EXPECT_EQ(pose(R"({"type": "sam3d-existence", "steps": )" + n(kMaxSam3dExistenceSteps + 1) + "}"),
-            "/layers/0/steps");
+  EXPECT_EQ(pose(R"({"type": "sam3d-existence", "steps": )" + n(kMaxSam3dExistenceSteps + 1) + "}"), "/layers/0/steps");
   EXPECT_EQ(pose(R"({"type": "sam3d-existence", "subdivisions": )" + n(kMaxSam3dExistenceSubdivisions + 1) + "}"),
             "/layers/0/subdivisions");
 }

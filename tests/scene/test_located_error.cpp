@@ -1,10 +1,10 @@
 // The located error (src/scene/located_error.hpp): what() says where and why,
 // and every kind has exactly one row in the table the front ends answer from.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <set>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/located_error.hpp"
 #include "scene/scene.hpp"

@@ -1,10 +1,10 @@
 // The names of a "measures" layer (src/scene/measure_name.cpp): what each
 // parses into, which scene kind measures it, and why a name is refused.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/layers.hpp"
 #include "scene/measure_name.hpp"
@@ -51,13 +51,12 @@ TEST(MeasureName, PlainNamesAndTheirKinds) {
 template <class LayerType, class Other>
 void check_family_entries() {
   for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
-    const std::string argument = entry.kind == MeasureKind::angle            ? "P6@0.5"
-                                 : entry.kind == MeasureKind::frame_distance ? "/panels/1"
-                                 : entry.kind == MeasureKind::property       ? "pop-free"
-                                 : entry.kind == MeasureKind::discrepancy_of ||
-                                           entry.kind == MeasureKind::discrepancy_time
-                                     ? "average"
-                                     : "A.p";
+    const std::string argument =
+        entry.kind == MeasureKind::angle                                                           ? "P6@0.5"
+        : entry.kind == MeasureKind::frame_distance                                                ? "/panels/1"
+        : entry.kind == MeasureKind::property                                                      ? "pop-free"
+        : entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time ? "average"
+                                                                                                   : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted<LayerType>(text).kind, entry.kind) << text;
     EXPECT_NE(refused<Other>(text).find("only"), std::string::npos) << text;
@@ -137,11 +136,13 @@ TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
 }
 
 TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
-  EXPECT_EQ(refused("ara"), "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
-                            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
-                            "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
+  EXPECT_EQ(refused("ara"),
+            "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
+            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
+            "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
   EXPECT_EQ(refused<PoseLayer>("handle-shift"),
-            "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or \"velocity-jump\"");
+            "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or "
+            "\"velocity-jump\"");
   EXPECT_NE(refused<PoseLayer>("angle:P6@0.5").find("arrow (keyframe) scenes only"), std::string::npos);
   EXPECT_NE(refused<PoseLayer>("gain:A.p").find("arrow (keyframe) scenes only"), std::string::npos);
 }

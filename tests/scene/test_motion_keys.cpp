@@ -2,10 +2,10 @@
 // alternative per kind, which parse_scene chooses from the scene's fields, and
 // the few facts every kind answers (its method id, its JSON field, whether it
 // has a motion to build).
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "scene/motion_keys.hpp"
 #include "scene/scene.hpp"
@@ -18,10 +18,12 @@ constexpr const char* kPosePair = R"("poses": [{"t": 0, "matrix": [[1, 0, 0], [0
 
 TEST(MotionKeys, TheSceneFieldsChooseTheAlternative) {
   const Scene arrows = parse_scene(R"({"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-      {"t": 1, "p": [1, 0], "m": 2, "w": 1}]})", "k.json");
+      {"t": 1, "p": [1, 0], "m": 2, "w": 1}]})",
+                                   "k.json");
   EXPECT_TRUE(std::holds_alternative<KeyframeKeys>(arrows.keys));
   const Scene points = parse_scene(R"({"method": "P6", "points": [{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 0]},
-      {"t": 2, "p": [1, 1]}, {"t": 3, "p": [0, 1]}]})", "p.json");
+      {"t": 2, "p": [1, 1]}, {"t": 3, "p": [0, 1]}]})",
+                                   "p.json");
   ASSERT_TRUE(std::holds_alternative<PointKeys>(points.keys));
   EXPECT_EQ(std::get<PointKeys>(points.keys).points.size(), 4U);
   const Scene plane = parse_scene(std::string(R"({"method": "SAM", )") + kPosePair + "}", "a.json");
@@ -29,7 +31,8 @@ TEST(MotionKeys, TheSceneFieldsChooseTheAlternative) {
   EXPECT_EQ(std::get<PlanePoseKeys>(plane.keys).poses.size(), 2U);
   const Scene space = parse_scene(R"({"method": "SAM", "dimension": 3, "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
-      {"t": 1, "matrix": [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})", "s.json");
+      {"t": 1, "matrix": [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
+                                  "s.json");
   ASSERT_TRUE(std::holds_alternative<SpacePoseKeys>(space.keys));
   EXPECT_EQ(std::get<SpacePoseKeys>(space.keys).poses[1].pose.b.x(), 1.0);
   // Every panel of a scene without "panels" is the scene itself, of its kind.

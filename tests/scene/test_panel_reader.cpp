@@ -1,9 +1,9 @@
 // Panels (src/scene/panel_reader.cpp): what a panel inherits from the scene
 // and what it overrides, for arrow and pose scenes, and the pointer its
 // motion's errors name.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -32,11 +32,12 @@ TEST(PoseScene, PanelsInheritAndOverride) {
 }
 
 TEST(PanelReader, ArrowPanelsInheritAndOverride) {
-  const Scene scene = parse_scene(R"({"method": "P6", "options": {"anchor": "midpoint"}, "samples": 5, )" + kKeyframes + R"(,
+  const Scene scene =
+      parse_scene(R"({"method": "P6", "options": {"anchor": "midpoint"}, "samples": 5, )" + kKeyframes + R"(,
       "panels": ["P2", {"method": "P3", "title": "three", "samples": 7},
                  {"options": {"path_mean": "arithmetic"}},
                  {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 0], "m": 1, "w": 1}]}]})",
-                                  "s.json");
+                  "s.json");
   ASSERT_EQ(scene.panels.size(), 4u);
   EXPECT_EQ(track_keys(scene.panels[0]).method, Method::P2);
   EXPECT_EQ(scene.panels[0].title, "P2 LS-Po");
@@ -46,7 +47,8 @@ TEST(PanelReader, ArrowPanelsInheritAndOverride) {
   EXPECT_EQ(scene.panels[1].samples, 7);
   EXPECT_EQ(track_keys(scene.panels[2]).method, Method::P6);
   EXPECT_EQ(track_keys(scene.panels[2]).options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(track_keys(scene.panels[2]).options.anchor, track_keys(scene).options.anchor);  // the fields not given stay the scene's
+  EXPECT_EQ(track_keys(scene.panels[2]).options.anchor,
+            track_keys(scene).options.anchor);  // the fields not given stay the scene's
   EXPECT_EQ(arrow_keys(scene.panels[3]).keyframes.size(), 2u);
   EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
 }
@@ -56,10 +58,10 @@ TEST(PanelReader, MotionPointerNamesWhatTheMotionIsBuiltFrom) {
       "panels": ["P1", {"title": "same"}, {"method": "P8"}, {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
         {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]}]})",
                                   "s.json");
-  EXPECT_EQ(scene.panels[0].motion_pointer, "/panels/0");             // its method, the scene's keyframes
-  EXPECT_EQ(scene.panels[1].motion_pointer, "/keyframes");            // the scene's motion
+  EXPECT_EQ(scene.panels[0].motion_pointer, "/panels/0");   // its method, the scene's keyframes
+  EXPECT_EQ(scene.panels[1].motion_pointer, "/keyframes");  // the scene's motion
   EXPECT_EQ(scene.panels[2].motion_pointer, "/panels/2");
-  EXPECT_EQ(scene.panels[3].motion_pointer, "/panels/3/keyframes");   // its own keyframes
+  EXPECT_EQ(scene.panels[3].motion_pointer, "/panels/3/keyframes");  // its own keyframes
   const Scene poses = parse_scene(R"({"method": "polySAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
       {"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]}], "panels": ["SAM", {"title": "x"},
       {"poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}]}]})",
@@ -87,18 +89,18 @@ TEST(PanelReader, HandleDefaultsToTheScenesThenToThePanelsFirstKeyframe) {
   EXPECT_EQ(arrow_keys(scene.panels[0]).handle().p, make_point(-1, 0));  // the scene's first keyframe
   EXPECT_EQ(arrow_keys(scene.panels[0]).handle().m, 1.5);
   EXPECT_EQ(arrow_keys(scene.panels[0]).handle().w, 0.25);
-  EXPECT_EQ(arrow_keys(scene.panels[1]).handle().p, make_point(7, 7));   // the panel's first keyframe, "from"
+  EXPECT_EQ(arrow_keys(scene.panels[1]).handle().p, make_point(7, 7));  // the panel's first keyframe, "from"
   EXPECT_EQ(arrow_keys(scene.panels[1]).handle().m, 3.0);
-  EXPECT_EQ(arrow_keys(scene.panels[2]).handle().p, make_point(4, 4));   // its own
+  EXPECT_EQ(arrow_keys(scene.panels[2]).handle().p, make_point(4, 4));  // its own
   EXPECT_EQ(arrow_keys(scene.panels[2]).handle().w, 2.0);
-  EXPECT_EQ(arrow_keys(scene.panels[3]).handle().p, make_point(4, 4));   // its own, over its keyframes
+  EXPECT_EQ(arrow_keys(scene.panels[3]).handle().p, make_point(4, 4));  // its own, over its keyframes
   ASSERT_EQ(arrow_keys(scene.panels[1]).keyframes_to.size(), 3u);
   EXPECT_EQ(arrow_keys(scene.panels[1]).keyframes_to[0].p, make_point(8, 8));
   EXPECT_TRUE(arrow_keys(scene.panels[0]).keyframes_to.empty());
 
   // The scene's handle is every panel's that gives none, whatever its keyframes.
-  const Scene handled = parse_scene(
-      R"({"method": "P6", "handle": {"p": [0, 5], "q": [1, 5]}, )" + keyframes + panels + "}", "s.json");
+  const Scene handled =
+      parse_scene(R"({"method": "P6", "handle": {"p": [0, 5], "q": [1, 5]}, )" + keyframes + panels + "}", "s.json");
   EXPECT_EQ(arrow_keys(handled.panels[0]).handle().p, make_point(0, 5));
   EXPECT_EQ(arrow_keys(handled.panels[1]).handle().p, make_point(0, 5));
   EXPECT_EQ(arrow_keys(handled.panels[1]).handle().m, 1.0);

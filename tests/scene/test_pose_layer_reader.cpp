@@ -1,10 +1,10 @@
 // The layer kinds of pose scenes (src/scene/pose_layer_reader.cpp): each
 // kind's fields over its defaults (more in test_pose_reader.cpp, with the poses).
-#include <gtest/gtest.h>
-
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "scene/color.hpp"
 #include "scene/scene.hpp"

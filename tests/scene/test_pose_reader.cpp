@@ -3,16 +3,15 @@
 // shapes and builtin outlines, pose methods; what it refuses is in
 // tests/data/bad/ (poses-*), a few refusals are asserted whole here. The
 // schema side of the same cases is in test_schema.cpp.
-#include "scene/pose_reader.hpp"
-
-#include <gtest/gtest.h>
-
 #include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "scene/limits.hpp"
+#include "scene/pose_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
 #include "support/keys.hpp"
@@ -51,15 +50,15 @@ TEST(PoseReaderOverTheDimension, FrameOfMapsTheUnitSimplexOntoThePoints) {
 TEST(PoseReaderOverTheDimension, FlatSimplicesAreDegenerate) {
   EXPECT_FALSE(detail::degenerate<Affine2>(kUnitTriangle));
   EXPECT_TRUE(detail::degenerate<Affine2>({Point{0.0, 0.0}, Point{1.0, 1.0}, Point{3.0, 3.0}}));
-  EXPECT_FALSE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
-                                            Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}));
-  EXPECT_TRUE(detail::degenerate<Affine3>({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0),
-                                           Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0)}));
+  EXPECT_FALSE(detail::degenerate<Affine3>(
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, 1)}));
+  EXPECT_TRUE(detail::degenerate<Affine3>(
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(1, 1, 0)}));
 }
 
 TEST(PoseReaderOverTheDimension, MatricesAndReferencesSayTheirDimension) {
-  const Affine3 A = detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 2, 3, 4], [0, 1, 0, 5], [0, 0, 2, 6]]"),
-                                                 "/m");
+  const Affine3 A =
+      detail::read_matrix<Affine3>(kReader, Json::parse("[[1, 2, 3, 4], [0, 1, 0, 5], [0, 0, 2, 6]]"), "/m");
   EXPECT_EQ(A.L(0, 2), 3.0);
   EXPECT_EQ(A.b, Eigen::Vector3d(4, 5, 6));
   EXPECT_TRUE(failure([] { detail::read_matrix<Affine2>(kReader, Json::parse("[[1, 0], [0, 1]]"), "/m"); })
@@ -182,10 +181,10 @@ TEST(PoseReader, PoseMethodsByNameAndArrowMethodsRefused) {
 // A triangle pose is the affinity that maps the reference triangle onto it:
 // with the unit reference triangle, its columns are the edges from the first point.
 TEST(PoseReader, TrianglePoseMapsTheReferenceOntoTheTriangle) {
-  const std::vector<TimedPose> poses = detail::read_poses<Affine2>(
-      kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+  const std::vector<TimedPose> poses =
+      detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
                                {"t": 1.5, "triangle": [[2, 1], [4, 1], [2, 4]]}])"),
-      "/poses", kUnitTriangle, PoseMethod::sam);
+                                  "/poses", kUnitTriangle, PoseMethod::sam);
   ASSERT_EQ(poses.size(), 2u);
   EXPECT_EQ(poses[1].t, 1.5);
   Eigen::Matrix2d L;
@@ -198,13 +197,13 @@ TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
   EXPECT_EQ(failure([] {
               detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
-                                 "/poses", kUnitTriangle, PoseMethod::sam);
+                                          "/poses", kUnitTriangle, PoseMethod::sam);
             }),
             "/poses/1/t: times must increase strictly: 1 follows 1");
   EXPECT_EQ(failure([] {
               detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 2, 0], [2, 4, 0]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
-                                 "/poses", kUnitTriangle, PoseMethod::sam);
+                                          "/poses", kUnitTriangle, PoseMethod::sam);
             }),
             "/poses/0/matrix: the linear part [[a, b], [c, d]] has determinant 0 (its singular values "
             "differ by more than 1e16): the pose is singular, it flattens the plane onto a line or a point");
@@ -212,12 +211,11 @@ TEST(PoseReader, RefusalsNameTheValueAndTheReason) {
               detail::read_poses<Affine2>(kReader, Json::parse(R"([{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]],
                                                            "triangle": [[0, 0], [1, 0], [0, 1]]},
                                                           {"t": 1, "matrix": [[2, 0, 0], [0, 2, 0]]}])"),
-                                 "/poses", kUnitTriangle, PoseMethod::sam);
+                                          "/poses", kUnitTriangle, PoseMethod::sam);
             }),
             "/poses/0/triangle: give either \"matrix\" or \"triangle\", not both");
   EXPECT_EQ(failure([] {
-              detail::read_reference<Affine2>(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"),
-                                              "/reference_triangle");
+              detail::read_reference<Affine2>(kReader, Json::parse("[[0, 0], [1, 1], [3, 3]]"), "/reference_triangle");
             }),
             "/reference_triangle: the reference triangle is degenerate (its points are collinear)");
 }
@@ -239,14 +237,15 @@ TEST(PoseReader, BuiltinOutlinesLieInTheUnitBox) {
   EXPECT_EQ(detail::builtin_outline("house")[0].points.size(), 5u);
   const std::vector<ShapeOutline> picture = detail::builtin_outline("picture");
   EXPECT_EQ(picture.size(), 7u);
-  for (const char* name : {"F", "house", "square", "picture"}) EXPECT_TRUE(inside(detail::builtin_outline(name))) << name;
+  for (const char* name : {"F", "house", "square", "picture"})
+    EXPECT_TRUE(inside(detail::builtin_outline(name))) << name;
 }
 
 TEST(PoseReader, ShapesKeepTheirKindColourAndOrder) {
-  const std::vector<ShapeOutline> shapes = detail::read_shapes(
-      kReader, Json::parse(R"([{"polyline": [[0, 0], [2, 1]], "color": "#ff0000"},
+  const std::vector<ShapeOutline> shapes =
+      detail::read_shapes(kReader, Json::parse(R"([{"polyline": [[0, 0], [2, 1]], "color": "#ff0000"},
                                {"triangle": "reference"}, {"outline": "picture"}, {"polygon": [[0, 0], [1, 0], [0, 2]]}])"),
-      "/shapes", kUnitTriangle);
+                          "/shapes", kUnitTriangle);
   ASSERT_EQ(shapes.size(), 1u + 1u + 7u + 1u);  // the picture's parts follow it
   EXPECT_FALSE(shapes[0].closed);
   EXPECT_EQ(shapes[0].points, (std::vector<Point>{{0.0, 0.0}, {2.0, 1.0}}));
@@ -255,8 +254,9 @@ TEST(PoseReader, ShapesKeepTheirKindColourAndOrder) {
   EXPECT_EQ(shapes[1].points, (std::vector<Point>(kUnitTriangle.begin(), kUnitTriangle.end())));
   EXPECT_TRUE(shapes[9].closed);
   EXPECT_EQ(shapes[9].points.back(), (Point{0.0, 2.0}));
-  EXPECT_EQ(failure([] { detail::read_shapes(kReader, Json::parse(R"([{"triangle": "mine"}])"), "/shapes", kUnitTriangle); }),
-            "/shapes/0/triangle: must be \"reference\" (the reference triangle; got string \"mine\")");
+  EXPECT_EQ(
+      failure([] { detail::read_shapes(kReader, Json::parse(R"([{"triangle": "mine"}])"), "/shapes", kUnitTriangle); }),
+      "/shapes/0/triangle: must be \"reference\" (the reference triangle; got string \"mine\")");
 }
 
 // An image shape {"image", "box"} (PITA Sec. 7.1): its points are the box's

@@ -1,9 +1,9 @@
 // Pose scenes (src/scene/pose_scene_reader.cpp): which documents are pose
 // scenes, their defaults, and that a pose scene without poses may still draw
 // layers that need none.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 #include "scene/scene_readers.hpp"
@@ -21,7 +21,8 @@ TEST(PoseSceneReader, PoseScenesAreRecognisedByPosesOrAPoseMethod) {
 
 TEST(PoseSceneReader, DefaultsApplied) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "triangle": [[1, 0], [2, 0], [1, 1]]}]})", "s.json");
+      {"t": 1, "triangle": [[1, 0], [2, 0], [1, 1]]}]})",
+                                  "s.json");
   EXPECT_TRUE(std::holds_alternative<PlanePoseKeys>(scene.keys));
   EXPECT_EQ(method_id(scene.keys), "SAM");
   ASSERT_EQ(figure_of<PlanePoseKeys>(scene).shapes.size(), 1u);  // the reference triangle
@@ -30,13 +31,16 @@ TEST(PoseSceneReader, DefaultsApplied) {
   EXPECT_TRUE(std::holds_alternative<ShapesLayer>(figure_of<PlanePoseKeys>(scene).layers[0]));
   EXPECT_TRUE(std::holds_alternative<PosesLayer>(figure_of<PlanePoseKeys>(scene).layers[1]));
   EXPECT_EQ(plane_keys(scene).subdivisions, kDefaultSubdivisions);
-  EXPECT_EQ(plane_keys(scene).poses[1].pose.b, Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
+  EXPECT_EQ(plane_keys(scene).poses[1].pose.b,
+            Eigen::Vector2d(1.0, 0.0));  // triangle pose: the translation moves (0, 0) to (1, 0)
   ASSERT_EQ(scene.panels.size(), 1u);
   EXPECT_EQ(scene.panels[0].motion_pointer, "/poses");
 }
 
 TEST(PoseSceneReader, LayersThatNeedNoPosesNeedNoPoses) {
-  EXPECT_NO_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "existence"}, {"type": "label", "text": "x", "at": [0, 0]}]})", "s.json"));
+  EXPECT_NO_THROW(parse_scene(
+      R"({"method": "SAM", "layers": [{"type": "existence"}, {"type": "label", "text": "x", "at": [0, 0]}]})",
+      "s.json"));
   EXPECT_THROW(parse_scene(R"({"method": "SAM", "layers": [{"type": "shapes"}]})", "s.json"), SceneError);
   EXPECT_TRUE(detail::needs_motion({ShapesLayer{}}));
   EXPECT_TRUE(detail::needs_motion({PlotLayer{}}));
@@ -56,8 +60,8 @@ TEST(PoseSceneReader, Sam3dExistenceLayerFields) {
   EXPECT_FALSE(layer.fill.has_value());
   EXPECT_TRUE(layer.paper);
   EXPECT_DOUBLE_EQ(layer.paper_line.width, 3.0);
-  const Scene defaults = parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "paper": false}]})",
-                                     "s.json");
+  const Scene defaults =
+      parse_scene(R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "paper": false}]})", "s.json");
   const auto& plain = std::get<Sam3dExistenceLayer>(figure_of<PlanePoseKeys>(defaults).layers.at(0));
   EXPECT_EQ(plain.steps, 48);
   EXPECT_EQ(plain.subdivisions, 2);

@@ -6,8 +6,6 @@
 // (test_pose_reader.cpp). The bad scenes are files of tests/data/bad/,
 // run by test_bad_scenes.cpp. Every error test asserts the whole message: file,
 // JSON Pointer and reason.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +14,7 @@
 #include <string>
 #include <variant>
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include "scene/scene.hpp"
@@ -83,8 +82,7 @@ TEST(Scene, LoadSceneReportsUnreadableFiles) {
     load_scene("no/such/scene.json");
     FAIL() << "no error";
   } catch (const SceneError& error) {
-    EXPECT_STREQ(error.what(),
-                 "no/such/scene.json: cannot open the scene file (No such file or directory)");
+    EXPECT_STREQ(error.what(), "no/such/scene.json: cannot open the scene file (No such file or directory)");
   }
   try {
     load_scene(std::filesystem::temp_directory_path());
@@ -103,8 +101,9 @@ TEST(Scene, LoadSceneNamesTheFileAsGiven) {
     FAIL() << "no error";
   } catch (const SceneError& error) {
     EXPECT_EQ(std::string(error.what()),
-              path.string() + ": /keyframes: method P6 (La-LP) takes at least 3 keyframes (got 0); more are chained "
-                              "(\"chain\")");
+              path.string() +
+                  ": /keyframes: method P6 (La-LP) takes at least 3 keyframes (got 0); more are chained "
+                  "(\"chain\")");
   }
   std::filesystem::remove(path);
 }
@@ -123,7 +122,6 @@ TEST(PoseScene, MethodOverride) {
   EXPECT_THROW(with_method(scene, Method::P6), SceneError);
 }
 
-
 // ------------------------------------------------------------ figure data
 
 // Each kind's figure data is of its keys' family: arrows (keyframes and
@@ -135,14 +133,16 @@ TEST(SceneFigure, EachKindHoldsTheFigureOfItsFamily) {
   EXPECT_EQ(figure_of<KeyframeKeys>(arrows).layers.size(), 2u);  // pattern, keyframes
   EXPECT_TRUE(figure_of<KeyframeKeys>(arrows.panels[0]).shapes.empty());
   const Scene plane = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}]})", "s.json");
+      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}]})",
+                                  "s.json");
   const PoseFigure<Affine2>& flat = figure_of<PlanePoseKeys>(plane);
   EXPECT_EQ(flat.reference[1], Point(1.0, 0.0));
   ASSERT_EQ(flat.shapes.size(), 1u);  // the reference triangle
   EXPECT_EQ(figure_of(plane.panels[0], std::get<PlanePoseKeys>(plane.panels[0].keys)).shapes.size(), 1u);
   const Scene space = parse_scene(R"({"dimension": 3, "method": "SAM", "camera": {"azimuth": 10},
       "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
-                {"t": 1, "matrix": [[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0]]}]})", "s.json");
+                {"t": 1, "matrix": [[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0]]}]})",
+                                  "s.json");
   const PoseFigure<Affine3>& solid = figure_of<SpacePoseKeys>(space);
   EXPECT_EQ(solid.camera.azimuth, 10.0);
   ASSERT_EQ(solid.shapes.size(), 1u);  // the reference tetrahedron

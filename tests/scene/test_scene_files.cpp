@@ -1,14 +1,12 @@
 // The files of the repository that the scene layer reads: the published
 // schema (schema/scene.schema.json) and every starter scene (scenes/*.json).
-#include <gtest/gtest.h>
-
 #include <algorithm>
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <optional>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -17,15 +15,15 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "core/affine_power.hpp"
 #include "core/chains/chain.hpp"
+#include "core/pitas/registry.hpp"
+#include "core/point_curves.hpp"
 #include "core/pose_motion.hpp"
 #include "core/steady_morph.hpp"
-#include "core/point_curves.hpp"
-
-#include "core/pitas/registry.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/scene.hpp"
 #include "scene_test_support.hpp"
@@ -104,8 +102,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   for (const PointCurveInfo& about : all_point_curves()) curves.push_back(std::string(about.name));
   EXPECT_EQ(definitions.at("pointTrajectoryLayer").at("properties").at("curve").at("enum"), curves);
   const nlohmann::json& keyframe = definitions.at("keyframe");
-  EXPECT_EQ(keys_of(keyframe.at("properties")),
-            (std::set<std::string>{"t", "p", "m", "w", "q", "turns"}));
+  EXPECT_EQ(keys_of(keyframe.at("properties")), (std::set<std::string>{"t", "p", "m", "w", "q", "turns"}));
   EXPECT_EQ(keyframe.at("additionalProperties"), false);
   // A handle, and the "from" and "to" of a moving keyframe: a keyframe without its knot.
   const nlohmann::json& arrow = definitions.at("arrow");
@@ -141,8 +138,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
 
   const nlohmann::json& canvas = definitions.at("canvas");
   EXPECT_EQ(keys_of(canvas.at("properties")),
-            (std::set<std::string>{"width", "height", "background", "view", "margin", "y_axis",
-                                   "columns", "font"}));
+            (std::set<std::string>{"width", "height", "background", "view", "margin", "y_axis", "columns", "font"}));
   EXPECT_EQ(canvas.at("additionalProperties"), false);
   EXPECT_EQ(canvas.at("properties").at("width").at("minimum"), kMinCanvasSide);
   EXPECT_EQ(canvas.at("properties").at("width").at("maximum"), kMaxCanvasSide);
@@ -153,8 +149,7 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   EXPECT_EQ(schema.at("properties").at("panels").at("maxItems"), kMaxPanels);
   EXPECT_EQ(definitions.at("figureSamples").at("maximum"), kMaxFigureSamples);
   EXPECT_EQ(definitions.at("text").at("maxLength"), kMaxTextLength);
-  EXPECT_EQ(definitions.at("trajectoryLayer").at("properties").at("samples").at("maximum"),
-            kMaxTrajectorySamples);
+  EXPECT_EQ(definitions.at("trajectoryLayer").at("properties").at("samples").at("maximum"), kMaxTrajectorySamples);
 
   // Every layer kind of the reader's tables (arrow_layer_reader.cpp, pose_layer_reader.cpp), with its fields.
   std::vector<std::string> types;
@@ -169,9 +164,8 @@ TEST(SceneSchema, DescribesExactlyTheAcceptedFields) {
   }
   EXPECT_EQ(definitions.at("layer").at("properties").at("type").at("enum"), nlohmann::json(types));
   const nlohmann::json& panel = definitions.at("panel").at("else");
-  EXPECT_EQ(keys_of(panel.at("properties")),
-            (std::set<std::string>{"method", "options", "keyframes", "points", "chain", "title", "samples", "layers",
-                                   "timing", "handle"}));
+  EXPECT_EQ(keys_of(panel.at("properties")), (std::set<std::string>{"method", "options", "keyframes", "points", "chain",
+                                                                    "title", "samples", "layers", "timing", "handle"}));
   EXPECT_EQ(panel.at("additionalProperties"), false);
 }
 
@@ -180,19 +174,18 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
   const nlohmann::json& definitions = document.at("definitions");
   const nlohmann::json& scene = definitions.at("poseScene");
   EXPECT_EQ(keys_of(scene.at("properties")),
-            (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle",
-                                   "shapes", "samples", "title", "canvas", "layers", "panels",
-                                   "golden", "claims", "lint", "subdivisions", "timing", "animation", "dimension"}));
+            (std::set<std::string>{"$schema", "description", "method", "poses", "reference_triangle", "shapes",
+                                   "samples", "title", "canvas", "layers", "panels", "golden", "claims", "lint",
+                                   "subdivisions", "timing", "animation", "dimension"}));
   // 3D pose scenes (src/scene/space_pose_reader.cpp's kSpaceSceneFields).
   EXPECT_EQ(keys_of(definitions.at("spacePoseScene").at("properties")),
-            (std::set<std::string>{"$schema", "description", "dimension", "method", "poses",
-                                   "reference_tetrahedron", "samples", "subdivisions", "timing", "golden", "claims", "lint", "shapes",
-                                   "camera", "layers", "title", "canvas", "panels", "animation"}));
+            (std::set<std::string>{"$schema", "description", "dimension", "method", "poses", "reference_tetrahedron",
+                                   "samples", "subdivisions", "timing", "golden", "claims", "lint", "shapes", "camera",
+                                   "layers", "title", "canvas", "panels", "animation"}));
   // Their panels (panel_reader.cpp's PosePanelSpace<Affine3>): no shapes, the solids are the scene's.
   EXPECT_EQ(keys_of(definitions.at("spacePosePanel").at("anyOf").at(1).at("properties")),
             (std::set<std::string>{"method", "poses", "title", "samples", "layers", "subdivisions", "timing"}));
-  EXPECT_EQ(keys_of(definitions.at("pose").at("properties")),
-            (std::set<std::string>{"t", "matrix", "triangle"}));
+  EXPECT_EQ(keys_of(definitions.at("pose").at("properties")), (std::set<std::string>{"t", "matrix", "triangle"}));
   EXPECT_EQ(keys_of(definitions.at("shape").at("properties")),
             (std::set<std::string>{"polygon", "polyline", "triangle", "outline", "image", "box", "color"}));
   std::vector<std::string> methods;
@@ -208,17 +201,16 @@ TEST(SceneSchema, DescribesExactlyThePoseSceneFields) {
     EXPECT_EQ(layer.at("additionalProperties"), false);
   }
   EXPECT_EQ(definitions.at("poseLayer").at("properties").at("type").at("enum"), nlohmann::json(types));
-  EXPECT_EQ(keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
-            (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers",
-                                   "subdivisions", "timing"}));
+  EXPECT_EQ(
+      keys_of(definitions.at("posePanel").at("anyOf").at(1).at("properties")),
+      (std::set<std::string>{"method", "poses", "shapes", "title", "samples", "layers", "subdivisions", "timing"}));
 }
 
 TEST(SceneSchema, ListsEveryMethodForAutocomplete) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   std::vector<std::string> ids;
   for (const MethodInfo& method : all_methods()) ids.emplace_back(method.id);
-  EXPECT_EQ(
-      schema.at("definitions").at("method").at("examples").get<std::vector<std::string>>(), ids);
+  EXPECT_EQ(schema.at("definitions").at("method").at("examples").get<std::vector<std::string>>(), ids);
 }
 
 TEST(SceneFiles, EveryStarterSceneParses) {
@@ -257,10 +249,8 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
       name = name.substr(5);
     }
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
-    EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) &&
-                name[5] == '-')
-        << path.stem()
-        << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, appX-figNN-*.json)";
+    EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) && name[5] == '-')
+        << path.stem() << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, appX-figNN-*.json)";
     EXPECT_EQ(is_pose_scene(load_scene(path)), sam)
         << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
   }
@@ -281,12 +271,11 @@ double largest_gap(F&& f, G&& g) {
 }
 
 std::unique_ptr<Motion> panel_motion(const Panel& panel) {
-  return make_motion(track_keys(panel).method, arrow_keys(panel).keyframes, track_keys(panel).options, track_keys(panel).chain);
+  return make_motion(track_keys(panel).method, arrow_keys(panel).keyframes, track_keys(panel).options,
+                     track_keys(panel).chain);
 }
 
-bool title_says(const Panel& panel, const std::string& text) {
-  return panel.title.find(text) != std::string::npos;
-}
+bool title_says(const Panel& panel, const std::string& text) { return panel.title.find(text) != std::string::npos; }
 
 // Fig. C.31: translating the keyframes by (6, 0) moves P5 rigidly and changes
 // He-G; each right panel prints its change.
@@ -303,7 +292,11 @@ TEST(SceneFiles, AppendixC31PrintsTheMeasuredChanges) {
     }
     const auto x = panel_motion(before), y = panel_motion(after);
     const double d = largest_gap([&](double t) { return y->at(t); },
-                                 [&](double t) { Arrow a = x->at(t); a.p += shift; return a; });
+                                 [&](double t) {
+                                   Arrow a = x->at(t);
+                                   a.p += shift;
+                                   return a;
+                                 });
     if (track_keys(before).method == Method::P5) {
       EXPECT_LT(d, 1e-12);
       EXPECT_TRUE(title_says(after, "d < 1e-12")) << after.title;
@@ -347,7 +340,8 @@ TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
     const double e = largest_gap([&](double t) { return abc->at(t); }, [&](double t) { return average->at(t); });
     const double f = largest_gap([&](double t) { return acb->at(t); }, [&](double t) { return bac->at(t); });
     EXPECT_LT(e, f / 3.0);
-    EXPECT_TRUE(title_says(panel, fmt::format("e = {:.2g}, f = {:.2g}", e, f))) << panel.title << " vs " << e << ", " << f;
+    EXPECT_TRUE(title_says(panel, fmt::format("e = {:.2g}, f = {:.2g}", e, f)))
+        << panel.title << " vs " << e << ", " << f;
   }
 }
 
@@ -362,7 +356,8 @@ TEST(SceneFiles, AppendixD34BuildsP9FromTwoSteadyMorphs) {
   ASSERT_EQ(arrow_keys(left).keyframes.size(), 2u);
   ASSERT_EQ(arrow_keys(middle).keyframes.size(), 2u);
   ASSERT_EQ(arrow_keys(right).keyframes.size(), 2u);
-  const Keyframe &A = arrow_keys(left).keyframes[0], &B = arrow_keys(left).keyframes[1], &C = arrow_keys(middle).keyframes[1];
+  const Keyframe &A = arrow_keys(left).keyframes[0], &B = arrow_keys(left).keyframes[1],
+                 &C = arrow_keys(middle).keyframes[1];
   ASSERT_EQ(arrow_keys(middle).keyframes[0].arrow.p, B.arrow.p);
   const double t = A.t + 0.25 * (C.t - A.t);
   const Arrow L = steady_morph(A.t, A.arrow, B.t, B.arrow, t);
@@ -395,9 +390,12 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
     ASSERT_EQ(track_keys(scene.panels[i + 1]).method, Method::P9);
     const auto p6 = panel_motion(scene.panels[i]), p9 = panel_motion(scene.panels[i + 1]);
     const double d = largest_gap([&](double t) { return p6->at(t); }, [&](double t) { return p9->at(t); });
-    EXPECT_TRUE(title_says(scene.panels[i + 1], fmt::format("d = {:.2g}", d))) << scene.panels[i + 1].title << " vs " << d;
-    if (i == 0) tame = d;
-    else EXPECT_GT(d, 5.0 * tame);
+    EXPECT_TRUE(title_says(scene.panels[i + 1], fmt::format("d = {:.2g}", d)))
+        << scene.panels[i + 1].title << " vs " << d;
+    if (i == 0)
+      tame = d;
+    else
+      EXPECT_GT(d, 5.0 * tame);
   }
 }
 
@@ -465,10 +463,10 @@ TEST(SceneFiles, SamFig04PrintsItsMeasuredNumbers) {
   // Printed as measured.
   const std::vector<std::string> texts = label_texts(scene, panel);
   EXPECT_TRUE(some_text_has(texts, fmt::format("q = ({}, {})", printed(q->x()), printed(q->y()))));
-  EXPECT_TRUE(some_text_has(texts, fmt::format("X_SAM² ∘ B: translation ({}, {})", printed(sam_squared.b.x()),
-                                               printed(sam_squared.b.y()))));
-  EXPECT_TRUE(some_text_has(texts, fmt::format("X_Alexa² ∘ B: translation ({}, {})",
-                                               printed(alexa_squared.b.x()), printed(alexa_squared.b.y()))))
+  EXPECT_TRUE(some_text_has(
+      texts, fmt::format("X_SAM² ∘ B: translation ({}, {})", printed(sam_squared.b.x()), printed(sam_squared.b.y()))));
+  EXPECT_TRUE(some_text_has(texts, fmt::format("X_Alexa² ∘ B: translation ({}, {})", printed(alexa_squared.b.x()),
+                                               printed(alexa_squared.b.y()))))
       << printed(alexa_squared.b.x());
 }
 
@@ -502,12 +500,12 @@ TEST(SceneFiles, SamFig05PrintsItsMeasuredSteps) {
   // Steady, and rigid to the 6 decimals of the scene's second triangle (a
   // turn of the first): equal steps to about 1e-6.
   EXPECT_LT(sam_max - sam_min, 1e-5);
-  EXPECT_GT(alexa_max, 1.5 * alexa_min);    // not: the caption's uneven spacing
+  EXPECT_GT(alexa_max, 1.5 * alexa_min);  // not: the caption's uneven spacing
   const std::vector<std::string> texts = label_texts(scene, panel);
   EXPECT_TRUE(some_text_has(texts, fmt::format("SAM: barycentre steps {} to {}", printed(sam_min), printed(sam_max))))
       << printed(sam_min) << " " << printed(sam_max);
-  EXPECT_TRUE(some_text_has(texts, fmt::format("Alexa: barycentre steps {} to {}", printed(alexa_min),
-                                               printed(alexa_max))))
+  EXPECT_TRUE(
+      some_text_has(texts, fmt::format("Alexa: barycentre steps {} to {}", printed(alexa_min), printed(alexa_max))))
       << printed(alexa_min) << " " << printed(alexa_max);
 }
 
@@ -526,7 +524,8 @@ TEST(SceneFiles, SamFig03PairsArePosesOfTwoSams) {
     ASSERT_EQ(plane_keys(panel).poses.size(), 2u) << j;
     EXPECT_LT(distance(plane_keys(panel).poses[0].pose, steady_affine_morph(P0, P1, tau)), 1e-10) << "column " << j;
     EXPECT_LT(distance(plane_keys(panel).poses[1].pose, steady_affine_morph(Q0, Q1, tau)), 1e-10) << "column " << j;
-    EXPECT_NO_THROW(SteadyAffineMorph(plane_keys(panel).poses[0].pose, plane_keys(panel).poses[1].pose)) << "column " << j;
+    EXPECT_NO_THROW(SteadyAffineMorph(plane_keys(panel).poses[0].pose, plane_keys(panel).poses[1].pose))
+        << "column " << j;
   }
 }
 

@@ -1,9 +1,9 @@
 // What every scene ends with (src/scene/scene_tail_reader.cpp): "golden",
 // "claims", "lint" and "animation", read once for arrow scenes and pose
 // scenes of either dimension.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 
@@ -24,17 +24,24 @@ void expect_tail(const Scene& scene) {
 
 TEST(SceneTail, EveryKindReadsTheSameTail) {
   expect_tail(parse_scene(R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-      {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}])" + std::string(kTail), "s.json"));
+      {"t": 1, "p": [1, 1], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}])" +
+                              std::string(kTail),
+                          "s.json"));
   expect_tail(parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}])" + std::string(kTail), "s.json"));
+      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}])" +
+                              std::string(kTail),
+                          "s.json"));
   expect_tail(parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
       {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
-      {"t": 1, "matrix": [[0, -1, 0, 1], [1, 0, 0, 0], [0, 0, 1, 0]]}])" + std::string(kTail), "s.json"));
+      {"t": 1, "matrix": [[0, -1, 0, 1], [1, 0, 0, 0], [0, 0, 1, 0]]}])" +
+                              std::string(kTail),
+                          "s.json"));
 }
 
 TEST(SceneTail, WithoutAnimationTheDefaultPlaysTheMotion) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}]})", "s.json");
+      {"t": 1, "matrix": [[0, -1, 1], [1, 0, 0]]}]})",
+                                  "s.json");
   EXPECT_FALSE(scene.has_animation);
   EXPECT_EQ(scene.animation.what, Animation::What::motion);
   EXPECT_FALSE(scene.golden.numbers.has_value());

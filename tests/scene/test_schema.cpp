@@ -9,21 +9,19 @@
 // (strictly increasing knots, the number of keyframes a panel's method takes
 // with the scene's keyframes, method names, range and view ends in order):
 // ParserOnlyChecks lists them, and checks that the schema lets them through.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cstdio>
-#include <optional>
-#include <span>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include "core/pitas/method_options.hpp"
 #include "scene/color.hpp"
@@ -136,21 +134,22 @@ std::string with_layer(const std::string& layer) { return p6_with(R"(, "layers":
 
 // Keyframes for panels: three, the middle one `middle`.
 std::string three_keyframes(const std::string& middle) {
-  return R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle +
-         R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
+  return R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0}, )" + middle + R"(, {"t": 1, "p": [2, 0], "m": 1, "w": 0}])";
 }
 
 // A valid SAM scene (two poses) with `extra` top-level members.
 std::string sam_with(const std::string& extra) {
   return R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-    {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}])" + extra + "}";
+    {"t": 1, "matrix": [[0, -2, 3], [2, 0, 1]]}])" +
+         extra + "}";
 }
 
 // A P6 scene whose middle keyframe moves, with `extra` top-level members.
 std::string moving_with(const std::string& extra) {
   return R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
     {"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, -1], "m": 2, "w": 1}},
-    {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" + extra + "}";
+    {"t": 1, "p": [2, 0], "m": 1, "w": 0}])" +
+         extra + "}";
 }
 
 // A P6 scene with one shape, `shape` (JSON text).
@@ -159,7 +158,8 @@ std::string with_shape(const std::string& shape) { return p6_with(R"(, "shapes":
 // A P6 scene with "animation": `animation` (JSON text).
 std::string with_animation(const std::string& animation) { return p6_with(R"(, "animation": )" + animation); }
 
-const std::string kFourPoints = R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
+const std::string kFourPoints =
+    R"([{"t": 0, "p": [0, 0]}, {"t": 1, "p": [1, 1]}, {"t": 2, "p": [2, 0]}, {"t": 3, "p": [3, 1]}])";
 
 struct BadScene {
   std::string what;     // the class of mistake
@@ -177,23 +177,27 @@ const std::vector<BadScene>& bad_scenes() {
   static const std::vector<BadScene> corpus = {
       // Keyframe tracks.
       {"unknown chain", p6_with(R"(, "chain": "cubic")"), "/chain"},
-      {"blend chain on the SMA", R"({"method": "SMA", "chain": "blend", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-        {"t": 1, "p": [1, 0], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]})", "/chain"},
+      {"blend chain on the SMA",
+       R"({"method": "SMA", "chain": "blend", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+        {"t": 1, "p": [1, 0], "m": 1, "w": 0}, {"t": 2, "p": [2, 0], "m": 1, "w": 0}]})",
+       "/chain"},
       // Pose scenes (SAM paper).
       {"unknown pose scene field", sam_with(R"(, "keyframe": [])"), "/keyframe"},
       {"pose matrix 3x3", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]},
-        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/matrix"},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})",
+       "/poses/0/matrix"},
       {"pose without time", R"({"method": "SAM", "poses": [{"matrix": [[1, 0, 0], [0, 1, 0]]},
-        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/t"},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})",
+       "/poses/0/t"},
       {"unknown pose field", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]], "turns": 1},
-        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/0/turns"},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})",
+       "/poses/0/turns"},
       {"one pose", R"({"method": "polySAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses"},
       {"unknown shape outline", sam_with(R"(, "shapes": [{"outline": "G"}])"), "/shapes/0/outline"},
       {"arrow layer in a pose scene", sam_with(R"(, "layers": [{"type": "pattern"}])"), "/layers/0/type"},
       {"unknown shapes layer field", sam_with(R"(, "layers": [{"type": "shapes", "colour": "red"}])"),
        "/layers/0/colour"},
-      {"existence rows too many", sam_with(R"(, "layers": [{"type": "existence", "rows": 5000}])"),
-       "/layers/0/rows"},
+      {"existence rows too many", sam_with(R"(, "layers": [{"type": "existence", "rows": 5000}])"), "/layers/0/rows"},
       {"3D existence steps too many", sam_with(R"(, "layers": [{"type": "sam3d-existence", "steps": 721}])"),
        "/layers/0/steps"},
       {"3D existence step too fine", sam_with(R"(, "layers": [{"type": "sam3d-existence", "step": 0.0001}])"),
@@ -207,15 +211,12 @@ const std::vector<BadScene>& bad_scenes() {
       {"unknown view field", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 1], "mid": [0, 0]}})"),
        "/canvas/view/mid"},
       {"unknown layer field", with_layer(R"({"type": "pattern", "colour": "red"})"), "/layers/0/colour"},
-      {"field of another layer type", with_layer(R"({"type": "pattern", "text": "hi"})"),
-       "/layers/0/text"},
-      {"field of another layer type (legend)", with_layer(R"({"type": "legend", "color": "red"})"),
-       "/layers/0/color"},
+      {"field of another layer type", with_layer(R"({"type": "pattern", "text": "hi"})"), "/layers/0/text"},
+      {"field of another layer type (legend)", with_layer(R"({"type": "legend", "color": "red"})"), "/layers/0/color"},
       {"unknown outline field", with_layer(R"({"type": "stroke", "outline": {"colour": "red"}})"),
        "/layers/0/outline/colour"},
       {"unknown panel field", p6_with(R"(, "panels": [{"methd": "P2"}])"), "/panels/0/methd"},
-      {"unknown panel option", p6_with(R"(, "panels": [{"options": {"anchr": "start"}}])"),
-       "/panels/0/options/anchr"},
+      {"unknown panel option", p6_with(R"(, "panels": [{"options": {"anchr": "start"}}])"), "/panels/0/options/anchr"},
       {"unknown panel keyframe field",
        p6_with(R"(, "panels": [{"keyframes": )" +
                three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0, "x": 1})") + "}]"),
@@ -229,20 +230,15 @@ const std::vector<BadScene>& bad_scenes() {
       {"canvas width not an integer", p6_with(R"(, "canvas": {"width": 800.5})"), "/canvas/width"},
       {"layers not an array", p6_with(R"(, "layers": {"type": "pattern"})"), "/layers"},
       {"layer not an object", with_layer(R"("pattern")"), "/layers/0"},
-      {"boolean field not a boolean", with_layer(R"({"type": "keyframes", "winding": "yes"})"),
-       "/layers/0/winding"},
-      {"outline not an object", with_layer(R"({"type": "stroke", "outline": "black"})"),
-       "/layers/0/outline"},
+      {"boolean field not a boolean", with_layer(R"({"type": "keyframes", "winding": "yes"})"), "/layers/0/winding"},
+      {"outline not an object", with_layer(R"({"type": "stroke", "outline": "black"})"), "/layers/0/outline"},
       {"color not a string", with_layer(R"({"type": "stroke", "fill": 3})"), "/layers/0/fill"},
-      {"discrepancy method not a string", with_layer(R"({"type": "discrepancy", "method": 6})"),
-       "/layers/0/method"},
+      {"discrepancy method not a string", with_layer(R"({"type": "discrepancy", "method": 6})"), "/layers/0/method"},
       {"panels not an array", p6_with(R"(, "panels": "P2")"), "/panels"},
       {"panel neither a string nor an object", p6_with(R"(, "panels": [3])"), "/panels/0"},
       {"panel title not a string", p6_with(R"(, "panels": [{"title": 3}])"), "/panels/0/title"},
-      {"range not a pair", with_layer(R"({"type": "pattern", "range": [0, 0.5, 1]})"),
-       "/layers/0/range"},
-      {"label point not a pair", with_layer(R"({"type": "label", "text": "A", "at": [1]})"),
-       "/layers/0/at"},
+      {"range not a pair", with_layer(R"({"type": "pattern", "range": [0, 0.5, 1]})"), "/layers/0/range"},
+      {"label point not a pair", with_layer(R"({"type": "label", "text": "A", "at": [1]})"), "/layers/0/at"},
       // Bounds.
       {"canvas width too small", p6_with(R"(, "canvas": {"width": 15})"), "/canvas/width"},
       {"canvas height too large", p6_with(R"(, "canvas": {"height": 8193})"), "/canvas/height"},
@@ -250,74 +246,57 @@ const std::vector<BadScene>& bad_scenes() {
       {"columns zero", p6_with(R"(, "canvas": {"columns": 0})"), "/canvas/columns"},
       {"columns too many", p6_with(R"(, "canvas": {"columns": 65})"), "/canvas/columns"},
       {"empty font", p6_with(R"(, "canvas": {"font": ""})"), "/canvas/font"},
-      {"too many layers", p6_with(R"(, "layers": [)" + many(R"({"type": "legend"})", 65) + "]"),
-       "/layers"},
+      {"too many layers", p6_with(R"(, "layers": [)" + many(R"({"type": "legend"})", 65) + "]"), "/layers"},
       {"line width zero", with_layer(R"({"type": "pattern", "width": 0})"), "/layers/0/width"},
-      {"line width too large", with_layer(R"({"type": "trajectory", "width": 101})"),
-       "/layers/0/width"},
+      {"line width too large", with_layer(R"({"type": "trajectory", "width": 101})"), "/layers/0/width"},
       {"opacity above 1", with_layer(R"({"type": "stroke", "opacity": 1.5})"), "/layers/0/opacity"},
       {"opacity below 0", with_layer(R"({"type": "pattern", "opacity": -0.1})"), "/layers/0/opacity"},
-      {"dash length not positive", with_layer(R"({"type": "pattern", "dash": [4, 0]})"),
-       "/layers/0/dash/1"},
-      {"dash too long", with_layer(R"({"type": "pattern", "dash": [)" + many("1", 17) + "]}"),
-       "/layers/0/dash"},
-      {"pattern samples too few", with_layer(R"({"type": "pattern", "samples": 1})"),
-       "/layers/0/samples"},
-      {"pattern samples too many", with_layer(R"({"type": "stroke", "samples": 10001})"),
-       "/layers/0/samples"},
-      {"trajectory samples too many", with_layer(R"({"type": "trajectory", "samples": 100001})"),
-       "/layers/0/samples"},
-      {"keyframe colors empty", with_layer(R"({"type": "keyframes", "colors": []})"),
+      {"dash length not positive", with_layer(R"({"type": "pattern", "dash": [4, 0]})"), "/layers/0/dash/1"},
+      {"dash too long", with_layer(R"({"type": "pattern", "dash": [)" + many("1", 17) + "]}"), "/layers/0/dash"},
+      {"pattern samples too few", with_layer(R"({"type": "pattern", "samples": 1})"), "/layers/0/samples"},
+      {"pattern samples too many", with_layer(R"({"type": "stroke", "samples": 10001})"), "/layers/0/samples"},
+      {"trajectory samples too many", with_layer(R"({"type": "trajectory", "samples": 100001})"), "/layers/0/samples"},
+      {"keyframe colors empty", with_layer(R"({"type": "keyframes", "colors": []})"), "/layers/0/colors"},
+      {"keyframe colors too many", with_layer(R"({"type": "keyframes", "colors": [)" + many(R"("red")", 17) + "]}"),
        "/layers/0/colors"},
-      {"keyframe colors too many",
-       with_layer(R"({"type": "keyframes", "colors": [)" + many(R"("red")", 17) + "]}"),
-       "/layers/0/colors"},
-      {"banner padding too large",
-       with_layer(R"({"type": "banner", "text": "A", "padding": 0.46})"), "/layers/0/padding"},
-      {"discrepancy scale zero", with_layer(R"({"type": "discrepancy", "scale": 0})"),
-       "/layers/0/scale"},
-      {"label size zero", with_layer(R"({"type": "label", "text": "A", "at": [0, 0], "size": 0})"),
-       "/layers/0/size"},
+      {"banner padding too large", with_layer(R"({"type": "banner", "text": "A", "padding": 0.46})"),
+       "/layers/0/padding"},
+      {"discrepancy scale zero", with_layer(R"({"type": "discrepancy", "scale": 0})"), "/layers/0/scale"},
+      {"label size zero", with_layer(R"({"type": "label", "text": "A", "at": [0, 0], "size": 0})"), "/layers/0/size"},
       {"legend size too large", with_layer(R"({"type": "legend", "size": 201})"), "/layers/0/size"},
       {"no panels", p6_with(R"(, "panels": [])"), "/panels"},
       {"too many panels", p6_with(R"(, "panels": [)" + many(R"("P1")", 65) + "]"), "/panels"},
       {"panel samples too many", p6_with(R"(, "panels": [{"samples": 10001}])"), "/panels/0/samples"},
       {"panel keyframe magnitude not positive",
-       p6_with(R"(, "panels": [{"keyframes": )" +
-               three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": -1, "w": 0})") + "}]"),
+       p6_with(R"(, "panels": [{"keyframes": )" + three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": -1, "w": 0})") +
+               "}]"),
        "/panels/0/keyframes/1/m"},
       {"panel SMA given a blend chain",
        p6_with(R"(, "panels": [{"method": "SMA", "chain": "blend", "keyframes": )" +
                three_keyframes(R"({"t": 0.5, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
        "/panels/0/chain"},
       // Colors.
-      {"hex color of 5 digits", p6_with(R"(, "canvas": {"background": "#12345"})"),
-       "/canvas/background"},
+      {"hex color of 5 digits", p6_with(R"(, "canvas": {"background": "#12345"})"), "/canvas/background"},
       {"hex color with a non-hex digit", with_layer(R"({"type": "keyframes", "colors": ["red", "#ggg"]})"),
        "/layers/0/colors/1"},
       {"unknown color name", with_layer(R"({"type": "label", "text": "A", "at": [0, 0], "color": "rde"})"),
        "/layers/0/color"},
-      {"color name in capitals", with_layer(R"({"type": "pattern", "color": "Red"})"),
-       "/layers/0/color"},
+      {"color name in capitals", with_layer(R"({"type": "pattern", "color": "Red"})"), "/layers/0/color"},
       // Choices.
       {"y axis", p6_with(R"(, "canvas": {"y_axis": "sideways"})"), "/canvas/y_axis"},
       {"view", p6_with(R"(, "canvas": {"view": "fit"})"), "/canvas/view"},
       {"view box without min", p6_with(R"(, "canvas": {"view": {"max": [1, 1]}})"), "/canvas/view/min"},
       {"layer without type", with_layer(R"({"color": "red"})"), "/layers/0/type"},
       {"unknown layer type", with_layer(R"({"type": "patern"})"), "/layers/0/type"},
-      {"trajectory point", with_layer(R"({"type": "trajectory", "point": "start"})"),
-       "/layers/0/point"},
-      {"spiral center", with_layer(R"({"type": "keyframes", "spiral_center": "middle"})"),
-       "/layers/0/spiral_center"},
-      {"predictor", with_layer(R"({"type": "discrepancy", "predictor": "next"})"),
-       "/layers/0/predictor"},
+      {"trajectory point", with_layer(R"({"type": "trajectory", "point": "start"})"), "/layers/0/point"},
+      {"spiral center", with_layer(R"({"type": "keyframes", "spiral_center": "middle"})"), "/layers/0/spiral_center"},
+      {"predictor", with_layer(R"({"type": "discrepancy", "predictor": "next"})"), "/layers/0/predictor"},
       {"legend corner", with_layer(R"({"type": "legend", "corner": "top"})"), "/layers/0/corner"},
       // Required text.
       {"banner without text", with_layer(R"({"type": "banner"})"), "/layers/0/text"},
       {"banner with empty text", with_layer(R"({"type": "banner", "text": ""})"), "/layers/0/text"},
       {"banner text too long",
-       with_layer(R"({"type": "banner", "text": ")" + std::string(kMaxTextLength + 1, 'x') + "\"}"),
-       "/layers/0/text"},
+       with_layer(R"({"type": "banner", "text": ")" + std::string(kMaxTextLength + 1, 'x') + "\"}"), "/layers/0/text"},
       {"label without point", with_layer(R"({"type": "label", "text": "A"})"), "/layers/0/at"},
       // Moving keyframes {"t", "from", "to"} (PITA Sec. 7.4).
       {"moving keyframe without \"to\"", p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}})"),
@@ -325,12 +304,14 @@ const std::vector<BadScene>& bad_scenes() {
       {"moving keyframe without \"from\"", p6_with_middle(R"({"t": 0.5, "to": {"p": [1, 1], "m": 1, "w": 0}})"),
        "/keyframes/1/from"},
       {"moving keyframe with \"p\"",
-       p6_with_middle(R"({"t": 0.5, "p": [1, 1], "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, 1], "m": 1, "w": 0}})"),
+       p6_with_middle(
+           R"({"t": 0.5, "p": [1, 1], "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, 1], "m": 1, "w": 0}})"),
        "/keyframes/1/p"},
       {"moving keyframe's \"from\" not an object",
        p6_with_middle(R"({"t": 0.5, "from": [1, 1], "to": {"p": [1, 1], "m": 1, "w": 0}})"), "/keyframes/1/from"},
       {"moving keyframe's \"to\" with a knot",
-       p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"t": 1, "p": [1, 1], "m": 1, "w": 0}})"),
+       p6_with_middle(
+           R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"t": 1, "p": [1, 1], "m": 1, "w": 0}})"),
        "/keyframes/1/to/t"},
       {"panel moving keyframe without \"to\"",
        p6_with(R"(, "panels": [{"keyframes": )" +
@@ -341,16 +322,15 @@ const std::vector<BadScene>& bad_scenes() {
       {"handle magnitude zero", p6_with(R"(, "handle": {"p": [0, 0], "m": 0, "w": 0})"), "/handle/m"},
       {"handle with a knot", p6_with(R"(, "handle": {"t": 0, "p": [0, 0], "q": [1, 0]})"), "/handle/t"},
       {"handle without its start", p6_with(R"(, "handle": {"q": [1, 0]})"), "/handle/p"},
-      {"handle with points", R"({"method": "P6", "points": )" + kFourPoints + R"(, "handle": {"p": [0, 0], "q": [1, 0]}})",
-       "/handle"},
+      {"handle with points",
+       R"({"method": "P6", "points": )" + kFourPoints + R"(, "handle": {"p": [0, 0], "q": [1, 0]}})", "/handle"},
       {"panel handle magnitude negative", p6_with(R"(, "panels": [{"handle": {"p": [0, 0], "m": -1, "w": 0}}])"),
        "/panels/0/handle/m"},
       {"panel handle with points",
        p6_with(R"(, "panels": [{"points": )" + kFourPoints + R"(, "handle": {"p": [0, 0], "q": [1, 0]}}])"),
        "/panels/0/handle"},
       {"unknown handle layer field", with_layer(R"({"type": "handle", "colour": "red"})"), "/layers/0/colour"},
-      {"handle layer shapes not a boolean", with_layer(R"({"type": "handle", "shapes": "yes"})"),
-       "/layers/0/shapes"},
+      {"handle layer shapes not a boolean", with_layer(R"({"type": "handle", "shapes": "yes"})"), "/layers/0/shapes"},
       {"field of a shapes layer in a handle layer", with_layer(R"({"type": "handle", "fill": "red"})"),
        "/layers/0/fill"},
       {"handle layer in a pose scene", sam_with(R"(, "layers": [{"type": "handle"}])"), "/layers/0/type"},
@@ -391,7 +371,8 @@ const std::vector<BadScene>& bad_scenes() {
       {"claim with an unknown measure", p6_with(R"(, "claims": [{"says": "x", "measure": "twist", "below": 1}])"),
        "/claims/0/measure"},
       {"claim bound with an unknown field",
-       p6_with(R"(, "claims": [{"says": "x", "measure": "turning", "below": {"factor": 2}}])"), "/claims/0/below/factor"},
+       p6_with(R"(, "claims": [{"says": "x", "measure": "turning", "below": {"factor": 2}}])"),
+       "/claims/0/below/factor"},
       {"shapes layer times not a list", with_layer(R"({"type": "shapes", "times": 0.5})"), "/layers/0/times"},
   };
   return corpus;
@@ -403,11 +384,12 @@ const std::vector<BadScene>& bad_scenes() {
 const std::vector<BadScene>& parser_only_scenes() {
   static const std::vector<BadScene> corpus = {
       {"singular pose", R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-        {"t": 1, "matrix": [[1, 2, 0], [2, 4, 0]]}]})", "/poses/1/matrix"},
+        {"t": 1, "matrix": [[1, 2, 0], [2, 4, 0]]}]})",
+       "/poses/1/matrix"},
       {"pose times not increasing", R"({"method": "SAM", "poses": [{"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]},
-        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})", "/poses/1/t"},
-      {"range ends out of order", with_layer(R"({"type": "pattern", "range": [1, 0.5]})"),
-       "/layers/0/range/1"},
+        {"t": 1, "matrix": [[1, 0, 0], [0, 1, 0]]}]})",
+       "/poses/1/t"},
+      {"range ends out of order", with_layer(R"({"type": "pattern", "range": [1, 0.5]})"), "/layers/0/range/1"},
       {"view min not below max", p6_with(R"(, "canvas": {"view": {"min": [0, 0], "max": [1, 0]}})"),
        "/canvas/view/max/1"},
       {"panel method that the scene's chain cannot extend", p6_with(R"(, "chain": "blend", "panels": ["SMA"])"),
@@ -418,7 +400,8 @@ const std::vector<BadScene>& parser_only_scenes() {
        p6_with(R"(, "panels": [{"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
          {"t": 1, "p": [1, 0], "m": 1, "w": 0}]}])"),
        "/panels/0/keyframes"},
-      {"neville chain over more keyframes than it takes", R"({"method": "P6", "chain": "neville", "keyframes": [)" +
+      {"neville chain over more keyframes than it takes",
+       R"({"method": "P6", "chain": "neville", "keyframes": [)" +
            [] {
              std::string keys;
              for (int i = 0; i < 65; ++i) {
@@ -426,15 +409,14 @@ const std::vector<BadScene>& parser_only_scenes() {
                        R"(, "p": [0, 0], "m": 1, "w": 0})";
              }
              return keys;
-           }() + "]}",
+           }() +
+           "]}",
        "/chain"},
       {"panel knots not increasing",
-       p6_with(R"(, "panels": [{"keyframes": )" +
-               three_keyframes(R"({"t": 1, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
+       p6_with(R"(, "panels": [{"keyframes": )" + three_keyframes(R"({"t": 1, "p": [1, 1], "m": 1, "w": 0})") + "}]"),
        "/panels/0/keyframes/2/t"},
       {"unknown panel method", p6_with(R"(, "panels": ["P66"])"), "/panels/0"},
-      {"unknown discrepancy method", with_layer(R"({"type": "discrepancy", "method": "P66"})"),
-       "/layers/0/method"},
+      {"unknown discrepancy method", with_layer(R"({"type": "discrepancy", "method": "P66"})"), "/layers/0/method"},
       {"handle of zero length", p6_with(R"(, "handle": {"p": [1, 1], "q": [1, 1]})"), "/handle/q"},
       {"moving keyframe's target of zero length",
        p6_with_middle(R"({"t": 0.5, "from": {"p": [1, 1], "m": 1, "w": 0}, "to": {"p": [1, 1], "q": [1, 1]}})"),
@@ -473,8 +455,8 @@ TEST(SceneSchemaValidation, BadScenesAreRefusedByBoth) {
     // The schema refuses it for the same mistake: each of its errors is at the
     // bad value or at an object or array that holds it.
     for (const std::string& at : verdict.pointers) {
-      const bool holds = bad.pointer.rfind(at, 0) == 0 &&
-                         (at.size() == bad.pointer.size() || bad.pointer[at.size()] == '/');
+      const bool holds =
+          bad.pointer.rfind(at, 0) == 0 && (at.size() == bad.pointer.size() || bad.pointer[at.size()] == '/');
       EXPECT_TRUE(holds) << "schema error at " << at << ":\n" << verdict.errors;
     }
     EXPECT_EQ(error_pointer(bad.text), bad.pointer) << error_message(bad.text);
@@ -618,7 +600,8 @@ const std::vector<std::string>& good_scenes() {
                       "overlay": [0, 0.5, 1]}
       })",
       p6_with(R"(, "animation": {"duration": 0.05, "fps": 30, "what": "motion", "trail": 100, "loop": true})"),
-      sam_with(R"(, "animation": {"duration": 3, "fps": 240, "frames": 100000, "loop": true, "what": "motion", "trail": 0})"),
+      sam_with(
+          R"(, "animation": {"duration": 3, "fps": 240, "frames": 100000, "loop": true, "what": "motion", "trail": 0})"),
       // A pose scene without poses: only layers that need none.
       R"({"method": "SAM", "layers": [{"type": "existence"}]})",
       R"({"method": "SAM", "layers": [{"type": "sam3d-existence", "steps": 12, "subdivisions": 1, "step": 0.02,
@@ -643,12 +626,10 @@ TEST(SceneSchemaValidation, ColorNamesMatchTheParser) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   std::vector<std::string> names;
   for (const NamedColor& named : named_colors()) names.emplace_back(named.name);
-  EXPECT_EQ(schema.at("definitions").at("color").at("anyOf").at(1).at("enum"),
-            nlohmann::json(names));
+  EXPECT_EQ(schema.at("definitions").at("color").at("anyOf").at(1).at("enum"), nlohmann::json(names));
   const std::string description = schema.at("definitions").at("color").at("description");
   for (const NamedColor& named : named_colors()) {
-    EXPECT_NE(description.find(std::string(named.name) + " (" + std::string(named.hex) + ")"),
-              std::string::npos)
+    EXPECT_NE(description.find(std::string(named.name) + " (" + std::string(named.hex) + ")"), std::string::npos)
         << named.name;
   }
 }
@@ -658,8 +639,14 @@ TEST(SceneSchemaValidation, LintChecksMatchTheTable) {
   const nlohmann::json schema = read_json(kSourceDir / "schema/scene.schema.json");
   std::vector<std::string> names;
   for (const LintCheckInfo& check : kLintChecks) names.emplace_back(check.name);
-  EXPECT_EQ(schema.at("definitions").at("lint").at("properties").at("allow").at("items").at("properties").at("check").at(
-                "enum"),
+  EXPECT_EQ(schema.at("definitions")
+                .at("lint")
+                .at("properties")
+                .at("allow")
+                .at("items")
+                .at("properties")
+                .at("check")
+                .at("enum"),
             nlohmann::json(names));
 }
 
@@ -695,9 +682,9 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
   EXPECT_EQ(items.at(3).at("pattern"), "^discrepancy(-t)?:(previous|average|pita)$");
   for (const char* name : {"discrepancy:", "discrepancy-t:"}) {
     const auto entries = measure_entries();
-    EXPECT_TRUE(std::any_of(entries.begin(), entries.end(),
-                            [&](const MeasureEntry& e) { return e.argument && e.name == name; }))
-        << name;
+    EXPECT_TRUE(std::any_of(entries.begin(), entries.end(), [&](const MeasureEntry& e) {
+      return e.argument && e.name == name;
+    })) << name;
   }
   EXPECT_EQ(items.size(), 4u);
   // A claim's measures: the layer's, "frame-distance:" and "property:" (whose names
@@ -741,10 +728,10 @@ TEST(SceneSchemaValidation, OptionNamesMatchTheParser) {
 // 3D pose scenes ("dimension": 3): the schema's spacePoseScene and the
 // parser. The method pattern accepts exactly the pose methods the table
 // marks in_space.
-std::string space_scene(const std::string& method, const std::string& second_pose,
-                        const std::string& extra = "") {
+std::string space_scene(const std::string& method, const std::string& second_pose, const std::string& extra = "") {
   return R"({"dimension": 3, "method": ")" + method + R"(", "poses": [
-    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}, )" + second_pose + "]" + extra + "}";
+    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}, )" +
+         second_pose + "]" + extra + "}";
 }
 
 const std::string kSpacePose = R"({"t": 1, "matrix": [[0, -1, 0, 1], [1, 0, 0, 0], [0, 0, 1, 2]]})";
@@ -759,22 +746,21 @@ TEST(SceneSchemaValidation, SpaceScenesAgreeWithTheParser) {
     EXPECT_EQ(validate(document).valid, entry.in_space) << entry.id;
     EXPECT_EQ(space_error_pointer(text) == "(no error)", entry.in_space) << entry.id;
   }
-  const std::string good = space_scene(
-      "SAM", R"({"t": 1, "tetrahedron": [[1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 0, 1]]})",
-      R"(, "reference_tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "samples": 5)");
+  const std::string good =
+      space_scene("SAM", R"({"t": 1, "tetrahedron": [[1, 0, 0], [1, 1, 0], [0, 0, 0], [1, 0, 1]]})",
+                  R"(, "reference_tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], "samples": 5)");
   EXPECT_EQ(schema_errors(nlohmann::json::parse(good)), "");
   EXPECT_EQ(space_error_pointer(good), "(no error)");
 
   const std::vector<BadScene> bad = {
       {"2D matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]})"), "/poses/1/matrix"},
       {"triangle", space_scene("SAM", R"({"t": 1, "triangle": [[0, 0], [1, 0], [0, 1]]})"), "/poses/1/triangle"},
-      {"3x3 matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"),
-       "/poses/1/matrix"},
-      {"tetrahedron of three points", space_scene("SAM", R"({"t": 1, "tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]})"),
-       "/poses/1/tetrahedron"},
+      {"3x3 matrix", space_scene("SAM", R"({"t": 1, "matrix": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]})"), "/poses/1/matrix"},
+      {"tetrahedron of three points",
+       space_scene("SAM", R"({"t": 1, "tetrahedron": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]})"), "/poses/1/tetrahedron"},
       {"dimension 4", R"({"dimension": 4, "method": "SAM", "poses": []})", "/dimension"},
-      {"reference triangle in space", space_scene("SAM", kSpacePose, R"(, "reference_triangle": [[0, 0], [1, 0], [0, 1]])"),
-       "/reference_triangle"},
+      {"reference triangle in space",
+       space_scene("SAM", kSpacePose, R"(, "reference_triangle": [[0, 0], [1, 0], [0, 1]])"), "/reference_triangle"},
   };
   for (const BadScene& scene : bad) {
     EXPECT_FALSE(validate(nlohmann::json::parse(scene.text)).valid) << scene.what;

@@ -2,15 +2,13 @@
 // scenes"): 3x4 matrices and tetrahedra, the reference tetrahedron, which
 // commands may read them. Refusals: tests/data/bad/space-*; the schema side:
 // test_schema.cpp (SpaceScenesAgreeWithTheParser).
-#include "scene/space_pose_reader.hpp"
-
-#include <gtest/gtest.h>
-
 #include <string>
 
 #include <Eigen/Core>
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
+#include "scene/space_pose_reader.hpp"
 #include "support/keys.hpp"
 
 namespace pita::scene {
@@ -18,9 +16,7 @@ namespace {
 
 using Eigen::Vector3d;
 
-Scene parse_space(const std::string& text) {
-  return parse_scene(text, "s.json");
-}
+Scene parse_space(const std::string& text) { return parse_scene(text, "s.json"); }
 
 TEST(SpacePoseScene, MatricesAreRowsOfTheAffinity) {
   const Scene scene = parse_space(R"({"dimension": 3, "method": "polysam", "poses": [
@@ -46,7 +42,9 @@ TEST(SpacePoseScene, TetrahedraMapTheReferenceTetrahedron) {
       "poses": [{"t": 0, "tetrahedron": [[1, 1, 1], [3, 1, 1], [1, 2, 1], [1, 1, 5]]},
                 {"t": 1, "tetrahedron": [[0, 0, 0], [0, 2, 0], [-1, 0, 0], [0, 0, 4]]}]})");
   ASSERT_EQ(space_keys(scene).poses.size(), 2u);
-  EXPECT_LT((space_keys(scene).poses[0].pose.L - Eigen::Matrix3d::Identity()).norm() + space_keys(scene).poses[0].pose.b.norm(), 1e-15);
+  EXPECT_LT((space_keys(scene).poses[0].pose.L - Eigen::Matrix3d::Identity()).norm() +
+                space_keys(scene).poses[0].pose.b.norm(),
+            1e-15);
   const Affine3& A = space_keys(scene).poses[1].pose;
   EXPECT_LT((apply(A, Vector3d(1, 1, 1)) - Vector3d(0, 0, 0)).norm(), 1e-14);
   EXPECT_LT((apply(A, Vector3d(3, 1, 1)) - Vector3d(0, 2, 0)).norm(), 1e-14);

@@ -1,9 +1,9 @@
 // Reading "timing" (src/scene/timing_reader.cpp): every ease form, the
 // arc-length point, per, and inheritance by panels. Refusals are data files
 // (tests/data/bad/timing-*.json).
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "core/ease.hpp"
 #include "scene/scene.hpp"
@@ -20,7 +20,8 @@ Scene with_timing(const std::string& timing, const std::string& more = "") {
 
 TEST(TimingReader, NoTimingIsTheIdentity) {
   const Scene scene = parse_scene(R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
-      {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})", "s.json");
+      {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]})",
+                                  "s.json");
   EXPECT_TRUE(scene.timing.is_identity());
   EXPECT_EQ(scene.timing.pointer, "");
   EXPECT_TRUE(scene.panels[0].timing.is_identity());
@@ -63,7 +64,8 @@ TEST(TimingReader, ArcLengthPointAndPer) {
 }
 
 TEST(TimingReader, PanelsInheritTheScenesTimingUnlessTheyGiveTheirOwn) {
-  const Scene scene = with_timing(R"({"ease": "sine"})", R"(, "panels": ["P1", {"method": "P3", "timing": {"ease": "ease-out"}}, {"title": "x"}])");
+  const Scene scene = with_timing(
+      R"({"ease": "sine"})", R"(, "panels": ["P1", {"method": "P3", "timing": {"ease": "ease-out"}}, {"title": "x"}])");
   ASSERT_EQ(scene.panels.size(), 3u);
   EXPECT_EQ(scene.panels[0].timing.ease, *find_named_ease("sine"));
   EXPECT_EQ(scene.panels[1].timing.ease, *find_named_ease("ease-out"));
@@ -74,7 +76,8 @@ TEST(TimingReader, PanelsInheritTheScenesTimingUnlessTheyGiveTheirOwn) {
 
 TEST(TimingReader, PoseScenesTakeTheSameTiming) {
   const Scene scene = parse_scene(R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
-      {"t": 1, "matrix": [[1, 0, 3], [0, 1, 0]]}], "timing": {"ease": "ease-in", "arc_length": "q"}})", "s.json");
+      {"t": 1, "matrix": [[1, 0, 3], [0, 1, 0]]}], "timing": {"ease": "ease-in", "arc_length": "q"}})",
+                                  "s.json");
   EXPECT_EQ(scene.timing.ease, *find_named_ease("ease-in"));
   EXPECT_EQ(scene.timing.arc_length, TrackedPoint::end);
   EXPECT_EQ(scene.panels[0].timing.ease, *find_named_ease("ease-in"));

@@ -1,14 +1,14 @@
 // Saves of watched files (src/serve/file_watch.cpp): a write in place, a new
 // file renamed over the old one and a deletion each count; a file that is not
 // watched does not; a burst of saves is one answer; nothing is a timeout.
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "serve/file_watch.hpp"
 

@@ -1,11 +1,10 @@
 // Edits of JSON text that keep the rest of it (src/serve/json_edit.cpp): the
 // value at a pointer is found in objects and arrays, with escapes in keys and
 // in pointers, and replacing it changes those bytes only.
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "serve/json_edit.hpp"

@@ -3,12 +3,11 @@
 // them; dragging a tail moves p, a tip sets q or m and w (keeping the turns),
 // a corner moves a triangle's point or sets the matrix that maps the
 // reference triangle there.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <numbers>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "motion/stage.hpp"
@@ -105,7 +104,8 @@ TEST(SceneEdit, DraggingACornerMovesTheTriangleOrSetsTheMatrix) {
 TEST(SceneEdit, AHandleTheFigureDoesNotHaveIsRefused) {
   const Drawn d = draw(kArrows);
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}), std::invalid_argument);
-  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}), std::invalid_argument);
+  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}),
+               std::invalid_argument);
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 3, "/keyframes/0", "tail", {0, 0}), std::invalid_argument);
 }
 
@@ -124,8 +124,11 @@ TEST(SceneEdit, APanelWithPosesOfItsOwnEditsThem) {
 TEST(SceneEdit, OnlyTheValuesADragWritesMayBeSentBack) {
   check_change(kArrows, {"/keyframes/0/p", "[1, 2]"});
   check_change(kArrows, {"/keyframes/2/w", "3.5"});
-  for (const Change& bad : std::vector<Change>{{"", "{}"}, {"/method", "\"P1\""}, {"/keyframes/0/t", "5"},
-                                               {"/keyframes/0/p", "[1, 2], \"x\": 1"}, {"/keyframes/0/q", "[1, 2]"},
+  for (const Change& bad : std::vector<Change>{{"", "{}"},
+                                               {"/method", "\"P1\""},
+                                               {"/keyframes/0/t", "5"},
+                                               {"/keyframes/0/p", "[1, 2], \"x\": 1"},
+                                               {"/keyframes/0/q", "[1, 2]"},
                                                {"/keyframes/9/p", "[1, 2]"}}) {
     EXPECT_THROW(check_change(kArrows, bad), std::invalid_argument) << bad.pointer << " = " << bad.value;
   }

@@ -2,9 +2,9 @@
 // compile in parallel). Each function is Eigen's on the dynamic-size matrix:
 // one instantiation of the Schur-Pade machinery serves every size (three
 // fixed sizes took three times as long to compile, docs/explanation/build-time.md "Build time").
-#include "support/matrix_functions.hpp"
-
 #include <unsupported/Eigen/MatrixFunctions>
+
+#include "support/matrix_functions.hpp"
 
 namespace pita::oracle {
 namespace {

@@ -1,7 +1,7 @@
 // The long double half of matrix_functions.hpp; dynamic-size, as the double half.
-#include "support/matrix_functions.hpp"
-
 #include <unsupported/Eigen/MatrixFunctions>
+
+#include "support/matrix_functions.hpp"
 
 namespace pita::oracle {
 namespace {

@@ -1,11 +1,10 @@
 // A sweep's definition (src/sweep/definition.cpp): DIR/sweep.json written and
 // read back as --merge reads it, and the folders that are not a sweep's.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include "sweep/definition.hpp"

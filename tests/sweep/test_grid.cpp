@@ -1,8 +1,8 @@
 // The axes and the grid of a sweep (src/sweep/grid.cpp): the three SPEC forms,
 // the order of the product, --zip, and the limits.
-#include <gtest/gtest.h>
-
 #include <cmath>
+
+#include <gtest/gtest.h>
 
 #include "sweep/grid.hpp"
 
@@ -81,9 +81,10 @@ TEST(Grid, QuotedItemsAreJsonStrings) {
 }
 
 TEST(Grid, MalformedSpecsAreUsageErrors) {
-  for (const char* bad : {"/x", "x=1:2:3", "/x=", "/x=1:2", "/x=1:2:0", "/x=1:2:-4", "/x=1:2:2.5", "/x=a:2:3",
-                          "/x=1:inf:3", "/x=log:0:1:3", "/x=log:-1:1:3", "/x=1,,2", "/x=1:2:3:4", "/x=1:2:20000000", "/x=-1e308:1e308:3",
-                          "/x~2=1,2", R"(/title="a\u0000b")", R"(/title="\u001b[31mred")", R"(/title="\u0007")"}) {
+  for (const char* bad :
+       {"/x", "x=1:2:3", "/x=", "/x=1:2", "/x=1:2:0", "/x=1:2:-4", "/x=1:2:2.5", "/x=a:2:3", "/x=1:inf:3",
+        "/x=log:0:1:3", "/x=log:-1:1:3", "/x=1,,2", "/x=1:2:3:4", "/x=1:2:20000000", "/x=-1e308:1e308:3", "/x~2=1,2",
+        R"(/title="a\u0000b")", R"(/title="\u001b[31mred")", R"(/title="\u0007")"}) {
     EXPECT_THROW((void)parse_axis(bad), SweepUsageError) << bad;
   }
 }

@@ -4,19 +4,18 @@
 // strings, empty as null; data files of a larger earlier run go; the page
 // embeds no markup from the data. The page itself in Chromium:
 // tests/sweep/test_index_page.py.
-#include "sweep/index_page.hpp"
-#include "sweep/index_script.hpp"
-
-#include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <unistd.h>
+
+#include "sweep/index_page.hpp"
+#include "sweep/index_script.hpp"
 
 namespace pita::sweep {
 namespace {
@@ -95,7 +94,7 @@ TEST_F(IndexPage, RowsFilesHoldTheManifestsRowsAsPrinted) {
   EXPECT_EQ(row[3], fmt::format("v%20{}.svg", kIndexRowsPerFile + 1));  // a URL
   EXPECT_EQ(row[4], "P6");
   EXPECT_EQ(row[5], std::to_string(kIndexRowsPerFile + 1));
-  EXPECT_EQ(first[1][7], "0.5");     // path_length_p as the manifest prints it
+  EXPECT_EQ(first[1][7], "0.5");  // path_length_p as the manifest prints it
   EXPECT_EQ(first[1][13], "1.5e-07");
 }
 
@@ -110,7 +109,7 @@ TEST_F(IndexPage, ColumnsHoldNumbersTextAndNullInManifestOrder) {
   ASSERT_EQ(method.size(), 7u);
   EXPECT_EQ(method[0], "P1");
   EXPECT_EQ(method[1], "P6");
-  EXPECT_EQ(value[6], 6);        // a number: sorted as one
+  EXPECT_EQ(value[6], 6);  // a number: sorted as one
   EXPECT_EQ(length[4], 2.0);
   EXPECT_TRUE(length[2].is_null());  // a failed variant: no metric, sorted last
   EXPECT_EQ(discrepancy[0], 1.5e-07);
@@ -123,7 +122,8 @@ TEST_F(IndexPage, ColumnsHoldNumbersTextAndNullInManifestOrder) {
 
 TEST_F(IndexPage, ALargerEarlierRunsDataFilesAndTemporariesGo) {
   fs::create_directories(dir_ / "index");
-  for (const char* stale : {"rows-3.js", "column-v7.js", ".rows-0.js.a1B2c3"}) std::ofstream(dir_ / "index" / stale) << "x";
+  for (const char* stale : {"rows-3.js", "column-v7.js", ".rows-0.js.a1B2c3"})
+    std::ofstream(dir_ / "index" / stale) << "x";
   std::ofstream(dir_ / "index/notes.txt") << "mine";
   write_index_html(write_manifest(3));
   EXPECT_TRUE(fs::exists(dir_ / "index/rows-0.js"));

@@ -1,15 +1,15 @@
 // The script of index.html built into pita (src/sweep/index_script.hpp): the
 // file src/sweep/index_page.js as it is, with nothing in it that would end or
 // bend the <script> element holding it.
-#include "sweep/index_script.hpp"
-
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
+
+#include "sweep/index_script.hpp"
 
 namespace pita::sweep {
 namespace {

@@ -1,13 +1,12 @@
 // The manifest (src/sweep/manifest.cpp): written and read back field for
 // field, quoting included; file names; a foreign manifest is refused.
-#include <gtest/gtest.h>
-
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <exception>
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "sweep/manifest.hpp"
 

@@ -2,12 +2,12 @@
 // writes its scene, figure and frames and records its metrics; a variant the
 // scene reader refuses keeps only its scene, removes what an earlier run
 // wrote for it, and names its own file in the status.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "scene/scene.hpp"
 #include "sweep/run_variant.hpp"
@@ -29,8 +29,9 @@ std::string file_text(const fs::path& path) {
 class RunVariant : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pita-run-variant-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() /
+           ("pita-run-variant-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

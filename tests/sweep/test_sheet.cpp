@@ -2,22 +2,19 @@
 // before any of it is drawn, and a sheet beyond kMaxContactUnits is left out
 // with a note (issue 37: 32 heavy variants drew 1.6 GB of SVG in memory); a
 // sweep larger than kMaxContactCells shows an evenly spaced sample.
-#include "sweep/sheet.hpp"
-
-#include <gtest/gtest.h>
-
-#include <unistd.h>
-
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
-#include <algorithm>
-#include <cstdint>
+#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include "render/budget.hpp"
 #include "scene/scene.hpp"
+#include "sweep/sheet.hpp"
 
 namespace pita::sweep {
 namespace {

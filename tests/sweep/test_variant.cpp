@@ -1,10 +1,10 @@
 // Variants of a base scene (src/sweep/variant.cpp): values set where the
 // pointers say, pointers that cannot be set refused with the nearest one that
 // exists, and the content hash.
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+
+#include <gtest/gtest.h>
 
 #include "sweep/variant.hpp"
 

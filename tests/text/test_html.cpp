@@ -1,8 +1,8 @@
 // The one HTML escape (src/text/html.cpp): the five characters of markup,
 // the control characters XML refuses, and nothing else.
-#include <gtest/gtest.h>
-
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "text/html.hpp"
 

@@ -1,11 +1,11 @@
 // The one splitter of lists (src/text/list.hpp): every item between the
 // separators, empty ones included, untrimmed, in order.
-#include <gtest/gtest.h>
-
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "text/list.hpp"
 
@@ -14,7 +14,8 @@ namespace {
 
 std::vector<std::string> items(std::string_view text, char separator = ',') {
   std::vector<std::string> out;
-  for_each_item(text, [&](std::string_view item) { out.emplace_back(item); }, separator);
+  for_each_item(
+      text, [&](std::string_view item) { out.emplace_back(item); }, separator);
   return out;
 }
 

@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-
 namespace pita {
 
 BlendChain::BlendChain(std::span<const Keyframe> keyframes, const WindowMotion& triple, bool winding_aware)

@@ -57,10 +57,14 @@ std::string chain_names() {
 double chain_frame_cost(Chain chain, std::size_t count) {
   const double n = static_cast<double>(count);
   switch (chain) {
-    case Chain::blend: return 3.0;
-    case Chain::neville: return std::max(n - 2.0, 1.0) + std::max((n - 2.0) * (n - 3.0) / 2.0, 0.0);
-    case Chain::spiral: return 1.0;
-    case Chain::bezier_spiral: return 2.0;
+    case Chain::blend:
+      return 3.0;
+    case Chain::neville:
+      return std::max(n - 2.0, 1.0) + std::max((n - 2.0) * (n - 3.0) / 2.0, 0.0);
+    case Chain::spiral:
+      return 1.0;
+    case Chain::bezier_spiral:
+      return 2.0;
   }
   return 1.0;
 }
@@ -91,9 +95,12 @@ std::unique_ptr<Motion> make_chain(Chain chain, std::span<const Keyframe> keyfra
             "consecutive spirals");
       }
       return std::make_unique<BlendChain>(keyframes, window, winding_aware);
-    case Chain::neville: return std::make_unique<NevilleChain>(keyframes, window, window_size, winding_aware);
-    case Chain::spiral: return std::make_unique<SpiralChain>(keyframes, sma);
-    case Chain::bezier_spiral: return std::make_unique<BezierSpiralChain>(keyframes, sma);
+    case Chain::neville:
+      return std::make_unique<NevilleChain>(keyframes, window, window_size, winding_aware);
+    case Chain::spiral:
+      return std::make_unique<SpiralChain>(keyframes, sma);
+    case Chain::bezier_spiral:
+      return std::make_unique<BezierSpiralChain>(keyframes, sma);
   }
   throw std::logic_error("unhandled chain");
 }

@@ -9,24 +9,36 @@ namespace pita {
 
 std::array<int, 3> permutation_slots(Permutation p) {
   switch (p) {
-    case Permutation::ABC: return {0, 1, 2};
-    case Permutation::ACB: return {0, 2, 1};
-    case Permutation::BAC: return {1, 0, 2};
-    case Permutation::BCA: return {1, 2, 0};
-    case Permutation::CAB: return {2, 0, 1};
-    case Permutation::CBA: return {2, 1, 0};
+    case Permutation::ABC:
+      return {0, 1, 2};
+    case Permutation::ACB:
+      return {0, 2, 1};
+    case Permutation::BAC:
+      return {1, 0, 2};
+    case Permutation::BCA:
+      return {1, 2, 0};
+    case Permutation::CAB:
+      return {2, 0, 1};
+    case Permutation::CBA:
+      return {2, 1, 0};
   }
   return {0, 1, 2};
 }
 
 Permutation time_reverse(Permutation p) {
   switch (p) {
-    case Permutation::ABC: return Permutation::CBA;
-    case Permutation::CBA: return Permutation::ABC;
-    case Permutation::BCA: return Permutation::BAC;
-    case Permutation::BAC: return Permutation::BCA;
-    case Permutation::CAB: return Permutation::ACB;
-    case Permutation::ACB: return Permutation::CAB;
+    case Permutation::ABC:
+      return Permutation::CBA;
+    case Permutation::CBA:
+      return Permutation::ABC;
+    case Permutation::BCA:
+      return Permutation::BAC;
+    case Permutation::BAC:
+      return Permutation::BCA;
+    case Permutation::CAB:
+      return Permutation::ACB;
+    case Permutation::ACB:
+      return Permutation::CAB;
   }
   return p;
 }

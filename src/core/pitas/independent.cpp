@@ -14,7 +14,8 @@ Arrow IndependentPita::at(double t) const {
   const Arrow& C = k_.c.arrow;
   const Point p = point_ == PointMotion::parabola ? parabolic_point(l, A.p, B.p, C.p) : spiral_.at(l);
   switch (vector_) {
-    case VectorMotion::cartesian: return arrow_from_vector(p, cartesian_vector(l, A, B, C));
+    case VectorMotion::cartesian:
+      return arrow_from_vector(p, cartesian_vector(l, A, B, C));
     case VectorMotion::polar: {
       const PolarVector v = polar_vector(l, A, B, C);
       return {p, v.m, v.w};

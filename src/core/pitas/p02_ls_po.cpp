@@ -6,16 +6,13 @@
 namespace pita {
 
 namespace {
-Point anchor_point(const Arrow& A, Anchor anchor) {
-  return anchor == Anchor::start ? A.p : A.p + 0.5 * A.vector();
-}
+Point anchor_point(const Arrow& A, Anchor anchor) { return anchor == Anchor::start ? A.p : A.p + 0.5 * A.vector(); }
 }  // namespace
 
 LsPo::LsPo(const KeyframeTriple& k, Anchor anchor)
     : k_(k),
       anchor_(anchor),
-      spiral_(anchor_point(k.a.arrow, anchor), anchor_point(k.b.arrow, anchor),
-              anchor_point(k.c.arrow, anchor)) {}
+      spiral_(anchor_point(k.a.arrow, anchor), anchor_point(k.b.arrow, anchor), anchor_point(k.c.arrow, anchor)) {}
 
 Arrow LsPo::at(double t) const {
   const LagrangeWeights l = lagrange_weights(k_.a.t, k_.b.t, k_.c.t, t);

@@ -4,8 +4,8 @@
 #pragma once
 
 #include "core/keyframe.hpp"
-#include "core/pitas/motion.hpp"
 #include "core/pitas/method_options.hpp"
+#include "core/pitas/motion.hpp"
 #include "core/point_motions.hpp"
 
 namespace pita {

@@ -24,12 +24,10 @@ Arrow BeLp::at(double t) const {
   // Bezier(P0, P1, P2, s) = M(M(P0, P1, s), M(P1, P2, s), s) (PITA Eq. 29).
   if (u <= 0.5) {  // PITA Eq. 27
     const double s = 2.0 * u;
-    return steady_morph(apply_power(a_to_l_, s, k_.a.arrow), apply_power(l_to_b_, s, left_control_),
-                        s);
+    return steady_morph(apply_power(a_to_l_, s, k_.a.arrow), apply_power(l_to_b_, s, left_control_), s);
   }
   const double s = 2.0 * u - 1.0;  // PITA Eq. 28
-  return steady_morph(apply_power(b_to_r_, s, k_.b.arrow), apply_power(r_to_c_, s, right_control_),
-                      s);
+  return steady_morph(apply_power(b_to_r_, s, k_.b.arrow), apply_power(r_to_c_, s, right_control_), s);
 }
 
 }  // namespace pita

@@ -1,7 +1,7 @@
 #include "core/pitas/p05_he_lp.hpp"
 
-#include "core/lagrange_weights.hpp"
 #include "core/homogeneous_log.hpp"
+#include "core/lagrange_weights.hpp"
 
 namespace pita {
 
@@ -21,8 +21,7 @@ Arrow HeLp::at(double t) const {
   const LagrangeWeights l = lagrange_weights(k_.a.t, k_.b.t, k_.c.t, t);
   // (2) H(t) = exp(x log H(A) + y log H(B) + z log H(C)) (PITA Eq. 33),
   const SimilarityLog blend{lagrange(l, log_[0], log_[1], log_[2]),
-                            lagrange(l, translation_log_[0], translation_log_[1],
-                                     translation_log_[2])};
+                            lagrange(l, translation_log_[0], translation_log_[1], translation_log_[2])};
   // (3) extract the arrow, (4) translate it back by g -> o.
   Arrow d = similarity_exp(blend);
   d.p += centroid_;

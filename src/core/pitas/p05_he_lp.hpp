@@ -26,7 +26,7 @@ class HeLp final : public Motion {
 
  private:
   KeyframeTriple k_;
-  Complex log_[3];        // ln m + i Arg(e^{iw}) of each keyframe
+  Complex log_[3];              // ln m + i Arg(e^{iw}) of each keyframe
   Complex translation_log_[3];  // v of each keyframe, about the centroid
   Point centroid_;
 };

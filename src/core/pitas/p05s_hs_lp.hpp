@@ -18,7 +18,7 @@ class HsLp final : public Motion {
 
  private:
   KeyframeTriple k_;
-  Arrow frame_;          // F = M(A, C)
+  Arrow frame_;  // F = M(A, C)
   Complex log_[3];
   Complex translation_log_[3];
 };

@@ -5,8 +5,7 @@
 
 namespace pita {
 
-RaPe::RaPe(const KeyframeTriple& k)
-    : k_(k), pe_(k.a.arrow.vector(), k.b.arrow.vector(), k.c.arrow.vector()) {}
+RaPe::RaPe(const KeyframeTriple& k) : k_(k), pe_(k.a.arrow.vector(), k.b.arrow.vector(), k.c.arrow.vector()) {}
 
 Arrow RaPe::at(double t) const {
   const double tau = 2.0 * knot_warp(k_.a.t, k_.b.t, k_.c.t, t) - 1.0;

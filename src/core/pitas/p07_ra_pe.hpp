@@ -8,11 +8,11 @@
 // (2 (kappa - 1)) (PITA Eq. E.12). Windings are ignored (zero-turn arrows).
 #pragma once
 
-#include "core/keyframe.hpp"
-#include "core/pitas/motion.hpp"
 #include <optional>
 
+#include "core/keyframe.hpp"
 #include "core/perseverant.hpp"
+#include "core/pitas/motion.hpp"
 
 namespace pita {
 

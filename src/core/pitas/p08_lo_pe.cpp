@@ -4,8 +4,7 @@
 
 namespace pita {
 
-LoPe::LoPe(const KeyframeTriple& k)
-    : k_(k), pe_(k.a.arrow.vector(), k.b.arrow.vector(), k.c.arrow.vector()) {}
+LoPe::LoPe(const KeyframeTriple& k) : k_(k), pe_(k.a.arrow.vector(), k.b.arrow.vector(), k.c.arrow.vector()) {}
 
 Arrow LoPe::at(double t) const {
   const double tau = 2.0 * knot_warp(k_.a.t, k_.b.t, k_.c.t, t) - 1.0;

@@ -10,8 +10,8 @@
 #pragma once
 
 #include "core/keyframe.hpp"
-#include "core/pitas/motion.hpp"
 #include "core/perseverant.hpp"
+#include "core/pitas/motion.hpp"
 
 namespace pita {
 

@@ -16,8 +16,8 @@ NeLp::NeLp(const KeyframeTriple& k, MeanKind path_mean, MeanKind magnitude_mean)
 Arrow NeLp::at(double t) const {
   const NevilleRatios n = neville_ratios(k_.a.t, k_.b.t, k_.c.t, t);
   if (path_mean_ == MeanKind::geometric && magnitude_mean_ == MeanKind::geometric) {
-    return steady_morph(apply_power(a_to_b_, n.q, k_.a.arrow),
-                        apply_power(b_to_c_, n.r, k_.b.arrow), n.s);  // PITA Eq. D.2
+    return steady_morph(apply_power(a_to_b_, n.q, k_.a.arrow), apply_power(b_to_c_, n.r, k_.b.arrow),
+                        n.s);  // PITA Eq. D.2
   }
   const auto morph = [&](const Arrow& X, const Arrow& Y, double s) {
     return mean_morph(X, Y, s, path_mean_, magnitude_mean_);

@@ -5,15 +5,16 @@
 #pragma once
 
 #include "core/keyframe.hpp"
-#include "core/pitas/motion.hpp"
 #include "core/mean_kind.hpp"
+#include "core/pitas/motion.hpp"
 #include "core/twirl.hpp"
 
 namespace pita {
 
 class NeLp final : public Motion {
  public:
-  explicit NeLp(const KeyframeTriple& k, MeanKind path_mean = MeanKind::geometric, MeanKind magnitude_mean = MeanKind::geometric);
+  explicit NeLp(const KeyframeTriple& k, MeanKind path_mean = MeanKind::geometric,
+                MeanKind magnitude_mean = MeanKind::geometric);
   Arrow at(double t) const override;
 
  private:

@@ -13,8 +13,7 @@ Arrow PaEl::at(double t) const {
   const Arrow& C = k_.c.arrow;
   // exp(x log L(A) + y log L(B) + z log L(C)) with principal logs (PITA Eq. A.3, A.5).
   const double log_m = lagrange(l, std::log(A.m), std::log(B.m), std::log(C.m));
-  const double angle =
-      lagrange(l, principal_angle(A.w), principal_angle(B.w), principal_angle(C.w));
+  const double angle = lagrange(l, principal_angle(A.w), principal_angle(B.w), principal_angle(C.w));
   return {parabolic_point(l, A.p, B.p, C.p), std::exp(log_m), angle};
 }
 

@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/pitas/appendix_d_variants.hpp"
+#include "core/pitas/independent.hpp"
 #include "core/pitas/p01_pa_ca.hpp"
 #include "core/pitas/p02_ls_po.hpp"
 #include "core/pitas/p03_pa_lp.hpp"
@@ -17,8 +19,6 @@
 #include "core/pitas/p07_ra_pe.hpp"
 #include "core/pitas/p08_lo_pe.hpp"
 #include "core/pitas/p09_ne_lp.hpp"
-#include "core/pitas/independent.hpp"
-#include "core/pitas/appendix_d_variants.hpp"
 #include "core/pitas/p10_pa_el.hpp"
 #include "core/pitas/sma.hpp"
 
@@ -76,7 +76,8 @@ constexpr std::array<MethodInfo, 19> kMethods{{
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t1, o.permutation, o.symmetrize);
      },
      true, kPermutationOption | kSymmetrizeOption},
-    {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of PITA Eq. D.1, keyframes permuted (app. D.1)", 3, true, false,
+    {Method::LaT2, "La-T2", "La-T2", "Lagrange variant T2 of PITA Eq. D.1, keyframes permuted (app. D.1)", 3, true,
+     false,
      [](const KeyframeTriple& k, const MethodOptions& o) -> std::unique_ptr<Motion> {
        return std::make_unique<AppendixDVariant>(k, AppendixDForm::lagrange_t2, o.permutation, o.symmetrize);
      },
@@ -114,20 +115,18 @@ bool reads_option(Method m, MethodOption option, bool chained) {
 
 Chain default_chain(Method m) { return info(m).keyframe_count == 2 ? Chain::spiral : Chain::blend; }
 
-std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
-                                    const MethodOptions& options, std::optional<Chain> chain) {
+std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes, const MethodOptions& options,
+                                    std::optional<Chain> chain) {
   const MethodInfo& mi = info(m);
   if (static_cast<int>(keyframes.size()) < mi.keyframe_count) {
-    throw std::invalid_argument(std::string(mi.id) + " takes at least " +
-                                std::to_string(mi.keyframe_count) + " keyframes, got " +
-                                std::to_string(keyframes.size()));
+    throw std::invalid_argument(std::string(mi.id) + " takes at least " + std::to_string(mi.keyframe_count) +
+                                " keyframes, got " + std::to_string(keyframes.size()));
   }
   const bool as_given = options.knots == KnotOrder::as_given;
   for (std::size_t i = 0; i < keyframes.size(); ++i) {
     const Keyframe& k = keyframes[i];
     if (!std::isfinite(k.t) || !is_finite(k.arrow) || !(k.arrow.m > 0.0)) {
-      throw std::invalid_argument("keyframe " + std::to_string(i) +
-                                  " must have finite values and a magnitude > 0");
+      throw std::invalid_argument("keyframe " + std::to_string(i) + " must have finite values and a magnitude > 0");
     }
     if (!as_given && i > 0 && !(keyframes[i - 1].t < k.t)) {
       throw std::invalid_argument("knots must be strictly increasing (keyframe " + std::to_string(i) + ")");
@@ -143,8 +142,9 @@ std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframe
     // The keyframes in the order given, as P(a, A, b, B, c, C, t) takes them
     // (docs/paper-notes.md N41): one window, no chain.
     if (mi.keyframe_count != 3 || keyframes.size() != 3 || chain) {
-      throw std::invalid_argument("knots \"as-given\" hands exactly three keyframes to a three-keyframe method, "
-                                  "without a chain");
+      throw std::invalid_argument(
+          "knots \"as-given\" hands exactly three keyframes to a three-keyframe method, "
+          "without a chain");
     }
     return make_pita(m, KeyframeTriple{keyframes[0], keyframes[1], keyframes[2]}, options);
   }

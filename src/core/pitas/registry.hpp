@@ -81,8 +81,7 @@ const MethodInfo& info(Method m);
 // keyframes than the method takes, a keyframe is not finite or has no
 // magnitude, the knots are not strictly increasing, or the chain cannot be
 // built; MotionDomainError when the method does not exist for some window.
-std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes,
-                                    const MethodOptions& options = {},
+std::unique_ptr<Motion> make_motion(Method m, std::span<const Keyframe> keyframes, const MethodOptions& options = {},
                                     std::optional<Chain> chain = std::nullopt);
 
 // The chain a track of more keyframes than the method takes uses unless told:
@@ -91,7 +90,6 @@ Chain default_chain(Method m);
 
 // The PITA through three timed keyframes with any distinct knots, unchecked
 // (the order-independence property, PITA Eq. 42, swaps knots). Not for SMA.
-std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& keyframes,
-                                  const MethodOptions& options = {});
+std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& keyframes, const MethodOptions& options = {});
 
 }  // namespace pita

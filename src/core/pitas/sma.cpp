@@ -4,13 +4,8 @@
 
 namespace pita {
 
-SteadyMorphMotion::SteadyMorphMotion(const Keyframe& a, const Keyframe& b, MeanKind path_mean,
-                                     MeanKind magnitude_mean)
-    : a_(a),
-      b_(b),
-      path_mean_(path_mean),
-      magnitude_mean_(magnitude_mean),
-      twirl_(twirl_between(a.arrow, b.arrow)) {}
+SteadyMorphMotion::SteadyMorphMotion(const Keyframe& a, const Keyframe& b, MeanKind path_mean, MeanKind magnitude_mean)
+    : a_(a), b_(b), path_mean_(path_mean), magnitude_mean_(magnitude_mean), twirl_(twirl_between(a.arrow, b.arrow)) {}
 
 Arrow SteadyMorphMotion::at(double t) const {
   const double q = (t - a_.t) / (b_.t - a_.t);  // PITA Eq. 14, 21

@@ -12,8 +12,7 @@ namespace pita {
 
 class SteadyMorphMotion final : public Motion {
  public:
-  SteadyMorphMotion(const Keyframe& a, const Keyframe& b,
-                    MeanKind path_mean = MeanKind::geometric,
+  SteadyMorphMotion(const Keyframe& a, const Keyframe& b, MeanKind path_mean = MeanKind::geometric,
                     MeanKind magnitude_mean = MeanKind::geometric);
   Arrow at(double t) const override;
 

@@ -5,17 +5,17 @@
 
 #include <fmt/format.h>
 
-#include "render/text_outline.hpp"
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
+#include "render/text_outline.hpp"
 
 namespace pita::render::detail {
 
 void PanelBuilder::add(const scene::BannerLayer& layer) {
   const std::vector<Arrow> pattern = frames(layer_times(panel_, layer.samples, layer.range));
   const QuadStrip strip(pattern);
-  FilledPath glyphs{map_through_strip(text_outline(layer.text, layer.font), strip, layer.padding),
-                    layer.fill, layer.opacity, layer.outline};
+  FilledPath glyphs{map_through_strip(text_outline(layer.text, layer.font), strip, layer.padding), layer.fill,
+                    layer.opacity, layer.outline};
   push(-1, std::move(glyphs));
 }
 

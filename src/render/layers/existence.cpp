@@ -18,9 +18,7 @@ namespace pita::render {
 Drawing existence_drawing(const scene::ExistenceLayer& layer, const std::string& pointer) {
   Drawing drawing;
   const double h = kExistenceHeight;
-  const auto push = [&](int index, Shape shape) {
-    drawing.items.push_back({pointer, index, std::move(shape)});
-  };
+  const auto push = [&](int index, Shape shape) { drawing.items.push_back({pointer, index, std::move(shape)}); };
   const auto rectangle = [h](double a0, double a1, double s0, double s1) {
     return std::vector<Point>{{a0, h * s0}, {a1, h * s0}, {a1, h * s1}, {a0, h * s1}};
   };

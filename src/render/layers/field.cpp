@@ -108,9 +108,9 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::FieldLayer& layer) 
     panel.push(-1, Label{"q", q + Point{0.02 * side, 0.02 * side}, 12.0, Color{0, 0, 0, 1}, true});
   }
   if (panel.selection() == nullptr && !starts.empty()) {
-    panel.push(-1, Label{field_check_text(*field, starts, us),
-                         Point{layer.box.min.real(), layer.box.min.imag() - 0.17 * side}, 13.0,
-                         Color{0.1, 0.1, 0.1, 1.0}});
+    panel.push(
+        -1, Label{field_check_text(*field, starts, us), Point{layer.box.min.real(), layer.box.min.imag() - 0.17 * side},
+                  13.0, Color{0.1, 0.1, 0.1, 1.0}});
   }
 }
 

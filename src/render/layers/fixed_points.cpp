@@ -47,6 +47,8 @@ void PanelBuilder::add(const scene::FixedPointsLayer& layer) {
 }
 
 // Its cost (render/layer_cost.hpp).
-void LayerCost::operator()(const scene::FixedPointsLayer& l) { frames(l.samples, "fixed-point segments", 7 * kShapeUnits); }
+void LayerCost::operator()(const scene::FixedPointsLayer& l) {
+  frames(l.samples, "fixed-point segments", 7 * kShapeUnits);
+}
 
 }  // namespace pita::render::detail

@@ -26,11 +26,12 @@ void PanelBuilder::add(const scene::GuessesLayer& layer) {
     push(index, ArrowShape{guess.arrow.p, guess.arrow.q(), LineStyle{guess.color, layer.width, 1.0, {}}});
     for (const scene::GuessMeasure measure : layer.show) {
       const bool discrepancy = measure == scene::GuessMeasure::discrepancy;
-      const double value = discrepancy ? pita::discrepancy(guess.arrow, frame)
-                                       : analysis::endpoint_distance(guess.arrow, frame);
-      if (!std::isfinite(value)) fail(layer_, fmt::format("the {} of {} is not finite", discrepancy ? "discrepancy" : "distance", guess.name));
-      lines.push_back({guess.color, fmt::format("{}({}, D({:g})) = {:.3g}", discrepancy ? "E" : "d", guess.name,
-                                                guess.t, value)});
+      const double value =
+          discrepancy ? pita::discrepancy(guess.arrow, frame) : analysis::endpoint_distance(guess.arrow, frame);
+      if (!std::isfinite(value))
+        fail(layer_, fmt::format("the {} of {} is not finite", discrepancy ? "discrepancy" : "distance", guess.name));
+      lines.push_back(
+          {guess.color, fmt::format("{}({}, D({:g})) = {:.3g}", discrepancy ? "E" : "d", guess.name, guess.t, value)});
     }
   }
   if (selection_ == nullptr) add_lines(lines, layer.at, layer.corner, layer.size, layer.color);

@@ -11,7 +11,8 @@ namespace pita::render::detail {
 void PanelBuilder::add(const scene::HandleLayer& layer) {
   if (layer.shapes) {
     scene::ShapesLayer style;
-    for (Shape& shape : carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, Affine2::identity(), style, scene_.canvas.y_up)) {
+    for (Shape& shape : carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, Affine2::identity(), style,
+                                       scene_.canvas.y_up)) {
       push(-1, std::move(shape));
     }
   }
@@ -19,6 +20,8 @@ void PanelBuilder::add(const scene::HandleLayer& layer) {
 }
 
 // Its cost (render/layer_cost.hpp).
-void LayerCost::operator()(const scene::HandleLayer&) { add(layer_, "the handle and its shapes", kShapeUnits + shapes_units()); }
+void LayerCost::operator()(const scene::HandleLayer&) {
+  add(layer_, "the handle and its shapes", kShapeUnits + shapes_units());
+}
 
 }  // namespace pita::render::detail

@@ -15,8 +15,7 @@ void PanelBuilder::add(const scene::KeyframesLayer& layer) {
     const Color color = layer.colors[i % layer.colors.size()];
     const LineStyle line{color, layer.width, layer.opacity, {}};
     if (layer.winding) {
-      const Point center =
-          layer.spiral_center == scene::SpiralCenter::start ? key.p : 0.5 * (key.p + key.q());
+      const Point center = layer.spiral_center == scene::SpiralCenter::start ? key.p : 0.5 * (key.p + key.q());
       std::vector<Point> coil = winding_spiral(center, key.m, key.w);
       if (!coil.empty()) {
         push(static_cast<int>(i),
@@ -33,8 +32,7 @@ void LayerCost::operator()(const scene::KeyframesLayer&) {
   double units = 0.0;
   for (const Keyframe& key : keyframes()) {
     const double turns = std::abs(key.arrow.w) / (2.0 * std::numbers::pi);
-    units += 4 * kShapeUnits +
-             std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
+    units += 4 * kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
   }
   add(layer_, "keyframe arrows and winding spirals", units);
 }

@@ -21,8 +21,8 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
     }
   }
   for (std::size_t i = 0; i < keyframes_.size(); ++i) {
-    legend.entries.push_back({colors.colors[i % colors.colors.size()],
-                              fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
+    legend.entries.push_back(
+        {colors.colors[i % colors.colors.size()], fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
   }
   // A panel of points: one entry per curve drawn, in its colour.
   for (const scene::Layer& other : scene::layers_of<scene::Layer>(scene_, panel_).layers) {
@@ -46,10 +46,10 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
       if (path->method || !path->options.empty()) continue;
       paths.push_back({path->line.color, trajectory_name(path->point), path->line.dash});
     } else if (pattern != nullptr && (!pattern->label.empty() || pattern->method || !pattern->options.empty())) {
-      overlays.push_back({pattern->line.color,
-                          pattern->label.empty() ? method_name(pattern->method.value_or(track_.method))
-                                                 : pattern->label,
-                          pattern->line.dash});
+      overlays.push_back(
+          {pattern->line.color,
+           pattern->label.empty() ? method_name(pattern->method.value_or(track_.method)) : pattern->label,
+           pattern->line.dash});
     } else if (pattern != nullptr && !pattern_seen) {
       method_color = pattern->line.color;
       pattern_seen = true;

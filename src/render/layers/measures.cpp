@@ -44,8 +44,9 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
     try {
       if (name.kind == scene::MeasureKind::handle_shift) {
         if (scene::outlines_of(panel_).empty()) {
-          fail(at, "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
-                   "give the scene or the panel \"shapes\" (docs/reference/render.md \"Figure fields of a scene\")");
+          fail(at,
+               "\"handle-shift\" measures how far the panel's shapes land, and the panel has no shapes: "
+               "give the scene or the panel \"shapes\" (docs/reference/render.md \"Figure fields of a scene\")");
         }
         lines[i] = fmt::format("handle shift: {}", rounding_or_value(analysis::handle_shift(stage_, index_)));
       } else if (name.kind == scene::MeasureKind::angle) {
@@ -54,8 +55,9 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
           fail(at, fmt::format("the angle at t = {} is undefined: the frame vector of {} or of {} vanishes there",
                                name.t, scene::method_id(panel_.keys), entry_of(name.method).id));
         }
-        lines[i] = fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
-                               name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
+        lines[i] =
+            fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
+                        name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
       } else if (analysis::is_frame_step(name.kind)) {  // "scale-step", ...
         if (!steps) steps = analysis::frame_steps(stage_, index_);
         lines[i] = fmt::format("{}: {}{}", name.text, rounding_or_value(*analysis::frame_step(*steps, name.kind)),

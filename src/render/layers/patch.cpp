@@ -50,9 +50,10 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer) {
   const auto& poses = panel.keys().poses;
   const std::size_t needed = layer.regular ? 3 : 4;
   if (poses.size() < needed) {
-    panel.fail(fmt::format("a patch takes the panel's first {} poses as corners (top left, top right, "
-                           "bottom left{}); the panel has {}",
-                           needed, layer.regular ? "" : ", bottom right", poses.size()));
+    panel.fail(
+        fmt::format("a patch takes the panel's first {} poses as corners (top left, top right, "
+                    "bottom left{}); the panel has {}",
+                    needed, layer.regular ? "" : ", bottom right", poses.size()));
   }
   const Pose &A = poses[0].pose, &B = poses[1].pose, &C = poses[2].pose;
   std::vector<Face> faces;  // space: painted back to front at the end

@@ -56,8 +56,7 @@ void LayerCost::operator()(const scene::PatternLayer& l) {
     double w = 0.0;
     for (const Keyframe& key : keyframes()) w = std::max(w, std::abs(key.arrow.w));
     const double span = keyframes().empty() ? 0.0 : keyframes().back().t - keyframes().front().t;
-    const double reach =
-        l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
+    const double reach = l.range && span > 0.0 ? std::max(1.0, (l.range->to - l.range->from) / span) : 1.0;
     const double turns = w * reach / (2.0 * std::numbers::pi) + 1.0;
     per_frame += kShapeUnits + std::min(turns * kSpiralPointsPerTurn + 9.0, static_cast<double>(kMaxSpiralPoints));
   }

@@ -79,7 +79,8 @@ namespace detail {
 
 void LayerCost::operator()(const scene::PlotLayer& l) {
   // An area plot builds and samples one motion per method.
-  const double curves = l.of == scene::PlotOf::area ? static_cast<double>(std::max<std::size_t>(1, l.methods.size())) : 1.0;
+  const double curves =
+      l.of == scene::PlotOf::area ? static_cast<double>(std::max<std::size_t>(1, l.methods.size())) : 1.0;
   const double per_point = l.of == scene::PlotOf::area ? motion::frame_cost(panel_) : 1.0;
   add(layer_ + "/samples", fmt::format("{} points of a plot", l.samples),
       8 * kShapeUnits + curves * l.samples * per_point);

@@ -15,15 +15,15 @@ namespace pita::render {
 
 // Both dimensions.
 template <class Pose>
-void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer);      // shapes.cpp
+void draw_pose_layer(PosePanel<Pose>& panel, const scene::ShapesLayer& layer);  // shapes.cpp
 template <class Pose>
-void draw_pose_layer(PosePanel<Pose>& panel, const scene::PosesLayer& layer);       // poses.cpp
+void draw_pose_layer(PosePanel<Pose>& panel, const scene::PosesLayer& layer);  // poses.cpp
 template <class Pose>
-void draw_pose_layer(PosePanel<Pose>& panel, const scene::PathsLayer& layer);       // paths.cpp
+void draw_pose_layer(PosePanel<Pose>& panel, const scene::PathsLayer& layer);  // paths.cpp
 template <class Pose>
 void draw_pose_layer(PosePanel<Pose>& panel, const scene::VelocitiesLayer& layer);  // velocities.cpp
 template <class Pose>
-void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer);       // patch.cpp
+void draw_pose_layer(PosePanel<Pose>& panel, const scene::PatchLayer& layer);  // patch.cpp
 
 // The plane only.
 void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer);          // versus.cpp
@@ -38,6 +38,8 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::Sam3dExistenceLayer
 
 // Whether panels of `Pose` draw `Layer` (an overload above takes them).
 template <class Pose, class Layer>
-concept DrawnIn = requires(PosePanel<Pose>& panel, const Layer& layer) { draw_pose_layer(panel, layer); };
+concept DrawnIn = requires(PosePanel<Pose>& panel, const Layer& layer) {
+  draw_pose_layer(panel, layer);
+};
 
 }  // namespace pita::render

@@ -79,12 +79,13 @@ namespace detail {
 void LayerCost::operator()(const scene::PosesLayer& l) {
   // With "inserted", a four-point panel of the plane's last step adds n 2^(steps-1) poses.
   const auto [poses, inserted] = std::visit(
-      overloaded{[&](const scene::PlanePoseKeys& given) {
-                   const auto n = static_cast<double>(given.poses.size());
-                   return std::pair(n, l.inserted && given.subdivisions > 0 ? std::ldexp(n, given.subdivisions - 1) : 0.0);
-                 },
-                 [](const scene::SpacePoseKeys& given) { return std::pair(static_cast<double>(given.poses.size()), 0.0); },
-                 [](const scene::TrackMethod&) { return std::pair(0.0, 0.0); }},
+      overloaded{
+          [&](const scene::PlanePoseKeys& given) {
+            const auto n = static_cast<double>(given.poses.size());
+            return std::pair(n, l.inserted && given.subdivisions > 0 ? std::ldexp(n, given.subdivisions - 1) : 0.0);
+          },
+          [](const scene::SpacePoseKeys& given) { return std::pair(static_cast<double>(given.poses.size()), 0.0); },
+          [](const scene::TrackMethod&) { return std::pair(0.0, 0.0); }},
       panel_.keys);
   add(layer_, "the shapes at the poses", (poses + inserted) * shapes_units());
 }

@@ -1,18 +1,17 @@
 // "property-table" in an arrow scene (Fig. 10): the properties of Sec. 4
 // measured as `pita audit` does, drawn as a table (render/audit_table.hpp).
+#include <algorithm>
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
-#include "render/layer_cost.hpp"
-#include "render/panel_builder.hpp"
+#include "analysis/decision_tree.hpp"
 #include "render/audit_table.hpp"
 #include "render/decision_tree.hpp"
-#include "analysis/decision_tree.hpp"
+#include "render/layer_cost.hpp"
+#include "render/panel_builder.hpp"
 #include "scene/did_you_mean.hpp"
-
-#include <algorithm>
-#include <fmt/ranges.h>
 
 namespace pita::render::detail {
 
@@ -31,16 +30,19 @@ void PanelBuilder::add(const scene::PropertyTableLayer& layer) {
       const Point y_down = origin + x;
       return layer.at + (scene_.canvas.y_up ? Point{y_down.real(), -y_down.imag()} : y_down);
     };
-    std::visit([&](auto& s) {
-      using S = std::decay_t<decltype(s)>;
-      if constexpr (std::is_same_v<S, Polyline>) {
-        for (Point& x : s.points) x = place(x);
-      } else if constexpr (std::is_same_v<S, FilledPath>) {
-        for (auto& contour : s.contours) for (Point& x : contour) x = place(x);
-      } else if constexpr (std::is_same_v<S, Label>) {
-        s.at = place(s.at);
-      }
-    }, shape);
+    std::visit(
+        [&](auto& s) {
+          using S = std::decay_t<decltype(s)>;
+          if constexpr (std::is_same_v<S, Polyline>) {
+            for (Point& x : s.points) x = place(x);
+          } else if constexpr (std::is_same_v<S, FilledPath>) {
+            for (auto& contour : s.contours)
+              for (Point& x : contour) x = place(x);
+          } else if constexpr (std::is_same_v<S, Label>) {
+            s.at = place(s.at);
+          }
+        },
+        shape);
     push(-1, std::move(shape));
   };
   for (const Item& item : table.drawing.items) place_at({0.0, 0.0}, item.shape);
@@ -61,8 +63,8 @@ void PanelBuilder::add(const scene::PropertyTableLayer& layer) {
       order.push_back(property->property);
     }
     std::vector<Method> methods = spec.methods;
-    if (methods.empty()) methods = {Method::P1, Method::P2, Method::P3, Method::P4,
-                                    Method::P5, Method::P6, Method::P7, Method::P8};
+    if (methods.empty())
+      methods = {Method::P1, Method::P2, Method::P3, Method::P4, Method::P5, Method::P6, Method::P7, Method::P8};
     for (std::size_t k = 0; k < methods.size(); ++k) {
       if (std::find(report.methods.begin(), report.methods.end(), methods[k]) == report.methods.end()) {
         fail(spec.methods.empty() ? spec.pointer : spec.pointer + "/methods/" + std::to_string(k),

@@ -77,8 +77,8 @@ void add_paper_claims(Sam3dPlot& plot, const scene::Sam3dExistenceLayer& layer, 
     plot.add(Polyline{{{0.0, h * bound.p}, {bound.theta, h * bound.p}, {bound.theta, 0.0}}, false, layer.paper_line});
     plot.add(Circle{{bound.theta, h * ours}, 0.035, layer.line, layer.line.color});
     const bool agrees = std::abs(ours - bound.p) < 0.5 * layer.step;
-    plot.add(Label{fmt::format("\u03b8 < {}: paper p < {:.2f}, ours {:.2f}{}", angle_with_pi(bound.theta_text),
-                               bound.p, ours, agrees ? "" : " (differs)"),
+    plot.add(Label{fmt::format("\u03b8 < {}: paper p < {:.2f}, ours {:.2f}{}", angle_with_pi(bound.theta_text), bound.p,
+                               ours, agrees ? "" : " (differs)"),
                    {bound.theta + 0.06, h * bound.p + 0.12},
                    12.0,
                    agrees ? kSam3dText : layer.paper_line.color});
@@ -99,11 +99,12 @@ void add_frame(Sam3dPlot& plot, const scene::Sam3dExistenceLayer& layer, int ten
     plot.add(Label{fmt::format("{:.1f}", 0.1 * i), {-0.32, 0.1 * i * h}, 12.0, kSam3dText});
   }
   plot.add(Label{"p", {-0.32, top + 0.15}, 12.0, kSam3dText});
-  plot.add(Label{"\u2014 ours: every rotation up to \u03b8 keeps a SAM below it", {0.45 * kPi, top - 0.7}, 11.0,
+  plot.add(Label{"\u2014 ours: every rotation up to \u03b8 keeps a SAM below it",
+                 {0.45 * kPi, top - 0.7},
+                 11.0,
                  layer.line.color});
   if (layer.paper) {
-    plot.add(Label{"- - the paper's claims, \u03b8 < T: p < P", {0.45 * kPi, top - 0.9}, 11.0,
-                   layer.paper_line.color});
+    plot.add(Label{"- - the paper's claims, \u03b8 < T: p < P", {0.45 * kPi, top - 0.9}, 11.0, layer.paper_line.color});
   }
 }
 

@@ -24,7 +24,7 @@ namespace {
 // `fade` < 1 only for the trail of an animation's moving frame (fade 1: a
 // figure's frame, or a fixed one of "times").
 void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer, const Affine2& pose, double white,
-               double fade, bool moving, int index, std::vector<Face>&) {
+                      double fade, bool moving, int index, std::vector<Face>&) {
   scene::ShapesLayer style = layer;
   if (white > 0.0) {
     style.line.color = lightened(style.line.color, white);
@@ -37,7 +37,7 @@ void draw_shapes_body(PosePanel<Affine2>& panel, const scene::ShapesLayer& layer
 
 // A solid's own colour fills its faces (and outlines it without a fill).
 void draw_shapes_body(PosePanel<Affine3>& panel, const scene::ShapesLayer& layer, const Affine3& pose, double white,
-               double fade, bool, int index, std::vector<Face>& faces) {
+                      double fade, bool, int index, std::vector<Face>& faces) {
   for (const scene::Solid& solid : panel.shapes()) {
     LineStyle line = layer.line;
     if (solid.color && !layer.fill) line.color = *solid.color;
@@ -87,11 +87,13 @@ namespace detail {
 void PanelBuilder::add(const scene::ShapesLayer& layer) {
   // "times": fixed frames, in the figure and in every animation frame alike.
   const bool fixed = !layer.times.empty();
-  const std::vector<Arrow> pattern = fixed ? frames(motion_, layer.times) : frames(sequence_times(layer.samples, layer.range));
+  const std::vector<Arrow> pattern =
+      fixed ? frames(motion_, layer.times) : frames(sequence_times(layer.samples, layer.range));
   const bool moving = selection_ != nullptr && !fixed;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
-    for (Shape& shape : carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, carrier(handle(), pattern[i]), layer, scene_.canvas.y_up,
-                                       moving ? fade(i, pattern.size()) : 1.0)) {
+    for (Shape& shape :
+         carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, carrier(handle(), pattern[i]), layer,
+                        scene_.canvas.y_up, moving ? fade(i, pattern.size()) : 1.0)) {
       push(static_cast<int>(i), std::move(shape));
       drawing_.items.back().moving = moving;
     }

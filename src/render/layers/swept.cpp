@@ -23,9 +23,9 @@ namespace {
 
 std::string grazing_claim(const analysis::GrazingRange& range) {
   if (range.defined == 0) return fmt::format("no grazing point at any of {} times", range.total);
-  const std::string none =
-      range.defined < range.total ? fmt::format(" (none at {} of {} times)", range.total - range.defined, range.total)
-                                  : "";
+  const std::string none = range.defined < range.total
+                               ? fmt::format(" (none at {} of {} times)", range.total - range.defined, range.total)
+                               : "";
   if (range.spread() <= analysis::kConstantGrazingSpread) {
     // The spread itself is rounding noise, whose digits vary between compilers: only its bound is printed.
     return fmt::format("grazing parameter s = {:.5f} at all {} times (spread < {:.0e}): constant{}", range.min,
@@ -72,8 +72,9 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::SweptLayer& layer) 
     const std::vector<double> ts = panel.times(layer.samples, layer.range);
     for (std::size_t i = 0; i < ts.size(); ++i) {
       const Affine2 pose = panel.pose_at(ts[i]);
-      panel.push(static_cast<int>(i),
-                 Polyline{{pita::apply(pose, layer.edge[0]), pita::apply(pose, layer.edge[1])}, false, *layer.segments});
+      panel.push(
+          static_cast<int>(i),
+          Polyline{{pita::apply(pose, layer.edge[0]), pita::apply(pose, layer.edge[1])}, false, *layer.segments});
     }
   }
   if (layer.ends) {
@@ -91,8 +92,8 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::SweptLayer& layer) 
       const double t = from + (to - from) * (k + 1) / (layer.instants + 1);
       const std::optional<double> s = grazing_parameter(panel.pose_at(t), panel.velocity_at(t), edge);
       if (!s) continue;
-      panel.push(k, Polyline{swept_polyline(analysis::edge_point_path(track, edge, *s, trace.times)), false,
-                             *layer.grazing});
+      panel.push(
+          k, Polyline{swept_polyline(analysis::edge_point_path(track, edge, *s, trace.times)), false, *layer.grazing});
       const Point at = pita::apply(panel.pose_at(t), swept_point(edge.from + *s * (edge.to - edge.from)));
       panel.push(k, Circle{at, dot, *layer.grazing, layer.grazing->color});
     }

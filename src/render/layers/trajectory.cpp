@@ -18,9 +18,15 @@ void PanelBuilder::add(const scene::TrajectoryLayer& layer) {
   points.reserve(path.size());
   for (const Arrow& frame : path) {
     switch (layer.point) {
-      case scene::TrackedPoint::start: points.push_back(frame.p); break;
-      case scene::TrackedPoint::end: points.push_back(frame.q()); break;
-      case scene::TrackedPoint::middle: points.push_back(0.5 * (frame.p + frame.q())); break;
+      case scene::TrackedPoint::start:
+        points.push_back(frame.p);
+        break;
+      case scene::TrackedPoint::end:
+        points.push_back(frame.q());
+        break;
+      case scene::TrackedPoint::middle:
+        points.push_back(0.5 * (frame.p + frame.q()));
+        break;
     }
   }
   push(-1, Polyline{std::move(points), false, layer.line});

@@ -64,9 +64,10 @@ void draw_pose_layer(PosePanel<Affine2>& panel, const scene::VersusLayer& layer)
     // The power multiplies the step: a large one can overflow where the
     // pose itself did not (no NaN reaches a figure).
     if (!pose.L.allFinite() || !pose.b.allFinite()) {
-      panel.fail(fmt::format("method {}: the pose at t = {} to the power {} is not finite (it overflows); use a "
-                             "smaller \"power\" or times nearer the first pose",
-                             about.id, ts[i], layer.power));
+      panel.fail(
+          fmt::format("method {}: the pose at t = {} to the power {} is not finite (it overflows); use a "
+                      "smaller \"power\" or times nearer the first pose",
+                      about.id, ts[i], layer.power));
     }
     const double fade = selection != nullptr ? trail_fade(i, ts.size()) : 1.0;
     for (Shape& shape : carried_shapes(panel.shapes(), pose, style, panel.scene().canvas.y_up, fade)) {

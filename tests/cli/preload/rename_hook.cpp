@@ -13,13 +13,13 @@
 //       with EIO.
 //
 // Not <cstdio>: it declares rename, with another exception specification.
-#include <dlfcn.h>
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace {
 

@@ -1,14 +1,13 @@
 // The "bezier-spiral" chain (core/chains/bezier_spiral_chain.hpp): cubic
 // Beziers of p and q whose inner controls are the span's SMA at 1/3 and 2/3.
-#include "core/chains/bezier_spiral_chain.hpp"
+#include <numbers>
 
 #include <gtest/gtest.h>
 
-#include <numbers>
-
+#include "../test_support.hpp"
+#include "core/chains/bezier_spiral_chain.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/steady_morph.hpp"
-#include "../test_support.hpp"
 #include "track_support.hpp"
 
 namespace pita {

@@ -2,13 +2,12 @@
 // C1 at every interior knot, the method itself for three keyframes, the
 // formula of docs/paper-notes.md N33 on four, similarity-invariant with the
 // method, and smooth past both ends.
-#include "core/chains/blend_chain.hpp"
-
 #include <gtest/gtest.h>
 
+#include "../test_support.hpp"
+#include "core/chains/blend_chain.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/steady_morph.hpp"
-#include "../test_support.hpp"
 #include "track_support.hpp"
 
 namespace pita {
@@ -82,7 +81,8 @@ TEST_P(BlendChainOf, OnFourKeyframesIsTheSteadyBlendOfTheTwoTriples) {
     // Span 0 and before: X alone; span 2 and after: Y alone; span 1: the blend.
     const double t0 = keys[0].t + u * (keys[1].t - keys[0].t);
     const double t2 = keys[2].t + (u + 0.5) * (keys[3].t - keys[2].t);
-    EXPECT_TRUE(test::arrows_near(chain->at(std::min(t0, keys[1].t)), X->at(std::min(t0, keys[1].t)), 1e-12, size, false));
+    EXPECT_TRUE(
+        test::arrows_near(chain->at(std::min(t0, keys[1].t)), X->at(std::min(t0, keys[1].t)), 1e-12, size, false));
     EXPECT_TRUE(test::arrows_near(chain->at(t2), Y->at(t2), 1e-12, size, false));
   }
   for (double s1 = 0.0; s1 <= 1.0; s1 += 0.125) {

@@ -1,13 +1,12 @@
 // The chain table, span lookup and make_chain's refusals (core/chains/chain.hpp).
-#include "core/chains/chain.hpp"
-
-#include <gtest/gtest.h>
-
 #include <limits>
 #include <set>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "core/chains/chain.hpp"
 #include "core/limits.hpp"
 #include "core/pitas/registry.hpp"
 #include "track_support.hpp"
@@ -84,7 +83,8 @@ TEST(MakeMotion, NevilleRefusesMoreThanItsLimit) {
   test::TrackSampler s(7);
   const std::vector<Keyframe> keys = s.track(limits::kMaxNevilleKeyframes + 1);
   EXPECT_THROW((void)make_motion(Method::P6, keys, {}, Chain::neville), std::invalid_argument);
-  EXPECT_NO_THROW((void)make_motion(Method::P6, std::span(keys).first(limits::kMaxNevilleKeyframes), {}, Chain::neville));
+  EXPECT_NO_THROW(
+      (void)make_motion(Method::P6, std::span(keys).first(limits::kMaxNevilleKeyframes), {}, Chain::neville));
   EXPECT_NO_THROW((void)make_motion(Method::P6, keys, {}, Chain::blend));
 }
 

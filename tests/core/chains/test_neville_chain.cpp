@@ -1,13 +1,12 @@
 // The "neville" chain (core/chains/neville_chain.hpp): PITA Eq. 48-50 on arrows
 // for four keyframes, the hand-written recursion for five, P9 for the SMA on
 // three, through every keyframe and smooth everywhere.
-#include "core/chains/neville_chain.hpp"
-
 #include <gtest/gtest.h>
 
+#include "../test_support.hpp"
+#include "core/chains/neville_chain.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/steady_morph.hpp"
-#include "../test_support.hpp"
 #include "track_support.hpp"
 
 namespace pita {
@@ -80,8 +79,7 @@ TEST_P(NevilleChainOf, PassesEveryKeyframeAndIsSmooth) {
       // far from its knots can have m < 0: the chain has no frame there
       // (docs/reference/scene-format.md "Keyframe tracks"). Every other PITA must be defined.
       if (m == Method::P2 && !std::isfinite(jump)) continue;
-      EXPECT_LT(jump, 1e-4)
-          << test::name(m) << " trial " << trial << " knot " << i;
+      EXPECT_LT(jump, 1e-4) << test::name(m) << " trial " << trial << " knot " << i;
     }
   }
   EXPECT_GE(checked, 9);

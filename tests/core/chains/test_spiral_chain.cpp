@@ -1,12 +1,11 @@
 // The "spiral" chain (core/chains/spiral_chain.hpp): the SMA of PITA Eq. 20-21
 // between consecutive keyframes, C0, windings kept, extrapolated past the ends.
-#include "core/chains/spiral_chain.hpp"
-
 #include <gtest/gtest.h>
 
+#include "../test_support.hpp"
+#include "core/chains/spiral_chain.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/steady_morph.hpp"
-#include "../test_support.hpp"
 #include "track_support.hpp"
 
 namespace pita {

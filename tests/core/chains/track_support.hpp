@@ -4,13 +4,13 @@
 // how the chains are built.
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/keyframe.hpp"
 #include "core/pitas/motion.hpp"
@@ -36,7 +36,9 @@ struct TrackSampler {
         t += std::exp(uniform(-knot_spread, knot_spread));
         w += uniform(-turn_drift, turn_drift);
       }
-      keys.push_back({t, Arrow{{uniform(-5.0, 5.0), uniform(-5.0, 5.0)}, std::exp(uniform(-magnitude_spread, magnitude_spread)), w}});
+      keys.push_back(
+          {t,
+           Arrow{{uniform(-5.0, 5.0), uniform(-5.0, 5.0)}, std::exp(uniform(-magnitude_spread, magnitude_spread)), w}});
     }
     return keys;
   }

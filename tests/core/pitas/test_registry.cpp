@@ -2,8 +2,6 @@
 // What each PITA does is the property suite of tests/core/test_pitas.cpp;
 // here: the table, the checks make_motion makes, and that it builds the
 // method it is asked for.
-#include "core/pitas/registry.hpp"
-
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -12,6 +10,7 @@
 #include <vector>
 
 #include "../test_support.hpp"
+#include "core/pitas/registry.hpp"
 
 namespace pita::test {
 namespace {
@@ -47,10 +46,8 @@ TEST(Registry, MakeMotionChecksCountKnotsAndValues) {
   }
   EXPECT_THROW(make_motion(Method::SMA, std::span(two).first(1)), std::invalid_argument);
   EXPECT_NO_THROW(make_motion(Method::SMA, three));  // a spiral chain (core/chains/chain.hpp)
-  EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {0.0, B}, {1.0, C}}),
-               std::invalid_argument);
-  EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {1.0, B}, {0.5, C}}),
-               std::invalid_argument);
+  EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {0.0, B}, {1.0, C}}), std::invalid_argument);
+  EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {1.0, B}, {0.5, C}}), std::invalid_argument);
   EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {0.5, Arrow{{1.0, 1.0}, 0.0, 0.0}}, {1.0, C}}),
                std::invalid_argument);
   EXPECT_THROW(make_motion(Method::P3, std::vector<Keyframe>{{0.0, A}, {std::nan(""), B}, {1.0, C}}),

@@ -1,12 +1,12 @@
 // The "existence" layer (src/render/layers/existence.cpp, SAM Fig. 6),
 // checked against SAM Eq. 4 computed here.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "analysis/existence.hpp"
 #include "render/layers/existence.hpp"
@@ -24,8 +24,7 @@ TEST(ExistenceLayer, RegionIsEquationFour) {
   const auto& bad = std::get<FilledPath>(drawing.items.at(0).shape);
   const auto filled = [&](double a, double y) {
     for (const auto& rectangle : bad.contours) {
-      if (a > rectangle[0].real() && a < rectangle[1].real() && y > rectangle[0].imag() &&
-          y < rectangle[2].imag()) {
+      if (a > rectangle[0].real() && a < rectangle[1].real() && y > rectangle[0].imag() && y < rectangle[2].imag()) {
         return true;
       }
     }

@@ -1,9 +1,9 @@
 // The "patch" layer's grid (src/render/layers/patch.cpp): a line per row and
 // per column through the centres of the bodies, here for a patch of pure
 // translations, where the centres are known in closed form.
-#include <gtest/gtest.h>
-
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "render/figure.hpp"
 #include "scene/scene.hpp"

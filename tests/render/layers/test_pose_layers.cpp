@@ -2,11 +2,11 @@
 // table of pose layer kinds (scene/layer_kinds.hpp): every kind has a drawer
 // in the plane, and a drawer in space exactly when its row says 3D scenes
 // draw it (the "in_space" column the reader enforces).
-#include <gtest/gtest.h>
-
 #include <cstddef>
 #include <utility>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "render/layers/pose_layers.hpp"
 #include "scene/layer_kinds.hpp"

@@ -1,13 +1,13 @@
 // The "sam3d-existence" layer (src/render/layers/sam3d_existence.cpp, SAM
 // Sec. 5.2): the staircase of a given curve, the paper's bounds, and the
 // computed curve drawn.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 #include <variant>
+
+#include <gtest/gtest.h>
 
 #include "analysis/sam3d_existence.hpp"
 #include "render/layers/sam3d_existence.hpp"
@@ -33,7 +33,8 @@ TEST(Sam3dExistenceLayer, DrawsTheStaircaseAndThePapersBounds) {
       stairs = line;
     }
     if (const auto* circle = std::get_if<Circle>(&item.shape)) marks.push_back(circle);
-    if (const auto* label = std::get_if<Label>(&item.shape); label && label->text.find("paper p <") != std::string::npos) {
+    if (const auto* label = std::get_if<Label>(&item.shape);
+        label && label->text.find("paper p <") != std::string::npos) {
       claims.push_back(label->text);
     }
   }
