@@ -320,13 +320,10 @@ namespace {
 EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& sink) {
   EvalOutcome outcome;
   try {
-    std::optional<AnyMethod> method_override;
-    if (options.method) {
-      const MethodEntry* entry = find_method_entry(*options.method);
-      if (entry == nullptr) {
-        throw InputError(fmt::format("--method: {}", unknown_method_reason(*options.method)));
-      }
-      method_override = entry->method;
+    // An unknown name is refused before the scene is read; a known one is
+    // looked up among the methods of the scene's kind (scene::with_method).
+    if (options.method && find_method_entry(*options.method) == nullptr) {
+      throw InputError(fmt::format("--method: {}", unknown_method_reason(*options.method)));
     }
     std::optional<std::vector<double>> times;
     if (options.times) times = parse_times(*options.times);
@@ -334,7 +331,7 @@ EvalOutcome evaluate_into(const EvalOptions& options, const motion::TextSink& si
     if (options.samples) samples = parse_samples(*options.samples);
 
     scene::Scene scene = scene::load_scene(options.scene_path);
-    if (method_override) scene = scene::with_method(std::move(scene), *method_override);
+    if (options.method) scene = scene::with_method(std::move(scene), std::string_view(*options.method));
 
     // the whole output is built before anything is printed
     if (!scene::has_motion_keys(scene.keys)) {

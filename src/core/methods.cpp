@@ -4,8 +4,6 @@
 #include <cctype>
 #include <vector>
 
-#include "core/overloaded.hpp"
-
 namespace pita {
 
 namespace {
@@ -26,7 +24,7 @@ std::vector<MethodEntry> build_registry() {
     MethodEntry entry;
     entry.method = about.method;
     entry.id = about.id;
-    entry.mnemonic = about.id;
+    entry.mnemonic = about.mnemonic.empty() ? about.id : about.mnemonic;
     entry.title = about.title;
     entry.min_count = about.min_poses;
     entry.max_count = about.max_poses;
@@ -53,9 +51,8 @@ std::vector<std::string> names_of(const MethodEntry& m) {
     names.push_back(lower(m.mnemonic));
     names.push_back(lower(std::string(m.id) + ":" + std::string(m.mnemonic)));
   }
-  // A PITA also answers to its number ("6", "5s"); a pose method has none.
-  const bool numbered = std::visit(overloaded{[](Method) { return true; }, [](PoseMethod) { return false; }}, m.method);
-  if (numbered && m.id.size() > 1 && m.id[0] == 'P' && std::isdigit(static_cast<unsigned char>(m.id[1]))) {
+  // A PITA, of arrows or of poses, also answers to its number ("6", "5s").
+  if (m.id.size() > 1 && m.id[0] == 'P' && std::isdigit(static_cast<unsigned char>(m.id[1]))) {
     names.push_back(lower(m.id.substr(1)));
   }
   return names;
@@ -119,7 +116,10 @@ std::vector<std::string> suggest_methods(std::string_view name, MethodFilter fil
     if (!kept(entry, filter)) continue;
     std::size_t best = std::string::npos;
     for (const std::string& n : names_of(entry)) best = std::min(best, edit_distance(key, n));
-    if (best <= 2) scored.emplace_back(best, method_label(entry));
+    // The arrow and pose PITAs share their labels: each label once.
+    const std::string label = method_label(entry);
+    const bool seen = std::any_of(scored.begin(), scored.end(), [&](const auto& s) { return s.second == label; });
+    if (best <= 2 && !seen) scored.emplace_back(best, label);
   }
   std::stable_sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<std::string> out;
@@ -146,8 +146,10 @@ std::string unknown_method_reason(std::string_view name, MethodFilter filter) {
 
 std::string method_ids(MethodFilter filter) {
   std::string ids;
+  std::vector<std::string_view> listed;  // the arrow and pose PITAs share their ids
   for (const MethodEntry& entry : registry()) {
-    if (!kept(entry, filter)) continue;
+    if (!kept(entry, filter) || std::find(listed.begin(), listed.end(), entry.id) != listed.end()) continue;
+    listed.push_back(entry.id);
     if (!ids.empty()) ids += ", ";
     ids += entry.id;
   }

@@ -6,13 +6,18 @@ namespace pita {
 
 namespace {
 
-constexpr std::array<PoseMethodInfo, 10> kPoseMethods = {{
+constexpr std::array<PoseMethodInfo, 14> kPoseMethods = {{
     {PoseMethod::sam, "SAM", "Steady Affine Morph", 2, 2, true},
     {PoseMethod::poly_sam, "polySAM", "polySAM (a SAM per span)", 2, 1000, true},
     {PoseMethod::bezier_sam, "bezier-SAM", "Bezier SAM", 3, 4, true},
     {PoseMethod::biarc_sam, "biarc-SAM", "SAM bi-arc retrofit", 3, 3, true},
     {PoseMethod::linear, "linear", "linear interpolation of the matrices", 2, 1000, true},
     {PoseMethod::four_point, "four-point-SAM", "polySAM of the four-point subdivision", 3, 1000, true},
+    {PoseMethod::p4, "P4", "Bezier of steady affine morphs (the BiSAM of affine poses)", 3, 3, true, "Be-LP"},
+    {PoseMethod::p5, "P5", "Lagrange blend of the poses' logs about the centroid of their origins", 3, 3, true,
+     "He-LP"},
+    {PoseMethod::p6, "P6", "Lagrange form with steady affine morphs and transports", 3, 3, true, "La-LP"},
+    {PoseMethod::p9, "P9", "Neville form: a steady affine morph of two steady affine morphs", 3, 3, true, "Ne-LP"},
     {PoseMethod::rarap, "rARAP", "ARAP with the barycentre moved on a line (Fig. 2b)", 2, 2, false},
     {PoseMethod::asap, "ASAP", "log spiral with a linear residue (Fig. 2c)", 2, 2, false},
     {PoseMethod::tsb, "TSB", "blend of the triangle sides' log spirals (Fig. 2d)", 2, 2, false},

@@ -1,4 +1,5 @@
-// The methods of pose scenes (SAM paper), one table (pose_method.cpp): their
+// The methods of pose scenes (SAM paper, and the PITAs P4, P5, P6 and P9 over
+// affine poses, docs/paper-notes.md N73), one table (pose_method.cpp): their
 // ids, titles, how many poses each takes and whether it also moves poses of
 // space (3D scenes). Shared by the plane's PoseMotion (pose_motion.hpp) and
 // the SAM family of both dimensions (sam_family_motion.hpp).
@@ -14,7 +15,22 @@
 
 namespace pita {
 
-enum class PoseMethod { sam, poly_sam, bezier_sam, biarc_sam, linear, four_point, rarap, asap, tsb, alexa };
+enum class PoseMethod {
+  sam,
+  poly_sam,
+  bezier_sam,
+  biarc_sam,
+  linear,
+  four_point,
+  p4,  // Be-LP over affine poses (core/pose_pitas/be_lp.hpp)
+  p5,  // He-LP (core/pose_pitas/he_lp.hpp)
+  p6,  // La-LP (core/pose_pitas/la_lp.hpp)
+  p9,  // Ne-LP (core/pose_pitas/ne_lp.hpp)
+  rarap,
+  asap,
+  tsb,
+  alexa
+};
 
 // Subdivision steps of the four-point polySAM (Sec. 7.3: "4 subdivision steps
 // suffice to produce polySAMs that appear smooth"), and the most a scene may ask.
@@ -28,6 +44,9 @@ struct PoseMethodInfo {
   int min_poses;
   int max_poses;
   bool in_space;  // also for 3D scenes (the SAM family: SamFamilyMotion<Affine3>)
+  // The PITA's mnemonic ("La-LP") for the pose PITAs, which share the arrow
+  // PITA's id ("P6"); empty for the SAM paper's methods.
+  std::string_view mnemonic = {};
 };
 
 std::span<const PoseMethodInfo> all_pose_methods();

@@ -79,8 +79,9 @@ SamFamilyMotion<Pose>::SamFamilyMotion(PoseMethod method, std::vector<Timed> pos
       }
     }
   }
-  // Every SAM between consecutive poses, named by its pair when it fails.
-  if (method != PoseMethod::linear) {
+  // Every SAM between consecutive poses, named by its pair when it fails
+  // (the pose PITAs build and name their own).
+  if (method != PoseMethod::linear && !is_pose_pita(method)) {
     for (std::size_t i = 0; i + 1 < span_poses_.size(); ++i) {
       try {
         spans_.emplace_back(span_poses_[i].pose, span_poses_[i + 1].pose);
@@ -101,6 +102,7 @@ SamFamilyMotion<Pose>::SamFamilyMotion(PoseMethod method, std::vector<Timed> pos
       throw NoSamBetweenPoses(error, 0, "between the control poses of the bi-arc (Sec. 5.3)");
     }
   }
+  if (is_pose_pita(method)) pita_.emplace(make_pose_pita<Pose>(method, {poses_[0], poses_[1], poses_[2]}));
   if (method == PoseMethod::bezier_sam || method == PoseMethod::biarc_sam) {
     // The SAMs between intermediate poses are found only by evaluating.
     for (int i = 0; i <= 64; ++i) {
@@ -155,6 +157,14 @@ Pose SamFamilyMotion<Pose>::at(double t) const {
     case PoseMethod::linear:
       return in_span(
           [&](std::size_t i, double u) { return linear_mix(span_poses_[i].pose, span_poses_[i + 1].pose, u); });
+    case PoseMethod::p4:
+    case PoseMethod::p5:
+    case PoseMethod::p6:
+    case PoseMethod::p9:
+      for (const Timed& key : poses_) {
+        if (t == key.t) return key.pose;  // exactly the pose at its knot
+      }
+      return std::visit([t](const auto& pita) { return pita.at(t); }, *pita_);
     case PoseMethod::rarap:  // the plane's morphs of Fig. 2: PoseMotion; the constructor refuses them
     case PoseMethod::asap:
     case PoseMethod::tsb:
@@ -184,7 +194,11 @@ Pose SamFamilyMotion<Pose>::velocity(double t) const {
       return {(B.L - A.L) / duration, (B.b - A.b) / duration};
     }
     case PoseMethod::bezier_sam:
-    case PoseMethod::biarc_sam: {
+    case PoseMethod::biarc_sam:
+    case PoseMethod::p4:
+    case PoseMethod::p5:
+    case PoseMethod::p6:
+    case PoseMethod::p9: {
       const double h = limits::kPoseVelocityStep * (last - first);
       const auto difference = [](const Pose& A, const Pose& B, double weight) {
         return Pose{(A.L - B.L) * weight, (A.b - B.b) * weight};

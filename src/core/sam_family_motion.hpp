@@ -1,6 +1,8 @@
 // The SAM family of pose motions (SAM paper Sec. 5.3, 7.3), in the plane and
 // in space alike: the SAM, the polySAM, the Bezier SAM, the SAM bi-arc, the
-// four-point polySAM, and linear interpolation of the matrices, over timed
+// four-point polySAM, linear interpolation of the matrices, and the PITAs
+// P4, P5, P6 and P9 built from steady affine morphs (core/pose_pitas,
+// docs/paper-notes.md N73), over timed
 // poses of type Affine2 or Affine3 (instantiated for both in
 // sam_family_motion.cpp). The plane's PoseMotion (pose_motion.hpp) adds the
 // 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes use PoseMotion3.
@@ -13,6 +15,7 @@
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
 #include "core/pose_method.hpp"
+#include "core/pose_pitas/pose_pita.hpp"
 #include "core/sam_splines.hpp"
 
 namespace pita {
@@ -23,8 +26,11 @@ template <class Pose>
 void check_poses(PoseMethod method, const std::vector<TimedPoseOf<Pose>>& poses);
 
 // The motion through the poses, for the methods with PoseMethodInfo::in_space
-// (SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM): every
-// promise of PoseMotion (pose_motion.hpp) about errors and times holds here.
+// (SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, P4, P5, P6,
+// P9): every promise of PoseMotion (pose_motion.hpp) about errors and times
+// holds here. The pose PITAs extrapolate outside their knots as the arrow
+// PITAs do; the powers they form at a time are checked at that time: at()
+// and velocity() throw NoPosePitaPower, which names it (N74).
 template <class Pose>
 class SamFamilyMotion {
  public:
@@ -50,6 +56,7 @@ class SamFamilyMotion {
   std::vector<Timed> span_poses_;               // the polySAM's poses (SAM, polySAM, linear, four-point)
   std::vector<SteadyAffineMorph<Pose>> spans_;  // between span_poses_
   std::optional<SamBiarcOf<Pose>> biarc_;
+  std::optional<PosePita<Pose>> pita_;  // P4, P5, P6, P9
 };
 
 using TimedPose3 = TimedPoseOf<Affine3>;

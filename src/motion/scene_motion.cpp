@@ -294,6 +294,12 @@ std::function<typename PoseTraits<Pose>::BodyPoint(double)> SceneMotion::pose_po
 SceneMotion build_motion(const scene::Scene& scene) { return build_motion(scene, scene::scene_panel(scene)); }
 
 void SceneMotion::undefined(double t, const std::exception& error) const {
+  // A pose PITA says which poses it formed have no SAM (core/pose_pitas).
+  const auto* no_sam = dynamic_cast<const NoSamBetweenPoses*>(&error);
+  if (no_sam != nullptr && !no_sam->where().empty()) {
+    throw NoMotion(file_, pointer_,
+                   fmt::format("method {} is undefined at t = {}: {} ({})", label_, t, error.what(), no_sam->where()));
+  }
   throw NoMotion(file_, pointer_, fmt::format("method {} is undefined at t = {}: {}", label_, t, error.what()));
 }
 

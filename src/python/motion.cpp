@@ -54,11 +54,32 @@ Json pose_json(const Pose& pose) {
       pose);
 }
 
+// Whether a keyframe is given as a pose: a pita.Pose, a scene file's
+// {"matrix"}, {"triangle"} or {"tetrahedron"}, or a matrix of a pose.
+bool given_as_pose(const py::handle& item) {
+  if (py::isinstance<py::dict>(item)) {
+    const py::dict d = py::reinterpret_borrow<py::dict>(item);
+    return d.contains("matrix") || d.contains("triangle") || d.contains("tetrahedron");
+  }
+  if (py::isinstance<Arrow>(item)) return false;
+  try {
+    (void)read_pose(item, "keyframes[0]");
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 // The scene pita.motion evaluates.
 Json motion_scene(const std::string& method, const py::sequence& keyframes, const py::object& times,
                   const py::kwargs& options) {
-  const MethodEntry* entry = find_method_entry(method);
-  const bool poses = entry != nullptr && is_method_of<PoseMethod>(*entry);
+  // The kind of the keyframes: a pose method's name means poses; a name both
+  // kinds share (the PITAs P4, P5, P6, P9) means poses when the keyframes
+  // are given as poses.
+  const MethodEntry* arrow = find_method_entry(method, is_method_of<Method>);
+  const bool poses = arrow == nullptr ? find_method_entry(method) != nullptr
+                                      : find_method_entry(method, is_method_of<PoseMethod>) != nullptr &&
+                                            py::len(keyframes) > 0 && given_as_pose(keyframes[0]);
   Json scene{{"method", method}};
   std::vector<double> knots;
   if (!times.is_none()) {

@@ -43,9 +43,10 @@ struct HeldScene {
 
 // The scene with another method, as `pita eval --method` makes it.
 scene::Scene with_method(const scene::Scene& scene, const std::string& name) {
-  const MethodEntry* entry = find_method_entry(name);
-  if (entry == nullptr) throw py::value_error(fmt::format("method: {}", unknown_method_reason(name)));
-  return scene::with_method(scene, entry->method);
+  if (find_method_entry(name) == nullptr) {
+    throw py::value_error(fmt::format("method: {}", unknown_method_reason(name)));
+  }
+  return scene::with_method(scene, std::string_view(name));
 }
 
 // No frames, shaped as the kind's (a scene without poses: sam-fig06-existence-3d).

@@ -142,13 +142,15 @@ bool needs_motion(const std::vector<PoseLayer>& layers) {
   });
 }
 
-// A pose scene has "poses", or a pose method such as "SAM".
+// A pose scene has "poses", or a method of poses only such as "SAM" (a name
+// both kinds share, such as "P6", is read as the arrow method).
 bool is_pose_scene(const Json& document) {
   if (JsonReader::member(document, "poses") != nullptr) return true;
   if (JsonReader::member(document, "dimension") != nullptr) return true;
   const Json* method = JsonReader::member(document, "method");
-  return method != nullptr && method->is_string() &&
-         find_method_of<PoseMethod>(method->get<std::string>()) != nullptr &&
+  if (method == nullptr || !method->is_string()) return false;
+  const std::string name = method->get<std::string>();
+  return find_method_of<PoseMethod>(name) != nullptr && find_method_of<Method>(name) == nullptr &&
          JsonReader::member(document, "keyframes") == nullptr;
 }
 

@@ -148,6 +148,20 @@ void replace_method(const Scene& scene, MotionKeys& keys, PoseMethod method) {
 
 }  // namespace
 
+Scene with_method(Scene scene, std::string_view name) {
+  const MethodFilter of_kind =
+      std::visit(overloaded{[](const KeyframeKeys&) -> MethodFilter { return is_method_of<Method>; },
+                            [](const PointKeys&) -> MethodFilter { return is_method_of<Method>; },
+                            [](const PlanePoseKeys&) -> MethodFilter { return is_method_of<PoseMethod>; },
+                            [](const SpacePoseKeys&) -> MethodFilter { return is_method_of<PoseMethod>; }},
+                 scene.keys);
+  const MethodEntry* entry = find_method_entry(name, of_kind);
+  if (entry == nullptr) entry = find_method_entry(name);
+  if (entry == nullptr) throw std::invalid_argument(pita::unknown_method_reason(name));
+  const AnyMethod method = entry->method;
+  return with_method(std::move(scene), method);
+}
+
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method) {
   if (!error.where().empty()) {
     return fmt::format("{} ({}, method {})", error.what(), error.where(), info(method).id);

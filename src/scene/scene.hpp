@@ -164,6 +164,13 @@ Method resolve_method(std::string_view name);
 // takes another number of poses.
 Scene with_method(Scene scene, const AnyMethod& method);
 
+// The scene with the method named `name` (any spelling find_method_entry
+// accepts), looked up first among the methods of the scene's kind: "P6" is
+// the arrow P6 in an arrow scene and the pose P6 in a pose scene. A name of
+// the other kind only is refused as with_method refuses it; an unknown name
+// throws std::invalid_argument with unknown_method_reason's words.
+Scene with_method(Scene scene, std::string_view name);
+
 // "no SAM exists between these poses: ... (poses 0 and 1, method SAM)": the
 // reason of the error that refuses a pose motion whose SAM does not exist.
 std::string no_sam_reason(const NoSamBetweenPoses& error, PoseMethod method);

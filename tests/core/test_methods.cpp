@@ -1,10 +1,11 @@
 // The one registry of methods (src/core/methods.cpp): every name of every
-// method of both kinds resolves, no name means two methods, the one wording of
-// unknown names, and the method tables of docs/reference agree with the registry.
+// method of both kinds resolves, no name means two methods of one kind (the pose PITAs share the arrow PITAs' names),
+// the one wording of unknown names, and the method tables of docs/reference agree with the registry.
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -20,10 +21,25 @@ std::string upper(std::string s) {
 
 TEST(Methods, EveryMethodOfBothKindsIsRegisteredOnce) {
   std::size_t arrows = 0, poses = 0;
-  std::set<std::string> ids;
+  std::set<std::string> arrow_ids, pose_ids;
   for (const MethodEntry& entry : every_method()) {
-    (is_method_of<Method>(entry) ? arrows : poses)++;
-    EXPECT_TRUE(ids.insert(upper(std::string(entry.id))).second) << entry.id;
+    const bool arrow = is_method_of<Method>(entry);
+    (arrow ? arrows : poses)++;
+    EXPECT_TRUE((arrow ? arrow_ids : pose_ids).insert(upper(std::string(entry.id))).second) << entry.id;
+  }
+  // The names both kinds share are the PITAs over affine poses, with the
+  // arrow PITA's id and mnemonic (docs/paper-notes.md N73).
+  std::vector<std::string> shared;
+  for (const std::string& id : pose_ids) {
+    if (arrow_ids.count(id) != 0) shared.push_back(id);
+  }
+  EXPECT_EQ(shared, (std::vector<std::string>{"P4", "P5", "P6", "P9"}));
+  for (PoseMethod pita : {PoseMethod::p4, PoseMethod::p5, PoseMethod::p6, PoseMethod::p9}) {
+    const MethodEntry& pose = entry_of(pita);
+    const MethodEntry* arrow = find_method_entry(pose.id, is_method_of<Method>);
+    ASSERT_NE(arrow, nullptr) << pose.id;
+    EXPECT_EQ(arrow->mnemonic, pose.mnemonic) << pose.id;
+    EXPECT_TRUE(info(pita).in_space) << pose.id;
   }
   EXPECT_EQ(arrows, all_methods().size());
   EXPECT_EQ(poses, all_pose_methods().size());
@@ -37,12 +53,14 @@ TEST(Methods, EveryNameResolvesInAnyCase) {
       ASSERT_NE(found, nullptr) << name;
       EXPECT_EQ(found, &entry) << name;
     }
-    // Filtered by its own kind it is found; by the other kind it is not.
+    // Filtered by its own kind it is found; by the other kind only when the
+    // name is shared (P4, P5, P6, P9), and then as the other kind's entry.
     const bool arrow = is_method_of<Method>(entry);
     EXPECT_EQ(find_method_entry(entry.id, arrow ? is_method_of<Method> : is_method_of<PoseMethod>), &entry);
-    EXPECT_EQ(find_method_entry(entry.id, arrow ? is_method_of<PoseMethod> : is_method_of<Method>), nullptr);
-    EXPECT_EQ(find_method_of<Method>(entry.id) != nullptr, arrow);
-    EXPECT_EQ(find_method_of<PoseMethod>(entry.id) != nullptr, !arrow);
+    const MethodEntry* other = find_method_entry(entry.id, arrow ? is_method_of<PoseMethod> : is_method_of<Method>);
+    if (other != nullptr) EXPECT_NE(is_method_of<Method>(*other), arrow);
+    EXPECT_EQ(find_method_of<Method>(entry.id) != nullptr, arrow || other != nullptr);
+    EXPECT_EQ(find_method_of<PoseMethod>(entry.id) != nullptr, !arrow || other != nullptr);
   }
   EXPECT_EQ(find_method_entry("6")->method, AnyMethod(Method::P6));
   EXPECT_EQ(find_method_entry("5s")->method, AnyMethod(Method::P5S));
@@ -50,7 +68,14 @@ TEST(Methods, EveryNameResolvesInAnyCase) {
   EXPECT_EQ(*find_method_of<Method>("lo-pe"), Method::P8);
   EXPECT_EQ(find_method_entry("POLYSAM")->method, AnyMethod(PoseMethod::poly_sam));
   EXPECT_EQ(*find_method_of<PoseMethod>("four-point-sam"), PoseMethod::four_point);
-  EXPECT_EQ(find_method_of<PoseMethod>("6"), nullptr);  // PITA numbers are arrow names only
+  // Unfiltered, a shared name is the arrow PITA (the registry's order); the
+  // pose PITA answers to the same names, number included.
+  EXPECT_EQ(find_method_entry("La-LP")->method, AnyMethod(Method::P6));
+  EXPECT_EQ(*find_method_of<PoseMethod>("6"), PoseMethod::p6);
+  EXPECT_EQ(*find_method_of<PoseMethod>("p9:ne-lp"), PoseMethod::p9);
+  EXPECT_EQ(*find_method_of<PoseMethod>("BE-LP"), PoseMethod::p4);
+  EXPECT_EQ(find_method_of<PoseMethod>("5s"), nullptr);  // P5S is of arrows only
+  EXPECT_EQ(find_method_of<PoseMethod>("P8"), nullptr);
   EXPECT_EQ(find_method_entry("P66"), nullptr);
 }
 
@@ -62,13 +87,18 @@ TEST(Methods, UnknownNamesHaveOneWording) {
   const std::string none = unknown_method_reason("zzzzzz", is_method_of<PoseMethod>);
   EXPECT_EQ(none,
             "unknown method \"zzzzzz\"; known methods: SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, "
-            "rARAP, ASAP, TSB, Alexa");
+            "P4, P5, P6, P9, rARAP, ASAP, TSB, Alexa");
+  // Unfiltered, the shared names are listed and suggested once each.
+  const std::string every = method_ids();
+  EXPECT_EQ(every.find("P6"), every.rfind("P6")) << every;
+  EXPECT_EQ(unknown_method_reason("P66"), "unknown method \"P66\"; did you mean P6 (La-LP), P1 (Pa-Ca) or P2 (LS-Po)?");
 }
 
 TEST(Methods, LabelsAsMessagesNameThem) {
   EXPECT_EQ(method_label(entry_of(Method::P6)), "P6 (La-LP)");
   EXPECT_EQ(method_label(entry_of(Method::SMA)), "SMA");
   EXPECT_EQ(method_label(entry_of(PoseMethod::bezier_sam)), "bezier-SAM");
+  EXPECT_EQ(method_label(entry_of(PoseMethod::p6)), "P6 (La-LP)");
 }
 
 // The reference's method tables list every method of the registry, once each
