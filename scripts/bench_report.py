@@ -415,6 +415,37 @@ def report_existence(ctx):
     ])
 
 
+def report_pose_pitas(ctx):
+    """The PITAs over affine poses: a frame of each against one steady affine morph (bench_pose_pitas.cpp)."""
+    benches = bench_json(ctx, "BM_PosePita", 0.2, 3)
+
+    def cell(name):
+        bench = benches.get(name)
+        return f"{bench_ns(bench):.0f}" if bench else ""
+
+    def sams(name, dimension):
+        frame, sam = benches.get(name), benches.get(f"BM_PosePitaSam{dimension}")
+        return f"{bench_ns(frame) / bench_ns(sam):.1f}" if frame and sam else ""
+
+    lines = [
+        "```sh",
+        "build/pita_bench --benchmark_filter=BM_PosePita --benchmark_min_time=0.2 --benchmark_repetitions=3 "
+        "--benchmark_report_aggregates_only=true",
+        "```",
+        "",
+        "| method | frame, 2D (ns) | in SAMs (2D) | frame, 3D (ns) | in SAMs (3D) | build, 2D (ns) | build, 3D (ns) |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for method in ["P4", "P5", "P6", "P9"]:
+        lines.append(f"| {method} | {cell(f'BM_PosePitaFrame2/{method}')} | {sams(f'BM_PosePitaFrame2/{method}', 2)} | "
+                     f"{cell(f'BM_PosePitaFrame3/{method}')} | {sams(f'BM_PosePitaFrame3/{method}', 3)} | "
+                     f"{cell(f'BM_PosePitaPrepare2/{method}')} | {cell(f'BM_PosePitaPrepare3/{method}')} |")
+    lines += ["", f"One steady affine morph built and evaluated (`BM_PosePitaSam2`, `BM_PosePitaSam3`): "
+              f"{cell('BM_PosePitaSam2')} ns in 2D, {cell('BM_PosePitaSam3')} ns in 3D; \"in SAMs\" is a frame's "
+              "cost in those units."]
+    return "\n".join(lines)
+
+
 def report_python(ctx):
     """The Python module against the C++ it calls (BM_StageFrame/P6, BM_PowerEar) and against SciPy."""
     module = sorted((ctx.build / "python").glob("pita.cpython-*.so"))
@@ -494,6 +525,7 @@ REPORTS = {
     "methods": report_methods,
     "png": report_png,
     "existence": report_existence,
+    "pose-pitas": report_pose_pitas,
     "python": report_python,
     "summary": report_summary,  # last: it reuses the numbers of the reports run before it
 }

@@ -105,6 +105,9 @@ AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
   const Split s = detail::split(A.L);
   Q_ = s.Q;
   const Matrix3d T = detail::standardised_split(A.L, Q_);
+  // The column below lambda, which the split drops: rounding (a few ulps of
+  // |L|) when u is an eigenvector to working precision.
+  const double dropped = T.block<2, 1>(1, 0).norm();
   lambda_ = T(0, 0);
   w_ = T.block<1, 2>(0, 1).transpose();
   Matrix2d M = T.block<2, 2>(1, 1);
@@ -144,6 +147,12 @@ AffinePowers<Affine3>::AffinePowers(const Affine3& A) : A_(A) {
   lean_by_sylvester_ = from_plane >= limits::kSylvesterLeanGap * std::max({lambda_, modulus(mu1), modulus(mu2)});
   if (radius <= limits::kUnitSeriesRadius) {
     corner_ = Corner::unit_series;
+    // Three eigenvalues close to 1 are found by the cubic only to the cube
+    // root of rounding, and u may then miss the eigenvector by far more than
+    // rounding: the column the split drops is as large as L - I itself, and
+    // so would be the error of L^t. There L^t is the binomial series, which
+    // needs no split (docs/paper-notes.md N80).
+    linear_by_series_ = dropped > limits::kSplitResidual * A.L.norm();
   } else if (from_one >= from_plane) {
     corner_ = Corner::over_lambda_minus_one;
   } else {
@@ -304,7 +313,25 @@ Vector3d AffinePowers<Affine3>::unit_series(double t) const {
   return sum;
 }
 
+Matrix3d AffinePowers<Affine3>::unit_series_linear(double t) const {
+  // (I + E)^t = sum_{n>=0} C(t, n) E^n (spectral radius of E <= 1/4); ended
+  // as unit_series is, by three small terms in a row.
+  const Matrix3d E = A_.L - Matrix3d::Identity();
+  Matrix3d sum = Matrix3d::Identity(), x = E;
+  double binomial = t;
+  int small_terms = 0;
+  for (int n = 1; n <= 400 && small_terms < 3; ++n) {
+    const Matrix3d term = binomial * x;
+    sum += term;
+    small_terms = term.norm() <= limits::kSeriesTermCutoff * sum.norm() ? small_terms + 1 : 0;
+    x = E * x;
+    binomial *= (t - n) / (n + 1.0);
+  }
+  return sum;
+}
+
 Affine3 AffinePowers<Affine3>::at_small(double t) const {
+  if (linear_by_series_) return {unit_series_linear(t), unit_series(t)};
   // The plane: [M | c]^t = [M^t | g_t(M) c] (2D EAR).
   const Affine2 plane = plane_->at(t);
   // The lean: w^T (z^t)[lambda, M] = lambda^(t-1) (g_t(M^T / lambda) w)^T.

@@ -113,7 +113,8 @@ class AffinePowers<Affine3> {
 
   void set_translation(const Eigen::Vector3d& b);  // A_.b, and beta_ and c_ from it
   Affine3 at_small(double t) const;
-  Eigen::Vector3d unit_series(double t) const;  // g_t(L) b, |t| <= kUnitSeriesMaxTime
+  Eigen::Vector3d unit_series(double t) const;         // g_t(L) b, |t| <= kUnitSeriesMaxTime
+  Eigen::Matrix3d unit_series_linear(double t) const;  // L^t by the binomial series, |t| <= kUnitSeriesMaxTime
 
   Affine3 A_;
   Eigen::Matrix3d Q_;
@@ -126,6 +127,8 @@ class AffinePowers<Affine3> {
   Corner corner_ = Corner::over_lambda_minus_one;
   Eigen::Matrix2d M_;               // the plane block
   bool lean_by_sylvester_ = false;  // log(): the lean row by Sylvester (N58)
+  // Near the identity with an ill-determined split: L^t by the binomial series (N80).
+  bool linear_by_series_ = false;
 };
 
 AffinePowers(const Affine3&)->AffinePowers<Affine3>;

@@ -162,6 +162,13 @@ inline constexpr double kExpProjectors = 0.5;
 // -rho I, as 2D snaps its real negative eigenvalues.
 inline constexpr double kEigenvalueCluster = 1e-4;
 
+// EAR in 3D near the identity (spectral radius of L - I at most
+// kUnitSeriesRadius): when the column the split drops exceeds this many times
+// |L|_F, the split's eigenvector is not one to working precision, and L^t is
+// summed as the binomial series instead (docs/paper-notes.md N80). A split
+// that inverse iteration finished leaves at most 4 ulps of |L|.
+inline constexpr double kSplitResidual = 64.0 * 0x1p-52;
+
 // log(): the lean row comes from the Sylvester equation (log T commutes with
 // T) when lambda is at least this fraction of the largest eigenvalue modulus
 // away from both eigenvalues of the plane block, so that lambda I - M is well

@@ -102,7 +102,7 @@ SamFamilyMotion<Pose>::SamFamilyMotion(PoseMethod method, std::vector<Timed> pos
       throw NoSamBetweenPoses(error, 0, "between the control poses of the bi-arc (Sec. 5.3)");
     }
   }
-  if (is_pose_pita(method)) pita_.emplace(make_pose_pita<Pose>(method, {poses_[0], poses_[1], poses_[2]}));
+  if (is_pose_pita(method)) pitas_.emplace(method, poses_);
   if (method == PoseMethod::bezier_sam || method == PoseMethod::biarc_sam) {
     // The SAMs between intermediate poses are found only by evaluating.
     for (int i = 0; i <= 64; ++i) {
@@ -164,7 +164,7 @@ Pose SamFamilyMotion<Pose>::at(double t) const {
       for (const Timed& key : poses_) {
         if (t == key.t) return key.pose;  // exactly the pose at its knot
       }
-      return std::visit([t](const auto& pita) { return pita.at(t); }, *pita_);
+      return pitas_->at(t);
     case PoseMethod::rarap:  // the plane's morphs of Fig. 2: PoseMotion; the constructor refuses them
     case PoseMethod::asap:
     case PoseMethod::tsb:

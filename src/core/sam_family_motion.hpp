@@ -15,7 +15,7 @@
 #include "core/affine2.hpp"
 #include "core/affine3.hpp"
 #include "core/pose_method.hpp"
-#include "core/pose_pitas/pose_pita.hpp"
+#include "core/pose_pitas/blend_chain.hpp"
 #include "core/sam_splines.hpp"
 
 namespace pita {
@@ -29,8 +29,9 @@ void check_poses(PoseMethod method, const std::vector<TimedPoseOf<Pose>>& poses)
 // (SAM, polySAM, bezier-SAM, biarc-SAM, linear, four-point-SAM, P4, P5, P6,
 // P9): every promise of PoseMotion (pose_motion.hpp) about errors and times
 // holds here. The pose PITAs extrapolate outside their knots as the arrow
-// PITAs do; the powers they form at a time are checked at that time: at()
-// and velocity() throw NoPosePitaPower, which names it (N74).
+// PITAs do, and past three poses follow the blend chain (C1, docs/paper-notes.md
+// N79); the powers they form at a time are checked at that time: at() and
+// velocity() throw NoPosePitaPower, which names it (N74).
 template <class Pose>
 class SamFamilyMotion {
  public:
@@ -56,7 +57,7 @@ class SamFamilyMotion {
   std::vector<Timed> span_poses_;               // the polySAM's poses (SAM, polySAM, linear, four-point)
   std::vector<SteadyAffineMorph<Pose>> spans_;  // between span_poses_
   std::optional<SamBiarcOf<Pose>> biarc_;
-  std::optional<PosePita<Pose>> pita_;  // P4, P5, P6, P9
+  std::optional<PoseBlendChain<Pose>> pitas_;  // P4, P5, P6, P9: one triple, or the blend chain past three
 };
 
 using TimedPose3 = TimedPoseOf<Affine3>;

@@ -11,6 +11,7 @@
 
 #include "core/finite_difference.hpp"
 #include "core/limits.hpp"
+#include "core/methods.hpp"
 #include "core/overloaded.hpp"
 #include "core/pitas/registry.hpp"
 
@@ -56,7 +57,8 @@ std::string method_label(const scene::Scene&, const scene::Panel& panel) {
     if (const std::optional<Chain> chain = chain_of(panel)) label += fmt::format(", {} chain", info(*chain).name);
     return label;
   };
-  const auto poses = [](const auto& given) { return std::string(info(given.method).id); };
+  // "SAM", "P6 (La-LP)": as the registry labels the pose method.
+  const auto poses = [](const auto& given) { return pita::method_label(entry_of(given.method)); };
   return std::visit(overloaded{[&](const scene::KeyframeKeys& given) { return track(given); },
                                [&](const scene::PointKeys& given) { return track(given); },
                                [&](const scene::PlanePoseKeys& given) { return poses(given); },

@@ -286,6 +286,38 @@ TEST(AffinePower3, AgreesWithLongDoublePowOnRandomAffinities) {
               worst_eigen_double);
 }
 
+// Near the identity (three eigenvalues within 1e-12 .. 1e-3 of 1), where
+// the cubic finds the eigenvalues only to the cube root of rounding: the
+// power and the log move by |A - I| or less, and must be right relative to
+// that, not only to |A| (docs/paper-notes.md N80).
+TEST(AffinePower3, PowersAndLogNearTheIdentityAreRightRelativeToTheMotion) {
+  std::mt19937 rng(80);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double worst_power = 0.0, worst_log = 0.0;
+  for (const double epsilon : {1e-12, 1e-10, 1e-8, 1e-6, 1e-5, 3e-5, 1e-4, 1e-3}) {
+    for (int i = 0; i < 40; ++i) {
+      Affine3 A;
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) A.L(r, c) += epsilon * u(rng);
+        A.b(r) = epsilon * u(rng);
+      }
+      const double motion = (homogeneous(A) - Matrix4d::Identity()).norm();
+      const Eigen::Matrix<long double, 4, 4> H = homogeneous(A).cast<long double>();
+      for (const double t : {0.5, -0.3, 1.7}) {
+        const Matrix4d reference = oracle::pow(H, static_cast<long double>(t)).cast<double>();
+        const double e = (homogeneous(affine_power(A, t)) - reference).norm() / motion;
+        worst_power = std::max(worst_power, e);
+        EXPECT_LE(e, 1e-9) << "epsilon " << epsilon << " case " << i << " t " << t;
+      }
+      Matrix4d difference = homogeneous(log(A)) - oracle::log(H).cast<double>();
+      difference(3, 3) -= 1.0;
+      worst_log = std::max(worst_log, difference.norm() / motion);
+      EXPECT_LE(difference.norm() / motion, 1e-9) << "epsilon " << epsilon << " case " << i;
+    }
+  }
+  std::printf("near the identity, worst error relative to |A - I|: power %.2g, log %.2g\n", worst_power, worst_log);
+}
+
 TEST(AffinePower3, HomogeneousLogAgreesWithEigenLog) {
   RandomAffinities random(4);
   for (int i = 0; i < 100; ++i) {

@@ -27,8 +27,8 @@ void expect_decomposes(const Eigen::Matrix2d& L) {
   SCOPED_TRACE(::testing::Message() << "L = [" << L.row(0) << "; " << L.row(1) << "]");
   const ArapDecomposition d = arap_decomposition(L);
   // L = R(alpha + beta) B and = U^T Y V with U^T = R(alpha), V = R(beta).
-  EXPECT_LT((rotation(d.angle) * d.stretch - L).norm(), 1e-12 * L.norm());
-  EXPECT_LT((rotation(d.alpha) * d.singular.asDiagonal() * rotation(d.beta) - L).norm(), 1e-12 * L.norm());
+  EXPECT_LT((pita::rotation(d.angle) * d.stretch - L).norm(), 1e-12 * L.norm());
+  EXPECT_LT((pita::rotation(d.alpha) * d.singular.asDiagonal() * pita::rotation(d.beta) - L).norm(), 1e-12 * L.norm());
   // B = R(-beta) Y R(beta) is sqrt(L^T L): symmetric, positive eigenvalues, B^2 = L^T L.
   EXPECT_LT((d.stretch - d.stretch.transpose()).norm(), 1e-15 * L.norm());
   EXPECT_LT((d.stretch * d.stretch - L.transpose() * L).norm(), 1e-12 * L.squaredNorm());
@@ -53,10 +53,10 @@ TEST(ArapDecomposition, IsThePolarDecomposition) {
 // Rotation and stretch are recovered whatever the angles alpha and beta: their
 // sum beyond pi comes back to (-pi, pi] (ARAP's recommendation).
 TEST(ArapDecomposition, RecoversRotationAndStretch) {
-  const Eigen::Matrix2d S = rotation(-1.2) * Eigen::Vector2d(2.0, 0.5).asDiagonal() * rotation(1.2);
+  const Eigen::Matrix2d S = pita::rotation(-1.2) * Eigen::Vector2d(2.0, 0.5).asDiagonal() * pita::rotation(1.2);
   for (const double angle : {0.0, 0.4, -2.5, 3.0, -3.1, std::numbers::pi - 1e-9}) {
     SCOPED_TRACE(angle);
-    const ArapDecomposition d = arap_decomposition(rotation(angle) * S);
+    const ArapDecomposition d = arap_decomposition(pita::rotation(angle) * S);
     EXPECT_NEAR(d.angle, angle, 1e-9);
     EXPECT_LT((d.stretch - S).norm(), 1e-12);
     EXPECT_NEAR(d.singular(0), 2.0, 1e-12);

@@ -48,8 +48,11 @@ TEST(Methods, EveryMethodOfBothKindsIsRegisteredOnce) {
 TEST(Methods, EveryNameResolvesInAnyCase) {
   for (const MethodEntry& entry : every_method()) {
     SCOPED_TRACE(std::string(entry.id));
+    // Unfiltered, a name both kinds share is the arrow PITA's; filtered by
+    // its own kind every entry answers to its names.
+    const MethodFilter own = is_method_of<Method>(entry) ? is_method_of<Method> : is_method_of<PoseMethod>;
     for (const std::string& name : {std::string(entry.id), upper(std::string(entry.id)), std::string(entry.mnemonic)}) {
-      const MethodEntry* found = find_method_entry(name);
+      const MethodEntry* found = find_method_entry(name, own);
       ASSERT_NE(found, nullptr) << name;
       EXPECT_EQ(found, &entry) << name;
     }

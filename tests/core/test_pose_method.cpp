@@ -18,14 +18,15 @@ TEST(PoseMethodTable, IdsAreUniqueAndEveryMethodHasItsRow) {
   }
 }
 
-// The SAM family moves poses of space; the Fig. 2 morphs and Alexa's blend,
+// The SAM family (with the pose PITAs) moves poses of space; the Fig. 2 morphs and Alexa's blend,
 // defined with the reference triangle or 2x2 logs, only those of the plane.
 TEST(PoseMethodTable, TheSamFamilyIsTheOneInSpace) {
   std::set<std::string> space;
   for (const PoseMethodInfo& entry : all_pose_methods()) {
     if (entry.in_space) space.insert(std::string(entry.id));
   }
-  EXPECT_EQ(space, (std::set<std::string>{"SAM", "polySAM", "bezier-SAM", "biarc-SAM", "linear", "four-point-SAM"}));
+  EXPECT_EQ(space, (std::set<std::string>{"SAM", "polySAM", "bezier-SAM", "biarc-SAM", "linear", "four-point-SAM", "P4",
+                                          "P5", "P6", "P9"}));
 }
 
 }  // namespace

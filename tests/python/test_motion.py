@@ -130,3 +130,36 @@ def test_pose_motions_of_the_plane_and_of_space():
     assert space.kind == "poses3d" and space(np.zeros(3)).shape == (3, 3, 4)
     linear = pita.motion("linear", [A, B], [0, 1])
     np.testing.assert_allclose(linear(0.5), (A.matrix + B.matrix) / 2, atol=1e-15)
+
+
+def _similarity(p, m, w):
+    c, s = m * math.cos(w), m * math.sin(w)
+    return np.array([[c, -s, p[0]], [s, c, p[1]]])
+
+
+@pytest.mark.parametrize("method", ["P4", "P5", "P6", "P9"])
+def test_pose_pitas_take_poses_in_the_plane_and_in_space(method):
+    # Given as poses, a PITA's name is the pose PITA: through the poses, and on
+    # similarities the arrow PITA of the same name given the matching arrows.
+    arrows = [pita.Arrow((0, 0), 1, 0.3), pita.Arrow((3, 1.5), 0.6, 2.0), pita.Arrow((6, 0), 1.2, 3.5)]
+    knots = [0, 0.4, 1]
+    poses = [pita.Pose.from_matrix(_similarity(a.p, a.m, a.w)) for a in arrows]
+    motion = pita.motion(method, poses, knots)
+    assert motion.kind == "poses"
+    times = np.linspace(-0.2, 1.2, 15)
+    frames = motion(times)
+    assert frames.shape == (15, 2, 3)
+    expected = [pita.motion(method, arrows, knots)(t) for t in times]
+    np.testing.assert_allclose(frames, [_similarity(D.p, D.m, D.w) for D in expected], atol=1e-12)
+    for pose, t in zip(poses, knots):
+        np.testing.assert_array_equal(motion(t), pose.matrix)
+    sheared = [np.eye(3, 4), [[1, 0.5, 0, 1], [0, 1, 0, 0], [0, 0.3, 1.2, 2]], [[0, -1, 0, 2], [1, 0, 0, 1], [0, 0, 1, 0]]]
+    space = pita.motion(method, sheared, [0, 1, 2])
+    assert space.kind == "poses3d"
+    np.testing.assert_array_equal(space(np.array([0.0, 1.0, 2.0])), np.array(sheared, dtype=float))
+
+
+def test_a_pose_pita_without_a_real_power_is_refused():
+    flipped = [np.eye(2, 3), [[-1, 0.2, 3], [0, -1, 1]], [[1, 0, 5], [0, 1, 3]]]
+    with pytest.raises(ValueError, match="no SAM exists between these poses"):
+        pita.motion("P6", flipped, [0, 1, 2])

@@ -101,6 +101,23 @@ TEST(SceneEdit, DraggingACornerMovesTheTriangleOrSetsTheMatrix) {
   EXPECT_NEAR(m[0][2].get<double>(), 0.0, 1e-12);
 }
 
+// A pose PITA (P6 over affine poses, docs/reference/pose-scenes.md): the
+// corners of its three poses are handles, and a drag edits one pose only.
+TEST(SceneEdit, ThePosesOfAPosePitaAreDraggedByTheirCorners) {
+  const std::string text = R"({"method": "P6", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
+    {"t": 1, "matrix": [[0.8, -0.9, 3], [0.7, 1.1, 1]]},
+    {"t": 2, "triangle": [[5, 3], [4.4, 4.3], [3.8, 2.8]]}]})";
+  const Drawn d = draw(text);
+  const auto& view = d.figure.placements[0].transform;
+  EXPECT_EQ(handles(text, d.scene, d.figure.placements).size(), 9u);
+  const auto edited = nlohmann::json::parse(
+      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/2", "corner0", view(Point(5.5, 3)))));
+  EXPECT_EQ(edited["method"], "P6");
+  EXPECT_NEAR(edited["poses"][2]["triangle"][0][0].get<double>(), 5.5, 1e-12);
+  EXPECT_EQ(edited["poses"][1], nlohmann::json::parse(text)["poses"][1]);
+}
+
 TEST(SceneEdit, AHandleTheFigureDoesNotHaveIsRefused) {
   const Drawn d = draw(kArrows);
   EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}), std::invalid_argument);

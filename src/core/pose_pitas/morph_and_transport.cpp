@@ -53,6 +53,16 @@ SteadyAffineMorph<Pose> formed_morph(const Pose& from, const Pose& to, std::stri
     const NoRealLogarithm raw = raw_reason(from, to);
     std::string place(where);
     if (t) place += " at t = " + number_text::g6(*t);
+    if (mirrored(from, to)) {
+      // Real powers of orientation-preserving poses preserve orientation: a
+      // formed pair that looks mirrored lost its sign to rounding (N74).
+      throw NoPosePitaPower(NoRealLogarithm("the poses the construction forms are too ill-conditioned for double "
+                                            "precision: rounding gave their ratio the determinant " +
+                                                number_text::g6(compose(to, inverse(from)).L.determinant()) +
+                                                "; times nearer the knots, or poses less stretched, avoid it",
+                                            raw.root_case()),
+                            0, place, t);
+    }
     throw NoPosePitaPower(
         NoRealLogarithm(std::string("no SAM exists between the poses the construction forms (") + raw.what() +
                             "); poses whose neighbours turn by less than pi, or another "
@@ -73,7 +83,7 @@ Pose pose_log(const Pose& pose, std::size_t index) {
                             "a linear part that turns by less than pi and is not mirrored, "
                             "or use P4, P6 or P9, which need SAMs between neighbours only",
                         raw.root_case()),
-        index, "", std::nullopt);
+        index, "pose " + std::to_string(index), std::nullopt);
   }
 }
 

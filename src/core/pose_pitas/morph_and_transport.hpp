@@ -30,8 +30,9 @@ using PoseTriple = std::array<TimedPoseOf<Pose>, 3>;
 
 // No real power for a step of a pose PITA (docs/paper-notes.md N74). first()
 // is the index of the first of two given neighbouring poses (0: A and B, 1: B
-// and C; for P5 the pose whose log is missing); where() is empty for given
-// poses, else "between ..." names the poses the construction formed; time()
+// and C; for P5 the pose whose log is missing); where() is empty for two
+// given poses, "pose N" for P5's pose without a log, else "between ..." names
+// the poses the construction formed; time()
 // is the time for the steps made at each time.
 class NoPosePitaPower : public NoSamBetweenPoses {
  public:

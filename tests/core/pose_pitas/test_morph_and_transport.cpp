@@ -111,6 +111,7 @@ TEST(PoseMorphAndTransport, PoseLogIsTheHomogeneousLogOrARefusal) {
     FAIL() << "no throw";
   } catch (const NoPosePitaPower& error) {
     EXPECT_EQ(error.first(), 2u);
+    EXPECT_EQ(error.where(), "pose 2");  // messages say "(pose 2, method P5)", not a pair
     EXPECT_EQ(std::string(error.what()).rfind("pose 2 has no real logarithm (", 0), 0u) << error.what();
   }
 }
