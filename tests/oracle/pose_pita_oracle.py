@@ -54,7 +54,7 @@ import sys
 import tempfile
 
 import numpy as np
-from scipy.linalg import expm, fractional_matrix_power, logm
+from scipy.linalg import expm, expm_frechet, fractional_matrix_power, logm
 
 NEAR = 1e-6          # |margin| below this: a boundary case (rounding decides)
 METHODS = ("P4", "P5", "P6", "P9")
@@ -103,27 +103,58 @@ def margin(L):
     return m
 
 
-def real_log(H, step, t=None):
-    """The principal logarithm of H, refused when it is not real."""
-    n = H.shape[0] - 1
-    m = margin(H[:n, :n])
-    if m <= 0:
-        raise NoRealPower(step, t, m)
-    X = logm(H)
+def log_linear(L):
+    """The principal log X of L (n x n): scipy's logm, then Newton steps on expm(X) = L with
+    scipy's Frechet derivative of expm, while they shrink the residual (logm alone leaves up to
+    1e-7 on non-normal L)."""
+    X = logm(L, disp=False)[0]
     if np.iscomplexobj(X):
         if np.abs(X.imag).max() > 1e-9 * max(1.0, np.abs(X).max()):
-            raise NoRealPower(step, t, m)
+            return None
         X = X.real
-    return X, m
+    n = L.shape[0]
+    res = L - expm(X)
+    for _ in range(3):
+        r = np.abs(res).max() / np.abs(L).max()
+        if r < 1e-15:
+            break
+        J = np.column_stack([expm_frechet(X, np.eye(n * n)[k].reshape(n, n), compute_expm=False).ravel()
+                             for k in range(n * n)])
+        Y = X + np.linalg.solve(J, res.ravel()).reshape(n, n)
+        res_y = L - expm(Y)
+        if not np.abs(res_y).max() / np.abs(L).max() < r:
+            break
+        X, res = Y, res_y
+    return X
+
+
+def real_log(H, step, t=None):
+    """The principal logarithm [[X, v], [0, 0]] of H = [[L, b], [0, 1]], refused when it is not
+    real: X = log L (log_linear), and v from b = phi(X) v, phi(X) = sum X^k / (k + 1)! (the
+    top right block of exp([[X, I], [0, 0]])), so that exp([[X, v], [0, 0]]) = H."""
+    n = H.shape[0] - 1
+    L, b = H[:n, :n], H[:n, n]
+    m = margin(L)
+    X = None if m <= 0 else log_linear(L)
+    if X is None:
+        raise NoRealPower(step, t, m)
+    phi = expm(np.block([[X, np.eye(n)], [np.zeros((n, 2 * n))]]))[:n, n:]
+    out = np.zeros_like(H)
+    out[:n, :n], out[:n, n] = X, np.linalg.solve(phi, b)
+    return out, m
 
 
 class Power:
-    """s -> X^s for X = B o A^-1, the power of one pair of poses (SAM Sec. 2.2, Eq. 1-2)."""
+    """s -> X^s for X = B o A^-1, the power of one pair of poses (SAM Sec. 2.2, Eq. 1-2).
 
-    def __init__(self, A, B, step, t=None):
-        self.X = B @ np.linalg.inv(A)
-        self.A = A
-        self.step, self.t = step, t
+    With body=True the same morph and transport are computed in A's body frame, from
+    Y = A^-1 o B: X^s = A o Y^s o A^-1 (the principal power commutes with conjugation). Both are
+    the same in exact arithmetic; in doubles they round differently, which estimates the
+    oracle's own error (compare_pose_pitas_with_cli.py)."""
+
+    def __init__(self, A, B, step, t=None, body=False):
+        self.A, self.body = A, body
+        self.X = np.linalg.solve(A, B) if body else B @ np.linalg.inv(A)
         self.log, self.margin = None, 1.0
         try:
             self.log, self.margin = real_log(self.X, step, t)
@@ -143,19 +174,19 @@ class Power:
         return expm(s * self.check().log)
 
     def morph(self, s):                         # M(A, B, s), PITA Eq. 20
-        return self(s) @ self.A
+        return self.A @ self(s) if self.body else self(s) @ self.A
 
     def transport(self, Y, s):                  # T(Y, A, B, s), PITA Eq. 24
-        return self(s) @ Y
+        return self.A @ self(s) @ np.linalg.solve(self.A, Y) if self.body else self(s) @ Y
 
 
-def formed_morph(P, Q, s, step, t, margins):
+def formed_morph(P, Q, s, step, t, margins, body=False):
     """M(P, Q, s) for poses a construction formed at time t: checked at t (unless s is 0 or 1)."""
     if s == 0:
         return P
     if s == 1:
         return Q
-    pw = Power(P, Q, step, t).check()
+    pw = Power(P, Q, step, t, body).check()
     margins.append(pw.margin)
     return pw.morph(s)
 
@@ -200,7 +231,8 @@ class Motion:
     `margin` is the smallest margin of the powers built once, `last_margin` that of the last
     at(t) (both included)."""
 
-    def __init__(self, method, poses, knots):
+    def __init__(self, method, poses, knots, body=False):
+        self.body = body
         if method not in METHODS:
             raise ValueError("method %r" % method)
         self.method = method
@@ -214,7 +246,7 @@ class Motion:
         self.last_margin = self.margin
 
     def _power(self, P, Q, step):
-        pw = Power(P, Q, step).check()
+        pw = Power(P, Q, step, body=self.body).check()
         self.build_margins.append(pw.margin)
         return pw
 
@@ -237,7 +269,7 @@ class Motion:
         x, y, z = lagrange(self.a, self.b, self.c, t)
         L = self.bc.transport(self.ab.morph(y + z), z)       # T(M(A, B, y + z), B, C, z)
         R = self.ba.transport(self.cb.morph(x + y), x)       # T(M(C, B, x + y), B, A, x)
-        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, margins)   # M(L, R), Eq. 23
+        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, margins, self.body)   # M(L, R), Eq. 23
 
     # P9, Eq. D.2 ------------------------------------------------------------------------------
     def _build_p9(self):
@@ -247,7 +279,7 @@ class Motion:
     def _at_p9(self, t, margins):
         q, r, s = neville(self.a, self.b, self.c, t)
         return formed_morph(self.ab.morph(q), self.bc.morph(r), s,
-                            "between M(A, B, q) and M(B, C, r)", t, margins)
+                            "between M(A, B, q) and M(B, C, r)", t, margins, self.body)
 
     # P4, Eq. 27-32 ----------------------------------------------------------------------------
     def _build_p4(self):
@@ -265,7 +297,7 @@ class Motion:
         first, second = self.arcs[0] if u <= 0.5 else self.arcs[1]
         s = 2 * u if u <= 0.5 else 2 * u - 1
         return formed_morph(first.morph(s), second.morph(s), s,      # Bezier, Eq. 29
-                            "between the Bezier arc's inner morphs", t, margins)
+                            "between the Bezier arc's inner morphs", t, margins, self.body)
 
     # P5, Eq. 33 and appendix C ----------------------------------------------------------------
     def _build_p5(self):
@@ -283,10 +315,10 @@ class Motion:
         return self.to_g @ expm(x * self.logs[0] + y * self.logs[1] + z * self.logs[2])
 
 
-def evaluate(method, poses, knots, times):
+def evaluate(method, poses, knots, times, body=False):
     """[(pose or NoRealPower, margin)] at each time; the construction's refusal at every time."""
     try:
-        mo = Motion(method, poses, knots)
+        mo = Motion(method, poses, knots, body)
     except NoRealPower as e:
         return [(e, e.margin) for _ in times]
     out = []
@@ -310,33 +342,42 @@ def rot3(axis, a):
     return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * (K @ K)
 
 
-def random_linear(rng, n, wild):
-    """An orientation-preserving linear map: a rotation times a symmetric stretch, scaled, and
-    for wild ones a shear; tame ones turn by < 1 rad and stretch by < 1.5."""
-    amax, smax, shear = (math.pi, 4.0, 1.5) if wild else (1.0, 1.5, 0.2)
+KINDS = {  # max turn of a neighbour (rad), max stretch, max shear, knot spacing range
+    "tame": (1.0, 1.5, 0.2, (0.2, 2.0)),
+    "wild": (math.pi, 4.0, 1.5, (0.2, 2.0)),
+    "stretch": (2.0, 12.0, 0.5, (0.2, 2.0)),
+    "uneven": (1.5, 2.0, 0.5, (0.02, 2.0)),
+}
+
+
+def random_linear(rng, n, kind, turn=None):
+    """An orientation-preserving linear map R S U e^k: a rotation by at most the kind's turn (or
+    by `turn`), a symmetric stretch, a unit upper triangular shear, a scale."""
+    amax, smax, shear, _ = KINDS[kind]
+    a = rng.uniform(-amax, amax) if turn is None else turn
     if n == 2:
-        Q, R = rot2(rng.uniform(-math.pi, math.pi)), rot2(rng.uniform(-amax, amax))
+        Q, R = rot2(rng.uniform(-math.pi, math.pi)), rot2(a)
     else:
-        Q = rot3(rng.normal(size=3), rng.uniform(-math.pi, math.pi))
-        R = rot3(rng.normal(size=3), rng.uniform(-amax, amax))
+        Q, R = rot3(rng.normal(size=3), rng.uniform(-math.pi, math.pi)), rot3(rng.normal(size=3), a)
     S = Q @ np.diag([math.exp(rng.uniform(-1, 1) * math.log(smax)) for _ in range(n)]) @ Q.T
     U = np.eye(n) + np.triu(rng.uniform(-shear, shear, size=(n, n)), 1)
     return math.exp(rng.uniform(-0.5, 0.5)) * R @ S @ U
 
 
-def random_pose(rng, n, wild):
-    return np.hstack([random_linear(rng, n, wild), rng.uniform(-3, 3, size=(n, 1))])
+def random_pose(rng, n, kind, turn=None):
+    return np.hstack([random_linear(rng, n, kind, turn), rng.uniform(-3, 3, size=(n, 1))])
 
 
-def random_triple(rng, n, wild):
-    """Poses A, B, C where B and C are random affinities of the previous pose's body (so tame
-    triples turn little between neighbours) and uneven knots."""
-    A = random_pose(rng, n, wild)
-    B = pose(hom(A) @ hom(random_pose(rng, n, wild)))
-    C = pose(hom(B) @ hom(random_pose(rng, n, wild)))
+def random_triple(rng, n, kind, turns=(None, None)):
+    """Poses A, B = A o X, C = B o Y with X, Y random poses of the kind (so a tame triple turns
+    little between neighbours; `turns` fixes the turns of X and Y), and knots a < b < c."""
+    A = random_pose(rng, n, "tame")
+    B = pose(hom(A) @ hom(random_pose(rng, n, kind, turns[0])))
+    C = pose(hom(B) @ hom(random_pose(rng, n, kind, turns[1])))
+    lo, hi = KINDS[kind][3]
     a = rng.uniform(-1, 1)
-    b = a + rng.uniform(0.2, 2)
-    c = b + rng.uniform(0.2, 2)
+    b = a + rng.uniform(lo, hi)
+    c = b + rng.uniform(lo, hi)
     return [A, B, C], (a, b, c)
 
 
@@ -376,7 +417,7 @@ def check_interpolation(ck, rng, count):
     fractional_matrix_power."""
     for n in (2, 3):
         for i in range(count):
-            poses, knots = random_triple(rng, n, wild=i % 2 == 1)
+            poses, knots = random_triple(rng, n, ("tame", "wild")[i % 2])
             for method in METHODS:
                 try:
                     mo = Motion(method, poses, knots)
@@ -401,8 +442,8 @@ def check_symmetry_and_invariance(ck, rng, count):
     for n in (2, 3):
         done = 0
         while done < count:
-            poses, (a, b, c) = random_triple(rng, n, wild=False)
-            G, Hh = hom(random_pose(rng, n, True)), hom(random_pose(rng, n, True))
+            poses, (a, b, c) = random_triple(rng, n, "tame")
+            G, Hh = hom(random_pose(rng, n, "wild")), hom(random_pose(rng, n, "wild"))
             moved = [pose(G @ hom(P) @ Hh) for P in poses]
             try:
                 mos = {m: Motion(m, poses, (a, b, c)) for m in METHODS}

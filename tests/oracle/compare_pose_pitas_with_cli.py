@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""Compare `pita eval` of the pose PITAs P4, P5, P6 and P9 with the independent oracle
+pose_pita_oracle.py (numpy + scipy's principal matrix log and exp).
+
+usage: compare_pose_pitas_with_cli.py PATH/TO/pita [--count N] [--seed S] [-v] [--keep DIR]
+
+Builds (fixed seed, temp dir) N random affine triples in the plane and N in space, of the kinds
+of pose_pita_oracle.KINDS in turn (tame; wild: any turn, stretches up to 4, shears; stretch:
+anisotropic scales up to 30; uneven: knots as close as 0.02 beside a span of 2) and every tenth
+with a neighbour turning by pi - d, d in [1e-3, 0.3] (near the half turn, where stretched pairs
+lose their SAM). Each triple is a pose scene ("poses" of 2x3 or 3x4 matrices, "dimension": 3 in
+space) with "method" P4, P5, P6 and P9 in turn, evaluated by one `pita eval SCENE --t T` per
+time (`pita eval --batch`, cli_batch.py): the knots, 4 times inside [a, c], and a - w/2, a - w/10,
+c + w/5, c + w/2 (w = c - a).
+
+Every frame must be what the oracle says, computed from the poses exactly as written:
+- a pose: pita exits 0 and its matrix matches to TOL * max(1, |oracle|_max) (max norm);
+- a refusal (a power the construction needs has no real value, at every time or at this t):
+  pita exits 2 with empty stdout, and stderr names the method and says "no SAM" or "no real"
+  (docs/paper-notes.md N74).
+Where the oracle's margin (pose_pita_oracle.margin: how far the powers taken are from having an
+eigenvalue on the closed negative real axis) is within NEAR = 1e-6 of 0, rounding decides, and
+either answer is accepted (but a pose must be finite); such frames are counted. A frame refused
+by pita and not by the oracle is a failure, whatever its margin beyond NEAR.
+
+Tolerance: max(TOL, SPREAD * spread), TOL = 1e-9, SPREAD = 10, where `spread` is the oracle's own
+rounding noise on that frame: the max-norm relative difference between the oracle computed in
+the world frame, (B o A^-1)^s o A, and in the body frame, A o (A^-1 o B)^s, equal in exact
+arithmetic. On well-conditioned frames both sides agree to ~1e-13 and TOL decides; on strongly
+stretched (non-normal) poses scipy's log and exp lose up to ~1e-8, the spread shows it (against
+a 60-digit log and exp, tests/oracle/sam3d_oracle.py's, the world frame's error was at most 1.8
+times the spread on 80 triples), and the tolerance follows. The counts of frames whose tolerance
+exceeds TOL are printed.
+
+Exit 1 on any mismatch, 0 otherwise.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_batch as CB  # noqa: E402
+import pose_pita_oracle as O  # noqa: E402
+
+TOL = 1e-9
+SPREAD = 10
+REFUSAL = re.compile(r"no SAM|no real")   # docs/paper-notes.md N74's wording
+KIND_ORDER = ("tame", "wild", "stretch", "uneven")
+
+
+def oracle_frames(method, poses, knots, times):
+    """[(pose or NoRealPower, margin, spread)]: the world frame's answer, the smaller margin of
+    the two frames, and their difference (inf where one refuses and the other does not: then
+    the margin is at the boundary)."""
+    out = []
+    for (w, mw), (b, mb) in zip(O.evaluate(method, poses, knots, times),
+                                O.evaluate(method, poses, knots, times, body=True)):
+        refused = isinstance(w, O.NoRealPower), isinstance(b, O.NoRealPower)
+        if refused[0] != refused[1]:
+            out.append((w, 0.0, math.inf))
+        else:
+            out.append((w, min(mw, mb) if not refused[0] else max(mw, mb),
+                        0.0 if refused[0] else O.rel_err(w, b)))
+    return out
+
+
+def gen_triples(rng, count):
+    """count triples in 2D and count in 3D: (dimension, kind, poses, knots)."""
+    out = []
+    for n in (2, 3):
+        for i in range(count):
+            kind = KIND_ORDER[i % len(KIND_ORDER)]
+            turns = (None, None)
+            if i % 10 == 9:
+                d = math.exp(rng.uniform(math.log(1e-3), math.log(0.3)))
+                turns = (None, math.copysign(math.pi - d, rng.uniform(-1, 1)))
+                kind = "halfturn-" + kind
+            poses, knots = O.random_triple(rng, n, kind.split("-")[-1], turns)
+            out.append((n, kind, poses, knots))
+    return out
+
+
+def times_for(knots):
+    a, b, c = knots
+    w = c - a
+    inside = [a + w * f for f in (0.13, 0.37, 0.61, 0.88)]
+    return [a, b, c] + inside + [a - 0.5 * w, a - 0.1 * w, c + 0.2 * w, c + 0.5 * w]
+
+
+def scene_json(n, method, poses, knots):
+    doc = {"method": method, "samples": 3,
+           "poses": [{"t": float(k), "matrix": [[float(v) for v in row] for row in P]}
+                     for P, k in zip(poses, knots)]}
+    if n == 3:
+        doc["dimension"] = 3
+    return json.dumps(doc)
+
+
+def fmt(P):
+    return json.dumps([[float(v) for v in row] for row in np.asarray(P)])
+
+
+def judge(method, ora, margin, spread, ans):
+    """None when pita's answer agrees with the oracle's, else (error, message); also the kind
+    of the frame: 'pose', 'refusal' or 'boundary', and the error of a compared pose."""
+    boundary = abs(margin) <= O.NEAR
+    kind = "boundary" if boundary else ("refusal" if isinstance(ora, O.NoRealPower) else "pose")
+    if ans.returncode == 0:
+        try:
+            frames = json.loads(ans.stdout)["frames"]
+            D = np.array(frames[0]["matrix"], dtype=float)
+        except Exception as e:  # noqa: BLE001
+            return kind, math.inf, "unreadable output (%s): %r" % (e, ans.stdout[:200])
+        if not np.all(np.isfinite(D)):
+            return kind, math.inf, "pita returns a non-finite pose %s" % fmt(D)
+        if boundary:
+            return kind, 0.0, None
+        if isinstance(ora, O.NoRealPower):
+            return kind, math.inf, "pita returns %s, the oracle refuses (%s)" % (fmt(D), ora)
+        e, tol = O.rel_err(D, ora), max(TOL, SPREAD * spread)
+        if not e <= tol:
+            return kind, e, "error %.3e > %.1e (margin %.3g, spread %.2g)\n      pita   %s\n      oracle %s" % (
+                e, tol, margin, spread, fmt(D), fmt(ora))
+        return kind, e, None
+    if ans.returncode == 2 and ans.stdout == "" and method in ans.stderr and REFUSAL.search(ans.stderr):
+        if boundary or isinstance(ora, O.NoRealPower):
+            return kind, 0.0, None
+        return kind, math.inf, "pita refuses, the oracle does not (margin %.3g): %s" % (
+            margin, ans.stderr.strip()[:300])
+    return kind, math.inf, "pita exit %d (expected 0, or 2 naming %s): stdout %r stderr %r" % (
+        ans.returncode, method, ans.stdout[:100], ans.stderr.strip()[:300])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("pita")
+    ap.add_argument("--count", type=int, default=40, help="random triples per dimension (default 40)")
+    ap.add_argument("--seed", type=int, default=5757)
+    ap.add_argument("-v", "--verbose", action="store_true")
+    ap.add_argument("--keep", metavar="DIR", help="copy the scenes of failing frames into DIR")
+    args = ap.parse_args()
+    tstart = time.time()
+    rng = np.random.default_rng(args.seed)
+    triples = gen_triples(rng, args.count)
+    tmp = tempfile.mkdtemp(prefix="pita-pose-pitas-")
+    try:
+        jobs = []   # (path, n, kind, method, poses, knots, t, oracle, margin, spread)
+        for i, (n, kind, poses, knots) in enumerate(triples):
+            times = times_for(knots)
+            for method in O.METHODS:
+                path = os.path.join(tmp, "pose-%dd-%03d-%s.json" % (n, i, method))
+                with open(path, "w") as f:
+                    f.write(scene_json(n, method, poses, knots))
+                for t, (ora, margin, spread) in zip(times, oracle_frames(method, poses, knots, times)):
+                    jobs.append((path, n, kind, method, poses, knots, t, ora, margin, spread))
+        answers = CB.eval_many(args.pita, [[j[0], "--t", repr(j[6])] for j in jobs])
+
+        stats = {}   # (n, method) -> counts and worst error
+        failures = []
+        for job, ans in zip(jobs, answers):
+            path, n, kind, method, poses, knots, t, ora, margin, spread = job
+            if spread == math.inf:
+                margin = 0.0
+            fkind, e, msg = judge(method, ora, margin, spread, ans)
+            st = stats.setdefault((n, method), {"pose": 0, "refusal": 0, "boundary": 0, "worst": 0.0,
+                                                "pita_refusals": 0, "loose": 0, "at_t": 0})
+            st[fkind] += 1
+            st["loose"] += fkind == "pose" and SPREAD * spread > TOL
+            st["at_t"] += fkind == "refusal" and ora.t is not None
+            st["pita_refusals"] += ans.returncode == 2
+            if fkind == "pose" and e < math.inf:
+                st["worst"] = max(st["worst"], e)
+            if msg:
+                failures.append((e, "%dD %s [%s] %s t=%r knots=%r\n      poses %s\n      %s" % (
+                    n, method, kind, path, t, knots, " ".join(fmt(P) for P in poses), msg)))
+                if args.keep:
+                    os.makedirs(args.keep, exist_ok=True)
+                    shutil.copy(path, args.keep)
+
+        print("frames per method: the oracle's poses, refusals (of them, at a time: a power formed at t),")
+        print("boundary cases (either answer accepted), pita's refusals, poses compared to more than TOL")
+        print("%-8s %6s %8s %6s %8s %8s %7s %12s" % ("method", "poses", "refused", "at t", "boundary", "by pita",
+                                                     "> TOL", "worst error"))
+        for (n, method), st in sorted(stats.items()):
+            print("%dD %-5s %6d %8d %6d %8d %8d %7d %12.2e" % (
+                n, method, st["pose"], st["refusal"], st["at_t"], st["boundary"], st["pita_refusals"], st["loose"],
+                st["worst"]))
+        if failures:
+            failures.sort(key=lambda f: -f[0])
+            print("FAIL: %d frames disagree; the worst:" % len(failures))
+            for _, msg in failures[:12]:
+                print("  " + msg)
+        worst = max((st["worst"] for st in stats.values()), default=0.0)
+        print("compare_pose_pitas_with_cli: %d triples, %d frames; worst relative error %.2e (tolerance %.0e);"
+              " %s in %.1f s" % (len(triples), len(jobs), worst, TOL, "FAIL" if failures else "OK",
+                                 time.time() - tstart))
+        return 1 if failures else 0
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
