@@ -73,7 +73,7 @@ def oracle_frames(method, poses, knots, times):
 
 
 def gen_triples(rng, count):
-    """count triples in 2D and count in 3D: (dimension, kind, poses, knots)."""
+    """count triples in 2D and count in 3D: (dimension, kind, poses, knots, points or None)."""
     out = []
     for n in (2, 3):
         for i in range(count):
@@ -84,7 +84,12 @@ def gen_triples(rng, count):
                 turns = (None, math.copysign(math.pi - d, rng.uniform(-1, 1)))
                 kind = "halfturn-" + kind
             poses, knots = O.random_triple(rng, n, kind.split("-")[-1], turns)
-            out.append((n, kind, poses, knots))
+            points = None
+            if i % 3 == 2:   # given as triangles / tetrahedra: the oracle takes the pose pita reads
+                points = [simplex_of(P)[0] for P in poses]
+                poses = [simplex_of(P)[1] for P in poses]
+                kind += "+simplex"
+            out.append((n, kind, poses, knots, points))
     return out
 
 
@@ -95,10 +100,23 @@ def times_for(knots):
     return [a, b, c] + inside + [a - 0.5 * w, a - 0.1 * w, c + 0.2 * w, c + 0.5 * w]
 
 
-def scene_json(n, method, poses, knots):
-    doc = {"method": method, "samples": 3,
-           "poses": [{"t": float(k), "matrix": [[float(v) for v in row] for row in P]}
-                     for P, k in zip(poses, knots)]}
+def simplex_of(P):
+    """The images p0 = b, p_i = b + L e_i of the reference triangle / tetrahedron (the default
+    one, the standard simplex: its frame is the identity), and the pose pita reads back from
+    them, [p_1 - p0, ..., p_n - p0 | p0] (docs/reference/pose-scenes.md)."""
+    n = P.shape[0]
+    pts = [P[:, n]] + [P[:, n] + P[:, i] for i in range(n)]
+    return pts, np.column_stack([p - pts[0] for p in pts[1:]] + [pts[0]])
+
+
+def scene_json(n, method, poses, knots, points=None):
+    """A pose scene; with points, the poses given as triangles (tetrahedra in space)."""
+    def entry(i):
+        if points:
+            return {"t": float(knots[i]), ("triangle", "tetrahedron")[n - 2]:
+                    [[float(v) for v in p] for p in points[i]]}
+        return {"t": float(knots[i]), "matrix": [[float(v) for v in row] for row in poses[i]]}
+    doc = {"method": method, "samples": 3, "poses": [entry(i) for i in range(3)]}
     if n == 3:
         doc["dimension"] = 3
     return json.dumps(doc)
@@ -153,12 +171,12 @@ def main():
     tmp = tempfile.mkdtemp(prefix="pita-pose-pitas-")
     try:
         jobs = []   # (path, n, kind, method, poses, knots, t, oracle, margin, spread)
-        for i, (n, kind, poses, knots) in enumerate(triples):
+        for i, (n, kind, poses, knots, points) in enumerate(triples):
             times = times_for(knots)
             for method in O.METHODS:
                 path = os.path.join(tmp, "pose-%dd-%03d-%s.json" % (n, i, method))
                 with open(path, "w") as f:
-                    f.write(scene_json(n, method, poses, knots))
+                    f.write(scene_json(n, method, poses, knots, points))
                 for t, (ora, margin, spread) in zip(times, oracle_frames(method, poses, knots, times)):
                     jobs.append((path, n, kind, method, poses, knots, t, ora, margin, spread))
         answers = CB.eval_many(args.pita, [[j[0], "--t", repr(j[6])] for j in jobs])
@@ -176,8 +194,9 @@ def main():
             st["loose"] += fkind == "pose" and SPREAD * spread > TOL
             st["at_t"] += fkind == "refusal" and ora.t is not None
             st["pita_refusals"] += ans.returncode == 2
-            if fkind == "pose" and e < math.inf:
-                st["worst"] = max(st["worst"], e)
+            if fkind == "pose" and e < math.inf and e >= st["worst"]:
+                st["worst"], st["where"] = e, "%s [%s] t=%r knots=%r margin %.3g spread %.2g" % (
+                    path, kind, t, knots, margin, spread)
             if msg:
                 failures.append((e, "%dD %s [%s] %s t=%r knots=%r\n      poses %s\n      %s" % (
                     n, method, kind, path, t, knots, " ".join(fmt(P) for P in poses), msg)))
@@ -193,6 +212,9 @@ def main():
             print("%dD %-5s %6d %8d %6d %8d %8d %7d %12.2e" % (
                 n, method, st["pose"], st["refusal"], st["at_t"], st["boundary"], st["pita_refusals"], st["loose"],
                 st["worst"]))
+        if args.verbose:
+            for (n, method), st in sorted(stats.items()):
+                print("worst %dD %s: %.2e at %s" % (n, method, st["worst"], st.get("where", "-")))
         if failures:
             failures.sort(key=lambda f: -f[0])
             print("FAIL: %d frames disagree; the worst:" % len(failures))
