@@ -3,7 +3,8 @@
 
 Written from the papers (PITA Sec. 2.3-2.6, Eqs. 9-14, 27-34, appendices C and D; SAM Sec. 2.2),
 not from src/core: poses are homogeneous matrices H = [[L, b], [0, 1]] (3x3 in the plane, 4x4 in
-space) in numpy, and every real power is scipy's principal one, expm(s * logm(H)).
+space) in numpy, and every real power is the principal one, H^s = expm(s log H), with scipy's
+expm, and log H = [[log L, v], [0, 0]] from scipy's logm of L (real_log).
 
     M(A, B, s)    = (B o A^-1)^s o A       steady morph (PITA Eq. 20, SAM Sec. 2.2)
     T(X, A, B, s) = (B o A^-1)^s o X       steady transport (PITA Eq. 24)
@@ -15,8 +16,8 @@ space) in numpy, and every real power is scipy's principal one, expm(s * logm(H)
         Bezier(P0, P1, P2, s) = M(M(P0, P1, s), M(P1, P2, s), s)        (Eq. 29)
         u = knot_warp(a, b, c, t); D = Bezier(A, Lc, B, 2u) if u <= 1/2
                                      else Bezier(B, Rc, C, 2u - 1)      (Eq. 27-28; warp: N11, N17)
-    P5  g = centroid of the poses' translations; D = g + exp(x log(A - g) + y log(B - g)
-        + z log(C - g))                                                  (Eq. 33, appendix C)
+    P5  g = centroid of the poses' translations, G = translation by g;
+        D = G o exp(x log(G^-1 o A) + y log(G^-1 o B) + z log(G^-1 o C))   (Eq. 33, appendix C)
 
 x, y, z are the Lagrange weights of t (Eq. 10), q, r, s the Neville ratios (Eq. 14).
 
@@ -34,8 +35,8 @@ never refused: the knots always interpolate.
 
 The powers between given neighbours (and P4's controls, P5's own logs) are needed at every time:
 they are checked when the motion is built (`Motion(...)` raises). The powers between poses a
-construction forms (P6's L(t), R(t); P9's two inner morphs; P4's two inner morphs) are checked at
-each time (`Motion.at(t)` raises).
+construction forms (from P6's L(t) to R(t); between P9's two inner morphs; between the two inner
+morphs of P4's Bezier arc) are checked at each time (`Motion.at(t)` raises).
 
 Usage:
   pose_pita_oracle.py PITA [--count N] [--seed S]
