@@ -181,15 +181,19 @@ class Power:
         return self.A @ self(s) @ np.linalg.solve(self.A, Y) if self.body else self(s) @ Y
 
 
-def formed_morph(P, Q, s, step, t, margins, body=False):
-    """M(P, Q, s) for poses a construction formed at time t: checked at t (unless s is 0 or 1)."""
+def formed_morph(P, Q, s, step, t, trace, body=False):
+    """M(P, Q, s) for poses a construction formed at time t: checked at t (unless s is 0 or 1).
+    trace["margin"] collects the power's margin, trace["norm"] the product of the sizes of the
+    two factors of the morph, X^s and P (max norms)."""
     if s == 0:
         return P
     if s == 1:
         return Q
     pw = Power(P, Q, step, t, body).check()
-    margins.append(pw.margin)
-    return pw.morph(s)
+    trace["margin"].append(pw.margin)
+    Xs = pw(s)
+    trace["norm"].append(np.abs(Xs).max() * np.abs(P).max())
+    return pw.A @ Xs if body else Xs @ P
 
 
 # --------------------------------------------------------------------------- weights
@@ -230,7 +234,9 @@ class Motion:
     Motion(method, poses, knots) raises NoRealPower when a power needed at every time is not
     real; at(t) returns the n x (n+1) pose or raises NoRealPower for a power formed at t.
     `margin` is the smallest margin of the powers built once, `last_margin` that of the last
-    at(t) (both included)."""
+    at(t) (both included); `last_growth` is |X^s| |P| / max(1, |D|) (max norms) for the last
+    morph M(P, Q, s) = X^s o P that at(t) formed: rounding errors of the factors are magnified
+    that much in D by cancellation."""
 
     def __init__(self, method, poses, knots, body=False):
         self.body = body
@@ -244,7 +250,7 @@ class Motion:
         self.build_margins = []
         getattr(self, "_build_" + method.lower())()
         self.margin = min(self.build_margins, default=1.0)
-        self.last_margin = self.margin
+        self.last_margin, self.last_growth = self.margin, 1.0
 
     def _power(self, P, Q, step):
         pw = Power(P, Q, step, body=self.body).check()
@@ -252,11 +258,13 @@ class Motion:
         return pw
 
     def at(self, t):
-        margins = [self.margin]
+        trace = {"margin": [self.margin], "norm": []}
         try:
-            return pose(getattr(self, "_at_" + self.method.lower())(float(t), margins))
+            D = pose(getattr(self, "_at_" + self.method.lower())(float(t), trace))
+            self.last_growth = max(trace["norm"], default=1.0) / max(1.0, np.abs(D).max())
+            return D
         finally:
-            self.last_margin = min(margins)
+            self.last_margin = min(trace["margin"])
 
     # P6, Eq. 34 -------------------------------------------------------------------------------
     def _build_p6(self):
@@ -266,21 +274,21 @@ class Motion:
         self.cb = self._power(C, B, "C to B")
         self.ba = self._power(B, A, "B to A")
 
-    def _at_p6(self, t, margins):
+    def _at_p6(self, t, trace):
         x, y, z = lagrange(self.a, self.b, self.c, t)
         L = self.bc.transport(self.ab.morph(y + z), z)       # T(M(A, B, y + z), B, C, z)
         R = self.ba.transport(self.cb.morph(x + y), x)       # T(M(C, B, x + y), B, A, x)
-        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, margins, self.body)   # M(L, R), Eq. 23
+        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, trace, self.body)   # M(L, R), Eq. 23
 
     # P9, Eq. D.2 ------------------------------------------------------------------------------
     def _build_p9(self):
         self.ab = self._power(self.A, self.B, "A to B")
         self.bc = self._power(self.B, self.C, "B to C")
 
-    def _at_p9(self, t, margins):
+    def _at_p9(self, t, trace):
         q, r, s = neville(self.a, self.b, self.c, t)
         return formed_morph(self.ab.morph(q), self.bc.morph(r), s,
-                            "between M(A, B, q) and M(B, C, r)", t, margins, self.body)
+                            "between M(A, B, q) and M(B, C, r)", t, trace, self.body)
 
     # P4, Eq. 27-32 ----------------------------------------------------------------------------
     def _build_p4(self):
@@ -293,12 +301,12 @@ class Motion:
                      (self._power(B, self.Rc, "B to the control R"),
                       self._power(self.Rc, C, "the control R to C")))
 
-    def _at_p4(self, t, margins):
+    def _at_p4(self, t, trace):
         u = knot_warp(self.a, self.b, self.c, t)
         first, second = self.arcs[0] if u <= 0.5 else self.arcs[1]
         s = 2 * u if u <= 0.5 else 2 * u - 1
         return formed_morph(first.morph(s), second.morph(s), s,      # Bezier, Eq. 29
-                            "between the Bezier arc's inner morphs", t, margins, self.body)
+                            "between the Bezier arc's inner morphs", t, trace, self.body)
 
     # P5, Eq. 33 and appendix C ----------------------------------------------------------------
     def _build_p5(self):
@@ -311,23 +319,24 @@ class Motion:
             self.logs.append(X)
             self.build_margins.append(m)
 
-    def _at_p5(self, t, margins):
+    def _at_p5(self, t, trace):
         x, y, z = lagrange(self.a, self.b, self.c, t)
         return self.to_g @ expm(x * self.logs[0] + y * self.logs[1] + z * self.logs[2])
 
 
 def evaluate(method, poses, knots, times, body=False):
-    """[(pose or NoRealPower, margin)] at each time; the construction's refusal at every time."""
+    """[(pose or NoRealPower, margin, growth)] at each time (Motion's last_margin, last_growth);
+    the construction's refusal at every time."""
     try:
         mo = Motion(method, poses, knots, body)
     except NoRealPower as e:
-        return [(e, e.margin) for _ in times]
+        return [(e, e.margin, 1.0) for _ in times]
     out = []
     for t in times:
         try:
-            out.append((mo.at(t), mo.last_margin))
+            out.append((mo.at(t), mo.last_margin, mo.last_growth))
         except NoRealPower as e:
-            out.append((e, min(mo.margin, e.margin)))
+            out.append((e, min(mo.margin, e.margin), 1.0))
     return out
 
 
@@ -563,7 +572,7 @@ def check_against_arrow_pitas(ck, rng, pita, count, folder):
                 Gh[:3, :3], Gh[:3, 3] = G, [1.0, -2.0, 0.5]
                 if method != "P5":
                     poses = [pose(Gh @ hom(P) @ np.linalg.inv(Gh)) for P in poses]
-            for t, fr, (D, mg) in zip(times, frames, evaluate(method, poses, knots, times)):
+            for t, fr, (D, mg, _) in zip(times, frames, evaluate(method, poses, knots, times)):
                 if arrow_turns(method, [w for _, _, w in arrows], knots, t) > math.pi - 0.05:
                     skipped += 1     # the arrow turns by pi or more: another motion
                     continue
