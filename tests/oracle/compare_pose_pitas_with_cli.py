@@ -22,7 +22,10 @@ Every frame must be what the oracle says, computed from the poses exactly as wri
 Where the oracle's margin (pose_pita_oracle.margin: how far the powers taken are from having an
 eigenvalue on the closed negative real axis) is within NEAR = 1e-6 of 0, rounding decides, and
 either answer is accepted (but a pose must be finite); such frames are counted. A frame refused
-by pita and not by the oracle is a failure, whatever its margin beyond NEAR.
+by pita and not by the oracle is a failure, whatever its margin beyond NEAR. So is any frame
+whose tolerance (below) exceeds ILL = 1e-4: a pose formed at t so nearly singular (condition
+beyond ~1e12) that doubles do not know it to 1e-4, let alone whether its power is real (far
+outside [a, c] with close knots, P9's M(A, B, q) at q = 36).
 
 Tolerance: max(TOL, SPREAD * spread, GROWTH_EPS * growth), TOL = 1e-9, where
 - `spread` (SPREAD = 10) is the oracle's own rounding noise on that frame: the max-norm relative
@@ -62,6 +65,7 @@ TOL = 1e-9
 SPREAD = 10
 REFUSAL = re.compile(r"no SAM|no real")   # docs/paper-notes.md N74's wording
 GROWTH_EPS = 1e-12
+ILL = 1e-4     # a frame known to no better than this in doubles: either answer accepted
 KIND_ORDER = ("tame", "wild", "stretch", "uneven", "near")
 
 
@@ -153,9 +157,9 @@ def fmt(P):
 
 
 def judge(method, ora, margin, tol, ans):
-    """None when pita's answer agrees with the oracle's, else (error, message); also the kind
-    of the frame: 'pose', 'refusal' or 'boundary', and the error of a compared pose."""
-    boundary = abs(margin) <= O.NEAR
+    """The kind of the frame ('pose', 'refusal' or 'boundary'), the error of a compared pose, and
+    None when pita's answer agrees with the oracle's, else a message."""
+    boundary = abs(margin) <= O.NEAR or tol > ILL
     kind = "boundary" if boundary else ("refusal" if isinstance(ora, O.NoRealPower) else "pose")
     if ans.returncode == 0:
         try:
@@ -231,7 +235,8 @@ def main():
                     shutil.copy(path, args.keep)
 
         print("frames per method: the oracle's poses, refusals (of them, at a time: a power formed at t),")
-        print("boundary cases (either answer accepted), pita's refusals, poses compared to more than TOL")
+        print("boundary or ill-conditioned cases (either answer accepted), pita's refusals, poses compared to more")
+        print("than TOL")
         print("%-8s %6s %8s %6s %8s %8s %7s %12s" % ("method", "poses", "refused", "at t", "boundary", "by pita",
                                                      "> TOL", "worst error"))
         for (n, method), st in sorted(stats.items()):
