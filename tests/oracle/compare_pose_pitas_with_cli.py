@@ -2,7 +2,7 @@
 """Compare `pita eval` of the pose PITAs P4, P5, P6 and P9 with the independent oracle
 pose_pita_oracle.py (numpy + scipy's principal matrix log and exp).
 
-usage: compare_pose_pitas_with_cli.py PATH/TO/pita [--count N] [--seed S] [-v] [--keep DIR]
+usage: compare_pose_pitas_with_cli.py PATH/TO/pita [--count N] [--seed S] [--kinds K,...] [-v] [--keep DIR]
 
 Builds (fixed seed, temp dir) N random affine triples in the plane and N in space, of the kinds
 of pose_pita_oracle.KINDS in turn (tame; wild: any turn, stretches up to 4, shears; stretch:
@@ -80,7 +80,7 @@ def oracle_frames(method, poses, knots, times):
         if refused[0] != refused[1]:
             out.append((w, 0.0, math.inf))
         elif refused[0]:
-            out.append((w, max(mw, mb), TOL))
+            out.append((w, max(mw, mb), max(TOL, GROWTH_EPS * gw)))
         else:
             out.append((w, min(mw, mb), max(TOL, SPREAD * O.rel_err(w, b), GROWTH_EPS * gw)))
     return out
@@ -99,12 +99,12 @@ def near_triple(rng, n):
     return [A, B, C], (a, b, b + rng.uniform(0.2, 2))
 
 
-def gen_triples(rng, count):
+def gen_triples(rng, count, kinds=KIND_ORDER):
     """count triples in 2D and count in 3D: (dimension, kind, poses, knots, points or None)."""
     out = []
     for n in (2, 3):
         for i in range(count):
-            kind = KIND_ORDER[i % len(KIND_ORDER)]
+            kind = kinds[i % len(kinds)]
             turns = (None, None)
             if i % 7 == 6 and kind != "near":
                 d = math.exp(rng.uniform(math.log(1e-3), math.log(0.3)))
@@ -192,12 +192,17 @@ def main():
     ap.add_argument("pita")
     ap.add_argument("--count", type=int, default=40, help="random triples per dimension (default 40)")
     ap.add_argument("--seed", type=int, default=5757)
+    ap.add_argument("--kinds", default=",".join(KIND_ORDER),
+                    help="the kinds of triple, in turn (default %(default)s)")
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--keep", metavar="DIR", help="copy the scenes of failing frames into DIR")
     args = ap.parse_args()
     tstart = time.time()
     rng = np.random.default_rng(args.seed)
-    triples = gen_triples(rng, args.count)
+    kinds = tuple(args.kinds.split(","))
+    if not set(kinds) <= set(KIND_ORDER):
+        ap.error("--kinds: one of " + ", ".join(KIND_ORDER))
+    triples = gen_triples(rng, args.count, kinds)
     tmp = tempfile.mkdtemp(prefix="pita-pose-pitas-")
     try:
         jobs = []   # (path, n, kind, method, poses, knots, t, oracle, margin, tolerance)

@@ -58,6 +58,8 @@ import numpy as np
 from scipy.linalg import expm, expm_frechet, fractional_matrix_power, logm
 
 NEAR = 1e-6          # |margin| below this: a boundary case (rounding decides)
+SINGULAR = 1e14      # a pose whose linear part has a larger condition number cannot be inverted
+LOST = 1e-3          # a formed pose whose determinant doubles miss by more (relative) is lost
 METHODS = ("P4", "P5", "P6", "P9")
 
 
@@ -155,8 +157,15 @@ class Power:
 
     def __init__(self, A, B, step, t=None, body=False):
         self.A, self.body = A, body
-        self.X = np.linalg.solve(A, B) if body else B @ np.linalg.inv(A)
         self.log, self.margin = None, 1.0
+        n = A.shape[0] - 1
+        if not np.all(np.isfinite(A)) or np.linalg.cond(A[:n, :n]) > SINGULAR:
+            # a pose formed far outside [a, c] that doubles cannot invert: margin 0 marks it
+            # as a case where rounding decides
+            self.X, self.margin = None, 0.0
+            self.error = NoRealPower(step + " (a pose numerically singular)", t, 0.0)
+            return
+        self.X = np.linalg.solve(A, B) if body else B @ np.linalg.inv(A)
         try:
             self.log, self.margin = real_log(self.X, step, t)
         except NoRealPower as e:
@@ -181,19 +190,35 @@ class Power:
         return self.A @ self(s) @ np.linalg.solve(self.A, Y) if self.body else self(s) @ Y
 
 
-def formed_morph(P, Q, s, step, t, trace, body=False):
+def formed_morph(P, Q, s, step, t, trace, body=False, log_dets=None):
     """M(P, Q, s) for poses a construction formed at time t: checked at t (unless s is 0 or 1).
-    trace["margin"] collects the power's margin, trace["norm"] the product of the sizes of the
-    two factors of the morph, X^s and P (max norms)."""
+    trace["margin"] collects the power's margin, trace["cond"] the larger condition number of
+    P's and Q's linear parts (X = Q o P^-1 is known to about eps cond), trace["norm"] the product of the sizes of
+    the two factors of the morph, X^s and P (max norms). log_dets: the exact log det of P and Q
+    (det is multiplicative: a formed pose's is the same combination of the given poses'); where
+    doubles give P or Q another determinant (sign, or by more than LOST relative), the pose is
+    lost to rounding, and the frame is refused with margin 0, a case where rounding decides."""
+    n = P.shape[0] - 1
+    for X, ld in zip((P, Q), log_dets or ()):
+        sign, computed = np.linalg.slogdet(X[:n, :n])
+        if not (sign > 0 and abs(computed - ld) <= LOST):
+            raise NoRealPower(step + " (a pose lost to rounding: det %.3g, exactly %.3g)" % (
+                sign * math.exp(computed) if sign else 0.0, math.exp(ld)), t, 0.0)
     if s == 0:
         return P
     if s == 1:
         return Q
+    trace["cond"].append(max(np.linalg.cond(P[:n, :n]), np.linalg.cond(Q[:n, :n])))
     pw = Power(P, Q, step, t, body).check()
     trace["margin"].append(pw.margin)
     Xs = pw(s)
     trace["norm"].append(np.abs(Xs).max() * np.abs(P).max())
     return pw.A @ Xs if body else Xs @ P
+
+
+def log_det(H):
+    n = H.shape[0] - 1
+    return np.linalg.slogdet(H[:n, :n])[1]
 
 
 # --------------------------------------------------------------------------- weights
@@ -234,9 +259,10 @@ class Motion:
     Motion(method, poses, knots) raises NoRealPower when a power needed at every time is not
     real; at(t) returns the n x (n+1) pose or raises NoRealPower for a power formed at t.
     `margin` is the smallest margin of the powers built once, `last_margin` that of the last
-    at(t) (both included); `last_growth` is |X^s| |P| / max(1, |D|) (max norms) for the last
-    morph M(P, Q, s) = X^s o P that at(t) formed: rounding errors of the factors are magnified
-    that much in D by cancellation."""
+    at(t) (both included); `last_growth` is how much the last at(t) magnifies rounding errors,
+    for the morph M(P, Q, s) = X^s o P it formed: the larger condition number of P and Q
+    (X = Q o P^-1 is known to about eps cond) times max(1, |X^s| |P| / max(1, |D|)) (max norms:
+    cancellation in X^s o P); the condition number alone when the power is refused."""
 
     def __init__(self, method, poses, knots, body=False):
         self.body = body
@@ -248,6 +274,7 @@ class Motion:
         if not self.a < self.b < self.c:
             raise ValueError("knots must increase")
         self.build_margins = []
+        self.ld = [log_det(H) for H in (self.A, self.B, self.C)]
         getattr(self, "_build_" + method.lower())()
         self.margin = min(self.build_margins, default=1.0)
         self.last_margin, self.last_growth = self.margin, 1.0
@@ -258,13 +285,14 @@ class Motion:
         return pw
 
     def at(self, t):
-        trace = {"margin": [self.margin], "norm": []}
+        trace, D = {"margin": [self.margin], "norm": [], "cond": []}, None
         try:
             D = pose(getattr(self, "_at_" + self.method.lower())(float(t), trace))
-            self.last_growth = max(trace["norm"], default=1.0) / max(1.0, np.abs(D).max())
             return D
         finally:
             self.last_margin = min(trace["margin"])
+            size = 1.0 if D is None else max(1.0, np.abs(D).max())
+            self.last_growth = max(1.0, max(trace["norm"], default=1.0) / size) * max(trace["cond"], default=1.0)
 
     # P6, Eq. 34 -------------------------------------------------------------------------------
     def _build_p6(self):
@@ -278,7 +306,8 @@ class Motion:
         x, y, z = lagrange(self.a, self.b, self.c, t)
         L = self.bc.transport(self.ab.morph(y + z), z)       # T(M(A, B, y + z), B, C, z)
         R = self.ba.transport(self.cb.morph(x + y), x)       # T(M(C, B, x + y), B, A, x)
-        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, trace, self.body)   # M(L, R), Eq. 23
+        ld = x * self.ld[0] + y * self.ld[1] + z * self.ld[2]   # log det of L and of R
+        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, trace, self.body, (ld, ld))  # M(L, R), Eq. 23
 
     # P9, Eq. D.2 ------------------------------------------------------------------------------
     def _build_p9(self):
@@ -287,8 +316,9 @@ class Motion:
 
     def _at_p9(self, t, trace):
         q, r, s = neville(self.a, self.b, self.c, t)
+        lds = ((1 - q) * self.ld[0] + q * self.ld[1], (1 - r) * self.ld[1] + r * self.ld[2])
         return formed_morph(self.ab.morph(q), self.bc.morph(r), s,
-                            "between M(A, B, q) and M(B, C, r)", t, trace, self.body)
+                            "between M(A, B, q) and M(B, C, r)", t, trace, self.body, lds)
 
     # P4, Eq. 27-32 ----------------------------------------------------------------------------
     def _build_p4(self):
@@ -296,6 +326,8 @@ class Motion:
         ab, cb = self._power(A, B, "A to B"), self._power(C, B, "C to B")
         self.Lc = cb.transport(ab.morph(0.75), 0.25)          # T(M(A, B, 3/4), C, B, 1/4)
         self.Rc = ab.transport(cb.morph(0.75), 0.25)          # T(M(C, B, 3/4), A, B, 1/4)
+        la, lb, lc = self.ld
+        self.arc_lds = ((la, la / 4 + lb - lc / 4, lb), (lb, lc / 4 + lb - la / 4, lc))
         self.arcs = ((self._power(A, self.Lc, "A to the control L"),
                       self._power(self.Lc, B, "the control L to B")),
                      (self._power(B, self.Rc, "B to the control R"),
@@ -303,10 +335,12 @@ class Motion:
 
     def _at_p4(self, t, trace):
         u = knot_warp(self.a, self.b, self.c, t)
-        first, second = self.arcs[0] if u <= 0.5 else self.arcs[1]
+        arc = 0 if u <= 0.5 else 1
+        (first, second), (l0, l1, l2) = self.arcs[arc], self.arc_lds[arc]
         s = 2 * u if u <= 0.5 else 2 * u - 1
         return formed_morph(first.morph(s), second.morph(s), s,      # Bezier, Eq. 29
-                            "between the Bezier arc's inner morphs", t, trace, self.body)
+                            "between the Bezier arc's inner morphs", t, trace, self.body,
+                            ((1 - s) * l0 + s * l1, (1 - s) * l1 + s * l2))
 
     # P5, Eq. 33 and appendix C ----------------------------------------------------------------
     def _build_p5(self):
@@ -336,7 +370,7 @@ def evaluate(method, poses, knots, times, body=False):
         try:
             out.append((mo.at(t), mo.last_margin, mo.last_growth))
         except NoRealPower as e:
-            out.append((e, min(mo.margin, e.margin), 1.0))
+            out.append((e, min(mo.margin, e.margin), mo.last_growth))
     return out
 
 
