@@ -19,13 +19,15 @@ Every frame must be what the oracle says, computed from the poses exactly as wri
 - a refusal (a power the construction needs has no real value, at every time or at this t):
   pita exits 2 with empty stdout, and stderr names the method and says "no SAM" or "no real"
   (docs/paper-notes.md N74).
-Where the oracle's margin (pose_pita_oracle.margin: how far the powers taken are from having an
-eigenvalue on the closed negative real axis) is within NEAR = 1e-6 of 0, rounding decides, and
-either answer is accepted (but a pose must be finite); such frames are counted. A frame refused
-by pita and not by the oracle is a failure, whatever its margin beyond NEAR. So is any frame
-whose tolerance (below) exceeds ILL = 1e-4: a pose formed at t so nearly singular (condition
-beyond ~1e12) that doubles do not know it to 1e-4, let alone whether its power is real (far
-outside [a, c] with close knots, P9's M(A, B, q) at q = 36).
+Either answer is accepted (but a pose must be finite), and the frame counted as "boundary", where
+- the oracle's margin (pose_pita_oracle.margin: how far the powers taken are from having an
+  eigenvalue on the closed negative real axis) is within NEAR = 1e-6 of 0: rounding decides;
+- a pose the construction forms at t is lost to rounding (its determinant, known exactly since
+  det is multiplicative, is not what doubles give: far outside [a, c] with close knots the
+  powers reach exponents of 70 and the poses' small singular values fall below the rounding
+  of the large ones), or the frame's tolerance (below) exceeds ILL = 1e-4: doubles do not know
+  the frame to 1e-4, let alone whether its power is real.
+Anywhere else, a frame refused by pita and not by the oracle is a failure, and so is the reverse.
 
 Tolerance: max(TOL, SPREAD * spread, GROWTH_EPS * growth), TOL = 1e-9, where
 - `spread` (SPREAD = 10) is the oracle's own rounding noise on that frame: the max-norm relative
@@ -34,13 +36,13 @@ Tolerance: max(TOL, SPREAD * spread, GROWTH_EPS * growth), TOL = 1e-9, where
   agree to ~1e-13 and TOL decides; on strongly stretched (non-normal) poses scipy's log and exp
   lose up to ~1e-8, the spread shows it (against a 60-digit log and exp, sam3d_oracle.py's, the
   world frame's error was at most 1.8 times the spread on 80 triples), and the tolerance follows;
-- `growth` (GROWTH_EPS = 1e-12) is |X^s| |P| / max(1, |D|) for the morph M(P, Q, s) = X^s o P
-  the construction forms at t (Motion.last_growth): far outside [a, c] with close knots, P9's
-  M(A, B, q) reaches 1e5 times the size of the frame it makes, and a relative rounding error of
-  X^s shows in the frame that much larger. 1e-12: the powers between the poses formed there
-  are nearly singular (eigenvalues from 1e-5 to 0.3), and pita's 3D EAR, which goes through
-  eigenvectors, is accurate to ~eps cond (8e-13 against the 60-digit oracle on one, where
-  scipy's Schur method gives 6e-15).
+- `growth` (GROWTH_EPS = 1e-12) is how much the morph M(P, Q, s) = X^s o P formed at t magnifies
+  rounding errors (Motion.last_growth): the larger condition number of P and Q (X = Q o P^-1 is
+  known to about eps cond) times the cancellation |X^s| |P| / max(1, |D|), which reaches 1e5
+  far outside [a, c] with close knots. 1e-12 rather than eps: the powers met there are nearly
+  singular (eigenvalues from 1e-5 to 0.3), and pita's 3D EAR, which goes through eigenvectors,
+  is accurate to ~eps cond on them (8e-13 against the 60-digit oracle on one, where scipy's
+  Schur method gives 6e-15); tame triples have growth below 100.
 The number of frames whose tolerance exceeds TOL is printed ("> TOL").
 
 Exit 1 on any mismatch, 0 otherwise.

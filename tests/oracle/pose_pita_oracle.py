@@ -33,6 +33,12 @@ docs/paper-notes.md N58): callers see every motion's smallest margin and may lea
 out. A power at exactly s = 0 or s = 1 is I or H whatever H is (A^0 = I, A^1 = A), so it is
 never refused: the knots always interpolate.
 
+A pose a construction forms at t may be lost to rounding: far outside [a, c] with close knots,
+the exponents reach 70 and its small singular values fall below the rounding of the large ones.
+Its determinant is known exactly (det is multiplicative: log det M(A, B, s) = (1 - s) log det A
++ s log det B), so where doubles give another one (sign, or by more than LOST relative), or the
+pose cannot be inverted, the frame is refused with margin 0: a case where rounding decides.
+
 The powers between given neighbours (and P4's controls, P5's own logs) are needed at every time:
 they are checked when the motion is built (`Motion(...)` raises). The powers between poses a
 construction forms (from P6's L(t) to R(t); between P9's two inner morphs; between the two inner
