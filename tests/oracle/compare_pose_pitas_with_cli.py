@@ -7,7 +7,8 @@ usage: compare_pose_pitas_with_cli.py PATH/TO/pita [--count N] [--seed S] [--kin
 Builds (fixed seed, temp dir) N random affine triples in the plane and N in space, of the kinds
 of pose_pita_oracle.KINDS in turn (tame; wild: any turn, stretches up to 4, shears; stretch:
 anisotropic scales up to 12; uneven: knots as close as 0.02 beside a span of 2; near: neighbours
-that differ by 1e-8 to 1e-3, every power near the identity) and every seventh (but near ones)
+that differ by 1e-8 to 1e-3, every power near the identity; entries: each entry of each pose
+uniform in [-2, 2], det > 0.05) and every seventh tame, wild, stretch or uneven one
 with a neighbour turning by pi - d, d in [1e-3, 0.3] (near the half turn, where stretched pairs
 lose their SAM). Each triple is a pose scene ("poses" of 2x3 or 3x4 matrices, "dimension": 3 in
 space) with "method" P4, P5, P6 and P9 in turn, evaluated by one `pita eval SCENE --t T` per
@@ -68,7 +69,7 @@ SPREAD = 10
 REFUSAL = re.compile(r"no SAM|no real")   # docs/paper-notes.md N74's wording
 GROWTH_EPS = 1e-12
 ILL = 1e-4     # a frame known to no better than this in doubles: either answer accepted
-KIND_ORDER = ("tame", "wild", "stretch", "uneven", "near")
+KIND_ORDER = ("tame", "wild", "stretch", "uneven", "near", "entries")
 
 
 def oracle_frames(method, poses, knots, times):
@@ -86,6 +87,19 @@ def oracle_frames(method, poses, knots, times):
         else:
             out.append((w, min(mw, mb), max(TOL, SPREAD * O.rel_err(w, b), GROWTH_EPS * gw)))
     return out
+
+
+def entries_triple(rng, n):
+    """Three poses whose entries are uniform in [-2, 2] (translations in [-3, 3]), redrawn until
+    det L > 0.05: no relation between neighbours."""
+    poses = []
+    while len(poses) < 3:
+        P = np.hstack([rng.uniform(-2, 2, size=(n, n)), rng.uniform(-3, 3, size=(n, 1))])
+        if np.linalg.det(P[:, :n]) > 0.05:
+            poses.append(P)
+    a = rng.uniform(-1, 1)
+    b = a + rng.uniform(0.2, 2)
+    return poses, (a, b, b + rng.uniform(0.2, 2))
 
 
 def near_triple(rng, n):
@@ -108,12 +122,12 @@ def gen_triples(rng, count, kinds=KIND_ORDER):
         for i in range(count):
             kind = kinds[i % len(kinds)]
             turns = (None, None)
-            if i % 7 == 6 and kind != "near":
+            if i % 7 == 6 and kind not in ("near", "entries"):
                 d = math.exp(rng.uniform(math.log(1e-3), math.log(0.3)))
                 turns = (None, math.copysign(math.pi - d, rng.uniform(-1, 1)))
                 kind = "halfturn-" + kind
-            if kind == "near":
-                poses, knots = near_triple(rng, n)
+            if kind in ("near", "entries"):
+                poses, knots = (near_triple if kind == "near" else entries_triple)(rng, n)
             else:
                 poses, knots = O.random_triple(rng, n, kind.split("-")[-1], turns)
             points = None
