@@ -18,7 +18,7 @@ c + w/5, c + w/2 (w = c - a).
 Every frame must be what the oracle says, computed from the poses exactly as written:
 - a pose: pita exits 0 and its matrix matches: max |pita - oracle| <= tolerance * max(1, max |oracle|);
 - a refusal (a power the construction needs has no real value, at every time or at this t):
-  pita exits 2 with empty stdout, and stderr names the method and says "no SAM" or "no real"
+  pita exits 2 with empty stdout, and stderr says "method P6" (say) and "no SAM" or "no real"
   (docs/paper-notes.md N74).
 Either answer is accepted (but a pose must be finite), and the frame counted as "boundary", where
 - the oracle's margin (pose_pita_oracle.margin: how far the powers taken are from having an
@@ -194,7 +194,7 @@ def judge(method, ora, margin, tol, ans):
             return kind, e, "error %.3e > %.1e (margin %.3g)\n      pita   %s\n      oracle %s" % (
                 e, tol, margin, fmt(D), fmt(ora))
         return kind, e, None
-    if ans.returncode == 2 and ans.stdout == "" and method in ans.stderr and REFUSAL.search(ans.stderr):
+    if ans.returncode == 2 and ans.stdout == "" and "method " + method in ans.stderr and REFUSAL.search(ans.stderr):
         if boundary or isinstance(ora, O.NoRealPower):
             return kind, 0.0, None
         return kind, math.inf, "pita refuses, the oracle does not (margin %.3g): %s" % (
