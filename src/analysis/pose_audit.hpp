@@ -1,5 +1,5 @@
 // `pita audit poses`: what of PITA Fig. 10 carries over to affine poses,
-// measured (docs/reference/audit.md "Pose methods"). For each dimension (the
+// measured (docs/reference/audit.md "What carries over to affine poses"). For each dimension (the
 // plane, space), each pose method through three poses and each property of
 // analysis/pose_properties.hpp: the worst value over the crafted and random
 // triples of analysis/pose_audit_configs.hpp (the share of random triples

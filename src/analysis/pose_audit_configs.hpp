@@ -1,5 +1,5 @@
 // The triples of timed affine poses `pita audit poses` measures on
-// (docs/reference/audit.md "Pose methods"): crafted cases first, then random
+// (docs/reference/audit.md "What carries over to affine poses"): crafted cases first, then random
 // ones drawn from a seed, tame, wild and near-singular in turn, in the plane
 // (Affine2) or in space (Affine3). As for the arrow audit
 // (analysis/audit_configs.hpp), configuration i depends only on (seed, i)

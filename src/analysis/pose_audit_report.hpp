@@ -1,5 +1,5 @@
 // `pita audit poses`'s outputs as text: the table (Markdown, CSV, JSON), one
-// block per dimension (docs/reference/audit.md "Pose methods").
+// block per dimension (docs/reference/audit.md "What carries over to affine poses").
 #pragma once
 
 #include <string>

@@ -19,8 +19,9 @@ namespace pose_probes {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The one table of the pose properties (docs/reference/audit.md "Pose
-// methods" says why these and not the other rows of Fig. 10).
+// The one table of the pose properties (docs/reference/audit.md "What
+// carries over to affine poses" says why these and not the other rows of
+// Fig. 10).
 constexpr std::array<PosePropertyInfo, 7> kPoseProperties{{
     {PoseProperty::exists, "exists", "4.1",
      "share of the random triples where the motion is built and every frame at 33 times in [a, c] is a real, finite "
@@ -28,7 +29,7 @@ constexpr std::array<PosePropertyInfo, 7> kPoseProperties{{
      PoseVerdict::share, 1.0},
     {PoseProperty::interpolates, "interpolates", "Sec. 1 (interpolation)",
      "largest distance between D(a), D(b), D(c) and A, B, C, over the extent", PoseVerdict::deviation, 1e-7},
-    {PoseProperty::symmetric, "symmetric", "4.4, Eq. 41",
+    {PoseProperty::symmetric, "symmetric", "4.4, PITA Eq. 41",
      "largest distance between D(a, A, b, B, c, C; t) and D(a, C, a + c - b, B, c, A; a + c - t), over the extent",
      PoseVerdict::deviation, 1e-4},
     {PoseProperty::left_affine_invariant, "left-affine-invariant", "4.3, 4.10 A",

@@ -1,5 +1,5 @@
 // The properties of PITA Sec. 4 (Fig. 10) that make sense for affine poses,
-// as measurements (docs/reference/audit.md "Pose methods"): for one pose
+// as measurements (docs/reference/audit.md "What carries over to affine poses"): for one pose
 // method and one triple of timed poses, a number that is zero (to rounding)
 // where the property holds, or, for knot control, the size of the reaction,
 // or, for steadiness, the SAM paper's ARA. Distances are the pose distance

@@ -1,8 +1,8 @@
 // pita audit poses [--dimension 2|3] [--methods LIST] [--configs N] [--seed S] [--jobs J]
 //                  [--format md|csv|json] [-o TABLE.svg|png|pdf] [-q]
 //
-// What of Fig. 10 carries over to affine poses, measured (docs/reference/audit.md "Pose
-// methods"): analysis/pose_audit.hpp does the work, analysis/pose_audit_report.hpp the text,
+// What of Fig. 10 carries over to affine poses, measured (docs/reference/audit.md "What
+// carries over to affine poses"): analysis/pose_audit.hpp does the work, analysis/pose_audit_report.hpp the text,
 // render/pose_audit_table.hpp the figure.
 #pragma once
 

@@ -1,5 +1,5 @@
 // pita audit poses' verdicts (analysis/pose_audit.hpp): the table the docs
-// print (docs/reference/audit.md "Pose methods"), written out here from what
+// print (docs/reference/audit.md "What carries over to affine poses"), written out here from what
 // the constructions promise (docs/paper-notes.md N73-N79), for two seeds;
 // the same output whatever the threads; configuration i depends only on
 // (seed, i); the methods come from the registry.
