@@ -81,6 +81,16 @@ folder that cannot be created), 3 an output could not be written.
 
 }  // namespace
 
+std::uint64_t parse_audit_seed(const std::string& text) {
+  std::uint64_t seed = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
+  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
+    throw std::invalid_argument(fmt::format("--seed: must be an integer from 0 to {} (got \"{}\")",
+                                            std::numeric_limits<std::uint64_t>::max(), text));
+  }
+  return seed;
+}
+
 std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app) {
   auto options = std::make_shared<AuditCliOptions>();
   CLI::App* audit = app.add_subcommand("audit", "Measure the properties of Sec. 4 (Fig. 10) for every method");
@@ -121,13 +131,11 @@ namespace {
 
 // --seed: an unsigned 64-bit integer. Throws UsageError.
 std::uint64_t parse_seed(const std::string& text) {
-  std::uint64_t seed = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), seed);
-  if (text.empty() || error != std::errc{} || end != text.data() + text.size()) {
-    throw UsageError(fmt::format("--seed: must be an integer from 0 to {} (got \"{}\")",
-                                 std::numeric_limits<std::uint64_t>::max(), text));
+  try {
+    return parse_audit_seed(text);
+  } catch (const std::invalid_argument& error) {
+    throw UsageError(error.what());
   }
-  return seed;
 }
 
 // --counterexamples: each failed cell's scene and its figure into `folder`,

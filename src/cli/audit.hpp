@@ -5,6 +5,7 @@
 // work, analysis/audit_report.hpp the text, render/audit_table.hpp the figure.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,5 +31,9 @@ struct AuditCliOptions {
 
 std::shared_ptr<AuditCliOptions> setup_audit(CLI::App& app);
 ExitCode run_audit_command(const AuditCliOptions& options);
+
+// --seed of the audits: an integer from 0 to 2^64 - 1. Throws
+// std::invalid_argument ("--seed: must be an integer ...").
+std::uint64_t parse_audit_seed(const std::string& text);
 
 }  // namespace pita::cli

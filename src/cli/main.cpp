@@ -21,6 +21,7 @@
 #include "cli/golden.hpp"
 #include "cli/lint.hpp"
 #include "cli/measure.hpp"
+#include "cli/pose_audit.hpp"
 #include "cli/render.hpp"
 #include "cli/sam3d_existence.hpp"
 #include "cli/serve.hpp"
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   const auto update_options = pita::cli::setup_update_goldens(app);
   const auto audit_options = pita::cli::setup_audit(app);
   const auto sam3d_existence_options = pita::cli::setup_sam3d_existence(*app.get_subcommand("audit"));
+  const auto pose_audit_options = pita::cli::setup_pose_audit(*app.get_subcommand("audit"));
   const auto measure_options = pita::cli::setup_measure(app);
   const auto lint_options = pita::cli::setup_lint(app);
   const auto sweep_options = pita::cli::setup_sweep(app);
@@ -135,6 +137,7 @@ int main(int argc, char** argv) {
     if (sam3d_existence_options->command->parsed()) {
       return to_int(pita::cli::run_sam3d_existence(*sam3d_existence_options));
     }
+    if (pose_audit_options->command->parsed()) return to_int(pita::cli::run_pose_audit_command(*pose_audit_options));
     if (app.got_subcommand("audit")) return to_int(pita::cli::run_audit_command(*audit_options));
     if (app.got_subcommand("check")) return to_int(pita::cli::run_check(*check_options));
     if (app.got_subcommand("measure")) return to_int(pita::cli::run_measure(*measure_options));
