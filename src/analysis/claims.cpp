@@ -155,6 +155,12 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       return *frame_step(*kept, measure.kind);
     }
     case Source::comparison:  // with another panel (angle, frame-distance) or method
+      // frame-distance compares poses too: a pose scene's panels are all of its kind.
+      if (measure.kind == MeasureKind::frame_distance &&
+          (std::holds_alternative<scene::PlanePoseKeys>(stage.panel(panel).keys) ||
+           std::holds_alternative<scene::SpacePoseKeys>(stage.panel(panel).keys))) {
+        return frame_distance(stage, panel, *measure.panel);
+      }
       need_keyframes(panel, measure, pointer, measure.panel);
       if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
       if (measure.kind == MeasureKind::angle) {

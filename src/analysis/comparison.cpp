@@ -4,9 +4,13 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <variant>
+#include <vector>
 
 #include "core/carrier.hpp"
 #include "core/methods.hpp"
+#include "core/overloaded.hpp"
+#include "core/pose_traits.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
@@ -66,21 +70,68 @@ double panel_angle(const motion::Stage& stage, std::size_t index, std::size_t ot
   return std::arg(theirs.vector() / mine.vector());
 }
 
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
-  const motion::SceneMotion& mine = stage.motion(index);
-  const motion::SceneMotion& theirs = stage.motion(other);
-  (void)mine.arrows();  // NoMotion unless both panels have keyframes
-  (void)theirs.arrows();
+namespace {
+
+// The times both panels' knots cover (an empty list when they share none).
+std::vector<double> common_times(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
   const double first = std::max(mine.first(), theirs.first());
   const double last = std::min(mine.last(), theirs.last());
-  if (!(first < last)) return std::numeric_limits<double>::quiet_NaN();  // no common time
+  if (!(first < last)) return {};
+  return motion::uniform_times(first, last, kFrameDistanceSamples);
+}
+
+double arrow_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
+  (void)mine.arrows();  // NoMotion unless both panels have keyframes
+  (void)theirs.arrows();
+  const std::vector<double> times = common_times(mine, theirs);
+  if (times.empty()) return std::numeric_limits<double>::quiet_NaN();  // no common time
   double distance = 0.0;
-  for (const double t : motion::uniform_times(first, last, kFrameDistanceSamples)) {
+  for (const double t : times) {
     const Arrow a = mine.arrow_at(t);
     const Arrow b = theirs.arrow_at(t);
     distance = std::max({distance, std::abs(a.p - b.p), std::abs(a.q() - b.q())});
   }
   return distance;
+}
+
+double gap(Point x, Point y) { return std::abs(x - y); }
+double gap(const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return (x - y).norm(); }
+
+// Poses: the corners of the reference simplex (the triangle, the
+// tetrahedron) carried by both motions, as an arrow's p and q are.
+template <class Pose>
+double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs,
+                     const typename PoseTraits<Pose>::Simplex& corners) {
+  const std::vector<double> times = common_times(mine, theirs);
+  if (times.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double distance = 0.0;
+  for (const double t : times) {
+    const Pose a = mine.pose_at<Pose>(t);
+    const Pose b = theirs.pose_at<Pose>(t);
+    for (const auto& corner : corners) distance = std::max(distance, gap(apply(a, corner), apply(b, corner)));
+  }
+  return distance;
+}
+
+}  // namespace
+
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion& theirs = stage.motion(other);
+  // A scene's panels are all of its family: keyframes or points, or poses of
+  // one dimension.
+  const auto arrows = [&] { return arrow_distance(mine, theirs); };  // NoMotion for points
+  const scene::Scene& scene = stage.scene();
+  return std::visit(
+      overloaded{[&](const scene::KeyframeKeys&) { return arrows(); },
+                 [&](const scene::PointKeys&) { return arrows(); },
+                 [&](const scene::PlanePoseKeys&) {
+                   return pose_distance<Affine2>(mine, theirs, scene::figure_of<scene::PlanePoseKeys>(scene).reference);
+                 },
+                 [&](const scene::SpacePoseKeys&) {
+                   return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference);
+                 }},
+      stage.panel(index).keys);
 }
 
 }  // namespace pita::analysis

@@ -56,8 +56,11 @@ inline constexpr int kFrameDistanceSamples = 201;
 
 // max over kFrameDistanceSamples times of the knot range both panels share
 // of max(|p - p_k|, |q - q_k|), world units: how far the frames of the
-// stage's panel `index` are from those of its panel `other` (Fig. D.37's d).
-// Throws motion::NoMotion; 0 for the panel itself.
+// stage's panel `index` are from those of its panel `other` (Fig. D.37's d);
+// for poses, the largest distance between the images of a corner of the
+// reference simplex (the triangle, the tetrahedron) under the two motions.
+// NaN when the knots share no range. Throws motion::NoMotion (a panel of
+// points); 0 for the panel itself.
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
 }  // namespace pita::analysis

@@ -35,15 +35,18 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"turn:", MeasureKind::turn, true},
     {"jump:", MeasureKind::jump, true},
     {"angle:", MeasureKind::angle, true},
-    {"frame-distance:", MeasureKind::frame_distance, true},
     {"property:", MeasureKind::property, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
+    // Both families': a claim compares the frames of two panels of an arrow
+    // scene, or the poses of two panels of a pose scene.
+    {"frame-distance:", MeasureKind::frame_distance, true},
     {"ara", MeasureKind::ara},
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 19;  // the first ones
+constexpr std::size_t kArrowMeasures = 19;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 18;  // "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -67,12 +70,12 @@ struct MeasureFamily<Layer> {
 
 template <>
 struct MeasureFamily<PoseLayer> {
-  static constexpr std::span<const MeasureEntry> entries{kMeasures.data() + kArrowMeasures,
-                                                         kMeasures.size() - kArrowMeasures};
+  static constexpr std::span<const MeasureEntry> entries{kMeasures.data() + kFirstPoseMeasure,
+                                                         kMeasures.size() - kFirstPoseMeasure};
   static constexpr std::string_view words = "pose scenes";
   using Other = Layer;
   static constexpr std::array<std::string_view, 2> defaults = {"ara", "area"};
-  static constexpr std::string_view more = "";
+  static constexpr std::string_view more = ", or in a claim \"frame-distance:/panels/K\"";
 };
 
 // The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).

@@ -13,8 +13,8 @@
 //       claim M may be another panel, "angle:/panels/1@0.25" (docs/reference/check.md "Claims")
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
-//   "frame-distance:/panels/K"                    arrow scenes, in a claim: how far
-//       the panel's frames are from panel K's (analysis/comparison.hpp)
+//   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
+//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
 //       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value

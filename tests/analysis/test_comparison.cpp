@@ -216,5 +216,38 @@ TEST(Comparison, FrameDistanceOfTranslatedKeyframesIsTheTranslation) {
   EXPECT_EQ(frame_distance(stage, 1, 1), 0.0);
 }
 
+// Poses: the largest distance between the corners of the reference triangle
+// (tetrahedron) carried by the two motions. The pose PITAs commute with a
+// left translation (docs/paper-notes.md N73), so poses moved by (0.3, -0.4)
+// move every corner of every frame by 0.5.
+TEST(Comparison, FrameDistanceOfTranslatedPosesIsTheTranslation) {
+  const std::string poses =
+      R"([{{"t": 0, "matrix": [[1, 0.2, {0}], [0.1, 0.8, {1}]]}}, {{"t": 0.5, "matrix": [[0.4, -1, {2}], [0.9, 0.5, {3}]]}},
+      {{"t": 1, "matrix": [[-0.3, -0.9, {4}], [1.2, -0.2, {5}]]}}])";
+  for (const char* method : {"P4", "P5", "P6", "P9"}) {
+    const scene::Scene scene = scene::parse_scene(
+        fmt::format(R"({{"method": "{}", "poses": {}, "panels": [{{"poses": {}}}, {{}}, "polySAM"]}})", method,
+                    fmt::format(fmt::runtime(poses), 0, 0, 3, 2, 6, 0),
+                    fmt::format(fmt::runtime(poses), 0.3, -0.4, 3.3, 1.6, 6.3, -0.4)),
+        "test.json");
+    const motion::Stage stage(scene);
+    EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12) << method;
+    EXPECT_NEAR(frame_distance(stage, 1, 0), 0.5, 1e-12) << method;
+    EXPECT_EQ(frame_distance(stage, 1, 1), 0.0) << method;
+    // The polySAM through the same poses passes them too, and differs between.
+    EXPECT_GT(frame_distance(stage, 1, 2), 0.01) << method;
+  }
+  const std::string space =
+      R"([{{"t": 0, "matrix": [[1, 0, 0, {0}], [0, 1, 0, 0], [0, 0, 1, 0]]}},
+      {{"t": 1, "matrix": [[0, -1, 0, {1}], [1, 0.2, 0, 1], [0, 0, 0.7, 1]]}},
+      {{"t": 2, "matrix": [[-0.5, -0.6, 0.3, {2}], [0.6, -0.4, 0, 0], [0, 0.4, 1, 2]]}}])";
+  const scene::Scene scene = scene::parse_scene(
+      fmt::format(R"({{"dimension": 3, "method": "P6", "poses": {}, "panels": [{{"poses": {}}}, {{}}]}})",
+                  fmt::format(fmt::runtime(space), 0, 2, 4), fmt::format(fmt::runtime(space), 0.5, 2.5, 4.5)),
+      "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12);
+}
+
 }  // namespace
 }  // namespace pita::analysis

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -244,15 +245,21 @@ TEST(SceneFiles, NamedAfterTheirFigure) {
     // papers' three keyframes (docs/paper-notes.md N32, N33).
     if (name.rfind("project-", 0) == 0) name = name.substr(8);
     if (name.rfind("tracks-", 0) == 0) name = name.substr(7);
+    // Figures that extend the papers, of either kind (the PITAs over affine
+    // poses, docs/paper-notes.md N73): ext-figNN-*.json.
+    const bool extension = name.rfind("ext-", 0) == 0;
+    if (extension) name = name.substr(4);
     // The PITA paper's appendix figures, named by their appendix: appB-fig30-*.json.
     if (name.size() > 5 && name.rfind("app", 0) == 0 && name[3] >= 'A' && name[3] <= 'Z' && name[4] == '-') {
       name = name.substr(5);
     }
     const auto digit = [](char c) { return c >= '0' && c <= '9'; };
     EXPECT_TRUE(name.size() > 6 && name.rfind("fig", 0) == 0 && digit(name[3]) && digit(name[4]) && name[5] == '-')
-        << path.stem() << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, appX-figNN-*.json)";
-    EXPECT_EQ(is_pose_scene(load_scene(path)), sam)
-        << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json";
+        << path.stem() << " is not named figNN-*.json (or sam-, chapter-, project-, tracks-, ext-, appX-figNN-*.json)";
+    if (!extension) {
+      EXPECT_EQ(is_pose_scene(load_scene(path)), sam)
+          << path.stem() << ": pose scenes (SAM paper) and only they are named sam-figNN-*.json (or ext-figNN-*.json)";
+    }
   }
 }
 
@@ -396,6 +403,41 @@ TEST(SceneFiles, AppendixD37PrintsTheDistanceBetweenP6AndP9) {
       tame = d;
     else
       EXPECT_GT(d, 5.0 * tame);
+  }
+}
+
+// Fig. D.37 for affine poses (ext-fig03): P6 and P9 through a tame triple of
+// triangles agree; through a wild one P9 departs from P6 near the ends. Each
+// P9 panel prints d, the largest distance between corresponding corners of
+// the two motions' reference triangles over t in [0, 1] (201 samples).
+TEST(SceneFiles, PosePitasP6AndP9PrintTheirDistance) {
+  const Scene scene = load_scene(kSourceDir / "scenes/ext-fig03-p6-p9-affine.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  double tame = 0.0;
+  for (std::size_t i : {0u, 2u}) {
+    const Panel& panel = scene.panels[i];
+    ASSERT_EQ(plane_keys(panel).poses.size(), 3u);
+    const PoseMotion p6(PoseMethod::p6, plane_keys(panel).poses);
+    const PoseMotion p9(PoseMethod::p9, plane_keys(scene.panels[i + 1]).poses);
+    const auto& corners = figure_of<PlanePoseKeys>(scene).reference;
+    double d = 0.0, middle = 0.0, t_of_d = 0.0;
+    for (int k = 0; k <= 200; ++k) {
+      const double t = k / 200.0;
+      for (const Point corner : corners) {
+        const double gap = std::abs(pita::apply(p6.at(t), corner) - pita::apply(p9.at(t), corner));
+        if (gap > d) std::tie(d, t_of_d) = std::pair{gap, t};
+        if (k >= 70 && k <= 130) middle = std::max(middle, gap);
+      }
+    }
+    EXPECT_TRUE(title_says(scene.panels[i + 1], fmt::format("d = {:.2g}", d)))
+        << scene.panels[i + 1].title << " vs " << d;
+    if (i == 0) {
+      tame = d;
+    } else {
+      EXPECT_GT(d, 10.0 * tame);
+      EXPECT_TRUE(t_of_d < 0.25 || t_of_d > 0.75) << t_of_d;  // near the ends
+      EXPECT_LT(middle, 0.1 * d);                             // and not in the middle
+    }
   }
 }
 
