@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent oracle of the pose PITAs P4, P5, P6 and P9 (affine poses of the plane and of space).
 
-Written from the papers (PITA Sec. 2.3-2.6, Eqs. 9-14, 27-34, appendices C and D; SAM Sec. 2.2),
+Written from the papers (PITA Sec. 2.3-2.6, PITA Eqs. 9-14, 27-34, appendices C and D; SAM Sec. 2.2),
 not from src/core: poses are homogeneous matrices H = [[L, b], [0, 1]] (3x3 in the plane, 4x4 in
 space) in numpy, and every real power is the principal one, H^s = expm(s log H), with scipy's
 expm, and log H = [[log L, v], [0, 0]] from scipy's logm of L (real_log).
@@ -10,16 +10,16 @@ expm, and log H = [[log L, v], [0, 0]] from scipy's logm of L (real_log).
     T(X, A, B, s) = (B o A^-1)^s o X       steady transport (PITA Eq. 24)
 
     P6  L = T(M(A, B, y + z), B, C, z),  R = T(M(C, B, x + y), B, A, x),  D = M(L, R, 1/2)
-        (Eq. 34; R takes the knots in the order c, b, a: READING-NOTES 4)
-    P9  D = M(M(A, B, q), M(B, C, r), s)                                  (Eq. D.2)
-    P4  Lc = T(M(A, B, 3/4), C, B, 1/4),  Rc = T(M(C, B, 3/4), A, B, 1/4)  (Eq. 30-32, READING-NOTES 3)
-        Bezier(P0, P1, P2, s) = M(M(P0, P1, s), M(P1, P2, s), s)        (Eq. 29)
+        (PITA Eq. 34; R takes the knots in the order c, b, a: READING-NOTES 4)
+    P9  D = M(M(A, B, q), M(B, C, r), s)                                  (PITA Eq. D.2)
+    P4  Lc = T(M(A, B, 3/4), C, B, 1/4),  Rc = T(M(C, B, 3/4), A, B, 1/4)  (PITA Eq. 30-32, READING-NOTES 3)
+        Bezier(P0, P1, P2, s) = M(M(P0, P1, s), M(P1, P2, s), s)        (PITA Eq. 29)
         u = knot_warp(a, b, c, t); D = Bezier(A, Lc, B, 2u) if u <= 1/2
-                                     else Bezier(B, Rc, C, 2u - 1)      (Eq. 27-28; warp: N11, N17)
+                                     else Bezier(B, Rc, C, 2u - 1)      (PITA Eq. 27-28; warp: N11, N17)
     P5  g = centroid of the poses' translations, G = translation by g;
-        D = G o exp(x log(G^-1 o A) + y log(G^-1 o B) + z log(G^-1 o C))   (Eq. 33, appendix C)
+        D = G o exp(x log(G^-1 o A) + y log(G^-1 o B) + z log(G^-1 o C))   (PITA Eq. 33, appendix C)
 
-x, y, z are the Lagrange weights of t (Eq. 10), q, r, s the Neville ratios (Eq. 14).
+x, y, z are the Lagrange weights of t (PITA Eq. 10), q, r, s the Neville ratios (PITA Eq. 14).
 
 A principal real power of H exists iff its linear part L has no eigenvalue on the closed
 negative real axis (det L > 0 throughout: every pose here preserves orientation). `margin(L)`
@@ -154,7 +154,7 @@ def real_log(H, step, t=None):
 
 
 class Power:
-    """s -> X^s for X = B o A^-1, the power of one pair of poses (SAM Sec. 2.2, Eq. 1-2).
+    """s -> X^s for X = B o A^-1, the power of one pair of poses (SAM Sec. 2.2, SAM Eq. 1-2).
 
     With body=True the same morph and transport are computed in A's body frame, from
     Y = A^-1 o B: X^s = A o Y^s o A^-1 (the principal power commutes with conjugation). Both are
@@ -300,7 +300,7 @@ class Motion:
             size = 1.0 if D is None else max(1.0, np.abs(D).max())
             self.last_growth = max(1.0, max(trace["norm"], default=1.0) / size) * max(trace["cond"], default=1.0)
 
-    # P6, Eq. 34 -------------------------------------------------------------------------------
+    # P6, PITA Eq. 34 -------------------------------------------------------------------------------
     def _build_p6(self):
         A, B, C = self.A, self.B, self.C
         self.ab = self._power(A, B, "A to B")
@@ -313,9 +313,9 @@ class Motion:
         L = self.bc.transport(self.ab.morph(y + z), z)       # T(M(A, B, y + z), B, C, z)
         R = self.ba.transport(self.cb.morph(x + y), x)       # T(M(C, B, x + y), B, A, x)
         ld = x * self.ld[0] + y * self.ld[1] + z * self.ld[2]   # log det of L and of R
-        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, trace, self.body, (ld, ld))  # M(L, R), Eq. 23
+        return formed_morph(L, R, 0.5, "between L(t) and R(t)", t, trace, self.body, (ld, ld))  # M(L, R), PITA Eq. 23
 
-    # P9, Eq. D.2 ------------------------------------------------------------------------------
+    # P9, PITA Eq. D.2 ------------------------------------------------------------------------------
     def _build_p9(self):
         self.ab = self._power(self.A, self.B, "A to B")
         self.bc = self._power(self.B, self.C, "B to C")
@@ -326,7 +326,7 @@ class Motion:
         return formed_morph(self.ab.morph(q), self.bc.morph(r), s,
                             "between M(A, B, q) and M(B, C, r)", t, trace, self.body, lds)
 
-    # P4, Eq. 27-32 ----------------------------------------------------------------------------
+    # P4, PITA Eq. 27-32 ----------------------------------------------------------------------------
     def _build_p4(self):
         A, B, C = self.A, self.B, self.C
         ab, cb = self._power(A, B, "A to B"), self._power(C, B, "C to B")
@@ -344,11 +344,11 @@ class Motion:
         arc = 0 if u <= 0.5 else 1
         (first, second), (l0, l1, l2) = self.arcs[arc], self.arc_lds[arc]
         s = 2 * u if u <= 0.5 else 2 * u - 1
-        return formed_morph(first.morph(s), second.morph(s), s,      # Bezier, Eq. 29
+        return formed_morph(first.morph(s), second.morph(s), s,      # Bezier, PITA Eq. 29
                             "between the Bezier arc's inner morphs", t, trace, self.body,
                             ((1 - s) * l0 + s * l1, (1 - s) * l1 + s * l2))
 
-    # P5, Eq. 33 and appendix C ----------------------------------------------------------------
+    # P5, PITA Eq. 33 and appendix C ----------------------------------------------------------------
     def _build_p5(self):
         n = self.A.shape[0] - 1
         g = (self.A[:n, n] + self.B[:n, n] + self.C[:n, n]) / 3
