@@ -3,7 +3,7 @@
 // four-point polySAM, and linear interpolation of the matrices, over timed
 // poses of type Affine2 or Affine3 (instantiated for both in
 // sam_family_motion.cpp). The plane's PoseMotion (pose_motion.hpp) adds the
-// 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes use PoseMotion3.
+// 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes ("dimension": 3) use SamFamilyMotion<Affine3>.
 #pragma once
 
 #include <optional>
@@ -51,9 +51,5 @@ class SamFamilyMotion {
   std::vector<SteadyAffineMorph<Pose>> spans_;  // between span_poses_
   std::optional<SamBiarcOf<Pose>> biarc_;
 };
-
-using TimedPose3 = TimedPoseOf<Affine3>;
-// The motions of 3D pose scenes ("dimension": 3).
-using PoseMotion3 = SamFamilyMotion<Affine3>;
 
 }  // namespace pita
