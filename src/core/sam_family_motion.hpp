@@ -5,7 +5,7 @@
 // docs/paper-notes.md N73), over timed
 // poses of type Affine2 or Affine3 (instantiated for both in
 // sam_family_motion.cpp). The plane's PoseMotion (pose_motion.hpp) adds the
-// 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes use PoseMotion3.
+// 2D-only morphs of Fig. 2 and Alexa's blend; 3D scenes ("dimension": 3) use SamFamilyMotion<Affine3>.
 #pragma once
 
 #include <optional>
@@ -59,9 +59,5 @@ class SamFamilyMotion {
   std::optional<SamBiarcOf<Pose>> biarc_;
   std::optional<PoseBlendChain<Pose>> pitas_;  // P4, P5, P6, P9: one triple, or the blend chain past three
 };
-
-using TimedPose3 = TimedPoseOf<Affine3>;
-// The motions of 3D pose scenes ("dimension": 3).
-using PoseMotion3 = SamFamilyMotion<Affine3>;
 
 }  // namespace pita

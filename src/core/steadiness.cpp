@@ -38,7 +38,7 @@ double average_relative_acceleration(const PoseMotion& motion, std::span<const E
   return relative_acceleration_mean(motion, points, time_samples);
 }
 
-double average_relative_acceleration(const PoseMotion3& motion, std::span<const Eigen::Vector3d> points,
+double average_relative_acceleration(const SamFamilyMotion<Affine3>& motion, std::span<const Eigen::Vector3d> points,
                                      int time_samples) {
   return relative_acceleration_mean(motion, points, time_samples);
 }

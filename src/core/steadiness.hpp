@@ -22,11 +22,11 @@ namespace pita {
 // (reference coordinates) and over `time_samples` times at the middles of
 // equal intervals of u (never at a knot, where a polySAM's velocity jumps).
 // dw/du by central differences of the exact (or fourth-order) velocity.
-// Poses of the plane (points of R^2) and of space (PoseMotion3, points of
+// Poses of the plane (points of R^2) and of space (SamFamilyMotion<Affine3>, points of
 // R^3) alike: one template (steadiness.cpp).
 double average_relative_acceleration(const PoseMotion& motion, std::span<const Eigen::Vector2d> points,
                                      int time_samples = 64);
-double average_relative_acceleration(const PoseMotion3& motion, std::span<const Eigen::Vector3d> points,
+double average_relative_acceleration(const SamFamilyMotion<Affine3>& motion, std::span<const Eigen::Vector3d> points,
                                      int time_samples = 64);
 
 // The points ARA averages over (Sec. 2.4: "a regular grid of the shape's

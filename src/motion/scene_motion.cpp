@@ -136,7 +136,7 @@ PlanePoses make_pose_track(const scene::Scene& scene, const scene::PlanePoseKeys
   return {std::make_shared<const PoseMotion>(keys.method, keys.poses, keys.subdivisions, reference), reference};
 }
 SpacePoses make_pose_track(const scene::Scene& scene, const scene::SpacePoseKeys& keys) {
-  return {std::make_shared<const PoseMotion3>(keys.method, keys.poses, keys.subdivisions),
+  return {std::make_shared<const SamFamilyMotion<Affine3>>(keys.method, keys.poses, keys.subdivisions),
           scene::figure_of(scene, keys).reference};
 }
 
@@ -389,7 +389,7 @@ Pose SceneMotion::pose_velocity(double t) const {
 }
 
 template const PoseMotion& SceneMotion::poses<Affine2>() const;
-template const PoseMotion3& SceneMotion::poses<Affine3>() const;
+template const SamFamilyMotion<Affine3>& SceneMotion::poses<Affine3>() const;
 template Affine2 SceneMotion::pose_at<Affine2>(double) const;
 template Affine3 SceneMotion::pose_at<Affine3>(double) const;
 template Affine2 SceneMotion::pose_velocity<Affine2>(double) const;

@@ -267,7 +267,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
           "The method as messages name it: \"P6 (La-LP)\".")
       .def_property_readonly(
           "kind", [](const HeldMotion& held) { return std::string(scene::kind_name(held.evaluation->panel().keys)); },
-          "\"arrows\", \"points\", \"poses\" or \"poses3\" (poses of space).")
+          "\"arrows\", \"points\", \"poses\" or \"poses3d\" (poses of space).")
       .def_property_readonly(
           "knots", [](const HeldMotion& held) { return py::tuple(py::cast(held.evaluation->motion().knots())); },
           "The keyframes' (or poses') times, increasing.")

@@ -241,7 +241,7 @@ checked once. In a Jupyter notebook it shows its figure.)")
       .def_property_readonly("description", [](const HeldScene& s) { return s.scene.description; })
       .def_property_readonly(
           "kind", [](const HeldScene& s) { return std::string(scene::kind_name(s.scene.keys)); },
-          "\"arrows\", \"points\", \"poses\" or \"poses3\".")
+          "\"arrows\", \"points\", \"poses\" or \"poses3d\".")
       .def_property_readonly("method", [](const HeldScene& s) { return scene::method_id(s.scene.keys); })
       .def_property_readonly(
           "panels", [](const HeldScene& s) { return s.scene.panels.size(); },

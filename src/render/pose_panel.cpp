@@ -32,7 +32,7 @@ const scene::PoseKeys<Pose>& pose_keys_of(const scene::Scene& scene, const scene
 // motion's frames at the panel's samples when it has a motion.
 std::vector<Affine3> seen_poses(const motion::Stage& stage, std::size_t index, const scene::SpacePoseKeys& keys) {
   std::vector<Affine3> poses;
-  for (const TimedPose3& pose : keys.poses) poses.push_back(pose.pose);
+  for (const TimedPoseOf<Affine3>& pose : keys.poses) poses.push_back(pose.pose);
   if (keys.poses.empty()) return poses;
   try {
     const motion::SceneMotion& motion = stage.motion(index);
@@ -65,7 +65,7 @@ Projection camera_view(const scene::Scene& scene, const scene::SpacePoseKeys& ke
     target = *figure.camera.target;
   } else {
     double count = 0.0;
-    for (const TimedPose3& pose : keys.poses) {
+    for (const TimedPoseOf<Affine3>& pose : keys.poses) {
       for (const scene::Solid& solid : figure.shapes) {
         for (const Eigen::Vector3d& v : solid.vertices) {
           target += apply(pose.pose, v);

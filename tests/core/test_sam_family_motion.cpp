@@ -1,4 +1,4 @@
-// The SAM family in space (src/core/sam_family_motion.cpp, PoseMotion3):
+// The SAM family in space (src/core/sam_family_motion.cpp, SamFamilyMotion<Affine3>):
 // every method checked against its stated properties, SAM and polySAM against
 // an independent power (Eigen's Schur-Pade in long double), and against the
 // 2D PoseMotion on poses that keep the plane z = 0 and the z axis: there each
@@ -42,7 +42,7 @@ Affine3 screw(const Vector3d& axis, double angle, double scale, const Vector3d& 
 }
 
 // Three poses of space with SAMs between consecutive ones.
-const std::vector<TimedPose3> kPoses = {
+const std::vector<TimedPoseOf<Affine3>> kPoses = {
     {0.0, Affine3::identity()},
     {0.4, screw(Vector3d(1, 2, 3), 1.1, 1.3, Vector3d(2, -1, 0.5))},
     {1.0, screw(Vector3d(-1, 0.5, 2), 2.4, 0.8, Vector3d(4, 1, -2))},
@@ -56,30 +56,30 @@ Affine3 reference_sam(const Affine3& B, const Affine3& C, double u) {
   return compose(affine3_of(Eigen::Matrix4d(P.cast<double>())), B);
 }
 
-TEST(PoseMotion3, SamAndPolySamInterpolateAndMatchTheIndependentPower) {
-  const PoseMotion3 motion(PoseMethod::poly_sam, kPoses);
-  for (const TimedPose3& p : kPoses) EXPECT_EQ(distance3(motion.at(p.t), p.pose), 0.0) << p.t;
+TEST(SamFamilyInSpace, SamAndPolySamInterpolateAndMatchTheIndependentPower) {
+  const SamFamilyMotion<Affine3> motion(PoseMethod::poly_sam, kPoses);
+  for (const TimedPoseOf<Affine3>& p : kPoses) EXPECT_EQ(distance3(motion.at(p.t), p.pose), 0.0) << p.t;
   // Each span runs [t_i, t_i+1] onto [0, 1]; beyond the knots the end spans extrapolate.
   for (const double t : {-0.3, 0.1, 0.25, 0.55, 0.8, 1.4}) {
     const std::size_t i = t < 0.4 ? 0 : 1;
     const double u = (t - kPoses[i].t) / (kPoses[i + 1].t - kPoses[i].t);
     EXPECT_LT(distance3(motion.at(t), reference_sam(kPoses[i].pose, kPoses[i + 1].pose, u)), 1e-12) << t;
   }
-  const PoseMotion3 sam(PoseMethod::sam, {kPoses[0], kPoses[1]});
+  const SamFamilyMotion<Affine3> sam(PoseMethod::sam, {kPoses[0], kPoses[1]});
   EXPECT_LT(distance3(sam.at(0.2), reference_sam(kPoses[0].pose, kPoses[1].pose, 0.5)), 1e-12);
 }
 
 // SAM(S B, u, S C) = S SAM(B, u, C) for every affinity S (the SAM paper's
 // invariance: (S C)(S B)^-1 = S (C B^-1) S^-1, whose powers are conjugates).
-TEST(PoseMotion3, EveryMethodCommutesWithAnAffineChangeOfFrame) {
+TEST(SamFamilyInSpace, EveryMethodCommutesWithAnAffineChangeOfFrame) {
   Affine3 S;
   S.L << 2.0, 0.3, -0.5, 0.1, 0.7, 0.2, -0.4, 0.0, 1.5;
   S.b = Vector3d(3.0, -2.0, 1.0);
-  std::vector<TimedPose3> moved = kPoses;
-  for (TimedPose3& p : moved) p.pose = compose(S, p.pose);
+  std::vector<TimedPoseOf<Affine3>> moved = kPoses;
+  for (TimedPoseOf<Affine3>& p : moved) p.pose = compose(S, p.pose);
   for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::bezier_sam, PoseMethod::biarc_sam,
                                   PoseMethod::linear, PoseMethod::four_point}) {
-    const PoseMotion3 original(method, kPoses, 2), transformed(method, moved, 2);
+    const SamFamilyMotion<Affine3> original(method, kPoses, 2), transformed(method, moved, 2);
     for (const double t : {0.1, 0.4, 0.63, 0.9}) {
       const Affine3 expected = compose(S, original.at(t));
       EXPECT_LT(distance3(transformed.at(t), expected), 1e-11 * (1.0 + expected.L.norm() + expected.b.norm()))
@@ -91,15 +91,15 @@ TEST(PoseMotion3, EveryMethodCommutesWithAnAffineChangeOfFrame) {
 // On poses that keep the plane z = 0 (and scale z), every 3D method is the 2D
 // method with z carried along: z scales by the SAM of the z scales (a power),
 // linearly for "linear".
-TEST(PoseMotion3, EmbeddedPlanarPosesGiveTheTwoDimensionalMotion) {
+TEST(SamFamilyInSpace, EmbeddedPlanarPosesGiveTheTwoDimensionalMotion) {
   const std::vector<TimedPose> plane = {{0.0, test::kFig7A}, {0.4, test::kFig7B}, {1.0, test::kFig7C}};
   const std::vector<double> z_scales = {1.0, 2.0, 0.5};
   for (const PoseMethod method : {PoseMethod::poly_sam, PoseMethod::bezier_sam, PoseMethod::biarc_sam,
                                   PoseMethod::linear, PoseMethod::four_point}) {
-    std::vector<TimedPose3> space;
+    std::vector<TimedPoseOf<Affine3>> space;
     for (std::size_t i = 0; i < plane.size(); ++i) space.push_back({plane[i].t, embedded(plane[i].pose, z_scales[i])});
     const PoseMotion motion2(method, plane, 3);
-    const PoseMotion3 motion3(method, space, 3);
+    const SamFamilyMotion<Affine3> motion3(method, space, 3);
     for (const double t : {0.0, 0.15, 0.4, 0.7, 1.0}) {
       const Affine2 expected = motion2.at(t);
       const Affine3 got = motion3.at(t);
@@ -112,24 +112,24 @@ TEST(PoseMotion3, EmbeddedPlanarPosesGiveTheTwoDimensionalMotion) {
   }
 }
 
-TEST(PoseMotion3, BezierEndsAndBiarcPassesTheMiddlePose) {
-  const PoseMotion3 bezier(PoseMethod::bezier_sam, kPoses);
+TEST(SamFamilyInSpace, BezierEndsAndBiarcPassesTheMiddlePose) {
+  const SamFamilyMotion<Affine3> bezier(PoseMethod::bezier_sam, kPoses);
   EXPECT_EQ(distance3(bezier.at(0.0), kPoses[0].pose), 0.0);
   EXPECT_LT(distance3(bezier.at(1.0), kPoses[2].pose), 1e-12);
   EXPECT_GT(distance3(bezier.at(0.4), kPoses[1].pose), 0.05);  // a control pose, not passed through
-  const PoseMotion3 biarc(PoseMethod::biarc_sam, kPoses);
+  const SamFamilyMotion<Affine3> biarc(PoseMethod::biarc_sam, kPoses);
   EXPECT_EQ(distance3(biarc.at(0.4), kPoses[1].pose), 0.0);
   EXPECT_LT(distance3(biarc.at(1.0), kPoses[2].pose), 1e-12);
   // Clamped outside the knots (the arcs are not defined beyond).
   EXPECT_EQ(distance3(biarc.at(-1.0), biarc.at(0.0)), 0.0);
-  const PoseMotion3 four(PoseMethod::four_point, kPoses, 3);
-  for (const TimedPose3& p : kPoses) EXPECT_LT(distance3(four.at(p.t), p.pose), 1e-12) << p.t;
+  const SamFamilyMotion<Affine3> four(PoseMethod::four_point, kPoses, 3);
+  for (const TimedPoseOf<Affine3>& p : kPoses) EXPECT_LT(distance3(four.at(p.t), p.pose), 1e-12) << p.t;
 }
 
-TEST(PoseMotion3, VelocityIsTheDerivative) {
+TEST(SamFamilyInSpace, VelocityIsTheDerivative) {
   for (const PoseMethod method :
        {PoseMethod::poly_sam, PoseMethod::linear, PoseMethod::bezier_sam, PoseMethod::biarc_sam}) {
-    const PoseMotion3 motion(method, kPoses);
+    const SamFamilyMotion<Affine3> motion(method, kPoses);
     for (const double t : {0.1, 0.3, 0.55, 0.9}) {
       const double h = 1e-6;
       const Affine3 before = motion.at(t - h), after = motion.at(t + h);
@@ -140,21 +140,22 @@ TEST(PoseMotion3, VelocityIsTheDerivative) {
   }
 }
 
-TEST(PoseMotion3, RefusesTheMissingSamAndNamesThePair) {
+TEST(SamFamilyInSpace, RefusesTheMissingSamAndNamesThePair) {
   Affine3 no_log;
   no_log.L = Vector3d(-1.0, -2.0, 1.0).asDiagonal();
   try {
-    const PoseMotion3 motion(PoseMethod::poly_sam, {kPoses[0], kPoses[1], {2.0, compose(no_log, kPoses[1].pose)}});
+    const SamFamilyMotion<Affine3> motion(PoseMethod::poly_sam,
+                                          {kPoses[0], kPoses[1], {2.0, compose(no_log, kPoses[1].pose)}});
     ADD_FAILURE() << "no error";
   } catch (const NoSamBetweenPoses& error) {
     EXPECT_EQ(error.first(), 1u);
     EXPECT_NE(std::string(error.what()).find("-2"), std::string::npos) << error.what();
   }
   // Linear needs no SAM.
-  EXPECT_NO_THROW(PoseMotion3(PoseMethod::linear, {kPoses[0], {1.0, no_log}}));
-  EXPECT_THROW(PoseMotion3(PoseMethod::rarap, {kPoses[0], kPoses[1]}), std::invalid_argument);
-  EXPECT_THROW(PoseMotion3(PoseMethod::sam, kPoses), std::invalid_argument);  // SAM takes two
-  EXPECT_THROW(PoseMotion3(PoseMethod::poly_sam, {kPoses[1], kPoses[0]}), std::invalid_argument);
+  EXPECT_NO_THROW(SamFamilyMotion<Affine3>(PoseMethod::linear, {kPoses[0], {1.0, no_log}}));
+  EXPECT_THROW(SamFamilyMotion<Affine3>(PoseMethod::rarap, {kPoses[0], kPoses[1]}), std::invalid_argument);
+  EXPECT_THROW(SamFamilyMotion<Affine3>(PoseMethod::sam, kPoses), std::invalid_argument);  // SAM takes two
+  EXPECT_THROW(SamFamilyMotion<Affine3>(PoseMethod::poly_sam, {kPoses[1], kPoses[0]}), std::invalid_argument);
 }
 
 }  // namespace

@@ -87,7 +87,7 @@ TEST(Steadiness, SpaceMeasureAgreesWithThePlaneAndFindsTheSamSteady) {
     const double plane =
         average_relative_acceleration(PoseMotion(method, {{0.0, kSamFig2B}, {1.0, kSamFig2C}}), kTriangle);
     const double space = average_relative_acceleration(
-        PoseMotion3(method, {{0.0, embedded(kSamFig2B)}, {1.0, embedded(kSamFig2C)}}, 0), flat);
+        SamFamilyMotion<Affine3>(method, {{0.0, embedded(kSamFig2B)}, {1.0, embedded(kSamFig2C)}}, 0), flat);
     EXPECT_NEAR(space, plane, 1e-6 * (1.0 + plane)) << info(method).id;
   }
   // A turn about a tilted axis with a scaling, in space proper.
@@ -95,10 +95,10 @@ TEST(Steadiness, SpaceMeasureAgreesWithThePlaneAndFindsTheSamSteady) {
   const Affine3 to{1.5 * Eigen::AngleAxisd(2.0, Eigen::Vector3d(1, 2, 2).normalized()).toRotationMatrix(),
                    Eigen::Vector3d(3, -1, 2)};
   const std::vector<Eigen::Vector3d> tetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  const double sam =
-      average_relative_acceleration(PoseMotion3(PoseMethod::sam, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
-  const double linear =
-      average_relative_acceleration(PoseMotion3(PoseMethod::linear, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
+  const double sam = average_relative_acceleration(
+      SamFamilyMotion<Affine3>(PoseMethod::sam, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
+  const double linear = average_relative_acceleration(
+      SamFamilyMotion<Affine3>(PoseMethod::linear, {{0.0, from}, {1.0, to}}, 0), tetrahedron);
   EXPECT_LT(sam, 1e-6);
   EXPECT_GT(linear, 0.5);
 }

@@ -268,7 +268,7 @@ TEST(SceneMotion, NonFiniteFramesAreNoMotionNotNaN) {
   }
 }
 
-// 3D pose scenes: the stage builds PoseMotion3 once; pose_at<Affine3> is its pose,
+// 3D pose scenes: the stage builds SamFamilyMotion<Affine3> once; pose_at<Affine3> is its pose,
 // and the plane's verbs refuse the motion with NoMotion at /dimension.
 TEST(SceneMotion, SpaceScenesGiveTheirPosesInSpace) {
   const scene::Scene scene = scene::parse_scene(R"({"dimension": 3, "method": "SAM", "poses": [
@@ -320,7 +320,7 @@ TEST(SceneMotion, SpaceScenesPacedByArcLengthMoveThePointEvenly) {
   const SceneMotion motion = build_motion(scene);
   const SceneMotion plain = build_motion(space());
   // Every pose at its knot.
-  for (const TimedPose3& pose : space_keys(scene).poses) {
+  for (const TimedPoseOf<Affine3>& pose : space_keys(scene).poses) {
     const Affine3 at = motion.pose_at<Affine3>(pose.t);
     EXPECT_LT((at.L - pose.pose.L).norm() + (at.b - pose.pose.b).norm(), 1e-12) << pose.t;
   }
