@@ -207,21 +207,18 @@ Affine3 AffinePowers<Affine3>::split_log() const {
   log.L = Q_ * log_T * Q_.transpose();
   // Its translation l(L) b: the same block formula with f = ln.
   if (corner_ == Corner::unit_series) {
-    // Near the identity log L is the series sum_{n>=1} (-1)^{n-1} E^n / n,
-    // right relative to E, where the split's is right relative to L only
-    // (docs/paper-notes.md N80).
+    // Near the identity, with E = L - I, log L = sum_{n>=1} (-1)^{n-1} E^n / n,
+    // right relative to E, where the split's is right relative to L only (N80).
     const Matrix3d E = A_.L - Matrix3d::Identity();
-    Matrix3d sum = Matrix3d::Zero(), power = E;
-    int small_terms = 0;
-    for (int n = 1; n <= 400 && small_terms < 3; ++n) {
+    Matrix3d linear = Matrix3d::Zero(), power = E;
+    for (int n = 1, small_terms = 0; n <= 400 && small_terms < 3; ++n) {
       const Matrix3d term = ((n % 2 == 1) ? 1.0 : -1.0) / n * power;
-      sum += term;
-      small_terms = term.norm() <= limits::kSeriesTermCutoff * sum.norm() ? small_terms + 1 : 0;
+      linear += term;
+      small_terms = term.norm() <= limits::kSeriesTermCutoff * linear.norm() ? small_terms + 1 : 0;
       power = E * power;
     }
-    log.L = sum;
+    log.L = linear;
     // l(I + E) b = sum_{n>=1} (-1)^{n-1} E^{n-1} b / n.
-    const Matrix3d E = A_.L - Matrix3d::Identity();
     Vector3d sum = Vector3d::Zero(), x = A_.b;
     int small_terms = 0;
     for (int n = 1; n <= 400 && small_terms < 3; ++n) {
