@@ -10,6 +10,7 @@
 
 #include "analysis/comparison.hpp"
 #include "analysis/frame_steps.hpp"
+#include "analysis/pose_properties.hpp"
 #include "analysis/properties.hpp"
 #include "core/overloaded.hpp"
 #include "core/pose_traits.hpp"
@@ -40,26 +41,46 @@ std::string panel_name(const motion::Stage& stage, std::size_t index) {
 }
 
 // "property:NAME": what `pita audit` measures for the property on the
-// panel's three keyframes (its probe, seed 1), with the panel's method.
+// panel's three keyframes (its probe, seed 1), with the panel's method; in a
+// pose scene what `pita audit poses` measures on its three poses.
 double property_value(const motion::Stage& stage, std::size_t panel, const scene::MeasureName& measure,
                       const std::string& pointer) {
-  const PropertyInfo* property = find_property(measure.parameter);
-  if (property == nullptr) {
+  const auto unknown = [&](const auto& all) {
     std::vector<std::string_view> names;
-    for (const PropertyInfo& p : all_properties()) names.push_back(p.id);
+    for (const auto& p : all) names.push_back(p.id);
     throw scene::SceneError(
         stage.scene().path, pointer,
         fmt::format("unknown property \"{}\"{}; the properties are {}", measure.parameter,
                     scene::did_you_mean(scene::closest_names(measure.parameter, names)), fmt::join(names, ", ")));
-  }
-  const auto& keys = std::get<scene::KeyframeKeys>(stage.panel(panel).keys);
-  if (keys.keyframes.size() != 3 || info(keys.method).keyframe_count != 3) {
-    unmeasured(stage, pointer, panel, measure,
-               "the properties of Sec. 4 are measured on three keyframes and a method "
-               "through three");
-  }
-  const KeyframeTriple triple{keys.keyframes[0], keys.keyframes[1], keys.keyframes[2]};
-  return probe(property->property, keys.method, triple, 1).value;
+  };
+  const auto arrows = [&](const scene::KeyframeKeys& keys) {
+    const PropertyInfo* property = find_property(measure.parameter);
+    if (property == nullptr) unknown(all_properties());
+    if (keys.keyframes.size() != 3 || info(keys.method).keyframe_count != 3) {
+      unmeasured(stage, pointer, panel, measure,
+                 "the properties of Sec. 4 are measured on three keyframes and a method "
+                 "through three");
+    }
+    const KeyframeTriple triple{keys.keyframes[0], keys.keyframes[1], keys.keyframes[2]};
+    return probe(property->property, keys.method, triple, 1).value;
+  };
+  const auto poses = [&]<class Pose>(const scene::PoseKeys<Pose>& keys) {
+    const PosePropertyInfo* property = find_pose_property(measure.parameter);
+    if (property == nullptr) unknown(all_pose_properties());
+    if (keys.poses.size() != 3) {
+      unmeasured(stage, pointer, panel, measure, "the properties of pita audit poses are measured on three poses");
+    }
+    const PoseTriple<Pose> triple{keys.poses[0], keys.poses[1], keys.poses[2]};
+    return probe_pose(property->property, keys.method, triple, 1).value;
+  };
+  return std::visit(overloaded{[&](const scene::KeyframeKeys& keys) { return arrows(keys); },
+                               [&](const scene::PointKeys&) -> double {
+                                 unmeasured(stage, pointer, panel, measure,
+                                            "the properties of Sec. 4 are measured on three keyframes");
+                               },
+                               [&](const scene::PlanePoseKeys& keys) { return poses(keys); },
+                               [&](const scene::SpacePoseKeys& keys) { return poses(keys); }},
+                    stage.panel(panel).keys);
 }
 
 }  // namespace
@@ -172,7 +193,7 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       }
       return handle_shift(stage, panel);
     case Source::property:
-      need_keyframes(panel, measure, pointer);
+      (void)stage.motion(panel);  // its NoMotion first
       return property_value(stage, panel, measure, pointer);
   }
   unmeasured(stage, pointer, panel, measure, "not a measure of a claim");

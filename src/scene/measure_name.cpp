@@ -35,18 +35,20 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"turn:", MeasureKind::turn, true},
     {"jump:", MeasureKind::jump, true},
     {"angle:", MeasureKind::angle, true},
-    {"property:", MeasureKind::property, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
-    // Both families': a claim compares the frames of two panels of an arrow
-    // scene, or the poses of two panels of a pose scene.
+    // Both families': a claim measures a property of pita audit (or pita
+    // audit poses) on the panel's three keyframes or poses, or compares the
+    // frames of two panels of an arrow scene, or the poses of two panels of a
+    // pose scene.
+    {"property:", MeasureKind::property, true},
     {"frame-distance:", MeasureKind::frame_distance, true},
     {"ara", MeasureKind::ara},
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
 constexpr std::size_t kArrowMeasures = 19;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 18;  // "frame-distance:", then the pose scenes' own
+constexpr std::size_t kFirstPoseMeasure = 17;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -75,7 +77,9 @@ struct MeasureFamily<PoseLayer> {
   static constexpr std::string_view words = "pose scenes";
   using Other = Layer;
   static constexpr std::array<std::string_view, 2> defaults = {"ara", "area"};
-  static constexpr std::string_view more = ", or in a claim \"frame-distance:/panels/K\"";
+  static constexpr std::string_view more =
+      ", or in a claim \"frame-distance:/panels/K\" and \"property:NAME\" (a property as pita audit poses names "
+      "it)";
 };
 
 // The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).

@@ -135,6 +135,45 @@ TEST(Claims, PropertiesOfSection4OnThePanelsKeyframes) {
   }
 }
 
+// In a pose scene "property:NAME" is what pita audit poses measures on the
+// panel's three poses: P6 symmetric and invariant to a change of handle, P5
+// changing with it (docs/paper-notes.md N81); names are those of the pose
+// properties; two poses are not measured.
+TEST(Claims, PropertiesOfPitaAuditPosesOnThePanelsPoses) {
+  const auto outcome = [](const std::string& claim) {
+    const scene::Scene scene = scene::parse_scene(fmt::format(R"({{"method": "P6", "poses": [
+        {{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}}, {{"t": 1, "matrix": [[0.8, -0.9, 3], [0.7, 1.1, 1]]}},
+        {{"t": 2, "matrix": [[-0.6, -1.2, 5], [1.3, -0.2, 3]]}}],
+        "panels": ["P6", "P5", {{"method": "SAM", "poses": [{{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}},
+          {{"t": 1, "matrix": [[1, 0, 2], [0, 1, 0]]}}]}}],
+        "claims": [{}]}})",
+                                                              claim),
+                                                  "poses.json");
+    const std::vector<ClaimOutcome> outcomes = check_claims(motion::Stage(scene));
+    EXPECT_EQ(outcomes.size(), 1u);
+    return outcomes.at(0);
+  };
+  EXPECT_TRUE(outcome(R"({"says": "s", "panel": 0, "measure": "property:symmetric", "below": 1e-9})").held);
+  EXPECT_TRUE(
+      outcome(R"({"says": "s", "panel": 0, "measure": "property:right-affine-invariant", "below": 1e-9})").held);
+  EXPECT_FALSE(
+      outcome(R"({"says": "s", "panel": 0, "measure": "property:right-affine-invariant", "above": 1e-3})").held);
+  try {
+    outcome(R"({"says": "s", "panel": 0, "measure": "property:winding-aware", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/measure");
+    EXPECT_NE(error.reason().find("unknown property \"winding-aware\""), std::string::npos) << error.reason();
+    EXPECT_NE(error.reason().find("left-affine-invariant"), std::string::npos) << error.reason();
+  }
+  try {
+    outcome(R"({"says": "s", "panel": 2, "measure": "property:symmetric", "below": 1})");  // the SAM: two poses
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(error.reason().find("measured on three poses"), std::string::npos) << error.reason();
+  }
+}
+
 // "discrepancy:P" and "discrepancy-t:P": the largest E of one predictor of
 // Sec. 6.1 and its time. The steady SMA is its neighbours' steady average
 // at every frame (E = 0 for "average"), though each frame differs from the

@@ -47,9 +47,10 @@ TEST(MeasureName, PlainNamesAndTheirKinds) {
 }
 
 // Each family's names parse in its scenes to their own kind, and are refused
-// in the other family's, "only", but for "frame-distance:", which both have
-// (a claim compares two panels' frames, or two panels' poses); together they
-// are every measure.
+// in the other family's, "only", but for "frame-distance:" and "property:",
+// which both have (a claim compares two panels' frames, or two panels' poses;
+// a property of pita audit or of pita audit poses); together they are every
+// measure.
 template <class LayerType, class Other>
 void check_family_entries() {
   for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
@@ -61,7 +62,7 @@ void check_family_entries() {
                                                                                                    : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted<LayerType>(text).kind, entry.kind) << text;
-    if (entry.kind == MeasureKind::frame_distance) {
+    if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::property) {
       EXPECT_EQ(accepted<Other>(text).kind, entry.kind) << text;
     } else {
       EXPECT_NE(refused<Other>(text).find("only"), std::string::npos) << text;
@@ -72,8 +73,9 @@ void check_family_entries() {
 TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
   check_family_entries<Layer, PoseLayer>();
   check_family_entries<PoseLayer, Layer>();
-  EXPECT_EQ(measure_entries_of<Layer>().size() + measure_entries_of<PoseLayer>().size(), measure_entries().size() + 1);
-  EXPECT_EQ(measure_entries_of<PoseLayer>().size(), 4u);  // "frame-distance:", "ara", "area", "velocity-jump"
+  EXPECT_EQ(measure_entries_of<Layer>().size() + measure_entries_of<PoseLayer>().size(), measure_entries().size() + 2);
+  EXPECT_EQ(measure_entries_of<PoseLayer>().size(),
+            5u);  // "property:", "frame-distance:", "ara", "area", "velocity-jump"
 }
 
 // "property:NAME": a name of lower-case words; which names exist is the
@@ -158,7 +160,7 @@ TEST(MeasureName, UnknownNamesGetSuggestionsOrTheList) {
   EXPECT_NE(refused("zzzzzz").find("\"angle:M@t\""), std::string::npos);
   EXPECT_EQ(refused<PoseLayer>("zzzzzz"),
             "unknown measure \"zzzzzz\"; pose scenes measure \"ara\", \"area\" or \"velocity-jump\", or in a "
-            "claim \"frame-distance:/panels/K\"");
+            "claim \"frame-distance:/panels/K\" and \"property:NAME\" (a property as pita audit poses names it)");
 }
 
 TEST(MeasureName, DefaultsOfEachSceneKind) {
