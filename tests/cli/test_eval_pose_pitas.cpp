@@ -137,7 +137,7 @@ TEST_F(EvalPosePitas, CommuteWithAnAffinityOnTheLeft) {
 TEST_F(EvalPosePitas, TheMethodOptionTakesThePoseMethodInAPoseScene) {
   const Json poly = frames({{"method", "polySAM"}, {"poses", kPlanePoses}}, "1.1");
   const Json p6 = frames({{"method", "P6"}, {"poses", kPlanePoses}}, "1.1");
-  for (const std::string& name : {"P6", "6", "la-lp", "P6:La-LP"}) {
+  for (const char* name : {"P6", "6", "la-lp", "P6:La-LP"}) {
     const Json chosen = frames({{"method", "polySAM"}, {"poses", kPlanePoses}}, "1.1", {"--method", name});
     ASSERT_EQ(chosen.size(), 1u) << name;
     EXPECT_EQ(chosen[0]["matrix"], p6[0]["matrix"]) << name;

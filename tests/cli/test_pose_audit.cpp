@@ -28,15 +28,21 @@ TEST(PoseAudit, JsonHasEveryCellOfBothDimensions) {
   int checked = 0;
   for (const Json& cell : j["cells"]) {
     const std::string method = cell["method"], property = cell["property"];
-    if (property == "left-affine-invariant" && method != "P5") EXPECT_TRUE(cell["holds"].get<bool>()) << method;
+    if (property == "left-affine-invariant" && method != "P5") {
+      EXPECT_TRUE(cell["holds"].get<bool>()) << method;
+    }
     if (property == "left-affine-invariant" && method == "P5") {
       EXPECT_FALSE(cell["holds"].get<bool>());
       EXPECT_EQ(cell["configuration"]["poses"].size(), 3u);
       EXPECT_EQ(cell["configuration"]["poses"][0]["matrix"].size(), static_cast<std::size_t>(cell["dimension"]));
       ++checked;
     }
-    if (property == "steady" && method == "polySAM") EXPECT_TRUE(cell["holds"].get<bool>());
-    if (property == "exists") EXPECT_TRUE(cell.contains("share_by_mix"));
+    if (property == "steady" && method == "polySAM") {
+      EXPECT_TRUE(cell["holds"].get<bool>());
+    }
+    if (property == "exists") {
+      EXPECT_TRUE(cell.contains("share_by_mix"));
+    }
   }
   EXPECT_EQ(checked, 2);
 }

@@ -61,7 +61,9 @@ TEST(Methods, EveryNameResolvesInAnyCase) {
     const bool arrow = is_method_of<Method>(entry);
     EXPECT_EQ(find_method_entry(entry.id, arrow ? is_method_of<Method> : is_method_of<PoseMethod>), &entry);
     const MethodEntry* other = find_method_entry(entry.id, arrow ? is_method_of<PoseMethod> : is_method_of<Method>);
-    if (other != nullptr) EXPECT_NE(is_method_of<Method>(*other), arrow);
+    if (other != nullptr) {
+      EXPECT_NE(is_method_of<Method>(*other), arrow);
+    }
     EXPECT_EQ(find_method_of<Method>(entry.id) != nullptr, arrow || other != nullptr);
     EXPECT_EQ(find_method_of<PoseMethod>(entry.id) != nullptr, !arrow || other != nullptr);
   }
