@@ -100,22 +100,33 @@ Linear<Pose> near_identity(AuditRandom& r, double eps) {
 // a construction divides by a small number or a power is about to fail.
 template <class Pose>
 PoseTriple<Pose> near_singular(AuditRandom& r) {
-  const double eps = std::exp(r.uniform(std::log(1e-7), std::log(1e-3))) * r.sign();
+  // Every draw in a statement of its own: the order of a call's arguments or
+  // of an operator's operands is the compiler's, and the triples must be the
+  // same whatever builds them.
+  const double magnitude = std::exp(r.uniform(std::log(1e-7), std::log(1e-3)));
+  const double eps = magnitude * r.sign();
   PoseTriple<Pose> k = tame<Pose>(r);
   Pose &A = k[0].pose, &B = k[1].pose, &C = k[2].pose;
   switch (static_cast<int>(r.uniform(0.0, 5.0))) {
     case 0:  // B almost A
-      B = pose_of<Pose>(A.L * near_identity<Pose>(r, eps), A.b + eps * random_vector<Pose>(r, 1.0));
+    {
+      const Vec<Pose> shift = random_vector<Pose>(r, 1.0);
+      B = pose_of<Pose>(A.L * near_identity<Pose>(r, eps), A.b + eps * shift);
       break;
+    }
     case 1:  // B turned from A by almost pi: the edge of the SAM's existence
-      B = compose(
-          pose_of<Pose>(rotation<Pose>(kTurn - std::abs(eps), random_axis<Pose>(r)), random_vector<Pose>(r, 3.0)), A);
+    {
+      const Vec<Pose> shift = random_vector<Pose>(r, 3.0);
+      const auto axis = random_axis<Pose>(r);
+      B = compose(pose_of<Pose>(rotation<Pose>(kTurn - std::abs(eps), axis), shift), A);
       break;
+    }
     case 2: {  // B almost flat: a singular value in 1e-3..1e-1
       const double small = std::exp(r.uniform(std::log(1e-3), std::log(1e-1)));
       Linear<Pose> S = Linear<Pose>::Identity();
       S(0, 0) = small;
-      const Linear<Pose> Q = rotation<Pose>(r.uniform(-kTurn, kTurn), random_axis<Pose>(r));
+      const auto axis = random_axis<Pose>(r);
+      const Linear<Pose> Q = rotation<Pose>(r.uniform(-kTurn, kTurn), axis);
       B.L = A.L * Q * S * Q.transpose();
       break;
     }
@@ -124,8 +135,11 @@ PoseTriple<Pose> near_singular(AuditRandom& r) {
       C.L = A.L * near_identity<Pose>(r, eps);
       break;
     default:  // C almost B
-      C = pose_of<Pose>(B.L * near_identity<Pose>(r, eps), B.b + eps * random_vector<Pose>(r, 1.0));
+    {
+      const Vec<Pose> shift = random_vector<Pose>(r, 1.0);
+      C = pose_of<Pose>(B.L * near_identity<Pose>(r, eps), B.b + eps * shift);
       break;
+    }
   }
   return k;
 }
@@ -156,8 +170,10 @@ Vec<Pose> vec(double x, double y) {
 template <class Pose>
 Pose random_affinity(AuditRandom& r, double turn, double stretch, double shift) {
   using namespace pose_triples;
-  const Linear<Pose> R = rotation<Pose>(r.uniform(-turn, turn), random_axis<Pose>(r));
-  const Linear<Pose> Q = rotation<Pose>(r.uniform(-kTurn, kTurn), random_axis<Pose>(r));
+  const auto r_axis = random_axis<Pose>(r);
+  const Linear<Pose> R = rotation<Pose>(r.uniform(-turn, turn), r_axis);
+  const auto q_axis = random_axis<Pose>(r);
+  const Linear<Pose> Q = rotation<Pose>(r.uniform(-kTurn, kTurn), q_axis);
   Vec<Pose> logs;
   for (int i = 0; i < logs.size(); ++i) logs[i] = r.uniform(-stretch, stretch);
   const Linear<Pose> S = Q * logs.array().exp().matrix().asDiagonal() * Q.transpose();

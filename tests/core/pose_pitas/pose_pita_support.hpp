@@ -135,7 +135,10 @@ Eigen::Matrix<double, N, N> random_rotation(std::mt19937& rng, double max_angle)
   if constexpr (N == 2) {
     return Eigen::Rotation2Dd(angle).toRotationMatrix();
   } else {
-    const Eigen::Vector3d axis(u(rng), u(rng), u(rng));
+    // One draw per statement (a call's arguments have no order), in the
+    // order the tests were written against.
+    const double z = u(rng), y = u(rng), x = u(rng);
+    const Eigen::Vector3d axis(x, y, z);
     return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
   }
 }
@@ -149,8 +152,9 @@ Affine<N> random_step(std::mt19937& rng, double max_angle, double stretch) {
   for (int i = 0; i < N; ++i)
     for (int j = 0; j < N; ++j) E(i, j) = u(rng);
   Affine<N> G;
-  G.L = std::exp(0.5 * u(rng)) * random_rotation<N>(rng, max_angle) *
-        (Eigen::Matrix<double, N, N>::Identity() + stretch * E);
+  const Eigen::Matrix<double, N, N> R = random_rotation<N>(rng, max_angle);
+  const double scale = std::exp(0.5 * u(rng));
+  G.L = scale * R * (Eigen::Matrix<double, N, N>::Identity() + stretch * E);
   for (int i = 0; i < N; ++i) G.b(i) = 3.0 * u(rng);
   return G;
 }
