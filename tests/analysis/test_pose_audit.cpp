@@ -10,6 +10,7 @@
 
 #include "analysis/pose_audit.hpp"
 #include "analysis/pose_audit_report.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::analysis {
 namespace {
@@ -38,7 +39,9 @@ const std::map<PoseProperty, Set>& expected_holders() {
 }
 
 TEST(PoseAudit, EveryCellMatchesTheExpectedTableInBothDimensions) {
+  // Under the sanitizers seed 1 only (the table's test is the same).
   for (std::uint64_t seed : {1u, 2u}) {
+    if (seed == 2 && test::kUnderSanitizers) continue;
     PoseAuditOptions options;
     options.seed = seed;
     options.configs = 45;

@@ -18,6 +18,7 @@
 #include "core/keyframe.hpp"
 #include "core/pitas/motion.hpp"
 #include "pose_pita_support.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::test {
 
@@ -188,7 +189,7 @@ struct Refusals {
 // time), and, within half the span of the ends, is refused exactly where the
 // oracle finds no real power.
 template <template <class> class Pita, int N>
-Refusals refusals_in_wild_triples(const Oracle<N>& oracle, unsigned seed, int count = 200) {
+Refusals refusals_in_wild_triples(const Oracle<N>& oracle, unsigned seed, int count = sample_size(200, 60)) {
   std::mt19937 rng(seed);
   Refusals seen;
   for (int i = 0; i < count; ++i) {
