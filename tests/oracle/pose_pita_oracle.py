@@ -10,9 +10,9 @@ expm, and log H = [[log L, v], [0, 0]] from scipy's logm of L (real_log).
     T(X, A, B, s) = (B o A^-1)^s o X       steady transport (PITA Eq. 24)
 
     P6  L = T(M(A, B, y + z), B, C, z),  R = T(M(C, B, x + y), B, A, x),  D = M(L, R, 1/2)
-        (PITA Eq. 34; R takes the knots in the order c, b, a: READING-NOTES 4)
+        (PITA Eq. 34; R takes the knots in the order c, b, a: docs/paper-notes.md N4)
     P9  D = M(M(A, B, q), M(B, C, r), s)                                  (PITA Eq. D.2)
-    P4  Lc = T(M(A, B, 3/4), C, B, 1/4),  Rc = T(M(C, B, 3/4), A, B, 1/4)  (PITA Eq. 30-32, READING-NOTES 3)
+    P4  Lc = T(M(A, B, 3/4), C, B, 1/4),  Rc = T(M(C, B, 3/4), A, B, 1/4)  (PITA Eq. 30-32, docs/paper-notes.md N3)
         Bezier(P0, P1, P2, s) = M(M(P0, P1, s), M(P1, P2, s), s)        (PITA Eq. 29)
         u = knot_warp(a, b, c, t); D = Bezier(A, Lc, B, 2u) if u <= 1/2
                                      else Bezier(B, Rc, C, 2u - 1)      (PITA Eq. 27-28; warp: N11, N17)
