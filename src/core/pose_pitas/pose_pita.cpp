@@ -5,27 +5,8 @@
 
 namespace pita {
 
-bool is_pose_pita(PoseMethod method) {
-  switch (method) {
-    case PoseMethod::p4:
-    case PoseMethod::p5:
-    case PoseMethod::p6:
-    case PoseMethod::p9:
-      return true;
-    case PoseMethod::sam:
-    case PoseMethod::poly_sam:
-    case PoseMethod::bezier_sam:
-    case PoseMethod::biarc_sam:
-    case PoseMethod::linear:
-    case PoseMethod::four_point:
-    case PoseMethod::rarap:
-    case PoseMethod::asap:
-    case PoseMethod::tsb:
-    case PoseMethod::alexa:
-      return false;
-  }
-  return false;
-}
+// The pose PITAs are the entries of the table with the arrow PITA's mnemonic.
+bool is_pose_pita(PoseMethod method) { return !info(method).mnemonic.empty(); }
 
 template <class Pose>
 PosePita<Pose> make_pose_pita(PoseMethod method, const PoseTriple<Pose>& poses) {
