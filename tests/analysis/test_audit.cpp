@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/audit.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::analysis {
 namespace {
@@ -51,8 +52,10 @@ void expect_table(const AuditReport& report, std::uint64_t seed) {
 
 TEST(Audit, EveryCellMatchesTheCorrectedTableForSeedsOneToTen) {
   // The verdicts must not flip between seeds at the default number of
-  // configurations (issue 14).
-  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+  // configurations (issue 14). Under the sanitizers seeds 1 and 2 (the
+  // table's test is the same; the ten seeds took a minute of CPU there).
+  const std::uint64_t seeds = test::sample_size(10, 2);
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
     AuditOptions options;
     options.seed = seed;
     const AuditReport report = run_audit(options);

@@ -71,7 +71,7 @@ TEST(PoseAudit, TameTriplesAlmostAlwaysHaveAMotion) {
 
 TEST(PoseAudit, SameOutputWhateverTheThreads) {
   PoseAuditOptions options;
-  options.configs = 9;
+  options.configs = test::sample_size(9, 4);
   options.seed = 5;
   options.methods = {M::p6, M::biarc_sam};
   options.jobs = 1;
