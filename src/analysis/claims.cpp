@@ -151,6 +151,7 @@ Source source_of(MeasureKind kind) {
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
     case MeasureKind::scale_max:
+    case MeasureKind::turn_step_time:
       return Source::frame_steps;
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
@@ -232,6 +233,7 @@ std::string_view why_unmeasured(MeasureKind kind) {
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
     case MeasureKind::scale_max:
+    case MeasureKind::turn_step_time:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::handle_shift:

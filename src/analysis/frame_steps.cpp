@@ -30,6 +30,7 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
   const double floor = kAngleVectorFloor * largest_keyframe_magnitude(panel);
   FrameSteps steps;
   const std::vector<double> times = motion::uniform_times(motion, panel.samples);
+  steps.turn_step_time = times.front();
   const std::vector<motion::Frame> frames = motion::sample_arrows(motion, times);
   for (std::size_t k = 1; k < frames.size(); ++k) {
     const Vector before = frames[k - 1].arrow.vector();
@@ -38,7 +39,11 @@ FrameSteps frame_steps(const motion::Stage& stage, std::size_t index) {
     const double m1 = std::max(std::abs(after), floor);
     steps.scale_step = std::max(steps.scale_step, std::abs(std::log(m1 / m0)));
     if (std::abs(before) > floor && std::abs(after) > floor) {
-      steps.turn_step = std::max(steps.turn_step, std::abs(std::arg(after / before)));
+      const double turn = std::abs(std::arg(after / before));
+      if (turn > steps.turn_step) {
+        steps.turn_step = turn;
+        steps.turn_step_time = (times[k - 1] + times[k]) / 2.0;
+      }
     }
   }
   double low = std::numeric_limits<double>::infinity();
@@ -64,6 +69,8 @@ std::optional<double> frame_step(const FrameSteps& steps, scene::MeasureKind kin
       return steps.scale_min;
     case scene::MeasureKind::scale_max:
       return steps.scale_max;
+    case scene::MeasureKind::turn_step_time:
+      return steps.turn_step_time;
     default:
       return std::nullopt;
   }

@@ -5,6 +5,7 @@
 //   - turn step: max_k |arg(v_{k+1} / v_k)|, in [0, pi], between consecutive
 //     frame vectors v = q - p (a flip is pi; a step of more than pi reads as
 //     its complement, as on the page);
+//   - turn step time: the scene time half-way through that largest turn step;
 //   - scale min / max: min_t m(t) / min_k m_k and max_t m(t) / max_k m_k over
 //     dense samples (below 1: the motion shrinks past every keyframe; above
 //     1: it grows past every keyframe).
@@ -26,6 +27,9 @@ struct FrameSteps {
   double turn_step = 0.0;
   double scale_min = 1.0;
   double scale_max = 1.0;
+  // The scene time half-way through the largest turn step (the first of
+  // equal ones): "P2 turns fastest towards the end" (Fig. 24).
+  double turn_step_time = 0.0;
 };
 
 // For the stage's panel `index` (keyframes): steps between its `samples`
@@ -34,9 +38,9 @@ struct FrameSteps {
 FrameSteps frame_steps(const motion::Stage& stage, std::size_t index);
 
 // The number of `steps` that measure `kind` names ("scale-step", ...);
-// nullopt for a measure that is not one of these four.
+// nullopt for a measure that is not one of these five.
 std::optional<double> frame_step(const FrameSteps& steps, scene::MeasureKind kind);
-// Whether `kind` is one of the four.
+// Whether `kind` is one of the five.
 inline bool is_frame_step(scene::MeasureKind kind) { return frame_step(FrameSteps{}, kind).has_value(); }
 
 }  // namespace pita::analysis

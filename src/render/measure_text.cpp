@@ -51,6 +51,7 @@ std::string missing(const scene::MeasureName& name) {
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
     case MeasureKind::scale_max:
+    case MeasureKind::turn_step_time:
       break;  // of the drawn frames (analysis/frame_steps.hpp), by the panel's drawing
   }
   return name.text + ": -";
@@ -134,6 +135,7 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
     case MeasureKind::scale_max:
+    case MeasureKind::turn_step_time:
       break;
   }
   return missing(name);

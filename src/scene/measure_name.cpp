@@ -19,7 +19,7 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 22> kMeasures{{
+constexpr std::array<MeasureEntry, 23> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
@@ -31,6 +31,7 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"turn-step", MeasureKind::turn_step},
     {"scale-min", MeasureKind::scale_min},
     {"scale-max", MeasureKind::scale_max},
+    {"turn-step-t", MeasureKind::turn_step_time},
     {"gain:", MeasureKind::gain, true},
     {"turn:", MeasureKind::turn, true},
     {"jump:", MeasureKind::jump, true},
@@ -47,8 +48,8 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 19;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 17;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 20;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 18;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.

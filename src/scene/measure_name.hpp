@@ -12,7 +12,7 @@
 //       the panel's D(t).w to that of arrow method M (Fig. 5), t finite; in a
 //       claim M may be another panel, "angle:/panels/1@0.25" (docs/reference/check.md "Claims")
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
-//   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
+//   "scale-max", "turn-step-t"                    pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
 //       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
@@ -52,6 +52,7 @@ enum class MeasureKind {
   turn_step,
   scale_min,
   scale_max,       // the drawn frames (analysis/frame_steps.hpp)
+  turn_step_time,  // "turn-step-t": the scene time of the largest turn step
   frame_distance,  // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
   property,  // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
   discrepancy_of,

@@ -144,10 +144,11 @@ TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
 }
 
 TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
-  EXPECT_EQ(refused("ara"),
-            "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
-            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
-            "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\" or \"scale-max\"");
+  EXPECT_EQ(
+      refused("ara"),
+      "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
+      "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
+      "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\", \"scale-max\" or \"turn-step-t\"");
   EXPECT_EQ(refused<PoseLayer>("handle-shift"),
             "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or "
             "\"velocity-jump\"");
