@@ -28,7 +28,7 @@ std::string check_list() {
 }
 
 nlohmann::json finding_json(const lint::Finding& f) {
-  nlohmann::json out = {{"check", f.check}, {"pointer", f.pointer}, {"message", f.message}};
+  nlohmann::json out = {{"check", f.check}, {"pointer", f.pointer}, {"message", f.message}, {"fix", f.fix}};
   if (!f.reason.empty()) out["accepted"] = {{"by", f.allowed_at}, {"reason", f.reason}};
   return out;
 }
@@ -54,8 +54,9 @@ The lint looks at the figure as `pita render` would draw it, in canvas pixels, b
 Its checks:
 {}
 A scene accepts a finding, with the reason, under "lint": {{"allow": [{{"check": "text-over-data",
-"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" (default 0.5) and
-"min_frame_pixels" (default 3) set two thresholds (docs/reference/lint.md "Lint"). `pita check` runs the lint too.
+"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" and "min_motion_share" (default
+0.5) and "min_frame_pixels" (default 3) set three thresholds (docs/reference/lint.md "Lint"). Each
+finding says what to change in the scene ("fix: ..."). `pita check` runs the lint too.
 
 Examples:
   pita lint scenes/*.json

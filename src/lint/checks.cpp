@@ -73,10 +73,13 @@ void text_overlap(const FigureGeometry& figure, const scene::LintSettings&, std:
     if (!has_ink(*texts[j])) continue;
     for (std::size_t i = 0; i < j; ++i) {
       if (!has_ink(*texts[i]) || !intersects(shrunk(texts[i]->box, kSlack), shrunk(texts[j]->box, kSlack))) continue;
-      findings.push_back({"text-overlap", texts[j]->owner,
-                          fmt::format("the text {} overlaps the text {} of {}", quoted(texts[j]->text),
-                                      quoted(texts[i]->text), named(texts[i]->owner)),
-                          "", ""});
+      findings.push_back(
+          {"text-overlap", texts[j]->owner,
+           fmt::format("the text {} overlaps the text {} of {}", quoted(texts[j]->text), quoted(texts[i]->text),
+                       named(texts[i]->owner)),
+           std::string("move one of them (a label layer's \"at\", a legend's \"corner\"), shorten a title, or make the "
+                       "canvas larger (\"canvas\": \"width\", \"height\")"),
+           "", ""});
     }
   }
 }
@@ -87,10 +90,15 @@ void text_over_data(const FigureGeometry& figure, const scene::LintSettings&, st
       if (t.kind != TextKind::label || !has_ink(t)) continue;
       const std::vector<std::string> layers = layers_under(panel, shrunk(t.box, kSlack), t.owner);
       if (layers.empty()) continue;
-      findings.push_back({"text-over-data", t.owner,
-                          fmt::format("the label {} lies over the data of {} in {}", quoted(t.text),
-                                      layer_list(panel, layers), panel.name),
-                          "", ""});
+      findings.push_back(
+          {"text-over-data", t.owner,
+           fmt::format("the label {} lies over the data of {} in {}", quoted(t.text), layer_list(panel, layers),
+                       panel.name),
+           fmt::format("move the label off the data ({}'s \"at\"), or, when the overlap is the point, accept it under "
+                       "\"lint\": {{\"allow\": [{{\"check\": \"text-over-data\", \"pointer\": \"{}\", "
+                       "\"reason\": ...}}]}}",
+                       t.owner, t.owner),
+           "", ""});
     }
   }
 }
@@ -100,10 +108,13 @@ void legend_over_data(const FigureGeometry& figure, const scene::LintSettings&, 
     for (const LegendBox& legend : panel.legends) {
       const std::vector<std::string> layers = layers_under(panel, shrunk(legend.box, kSlack), legend.layer);
       if (layers.empty()) continue;
-      findings.push_back({"legend-over-data", legend.layer,
-                          fmt::format("the legend ({:.0f}x{:.0f} px) lies over the data of {} in {}", legend.box.width,
-                                      legend.box.height, layer_list(panel, layers), panel.name),
-                          "", ""});
+      findings.push_back(
+          {"legend-over-data", legend.layer,
+           fmt::format("the legend ({:.0f}x{:.0f} px) lies over the data of {} in {}", legend.box.width,
+                       legend.box.height, layer_list(panel, layers), panel.name),
+           std::string("put the legend in another corner (its \"corner\"), or leave room for it (\"canvas\": "
+                       "\"margin\", or a larger \"view\")"),
+           "", ""});
     }
   }
 }
@@ -118,7 +129,7 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
            fmt::format("the title {} is {:.0f} px wider than its space ({:.0f} px) and runs {:.0f} "
                        "px beyond it",
                        quoted(t.text), t.box.width - figure.title_cells[k].width, figure.title_cells[k].width, beyond),
-           "", ""});
+           std::string("shorten the title, or widen the canvas (\"canvas\": {\"width\"}) or its columns"), "", ""});
     }
   }
   for (const PanelGeometry& panel : figure.panels) {
@@ -135,10 +146,13 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
     for (const std::string& layer : order) {
       const double beyond = overhang(layers[layer], panel.area);
       if (beyond > kSlack) {
-        findings.push_back({"outside", layer,
-                            fmt::format("the data of {} reaches {:.0f} px beyond the edge of {}, where it is cut off",
-                                        layer, beyond, panel.name),
-                            "", ""});
+        findings.push_back(
+            {"outside", layer,
+             fmt::format("the data of {} reaches {:.0f} px beyond the edge of {}, where it is cut off", layer, beyond,
+                         panel.name),
+             std::string("widen the panel's view (\"canvas\": {\"view\": \"auto\"} fits the drawing, or a larger "
+                         "{\"min\", \"max\"} box) or its \"margin\""),
+             "", ""});
       }
     }
     for (const TextBox& t : panel.texts) {
@@ -148,6 +162,7 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
             {"outside", t.owner,
              fmt::format("the {} {} reaches {:.0f} px beyond the edge of {}, where it is cut off",
                          t.kind == TextKind::legend ? "legend line" : "label", quoted(t.text), beyond, panel.name),
+             std::string("move the text inward (its \"at\" or \"corner\"), or widen the view (\"canvas\": {\"view\"})"),
              "", ""});
       }
     }
@@ -170,8 +185,35 @@ void small_content(const FigureGeometry& figure, const scene::LintSettings& sett
                        "(less than min_content_share, {:.0f}%): it could be drawn {:.1f} times larger",
                        panel.name, 100.0 * content.width / panel.plot.width, 100.0 * content.height / panel.plot.height,
                        100.0 * settings.min_content_share, 1.0 / share),
+           std::string("fit the view to the content (\"canvas\": {\"view\": \"auto\"}, or a {\"min\", \"max\"} box "
+                       "around it), make the canvas smaller, or lower \"lint\": {\"min_content_share\"} and say why"),
            "", ""});
     }
+  }
+}
+
+// The frames alone (patterns, shapes carried to frames): a view fitted to
+// other things (the keyframes' centres, a far point, a plot) can leave the
+// motion a strip of the panel, while the content as a whole fills it.
+void small_motion(const FigureGeometry& figure, const scene::LintSettings& settings, std::vector<Finding>& findings) {
+  for (const PanelGeometry& panel : figure.panels) {
+    Rect motion{0.0, 0.0, -1.0, -1.0};
+    for (const DataShape& s : panel.data) {
+      if (s.frame) motion = united(motion, s.bounds);
+    }
+    if (motion.width < 0.0) continue;  // nothing moves in this panel
+    const double share = std::max(motion.width / panel.plot.width, motion.height / panel.plot.height);
+    if (share >= settings.min_motion_share) continue;
+    findings.push_back(
+        {"small-motion", panel.pointer,
+         fmt::format("the motion of {} (its frames) fills {:.0f}% of its width and {:.0f}% of its height "
+                     "(less than min_motion_share, {:.0f}%): it could be drawn {:.1f} times larger",
+                     panel.name, 100.0 * motion.width / panel.plot.width, 100.0 * motion.height / panel.plot.height,
+                     100.0 * settings.min_motion_share, 1.0 / share),
+         std::string("fit the view to the motion (\"canvas\": {\"view\": {\"min\", \"max\"}} around the frames), "
+                     "move what else the view fits (keyframe centres, far points) into an inset or another panel, or "
+                     "lower \"lint\": {\"min_motion_share\"} and say why"),
+         "", ""});
   }
 }
 
@@ -211,6 +253,9 @@ void short_frame(const FigureGeometry& figure, const scene::LintSettings& settin
            fmt::format("{} of the {} frames of {} in {} are drawn shorter than min_frame_pixels "
                        "({:g} px); frame {} is {:.2g} px",
                        short_ones, total, layer, panel.name, settings.min_frame_pixels, shortest_index, shortest),
+           std::string(
+               "draw fewer, longer frames (fewer \"samples\", a longer handle, or a view closer to the motion), "
+               "or lower \"lint\": {\"min_frame_pixels\"}"),
            "", ""});
     }
   }
@@ -247,10 +292,14 @@ void same_color_series(const FigureGeometry& figure, const scene::LintSettings&,
       if (by_color.size() < 3) continue;
       for (const auto& [color, indices] : by_color) {
         if (indices.size() < 2) continue;
-        findings.push_back({"same-color", layer,
-                            fmt::format("{} colours its items apart, and items {} and {} of it in {} are both {}",
-                                        layer, indices[0], indices[1], panel.name, color),
-                            "", ""});
+        findings.push_back(
+            {"same-color", layer,
+             fmt::format("{} colours its items apart, and items {} and {} of it in {} are both {}", layer, indices[0],
+                         indices[1], panel.name, color),
+             fmt::format("give {} one colour per item in its \"colors\" (or remove \"colors\": the default "
+                         "series gives any number of keyframes or poses distinct colours)",
+                         layer),
+             "", ""});
       }
     }
     // Two layers of one kind, each mainly in one style (colour, width, dash): the same one.
@@ -267,14 +316,15 @@ void same_color_series(const FigureGeometry& figure, const scene::LintSettings&,
                             fmt::format("{} and {} are both \"{}\" layers of {} drawn in {}: a reader cannot tell "
                                         "them apart",
                                         order[i], order[j], a.type, panel.name, main_color(a)),
-                            "", ""});
+                            fmt::format("give {} another \"color\", \"width\" or \"dash\"", order[j]), "", ""});
       }
     }
   }
 }
 
-constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {
-    text_overlap, text_over_data, legend_over_data, outside, small_content, short_frame, same_color_series};
+constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {text_overlap, text_over_data,   legend_over_data,
+                                                                  outside,      small_content,    small_motion,
+                                                                  short_frame,  same_color_series};
 
 }  // namespace
 

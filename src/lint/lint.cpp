@@ -50,7 +50,8 @@ Report lint_figure(const scene::Scene& scene, const render::Figure& figure) {
 
 std::string describe(const Finding& finding) {
   return fmt::format(
-      "{}: {}: {}{}", finding.pointer.empty() ? "(the scene)" : finding.pointer, finding.check, finding.message,
+      "{}: {}: {}; fix: {}{}", finding.pointer.empty() ? "(the scene)" : finding.pointer, finding.check,
+      finding.message, finding.fix,
       finding.reason.empty() ? "" : fmt::format(" (accepted by {}: {})", finding.allowed_at, finding.reason));
 }
 

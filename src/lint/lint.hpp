@@ -19,6 +19,7 @@ struct Finding {
   std::string check;       // a name of scene::kLintChecks
   std::string pointer;     // the layer, title or panel it names ("" = the scene)
   std::string message;     // what is wrong, in canvas pixels
+  std::string fix;         // what to change in the scene: a field, or "lint" to accept it
   std::string reason;      // why the scene accepts it ("" = not accepted)
   std::string allowed_at;  // the accepting entry, "/lint/allow/0"
 };
@@ -33,7 +34,7 @@ struct Report {
 // The lint of a figure built from `scene` (render::build_figure).
 Report lint_figure(const scene::Scene& scene, const render::Figure& figure);
 
-// "/layers/3: text-over-data: the label ..." (and "(accepted: REASON)").
+// "/layers/3: text-over-data: the label ...; fix: ..." (and "(accepted: REASON)").
 std::string describe(const Finding& finding);
 
 }  // namespace pita::lint

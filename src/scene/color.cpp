@@ -1,6 +1,7 @@
 #include "scene/color.hpp"
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -60,9 +61,58 @@ std::optional<Color> parse_hex(std::string_view text) {
   return Color{channels[0], channels[1], channels[2], channels[3]};
 }
 
+// The default series (series_color): the keyframes layer's red, green and
+// blue of old first, then hues apart from them and from each other.
+constexpr std::array<Color, 9> kSeries = {{
+    {0.85, 0.0, 0.0, 1.0},
+    {0.0, 0.6, 0.0, 1.0},
+    {0.0, 0.0, 0.85, 1.0},
+    {0.9, 0.5, 0.0, 1.0},
+    {0.5, 0.0, 0.65, 1.0},
+    {0.0, 0.55, 0.55, 1.0},
+    {0.55, 0.3, 0.05, 1.0},
+    {0.85, 0.0, 0.55, 1.0},
+    {0.45, 0.5, 0.0, 1.0},
+}};
+
+// Hue h (turns), saturation s, value v to RGB (the HSV hexcone).
+Color from_hsv(double h, double s, double v) {
+  const double sector = 6.0 * (h - std::floor(h));
+  const int k = static_cast<int>(sector) % 6;
+  const double f = sector - std::floor(sector);
+  const double p = v * (1.0 - s), q = v * (1.0 - s * f), t = v * (1.0 - s * (1.0 - f));
+  switch (k) {
+    case 0:
+      return {v, t, p, 1.0};
+    case 1:
+      return {q, v, p, 1.0};
+    case 2:
+      return {p, v, t, 1.0};
+    case 3:
+      return {p, q, v, 1.0};
+    case 4:
+      return {t, p, v, 1.0};
+    default:
+      return {v, p, q, 1.0};
+  }
+}
+
 }  // namespace
 
 std::span<const NamedColor> named_colors() { return kNamedColors; }
+
+Color series_color(std::span<const Color> given, std::size_t i) {
+  if (!given.empty()) return given[i % given.size()];
+  if (i < kSeries.size()) return kSeries[i];
+  // Hues a golden angle apart (never the same hue twice), dark enough to read
+  // on white; the value steps through four levels so that hues that round
+  // to one "#rrggbb" at one level differ at the next.
+  const std::size_t n = i - kSeries.size();
+  const double golden = 0.3819660112501051;  // 1 - 1/phi, in turns
+  const double hue = 0.07 + golden * static_cast<double>(n);
+  const double value = 0.5 + 0.08 * static_cast<double>(n % 4);
+  return from_hsv(hue, 0.85, value);
+}
 
 Color parse_color(std::string_view text) {
   if (!text.empty() && text[0] == '#') {

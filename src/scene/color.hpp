@@ -22,4 +22,12 @@ std::span<const NamedColor> named_colors();
 //   "#12345" is not a color: "#" must be followed by 3, 6 or 8 hex digits
 Color parse_color(std::string_view text);
 
+// The colour of the i-th keyframe (or pose) of a "keyframes" ("poses") layer:
+// the layer's own "colors" cycled, or when it gives none (`given` empty) the
+// default series: red, green and blue, then orange, purple, teal, brown,
+// magenta, olive, and after those hues a golden angle apart. The default
+// series never repeats a colour (as "#rrggbb") below kMaxKeyframes, so the
+// keyframes of any scene are told apart without a "colors" field.
+Color series_color(std::span<const Color> given, std::size_t i);
+
 }  // namespace pita::scene

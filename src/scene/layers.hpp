@@ -89,9 +89,8 @@ struct PatternLayer {  // "pattern": the frames D(t_i) as segments
   bool dots = false;               // a dot at each frame's p instead of its segment (Fig. 6)
 };
 
-struct KeyframesLayer {  // "keyframes": A, B, C as arrows with heads and winding spirals
-  std::vector<Color> colors{Color{0.85, 0.0, 0.0, 1.0}, Color{0.0, 0.6, 0.0, 1.0},
-                            Color{0.0, 0.0, 0.85, 1.0}};  // one per keyframe, cycled
+struct KeyframesLayer {       // "keyframes": A, B, C as arrows with heads and winding spirals
+  std::vector<Color> colors;  // one per keyframe, cycled; none: the default series (scene::series_color)
   double width = 2.0;
   double opacity = 1.0;
   bool winding = true;  // draw the spiral whose turns show w
@@ -365,9 +364,8 @@ using Layer =
 // shapes are outlines in the frame of the reference pose, drawn through the
 // pose of each frame.
 
-struct PosesLayer {  // "poses": the shapes at the control poses
-  std::vector<Color> colors{Color{0.85, 0.0, 0.0, 1.0}, Color{0.0, 0.6, 0.0, 1.0},
-                            Color{0.0, 0.0, 0.85, 1.0}};  // one per pose, cycled
+struct PosesLayer {           // "poses": the shapes at the control poses
+  std::vector<Color> colors;  // one per pose, cycled; none: the default series (scene::series_color)
   double width = 2.0;
   double fill_opacity = 0.15;
   // Four-point SAM (SAM Fig. 13): the control poses inserted by the panel's

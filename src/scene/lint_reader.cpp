@@ -14,7 +14,8 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 3> kLintFields = {"min_content_share", "min_frame_pixels", "allow"};
+constexpr std::array<std::string_view, 4> kLintFields = {"min_content_share", "min_motion_share", "min_frame_pixels",
+                                                         "allow"};
 constexpr std::array<std::string_view, 3> kAllowFields = {"check", "pointer", "reason"};
 constexpr std::size_t kMaxAllowed = 64;
 constexpr std::size_t kMaxReason = 400;
@@ -57,6 +58,9 @@ LintSettings read_lint(const JsonReader& reader, const Json& value) {
   LintSettings lint;
   if (const Json* x = JsonReader::member(value, "min_content_share")) {
     lint.min_content_share = reader.number(*x, "/lint/min_content_share", Interval{0.0, 1.0});
+  }
+  if (const Json* x = JsonReader::member(value, "min_motion_share")) {
+    lint.min_motion_share = reader.number(*x, "/lint/min_motion_share", Interval{0.0, 1.0});
   }
   if (const Json* x = JsonReader::member(value, "min_frame_pixels")) {
     lint.min_frame_pixels = reader.number(*x, "/lint/min_frame_pixels", Interval{0.0, 1000.0});

@@ -16,12 +16,14 @@ struct LintCheckInfo {
   std::string_view name;
   std::string_view what;  // for --help, the docs and messages
 };
-inline constexpr std::array<LintCheckInfo, 7> kLintChecks = {{
+inline constexpr std::array<LintCheckInfo, 8> kLintChecks = {{
     {"text-overlap", "two texts overlap"},
     {"text-over-data", "a text lies over the strokes, fills or images of another layer"},
     {"legend-over-data", "a legend's box lies over data"},
     {"outside", "something is drawn beyond its panel or the canvas, and is cut off"},
     {"small-content", "a panel's content fills less than \"min_content_share\" of its width and of its height"},
+    {"small-motion",
+     "a panel's motion (its frames) fills less than \"min_motion_share\" of its width and of its height"},
     {"short-frame", "a pattern's frame, or a pose's shape, is drawn shorter than \"min_frame_pixels\""},
     {"same-color", "two series of a panel (keyframes, poses, two layers of one kind) share a colour"},
 }};
@@ -37,6 +39,7 @@ struct LintAllow {
 
 struct LintSettings {
   double min_content_share = 0.5;  // of a panel's plot area, along its longer side
+  double min_motion_share = 0.5;   // the frames alone, likewise
   double min_frame_pixels = 3.0;   // the shortest frame (or pose shape's diagonal) drawn
   std::vector<LintAllow> allow;
 };

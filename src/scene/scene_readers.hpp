@@ -46,7 +46,7 @@ void read_golden(const JsonReader& reader, const Json& value, Scene::GoldenToler
 template <class LayerType>
 std::vector<Claim> read_claims(const JsonReader& reader, const Json& value, const Scene& scene);
 
-// "lint": {"min_content_share", "min_frame_pixels", "allow": [{"check", "pointer", "reason"}]}.
+// "lint": {"min_content_share", "min_motion_share", "min_frame_pixels", "allow": [{"check", "pointer", "reason"}]}.
 LintSettings read_lint(const JsonReader& reader, const Json& value);
 
 // What every scene ends with, after its panels (scene_tail_reader.cpp):

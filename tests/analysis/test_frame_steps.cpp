@@ -46,7 +46,7 @@ TEST(FrameSteps, ShrinkingAndFlipsOfP1) {
 
 TEST(FrameSteps, P2TurnsFastestInItsLastStep) {
   // P2 blends the windings 0, 1, 3 at knots 0, 1, 2 with the Lagrange
-  // weights (Eq. 10): w(t) = (t^2 + t) / 2, so the five frames at t = 0, 1/2,
+  // weights (PITA Eq. 10): w(t) = (t^2 + t) / 2, so the five frames at t = 0, 1/2,
   // 1, 3/2, 2 have w = 0, 3/8, 1, 15/8, 3; the steps 3/8, 5/8, 7/8, 9/8 grow,
   // the largest is the last, half-way through it t = 7/4 (Fig. 24's P2).
   const scene::Scene scene = scene::parse_scene(R"({"method": "P2", "samples": 5, "keyframes": [

@@ -1,5 +1,7 @@
 // Each check of the lint (src/lint/checks.cpp) on a scene made to trip it,
 // and the same scene with the defect removed, which it must pass.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "lint/checks.hpp"
@@ -101,6 +103,39 @@ TEST(LintChecks, SmallContent) {
   EXPECT_EQ(count(allowed, "small-content"), 0) << listed(allowed);
 }
 
+// The content fills the panel (two labels far apart) but the motion is a
+// speck in its middle: small-motion, not small-content; the scene's lower
+// threshold accepts it.
+TEST(LintChecks, SmallMotion) {
+  const std::string wide = R"({"width": 600, "height": 400, "view": {"min": [-30, -20], "max": [30, 20]}})";
+  const std::string layers = R"("layers": [{"type": "pattern"}, {"type": "label", "text": "far west", "at": [-28, -18]},
+      {"type": "label", "text": "far east", "at": [22, 18]})";
+  const Report small = lint_text(arrow_scene(layers + "]", wide));
+  ASSERT_EQ(count(small, "small-motion"), 1) << listed(small);
+  EXPECT_EQ(count(small, "small-content"), 0) << listed(small);
+  EXPECT_NE(small.findings[0].message.find("could be drawn"), std::string::npos);
+  EXPECT_NE(small.findings[0].fix.find("\"view\""), std::string::npos) << small.findings[0].fix;
+  const Report allowed = lint_text(arrow_scene(layers + R"(], "lint": {"min_motion_share": 0.05})", wide));
+  EXPECT_EQ(count(allowed, "small-motion"), 0) << listed(allowed);
+  // Without the far labels the view is fitted to the motion: nothing to find.
+  EXPECT_EQ(count(lint_text(arrow_scene(R"("layers": [{"type": "pattern"}])")), "small-motion"), 0);
+}
+
+// Every finding says what to change in the scene.
+TEST(LintChecks, EveryFindingHasAFix) {
+  const std::string wide = R"({"width": 600, "height": 400, "view": {"min": [-30, -20], "max": [30, 20]}})";
+  const Report report = lint_text(arrow_scene(
+      R"("title": "a title far too long for a canvas that is only six hundred pixels wide, at eighteen pixels",
+      "layers": [{"type": "pattern"}, {"type": "pattern"}, {"type": "label", "text": "over", "at": [0, 0]},
+      {"type": "trajectory", "point": "p", "color": "#808080"}, {"type": "trajectory", "point": "q", "color": "#808080"}])",
+      wide));
+  ASSERT_GE(report.findings.size(), 4u) << listed(report);
+  for (const Finding& f : report.findings) {
+    EXPECT_FALSE(f.fix.empty()) << f.check << ": " << f.message;
+    EXPECT_NE(describe(f).find("; fix: "), std::string::npos);
+  }
+}
+
 TEST(LintChecks, ShortFrames) {
   // Frames of magnitude 0.01 in a view 10 units wide: under a pixel each.
   const std::string tiny = R"({"method": "P6", "canvas": {"width": 400, "height": 300},
@@ -132,6 +167,16 @@ TEST(LintChecks, SameColorSeries) {
       "layers": [{"type": "keyframes", "colors": ["red", "green", "green", "blue"]}]})");
   ASSERT_EQ(count(keys, "same-color"), 1) << listed(keys);
   EXPECT_NE(keys.findings[0].message.find("items 1 and 2"), std::string::npos) << keys.findings[0].message;
+  // Each message names the field that fixes it.
+  EXPECT_NE(keys.findings[0].fix.find("/layers/0 one colour per item in its \"colors\""), std::string::npos)
+      << keys.findings[0].fix;
+  EXPECT_NE(alike.findings[0].fix.find("\"dash\""), std::string::npos) << alike.findings[0].fix;
+  // The default colours tell any number of keyframes apart: a newcomer's
+  // first four-keyframe scene, with no "colors" and no "layers", is clean.
+  const Report four = lint_text(R"({"method": "P9", "canvas": {"width": 600, "height": 400},
+      "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [2, 1], "m": 1, "w": 0},
+                    {"t": 2, "p": [4, 0], "m": 1, "w": 0}, {"t": 3, "p": [6, 1], "m": 1, "w": 0}]})");
+  EXPECT_EQ(count(four, "same-color"), 0) << listed(four);
 }
 
 }  // namespace

@@ -43,9 +43,11 @@ TEST(Lint, AnEntryWithoutPointerAcceptsTheCheckEverywhere) {
   EXPECT_TRUE(report.clean());
 }
 
-TEST(Lint, DescribeNamesPointerCheckAndMessage) {
-  EXPECT_EQ(describe({"outside", "/layers/2", "cut off", "", ""}), "/layers/2: outside: cut off");
-  EXPECT_EQ(describe({"small-content", "", "small", "", ""}), "(the scene): small-content: small");
+TEST(Lint, DescribeNamesPointerCheckMessageAndFix) {
+  EXPECT_EQ(describe({"outside", "/layers/2", "cut off", "widen the view", "", ""}),
+            "/layers/2: outside: cut off; fix: widen the view");
+  EXPECT_EQ(describe({"small-content", "", "small", "zoom in", "", ""}),
+            "(the scene): small-content: small; fix: zoom in");
 }
 
 }  // namespace

@@ -1,10 +1,15 @@
 // Colors of a scene (src/scene/color.cpp).
+#include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "scene/color.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::scene {
 namespace {
@@ -60,6 +65,35 @@ TEST(Color, RefusesOtherText) {
             "of black, white, red, green, blue, gray, grey, orange, purple, brown, magenta, cyan, "
             "yellow");
   EXPECT_EQ(color_error("").substr(0, 16), "unknown color \"\"");
+}
+
+// The default series of keyframe and pose colours: the red, green and blue
+// of old first; no two alike as "#rrggbb" for as many keyframes as a scene
+// may have; each dark enough to read on white (luma under 0.75); a layer's
+// own colours are cycled as given.
+TEST(SeriesColor, DefaultSeriesNeverRepeatsAndReadsOnWhite) {
+  EXPECT_EQ(series_color({}, 0), (Color{0.85, 0.0, 0.0, 1.0}));
+  EXPECT_EQ(series_color({}, 1), (Color{0.0, 0.6, 0.0, 1.0}));
+  EXPECT_EQ(series_color({}, 2), (Color{0.0, 0.0, 0.85, 1.0}));
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(kMaxKeyframes); ++i) {
+    const Color c = series_color({}, i);
+    const std::string hex =
+        fmt::format("#{:02x}{:02x}{:02x}", static_cast<int>(std::lround(255 * c.r)),
+                    static_cast<int>(std::lround(255 * c.g)), static_cast<int>(std::lround(255 * c.b)));
+    EXPECT_TRUE(seen.insert(hex).second) << "keyframe " << i << " repeats " << hex;
+    EXPECT_LT(0.299 * c.r + 0.587 * c.g + 0.114 * c.b, 0.75) << "keyframe " << i << " is " << hex;
+    for (double channel : {c.r, c.g, c.b}) {
+      EXPECT_GE(channel, 0.0);
+      EXPECT_LE(channel, 1.0);
+    }
+  }
+}
+
+TEST(SeriesColor, GivenColoursAreCycled) {
+  const std::vector<Color> given{parse_color("black"), parse_color("orange")};
+  EXPECT_EQ(series_color(given, 0), given[0]);
+  EXPECT_EQ(series_color(given, 3), given[1]);
 }
 
 }  // namespace

@@ -6,13 +6,14 @@
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
 #include "render/spiral.hpp"
+#include "scene/color.hpp"
 
 namespace pita::render::detail {
 
 void PanelBuilder::add(const scene::KeyframesLayer& layer) {
   for (std::size_t i = 0; i < keyframes_.size(); ++i) {
     const Arrow& key = keyframes_[i].arrow;
-    const Color color = layer.colors[i % layer.colors.size()];
+    const Color color = scene::series_color(layer.colors, i);
     const LineStyle line{color, layer.width, layer.opacity, {}};
     if (layer.winding) {
       const Point center = layer.spiral_center == scene::SpiralCenter::start ? key.p : 0.5 * (key.p + key.q());

@@ -8,6 +8,7 @@
 
 #include "render/layer_cost.hpp"
 #include "render/panel_builder.hpp"
+#include "scene/color.hpp"
 
 namespace pita::render::detail {
 
@@ -22,7 +23,7 @@ void PanelBuilder::add(const scene::LegendLayer& layer) {
   }
   for (std::size_t i = 0; i < keyframes_.size(); ++i) {
     legend.entries.push_back(
-        {colors.colors[i % colors.colors.size()], fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
+        {scene::series_color(colors.colors, i), fmt::format("{}  t = {}", keyframe_name(i), keyframes_[i].t)});
   }
   // A panel of points: one entry per curve drawn, in its colour.
   for (const scene::Layer& other : scene::layers_of<scene::Layer>(scene_, panel_).layers) {

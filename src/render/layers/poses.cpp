@@ -11,6 +11,7 @@
 #include "render/layer_cost.hpp"
 #include "render/layers/pose_layers.hpp"
 #include "render/solid_faces.hpp"
+#include "scene/color.hpp"
 
 namespace pita::render {
 
@@ -65,7 +66,7 @@ void draw_pose_layer(PosePanel<Pose>& panel, const scene::PosesLayer& layer) {
     }
   }
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    draw_pose_body(panel, layer, static_cast<int>(i), poses[i].pose, layer.colors[i % layer.colors.size()], faces);
+    draw_pose_body(panel, layer, static_cast<int>(i), poses[i].pose, scene::series_color(layer.colors, i), faces);
   }
   if constexpr (in_space_v<Pose>) paint_faces(panel, std::move(faces), false);
 }
