@@ -121,6 +121,7 @@ class LintFinding(NamedTuple):
     check: str
     pointer: str
     message: str
+    fix: str
     accepted: bool
 
 class CheckResult(NamedTuple):

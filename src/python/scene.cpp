@@ -213,7 +213,7 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
   const py::module_ collections = py::module_::import("collections");
   const py::object file_check = collections.attr("namedtuple")("FileCheck", "kind golden verdict detail");
   const py::object claim = collections.attr("namedtuple")("ClaimOutcome", "pointer says held measured");
-  const py::object finding = collections.attr("namedtuple")("LintFinding", "check pointer message accepted");
+  const py::object finding = collections.attr("namedtuple")("LintFinding", "check pointer message fix accepted");
   const py::object outcome =
       collections.attr("namedtuple")("CheckResult", "passes matches claims_hold legible files claims lint");
   py::list files, claims, lint;
@@ -225,7 +225,7 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
   }
   for (const analysis::ClaimOutcome& c : result.claims) claims.append(claim(c.pointer, c.says, c.held, c.measured));
   for (const lint::Finding& f : result.lint.findings) {
-    lint.append(finding(f.check, f.pointer, f.message, !f.reason.empty()));
+    lint.append(finding(f.check, f.pointer, f.message, f.fix, !f.reason.empty()));
   }
   return outcome(result.passes(), result.matches(), result.claims_hold(), result.legible(), files, claims, lint);
 }
