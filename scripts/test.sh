@@ -6,9 +6,11 @@
 #   scripts/test.sh --sanitize   the same suite in build-sanitize/: clang with
 #                                ASan + UBSan (every report fatal, leaks
 #                                included), plus the fuzz targets' replays;
-#                                but the Slurm cluster test (label slurm),
-#                                which tests Slurm, not memory: the Release
-#                                step runs it
+#                                but the tests of labels slurm (the cluster),
+#                                oracle (numbers against SciPy) and checks
+#                                (the docs' text, the format of the sources),
+#                                which test numbers and text, not memory: the
+#                                Release step runs them
 #   scripts/test.sh --quick [LAYER...]
 #                                the edit loop: builds only the unit tests of
 #                                the layers named (io core text scene motion analysis
@@ -40,7 +42,7 @@ done
 case "$mode" in
   sanitize)
     pita_build_sanitize
-    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" -LE '^slurm$' ;;
+    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" -LE '^(slurm|oracle|checks)$' ;;
   quick)
     if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
     pita_build_tests "${layers[@]/#/test_}"

@@ -16,6 +16,7 @@
 
 #include "analysis/sam3d_existence.hpp"
 #include "core/affine_power_of_space.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::analysis {
 namespace {
@@ -141,9 +142,10 @@ TEST(Sam3dExistence, QuarterTurnBoundIsTheOneThirdOfTheIdentity) {
     }
     return true;
   };
+  EXPECT_FALSE(find_no_sam(kPi / 4.0, 0.33, options).has_value());
+  if (test::kUnderSanitizers) return;  // the recount runs Eigen alone: the Release suite checks it
   EXPECT_TRUE(brute_force_all(0.33));
   EXPECT_FALSE(brute_force_all(0.34));
-  EXPECT_FALSE(find_no_sam(kPi / 4.0, 0.33, options).has_value());
 }
 
 TEST(Sam3dExistence, FoundConfigurationHasNoSam) {
@@ -253,6 +255,7 @@ TEST(Sam3dExistence, CurveAgreesWithABruteForceRecount) {
     }
     return true;
   };
+  if (test::kUnderSanitizers) return;  // the recount runs Eigen alone: the Release suite checks it
   EXPECT_TRUE(all_have_a_log(p));
   EXPECT_FALSE(all_have_a_log(p + 0.01));
 }
