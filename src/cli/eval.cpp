@@ -144,11 +144,13 @@ std::string chain_list() {
   return list;
 }
 
-// "\"start\" (default) | \"midpoint\"": an option's values, the first the default.
-std::string choices(std::span<const std::string_view> names) {
+// "\"start\" (default) | \"midpoint\"": an option's values, its default
+// marked (core/pitas/method_options.hpp: the default MethodOptions{} gives).
+std::string choices(MethodOption option) {
+  const OptionChoices about = option_choices(option);
   std::string list;
-  for (const std::string_view name : names) {
-    list += fmt::format("{}\"{}\"{}", list.empty() ? "" : " | ", name, list.empty() ? " (default)" : "");
+  for (const std::string_view name : about.names) {
+    list += fmt::format("{}\"{}\"{}", list.empty() ? "" : " | ", name, name == about.default_name ? " (default)" : "");
   }
   return list;
 }
@@ -161,6 +163,9 @@ std::string readers(MethodOption option) {
   }
   return list;
 }
+
+// path_mean and magnitude_mean are listed once, on one line.
+static_assert(option_choices(kPathMeanOption).default_name == option_choices(kMagnitudeMeanOption).default_name);
 
 std::string eval_footer() {
   return R"(
@@ -197,19 +202,20 @@ Scene format (JSON; schema/scene.schema.json describes every field):
          ease_names() + R"(
                frames still report the scene time t they were asked for
   options      anchor ()" +
-         readers(kAnchorOption) + "): " + choices(kAnchorNames) + R"(;
+         readers(kAnchorOption) + "): " + choices(kAnchorOption) + R"(;
                path_mean, magnitude_mean ()" +
          readers(kPathMeanOption) + R"(, and every chain's
                steady morphs): )" +
-         choices(kMeanNames) + R"(;
+         choices(kPathMeanOption) + R"(;
                knots (every three-keyframe method): )" +
-         choices(kKnotOrderNames) + R"(
+         choices(kKnotsOption) + R"(
                ("as-given": three keyframes handed to the method in the order given,
                knots distinct in any order: order-independence, Sec. 4);
                permutation ()" +
-         readers(kPermutationOption) + R"(): )" + choices(kPermutationNames) + R"(;
+         readers(kPermutationOption) + R"(): )" + choices(kPermutationOption) + R"(;
                symmetrize ()" +
-         readers(kSymmetrizeOption) + R"(): true averages with the time reverse
+         readers(kSymmetrizeOption) + R"(): true averages with the time reverse (default )" +
+         std::string(option_choices(kSymmetrizeOption).default_name) + R"()
 
 Methods:
 )" + methods_table<Method>() +

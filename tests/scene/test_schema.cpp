@@ -718,11 +718,18 @@ TEST(SceneSchemaValidation, OptionNamesMatchTheParser) {
   EXPECT_EQ(schema.at("definitions").at("mean").at("enum"), names(kMeanNames));
   EXPECT_EQ(options.at("knots").at("enum"), names(kKnotOrderNames));
   EXPECT_EQ(options.at("permutation").at("enum"), names(kPermutationNames));
-  // The defaults: the first name, as MethodOptions{} has it.
-  EXPECT_EQ(options.at("anchor").at("default"), std::string(kAnchorNames[0]));
-  EXPECT_EQ(options.at("permutation").at("default"), std::string(kPermutationNames[0]));
-  EXPECT_EQ(MethodOptions{}.permutation, kPermutations[0]);
-  EXPECT_EQ(MethodOptions{}.anchor, kAnchors[0]);
+  // Every option's default, as MethodOptions{} has it (option_choices: not
+  // always the first name; the means' is "geometric").
+  for (const MethodOptionKey& key : kMethodOptionKeys) {
+    const std::string_view expected = option_choices(key.option).default_name;
+    const nlohmann::json& given = options.at(std::string(key.name)).at("default");
+    if (key.option == kSymmetrizeOption) {
+      EXPECT_EQ(given.get<bool>(), expected == "true") << key.name;
+    } else {
+      EXPECT_EQ(given, std::string(expected)) << key.name;
+    }
+  }
+  EXPECT_EQ(option_choices(kPathMeanOption).default_name, "geometric");  // steady (Sec. 2.7)
 }
 
 // 3D pose scenes ("dimension": 3): the schema's spacePoseScene and the

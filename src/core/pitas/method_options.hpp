@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <string_view>
 
 #include "core/mean_kind.hpp"
@@ -85,6 +86,46 @@ inline constexpr std::string_view permutation_name(Permutation p) {
     if (kPermutations[i] == p) return kPermutationNames[i];
   }
   return kPermutationNames[0];
+}
+
+inline constexpr std::array<std::string_view, 2> kBooleanNames = {"false", "true"};
+
+// The name of `value` among `names` (each name beside its value, as above).
+template <class E, std::size_t N>
+constexpr std::string_view name_of(const std::array<std::string_view, N>& names, const std::array<E, N>& values,
+                                   E value) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (values[i] == value) return names[i];
+  }
+  return {};
+}
+
+// An option's values, by name, and the one a method gets when the scene
+// gives none: read from MethodOptions{} itself, so that `pita eval --help`,
+// the reference and the schema (each checked against this by a test) say
+// what the code does.
+struct OptionChoices {
+  std::span<const std::string_view> names;
+  std::string_view default_name;
+};
+
+constexpr OptionChoices option_choices(MethodOption option) {
+  constexpr MethodOptions defaults{};
+  switch (option) {
+    case kAnchorOption:
+      return {kAnchorNames, name_of(kAnchorNames, kAnchors, defaults.anchor)};
+    case kPathMeanOption:
+      return {kMeanNames, name_of(kMeanNames, kMeans, defaults.path_mean)};
+    case kMagnitudeMeanOption:
+      return {kMeanNames, name_of(kMeanNames, kMeans, defaults.magnitude_mean)};
+    case kKnotsOption:
+      return {kKnotOrderNames, name_of(kKnotOrderNames, kKnotOrders, defaults.knots)};
+    case kPermutationOption:
+      return {kPermutationNames, name_of(kPermutationNames, kPermutations, defaults.permutation)};
+    case kSymmetrizeOption:
+      return {kBooleanNames, kBooleanNames[defaults.symmetrize ? 1 : 0]};
+  }
+  return {};
 }
 
 // `to` with the fields of `from` named by the bits of `given`.
