@@ -83,6 +83,23 @@ double property_value(const motion::Stage& stage, std::size_t panel, const scene
                     stage.panel(panel).keys);
 }
 
+// The guess named measure.parameter of the panel's "guesses" layers (its
+// own layers, else the scene's), or a SceneError naming those it has.
+const scene::Guess& guess_named(const motion::Stage& stage, std::size_t panel, const scene::MeasureName& measure,
+                                const std::string& pointer) {
+  std::vector<std::string_view> names;
+  for (const scene::Layer& layer : scene::layers_of<scene::Layer>(stage.scene(), stage.panel(panel)).layers) {
+    const auto* guesses = std::get_if<scene::GuessesLayer>(&layer);
+    if (guesses == nullptr) continue;
+    for (const scene::Guess& guess : guesses->guesses) {
+      if (guess.name == measure.parameter) return guess;
+      names.push_back(guess.name);
+    }
+  }
+  if (names.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no \"guesses\" layer");
+  unmeasured(stage, pointer, panel, measure, fmt::format("its guesses are named {}", fmt::join(names, ", ")));
+}
+
 }  // namespace
 
 Measurer::Measurer(const motion::Stage& stage) : stage_(&stage), measures_(stage.size()), steps_(stage.size()) {}
@@ -155,6 +172,9 @@ Source source_of(MeasureKind kind) {
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::handle_shift:
+    case MeasureKind::knot_distance:
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:
       return Source::comparison;
     case MeasureKind::property:
       return Source::property;
@@ -175,18 +195,31 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (!kept) kept = frame_steps(stage, panel);
       return *frame_step(*kept, measure.kind);
     }
-    case Source::comparison:  // with another panel (angle, frame-distance) or method
+    case Source::comparison:  // with another panel (angle, frame-distance), method or drawn arrow
       // frame-distance compares poses too: a pose scene's panels are all of its kind.
       if (measure.kind == MeasureKind::frame_distance &&
           (std::holds_alternative<scene::PlanePoseKeys>(stage.panel(panel).keys) ||
            std::holds_alternative<scene::SpacePoseKeys>(stage.panel(panel).keys))) {
+        if (!measure.panel) {
+          unmeasured(stage, pointer, panel, measure,
+                     "\"frame-distance:M\" compares with an arrow method, in arrow scenes; compare with "
+                     "another panel, \"frame-distance:/panels/K\"");
+        }
         return frame_distance(stage, panel, *measure.panel);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::frame_distance) {
+        return measure.panel ? frame_distance(stage, panel, *measure.panel)
+                             : frame_distance(stage, panel, measure.method);
+      }
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);
+      }
+      if (measure.kind == MeasureKind::knot_distance) return knot_distance(stage, panel);
+      if (measure.kind == MeasureKind::guess_distance || measure.kind == MeasureKind::guess_discrepancy) {
+        return guess_gap(stage, panel, guess_named(stage, panel, measure, pointer),
+                         measure.kind == MeasureKind::guess_discrepancy);
       }
       if (scene::figure_of<scene::KeyframeKeys>(stage.panel(panel)).shapes.empty()) {
         unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
@@ -235,6 +268,9 @@ std::string_view why_unmeasured(MeasureKind kind) {
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::handle_shift:
+    case MeasureKind::knot_distance:
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:
     case MeasureKind::property:
       break;
   }

@@ -19,7 +19,7 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 22> kMeasures{{
+constexpr std::array<MeasureEntry, 25> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
@@ -31,12 +31,15 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"turn-step", MeasureKind::turn_step},
     {"scale-min", MeasureKind::scale_min},
     {"scale-max", MeasureKind::scale_max},
+    {"knot-distance", MeasureKind::knot_distance},
     {"gain:", MeasureKind::gain, true},
     {"turn:", MeasureKind::turn, true},
     {"jump:", MeasureKind::jump, true},
     {"angle:", MeasureKind::angle, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
+    {"guess-distance:", MeasureKind::guess_distance, true},
+    {"guess-discrepancy:", MeasureKind::guess_discrepancy, true},
     // Both families': a claim measures a property of pita audit (or pita
     // audit poses) on the panel's three keyframes or poses, or compares the
     // frames of two panels of an arrow scene, or the poses of two panels of a
@@ -47,8 +50,8 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 19;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 17;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 22;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 20;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -66,8 +69,9 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
-      "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M "
+      "an arrow method), \"guess-distance:G\" and \"guess-discrepancy:G\" (G a guess of the panel's "
+      "\"guesses\" layer) and \"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
 
 template <>
@@ -179,10 +183,21 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
                          quoted_choices(kPredictors));
     }
     measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::guess_distance || found->kind == MeasureKind::guess_discrepancy) {
+    // The name is looked up in the panel's "guesses" layers when measured.
+    if (rest.empty()) return fmt::format("\"{}\" must be \"{}G\", G the name of a guess", text, found->name);
+    measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
     const std::optional<std::size_t> panel = panel_index(rest);
-    if (!panel) return fmt::format("\"{}\" must be \"frame-distance:/panels/K\", K a panel's index", text);
+    const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
+    if (!panel && named == nullptr) {
+      return fmt::format(
+          "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M an arrow "
+          "method",
+          text);
+    }
     measure.panel = panel;
+    if (named != nullptr) measure.method = *named;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);

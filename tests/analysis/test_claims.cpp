@@ -202,6 +202,44 @@ TEST(Claims, DiscrepancyOfOnePredictorAndWhen) {
   EXPECT_NE(arrows.discrepancy[0].max, arrows.discrepancy[1].max);
 }
 
+// "frame-distance:M" (another method through the panel's keyframes),
+// "knot-distance" and "guess-distance:G" / "guess-discrepancy:G" (a guess of
+// the panel's "guesses" layer; tests/analysis/test_comparison.cpp has their
+// closed forms). Panel 1's P1 passes its flipped midpoint, its vector
+// vanishing at t = (1 - 1/sqrt 2)/2, where P3's log-polar vector, turning
+// instead, is 2 long: the frames part by 2 (1.9999 at the 201 times).
+TEST(Claims, AnotherMethodTheKnotsAndAGuess) {
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "frame-distance:P1", "below": 1e-15})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "frame-distance:P3", "near": 2, "within": 1e-3})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "knot-distance", "below": 1e-12})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "knot-distance", "below": 1e-12})").held);
+  const auto guessed = [](const std::string& claim) {
+    return check_claims(motion::Stage(scene::parse_scene(fmt::format(R"({{"method": "SMA", "keyframes": [
+        {{"t": 0, "p": [0, 0], "m": 1, "w": 0}}, {{"t": 1, "p": [3, 1], "m": 2, "w": 1.2}}],
+        "layers": [{{"type": "pattern"}}, {{"type": "guesses", "guesses": [
+          {{"t": 0, "p": [0.5, 0], "q": [1.5, 0], "name": "L"}}, {{"t": 1, "p": [3, 1.25], "m": 2, "w": 1.2, "name": "R"}}]}}],
+        "claims": [{}]}})",
+                                                                     claim),
+                                                         "test.json")));
+  };
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-distance:L", "near": 0.5, "within": 1e-12})").at(0).held);
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-distance:R", "near": 0.25, "within": 1e-12})").at(0).held);
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-discrepancy:L", "above": 0.01})").at(0).held);
+  try {
+    guessed(R"({"says": "s", "measure": "guess-distance:E", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/measure");
+    EXPECT_NE(error.reason().find("its guesses are named L, R"), std::string::npos) << error.reason();
+  }
+  try {
+    only(R"({"says": "s", "panel": 0, "measure": "guess-distance:L", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(error.reason().find("the panel has no \"guesses\" layer"), std::string::npos) << error.reason();
+  }
+}
+
 TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
       {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}]})",
