@@ -136,6 +136,10 @@ double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t
       stage.panel(index).keys);
 }
 
+double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
+  return arrow_distance(mine, theirs);
+}
+
 double frame_distance(const motion::Stage& stage, std::size_t index, Method other) {
   const motion::SceneMotion& mine = stage.motion(index);
   (void)mine.arrows();  // NoMotion unless the panel has keyframes

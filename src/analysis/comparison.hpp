@@ -64,6 +64,9 @@ inline constexpr int kFrameDistanceSamples = 201;
 // points); 0 for the panel itself.
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
+// The same between two motions of keyframes (a panel's, a layer's).
+double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs);
+
 // The same against method `other` through the panel's keyframes (its
 // options and timing too, as "angle:M@t" and a "compare" layer take them):
 // how far P10 pops from P3 (appendix B, Fig. B.30); 0 for the panel's own

@@ -69,8 +69,9 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M "
-      "an arrow method), \"guess-distance:G\" and \"guess-discrepancy:G\" (G a guess of the panel's "
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or "
+      "\"frame-distance:/panels/K/layers/L\", the motion that layer draws, or \"frame-distance:M\", M an arrow "
+      "method), \"guess-distance:G\" and \"guess-discrepancy:G\" (G a guess of the panel's "
       "\"guesses\" layer) and \"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
 
@@ -91,6 +92,9 @@ constexpr std::array<std::string_view, 3> kPredictors = {"previous", "average", 
 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
 constexpr std::string_view kPanelsPrefix = "/panels/";
+
+// "/panels/1/layers/4": a layer of another panel, in "frame-distance:".
+constexpr std::string_view kLayersInfix = "/layers/";
 
 // "/panels/3" -> 3; nullopt for anything else.
 std::optional<std::size_t> panel_index(std::string_view pointer) {
@@ -188,7 +192,18 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (rest.empty()) return fmt::format("\"{}\" must be \"{}G\", G the name of a guess", text, found->name);
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
-    const std::optional<std::size_t> panel = panel_index(rest);
+    // "/panels/K", "/panels/K/layers/L" or a method.
+    const std::size_t layers = rest.starts_with(kPanelsPrefix) ? rest.find(kLayersInfix) : std::string_view::npos;
+    const std::optional<std::size_t> panel = panel_index(rest.substr(0, layers));
+    if (panel && layers != std::string_view::npos) {
+      std::size_t layer = 0;
+      const std::string_view index = rest.substr(layers + kLayersInfix.size());
+      const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), layer);
+      if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
+        return fmt::format("\"{}\" must be \"frame-distance:/panels/K/layers/L\", L a layer's index", text);
+      }
+      measure.layer = layer;
+    }
     const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
     if (!panel && named == nullptr) {
       return fmt::format(

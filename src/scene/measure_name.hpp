@@ -16,7 +16,9 @@
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
 //       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp);
 //       in arrow scenes also "frame-distance:M", M an arrow method: from the
-//       frames of M through the panel's keyframes (appendix B, Fig. B.30)
+//       frames of M through the panel's keyframes (appendix B, Fig. B.30),
+//       and "frame-distance:/panels/K/layers/L": from the motion that layer
+//       of panel K draws (Fig. D.35's variants, each a layer)
 //   "knot-distance"                               arrow scenes: how far the panel's
 //       frames at its knots are from its keyframes (0 when it interpolates them)
 //   "guess-distance:G", "guess-discrepancy:G"     arrow scenes, in a claim: the
@@ -98,6 +100,10 @@ struct MeasureName {
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time
+  // frame-distance: a layer of that panel instead ("/panels/1/layers/4"), the
+  // motion it draws (a pattern or trajectory layer's own method or options,
+  // a compare layer's method).
+  std::optional<std::size_t> layer;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

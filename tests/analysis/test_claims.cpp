@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/claims.hpp"
+#include "analysis/comparison.hpp"
 #include "analysis/measure.hpp"
 #include "scene/scene.hpp"
 
@@ -237,6 +238,57 @@ TEST(Claims, AnotherMethodTheKnotsAndAGuess) {
     FAIL() << "no error";
   } catch (const scene::SceneError& error) {
     EXPECT_NE(error.reason().find("the panel has no \"guesses\" layer"), std::string::npos) << error.reason();
+  }
+}
+
+// "frame-distance:/panels/K/layers/L" and a claim's "layer": the motions
+// layers draw, each its own method through the panel's keyframes (N57), are
+// as far apart as a panel and the method (tests/analysis/test_comparison.cpp).
+TEST(Claims, TheMotionsLayersDraw) {
+  const auto layered = [](const std::string& claim) {
+    return check_claims(motion::Stage(scene::parse_scene(fmt::format(R"({{"method": "P1", "keyframes": [
+        {{"t": 0, "p": [0, 0], "m": 0.6, "w": 0.1}}, {{"t": 0.5, "p": [0, 0], "m": 2.4, "w": 1.6}},
+        {{"t": 1, "p": [0, 0], "m": 1.2, "w": 3.3}}],
+        "layers": [{{"type": "pattern", "method": "P3"}}, {{"type": "trajectory", "point": "q", "method": "P1"}},
+                   {{"type": "keyframes"}}],
+        "claims": [{}]}})",
+                                                                     claim),
+                                                         "test.json")));
+  };
+  const scene::Scene plain = scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 0.6, "w": 0.1}, {"t": 0.5, "p": [0, 0], "m": 2.4, "w": 1.6},
+      {"t": 1, "p": [0, 0], "m": 1.2, "w": 3.3}]})",
+                                                "test.json");
+  const double expected = frame_distance(motion::Stage(plain), 0, Method::P3);
+  EXPECT_GT(expected, 0.1);
+  const std::string near = fmt::format(R"("near": {:.17g}, "within": 1e-12)", expected);
+  EXPECT_TRUE(
+      layered(fmt::format(R"({{"says": "s", "layer": 0, "measure": "frame-distance:/panels/0/layers/1", {}}})", near))
+          .at(0)
+          .held);
+  EXPECT_TRUE(
+      layered(fmt::format(R"({{"says": "s", "measure": "frame-distance:/panels/0/layers/0", {}}})", near)).at(0).held);
+  const ClaimOutcome same =
+      layered(R"({"says": "s", "layer": 1, "measure": "frame-distance:/panels/0", "below": 1e-15})").at(0);
+  EXPECT_TRUE(same.held);
+  EXPECT_NE(same.measured.find("of layer 1 of the scene (P1"), std::string::npos) << same.measured;
+  for (const char* bad : {R"({"says": "s", "layer": 2, "measure": "frame-distance:/panels/0", "below": 1})",
+                          R"({"says": "s", "measure": "frame-distance:/panels/0/layers/3", "below": 1})"}) {
+    try {
+      layered(bad);
+      ADD_FAILURE() << "no error: " << bad;
+    } catch (const scene::SceneError& error) {
+      EXPECT_EQ(error.pointer(), "/claims/0/measure");
+      EXPECT_TRUE(error.reason().find("draws no motion of its own") != std::string::npos ||
+                  error.reason().find("it has no layer 3 (it draws 3 layers)") != std::string::npos)
+          << error.reason();
+    }
+  }
+  try {
+    layered(R"({"says": "s", "layer": 0, "measure": "turning", "below": 1})");
+    ADD_FAILURE() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/layer");
   }
 }
 

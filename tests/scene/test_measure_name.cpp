@@ -88,6 +88,13 @@ TEST(MeasureName, FrameDistanceToAMethodGuessesAndKnots) {
   EXPECT_EQ(p10.method, Method::P10);
   EXPECT_FALSE(p10.panel);
   EXPECT_EQ(accepted("frame-distance:La-LP").method, Method::P6);
+  const MeasureName layer = accepted("frame-distance:/panels/1/layers/4");
+  EXPECT_EQ(layer.panel, std::optional<std::size_t>(1));
+  EXPECT_EQ(layer.layer, std::optional<std::size_t>(4));
+  EXPECT_FALSE(accepted("frame-distance:/panels/1").layer);
+  for (const char* bad : {"frame-distance:/panels/1/layers/", "frame-distance:/panels/1/layers/x"}) {
+    EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K/layers/L\""), std::string::npos) << bad;
+  }
   EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M an arrow method"), std::string::npos);
   const MeasureName guess = accepted("guess-discrepancy:L");
   EXPECT_EQ(guess.kind, MeasureKind::guess_discrepancy);
