@@ -106,6 +106,32 @@ std::optional<std::size_t> panel_index(std::string_view pointer) {
   return k;
 }
 
+// "frame-distance:" and `rest`, "/panels/K", "/panels/K/layers/L" or an
+// arrow method, into `measure`; why not otherwise.
+std::optional<std::string> parse_frame_distance(std::string_view text, std::string_view rest, MeasureName& measure) {
+  const std::size_t layers = rest.starts_with(kPanelsPrefix) ? rest.find(kLayersInfix) : std::string_view::npos;
+  const std::optional<std::size_t> panel = panel_index(rest.substr(0, layers));
+  if (panel && layers != std::string_view::npos) {
+    std::size_t layer = 0;
+    const std::string_view index = rest.substr(layers + kLayersInfix.size());
+    const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), layer);
+    if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
+      return fmt::format("\"{}\" must be \"frame-distance:/panels/K/layers/L\", L a layer's index", text);
+    }
+    measure.layer = layer;
+  }
+  const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
+  if (!panel && named == nullptr) {
+    return fmt::format(
+        "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M an arrow "
+        "method",
+        text);
+  }
+  measure.panel = panel;
+  if (named != nullptr) measure.method = *named;
+  return std::nullopt;
+}
+
 constexpr std::array<std::string_view, 9> kParameters = {"p", "q", "p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
 
 // "B.q", "K27.p.x": a keyframe (A..Z, or K and a number) and a parameter.
@@ -192,27 +218,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (rest.empty()) return fmt::format("\"{}\" must be \"{}G\", G the name of a guess", text, found->name);
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
-    // "/panels/K", "/panels/K/layers/L" or a method.
-    const std::size_t layers = rest.starts_with(kPanelsPrefix) ? rest.find(kLayersInfix) : std::string_view::npos;
-    const std::optional<std::size_t> panel = panel_index(rest.substr(0, layers));
-    if (panel && layers != std::string_view::npos) {
-      std::size_t layer = 0;
-      const std::string_view index = rest.substr(layers + kLayersInfix.size());
-      const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), layer);
-      if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
-        return fmt::format("\"{}\" must be \"frame-distance:/panels/K/layers/L\", L a layer's index", text);
-      }
-      measure.layer = layer;
-    }
-    const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
-    if (!panel && named == nullptr) {
-      return fmt::format(
-          "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M an arrow "
-          "method",
-          text);
-    }
-    measure.panel = panel;
-    if (named != nullptr) measure.method = *named;
+    if (std::optional<std::string> refused = parse_frame_distance(text, rest, measure)) return *refused;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);
