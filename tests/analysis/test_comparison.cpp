@@ -309,7 +309,7 @@ TEST(Comparison, KnotDistanceIsZeroUnlessATimingMovesTheKnots) {
 
 // "guess-distance:G", "guess-discrepancy:G": a guess at t = 0 that is the
 // SMA's first keyframe moved by (0.5, 0) is 0.5 from the frame, and its
-// discrepancy is Eq. 47's of the two arrows; a guess equal to the frame at
+// discrepancy is PITA Eq. 47's of the two arrows; a guess equal to the frame at
 // t = 1 (the second keyframe) is at 0 in both.
 TEST(Comparison, GuessGapIsTheDistanceOrTheDiscrepancyToTheFrameAtItsTime) {
   const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
