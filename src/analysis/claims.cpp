@@ -83,6 +83,56 @@ double property_value(const motion::Stage& stage, std::size_t panel, const scene
                     stage.panel(panel).keys);
 }
 
+// The options of the panel's method (those a layer's own options patch).
+MethodOptions own_options(const motion::Stage& stage, std::size_t panel) {
+  return scene::track_method(stage.panel(panel).keys)->options;
+}
+
+// The motion that layer `layer` of the panel draws (its own layers, else
+// the scene's): a pattern or trajectory layer's own method and options over
+// the panel's (N57), a compare layer's method; a SceneError for a layer that
+// draws no motion of its own.
+motion::SceneMotion drawn_motion(const motion::Stage& stage, std::size_t panel, std::size_t layer,
+                                 const scene::MeasureName& measure, const std::string& pointer) {
+  const scene::Panel& own = stage.panel(panel);
+  const scene::LayersOf<scene::Layer> layers = scene::layers_of<scene::Layer>(stage.scene(), own);
+  if (layer >= layers.layers.size()) {
+    unmeasured(stage, pointer, panel, measure,
+               fmt::format("it has no layer {} (it draws {} layers)", layer, layers.layers.size()));
+  }
+  const auto of = [&](std::optional<Method> method, const scene::MethodOptionsPatch& options) {
+    return motion::with_layer_method(stage.scene(), own, method, options.over(own_options(stage, panel)));
+  };
+  return std::visit(
+      overloaded{[&](const scene::PatternLayer& l) { return of(l.method, l.options); },
+                 [&](const scene::TrajectoryLayer& l) { return of(l.method, l.options); },
+                 [&](const scene::CompareLayer& l) { return motion::with_method(stage.scene(), own, l.method); },
+                 [&](const auto&) -> motion::SceneMotion {
+                   unmeasured(stage, pointer, panel, measure,
+                              fmt::format("its layer {} draws no motion of its own (a \"pattern\", \"trajectory\" "
+                                          "or \"compare\" layer does)",
+                                          layers.pointer(layer)));
+                 }},
+      layers.layers[layer]);
+}
+
+// The guess named measure.parameter of the panel's "guesses" layers (its
+// own layers, else the scene's), or a SceneError naming those it has.
+const scene::Guess& guess_named(const motion::Stage& stage, std::size_t panel, const scene::MeasureName& measure,
+                                const std::string& pointer) {
+  std::vector<std::string_view> names;
+  for (const scene::Layer& layer : scene::layers_of<scene::Layer>(stage.scene(), stage.panel(panel)).layers) {
+    const auto* guesses = std::get_if<scene::GuessesLayer>(&layer);
+    if (guesses == nullptr) continue;
+    for (const scene::Guess& guess : guesses->guesses) {
+      if (guess.name == measure.parameter) return guess;
+      names.push_back(guess.name);
+    }
+  }
+  if (names.empty()) unmeasured(stage, pointer, panel, measure, "the panel has no \"guesses\" layer");
+  unmeasured(stage, pointer, panel, measure, fmt::format("its guesses are named {}", fmt::join(names, ", ")));
+}
+
 }  // namespace
 
 Measurer::Measurer(const motion::Stage& stage) : stage_(&stage), measures_(stage.size()), steps_(stage.size()) {}
@@ -156,6 +206,9 @@ Source source_of(MeasureKind kind) {
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::handle_shift:
+    case MeasureKind::knot_distance:
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:
       return Source::comparison;
     case MeasureKind::property:
       return Source::property;
@@ -165,7 +218,8 @@ Source source_of(MeasureKind kind) {
 
 }  // namespace
 
-double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer) {
+double Measurer::value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer,
+                       std::optional<std::size_t> layer) {
   const motion::Stage& stage = *stage_;
   switch (source_of(measure.kind)) {
     case Source::measures:
@@ -176,18 +230,45 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (!kept) kept = frame_steps(stage, panel);
       return *frame_step(*kept, measure.kind);
     }
-    case Source::comparison:  // with another panel (angle, frame-distance) or method
+    case Source::comparison:  // with another panel (angle, frame-distance), method or drawn arrow
       // frame-distance compares poses too: a pose scene's panels are all of its kind.
       if (measure.kind == MeasureKind::frame_distance &&
           (std::holds_alternative<scene::PlanePoseKeys>(stage.panel(panel).keys) ||
            std::holds_alternative<scene::SpacePoseKeys>(stage.panel(panel).keys))) {
+        if (layer || measure.layer) {
+          unmeasured(stage, pointer, panel, measure, "a layer's motion is compared in arrow scenes");
+        }
+        if (!measure.panel) {
+          unmeasured(stage, pointer, panel, measure,
+                     "\"frame-distance:M\" compares with an arrow method, in arrow scenes; compare with "
+                     "another panel, \"frame-distance:/panels/K\"");
+        }
         return frame_distance(stage, panel, *measure.panel);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::frame_distance && (layer || measure.layer)) {
+        // "/panels/K/layers/L", or the claim's "layer": the motion a layer draws.
+        std::optional<motion::SceneMotion> drawn_mine, drawn_theirs;
+        const std::size_t other = measure.panel.value_or(panel);
+        const motion::SceneMotion& mine =
+            layer ? drawn_mine.emplace(drawn_motion(stage, panel, *layer, measure, pointer)) : stage.motion(panel);
+        const motion::SceneMotion& theirs =
+            measure.layer ? drawn_theirs.emplace(drawn_motion(stage, other, *measure.layer, measure, pointer))
+                          : stage.motion(other);
+        return frame_distance(mine, theirs);
+      }
+      if (measure.kind == MeasureKind::frame_distance) {
+        return measure.panel ? frame_distance(stage, panel, *measure.panel)
+                             : frame_distance(stage, panel, measure.method);
+      }
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);
+      }
+      if (measure.kind == MeasureKind::knot_distance) return knot_distance(stage, panel);
+      if (measure.kind == MeasureKind::guess_distance || measure.kind == MeasureKind::guess_discrepancy) {
+        return guess_gap(stage, panel, guess_named(stage, panel, measure, pointer),
+                         measure.kind == MeasureKind::guess_discrepancy);
       }
       if (scene::figure_of<scene::KeyframeKeys>(stage.panel(panel)).shapes.empty()) {
         unmeasured(stage, pointer, panel, measure, "the panel has no shapes");
@@ -237,6 +318,9 @@ std::string_view why_unmeasured(MeasureKind kind) {
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::handle_shift:
+    case MeasureKind::knot_distance:
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:
     case MeasureKind::property:
       break;
   }
@@ -335,11 +419,12 @@ Bound bound_of(Measurer& measurer, const motion::Stage& stage, const scene::Clai
 }
 
 ClaimOutcome check_claim(Measurer& measurer, const motion::Stage& stage, const scene::Claim& claim) {
-  double value = measurer.value(claim.panel, claim.measure, claim.pointer + "/measure");
+  double value = measurer.value(claim.panel, claim.measure, claim.pointer + "/measure", claim.layer);
   if (claim.absolute) value = std::abs(value);
   ClaimOutcome outcome{claim.pointer, claim.says, false, {}};
-  const std::string left = fmt::format("{}{}{} of {} = {}", claim.absolute ? "|" : "", claim.measure.text,
-                                       claim.absolute ? "|" : "", panel_name(stage, claim.panel), number(value));
+  const std::string left = fmt::format(
+      "{}{}{} of {}{} = {}", claim.absolute ? "|" : "", claim.measure.text, claim.absolute ? "|" : "",
+      claim.layer ? fmt::format("layer {} of ", *claim.layer) : "", panel_name(stage, claim.panel), number(value));
   std::visit(
       [&](const auto& test) {
         using Test = std::decay_t<decltype(test)>;

@@ -38,8 +38,10 @@ class Measurer {
   explicit Measurer(const motion::Stage& stage);
   // Throws scene::SceneError at `pointer` when the panel has no such number
   // (a measure of keyframes on a panel of points, a parameter no keyframe
-  // has), motion::NoMotion when the panel has no motion.
-  double value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer);
+  // has), motion::NoMotion when the panel has no motion. With `layer`, a
+  // frame-distance measures the motion that layer of the panel draws.
+  double value(std::size_t panel, const scene::MeasureName& measure, const std::string& pointer,
+               std::optional<std::size_t> layer = std::nullopt);
 
  private:
   const MotionMeasures& measures(std::size_t panel);

@@ -7,7 +7,9 @@
 #include <variant>
 #include <vector>
 
+#include "analysis/arrow_distance.hpp"
 #include "core/carrier.hpp"
+#include "core/discrepancy.hpp"
 #include "core/methods.hpp"
 #include "core/overloaded.hpp"
 #include "core/pose_traits.hpp"
@@ -132,6 +134,32 @@ double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t
                    return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference);
                  }},
       stage.panel(index).keys);
+}
+
+double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
+  return arrow_distance(mine, theirs);
+}
+
+double frame_distance(const motion::Stage& stage, std::size_t index, Method other) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  (void)mine.arrows();  // NoMotion unless the panel has keyframes
+  const motion::SceneMotion theirs = motion::with_method(stage.scene(), stage.panel(index), other);
+  return arrow_distance(mine, theirs);
+}
+
+double knot_distance(const motion::Stage& stage, std::size_t index) {
+  const motion::SceneMotion& motion = stage.motion(index);
+  (void)motion.arrows();  // NoMotion unless the panel has keyframes
+  double distance = 0.0;
+  for (const Keyframe& k : std::get<scene::KeyframeKeys>(stage.panel(index).keys).keyframes) {
+    distance = std::max(distance, endpoint_distance(k.arrow, motion.arrow_at(k.t)));
+  }
+  return distance;
+}
+
+double guess_gap(const motion::Stage& stage, std::size_t index, const scene::Guess& guess, bool discrepancy) {
+  const Arrow frame = stage.motion(index).arrow_at(guess.t);
+  return discrepancy ? pita::discrepancy(guess.arrow, frame) : endpoint_distance(guess.arrow, frame);
 }
 
 }  // namespace pita::analysis

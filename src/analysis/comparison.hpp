@@ -11,6 +11,7 @@
 
 #include "core/pitas/registry.hpp"
 #include "motion/stage.hpp"
+#include "scene/layers.hpp"
 
 namespace pita::analysis {
 
@@ -62,5 +63,26 @@ inline constexpr int kFrameDistanceSamples = 201;
 // NaN when the knots share no range. Throws motion::NoMotion (a panel of
 // points); 0 for the panel itself.
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
+
+// The same between two motions of keyframes (a panel's, a layer's).
+double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs);
+
+// The same against method `other` through the panel's keyframes (its
+// options and timing too, as "angle:M@t" and a "compare" layer take them):
+// how far P10 pops from P3 (appendix B, Fig. B.30); 0 for the panel's own
+// method. Throws motion::NoMotion (either motion).
+double frame_distance(const motion::Stage& stage, std::size_t index, Method other);
+
+// max over the panel's keyframes K of max(|D(t_K).p - K.p|, |D(t_K).q - K.q|),
+// world units: 0 (to rounding) when the motion the panel draws interpolates
+// its keyframes (Fig. 1), which a timing that moves the knots breaks. For a
+// panel of keyframes. Throws motion::NoMotion.
+double knot_distance(const motion::Stage& stage, std::size_t index);
+
+// What a "guesses" layer prints for its arrow `guess` (Figs. 16, 18): the
+// discrepancy E(G, D(t)) of PITA Eq. 47 (docs/paper-notes.md N5), or the
+// distance max(|G.p - D(t).p|, |G.q - D(t).q|) (N53), D(t) the panel's frame
+// at the guess's time. Throws motion::NoMotion.
+double guess_gap(const motion::Stage& stage, std::size_t index, const scene::Guess& guess, bool discrepancy);
 
 }  // namespace pita::analysis

@@ -96,10 +96,10 @@ std::string lint_table(const ReportEntry& e) {
   std::string html = "<table><tr><th>lint</th><th>pointer</th><th>result</th><th>finding</th></tr>\n";
   for (const lint::Finding& f : e.check.lint.findings) {
     const bool accepted = !f.reason.empty();
-    html +=
-        fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
-                    html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
-                    accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"), html_escaped(f.message));
+    html += fmt::format("<tr><td>{}</td><td>{}</td><td class=\"{}\">{}</td><td>{}</td></tr>\n", html_escaped(f.check),
+                        html_escaped(f.pointer), accepted ? "match" : "DIFFERS",
+                        accepted ? "accepted: " + html_escaped(f.reason) : std::string("FINDING"),
+                        html_escaped(f.fix.empty() ? f.message : f.message + "; fix: " + f.fix));
   }
   html += "</table>\n";
   return html;

@@ -46,7 +46,10 @@ std::string missing(const scene::MeasureName& name) {
     case MeasureKind::angle:
     case MeasureKind::frame_distance:  // claims only
     case MeasureKind::property:        // claims only
-      break;                           // compared with another motion by the panel's drawing, not measured here
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:  // claims only
+    case MeasureKind::knot_distance:      // by the panel's drawing
+      break;                              // compared with another motion by the panel's drawing, not measured here
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
@@ -131,6 +134,9 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
     case MeasureKind::property:
+    case MeasureKind::knot_distance:
+    case MeasureKind::guess_distance:
+    case MeasureKind::guess_discrepancy:
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:

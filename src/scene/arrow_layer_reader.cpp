@@ -400,7 +400,14 @@ MeasuresLayer read_measures(const Fields& fields) {
                                          "(docs/reference/check.md \"Claims\")",
                                          std::get<MeasureName>(parsed).text));
       }
-      if (std::get<MeasureName>(parsed).kind == MeasureKind::property) {
+      const MeasureKind kind = std::get<MeasureName>(parsed).kind;
+      if (kind == MeasureKind::frame_distance || kind == MeasureKind::guess_distance ||
+          kind == MeasureKind::guess_discrepancy) {
+        reader.fail(item_at, fmt::format("\"{}\" is measured by claims only (docs/reference/check.md \"Claims\"); "
+                                         "a \"compare\" or \"guesses\" layer prints it",
+                                         std::get<MeasureName>(parsed).text));
+      }
+      if (kind == MeasureKind::property) {
         reader.fail(item_at,
                     fmt::format("\"{}\" is measured by claims only (docs/reference/check.md \"Claims\"); the property "
                                 "table of pita audit prints every property",

@@ -46,6 +46,9 @@ struct Claim {
   std::string pointer;  // "/claims/2"
   std::string says;     // the caption's statement, in words
   std::size_t panel = 0;
+  // "layer": a frame-distance claim measures the motion this layer of the
+  // panel draws (its own method or options, N57) instead of the panel's.
+  std::optional<std::size_t> layer;
   MeasureName measure;
   bool absolute = false;  // compare |value| (a signed angle turned either way)
   ClaimTest test;

@@ -13,8 +13,8 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kClaimFields = {"says",  "panel", "measure", "absolute", "below",
-                                                          "above", "near",  "within",  "is"};
+constexpr std::array<std::string_view, 10> kClaimFields = {"says",  "panel", "layer", "measure", "absolute",
+                                                           "below", "above", "near",  "within",  "is"};
 constexpr std::array<std::string_view, 4> kOperandFields = {"panel", "measure", "times", "plus"};
 constexpr std::array<std::string_view, 4> kTests = {"below", "above", "near", "is"};
 
@@ -80,6 +80,15 @@ Claim read_claim(const JsonReader& reader, const Json& value, const std::string&
   const Json* measure = JsonReader::member(value, "measure");
   if (measure == nullptr) reader.fail(pointer, "a claim names the measure it compares: \"measure\"");
   claim.measure = read_measure<LayerType>(reader, *measure, pointer + "/measure", scene);
+  if (const Json* layer = JsonReader::member(value, "layer")) {
+    if (claim.measure.kind != MeasureKind::frame_distance) {
+      reader.fail(pointer + "/layer",
+                  fmt::format("\"layer\" names the layer whose motion a \"frame-distance\" claim compares, and "
+                              "this claim measures \"{}\"",
+                              claim.measure.text));
+    }
+    claim.layer = static_cast<std::size_t>(reader.integer(*layer, pointer + "/layer", 0, kMaxLayers - 1));
+  }
   if (const Json* absolute = JsonReader::member(value, "absolute")) {
     claim.absolute = reader.boolean(*absolute, pointer + "/absolute");
   }

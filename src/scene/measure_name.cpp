@@ -19,7 +19,7 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 23> kMeasures{{
+constexpr std::array<MeasureEntry, 26> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
@@ -32,12 +32,15 @@ constexpr std::array<MeasureEntry, 23> kMeasures{{
     {"scale-min", MeasureKind::scale_min},
     {"scale-max", MeasureKind::scale_max},
     {"turn-step-t", MeasureKind::turn_step_time},
+    {"knot-distance", MeasureKind::knot_distance},
     {"gain:", MeasureKind::gain, true},
     {"turn:", MeasureKind::turn, true},
     {"jump:", MeasureKind::jump, true},
     {"angle:", MeasureKind::angle, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
+    {"guess-distance:", MeasureKind::guess_distance, true},
+    {"guess-discrepancy:", MeasureKind::guess_discrepancy, true},
     // Both families': a claim measures a property of pita audit (or pita
     // audit poses) on the panel's three keyframes or poses, or compares the
     // frames of two panels of an arrow scene, or the poses of two panels of a
@@ -48,8 +51,8 @@ constexpr std::array<MeasureEntry, 23> kMeasures{{
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 20;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 18;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 23;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 21;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -67,8 +70,10 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
-      "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or "
+      "\"frame-distance:/panels/K/layers/L\", the motion that layer draws, or \"frame-distance:M\", M an arrow "
+      "method), \"guess-distance:G\" and \"guess-discrepancy:G\" (G a guess of the panel's "
+      "\"guesses\" layer) and \"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
 
 template <>
@@ -89,6 +94,9 @@ constexpr std::array<std::string_view, 3> kPredictors = {"previous", "average", 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
 constexpr std::string_view kPanelsPrefix = "/panels/";
 
+// "/panels/1/layers/4": a layer of another panel, in "frame-distance:".
+constexpr std::string_view kLayersInfix = "/layers/";
+
 // "/panels/3" -> 3; nullopt for anything else.
 std::optional<std::size_t> panel_index(std::string_view pointer) {
   if (!pointer.starts_with(kPanelsPrefix)) return std::nullopt;
@@ -97,6 +105,32 @@ std::optional<std::size_t> panel_index(std::string_view pointer) {
   const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), k);
   if (index.empty() || error != std::errc() || end != index.data() + index.size()) return std::nullopt;
   return k;
+}
+
+// "frame-distance:" and `rest`, "/panels/K", "/panels/K/layers/L" or an
+// arrow method, into `measure`; why not otherwise.
+std::optional<std::string> parse_frame_distance(std::string_view text, std::string_view rest, MeasureName& measure) {
+  const std::size_t layers = rest.starts_with(kPanelsPrefix) ? rest.find(kLayersInfix) : std::string_view::npos;
+  const std::optional<std::size_t> panel = panel_index(rest.substr(0, layers));
+  if (panel && layers != std::string_view::npos) {
+    std::size_t layer = 0;
+    const std::string_view index = rest.substr(layers + kLayersInfix.size());
+    const auto [end, error] = std::from_chars(index.data(), index.data() + index.size(), layer);
+    if (index.empty() || error != std::errc() || end != index.data() + index.size()) {
+      return fmt::format("\"{}\" must be \"frame-distance:/panels/K/layers/L\", L a layer's index", text);
+    }
+    measure.layer = layer;
+  }
+  const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
+  if (!panel && named == nullptr) {
+    return fmt::format(
+        "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M an arrow "
+        "method",
+        text);
+  }
+  measure.panel = panel;
+  if (named != nullptr) measure.method = *named;
+  return std::nullopt;
 }
 
 constexpr std::array<std::string_view, 9> kParameters = {"p", "q", "p.x", "p.y", "q.x", "q.y", "m", "w", "t"};
@@ -155,7 +189,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
   }
   if (found == nullptr) return unknown<LayerType>(text);
-  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0};
+  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0, std::nullopt};
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
     if (!is_keyframe_parameter(rest)) {
@@ -180,10 +214,12 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
                          quoted_choices(kPredictors));
     }
     measure.parameter = std::string(rest);
+  } else if (found->kind == MeasureKind::guess_distance || found->kind == MeasureKind::guess_discrepancy) {
+    // The name is looked up in the panel's "guesses" layers when measured.
+    if (rest.empty()) return fmt::format("\"{}\" must be \"{}G\", G the name of a guess", text, found->name);
+    measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
-    const std::optional<std::size_t> panel = panel_index(rest);
-    if (!panel) return fmt::format("\"{}\" must be \"frame-distance:/panels/K\", K a panel's index", text);
-    measure.panel = panel;
+    if (std::optional<std::string> refused = parse_frame_distance(text, rest, measure)) return *refused;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);

@@ -14,7 +14,16 @@
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max", "turn-step-t"                    pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
-//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
+//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp);
+//       in arrow scenes also "frame-distance:M", M an arrow method: from the
+//       frames of M through the panel's keyframes (appendix B, Fig. B.30),
+//       and "frame-distance:/panels/K/layers/L": from the motion that layer
+//       of panel K draws (Fig. D.35's variants, each a layer)
+//   "knot-distance"                               arrow scenes: how far the panel's
+//       frames at its knots are from its keyframes (0 when it interpolates them)
+//   "guess-distance:G", "guess-discrepancy:G"     arrow scenes, in a claim: the
+//       distance and the discrepancy between the arrow G of the panel's
+//       "guesses" layer and the frame at its time (Figs. 16, 18)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
 //       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value
@@ -53,7 +62,10 @@ enum class MeasureKind {
   scale_min,
   scale_max,       // the drawn frames (analysis/frame_steps.hpp)
   turn_step_time,  // "turn-step-t": the scene time of the largest turn step
-  frame_distance,  // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
+  frame_distance,  // "frame-distance:/panels/K", "frame-distance:M": claims only (analysis/comparison.hpp)
+  knot_distance,   // the frames at the knots against the keyframes (analysis/comparison.hpp)
+  guess_distance,
+  guess_discrepancy,  // "guess-distance:G", "guess-discrepancy:G": claims only, a guess of the panel's "guesses"
   property,  // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
   discrepancy_of,
   discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
@@ -81,13 +93,18 @@ std::span<const MeasureEntry> measure_entries_of();
 struct MeasureName {
   MeasureKind kind = MeasureKind::overreaction;
   std::string text;       // as written: "gain:B.q", "angle:P8@0.25"
-  std::string parameter;  // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor
-  Method method{};        // angle: the other arrow method
+  std::string parameter;  // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor;
+                          // guess-distance, guess-discrepancy: the guess's name
+  Method method{};        // angle, frame-distance (without a panel): the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
   // frame-distance: the other panel. Only a claim may name a panel (its
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time
+  // frame-distance: a layer of that panel instead ("/panels/1/layers/4"), the
+  // motion it draws (a pattern or trajectory layer's own method or options,
+  // a compare layer's method).
+  std::optional<std::size_t> layer;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

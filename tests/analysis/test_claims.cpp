@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/claims.hpp"
+#include "analysis/comparison.hpp"
 #include "analysis/measure.hpp"
 #include "scene/scene.hpp"
 
@@ -200,6 +201,95 @@ TEST(Claims, DiscrepancyOfOnePredictorAndWhen) {
   EXPECT_EQ(predictors, 3);
   // The predictors differ here, so that a claim reading the wrong one would fail.
   EXPECT_NE(arrows.discrepancy[0].max, arrows.discrepancy[1].max);
+}
+
+// "frame-distance:M" (another method through the panel's keyframes),
+// "knot-distance" and "guess-distance:G" / "guess-discrepancy:G" (a guess of
+// the panel's "guesses" layer; tests/analysis/test_comparison.cpp has their
+// closed forms). Panel 1's P1 passes its flipped midpoint, its vector
+// vanishing at t = (1 - 1/sqrt 2)/2, where P3's log-polar vector, turning
+// instead, is 2 long: the frames part by 2 (1.9999 at the 201 times).
+TEST(Claims, AnotherMethodTheKnotsAndAGuess) {
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "frame-distance:P1", "below": 1e-15})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "frame-distance:P3", "near": 2, "within": 1e-3})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 1, "measure": "knot-distance", "below": 1e-12})").held);
+  EXPECT_TRUE(only(R"({"says": "s", "panel": 0, "measure": "knot-distance", "below": 1e-12})").held);
+  const auto guessed = [](const std::string& claim) {
+    return check_claims(motion::Stage(scene::parse_scene(fmt::format(R"({{"method": "SMA", "keyframes": [
+        {{"t": 0, "p": [0, 0], "m": 1, "w": 0}}, {{"t": 1, "p": [3, 1], "m": 2, "w": 1.2}}],
+        "layers": [{{"type": "pattern"}}, {{"type": "guesses", "guesses": [
+          {{"t": 0, "p": [0.5, 0], "q": [1.5, 0], "name": "L"}}, {{"t": 1, "p": [3, 1.25], "m": 2, "w": 1.2, "name": "R"}}]}}],
+        "claims": [{}]}})",
+                                                                     claim),
+                                                         "test.json")));
+  };
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-distance:L", "near": 0.5, "within": 1e-12})").at(0).held);
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-distance:R", "near": 0.25, "within": 1e-12})").at(0).held);
+  EXPECT_TRUE(guessed(R"({"says": "s", "measure": "guess-discrepancy:L", "above": 0.01})").at(0).held);
+  try {
+    guessed(R"({"says": "s", "measure": "guess-distance:E", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/measure");
+    EXPECT_NE(error.reason().find("its guesses are named L, R"), std::string::npos) << error.reason();
+  }
+  try {
+    only(R"({"says": "s", "panel": 0, "measure": "guess-distance:L", "below": 1})");
+    FAIL() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_NE(error.reason().find("the panel has no \"guesses\" layer"), std::string::npos) << error.reason();
+  }
+}
+
+// "frame-distance:/panels/K/layers/L" and a claim's "layer": the motions
+// layers draw, each its own method through the panel's keyframes (N57), are
+// as far apart as a panel and the method (tests/analysis/test_comparison.cpp).
+TEST(Claims, TheMotionsLayersDraw) {
+  const auto layered = [](const std::string& claim) {
+    return check_claims(motion::Stage(scene::parse_scene(fmt::format(R"({{"method": "P1", "keyframes": [
+        {{"t": 0, "p": [0, 0], "m": 0.6, "w": 0.1}}, {{"t": 0.5, "p": [0, 0], "m": 2.4, "w": 1.6}},
+        {{"t": 1, "p": [0, 0], "m": 1.2, "w": 3.3}}],
+        "layers": [{{"type": "pattern", "method": "P3"}}, {{"type": "trajectory", "point": "q", "method": "P1"}},
+                   {{"type": "keyframes"}}],
+        "claims": [{}]}})",
+                                                                     claim),
+                                                         "test.json")));
+  };
+  const scene::Scene plain = scene::parse_scene(R"({"method": "P1", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 0.6, "w": 0.1}, {"t": 0.5, "p": [0, 0], "m": 2.4, "w": 1.6},
+      {"t": 1, "p": [0, 0], "m": 1.2, "w": 3.3}]})",
+                                                "test.json");
+  const double expected = frame_distance(motion::Stage(plain), 0, Method::P3);
+  EXPECT_GT(expected, 0.1);
+  const std::string near = fmt::format(R"("near": {:.17g}, "within": 1e-12)", expected);
+  EXPECT_TRUE(
+      layered(fmt::format(R"({{"says": "s", "layer": 0, "measure": "frame-distance:/panels/0/layers/1", {}}})", near))
+          .at(0)
+          .held);
+  EXPECT_TRUE(
+      layered(fmt::format(R"({{"says": "s", "measure": "frame-distance:/panels/0/layers/0", {}}})", near)).at(0).held);
+  const ClaimOutcome same =
+      layered(R"({"says": "s", "layer": 1, "measure": "frame-distance:/panels/0", "below": 1e-15})").at(0);
+  EXPECT_TRUE(same.held);
+  EXPECT_NE(same.measured.find("of layer 1 of the scene (P1"), std::string::npos) << same.measured;
+  for (const char* bad : {R"({"says": "s", "layer": 2, "measure": "frame-distance:/panels/0", "below": 1})",
+                          R"({"says": "s", "measure": "frame-distance:/panels/0/layers/3", "below": 1})"}) {
+    try {
+      layered(bad);
+      ADD_FAILURE() << "no error: " << bad;
+    } catch (const scene::SceneError& error) {
+      EXPECT_EQ(error.pointer(), "/claims/0/measure");
+      EXPECT_TRUE(error.reason().find("draws no motion of its own") != std::string::npos ||
+                  error.reason().find("it has no layer 3 (it draws 3 layers)") != std::string::npos)
+          << error.reason();
+    }
+  }
+  try {
+    layered(R"({"says": "s", "layer": 0, "measure": "turning", "below": 1})");
+    ADD_FAILURE() << "no error";
+  } catch (const scene::SceneError& error) {
+    EXPECT_EQ(error.pointer(), "/claims/0/layer");
+  }
 }
 
 TEST(Claims, AScenesWithoutClaimsHasNoOutcomes) {

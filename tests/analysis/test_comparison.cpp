@@ -1,6 +1,8 @@
 // The comparisons of analysis/comparison.cpp against closed forms: Fig. 5's
-// angles between vector motions (Lagrange weights by hand) and Fig. 11's
-// handle shift (0 for handle-invariant methods, the Pa-LP shift by hand).
+// angles between vector motions (Lagrange weights by hand), Fig. 11's
+// handle shift (0 for handle-invariant methods, the Pa-LP shift by hand), the
+// distances between frames (of two panels, of two methods, at the knots) and
+// between a frame and a drawn guess.
 #include <array>
 #include <cmath>
 #include <complex>
@@ -11,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "analysis/comparison.hpp"
+#include "core/discrepancy.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::analysis {
@@ -247,6 +250,80 @@ TEST(Comparison, FrameDistanceOfTranslatedPosesIsTheTranslation) {
       "test.json");
   const motion::Stage stage(scene);
   EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12);
+}
+
+// "frame-distance:M": at the common origin P1 (Pa-Ca) and P3 (Pa-LP) share
+// the point p = 0, and their vectors are the Lagrange blend of the keyframe
+// vectors and the exponential of the blend of their logs (Sec. 3.1): the
+// distance is the largest gap between the two blends over the 201 times.
+TEST(Comparison, FrameDistanceToAMethodIsTheLargestGapBetweenItsFrames) {
+  const scene::Scene scene = common_origin("P1");
+  const motion::Stage stage(scene);
+  double expected = 0.0;
+  for (int i = 0; i < kFrameDistanceSamples; ++i) {
+    const double t = static_cast<double>(i) / (kFrameDistanceSamples - 1);
+    const std::array<double, 3> l = lagrange(t);
+    std::complex<double> cartesian = 0.0, log = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      cartesian += l[k] * std::polar(kM[k], kW[k]);
+      log += l[k] * std::complex<double>(std::log(kM[k]), kW[k]);
+    }
+    expected = std::max(expected, std::abs(cartesian - std::exp(log)));
+  }
+  EXPECT_GT(expected, 0.1);
+  EXPECT_NEAR(frame_distance(stage, 0, Method::P3), expected, 1e-12);
+  EXPECT_EQ(frame_distance(stage, 0, Method::P1), 0.0);  // the panel's own method
+}
+
+// The same through a second panel of method M on the same keyframes: the
+// two forms are one distance. P3 and P10 (Pa-EL) agree while every keyframe
+// angle is in (-pi, pi) (appendix B, Fig. B.30).
+TEST(Comparison, FrameDistanceToAMethodIsThatToAPanelOfIt) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "P3", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 3.09}, {"t": 0.5, "p": [3, 2], "m": 0.8, "w": 1.2},
+      {"t": 1, "p": [6, 0], "m": 1.2, "w": -0.6}], "panels": ["P3", "P6", "P10"]})",
+                                                "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_EQ(frame_distance(stage, 0, Method::P6), frame_distance(stage, 0, 1));
+  EXPECT_GT(frame_distance(stage, 0, Method::P6), 0.1);
+  EXPECT_LT(frame_distance(stage, 0, Method::P10), 1e-12);
+  EXPECT_EQ(frame_distance(stage, 0, Method::P10), frame_distance(stage, 0, 2));
+}
+
+// "knot-distance": P1 through p = 0, 1, 4 at t = 0, 1/2, 1 on the x axis
+// (the Lagrange path p(t) = 4 t^2) with one vector interpolates its keyframes;
+// timed by the arc length of p, it is at x = 2 at t = 1/2 (half of the path's
+// length 4), one unit past B, at A and C at the ends.
+TEST(Comparison, KnotDistanceIsZeroUnlessATimingMovesTheKnots) {
+  const std::string keys = R"([{"t": 0, "p": [0, 0], "m": 1, "w": 0.5}, {"t": 0.5, "p": [1, 0], "m": 1, "w": 0.5},
+      {"t": 1, "p": [4, 0], "m": 1, "w": 0.5}])";
+  const scene::Scene scene = scene::parse_scene(
+      fmt::format(
+          R"({{"method": "P1", "keyframes": {}, "panels": ["P1", {{"method": "P1", "timing": {{"arc_length": "p"}}}}]}})",
+          keys),
+      "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_LT(knot_distance(stage, 0), 1e-15);
+  EXPECT_NEAR(knot_distance(stage, 1), 1.0, 1e-6);
+}
+
+// "guess-distance:G", "guess-discrepancy:G": a guess at t = 0 that is the
+// SMA's first keyframe moved by (0.5, 0) is 0.5 from the frame, and its
+// discrepancy is PITA Eq. 47's of the two arrows; a guess equal to the frame at
+// t = 1 (the second keyframe) is at 0 in both.
+TEST(Comparison, GuessGapIsTheDistanceOrTheDiscrepancyToTheFrameAtItsTime) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [3, 1], "m": 2, "w": 1.2}]})",
+                                                "test.json");
+  const motion::Stage stage(scene);
+  const Arrow A{{0.0, 0.0}, 1.0, 0.0};
+  const scene::Guess moved{0.0, Arrow{{0.5, 0.0}, 1.0, 0.0}, "G", {}};
+  EXPECT_NEAR(guess_gap(stage, 0, moved, false), 0.5, 1e-15);
+  EXPECT_EQ(guess_gap(stage, 0, moved, true), pita::discrepancy(moved.arrow, A));
+  EXPECT_GT(guess_gap(stage, 0, moved, true), 0.01);
+  const scene::Guess exact{1.0, Arrow{{3.0, 1.0}, 2.0, 1.2}, "B", {}};
+  EXPECT_LT(guess_gap(stage, 0, exact, false), 1e-14);
+  EXPECT_LT(guess_gap(stage, 0, exact, true), 1e-12);
 }
 
 }  // namespace

@@ -153,6 +153,32 @@ TEST_F(Check, PaperClaimsFailWhenTheFigureChanges) {
       << r.err;
 }
 
+// The same for claims of the measures that compare with another method, a
+// guess or a layer: Fig. 15's P8 swapped for P7, Fig. B.30's A.w moved back
+// below pi (P10 no longer pops), Fig. 18's moved B.p put elsewhere.
+TEST_F(Check, PaperClaimsOfComparisonsFailWhenTheFigureChanges) {
+  const fs::path scenes = fs::path(PITA_SOURCE_DIR) / "scenes";
+  const auto mutated = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = read_file(scenes / name);
+    const std::size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << name;
+    text.replace(at, from.size(), to);
+    dir.write(name, text);
+  };
+  mutated("fig15-velocities-p7-p8.json", R"("method": "P8")", R"("method": "P7")");
+  mutated("appB-fig30-p3-p10.json", R"("w": 3.19)", R"("w": 3.09)");
+  mutated("fig18-editing.json", "2.3920813529600684", "2.2");
+  const std::string golden = (fs::path(PITA_SOURCE_DIR) / "golden").string();
+  const RunResult r =
+      run({"check", "fig15-velocities-p7-p8.json", "appB-fig30-p3-p10.json", "fig18-editing.json", "--golden", golden});
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  for (const char* failed : {"/claims/0: claim failed: \"for P8 the shapes formed by D(t) and its two accelerations",
+                             "/claims/1: claim failed: \"right, A.w = 3.19 past pi: P10 pops",
+                             "/claims/2: claim failed: \"after the four moves d = 0.0304"}) {
+    EXPECT_NE(r.err.find(failed), std::string::npos) << failed << "\n" << r.err;
+  }
+}
+
 // A finding of the lint that the scene does not accept fails `check` like a
 // claim (exit 1, the goldens matching); accepted with a reason, it passes.
 TEST_F(Check, ALintFindingFailsUnlessTheSceneAcceptsIt) {

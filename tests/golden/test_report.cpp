@@ -121,9 +121,10 @@ TEST_F(Report, ListsEveryClaim) {
 // marks its scene though its goldens match and its claims hold.
 TEST_F(Report, ListsEveryLintFinding) {
   lint::Report findings;
-  findings.findings.push_back({"text-over-data", "/layers/3", "the label \"<q>\" lies over /layers/0", "", ""});
   findings.findings.push_back(
-      {"same-color", "/layers/2", "items 1 and 2 are both #d08000", "the inner control poses", "/lint/allow/0"});
+      {"text-over-data", "/layers/3", "the label \"<q>\" lies over /layers/0", "move it", "", ""});
+  findings.findings.push_back({"same-color", "/layers/2", "items 1 and 2 are both #d08000", "give it colours",
+                               "the inner control poses", "/lint/allow/0"});
   ReportEntry linted{SceneCheck{"scenes/l.json", "l", {file(FileKind::data, Verdict::match, "d", "d")}, {}, findings},
                      ""};
   write_report(dir_, {linted});
@@ -131,7 +132,7 @@ TEST_F(Report, ListsEveryLintFinding) {
   EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
   EXPECT_NE(html.find("<td class=\"LINT\">LINT</td>"), std::string::npos) << html;
   EXPECT_NE(html.find("<tr><td>text-over-data</td><td>/layers/3</td><td class=\"DIFFERS\">FINDING</td>"
-                      "<td>the label &quot;&lt;q&gt;&quot; lies over /layers/0</td></tr>"),
+                      "<td>the label &quot;&lt;q&gt;&quot; lies over /layers/0; fix: move it</td></tr>"),
             std::string::npos)
       << html;
   EXPECT_NE(html.find("<td class=\"match\">accepted: the inner control poses</td>"), std::string::npos) << html;

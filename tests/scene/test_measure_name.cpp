@@ -55,11 +55,12 @@ template <class LayerType, class Other>
 void check_family_entries() {
   for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
     const std::string argument =
-        entry.kind == MeasureKind::angle                                                           ? "P6@0.5"
-        : entry.kind == MeasureKind::frame_distance                                                ? "/panels/1"
-        : entry.kind == MeasureKind::property                                                      ? "pop-free"
-        : entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time ? "average"
-                                                                                                   : "A.p";
+        entry.kind == MeasureKind::angle                                                            ? "P6@0.5"
+        : entry.kind == MeasureKind::frame_distance                                                 ? "/panels/1"
+        : entry.kind == MeasureKind::property                                                       ? "pop-free"
+        : entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time  ? "average"
+        : entry.kind == MeasureKind::guess_distance || entry.kind == MeasureKind::guess_discrepancy ? "L"
+                                                                                                    : "A.p";
     const std::string text = entry.argument ? std::string(entry.name) + argument : std::string(entry.name);
     EXPECT_EQ(accepted<LayerType>(text).kind, entry.kind) << text;
     if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::property) {
@@ -76,6 +77,32 @@ TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
   EXPECT_EQ(measure_entries_of<Layer>().size() + measure_entries_of<PoseLayer>().size(), measure_entries().size() + 2);
   EXPECT_EQ(measure_entries_of<PoseLayer>().size(),
             5u);  // "property:", "frame-distance:", "ara", "area", "velocity-jump"
+}
+
+// "frame-distance:M": an arrow method instead of a panel; "guess-distance:G"
+// and "guess-discrepancy:G": any name (the panel's guesses are looked up
+// when measured); "knot-distance": no argument.
+TEST(MeasureName, FrameDistanceToAMethodGuessesAndKnots) {
+  const MeasureName p10 = accepted("frame-distance:P10");
+  EXPECT_EQ(p10.kind, MeasureKind::frame_distance);
+  EXPECT_EQ(p10.method, Method::P10);
+  EXPECT_FALSE(p10.panel);
+  EXPECT_EQ(accepted("frame-distance:La-LP").method, Method::P6);
+  const MeasureName layer = accepted("frame-distance:/panels/1/layers/4");
+  EXPECT_EQ(layer.panel, std::optional<std::size_t>(1));
+  EXPECT_EQ(layer.layer, std::optional<std::size_t>(4));
+  EXPECT_FALSE(accepted("frame-distance:/panels/1").layer);
+  for (const char* bad : {"frame-distance:/panels/1/layers/", "frame-distance:/panels/1/layers/x"}) {
+    EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K/layers/L\""), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M an arrow method"), std::string::npos);
+  const MeasureName guess = accepted("guess-discrepancy:L");
+  EXPECT_EQ(guess.kind, MeasureKind::guess_discrepancy);
+  EXPECT_EQ(guess.parameter, "L");
+  EXPECT_EQ(accepted("guess-distance:E 2").parameter, "E 2");
+  EXPECT_NE(refused("guess-distance:").find("must be \"guess-distance:G\""), std::string::npos);
+  EXPECT_EQ(accepted("knot-distance").kind, MeasureKind::knot_distance);
+  EXPECT_NE(refused<PoseLayer>("knot-distance").find("only"), std::string::npos);
 }
 
 // "property:NAME": a name of lower-case words; which names exist is the
@@ -144,11 +171,11 @@ TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
 }
 
 TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
-  EXPECT_EQ(
-      refused("ara"),
-      "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
-      "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
-      "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\", \"scale-max\" or \"turn-step-t\"");
+  EXPECT_EQ(refused("ara"),
+            "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
+            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
+            "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\", \"scale-max\", "
+            "\"turn-step-t\" or \"knot-distance\"");
   EXPECT_EQ(refused<PoseLayer>("handle-shift"),
             "\"handle-shift\" is measured in arrow (keyframe) scenes only; pose scenes measure \"ara\", \"area\" or "
             "\"velocity-jump\"");

@@ -33,8 +33,9 @@ namespace detail {
 // "measures": the numbers of `pita measure` for this panel's motion.
 void PanelBuilder::add(const scene::MeasuresLayer& layer) {
   if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
-  // "angle:M@t" and "handle-shift" compare with another motion
-  // (analysis/comparison.hpp); the others are `pita measure`'s.
+  // "angle:M@t" and "handle-shift" compare with another motion, and
+  // "knot-distance" with the keyframes (analysis/comparison.hpp); the others
+  // are `pita measure`'s.
   std::vector<std::string> lines(layer.show.size());
   std::vector<scene::MeasureName> others;
   std::optional<analysis::FrameSteps> steps;  // computed once for the four that read them
@@ -58,6 +59,8 @@ void PanelBuilder::add(const scene::MeasuresLayer& layer) {
         lines[i] =
             fmt::format("angle {}, {} at t = {}: {} rad", scene::method_id(panel_.keys), entry_of(name.method).id,
                         name.text.substr(name.text.find('@') + 1), rounding_or_value(angle));
+      } else if (name.kind == scene::MeasureKind::knot_distance) {
+        lines[i] = fmt::format("knot distance: {}", rounding_or_value(analysis::knot_distance(stage_, index_)));
       } else if (analysis::is_frame_step(name.kind)) {  // "scale-step", ...
         if (!steps) steps = analysis::frame_steps(stage_, index_);
         lines[i] = fmt::format("{}: {}{}", name.text, rounding_or_value(*analysis::frame_step(*steps, name.kind)),
