@@ -154,6 +154,7 @@ Source source_of(MeasureKind kind) {
       return Source::frame_steps;
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::handle_shift:
       return Source::comparison;
     case MeasureKind::property:
@@ -184,6 +185,7 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       }
       need_keyframes(panel, measure, pointer, measure.panel);
       if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::carried_distance) return carried_distance(stage, panel, *measure.panel);
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);
@@ -234,6 +236,7 @@ std::string_view why_unmeasured(MeasureKind kind) {
     case MeasureKind::scale_max:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::handle_shift:
     case MeasureKind::property:
       break;

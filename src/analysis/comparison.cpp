@@ -113,7 +113,30 @@ double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion&
   return distance;
 }
 
+// The keyframe of the smallest knot of a panel of keyframes.
+const Keyframe& first_keyframe(const scene::Panel& panel) {
+  const std::vector<Keyframe>& keys = std::get<scene::KeyframeKeys>(panel.keys).keyframes;
+  return *std::min_element(keys.begin(), keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
+}
+
 }  // namespace
+
+double carried_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion& theirs = stage.motion(other);
+  (void)mine.arrows();  // NoMotion unless both panels have keyframes
+  (void)theirs.arrows();
+  const Affine2 S = carrier(first_keyframe(stage.panel(other)).arrow, first_keyframe(stage.panel(index)).arrow);
+  const std::vector<double> times = common_times(mine, theirs);
+  if (times.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double distance = 0.0;
+  for (const double t : times) {
+    const Arrow a = mine.arrow_at(t);
+    const Arrow b = theirs.arrow_at(t);
+    distance = std::max({distance, std::abs(a.p - apply(S, b.p)), std::abs(a.q() - apply(S, b.q()))});
+  }
+  return distance;
+}
 
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
   const motion::SceneMotion& mine = stage.motion(index);

@@ -63,4 +63,12 @@ inline constexpr int kFrameDistanceSamples = 201;
 // points); 0 for the panel itself.
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
+// frame_distance of arrow panels with panel `other`'s frames first carried by
+// the similarity that takes its first keyframe (the one of the smallest knot)
+// onto the first keyframe of panel `index` ("carried-distance:/panels/K"):
+// 0 when the method moves with its keyframes, as P5 does under a translation
+// and He-G does not (Fig. C.31's d). NaN when the knots share no range.
+// Throws motion::NoMotion (a panel of points or poses).
+double carried_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
+
 }  // namespace pita::analysis

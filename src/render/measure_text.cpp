@@ -44,9 +44,10 @@ std::string missing(const scene::MeasureName& name) {
       return fmt::format("jump {}: -", name.parameter);
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
-    case MeasureKind::frame_distance:  // claims only
-    case MeasureKind::property:        // claims only
-      break;                           // compared with another motion by the panel's drawing, not measured here
+    case MeasureKind::frame_distance:    // claims only
+    case MeasureKind::carried_distance:  // claims only
+    case MeasureKind::property:          // claims only
+      break;                             // compared with another motion by the panel's drawing, not measured here
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:
     case MeasureKind::scale_min:
@@ -129,6 +130,7 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::property:
     case MeasureKind::scale_step:
     case MeasureKind::turn_step:

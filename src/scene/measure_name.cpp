@@ -19,7 +19,7 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 22> kMeasures{{
+constexpr std::array<MeasureEntry, 23> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
@@ -37,6 +37,9 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"angle:", MeasureKind::angle, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
+    // A claim's: this panel's frames against another panel's, carried onto
+    // this panel's first keyframe (analysis/comparison.hpp).
+    {"carried-distance:", MeasureKind::carried_distance, true},
     // Both families': a claim measures a property of pita audit (or pita
     // audit poses) on the panel's three keyframes or poses, or compares the
     // frames of two panels of an arrow scene, or the poses of two panels of a
@@ -47,8 +50,8 @@ constexpr std::array<MeasureEntry, 22> kMeasures{{
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 19;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 17;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 20;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 18;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -66,7 +69,8 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\", "
+      "\"carried-distance:/panels/K\" and "
       "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
 
@@ -179,9 +183,9 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
                          quoted_choices(kPredictors));
     }
     measure.parameter = std::string(rest);
-  } else if (found->kind == MeasureKind::frame_distance) {
+  } else if (found->kind == MeasureKind::frame_distance || found->kind == MeasureKind::carried_distance) {
     const std::optional<std::size_t> panel = panel_index(rest);
-    if (!panel) return fmt::format("\"{}\" must be \"frame-distance:/panels/K\", K a panel's index", text);
+    if (!panel) return fmt::format("\"{}\" must be \"{}/panels/K\", K a panel's index", text, found->name);
     measure.panel = panel;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');

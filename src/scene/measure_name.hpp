@@ -15,6 +15,8 @@
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
 //       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
+//   "carried-distance:/panels/K"                  arrow scenes, in a claim: the same,
+//       panel K's frames carried onto the panel's first keyframe (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
 //       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value
@@ -57,6 +59,7 @@ enum class MeasureKind {
   discrepancy_of,
   discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
   velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
+  carried_distance,  // "carried-distance:/panels/K": claims only, arrow scenes (analysis/comparison.hpp)
 };
 
 struct MeasureEntry {
@@ -83,7 +86,7 @@ struct MeasureName {
   std::string parameter;  // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor
   Method method{};        // angle: the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
-  // frame-distance: the other panel. Only a claim may name a panel (its
+  // frame-distance, carried-distance: the other panel. Only a claim may name a panel (its
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time

@@ -56,7 +56,7 @@ void check_family_entries() {
   for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
     const std::string argument =
         entry.kind == MeasureKind::angle                                                           ? "P6@0.5"
-        : entry.kind == MeasureKind::frame_distance                                                ? "/panels/1"
+        : entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::carried_distance ? "/panels/1"
         : entry.kind == MeasureKind::property                                                      ? "pop-free"
         : entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time ? "average"
                                                                                                    : "A.p";
@@ -122,6 +122,10 @@ TEST(MeasureName, PanelsAreNamedByTheirIndex) {
                           "frame-distance:/panels/1/", "frame-distance:panels/1", "frame-distance:/panels/-1"}) {
     EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K\""), std::string::npos) << bad;
   }
+  EXPECT_EQ(accepted("carried-distance:/panels/3").kind, MeasureKind::carried_distance);
+  EXPECT_EQ(accepted("carried-distance:/panels/3").panel, std::optional<std::size_t>(3));
+  EXPECT_NE(refused("carried-distance:/panels/").find("must be \"carried-distance:/panels/K\""), std::string::npos);
+  EXPECT_NE(refused<PoseLayer>("carried-distance:/panels/1").find("only"), std::string::npos);
   EXPECT_NE(refused("angle:/panels/one@0.5").find("must be \"/panels/\" and a panel's index"), std::string::npos);
 }
 
