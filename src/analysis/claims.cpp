@@ -181,10 +181,10 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (measure.kind == MeasureKind::frame_distance &&
           (std::holds_alternative<scene::PlanePoseKeys>(stage.panel(panel).keys) ||
            std::holds_alternative<scene::SpacePoseKeys>(stage.panel(panel).keys))) {
-        return frame_distance(stage, panel, *measure.panel);
+        return frame_distance(stage, panel, *measure.panel, measure.at);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel, measure.at);
       if (measure.kind == MeasureKind::carried_distance) return carried_distance(stage, panel, *measure.panel);
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);

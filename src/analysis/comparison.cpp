@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -80,10 +81,17 @@ std::vector<double> common_times(const motion::SceneMotion& mine, const motion::
   return motion::uniform_times(first, last, kFrameDistanceSamples);
 }
 
-double arrow_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
+// The times a frame-distance compares: `at` alone, or those both panels share.
+std::vector<double> compared_times(const motion::SceneMotion& mine, const motion::SceneMotion& theirs,
+                                   std::optional<double> at) {
+  if (at) return {*at};
+  return common_times(mine, theirs);
+}
+
+double arrow_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs, std::optional<double> at) {
   (void)mine.arrows();  // NoMotion unless both panels have keyframes
   (void)theirs.arrows();
-  const std::vector<double> times = common_times(mine, theirs);
+  const std::vector<double> times = compared_times(mine, theirs, at);
   if (times.empty()) return std::numeric_limits<double>::quiet_NaN();  // no common time
   double distance = 0.0;
   for (const double t : times) {
@@ -101,8 +109,8 @@ double gap(const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return (x - y).
 // tetrahedron) carried by both motions, as an arrow's p and q are.
 template <class Pose>
 double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs,
-                     const typename PoseTraits<Pose>::Simplex& corners) {
-  const std::vector<double> times = common_times(mine, theirs);
+                     const typename PoseTraits<Pose>::Simplex& corners, std::optional<double> at) {
+  const std::vector<double> times = compared_times(mine, theirs, at);
   if (times.empty()) return std::numeric_limits<double>::quiet_NaN();
   double distance = 0.0;
   for (const double t : times) {
@@ -138,22 +146,22 @@ double carried_distance(const motion::Stage& stage, std::size_t index, std::size
   return distance;
 }
 
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other, std::optional<double> at) {
   const motion::SceneMotion& mine = stage.motion(index);
   const motion::SceneMotion& theirs = stage.motion(other);
   // A scene's panels are all of its family: keyframes or points, or poses of
   // one dimension.
-  const auto arrows = [&] { return arrow_distance(mine, theirs); };  // NoMotion for points
+  const auto arrows = [&] { return arrow_distance(mine, theirs, at); };  // NoMotion for points
   const scene::Scene& scene = stage.scene();
   return std::visit(
-      overloaded{[&](const scene::KeyframeKeys&) { return arrows(); },
-                 [&](const scene::PointKeys&) { return arrows(); },
-                 [&](const scene::PlanePoseKeys&) {
-                   return pose_distance<Affine2>(mine, theirs, scene::figure_of<scene::PlanePoseKeys>(scene).reference);
-                 },
-                 [&](const scene::SpacePoseKeys&) {
-                   return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference);
-                 }},
+      overloaded{
+          [&](const scene::KeyframeKeys&) { return arrows(); }, [&](const scene::PointKeys&) { return arrows(); },
+          [&](const scene::PlanePoseKeys&) {
+            return pose_distance<Affine2>(mine, theirs, scene::figure_of<scene::PlanePoseKeys>(scene).reference, at);
+          },
+          [&](const scene::SpacePoseKeys&) {
+            return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference, at);
+          }},
       stage.panel(index).keys);
 }
 

@@ -69,7 +69,7 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\", "
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or at one time, \"@t\"), "
       "\"carried-distance:/panels/K\" and "
       "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
@@ -91,6 +91,16 @@ constexpr std::array<std::string_view, 3> kPredictors = {"previous", "average", 
 
 // "angle:/panels/1@0.25": the other panel of a claim's angle.
 constexpr std::string_view kPanelsPrefix = "/panels/";
+
+// "0.25" -> 0.25; nullopt for anything but a whole finite number.
+std::optional<double> finite_number(std::string_view text) {
+  double t = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), t);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(t)) {
+    return std::nullopt;
+  }
+  return t;
+}
 
 // "/panels/3" -> 3; nullopt for anything else.
 std::optional<std::size_t> panel_index(std::string_view pointer) {
@@ -184,9 +194,18 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance || found->kind == MeasureKind::carried_distance) {
-    const std::optional<std::size_t> panel = panel_index(rest);
+    const std::size_t at = found->kind == MeasureKind::frame_distance ? rest.find('@') : std::string_view::npos;
+    const std::optional<std::size_t> panel = panel_index(rest.substr(0, at));
     if (!panel) return fmt::format("\"{}\" must be \"{}/panels/K\", K a panel's index", text, found->name);
     measure.panel = panel;
+    if (at != std::string_view::npos) {
+      const std::optional<double> t = finite_number(rest.substr(at + 1));
+      if (!t) {
+        return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text,
+                           rest.substr(at + 1));
+      }
+      measure.at = t;
+    }
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);
@@ -203,13 +222,10 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
       return fmt::format("in \"{}\": {}", text, pita::unknown_method_reason(method, is_method_of<Method>));
     }
     const std::string_view time = rest.substr(at + 1);
-    double t = 0.0;
-    const auto [end, error] = std::from_chars(time.data(), time.data() + time.size(), t);
-    if (time.empty() || error != std::errc() || end != time.data() + time.size() || !std::isfinite(t)) {
-      return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
-    }
+    const std::optional<double> t = finite_number(time);
+    if (!t) return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
     if (named != nullptr) measure.method = *named;
-    measure.t = t;
+    measure.t = *t;
   }
   const std::span<const MeasureEntry> own = MeasureFamily<LayerType>::entries;
   if (found < own.data() || found >= own.data() + own.size()) {

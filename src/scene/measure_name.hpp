@@ -14,7 +14,8 @@
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
-//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
+//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp);
+//       "frame-distance:/panels/K@t" at time t only
 //   "carried-distance:/panels/K"                  arrow scenes, in a claim: the same,
 //       panel K's frames carried onto the panel's first keyframe (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
@@ -90,6 +91,9 @@ struct MeasureName {
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time
+  // frame-distance: one time instead of the knots the panels share
+  // ("frame-distance:/panels/K@t", also outside them: an extrapolation).
+  std::optional<double> at;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

@@ -214,6 +214,23 @@ TEST(Comparison, FrameDistanceOfTranslatedKeyframesIsTheTranslation) {
   EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12);
   EXPECT_NEAR(frame_distance(stage, 1, 0), 0.5, 1e-12);
   EXPECT_EQ(frame_distance(stage, 1, 1), 0.0);
+  // At one time, also past the last knot, where P6 extrapolates (Fig. 28).
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 1.0), 0.5, 1e-12);
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 3.0), 0.5, 1e-12);
+}
+
+// At one time: two SMA slides of one arrow, (0, 0) -> (1, 0) and (0, 0) ->
+// (2, 0) over [0, 1], are t and 2t along x, extrapolated too: t apart.
+TEST(Comparison, FrameDistanceAtOneTime) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 0}],
+      "panels": ["SMA", {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]}]})",
+                                                "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(frame_distance(stage, 0, 1), 1.0, 1e-12);  // at t = 1, the largest over [0, 1]
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 0.25), 0.25, 1e-12);
+  EXPECT_NEAR(frame_distance(stage, 1, 0, 1.5), 1.5, 1e-12);
+  EXPECT_EQ(frame_distance(stage, 0, 1, 0.0), 0.0);
 }
 
 // carried-distance: panel K's frames carried by the similarity taking its first

@@ -122,6 +122,14 @@ TEST(MeasureName, PanelsAreNamedByTheirIndex) {
                           "frame-distance:/panels/1/", "frame-distance:panels/1", "frame-distance:/panels/-1"}) {
     EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K\""), std::string::npos) << bad;
   }
+  EXPECT_FALSE(accepted("frame-distance:/panels/2").at.has_value());
+  EXPECT_EQ(accepted("frame-distance:/panels/2@1.5").at, std::optional<double>(1.5));
+  EXPECT_EQ(accepted("frame-distance:/panels/2@1.5").panel, std::optional<std::size_t>(2));
+  EXPECT_EQ(accepted<PoseLayer>("frame-distance:/panels/0@-0.25").at, std::optional<double>(-0.25));
+  for (const char* bad : {"frame-distance:/panels/2@", "frame-distance:/panels/2@x", "frame-distance:/panels/2@inf"}) {
+    EXPECT_NE(refused(bad).find("the time after \"@\" must be a finite number"), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("carried-distance:/panels/2@1").find("must be \"carried-distance:/panels/K\""), std::string::npos);
   EXPECT_EQ(accepted("carried-distance:/panels/3").kind, MeasureKind::carried_distance);
   EXPECT_EQ(accepted("carried-distance:/panels/3").panel, std::optional<std::size_t>(3));
   EXPECT_NE(refused("carried-distance:/panels/").find("must be \"carried-distance:/panels/K\""), std::string::npos);
