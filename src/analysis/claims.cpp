@@ -205,6 +205,7 @@ Source source_of(MeasureKind kind) {
       return Source::frame_steps;
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::handle_shift:
     case MeasureKind::knot_distance:
     case MeasureKind::guess_distance:
@@ -243,7 +244,7 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
                      "\"frame-distance:M\" compares with an arrow method, in arrow scenes; compare with "
                      "another panel, \"frame-distance:/panels/K\"");
         }
-        return frame_distance(stage, panel, *measure.panel);
+        return frame_distance(stage, panel, *measure.panel, measure.at);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
       if (measure.kind == MeasureKind::frame_distance && (layer || measure.layer)) {
@@ -258,9 +259,10 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
         return frame_distance(mine, theirs);
       }
       if (measure.kind == MeasureKind::frame_distance) {
-        return measure.panel ? frame_distance(stage, panel, *measure.panel)
+        return measure.panel ? frame_distance(stage, panel, *measure.panel, measure.at)
                              : frame_distance(stage, panel, measure.method);
       }
+      if (measure.kind == MeasureKind::carried_distance) return carried_distance(stage, panel, *measure.panel);
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);
@@ -317,6 +319,7 @@ std::string_view why_unmeasured(MeasureKind kind) {
     case MeasureKind::turn_step_time:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::handle_shift:
     case MeasureKind::knot_distance:
     case MeasureKind::guess_distance:

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -82,10 +83,17 @@ std::vector<double> common_times(const motion::SceneMotion& mine, const motion::
   return motion::uniform_times(first, last, kFrameDistanceSamples);
 }
 
-double arrow_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
+// The times a frame-distance compares: `at` alone, or those both panels share.
+std::vector<double> compared_times(const motion::SceneMotion& mine, const motion::SceneMotion& theirs,
+                                   std::optional<double> at) {
+  if (at) return {*at};
+  return common_times(mine, theirs);
+}
+
+double arrow_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs, std::optional<double> at) {
   (void)mine.arrows();  // NoMotion unless both panels have keyframes
   (void)theirs.arrows();
-  const std::vector<double> times = common_times(mine, theirs);
+  const std::vector<double> times = compared_times(mine, theirs, at);
   if (times.empty()) return std::numeric_limits<double>::quiet_NaN();  // no common time
   double distance = 0.0;
   for (const double t : times) {
@@ -103,8 +111,8 @@ double gap(const Eigen::Vector3d& x, const Eigen::Vector3d& y) { return (x - y).
 // tetrahedron) carried by both motions, as an arrow's p and q are.
 template <class Pose>
 double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs,
-                     const typename PoseTraits<Pose>::Simplex& corners) {
-  const std::vector<double> times = common_times(mine, theirs);
+                     const typename PoseTraits<Pose>::Simplex& corners, std::optional<double> at) {
+  const std::vector<double> times = compared_times(mine, theirs, at);
   if (times.empty()) return std::numeric_limits<double>::quiet_NaN();
   double distance = 0.0;
   for (const double t : times) {
@@ -115,36 +123,59 @@ double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion&
   return distance;
 }
 
+// The keyframe of the smallest knot of a panel of keyframes.
+const Keyframe& first_keyframe(const scene::Panel& panel) {
+  const std::vector<Keyframe>& keys = std::get<scene::KeyframeKeys>(panel.keys).keyframes;
+  return *std::min_element(keys.begin(), keys.end(), [](const Keyframe& a, const Keyframe& b) { return a.t < b.t; });
+}
+
 }  // namespace
 
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+double carried_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion& theirs = stage.motion(other);
+  (void)mine.arrows();  // NoMotion unless both panels have keyframes
+  (void)theirs.arrows();
+  const Affine2 S = carrier(first_keyframe(stage.panel(other)).arrow, first_keyframe(stage.panel(index)).arrow);
+  const std::vector<double> times = common_times(mine, theirs);
+  if (times.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double distance = 0.0;
+  for (const double t : times) {
+    const Arrow a = mine.arrow_at(t);
+    const Arrow b = theirs.arrow_at(t);
+    distance = std::max({distance, std::abs(a.p - apply(S, b.p)), std::abs(a.q() - apply(S, b.q()))});
+  }
+  return distance;
+}
+
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other, std::optional<double> at) {
   const motion::SceneMotion& mine = stage.motion(index);
   const motion::SceneMotion& theirs = stage.motion(other);
   // A scene's panels are all of its family: keyframes or points, or poses of
   // one dimension.
-  const auto arrows = [&] { return arrow_distance(mine, theirs); };  // NoMotion for points
+  const auto arrows = [&] { return arrow_distance(mine, theirs, at); };  // NoMotion for points
   const scene::Scene& scene = stage.scene();
   return std::visit(
-      overloaded{[&](const scene::KeyframeKeys&) { return arrows(); },
-                 [&](const scene::PointKeys&) { return arrows(); },
-                 [&](const scene::PlanePoseKeys&) {
-                   return pose_distance<Affine2>(mine, theirs, scene::figure_of<scene::PlanePoseKeys>(scene).reference);
-                 },
-                 [&](const scene::SpacePoseKeys&) {
-                   return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference);
-                 }},
+      overloaded{
+          [&](const scene::KeyframeKeys&) { return arrows(); }, [&](const scene::PointKeys&) { return arrows(); },
+          [&](const scene::PlanePoseKeys&) {
+            return pose_distance<Affine2>(mine, theirs, scene::figure_of<scene::PlanePoseKeys>(scene).reference, at);
+          },
+          [&](const scene::SpacePoseKeys&) {
+            return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference, at);
+          }},
       stage.panel(index).keys);
 }
 
 double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
-  return arrow_distance(mine, theirs);
+  return arrow_distance(mine, theirs, std::nullopt);
 }
 
 double frame_distance(const motion::Stage& stage, std::size_t index, Method other) {
   const motion::SceneMotion& mine = stage.motion(index);
   (void)mine.arrows();  // NoMotion unless the panel has keyframes
   const motion::SceneMotion theirs = motion::with_method(stage.scene(), stage.panel(index), other);
-  return arrow_distance(mine, theirs);
+  return arrow_distance(mine, theirs, std::nullopt);
 }
 
 double knot_distance(const motion::Stage& stage, std::size_t index) {

@@ -9,6 +9,9 @@
 //     PITA when the two handles mark the same key-shapes).
 #pragma once
 
+#include <cstddef>
+#include <optional>
+
 #include "core/pitas/registry.hpp"
 #include "motion/stage.hpp"
 #include "scene/layers.hpp"
@@ -61,8 +64,19 @@ inline constexpr int kFrameDistanceSamples = 201;
 // for poses, the largest distance between the images of a corner of the
 // reference simplex (the triangle, the tetrahedron) under the two motions.
 // NaN when the knots share no range. Throws motion::NoMotion (a panel of
-// points); 0 for the panel itself.
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
+// points); 0 for the panel itself. With `at`, the distance at that scene
+// time alone ("frame-distance:/panels/K@t"), also outside the knots, where
+// both motions extrapolate (Fig. 28's X(1.5)).
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other,
+                      std::optional<double> at = std::nullopt);
+
+// frame_distance of arrow panels with panel `other`'s frames first carried by
+// the similarity that takes its first keyframe (the one of the smallest knot)
+// onto the first keyframe of panel `index` ("carried-distance:/panels/K"):
+// 0 when the method moves with its keyframes, as P5 does under a translation
+// and He-G does not (Fig. C.31's d). NaN when the knots share no range.
+// Throws motion::NoMotion (a panel of points or poses).
+double carried_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
 // The same between two motions of keyframes (a panel's, a layer's).
 double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs);

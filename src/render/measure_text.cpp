@@ -44,8 +44,9 @@ std::string missing(const scene::MeasureName& name) {
       return fmt::format("jump {}: -", name.parameter);
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
-    case MeasureKind::frame_distance:  // claims only
-    case MeasureKind::property:        // claims only
+    case MeasureKind::frame_distance:    // claims only
+    case MeasureKind::carried_distance:  // claims only
+    case MeasureKind::property:          // claims only
     case MeasureKind::guess_distance:
     case MeasureKind::guess_discrepancy:  // claims only
     case MeasureKind::knot_distance:      // by the panel's drawing
@@ -133,6 +134,7 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
     case MeasureKind::handle_shift:
     case MeasureKind::angle:
     case MeasureKind::frame_distance:
+    case MeasureKind::carried_distance:
     case MeasureKind::property:
     case MeasureKind::knot_distance:
     case MeasureKind::guess_distance:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
@@ -34,18 +35,20 @@ class PlotBox {
   // Tick marks at the quarters of the bottom side (time) and, with `left`, of
   // the left side, and the values at the ends: the time axis from t0 to t1,
   // the left one from left->first to left->second.
-  void ticks(double t0, double t1, std::optional<std::pair<double, double>> left) {
+  void ticks(double t0, double t1, std::optional<std::pair<double, double>> left, double size = 9.0) {
     const LineStyle tick{Color{0.3, 0.3, 0.3, 1.0}, 0.8, 1.0, {}};
     const Color text{0.2, 0.2, 0.2, 1.0};
     for (const double q : {0.25, 0.5, 0.75}) {
       push(-1, Polyline{{place({q, 0.0}), place({q, 0.03})}, false, tick});
       if (left) push(-1, Polyline{{place({0.0, q}), place({0.02, q})}, false, tick});
     }
-    push(-1, Label{fmt::format("{:.3g}", t0), place({-0.01, -0.06}), 9.0, text});
-    push(-1, Label{fmt::format("{:.3g}", t1), place({0.985, -0.06}), 9.0, text});
+    push(-1, Label{fmt::format("{:.3g}", t0), place({-0.01, -0.06}), size, text});
+    push(-1, Label{fmt::format("{:.3g}", t1), place({0.985, -0.06}), size, text});
     if (left) {
-      push(-1, Label{fmt::format("{:.3g}", left->first), place({-0.045, 0.0}), 9.0, text});
-      push(-1, Label{fmt::format("{:.3g}", left->second), place({-0.045, 1.0}), 9.0, text});
+      // Texts larger than the default 9 px start further left, clear of the box.
+      const Point wider{-1.2 * std::max(0.0, size - 9.0), 0.0};
+      push(-1, Label{fmt::format("{:.3g}", left->first), place({-0.045, 0.0}), size, text, false, wider});
+      push(-1, Label{fmt::format("{:.3g}", left->second), place({-0.045, 1.0}), size, text, false, wider});
     }
   }
   std::vector<Item> items() && { return std::move(items_); }
@@ -59,6 +62,23 @@ class PlotBox {
 
 }  // namespace
 
+namespace {
+
+// The curve of a plot at `times`, in the unit square: the distance-time
+// function, or with "of": "time" the timing's warp itself, the share of the
+// motion's own time reached at each share of scene time.
+std::vector<Point> plotted(const scene::PlotLayer& layer, const motion::SceneMotion& motion,
+                           std::span<const double> times) {
+  if (layer.of != scene::PlotOf::time) return analysis::distance_time(motion, layer.point, times);
+  const double first = motion.first(), duration = motion.last() - motion.first();
+  std::vector<Point> curve;
+  curve.reserve(times.size());
+  for (const double t : times) curve.push_back({(t - first) / duration, (motion.motion_time(t) - first) / duration});
+  return curve;
+}
+
+}  // namespace
+
 std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneMotion& motion,
                              const std::vector<double>& marks, const std::string& pointer) {
   PlotBox box(layer, pointer);
@@ -68,11 +88,11 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
 
   const std::vector<double> times = motion::uniform_times(motion.first(), motion.last(), layer.samples);
   std::vector<Point> curve;
-  for (const Point p : analysis::distance_time(motion, layer.point, times)) curve.push_back(place(p));
+  for (const Point p : plotted(layer, motion, times)) curve.push_back(place(p));
   push(-1, Polyline{std::move(curve), false, layer.line});
 
   if (layer.marks) {
-    const std::vector<Point> dots = analysis::distance_time(motion, layer.point, marks);
+    const std::vector<Point> dots = plotted(layer, motion, marks);
     const double radius = 0.015 * box.smaller_side();
     for (std::size_t i = 0; i < dots.size(); ++i) {
       push(static_cast<int>(i),
@@ -80,9 +100,10 @@ std::vector<Item> plot_items(const scene::PlotLayer& layer, const motion::SceneM
     }
   }
   const Color text{0.2, 0.2, 0.2, 1.0};
-  box.ticks(motion.first(), motion.last(), std::pair{0.0, 1.0});  // the distance is a share of the path's length
-  push(-1, Label{"time", place({0.45, -0.12}), 10.0, text});
-  push(-1, Label{"distance", place({-0.02, 1.08}), 10.0, text});
+  // The distance is a share of the path's length, the warped time one of the knots' range.
+  box.ticks(motion.first(), motion.last(), std::pair{0.0, 1.0}, layer.size - 1.0);
+  push(-1, Label{"time", place({0.45, -0.12}), layer.size, text});
+  push(-1, Label{layer.of == scene::PlotOf::time ? "motion time" : "distance", place({-0.02, 1.08}), layer.size, text});
   return std::move(box).items();
 }
 
@@ -134,10 +155,10 @@ std::vector<Item> area_plot_items(const scene::PlotLayer& layer, const std::vect
     push(-1,
          Label{area_summary(one.name, one.curve), place({0.0, -0.2 - 0.1 * static_cast<double>(k)}), 11.0, one.color});
   }
-  box.ticks(first, last, std::nullopt);
-  push(-1, Label{"time", place({0.45, -0.08}), 10.0, text});
-  push(-1, Label{fmt::format("|det L| = {:.4g}", largest), place({0.01, 1.05}), 10.0, text});
-  push(-1, Label{fmt::format("|det L| = {:.4g}", smallest), place({0.01, 0.04}), 10.0, text});
+  box.ticks(first, last, std::nullopt, layer.size - 1.0);
+  push(-1, Label{"time", place({0.45, -0.08}), layer.size, text});
+  push(-1, Label{fmt::format("|det L| = {:.4g}", largest), place({0.01, 1.05}), layer.size, text});
+  push(-1, Label{fmt::format("|det L| = {:.4g}", smallest), place({0.01, 0.04}), layer.size, text});
   return std::move(box).items();
 }
 

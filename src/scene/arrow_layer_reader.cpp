@@ -42,8 +42,8 @@ constexpr std::array<std::string_view, 9> kCompareFields = {"type", "method",  "
 constexpr std::array<std::string_view, 4> kHandleFields = {"type", "color", "width", "shapes"};
 constexpr std::array<std::string_view, 9> kPointTrajectoryFields = {"type",  "curve",   "samples", "range", "color",
                                                                     "width", "opacity", "dash",    "dots"};
-constexpr std::array<std::string_view, 2> kPlotOfNames = {"distance", "area"};
-constexpr std::array<PlotOf, 2> kPlotOfs = {PlotOf::distance, PlotOf::area};
+constexpr std::array<std::string_view, 3> kPlotOfNames = {"distance", "area", "time"};
+constexpr std::array<PlotOf, 3> kPlotOfs = {PlotOf::distance, PlotOf::area, PlotOf::time};
 
 constexpr std::array<std::string_view, 6> kPropertyTableFields = {"type", "methods", "configs", "seed", "at", "trees"};
 constexpr std::array<std::string_view, 3> kTreeFields = {"title", "order", "methods"};
@@ -434,11 +434,12 @@ PlotLayer read_plot(const Fields& fields) {
   fields.integer("samples", 2, kMaxTrajectorySamples, layer.samples);
   read_line(fields, layer.line);
   fields.boolean("marks", layer.marks);
+  fields.number("size", kTextSize, layer.size);
   fields.choice("of", kPlotOfNames, kPlotOfs, layer.of);
   if (layer.of == PlotOf::area && !LayerFamily<LayerType>::moves_poses) {
     fields.reader().fail(fields.at("of"),
                          "\"area\" plots the area of a pose scene's shapes; an arrow scene's "
-                         "plot is of \"distance\"");
+                         "plot is of \"distance\" or \"time\"");
   }
   for (const std::string_view key : {std::string_view("methods"), std::string_view("colors")}) {
     if (layer.of != PlotOf::area && fields.get(key) != nullptr) {

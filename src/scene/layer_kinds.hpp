@@ -57,8 +57,8 @@ std::span<const LayerKind<PoseLayer>> pose_layer_table();
 // over the family of the scene's layers (Layer or PoseLayer).
 inline constexpr std::array<std::string_view, 6> kLabelFields = {"type", "text", "at", "size", "color", "place"};
 inline constexpr std::array<std::string_view, 5> kMeasuresFields = {"type", "show", "at", "size", "color"};
-inline constexpr std::array<std::string_view, 12> kPlotFields = {
-    "type", "box", "of", "methods", "colors", "point", "samples", "color", "width", "opacity", "dash", "marks"};
+inline constexpr std::array<std::string_view, 13> kPlotFields = {
+    "type", "box", "of", "methods", "colors", "point", "samples", "color", "width", "opacity", "dash", "marks", "size"};
 inline constexpr std::array<std::string_view, 11> kShapesFields = {
     "type", "color", "width", "opacity", "dash", "fill", "fill_opacity", "samples", "range", "times", "lightness"};
 

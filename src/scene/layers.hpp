@@ -164,7 +164,7 @@ struct LegendLayer {  // "legend": the keyframes' colours and knots, and the met
 // any curve span the box's height (a constant area sits at mid-height), with
 // each curve's summary printed under the box: monotone and end/start, or its
 // interior extremum (render/time_chart.cpp).
-enum class PlotOf { distance, area };
+enum class PlotOf { distance, area, time };
 struct PlotLayer {
   Box box{Point{0.0, 0.0}, Point{1.0, 1.0}};  // required: where the unit square is drawn
   PlotOf of = PlotOf::distance;
@@ -175,6 +175,7 @@ struct PlotLayer {
   int samples = 200;  // [2, kMaxTrajectorySamples]
   LineStyle line{Color{0.1, 0.3, 0.7, 1.0}, 1.5, 1.0, {}};
   bool marks = true;
+  double size = 10.0;  // text size of the axes' names; their end values one pixel smaller
 };
 inline constexpr std::size_t kMaxPlotMethods = 8;
 

@@ -19,7 +19,7 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 26> kMeasures{{
+constexpr std::array<MeasureEntry, 27> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
@@ -41,6 +41,9 @@ constexpr std::array<MeasureEntry, 26> kMeasures{{
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
     {"guess-distance:", MeasureKind::guess_distance, true},
     {"guess-discrepancy:", MeasureKind::guess_discrepancy, true},
+    // A claim's: this panel's frames against another panel's, carried onto
+    // this panel's first keyframe (analysis/comparison.hpp).
+    {"carried-distance:", MeasureKind::carried_distance, true},
     // Both families': a claim measures a property of pita audit (or pita
     // audit poses) on the panel's three keyframes or poses, or compares the
     // frames of two panels of an arrow scene, or the poses of two panels of a
@@ -51,8 +54,8 @@ constexpr std::array<MeasureEntry, 26> kMeasures{{
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 23;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 21;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 24;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 22;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -70,10 +73,11 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or "
-      "\"frame-distance:/panels/K/layers/L\", the motion that layer draws, or \"frame-distance:M\", M an arrow "
-      "method), \"guess-distance:G\" and \"guess-discrepancy:G\" (G a guess of the panel's "
-      "\"guesses\" layer) and \"property:NAME\" (a property of Sec. 4, as pita audit names it)";
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or at one time, "
+      "\"frame-distance:/panels/K@t\", or \"frame-distance:/panels/K/layers/L\", the motion that layer draws, or "
+      "\"frame-distance:M\", M an arrow method), \"carried-distance:/panels/K\", \"guess-distance:G\" and "
+      "\"guess-discrepancy:G\" (G a guess of the panel's \"guesses\" layer) and \"property:NAME\" (a property of "
+      "Sec. 4, as pita audit names it)";
 };
 
 template <>
@@ -97,6 +101,16 @@ constexpr std::string_view kPanelsPrefix = "/panels/";
 // "/panels/1/layers/4": a layer of another panel, in "frame-distance:".
 constexpr std::string_view kLayersInfix = "/layers/";
 
+// "0.25" -> 0.25; nullopt for anything but a whole finite number.
+std::optional<double> finite_number(std::string_view text) {
+  double t = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), t);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(t)) {
+    return std::nullopt;
+  }
+  return t;
+}
+
 // "/panels/3" -> 3; nullopt for anything else.
 std::optional<std::size_t> panel_index(std::string_view pointer) {
   if (!pointer.starts_with(kPanelsPrefix)) return std::nullopt;
@@ -110,6 +124,20 @@ std::optional<std::size_t> panel_index(std::string_view pointer) {
 // "frame-distance:" and `rest`, "/panels/K", "/panels/K/layers/L" or an
 // arrow method, into `measure`; why not otherwise.
 std::optional<std::string> parse_frame_distance(std::string_view text, std::string_view rest, MeasureName& measure) {
+  // "/panels/K@t": the two panels at one time only.
+  if (const std::size_t at = rest.starts_with(kPanelsPrefix) ? rest.find('@') : std::string_view::npos;
+      at != std::string_view::npos) {
+    const std::optional<double> t = finite_number(rest.substr(at + 1));
+    if (!t) {
+      return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text,
+                         rest.substr(at + 1));
+    }
+    measure.at = t;
+    rest = rest.substr(0, at);
+    if (rest.find(kLayersInfix) != std::string_view::npos) {
+      return fmt::format("in \"{}\": \"@t\" compares two panels (\"frame-distance:/panels/K@t\"), not a layer", text);
+    }
+  }
   const std::size_t layers = rest.starts_with(kPanelsPrefix) ? rest.find(kLayersInfix) : std::string_view::npos;
   const std::optional<std::size_t> panel = panel_index(rest.substr(0, layers));
   if (panel && layers != std::string_view::npos) {
@@ -189,7 +217,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
   }
   if (found == nullptr) return unknown<LayerType>(text);
-  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0, std::nullopt};
+  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0, std::nullopt, std::nullopt};
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
     if (!is_keyframe_parameter(rest)) {
@@ -220,6 +248,10 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
     if (std::optional<std::string> refused = parse_frame_distance(text, rest, measure)) return *refused;
+  } else if (found->kind == MeasureKind::carried_distance) {
+    const std::optional<std::size_t> panel = panel_index(rest);
+    if (!panel) return fmt::format("\"{}\" must be \"{}/panels/K\", K a panel's index", text, found->name);
+    measure.panel = panel;
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);
@@ -236,13 +268,10 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
       return fmt::format("in \"{}\": {}", text, pita::unknown_method_reason(method, is_method_of<Method>));
     }
     const std::string_view time = rest.substr(at + 1);
-    double t = 0.0;
-    const auto [end, error] = std::from_chars(time.data(), time.data() + time.size(), t);
-    if (time.empty() || error != std::errc() || end != time.data() + time.size() || !std::isfinite(t)) {
-      return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
-    }
+    const std::optional<double> t = finite_number(time);
+    if (!t) return fmt::format("in \"{}\": the time after \"@\" must be a finite number (got \"{}\")", text, time);
     if (named != nullptr) measure.method = *named;
-    measure.t = t;
+    measure.t = *t;
   }
   const std::span<const MeasureEntry> own = MeasureFamily<LayerType>::entries;
   if (found < own.data() || found >= own.data() + own.size()) {

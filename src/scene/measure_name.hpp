@@ -24,6 +24,9 @@
 //   "guess-distance:G", "guess-discrepancy:G"     arrow scenes, in a claim: the
 //       distance and the discrepancy between the arrow G of the panel's
 //       "guesses" layer and the frame at its time (Figs. 16, 18)
+//       "frame-distance:/panels/K@t" at time t only
+//   "carried-distance:/panels/K"                  arrow scenes, in a claim: the same,
+//       panel K's frames carried onto the panel's first keyframe (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
 //       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value
@@ -70,6 +73,7 @@ enum class MeasureKind {
   discrepancy_of,
   discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
   velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
+  carried_distance,  // "carried-distance:/panels/K": claims only, arrow scenes (analysis/comparison.hpp)
 };
 
 struct MeasureEntry {
@@ -97,7 +101,7 @@ struct MeasureName {
                           // guess-distance, guess-discrepancy: the guess's name
   Method method{};        // angle, frame-distance (without a panel): the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
-  // frame-distance: the other panel. Only a claim may name a panel (its
+  // frame-distance, carried-distance: the other panel. Only a claim may name a panel (its
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time
@@ -105,6 +109,9 @@ struct MeasureName {
   // motion it draws (a pattern or trajectory layer's own method or options,
   // a compare layer's method).
   std::optional<std::size_t> layer;
+  // frame-distance: one time instead of the knots the panels share
+  // ("frame-distance:/panels/K@t", also outside them: an extrapolation).
+  std::optional<double> at;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

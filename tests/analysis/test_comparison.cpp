@@ -217,6 +217,68 @@ TEST(Comparison, FrameDistanceOfTranslatedKeyframesIsTheTranslation) {
   EXPECT_NEAR(frame_distance(stage, 0, 1), 0.5, 1e-12);
   EXPECT_NEAR(frame_distance(stage, 1, 0), 0.5, 1e-12);
   EXPECT_EQ(frame_distance(stage, 1, 1), 0.0);
+  // At one time, also past the last knot, where P6 extrapolates (Fig. 28).
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 1.0), 0.5, 1e-12);
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 3.0), 0.5, 1e-12);
+}
+
+// At one time: two SMA slides of one arrow, (0, 0) -> (1, 0) and (0, 0) ->
+// (2, 0) over [0, 1], are t and 2t along x, extrapolated too: t apart.
+TEST(Comparison, FrameDistanceAtOneTime) {
+  const scene::Scene scene = scene::parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 0}],
+      "panels": ["SMA", {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]}]})",
+                                                "test.json");
+  const motion::Stage stage(scene);
+  EXPECT_NEAR(frame_distance(stage, 0, 1), 1.0, 1e-12);  // at t = 1, the largest over [0, 1]
+  EXPECT_NEAR(frame_distance(stage, 0, 1, 0.25), 0.25, 1e-12);
+  EXPECT_NEAR(frame_distance(stage, 1, 0, 1.5), 1.5, 1e-12);
+  EXPECT_EQ(frame_distance(stage, 0, 1, 0.0), 0.0);
+}
+
+// carried-distance: panel K's frames carried by the similarity taking its first
+// keyframe onto the panel's. A method that commutes with similarities (P6,
+// Sec. 4.3; P5 with translations, about its centroid) gives 0 for keyframes
+// moved by one; He-G, about the global origin, does not (Fig. C.31).
+TEST(Comparison, CarriedDistanceOfMovedKeyframes) {
+  const std::string keys =
+      R"([{{"t": 0, "p": [{0}, 0.5], "m": 1, "w": -0.4}}, {{"t": 0.5, "p": [{1}, 2.5], "m": 0.7, "w": 1.6}},
+      {{"t": 1, "p": [{2}, 1], "m": 1.2, "w": 2.9}}])";
+  const std::string here = fmt::format(fmt::runtime(keys), 1, 2.5, 4.5);
+  const std::string there = fmt::format(fmt::runtime(keys), 7, 8.5, 10.5);
+  for (const char* method : {"P5", "P6", "P1", "He-G"}) {
+    const scene::Scene scene = scene::parse_scene(
+        fmt::format(
+            R"({{"method": "{0}", "keyframes": {1}, "panels": [{{"method": "{0}"}}, {{"method": "{0}", "keyframes": {2}}}]}})",
+            method, here, there),
+        "test.json");
+    const motion::Stage stage(scene);
+    EXPECT_NEAR(frame_distance(stage, 1, 0), 6.0, std::string(method) == "He-G" ? 1.0 : 1e-12) << method;
+    if (std::string(method) == "He-G") {
+      EXPECT_GT(carried_distance(stage, 1, 0), 0.1) << method;
+    } else {
+      EXPECT_NEAR(carried_distance(stage, 1, 0), 0.0, 1e-12) << method;
+      EXPECT_NEAR(carried_distance(stage, 0, 1), 0.0, 1e-12) << method;
+    }
+  }
+  // P6 commutes with rotations and scalings too: the keyframes turned by a
+  // quarter turn and doubled about the origin.
+  const scene::Scene turned = scene::parse_scene(R"({"method": "P6", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0.2}, {"t": 1, "p": [3, 2], "m": 0.6, "w": 1.9}, {"t": 2, "p": [6, 0], "m": 1.3, "w": 3.1}],
+      "panels": ["P6", {"method": "P6", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 2, "w": 1.7707963267948966}, {"t": 1, "p": [-4, 6], "m": 1.2, "w": 3.4707963267948966},
+      {"t": 2, "p": [0, 12], "m": 2.6, "w": 4.670796326794897}]}]})",
+                                                 "test.json");
+  EXPECT_NEAR(carried_distance(motion::Stage(turned), 1, 0), 0.0, 1e-12);
+  // Two translations of one arrow by SMA: (0, 0) -> (1, 0) and (0, 0) -> (2, 0)
+  // share their first keyframe (the identity carries), and their frames at t
+  // are t and 2t along x: the largest distance is 1, at t = 1.
+  const scene::Scene slides = scene::parse_scene(R"({"method": "SMA", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 0}],
+      "panels": ["SMA", {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}]}]})",
+                                                 "test.json");
+  EXPECT_NEAR(carried_distance(motion::Stage(slides), 1, 0), 1.0, 1e-12);
+  EXPECT_NEAR(carried_distance(motion::Stage(slides), 0, 1), 1.0, 1e-12);
 }
 
 // Poses: the largest distance between the corners of the reference triangle

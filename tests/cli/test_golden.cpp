@@ -6,6 +6,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
 #include "run_pita.hpp"
@@ -177,6 +178,38 @@ TEST_F(Check, PaperClaimsOfComparisonsFailWhenTheFigureChanges) {
                              "/claims/2: claim failed: \"after the four moves d = 0.0304"}) {
     EXPECT_NE(r.err.find(failed), std::string::npos) << failed << "\n" << r.err;
   }
+}
+
+// More of them, each a scene's panel given a neighbouring method (as a
+// reviewer would swap P6 for P8): Fig. 22's knot-ratio-0.7 P6 panel, Fig.
+// C.31's translated P5 panel, Fig. 4's WAM path, Fig. 28's P5 with B = M(A, C).
+TEST_F(Check, PaperClaimsFailWhenAPanelsMethodChanges) {
+  const fs::path scenes = fs::path(PITA_SOURCE_DIR) / "scenes";
+  struct Swap {
+    std::string scene;
+    std::size_t panel;
+    std::string field, value, failed;
+  };
+  const Swap swaps[] = {
+      {"fig22-knot-recoil", 1, "method", "P8", "/claims/3: claim failed: \"P6 is knot-controlled (Sec. 4.8)"},
+      {"appC-fig31-homogeneous-origin", 1, "method", "He-G",
+       "/claims/0: claim failed: \"P5, keyframes translated by (6, 0): d < 1e-12"},
+      {"fig04-mean-variants", 0, "path_mean", "geometric",
+       "/claims/0: claim failed: \"the path mean changes the motion"},
+      {"fig28-prediction", 13, "method", "P4", "/claims/13: claim failed: \"P5's d = 0.11"},
+  };
+  std::vector<std::string> args{"check"};
+  for (const Swap& swap : swaps) {
+    nlohmann::json scene = nlohmann::json::parse(read_file(scenes / (swap.scene + ".json")));
+    nlohmann::json& panel = scene.at("panels").at(swap.panel);
+    (swap.field == "method" ? panel["method"] : panel["options"][swap.field]) = swap.value;
+    dir.write(swap.scene + ".json", scene.dump(1));
+    args.push_back(swap.scene + ".json");
+  }
+  args.insert(args.end(), {"--golden", (fs::path(PITA_SOURCE_DIR) / "golden").string()});
+  const RunResult r = run(args);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  for (const Swap& swap : swaps) EXPECT_NE(r.err.find(swap.failed), std::string::npos) << swap.scene << "\n" << r.err;
 }
 
 // A finding of the lint that the scene does not accept fails `check` like a

@@ -71,6 +71,50 @@ TEST(Plot, AxesHaveTicksAndTheirEndValues) {
   EXPECT_EQ(ticks, 6);
 }
 
+// "of": "time": the warp itself. A sine ease without arc length is its own
+// curve, (1 - cos(pi x))/2, whatever the motion's speed; the marks sit on it,
+// the vertical axis is named "motion time", and "size" sets the axes' texts.
+TEST(Plot, TimePlotsTheWarpItself) {
+  const motion::SceneMotion motion = motion::build_motion(p6(R"(, "timing": {"ease": "sine"})"));
+  scene::PlotLayer layer;
+  layer.of = scene::PlotOf::time;
+  layer.box = {Point{1.0, 1.0}, Point{3.0, 2.0}};
+  layer.samples = 51;
+  layer.size = 14.0;
+  const std::vector<Item> items = plot_items(layer, motion, {0.0, 0.25, 0.5, 0.75, 1.0}, "/layers/0");
+  const Polyline* curve = nullptr;
+  std::vector<Point> dots;
+  std::vector<std::pair<std::string, double>> texts;
+  for (const Item& item : items) {
+    if (const auto* line = std::get_if<Polyline>(&item.shape); line && line->points.size() == 51) curve = line;
+    if (const auto* dot = std::get_if<Circle>(&item.shape)) dots.push_back(dot->center);
+    if (const auto* label = std::get_if<Label>(&item.shape)) texts.emplace_back(label->text, label->size);
+  }
+  ASSERT_NE(curve, nullptr);
+  const auto ease = [](double x) { return (1.0 - std::cos(M_PI * x)) / 2.0; };
+  for (const Point p : curve->points) {
+    const double x = (p.real() - 1.0) / 2.0, y = p.imag() - 1.0;
+    EXPECT_NEAR(y, ease(x), 1e-12) << x;
+  }
+  ASSERT_EQ(dots.size(), 5u);
+  EXPECT_NEAR(dots[1].imag() - 1.0, ease(0.25), 1e-12);
+  const auto named = [&](const std::string& text) {
+    return std::find_if(texts.begin(), texts.end(), [&](const auto& t) { return t.first == text; });
+  };
+  ASSERT_NE(named("motion time"), texts.end());
+  EXPECT_EQ(named("motion time")->second, 14.0);
+  EXPECT_EQ(named("time")->second, 14.0);
+  EXPECT_EQ(named("1")->second, 13.0);  // an end value, one pixel smaller
+  EXPECT_EQ(named("distance"), texts.end());
+  // Without a timing the warp is the identity: the diagonal.
+  const motion::SceneMotion plain = motion::build_motion(p6(""));
+  for (const Item& item : plot_items(layer, plain, {}, "/layers/0")) {
+    if (const auto* line = std::get_if<Polyline>(&item.shape); line && line->points.size() == 51) {
+      for (const Point p : line->points) EXPECT_NEAR(p.imag() - 1.0, (p.real() - 1.0) / 2.0, 1e-12);
+    }
+  }
+}
+
 TEST(Plot, MarksCanBeLeftOut) {
   const motion::SceneMotion motion = motion::build_motion(p6(""));
   scene::PlotLayer layer;

@@ -56,7 +56,7 @@ void check_family_entries() {
   for (const MeasureEntry& entry : measure_entries_of<LayerType>()) {
     const std::string argument =
         entry.kind == MeasureKind::angle                                                            ? "P6@0.5"
-        : entry.kind == MeasureKind::frame_distance                                                 ? "/panels/1"
+        : entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::carried_distance  ? "/panels/1"
         : entry.kind == MeasureKind::property                                                       ? "pop-free"
         : entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time  ? "average"
         : entry.kind == MeasureKind::guess_distance || entry.kind == MeasureKind::guess_discrepancy ? "L"
@@ -149,6 +149,18 @@ TEST(MeasureName, PanelsAreNamedByTheirIndex) {
                           "frame-distance:/panels/1/", "frame-distance:panels/1", "frame-distance:/panels/-1"}) {
     EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K\""), std::string::npos) << bad;
   }
+  EXPECT_FALSE(accepted("frame-distance:/panels/2").at.has_value());
+  EXPECT_EQ(accepted("frame-distance:/panels/2@1.5").at, std::optional<double>(1.5));
+  EXPECT_EQ(accepted("frame-distance:/panels/2@1.5").panel, std::optional<std::size_t>(2));
+  EXPECT_EQ(accepted<PoseLayer>("frame-distance:/panels/0@-0.25").at, std::optional<double>(-0.25));
+  for (const char* bad : {"frame-distance:/panels/2@", "frame-distance:/panels/2@x", "frame-distance:/panels/2@inf"}) {
+    EXPECT_NE(refused(bad).find("the time after \"@\" must be a finite number"), std::string::npos) << bad;
+  }
+  EXPECT_NE(refused("carried-distance:/panels/2@1").find("must be \"carried-distance:/panels/K\""), std::string::npos);
+  EXPECT_EQ(accepted("carried-distance:/panels/3").kind, MeasureKind::carried_distance);
+  EXPECT_EQ(accepted("carried-distance:/panels/3").panel, std::optional<std::size_t>(3));
+  EXPECT_NE(refused("carried-distance:/panels/").find("must be \"carried-distance:/panels/K\""), std::string::npos);
+  EXPECT_NE(refused<PoseLayer>("carried-distance:/panels/1").find("only"), std::string::npos);
   EXPECT_NE(refused("angle:/panels/one@0.5").find("must be \"/panels/\" and a panel's index"), std::string::npos);
 }
 

@@ -664,8 +664,9 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
       plain.emplace_back(entry.name);
     } else if (entry.kind == MeasureKind::angle) {
       angle = std::string(entry.name);
-    } else if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::property ||
-               entry.kind == MeasureKind::guess_distance || entry.kind == MeasureKind::guess_discrepancy) {
+    } else if (entry.kind == MeasureKind::frame_distance || entry.kind == MeasureKind::carried_distance ||
+               entry.kind == MeasureKind::property || entry.kind == MeasureKind::guess_distance ||
+               entry.kind == MeasureKind::guess_discrepancy) {
       continue;  // claims only: the schema's "measureName" (below)
     } else if (entry.kind == MeasureKind::discrepancy_of || entry.kind == MeasureKind::discrepancy_time) {
       continue;  // a pattern of their own (below)
@@ -688,12 +689,14 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
     })) << name;
   }
   EXPECT_EQ(items.size(), 4u);
-  // A claim's measures: the layer's, "frame-distance:" and "property:" (whose names
+  // A claim's measures: the layer's, "frame-distance:", "carried-distance:" and "property:" (whose names
   // tests/analysis/test_claims.cpp checks against the table of properties).
   const nlohmann::json& claim = schema.at("definitions").at("measureName").at("anyOf");
   ASSERT_EQ(claim.size(), 7u);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(claim.at(i), items.at(i));
-  EXPECT_EQ(claim.at(4).at("pattern"), "^frame-distance:(/panels/[0-9]+(/layers/[0-9]+)?|[A-Za-z0-9][A-Za-z0-9-]*)$");
+  EXPECT_EQ(claim.at(4).at("pattern"),
+            "^(frame-distance:(/panels/[0-9]+(/layers/[0-9]+|@-?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?)?|"
+            "[A-Za-z0-9][A-Za-z0-9-]*)|carried-distance:/panels/[0-9]+)$");
   EXPECT_EQ(claim.at(5).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
   EXPECT_EQ(claim.at(6).at("pattern"), "^guess-(distance|discrepancy):.+$");
 }
