@@ -54,8 +54,9 @@ The lint looks at the figure as `pita render` would draw it, in canvas pixels, b
 Its checks:
 {}
 A scene accepts a finding, with the reason, under "lint": {{"allow": [{{"check": "text-over-data",
-"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" (default 0.5) and
-"min_frame_pixels" (default 3) set two thresholds (docs/reference/lint.md "Lint"). `pita check` runs the lint too.
+"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" (default 0.5),
+"min_frame_pixels" (default 3) and "max_hidden_share" (default 0.5) set three thresholds
+(docs/reference/lint.md "Lint"). `pita check` runs the lint too.
 
 Examples:
   pita lint scenes/*.json
