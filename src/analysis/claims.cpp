@@ -180,10 +180,14 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
       if (measure.kind == MeasureKind::frame_distance &&
           (std::holds_alternative<scene::PlanePoseKeys>(stage.panel(panel).keys) ||
            std::holds_alternative<scene::SpacePoseKeys>(stage.panel(panel).keys))) {
-        return frame_distance(stage, panel, *measure.panel);
+        return measure.versus ? method_distance(stage, panel, *measure.versus)
+                              : frame_distance(stage, panel, *measure.panel);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
-      if (measure.kind == MeasureKind::frame_distance) return frame_distance(stage, panel, *measure.panel);
+      if (measure.kind == MeasureKind::frame_distance) {
+        return measure.versus ? method_distance(stage, panel, *measure.versus)
+                              : frame_distance(stage, panel, *measure.panel);
+      }
       if (measure.kind == MeasureKind::angle) {
         if (measure.panel) return panel_angle(stage, panel, *measure.panel, measure.t);
         return vector_angle(stage, panel, measure.method, measure.t);

@@ -115,9 +115,11 @@ double pose_distance(const motion::SceneMotion& mine, const motion::SceneMotion&
 
 }  // namespace
 
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
-  const motion::SceneMotion& mine = stage.motion(index);
-  const motion::SceneMotion& theirs = stage.motion(other);
+namespace {
+
+// How far two motions of the stage's panel `index`'s kind are apart.
+double motions_distance(const motion::Stage& stage, std::size_t index, const motion::SceneMotion& mine,
+                        const motion::SceneMotion& theirs) {
   // A scene's panels are all of its family: keyframes or points, or poses of
   // one dimension.
   const auto arrows = [&] { return arrow_distance(mine, theirs); };  // NoMotion for points
@@ -132,6 +134,18 @@ double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t
                    return pose_distance<Affine3>(mine, theirs, scene::figure_of<scene::SpacePoseKeys>(scene).reference);
                  }},
       stage.panel(index).keys);
+}
+
+}  // namespace
+
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other) {
+  return motions_distance(stage, index, stage.motion(index), stage.motion(other));
+}
+
+double method_distance(const motion::Stage& stage, std::size_t index, const AnyMethod& method) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion theirs = motion::with_method(stage.scene(), stage.panel(index), method);
+  return motions_distance(stage, index, mine, theirs);
 }
 
 }  // namespace pita::analysis

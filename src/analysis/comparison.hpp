@@ -63,4 +63,10 @@ inline constexpr int kFrameDistanceSamples = 201;
 // points); 0 for the panel itself.
 double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
+// The same between the stage's panel `index` and `method` (of the panel's
+// kind) through the panel's keyframes or poses, options and timing
+// ("frame-distance:M": Fig. 4's mid-way poses of SAM and Alexa). Throws
+// motion::NoMotion when either motion does not exist.
+double method_distance(const motion::Stage& stage, std::size_t index, const AnyMethod& method);
+
 }  // namespace pita::analysis

@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -66,7 +67,8 @@ struct MeasureFamily<Layer> {
       ", or \"gain:K.x\", \"turn:K.x\" and \"jump:K.x\" with K a keyframe (A, B, ...) and x one of p, q, "
       "p.x, p.y, q.x, q.y, m, w, t, or \"angle:M@t\" with M an arrow method (in a claim also another "
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
-      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" and "
+      "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M an arrow "
+      "method) and "
       "\"property:NAME\" (a property of Sec. 4, as pita audit names it)";
 };
 
@@ -78,8 +80,8 @@ struct MeasureFamily<PoseLayer> {
   using Other = Layer;
   static constexpr std::array<std::string_view, 2> defaults = {"ara", "area"};
   static constexpr std::string_view more =
-      ", or in a claim \"frame-distance:/panels/K\" and \"property:NAME\" (a property as pita audit poses names "
-      "it)";
+      ", or in a claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M a pose method) and \"property:NAME\" "
+      "(a property as pita audit poses names it)";
 };
 
 // The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).
@@ -180,9 +182,18 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     }
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
-    const std::optional<std::size_t> panel = panel_index(rest);
-    if (!panel) return fmt::format("\"{}\" must be \"frame-distance:/panels/K\", K a panel's index", text);
-    measure.panel = panel;
+    // Another panel, or another method of the scene's kind.
+    using MethodOfScene = std::conditional_t<std::is_same_v<LayerType, Layer>, Method, PoseMethod>;
+    const MethodOfScene* method = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<MethodOfScene>(rest);
+    if (method != nullptr) {
+      measure.versus = AnyMethod(*method);
+    } else if (const std::optional<std::size_t> panel = panel_index(rest)) {
+      measure.panel = panel;
+    } else {
+      return fmt::format(
+          "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M a method of {}",
+          text, MeasureFamily<LayerType>::words);
+    }
   } else if (found->kind == MeasureKind::angle) {
     const std::size_t at = rest.find('@');
     const std::string_view method = rest.substr(0, at);

@@ -13,8 +13,10 @@
 //       claim M may be another panel, "angle:/panels/1@0.25" (docs/reference/check.md "Claims")
 //   "scale-step", "turn-step", "scale-min",       arrow scenes: the frames the
 //   "scale-max"                                   pattern draws (analysis/frame_steps.hpp)
-//   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
-//       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp)
+//   "frame-distance:/panels/K", "frame-distance:M"  arrow and pose scenes, in a claim:
+//       how far the panel's frames (poses) are from panel K's, or from those of
+//       method M (of the scene's kind) through the panel's keyframes (poses)
+//       (analysis/comparison.hpp)
 //   "discrepancy:P", "discrepancy-t:P"            arrow scenes: the largest E of
 //       predictor P (previous, average, pita) over the pattern, and the time of it
 //   "property:NAME"                               arrow scenes, in a claim: the value
@@ -52,7 +54,7 @@ enum class MeasureKind {
   turn_step,
   scale_min,
   scale_max,       // the drawn frames (analysis/frame_steps.hpp)
-  frame_distance,  // "frame-distance:/panels/K": claims only (analysis/comparison.hpp)
+  frame_distance,  // "frame-distance:/panels/K" or ":M": claims only (analysis/comparison.hpp)
   property,  // "property:NAME": claims only, a property of Sec. 4 on the panel's keyframes (analysis/properties.hpp)
   discrepancy_of,
   discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
@@ -87,6 +89,8 @@ struct MeasureName {
   // reader checks the index).
   std::optional<std::size_t> panel;
   double t = 0.0;  // angle: the time
+  // frame-distance: the other method instead of a panel ("frame-distance:Alexa").
+  std::optional<AnyMethod> versus;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

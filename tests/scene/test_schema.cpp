@@ -692,7 +692,7 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
   const nlohmann::json& claim = schema.at("definitions").at("measureName").at("anyOf");
   ASSERT_EQ(claim.size(), 6u);
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(claim.at(i), items.at(i));
-  EXPECT_EQ(claim.at(4).at("pattern"), "^frame-distance:/panels/[0-9]+$");
+  EXPECT_EQ(claim.at(4).at("pattern"), "^frame-distance:(/panels/[0-9]+|[A-Za-z0-9][A-Za-z0-9:-]*)$");
   EXPECT_EQ(claim.at(5).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
 }
 
