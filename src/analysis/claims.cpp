@@ -239,12 +239,8 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
         if (layer || measure.layer) {
           unmeasured(stage, pointer, panel, measure, "a layer's motion is compared in arrow scenes");
         }
-        if (!measure.panel) {
-          unmeasured(stage, pointer, panel, measure,
-                     "\"frame-distance:M\" compares with an arrow method, in arrow scenes; compare with "
-                     "another panel, \"frame-distance:/panels/K\"");
-        }
-        return frame_distance(stage, panel, *measure.panel, measure.at);
+        return measure.versus ? method_distance(stage, panel, *measure.versus)
+                              : frame_distance(stage, panel, *measure.panel, measure.at);
       }
       need_keyframes(panel, measure, pointer, measure.panel);
       if (measure.kind == MeasureKind::frame_distance && (layer || measure.layer)) {
@@ -259,8 +255,8 @@ double Measurer::value(std::size_t panel, const scene::MeasureName& measure, con
         return frame_distance(mine, theirs);
       }
       if (measure.kind == MeasureKind::frame_distance) {
-        return measure.panel ? frame_distance(stage, panel, *measure.panel, measure.at)
-                             : frame_distance(stage, panel, measure.method);
+        return measure.versus ? method_distance(stage, panel, *measure.versus)
+                              : frame_distance(stage, panel, *measure.panel, measure.at);
       }
       if (measure.kind == MeasureKind::carried_distance) return carried_distance(stage, panel, *measure.panel);
       if (measure.kind == MeasureKind::angle) {

@@ -148,9 +148,12 @@ double carried_distance(const motion::Stage& stage, std::size_t index, std::size
   return distance;
 }
 
-double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other, std::optional<double> at) {
-  const motion::SceneMotion& mine = stage.motion(index);
-  const motion::SceneMotion& theirs = stage.motion(other);
+namespace {
+
+// How far two motions of the stage's panel `index`'s kind are apart: at
+// `at` alone, or over the knots both cover.
+double motions_distance(const motion::Stage& stage, std::size_t index, const motion::SceneMotion& mine,
+                        const motion::SceneMotion& theirs, std::optional<double> at) {
   // A scene's panels are all of its family: keyframes or points, or poses of
   // one dimension.
   const auto arrows = [&] { return arrow_distance(mine, theirs, at); };  // NoMotion for points
@@ -167,17 +170,26 @@ double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t
       stage.panel(index).keys);
 }
 
+}  // namespace
+
+double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t other, std::optional<double> at) {
+  return motions_distance(stage, index, stage.motion(index), stage.motion(other), at);
+}
+
+double method_distance(const motion::Stage& stage, std::size_t index, const AnyMethod& method) {
+  const motion::SceneMotion& mine = stage.motion(index);
+  const motion::SceneMotion theirs = motion::with_method(stage.scene(), stage.panel(index), method);
+  return motions_distance(stage, index, mine, theirs, std::nullopt);
+}
+
 double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs) {
   return arrow_distance(mine, theirs, std::nullopt);
 }
 
 double frame_distance(const motion::Stage& stage, std::size_t index, Method other) {
-  const motion::SceneMotion& mine = stage.motion(index);
-  (void)mine.arrows();  // NoMotion unless the panel has keyframes
-  const motion::SceneMotion theirs = motion::with_method(stage.scene(), stage.panel(index), other);
-  return arrow_distance(mine, theirs, std::nullopt);
+  (void)stage.motion(index).arrows();  // NoMotion unless the panel has keyframes
+  return method_distance(stage, index, AnyMethod(other));
 }
-
 double knot_distance(const motion::Stage& stage, std::size_t index) {
   const motion::SceneMotion& motion = stage.motion(index);
   (void)motion.arrows();  // NoMotion unless the panel has keyframes

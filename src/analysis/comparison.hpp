@@ -99,4 +99,10 @@ double knot_distance(const motion::Stage& stage, std::size_t index);
 // at the guess's time. Throws motion::NoMotion.
 double guess_gap(const motion::Stage& stage, std::size_t index, const scene::Guess& guess, bool discrepancy);
 
+// The same between the stage's panel `index` and `method` (of the panel's
+// kind) through the panel's keyframes or poses, options and timing
+// ("frame-distance:M": Fig. 4's mid-way poses of SAM and Alexa). Throws
+// motion::NoMotion when either motion does not exist.
+double method_distance(const motion::Stage& stage, std::size_t index, const AnyMethod& method);
+
 }  // namespace pita::analysis

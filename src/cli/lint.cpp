@@ -55,8 +55,9 @@ Its checks:
 {}
 A scene accepts a finding, with the reason, under "lint": {{"allow": [{{"check": "text-over-data",
 "pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" and "min_motion_share" (default
-0.5) and "min_frame_pixels" (default 3) set three thresholds (docs/reference/lint.md "Lint"). Each
-finding says what to change in the scene ("fix: ..."). `pita check` runs the lint too.
+0.5), "min_frame_pixels" (default 3) and "max_hidden_share" (default 0.5) set four thresholds
+(docs/reference/lint.md "Lint"). Each finding says what to change in the scene ("fix: ..."). `pita
+check` runs the lint too.
 
 Examples:
   pita lint scenes/*.json

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "lint/occlusion.hpp"
+
 namespace pita::lint {
 
 namespace {
@@ -322,9 +324,9 @@ void same_color_series(const FigureGeometry& figure, const scene::LintSettings&,
   }
 }
 
-constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {text_overlap, text_over_data,   legend_over_data,
-                                                                  outside,      small_content,    small_motion,
-                                                                  short_frame,  same_color_series};
+constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {text_overlap, text_over_data,    legend_over_data,
+                                                                  outside,      small_content,     small_motion,
+                                                                  short_frame,  same_color_series, hidden_copy};
 
 }  // namespace
 

@@ -33,6 +33,7 @@ std::optional<DataShape> data_shape(const render::Shape& shape, const ViewTransf
   std::visit(overloaded{[&](const render::Polyline& s) { set_line(data, s.line); },
                         [&](const render::FilledPath& s) {
                           data.color = s.fill;
+                          data.fill_opacity = s.opacity * s.fill.a;
                           data.style = fmt::format("fill {}", color_text(s.fill));
                           if (s.outline) set_line(data, *s.outline);
                         },

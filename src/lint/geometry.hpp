@@ -28,13 +28,14 @@ struct TextBox {
 // One shape of a layer's data (not text), on the canvas: its edges, filled
 // areas and bounds (render/canvas_geometry.hpp), and what it belongs to.
 struct DataShape : render::CanvasOutline {
-  std::string layer;     // the layer's pointer
-  std::string type;      // its "type" ("pattern", "poses", ...)
-  int index = -1;        // its frame or keyframe, -1 if none
-  scene::Color color;    // of its stroke (a fill without outline: of the fill)
-  std::string style;     // its colour, width and dash, as text: what tells series apart
-  bool stroked = false;  // drawn with a line (not only filled)
-  bool frame = false;    // a frame of a pattern (its one segment) or a shape carried to a frame
+  std::string layer;          // the layer's pointer
+  std::string type;           // its "type" ("pattern", "poses", ...)
+  int index = -1;             // its frame or keyframe, -1 if none
+  scene::Color color;         // of its stroke (a fill without outline: of the fill)
+  std::string style;          // its colour, width and dash, as text: what tells series apart
+  bool stroked = false;       // drawn with a line (not only filled)
+  bool frame = false;         // a frame of a pattern (its one segment) or a shape carried to a frame
+  double fill_opacity = 0.0;  // of its filled areas (0 without): what hides what is under it
 };
 
 struct LegendBox {

@@ -30,11 +30,30 @@ inline constexpr double kLowestElevation = 10.0, kHighestElevation = 75.0;
 // share of the best direction's: no pose much flatter than it could be.
 inline constexpr double kNearBest = 0.8;
 
+// How much of the posed solids' images those nearer the camera cover: the
+// largest share, over the posed solids (every solid at every pose, a pose
+// given twice counted once), of a solid's image (its faces, orthographic from
+// the unit direction `d`) that the solids painted after it cover, painting
+// solid by solid back to front by their mean depth as the figure does
+// (render/solid_faces.hpp), on a raster of kHiddenRaster cells along the
+// longer side of the image. 0 for one solid alone; near 1 for a solid behind
+// another (SAM 3D Fig. 13's middle span, seen along it).
+double most_hidden(const std::vector<scene::Solid>& solids, const std::vector<Affine3>& poses,
+                   const Eigen::Vector3d& d);
+inline constexpr int kHiddenRaster = 160;
+// A direction hides too much when some posed solid is hidden by more than
+// this share: the default "max_hidden_share" of the lint's "hidden-copy"
+// check (docs/reference/lint.md), which the choice thereby avoids.
+inline constexpr double kMostHidden = 0.5;
+
 // A direction's score is the openness of its least open pose (of `poses`,
-// every solid). The given camera when its direction is good enough, else
-// the given camera turned to the good enough direction tried that is nearest
-// the given one. Distance, projection and target are kept. With no solid or
-// no pose, the given camera.
+// every solid); it is good enough when that is at least kNearBest of the best
+// direction's. The given camera when its direction is good enough and hides
+// no solid by more than kMostHidden (most_hidden), else the given camera turned
+// to the good enough direction tried, hiding none so, that is nearest the given
+// one; when every good enough direction hides some solid, the one that hides
+// least. Distance, projection and target are kept. With no solid or no pose,
+// the given camera.
 scene::Camera chosen_camera(const scene::Camera& given, const std::vector<scene::Solid>& solids,
                             const std::vector<Affine3>& poses);
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -75,7 +76,7 @@ struct MeasureFamily<Layer> {
       "panel, \"/panels/1\") and t a time, \"discrepancy:P\" and \"discrepancy-t:P\" with P a predictor "
       "(previous, average, pita), or in a claim \"frame-distance:/panels/K\" (or at one time, "
       "\"frame-distance:/panels/K@t\", or \"frame-distance:/panels/K/layers/L\", the motion that layer draws, or "
-      "\"frame-distance:M\", M an arrow method), \"carried-distance:/panels/K\", \"guess-distance:G\" and "
+      "\"frame-distance:M\", M a method of arrow scenes), \"carried-distance:/panels/K\", \"guess-distance:G\" and "
       "\"guess-discrepancy:G\" (G a guess of the panel's \"guesses\" layer) and \"property:NAME\" (a property of "
       "Sec. 4, as pita audit names it)";
 };
@@ -88,8 +89,8 @@ struct MeasureFamily<PoseLayer> {
   using Other = Layer;
   static constexpr std::array<std::string_view, 2> defaults = {"ara", "area"};
   static constexpr std::string_view more =
-      ", or in a claim \"frame-distance:/panels/K\" and \"property:NAME\" (a property as pita audit poses names "
-      "it)";
+      ", or in a claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M a pose method) and \"property:NAME\" "
+      "(a property as pita audit poses names it)";
 };
 
 // The predictors of Sec. 6.1 (analysis::DiscrepancyStats::predictor).
@@ -123,6 +124,7 @@ std::optional<std::size_t> panel_index(std::string_view pointer) {
 
 // "frame-distance:" and `rest`, "/panels/K", "/panels/K/layers/L" or an
 // arrow method, into `measure`; why not otherwise.
+template <class LayerType>
 std::optional<std::string> parse_frame_distance(std::string_view text, std::string_view rest, MeasureName& measure) {
   // "/panels/K@t": the two panels at one time only.
   if (const std::size_t at = rest.starts_with(kPanelsPrefix) ? rest.find('@') : std::string_view::npos;
@@ -149,15 +151,16 @@ std::optional<std::string> parse_frame_distance(std::string_view text, std::stri
     }
     measure.layer = layer;
   }
-  const Method* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<Method>(rest);
+  // Another panel, or another method of the scene's kind.
+  using MethodOfScene = std::conditional_t<std::is_same_v<LayerType, Layer>, Method, PoseMethod>;
+  const MethodOfScene* named = rest.starts_with(kPanelsPrefix) ? nullptr : find_method_of<MethodOfScene>(rest);
   if (!panel && named == nullptr) {
     return fmt::format(
-        "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M an arrow "
-        "method",
-        text);
+        "\"{}\" must be \"frame-distance:/panels/K\", K a panel's index, or \"frame-distance:M\", M a method of {}",
+        text, MeasureFamily<LayerType>::words);
   }
   measure.panel = panel;
-  if (named != nullptr) measure.method = *named;
+  if (named != nullptr) measure.versus = AnyMethod(*named);
   return std::nullopt;
 }
 
@@ -217,7 +220,8 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (entry.argument ? text.starts_with(entry.name) : text == entry.name) found = &entry;
   }
   if (found == nullptr) return unknown<LayerType>(text);
-  MeasureName measure{found->kind, std::string(text), {}, {}, std::nullopt, 0.0, std::nullopt, std::nullopt};
+  MeasureName measure{found->kind, std::string(text), {},           {},          std::nullopt,
+                      0.0,         std::nullopt,      std::nullopt, std::nullopt};
   const std::string_view rest = text.substr(found->argument ? found->name.size() : text.size());
   if (found->kind == MeasureKind::gain || found->kind == MeasureKind::turn || found->kind == MeasureKind::jump) {
     if (!is_keyframe_parameter(rest)) {
@@ -247,7 +251,7 @@ std::variant<MeasureName, std::string> parse_measure(std::string_view text) {
     if (rest.empty()) return fmt::format("\"{}\" must be \"{}G\", G the name of a guess", text, found->name);
     measure.parameter = std::string(rest);
   } else if (found->kind == MeasureKind::frame_distance) {
-    if (std::optional<std::string> refused = parse_frame_distance(text, rest, measure)) return *refused;
+    if (std::optional<std::string> refused = parse_frame_distance<LayerType>(text, rest, measure)) return *refused;
   } else if (found->kind == MeasureKind::carried_distance) {
     const std::optional<std::size_t> panel = panel_index(rest);
     if (!panel) return fmt::format("\"{}\" must be \"{}/panels/K\", K a panel's index", text, found->name);

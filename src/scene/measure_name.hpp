@@ -15,9 +15,9 @@
 //   "scale-max", "turn-step-t"                    pattern draws (analysis/frame_steps.hpp)
 //   "frame-distance:/panels/K"                    arrow and pose scenes, in a claim:
 //       how far the panel's frames (poses) are from panel K's (analysis/comparison.hpp);
-//       in arrow scenes also "frame-distance:M", M an arrow method: from the
-//       frames of M through the panel's keyframes (appendix B, Fig. B.30),
-//       and "frame-distance:/panels/K/layers/L": from the motion that layer
+//       "frame-distance:M", M a method of the scene's kind: from the frames
+//       of M through the panel's keyframes or poses (appendix B, Fig. B.30;
+//       SAM Fig. 4), and in arrow scenes "frame-distance:/panels/K/layers/L": from the motion that layer
 //       of panel K draws (Fig. D.35's variants, each a layer)
 //   "knot-distance"                               arrow scenes: how far the panel's
 //       frames at its knots are from its keyframes (0 when it interpolates them)
@@ -99,7 +99,7 @@ struct MeasureName {
   std::string text;       // as written: "gain:B.q", "angle:P8@0.25"
   std::string parameter;  // gain, turn, jump: "B.q"; property: its name; discrepancy: the predictor;
                           // guess-distance, guess-discrepancy: the guess's name
-  Method method{};        // angle, frame-distance (without a panel): the other arrow method
+  Method method{};        // angle: the other arrow method
   // angle: another panel of the scene instead ("angle:/panels/1@0.25");
   // frame-distance, carried-distance: the other panel. Only a claim may name a panel (its
   // reader checks the index).
@@ -112,6 +112,8 @@ struct MeasureName {
   // frame-distance: one time instead of the knots the panels share
   // ("frame-distance:/panels/K@t", also outside them: an extrapolation).
   std::optional<double> at;
+  // frame-distance: the other method instead of a panel ("frame-distance:Alexa").
+  std::optional<AnyMethod> versus;
   friend bool operator==(const MeasureName&, const MeasureName&) = default;
 };
 

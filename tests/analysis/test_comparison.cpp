@@ -388,5 +388,27 @@ TEST(Comparison, GuessGapIsTheDistanceOrTheDiscrepancyToTheFrameAtItsTime) {
   EXPECT_LT(guess_gap(stage, 0, exact, true), 1e-12);
 }
 
+// "frame-distance:M" (method_distance): the SAM from I to a quarter turn about
+// the origin against the linear blend through the same poses. At t = 1/2 the
+// SAM turns the corner (1, 0) of the reference triangle to e^(i pi/4), the
+// blend (I + R)/2 to cos(pi/4) e^(i pi/4): 1 - cos(pi/4) apart, the most over
+// t (by symmetry; the 201 times include 1/2), and (0, 1) likewise. Against
+// itself, 0; between arrows, the same as a panel of that method.
+TEST(Comparison, MethodDistanceIsTheDistanceToThatMethodsMotion) {
+  const scene::Scene poses = scene::parse_scene(R"({"method": "SAM", "poses": [
+      {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[0, -1, 0], [1, 0, 0]]}]})",
+                                                "test.json");
+  const motion::Stage stage(poses);
+  EXPECT_NEAR(method_distance(stage, 0, PoseMethod::linear), 1.0 - std::cos(std::numbers::pi / 4), 1e-12);
+  EXPECT_EQ(method_distance(stage, 0, PoseMethod::sam), 0.0);
+  const scene::Scene arrows = scene::parse_scene(R"({"method": "P6", "keyframes": [
+      {"t": 0, "p": [0, 0], "m": 1, "w": 0.2}, {"t": 1, "p": [3, 2], "m": 0.6, "w": 1.9},
+      {"t": 2, "p": [6, 0], "m": 1.3, "w": 3.1}], "panels": [{}, "P8"]})",
+                                                 "test.json");
+  const motion::Stage both(arrows);
+  EXPECT_NEAR(method_distance(both, 0, Method::P8), frame_distance(both, 0, 1), 1e-12);
+  EXPECT_GT(method_distance(both, 0, Method::P8), 0.01);
+}
+
 }  // namespace
 }  // namespace pita::analysis

@@ -2,6 +2,7 @@
 // and the same scene with the defect removed, which it must pass.
 #include <algorithm>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "lint/checks.hpp"
@@ -177,6 +178,37 @@ TEST(LintChecks, SameColorSeries) {
       "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [2, 1], "m": 1, "w": 0},
                     {"t": 2, "p": [4, 0], "m": 1, "w": 0}, {"t": 3, "p": [6, 1], "m": 1, "w": 0}]})");
   EXPECT_EQ(count(four, "same-color"), 0) << listed(four);
+}
+
+// A cube moved along the camera's line of sight: each copy behind the one
+// after it. Seen across the motion, or with a lenient max_hidden_share, none.
+TEST(LintChecks, HiddenCopy) {
+  const auto scene = [](double azimuth, const std::string& more) {
+    return fmt::format(R"({{"dimension": 3, "method": "SAM", "samples": 5, "shapes": [{{"solid": "cube"}}],
+      "poses": [{{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}},
+                {{"t": 1, "matrix": [[1, 0, 0, 8], [0, 1, 0, 0], [0, 0, 1, 0]]}}],
+      "camera": {{"azimuth": {}, "elevation": 10}},
+      "layers": [{{"type": "shapes", "fill": "#a0c8e8"}}{}]{}}})",
+                       azimuth, R"(, {"type": "poses", "colors": ["#00a000", "#d00000"], "fill_opacity": 0})", more);
+  };
+  const Report along = lint_text(scene(180, ""));  // from -x: the later copies in front
+  ASSERT_EQ(count(along, "hidden-copy"), 1) << listed(along);
+  EXPECT_EQ(along.findings[0].pointer, "/layers/0");
+  EXPECT_NE(along.findings[0].message.find("of the 5 copies of /layers/0"), std::string::npos)
+      << along.findings[0].message;
+  EXPECT_NE(along.findings[0].message.find("\"auto\": true"), std::string::npos);  // the fix
+  EXPECT_EQ(count(lint_text(scene(90, "")), "hidden-copy"), 0) << listed(lint_text(scene(90, "")));
+  EXPECT_EQ(count(lint_text(scene(180, R"(, "lint": {"max_hidden_share": 1})")), "hidden-copy"), 0);
+  // Opaque poses drawn over copies between them hide those: seen across the
+  // motion, the two poses only cover the copies at their own knots, which
+  // they stand for.
+  const std::string opaque = fmt::format(
+      R"({{"dimension": 3, "method": "SAM", "samples": 5, "shapes": [{{"solid": "cube"}}],
+      "poses": [{{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]}},
+                {{"t": 1, "matrix": [[1, 0, 0, 8], [0, 1, 0, 0], [0, 0, 1, 0]]}}],
+      "camera": {{"azimuth": 90, "elevation": 10}},
+      "layers": [{{"type": "shapes", "fill": "#a0c8e8"}}, {{"type": "poses", "colors": ["#00a000", "#d00000"]}}]}})");
+  EXPECT_EQ(count(lint_text(opaque), "hidden-copy"), 0) << listed(lint_text(opaque));
 }
 
 }  // namespace

@@ -50,13 +50,14 @@ TEST(CameraChoice, OpennessOfAPlateVanishesEdgeOn) {
   EXPECT_NEAR(openness(plate, unmoved(), Vector3d::UnitX()), 0.02 / 2.04, 1e-12);
 }
 
-// Two plates, upright, one facing x and one facing y: a camera on the x axis
+// Two plates, upright, one facing x and one facing y, apart: a camera on the x axis
 // sees the second edge-on. The chosen direction shows both, and is the given
 // one when that one already does.
 TEST(CameraChoice, TurnsAwayFromAnEdgeOnPoseAndOtherwiseKeepsTheGivenCamera) {
   const scene::Solid plate = box_solid(0.01, 1, 1);  // facing x
   const Eigen::Matrix3d quarter = Eigen::AngleAxisd(M_PI / 2, Vector3d::UnitZ()).toRotationMatrix();
-  const std::vector<Affine3> poses{unmoved(), Affine3{quarter, Vector3d::Zero()}};
+  // Apart (by 3 along x), so that neither hides the other from 45 degrees.
+  const std::vector<Affine3> poses{unmoved(), Affine3{quarter, Vector3d(3, 0, 0)}};
   scene::Camera given;
   given.azimuth = 0.0;
   given.elevation = 10.0;
@@ -82,6 +83,39 @@ TEST(CameraChoice, TurnsAwayFromAnEdgeOnPoseAndOtherwiseKeepsTheGivenCamera) {
   // Nothing to see: the given camera.
   EXPECT_EQ(chosen_camera(given, {}, poses).azimuth, 45.0);
   EXPECT_EQ(chosen_camera(given, {plate}, {}).azimuth, 45.0);
+}
+
+// Two unit cubes seen along z: the farther one wholly behind the nearer (1),
+// beside it (0), or shifted by half a side (0.5, to the raster's cell).
+TEST(CameraChoice, MostHiddenIsTheShareTheNearerSolidsCover) {
+  const scene::Solid cube = box_solid(1, 1, 1);
+  const Vector3d up = Vector3d::UnitZ();  // from above: z nearer the eye
+  const auto at = [](double x, double y, double z) { return Affine3{Eigen::Matrix3d::Identity(), Vector3d(x, y, z)}; };
+  EXPECT_NEAR(most_hidden({cube}, {unmoved(), at(0, 0, 3)}, up), 1.0, 1e-12);
+  EXPECT_NEAR(most_hidden({cube}, {unmoved(), at(3, 0, 3)}, up), 0.0, 1e-12);
+  EXPECT_NEAR(most_hidden({cube}, {unmoved(), at(0.5, 0, 3)}, up), 0.5, 0.02);
+  // One solid, or the same pose twice (a sample at a pose's knot): nothing hidden.
+  EXPECT_EQ(most_hidden({cube}, {unmoved()}, up), 0.0);
+  EXPECT_EQ(most_hidden({cube}, {unmoved(), unmoved()}, up), 0.0);
+}
+
+// Five cubes in a row along x, seen from the x axis: each hides the next.
+// The chosen direction shows every one (none hidden by more than
+// kMostHidden), and the given one is kept when it does.
+TEST(CameraChoice, TurnsAwayFromHiddenPoses) {
+  const scene::Solid cube = box_solid(1, 1, 1);
+  std::vector<Affine3> row;
+  for (int k = 0; k < 5; ++k) row.push_back(Affine3{Eigen::Matrix3d::Identity(), Vector3d(2.0 * k, 0, 0)});
+  scene::Camera given;
+  given.azimuth = 0.0;
+  given.elevation = 10.0;
+  ASSERT_GT(most_hidden({cube}, row, towards_eye(given.azimuth, given.elevation)), 0.7);
+  const scene::Camera chosen = chosen_camera(given, {cube}, row);
+  EXPECT_LE(most_hidden({cube}, row, towards_eye(chosen.azimuth, chosen.elevation)), kMostHidden);
+  given.azimuth = 60.0;  // across the row, each cube open enough
+  given.elevation = 35.0;
+  EXPECT_EQ(chosen_camera(given, {cube}, row).azimuth, 60.0);
+  EXPECT_EQ(chosen_camera(given, {cube}, row).elevation, 35.0);
 }
 
 }  // namespace

@@ -85,9 +85,9 @@ TEST(MeasureName, EveryEntryParsesToItsOwnKind) {
 TEST(MeasureName, FrameDistanceToAMethodGuessesAndKnots) {
   const MeasureName p10 = accepted("frame-distance:P10");
   EXPECT_EQ(p10.kind, MeasureKind::frame_distance);
-  EXPECT_EQ(p10.method, Method::P10);
+  EXPECT_EQ(p10.versus, std::optional<AnyMethod>(Method::P10));
   EXPECT_FALSE(p10.panel);
-  EXPECT_EQ(accepted("frame-distance:La-LP").method, Method::P6);
+  EXPECT_EQ(accepted("frame-distance:La-LP").versus, std::optional<AnyMethod>(Method::P6));
   const MeasureName layer = accepted("frame-distance:/panels/1/layers/4");
   EXPECT_EQ(layer.panel, std::optional<std::size_t>(1));
   EXPECT_EQ(layer.layer, std::optional<std::size_t>(4));
@@ -95,7 +95,7 @@ TEST(MeasureName, FrameDistanceToAMethodGuessesAndKnots) {
   for (const char* bad : {"frame-distance:/panels/1/layers/", "frame-distance:/panels/1/layers/x"}) {
     EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K/layers/L\""), std::string::npos) << bad;
   }
-  EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M an arrow method"), std::string::npos);
+  EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M a method of arrow (keyframe) scenes"), std::string::npos);
   const MeasureName guess = accepted("guess-discrepancy:L");
   EXPECT_EQ(guess.kind, MeasureKind::guess_discrepancy);
   EXPECT_EQ(guess.parameter, "L");
@@ -164,6 +164,19 @@ TEST(MeasureName, PanelsAreNamedByTheirIndex) {
   EXPECT_NE(refused("angle:/panels/one@0.5").find("must be \"/panels/\" and a panel's index"), std::string::npos);
 }
 
+// "frame-distance:M": another method of the scene's kind instead of a panel.
+TEST(MeasureName, FrameDistanceToAMethodOfTheScenesKind) {
+  EXPECT_EQ(accepted("frame-distance:P8").versus, std::optional<AnyMethod>(Method::P8));
+  EXPECT_FALSE(accepted("frame-distance:P8").panel.has_value());
+  EXPECT_EQ(accepted<PoseLayer>("frame-distance:Alexa").versus, std::optional<AnyMethod>(PoseMethod::alexa));
+  EXPECT_FALSE(accepted("frame-distance:/panels/1").versus.has_value());
+  // A method of the other kind is not one of the scene's.
+  EXPECT_NE(refused("frame-distance:Alexa").find("\"frame-distance:M\", M a method of arrow (keyframe) scenes"),
+            std::string::npos)
+      << refused("frame-distance:Alexa");
+  EXPECT_NE(refused<PoseLayer>("frame-distance:P1").find("M a method of pose scenes"), std::string::npos);
+}
+
 TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
   const MeasureName angle = accepted("angle:Pa-Po@0.25");
   EXPECT_EQ(angle.kind, MeasureKind::angle);
@@ -200,7 +213,8 @@ TEST(MeasureName, UnknownNamesGetSuggestionsOrTheList) {
   EXPECT_NE(refused("zzzzzz").find("\"angle:M@t\""), std::string::npos);
   EXPECT_EQ(refused<PoseLayer>("zzzzzz"),
             "unknown measure \"zzzzzz\"; pose scenes measure \"ara\", \"area\" or \"velocity-jump\", or in a "
-            "claim \"frame-distance:/panels/K\" and \"property:NAME\" (a property as pita audit poses names it)");
+            "claim \"frame-distance:/panels/K\" (or \"frame-distance:M\", M a pose method) and \"property:NAME\" (a "
+            "property as pita audit poses names it)");
 }
 
 TEST(MeasureName, DefaultsOfEachSceneKind) {

@@ -551,6 +551,19 @@ TEST(SceneFiles, SamFig05PrintsItsMeasuredSteps) {
       << printed(alexa_min) << " " << printed(alexa_max);
 }
 
+// SAM Fig. 7: what panel (a) says and no claim can measure (a claim
+// measures a motion that exists): no SAM from F_A to F_C, while the polySAM
+// and the bi-arc through the middle pose F_B exist.
+TEST(SceneFiles, SamFig07HasNoSamFromFirstToLastPose) {
+  const Scene scene = load_scene(kSourceDir / "scenes/sam-fig07-no-sam-biarc.json");
+  ASSERT_EQ(scene.panels.size(), 4u);
+  const std::vector<TimedPose>& poses = plane_keys(scene.panels.front()).poses;
+  ASSERT_EQ(poses.size(), 3u);
+  EXPECT_THROW(PoseMotion(PoseMethod::sam, {poses[0], poses[2]}), NoSamBetweenPoses);
+  EXPECT_NO_THROW(PoseMotion(PoseMethod::poly_sam, poses));
+  EXPECT_NO_THROW(PoseMotion(PoseMethod::biarc_sam, poses));
+}
+
 // SAM Fig. 3 (N46): the starting and ending poses of the columns are poses
 // of two SAMs, at tau = j/(n-1) for column j.
 TEST(SceneFiles, SamFig03PairsArePosesOfTwoSams) {

@@ -696,7 +696,7 @@ TEST(SceneSchemaValidation, MeasureNamesMatchTheParser) {
   for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(claim.at(i), items.at(i));
   EXPECT_EQ(claim.at(4).at("pattern"),
             "^(frame-distance:(/panels/[0-9]+(/layers/[0-9]+|@-?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][-+]?[0-9]+)?)?|"
-            "[A-Za-z0-9][A-Za-z0-9-]*)|carried-distance:/panels/[0-9]+)$");
+            "[A-Za-z0-9][A-Za-z0-9:-]*)|carried-distance:/panels/[0-9]+)$");
   EXPECT_EQ(claim.at(5).at("pattern").get<std::string>().rfind("^property:(", 0), 0u);
   EXPECT_EQ(claim.at(6).at("pattern"), "^guess-(distance|discrepancy):.+$");
 }

@@ -1,6 +1,7 @@
 // "poses": the panel's body at each of its poses, in the layer's colours, and
 // (four-point-SAM) the poses the last subdivision step inserts (SAM Fig. 13's
 // green blocks, docs/paper-notes.md N43).
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -33,13 +34,15 @@ void draw_pose_body(PosePanel<Affine2>& panel, const scene::PosesLayer& layer, i
   }
 }
 
-// The solids at `pose`, outlined in the colour and filled with a lighter one.
+// The solids at `pose`, outlined in the colour and filled with a lighter one;
+// with "fill_opacity": 0 outlined only (every edge), so that they hide none
+// of the copies under them (SAM 3D Fig. 13).
 void draw_pose_body(PosePanel<Affine3>& panel, const scene::PosesLayer& layer, int index, const Affine3& pose,
                     Color color, std::vector<Face>& faces) {
   const LineStyle line{color, layer.width, 1.0, {}};
-  for (const scene::Solid& solid : panel.shapes()) {
-    add_solid_faces(panel, solid, pose, lightened(color, 0.55), line, 1.0, index, faces);
-  }
+  const std::optional<Color> fill =
+      layer.fill_opacity > 0.0 ? std::optional<Color>(lightened(color, 0.55)) : std::nullopt;
+  for (const scene::Solid& solid : panel.shapes()) add_solid_faces(panel, solid, pose, fill, line, 1.0, index, faces);
 }
 
 }  // namespace
