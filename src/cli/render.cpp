@@ -117,7 +117,8 @@ std::string render_footer() {
   std::string text = R"(
 OUT is a file when it ends in .svg, .png or .pdf (one scene; the format is its
 extension), otherwise a directory (created if needed) that receives
-OUT/<scene name>.<format> for each --format (default svg).
+OUT/<scene name>.<format> for each --format (default svg). Any other extension
+(-o four.jpg) is refused with exit 2, unless OUT is an existing directory.
 
 <scene name> is the scene file's name without its directory and extension:
 files never land outside OUT (a symlink OUT is followed). Two scenes with the
@@ -297,6 +298,16 @@ RenderPlan plan_render(const RenderOptions& options) {
   const std::optional<render::Format> by_extension = render::format_from_name(
       fs::path(options.output).extension().string().substr(fs::path(options.output).has_extension() ? 1 : 0));
   plan.single_file = by_extension.has_value();
+  // "-o four.jpg": an extension pita does not write is a mistake, not a
+  // directory to create (an existing directory of that name is used).
+  const fs::path out(options.output);
+  std::error_code error;
+  if (!plan.single_file && out.has_extension() && out.extension() != "." && !fs::is_directory(out, error)) {
+    throw UsageError(fmt::format(
+        "-o {}: pita render writes .svg, .png or .pdf files (\"{}\" is none of them), or a directory without an "
+        "extension that receives one file per scene",
+        options.output, out.extension().string()));
+  }
   if (options.formats) plan.formats = parse_formats(*options.formats);
   if (plan.single_file) {
     if (options.scene_paths.size() != 1) {

@@ -89,6 +89,26 @@ TEST(RenderOutputs, DistinctNamesAreWritten) {
   EXPECT_EQ(entries_under(dir.path() / "out"), (std::set<std::string>{"x.svg", "x.svg.svg", "y.svg"}));
 }
 
+// "-o four.jpg": an extension pita does not write is refused (exit 2, with
+// what it writes), not made a directory; an existing directory of that name
+// is still a directory, and a name without extension is one to create.
+TEST(RenderOutputs, AnOutputWithAnExtensionPitaDoesNotWriteIsRefused) {
+  const ScratchDir dir;
+  dir.write("four.json", kScene);
+  for (const char* wrong : {"four.jpg", "four.svgz", "out/four.gif"}) {
+    const RunResult r = run_pita({"render", "four.json", "-o", wrong}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << wrong << ": " << r.err;
+    EXPECT_NE(r.err.find("pita render writes .svg, .png or .pdf files"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.path() / wrong)) << wrong;
+    EXPECT_TRUE(r.out.empty());
+  }
+  fs::create_directories(dir.path() / "figures.v2");
+  ASSERT_EQ(run_pita({"render", "four.json", "-o", "figures.v2"}, dir.path()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir.path() / "figures.v2" / "four.svg"));
+  ASSERT_EQ(run_pita({"render", "four.json", "-o", "figures"}, dir.path()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir.path() / "figures" / "four.svg"));
+}
+
 // --- A scene's formats: all or none ---------------------------------------
 
 // A directory in the way of x.png: the scene fails with exit 3, its SVG is

@@ -196,7 +196,7 @@ TEST(LintChecks, HiddenCopy) {
   EXPECT_EQ(along.findings[0].pointer, "/layers/0");
   EXPECT_NE(along.findings[0].message.find("of the 5 copies of /layers/0"), std::string::npos)
       << along.findings[0].message;
-  EXPECT_NE(along.findings[0].message.find("\"auto\": true"), std::string::npos);  // the fix
+  EXPECT_NE(along.findings[0].fix.find("\"auto\": true"), std::string::npos);  // the fix
   EXPECT_EQ(count(lint_text(scene(90, "")), "hidden-copy"), 0) << listed(lint_text(scene(90, "")));
   EXPECT_EQ(count(lint_text(scene(180, R"(, "lint": {"max_hidden_share": 1})")), "hidden-copy"), 0);
   // Opaque poses drawn over copies between them hide those: seen across the

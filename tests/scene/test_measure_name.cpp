@@ -95,7 +95,8 @@ TEST(MeasureName, FrameDistanceToAMethodGuessesAndKnots) {
   for (const char* bad : {"frame-distance:/panels/1/layers/", "frame-distance:/panels/1/layers/x"}) {
     EXPECT_NE(refused(bad).find("must be \"frame-distance:/panels/K/layers/L\""), std::string::npos) << bad;
   }
-  EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M a method of arrow (keyframe) scenes"), std::string::npos);
+  EXPECT_NE(refused("frame-distance:P99").find("or \"frame-distance:M\", M a method of arrow (keyframe) scenes"),
+            std::string::npos);
   const MeasureName guess = accepted("guess-discrepancy:L");
   EXPECT_EQ(guess.kind, MeasureKind::guess_discrepancy);
   EXPECT_EQ(guess.parameter, "L");

@@ -358,7 +358,7 @@ TEST(SceneFiles, AppendixD35PrintsHowCloseTheAverageIsToP9) {
 // P9's D(1/4), as the title prints.
 TEST(SceneFiles, AppendixD34BuildsP9FromTwoSteadyMorphs) {
   const Scene scene = load_scene(kSourceDir / "scenes/appD-fig34-p9-construction.json");
-  ASSERT_EQ(scene.panels.size(), 3u);
+  ASSERT_EQ(scene.panels.size(), 4u);  // the fourth draws P9 itself (its claims)
   const Panel &left = scene.panels[0], &middle = scene.panels[1], &right = scene.panels[2];
   ASSERT_EQ(arrow_keys(left).keyframes.size(), 2u);
   ASSERT_EQ(arrow_keys(middle).keyframes.size(), 2u);
