@@ -42,7 +42,9 @@ done
 case "$mode" in
   sanitize)
     pita_build_sanitize
-    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$PITA_JOBS" -LE '^(slurm|oracle|checks)$' ;;
+    # One test more than cores: a sanitized test spends much of its time
+    # starting processes and waiting on them (the CLI, Chromium, ffmpeg).
+    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$((PITA_JOBS + 1))" -LE '^(slurm|oracle|checks)$' ;;
   quick)
     if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
     pita_build_tests "${layers[@]/#/test_}"

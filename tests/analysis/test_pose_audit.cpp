@@ -39,9 +39,10 @@ const std::map<PoseProperty, Set>& expected_holders() {
 }
 
 TEST(PoseAudit, EveryCellMatchesTheExpectedTableInBothDimensions) {
-  // Under the sanitizers seed 1 only (the table's test is the same).
+  // The table's verdicts are numbers: the Release suite checks them; under
+  // the sanitizers the audit itself runs in SameOutputWhateverTheThreads.
+  if (test::kUnderSanitizers) GTEST_SKIP() << "a table of numbers: checked by the Release suite";
   for (std::uint64_t seed : {1u, 2u}) {
-    if (seed == 2 && test::kUnderSanitizers) continue;
     PoseAuditOptions options;
     options.seed = seed;
     options.configs = 45;
@@ -56,6 +57,7 @@ TEST(PoseAudit, EveryCellMatchesTheExpectedTableInBothDimensions) {
 }
 
 TEST(PoseAudit, TameTriplesAlmostAlwaysHaveAMotion) {
+  if (test::kUnderSanitizers) GTEST_SKIP() << "a share of random triples: checked by the Release suite";
   PoseAuditOptions options;
   options.configs = 60;
   options.methods = {M::poly_sam, M::p6};

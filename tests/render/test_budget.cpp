@@ -13,6 +13,7 @@
 #include "render/panel_drawing.hpp"  // RenderError
 #include "render_support.hpp"
 #include "scene/scene.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::render::test {
 namespace {
@@ -188,6 +189,7 @@ TEST(Budget, LongLinesInAPngHaveABudget) {
 // estimate is no less than what is really drawn (so that the budget bounds
 // the real work) and not wildly more (so that it refuses nothing reasonable).
 TEST(Budget, EstimatesBoundTheRealDrawingOfEveryScene) {
+  if (pita::test::kUnderSanitizers) GTEST_SKIP() << "estimates against counts: checked by the Release suite";
   int scenes = 0;
   for (const auto& entry : fs::directory_iterator(fs::path(PITA_SOURCE_DIR) / "scenes")) {
     if (entry.path().extension() != ".json") continue;
