@@ -5,6 +5,9 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -171,6 +174,21 @@ void outside(const FigureGeometry& figure, const scene::LintSettings&, std::vect
   }
 }
 
+// A finding when `box` fills less than `least` of the panel's plot area along
+// its better-filled side: "<what> fills 21% of its width and 47% of its height
+// (less than <setting>, 50%): it could be drawn 2.1 times larger".
+void small_box(const PanelGeometry& panel, const Rect& box, double least, const std::string& check,
+               const std::string& what, std::string_view setting, std::string fix, std::vector<Finding>& findings) {
+  const double share = std::max(box.width / panel.plot.width, box.height / panel.plot.height);
+  if (share >= least) return;
+  findings.push_back({check, panel.pointer,
+                      fmt::format("{} fills {:.0f}% of its width and {:.0f}% of its height (less than {}, {:.0f}%): "
+                                  "it could be drawn {:.1f} times larger",
+                                  what, 100.0 * box.width / panel.plot.width, 100.0 * box.height / panel.plot.height,
+                                  setting, 100.0 * least, 1.0 / share),
+                      std::move(fix), "", ""});
+}
+
 void small_content(const FigureGeometry& figure, const scene::LintSettings& settings, std::vector<Finding>& findings) {
   for (const PanelGeometry& panel : figure.panels) {
     if (panel.data.empty()) continue;
@@ -179,18 +197,11 @@ void small_content(const FigureGeometry& figure, const scene::LintSettings& sett
     for (const TextBox& t : panel.texts) {
       if (t.kind == TextKind::label && has_ink(t)) content = united(content, t.box);
     }
-    const double share = std::max(content.width / panel.plot.width, content.height / panel.plot.height);
-    if (share < settings.min_content_share) {
-      findings.push_back(
-          {"small-content", panel.pointer,
-           fmt::format("the content of {} fills {:.0f}% of its width and {:.0f}% of its height "
-                       "(less than min_content_share, {:.0f}%): it could be drawn {:.1f} times larger",
-                       panel.name, 100.0 * content.width / panel.plot.width, 100.0 * content.height / panel.plot.height,
-                       100.0 * settings.min_content_share, 1.0 / share),
-           std::string("fit the view to the content (\"canvas\": {\"view\": \"auto\"}, or a {\"min\", \"max\"} box "
-                       "around it), make the canvas smaller, or lower \"lint\": {\"min_content_share\"} and say why"),
-           "", ""});
-    }
+    small_box(panel, content, settings.min_content_share, "small-content", "the content of " + panel.name,
+              "min_content_share",
+              "fit the view to the content (\"canvas\": {\"view\": \"auto\"}, or a {\"min\", \"max\"} box around "
+              "it), make the canvas smaller, or lower \"lint\": {\"min_content_share\"} and say why",
+              findings);
   }
 }
 
@@ -204,18 +215,12 @@ void small_motion(const FigureGeometry& figure, const scene::LintSettings& setti
       if (s.frame) motion = united(motion, s.bounds);
     }
     if (motion.width < 0.0) continue;  // nothing moves in this panel
-    const double share = std::max(motion.width / panel.plot.width, motion.height / panel.plot.height);
-    if (share >= settings.min_motion_share) continue;
-    findings.push_back(
-        {"small-motion", panel.pointer,
-         fmt::format("the motion of {} (its frames) fills {:.0f}% of its width and {:.0f}% of its height "
-                     "(less than min_motion_share, {:.0f}%): it could be drawn {:.1f} times larger",
-                     panel.name, 100.0 * motion.width / panel.plot.width, 100.0 * motion.height / panel.plot.height,
-                     100.0 * settings.min_motion_share, 1.0 / share),
-         std::string("fit the view to the motion (\"canvas\": {\"view\": {\"min\", \"max\"}} around the frames), "
-                     "move what else the view fits (keyframe centres, far points) into an inset or another panel, or "
-                     "lower \"lint\": {\"min_motion_share\"} and say why"),
-         "", ""});
+    small_box(panel, motion, settings.min_motion_share, "small-motion", "the motion of " + panel.name + " (its frames)",
+              "min_motion_share",
+              "fit the view to the motion (\"canvas\": {\"view\": {\"min\", \"max\"}} around the frames), move "
+              "what else the view fits (keyframe centres, far points) into an inset or another panel, or lower "
+              "\"lint\": {\"min_motion_share\"} and say why",
+              findings);
   }
 }
 
