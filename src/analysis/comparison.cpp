@@ -186,10 +186,6 @@ double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion
   return arrow_distance(mine, theirs, std::nullopt);
 }
 
-double frame_distance(const motion::Stage& stage, std::size_t index, Method other) {
-  (void)stage.motion(index).arrows();  // NoMotion unless the panel has keyframes
-  return method_distance(stage, index, AnyMethod(other));
-}
 double knot_distance(const motion::Stage& stage, std::size_t index) {
   const motion::SceneMotion& motion = stage.motion(index);
   (void)motion.arrows();  // NoMotion unless the panel has keyframes

@@ -78,14 +78,8 @@ double frame_distance(const motion::Stage& stage, std::size_t index, std::size_t
 // Throws motion::NoMotion (a panel of points or poses).
 double carried_distance(const motion::Stage& stage, std::size_t index, std::size_t other);
 
-// The same between two motions of keyframes (a panel's, a layer's).
+// frame_distance between two motions of keyframes (a panel's, a layer's).
 double frame_distance(const motion::SceneMotion& mine, const motion::SceneMotion& theirs);
-
-// The same against method `other` through the panel's keyframes (its
-// options and timing too, as "angle:M@t" and a "compare" layer take them):
-// how far P10 pops from P3 (appendix B, Fig. B.30); 0 for the panel's own
-// method. Throws motion::NoMotion (either motion).
-double frame_distance(const motion::Stage& stage, std::size_t index, Method other);
 
 // max over the panel's keyframes K of max(|D(t_K).p - K.p|, |D(t_K).q - K.q|),
 // world units: 0 (to rounding) when the motion the panel draws interpolates
@@ -101,7 +95,8 @@ double guess_gap(const motion::Stage& stage, std::size_t index, const scene::Gue
 
 // The same between the stage's panel `index` and `method` (of the panel's
 // kind) through the panel's keyframes or poses, options and timing
-// ("frame-distance:M": Fig. 4's mid-way poses of SAM and Alexa). Throws
+// ("frame-distance:M": how far P10 pops from P3, Fig. B.30; Fig. 4's mid-way
+// poses of SAM and Alexa; 0 for the panel's own method). Throws
 // motion::NoMotion when either motion does not exist.
 double method_distance(const motion::Stage& stage, std::size_t index, const AnyMethod& method);
 

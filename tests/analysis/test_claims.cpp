@@ -259,7 +259,7 @@ TEST(Claims, TheMotionsLayersDraw) {
       {"t": 0, "p": [0, 0], "m": 0.6, "w": 0.1}, {"t": 0.5, "p": [0, 0], "m": 2.4, "w": 1.6},
       {"t": 1, "p": [0, 0], "m": 1.2, "w": 3.3}]})",
                                                 "test.json");
-  const double expected = frame_distance(motion::Stage(plain), 0, Method::P3);
+  const double expected = method_distance(motion::Stage(plain), 0, Method::P3);
   EXPECT_GT(expected, 0.1);
   const std::string near = fmt::format(R"("near": {:.17g}, "within": 1e-12)", expected);
   EXPECT_TRUE(

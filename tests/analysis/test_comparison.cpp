@@ -333,8 +333,8 @@ TEST(Comparison, FrameDistanceToAMethodIsTheLargestGapBetweenItsFrames) {
     expected = std::max(expected, std::abs(cartesian - std::exp(log)));
   }
   EXPECT_GT(expected, 0.1);
-  EXPECT_NEAR(frame_distance(stage, 0, Method::P3), expected, 1e-12);
-  EXPECT_EQ(frame_distance(stage, 0, Method::P1), 0.0);  // the panel's own method
+  EXPECT_NEAR(method_distance(stage, 0, Method::P3), expected, 1e-12);
+  EXPECT_EQ(method_distance(stage, 0, Method::P1), 0.0);  // the panel's own method
 }
 
 // The same through a second panel of method M on the same keyframes: the
@@ -346,10 +346,10 @@ TEST(Comparison, FrameDistanceToAMethodIsThatToAPanelOfIt) {
       {"t": 1, "p": [6, 0], "m": 1.2, "w": -0.6}], "panels": ["P3", "P6", "P10"]})",
                                                 "test.json");
   const motion::Stage stage(scene);
-  EXPECT_EQ(frame_distance(stage, 0, Method::P6), frame_distance(stage, 0, 1));
-  EXPECT_GT(frame_distance(stage, 0, Method::P6), 0.1);
-  EXPECT_LT(frame_distance(stage, 0, Method::P10), 1e-12);
-  EXPECT_EQ(frame_distance(stage, 0, Method::P10), frame_distance(stage, 0, 2));
+  EXPECT_EQ(method_distance(stage, 0, Method::P6), frame_distance(stage, 0, 1));
+  EXPECT_GT(method_distance(stage, 0, Method::P6), 0.1);
+  EXPECT_LT(method_distance(stage, 0, Method::P10), 1e-12);
+  EXPECT_EQ(method_distance(stage, 0, Method::P10), frame_distance(stage, 0, 2));
 }
 
 // "knot-distance": P1 through p = 0, 1, 4 at t = 0, 1/2, 1 on the x axis
