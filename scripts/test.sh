@@ -39,11 +39,11 @@ for arg in "$@"; do
   esac
 done
 
+# One test more than cores: many tests spend much of their time starting
+# processes and waiting on them (the CLI, Chromium, ffmpeg, Slurm's queue).
 case "$mode" in
   sanitize)
     pita_build_sanitize
-    # One test more than cores: a sanitized test spends much of its time
-    # starting processes and waiting on them (the CLI, Chromium, ffmpeg).
     ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$((PITA_JOBS + 1))" -LE '^(slurm|oracle|checks)$' ;;
   quick)
     if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
@@ -52,5 +52,5 @@ case "$mode" in
     ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS" -L "$label" ;;
   full)
     pita_build_tests
-    ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$PITA_JOBS" ;;
+    ctest --test-dir "$PITA_BUILD" --output-on-failure -j "$((PITA_JOBS + 1))" ;;
 esac
