@@ -179,8 +179,7 @@ Scene format (JSON; schema/scene.schema.json describes every field):
       {"t": 0.5, "p": [3, 1.5], "q": [3.5, 2]},
       {"t": 1,   "p": [6, 0],   "m": 1.2, "w": 3.5, "turns": 1}
     ],
-    "samples": 9,
-    "options": {"anchor": "start", "path_mean": "geometric", "magnitude_mean": "geometric"}
+    "samples": 9
   }
   method       a method below, by id ("P6") or mnemonic ("La-LP"), any case
   keyframes    3 or more keyframes (2 or more for SMA); knots "t" strictly increasing
@@ -215,7 +214,9 @@ Scene format (JSON; schema/scene.schema.json describes every field):
          readers(kPermutationOption) + R"(): )" + choices(kPermutationOption) + R"(;
                symmetrize ()" +
          readers(kSymmetrizeOption) + R"(): true averages with the time reverse (default )" +
-         std::string(option_choices(kSymmetrizeOption).default_name) + R"()
+         std::string(option_choices(kSymmetrizeOption).default_name) + R"();
+               an option that no motion it applies to reads is refused (exit 2),
+               naming the methods that read it
 
 Methods:
 )" + methods_table<Method>() +

@@ -42,12 +42,7 @@ class Layout {
 
   std::string leaf_text(const analysis::DecisionNode& node) const {
     std::string text;
-    for (const Method m : node.methods) {
-      const MethodInfo& about = info(m);
-      text += fmt::format(
-          "{}{}", text.empty() ? "" : ", ",
-          about.id == about.mnemonic ? std::string(about.id) : fmt::format("{} {}", about.id, about.mnemonic));
-    }
+    for (const Method m : node.methods) text += fmt::format("{}{}", text.empty() ? "" : ", ", method_name(m));
     return text;
   }
   std::string letters_text(const analysis::DecisionNode& node) const {

@@ -41,12 +41,6 @@ inline std::string trajectory_name(scene::TrackedPoint point) {
   return "path";
 }
 
-// A method as legends name it: "P6 La-LP", "SMA".
-inline std::string method_name(Method method) {
-  const MethodInfo& about = info(method);
-  return about.id == about.mnemonic ? std::string(about.id) : fmt::format("{} {}", about.id, about.mnemonic);
-}
-
 class PanelBuilder {
  public:
   PanelBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)

@@ -9,6 +9,7 @@
 
 #include "core/overloaded.hpp"
 #include "render/panel_builder.hpp"
+#include "scene/option_use.hpp"
 
 namespace pita::render {
 
@@ -70,17 +71,10 @@ motion::SceneMotion PanelBuilder::layer_motion(std::optional<Method> method,
   const scene::Panel own = motion::layer_panel(panel_, method, options);
   // An option the layer's method does not read would change nothing: refused.
   const Method drawn = scene::track_method(own.keys)->method;
-  const bool chained =
-      track_.chain.has_value() || keyframes_.size() > static_cast<std::size_t>(info(drawn).keyframe_count);
   for (const MethodOptionKey& key : kMethodOptionKeys) {
-    if ((patch.given & key.option) == 0U || reads_option(drawn, key.option, chained)) continue;
-    std::vector<std::string> readers;
-    for (const MethodInfo& reader : all_methods()) {
-      if (reads_option(reader.method, key.option, false)) readers.emplace_back(reader.id);
-    }
+    if ((patch.given & key.option) == 0U || scene::keys_read_option(own.keys, key.option)) continue;
     fail(layer_ + "/options/" + std::string(key.name),
-         fmt::format("{} does not read \"{}\", so it would change nothing here; {} read{} it", method_name(drawn),
-                     key.name, fmt::join(readers, ", "), readers.size() == 1 ? "s" : ""));
+         scene::unread_option_reason(std::span(&drawn, 1), key.name, key.option));
   }
   try {
     return motion::with_layer_method(scene_, panel_, method, options);

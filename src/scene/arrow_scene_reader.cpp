@@ -11,6 +11,7 @@
 #include "core/overloaded.hpp"
 #include "scene/figure_reader.hpp"
 #include "scene/layer_kinds.hpp"
+#include "scene/option_use.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/scene_readers.hpp"
 #include "scene/timing_reader.hpp"
@@ -68,6 +69,41 @@ void check_shape_layers(const JsonReader& reader, const Scene& scene) {
         reader.fail(drawn.pointer(i) + "/type",
                     "a \"shapes\" layer draws the scene's \"shapes\" carried by the handle, and the scene has none");
       }
+    }
+  }
+}
+
+// An option that no motion it applies to reads would change nothing:
+// refused, naming the methods that read it, as a layer's are
+// (render/panel_drawing.cpp). The scene's "options" apply to its own motion
+// (what pita eval prints) and to every panel that does not set the option
+// itself; a panel's to that panel.
+void check_options_read(const JsonReader& reader, const Json& document, const Scene& scene) {
+  const Json* panels = JsonReader::member(document, "panels");
+  for (const MethodOptionKey& key : kMethodOptionKeys) {
+    const auto given = [&](const Json& object) {
+      const Json* options = JsonReader::member(object, "options");
+      return options != nullptr && JsonReader::member(*options, std::string(key.name)) != nullptr;
+    };
+    if (given(document)) {
+      std::vector<const MotionKeys*> applied{&scene.keys};
+      for (std::size_t k = 0; panels != nullptr && k < scene.panels.size(); ++k) {
+        if (!given((*panels)[k])) applied.push_back(&scene.panels[k].keys);
+      }
+      if (std::none_of(applied.begin(), applied.end(),
+                       [&](const MotionKeys* keys) { return keys_read_option(*keys, key.option); })) {
+        std::vector<Method> methods;
+        for (const MotionKeys* keys : applied) methods.push_back(track_method(*keys)->method);
+        reader.fail("/options/" + std::string(key.name), unread_option_reason(methods, key.name, key.option));
+      }
+    }
+    for (std::size_t k = 0; panels != nullptr && k < scene.panels.size(); ++k) {
+      if (!(*panels)[k].is_object() || !given((*panels)[k]) || keys_read_option(scene.panels[k].keys, key.option)) {
+        continue;
+      }
+      const Method method = track_method(scene.panels[k].keys)->method;
+      reader.fail(scene.panels[k].pointer + "/options/" + std::string(key.name),
+                  unread_option_reason(std::span(&method, 1), key.name, key.option));
     }
   }
 }
@@ -180,6 +216,7 @@ Scene read_arrow_scene(const JsonReader& reader, const Json& document) {
   }
   check_point_layers(reader, scene);
   check_shape_layers(reader, scene);
+  check_options_read(reader, document, scene);
   const bool moving = std::any_of(scene.panels.begin(), scene.panels.end(), [](const Panel& panel) {
     const auto* given = std::get_if<KeyframeKeys>(&panel.keys);
     return given != nullptr && !given->keyframes_to.empty();

@@ -24,17 +24,6 @@ constexpr std::array<std::string_view, 10> kPanelFields = {"method", "options", 
 constexpr std::array<std::string_view, 8> kPosePanelFields = {"method",  "poses",  "shapes",       "title",
                                                               "samples", "layers", "subdivisions", "timing"};
 
-// A panel given by its method is titled "P6 La-LP" ("SMA" for SMA).
-std::string method_title(Method method) {
-  const MethodInfo& about = info(method);
-  std::string title(about.id);
-  if (!about.mnemonic.empty() && about.mnemonic != about.id) {
-    title += ' ';
-    title += about.mnemonic;
-  }
-  return title;
-}
-
 // ------------------------------------------------------------ JSON parsing
 
 // 1-based line and column of the byte at `index` (columns count bytes, as
@@ -55,7 +44,7 @@ void set_method(const JsonReader& reader, Panel& panel, Method method, const std
                              " from the scene; give the panel its own \"keyframes\"");
   }
   track_of(panel).method = method;
-  panel.title = method_title(method);
+  panel.title = method_name(method);
 }
 
 // The panel's own "keyframes" or "points", under its method and options (set
@@ -107,7 +96,7 @@ Panel read_panel(const JsonReader& reader, const Json& value, const std::string&
       set_method(reader, panel, found, at);
     } else {
       track_of(panel).method = found;
-      panel.title = method_title(found);
+      panel.title = method_name(found);
     }
   }
   if (const Json* options = JsonReader::member(value, "options")) {

@@ -52,14 +52,17 @@ TEST(Scene, DefaultsApplied) {
 }
 
 TEST(Scene, ReadsSamplesAndOptions) {
-  const Scene scene =
-      parse_scene(p6_with(R"(, "samples": 1000000, "options": {"anchor": "midpoint", "path_mean": "arithmetic",
-                  "magnitude_mean": "harmonic"})"),
-                  "s.json");
+  // Each option given to a method that reads it (P2 its anchor, SMA its means).
+  std::string p2 = p6_with(R"(, "samples": 1000000, "options": {"anchor": "midpoint"})");
+  p2.replace(p2.find("\"P6\""), 4, "\"P2\"");
+  const Scene scene = parse_scene(p2, "s.json");
   EXPECT_EQ(scene.samples, 1000000);
   EXPECT_EQ(track_keys(scene).options.anchor, Anchor::midpoint);
-  EXPECT_EQ(track_keys(scene).options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(track_keys(scene).options.magnitude_mean, MeanKind::harmonic);
+  const Scene sma = parse_scene(R"({"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 1, "p": [2, 0], "m": 2, "w": 1}], "options": {"path_mean": "arithmetic", "magnitude_mean": "harmonic"}})",
+                                "s.json");
+  EXPECT_EQ(track_keys(sma).options.path_mean, MeanKind::arithmetic);
+  EXPECT_EQ(track_keys(sma).options.magnitude_mean, MeanKind::harmonic);
   EXPECT_EQ(parse_scene(p6_with(R"(, "samples": 2)"), "s.json").samples, 2);
 }
 

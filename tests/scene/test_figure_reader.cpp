@@ -69,10 +69,10 @@ TEST(FigureDefaults, SceneWithoutFigureFields) {
 }
 
 TEST(FigureDefaults, ScenePanelTakesTheScenesSamplesAndOptions) {
-  const Scene scene = p6(R"(, "samples": 31, "options": {"anchor": "midpoint"})");
+  const Scene scene = p6(R"(, "samples": 31, "options": {"knots": "as-given"})");
   ASSERT_EQ(scene.panels.size(), 1U);
   EXPECT_EQ(scene.panels[0].samples, 31);
-  EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, Anchor::midpoint);
+  EXPECT_EQ(track_keys(scene.panels[0]).options.knots, KnotOrder::as_given);
 }
 
 TEST(FigureDefaults, EmptyLayersDrawNothing) {

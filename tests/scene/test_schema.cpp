@@ -517,7 +517,8 @@ const std::vector<std::string>& good_scenes() {
           {"keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 1, "w": 1},
                          {"t": 2, "p": [2, 0], "m": 1, "w": 2}],
            "layers": [{"type": "trajectory", "point": "q"}]},
-          {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}]}
+          {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 1, "p": [1, 0], "m": 2, "w": 1}]},
+          "P2"
         ],
         "claims": [
           {"says": "P1 shrinks more than P6", "panel": 0, "measure": "scale-min", "below": {"panel": 1}},

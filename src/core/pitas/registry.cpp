@@ -106,6 +106,13 @@ std::unique_ptr<Motion> make_pita(Method m, const KeyframeTriple& k, const Metho
   return about.make(k, o);
 }
 
+std::string method_name(Method m) {
+  const MethodInfo& about = info(m);
+  std::string name(about.id);
+  if (!about.mnemonic.empty() && about.mnemonic != about.id) name += " " + std::string(about.mnemonic);
+  return name;
+}
+
 bool reads_option(Method m, MethodOption option, bool chained) {
   const MethodInfo& about = info(m);
   if ((about.options & option) != 0U) return true;

@@ -70,6 +70,8 @@ bool reads_option(Method m, MethodOption option, bool chained);
 // Every method, in display order.
 std::span<const MethodInfo> all_methods();
 const MethodInfo& info(Method m);
+// As titles, legends and messages name it: "P6 La-LP", "SMA".
+std::string method_name(Method m);
 
 // Names ("P6", "la-lp", "6", ...) are resolved by core/methods.hpp, the one
 // registry of both kinds of method.
