@@ -187,6 +187,7 @@ Source source_of(MeasureKind kind) {
     case MeasureKind::discrepancy_time:
     case MeasureKind::path_length:
     case MeasureKind::turning:
+    case MeasureKind::inflections:
     case MeasureKind::winding_range:
     case MeasureKind::overreaction:
     case MeasureKind::pop:
@@ -291,6 +292,7 @@ std::string_view why_unmeasured(MeasureKind kind) {
       return "no frame of its pattern has this prediction";
     case MeasureKind::path_length:
     case MeasureKind::turning:
+    case MeasureKind::inflections:
       return "its motion has no path";
     case MeasureKind::winding_range:
       return "its frames have no winding";
@@ -361,6 +363,7 @@ std::optional<double> claimed_number(const ArrowMeasures& m, const scene::Measur
   }
   if (kind == MeasureKind::path_length) return m.path_p.length;
   if (kind == MeasureKind::turning) return m.path_p.turning;
+  if (kind == MeasureKind::inflections) return m.path_p.inflections;
   if (kind == MeasureKind::winding_range) return m.winding_max - m.winding_min;
   if (kind == MeasureKind::overreaction && m.most_sensitive >= 0) {
     return m.parameters[static_cast<std::size_t>(m.most_sensitive)].gain;
@@ -375,6 +378,7 @@ std::optional<double> claimed_number(const ArrowMeasures& m, const scene::Measur
 std::optional<double> claimed_number(const PointMeasures& m, const scene::MeasureName& measure) {
   if (measure.kind == MeasureKind::path_length) return m.path.length;
   if (measure.kind == MeasureKind::turning) return m.path.turning;
+  if (measure.kind == MeasureKind::inflections) return m.path.inflections;
   return std::nullopt;
 }
 

@@ -374,10 +374,19 @@ PathStats path_stats(std::span<const Point> points) {
   for (const Point& x : points) reach = std::max(reach, std::abs(x - points.front()));
   const double tiny = 1e-9 * reach;
   std::optional<Vector> previous;
+  int side = 0;  // of the last turn that was not straight: +1 left, -1 right
   for (std::size_t i = 1; i + 1 < n; ++i) {
     const Vector tangent = points[i + 1] - points[i - 1];
     if (!(std::abs(tangent) > tiny)) continue;
-    if (previous) stats.turning += std::abs(std::arg(tangent / *previous));
+    if (previous) {
+      const double turn = std::arg(tangent / *previous);
+      stats.turning += std::abs(turn);
+      if (std::abs(turn) > kStraightTurn) {
+        const int now = turn > 0.0 ? 1 : -1;
+        if (side != 0 && now != side) ++stats.inflections;
+        side = now;
+      }
+    }
     previous = tangent;
   }
   return stats;

@@ -62,6 +62,7 @@ struct DiscrepancyStats {
 struct PathStats {
   double length = 0.0;   // world units
   double turning = 0.0;  // radians: integral of |curvature| ds
+  int inflections = 0;   // sign changes of the curvature (PITA Sec. 6.5)
 };
 
 // One keyframe parameter's reaction (Sec. 6.4).
@@ -147,7 +148,12 @@ double keyframe_extent(const std::vector<Keyframe>& keyframes);
 // evenly spaced parameters over its range; points[0] and points[n+2] one step
 // beyond each end): polyline length, and the sum of the angles
 // between consecutive tangents (central differences; a zero tangent is
-// skipped): exact turning for a circle arc, 0 for a straight segment.
+// skipped): exact turning for a circle arc, 0 for a straight segment. Its
+// inflections: how often the side the curve turns to changes, a turn below
+// kStraightTurn radians counting as straight (no side): 0 for a circle, a
+// parabola or a log spiral, 1 for y = x^3 through 0, 2k - 1 for k half
+// periods of a sine.
+inline constexpr double kStraightTurn = 1e-9;
 PathStats path_stats(std::span<const Point> points);
 
 // Area monotonicity of det L(t) at the given samples.

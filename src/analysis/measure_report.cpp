@@ -83,7 +83,9 @@ Json overreaction_json(const ArrowMeasures& m) {
   return overreaction;
 }
 
-Json path_json(const PathStats& path) { return Json{{"length", path.length}, {"turning", path.turning}}; }
+Json path_json(const PathStats& path) {
+  return Json{{"length", path.length}, {"turning", path.turning}, {"inflections", path.inflections}};
+}
 
 // The members of each kind's measures, in the order they are written.
 void add_json(const ArrowMeasures& m, Json& j) {
@@ -173,7 +175,7 @@ std::string csv_field(std::string_view text) {
 namespace {
 
 // The cells of a kind's measures, from "samples" to "velocity_jump" (27 columns).
-constexpr std::size_t kMeasureColumns = 27;
+constexpr std::size_t kMeasureColumns = 29;
 using MeasureCells = std::vector<std::string>;
 
 std::string yes_no(bool value) { return value ? "true" : "false"; }
@@ -189,6 +191,7 @@ MeasureCells csv_cells(const ArrowMeasures& m) {
   for (const PathStats& path : {m.path_p, m.path_q}) {
     row.push_back(report_number(path.length));
     row.push_back(report_number(path.turning));
+    row.push_back(std::to_string(path.inflections));
   }
   row.push_back(report_number(m.winding_min));
   row.push_back(report_number(m.winding_max));
@@ -207,6 +210,7 @@ MeasureCells csv_cells(const PointMeasures& m) {
   MeasureCells row(11);  // no samples, extent or discrepancy
   row.push_back(report_number(m.path.length));
   row.push_back(report_number(m.path.turning));
+  row.push_back(std::to_string(m.path.inflections));
   row.resize(kMeasureColumns);  // no q, winding, overreaction, ARA or area
   return row;
 }
@@ -236,7 +240,7 @@ std::string measures_csv(const std::vector<MotionMeasures>& all) {
   std::string s =
       "pointer,title,method,kind,no_motion,samples,extent,"
       "previous_max,previous_mean,previous_t,average_max,average_mean,average_t,pita_max,pita_mean,pita_t,"
-      "p_length,p_turning,q_length,q_turning,winding_min,winding_max,"
+      "p_length,p_turning,p_inflections,q_length,q_turning,q_inflections,winding_min,winding_max,"
       "most_sensitive,most_sensitive_gain,pop,largest_jump_parameter,largest_jump,ara,area_monotone,area_excursion,"
       "area_t,velocity_jump";
   for (const auto& name : names) s += ",gain_" + name;
@@ -297,14 +301,15 @@ std::string path_row(const ArrowMeasures& m) {
     const auto& worst = m.parameters[static_cast<std::size_t>(m.largest_jump)];
     pop += fmt::format(" ({} {})", worst.name, short_number(worst.jump));
   }
-  return fmt::format("{} | {} | {}, {} | {}, {} | [{}, {}] | {} | {}", max.empty() ? "-" : max,
+  return fmt::format("{} | {} | {}, {} | {}, {} | {}, {} | [{}, {}] | {} | {}", max.empty() ? "-" : max,
                      mean.empty() ? "-" : mean, short_number(m.path_p.length), short_number(m.path_q.length),
-                     short_number(m.path_p.turning), short_number(m.path_q.turning), short_number(m.winding_min),
-                     short_number(m.winding_max), sensitive, pop);
+                     short_number(m.path_p.turning), short_number(m.path_q.turning), m.path_p.inflections,
+                     m.path_q.inflections, short_number(m.winding_min), short_number(m.winding_max), sensitive, pop);
 }
 
 std::string path_row(const PointMeasures& m) {
-  return fmt::format("- | - | {} | {} | - | - | -", short_number(m.path.length), short_number(m.path.turning));
+  return fmt::format("- | - | {} | {} | {} | - | - | -", short_number(m.path.length), short_number(m.path.turning),
+                     m.path.inflections);
 }
 
 // The table of a kind of poses: "ARA" to "velocity jump".
@@ -346,8 +351,8 @@ std::string pose_table(const std::vector<MotionMeasures>& all) {
 std::string md_tables(const std::vector<MotionMeasures>& all) {
   constexpr std::string_view kPathHeader =
       "| panel | method | E max prev / avg / pita | E mean prev / avg / pita | length p, q | turning p, q (rad) "
-      "| winding range (rad) | most sensitive (gain) | pop (jump) |\n"
-      "|---|---|---|---|---|---|---|---|---|\n";
+      "| inflections p, q | winding range (rad) | most sensitive (gain) | pop (jump) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|\n";
   return md_table(all, kPathHeader,
                   overloaded{[](const ArrowMeasures& m) { return path_row(m); },
                              [](const PointMeasures& m) { return path_row(m); },

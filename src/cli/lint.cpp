@@ -45,6 +45,7 @@ bool write_stdout(const std::string& text) {
 
 std::shared_ptr<LintOptions> setup_lint(CLI::App& app) {
   auto options = std::make_shared<LintOptions>();
+  const scene::LintSettings defaults;
   CLI::App* lint = app.add_subcommand(
       "lint",
       "Check that each scene's figure is legible: no text over text or data, nothing cut off, no tiny "
@@ -54,10 +55,10 @@ The lint looks at the figure as `pita render` would draw it, in canvas pixels, b
 Its checks:
 {}
 A scene accepts a finding, with the reason, under "lint": {{"allow": [{{"check": "text-over-data",
-"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" and "min_motion_share" (default
-0.5), "min_frame_pixels" (default 3) and "max_hidden_share" (default 0.5) set four thresholds
-(docs/reference/lint.md "Lint"). Each finding says what to change in the scene ("fix: ..."). `pita
-check` runs the lint too.
+"pointer": "/layers/3", "reason": "..."}}]}}; "min_content_share" (default {}), "min_motion_share"
+(default {}), "min_frame_pixels" (default {}), "min_feature_pixels" (default {}) and
+"max_hidden_share" (default {}) set its thresholds (docs/reference/lint.md "Lint"). Each finding
+says what to change in the scene ("fix: ..."). `pita check` runs the lint too.
 
 Examples:
   pita lint scenes/*.json
@@ -66,7 +67,8 @@ Examples:
 Exit codes: 0 every finding accepted, 1 a finding is not, 2 bad input or usage, 3 the findings
 could not be written to standard output, 4 an internal error.
 )",
-                           check_list()));
+                           check_list(), defaults.min_content_share, defaults.min_motion_share,
+                           defaults.min_frame_pixels, defaults.min_feature_pixels, defaults.max_hidden_share));
   lint->add_option("SCENE", options->scene_paths, "Scene files (JSON)")->required();
   lint->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"text", "json"}))
@@ -81,7 +83,8 @@ ExitCode run_lint(const LintOptions& options) {
   for (const std::string& path : options.scene_paths) {
     try {
       const scene::Scene scene = scene::load_scene(path);
-      const lint::Report report = lint::lint_figure(scene, render::build_figure(scene));
+      const motion::Stage stage(scene);
+      const lint::Report report = lint::lint_figure(stage, render::build_figure(stage));
       if (!report.clean()) code = worse(code, ExitCode::golden_mismatch);
       if (options.format == "json") {
         nlohmann::json findings = nlohmann::json::array();

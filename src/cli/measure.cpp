@@ -17,14 +17,14 @@ namespace pita::cli {
 
 std::shared_ptr<MeasureOptions> setup_measure(CLI::App& app) {
   auto options = std::make_shared<MeasureOptions>();
-  CLI::App* measure =
-      app.add_subcommand("measure",
-                         "Print goodness measures of a scene's motions: discrepancy, path length and turning, winding "
-                         "range, overreaction, pops, ARA and area monotonicity");
+  CLI::App* measure = app.add_subcommand(
+      "measure",
+      "Print goodness measures of a scene's motions: discrepancy, path length, turning and inflections, winding "
+      "range, overreaction, pops, ARA and area monotonicity");
   measure->footer(R"(
 For each panel (or the scene itself): the discrepancy E (PITA Eq. 47) of each frame against the
 previous frame, the steady average of its neighbours and the method's own prediction (Sec. 6.1);
-length and total turning of the paths of p and q; the winding range; the overreaction gain of
+length, total turning and inflections of the paths of p and q; the winding range; the overreaction gain of
 every keyframe parameter (A.p.x, A.p.y, A.q.x, A.q.y, A.m, A.w, A.t, B..., Sec. 6.4) and pops
 under a 1e-9 tweak (Sec. 4.7); for pose scenes ARA (SAM Sec. 2.4) and area monotonicity.
 docs/reference/measure.md "pita measure" gives each number's meaning and units.

@@ -268,6 +268,31 @@ void short_frame(const FigureGeometry& figure, const scene::LintSettings& settin
   }
 }
 
+// A claim that two drawn motions differ (a distance above a bound) whose
+// distance the figure draws shorter than min_feature_pixels, at the scale of
+// the claim's panel (and of the panel it compares with, if smaller).
+void small_feature(const FigureGeometry& figure, const scene::LintSettings& settings, std::vector<Finding>& findings) {
+  for (const ClaimedDistance& claimed : figure.claimed) {
+    if (claimed.panel >= figure.panels.size()) continue;
+    const PanelGeometry* panel = &figure.panels[claimed.panel];
+    if (claimed.other && *claimed.other < figure.panels.size() && figure.panels[*claimed.other].scale < panel->scale) {
+      panel = &figure.panels[*claimed.other];
+    }
+    const double pixels = claimed.value * panel->scale;
+    if (pixels >= settings.min_feature_pixels) continue;
+    findings.push_back(
+        {"small-feature", claimed.claim,
+         fmt::format("{} ({}) is about a distance of {:.3g} in the scene's units, drawn {:.2g} px long in {}: "
+                     "shorter than min_feature_pixels ({:g} px)",
+                     claimed.claim, quoted(claimed.says), claimed.value, pixels, panel->name,
+                     settings.min_feature_pixels),
+         std::string("draw it larger: a panel whose \"view\" enlarges where the motions differ, a larger "
+                     "\"canvas\", or keyframes that make the difference larger; or lower \"lint\": "
+                     "{\"min_feature_pixels\"}"),
+         "", ""});
+  }
+}
+
 void same_color_series(const FigureGeometry& figure, const scene::LintSettings&, std::vector<Finding>& findings) {
   for (const PanelGeometry& panel : figure.panels) {
     struct LayerColors {
@@ -329,9 +354,9 @@ void same_color_series(const FigureGeometry& figure, const scene::LintSettings&,
   }
 }
 
-constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {text_overlap, text_over_data,    legend_over_data,
-                                                                  outside,      small_content,     small_motion,
-                                                                  short_frame,  same_color_series, hidden_copy};
+constexpr std::array<Check, scene::kLintChecks.size()> kChecks = {
+    text_overlap, text_over_data, legend_over_data, outside,           small_content,
+    small_motion, short_frame,    small_feature,    same_color_series, hidden_copy};
 
 }  // namespace
 

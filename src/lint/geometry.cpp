@@ -113,6 +113,7 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
     out.name = panel_name(scene, i);
     out.area = render::drawing_area(place);
     out.plot = place.plot;
+    out.scale = place.transform.scale;
     std::map<std::string, std::string> types;  // of each layer pointer met
     for (const render::Item& item : drawing.items) {
       if (const auto* label = std::get_if<render::Label>(&item.shape)) {

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "motion/stage.hpp"
 #include "render/canvas_geometry.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
@@ -48,9 +50,21 @@ struct PanelGeometry {
   std::string name;     // for messages: "panel 2 (P6 La-LP)"
   Rect area;            // where its drawing is painted (and clipped to)
   Rect plot;            // the area less its margins: what the view is fitted into
+  double scale = 1.0;   // pixels per unit of the scene's plane (of its view)
   std::vector<DataShape> data;
   std::vector<TextBox> texts;  // labels and legend lines
   std::vector<LegendBox> legends;
+};
+
+// A claim that a distance between drawn motions is above a bound
+// ("frame-distance:/panels/1", "above": 0.4): what it asks a reader to see,
+// measured on the motions the figure draws (scene::is_drawn_distance).
+struct ClaimedDistance {
+  std::string claim;  // its pointer, "/claims/2"
+  std::string says;
+  std::size_t panel = 0;             // the claim's panel
+  std::optional<std::size_t> other;  // the panel it compares with, if any
+  double value = 0.0;                // in the scene's units
 };
 
 struct FigureGeometry {
@@ -58,9 +72,16 @@ struct FigureGeometry {
   std::vector<TextBox> titles;    // the scene's and the panels' titles
   std::vector<Rect> title_cells;  // where each title may go (the canvas's band, a panel's cell)
   std::vector<PanelGeometry> panels;
+  std::vector<ClaimedDistance> claimed;
 };
 
+// Without `claimed` (claimed_distances fills it).
 FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& figure);
+
+// The claims of the stage's arrow panels that a distance between drawn
+// motions is above a bound, with the distance measured. A claim whose
+// measure fails is left out: pita check reports it.
+std::vector<ClaimedDistance> claimed_distances(const motion::Stage& stage);
 
 // "#rrggbb".
 std::string color_text(const scene::Color& color);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
 
@@ -31,8 +32,9 @@ struct Report {
   std::size_t accepted() const;
 };
 
-// The lint of a figure built from `scene` (render::build_figure).
-Report lint_figure(const scene::Scene& scene, const render::Figure& figure);
+// The lint of a figure built from the stage's motions (render::build_figure),
+// the claims measured on them.
+Report lint_figure(const motion::Stage& stage, const render::Figure& figure);
 
 // "/layers/3: text-over-data: the label ...; fix: ..." (and "(accepted: REASON)").
 std::string describe(const Finding& finding);

@@ -24,6 +24,8 @@ std::string missing(const scene::MeasureName& name) {
       return "length: -";
     case MeasureKind::turning:
       return "turning: -";
+    case MeasureKind::inflections:
+      return "inflections: -";
     case MeasureKind::winding_range:
       return "winding: -";
     case MeasureKind::overreaction:
@@ -115,6 +117,8 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
       return fmt::format("length p {}, q {}", number(m.path_p.length), number(m.path_q.length));
     case MeasureKind::turning:
       return fmt::format("turning p {}, q {} rad", number(m.path_p.turning), number(m.path_q.turning));
+    case MeasureKind::inflections:
+      return fmt::format("inflections p {}, q {}", m.path_p.inflections, m.path_q.inflections);
     case MeasureKind::winding_range:
       return fmt::format("winding [{}, {}]", number(m.winding_min), number(m.winding_max));
     case MeasureKind::overreaction: {
@@ -153,6 +157,7 @@ std::string line(const analysis::ArrowMeasures& m, const scene::MeasureName& nam
 std::string line(const analysis::PointMeasures& m, const scene::MeasureName& name) {
   if (name.kind == scene::MeasureKind::path_length) return fmt::format("length {}", number(m.path.length));
   if (name.kind == scene::MeasureKind::turning) return fmt::format("turning {} rad", number(m.path.turning));
+  if (name.kind == scene::MeasureKind::inflections) return fmt::format("inflections {}", m.path.inflections);
   return missing(name);
 }
 

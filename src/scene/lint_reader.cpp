@@ -14,8 +14,8 @@ namespace pita::scene::detail {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kLintFields = {"min_content_share", "min_motion_share", "min_frame_pixels",
-                                                         "max_hidden_share", "allow"};
+constexpr std::array<std::string_view, 6> kLintFields = {"min_content_share",  "min_motion_share", "min_frame_pixels",
+                                                         "min_feature_pixels", "max_hidden_share", "allow"};
 constexpr std::array<std::string_view, 3> kAllowFields = {"check", "pointer", "reason"};
 constexpr std::size_t kMaxAllowed = 64;
 constexpr std::size_t kMaxReason = 400;
@@ -64,6 +64,9 @@ LintSettings read_lint(const JsonReader& reader, const Json& value) {
   }
   if (const Json* x = JsonReader::member(value, "min_frame_pixels")) {
     lint.min_frame_pixels = reader.number(*x, "/lint/min_frame_pixels", Interval{0.0, 1000.0});
+  }
+  if (const Json* x = JsonReader::member(value, "min_feature_pixels")) {
+    lint.min_feature_pixels = reader.number(*x, "/lint/min_feature_pixels", Interval{0.0, 1000.0});
   }
   if (const Json* x = JsonReader::member(value, "max_hidden_share")) {
     lint.max_hidden_share = reader.number(*x, "/lint/max_hidden_share", Interval{0.0, 1.0});

@@ -16,7 +16,7 @@ struct LintCheckInfo {
   std::string_view name;
   std::string_view what;  // for --help, the docs and messages
 };
-inline constexpr std::array<LintCheckInfo, 9> kLintChecks = {{
+inline constexpr std::array<LintCheckInfo, 10> kLintChecks = {{
     {"text-overlap", "two texts overlap"},
     {"text-over-data", "a text lies over the strokes, fills or images of another layer"},
     {"legend-over-data", "a legend's box lies over data"},
@@ -25,6 +25,8 @@ inline constexpr std::array<LintCheckInfo, 9> kLintChecks = {{
     {"small-motion",
      "a panel's motion (its frames) fills less than \"min_motion_share\" of its width and of its height"},
     {"short-frame", "a pattern's frame, or a pose's shape, is drawn shorter than \"min_frame_pixels\""},
+    {"small-feature",
+     "a claim that two drawn motions differ is about a distance drawn shorter than \"min_feature_pixels\""},
     {"same-color", "two series of a panel (keyframes, poses, two layers of one kind) share a colour"},
     {"hidden-copy", "a copy of a 3D motion is hidden by more than \"max_hidden_share\" of its area"},
 }};
@@ -39,10 +41,11 @@ struct LintAllow {
 };
 
 struct LintSettings {
-  double min_content_share = 0.5;  // of a panel's plot area, along its longer side
-  double min_motion_share = 0.5;   // the frames alone, likewise
-  double min_frame_pixels = 3.0;   // the shortest frame (or pose shape's diagonal) drawn
-  double max_hidden_share = 0.5;   // of a copy's area that what is painted over it may cover
+  double min_content_share = 0.5;   // of a panel's plot area, along its longer side
+  double min_motion_share = 0.5;    // the frames alone, likewise
+  double min_frame_pixels = 3.0;    // the shortest frame (or pose shape's diagonal) drawn
+  double min_feature_pixels = 6.0;  // a distance a claim is about (frame-distance above a bound, ...), drawn
+  double max_hidden_share = 0.5;    // of a copy's area that what is painted over it may cover
   std::vector<LintAllow> allow;
 };
 

@@ -20,10 +20,11 @@ using detail::quoted_choices;
 
 // The measures of arrow scenes, then those of pose scenes (plain names before
 // those with an argument in each).
-constexpr std::array<MeasureEntry, 27> kMeasures{{
+constexpr std::array<MeasureEntry, 28> kMeasures{{
     {"discrepancy-max", MeasureKind::discrepancy_max},
     {"path-length", MeasureKind::path_length},
     {"turning", MeasureKind::turning},
+    {"inflections", MeasureKind::inflections},
     {"winding-range", MeasureKind::winding_range},
     {"overreaction", MeasureKind::overreaction},
     {"pop", MeasureKind::pop},
@@ -40,23 +41,23 @@ constexpr std::array<MeasureEntry, 27> kMeasures{{
     {"angle:", MeasureKind::angle, true},
     {"discrepancy:", MeasureKind::discrepancy_of, true},
     {"discrepancy-t:", MeasureKind::discrepancy_time, true},
-    {"guess-distance:", MeasureKind::guess_distance, true},
+    {"guess-distance:", MeasureKind::guess_distance, true, true},
     {"guess-discrepancy:", MeasureKind::guess_discrepancy, true},
     // A claim's: this panel's frames against another panel's, carried onto
     // this panel's first keyframe (analysis/comparison.hpp).
-    {"carried-distance:", MeasureKind::carried_distance, true},
+    {"carried-distance:", MeasureKind::carried_distance, true, true},
     // Both families': a claim measures a property of pita audit (or pita
     // audit poses) on the panel's three keyframes or poses, or compares the
     // frames of two panels of an arrow scene, or the poses of two panels of a
     // pose scene.
     {"property:", MeasureKind::property, true},
-    {"frame-distance:", MeasureKind::frame_distance, true},
+    {"frame-distance:", MeasureKind::frame_distance, true, true},
     {"ara", MeasureKind::ara},
     {"area", MeasureKind::area},
     {"velocity-jump", MeasureKind::velocity_jump},
 }};
-constexpr std::size_t kArrowMeasures = 24;     // the first ones
-constexpr std::size_t kFirstPoseMeasure = 22;  // "property:", "frame-distance:", then the pose scenes' own
+constexpr std::size_t kArrowMeasures = 25;     // the first ones
+constexpr std::size_t kFirstPoseMeasure = 23;  // "property:", "frame-distance:", then the pose scenes' own
 
 // What depends on the scene's family of layers: its measures, how messages
 // name its scenes, the other family, and what a layer that names none shows.
@@ -207,6 +208,10 @@ std::string unknown(std::string_view text) {
 }  // namespace
 
 std::span<const MeasureEntry> measure_entries() { return kMeasures; }
+
+bool is_drawn_distance(MeasureKind kind) {
+  return std::ranges::any_of(kMeasures, [&](const MeasureEntry& e) { return e.kind == kind && e.drawn_distance; });
+}
 
 template <class LayerType>
 std::span<const MeasureEntry> measure_entries_of() {

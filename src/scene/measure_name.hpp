@@ -74,16 +74,23 @@ enum class MeasureKind {
   discrepancy_time,  // "discrepancy:P", "discrepancy-t:P": one predictor's largest E, and its time
   velocity_jump,     // pose scenes: the largest jump of the body's velocity (analysis/measure.hpp)
   carried_distance,  // "carried-distance:/panels/K": claims only, arrow scenes (analysis/comparison.hpp)
+  inflections,       // the sign changes of the curvature of the path of p (analysis/measure.hpp)
 };
 
 struct MeasureEntry {
   std::string_view name;  // "pop"; for the kinds with an argument, the prefix "gain:"
   MeasureKind kind;
   bool argument = false;  // "gain:B.q", "angle:P8@0.25"
+  // A distance between the frames of two drawn motions, in the scene's units
+  // (arrow scenes): what a claim that it is above a bound asks a reader to
+  // see, so the lint's small-feature check measures it in pixels.
+  bool drawn_distance = false;
 };
 
 // Every measure, in the order messages, the schema and docs/reference/render.md list them.
 std::span<const MeasureEntry> measure_entries();
+// Its row's drawn_distance.
+bool is_drawn_distance(MeasureKind kind);
 
 // Which scenes measure a name: `pita measure` measures arrow motions and pose
 // motions differently (analysis/measure.hpp), and a name the scene's motion

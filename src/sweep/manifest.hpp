@@ -25,7 +25,7 @@ namespace pita::sweep {
 
 // The metrics of the scene's own motion (pita measure, docs/reference/measure.md "pita measure"):
 // empty where they do not apply (pose metrics on arrows and the reverse).
-inline constexpr std::array<std::string_view, 16> kMetricColumns = {"path_length_p",
+inline constexpr std::array<std::string_view, 18> kMetricColumns = {"path_length_p",
                                                                     "path_length_q",
                                                                     "turning_p",
                                                                     "turning_q",
@@ -40,7 +40,9 @@ inline constexpr std::array<std::string_view, 16> kMetricColumns = {"path_length
                                                                     "pop_jump",
                                                                     "pops",
                                                                     "ara",
-                                                                    "area_monotone"};
+                                                                    "area_monotone",
+                                                                    "inflections_p",
+                                                                    "inflections_q"};
 
 struct Row {
   std::int64_t index = 0;

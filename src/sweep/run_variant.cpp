@@ -101,11 +101,14 @@ void add_metrics(const analysis::ArrowMeasures& r, Metrics& m) {
   }
   if (r.largest_jump >= 0) m[12] = number(r.parameters[static_cast<std::size_t>(r.largest_jump)].jump);
   if (!r.parameters.empty()) m[13] = r.pops ? "yes" : "no";
+  m[16] = std::to_string(r.path_p.inflections);
+  m[17] = std::to_string(r.path_q.inflections);
 }
 
 void add_metrics(const analysis::PointMeasures& r, Metrics& m) {
   m[0] = number(r.path.length);
   m[2] = number(r.path.turning);
+  m[16] = std::to_string(r.path.inflections);
 }
 
 template <class Pose>

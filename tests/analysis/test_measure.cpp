@@ -55,6 +55,7 @@ TEST(Measure, SteadyRotationTracesCircleArcs) {
   EXPECT_NEAR(arrows(m).path_q.length, std::sqrt(5.0) * theta, 1e-5);
   EXPECT_NEAR(arrows(m).path_p.turning, theta, 1e-9);
   EXPECT_NEAR(arrows(m).path_q.turning, theta, 1e-9);
+  EXPECT_EQ(arrows(m).path_p.inflections, 0);
   EXPECT_NEAR(arrows(m).winding_min, A.w, 1e-12);
   EXPECT_NEAR(arrows(m).winding_max, B.w, 1e-12);
   // The steady average of the neighbours is the frame itself (PITA Eq. 23).
@@ -73,8 +74,34 @@ TEST(Measure, CollinearParabolaDoesNotTurn) {
   // q = p + m e^{iw} with w = pi/4 rounds off the line by ~1e-16: turning to rounding.
   EXPECT_LT(arrows(m).path_p.turning, 1e-9);
   EXPECT_LT(arrows(m).path_q.turning, 1e-9);
+  // Its turns of rounding's size, either way, are no inflections.
+  EXPECT_EQ(arrows(m).path_p.inflections, 0);
+  EXPECT_EQ(arrows(m).path_q.inflections, 0);
   EXPECT_NEAR(arrows(m).path_p.length, 3.0 * std::sqrt(2.0), 1e-9);
   EXPECT_NEAR(arrows(m).path_q.length, 4.0 * std::sqrt(2.0), 1e-9);
+}
+
+// A curve sampled as path_stats takes it: n + 1 parameters evenly over
+// [a, b], and one step beyond each end.
+std::vector<Point> sampled(double a, double b, int n, const auto& curve) {
+  std::vector<Point> points;
+  const double h = (b - a) / n;
+  for (int i = -1; i <= n + 1; ++i) points.push_back(curve(a + h * i));
+  return points;
+}
+
+TEST(Measure, InflectionsAreTheSignChangesOfTheCurvature) {
+  // Curvature x'y'' - y'x'' of (x, f(x)) is f'': its sign changes where f''
+  // does (Sec. 6.5: P1's parabola and P2's log spiral have none).
+  const auto graph = [](auto f) { return [f](double x) { return Point{x, f(x)}; }; };
+  EXPECT_EQ(path_stats(sampled(-1, 1, 2048, graph([](double x) { return x * x; }))).inflections, 0);
+  EXPECT_EQ(path_stats(sampled(-1, 1, 2048, graph([](double x) { return x * x * x; }))).inflections, 1);
+  // sin'' = -sin changes sign at pi and 2 pi inside (0.1, 3 pi - 0.1).
+  EXPECT_EQ(path_stats(sampled(0.1, 3 * kPi - 0.1, 2048, graph([](double x) { return std::sin(x); }))).inflections, 2);
+  // A circle arc and a log spiral turn one way only; a segment not at all.
+  EXPECT_EQ(path_stats(sampled(0, 5, 2048, [](double t) { return std::polar(2.0, t); })).inflections, 0);
+  EXPECT_EQ(path_stats(sampled(0, 9, 2048, [](double t) { return std::exp(Complex{0.2, 1.0} * t); })).inflections, 0);
+  EXPECT_EQ(path_stats(sampled(0, 1, 2048, [](double t) { return Point{3.0 * t, 1.0 + t}; })).inflections, 0);
 }
 
 TEST(Measure, MethodPredictsItselfWhereItIsQuadratic) {

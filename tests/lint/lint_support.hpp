@@ -23,7 +23,8 @@ inline std::string arrow_scene(const std::string& rest,
 
 inline Report lint_text(const std::string& json) {
   const scene::Scene scene = scene::parse_scene(json, "test.json");
-  return lint_figure(scene, render::build_figure(scene));
+  const motion::Stage stage(scene);
+  return lint_figure(stage, render::build_figure(stage));
 }
 
 inline int count(const Report& report, const std::string& check) {

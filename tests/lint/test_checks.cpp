@@ -151,6 +151,39 @@ TEST(LintChecks, ShortFrames) {
   EXPECT_EQ(count(lint_text(tiny + R"(, "lint": {"min_frame_pixels": 0})" + "}"), "short-frame"), 0);
 }
 
+// Two panels, P6 and P1, over the same keyframes, and a claim that they differ.
+std::string claimed_scene(const std::string& test, const std::string& view, const std::string& lint = "") {
+  return arrow_scene(R"("panels": [{"method": "P6"}, {"method": "P1"}], "layers": [{"type": "pattern"}],
+      "claims": [{"says": "P1 leaves P6", "panel": 1, "measure": "frame-distance:/panels/0", )" +
+                         test + "}]" + lint,
+                     R"({"width": 600, "height": 300, "view": )" + view + "}");
+}
+
+TEST(LintChecks, SmallFeature) {
+  // The two motions differ by about a unit (the claim holds): tens of pixels
+  // in a view 12 units wide, a few in one 600 units wide.
+  const std::string near = R"({"min": [-3, -3], "max": [9, 3]})";
+  const std::string far = R"({"min": [-300, -150], "max": [300, 150]})";
+  EXPECT_EQ(count(lint_text(claimed_scene(R"("above": 0.1)", near)), "small-feature"), 0);
+  const Report tiny = lint_text(claimed_scene(R"("above": 0.1)", far));
+  ASSERT_EQ(count(tiny, "small-feature"), 1) << listed(tiny);
+  const Finding& f = tiny.findings.back();
+  EXPECT_EQ(f.pointer, "/claims/0");
+  EXPECT_NE(f.message.find("\"P1 leaves P6\""), std::string::npos) << f.message;
+  EXPECT_NE(f.message.find("min_feature_pixels (6 px)"), std::string::npos) << f.message;
+  EXPECT_NE(f.fix.find("\"view\""), std::string::npos) << f.fix;
+  // A claim that they do not differ asks nothing to be seen, and one that
+  // fails is pita check's to report; the threshold is the scene's.
+  EXPECT_EQ(count(lint_text(claimed_scene(R"("below": 100)", far)), "small-feature"), 0);
+  EXPECT_EQ(count(lint_text(claimed_scene(R"("above": 100)", far)), "small-feature"), 0);
+  EXPECT_EQ(count(lint_text(claimed_scene(R"("above": 0.1)", far, R"(, "lint": {"min_feature_pixels": 0})")),
+                  "small-feature"),
+            0);
+  // The distance is the one drawn, not the claim's bound: a bound far below
+  // it does not make the difference small.
+  EXPECT_EQ(count(lint_text(claimed_scene(R"("above": 1e-6)", near)), "small-feature"), 0);
+}
+
 TEST(LintChecks, SameColorSeries) {
   const Report alike = lint_text(arrow_scene(R"("layers": [{"type": "trajectory", "point": "p", "color": "#808080"},
       {"type": "trajectory", "point": "q", "color": "#808080"}])"));

@@ -199,7 +199,7 @@ TEST(MeasureName, AnglesNameAnArrowMethodAndAFiniteTime) {
 TEST(MeasureName, EachSceneKindRefusesWhatItDoesNotMeasure) {
   EXPECT_EQ(refused("ara"),
             "\"ara\" is measured in pose scenes only; arrow (keyframe) scenes measure "
-            "\"discrepancy-max\", \"path-length\", \"turning\", \"winding-range\", \"overreaction\", "
+            "\"discrepancy-max\", \"path-length\", \"turning\", \"inflections\", \"winding-range\", \"overreaction\", "
             "\"pop\", \"handle-shift\", \"scale-step\", \"turn-step\", \"scale-min\", \"scale-max\", "
             "\"turn-step-t\" or \"knot-distance\"");
   EXPECT_EQ(refused<PoseLayer>("handle-shift"),
