@@ -29,12 +29,17 @@ last varies fastest); --zip pairs them value by value instead. A pointer may nam
 a field the scene does not have yet inside objects (/timing/ease), not a missing
 array element.
 
-Each variant is the scene with those values set, checked as a scene file is. DIR
-receives, for variant i: <scene>-<i>.scene.json (the variant itself) and
-<scene>-<i>.<format> for each --format (svg, png, pdf: the figure; csv, json: the
-frames pita eval prints; metrics alone: no file per variant, for millions of
-variants), then manifest.csv (a row per variant: the values, status, outputs,
-content hash and metrics of pita measure), index.html (every variant in a paged
+Each variant is the scene with those values set, checked as a scene file is;
+its title shows the values a "{/pointer}" of the title does not: "A house
+carried by {/method}" reads "A house carried by P3", other values follow in
+parentheses. An axis every value of which is refused (an option the method does
+not read) is bad usage, and so is /method when every panel sets its own (unless
+csv or json frames are asked for). DIR receives, for variant i:
+<scene>-<i>.scene.json (the variant itself) and <scene>-<i>.<format> for each
+--format (svg, png, pdf: the figure; csv, json: the frames pita eval prints;
+metrics alone: no file per variant, for millions of variants), then manifest.csv
+(a row per variant: the values, status, outputs, content hash and metrics of pita
+measure for the figure's first panel), index.html (every variant in a paged
 table, sortable by any column, its data in index/) and contact.svg / contact.png
 (every figure on one picture, rows and columns for two parameters; above 256
 variants, 256 of them evenly spaced).

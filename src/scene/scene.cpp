@@ -19,6 +19,7 @@
 #include "scene/limits.hpp"
 #include "scene/pose_reader.hpp"
 #include "scene/scene_readers.hpp"
+#include "scene/title_template.hpp"
 
 namespace pita::scene {
 
@@ -63,6 +64,10 @@ Scene parse_scene(std::string_view text, std::string source_name, const ReadOpti
   }
   Scene scene = detail::is_pose_scene(document) ? detail::read_pose_scene(reader, document)
                                                 : detail::read_arrow_scene(reader, document);
+  scene.title = detail::expand_title(reader, document, scene.title, "/title");
+  for (Panel& panel : scene.panels) {
+    panel.title = detail::expand_title(reader, document, panel.title, panel.pointer + "/title");
+  }
   const bool panels_agree = std::all_of(scene.panels.begin(), scene.panels.end(),
                                         [](const Panel& panel) { return figure_agrees(panel.keys, panel.figure); });
   if (!figure_agrees(scene.keys, scene.figure) || !panels_agree) {

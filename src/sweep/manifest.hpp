@@ -23,7 +23,8 @@
 
 namespace pita::sweep {
 
-// The metrics of the scene's own motion (pita measure, docs/reference/measure.md "pita measure"):
+// The metrics of the figure's first panel (the scene's own motion without
+// panels; pita measure, docs/reference/measure.md "pita measure"):
 // empty where they do not apply (pose metrics on arrows and the reverse).
 inline constexpr std::array<std::string_view, 18> kMetricColumns = {"path_length_p",
                                                                     "path_length_q",

@@ -12,11 +12,13 @@
 #include <fmt/format.h>
 
 #include "analysis/measure.hpp"
+#include "core/fnv1a.hpp"
 #include "io/output_file.hpp"
 #include "motion/sampler.hpp"
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
+#include "render/figure_digest.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "sweep/variant.hpp"
@@ -117,13 +119,32 @@ void add_metrics(const analysis::PoseMeasures<Pose>& r, Metrics& m) {
   m[15] = r.area.monotone ? "yes" : "no";
 }
 
-// The metrics of the scene's own motion (kMetricColumns): `own` is its stage.
-Metrics metrics_of(const motion::Stage& own) {
+// The metrics (kMetricColumns) of the stage's first panel.
+Metrics metrics_of(const motion::Stage& stage) {
   Metrics m{};
-  const analysis::MotionMeasures r = analysis::measure_panel(own, 0);
+  const analysis::MotionMeasures r = analysis::measure_panel(stage, 0);
   if (r.no_motion) return m;
   std::visit([&](const auto& measured) { add_metrics(measured, m); }, r.measured);
   return m;
+}
+
+// What the variant's outputs show, titles aside: its figure's digest, its
+// frames' text and its metrics (not its scene file, which names its values).
+std::uint64_t outputs_digest(const std::optional<render::Figure>& figure,
+                             const std::vector<std::pair<fs::path, std::string>>& files, const Metrics& metrics) {
+  Fnv1a digest;
+  if (figure) digest.add(render::figure_digest(*figure));
+  for (const auto& [path, bytes] : files) {
+    if (path.extension() == ".csv" || path.extension() == ".json") {
+      if (path.string().ends_with(".scene.json")) continue;
+      digest.add(std::string_view(bytes));
+    }
+  }
+  for (const std::string& m : metrics) {
+    digest.add(std::string_view(m));
+    digest.add(std::string_view("\0", 1));
+  }
+  return digest.value() == 0 ? 1 : digest.value();
 }
 
 // Removes what an earlier run wrote for a variant that now fails, so that no
@@ -155,11 +176,15 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
     const scene::Scene scene = scene::parse_scene(text, job.base.path);
     const motion::Stage stage(scene);
     stage.check();
-    // The scene's own motion, built once for its frames and its metrics.
+    // The scene's own motion (what pita eval prints), built once for the
+    // frames when they are asked for.
     const scene::Panel own = scene::scene_panel(scene);
-    const std::optional<motion::Stage> own_alone =
-        motion::own_is_first_panel(scene) ? std::nullopt : std::make_optional<motion::Stage>(scene, own);
-    const motion::Stage& own_stage = own_alone ? *own_alone : stage;
+    std::optional<motion::Stage> own_alone;
+    const auto own_stage = [&]() -> const motion::Stage& {
+      if (motion::own_is_first_panel(scene)) return stage;
+      if (!own_alone) own_alone.emplace(scene, own);
+      return *own_alone;
+    };
     std::vector<std::pair<fs::path, std::string>> files;
     if (!metrics_only(job.options.formats)) {  // metrics alone: the manifest's row is all
       files.emplace_back(job.dir / scene_file, text);
@@ -173,24 +198,26 @@ Row run_variant(const VariantJob& job, std::int64_t index, VariantOutcome& outco
         if (!figure) figure = render::build_figure(stage);
         files.emplace_back(job.dir / file, render::render_figure(scene, *figure, *format));
       } else {
-        const motion::SceneMotion& motion = own_stage.motion(0);
+        const motion::SceneMotion& motion = own_stage().motion(0);
         const std::vector<double> at = motion::uniform_times(motion, scene.samples.value_or(scene::kDefaultSamples));
-        motion::check_eval_work(scene, own_stage.panel(0), motion, at.size(), "ask for fewer frames (/samples)");
-        files.emplace_back(job.dir / file, motion::frames_text(own_stage.panel(0), motion, at,
+        motion::check_eval_work(scene, own_stage().panel(0), motion, at.size(), "ask for fewer frames (/samples)");
+        files.emplace_back(job.dir / file, motion::frames_text(own_stage().panel(0), motion, at,
                                                                kind == OutputKind::csv ? motion::FramesFormat::csv
                                                                                        : motion::FramesFormat::json));
       }
       row.outputs.push_back(file);
     }
-    // The metrics within `pita measure`'s cost limit, else none (the sweep
-    // says how many variants have none).
-    if (analysis::measure_cost(own_stage.panel(0)) <= scene::kMaxEvalWork) {
-      row.metrics = metrics_of(own_stage);
+    // The metrics, of what the figure draws first (the first panel, or the
+    // scene's own motion when it has no panels), within `pita measure`'s
+    // cost limit, else none (the sweep says how many variants have none).
+    if (analysis::measure_cost(stage.panel(0)) <= scene::kMaxEvalWork) {
+      row.metrics = metrics_of(stage);
     } else {
       outcome.metrics_skipped = true;
     }
     io::write_files_atomically(files);
     row.status = "ok";
+    outcome.digest = outputs_digest(figure, files, row.metrics);
   } catch (const io::OutputError& error) {
     row.status = fmt::format("cannot write: {}", error.what());
     row.outputs.clear();

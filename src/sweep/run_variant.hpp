@@ -1,6 +1,6 @@
 // One variant of a sweep, run: its scene read and checked as a scene of its
-// own, its figures and frames rendered, the metrics of its own motion
-// measured, and all its files written at once; or its failure recorded, its
+// own, its figures and frames rendered, the metrics of its figure's first
+// panel measured, and all its files written at once; or its failure recorded, its
 // stale outputs removed and its scene kept to reproduce the error by hand.
 #pragma once
 
@@ -35,6 +35,9 @@ struct VariantJob {
 struct VariantOutcome {
   bool write_failed = false;     // a file could not be written (the row says which)
   bool metrics_skipped = false;  // measuring its motion costs more than `pita measure` allows: no metrics
+  // A digest of what its outputs show, titles aside (its figure's shapes,
+  // render/figure_digest.hpp; its frames; its metrics); 0 for a failed row.
+  std::uint64_t digest = 0;
 };
 
 // Variant `index` of the job: its manifest row. Its frames (csv, json) obey

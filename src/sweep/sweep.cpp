@@ -43,6 +43,9 @@ constexpr auto kManifestInterval = std::chrono::seconds(5);
 constexpr std::int64_t kRowsAhead = 1024;
 // Failed variants listed in the summary (the manifest has them all).
 constexpr std::size_t kMaxFailuresKept = 1000;
+// Up to this many variants per run, each variant's digest is kept (8 bytes)
+// to say which axes changed nothing; beyond, nothing is said.
+constexpr std::int64_t kMaxDigestsKept = 2'000'000;
 
 // `metrics_only`: a row without outputs is complete (--format metrics).
 bool outputs_exist(const fs::path& dir, const Row& row, bool metrics_only) {
@@ -131,7 +134,8 @@ class SweepRun {
         shard_k_(options.shard ? options.shard->first : 0),
         shard_n_(options.shard ? options.shard->second : 1),
         mine_(grid.size() > shard_k_ ? (grid.size() - shard_k_ + shard_n_ - 1) / shard_n_ : 0),
-        kept_(static_cast<std::size_t>(mine_), 0) {
+        kept_(static_cast<std::size_t>(mine_), 0),
+        digests_(mine_ <= kMaxDigestsKept ? static_cast<std::size_t>(mine_) : 0, 0) {
     summary_.variants = mine_;
   }
 
@@ -145,6 +149,7 @@ class SweepRun {
     fs::remove(journal_path_, ignored);
     io::write_file_atomically(dir_ / kSweepFile, definition_json(definition_));
     run_variants();
+    note_unchanged_axes();
     write_manifest();
     if (!options_.shard) write_reports(dir_, definition_, summary_.notes);
     return summary_;
@@ -270,6 +275,7 @@ class SweepRun {
       summary_.write_failed = summary_.write_failed || finished->outcome.write_failed;
       if (finished->outcome.metrics_skipped) ++metrics_skipped_;
       const Row& row = finished->row;
+      if (!digests_.empty()) digests_[static_cast<std::size_t>(position(row.index))] = finished->outcome.digest;
       if (row.ok()) {
         ++summary_.ok;
       } else {
@@ -315,6 +321,70 @@ class SweepRun {
     }
   }
 
+  // An axis whose every value gave the same outputs as its first value, the
+  // other axes alike (titles aside: a variant's title names its values),
+  // changed nothing: said in a note, with what was compared. With --zip the
+  // axes move together: said when every variant gave the same. Variants
+  // resumed, failed, or in another shard are not compared.
+  void note_unchanged_axes() {
+    if (digests_.empty()) return;
+    const std::vector<Axis>& axes = grid_.axes();
+    const auto digest_of = [&](std::int64_t index) -> std::uint64_t {
+      return in_shard(index) ? digests_[static_cast<std::size_t>(position(index))] : 0;
+    };
+    std::vector<std::string> unchanged;
+    if (grid_.zip()) {
+      std::uint64_t first = 0;
+      std::int64_t compared = 0;
+      bool same = true;
+      for (std::int64_t index = 0; index < grid_.size() && same; ++index) {
+        const std::uint64_t d = digest_of(index);
+        if (d == 0) continue;
+        if (first == 0) first = d;
+        same = d == first;
+        ++compared;
+      }
+      if (same && compared >= 2) {
+        for (const Axis& axis : axes) unchanged.push_back(axis.pointer);
+      }
+    } else {
+      std::vector<std::int64_t> stride(axes.size(), 1);
+      for (std::size_t k = axes.size(); k-- > 1;) {
+        stride[k - 1] = stride[k] * static_cast<std::int64_t>(axes[k].size());
+      }
+      for (std::size_t k = 0; k < axes.size(); ++k) {
+        const auto n = static_cast<std::int64_t>(axes[k].size());
+        if (n < 2) continue;
+        bool same = true, compared = false;
+        for (std::int64_t index = 0; index < grid_.size() && same; ++index) {
+          const std::int64_t at = (index / stride[k]) % n;
+          const std::uint64_t d = at == 0 ? 0 : digest_of(index);
+          const std::uint64_t first = d == 0 ? 0 : digest_of(index - at * stride[k]);
+          if (d == 0 || first == 0) continue;
+          compared = true;
+          same = d == first;
+        }
+        if (same && compared) unchanged.push_back(axes[k].pointer);
+      }
+    }
+    std::vector<std::string> shown;
+    for (const OutputKind kind : options_.formats) {
+      const std::string_view what = kind == OutputKind::metrics                           ? "metrics"
+                                    : kind == OutputKind::csv || kind == OutputKind::json ? "frames"
+                                                                                          : "figures (titles aside)";
+      if (std::find(shown.begin(), shown.end(), what) == shown.end()) shown.emplace_back(what);
+    }
+    if (std::find(shown.begin(), shown.end(), "metrics") == shown.end()) shown.emplace_back("metrics");
+    std::string compared;
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+      compared += (i == 0 ? "" : i + 1 == shown.size() ? " and " : ", ") + shown[i];
+    }
+    for (const std::string& pointer : unchanged) {
+      summary_.notes.push_back(
+          fmt::format("{} changed nothing: every value of it gave the same {} as its first value", pointer, compared));
+    }
+  }
+
   // The manifest: the rows kept from before and the journal's, in order (an
   // interrupted run's rows that were still waiting for an earlier one are
   // left out: their variants are done again). Then the journal goes; a
@@ -356,11 +426,49 @@ class SweepRun {
   const int shard_k_;
   const int shard_n_;
   const std::int64_t mine_;
-  std::vector<char> kept_;  // per variant of the shard: resumed from an earlier run
+  std::vector<char> kept_;              // per variant of the shard: resumed from an earlier run
+  std::vector<std::uint64_t> digests_;  // per variant of the shard: its outputs' digest (0: none)
   bool have_manifest_ = false;
   std::int64_t metrics_skipped_ = 0;
   SweepSummary summary_;
 };
+
+}  // namespace
+
+namespace {
+
+// "/method" varied on a scene whose panels all set their own method changes
+// no figure and no metric (they are the panels'), only pita eval's frames of
+// the scene's own motion: refused unless those are asked for (csv, json).
+void check_method_axis(const BaseScene& base, const Grid& grid, const std::vector<OutputKind>& formats) {
+  if (std::any_of(formats.begin(), formats.end(),
+                  [](OutputKind k) { return k == OutputKind::csv || k == OutputKind::json; })) {
+    return;
+  }
+  const auto panels = base.document.find("panels");
+  if (panels == base.document.end() || !panels->is_array() || panels->empty()) return;
+  std::vector<std::string> own;
+  for (std::size_t k = 0; k < panels->size(); ++k) {
+    const Json& panel = (*panels)[k];
+    if (panel.is_string()) {
+      own.push_back(fmt::format("/panels/{}", k));
+    } else if (panel.is_object() && panel.contains("method")) {
+      own.push_back(fmt::format("/panels/{}/method", k));
+    } else {
+      return;  // this panel draws the scene's method
+    }
+  }
+  for (const Axis& axis : grid.axes()) {
+    if (axis.pointer != "/method") continue;
+    std::string listed;
+    for (std::size_t i = 0; i < own.size(); ++i) listed += (i == 0 ? "" : ", ") + own[i];
+    throw SweepUsageError(About(Input::vary, axis.pointer + "=" + axis.spec),
+                          fmt::format("every panel sets its own method ({}), so no figure or metric draws the "
+                                      "scene's \"method\": vary a panel's (/panels/K/method) instead, or ask for "
+                                      "the frames of the scene's own motion (csv, json)",
+                                      listed));
+  }
+}
 
 }  // namespace
 
@@ -370,6 +478,7 @@ SweepSummary run_sweep(const SweepOptions& options) {
   for (const std::string& v : options.vary) axes.push_back(parse_axis(v));
   const Grid grid(std::move(axes), options.zip);
   const BaseScene base = load_base(options.scene_path, grid);
+  check_method_axis(base, grid, options.formats);
   fs::path dir = output_folder(options);
   const Definition definition = definition_of(options, grid, base);
   return SweepRun(options, grid, base, std::move(dir), definition).run();

@@ -1,7 +1,10 @@
 #include "sweep/variant.hpp"
 
+#include <optional>
+
 #include <fmt/format.h>
 
+#include "core/fnv1a.hpp"
 #include "scene/did_you_mean.hpp"
 #include "scene/json_reader.hpp"
 #include "scene/json_text.hpp"
@@ -115,6 +118,39 @@ void set_at(Json& document, const Axis& axis, const std::vector<std::string>& to
   }
 }
 
+// An axis every value of which the scene reader refuses at the axis's
+// pointer (or inside it), the other axes at their first values, runs no
+// variant: refused as usage, with the first value's reason (an option the
+// method does not read, magnitudes all negative). Axes of up to
+// kMaxValuesTried values are tried.
+constexpr std::size_t kMaxValuesTried = 100;
+
+void check_axes_run(const BaseScene& base, const Grid& grid) {
+  const std::vector<Json> first = grid.values(0);
+  for (std::size_t k = 0; k < grid.axes().size(); ++k) {
+    const Axis& axis = grid.axes()[k];
+    if (axis.size() > kMaxValuesTried || (grid.zip() && grid.axes().size() > 1)) continue;
+    std::optional<std::string> reason;
+    bool all_refused = true;
+    for (std::size_t i = 0; i < axis.size() && all_refused; ++i) {
+      std::vector<Json> values = first;
+      values[k] = axis.value(i);
+      try {
+        (void)scene::parse_scene(variant_text(variant_document(base, grid, values)), base.path);
+        all_refused = false;
+      } catch (const scene::SceneError& error) {
+        const bool at_axis = error.pointer() == axis.pointer || error.pointer().starts_with(axis.pointer + "/");
+        all_refused = at_axis;
+        if (at_axis && !reason) reason = fmt::format("{}: {}", error.pointer(), error.reason());
+      }
+    }
+    if (all_refused && reason) {
+      throw SweepUsageError(about_axis(axis),
+                            fmt::format("every value is refused, so no variant would run: {}", *reason));
+    }
+  }
+}
+
 }  // namespace
 
 BaseScene load_base(const std::string& path, const Grid& grid) {
@@ -149,6 +185,7 @@ BaseScene load_base(const std::string& path, const Grid& grid) {
     }
     // Any other error is the first variant's own: it is a failed row.
   }
+  check_axes_run(base, grid);
   return base;
 }
 
@@ -157,23 +194,30 @@ Json variant_document(const BaseScene& base, const Grid& grid, const std::vector
   for (std::size_t k = 0; k < grid.axes().size(); ++k) {
     set_at(document, grid.axes()[k], tokens_of(grid.axes()[k].pointer), values[k], base.document);
   }
+  // The title says what varies: the values its "{/pointer}" templates do
+  // not show already follow it, "(/method = P3)".
+  const auto title = document.find("title");
+  if (title != document.end() && title->is_string() && !title->get<std::string>().empty()) {
+    std::string text = title->get<std::string>();
+    std::string added;
+    for (std::size_t k = 0; k < grid.axes().size(); ++k) {
+      const std::string& pointer = grid.axes()[k].pointer;
+      if (pointer == "/title" || text.find("{" + pointer + "}") != std::string::npos) continue;
+      added += fmt::format("{}{} = {}", added.empty() ? "" : ", ", pointer, value_text(values[k]));
+    }
+    if (!added.empty()) *title = text + " (" + added + ")";
+  }
   return document;
 }
 
 std::string variant_text(const Json& document) { return document.dump(2) + "\n"; }
 
 std::string content_hash(const std::string& text, const std::string& salt) {
-  std::uint64_t h = 14695981039346656037ULL;
-  const auto mix = [&h](std::string_view bytes) {
-    for (const unsigned char c : bytes) {
-      h ^= c;
-      h *= 1099511628211ULL;
-    }
-  };
-  mix(text);
-  mix(std::string_view("\0", 1));
-  mix(salt);
-  return fmt::format("{:016x}", h);
+  Fnv1a hash;
+  hash.add(std::string_view(text));
+  hash.add(std::string_view("\0", 1));
+  hash.add(std::string_view(salt));
+  return fmt::format("{:016x}", hash.value());
 }
 
 }  // namespace pita::sweep

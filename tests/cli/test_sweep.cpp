@@ -59,6 +59,9 @@ TEST(Sweep, EachVariantIsTheHandEditedScene) {
     Json edited = base;
     edited["keyframes"][1]["t"] = expected[i].first;
     edited["method"] = expected[i].second;
+    // Its title says what varies.
+    edited["title"] = fmt::format("{} (/keyframes/1/t = {}, /method = {})", base["title"].get<std::string>(),
+                                  expected[i].first, expected[i].second);
     const fs::path hand = dir.path() / fmt::format("hand-{}.json", i);
     std::ofstream(hand) << edited.dump(1);
     const RunResult svg = run_pita({"render", hand.string(), "-o", fmt::format("hand-{}.svg", i)}, dir.path());
@@ -101,6 +104,91 @@ TEST(Sweep, PathLengthMetricIsTheEvaluatedPath) {
   }
   const double metric = std::stod(column(read_file(dir.path() / "out/manifest.csv"), 5).at(0));
   EXPECT_NEAR(metric, length, 1e-4 * length);
+}
+
+// Each variant's title shows what varies: a "{/pointer}" of the title shows
+// its value, the other varied values follow the title.
+TEST(Sweep, VariantTitlesSayWhatVaries) {
+  ScratchDir dir;
+  Json scene = Json::parse(kFigureOneScene);
+  scene["title"] = "A motion by {/method}";
+  dir.write("s.json", scene.dump());
+  const RunResult r = run_pita({"sweep", "s.json", "--vary", "/method=P2,P4", "--vary", "/keyframes/1/w=0.5,1", "-o",
+                                "out", "--format", "svg", "-q"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Json variant = Json::parse(read_file(dir.path() / "out/s-3.scene.json"));
+  EXPECT_EQ(variant["title"], "A motion by {/method} (/keyframes/1/w = 1)");
+  // pita render shows the template's value: the variant's figure is the
+  // scene titled by hand.
+  Json hand = variant;
+  hand["title"] = "A motion by P4 (/keyframes/1/w = 1)";
+  dir.write("hand.json", hand.dump());
+  ASSERT_EQ(run_pita({"render", "hand.json", "-o", "hand.svg"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(read_file(dir.path() / "out/s-3.svg"), read_file(dir.path() / "hand.svg"));
+}
+
+// A figure's panels that all set their own method draw none of the scene's:
+// varying it is refused, unless the frames of the scene's own motion are asked for.
+TEST(Sweep, VaryingAMethodThatNoPanelDrawsIsRefused) {
+  ScratchDir dir;
+  Json scene = Json::parse(kFigureOneScene);
+  scene["panels"] = Json::array({"P2", Json{{"method", "P8"}}});
+  dir.write("s.json", scene.dump());
+  const RunResult r = run_pita({"sweep", "s.json", "--vary", "/method=P2,P4", "-o", "out"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("every panel sets its own method (/panels/0, /panels/1/method)"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+  const RunResult frames =
+      run_pita({"sweep", "s.json", "--vary", "/method=P2,P4", "-o", "out", "--format", "csv", "-q"}, dir.path());
+  EXPECT_EQ(frames.exit_code, 0) << frames.err;
+  // A panel that draws the scene's method lets it vary.
+  scene["panels"] = Json::array({"P2", Json{{"title", "the scene's"}}});
+  dir.write("s.json", scene.dump());
+  EXPECT_EQ(run_pita({"sweep", "s.json", "--vary", "/method=P2,P4", "-o", "out2", "-q"}, dir.path()).exit_code, 0);
+}
+
+// The metrics are of what the figure draws: its first panel's motion.
+TEST(Sweep, MetricsMeasureTheFirstPanel) {
+  ScratchDir dir;
+  Json scene = Json::parse(kFigureOneScene);
+  scene["panels"] = Json::array({"P1", "P6"});
+  dir.write("s.json", scene.dump());
+  ASSERT_EQ(run_pita({"sweep", "s.json", "--vary", "/keyframes/1/w=0.5", "-o", "out", "--format", "metrics", "-q"},
+                     dir.path())
+                .exit_code,
+            0);
+  const std::string metric = column(read_file(dir.path() / "out/manifest.csv"), 5).at(0);
+  Json panel_scene = Json::parse(read_file(dir.path() / "s.json"));
+  panel_scene["keyframes"][1]["w"] = 0.5;
+  panel_scene.erase("panels");
+  panel_scene["method"] = "P1";
+  dir.write("p1.json", panel_scene.dump());
+  const RunResult p1 = run_pita({"measure", "p1.json", "--format", "json"}, dir.path());
+  ASSERT_EQ(p1.exit_code, 0) << p1.err;
+  const double length = Json::parse(p1.out)["motions"][0]["path"]["p"]["length"].get<double>();
+  EXPECT_NEAR(std::stod(metric), length, 1e-5 * length);
+  // The scene's own method, P6, which no panel draws, gives another length.
+  panel_scene["method"] = "P6";
+  dir.write("p6.json", panel_scene.dump());
+  const RunResult p6 = run_pita({"measure", "p6.json", "--format", "json"}, dir.path());
+  const double own = Json::parse(p6.out)["motions"][0]["path"]["p"]["length"].get<double>();
+  EXPECT_GT(std::abs(own - length), 1e-3 * length);
+}
+
+// An axis whose every value gives the same outputs as its first is named.
+TEST(Sweep, SaysWhichAxisChangedNothing) {
+  ScratchDir dir;
+  dir.write("s.json", kFigureOneScene);
+  const RunResult r = run_pita({"sweep", "s.json", "--vary", "/options/knots=increasing,as-given", "--vary",
+                                "/keyframes/1/w=0.5,1", "-o", "out", "--format", "svg"},
+                               dir.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("/options/knots changed nothing: every value of it gave the same figures (titles aside) and "
+                       "metrics as its first value"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("/keyframes/1/w changed nothing"), std::string::npos) << r.err;
 }
 
 TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
@@ -597,6 +685,8 @@ TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
       {{"--vary", "/keyframes/1/t=0:1:3", "--format", "gif"}, "--format"},
       {{"--vary", "/keyframes/1/t=0:1:3", "--jobs", "0"}, "--jobs"},
       {{}, "--vary"},
+      // Axes that run no variant: every value refused at the axis's pointer.
+      {{"--vary", "/keyframes/1/m=-1,-2"}, "every value is refused, so no variant would run: /keyframes/1/m:"},
   };
   for (const auto& [extra, message] : cases) {
     std::vector<std::string> args = {"sweep", kFig13, "-o", "out"};
@@ -609,6 +699,17 @@ TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
   const RunResult folder = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0:1:3", "-o", "file/out"}, dir.path());
   EXPECT_EQ(folder.exit_code, 2);
   EXPECT_NE(folder.err.find("cannot create the output folder"), std::string::npos) << folder.err;
+  // An option the method does not read: every value is refused.
+  dir.write("p6.json", kFigureOneScene);
+  const RunResult anchor = run_pita({"sweep", "p6.json", "--vary", "/keyframes/1/t=0.2:0.8:3", "--vary",
+                                     "/options/anchor=start,midpoint", "-o", "out"},
+                                    dir.path());
+  EXPECT_EQ(anchor.exit_code, 2);
+  EXPECT_NE(anchor.err.find("/options/anchor=start,midpoint: every value is refused, so no variant would run: "
+                            "/options/anchor: P6 La-LP does not read \"anchor\""),
+            std::string::npos)
+      << anchor.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
   const RunResult scene = run_pita({"sweep", "bad.json", "--vary", "/method=P1", "-o", "out"}, dir.path());
   EXPECT_EQ(scene.exit_code, 2);
   EXPECT_NE(scene.err.find("bad.json: /keyframes"), std::string::npos) << scene.err;
@@ -619,7 +720,9 @@ TEST(SweepChromium, IndexSortsByAMetricColumn) {
   const std::string chromium = fs::exists("/usr/bin/chromium") ? "/usr/bin/chromium" : "";
   if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (Debian package chromium)";
   ScratchDir dir;
-  const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0.1:0.9:6", "-o", "out", "-q"}, dir.path());
+  // The knot of the first panel's B, whose motion the metrics measure.
+  const RunResult r =
+      run_pita({"sweep", kFig13, "--vary", "/panels/0/keyframes/1/t=0.1:0.9:6", "-o", "out", "-q"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // The expected order: the manifest's rows by discrepancy_max, largest first.
   const std::string manifest = read_file(dir.path() / "out/manifest.csv");
