@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
 """ctest docs.self_test: the documentation checks fail when they should. A
 doc example broken on purpose fails docs.examples, naming its line; a no-run
-comment without a reason is an error; broken links and anchors fail
+or in-clone comment without a reason is an error; the examples run in an
+empty folder of the user's own outside the source tree, with pita on PATH and
+PITA_SOURCE set, and in-clone ones in the source tree; examples that write
+into the source tree fail, naming the files, in a git work tree and in a tree
+without git; broken links and anchors fail
 docs.links, each named, as do references to a section that does not exist,
 and the good ones pass.
 
   tests/docs/self_test.py PITA
 """
 import pathlib
+import shutil
 import subprocess
 import sys
+import tempfile
 
 HERE = pathlib.Path(__file__).resolve().parent
 DATA = HERE / "data"
@@ -42,6 +48,34 @@ def main() -> int:
     unexplained = run(HERE / "run_examples.py", ROOT, pita, DATA / "unexplained-no-run.md")
     expect(unexplained.returncode == 1 and "must say why" in unexplained.stderr,
            "a no-run comment without a reason must fail", unexplained)
+
+    own = run(HERE / "run_examples.py", ROOT, pita, DATA / "own-folder.md")
+    expect(own.returncode == 0 and "3 examples ran, 0 marked no-run, 0 failed" in own.stdout,
+           "the examples run in an empty folder of the user's own, in-clone ones in the source tree", own)
+
+    git = shutil.which("git")
+    for with_git in (False, True) if git else (False,):
+        with tempfile.TemporaryDirectory(prefix="pita-doc-tree-") as tree:
+            tree = pathlib.Path(tree)
+            (tree / "scenes").mkdir()
+            (tree / "scenes" / "a.json").write_text('{"title": "a scene of the tree"}\n')
+            (tree / ".gitignore").write_text("/out/\n")
+            shutil.copy(DATA / "writes-into-clone.md", tree / "page.md")
+            if with_git:
+                quiet = {"check": True, "capture_output": True}
+                subprocess.run([git, "init", "-q", str(tree)], **quiet)
+                subprocess.run([git, "-C", str(tree), "add", "scenes/a.json"], **quiet)
+                subprocess.run([git, "-C", str(tree), "-c", "user.name=t", "-c", "user.email=t@t", "commit", "-q",
+                                "-m", "a scene"], **quiet)
+            kind = "a git work tree" if with_git else "a tree without git"
+            wrote = run(HERE / "run_examples.py", tree, pita, tree / "page.md")
+            expect(wrote.returncode == 1 and "page.md: its examples wrote into the source tree" in wrote.stderr,
+                   f"examples that write into the source tree must fail ({kind})", wrote)
+            expect("new: stray.txt" in wrote.stderr and ("new: out/" if with_git else "new: out/figure.svg")
+                   in wrote.stderr and "changed: scenes/a.json" in wrote.stderr,
+                   f"the files written and changed are named ({kind})", wrote)
+            expect("page.md:14: a marking comment must say why" in wrote.stderr,
+                   "an in-clone comment without a reason must fail", wrote)
 
     links = run(HERE / "check_links.py", DATA / "broken")
     expect(links.returncode == 1, "broken links must fail docs.links (exit 1)", links)
