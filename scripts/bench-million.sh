@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The million-variant figures of docs/reference/sweep.md "A million variants", measured in one run
-# on Fig. 13's scene (scenes/fig13-knot-ratio.json), its middle knot swept, --format metrics
+# on Fig. 13's scene (scenes/fig13-knot-ratio.json), its first panel's middle knot swept, --format metrics
 # (no file per variant), --jobs = the cores (PITA_JOBS):
 #   - wall time and peak memory (GNU time's maximum resident set) at 10^4 and 10^6 variants, and
 #     the throughput in variants per second per core;
@@ -28,7 +28,7 @@ rm -rf m4 m6 k6 s4 s5 w4 w5
 big="${PITA_BENCH_VARIANTS:-1000000}"  # smaller for a trial run of the script
 shards="${PITA_BENCH_SHARDS:-1000}"
 
-vary() { echo "--vary /keyframes/1/t=0.05:0.95:$1"; }
+vary() { echo "--vary /panels/0/keyframes/1/t=0.05:0.95:$1"; }
 # measure NAME COMMAND...: writes "seconds max-RSS-KB" of COMMAND to time-NAME.txt (its exit
 # status 0 or 1 accepted; "sweep N DIR" is the sweep of N variants into DIR); got NAME prints it.
 measure() {

@@ -77,7 +77,9 @@ std::shared_ptr<AnimateOptions> setup_animate(CLI::App& app) {
   animate
       ->add_option_function<int>(
           "--frames", [options](int v) { options->frames = v; },
-          fmt::format("Number of frames, {} to {}", scene::kMinAnimationFrames, scene::kMaxAnimationFrames))
+          fmt::format("Number of frames, {} to {}; alone it keeps the frames per second, so the animation plays "
+                      "N / fps seconds (give --duration too to keep its length)",
+                      scene::kMinAnimationFrames, scene::kMaxAnimationFrames))
       ->type_name("N");
   animate
       ->add_option("--scale", options->scale,
@@ -89,7 +91,7 @@ std::shared_ptr<AnimateOptions> setup_animate(CLI::App& app) {
           "--format", [options](const std::string& v) { options->format = v; },
           "Frames of a directory: png (default) or svg")
       ->type_name("FMT");
-  animate->add_flag("-q,--quiet", options->quiet, "No progress bar");
+  animate->add_flag("-q,--quiet", options->quiet, "No progress bar and no \"wrote\" line: errors only");
   animate->add_flag("--allow-absolute-paths", options->allow_absolute_paths, "Allow images given by absolute paths");
   animate->add_option("--budget", options->budget, "Allow F times the default work budget of a frame")
       ->check(CLI::Range(1e-3, render::kMaxBudgetFactor))
@@ -136,7 +138,9 @@ ExitCode run_animate(const AnimateOptions& options) {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
     const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {
-      std::cout << "wrote " << path.string() << " (" << timeline.frames << " frames, " << timeline.seconds() << " s)\n";
+      if (options.quiet) continue;
+      std::cout << fmt::format("wrote {} ({} frames at {:g} fps: {:g} s)\n", path.string(), timeline.frames,
+                               timeline.fps, timeline.seconds());
     }
     return ExitCode::success;
   } catch (...) {

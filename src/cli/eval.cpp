@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <span>
@@ -303,10 +304,15 @@ std::shared_ptr<EvalOptions> setup_eval(CLI::App& app) {
           "Evaluate the motion of this panel of the scene (0 = the first entry of \"panels\") instead of the "
           "scene's own")
       ->type_name("N");
-  eval->add_option("--format", options->format, "Output format")
+  eval->add_option_function<std::string>(
+          "--format",
+          [options](const std::string& format) {
+            options->format = format;
+            options->format_given = true;
+          },
+          "Output format (default json, or the extension of -o: frames.csv)")
       ->check(CLI::IsMember({"json", "csv"}))
-      ->type_name("FORMAT")
-      ->capture_default_str();
+      ->type_name("FORMAT");
   eval->add_option_function<std::string>(
           "-o,--output", [options](const std::string& path) { options->output = path; },
           "Write the frames into FILE instead of standard output: atomically, through a temporary beside it "
@@ -393,12 +399,44 @@ EvalOutcome evaluate(const EvalOptions& options) {
   return outcome;
 }
 
-ExitCode run_eval(const EvalOptions& options) {
+namespace {
+
+namespace fs = std::filesystem;
+
+// -o FILE.csv or FILE.json: the frames in that format (--format, if given,
+// must agree); another extension is a mistake (a figure is pita render's),
+// refused before anything is read.
+std::optional<std::string> output_format_error(EvalOptions& options) {
+  if (!options.output) return std::nullopt;
+  const fs::path out(*options.output);
+  if (!out.has_extension() || out.extension() == ".") return std::nullopt;
+  const std::string ext = out.extension().string().substr(1);
+  if (ext != "csv" && ext != "json") {
+    return fmt::format(
+        "-o {}: pita eval writes frames as .csv or .json files (\".{}\" is neither; pita render draws figures), or "
+        "a file without an extension in the --format given",
+        *options.output, ext);
+  }
+  if (options.format_given && options.format != ext) {
+    return fmt::format("--format {} contradicts the extension of -o {}", options.format, *options.output);
+  }
+  options.format = ext;
+  return std::nullopt;
+}
+
+}  // namespace
+
+ExitCode run_eval(const EvalOptions& given) {
+  EvalOptions options = given;
+  if (const std::optional<std::string> error = output_format_error(options)) {
+    std::cerr << "pita: " << *error << "\nRun 'pita eval --help' for usage.\n";
+    return ExitCode::bad_input;
+  }
   if (options.batch) {
     // Checked here rather than with CLI11's excludes(), which would print
     // "Excludes: --batch" beside every option of the help.
     if (!options.scene_path.empty() || options.method || options.samples || options.times || options.panel ||
-        options.format != "json" || options.output) {
+        options.format_given || options.output) {
       std::cerr << "pita: --batch excludes SCENE, --method, --samples, --t, --panel, --format and -o: each "
                    "request line holds its own, and the answers go to standard output\nRun 'pita eval --help' "
                    "for usage.\n";

@@ -25,6 +25,7 @@ struct EvalOptions {
   std::optional<std::string> samples;  // --samples, as typed
   std::optional<std::string> times;    // --t, as typed: "0,0.25,1.5"
   std::string format = "json";         // --format: json or csv
+  bool format_given = false;           // --format was given (else -o's extension may choose it)
   std::optional<int> panel;            // --panel: the motion of this panel (0-based)
   std::optional<std::string> batch;    // --batch: a file of requests, "-" for stdin
   std::optional<std::string> output;   // -o: the frames go into this file, written atomically

@@ -15,6 +15,7 @@
 #include "animate/timeline.hpp"
 #include "cli/failure.hpp"
 #include "cli/scene_jobs.hpp"
+#include "core/methods.hpp"
 #include "io/output_file.hpp"
 #include "motion/stage.hpp"
 #include "render/budget.hpp"
@@ -188,6 +189,12 @@ std::shared_ptr<RenderOptions> setup_render(CLI::App& app) {
   // Required unless --list: checked in run_render, with CLI11's words.
   render->add_option("SCENE", options->scene_paths, "Scene files (JSON)");
   render->add_option("-o,--output", options->output, "Output file (.svg/.png/.pdf) or directory")->type_name("OUT");
+  render
+      ->add_option_function<std::string>(
+          "--method", [options](const std::string& name) { options->method = name; },
+          "Draw the scene as if its \"method\" were M: its own motion and every panel without a method of its "
+          "own (a title's {/method} shows M)")
+      ->type_name("M");
   render->add_flag("--list", options->list,
                    "Print every scene (of the SCENE files and folders given, else of ./scenes) with its title and "
                    "description, and render nothing");
@@ -295,6 +302,9 @@ struct RenderPlan {
 // Throws UsageError.
 RenderPlan plan_render(const RenderOptions& options) {
   RenderPlan plan;
+  if (options.method && find_method_entry(*options.method) == nullptr) {
+    throw UsageError(fmt::format("--method: {}", unknown_method_reason(*options.method)));
+  }
   const std::optional<render::Format> by_extension = render::format_from_name(
       fs::path(options.output).extension().string().substr(fs::path(options.output).has_extension() ? 1 : 0));
   plan.single_file = by_extension.has_value();
@@ -352,7 +362,7 @@ struct RenderedScene {
 // nothing.
 RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan, const std::string& path) {
   RenderedScene rendered;
-  const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths});
+  const scene::Scene scene = scene::load_scene(path, {options.allow_absolute_paths, options.method});
   render::Figure figure;
   if (options.at) {
     // One frame of the animation, in the view all its frames share.

@@ -32,6 +32,7 @@ struct RenderOptions {
   bool allow_absolute_paths = false;  // --allow-absolute-paths: images by absolute paths
   bool list = false;                  // --list: print each scene's name, title and description
   std::optional<int> jobs;            // --jobs: scenes rendered at once (cli/scene_jobs.hpp)
+  std::optional<std::string> method;  // --method: the scene's method replaced (as pita eval --method)
 };
 
 std::shared_ptr<RenderOptions> setup_render(CLI::App& app);

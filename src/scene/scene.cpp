@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "core/overloaded.hpp"
@@ -56,11 +57,36 @@ Scene load_scene(const std::filesystem::path& path, const ReadOptions& options) 
   return parse_scene(read_input_file(path, kMaxSceneFileBytes, "scene file"), path.string(), options);
 }
 
+std::vector<std::string> panels_with_own_methods(const Json& document) {
+  const auto panels = document.find("panels");
+  if (!document.is_object() || panels == document.end() || !panels->is_array() || panels->empty()) return {};
+  std::vector<std::string> own;
+  for (std::size_t k = 0; k < panels->size(); ++k) {
+    const Json& panel = (*panels)[k];
+    if (panel.is_string()) {
+      own.push_back(fmt::format("/panels/{}", k));
+    } else if (panel.is_object() && panel.contains("method")) {
+      own.push_back(fmt::format("/panels/{}/method", k));
+    } else {
+      return {};  // this panel draws the scene's method
+    }
+  }
+  return own;
+}
+
 Scene parse_scene(std::string_view text, std::string source_name, const ReadOptions& options) {
-  const Json document = parse_json(text, source_name);
+  Json document = parse_json(text, source_name);
   const JsonReader reader(std::move(source_name), options);
   if (!document.is_object()) {
     reader.fail("", "a scene must be a JSON object (got " + value_text(document) + ")");
+  }
+  if (options.method) {
+    if (const std::vector<std::string> own = panels_with_own_methods(document); !own.empty()) {
+      reader.fail("/method", fmt::format("{}, given in place of the scene's method, would be drawn by no panel: each "
+                                         "sets its own ({}); change a panel's \"method\"",
+                                         *options.method, fmt::join(own, ", ")));
+    }
+    document["method"] = *options.method;
   }
   Scene scene = detail::is_pose_scene(document) ? detail::read_pose_scene(reader, document)
                                                 : detail::read_arrow_scene(reader, document);

@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/keyframe.hpp"
 #include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
@@ -140,6 +142,12 @@ class SceneError : public LocatedError {
 // The panel that is the scene itself: its method, keyframes or poses, shapes,
 // options, timing and samples (a scene without "panels" draws this one).
 Panel scene_panel(const Scene& scene, std::string pointer = "");
+
+// The pointers of the panels of a scene document ("/panels/0" for a panel
+// given as a method name, "/panels/1/method") when every panel sets its own
+// method, so that none draws the scene's; empty otherwise (also without
+// panels).
+std::vector<std::string> panels_with_own_methods(const nlohmann::ordered_json& document);
 
 // Reads and checks the scene file at `path`. Throws SceneError (also when the
 // file cannot be read); the error names the file as `path` is spelt.

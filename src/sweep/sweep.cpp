@@ -27,6 +27,7 @@
 #include "sweep/manifest.hpp"
 #include "sweep/run_variant.hpp"
 #include "sweep/sheet.hpp"
+#include "sweep/unchanged_axes.hpp"
 #include "sweep/variant.hpp"
 
 namespace pita::sweep {
@@ -43,9 +44,6 @@ constexpr auto kManifestInterval = std::chrono::seconds(5);
 constexpr std::int64_t kRowsAhead = 1024;
 // Failed variants listed in the summary (the manifest has them all).
 constexpr std::size_t kMaxFailuresKept = 1000;
-// Up to this many variants per run, each variant's digest is kept (8 bytes)
-// to say which axes changed nothing; beyond, nothing is said.
-constexpr std::int64_t kMaxDigestsKept = 2'000'000;
 
 // `metrics_only`: a row without outputs is complete (--format metrics).
 bool outputs_exist(const fs::path& dir, const Row& row, bool metrics_only) {
@@ -80,6 +78,15 @@ namespace {
 // sweep did not write (folder.hpp).
 fs::path output_folder(const SweepOptions& options) {
   const fs::path dir(options.output);
+  // "out.png": a file's name, not a folder to create (an existing folder of
+  // that name is used).
+  std::error_code error;
+  if (dir.has_extension() && dir.extension() != "." && !fs::is_directory(dir, error)) {
+    throw SweepUsageError(About{Input::output, options.output},
+                          fmt::format("a sweep writes into a folder, and \"{}\" is the extension of a file: give a "
+                                      "folder's name without one (an existing folder of that name is used)",
+                                      dir.extension().string()));
+  }
   claim_folder(dir, options.output, options.scene_path);
   return dir;
 }
@@ -135,7 +142,7 @@ class SweepRun {
         shard_n_(options.shard ? options.shard->second : 1),
         mine_(grid.size() > shard_k_ ? (grid.size() - shard_k_ + shard_n_ - 1) / shard_n_ : 0),
         kept_(static_cast<std::size_t>(mine_), 0),
-        digests_(mine_ <= kMaxDigestsKept ? static_cast<std::size_t>(mine_) : 0, 0) {
+        unchanged_(grid) {
     summary_.variants = mine_;
   }
 
@@ -275,7 +282,7 @@ class SweepRun {
       summary_.write_failed = summary_.write_failed || finished->outcome.write_failed;
       if (finished->outcome.metrics_skipped) ++metrics_skipped_;
       const Row& row = finished->row;
-      if (!digests_.empty()) digests_[static_cast<std::size_t>(position(row.index))] = finished->outcome.digest;
+      unchanged_.add(row.index, finished->outcome.digest);
       if (row.ok()) {
         ++summary_.ok;
       } else {
@@ -321,52 +328,11 @@ class SweepRun {
     }
   }
 
-  // An axis whose every value gave the same outputs as its first value, the
-  // other axes alike (titles aside: a variant's title names its values),
-  // changed nothing: said in a note, with what was compared. With --zip the
-  // axes move together: said when every variant gave the same. Variants
-  // resumed, failed, or in another shard are not compared.
+  // The axes that changed nothing (sweep/unchanged_axes.hpp), said in a
+  // note with what was compared.
   void note_unchanged_axes() {
-    if (digests_.empty()) return;
-    const std::vector<Axis>& axes = grid_.axes();
-    const auto digest_of = [&](std::int64_t index) -> std::uint64_t {
-      return in_shard(index) ? digests_[static_cast<std::size_t>(position(index))] : 0;
-    };
-    std::vector<std::string> unchanged;
-    if (grid_.zip()) {
-      std::uint64_t first = 0;
-      std::int64_t compared = 0;
-      bool same = true;
-      for (std::int64_t index = 0; index < grid_.size() && same; ++index) {
-        const std::uint64_t d = digest_of(index);
-        if (d == 0) continue;
-        if (first == 0) first = d;
-        same = d == first;
-        ++compared;
-      }
-      if (same && compared >= 2) {
-        for (const Axis& axis : axes) unchanged.push_back(axis.pointer);
-      }
-    } else {
-      std::vector<std::int64_t> stride(axes.size(), 1);
-      for (std::size_t k = axes.size(); k-- > 1;) {
-        stride[k - 1] = stride[k] * static_cast<std::int64_t>(axes[k].size());
-      }
-      for (std::size_t k = 0; k < axes.size(); ++k) {
-        const auto n = static_cast<std::int64_t>(axes[k].size());
-        if (n < 2) continue;
-        bool same = true, compared = false;
-        for (std::int64_t index = 0; index < grid_.size() && same; ++index) {
-          const std::int64_t at = (index / stride[k]) % n;
-          const std::uint64_t d = at == 0 ? 0 : digest_of(index);
-          const std::uint64_t first = d == 0 ? 0 : digest_of(index - at * stride[k]);
-          if (d == 0 || first == 0) continue;
-          compared = true;
-          same = d == first;
-        }
-        if (same && compared) unchanged.push_back(axes[k].pointer);
-      }
-    }
+    const std::vector<std::string> unchanged = unchanged_.unchanged();
+    if (unchanged.empty()) return;
     std::vector<std::string> shown;
     for (const OutputKind kind : options_.formats) {
       const std::string_view what = kind == OutputKind::metrics                           ? "metrics"
@@ -426,8 +392,8 @@ class SweepRun {
   const int shard_k_;
   const int shard_n_;
   const std::int64_t mine_;
-  std::vector<char> kept_;              // per variant of the shard: resumed from an earlier run
-  std::vector<std::uint64_t> digests_;  // per variant of the shard: its outputs' digest (0: none)
+  std::vector<char> kept_;  // per variant of the shard: resumed from an earlier run
+  UnchangedAxes unchanged_;
   bool have_manifest_ = false;
   std::int64_t metrics_skipped_ = 0;
   SweepSummary summary_;
@@ -445,19 +411,8 @@ void check_method_axis(const BaseScene& base, const Grid& grid, const std::vecto
                   [](OutputKind k) { return k == OutputKind::csv || k == OutputKind::json; })) {
     return;
   }
-  const auto panels = base.document.find("panels");
-  if (panels == base.document.end() || !panels->is_array() || panels->empty()) return;
-  std::vector<std::string> own;
-  for (std::size_t k = 0; k < panels->size(); ++k) {
-    const Json& panel = (*panels)[k];
-    if (panel.is_string()) {
-      own.push_back(fmt::format("/panels/{}", k));
-    } else if (panel.is_object() && panel.contains("method")) {
-      own.push_back(fmt::format("/panels/{}/method", k));
-    } else {
-      return;  // this panel draws the scene's method
-    }
-  }
+  const std::vector<std::string> own = scene::panels_with_own_methods(base.document);
+  if (own.empty()) return;
   for (const Axis& axis : grid.axes()) {
     if (axis.pointer != "/method") continue;
     std::string listed;

@@ -330,7 +330,12 @@ TEST(AnimateSvg, Fig23IsValidXmlWithOneGroupPerFrameUnderTwoMegabytes) {
   const RunResult r = run_pita({"animate", kFig23.string(), "-o", "fig23.svg"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_NE(r.out.find("wrote fig23.svg (120 frames, 4 s)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrote fig23.svg (120 frames at 30 fps: 4 s)"), std::string::npos) << r.out;
+  // -q: errors only; the same file.
+  const RunResult quiet = run_pita({"animate", kFig23.string(), "-o", "quiet.svg", "-q"}, dir.path());
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+  EXPECT_EQ(quiet.out + quiet.err, "");
+  EXPECT_EQ(read_file(dir.path() / "quiet.svg"), read_file(dir.path() / "fig23.svg"));
   const fs::path svg_path = dir.path() / "fig23.svg";
   const std::string svg = read_file(svg_path);
   const CommandResult lint = run_command("xmllint --noout " + quoted(svg_path.string()) + " 2>&1");
@@ -488,7 +493,7 @@ TEST_P(AnimateVideo, TwelveFramesAtSixFpsAreTwoSecondsAtTheCanvasSize) {
   const RunResult r = run_pita({"animate", kFig23.string(), "-o", out, "--frames", "12", "--fps", "6"}, dir.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_EQ(r.out, "wrote " + out + " (12 frames, 2 s)\n");
+  EXPECT_EQ(r.out, "wrote " + out + " (12 frames at 6 fps: 2 s)\n");
   EXPECT_TRUE(hidden_in(dir.path()).empty()) << joined(hidden_in(dir.path()));
   EXPECT_EQ(permissions_of(dir.path() / out), 0666 & ~current_umask());
   const CommandResult probe = run_command(

@@ -361,6 +361,24 @@ TEST_F(Eval, OutputFileHoldsWhatStandardOutputShows) {
   EXPECT_TRUE(hidden_in(dir.path()).empty());
 }
 
+// -o's extension chooses the format, and must be one pita eval writes.
+TEST_F(Eval, OutputExtensionChoosesTheFormatOrIsRefused) {
+  const RunResult csv = run({"eval", "scene.json", "--format", "csv"});
+  ASSERT_EQ(csv.exit_code, 0) << csv.err;
+  ASSERT_EQ(run({"eval", "scene.json", "-o", "frames.csv"}).exit_code, 0);
+  EXPECT_EQ(read_file(dir.path() / "frames.csv"), csv.out);
+  const RunResult figure = run({"eval", "scene.json", "-o", "frames.png"});
+  EXPECT_EQ(figure.exit_code, 2);
+  EXPECT_NE(figure.err.find("-o frames.png: pita eval writes frames as .csv or .json files"), std::string::npos)
+      << figure.err;
+  const RunResult contradiction = run({"eval", "scene.json", "--format", "csv", "-o", "frames.json"});
+  EXPECT_EQ(contradiction.exit_code, 2);
+  EXPECT_NE(contradiction.err.find("--format csv contradicts the extension of -o frames.json"), std::string::npos)
+      << contradiction.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames.json"));
+}
+
 // All or nothing: a frame that is not finite, after many chunks' worth of
 // good ones, leaves standard output empty and an existing -o file as it was.
 TEST_F(Eval, ALateNonFiniteFrameWritesNothing) {

@@ -109,6 +109,36 @@ TEST(RenderOutputs, AnOutputWithAnExtensionPitaDoesNotWriteIsRefused) {
   EXPECT_TRUE(fs::exists(dir.path() / "figures" / "four.svg"));
 }
 
+// --method M draws the scene as the file with "method": M would be drawn: its
+// own motion, the panels without a method of their own, a title's {/method}.
+TEST(RenderOutputs, MethodDrawsTheSceneAsIfItsMethodWereM) {
+  const ScratchDir dir;
+  const std::string fields = kFigureOneFields.substr(kFigureOneFields.find(", \"keyframes\""));
+  const auto scene = [&](const std::string& method, const std::string& panels) {
+    return "{\"title\": \"by {/method}\", \"method\": \"" + method + "\"" + fields + panels + "}";
+  };
+  const std::string panels = R"(, "panels": ["P8", {"title": "the scene's"}])";
+  dir.write("p6.json", scene("P6", panels));
+  dir.write("p2.json", scene("P2", panels));
+  ASSERT_EQ(run_pita({"render", "p6.json", "--method", "P2", "-o", "override.svg"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_pita({"render", "p2.json", "-o", "by-hand.svg"}, dir.path()).exit_code, 0);
+  ASSERT_EQ(run_pita({"render", "p6.json", "-o", "own.svg"}, dir.path()).exit_code, 0);
+  EXPECT_EQ(read_file(dir.path() / "override.svg"), read_file(dir.path() / "by-hand.svg"));
+  EXPECT_NE(read_file(dir.path() / "override.svg"), read_file(dir.path() / "own.svg"));
+  // Refused: an unknown name, and a scene whose panels all draw their own method.
+  const RunResult unknown = run_pita({"render", "p6.json", "--method", "P66", "-o", "x.svg"}, dir.path());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_NE(unknown.err.find("--method: unknown method \"P66\""), std::string::npos) << unknown.err;
+  dir.write("own.json", scene("P6", R"(, "panels": ["P8", {"method": "P1"}])"));
+  const RunResult none = run_pita({"render", "own.json", "--method", "P2", "-o", "x.svg"}, dir.path());
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_NE(none.err.find("own.json: /method: P2, given in place of the scene's method, would be drawn by no panel: "
+                          "each sets its own (/panels/0, /panels/1/method)"),
+            std::string::npos)
+      << none.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "x.svg"));
+}
+
 // --- A scene's formats: all or none ---------------------------------------
 
 // A directory in the way of x.png: the scene fails with exit 3, its SVG is

@@ -699,6 +699,14 @@ TEST(Sweep, BadUsageExitsTwoAndWritesNothing) {
   const RunResult folder = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0:1:3", "-o", "file/out"}, dir.path());
   EXPECT_EQ(folder.exit_code, 2);
   EXPECT_NE(folder.err.find("cannot create the output folder"), std::string::npos) << folder.err;
+  // A file's name is not a folder to create.
+  const RunResult file_name =
+      run_pita({"sweep", kFig13, "--vary", "/keyframes/1/t=0:1:3", "-o", "out.png"}, dir.path());
+  EXPECT_EQ(file_name.exit_code, 2);
+  EXPECT_NE(file_name.err.find("-o out.png: a sweep writes into a folder, and \".png\" is the extension of a file"),
+            std::string::npos)
+      << file_name.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out.png"));
   // An option the method does not read: every value is refused.
   dir.write("p6.json", kFigureOneScene);
   const RunResult anchor = run_pita({"sweep", "p6.json", "--vary", "/keyframes/1/t=0.2:0.8:3", "--vary",

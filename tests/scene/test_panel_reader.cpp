@@ -33,9 +33,10 @@ TEST(PoseScene, PanelsInheritAndOverride) {
 
 TEST(PanelReader, ArrowPanelsInheritAndOverride) {
   const Scene scene =
-      parse_scene(R"({"method": "P6", "options": {"anchor": "midpoint"}, "samples": 5, )" + kKeyframes + R"(,
+      parse_scene(R"({"method": "P9", "options": {"anchor": "midpoint", "path_mean": "harmonic"}, "samples": 5, )" +
+                      kKeyframes + R"(,
       "panels": ["P2", {"method": "P3", "title": "three", "samples": 7},
-                 {"options": {"path_mean": "arithmetic"}},
+                 {"options": {"magnitude_mean": "arithmetic"}},
                  {"method": "SMA", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0}, {"t": 2, "p": [1, 0], "m": 1, "w": 1}]}]})",
                   "s.json");
   ASSERT_EQ(scene.panels.size(), 4u);
@@ -45,10 +46,13 @@ TEST(PanelReader, ArrowPanelsInheritAndOverride) {
   EXPECT_EQ(track_keys(scene.panels[0]).options.anchor, track_keys(scene).options.anchor);
   EXPECT_EQ(scene.panels[1].title, "three");
   EXPECT_EQ(scene.panels[1].samples, 7);
-  EXPECT_EQ(track_keys(scene.panels[2]).method, Method::P6);
-  EXPECT_EQ(track_keys(scene.panels[2]).options.path_mean, MeanKind::arithmetic);
-  EXPECT_EQ(track_keys(scene.panels[2]).options.anchor,
-            track_keys(scene).options.anchor);  // the fields not given stay the scene's
+  // Each option read by a motion it applies to: the anchor by panel 0 (P2),
+  // the means by the scene's P9 and panel 2, which inherits it.
+  EXPECT_EQ(track_keys(scene.panels[2]).method, Method::P9);
+  EXPECT_EQ(track_keys(scene.panels[2]).options.magnitude_mean, MeanKind::arithmetic);
+  EXPECT_EQ(track_keys(scene.panels[2]).options.path_mean,
+            track_keys(scene).options.path_mean);  // the fields not given stay the scene's
+  EXPECT_EQ(track_keys(scene.panels[2]).options.path_mean, MeanKind::harmonic);
   EXPECT_EQ(arrow_keys(scene.panels[3]).keyframes.size(), 2u);
   EXPECT_EQ(scene.panels[3].pointer, "/panels/3");
 }

@@ -72,7 +72,8 @@ no_temporaries() {
 }
 
 scene="$root/scenes/fig13-knot-ratio.json"
-args=(--vary /keyframes/1/t=0.1:0.9:100 --vary /method=P1,P4,P6 --format svg)
+# The first panel's knot and method: what its figure draws and its metrics measure.
+args=(--vary /panels/0/keyframes/1/t=0.1:0.9:100 --vary /panels/0/method=P1,P4,P6 --format svg)
 "$pita" sweep "$scene" "${args[@]}" -o whole -q >/dev/null
 
 echo "--- $SECONDS s: 1. 4 shards, 2 at a time, and the merge"
