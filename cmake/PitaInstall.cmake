@@ -36,7 +36,10 @@ foreach(layer core scene motion analysis render)
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
 install(TARGETS pita_core EXPORT pitaCoreTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(TARGETS pita_scene pita_motion pita_analysis pita_render EXPORT pitaRenderTargets
+# pita_io (how scene reads its files) is linked by pita_scene, privately: its
+# archive goes with render's, its headers do not.
+set_target_properties(pita_io PROPERTIES EXPORT_NAME io)
+install(TARGETS pita_io pita_scene pita_motion pita_analysis pita_render EXPORT pitaRenderTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(EXPORT pitaCoreTargets NAMESPACE pita:: DESTINATION ${PITA_INSTALL_CMAKEDIR})
 install(EXPORT pitaRenderTargets NAMESPACE pita:: DESTINATION ${PITA_INSTALL_CMAKEDIR})

@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "io/input_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
@@ -174,29 +175,11 @@ std::size_t too_deep_at(std::string_view text) {
 }  // namespace
 
 std::string read_input_file(const std::filesystem::path& path, std::size_t max_bytes, std::string_view what) {
-  const std::string name = path.string();
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored)) {
-    throw SceneError(name, "", fmt::format("cannot read the {}: it is a directory", what));
+  try {
+    return io::read_regular_file(path, max_bytes);
+  } catch (const io::InputError& error) {
+    throw SceneError(path.string(), "", error.sentence(std::string(what)));
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw SceneError(name, "", fmt::format("cannot open the {} ({})", what, std::strerror(errno)));
-  }
-  // Read in chunks up to one byte past the limit: an endless stream (a
-  // device, a pipe) is refused as soon as it is too long.
-  std::string text;
-  char chunk[1 << 16];
-  while (in && text.size() <= max_bytes) {
-    in.read(chunk, static_cast<std::streamsize>(std::min<std::size_t>(sizeof chunk, max_bytes + 1 - text.size())));
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) throw SceneError(name, "", fmt::format("cannot read the {}", what));
-  if (text.size() > max_bytes) {
-    throw SceneError(name, "",
-                     fmt::format("the {} is larger than the limit of {} MiB", what, max_bytes / (1024 * 1024)));
-  }
-  return text;
 }
 
 Json parse_json(std::string_view text, const std::string& file) {

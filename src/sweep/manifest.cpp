@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "io/input_file.hpp"
+
 namespace pita::sweep {
 
 namespace {
@@ -83,6 +85,16 @@ std::string manifest_csv(const std::vector<std::string>& pointers, const std::ma
 std::optional<ManifestReader> ManifestReader::open(const std::filesystem::path& path,
                                                    const std::vector<std::string>& pointers, bool headless) {
   ManifestReader reader;
+  // A regular file only: a FIFO or a device (a part linked to /dev/zero) is
+  // refused at once, never waited on or read without end.
+  try {
+    const io::InputFile regular(path);
+  } catch (const io::InputError& error) {
+    std::error_code ignored;
+    if (error.kind() == io::InputError::Kind::not_regular && std::filesystem::exists(path, ignored)) {
+      throw std::runtime_error(fmt::format("{}: {}", path.string(), error.sentence("manifest")));
+    }
+  }
   reader.in_ = std::make_unique<std::ifstream>(path, std::ios::binary);
   if (!*reader.in_) {
     // Missing is nullopt; there but unreadable (permissions, out of file
@@ -139,6 +151,10 @@ bool ManifestReader::record(std::vector<std::string>& fields) {
       break;
     } else if (c != '\r') {
       field += c;
+    }
+    if (field.size() > kMaxRecordBytes) {
+      throw std::runtime_error(fmt::format("{}: line {} is longer than the limit of {} MiB (not a manifest pita wrote)",
+                                           path_, line_ + 1, kMaxRecordBytes >> 20));
     }
   }
   fields.push_back(std::move(field));

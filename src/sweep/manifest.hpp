@@ -69,8 +69,9 @@ void append_row(std::string& out, const Row& row);
 class ManifestReader {
  public:
   // nullopt when the file does not exist. Throws io::OutputError naming
-  // the file when it exists but cannot be opened, std::runtime_error when its
-  // header is not that of these pointers; `headless`: a journal, rows only.
+  // the file when it exists but cannot be opened, std::runtime_error when it
+  // is not a regular file (a FIFO, a device) or its header is not that of
+  // these pointers; `headless`: a journal, rows only.
   static std::optional<ManifestReader> open(const std::filesystem::path& path, const std::vector<std::string>& pointers,
                                             bool headless = false);
   // Whether the rows of the manifest at `path` are in strictly increasing
@@ -89,6 +90,9 @@ class ManifestReader {
   std::string where() const;
 
  private:
+  // The longest field a manifest may hold: rows pita writes are far shorter
+  // (a status is a message, an outputs list a few names).
+  static constexpr std::size_t kMaxRecordBytes = std::size_t{1} << 20;
   ManifestReader() = default;
   bool record(std::vector<std::string>& fields);
   bool read_row(Row& row);

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
 
 #include "run_pita.hpp"
 #include "support/matrix_functions.hpp"
@@ -286,12 +287,25 @@ TEST_F(Eval, NonFiniteFrameExitsTwoAndPrintsNothing) {
 // ------------------------------------------------------------ resources (issue 11)
 
 // `pita eval /dev/zero` read until memory ran out ("internal error:
-// std::bad_alloc", exit 3): an endless file is refused at the size limit.
+// std::bad_alloc", exit 3), and a FIFO blocked in open(): a scene file must
+// be a regular file, refused at once otherwise, and a regular file beyond the
+// size limit is refused there.
 TEST_F(Eval, EndlessFileIsRefusedAtTheSizeLimit) {
-  const RunResult result = run({"eval", "/dev/zero"});
-  EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.out, "");
-  EXPECT_EQ(result.err, "pita: /dev/zero: the scene file is larger than the limit of 32 MiB\n");
+  const RunResult device = run({"eval", "/dev/zero"});
+  EXPECT_EQ(device.exit_code, 2) << device.err;
+  EXPECT_EQ(device.out, "");
+  EXPECT_EQ(device.err, "pita: /dev/zero: cannot read the scene file: it is a device, not a regular file\n");
+  ASSERT_EQ(::mkfifo((dir.path() / "fifo.json").c_str(), 0600), 0);
+  const RunResult fifo = run({"eval", "fifo.json"});  // no writer: open() must not wait for one
+  EXPECT_EQ(fifo.exit_code, 2) << fifo.err;
+  EXPECT_EQ(fifo.err, "pita: fifo.json: cannot read the scene file: it is a named pipe (FIFO), not a regular file\n");
+  {
+    std::ofstream big(dir.path() / "big.json");
+    big << std::string(33 * 1024 * 1024, ' ');
+  }
+  const RunResult large = run({"eval", "big.json"});
+  EXPECT_EQ(large.exit_code, 2) << large.err;
+  EXPECT_EQ(large.err, "pita: big.json: the scene file is larger than the limit of 32 MiB\n");
 }
 
 TEST_F(Eval, DeepNestingIsAnErrorNotACrash) {

@@ -191,6 +191,27 @@ TEST(Sweep, SaysWhichAxisChangedNothing) {
   EXPECT_EQ(r.err.find("/keyframes/1/w changed nothing"), std::string::npos) << r.err;
 }
 
+// A part that is not a regular file (a link to /dev/zero, a FIFO) is
+// ignored with its reason, at once: never read without end or waited on.
+TEST(Sweep, MergeRefusesPartsThatAreNotRegularFiles) {
+  ScratchDir dir;
+  dir.write("s.json", kFigureOneScene);
+  for (const std::string shard : {"0/2", "1/2"}) {
+    ASSERT_EQ(run_pita({"sweep", "s.json", "--vary", "/keyframes/1/w=1,2,3,4", "-o", "out", "--shard", shard, "-q"},
+                       dir.path())
+                  .exit_code,
+              0);
+  }
+  fs::remove(dir.path() / "out/manifest.1-of-2.csv");
+  fs::create_symlink("/dev/zero", dir.path() / "out/manifest.1-of-2.csv");
+  const RunResult r = run_pita({"sweep", "--merge", "out"}, dir.path());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("manifest.1-of-2.csv: cannot read the manifest: it is a device, not a regular file"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("2 variants missing: 1, 3"), std::string::npos) << r.err;
+}
+
 TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
   ScratchDir dir;
   const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=-1,0.8,abc", "-o", "out", "-q"}, dir.path());
