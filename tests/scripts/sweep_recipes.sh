@@ -24,6 +24,12 @@ cat >bin/sbatch <<'FAKE'
 #!/usr/bin/env bash
 echo "$*" >>"$SBATCH_LOG"
 n=$(wc -l <"$SBATCH_LOG")
+# The merge's command, as Slurm will give it to /bin/sh.
+prev=""
+for a; do
+  if [ "$prev" = --wrap ]; then printf '%s' "$a" >"$SBATCH_LOG.wrap"; fi
+  prev="$a"
+done
 echo "$((1000 + n));cluster"
 FAKE
 chmod +x bin/sbatch
@@ -31,7 +37,8 @@ export SBATCH_LOG="$work/sbatch.log"
 PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 3 "$scene" slurm "${args[@]}" >submit.out
 grep -q -- "--parsable --cpus-per-task=1 --array=0-2 --output=slurm/logs/shard-%a-%A.log $root/scripts/slurm-sweep.sbatch $scene slurm --vary /keyframes/1/t=0.2:0.8:5" sbatch.log ||
   fail "the array job: $(cat sbatch.log)"
-grep -q -- "--dependency=afterok:1001 --kill-on-invalid-dep=yes --wrap $pita sweep --merge slurm" sbatch.log || fail "the merge job: $(cat sbatch.log)"
+grep -qF -- "--dependency=afterok:1001 --kill-on-invalid-dep=yes --wrap '$pita' sweep --merge 'slurm'" sbatch.log ||
+  fail "the merge job: $(cat sbatch.log)"
 [ -d slurm/logs ] || fail "--submit did not create the log folder slurm/logs"
 # The options of the recipe reach both jobs: partition, time, memory; the width the array.
 PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 4 --partition short \
@@ -48,11 +55,27 @@ bad_submit() {  # bad_submit MESSAGE ARGS...: --submit ARGS is refused, saying M
   fi
   grep -qF -- "$message" err.txt || fail "--submit $*: $(cat err.txt)"
 }
-bad_submit "--width: must be a whole number >= 1 (got '0')" 4 --width 0 "$scene" opts
+bad_submit "--width: must be a whole number from 1 to 999999999 (got '0')" 4 --width 0 "$scene" opts
 bad_submit "--time needs a value" 4 --time
 bad_submit "unknown option --bogus before SCENE" 4 --bogus 1 "$scene" opts
 bad_submit "SCENE and OUT are required" 4 --mem 1G "$scene"
-bad_submit "--submit N: must be a whole number >= 1 (got 'x')" x "$scene" opts
+bad_submit "--submit N: must be a whole number from 1 to 999999999 (got 'x')" x "$scene" opts
+bad_submit "--submit N: must be a whole number from 1 to 999999999 (got '0')" 0 "$scene" opts
+# Counts are decimal: 010 is ten tasks (bash would read it as octal eight), 08 is eight.
+PATH="$work/bin:$PATH" PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" --submit 010 --width 08 "$scene" opts \
+  "${args[@]}" >/dev/null
+grep -q -- "--array=0-9%8 " sbatch.log || fail "--submit 010 --width 08: $(tail -2 sbatch.log)"
+# The merge runs under /bin/sh in the C locale: any folder name reaches pita as it is.
+odd="$work/a b'c"$'\t'"d"$'\n'"é"
+printf '#!/bin/sh\nprintf "%%s\\n" "$@" >"%s"\n' "$work/merge-args" >bin/record-args
+chmod +x bin/record-args
+PATH="$work/bin:$PATH" PITA="$work/bin/record-args" bash "$root/scripts/slurm-sweep.sbatch" --submit 2 "$scene" "$odd" \
+  "${args[@]}" >/dev/null
+LC_ALL=C sh -c "$(cat sbatch.log.wrap)"
+[ "$(cat merge-args)" = "sweep
+--merge
+$odd" ] || fail "the merge's command under sh gave the arguments: $(cat merge-args)"
+rm -rf opts "$odd"
 rm -rf opts
 grep -q "job array 1001 (3 tasks) and the merge as job 1002" submit.out || fail "$(cat submit.out)"
 if PITA="$pita" bash "$root/scripts/slurm-sweep.sbatch" "$scene" slurm "${args[@]}" 2>err.txt; then
