@@ -22,6 +22,7 @@
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/figure_reader.hpp"
+#include "scene/image_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 #include "text/list.hpp"
@@ -358,6 +359,28 @@ struct RenderedScene {
   std::optional<Failure> failure;
 };
 
+// Whether two paths name one file: the same file when both exist (links
+// followed), else the same canonical path.
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code error;
+  if (fs::exists(a, error) && fs::exists(b, error)) return fs::equivalent(a, b, error) && !error;
+  return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error) && !error;
+}
+
+// An output never replaces an input of the same run: the scene file or an
+// image its shapes draw (`-o images/picture.png` beside a scene that draws
+// it would replace the picture, and pita watch would render in a loop).
+void refuse_an_input(const scene::Scene& scene, const fs::path& output) {
+  std::vector<std::pair<fs::path, std::string>> inputs{{scene.path, "the scene file"}};
+  for (const fs::path& image : scene::image_files(scene)) inputs.emplace_back(image, "an image its shapes draw");
+  for (const auto& [input, what] : inputs) {
+    if (!same_file(input, output)) continue;
+    throw scene::SceneError(
+        scene.path, "",
+        fmt::format("the output {} is {}, which it would replace: write the figure elsewhere", output.string(), what));
+  }
+}
+
 // Every format is rendered before any is written, so a bad scene writes
 // nothing.
 RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan, const std::string& path) {
@@ -385,6 +408,7 @@ RenderedScene render_scene(const RenderOptions& options, const RenderPlan& plan,
     }
   }
   for (const Target& target : targets_for(options, path, plan.formats, plan.single_file)) {
+    refuse_an_input(scene, target.path);
     rendered.files.emplace_back(target.path,
                                 render::render_figure(scene, figure, target.format, plan.scale, options.budget));
   }

@@ -139,6 +139,27 @@ TEST(RenderOutputs, MethodDrawsTheSceneAsIfItsMethodWereM) {
   EXPECT_FALSE(fs::exists(dir.path() / "x.svg"));
 }
 
+// An output never replaces an input of the same run: the image a scene's
+// shapes draw, by its own name or through a link.
+TEST(RenderOutputs, AnOutputThatIsAnInputIsRefused) {
+  const ScratchDir dir;
+  const fs::path scenes = fs::path(PITA_SOURCE_DIR) / "scenes";
+  fs::copy(scenes / "fig23-image-motion.json", dir.path() / "fig23.json");
+  fs::create_directories(dir.path() / "images");
+  fs::copy(scenes / "images" / "picture.png", dir.path() / "images" / "picture.png");
+  fs::create_symlink("images/picture.png", dir.path() / "alias.png");
+  const std::string picture = read_file(dir.path() / "images" / "picture.png");
+  for (const std::string out : {"images/picture.png", "alias.png"}) {
+    const RunResult r = run_pita({"render", "fig23.json", "-o", out}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << out << ": " << r.err;
+    EXPECT_NE(r.err.find("fig23.json: the output " + out + " is an image its shapes draw, which it would replace"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(read_file(dir.path() / "images" / "picture.png"), picture);
+  }
+  EXPECT_EQ(run_pita({"render", "fig23.json", "-o", "fig23.png"}, dir.path()).exit_code, 0);
+}
+
 // --- A scene's formats: all or none ---------------------------------------
 
 // A directory in the way of x.png: the scene fails with exit 3, its SVG is
