@@ -93,6 +93,11 @@ void claim_folder(const fs::path& dir, const std::string& given, const fs::path&
                                               "{}; give another output folder",
                                               (dir / kSweepFile).string(), base_scene.string()));
   }
+  try {
+    check_own_subfolder(dir / "index");
+  } catch (const io::OutputError& subfolder) {
+    throw SweepOutputError(about, subfolder.what());
+  }
   if (!is_sweep_folder(dir)) {
     if (const std::string other = first_foreign_entry(dir); !other.empty()) {
       throw SweepOutputError(
@@ -102,6 +107,15 @@ void claim_folder(const fs::path& dir, const std::string& given, const fs::path&
                              other, kFolderMarker));
     }
     io::write_file_atomically(dir / kFolderMarker, "This folder is the output of pita sweep.\n");
+  }
+}
+
+void check_own_subfolder(const fs::path& folder) {
+  std::error_code error;
+  const fs::file_status status = fs::symlink_status(folder, error);
+  if (fs::is_symlink(status) || (fs::exists(status) && !fs::is_directory(status))) {
+    throw io::OutputError(fmt::format("{}: cannot write: it is {}, not the sweep's own folder; remove it",
+                                      folder.string(), fs::is_symlink(status) ? "a symbolic link" : "a file"));
   }
 }
 

@@ -27,6 +27,11 @@ using SweepOutputError = AboutInput<io::OutputError>;
 // when DIR cannot be created. `given`: DIR as the user gave it (the output).
 void claim_folder(const std::filesystem::path& dir, const std::string& given, const std::filesystem::path& base_scene);
 
+// A folder a sweep writes and removes files in, inside DIR (index/): absent,
+// or a folder of its own, never a symbolic link (files of the folder it leads
+// to would be removed) or a file. Throws io::OutputError (exit 3) naming it.
+void check_own_subfolder(const std::filesystem::path& folder);
+
 // Holds the lock of DIR/<manifest> while it lives. Another holder: throws
 // SweepUsageError (exit 2) naming its PID, about `about` with the remedy
 // wait, or with `wait` waits for it.

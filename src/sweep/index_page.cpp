@@ -205,6 +205,7 @@ RowCounts write_pass(const SheetInput& input, const fs::path& data, const std::v
 RowCounts write_data_files(const SheetInput& input, const std::vector<Column>& columns) {
   const fs::path data = input.dir / "index";
   std::error_code error;
+  check_own_subfolder(data);  // claim_folder checked it before the run; --merge comes here alone
   fs::create_directories(data, error);
   if (error) {
     throw io::OutputError(fmt::format("{}: cannot create the folder ({})", data.string(), error.message()));

@@ -212,6 +212,24 @@ TEST(Sweep, MergeRefusesPartsThatAreNotRegularFiles) {
   EXPECT_NE(r.err.find("2 variants missing: 1, 3"), std::string::npos) << r.err;
 }
 
+// The folder's index/ is the sweep's own: a symbolic link to another folder
+// is refused before anything runs, and nothing of that folder is removed.
+TEST(Sweep, AnIndexFolderThatIsALinkIsRefused) {
+  ScratchDir dir;
+  dir.write("s.json", kFigureOneScene);
+  ASSERT_EQ(run_pita({"sweep", "s.json", "--vary", "/keyframes/1/w=1,2", "-o", "out", "-q"}, dir.path()).exit_code, 0);
+  fs::create_directories(dir.path() / "other");
+  dir.write("other/rows-5.js", "theirs");
+  fs::remove_all(dir.path() / "out/index");
+  fs::create_directory_symlink("../other", dir.path() / "out/index");
+  const RunResult r =
+      run_pita({"sweep", "s.json", "--vary", "/keyframes/1/w=1,2", "-o", "out", "-q", "--force"}, dir.path());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("out/index: cannot write: it is a symbolic link, not the sweep's own folder"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(read_file(dir.path() / "other/rows-5.js"), "theirs");
+}
+
 TEST(Sweep, FailedVariantsAreRowsAndTheOthersAreWritten) {
   ScratchDir dir;
   const RunResult r = run_pita({"sweep", kFig13, "--vary", "/keyframes/1/m=-1,0.8,abc", "-o", "out", "-q"}, dir.path());
