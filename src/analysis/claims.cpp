@@ -467,7 +467,19 @@ std::vector<ClaimOutcome> check_claims(const motion::Stage& stage) {
   }
   Measurer measurer(stage);
   std::vector<ClaimOutcome> outcomes;
-  for (const scene::Claim& claim : stage.scene().claims) outcomes.push_back(check_claim(measurer, stage, claim));
+  for (const scene::Claim& claim : stage.scene().claims) {
+    try {
+      outcomes.push_back(check_claim(measurer, stage, claim));
+    } catch (const motion::NoMotion& error) {
+      // The panels' own motions first: a panel without one is that panel's
+      // fault. Their motions existing, a frame missing where the claim asks
+      // (a time far outside the knots) is the claim's.
+      if (stage.has_motion(claim.panel)) (void)stage.motion(claim.panel);
+      if (claim.measure.panel && stage.has_motion(*claim.measure.panel)) (void)stage.motion(*claim.measure.panel);
+      throw scene::SceneError(scene.path, claim.pointer + "/measure",
+                              fmt::format("\"{}\" cannot be measured: {}", claim.measure.text, error.reason()));
+    }
+  }
   return outcomes;
 }
 

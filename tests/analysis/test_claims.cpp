@@ -112,6 +112,22 @@ TEST(Claims, AMeasureThePanelLacksIsASceneErrorAtItsPointer) {
   }
 }
 
+// A claim asking for a frame where the panel's motion has none (a time far
+// outside the knots) is the claim's error, at its measure, not the panel's.
+TEST(Claims, AFrameTheMotionLacksIsTheClaimsError) {
+  for (const char* measure : {"frame-distance:/panels/0@1e300", "angle:P6@1e300"}) {
+    try {
+      only(fmt::format(R"({{"says": "s", "panel": 1, "measure": "{}", "above": 0}})", measure));
+      FAIL() << "no error for " << measure;
+    } catch (const scene::SceneError& error) {
+      EXPECT_EQ(error.pointer(), "/claims/0/measure") << measure;
+      EXPECT_NE(error.reason().find(fmt::format("\"{}\" cannot be measured: ", measure)), std::string::npos)
+          << error.reason();
+      EXPECT_NE(error.reason().find("t = 1e+300"), std::string::npos) << error.reason();
+    }
+  }
+}
+
 // "property:NAME": what pita audit measures on the panel's keyframes. P1 is
 // affine-invariant (Sec. 4.10: defined by affine-invariant operators) and
 // not winding-aware (it reads no winding: its reaction to a turn is 0).
