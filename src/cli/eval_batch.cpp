@@ -17,6 +17,7 @@
 #include <cstring>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/eval.hpp"
+#include "io/input_file.hpp"
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
@@ -134,6 +136,12 @@ EvalOutcome refused(const std::string& message) { return {ExitCode::bad_input, {
 
 ExitCode run_eval_batch(const std::string& path) {
   const bool from_stdin = path == "-";
+  // A file or a pipe (<(...)), never a device or a directory: /dev/zero, one
+  // endless line, was never answered.
+  if (const std::optional<std::string> what = from_stdin ? std::nullopt : io::neither_file_nor_pipe(path)) {
+    std::cerr << "pita: " << path << ": cannot read the batch file: " << *what << "\n";
+    return ExitCode::bad_input;
+  }
   const BatchFile file(from_stdin ? stdin : std::fopen(path.c_str(), "r"));
   if (file == nullptr) {
     std::cerr << "pita: " << path << ": cannot open the batch file (" << std::strerror(errno) << ")\n";

@@ -89,6 +89,13 @@ std::size_t InputFile::read(char* buffer, std::size_t n) {
   }
 }
 
+std::optional<std::string> neither_file_nor_pipe(const std::filesystem::path& path) {
+  struct stat st {};
+  if (path.native().find('\0') != std::string::npos) return "its name holds a NUL byte";
+  if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode) || S_ISFIFO(st.st_mode)) return std::nullopt;
+  return what_it_is(st.st_mode);
+}
+
 std::string read_regular_file(const std::filesystem::path& path, std::size_t max_bytes) {
   InputFile file(path);
   std::string text;

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -46,6 +47,12 @@ class InputFile {
  private:
   int fd_ = -1;
 };
+
+// For an input that may be a pipe (pita eval --batch FILE, where <(...) is a
+// FIFO): what it is when it is neither a regular file nor a FIFO ("it is a
+// device, not a regular file"), else nullopt (also when it does not exist:
+// opening it says so).
+std::optional<std::string> neither_file_nor_pipe(const std::filesystem::path& path);
 
 // The whole regular file, at most `max_bytes` (InputError beyond, read no
 // further than one byte past the limit).

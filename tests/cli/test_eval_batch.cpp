@@ -139,6 +139,13 @@ TEST_F(EvalBatch, UsageAndAMissingFileAreBadInput) {
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.out, "");
   EXPECT_EQ(missing.err.rfind("pita: absent.jsonl: cannot open the batch file", 0), 0u) << missing.err;
+  // A device (one endless line) or a directory is refused at once; a pipe is a batch.
+  const RunResult device = run({"eval", "--batch", "/dev/zero"});
+  EXPECT_EQ(device.exit_code, 2);
+  EXPECT_EQ(device.err, "pita: /dev/zero: cannot read the batch file: it is a device, not a regular file\n");
+  const RunResult folder = run({"eval", "--batch", "."});
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_EQ(folder.err, "pita: .: cannot read the batch file: it is a directory\n");
 
   dir.write("batch.jsonl", request_line({"scene.json"}));
   for (const std::vector<std::string>& args :
