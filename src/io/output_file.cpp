@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "io/input_file.hpp"
 #include "io/interrupt.hpp"
 
 namespace pita::io {
@@ -202,6 +203,20 @@ void StreamingOutput::commit() {
 }
 
 void write_file_atomically(const fs::path& path, std::string_view bytes) { write_all_or_none({View{path, bytes}}); }
+
+bool replace_file_if_unchanged(const fs::path& path, std::string_view expected, std::string_view bytes) {
+  StreamingOutput out(path);
+  out.write(bytes);
+  std::string now;
+  try {
+    now = read_regular_file(path, expected.size() + 1);  // one byte more tells a longer file
+  } catch (const InputError&) {
+    return false;  // gone, grown past it, or no longer a file: changed
+  }
+  if (now != expected) return false;  // the temporary goes with `out`
+  out.commit();
+  return true;
+}
 
 void write_files_atomically(std::span<const std::pair<fs::path, std::string>> files) {
   std::vector<View> views;

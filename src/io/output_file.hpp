@@ -25,6 +25,12 @@ class OutputError : public std::runtime_error {
 // Throws OutputError with the path and the system's reason.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 
+// `bytes` in place of the file at `path` (written atomically, as above) if
+// the file still holds `expected`, compared just before the rename; false,
+// and the file left as it is, when it changed (another program saved it).
+// Throws OutputError.
+bool replace_file_if_unchanged(const std::filesystem::path& path, std::string_view expected, std::string_view bytes);
+
 // The files of a set (a scene's formats) are written all or none: every
 // temporary is created and written first, and only then are they renamed into
 // place, the commit step. A failure before the commit (no space, a directory

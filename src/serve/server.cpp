@@ -288,7 +288,12 @@ class Server {
     // The file itself (through a link, its target), with the permissions it had.
     const fs::path target = fs::canonical(path);
     const fs::perms permissions = fs::status(target).permissions();
-    io::write_file_atomically(target, edited);
+    // Not over a save made since the edit read the file (an editor's, while
+    // the edit was checked): the file is left as it is when it changed.
+    if (!io::replace_file_if_unchanged(target, text, edited)) {
+      throw std::invalid_argument(
+          "the file changed while the edit was checked (saved by another program): it is kept as it is; drag again");
+    }
     fs::permissions(target, permissions);
     return Json{{"previous", previous}};
   }

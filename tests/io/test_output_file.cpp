@@ -191,5 +191,27 @@ TEST_F(OutputFile, ReservationsWaitForFreeSlots) {
   EXPECT_THROW(InFlightReservation(kInFlightSlots + 1), std::length_error);
 }
 
+// An edit's write (pita serve): the file is replaced only if it still holds
+// what the edit read; a save made since (or a file gone) is left as it is,
+// and no temporary remains either way.
+TEST_F(OutputFile, ReplacesAFileOnlyIfItIsUnchanged) {
+  const fs::path path = dir_ / "scene.json";
+  write_file_atomically(path, "{\"m\": 1}");
+  EXPECT_TRUE(replace_file_if_unchanged(path, "{\"m\": 1}", "{\"m\": 2}"));
+  EXPECT_EQ(read(path), "{\"m\": 2}");
+  // Saved by another program since the edit read {"m": 2}: kept.
+  write_file_atomically(path, "{\"m\": 3}");
+  EXPECT_FALSE(replace_file_if_unchanged(path, "{\"m\": 2}", "{\"m\": 4}"));
+  EXPECT_EQ(read(path), "{\"m\": 3}");
+  // Longer (the read stops one byte past what was expected) or gone: kept.
+  write_file_atomically(path, "{\"m\": 3} ");
+  EXPECT_FALSE(replace_file_if_unchanged(path, "{\"m\": 3}", "{\"m\": 4}"));
+  EXPECT_EQ(read(path), "{\"m\": 3} ");
+  fs::remove(path);
+  EXPECT_FALSE(replace_file_if_unchanged(path, "{\"m\": 3}", "{\"m\": 4}"));
+  EXPECT_FALSE(fs::exists(path));
+  EXPECT_EQ(entries(), 0u);  // no temporary left
+}
+
 }  // namespace
 }  // namespace pita::io
