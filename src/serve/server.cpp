@@ -265,8 +265,15 @@ class Server {
       const scene::Scene scene = scene::parse_scene(text, path.string(), {settings_.allow_absolute_paths});
       const motion::Stage stage(scene);
       const render::Figure figure = render::build_figure(stage);
+      // An index of the figure's panels: 1e20 or -1 would be read as another panel.
+      const Json& panel = d.at("panel");
+      if (!panel.is_number_unsigned() || panel.get<std::uint64_t>() >= figure.placements.size()) {
+        throw std::invalid_argument(
+            fmt::format("\"panel\" must be the index of a panel of the figure, 0 to {} (got {})",
+                        figure.placements.size() - 1, panel.dump(-1, ' ', false, Json::error_handler_t::replace)));
+      }
       changes =
-          drag(text, scene, figure.placements, d.at("panel").get<std::size_t>(), d.at("pointer").get<std::string>(),
+          drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
                d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
     } else {
       for (const Json& change : request.at("changes")) {
@@ -329,14 +336,21 @@ std::optional<std::size_t> scene_index(const std::string& text, std::size_t coun
   return i < count ? std::optional<std::size_t>(i) : std::nullopt;
 }
 
-void send_json(httplib::Response& res, int status, const std::string& body) {
+// A body of JSON text as it is (pita measure's report).
+void send_json_text(httplib::Response& res, int status, const std::string& text) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
-  res.set_content(body, "application/json");
+  res.set_content(text, "application/json");
+}
+
+// Text that is not UTF-8 (a scene saved as Latin-1, quoted in a message) is
+// sent with U+FFFD in place of its bad bytes, never a failed answer.
+void send_json(httplib::Response& res, int status, const Json& body) {
+  send_json_text(res, status, body.dump(-1, ' ', false, Json::error_handler_t::replace));
 }
 
 void send_error(httplib::Response& res, int status, const std::string& message) {
-  send_json(res, status, Json{{"error", message}}.dump());
+  send_json(res, status, Json{{"error", message}});
 }
 
 // The answer to a request on the scene at `path` that met the exception being
@@ -345,7 +359,7 @@ void send_error(httplib::Response& res, int status, const std::string& message) 
 void send_failure(httplib::Response& res, const std::string& path, const char* member = nullptr) {
   const std::exception_ptr thrown = std::current_exception();
   const Json error = error_json(thrown, path);
-  send_json(res, error_status(thrown), (member == nullptr ? error : Json{{member, error}}).dump());
+  send_json(res, error_status(thrown), member == nullptr ? error : Json{{member, error}});
 }
 
 // The request's token matches the server's, compared in constant time: how
@@ -384,7 +398,7 @@ void get_page(Site&, const httplib::Request&, httplib::Response& res) {
 }
 
 void get_scenes(Site& site, const httplib::Request&, httplib::Response& res) {
-  send_json(res, 200, site.state.scenes_json().dump());
+  send_json(res, 200, site.state.scenes_json());
 }
 
 void get_figure(Site& site, const httplib::Request& req, httplib::Response& res) {
@@ -415,7 +429,7 @@ void get_measures(Site& site, const httplib::Request& req, httplib::Response& re
   try {
     const auto text = site.state.measures(*i);
     if (!text) return send_error(res, 409, "the scene has no good figure yet: see its error");
-    send_json(res, 200, *text);
+    send_json_text(res, 200, *text);
   } catch (...) {
     send_failure(res, site.settings.scenes[*i].string());
   }
@@ -451,7 +465,7 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
     return send_error(res, 400, "the request is not JSON");
   }
   try {
-    send_json(res, 200, site.state.edit(*i, request).dump());
+    send_json(res, 200, site.state.edit(*i, request));
   } catch (const nlohmann::json::exception& e) {
     send_error(res, 400, std::string("the request lacks a field: ") + e.what());
   } catch (const std::invalid_argument& e) {

@@ -146,7 +146,18 @@ def test_dragging_writes_the_scene_file(folder, browser):
         check("/keyframes/0/m" in refused and "magnitude must be > 0" in refused, f"the reason: {refused}")
         status, body = served.get("/api/edit/0", data=b'{"changes": [{"pointer": "/keyframes/9", "value": "1"}]}')
         check(status == 400, f"a pointer to nothing: {status} {body}")
+        # A drag naming a panel the figure does not have (1e20 read as an index was panel 0).
+        for panel in (b"1e20", b"-1", b"7"):
+            status, body = served.get("/api/edit/0", data=b'{"drag": {"panel": ' + panel +
+                                      b', "pointer": "/keyframes/0", "part": "tail", "to": [1, 1]}}')
+            check(status == 400 and b"must be the index of a panel of the figure" in body, f"panel {panel}: {status} {body}")
         check((folder / "s.json").read_text() == text, "a refused edit leaves the file")
+        # A save that is not UTF-8 (Latin-1): the error is answered, as JSON, never an empty 500.
+        (folder / "s.json").write_bytes(text.replace('"title": "', '"title": "caf\xe9 ', 1).encode("latin-1"))
+        status, body = eventually(lambda: (lambda r: r if r[0] == 200 and b"UTF-8" in r[1] else None)(
+            served.get("/api/scenes")), 30, what=lambda: served.get("/api/scenes"))
+        json.loads(body)
+        (folder / "s.json").write_text(text)
     finally:
         served.stop()
     check(sorted(p.name for p in folder.iterdir() if p.name.startswith(".")) == [], "no temporary left")
