@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -79,22 +80,30 @@ bool given_as_pose(const py::handle& item) {
 constexpr const char* kMotionFile = "<pita.motion>";
 
 // The fields of a scene that pita.motion takes as keywords, beside the
-// method options: those that shape the motion (the figure's are
-// Scene's: pita.load_scene).
-constexpr std::array<std::string_view, 3> kMotionFields = {"chain", "timing", "subdivisions"};
+// method options: those that shape the motion, of keyframes (a chain of
+// more keyframes than the method takes) or of poses (the SAM's subdivisions);
+// the figure's fields are pita.load_scene's.
+constexpr std::array<std::string_view, 2> kKeyframeFields = {"chain", "timing"};
+constexpr std::array<std::string_view, 2> kPoseFields = {"timing", "subdivisions"};
+
+std::span<const std::string_view> motion_fields(bool poses) {
+  return poses ? std::span<const std::string_view>(kPoseFields) : std::span<const std::string_view>(kKeyframeFields);
+}
 
 // Why a keyword is refused: the closest of the keywords pita.motion takes
 // (scene/did_you_mean.hpp), and all of them.
-std::string unknown_keyword(const std::string& field) {
+std::string unknown_keyword(const std::string& field, bool poses) {
   constexpr auto options = method_option_names();
+  const auto fields = motion_fields(poses);
   std::vector<std::string_view> known(options.begin(), options.end());
   known.emplace_back("options");
-  known.insert(known.end(), kMotionFields.begin(), kMotionFields.end());
+  known.insert(known.end(), fields.begin(), fields.end());
   const std::vector<std::string> close = scene::closest_names(field, known);
   return fmt::format(
       "unknown keyword \"{}\"{} (pita.motion takes the method options {}, or options={{...}}, "
-      "and the scene fields {})",
-      field, scene::did_you_mean(close), fmt::join(options, ", "), fmt::join(kMotionFields, ", "));
+      "and the scene fields {} of a motion of {})",
+      field, scene::did_you_mean(close), fmt::join(options, ", "), fmt::join(fields, ", "),
+      poses ? "poses" : "keyframes");
 }
 
 // The scene pita.motion evaluates.
@@ -151,7 +160,8 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   scene[poses ? "poses" : "keyframes"] = items;
   // Method options ("anchor", "path_mean", ...) go into "options"; the
   // fields of the scene that shape its motion ("chain", "timing",
-  // "subdivisions") are fields of the scene; any other keyword is refused.
+  // "subdivisions": motion_fields) are fields of the scene; any other
+  // keyword is refused.
   Json method_options = Json::object();
   for (const auto& [key, value] : options) {
     const std::string field = key.cast<std::string>();
@@ -162,10 +172,11 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
       for (const auto& item : given.items()) method_options[item.key()] = item.value();
     } else if (std::find(names.begin(), names.end(), field) != names.end()) {
       method_options[field] = to_json(value);
-    } else if (std::find(kMotionFields.begin(), kMotionFields.end(), field) != kMotionFields.end()) {
+    } else if (const auto fields = motion_fields(poses);
+               std::find(fields.begin(), fields.end(), field) != fields.end()) {
       scene[field] = to_json(value);
     } else {
-      throw scene::SceneError(kMotionFile, "/" + field, unknown_keyword(field));
+      throw scene::SceneError(kMotionFile, "/" + field, unknown_keyword(field, poses));
     }
   }
   if (!method_options.empty()) scene["options"] = method_options;
@@ -332,8 +343,9 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
              PITAs and the SMA; poses (pita.Pose, 2x3 / 3x3 / 3x4 / 4x4 matrices) for the SAM family
   times      the knots, one per keyframe; may be left out when each keyframe dict has a "t"
   options    method options (anchor, path_mean, magnitude_mean, knots, permutation,
-             symmetrize) and scene fields (chain, timing, subdivisions), as a scene file spells
-             them: motion("P2", arrows, [0, 1, 2], anchor="midpoint", chain="neville")
+             symmetrize) and scene fields (chain and timing of keyframes, timing and
+             subdivisions of poses), as a scene file spells them:
+             motion("P2", arrows, [0, 1, 2], anchor="midpoint", chain="neville")
 
 Raises pita.SceneError naming the JSON Pointer of the bad value in the scene the call makes
 (e.pointer == "/keyframes/1/m"), and pita.NoMotionError when no such motion exists. Another

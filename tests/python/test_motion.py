@@ -121,9 +121,25 @@ def test_a_misspelt_keyword_gets_a_did_you_mean_among_the_option_names(keyword, 
     assert f'unknown keyword "{keyword}"; did you mean "{meant}"?' in reason
     assert caught.value.pointer == f"/{keyword}" and caught.value.file == "<pita.motion>"
     # the names it takes, not the scene file's top-level fields
-    assert ", ".join(OPTIONS) in reason and "chain, timing, subdivisions" in reason
+    assert ", ".join(OPTIONS) in reason and "the scene fields chain, timing" in reason
     for field in ["canvas", "layers", "golden", "claims", "title"]:
         assert field not in reason
+
+
+def test_the_scene_fields_are_those_of_the_kind_of_motion(figure_one):
+    arrows, knots = figure_one
+    poses = [np.eye(2, 3), [[0, -2, 3], [2, 0, 1]]]
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("SAM", poses, [0, 1], chain="blend")
+    assert "timing, subdivisions of a motion of poses" in caught.value.reason
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("SAM", poses, [0, 1], subdivision=2)
+    assert 'did you mean "subdivisions"?' in caught.value.reason
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("P6", arrows, knots, subdivisions=2)
+    assert "chain, timing of a motion of keyframes" in caught.value.reason
+    pita.motion("SAM", poses, [0, 1], subdivisions=2)
+    pita.motion("P6", arrows, knots, timing={"ease": "linear"})
 
 
 def test_a_keyword_far_from_every_name_lists_them(figure_one):
