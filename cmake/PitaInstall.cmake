@@ -9,6 +9,9 @@
 #   P/share/man/man1/pita.1             the man page, generated from the CLI at build time
 #   P/share/bash-completion/completions/pita, P/share/zsh/vendor-completions/_pita
 #   P/share/doc/pita/                   README.md, CHANGELOG.md, docs/
+#   P/share/pita/scenes/                the scenes of the papers' figures (scenes/, with
+#                                       their images), which pita.scenes_dir() and
+#                                       pita.example(NAME) find from any folder
 # and cpack -G DEB packs the same into pita_<version>_<arch>.deb (prefix /usr).
 # With PITA_PYTHON, cpack makes a second package, python3-pita: the Python
 # module (component python, src/python/CMakeLists.txt); everything else is
@@ -68,6 +71,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/CHANGELOG.md
 # The guide, the reference and the explanation the README links to (the
 # gallery's images are the goldens, which stay in the repository).
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+# The scenes, so that a user reaches them from a folder of their own
+# (src/python/examples.cpp bakes in the path from the module's folder).
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/pita/scenes)
 
 # The Debian package: cpack -G DEB in the build folder. Depends comes from
 # dpkg-shlibdeps (Debian dpkg-dev, which build-essential brings) on the
@@ -103,6 +109,8 @@ if(PITA_PYTHON)
   # The module is built for Debian's python3 (3.11 on Debian 12) and returns NumPy arrays.
   set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
       "python3 (>= ${PITA_PYTHON_VERSION}), python3 (<< ${PITA_PYTHON_NEXT_VERSION}), python3-numpy, fonts-dejavu-core, libpangocairo-1.0-0")
-  set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "pita, python3-matplotlib, jupyter-nbconvert")
+  # pita holds the scenes pita.example() finds (/usr/share/pita/scenes).
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_RECOMMENDS "pita (= ${PROJECT_VERSION})")
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SUGGESTS "python3-matplotlib, jupyter-nbconvert")
 endif()
 include(CPack)

@@ -1,14 +1,14 @@
 """Fig. 1 of the PITA paper from Python: the eight PITAs P1-P8 through the same three
 timed keyframes, as numbers and as a matplotlib figure.
 
-    PYTHONPATH=build/python python3 examples/python/fig01.py [OUT.png]
+    python3 PATH/TO/examples/python/fig01.py [OUT.png]     (with the module on PYTHONPATH)
 
 prints, for each PITA, the frame D(t) at t = 0.25 and 0.75 (start point p, magnitude m,
 winding w), the numbers `pita eval scenes/fig01-eight-pitas.json --panel N --t 0.25,0.75`
 prints, and draws the 17 frames of each panel as in scenes/fig01-eight-pitas.json
-(OUT.png, default fig01.png). Needs python3-matplotlib.
+(OUT.png, default fig01.png in the working directory). It reads pita's own scene
+(pita.example), so it runs from any folder. Needs python3-matplotlib.
 """
-import pathlib
 import sys
 
 import matplotlib
@@ -19,11 +19,9 @@ import numpy as np
 
 import pita
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-
 
 def main(out):
-    scene = pita.load_scene(ROOT / "scenes" / "fig01-eight-pitas.json")
+    scene = pita.load_scene(pita.example("fig01-eight-pitas"))    # pita's own scenes/, from any folder
     figure, axes = plt.subplots(2, 4, figsize=(12, 6), sharex=True, sharey=True)
     print(f"{'panel':<6}{'method':<14}{'t':>6}{'p.x':>12}{'p.y':>12}{'m':>12}{'w':>12}")
     for panel, ax in enumerate(axes.flat):

@@ -1,6 +1,8 @@
 // pita.sma, pita.ear_power, pita.sam and pita.has_sam: the steady morph of two
 // arrows and the real powers of affinities (EAR), vectorised over NumPy
 // arrays, computed by core/ with the GIL released.
+#include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -148,7 +150,107 @@ py::array ear_powers(const MatrixStack& stack, const Times& times, const std::ve
   return out;
 }
 
+// One matrix given as a list or tuple of rows of Python numbers, a
+// 2-dimensional array of real numbers or a pita.Pose, read without NumPy's
+// asarray and index maps: the call for a single matrix (a loop of Python
+// calls) costs the dispatch and the math. nullopt when the value is anything
+// else (an array of matrices, another dtype, a ragged or too large list, a
+// bool, a value that is not finite, a homogeneous last row other than
+// [0, ..., 0, 1]): the general path then reads it and gives its errors.
+std::optional<MatrixStack> read_single(const py::handle& value) {
+  constexpr py::ssize_t kMaxSide = 4;
+  std::array<double, kMaxSide * kMaxSide> entries{};
+  py::ssize_t rows = 0, cols = 0;
+  PyObject* object = value.ptr();
+  if (PyList_Check(object) || PyTuple_Check(object)) {
+    rows = PySequence_Fast_GET_SIZE(object);
+    if (rows < 2 || rows > kMaxSide) return std::nullopt;
+    PyObject** items = PySequence_Fast_ITEMS(object);
+    for (py::ssize_t i = 0; i < rows; ++i) {
+      PyObject* row = items[i];
+      if (!PyList_Check(row) && !PyTuple_Check(row)) return std::nullopt;
+      const py::ssize_t n = PySequence_Fast_GET_SIZE(row);
+      if (i == 0) cols = n;
+      if (n != cols || n < 3 || n > kMaxSide) return std::nullopt;
+      PyObject** xs = PySequence_Fast_ITEMS(row);
+      for (py::ssize_t j = 0; j < n; ++j) {
+        double& x = entries[static_cast<std::size_t>(i * cols + j)];
+        if (PyFloat_Check(xs[j])) {
+          x = PyFloat_AS_DOUBLE(xs[j]);
+        } else if (PyLong_CheckExact(xs[j])) {  // not a bool: NumPy refuses an array of them
+          int overflow = 0;
+          const long long k = PyLong_AsLongLongAndOverflow(xs[j], &overflow);
+          if (overflow != 0 || (k == -1 && PyErr_Occurred() != nullptr)) {
+            PyErr_Clear();
+            return std::nullopt;
+          }
+          x = static_cast<double>(k);  // as NumPy converts an int64 array to float64
+        } else {
+          return std::nullopt;
+        }
+      }
+    }
+  } else if (py::isinstance<py::array>(value)) {
+    const auto given = py::reinterpret_borrow<py::array>(value);
+    const char kind = given.dtype().kind();
+    if (given.ndim() != 2 || (kind != 'f' && kind != 'i' && kind != 'u')) return std::nullopt;
+    rows = given.shape(0), cols = given.shape(1);
+    if (rows < 2 || rows > kMaxSide || cols < 3 || cols > kMaxSide) return std::nullopt;
+    // float64 as it is; another dtype converted as read_stack converts it
+    const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(given);
+    if (!array) return std::nullopt;
+    std::copy(array.data(), array.data() + rows * cols, entries.begin());
+  } else if (is_pose(value)) {  // [L | b], as read_stack reads a pose
+    const Pose pose = read_pose(value, "M");
+    std::visit(
+        [&](const auto& A) {
+          rows = A.b.size(), cols = rows + 1;
+          write_pose(A, entries.data());
+        },
+        pose);
+  } else {
+    return std::nullopt;
+  }
+  MatrixStack stack;
+  stack.rows = rows, stack.cols = cols;
+  stack.dimension = static_cast<int>(cols) - 1;
+  stack.homogeneous = rows == cols;
+  if (!(stack.homogeneous || rows == cols - 1)) return std::nullopt;
+  stack.values.assign(entries.begin(), entries.begin() + rows * cols);
+  for (const double x : stack.values) {
+    if (!std::isfinite(x)) return std::nullopt;
+  }
+  if (stack.homogeneous) {
+    const auto n = static_cast<std::size_t>(stack.dimension);
+    for (std::size_t j = 0; j <= n; ++j) {
+      if (stack.values[n * (n + 1) + j] != (j == n ? 1.0 : 0.0)) return std::nullopt;
+    }
+  }
+  return stack;
+}
+
+// M^t of one matrix at one time: what ear_powers computes for it (the same
+// AffinePowers, at the same t), without the index maps and the GIL's release.
+template <class Affine>
+py::array ear_power_of_one(const MatrixStack& stack, double t) {
+  py::array_t<double> out({stack.rows, stack.cols});
+  try {
+    store(AffinePowers<Affine>(affinity_at<Affine>(stack, 0)).at(t), stack, out.mutable_data());
+  } catch (const NoRealLogarithm& error) {
+    raise_no_sam(error.what(), std::nullopt);
+  }
+  return out;
+}
+
 py::object ear_power(const py::handle& M, const py::handle& t) {
+  // The small case first: one matrix, one time given as a Python number.
+  if ((PyFloat_Check(t.ptr()) || (PyLong_Check(t.ptr()) && !PyBool_Check(t.ptr())))) {
+    if (const std::optional<MatrixStack> one = read_single(M)) {
+      const Times time = read_times(t, "t");
+      return one->dimension == 2 ? ear_power_of_one<Affine2>(*one, time.values.front())
+                                 : ear_power_of_one<Affine3>(*one, time.values.front());
+    }
+  }
   const MatrixStack stack = read_stack(M, "M");
   check_homogeneous(stack, "M");
   const Times times = read_times(t, "t");

@@ -5,6 +5,7 @@
 //   affine.cpp   pita.sma, ear_power, sam, has_sam (core, vectorised over NumPy)
 //   motion.cpp   pita.methods(), pita.motion(...) and the Motion it returns
 //   scene.cpp    pita.load_scene(...) and Scene: eval, render, animate, measure, check
+//   examples.cpp pita.scenes_dir() and pita.example(name): pita's own scenes from any folder
 // No math is done here: every number comes from the same C++ the CLI calls.
 #pragma once
 
@@ -33,6 +34,7 @@ void bind_values(py::module_& m);
 void bind_affine(py::module_& m);
 void bind_motion(py::module_& m);
 void bind_scene(py::module_& m);
+void bind_examples(py::module_& m);
 
 // A pose of the plane or of space: pita.Pose holds one.
 using Pose = std::variant<Affine2, Affine3>;
@@ -59,6 +61,9 @@ Arrow read_arrow(const py::handle& value, const char* name);
 // (plane), 3x4 or 4x4 homogeneous (space). Throws ValueError (py::value_error)
 // for another shape or a homogeneous last row other than [0, ..., 0, 1].
 Pose read_pose(const py::handle& value, const char* name);
+
+// Whether the value is a pita.Pose.
+bool is_pose(const py::handle& value);
 
 // A pose as NumPy: [L | b], 2x3 or 3x4.
 py::array_t<double> pose_matrix(const Pose& pose);

@@ -18,7 +18,7 @@ vectorised over NumPy arrays.
     motion = pita.motion("P6", arrows, [0, 0.5, 1])
     p, m, w, q = motion(np.linspace(0, 1, 9))
     pita.ear_power([[0, -1, 2], [1, 0, 0]], 0.5)     # the square root of a quarter turn
-    pita.load_scene("scenes/fig01-eight-pitas.json") # shows its figure in Jupyter
+    pita.load_scene(pita.example("fig01-eight-pitas"))  # shows its figure in Jupyter
 )";
   m.attr("__version__") = PITA_VERSION;
   pita::python::bind_errors(m);
@@ -26,4 +26,5 @@ vectorised over NumPy arrays.
   pita::python::bind_affine(m);
   pita::python::bind_motion(m);
   pita::python::bind_scene(m);
+  pita::python::bind_examples(m);
 }

@@ -4,12 +4,16 @@
 // checked by the same reader (errors name /keyframes/1/m) and evaluated by the
 // same SceneMotion as `pita eval`.
 #include <algorithm>
+#include <array>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "core/chains/chain.hpp"
@@ -23,6 +27,8 @@
 #include "python/chunks.hpp"
 #include "python/held_scene.hpp"
 #include "scene/arrow_json.hpp"
+#include "scene/did_you_mean.hpp"
+#include "scene/scene.hpp"
 
 namespace pita::python {
 
@@ -68,6 +74,36 @@ bool given_as_pose(const py::handle& item) {
   } catch (const std::exception&) {
     return false;
   }
+}
+
+// What pita.motion's scenes are called in its errors.
+constexpr const char* kMotionFile = "<pita.motion>";
+
+// The fields of a scene that pita.motion takes as keywords, beside the
+// method options: those that shape the motion, of keyframes (a chain of
+// more keyframes than the method takes) or of poses (the SAM's subdivisions);
+// the figure's fields are pita.load_scene's.
+constexpr std::array<std::string_view, 2> kKeyframeFields = {"chain", "timing"};
+constexpr std::array<std::string_view, 2> kPoseFields = {"timing", "subdivisions"};
+
+std::span<const std::string_view> motion_fields(bool poses) {
+  return poses ? std::span<const std::string_view>(kPoseFields) : std::span<const std::string_view>(kKeyframeFields);
+}
+
+// Why a keyword is refused: the closest of the keywords pita.motion takes
+// (scene/did_you_mean.hpp), and all of them.
+std::string unknown_keyword(const std::string& field, bool poses) {
+  constexpr auto options = method_option_names();
+  const auto fields = motion_fields(poses);
+  std::vector<std::string_view> known(options.begin(), options.end());
+  known.emplace_back("options");
+  known.insert(known.end(), fields.begin(), fields.end());
+  const std::vector<std::string> close = scene::closest_names(field, known);
+  return fmt::format(
+      "unknown keyword \"{}\"{} (pita.motion takes the method options {}, or options={{...}}, "
+      "and the scene fields {} of a motion of {})",
+      field, scene::did_you_mean(close), fmt::join(options, ", "), fmt::join(fields, ", "),
+      poses ? "poses" : "keyframes");
 }
 
 // The scene pita.motion evaluates.
@@ -122,20 +158,25 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   }
   if (dimension == 3) scene["dimension"] = 3;
   scene[poses ? "poses" : "keyframes"] = items;
-  // Method options ("anchor", "path_mean", ...) go into "options"; the others
-  // ("chain", "timing", "subdivisions") are fields of the scene.
+  // Method options ("anchor", "path_mean", ...) go into "options"; the
+  // fields of the scene that shape its motion ("chain", "timing",
+  // "subdivisions": motion_fields) are fields of the scene; any other
+  // keyword is refused.
   Json method_options = Json::object();
   for (const auto& [key, value] : options) {
     const std::string field = key.cast<std::string>();
-    const auto names = method_option_names();
+    constexpr auto names = method_option_names();
     if (field == "options") {
       const Json given = to_json(value);
       if (!given.is_object()) throw py::type_error("options: expected a dict of method options");
       for (const auto& item : given.items()) method_options[item.key()] = item.value();
     } else if (std::find(names.begin(), names.end(), field) != names.end()) {
       method_options[field] = to_json(value);
-    } else {
+    } else if (const auto fields = motion_fields(poses);
+               std::find(fields.begin(), fields.end(), field) != fields.end()) {
       scene[field] = to_json(value);
+    } else {
+      throw scene::SceneError(kMotionFile, "/" + field, unknown_keyword(field, poses));
     }
   }
   if (!method_options.empty()) scene["options"] = method_options;
@@ -292,7 +333,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
       "motion",
       [](const std::string& method, const py::sequence& keyframes, const py::object& times, const py::kwargs& options) {
         const std::string text = motion_scene(method, keyframes, times, options).dump();
-        return hold_motion(scene::parse_scene(text, "<pita.motion>"));
+        return hold_motion(scene::parse_scene(text, kMotionFile));
       },
       py::arg("method"), py::arg("keyframes"), py::arg("times") = py::none(),
       R"(The motion of `method` through keyframes at times (knots, strictly increasing), built once.
@@ -302,11 +343,14 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
              PITAs and the SMA; poses (pita.Pose, 2x3 / 3x3 / 3x4 / 4x4 matrices) for the SAM family
   times      the knots, one per keyframe; may be left out when each keyframe dict has a "t"
   options    method options (anchor, path_mean, magnitude_mean, knots, permutation,
-             symmetrize) and scene fields (chain, timing, subdivisions), as a scene file spells
-             them: motion("P2", arrows, [0, 1, 2], anchor="midpoint", chain="neville")
+             symmetrize) and scene fields (chain and timing of keyframes, timing and
+             subdivisions of poses), as a scene file spells them:
+             motion("P2", arrows, [0, 1, 2], anchor="midpoint", chain="neville")
 
 Raises pita.SceneError naming the JSON Pointer of the bad value in the scene the call makes
-(e.pointer == "/keyframes/1/m"), and pita.NoMotionError when no such motion exists.)");
+(e.pointer == "/keyframes/1/m"), and pita.NoMotionError when no such motion exists. Another
+keyword is refused with a "did you mean" among those names (e.pointer == "/anchr"), and an
+option the method does not read, with the methods that read it ("/options/anchor").)");
 }
 
 }  // namespace pita::python

@@ -253,6 +253,8 @@ Pose read_pose(const py::handle& value, const char* name) {
   return pose_from_matrix(value, name);
 }
 
+bool is_pose(const py::handle& value) { return py::isinstance<PoseValue>(value); }
+
 void write_pose(const Affine2& A, double* out) {
   for (int i = 0; i < 2; ++i) {
     out[3 * i] = A.L(i, 0);

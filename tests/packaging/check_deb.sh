@@ -62,7 +62,8 @@ for path in usr/bin/pita usr/libexec/pita/pita-serve usr/include/pita/core/arrow
             usr/lib/libpita_core.a usr/lib/libpita_render.a usr/lib/cmake/pita/pitaConfig.cmake \
             usr/lib/cmake/pita/pitaConfigVersion.cmake usr/lib/pkgconfig/pita.pc usr/share/man/man1/pita.1 \
             usr/share/bash-completion/completions/pita usr/share/zsh/vendor-completions/_pita \
-            usr/share/doc/pita/CHANGELOG.md usr/share/doc/pita/docs/reference/eval.md; do
+            usr/share/doc/pita/CHANGELOG.md usr/share/doc/pita/docs/reference/eval.md \
+            usr/share/pita/scenes/fig01-eight-pitas.json usr/share/pita/scenes/images/picture.png; do
   grep -qxF "$path" <<< "$listing" || fail "the package lacks $path"
 done
 # No file outside /usr, none of the build's or the tests' files.
@@ -83,6 +84,9 @@ if [ -n "$python" ]; then
   else
     [ "$(dpkg-deb -f "$pydeb" Package)" = python3-pita ] || fail "Package is not python3-pita"
     [ "$(dpkg-deb -f "$pydeb" Version)" = "$version" ] || fail "python3-pita: Version is not $version"
+    # pita holds the scenes pita.example() finds
+    [ "$(dpkg-deb -f "$pydeb" Recommends)" = "pita (= $version)" ] ||
+      fail "python3-pita: Recommends is not pita (= $version): $(dpkg-deb -f "$pydeb" Recommends)"
     pydepends="$(dpkg-deb -f "$pydeb" Depends)"
     for needed in "python3 (>= " python3-numpy libpangocairo-1.0-0 fonts-dejavu-core libcairo2; do
       grep -qF "$needed" <<< "$pydepends" || fail "python3-pita: Depends lacks $needed: $pydepends"

@@ -13,7 +13,8 @@ for path in bin/pita include/pita/core/arrow.hpp include/pita/core/affine_power.
             lib/cmake/pita/pitaConfig.cmake lib/cmake/pita/pitaConfigVersion.cmake \
             lib/cmake/pita/pitaCoreTargets.cmake lib/cmake/pita/pitaRenderTargets.cmake \
             lib/pkgconfig/pita.pc share/man/man1/pita.1 share/bash-completion/completions/pita \
-            share/zsh/vendor-completions/_pita share/doc/pita/CHANGELOG.md share/doc/pita/docs/reference/eval.md; do
+            share/zsh/vendor-completions/_pita share/doc/pita/CHANGELOG.md share/doc/pita/docs/reference/eval.md \
+            share/pita/scenes/fig01-eight-pitas.json share/pita/scenes/images/picture.png; do
   if [ ! -f "$prefix/$path" ]; then
     echo "missing after cmake --install: $path" >&2
     status=1

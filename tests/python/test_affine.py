@@ -147,3 +147,47 @@ def test_sam_is_the_power_of_the_relative_affinity(n):
 def test_sam_refuses_when_there_is_none():
     with pytest.raises(pita.NoSamError):
         pita.sam(np.eye(2, 3), [[-1, 0, 0], [0, -2, 0]], 0.5)
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_one_matrix_gives_what_a_batch_gives_bitwise(n):
+    """A single matrix at a number t (the call of a Python loop) takes a path of its own,
+    without NumPy's conversions: its results are those of the same matrix in a batch, to the bit,
+    whatever form it is given in."""
+    stack = np.stack([positive_affinity(n) for _ in range(40)])
+    for t in (0.5, -1.3, 2, 0):
+        batch = pita.ear_power(stack, t)
+        hbatch = pita.ear_power(homogeneous(stack), t)
+        for k, M in enumerate(stack):
+            for given in (M, M.tolist(), tuple(map(tuple, M.tolist())), np.asfortranarray(M), pita.Pose.from_matrix(M)):
+                one = pita.ear_power(given, t)
+                assert one.shape == (n, n + 1) and one.dtype == np.float64
+                np.testing.assert_array_equal(one, batch[k])
+            single = M.astype(np.float32)
+            np.testing.assert_array_equal(pita.ear_power(single, t), pita.ear_power(single[None], t)[0])
+            H = homogeneous(M)
+            np.testing.assert_array_equal(pita.ear_power(H, t), hbatch[k])
+            np.testing.assert_array_equal(pita.ear_power(H.tolist(), t), hbatch[k])
+    ints = [[2, 0, 1], [0, 3, 0]]
+    np.testing.assert_array_equal(pita.ear_power(ints, 0.5), pita.ear_power(np.array([ints]), 0.5)[0])
+    np.testing.assert_array_equal(pita.ear_power(np.array(ints), 0.5), pita.ear_power(np.array([ints]), 0.5)[0])
+    np.testing.assert_array_equal(pita.ear_power([[2.0, 0, 1], [0, 3, np.float64(0)]], np.float64(0.5)),
+                                  pita.ear_power(np.array([ints]), 0.5)[0])
+
+
+def test_one_matrix_is_refused_as_a_batch_is():
+    """What the small path does not take goes the general way, with its errors."""
+    for bad, error in [([[1, 0, float("nan")], [0, 1, 0]], ValueError),
+                       ([[1, 0, 0], [0, 1, 0], [0, 1, 1]], ValueError),          # not [0, 0, 1]
+                       ([[1, 0, 0], [0, 1]], ValueError),                        # ragged
+                       ([[True, False, False], [False, True, False]], TypeError),
+                       ([[1, 0], [0, 1]], ValueError),                           # 2x2: no translation
+                       ([["1", 0, 0], [0, 1, 0]], TypeError)]:
+        with pytest.raises(error) as one:
+            pita.ear_power(bad, 0.5)
+        assert not isinstance(one.value, pita.NoSamError)
+    with pytest.raises(pita.NoSamError) as caught:
+        pita.ear_power([[-1, 0, 0], [0, -2, 0]], 0.5)
+    assert caught.value.index is None and "eigenvalue" in caught.value.reason
+    with pytest.raises(TypeError):
+        pita.ear_power([[1, 0, 2**70], [0, 1, 0]], 0.5)                       # NumPy's dtype object

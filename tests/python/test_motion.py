@@ -99,10 +99,71 @@ def test_errors_name_the_pointer(figure_one):
     with pytest.raises(pita.SceneError) as caught:
         pita.motion("P6", arrows, knots, anchr="midpoint")
     assert caught.value.pointer == "/anchr"
+    assert 'did you mean "anchor"?' in caught.value.reason
     with pytest.raises(ValueError):
         pita.motion("P6", arrows, [0, 1])
     with pytest.raises(ValueError):
         pita.motion("P6", arrows)
+
+
+OPTIONS = ["anchor", "path_mean", "magnitude_mean", "knots", "permutation", "symmetrize"]
+
+
+@pytest.mark.parametrize("keyword, meant", [("anchr", "anchor"), ("pathmean", "path_mean"),
+                                            ("magnitude_means", "magnitude_mean"), ("permutaton", "permutation"),
+                                            ("symetrize", "symmetrize"), ("chian", "chain"), ("timings", "timing"),
+                                            ("option", "options")])
+def test_a_misspelt_keyword_gets_a_did_you_mean_among_the_option_names(keyword, meant, figure_one):
+    arrows, knots = figure_one
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("P2", arrows, knots, **{keyword: "midpoint"})
+    reason = caught.value.reason
+    assert f'unknown keyword "{keyword}"; did you mean "{meant}"?' in reason
+    assert caught.value.pointer == f"/{keyword}" and caught.value.file == "<pita.motion>"
+    # the names it takes, not the scene file's top-level fields
+    assert ", ".join(OPTIONS) in reason and "the scene fields chain, timing" in reason
+    for field in ["canvas", "layers", "golden", "claims", "title"]:
+        assert field not in reason
+
+
+def test_the_scene_fields_are_those_of_the_kind_of_motion(figure_one):
+    arrows, knots = figure_one
+    poses = [np.eye(2, 3), [[0, -2, 3], [2, 0, 1]]]
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("SAM", poses, [0, 1], chain="blend")
+    assert "timing, subdivisions of a motion of poses" in caught.value.reason
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("SAM", poses, [0, 1], subdivision=2)
+    assert 'did you mean "subdivisions"?' in caught.value.reason
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("P6", arrows, knots, subdivisions=2)
+    assert "chain, timing of a motion of keyframes" in caught.value.reason
+    pita.motion("SAM", poses, [0, 1], subdivisions=2)
+    pita.motion("P6", arrows, knots, timing={"ease": "linear"})
+
+
+def test_a_keyword_far_from_every_name_lists_them(figure_one):
+    arrows, knots = figure_one
+    for keyword in ["title", "canvas", "samples", "zzz"]:   # a figure's fields are load_scene's, not motion's
+        with pytest.raises(pita.SceneError) as caught:
+            pita.motion("P6", arrows, knots, **{keyword: 1})
+        assert "did you mean" not in caught.value.reason and ", ".join(OPTIONS) in caught.value.reason
+
+
+def test_an_option_the_method_does_not_read_is_refused(figure_one):
+    """As in a scene file's "options": P6 reads no anchor, so anchor= would change nothing."""
+    arrows, knots = figure_one
+    for given in [dict(anchor="midpoint"), dict(options={"anchor": "midpoint"})]:
+        with pytest.raises(ValueError) as caught:
+            pita.motion("P6", arrows, knots, **given)
+        assert isinstance(caught.value, pita.SceneError)
+        assert '"anchor"' in caught.value.reason and "P2" in caught.value.reason
+        assert caught.value.pointer == "/options/anchor"
+    with pytest.raises(pita.SceneError) as caught:
+        pita.motion("P6", arrows, knots, path_mean="arithmetic")
+    assert "SMA" in caught.value.reason and "P9" in caught.value.reason
+    pita.motion("P2", arrows, knots, anchor="midpoint")                 # P2 reads it
+    pita.motion("P9", arrows, knots, path_mean="arithmetic")            # P9 reads it
 
 
 def test_no_sam_is_a_no_motion_error():

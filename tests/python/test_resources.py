@@ -51,6 +51,12 @@ def test_no_leak_in_array_calls_and_errors(figure_one):
     assert grown(lambda: pita.ear_power([[0, -1, 1], [1, 0, 0]], times), CALLS // 2) < LIMIT
     assert grown(lambda: pita.sma(arrows[0], arrows[1], times), CALLS // 2) < LIMIT
     assert sys.getrefcount(times) == refs
+    # one matrix at one time: ear_power's small path (a list, an array)
+    listed, array = [[0, -1, 1], [1, 0, 0]], np.array([[0.0, -1, 1], [1, 0, 0], [0, 0, 1]])
+    refs = sys.getrefcount(listed), sys.getrefcount(listed[0]), sys.getrefcount(array)
+    assert grown(lambda: pita.ear_power(listed, 0.5)) < LIMIT
+    assert grown(lambda: pita.ear_power(array, 0.5)) < LIMIT
+    assert (sys.getrefcount(listed), sys.getrefcount(listed[0]), sys.getrefcount(array)) == refs
 
     def refused():
         try:
