@@ -34,9 +34,6 @@ def files_of_the_clone():
 @pytest.mark.parametrize("page, code, offset", EXAMPLES,
                          ids=[f"{page.name}-{i}" for i, (page, _, _) in enumerate(EXAMPLES)])
 def test_example_runs_from_a_folder_of_ones_own(page, code, offset, tmp_path, monkeypatch):
-    if page.name == "README.md" and '"scenes/' in code:
-        pytest.xfail("the README's Python block names scenes/ of the clone: pita.example(NAME) reaches them "
-                     "from any folder (docs/guide/python.md)")
     for name, text in written_before(page, offset).items():
         (tmp_path / name).write_text(text)
     monkeypatch.chdir(tmp_path)
