@@ -30,8 +30,12 @@ TEST(Variant, SetsEachValueAtItsPointerAndNothingElse) {
   const Json v = variant_document(base, grid, grid.values(3));
   EXPECT_EQ(v["keyframes"][1]["t"], Json(0.3));
   EXPECT_EQ(v["timing"]["ease"], Json("smoothstep"));  // created inside a new "timing"
+  // The title says what varies (its values follow it); nothing else changes.
+  EXPECT_EQ(v["title"],
+            base.document["title"].get<std::string>() + " (/keyframes/1/t = 0.3, /timing/ease = smoothstep)");
   Json back = v;
   back["keyframes"][1]["t"] = base.document["keyframes"][1]["t"];
+  back["title"] = base.document["title"];
   back.erase("timing");
   EXPECT_EQ(back, base.document);
   EXPECT_EQ(variant_text(v).back(), '\n');
