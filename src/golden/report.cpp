@@ -39,7 +39,9 @@ std::string_view verdict_name(Verdict v) {
 // An image cell: the file if it was written, else a note.
 std::string image_cell(const std::string& file, const std::string& caption) {
   if (file.empty()) return "<td><em>none</em><br>" + html_escaped(caption) + "</td>";
-  return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>", html_escaped(file),
+  // The file's name as a URL: a scene named "javascript:..." gives files
+  // that must not read as a script (text::relative_url).
+  return fmt::format("<td><a href=\"{0}\"><img src=\"{0}\" alt=\"{1}\"></a><br>{1}</td>", text::relative_url(file),
                      html_escaped(caption));
 }
 

@@ -14,6 +14,7 @@
 #include "core/overloaded.hpp"
 #include "core/pose_traits.hpp"
 #include "python/bindings.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::python {
 
@@ -58,7 +59,19 @@ double real(const py::handle& value, const std::string& name) {
                                      py::isinstance(value, py::module_::import("numbers").attr("Real")))) {
     throw py::type_error(fmt::format("{}: expected a real number, got {}", name, py::repr(value).cast<std::string>()));
   }
-  const double x = value.cast<double>();
+  double x = 0.0;
+  if (PyLong_Check(value.ptr())) {
+    // An int beyond a double (10**400): a ValueError naming the argument,
+    // not pybind11's cast error.
+    x = PyLong_AsDouble(value.ptr());
+    if (x == -1.0 && PyErr_Occurred() != nullptr) {
+      PyErr_Clear();
+      throw py::value_error(fmt::format("{}: an integer of {} bits, beyond the range of a double (about 1.8e308)", name,
+                                        value.attr("bit_length")().cast<long long>()));
+    }
+  } else {
+    x = value.cast<double>();
+  }
   if (!std::isfinite(x)) throw py::value_error(fmt::format("{}: must be finite (got {})", name, float_repr(x)));
   return x;
 }
@@ -88,10 +101,25 @@ Point point(const py::handle& value, const std::string& name) {
   return p;
 }
 
+// An arrow pita can compute with, as a scene's keyframe must be (finite, m >
+// 0, |w| within scene::kMaxWinding, whose turns are then exact): from the
+// constructor and from a pickle alike.
+Arrow checked_arrow(Point p, double m, double w) {
+  if (!std::isfinite(p.real()) || !std::isfinite(p.imag())) throw py::value_error("p: must be finite");
+  if (!std::isfinite(m) || !(m > 0.0)) {
+    throw py::value_error(fmt::format("m: magnitude must be > 0 (got {})", float_repr(m)));
+  }
+  if (!std::isfinite(w) || std::abs(w) > scene::kMaxWinding) {
+    throw py::value_error(
+        fmt::format("w: the winding must be within +-{:g} rad (got {}); beyond, w + 2 pi k "
+                    "loses the angle's precision",
+                    scene::kMaxWinding, float_repr(w)));
+  }
+  return Arrow{p, m, w};
+}
+
 Arrow make_arrow(const py::handle& p, const py::handle& m, const py::handle& w) {
-  const Arrow a{point(p, "p"), real(m, "m"), real(w, "w")};
-  if (!(a.m > 0.0)) throw py::value_error(fmt::format("m: magnitude must be > 0 (got {})", float_repr(a.m)));
-  return a;
+  return checked_arrow(point(p, "p"), real(m, "m"), real(w, "w"));
 }
 
 // A matrix of doubles, checked: `rows` x `cols`.
@@ -330,11 +358,13 @@ are the same segment but different arrows (the second carries one more turn).
              return py::bool_(a.p == b.p && a.m == b.m && a.w == b.w);
            })
       .def("__hash__", [](const Arrow& a) { return py::hash(py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w)); })
-      .def(py::pickle(
-          [](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w); },
-          [](const py::tuple& t) {
-            return Arrow{{t[0].cast<double>(), t[1].cast<double>()}, t[2].cast<double>(), t[3].cast<double>()};
-          }));
+      .def(py::pickle([](const Arrow& a) { return py::make_tuple(a.p.real(), a.p.imag(), a.m, a.w); },
+                      // A pickle is checked as the constructor checks (a damaged one,
+                      // m = -1 or NaN, is refused, not loaded).
+                      [](const py::tuple& t) {
+                        if (t.size() != 4) throw py::value_error("Arrow: a pickled arrow is the tuple (x, y, m, w)");
+                        return checked_arrow(Point{real(t[0], "x"), real(t[1], "y")}, real(t[2], "m"), real(t[3], "w"));
+                      }));
 
   py::class_<PoseValue>(m, "Pose", R"(An affine pose x -> L x + b of the plane (L 2x2, b of 2) or of space (L 3x3,
 b of 3): the keyframes of the SAM paper. Pose.from_matrix takes [L | b] (2x3, 3x4) or the

@@ -30,20 +30,6 @@ constexpr std::size_t kColumnsPerPass = 16;
 // A column file's write buffer: small, since kColumnsPerPass are open at once.
 constexpr std::size_t kColumnBuffer = std::size_t{64} << 10;
 
-// A file name as a relative URL: percent-encoded but for unreserved characters.
-std::string url(std::string_view name) {
-  std::string out;
-  for (const char c : name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (std::isalnum(u) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += c;
-    } else {
-      out += fmt::format("%{:02X}", u);
-    }
-  }
-  return out;
-}
-
 // The first output of the row with one of `extensions`, in that order of preference.
 std::string output_with(const Row& row, std::initializer_list<std::string_view> extensions) {
   for (const std::string_view ext : extensions) {
@@ -137,7 +123,7 @@ class RowsFiles {
     text_ += fmt::format("{}[{},", position % kIndexRowsPerFile == 0 ? "" : ",\n", row.index);
     append_value(text_, row.status);
     const std::string thumb = output_with(row, {"png", "svg"}), full = output_with(row, {"svg", "png", "pdf"});
-    text_ += fmt::format(",\"{}\",\"{}\"", url(thumb), url(full));
+    text_ += fmt::format(",\"{}\",\"{}\"", text::relative_url(thumb), text::relative_url(full));
     for (const Column& c : columns_) {  // shown as the manifest prints them
       text_ += ',';
       text_ += nlohmann::json(field_of(row, c)).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -53,4 +53,16 @@ std::string html_escaped(std::string_view text) {
   return out;
 }
 
+std::string relative_url(std::string_view path) {
+  std::string out;
+  out.reserve(path.size());
+  for (const char c : path) {
+    const auto u = static_cast<unsigned char>(c);
+    const bool unreserved = (u >= 'a' && u <= 'z') || (u >= 'A' && u <= 'Z') || (u >= '0' && u <= '9') || c == '-' ||
+                            c == '_' || c == '.' || c == '~' || c == '/';
+    out += unreserved ? std::string(1, c) : fmt::format("%{:02X}", u);
+  }
+  return out;
+}
+
 }  // namespace pita::text

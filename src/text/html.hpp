@@ -15,4 +15,11 @@ namespace pita::text {
 // GLib's g_markup_escape_text.
 std::string html_escaped(std::string_view text);
 
+// A relative path pita wrote, as the value of an href or src: every byte but
+// the unreserved ones (letters, digits, - _ . ~) and "/" percent-encoded, so
+// that no part of it reads as a scheme ("javascript:x.png" becomes
+// "javascript%3Ax.png", a file), a query or a fragment. Safe in a quoted
+// attribute without html_escaped.
+std::string relative_url(std::string_view path);
+
 }  // namespace pita::text

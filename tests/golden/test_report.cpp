@@ -92,6 +92,25 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
   EXPECT_EQ(names.size(), 6u);  // index.html and the five files of "moved"
 }
 
+// A scene named like a URL scheme ("javascript:alert(1)") writes files of
+// that name: the report links to them as files, never as a script.
+TEST_F(Report, LinksOnlyToFilesWhateverTheSceneIsNamed) {
+  ReportEntry named{SceneCheck{"scenes/javascript:alert(1).json",
+                               "javascript:alert(1)",
+                               {file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")},
+                               {},
+                               {}},
+                    ""};
+  write_report(dir_, {named});
+  const std::string html = read("index.html");
+  EXPECT_EQ(read("javascript:alert(1).diff.png"), "DIFF");
+  EXPECT_NE(html.find("<a href=\"javascript%3Aalert%281%29.diff.png\"><img src=\"javascript%3Aalert%281%29.diff.png\""),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(html.find("href=\"javascript:"), std::string::npos) << html;
+  EXPECT_EQ(html.find("src=\"javascript:"), std::string::npos) << html;
+}
+
 // Every claim is listed, held or not; a failed one marks its scene though
 // its goldens match, and no image is written for it.
 TEST_F(Report, ListsEveryClaim) {

@@ -1,6 +1,7 @@
 """pita.Arrow and pita.Pose: plain values that compare, hash, print and pickle."""
 import math
 import pickle
+import struct
 
 import numpy as np
 import pytest
@@ -44,6 +45,24 @@ def test_arrow_from_points_is_the_zero_turn_arrow():
 def test_bad_arrows_are_refused(p, m, w, error):
     with pytest.raises(error):
         pita.Arrow(p, m, w)
+
+
+def test_numbers_beyond_a_double_and_windings_beyond_the_bound_name_their_argument():
+    with pytest.raises(ValueError, match=r"^m: an integer of 1329 bits, beyond the range of a double"):
+        pita.Arrow((0, 0), 10**400, 0)
+    with pytest.raises(ValueError, match=r"^w: the winding must be within \+-1e\+06 rad"):
+        pita.Arrow((0, 0), 1, 1e300)  # its turns overflowed a 64-bit integer
+    assert pita.Arrow((0, 0), 1, 1e6).turns == round(1e6 / (2 * math.pi))
+
+
+def test_a_damaged_pickle_is_refused_as_the_constructor_refuses():
+    good = pickle.dumps(pita.Arrow((1, 2), 3.0, 0.5))
+    for bad_m in (-1.0, 0.0, float("nan")):
+        # The float opcode "G" and its 8 bytes, big-endian: m = 3.0 made bad.
+        damaged = good.replace(b"G" + struct.pack(">d", 3.0), b"G" + struct.pack(">d", bad_m))
+        assert damaged != good
+        with pytest.raises(ValueError, match=r"^m: (magnitude must be > 0|must be finite)"):
+            pickle.loads(damaged)
 
 
 def test_pose_of_the_plane_and_its_forms():

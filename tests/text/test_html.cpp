@@ -28,4 +28,11 @@ TEST(HtmlEscaped, WritesControlCharactersAsReferences) {
 }
 
 }  // namespace
+TEST(RelativeUrl, EncodesAllButUnreservedCharactersAndSlashes) {
+  EXPECT_EQ(relative_url("out/fig01-eight_pitas.v2~.png"), "out/fig01-eight_pitas.v2~.png");
+  EXPECT_EQ(relative_url("javascript:alert(1).png"), "javascript%3Aalert%281%29.png");  // no scheme
+  EXPECT_EQ(relative_url("a b?c#d&e\"f'g<h>"), "a%20b%3Fc%23d%26e%22f%27g%3Ch%3E");
+  EXPECT_EQ(relative_url("caf\xc3\xa9"), "caf%C3%A9");
+}
+
 }  // namespace pita::text
