@@ -11,6 +11,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -176,6 +177,11 @@ void expect_matches_arrows(const std::function<std::unique_ptr<Motion>(const Key
     }
   }
 }
+
+// The dimensions the tests of wild triples run in: the plane and space, or
+// under the sanitizers the plane only (space's code runs there in the other
+// tests of the pose PITAs; these are the slowest of the suite under ASan).
+inline std::vector<int> wild_dimensions() { return kUnderSanitizers ? std::vector<int>{2} : std::vector<int>{2, 3}; }
 
 // What refusals_in_wild_triples saw.
 struct Refusals {

@@ -56,7 +56,7 @@ TEST(PoseBeLp, RefusesNeighboursWithoutSam) {
 }
 
 TEST(PoseBeLp, RefusesAtTheTimeAPowerIsMissing) {
-  for (const int n : {2, 3}) {
+  for (const int n : test::wild_dimensions()) {
     const test::Refusals seen = n == 2 ? test::refusals_in_wild_triples<PoseBeLp, 2>(test::oracle_p4<2>, 15)
                                        : test::refusals_in_wild_triples<PoseBeLp, 3>(test::oracle_p4<3>, 16);
     EXPECT_GT(seen.refused, test::sample_size(10, 1)) << n;

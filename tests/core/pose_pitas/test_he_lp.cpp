@@ -65,7 +65,7 @@ TEST(PoseHeLp, RefusesNeighboursWithoutSam) {
 }
 
 TEST(PoseHeLp, RefusesAtTheTimeAPowerIsMissing) {
-  for (const int n : {2, 3}) {
+  for (const int n : test::wild_dimensions()) {
     const test::Refusals seen = n == 2 ? test::refusals_in_wild_triples<PoseHeLp, 2>(test::oracle_p5<2>, 15)
                                        : test::refusals_in_wild_triples<PoseHeLp, 3>(test::oracle_p5<3>, 16);
     EXPECT_EQ(seen.refused, 0) << n;  // P5 has no power that depends on time

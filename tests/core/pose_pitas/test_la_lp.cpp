@@ -56,7 +56,7 @@ TEST(PoseLaLp, RefusesNeighboursWithoutSam) {
 }
 
 TEST(PoseLaLp, RefusesAtTheTimeAPowerIsMissing) {
-  for (const int n : {2, 3}) {
+  for (const int n : test::wild_dimensions()) {
     const test::Refusals seen = n == 2 ? test::refusals_in_wild_triples<PoseLaLp, 2>(test::oracle_p6<2>, 15)
                                        : test::refusals_in_wild_triples<PoseLaLp, 3>(test::oracle_p6<3>, 16);
     EXPECT_GT(seen.refused, test::sample_size(10, 1)) << n;

@@ -67,7 +67,7 @@ TEST(PoseNeLp, RefusesNeighboursWithoutSam) {
 }
 
 TEST(PoseNeLp, RefusesAtTheTimeAPowerIsMissing) {
-  for (const int n : {2, 3}) {
+  for (const int n : test::wild_dimensions()) {
     const test::Refusals seen = n == 2 ? test::refusals_in_wild_triples<PoseNeLp, 2>(test::oracle_p9<2>, 15)
                                        : test::refusals_in_wild_triples<PoseNeLp, 3>(test::oracle_p9<3>, 16);
     EXPECT_GT(seen.refused, test::sample_size(10, 1)) << n;
