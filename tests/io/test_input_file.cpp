@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "io/input_file.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace pita::io {
 namespace {
@@ -21,14 +22,6 @@ namespace fs = std::filesystem;
 
 class InputFileTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pita-test-input-file-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // The sentence read_regular_file's error gives for a "scene file".
   static std::string refusal(const fs::path& path, std::size_t limit = 1024) {
     try {
@@ -39,7 +32,8 @@ class InputFileTest : public ::testing::Test {
     return "(read)";
   }
 
-  fs::path dir_;
+  test::ScratchDir scratch_;
+  const fs::path& dir_ = scratch_.path();
 };
 
 TEST_F(InputFileTest, ReadsARegularFileWhole) {
