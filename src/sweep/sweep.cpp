@@ -15,6 +15,7 @@
 #include <system_error>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "animate/progress.hpp"
 #include "core/worker_pool.hpp"
@@ -415,13 +416,11 @@ void check_method_axis(const BaseScene& base, const Grid& grid, const std::vecto
   if (own.empty()) return;
   for (const Axis& axis : grid.axes()) {
     if (axis.pointer != "/method") continue;
-    std::string listed;
-    for (std::size_t i = 0; i < own.size(); ++i) listed += (i == 0 ? "" : ", ") + own[i];
     throw SweepUsageError(About(Input::vary, axis.pointer + "=" + axis.spec),
                           fmt::format("every panel sets its own method ({}), so no figure or metric draws the "
                                       "scene's \"method\": vary a panel's (/panels/K/method) instead, or ask for "
                                       "the frames of the scene's own motion (csv, json)",
-                                      listed));
+                                      fmt::join(own, ", ")));
   }
 }
 
