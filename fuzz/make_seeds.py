@@ -3,7 +3,7 @@
 nothing of it is kept in git): the scenes of scenes/ and tests/data/bad/ for the scene
 targets, trimmed copies of the golden data files golden/*/*.data.json (a few panels,
 items and points each: the structure without the bulk), affinities of every EAR case, and
---vary arguments with manifest parts for fuzz_sweep.
+--vary arguments with manifest parts for fuzz_sweep, and requests to pita serve.
 The regression inputs of tests/data/fuzz/<target>/ are a corpus of their own.
 
     fuzz/make_seeds.py OUT_DIR
@@ -109,6 +109,34 @@ def sweep_seeds(out):
     (folder / "axis-only.txt").write_text(axes[-2])
 
 
+def http_seeds(out):
+    """Requests to pita serve as a client sends them (fuzz_http_request.cpp's token)."""
+    folder = out / "fuzz_http_request"
+    folder.mkdir(parents=True, exist_ok=True)
+    token = "0123456789abcdef0123456789abcdef"
+    host = "Host: 127.0.0.1:8765\r\n"
+
+    def get(target):
+        return f"GET {target} HTTP/1.1\r\n{host}\r\n"
+
+    def post(target, body):
+        return f"POST {target} HTTP/1.1\r\n{host}Content-Length: {len(body.encode())}\r\n\r\n{body}"
+
+    edit = json.dumps({"changes": [{"pointer": "/keyframes/1/m", "value": "2"}]})
+    drag = json.dumps({"drag": {"panel": 0, "pointer": "/keyframes/0", "part": "tip", "to": [1, 2]}})
+    requests = {
+        "page": get(f"/?token={token}"), "scenes": get(f"/api/scenes?token={token}"),
+        "figure": get(f"/api/figure/0?token={token}"), "figure-at": get(f"/api/figure/0?at=0.5&token={token}"),
+        "measures": get(f"/api/measures/0?token={token}"), "events": get(f"/api/events?token={token}"),
+        "edit": post(f"/api/edit/0?token={token}", edit), "drag": post(f"/api/edit/0?token={token}", drag),
+        "no-token": get("/api/scenes"), "foreign-host": "GET / HTTP/1.1\r\nHost: evil.example\r\n\r\n",
+        "chunked": f"POST /api/edit/0 HTTP/1.1\r\n{host}Transfer-Encoding: chunked\r\n\r\n5\r\nhello\r\n0\r\n\r\n",
+        "header-token": f"GET /api/scenes HTTP/1.1\r\n{host}X-Pita-Token: {token}\r\n\r\n",
+    }
+    for name, text in requests.items():
+        (folder / f"{name}.http").write_bytes(text.encode())
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -120,6 +148,7 @@ def main():
     affine_seeds(out)
     sweep_seeds(out)
     animate_seeds(out)
+    http_seeds(out)
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 // pita-serve: the server of `pita serve` (cli/serve.hpp), a program of its
 // own so that only it loads the HTTP library.
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <thread>
@@ -12,6 +13,7 @@
 
 #include "cli/exit_code.hpp"
 #include "cli/serve.hpp"
+#include "io/interrupt.hpp"
 #include "serve/server.hpp"
 
 namespace pita::cli {
@@ -40,10 +42,22 @@ int serve_main(const ServeOptions& options) {
   for (const int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stopping, sig);
   pthread_sigmask(SIG_BLOCK, &stopping, nullptr);
   ::signal(SIGPIPE, SIG_IGN);
-  std::atomic<int> received{0};
-  std::thread waiter([&] {
+  // Stopped within a second whatever the server is doing: when it has not
+  // returned a second after the signal (a render or an answer still
+  // running), the process ends as any pita does on a signal (the temporary
+  // files of an edit in flight removed, exit 128 + the signal).
+  static std::atomic<int> received{0};  // static: the waiter may outlive this call
+  static std::atomic<bool> returned{false};
+  std::thread waiter([stopping] {
     int sig = 0;
-    if (sigwait(&stopping, &sig) == 0) received = sig;
+    if (sigwait(&stopping, &sig) != 0) return;
+    received = sig;
+    const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+    while (std::chrono::steady_clock::now() < end) {
+      if (returned) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    if (!returned) io::exit_interrupted(sig);
   });
   waiter.detach();
 
@@ -54,7 +68,8 @@ int serve_main(const ServeOptions& options) {
   settings.token = serve::random_token();
   settings.allow_absolute_paths = options.allow_absolute_paths;
   settings.edit = options.edit;
-  const int code = serve::serve(settings, std::cerr, [&] { return received.load() != 0; });
+  const int code = serve::serve(settings, std::cerr, [] { return received.load() != 0; });
+  returned = true;
   if (code != 0) return code;
   std::cerr << "pita: stopped\n";
   return 128 + received.load();

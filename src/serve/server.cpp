@@ -4,10 +4,8 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <random>
 #include <set>
@@ -16,316 +14,30 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "analysis/claims.hpp"
-#include "analysis/measure.hpp"
-#include "analysis/measure_report.hpp"
-#include "animate/frame.hpp"
-#include "animate/timeline.hpp"
-#include "io/output_file.hpp"
-#include "motion/no_motion.hpp"
-#include "motion/stage.hpp"
-#include "render/figure.hpp"
-#include "render/panel_drawing.hpp"
-#include "scene/image_file.hpp"
-#include "scene/json_text.hpp"
-#include "scene/limits.hpp"
-#include "scene/located_error.hpp"
-#include "scene/scene.hpp"
 #include "serve/file_watch.hpp"
-#include "serve/json_edit.hpp"
+#include "serve/live_scenes.hpp"
+#include "serve/oldest_first.hpp"
 #include "serve/page.hpp"
-#include "serve/scene_edit.hpp"
 
-// Last: it includes <resolv.h>, whose macro _res would rename a parameter of Eigen's.
-#include <httplib.h>
+// Last: it includes cpp-httplib's <httplib.h>, whose <resolv.h> macro _res would rename a parameter of Eigen's.
+#include "serve/http_front.hpp"
 
 namespace pita::serve {
 
+// At most this many event streams are open at once: one more closes the oldest
+// (its page's EventSource opens another), so that a flood of them, or of tabs,
+// cannot hold the workers the page's requests need.
+inline constexpr std::size_t kEventStreams = 16;
+
+// What every route handler is given: the scenes, the command line's settings
+// and the open event streams.
+struct Site {
+  LiveScenes& state;
+  const Settings& settings;
+  OldestFirst streams{kEventStreams};
+};
+
 namespace {
-
-namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
-
-// What the page shows of an error: where (file, line:column or JSON Pointer) and why.
-Json error_json(const std::exception_ptr& thrown, const std::string& path) {
-  Json error{{"file", path}, {"line", 0}, {"column", 0}, {"pointer", ""}, {"reason", ""}, {"message", ""}};
-  try {
-    std::rethrow_exception(thrown);
-  } catch (const scene::LocatedError& e) {  // SceneError, NoMotion, RenderError
-    error.update({{"file", e.file()},
-                  {"line", e.line()},
-                  {"column", e.column()},
-                  {"pointer", e.pointer()},
-                  {"reason", e.reason()},
-                  {"message", e.what()}});
-  } catch (const std::exception& e) {
-    error.update({{"reason", e.what()}, {"message", path + ": " + e.what()}});
-  }
-  return error;
-}
-
-// The HTTP status of the answer to a request that met the error: its kind's
-// row of scene::kLocatedAnswers for a located error, else 422 (the scene, as
-// it is, cannot be drawn or measured).
-int error_status(const std::exception_ptr& thrown) {
-  try {
-    std::rethrow_exception(thrown);
-  } catch (const scene::LocatedError& e) {
-    return scene::answer(e.kind()).http_status;
-  } catch (...) {
-    return 422;
-  }
-}
-
-// One scene of the command line: its last good figure and what is wrong now.
-struct SceneState {
-  fs::path path;
-  std::uint64_t version = 0;
-  std::shared_ptr<const scene::Scene> scene;       // the last good one
-  std::string svg;                                 // its figure
-  std::optional<Json> error;                       // the last save's, when it could not be drawn
-  std::vector<fs::path> files;                     // the scene and its images (what is watched)
-  std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
-  Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
-  std::string text;                                // the file it was read from
-};
-
-class Server {
- public:
-  explicit Server(const Settings& settings) : settings_(settings) {
-    for (const fs::path& path : settings.scenes) {
-      auto state = std::make_unique<SceneState>();
-      state->path = path;
-      state->files = {path};
-      scenes_.push_back(std::move(state));
-    }
-  }
-
-  // Renders scene i from its file; keeps the last good figure when it fails.
-  void render(std::size_t i) {
-    SceneState& state = *scenes_[i];
-    std::shared_ptr<const scene::Scene> scene;
-    std::string svg;
-    std::optional<Json> error;
-    render::Figure figure;
-    Json claims = Json::array();
-    std::string text;
-    try {
-      text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
-      scene = std::make_shared<const scene::Scene>(
-          scene::parse_scene(text, state.path.string(), {settings_.allow_absolute_paths}));
-      const motion::Stage stage(*scene);
-      figure = render::build_figure(stage);
-      svg = render::render_figure(*scene, figure, render::Format::svg);
-      for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
-        claims.push_back(
-            {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
-      }
-    } catch (...) {
-      error = error_json(std::current_exception(), state.path.string());
-    }
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (!error) {
-        state.scene = scene;
-        state.svg = std::move(svg);
-        state.placements = figure.placements;
-        state.claims = std::move(claims);
-        state.text = std::move(text);
-        state.files = {state.path};
-        for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
-      }
-      state.error = std::move(error);
-      ++state.version;
-    }
-    changed_.notify_all();
-  }
-
-  std::vector<fs::path> watched() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<fs::path> files;
-    for (const auto& state : scenes_) files.insert(files.end(), state->files.begin(), state->files.end());
-    return files;
-  }
-
-  // The scenes whose files are among `saved`.
-  std::vector<std::size_t> scenes_of(const std::set<fs::path>& saved) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<std::size_t> which;
-    for (std::size_t i = 0; i < scenes_.size(); ++i) {
-      for (const fs::path& file : scenes_[i]->files) {
-        if (saved.count(fs::absolute(file).lexically_normal()) != 0) {
-          which.push_back(i);
-          break;
-        }
-      }
-    }
-    return which;
-  }
-
-  Json scenes_json() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    Json all = Json::array();
-    for (std::size_t i = 0; i < scenes_.size(); ++i) {
-      const SceneState& state = *scenes_[i];
-      Json entry{{"index", i},
-                 {"name", state.path.stem().string()},
-                 {"path", state.path.string()},
-                 {"version", state.version},
-                 {"title", state.scene ? state.scene->title : ""},
-                 {"error", state.error ? *state.error : Json(nullptr)},
-                 {"timeline", nullptr},
-                 {"handles", Json::array()},
-                 {"claims", state.claims},
-                 {"panels", Json::array()}};
-      // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
-      for (const render::PanelPlacement& placement : state.placements) {
-        entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
-      }
-      if (settings_.edit && state.scene) {
-        for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
-          entry["handles"].push_back({{"panel", handle.panel},
-                                      {"pointer", handle.pointer},
-                                      {"part", handle.part},
-                                      {"at", {handle.at.real(), handle.at.imag()}}});
-        }
-      }
-      if (state.scene) {
-        try {
-          const animate::Timeline timeline = animate::make_timeline(*state.scene);
-          entry["timeline"] = Json{{"first", timeline.first},
-                                   {"last", timeline.last},
-                                   {"frames", timeline.frames},
-                                   {"fps", timeline.fps},
-                                   {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
-        } catch (const std::exception&) {
-          // no motion to play (a figure without one)
-        }
-      }
-      all.push_back(entry);
-    }
-    return all;
-  }
-
-  std::optional<std::string> figure(std::size_t i, std::optional<double> at) {
-    std::shared_ptr<const scene::Scene> scene;
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
-      scene = scenes_[i]->scene;
-    }
-    if (!scene) return std::nullopt;
-    const animate::Timeline timeline = animate::make_timeline(*scene);
-    const render::Figure figure =
-        animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
-    return render::render_figure(*scene, figure, render::Format::svg);
-  }
-
-  std::optional<std::string> measures(std::size_t i) {
-    std::shared_ptr<const scene::Scene> scene;
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      scene = scenes_[i]->scene;
-    }
-    if (!scene) return std::nullopt;
-    analysis::check_measure_work(*scene);
-    return analysis::measures_json(scene->path, analysis::measure_scene(*scene));
-  }
-
-  // Waits (at most `wait`) for a render newer than `seen`; the versions now.
-  std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    const auto now = [&] {
-      std::vector<std::uint64_t> versions;
-      for (const auto& state : scenes_) versions.push_back(state->version);
-      return versions;
-    };
-    changed_.wait_for(lock, wait, [&] { return now() != seen || stopping_; });
-    return now();
-  }
-
-  // Applies an edit to scene i's file: checks the result as a scene (and
-  // draws it) before writing it atomically. Returns the changes that undo
-  // it; throws what reading or drawing the result throws, and
-  // std::invalid_argument for a request that names no handle or value.
-  Json edit(std::size_t i, const Json& request) {
-    const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
-    const fs::path path = scenes_[i]->path;
-    const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
-    std::vector<Change> changes;
-    if (request.contains("drag")) {
-      const Json& d = request.at("drag");
-      // Where the page drew the handle is where the figure it showed put it.
-      if (d.contains("version")) {
-        const std::lock_guard<std::mutex> lock(mutex_);
-        if (d.at("version").get<std::uint64_t>() != scenes_[i]->version) {
-          throw std::invalid_argument("the figure changed while dragging: drag again");
-        }
-      }
-      const scene::Scene scene = scene::parse_scene(text, path.string(), {settings_.allow_absolute_paths});
-      const motion::Stage stage(scene);
-      const render::Figure figure = render::build_figure(stage);
-      // An index of the figure's panels: 1e20 or -1 would be read as another panel.
-      const Json& panel = d.at("panel");
-      if (!panel.is_number_unsigned() || panel.get<std::uint64_t>() >= figure.placements.size()) {
-        throw std::invalid_argument(
-            fmt::format("\"panel\" must be the index of a panel of the figure, 0 to {} (got {})",
-                        figure.placements.size() - 1, panel.dump(-1, ' ', false, Json::error_handler_t::replace)));
-      }
-      changes =
-          drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
-               d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
-    } else {
-      for (const Json& change : request.at("changes")) {
-        changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
-        check_change(text, changes.back());
-      }
-    }
-    std::string edited = text;
-    Json previous = Json::array();
-    for (const Change& change : changes) {
-      const TextSpan span = value_span(edited, change.pointer);
-      previous.push_back({{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}});
-      edited = replace_value(edited, change.pointer, change.value);
-    }
-    // Refused unless the result is a scene pita draws.
-    const scene::Scene checked = scene::parse_scene(edited, path.string(), {settings_.allow_absolute_paths});
-    const motion::Stage stage(checked);
-    render::render_figure(checked, render::build_figure(stage), render::Format::svg);
-    // The file itself (through a link, its target), with the permissions it had.
-    const fs::path target = fs::canonical(path);
-    const fs::perms permissions = fs::status(target).permissions();
-    // Not over a save made since the edit read the file (an editor's, while
-    // the edit was checked): the file is left as it is when it changed.
-    if (!io::replace_file_if_unchanged(target, text, edited)) {
-      throw std::invalid_argument(
-          "the file changed while the edit was checked (saved by another program): it is kept as it is; drag again");
-    }
-    fs::permissions(target, permissions);
-    return Json{{"previous", previous}};
-  }
-
-  void stop() {
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      stopping_ = true;
-    }
-    changed_.notify_all();
-  }
-  bool stopping() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    return stopping_;
-  }
-  std::size_t size() const { return scenes_.size(); }
-
- private:
-  const Settings& settings_;
-  std::vector<std::unique_ptr<SceneState>> scenes_;
-  std::mutex mutex_;
-  std::mutex edit_mutex_;  // one edit of the files at a time
-  std::condition_variable changed_;
-  bool stopping_ = false;
-};
 
 // The scene index of /api/.../N; nullopt for anything else.
 std::optional<std::size_t> scene_index(const std::string& text, std::size_t count) {
@@ -384,10 +96,6 @@ std::optional<double> figure_time(const httplib::Request& req) {
 }
 
 // What every route handler is given: the scenes and the command line's settings.
-struct Site {
-  Server& state;
-  const Settings& settings;
-};
 
 void get_page(Site&, const httplib::Request&, httplib::Response& res) {
   res.set_header("Cache-Control", "no-store");
@@ -436,22 +144,33 @@ void get_measures(Site& site, const httplib::Request& req, httplib::Response& re
 }
 
 // Server-sent events: one per render of a scene, and a comment every 5 s
-// that keeps proxies and the browser patient.
+// that keeps proxies and the browser patient. The stream ends when the
+// server stops or a newer stream takes its place (kEventStreams).
 void get_events(Site& site, const httplib::Request&, httplib::Response& res) {
   res.set_header("Cache-Control", "no-store");
-  Server& state = site.state;
+  LiveScenes& state = site.state;
   auto seen = std::make_shared<std::vector<std::uint64_t>>(state.versions_after({}, std::chrono::milliseconds(0)));
-  res.set_chunked_content_provider("text/event-stream", [&state, seen](std::size_t, httplib::DataSink& sink) {
-    const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(5));
-    if (state.stopping()) return false;
-    std::string events;
-    for (std::size_t i = 0; i < now.size(); ++i) {
-      if (now[i] != (*seen)[i]) events += fmt::format("data: {{\"scene\": {}, \"version\": {}}}\n\n", i, now[i]);
-    }
-    if (events.empty()) events = ": still here\n\n";
-    *seen = now;
-    return sink.write(events.data(), events.size());
-  });
+  auto place = std::make_shared<Place>(site.streams);
+  auto quiet = std::make_shared<int>(0);  // seconds without an event
+  res.set_chunked_content_provider(
+      "text/event-stream", [&state, seen, place, quiet](std::size_t, httplib::DataSink& sink) {
+        const std::vector<std::uint64_t> now = state.versions_after(*seen, std::chrono::seconds(1));
+        if (state.stopping() || place->told_to_leave()) {
+          sink.done();
+          return true;
+        }
+        std::string events;
+        for (std::size_t i = 0; i < now.size(); ++i) {
+          if (now[i] != (*seen)[i]) events += fmt::format("data: {{\"scene\": {}, \"version\": {}}}\n\n", i, now[i]);
+        }
+        if (events.empty()) {
+          if (++*quiet < 5) return true;
+          events = ": still here\n\n";
+        }
+        *quiet = 0;
+        *seen = now;
+        return sink.write(events.data(), events.size());
+      });
 }
 
 void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) {
@@ -494,12 +213,10 @@ constexpr std::array kRoutes{
 
 // The HTTP server's limits, its token check and its routes.
 void set_up(httplib::Server& http, Site& site) {
-  http.set_payload_max_length(64 * 1024);  // no request of the page is larger: a larger one is refused (413)
-  http.set_keep_alive_max_count(100);
-  // Each page holds a worker for its event stream: room for many tabs, and
-  // idle connections let go of theirs soon.
+  // HttpFront receives each request within its bounds first. The workers:
+  // kEventStreams streams, kReceiving requests being received, and room for
+  // the requests being answered.
   http.new_task_queue = [] { return new httplib::ThreadPool(64); };
-  http.set_keep_alive_timeout(1);
   // Every request carries the token (as Jupyter's): a page of another site
   // cannot guess it, so it can neither read nor drive this server.
   http.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {
@@ -532,7 +249,7 @@ int bind_port(httplib::Server& http, const Settings& settings) {
 // Renders each saved scene again, until stopped; watches the files of the
 // last good figures (`files` are those watched now). Returns 0 when
 // stopped, 3 when watching fails.
-int render_saves(Server& state, FileWatcher& watcher, std::vector<fs::path> files, std::ostream& log,
+int render_saves(LiveScenes& state, FileWatcher& watcher, std::vector<fs::path> files, std::ostream& log,
                  const std::function<bool()>& stopped) {
   try {
     std::vector<fs::path> now = state.watched();
@@ -560,8 +277,30 @@ std::string random_token() {
   return token;
 }
 
-int serve(const Settings& settings, std::ostream& log, const std::function<bool()>& stopped) {
-  Server state(settings);
+struct Service::Parts {
+  explicit Parts(const Settings& given)
+      : settings(given), state(settings), http(HttpLimits{}, allowed_hosts(settings.host)), site{state, settings} {
+    set_up(http, site);
+  }
+  Settings settings;
+  LiveScenes state;
+  HttpFront http;
+  Site site;
+};
+
+Service::Service(const Settings& settings) : parts_(std::make_unique<Parts>(settings)) {}
+Service::~Service() = default;
+
+void Service::render_all() {
+  for (std::size_t i = 0; i < parts_->state.size(); ++i) parts_->state.render(i);
+}
+
+std::string Service::answer(std::string_view request) { return parts_->http.answer(request); }
+
+int Service::run(std::ostream& log, const std::function<bool()>& stopped) {
+  const Settings& settings = parts_->settings;
+  LiveScenes& state = parts_->state;
+  HttpFront& http = parts_->http;
   // Watching starts before the first renders, so that no save is missed;
   // a watch that cannot be set up is said before anything is served.
   FileWatcher watcher;
@@ -572,11 +311,8 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
     log << "pita: cannot watch the scenes (" << error.what() << ")\n";
     return 2;
   }
-  for (std::size_t i = 0; i < state.size(); ++i) state.render(i);
+  render_all();
 
-  httplib::Server http;
-  Site site{state, settings};
-  set_up(http, site);
   const int port = bind_port(http, settings);
   if (port < 0) {
     log << fmt::format("pita: cannot listen on {}:{} (in use, or not an address of this machine)\n", settings.host,
@@ -591,9 +327,15 @@ int serve(const Settings& settings, std::ostream& log, const std::function<bool(
 
   const int code = render_saves(state, watcher, files, log, stopped);
   state.stop();
+  http.stop_receiving();
   http.stop();
   listener.join();
   return code;
+}
+
+int serve(const Settings& settings, std::ostream& log, const std::function<bool()>& stopped) {
+  Service service(settings);
+  return service.run(log, stopped);
 }
 
 }  // namespace pita::serve

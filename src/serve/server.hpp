@@ -19,8 +19,10 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pita::serve {
@@ -36,6 +38,31 @@ struct Settings {
 
 // A random token: 32 hexadecimal digits from the system's random source.
 std::string random_token();
+
+// One `pita serve`: its scenes, its routes and its HTTP server.
+class Service {
+ public:
+  explicit Service(const Settings& settings);
+  ~Service();
+  Service(const Service&) = delete;
+  Service& operator=(const Service&) = delete;
+
+  // Renders every scene from its file (run does it first).
+  void render_all();
+
+  // Serves until `stopped` (as serve()).
+  int run(std::ostream& log, const std::function<bool()>& stopped);
+
+  // The bytes of the answer to one request given as bytes, through the
+  // same bounds, token check and routes as a request on the socket (the
+  // tests, the fuzz target). An event stream sends its head only: its
+  // messages flow on a socket of a server that listens.
+  std::string answer(std::string_view request);
+
+ private:
+  struct Parts;
+  std::unique_ptr<Parts> parts_;
+};
 
 // Serves until `stopped` returns true (it is asked every 100 ms) or a
 // request fails to bind. Prints the page's address to `log` once listening.

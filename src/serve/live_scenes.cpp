@@ -1,0 +1,270 @@
+#include "serve/live_scenes.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "analysis/claims.hpp"
+#include "analysis/measure.hpp"
+#include "analysis/measure_report.hpp"
+#include "animate/frame.hpp"
+#include "animate/timeline.hpp"
+#include "io/output_file.hpp"
+#include "motion/stage.hpp"
+#include "render/panel_drawing.hpp"
+#include "scene/image_file.hpp"
+#include "scene/json_text.hpp"
+#include "scene/limits.hpp"
+#include "scene/located_error.hpp"
+#include "serve/json_edit.hpp"
+#include "serve/scene_edit.hpp"
+
+namespace pita::serve {
+
+Json error_json(const std::exception_ptr& thrown, const std::string& path) {
+  Json error{{"file", path}, {"line", 0}, {"column", 0}, {"pointer", ""}, {"reason", ""}, {"message", ""}};
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const scene::LocatedError& e) {
+    error.update({{"file", e.file()},
+                  {"line", e.line()},
+                  {"column", e.column()},
+                  {"pointer", e.pointer()},
+                  {"reason", e.reason()},
+                  {"message", e.what()}});
+  } catch (const std::exception& e) {
+    error.update({{"reason", e.what()}, {"message", path + ": " + e.what()}});
+  }
+  return error;
+}
+
+int error_status(const std::exception_ptr& thrown) {
+  try {
+    std::rethrow_exception(thrown);
+  } catch (const scene::LocatedError& e) {
+    return scene::answer(e.kind()).http_status;
+  } catch (...) {
+    return 422;
+  }
+}
+
+LiveScenes::LiveScenes(const Settings& settings) : settings_(settings) {
+  for (const fs::path& path : settings.scenes) {
+    auto state = std::make_unique<SceneState>();
+    state->path = path;
+    state->files = {path};
+    scenes_.push_back(std::move(state));
+  }
+}
+
+void LiveScenes::render(std::size_t i) {
+  SceneState& state = *scenes_[i];
+  std::shared_ptr<const scene::Scene> scene;
+  std::string svg;
+  std::optional<Json> error;
+  render::Figure figure;
+  Json claims = Json::array();
+  std::string text;
+  try {
+    text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
+    scene = std::make_shared<const scene::Scene>(scene::parse_scene(text, state.path.string(), read_options()));
+    const motion::Stage stage(*scene);
+    figure = render::build_figure(stage);
+    svg = render::render_figure(*scene, figure, render::Format::svg);
+    for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
+      claims.push_back(
+          {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
+    }
+  } catch (...) {
+    error = error_json(std::current_exception(), state.path.string());
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!error) {
+      state.scene = scene;
+      state.svg = std::move(svg);
+      state.placements = figure.placements;
+      state.claims = std::move(claims);
+      state.text = std::move(text);
+      state.files = {state.path};
+      for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
+    }
+    state.error = std::move(error);
+    ++state.version;
+  }
+  changed_.notify_all();
+}
+
+std::vector<fs::path> LiveScenes::watched() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<fs::path> files;
+  for (const auto& state : scenes_) files.insert(files.end(), state->files.begin(), state->files.end());
+  return files;
+}
+
+std::vector<std::size_t> LiveScenes::scenes_of(const std::set<fs::path>& saved) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < scenes_.size(); ++i) {
+    for (const fs::path& file : scenes_[i]->files) {
+      if (saved.count(fs::absolute(file).lexically_normal()) != 0) {
+        which.push_back(i);
+        break;
+      }
+    }
+  }
+  return which;
+}
+
+Json LiveScenes::scenes_json() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  Json all = Json::array();
+  for (std::size_t i = 0; i < scenes_.size(); ++i) {
+    const SceneState& state = *scenes_[i];
+    Json entry{{"index", i},
+               {"name", state.path.stem().string()},
+               {"path", state.path.string()},
+               {"version", state.version},
+               {"title", state.scene ? state.scene->title : ""},
+               {"error", state.error ? *state.error : Json(nullptr)},
+               {"timeline", nullptr},
+               {"handles", Json::array()},
+               {"claims", state.claims},
+               {"panels", Json::array()}};
+    // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
+    for (const render::PanelPlacement& placement : state.placements) {
+      entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
+    }
+    if (settings_.edit && state.scene) {
+      for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
+        entry["handles"].push_back({{"panel", handle.panel},
+                                    {"pointer", handle.pointer},
+                                    {"part", handle.part},
+                                    {"at", {handle.at.real(), handle.at.imag()}}});
+      }
+    }
+    if (state.scene) {
+      try {
+        const animate::Timeline timeline = animate::make_timeline(*state.scene);
+        entry["timeline"] = Json{{"first", timeline.first},
+                                 {"last", timeline.last},
+                                 {"frames", timeline.frames},
+                                 {"fps", timeline.fps},
+                                 {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
+      } catch (const std::exception&) {
+        // no motion to play (a figure without one)
+      }
+    }
+    all.push_back(entry);
+  }
+  return all;
+}
+
+std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at) {
+  std::shared_ptr<const scene::Scene> scene;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+    scene = scenes_[i]->scene;
+  }
+  if (!scene) return std::nullopt;
+  const animate::Timeline timeline = animate::make_timeline(*scene);
+  const render::Figure figure =
+      animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
+  return render::render_figure(*scene, figure, render::Format::svg);
+}
+
+std::optional<std::string> LiveScenes::measures(std::size_t i) {
+  std::shared_ptr<const scene::Scene> scene;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    scene = scenes_[i]->scene;
+  }
+  if (!scene) return std::nullopt;
+  analysis::check_measure_work(*scene);
+  return analysis::measures_json(scene->path, analysis::measure_scene(*scene));
+}
+
+std::vector<std::uint64_t> LiveScenes::versions_after(const std::vector<std::uint64_t>& seen,
+                                                      std::chrono::milliseconds wait) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  const auto now = [&] {
+    std::vector<std::uint64_t> versions;
+    for (const auto& state : scenes_) versions.push_back(state->version);
+    return versions;
+  };
+  changed_.wait_for(lock, wait, [&] { return now() != seen || stopping_; });
+  return now();
+}
+
+Json LiveScenes::edit(std::size_t i, const Json& request) {
+  const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
+  const fs::path path = scenes_[i]->path;
+  const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
+  std::vector<Change> changes;
+  if (request.contains("drag")) {
+    const Json& d = request.at("drag");
+    // Where the page drew the handle is where the figure it showed put it.
+    if (d.contains("version")) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (d.at("version").get<std::uint64_t>() != scenes_[i]->version) {
+        throw std::invalid_argument("the figure changed while dragging: drag again");
+      }
+    }
+    const scene::Scene scene = scene::parse_scene(text, path.string(), read_options());
+    const motion::Stage stage(scene);
+    const render::Figure figure = render::build_figure(stage);
+    // An index of the figure's panels: 1e20 or -1 would be read as another panel.
+    const Json& panel = d.at("panel");
+    if (!panel.is_number_unsigned() || panel.get<std::uint64_t>() >= figure.placements.size()) {
+      throw std::invalid_argument(fmt::format("\"panel\" must be the index of a panel of the figure, 0 to {} (got {})",
+                                              figure.placements.size() - 1,
+                                              panel.dump(-1, ' ', false, Json::error_handler_t::replace)));
+    }
+    changes =
+        drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
+             d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
+  } else {
+    for (const Json& change : request.at("changes")) {
+      changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      check_change(text, changes.back());
+    }
+  }
+  std::string edited = text;
+  Json previous = Json::array();
+  for (const Change& change : changes) {
+    const TextSpan span = value_span(edited, change.pointer);
+    previous.push_back({{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}});
+    edited = replace_value(edited, change.pointer, change.value);
+  }
+  // Refused unless the result is a scene pita draws.
+  const scene::Scene checked = scene::parse_scene(edited, path.string(), read_options());
+  const motion::Stage stage(checked);
+  render::render_figure(checked, render::build_figure(stage), render::Format::svg);
+  // The file itself (through a link, its target), with the permissions it had.
+  const fs::path target = fs::canonical(path);
+  const fs::perms permissions = fs::status(target).permissions();
+  // Not over a save made since the edit read the file (an editor's, while
+  // the edit was checked): the file is left as it is when it changed.
+  if (!io::replace_file_if_unchanged(target, text, edited)) {
+    throw std::invalid_argument(
+        "the file changed while the edit was checked (saved by another program): it is kept as it is; drag again");
+  }
+  fs::permissions(target, permissions);
+  return Json{{"previous", previous}};
+}
+
+void LiveScenes::stop() {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+}
+
+bool LiveScenes::stopping() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return stopping_;
+}
+
+}  // namespace pita::serve

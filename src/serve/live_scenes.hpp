@@ -1,0 +1,98 @@
+// The scenes of `pita serve`: each one's last good figure, what is wrong
+// with its file now, its claims measured, and the edits written into it.
+// The routes of server.cpp answer from here; the watching thread renders
+// each saved scene again (render).
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
+#include "serve/server.hpp"
+
+namespace pita::serve {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// What the page shows of an error: where (file, line:column or JSON Pointer) and why.
+Json error_json(const std::exception_ptr& thrown, const std::string& path);
+
+// The HTTP status of the answer to a request that met the error: its kind's
+// row of scene::kLocatedAnswers for a located error, else 422 (the scene, as
+// it is, cannot be drawn or measured).
+int error_status(const std::exception_ptr& thrown);
+
+// One scene of the command line: its last good figure and what is wrong now.
+struct SceneState {
+  fs::path path;
+  std::uint64_t version = 0;
+  std::shared_ptr<const scene::Scene> scene;       // the last good one
+  std::string svg;                                 // its figure
+  std::optional<Json> error;                       // the last save's, when it could not be drawn
+  std::vector<fs::path> files;                     // the scene and its images (what is watched)
+  std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
+  Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
+  std::string text;                                // the file it was read from
+};
+
+class LiveScenes {
+ public:
+  explicit LiveScenes(const Settings& settings);
+
+  // Renders scene i from its file; keeps the last good figure when it fails.
+  void render(std::size_t i);
+
+  std::vector<fs::path> watched();
+
+  // The scenes whose files are among `saved`.
+  std::vector<std::size_t> scenes_of(const std::set<fs::path>& saved);
+
+  Json scenes_json();
+
+  std::optional<std::string> figure(std::size_t i, std::optional<double> at);
+
+  std::optional<std::string> measures(std::size_t i);
+
+  // Waits (at most `wait`) for a render newer than `seen`; the versions now.
+  std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait);
+
+  // Applies an edit to scene i's file: checks the result as a scene (and
+  // draws it) before writing it atomically. Returns the changes that undo
+  // it; throws what reading or drawing the result throws, and
+  // std::invalid_argument for a request that names no handle or value.
+  Json edit(std::size_t i, const Json& request);
+
+  void stop();
+  bool stopping();
+  std::size_t size() const { return scenes_.size(); }
+
+ private:
+  // How the scene files are read (--allow-absolute-paths).
+  scene::ReadOptions read_options() const {
+    scene::ReadOptions options;
+    options.allow_absolute_paths = settings_.allow_absolute_paths;
+    return options;
+  }
+
+  const Settings& settings_;
+  std::vector<std::unique_ptr<SceneState>> scenes_;
+  std::mutex mutex_;
+  std::mutex edit_mutex_;  // one edit of the files at a time
+  std::condition_variable changed_;
+  bool stopping_ = false;
+};
+
+}  // namespace pita::serve
