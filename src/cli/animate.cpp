@@ -135,7 +135,7 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.threads = threads_from_environment();
   request.ffmpeg = ffmpeg_from_environment();
   try {
-    const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths});
+    const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths, std::nullopt});
     const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {
       if (options.quiet) continue;

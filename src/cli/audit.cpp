@@ -20,6 +20,7 @@
 #include "animate/progress.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
+#include "cli/usage_error.hpp"
 #include "core/methods.hpp"
 #include "io/output_file.hpp"
 #include "render/audit_table.hpp"
@@ -30,11 +31,6 @@
 namespace pita::cli {
 
 namespace {
-
-class UsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 std::vector<Method> parse_methods(const std::string& list) {
   std::vector<Method> out;

@@ -10,8 +10,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "analysis/claims.hpp"
 #include "cli/failure.hpp"
 #include "lint/lint.hpp"
+#include "motion/no_motion.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
 
@@ -84,7 +86,14 @@ ExitCode run_lint(const LintOptions& options) {
     try {
       const scene::Scene scene = scene::load_scene(path);
       const motion::Stage stage(scene);
-      const lint::Report report = lint::lint_figure(stage, render::build_figure(stage));
+      // Claims that cannot be measured are pita check's to report: the lint goes on without them.
+      std::vector<analysis::ClaimOutcome> claims;
+      try {
+        claims = analysis::check_claims(stage);
+      } catch (const scene::SceneError&) {
+      } catch (const motion::NoMotion&) {
+      }
+      const lint::Report report = lint::lint_figure(stage, render::build_figure(stage), claims);
       if (!report.clean()) code = worse(code, ExitCode::golden_mismatch);
       if (options.format == "json") {
         nlohmann::json findings = nlohmann::json::array();

@@ -17,6 +17,7 @@
 #include "cli/audit.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
+#include "cli/usage_error.hpp"
 #include "core/methods.hpp"
 #include "io/output_file.hpp"
 #include "render/figure.hpp"
@@ -27,11 +28,6 @@ namespace pita::cli {
 
 namespace pose_audit_cli {
 
-class PoseUsageError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 // --methods among the pose methods (the registry's names), each of both
 // dimensions and through three poses.
 std::vector<PoseMethod> parse_pose_methods(const std::string& list) {
@@ -41,12 +37,12 @@ std::vector<PoseMethod> parse_pose_methods(const std::string& list) {
     while (!name.empty() && name.front() == ' ') name.erase(name.begin());
     while (!name.empty() && name.back() == ' ') name.pop_back();
     if (name.empty()) {
-      throw PoseUsageError("--methods: an empty name (give comma-separated pose methods, e.g. P6,polySAM)");
+      throw UsageError("--methods: an empty name (give comma-separated pose methods, e.g. P6,polySAM)");
     }
     const PoseMethod* method = find_method_of<PoseMethod>(name);
-    if (method == nullptr) throw PoseUsageError("--methods: " + unknown_method_reason(name, is_method_of<PoseMethod>));
+    if (method == nullptr) throw UsageError("--methods: " + unknown_method_reason(name, is_method_of<PoseMethod>));
     if (!analysis::pose_auditable(*method)) {
-      throw PoseUsageError(fmt::format(
+      throw UsageError(fmt::format(
           "--methods: {} is not measured: the pose audit takes the methods of both dimensions through three poses "
           "({})",
           method_label(entry_of(*method)), [] {
@@ -67,14 +63,14 @@ analysis::PoseAuditOptions options_of(const PoseAuditCliOptions& options) {
   if (options.methods) audit.methods = parse_pose_methods(*options.methods);
   if (options.dimension) audit.dimensions = {*options.dimension};
   if (options.configs < 1 || options.configs > analysis::kMaxAuditConfigs) {
-    throw PoseUsageError(
+    throw UsageError(
         fmt::format("--configs: must be between 1 and {} (got {})", analysis::kMaxAuditConfigs, options.configs));
   }
   audit.configs = options.configs;
   try {
     audit.seed = parse_audit_seed(options.seed);
   } catch (const std::invalid_argument& error) {
-    throw PoseUsageError(error.what());
+    throw UsageError(error.what());
   }
   audit.jobs = options.jobs > 0 ? options.jobs : threads_from_environment();
   return audit;
@@ -149,8 +145,7 @@ ExitCode run_pose_audit_command(const PoseAuditCliOptions& options) {
       const std::string extension = fs::path(*options.output).extension().string();
       table_format = render::format_from_name(extension.empty() ? "" : extension.substr(1));
       if (!table_format) {
-        throw pose_audit_cli::PoseUsageError(
-            fmt::format("-o: {}: the table is drawn as .svg, .png or .pdf", *options.output));
+        throw UsageError(fmt::format("-o: {}: the table is drawn as .svg, .png or .pdf", *options.output));
       }
       const fs::path folder = fs::path(*options.output).parent_path();
       std::error_code error;
@@ -182,7 +177,7 @@ ExitCode run_pose_audit_command(const PoseAuditCliOptions& options) {
       return ExitCode::failure;
     }
     return ExitCode::success;
-  } catch (const pose_audit_cli::PoseUsageError& error) {
+  } catch (const UsageError& error) {
     std::cerr << "pita: audit poses: " << error.what() << '\n';
     return ExitCode::bad_input;
   } catch (...) {

@@ -71,8 +71,8 @@ Outputs render_outputs(const fs::path& scene_path) {
   const motion::Stage stage(scene);
   const render::Figure figure = render::build_figure(stage);
   Outputs out;
-  out.claims = analysis::check_claims(stage);   // measured on the motions drawn
-  out.lint = lint::lint_figure(stage, figure);  // on the figure drawn
+  out.claims = analysis::check_claims(stage);               // measured on the motions drawn
+  out.lint = lint::lint_figure(stage, figure, out.claims);  // on the figure drawn
   out.data = figure_data_text(figure_data(scene_name(scene_path), scene, figure));
   out.svg = render::render_figure(scene, figure, render::Format::svg);
   out.png = render::render_figure(scene, figure, render::Format::png);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/claims.hpp"
 #include "motion/stage.hpp"
 #include "render/canvas_geometry.hpp"
 #include "render/figure.hpp"
@@ -79,9 +80,11 @@ struct FigureGeometry {
 FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& figure);
 
 // The claims of the stage's arrow panels that a distance between drawn
-// motions is above a bound, with the distance measured. A claim whose
-// measure fails is left out: pita check reports it.
-std::vector<ClaimedDistance> claimed_distances(const motion::Stage& stage);
+// motions is above a bound and that hold, with the distance measured
+// (`claims`: their outcomes, as analysis::check_claims gives them, in order).
+// A claim that fails is left out: pita check reports it.
+std::vector<ClaimedDistance> claimed_distances(const motion::Stage& stage,
+                                               const std::vector<analysis::ClaimOutcome>& claims);
 
 // "#rrggbb".
 std::string color_text(const scene::Color& color);

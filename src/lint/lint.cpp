@@ -28,10 +28,11 @@ std::size_t Report::accepted() const {
       std::count_if(findings.begin(), findings.end(), [](const Finding& f) { return !f.reason.empty(); }));
 }
 
-Report lint_figure(const motion::Stage& stage, const render::Figure& figure) {
+Report lint_figure(const motion::Stage& stage, const render::Figure& figure,
+                   const std::vector<analysis::ClaimOutcome>& claims) {
   const scene::Scene& scene = stage.scene();
   FigureGeometry geometry = figure_geometry(scene, figure);
-  geometry.claimed = claimed_distances(stage);
+  geometry.claimed = claimed_distances(stage, claims);
   Report report;
   for (const Check check : check_functions()) check(geometry, scene.lint, report.findings);
   std::vector<bool> used(scene.lint.allow.size(), false);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/claims.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
@@ -33,8 +34,10 @@ struct Report {
 };
 
 // The lint of a figure built from the stage's motions (render::build_figure),
-// the claims measured on them.
-Report lint_figure(const motion::Stage& stage, const render::Figure& figure);
+// given its claims as analysis::check_claims measured them on those motions
+// (pita check measures them once for both; empty when they cannot be measured).
+Report lint_figure(const motion::Stage& stage, const render::Figure& figure,
+                   const std::vector<analysis::ClaimOutcome>& claims);
 
 // "/layers/3: text-over-data: the label ...; fix: ..." (and "(accepted: REASON)").
 std::string describe(const Finding& finding);

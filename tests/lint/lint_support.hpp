@@ -24,7 +24,7 @@ inline std::string arrow_scene(const std::string& rest,
 inline Report lint_text(const std::string& json) {
   const scene::Scene scene = scene::parse_scene(json, "test.json");
   const motion::Stage stage(scene);
-  return lint_figure(stage, render::build_figure(stage));
+  return lint_figure(stage, render::build_figure(stage), analysis::check_claims(stage));
 }
 
 inline int count(const Report& report, const std::string& check) {
