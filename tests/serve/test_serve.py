@@ -6,6 +6,7 @@ temporary. Run by ctest serve.browser (tests/CMakeLists.txt)."""
 import json
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -192,6 +193,27 @@ def test_two_figures_keep_their_own_glyphs(folder, browser):
         served.stop()
 
 
+def test_the_page_links_only_within_itself(folder, browser):
+    """Every href and src of the page, figures included, is a fragment, an inline image or a
+    path of this server: never another scheme, whatever the scene is named."""
+    save(folder, FIG03, name="javascript:alert(1).json")
+    served = Served(folder, ["javascript:alert(1).json"])
+    try:
+        browser.open(served.url)
+        eventually(lambda: figure_text(browser), 60)
+        links = browser.evaluate("""[...document.querySelectorAll('*')].flatMap(e => [...e.attributes]
+            .filter(a => /(^|:)(href|src|action)$/i.test(a.name)).map(a => a.value))""")
+        check(links, "the page has links (the figure's glyphs)")
+        scheme = re.compile(r"^\s*[a-zA-Z][a-zA-Z0-9+.-]*:")
+        bad = [link for link in links
+               if scheme.match(link) and not link.startswith("data:image/") and not link.startswith(served.base)]
+        check(not bad, f"links out of the page: {bad[:5]}")
+        check(browser.evaluate("document.querySelector('#scene-0 h2').textContent").startswith("javascript:alert(1)"),
+              "the scene's name is shown as text")
+    finally:
+        served.stop()
+
+
 def measure_latency(folder, browser, name, latencies, trials=5):
     """Save to updated figure in the page, for scenes/NAME.json (the median of `trials` saves)."""
     scene = json.loads((SOURCE / "scenes" / f"{name}.json").read_text())
@@ -263,14 +285,16 @@ def main():
     browser = Browser()
     try:
         for test in (test_the_page_follows_the_saves, test_dragging_writes_the_scene_file,
-                     test_two_figures_keep_their_own_glyphs, test_hostile_requests_are_refused,
+                     test_two_figures_keep_their_own_glyphs, test_the_page_links_only_within_itself,
+                     test_hostile_requests_are_refused,
                      test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
             if test is test_the_page_follows_the_saves:
                 test(folder, browser, latencies)
-            elif test in (test_dragging_writes_the_scene_file, test_two_figures_keep_their_own_glyphs):
+            elif test in (test_dragging_writes_the_scene_file, test_two_figures_keep_their_own_glyphs,
+                          test_the_page_links_only_within_itself):
                 test(folder, browser)
             else:
                 test(folder)
