@@ -12,8 +12,10 @@
 #include "golden/check.hpp"
 #include "golden/golden_file.hpp"
 #include "golden/report.hpp"
+#include "io/input_file.hpp"
 #include "io/output_file.hpp"
 #include "render/panel_drawing.hpp"
+#include "scene/image_file.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::cli {
@@ -114,10 +116,40 @@ changes (git diff, the PNGs) before committing them, and say why they changed.
   return o;
 }
 
+namespace {
+
+// What pita check read: the scenes, their images and their goldens (which
+// the report must not replace).
+std::vector<fs::path> check_inputs(const std::vector<fs::path>& scenes,
+                                   const std::vector<golden::ReportEntry>& report) {
+  std::vector<fs::path> inputs(scenes.begin(), scenes.end());
+  for (const golden::ReportEntry& entry : report) {
+    for (const golden::FileCheck& file : entry.check.files) inputs.push_back(file.golden);
+  }
+  for (const fs::path& scene : scenes) {
+    try {
+      for (const fs::path& image : scene::image_files(scene::load_scene(scene))) inputs.push_back(image);
+    } catch (const std::exception&) {
+      // a bad scene: its error is in the report, and it drew no image
+    }
+  }
+  return inputs;
+}
+
+}  // namespace
+
 ExitCode run_check(const GoldenOptions& options) {
   const std::vector<fs::path> scenes = scenes_of(options);
   if (scenes.empty()) {
     std::cerr << "pita: check: no scenes given and no scenes/*.json here\n";
+    return ExitCode::bad_input;
+  }
+  // The goldens change only by update-goldens: a report among them could replace one.
+  if (options.report_dir && io::within_folder(*options.report_dir, options.golden_dir)) {
+    std::cerr << fmt::format(
+        "pita: --report {}: the report would be written among the goldens ({}), which only "
+        "pita update-goldens writes: give another folder\n",
+        *options.report_dir, options.golden_dir);
     return ExitCode::bad_input;
   }
   ExitCode result = ExitCode::success;
@@ -173,7 +205,7 @@ ExitCode run_check(const GoldenOptions& options) {
       });
   if (options.report_dir) {
     try {
-      golden::write_report(*options.report_dir, report);
+      golden::write_report(*options.report_dir, report, check_inputs(scenes, report));
       std::cerr << "report: " << (fs::path(*options.report_dir) / "index.html").string() << '\n';
     } catch (...) {
       const Failure failure = current_failure("--report " + *options.report_dir);

@@ -9,6 +9,7 @@
 
 #include "cli/usage_error.hpp"
 #include "core/methods.hpp"
+#include "io/input_file.hpp"
 #include "scene/image_file.hpp"
 #include "scene/limits.hpp"
 #include "scene/located_error.hpp"
@@ -60,14 +61,6 @@ void refuse_shared_outputs(const RenderOptions& options, const std::vector<rende
                     "file's name); rename one, or render them into different directories",
                     first, path, target.string()));
   }
-}
-
-// Whether two paths name one file: the same file when both exist (links
-// followed), else the same canonical path.
-bool same_file(const fs::path& a, const fs::path& b) {
-  std::error_code error;
-  if (fs::exists(a, error) && fs::exists(b, error)) return fs::equivalent(a, b, error) && !error;
-  return fs::weakly_canonical(a, error) == fs::weakly_canonical(b, error) && !error;
 }
 
 }  // namespace
@@ -136,7 +129,7 @@ void refuse_an_input(const scene::Scene& scene, const fs::path& output) {
   std::vector<std::pair<fs::path, std::string>> inputs{{scene.path, "the scene file"}};
   for (const fs::path& image : scene::image_files(scene)) inputs.emplace_back(image, "an image its shapes draw");
   for (const auto& [input, what] : inputs) {
-    if (!same_file(input, output)) continue;
+    if (!io::same_file(input, output)) continue;
     throw scene::SceneError(
         scene.path, "",
         fmt::format("the output {} is {}, which it would replace: write the figure elsewhere", output.string(), what));

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "io/input_file.hpp"
 #include "io/output_file.hpp"
 #include "text/html.hpp"
 
@@ -147,9 +148,31 @@ std::string scene_section(const fs::path& dir, const ReportEntry& e) {
   return html;
 }
 
+// Refuses a report whose files would replace an input of the check.
+void refuse_replacing_inputs(const fs::path& dir, const std::vector<ReportEntry>& entries,
+                             const std::vector<fs::path>& inputs) {
+  std::vector<fs::path> files{dir / "index.html"};
+  for (const ReportEntry& e : entries) {
+    if (!e.error.empty() || e.check.matches()) continue;
+    for (const char* suffix : {".expected.png", ".actual.png", ".diff.png", ".expected.svg", ".actual.svg"}) {
+      files.push_back(dir / (e.check.name + suffix));
+    }
+  }
+  for (const fs::path& file : files) {
+    for (const fs::path& input : inputs) {
+      if (!io::same_file(file, input)) continue;
+      throw GoldenError(
+          fmt::format("the report's {} would replace {}, an input of this check: write the report "
+                      "into another folder",
+                      file.string(), input.string()));
+    }
+  }
+}
+
 }  // namespace
 
-void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries) {
+void write_report(const fs::path& dir, const std::vector<ReportEntry>& entries, const std::vector<fs::path>& inputs) {
+  refuse_replacing_inputs(dir, entries, inputs);
   fs::create_directories(dir);
   std::string html = R"(<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>pita check report</title>

@@ -18,6 +18,10 @@ struct ReportEntry {
   SceneCheck check;
   std::string error;  // non-empty: the scene could not be checked (bad scene or golden)
 };
-void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries);
+// A file of the report that would replace one of `inputs` (the scenes, their
+// images and goldens: `--report golden/x` when a scene is named x.actual) is
+// refused before anything is written: GoldenError naming both.
+void write_report(const std::filesystem::path& dir, const std::vector<ReportEntry>& entries,
+                  const std::vector<std::filesystem::path>& inputs);
 
 }  // namespace pita::golden

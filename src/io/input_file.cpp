@@ -108,4 +108,27 @@ std::string read_regular_file(const std::filesystem::path& path, std::size_t max
   throw InputError(Kind::too_large, size_text(max_bytes));
 }
 
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code error;
+  if (std::filesystem::exists(a, error) && std::filesystem::exists(b, error)) {
+    return std::filesystem::equivalent(a, b, error) && !error;
+  }
+  return std::filesystem::weakly_canonical(a, error) == std::filesystem::weakly_canonical(b, error) && !error;
+}
+
+bool within_folder(const std::filesystem::path& path, const std::filesystem::path& folder) {
+  std::error_code error;
+  const std::filesystem::path p = std::filesystem::weakly_canonical(path, error);
+  if (error) return false;
+  const std::filesystem::path f = std::filesystem::weakly_canonical(folder, error);
+  if (error) return false;
+  auto it = p.begin();
+  for (const std::filesystem::path& part : f) {
+    if (part.empty()) continue;  // the trailing "" of "dir/"
+    if (it == p.end() || *it != part) return false;
+    ++it;
+  }
+  return true;
+}
+
 }  // namespace pita::io

@@ -58,4 +58,13 @@ std::optional<std::string> neither_file_nor_pipe(const std::filesystem::path& pa
 // further than one byte past the limit).
 std::string read_regular_file(const std::filesystem::path& path, std::size_t max_bytes);
 
+// Whether two paths name one file: the same file when both exist (links
+// followed, hard links included), else the same canonical path. How an output
+// is refused when it would replace an input of the same run.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// Whether `path` is `folder` or lies inside it, links followed as far as
+// they exist (weakly_canonical).
+bool within_folder(const std::filesystem::path& path, const std::filesystem::path& folder);
+
 }  // namespace pita::io

@@ -82,6 +82,32 @@ TEST_F(Check, ReportReferencesImagesThatExist) {
   EXPECT_NE(html.find("DIFFERS"), std::string::npos);
 }
 
+// The report never replaces what the check read: not a golden (it is refused
+// among them, exit 2), not an image a scene draws.
+TEST_F(Check, TheReportNeverReplacesAnInput) {
+  dir.write("fig.json", scene("3.2"));
+  const std::string golden = read_file(dir.path() / "golden/fig/fig.png");
+  for (const char* folder : {"golden/fig", "golden", "./golden/../golden/x"}) {
+    const RunResult r = run({"check", "fig.json", "--report", folder});
+    EXPECT_EQ(r.exit_code, 2) << folder;
+    EXPECT_NE(r.err.find("among the goldens"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(read_file(dir.path() / "golden/fig/fig.png"), golden);
+  EXPECT_FALSE(fs::exists(dir.path() / "golden/fig/index.html"));
+  EXPECT_FALSE(fs::exists(dir.path() / "golden/x"));
+
+  // A scene drawing the image the report would name its actual PNG.
+  fs::copy_file(dir.path() / "golden/fig/fig.png", dir.path() / "pic.actual.png");
+  std::string drawing = scene("3");
+  drawing.insert(drawing.rfind('}'), R"(, "shapes": [{"image": "pic.actual.png", "box": [[0, 0], [1, 1]]}])");
+  dir.write("pic.json", drawing);
+  const RunResult r = run({"check", "pic.json", "--report", "."});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("would replace ./pic.actual.png, an input of this check"), std::string::npos) << r.err;
+  EXPECT_EQ(read_file(dir.path() / "pic.actual.png"), golden);
+  EXPECT_FALSE(fs::exists(dir.path() / "index.html"));
+}
+
 // Claims (docs/reference/check.md "Claims"): measured on the motions drawn; one that does not
 // hold fails `check` (exit 1) naming its pointer, words and values, while
 // the goldens still match, and `render` only warns.
