@@ -10,6 +10,7 @@
 #include "animate/timeline.hpp"
 #include "cli/environment.hpp"
 #include "cli/failure.hpp"
+#include "cli/render_plan.hpp"
 #include "render/budget.hpp"
 #include "render/figure.hpp"
 #include "scene/limits.hpp"
@@ -136,6 +137,7 @@ ExitCode run_animate(const AnimateOptions& options) {
   request.ffmpeg = ffmpeg_from_environment();
   try {
     const scene::Scene scene = scene::load_scene(options.scene_path, {options.allow_absolute_paths, std::nullopt});
+    refuse_an_input(scene, options.output);  // an animated SVG or a video never replaces an input
     const animate::Timeline timeline = animate::make_timeline(scene, {options.fps, options.duration, options.frames});
     for (const auto& path : animate::write_animation(scene, timeline, request)) {
       if (options.quiet) continue;

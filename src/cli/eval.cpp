@@ -20,6 +20,7 @@
 #include "core/methods.hpp"
 #include "core/pitas/registry.hpp"
 #include "core/pose_motion.hpp"
+#include "io/input_file.hpp"
 #include "io/output_file.hpp"
 #include "motion/evaluation.hpp"
 #include "motion/sampler.hpp"
@@ -430,6 +431,14 @@ ExitCode run_eval(const EvalOptions& given) {
   EvalOptions options = given;
   if (const std::optional<std::string> error = output_format_error(options)) {
     std::cerr << "pita: " << *error << "\nRun 'pita eval --help' for usage.\n";
+    return ExitCode::bad_input;
+  }
+  // The frames never replace the scene they are read from.
+  if (options.output && !options.scene_path.empty() && io::same_file(*options.output, options.scene_path)) {
+    std::cerr << fmt::format(
+        "pita: -o {}: the output is the scene file {}, which it would replace: write the frames "
+        "elsewhere\n",
+        *options.output, options.scene_path);
     return ExitCode::bad_input;
   }
   if (options.batch) {

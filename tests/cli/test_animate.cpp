@@ -347,6 +347,24 @@ TEST(AnimateSvg, Fig23IsValidXmlWithOneGroupPerFrameUnderTwoMegabytes) {
   EXPECT_EQ(permissions_of(svg_path), 0666 & ~current_umask());
 }
 
+// An animation never replaces an input: here an image the scene draws (a PNG
+// named .svg, the one extension an image and an animation can share).
+TEST(AnimateSvg, TheOutputIsNeverAnInput) {
+  const ScratchDir dir;
+  std::string scene = read_file(kFig23);
+  const std::string image = "images/picture.png";
+  ASSERT_NE(scene.find(image), std::string::npos);
+  scene.replace(scene.find(image), image.size(), "pic.svg");
+  dir.write("f.json", scene);
+  fs::copy_file(kFig23.parent_path() / image, dir.path() / "pic.svg");
+  const std::string before = read_file(dir.path() / "pic.svg");
+  const RunResult r = run_pita({"animate", "f.json", "-o", "pic.svg", "--frames", "3"}, dir.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("the output pic.svg is an image its shapes draw, which it would replace"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(read_file(dir.path() / "pic.svg"), before);
+}
+
 // --frames and --fps decide the groups and the playing time; a scene that does
 // not loop plays once.
 TEST(AnimateSvg, FramesFlagAndANonLoopingScene) {

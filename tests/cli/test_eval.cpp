@@ -393,6 +393,18 @@ TEST_F(Eval, OutputExtensionChoosesTheFormatOrIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "frames.json"));
 }
 
+// The frames never replace the scene they come from, by its name or a link.
+TEST_F(Eval, TheOutputIsNeverTheScene) {
+  std::filesystem::create_symlink("scene.json", dir.path() / "link.json");
+  for (const char* output : {"scene.json", "./scene.json", "link.json"}) {
+    const RunResult r = run({"eval", "scene.json", "-o", output});
+    EXPECT_EQ(r.exit_code, 2) << output;
+    EXPECT_NE(r.err.find("the output is the scene file scene.json, which it would replace"), std::string::npos)
+        << r.err;
+    EXPECT_EQ(read_file(dir.path() / "scene.json"), kGoodScene);
+  }
+}
+
 // All or nothing: a frame that is not finite, after many chunks' worth of
 // good ones, leaves standard output empty and an existing -o file as it was.
 TEST_F(Eval, ALateNonFiniteFrameWritesNothing) {
