@@ -228,6 +228,26 @@ void set_up(httplib::Server& http, Site& site) {
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
+  // An answer with an error status always says why, also when it comes from
+  // the library (no such route, a malformed request) or from an exception.
+  http.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request&, httplib::Response& res) {
+    if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+    send_error(res, res.status,
+               res.status == 404   ? "no such page: pita serve answers / and the /api/ routes of its page"
+               : res.status == 400 ? "a malformed request"
+                                   : fmt::format("the request cannot be answered (HTTP {})", res.status));
+    return httplib::Server::HandlerResponse::Handled;
+  }));
+  http.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr thrown) {
+    std::string what = "an unknown exception";
+    try {
+      std::rethrow_exception(thrown);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    send_error(res, 500, "internal error, a bug in pita (please report it): " + what);
+  });
   for (const Route& route : kRoutes) {
     auto handler = [&site, handle = route.handle](const httplib::Request& req, httplib::Response& res) {
       handle(site, req, res);

@@ -52,6 +52,13 @@ TEST_F(ServiceTest, TheTokenOpensTheRoutes) {
   EXPECT_EQ(nlohmann::json::parse(body(scenes)).at(0).at("name"), "s");
   EXPECT_EQ(status(get("/api/figure/1" + token)), 404);
   EXPECT_EQ(status(get("/s.json" + token)), 404);
+  // The library's own refusals say why too: never an empty error.
+  const std::string unknown = get("/nothing" + token);
+  EXPECT_EQ(status(unknown), 404);
+  EXPECT_NE(body(unknown).find("no such page"), std::string::npos) << unknown;
+  const std::string put = service().answer("PUT /" + token + " HTTP/1.1\r\nHost: localhost\r\n\r\n");
+  EXPECT_GE(status(put), 400);
+  EXPECT_FALSE(body(put).empty()) << put;
 }
 
 TEST_F(ServiceTest, BoundsAndTheHostComeBeforeTheToken) {
