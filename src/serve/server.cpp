@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+#include <sys/socket.h>
 
 #include "serve/file_watch.hpp"
 #include "serve/live_scenes.hpp"
@@ -217,6 +218,14 @@ void set_up(httplib::Server& http, Site& site) {
   // kEventStreams streams, kReceiving requests being received, and room for
   // the requests being answered.
   http.new_task_queue = [] { return new httplib::ThreadPool(64); };
+  // SO_REUSEADDR only: a restart may bind while the old connections wait out
+  // TIME_WAIT, but a port another server listens on is refused (cpp-httplib's
+  // default adds SO_REUSEPORT, with which a second pita serve on a busy port
+  // shared it silently and each took half of the page's requests).
+  http.set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
   // Every request carries the token (as Jupyter's): a page of another site
   // cannot guess it, so it can neither read nor drive this server.
   http.set_pre_routing_handler([&site](const httplib::Request& req, httplib::Response& res) {

@@ -3,7 +3,8 @@ src/serve/http_request.cpp, docs/reference/serve.md "Security"): a flood of head
 chunked body, a body beyond the limit and a long request line are refused before they are read
 whole, and the server's memory stays flat; slow half-requests and dozens of event streams do
 not lock the page's own requests out; a Host that is not the address served is refused (DNS
-rebinding); SIGTERM stops the server within a second while clients hold it busy. Run by ctest
+rebinding); a second server on a busy port is refused; SIGTERM stops the server within a second
+while clients hold it busy. Run by ctest
 serve.limits (tests/CMakeLists.txt)."""
 import json
 import os
@@ -129,6 +130,14 @@ def test_the_host_must_be_the_address_served(served, client):
         check(client.exchange(client.request("/", host=host))[0] == 200, host)
 
 
+def test_a_busy_port_is_refused(served, client):
+    """A second pita serve on the port of the first is exit 3, naming the port (no sharing)."""
+    second = subprocess.run([os.environ.get("PITA_BINARY", "build/pita"), "serve", "s.json", "--port",
+                             str(client.port)], cwd=served.folder, capture_output=True, text=True, timeout=60)
+    check(second.returncode == 3 and f":{client.port}" in second.stderr, (second.returncode, second.stderr))
+    check(client.exchange(client.request("/"))[0] == 200, "the first server still answers")
+
+
 def slow_half_request(client, answers, stop):
     """Sends a request's head a byte every 0.3 s; records the server's answer."""
     try:
@@ -251,7 +260,7 @@ def main():
         try:
             client = Client(served)
             for test in (test_floods_are_refused_before_they_are_read, test_the_host_must_be_the_address_served,
-                         test_slow_clients_and_streams_do_not_lock_the_page_out):
+                         test_a_busy_port_is_refused, test_slow_clients_and_streams_do_not_lock_the_page_out):
                 started = time.monotonic()
                 test(served, client)
                 print(f"ok {test.__name__} ({time.monotonic() - started:.1f} s)")
