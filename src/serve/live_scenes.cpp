@@ -57,7 +57,7 @@ LiveScenes::LiveScenes(const Settings& settings) : settings_(settings) {
   }
 }
 
-void LiveScenes::render(std::size_t i) {
+void LiveScenes::render(std::size_t i, bool saved) {
   SceneState& state = *scenes_[i];
   std::shared_ptr<const scene::Scene> scene;
   std::string svg;
@@ -78,6 +78,16 @@ void LiveScenes::render(std::size_t i) {
   } catch (...) {
     error = error_json(std::current_exception(), state.path.string());
   }
+  // What the terminal says of it (before `error` and `claims` move into the state).
+  std::optional<std::string> error_line;
+  if (error) error_line = error->at("message").get<std::string>();
+  std::string claims_line;
+  if (!claims.empty()) {
+    const auto failing =
+        std::count_if(claims.begin(), claims.end(), [](const Json& c) { return !c.at("held").get<bool>(); });
+    claims_line = failing == 0 ? fmt::format(" ({} claims hold)", claims.size())
+                               : fmt::format(" ({} of {} claims fail)", failing, claims.size());
+  }
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!error) {
@@ -93,6 +103,16 @@ void LiveScenes::render(std::size_t i) {
     ++state.version;
   }
   changed_.notify_all();
+  if (error_line) {
+    say(*error_line + (saved ? "; the page keeps the last good figure" : ""));
+  } else if (saved) {
+    say(fmt::format("{}: saved, figure updated{}", state.path.string(), claims_line));
+  }
+}
+
+void LiveScenes::say(const std::string& line) {
+  const std::lock_guard<std::mutex> lock(log_mutex_);
+  if (log_ != nullptr) *log_ << "pita: " << line << '\n' << std::flush;
 }
 
 std::vector<fs::path> LiveScenes::watched() {

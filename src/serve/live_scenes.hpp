@@ -12,6 +12,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -53,7 +54,13 @@ class LiveScenes {
   explicit LiveScenes(const Settings& settings);
 
   // Renders scene i from its file; keeps the last good figure when it fails.
-  void render(std::size_t i);
+  // Says on the log what became of a save (`saved`), and any error.
+  void render(std::size_t i, bool saved = false);
+
+  // The terminal's log: one line per save, error, edit and refusal (none until set).
+  void set_log(std::ostream* log) { log_ = log; }
+  // Writes "pita: LINE" to the log, one line at a time across threads.
+  void say(const std::string& line);
 
   std::vector<fs::path> watched();
 
@@ -91,6 +98,8 @@ class LiveScenes {
   std::vector<std::unique_ptr<SceneState>> scenes_;
   std::mutex mutex_;
   std::mutex edit_mutex_;  // one edit of the files at a time
+  std::mutex log_mutex_;
+  std::ostream* log_ = nullptr;
   std::condition_variable changed_;
   bool stopping_ = false;
 };

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 #include <sys/socket.h>
 
@@ -184,15 +185,26 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
   } catch (const std::exception&) {
     return send_error(res, 400, "the request is not JSON");
   }
+  const std::string path = site.settings.scenes[*i].string();
   try {
-    send_json(res, 200, site.state.edit(*i, request));
+    const Json answer = site.state.edit(*i, request);
+    std::vector<std::string> pointers;
+    for (const Json& change : answer.at("previous")) pointers.push_back(change.at("pointer").get<std::string>());
+    site.state.say(fmt::format("{}: edited {}", path, fmt::join(pointers, ", ")));
+    send_json(res, 200, answer);
   } catch (const nlohmann::json::exception& e) {
+    site.state.say(fmt::format("{}: edit refused: the request lacks a field", path));
     send_error(res, 400, std::string("the request lacks a field: ") + e.what());
   } catch (const std::invalid_argument& e) {
+    site.state.say(fmt::format("{}: edit refused: {}", path, e.what()));
     send_error(res, 400, e.what());
   } catch (...) {
     // The edit would make the scene bad: refused, with the reason; the file is as it was.
-    send_failure(res, site.settings.scenes[*i].string(), "refused");
+    const Json error = error_json(std::current_exception(), path);
+    const std::string pointer = error.at("pointer").get<std::string>();
+    site.state.say(fmt::format("{}: edit refused: {}{}", path, pointer.empty() ? "" : pointer + ": ",
+                               error.at("reason").get<std::string>()));
+    send_failure(res, path, "refused");
   }
 }
 
@@ -286,7 +298,7 @@ int render_saves(LiveScenes& state, FileWatcher& watcher, std::vector<fs::path> 
     while (!stopped()) {
       const std::set<fs::path> saved = watcher.wait(std::chrono::milliseconds(100), std::chrono::milliseconds(20));
       if (saved.empty()) continue;
-      for (const std::size_t i : state.scenes_of(saved)) state.render(i);
+      for (const std::size_t i : state.scenes_of(saved)) state.render(i, true);
       now = state.watched();
       if (now != files) watcher.watch(files = std::move(now));
     }
@@ -340,6 +352,7 @@ int Service::run(std::ostream& log, const std::function<bool()>& stopped) {
     log << "pita: cannot watch the scenes (" << error.what() << ")\n";
     return 2;
   }
+  state.set_log(&log);
   render_all();
 
   const int port = bind_port(http, settings);

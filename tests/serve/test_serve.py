@@ -96,6 +96,12 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         eventually(lambda: not browser.evaluate("document.querySelector('#scene-0 .error.shown')"), 60,
                    what=lambda: "the error gone: " + page_state(browser))
         eventually(lambda: figure_text(browser) == first, 60, what=lambda: "the first figure back: " + page_state(browser))
+        # The terminal said each save, one line each: the good ones, and the errors.
+        said = served.stderr()
+        check(said.count("pita: s.json: saved, figure updated") >= 2, said)
+        check("1 of 3 claims fail" in said or "claims fail" in said, said)
+        check("s.json:2:" in said and "/keyframes/1/m: magnitude must be > 0" in said, said)
+        check("the page keeps the last good figure" in said, said)
 
         # The slider: the frame at its time, as pita render --at draws it.
         check(browser.evaluate("getComputedStyle(document.querySelector('#scene-0 .controls')).display") != "none",
@@ -153,6 +159,10 @@ def test_dragging_writes_the_scene_file(folder, browser):
                                       b', "pointer": "/keyframes/0", "part": "tail", "to": [1, 1]}}')
             check(status == 400 and b"must be the index of a panel of the figure" in body, f"panel {panel}: {status} {body}")
         check((folder / "s.json").read_text() == text, "a refused edit leaves the file")
+        said = served.stderr()
+        check("pita: s.json: edited /keyframes/0/p" in said, said)
+        check("pita: s.json: edit refused:" in said and "magnitude must be > 0" in said, said)
+        check("edit refused: \"panel\" must be the index of a panel" in said, said)
         # A save that is not UTF-8 (Latin-1): the error is answered, as JSON, never an empty 500.
         (folder / "s.json").write_bytes(text.replace('"title": "', '"title": "caf\xe9 ', 1).encode("latin-1"))
         status, body = eventually(lambda: (lambda r: r if r[0] == 200 and b"UTF-8" in r[1] else None)(
