@@ -151,6 +151,25 @@ def test_dragging_writes_the_scene_file(folder, browser):
         refused = eventually(lambda: browser.evaluate(
             "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60)
         check("/keyframes/0/m" in refused and "magnitude must be > 0" in refused, f"the reason: {refused}")
+        # The refusal is shown over the figure, which stays where it was; a good state clears it.
+        top = browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top")
+        browser.evaluate("views.get(0).refused.classList.remove('shown')")
+        check(browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top") == top,
+              "the banner does not move the figure")
+        browser.evaluate("views.get(0).refused.classList.add('shown')")
+        (folder / "s.json").write_text(text.replace('"samples": ', '"samples":  ', 1))
+        eventually(lambda: not browser.evaluate("document.querySelector('#scene-0 .refused.shown')"), 60,
+                   what="the banner cleared by the next good save")
+        (folder / "s.json").write_text(text)
+        # The slider's frames have no handles; the "figure" button brings the figure and its handles back.
+        eventually(lambda: browser.evaluate("document.querySelectorAll('#scene-0 circle.handle').length") > 0, 60)
+        browser.evaluate("""(() => { const s = document.querySelector('#scene-0 input[type=range]');
+            s.value = String((+s.min + +s.max) / 2); s.dispatchEvent(new Event('input')); })()""")
+        eventually(lambda: browser.evaluate("document.querySelectorAll('#scene-0 circle.handle').length") == 0
+                   and browser.evaluate("document.querySelector('#scene-0 button.still').style.display") == "", 60)
+        browser.evaluate("document.querySelector('#scene-0 button.still').click()")
+        eventually(lambda: browser.evaluate("document.querySelectorAll('#scene-0 circle.handle').length") > 0, 60,
+                   what="the handles back after the slider")
         status, body = served.get("/api/edit/0", data=b'{"changes": [{"pointer": "/keyframes/9", "value": "1"}]}')
         check(status == 400, f"a pointer to nothing: {status} {body}")
         # A drag naming a panel the figure does not have (1e20 read as an index was panel 0).
@@ -199,6 +218,14 @@ def test_two_figures_keep_their_own_glyphs(folder, browser):
         browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
         shown = eventually(lambda: browser.evaluate("document.querySelector('#scene-1 .measures').textContent"), 60)
         check(shown.startswith("P3") and "\n" not in shown, f"the measures of the panel under the pointer: {shown}")
+        # A save while the pointer stays: the measures follow the new figure, without leaving and coming back.
+        fig01 = json.loads((SOURCE / "scenes" / "fig01-eight-pitas.json").read_text())
+        fig01["keyframes"][1]["p"] = [fig01["keyframes"][1]["p"][0] + 1.5, fig01["keyframes"][1]["p"][1]]
+        save(folder, fig01, "b.json")
+        after = eventually(lambda: (lambda t: t != shown and t.startswith("P3") and t)(
+            browser.evaluate("document.querySelector('#scene-1 .measures').textContent")), 60,
+            what=lambda: browser.evaluate("document.querySelector('#scene-1 .measures').textContent"))
+        check("\n" not in after, f"still the panel under the pointer: {after}")
     finally:
         served.stop()
 
