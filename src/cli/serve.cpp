@@ -49,6 +49,18 @@ void add_serve_options(CLI::App& command, ServeOptions& options) {
   command.add_flag("--edit", options.edit,
                    "Let the page drag keyframe arrows (tail, tip) and pose corners, and write them into the scene "
                    "files (atomically, keeping the rest of each file as it is)");
+  command
+      .add_option("--token", options.token,
+                  "The token every request must give (16 to 128 letters, digits, - or _), instead of a new random "
+                  "one: open tabs reconnect after a restart with it")
+      ->type_name("T");
+  auto* keep = command.add_flag("--keep-token", options.keep_token,
+                                "Keep the token for this folder (in ~/.local/state/pita/serve-tokens/, readable by "
+                                "you only): a restart here reconnects the open tabs");
+  command.add_flag("--new-token", options.new_token, "With --keep-token: draw a new token and keep it instead")
+      ->needs(keep);
+  keep->excludes(command.get_option("--token"));
+  command.add_flag("--open", options.open, "Open the page in the browser (xdg-open) once it is served");
 }
 
 std::shared_ptr<ServeOptions> setup_serve(CLI::App& app) {
@@ -92,6 +104,10 @@ ExitCode run_serve(const ServeOptions& options) {
   std::vector<std::string> args{helper->string(), "--port", std::to_string(options.port), "--host", options.host};
   if (options.allow_absolute_paths) args.emplace_back("--allow-absolute-paths");
   if (options.edit) args.emplace_back("--edit");
+  if (!options.token.empty()) args.insert(args.end(), {"--token", options.token});
+  if (options.keep_token) args.emplace_back("--keep-token");
+  if (options.new_token) args.emplace_back("--new-token");
+  if (options.open) args.emplace_back("--open");
   args.emplace_back("--");
   args.insert(args.end(), options.scene_paths.begin(), options.scene_paths.end());
   std::vector<char*> argv;

@@ -25,7 +25,11 @@ struct ServeOptions {
   int port = 8765;
   std::string host = "127.0.0.1";
   bool allow_absolute_paths = false;
-  bool edit = false;  // --edit: dragging in the page writes into the scene files
+  bool edit = false;        // --edit: dragging in the page writes into the scene files
+  std::string token;        // --token: this token, not a new one
+  bool keep_token = false;  // --keep-token: the token kept for the current folder
+  bool new_token = false;   // --new-token: a new kept token
+  bool open = false;        // --open: the page in the browser (xdg-open)
 };
 
 // Adds the options of `pita serve` to `command` (pita's subcommand, and

@@ -15,6 +15,7 @@
 #include "cli/serve.hpp"
 #include "io/interrupt.hpp"
 #include "serve/server.hpp"
+#include "serve/token.hpp"
 
 namespace pita::cli {
 namespace {
@@ -65,7 +66,23 @@ int serve_main(const ServeOptions& options) {
   for (const std::string& path : options.scene_paths) settings.scenes.emplace_back(path);
   settings.host = options.host;
   settings.port = options.port;
-  settings.token = serve::random_token();
+  if (!options.token.empty()) {
+    if (const auto problem = serve::token_problem(options.token)) {
+      std::cerr << "pita: --token: " << *problem << '\n';
+      return to_int(ExitCode::bad_input);
+    }
+    settings.token = options.token;
+  } else if (options.keep_token) {
+    try {
+      settings.token = serve::kept_token(std::filesystem::current_path(), options.new_token);
+    } catch (const std::exception& error) {
+      std::cerr << "pita: --keep-token: cannot keep the token (" << error.what() << "); a new one is drawn\n";
+      settings.token = serve::random_token();
+    }
+  } else {
+    settings.token = serve::random_token();
+  }
+  settings.open = options.open;
   settings.allow_absolute_paths = options.allow_absolute_paths;
   settings.edit = options.edit;
   const int code = serve::serve(settings, std::cerr, [] { return received.load() != 0; });

@@ -9,6 +9,7 @@
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
 #include "animate/timeline.hpp"
+#include "core/fnv1a.hpp"
 #include "io/output_file.hpp"
 #include "motion/stage.hpp"
 #include "render/panel_drawing.hpp"
@@ -20,6 +21,16 @@
 #include "serve/scene_edit.hpp"
 
 namespace pita::serve {
+
+namespace {
+
+std::string digest_of(const std::string& text) {
+  Fnv1a hash;
+  hash.add(text);
+  return fmt::format("{:016x}", hash.value());
+}
+
+}  // namespace
 
 Json error_json(const std::exception_ptr& thrown, const std::string& path) {
   Json error{{"file", path}, {"line", 0}, {"column", 0}, {"pointer", ""}, {"reason", ""}, {"message", ""}};
@@ -150,6 +161,7 @@ Json LiveScenes::scenes_json() {
                {"timeline", nullptr},
                {"handles", Json::array()},
                {"claims", state.claims},
+               {"digest", digest_of(state.text)},
                {"panels", Json::array()}};
     // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
     for (const render::PanelPlacement& placement : state.placements) {
@@ -285,6 +297,14 @@ void LiveScenes::stop() {
 bool LiveScenes::stopping() {
   const std::lock_guard<std::mutex> lock(mutex_);
   return stopping_;
+}
+
+std::string LiveScenes::file_digest(std::size_t i) const {
+  try {
+    return digest_of(scene::read_input_file(scenes_.at(i)->path, scene::kMaxSceneFileBytes, "scene file"));
+  } catch (const std::exception&) {
+    return "";
+  }
 }
 
 }  // namespace pita::serve

@@ -82,6 +82,10 @@ class LiveScenes {
   // std::invalid_argument for a request that names no handle or value.
   Json edit(std::size_t i, const Json& request);
 
+  // The digest of scene i's file as it is now (FNV-1a, hexadecimal), "" when it cannot be read;
+  // scenes_json gives each good state's as "digest".
+  std::string file_digest(std::size_t i) const;
+
   void stop();
   bool stopping();
   std::size_t size() const { return scenes_.size(); }

@@ -11,10 +11,14 @@
 #include <set>
 #include <thread>
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
+#include <spawn.h>
 #include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "serve/file_watch.hpp"
 #include "serve/live_scenes.hpp"
@@ -186,6 +190,12 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
     return send_error(res, 400, "the request is not JSON");
   }
   const std::string path = site.settings.scenes[*i].string();
+  // A refusal carries the digest of the file it was refused against: the
+  // page clears it when a good state of another text arrives.
+  const auto refuse = [&](int status, Json body) {
+    body["digest"] = site.state.file_digest(*i);
+    send_json(res, status, body);
+  };
   try {
     const Json answer = site.state.edit(*i, request);
     std::vector<std::string> pointers;
@@ -194,17 +204,18 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
     send_json(res, 200, answer);
   } catch (const nlohmann::json::exception& e) {
     site.state.say(fmt::format("{}: edit refused: the request lacks a field", path));
-    send_error(res, 400, std::string("the request lacks a field: ") + e.what());
+    refuse(400, Json{{"error", std::string("the request lacks a field: ") + e.what()}});
   } catch (const std::invalid_argument& e) {
     site.state.say(fmt::format("{}: edit refused: {}", path, e.what()));
-    send_error(res, 400, e.what());
+    refuse(400, Json{{"error", e.what()}});
   } catch (...) {
     // The edit would make the scene bad: refused, with the reason; the file is as it was.
-    const Json error = error_json(std::current_exception(), path);
+    const std::exception_ptr thrown = std::current_exception();
+    const Json error = error_json(thrown, path);
     const std::string pointer = error.at("pointer").get<std::string>();
     site.state.say(fmt::format("{}: edit refused: {}{}", path, pointer.empty() ? "" : pointer + ": ",
                                error.at("reason").get<std::string>()));
-    send_failure(res, path, "refused");
+    refuse(error_status(thrown), Json{{"refused", error}});
   }
 }
 
@@ -287,6 +298,27 @@ int bind_port(httplib::Server& http, const Settings& settings) {
   return http.bind_to_port(settings.host, settings.port) ? settings.port : -1;
 }
 
+// --open: the desktop's browser shows `url` (xdg-open, Debian's xdg-utils),
+// waited for on a thread of its own; when it cannot be started, the log says so.
+void open_in_browser(const std::string& url, std::ostream& log) {
+  std::vector<char*> argv{const_cast<char*>("xdg-open"), const_cast<char*>(url.c_str()), nullptr};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int failed = ::posix_spawnp(&pid, "xdg-open", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (failed != 0) {
+    log << "pita: --open: cannot start xdg-open (Debian xdg-utils): open the address above yourself\n";
+    return;
+  }
+  std::thread([pid] {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+  }).detach();
+}
+
 // Renders each saved scene again, until stopped; watches the files of the
 // last good figures (`files` are those watched now). Returns 0 when
 // stopped, 3 when watching fails.
@@ -310,13 +342,6 @@ int render_saves(LiveScenes& state, FileWatcher& watcher, std::vector<fs::path> 
 }
 
 }  // namespace
-
-std::string random_token() {
-  std::random_device source;
-  std::string token;
-  for (int i = 0; i < 4; ++i) token += fmt::format("{:08x}", source());
-  return token;
-}
 
 struct Service::Parts {
   explicit Parts(const Settings& given)
@@ -363,9 +388,9 @@ int Service::run(std::ostream& log, const std::function<bool()>& stopped) {
   }
   std::thread listener([&] { http.listen_after_bind(); });
   const std::string host = settings.host.find(':') != std::string::npos ? "[" + settings.host + "]" : settings.host;
-  log << fmt::format("pita: serving {} scene{} at http://{}:{}/?token={}\n", state.size(), state.size() == 1 ? "" : "s",
-                     host, port, settings.token)
-      << std::flush;
+  const std::string url = fmt::format("http://{}:{}/?token={}", host, port, settings.token);
+  log << fmt::format("pita: serving {} scene{} at {}\n", state.size(), state.size() == 1 ? "" : "s", url) << std::flush;
+  if (settings.open) open_in_browser(url, log);
 
   const int code = render_saves(state, watcher, files, log, stopped);
   state.stop();

@@ -34,10 +34,8 @@ struct Settings {
   std::string token;  // every request must give it
   bool allow_absolute_paths = false;
   bool edit = false;  // --edit: drags are written into the scene files
+  bool open = false;  // --open: the page opened in the browser once served (xdg-open)
 };
-
-// A random token: 32 hexadecimal digits from the system's random source.
-std::string random_token();
 
 // One `pita serve`: its scenes, its routes and its HTTP server.
 class Service {

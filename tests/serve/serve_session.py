@@ -30,13 +30,13 @@ def eventually(check, timeout=60.0, step=0.02, what=None):
 
 
 class Served:
-    """`pita serve SCENES... --port 0` in `folder`, with the address it printed."""
+    """`pita serve SCENES... --port PORT` (0: any free one) in `folder`, with the address it printed."""
 
-    def __init__(self, folder, scenes, *extra):
+    def __init__(self, folder, scenes, *extra, port=0, env=None):
         self.folder = pathlib.Path(folder)
         self.log = open(self.folder / ".serve-log", "w+")
-        self.process = subprocess.Popen([PITA, "serve", *scenes, "--port", "0", *extra], cwd=folder,
-                                        stdout=subprocess.DEVNULL, stderr=self.log)
+        self.process = subprocess.Popen([PITA, "serve", *scenes, "--port", str(port), *extra], cwd=folder,
+                                        stdout=subprocess.DEVNULL, stderr=self.log, env=env)
         self.url = eventually(self._address, 60)
         self.base, self.token = self.url.split("/?token=")
 

@@ -8,6 +8,7 @@ import os
 import pathlib
 import re
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
@@ -251,6 +252,51 @@ def test_the_page_links_only_within_itself(folder, browser):
         served.stop()
 
 
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def test_a_restart_keeps_the_open_tab(folder, browser):
+    """--keep-token: a restart in the same folder keeps the token, and the open tab reconnects by
+    itself and follows the saves again; --open starts the desktop's browser on the address."""
+    save(folder, FIG03)
+    env = dict(os.environ, XDG_STATE_HOME=str(folder / ".state"))
+    # A stand-in for xdg-open that notes the address it is given.
+    bin_dir = folder / ".bin"
+    bin_dir.mkdir()
+    (bin_dir / "xdg-open").write_text(f'#!/bin/sh\nprintf "%s" "$1" > "{folder}/.opened"\n')
+    (bin_dir / "xdg-open").chmod(0o755)
+    env["PATH"] = f"{bin_dir}:{env['PATH']}"
+    port = free_port()
+    served = Served(folder, ["s.json"], "--keep-token", "--open", port=port, env=env)
+    token = served.token
+    opened = eventually(lambda: (folder / ".opened").exists() and (folder / ".opened").read_text(), 30)
+    check(opened == served.url, f"--open opened {opened}")
+    browser.open(served.url)
+    first = eventually(lambda: figure_text(browser), 60)
+    served.stop()
+    eventually(lambda: "connection lost" in browser.evaluate("document.getElementById('status').textContent"), 30)
+    served = Served(folder, ["s.json"], "--keep-token", port=port, env=env)
+    try:
+        check(served.token == token, "the kept token")
+        eventually(lambda: "connection lost" not in browser.evaluate("document.getElementById('status').textContent"),
+                   30, what="the tab reconnected")
+        changed = dict(FIG03, keyframes=[dict(k) for k in FIG03["keyframes"]])
+        changed["keyframes"][1]["w"] = 2.0
+        save(folder, changed)
+        eventually(lambda: (figure_text(browser) or first) != first, 60, what="the reconnected tab follows a save")
+        modes = (oct((folder / ".state" / "pita" / "serve-tokens").stat().st_mode & 0o777),
+                 [oct(f.stat().st_mode & 0o777) for f in (folder / ".state" / "pita" / "serve-tokens").iterdir()])
+        check(modes == ("0o700", ["0o600"]), f"the kept token is the user's only: {modes}")
+    finally:
+        served.stop()
+    # A token given on the command line must be one.
+    bad = subprocess.run([PITA, "serve", "s.json", "--token", "short"], cwd=folder, capture_output=True, text=True)
+    check(bad.returncode == 2 and "16 to 128 characters" in bad.stderr, (bad.returncode, bad.stderr))
+
+
 def measure_latency(folder, browser, name, latencies, trials=5):
     """Save to updated figure in the page, for scenes/NAME.json (the median of `trials` saves)."""
     scene = json.loads((SOURCE / "scenes" / f"{name}.json").read_text())
@@ -323,7 +369,7 @@ def main():
     try:
         for test in (test_the_page_follows_the_saves, test_dragging_writes_the_scene_file,
                      test_two_figures_keep_their_own_glyphs, test_the_page_links_only_within_itself,
-                     test_hostile_requests_are_refused,
+                     test_a_restart_keeps_the_open_tab, test_hostile_requests_are_refused,
                      test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
             folder = root / test.__name__
             folder.mkdir()
@@ -331,7 +377,7 @@ def main():
             if test is test_the_page_follows_the_saves:
                 test(folder, browser, latencies)
             elif test in (test_dragging_writes_the_scene_file, test_two_figures_keep_their_own_glyphs,
-                          test_the_page_links_only_within_itself):
+                          test_the_page_links_only_within_itself, test_a_restart_keeps_the_open_tab):
                 test(folder, browser)
             else:
                 test(folder)
