@@ -328,6 +328,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
                                                              : "poses",
                            motion.first(), motion.last());
       });
+  refuse_uninitialised<HeldMotion>();
 
   m.def(
       "motion",
