@@ -52,6 +52,8 @@ set_options() {
       options+=(-max_len=4096) ;;
     fuzz_animate)
       options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=8192) ;;
+    fuzz_python_entry)
+      options+=(-max_len=160) ;;
   esac
 }
 
