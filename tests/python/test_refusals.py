@@ -64,6 +64,19 @@ def test_huge_arrays_are_refused_before_any_copy(name):
         assert "limit of 1e+08" in message
 
 
+def test_too_many_keyframes_are_refused_before_any_is_read():
+    arrows = [pita.Arrow((0, 0), 1, 0)] * 1_000_000
+    start = time.monotonic()
+    with pytest.raises(pita.SceneError, match="at most 1000 keyframes") as error:
+        pita.motion("P6", arrows, np.arange(len(arrows), dtype=float))
+    assert error.value.pointer == "/keyframes"
+    poses = [np.eye(2, 3)] * 1_000_000
+    with pytest.raises(pita.SceneError, match="at most 1000 poses") as error:
+        pita.motion("SAM", poses)
+    assert error.value.pointer == "/poses"
+    assert time.monotonic() - start < 2.0
+
+
 def test_the_limit_itself_is_allowed():
     # 1e8 elements are within the limit: a small broadcast is evaluated as before.
     motion = pita.load_scene(SCENE).motion()
