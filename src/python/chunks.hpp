@@ -49,6 +49,29 @@ inline bool interrupted_from_released() {
   return PyErr_CheckSignals() != 0;
 }
 
+// The threads of run_interruptible still working (their caller may have
+// raised KeyboardInterrupt already). Never destroyed: a thread may end after
+// the interpreter.
+struct BackgroundWork {
+  std::mutex mutex;
+  std::condition_variable idle;
+  int running = 0;
+};
+inline BackgroundWork& background_work() {
+  static BackgroundWork* const work = new BackgroundWork;
+  return *work;
+}
+
+// Waits, without the GIL, until no such thread works: registered with atexit
+// (module.cpp), so that a drawing dropped by Ctrl-C is not still running
+// while the process tears down what it uses.
+inline void wait_for_background_work() {
+  pybind11::gil_scoped_release unlocked;
+  BackgroundWork& work = background_work();
+  std::unique_lock lock(work.mutex);
+  work.idle.wait(lock, [&] { return work.running == 0; });
+}
+
 // Runs `work()` (one call that cannot be cut into chunks: a figure drawn by
 // cairo, a text of frames) on a thread of its own, without the GIL, while
 // this thread sees Ctrl-C every 50 ms: on one, KeyboardInterrupt is raised
@@ -66,20 +89,41 @@ auto run_interruptible(Work work) -> decltype(work()) {
     std::exception_ptr failure;
   };
   auto shared = std::make_shared<Shared>();
-  std::thread([shared, work = std::move(work)]() mutable {
-    std::optional<Result> result;
-    std::exception_ptr failure;
-    try {
-      result.emplace(work());
-    } catch (...) {
-      failure = std::current_exception();
-    }
-    const std::lock_guard lock(shared->mutex);
-    shared->result = std::move(result);
-    shared->failure = failure;
-    shared->done = true;
-    shared->done_changed.notify_all();
-  }).detach();
+  BackgroundWork& background = background_work();
+  {
+    const std::lock_guard lock(background.mutex);
+    ++background.running;
+  }
+  const auto not_running = [&background] {
+    const std::lock_guard lock(background.mutex);
+    --background.running;
+    background.idle.notify_all();
+  };
+  std::thread thread;
+  try {
+    thread = std::thread([shared, not_running, owned = std::optional<Work>(std::move(work))]() mutable {
+      std::optional<Result> result;
+      std::exception_ptr failure;
+      try {
+        result.emplace((*owned)());
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      {
+        const std::lock_guard lock(shared->mutex);
+        shared->result = std::move(result);
+        shared->failure = failure;
+        shared->done = true;
+        shared->done_changed.notify_all();
+      }
+      owned.reset();  // what it held (a scene), released before the thread counts as done
+      not_running();
+    });
+  } catch (...) {  // no thread could be started (std::system_error: RuntimeError)
+    not_running();
+    throw;
+  }
+  thread.detach();
   for (;;) {
     bool done = false;
     {
