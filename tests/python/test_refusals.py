@@ -178,6 +178,18 @@ def test_a_file_in_an_unreadable_folder_is_permission_error(tmp_path):
         folder.chmod(0o755)
 
 
+def test_other_errors_of_open_keep_their_errno(tmp_path):
+    # (Run as root, the permission tests above are skipped; these errnos hold for any user.)
+    (tmp_path / "file").write_text("{}")
+    with pytest.raises(NotADirectoryError) as error:
+        pita.load_scene(tmp_path / "file" / "scene.json")
+    assert error.value.filename == str(tmp_path / "file" / "scene.json")
+    os.symlink("loop", tmp_path / "loop")
+    with pytest.raises(OSError) as error:
+        pita.load_scene(tmp_path / "loop")
+    assert error.value.errno == 40 and error.value.filename == str(tmp_path / "loop")  # ELOOP
+
+
 def test_a_fifo_is_refused_at_once_saying_what_it_is(tmp_path):
     fifo = tmp_path / "scene.json"
     os.mkfifo(fifo)
