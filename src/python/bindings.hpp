@@ -56,7 +56,8 @@ struct Times {
 // `check` (given the count) when given. ValueError names `name`.
 Times read_times(const py::handle& t, const char* name, const std::function<void(std::size_t)>& check = {});
 
-// The shape of an array-like, as np.shape gives it (an array's own, without a copy).
+// The shape of an array-like, as np.shape gives it (an array's own, without a
+// copy); empty when NumPy cannot say (a ragged list).
 std::vector<std::int64_t> array_shape(const py::handle& value);
 
 // A float64 array of shape `shape` + `tail`, C-contiguous, uninitialised.

@@ -218,7 +218,11 @@ std::vector<std::int64_t> array_shape(const py::handle& value) {
     const auto array = py::reinterpret_borrow<py::array>(value);
     return {array.shape(), array.shape() + array.ndim()};
   }
-  return py::module_::import("numpy").attr("shape")(value).cast<std::vector<std::int64_t>>();
+  try {
+    return py::module_::import("numpy").attr("shape")(value).cast<std::vector<std::int64_t>>();
+  } catch (const py::error_already_set&) {
+    return {};  // a ragged list: what reads it next refuses it in its own words
+  }
 }
 
 Times read_times(const py::handle& t, const char* name, const std::function<void(std::size_t)>& check) {
