@@ -137,6 +137,30 @@ def http_seeds(out):
         (folder / f"{name}.http").write_bytes(text.encode())
 
 
+def python_entry_seeds(out):
+    """fuzz_python_entry: a byte of the check, then its numbers (fuzz_python_entry.cpp)."""
+    folder = out / "fuzz_python_entry"
+    folder.mkdir(parents=True, exist_ok=True)
+
+    def shape(*extents):
+        return bytes([len(extents)]) + b"".join(struct.pack("<q", e) for e in extents)
+
+    seeds = {
+        "shapes-broadcast": bytes([0]) + shape(20000, 1) + shape(20000),
+        "shapes-huge": bytes([0]) + shape(200_000_000) + shape(),
+        "shapes-mismatch": bytes([0]) + shape(3) + shape(4),
+        "shapes-negative": bytes([0]) + shape(-1, 2) + shape(2),
+        "arrow": bytes([1]) + struct.pack("<4d", 0.0, 0.0, 1.0, 0.4),
+        "arrow-winding": bytes([1]) + struct.pack("<4d", 0.0, 0.0, 1.0, 1e300),
+        "arrow-nan": bytes([1]) + struct.pack("<4d", 0.0, 0.0, float("nan"), 0.0),
+        "pose-2x3": bytes([2, 0]) + struct.pack("<2q", 2, 3),
+        "pose-l-huge": bytes([2, 1]) + struct.pack("<2q", 100000, 100000),
+        "repr": bytes([3]) + struct.pack("<d", -1.0),
+    }
+    for name, data in seeds.items():
+        (folder / f"{name}.bin").write_bytes(data)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -149,6 +173,7 @@ def main():
     sweep_seeds(out)
     animate_seeds(out)
     http_seeds(out)
+    python_entry_seeds(out)
 
 
 if __name__ == "__main__":

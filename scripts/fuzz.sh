@@ -54,6 +54,8 @@ set_options() {
       options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=8192) ;;
     fuzz_http_request)
       options+=("-dict=$PITA_ROOT/fuzz/http.dict" -max_len=8192) ;;
+    fuzz_python_entry)
+      options+=(-max_len=160) ;;
   esac
 }
 

@@ -111,7 +111,7 @@ struct TemporaryFolder {
     std::error_code error;
     fs::remove_all(path, error);
     path.clear();
-    io::exit_interrupted(signal);
+    stop_interrupted(signal);
   }
 };
 
@@ -161,7 +161,8 @@ Json write_frames(const scene::Scene& scene, const Timeline& timeline, const Req
           write_bytes(folder.path / file, bytes);
           records.push_back(frame_record(scene, timeline, k, file, stage));
           progress.update(k + 1);
-        });
+        },
+        request.cancelled);
   } catch (const Interrupted& interrupted) {
     folder.exit_interrupted(interrupted.signal);
   }
@@ -211,7 +212,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   TemporaryFolder folder{pattern};
   Json records = write_frames(scene, timeline, request, stage, placements, folder);
   write_bytes(folder.path / "frames.json", frames_index(scene, timeline, request, std::move(records)).dump(1) + "\n");
-  if (const int sig = io::pending_interrupt()) folder.exit_interrupted(sig);
+  if (const int sig = pending_stop(request.cancelled)) folder.exit_interrupted(sig);
   move_into_place(folder, parent / name, target);
   return target;
 }
@@ -294,10 +295,10 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
     case AnimationOutput::svg: {
       Progress progress("frames", timeline.frames, request.progress);
       const std::string svg = animated_svg(scene, timeline, [&](int k) {
-        if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
+        if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
         progress.update(k + 1);
       });
-      if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
+      if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
       io::write_file_atomically(request.out, svg);
       return {request.out};
     }

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,12 +53,17 @@ struct Request {
   bool progress = true;                               // a bar on a terminal's stderr
   int threads = 1;
   std::string ffmpeg;  // the ffmpeg that writes videos; "" when none is installed
+  // Polled between frames on the calling thread (the Python module's
+  // Ctrl-C): when it returns true, write_animation removes its temporaries
+  // and throws Cancelled (frame_runner.hpp) instead of exiting. Empty for
+  // the command line, which only sees signals.
+  std::function<bool()> cancelled;
 };
 
 // Renders every frame and writes OUT. Returns the paths written (OUT; for a
 // directory, OUT itself). Throws AnimationError or RenderError (exit 2),
 // OutputError (exit 3), and on a signal removes its temporaries and exits
-// with 128 + signal (io/interrupt.hpp).
+// with 128 + signal (io/interrupt.hpp); Cancelled when request.cancelled asked.
 std::vector<std::filesystem::path> write_animation(const scene::Scene& scene, const Timeline& timeline,
                                                    const Request& request);
 

@@ -324,19 +324,20 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
                 fmt::format("{}: cannot write: ffmpeg stopped reading (see its message above)", request.out.string()));
           }
           progress.update(k + 1);
-        });
+        },
+        request.cancelled);
   } catch (const Interrupted& interrupted) {
     process.stop(true);
     ::unlink(temporary.path().c_str());
-    io::exit_interrupted(interrupted.signal);
+    stop_interrupted(interrupted.signal);
   } catch (...) {
     process.stop(true);
     throw;
   }
   const int status = process.stop(false);
-  if (const int sig = io::pending_interrupt()) {
+  if (const int sig = pending_stop(request.cancelled)) {
     ::unlink(temporary.path().c_str());
-    io::exit_interrupted(sig);
+    stop_interrupted(sig);
   }
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     output_failed(request.out, fmt::format("ffmpeg failed ({})",
@@ -349,9 +350,9 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
     output_failed(request.out, fmt::format("ffmpeg reported an error: {}", last_line(process.errors())));
   }
   verify_video(ffmpeg, temporary.path(), request.out);
-  if (const int sig = io::pending_interrupt()) {  // a signal during the check
+  if (const int sig = pending_stop(request.cancelled)) {  // a signal during the check
     ::unlink(temporary.path().c_str());
-    io::exit_interrupted(sig);
+    stop_interrupted(sig);
   }
   temporary.commit();
   return request.out;

@@ -15,6 +15,7 @@
 #include "core/steady_affine_morph.hpp"
 #include "core/steady_morph.hpp"
 #include "python/bindings.hpp"
+#include "python/checks.hpp"
 #include "python/chunks.hpp"
 
 namespace pita::python {
@@ -55,6 +56,8 @@ MatrixStack read_stack(const py::handle& value, const char* name) {
                     name, stack.rows, stack.cols));
   }
   for (py::ssize_t d = 0; d + 2 < array.ndim(); ++d) stack.batch.push_back(array.shape(d));
+  // The count from the shape, before the matrices are converted or copied.
+  check_elements({stack.batch.begin(), stack.batch.end()}, name);
   const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
   stack.values.assign(values.data(), values.data() + values.size());
   return stack;
@@ -251,6 +254,15 @@ py::object ear_power(const py::handle& M, const py::handle& t) {
                                  : ear_power_of_one<Affine3>(*one, time.values.front());
     }
   }
+  // The broadcast of the matrices and the times, from their shapes alone,
+  // before either is converted or copied.
+  if (!is_pose(M)) {
+    const std::vector<std::int64_t> m_shape = array_shape(M), t_shape = array_shape(t);
+    if (m_shape.size() >= 2) {
+      const std::vector<std::int64_t> batch(m_shape.begin(), m_shape.end() - 2);
+      check_elements(broadcast_shape(batch, t_shape, "M and t"), "M and t");
+    }
+  }
   const MatrixStack stack = read_stack(M, "M");
   check_homogeneous(stack, "M");
   const Times times = read_times(t, "t");
@@ -379,6 +391,7 @@ Raises pita.NoSamError when B A^-1 has no real power.)");
                            py::repr(py::str(e.root_case)).cast<std::string>(),
                            py::repr(py::str(e.reason)).cast<std::string>());
       });
+  refuse_uninitialised<SamExistence>();
   m.def(
       "has_sam",
       [](const py::handle& a, const py::object& b) {

@@ -11,6 +11,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -49,7 +51,14 @@ struct Times {
   std::vector<py::ssize_t> shape;  // empty for a scalar
   bool scalar = false;
 };
-Times read_times(const py::handle& t, const char* name);
+// The count of the times is checked from their shape before they are
+// converted or copied: at most kMaxElements (python/checks.hpp), then by
+// `check` (given the count) when given. ValueError names `name`.
+Times read_times(const py::handle& t, const char* name, const std::function<void(std::size_t)>& check = {});
+
+// The shape of an array-like, as np.shape gives it (an array's own, without a
+// copy); empty when NumPy cannot say (a ragged list).
+std::vector<std::int64_t> array_shape(const py::handle& value);
 
 // A float64 array of shape `shape` + `tail`, C-contiguous, uninitialised.
 py::array_t<double> new_array(const std::vector<py::ssize_t>& shape, std::initializer_list<py::ssize_t> tail);
@@ -77,6 +86,26 @@ void write_pose(const Affine3& A, double* out);  // 12 numbers
 // The arrow as Python sees it (a pita.Arrow).
 py::object arrow_object(const Arrow& arrow);
 py::object pose_object(const Pose& pose);
+
+// An object made by T.__new__ without __init__ (pita.Arrow.__new__(pita.Arrow))
+// holds no value: pybind11 would give its methods fresh uninitialised memory
+// (type_caster_generic::load_value allocates it lazily with the type's
+// operator_new). Called once after T's py::class_, this makes that
+// allocation raise TypeError instead, so that every method and attribute of
+// such an object refuses it; objects made by a constructor, a function or
+// a pickle are untouched (they hold a value before any method runs).
+template <class T>
+void* refuse_new_value(std::size_t) {
+  const py::detail::type_info* info = py::detail::get_type_info(typeid(T));
+  const std::string name = info != nullptr ? info->type->tp_name : "pita object";
+  throw py::type_error(name +
+                       ": this object was made by __new__ without __init__ and holds no value; make one with its "
+                       "constructor, or the function that returns it");
+}
+template <class T>
+void refuse_uninitialised() {
+  py::detail::get_type_info(typeid(T))->operator_new = &refuse_new_value<T>;
+}
 
 // Named tuples of the module (made once by bind_values): ArrowSamples(p, m, w, q).
 py::object arrow_samples_type();

@@ -1,5 +1,6 @@
 // The module's entry: `import pita` (docs/guide/python.md).
 #include "python/bindings.hpp"
+#include "python/chunks.hpp"
 
 #ifndef PITA_VERSION
 #error "PITA_VERSION is defined by src/python/CMakeLists.txt"
@@ -27,4 +28,7 @@ vectorised over NumPy arrays.
   pita::python::bind_motion(m);
   pita::python::bind_scene(m);
   pita::python::bind_examples(m);
+  // A figure dropped by Ctrl-C (run_interruptible) ends before the process does.
+  pybind11::module_::import("atexit").attr("register")(
+      pybind11::cpp_function([] { pita::python::wait_for_background_work(); }));
 }

@@ -28,6 +28,7 @@
 #include "python/held_scene.hpp"
 #include "scene/arrow_json.hpp"
 #include "scene/did_you_mean.hpp"
+#include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::python {
@@ -116,6 +117,14 @@ Json motion_scene(const std::string& method, const py::sequence& keyframes, cons
   const bool poses = arrow == nullptr ? find_method_entry(method) != nullptr
                                       : find_method_entry(method, is_method_of<PoseMethod>) != nullptr &&
                                             py::len(keyframes) > 0 && given_as_pose(keyframes[0]);
+  // The count first, as the scene reader would refuse it, before a
+  // keyframe is converted (a million of them would take seconds).
+  if (const std::size_t count = py::len(keyframes);
+      count > static_cast<std::size_t>(poses ? scene::kMaxPoses : scene::kMaxKeyframes)) {
+    throw scene::SceneError(kMotionFile, poses ? "/poses" : "/keyframes",
+                            fmt::format("at most {} {} (got {})", poses ? scene::kMaxPoses : scene::kMaxKeyframes,
+                                        poses ? "poses" : "keyframes", count));
+  }
   Json scene{{"method", method}};
   std::vector<double> knots;
   if (!times.is_none()) {
@@ -328,6 +337,7 @@ Raises pita.NoMotionError where the motion is undefined or not finite.)")
                                                              : "poses",
                            motion.first(), motion.last());
       });
+  refuse_uninitialised<HeldMotion>();
 
   m.def(
       "motion",

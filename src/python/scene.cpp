@@ -6,6 +6,7 @@
 #include "scene/scene.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -14,11 +15,14 @@
 #include <string_view>
 #include <vector>
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include "analysis/measure.hpp"
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
+#include "animate/frame_runner.hpp"
 #include "animate/output.hpp"
 #include "animate/svg_animation.hpp"
 #include "animate/timeline.hpp"
@@ -26,17 +30,21 @@
 #include "core/methods.hpp"
 #include "core/overloaded.hpp"
 #include "golden/check.hpp"
+#include "io/input_file.hpp"
 #include "motion/evaluation.hpp"
 #include "motion/sampler.hpp"
 #include "python/bindings.hpp"
+#include "python/chunks.hpp"
 #include "python/held_scene.hpp"
 #include "render/figure.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::python {
 
 namespace {
 
-struct HeldScene {
+// Shared from this: a figure drawn on a thread of its own keeps it alive.
+struct HeldScene : std::enable_shared_from_this<HeldScene> {
   scene::Scene scene;
   std::optional<std::filesystem::path> file;  // the file it was read from; none for a dict
 };
@@ -55,6 +63,14 @@ py::object no_frames(const scene::Scene& scene) {
   return py::array_t<double>(space ? std::vector<py::ssize_t>{0, 3, 4} : std::vector<py::ssize_t>{0, 2, 3});
 }
 
+// What Scene.eval computes from, owned: the text of frames is made on a
+// thread that may outlive the call (run_interruptible).
+struct EvalWork {
+  scene::Scene scene;
+  std::optional<motion::Evaluation> evaluation;  // refers to `scene`: this object does not move
+  std::vector<double> times;
+};
+
 py::object eval(const HeldScene& held, const py::object& t, std::optional<int> samples, std::optional<int> panel,
                 std::optional<std::string> method, std::optional<std::string> format) {
   if (format && *format != "json" && *format != "csv") {
@@ -71,14 +87,14 @@ py::object eval(const HeldScene& held, const py::object& t, std::optional<int> s
         "panel and method: a panel evaluates with its own method; give method without panel "
         "for the scene's motion");
   }
-  const scene::Scene scene = method ? with_method(held.scene, *method) : held.scene;
+  const auto work = std::make_shared<EvalWork>();
+  work->scene = method ? with_method(held.scene, *method) : held.scene;
+  const scene::Scene& scene = work->scene;
   if (!scene::has_motion_keys(scene.keys)) {
     if (panel) throw py::value_error(fmt::format("panel: {}: the scene has no poses, so no motion", scene.path));
     if (!format) return no_frames(scene);
   }
-  std::optional<Times> given;
-  if (!t.is_none()) given = read_times(t, "t");
-  std::optional<motion::Evaluation> evaluation;
+  std::optional<motion::Evaluation>& evaluation = work->evaluation;
   if (scene::has_motion_keys(scene.keys)) {
     try {
       evaluation.emplace(scene, panel);
@@ -86,9 +102,13 @@ py::object eval(const HeldScene& held, const py::object& t, std::optional<int> s
       throw py::value_error(fmt::format("panel: {}", error.what()));
     }
   }
+  constexpr const char* kAdvice = "ask for fewer frames (samples=, t=)";
   Times times;
-  if (given) {
-    times = *given;
+  if (!t.is_none()) {
+    // The work from the count of the times, before they are copied.
+    times = read_times(t, "t", [&](std::size_t count) {
+      if (evaluation) motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), count, kAdvice);
+    });
   } else if (evaluation) {
     times.values =
         motion::uniform_times(evaluation->motion(), samples.value_or(scene.samples.value_or(scene::kDefaultSamples)));
@@ -98,17 +118,15 @@ py::object eval(const HeldScene& held, const py::object& t, std::optional<int> s
     const motion::FramesFormat frames_format =
         *format == "csv" ? motion::FramesFormat::csv : motion::FramesFormat::json;
     if (!evaluation) return py::str(motion::no_frames_text(scene, frames_format));  // as `pita eval` prints it
-    motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), times.values.size(),
-                            "ask for fewer frames (samples=, t=)");
-    std::string text;
-    {
-      py::gil_scoped_release unlocked;
-      text = motion::frames_text(evaluation->panel(), evaluation->motion(), times.values, frames_format);
-    }
-    return py::str(text);
+    motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), times.values.size(), kAdvice);
+    work->times = std::move(times.values);
+    // One text, not cut into chunks: made on a thread of its own while this
+    // one sees Ctrl-C.
+    return py::str(run_interruptible([work, frames_format] {
+      return motion::frames_text(work->evaluation->panel(), work->evaluation->motion(), work->times, frames_format);
+    }));
   }
-  motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), times.values.size(),
-                          "ask for fewer frames (samples=, t=)");
+  motion::check_eval_work(scene, evaluation->panel(), evaluation->motion(), times.values.size(), kAdvice);
   return sample(evaluation->motion(), times);
 }
 
@@ -119,37 +137,42 @@ render::Format render_format(const std::string& name) {
   return *format;
 }
 
-py::bytes render_bytes(const HeldScene& held, const std::string& format_name, double scale, std::optional<double> at,
+py::bytes render_bytes(const HeldScene& source, const std::string& format_name, double scale, std::optional<double> at,
                        double budget) {
+  const std::shared_ptr<const HeldScene> held = source.shared_from_this();
   const render::Format format = render_format(format_name);
   if (!(scale >= render::kMinScale && scale <= render::kMaxScale)) {
     throw py::value_error(
         fmt::format("scale: must be between {} and {} (got {})", render::kMinScale, render::kMaxScale, scale));
   }
   if (!(budget > 0.0 && budget <= 1000.0)) throw py::value_error("budget: must be in (0, 1000]");
-  std::string bytes;
-  {
-    py::gil_scoped_release unlocked;
+  // One figure, drawn on a thread of its own while this one sees Ctrl-C
+  // (the scene is kept alive by `held` until the drawing ends).
+  const std::string bytes = run_interruptible([held, format, scale, at, budget] {
     render::Figure figure;
     if (at) {
-      const animate::Timeline timeline = animate::make_timeline(held.scene);
-      figure = animate::frame_figure(held.scene, timeline, *at, animate::animation_layout(held.scene, timeline));
+      const animate::Timeline timeline = animate::make_timeline(held->scene);
+      figure = animate::frame_figure(held->scene, timeline, *at, animate::animation_layout(held->scene, timeline));
     } else {
-      figure = render::build_figure(held.scene, budget);
+      figure = render::build_figure(held->scene, budget);
     }
-    bytes = render::render_figure(held.scene, figure, format, scale, budget);
-  }
+    return render::render_figure(held->scene, figure, format, scale, budget);
+  });
   return py::bytes(bytes);
 }
 
 py::object animate_scene(const HeldScene& held, const py::object& out, std::optional<double> fps,
                          std::optional<double> duration, std::optional<int> frames, double scale, int threads) {
   const animate::Timeline timeline = animate::make_timeline(held.scene, animate::Overrides{fps, duration, frames});
-  if (out.is_none()) {  // the animated SVG, in memory
+  if (out.is_none()) {  // the animated SVG, in memory; Ctrl-C seen after each frame
     std::string svg;
-    {
+    try {
       py::gil_scoped_release unlocked;
-      svg = animate::animated_svg(held.scene, timeline);
+      svg = animate::animated_svg(held.scene, timeline, [](int) {
+        if (interrupted_from_released()) throw animate::Cancelled{};
+      });
+    } catch (const animate::Cancelled&) {
+      throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
     }
     return py::str(svg);
   }
@@ -159,15 +182,20 @@ py::object animate_scene(const HeldScene& held, const py::object& out, std::opti
   request.scale = scale;
   request.progress = false;
   request.threads = std::clamp(threads, 1, 64);
+  // Ctrl-C between frames: write_animation removes its temporaries and
+  // throws Cancelled (the command line exits instead).
+  request.cancelled = interrupted_from_released;
   const char* given = std::getenv("PITA_FFMPEG");  // the front end reads the environment, animate does not
   const char* search_path = std::getenv("PATH");
   request.ffmpeg = animate::find_ffmpeg(given ? std::optional<std::string_view>(given) : std::nullopt,
                                         search_path ? std::optional<std::string_view>(search_path) : std::nullopt);
   animate::check_total_work(held.scene, timeline, request);
   std::vector<std::filesystem::path> written;
-  {
+  try {
     py::gil_scoped_release unlocked;
     written = animate::write_animation(held.scene, timeline, request);
+  } catch (const animate::Cancelled&) {
+    throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals set
   }
   py::list paths;
   for (const auto& path : written) paths.append(path.string());
@@ -230,6 +258,64 @@ py::object check(const HeldScene& held, const py::object& golden_dir, std::optio
   return outcome(result.passes(), result.matches(), result.claims_hold(), result.legible(), files, claims, lint);
 }
 
+// Raises the OSError of a scene file that cannot be read: Python's own
+// subclass for its errno (FileNotFoundError, PermissionError,
+// IsADirectoryError, ...), or OSError saying what it is (a FIFO, a device).
+[[noreturn]] void raise_unreadable(const std::filesystem::path& path, const io::InputError& error, int number) {
+  const std::string sentence = error.sentence("scene file");
+  // OSError(errno, words, file) is the subclass of errno, with .filename;
+  // without an errno, the words name the file (a .filename would print as
+  // "[Errno None] None: FILE").
+  const py::object raised =
+      number != 0 ? py::reinterpret_borrow<py::object>(PyExc_OSError)(number, sentence, path.string())
+                  : py::reinterpret_borrow<py::object>(PyExc_OSError)(fmt::format("{}: {}", path.string(), sentence));
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(raised.ptr())), raised.ptr());
+  throw py::error_already_set();
+}
+
+// The errno of a file that could not be opened (io::InputError keeps only its
+// words): opened again as io::InputFile opens it, 0 when it opens now.
+int open_errno(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) return errno;
+  ::close(fd);
+  return 0;
+}
+
+// A scene file read and checked without the GIL (a slow disk or a FIFO never
+// freezes the other threads). A file that cannot be read is an OSError
+// (raise_unreadable); one beyond the size limit, or a bad scene, SceneError.
+scene::Scene read_scene_file(const std::filesystem::path& path) {
+  if (const std::string& name = path.native(); name.find('\0') != std::string::npos) {
+    // A ValueError, as Python's open() raises for it; the name is shown with
+    // its NUL as \0 (a C string would end there).
+    std::string shown;
+    for (const char c : name) shown += c == '\0' ? std::string("\\0") : std::string(1, c);
+    throw scene::SceneError(shown, "", "cannot read the scene file: its name holds a NUL byte");
+  }
+  std::optional<io::InputError> failure;
+  int number = 0;
+  {
+    py::gil_scoped_release unlocked;
+    std::string text;
+    try {
+      text = io::read_regular_file(path, scene::kMaxSceneFileBytes);
+    } catch (const io::InputError& error) {
+      failure.emplace(error);
+      if (error.kind() == io::InputError::Kind::cannot_open) number = open_errno(path);
+      if (error.kind() == io::InputError::Kind::not_regular) {
+        std::error_code ignored;
+        if (std::filesystem::is_directory(path, ignored)) number = EISDIR;
+      }
+    }
+    if (!failure) return scene::parse_scene(text, path.string());
+  }
+  if (failure->kind() == io::InputError::Kind::too_large) {
+    throw scene::SceneError(path.string(), "", failure->sentence("scene file"));  // a ValueError, as before
+  }
+  raise_unreadable(path, *failure, number);
+}
+
 }  // namespace
 
 void bind_scene(py::module_& m) {
@@ -269,8 +355,9 @@ pixels per canvas pixel; at: the animation frame at scene time `at`, as `pita re
            py::arg("threads") = 1,
            R"(Plays the scene as `pita animate` does. Without `out`, returns the animated SVG as a str; with
 `out`, writes it (OUT.svg, OUT.mp4 or OUT.webm through Debian's ffmpeg, or a folder of frames)
-atomically and returns the paths written: complete, or not at all. A Ctrl-C is seen when the
-writing returns (threads: 1 to 64 frames drawn at once).)")
+atomically and returns the paths written: complete, or not at all. Ctrl-C is seen between
+frames: KeyboardInterrupt, with the temporaries removed and nothing written (threads: 1 to
+64 frames drawn at once).)")
       .def("measure", &measure,
            R"(The goodness measures of every panel, as `pita measure --format json` prints them, as a dict.)")
       .def("check", &check, py::arg("golden_dir"), py::kw_only(), py::arg("number_tolerance") = py::none(),
@@ -287,6 +374,7 @@ files, claims, lint).)")
                            std::string(scene::kind_name(s.scene.keys)), scene::method_id(s.scene.keys),
                            s.scene.panels.size(), s.scene.panels.size() == 1 ? "" : "s");
       });
+  refuse_uninitialised<HeldScene>();
 
   m.def(
       "load_scene",
@@ -295,18 +383,21 @@ files, claims, lint).)")
         if (py::isinstance<py::dict>(source)) {
           const std::string text =
               py::module_::import("json").attr("dumps")(source, py::arg("allow_nan") = false).cast<std::string>();
+          py::gil_scoped_release unlocked;
           held->scene = scene::parse_scene(text, "<dict>");
         } else {
           const std::filesystem::path path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
-          held->scene = scene::load_scene(path);
+          held->scene = read_scene_file(path);
           held->file = std::filesystem::absolute(path);  // check() reads it again, wherever the cwd is then
         }
         return held;
       },
       py::arg("source"),
       R"(Reads and checks a scene: a path (str or os.PathLike) to a scene file, or a dict in the same
-format. Raises pita.SceneError with .file, .pointer (JSON Pointer) and .reason, and .line and
-.column for malformed JSON. Images of the scene are found relative to its folder as the path
+format. Raises pita.SceneError (a ValueError) with .file, .pointer (JSON Pointer) and .reason,
+and .line and .column for malformed JSON; a file that cannot be read raises an OSError naming it
+(FileNotFoundError, PermissionError, IsADirectoryError; a FIFO or a device: OSError saying what
+it is). The file is read and checked without the GIL. Images of the scene are found relative to its folder as the path
 spells it: give an absolute path if the working directory will change.)");
 }
 

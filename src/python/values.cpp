@@ -14,6 +14,7 @@
 #include "core/overloaded.hpp"
 #include "core/pose_traits.hpp"
 #include "python/bindings.hpp"
+#include "python/checks.hpp"
 #include "scene/limits.hpp"
 
 namespace pita::python {
@@ -101,29 +102,21 @@ Point point(const py::handle& value, const std::string& name) {
   return p;
 }
 
-// An arrow pita can compute with, as a scene's keyframe must be (finite, m >
-// 0, |w| within scene::kMaxWinding, whose turns are then exact): from the
-// constructor and from a pickle alike.
-Arrow checked_arrow(Point p, double m, double w) {
-  if (!std::isfinite(p.real()) || !std::isfinite(p.imag())) throw py::value_error("p: must be finite");
-  if (!std::isfinite(m) || !(m > 0.0)) {
-    throw py::value_error(fmt::format("m: magnitude must be > 0 (got {})", float_repr(m)));
-  }
-  if (!std::isfinite(w) || std::abs(w) > scene::kMaxWinding) {
-    throw py::value_error(
-        fmt::format("w: the winding must be within +-{:g} rad (got {}); beyond, w + 2 pi k "
-                    "loses the angle's precision",
-                    scene::kMaxWinding, float_repr(w)));
-  }
-  return Arrow{p, m, w};
-}
-
 Arrow make_arrow(const py::handle& p, const py::handle& m, const py::handle& w) {
   return checked_arrow(point(p, "p"), real(m, "m"), real(w, "w"));
 }
 
 // A matrix of doubles, checked: `rows` x `cols`.
 Eigen::MatrixXd matrix(const py::handle& value, const std::string& name) {
+  // The shape first (np.shape reads it without converting an array): a
+  // matrix of a pose is at most 4x4, refused before anything is copied.
+  const std::vector<std::int64_t> shape = array_shape(value);
+  if (shape.size() != 2) {
+    throw py::value_error(fmt::format("{}: expected a matrix (a 2-dimensional array of numbers)", name));
+  }
+  if (shape[0] > 4 || shape[1] > 4) {
+    throw py::value_error(fmt::format("{}: a matrix of a pose is at most 4x4 (got {}x{})", name, shape[0], shape[1]));
+  }
   const auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
   if (!array || array.ndim() != 2) {
     throw py::value_error(fmt::format("{}: expected a matrix (a 2-dimensional array of numbers)", name));
@@ -156,14 +149,8 @@ Pose pose_from_parts(const Eigen::MatrixXd& L, const Eigen::VectorXd& b, const s
 Pose pose_from_matrix(const py::handle& value, const std::string& name) {
   const Eigen::MatrixXd M = matrix(value, name);
   const Eigen::Index n = M.cols() - 1;  // the dimension
-  const bool affine_rows = M.rows() == n;
+  check_pose_shape(M.rows(), M.cols(), name);
   const bool homogeneous = M.rows() == n + 1;
-  if ((n != 2 && n != 3) || !(affine_rows || homogeneous)) {
-    throw py::value_error(
-        fmt::format("{}: a pose is a 2x3 or 3x3 matrix (plane) or a 3x4 or 4x4 matrix (space); "
-                    "got {}x{}",
-                    name, M.rows(), M.cols()));
-  }
   if (homogeneous) {
     Eigen::VectorXd last = Eigen::VectorXd::Zero(n + 1);
     last(n) = 1.0;
@@ -226,7 +213,19 @@ py::array_t<double> new_array(const std::vector<py::ssize_t>& shape, std::initia
   return py::array_t<double>(full);
 }
 
-Times read_times(const py::handle& t, const char* name) {
+std::vector<std::int64_t> array_shape(const py::handle& value) {
+  if (py::isinstance<py::array>(value)) {
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    return {array.shape(), array.shape() + array.ndim()};
+  }
+  try {
+    return py::module_::import("numpy").attr("shape")(value).cast<std::vector<std::int64_t>>();
+  } catch (const py::error_already_set&) {
+    return {};  // a ragged list: what reads it next refuses it in its own words
+  }
+}
+
+Times read_times(const py::handle& t, const char* name, const std::function<void(std::size_t)>& check) {
   Times times;
   if (PyFloat_Check(t.ptr()) || (PyLong_Check(t.ptr()) && !PyBool_Check(t.ptr()))) {
     times.scalar = true;
@@ -241,6 +240,11 @@ Times read_times(const py::handle& t, const char* name) {
                     "of dtype {}",
                     name, py::str(raw.dtype()).cast<std::string>()));
   }
+  // The count from the shape, before anything is converted or copied (a
+  // broadcast view of 2e8 times holds one number).
+  const std::vector<std::int64_t> shape(raw.shape(), raw.shape() + raw.ndim());
+  check_elements(shape, name);
+  if (check) check(static_cast<std::size_t>(shape_size(shape, name)));
   const auto values = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(raw);
   times.scalar = values.ndim() == 0;
   for (py::ssize_t d = 0; d < values.ndim(); ++d) times.shape.push_back(values.shape(d));
@@ -365,6 +369,7 @@ are the same segment but different arrows (the second carries one more turn).
                         if (t.size() != 4) throw py::value_error("Arrow: a pickled arrow is the tuple (x, y, m, w)");
                         return checked_arrow(Point{real(t[0], "x"), real(t[1], "y")}, real(t[2], "m"), real(t[3], "w"));
                       }));
+  refuse_uninitialised<Arrow>();
 
   py::class_<PoseValue>(m, "Pose", R"(An affine pose x -> L x + b of the plane (L 2x2, b of 2) or of space (L 3x3,
 b of 3): the keyframes of the SAM paper. Pose.from_matrix takes [L | b] (2x3, 3x4) or the
@@ -446,7 +451,11 @@ homogeneous matrix (3x3, 4x4); np.asarray(pose) is [L | b].
              return py::hash(py::tuple(pose_matrix(v.pose).attr("ravel")().attr("tolist")()));
            })
       .def(py::pickle([](const PoseValue& v) { return py::make_tuple(pose_matrix(v.pose)); },
-                      [](const py::tuple& t) { return PoseValue{pose_from_matrix(t[0], "M")}; }));
+                      [](const py::tuple& t) {
+                        if (t.size() != 1) throw py::value_error("Pose: a pickled pose is the tuple ([L | b],)");
+                        return PoseValue{pose_from_matrix(t[0], "M")};
+                      }));
+  refuse_uninitialised<PoseValue>();
 }
 
 }  // namespace pita::python
