@@ -62,7 +62,7 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
                                {}},
                     ""};
   ReportEntry bad{SceneCheck{"scenes/bad.json", "bad<&>", {}, {}, {}}, "bad.json: /method: unknown \"P66\""};
-  write_report(dir_, {same, moved, bad});
+  write_report(dir_, {same, moved, bad}, {});
 
   const std::string html = read("index.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
@@ -92,6 +92,28 @@ TEST_F(Report, ListsEverySceneAndWritesTheImagesOfThoseThatDiffer) {
   EXPECT_EQ(names.size(), 6u);  // index.html and the five files of "moved"
 }
 
+// A report file that would replace an input of the check (here an image a
+// scene draws, named as the report names the actual PNG) is refused before
+// anything is written.
+TEST_F(Report, NeverReplacesAnInput) {
+  ReportEntry moved{
+      SceneCheck{
+          "scenes/moved.json", "moved", {file(FileKind::png, Verdict::differs, "EXPECTED", "ACTUAL", "DIFF")}, {}, {}},
+      ""};
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "moved.actual.png") << "AN INPUT";
+  try {
+    write_report(dir_, {moved}, {dir_ / "moved.actual.png"});
+    ADD_FAILURE() << "the report replaced an input";
+  } catch (const GoldenError& error) {
+    EXPECT_NE(std::string(error.what()).find("moved.actual.png, an input of this check"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(read("moved.actual.png"), "AN INPUT");
+  EXPECT_FALSE(fs::exists(dir_ / "index.html"));
+  EXPECT_FALSE(fs::exists(dir_ / "moved.expected.png"));
+}
+
 // A scene named like a URL scheme ("javascript:alert(1)") writes files of
 // that name: the report links to them as files, never as a script.
 TEST_F(Report, LinksOnlyToFilesWhateverTheSceneIsNamed) {
@@ -101,7 +123,7 @@ TEST_F(Report, LinksOnlyToFilesWhateverTheSceneIsNamed) {
                                {},
                                {}},
                     ""};
-  write_report(dir_, {named});
+  write_report(dir_, {named}, {});
   const std::string html = read("index.html");
   EXPECT_EQ(read("javascript:alert(1).diff.png"), "DIFF");
   EXPECT_NE(html.find("<a href=\"javascript%3Aalert%281%29.diff.png\"><img src=\"javascript%3Aalert%281%29.diff.png\""),
@@ -122,7 +144,7 @@ TEST_F(Report, ListsEveryClaim) {
                   {"/claims/1", "P2 turns fast", false, "turn-step of panel 1 = 0.22, not above 0.3"}},
                  {}},
       ""};
-  write_report(dir_, {claimed});
+  write_report(dir_, {claimed}, {});
   const std::string html = read("index.html");
   EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
   EXPECT_NE(html.find("<td class=\"CLAIM FAILED\">CLAIM FAILED</td>"), std::string::npos) << html;
@@ -146,7 +168,7 @@ TEST_F(Report, ListsEveryLintFinding) {
                                "the inner control poses", "/lint/allow/0"});
   ReportEntry linted{SceneCheck{"scenes/l.json", "l", {file(FileKind::data, Verdict::match, "d", "d")}, {}, findings},
                      ""};
-  write_report(dir_, {linted});
+  write_report(dir_, {linted}, {});
   const std::string html = read("index.html");
   EXPECT_NE(html.find("<p>1 scene(s) checked, 1 differ or could not be checked.</p>"), std::string::npos) << html;
   EXPECT_NE(html.find("<td class=\"LINT\">LINT</td>"), std::string::npos) << html;
@@ -167,7 +189,7 @@ TEST_F(Report, MissingGoldenHasNoExpectedImage) {
                  {},
                  {}},
       ""};
-  write_report(dir_, {fresh});
+  write_report(dir_, {fresh}, {});
   const std::string html = read("index.html");
   EXPECT_NE(html.find("<td><em>none</em><br>expected (golden)</td>"), std::string::npos) << html;
   EXPECT_NE(html.find("<td><em>none</em><br>differing pixels in red</td>"), std::string::npos) << html;
