@@ -20,8 +20,10 @@ namespace pita::animate {
 // timeline; for "pattern", the figure at 33 values of tau), so that the view
 // does not jump from frame to frame. A canvas "view" is used as given.
 // Only each cover frame's bounds are kept, and a "motion" timeline builds its
-// motions once (not once per cover frame).
-std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline);
+// motions once (not once per cover frame), or uses `stage`, the scene's
+// motions built by the caller for the frames too.
+std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline,
+                                                     const motion::Stage* stage = nullptr);
 
 // The figure at time t (a scene time for "motion", tau for "pattern") with the
 // shared placements. "motion": the layers that draw frames ("pattern",

@@ -281,11 +281,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   render::check_budget(scene, render::estimate_cost(scene), request.budget);
   check_total_work(scene, timeline, request);
   render::check_images(scene);
-  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
-  // The motions, built once for every frame ("pattern" changes the scene per frame).
+  // The motions, built once for the layout and every frame ("pattern" changes
+  // the scene per frame): an arc-length warp of a long track costs seconds
+  // to build, and was built two to four times.
   std::optional<motion::Stage> stage;
   if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
   const motion::Stage* shared = stage ? &*stage : nullptr;
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared);
   // The first frame before any output exists: a scene that cannot be drawn
   // fails here, having written nothing.
   frame_figure(scene, timeline, timeline.time(0), placements, shared);
@@ -293,10 +295,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   switch (request.kind) {
     case AnimationOutput::svg: {
       Progress progress("frames", timeline.frames, request.progress);
-      const std::string svg = animated_svg(scene, timeline, [&](int k) {
-        if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
-        progress.update(k + 1);
-      });
+      const std::string svg = animated_svg(
+          scene, timeline,
+          [&](int k) {
+            if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
+            progress.update(k + 1);
+          },
+          shared);
       if (const int sig = io::pending_interrupt()) io::exit_interrupted(sig);
       io::write_file_atomically(request.out, svg);
       return {request.out};

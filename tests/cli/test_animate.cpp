@@ -26,6 +26,7 @@
 #include "golden/check.hpp"
 #include "golden/image_compare.hpp"
 #include "run_pita.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::test {
 namespace {
@@ -643,6 +644,30 @@ TEST(AnimateBudget, TheFramesDrawingIsRefusedUpFront) {
     EXPECT_NE(r.err.find("--budget F"), std::string::npos) << r.err;
     EXPECT_TRUE(names_in(dir.path() / "out").empty()) << out << ": " << joined(hidden_in(dir.path() / "out"));
   }
+}
+
+// Issue 60: 30 frames of a 1000-keyframe track paced by arc length span by
+// span took more than a minute, four times the motion's build (seconds) for
+// the layout and the frames. It is built once: the animation takes about as
+// long as `pita render` of the scene. (Under the sanitizers, the first 300
+// keyframes.)
+TEST(AnimateBudget, ALongTrackPacedByArcLengthIsBuiltOnce) {
+  const ScratchDir dir;
+  Json scene =
+      Json::parse(read_file(fs::path(PITA_SOURCE_DIR) / "tests/data/long-tracks/arc-length-per-span-1000.json"));
+  ASSERT_EQ(scene["keyframes"].size(), 1000u);
+  if (kUnderSanitizers) scene["keyframes"].erase(scene["keyframes"].begin() + 300, scene["keyframes"].end());
+  dir.write("long.json", scene.dump());
+  const auto timed = [&](const std::vector<std::string>& args) {
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const double render = timed({"render", "long.json", "-o", "still.svg"});
+  const double animate = timed({"animate", "long.json", "-o", "moving.svg", "--quiet"});
+  EXPECT_LT(animate, 1.8 * render + 2.0) << "render " << render << " s";
+  EXPECT_TRUE(fs::exists(dir.path() / "moving.svg"));
 }
 
 // A scene whose image is missing (fig23 copied without its images/): exit 2
