@@ -18,7 +18,7 @@ namespace pita::animate {
 
 namespace {
 
-constexpr int kLayoutSamples = 33;
+constexpr int kLayoutSamples = kLayoutFrames;
 
 using Json = nlohmann::ordered_json;
 using What = scene::Animation::What;

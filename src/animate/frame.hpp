@@ -15,6 +15,9 @@
 
 namespace pita::animate {
 
+// The frames the layout draws besides the static figure (animation_layout).
+inline constexpr int kLayoutFrames = 33;
+
 // The placements of every frame: the layout of the drawings that cover the
 // whole animation (the static figure, and frames at 33 times spread over the
 // timeline; for "pattern", the figure at 33 values of tau), so that the view

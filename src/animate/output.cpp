@@ -245,8 +245,22 @@ std::string frame_file_name(int k, int count, render::Format format) {
 void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
   const bool vector = request.kind == AnimationOutput::svg ||
                       (request.kind == AnimationOutput::directory && request.frame_format == render::Format::svg);
-  const double units = render::estimate_cost(scene).units * timeline.frames;
   const double limit = kMaxAnimationUnits * request.budget;
+  // The motions: built once for a "motion" animation, once per frame and per
+  // frame of the layout for "pattern" (the keyframes move).
+  const render::MotionBuildCost build = render::motion_build_cost(scene);
+  const double builds = timeline.what == scene::Animation::What::pattern ? timeline.frames + kLayoutFrames : 1.0;
+  if (build.units * builds > 0.5 * limit) {
+    throw AnimationError(
+        fmt::format("{}{}: the animation would build the motions {:.0f} times ({}), about {:.3g} units each for the "
+                    "arc-length timing ({:.3g} in all), beyond half the animation's drawing budget of {:.3g}; use "
+                    "fewer frames or keyframes, drop \"arc_length\" or its \"per\": \"span\", or raise the budget "
+                    "with --budget F",
+                    scene.path.empty() ? "" : scene.path + ": ", build.pointer, builds,
+                    builds > 1 ? "once per frame and per frame of the layout: the keyframes move" : "once", build.units,
+                    build.units * builds, limit));
+  }
+  const double units = render::estimate_cost(scene).units * timeline.frames + build.units * builds;
   if (units > limit) {
     throw AnimationError(
         fmt::format("--frames: {} frames of a figure of about {:.3g} drawn points ({:.3g} in all) "

@@ -670,6 +670,27 @@ TEST(AnimateBudget, ALongTrackPacedByArcLengthIsBuiltOnce) {
   EXPECT_TRUE(fs::exists(dir.path() / "moving.svg"));
 }
 
+// Issue 60: the same track with a moving keyframe is a "pattern" animation,
+// whose motion is built anew for each frame and each frame of the layout (63
+// builds of seconds each): refused at once, before anything is built, naming
+// the timing and --budget F; the still figure (one build) renders.
+TEST(AnimateBudget, ALongMovingTrackPacedByArcLengthIsRefusedAtOnce) {
+  const ScratchDir dir;
+  dir.write("moving.json",
+            read_file(fs::path(PITA_SOURCE_DIR) / "tests/data/long-tracks/moving-arc-length-per-span-1000.json"));
+  fs::create_directories(dir.path() / "out");
+  for (const char* out : {"out/frames", "out/a.svg"}) {
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult r = run_pita({"animate", "moving.json", "-o", out}, dir.path());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("/timing: the animation would build the motions 63 times"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--budget F"), std::string::npos) << r.err;
+    EXPECT_LT(seconds, kUnderSanitizers ? 30.0 : 5.0);
+    EXPECT_TRUE(names_in(dir.path() / "out").empty()) << out << ": " << joined(hidden_in(dir.path() / "out"));
+  }
+}
+
 // A scene whose image is missing (fig23 copied without its images/): exit 2
 // naming the image, before any output exists.
 TEST(AnimateBadScene, AMissingImageWritesNothing) {
