@@ -52,6 +52,10 @@ set_options() {
       options+=(-max_len=4096) ;;
     fuzz_animate)
       options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=8192) ;;
+    fuzz_edit_body)
+      options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=2048) ;;
+    fuzz_batch_line)
+      options+=(-max_len=4096) ;;
   esac
 }
 
