@@ -4,6 +4,8 @@ nothing of it is kept in git): the scenes of scenes/ and tests/data/bad/ for the
 targets, trimmed copies of the golden data files golden/*/*.data.json (a few panels,
 items and points each: the structure without the bulk), affinities of every EAR case, and
 --vary arguments with manifest parts for fuzz_sweep, and requests to pita serve.
+--vary arguments with manifest parts for fuzz_sweep, edit bodies of `pita serve --edit` for
+fuzz_edit_body, and `eval --batch` files for fuzz_batch_line.
 The regression inputs of tests/data/fuzz/<target>/ are a corpus of their own.
 
     fuzz/make_seeds.py OUT_DIR
@@ -161,6 +163,44 @@ def python_entry_seeds(out):
         (folder / f"{name}.bin").write_bytes(data)
 
 
+def edit_seeds(out):
+    """fuzz_edit_body: a byte choosing the scene (0 arrows, 1 panels, 2 poses), then the body."""
+    folder = out / "fuzz_edit_body"
+    folder.mkdir(parents=True, exist_ok=True)
+    bodies = [
+        (0, {"drag": {"panel": 0, "pointer": "/keyframes/0", "part": "tail", "to": [120, 200]}}),
+        (0, {"drag": {"panel": 0, "pointer": "/keyframes/1", "part": "tip", "to": [300, 100], "version": 1}}),
+        (0, {"drag": {"panel": 0, "pointer": "/keyframes/2", "part": "tip", "to": [500, 50]}}),
+        (0, {"changes": [{"pointer": "/keyframes/0/p", "value": "[1, 2]"},
+                         {"pointer": "/keyframes/1/w", "value": "1.5"}]}),
+        (0, {"changes": [{"pointer": "/keyframes/2/q", "value": "[9.5, 1e3]"}]}),
+        (1, {"drag": {"panel": 0, "pointer": "/panels/0/keyframes/1", "part": "tip", "to": [200, 200]}}),
+        (1, {"drag": {"panel": 1, "pointer": "/keyframes/0", "part": "tail", "to": [10, 10]}}),
+        (1, {"changes": [{"pointer": "/panels/0/keyframes/2/turns", "value": "2"}]}),
+        (2, {"drag": {"panel": 0, "pointer": "/poses/1", "part": "corner2", "to": [400, 300]}}),
+        (2, {"drag": {"panel": 0, "pointer": "/poses/0", "part": "corner0", "to": [100, 300]}}),
+        (2, {"changes": [{"pointer": "/poses/0/matrix", "value": "[[1, 0, 1], [0, 1, 0]]"}]}),
+        (0, {"drag": {"panel": 1e20, "pointer": "/keyframes/0", "part": "tail", "to": [0, 0]}}),
+    ]
+    for i, (scene, body) in enumerate(bodies):
+        (folder / f"edit-{i:02d}.bin").write_bytes(bytes([scene]) + json.dumps(body).encode())
+    (folder / "bom.bin").write_bytes(b"\x00\xef\xbb\xbf" + json.dumps(bodies[0][1]).encode())
+
+
+def batch_seeds(out):
+    """fuzz_batch_line: `eval --batch` files (tests/data/bad-batch/ and made-up lines)."""
+    folder = out / "fuzz_batch_line"
+    folder.mkdir(parents=True, exist_ok=True)
+    for f in sorted(ROOT.glob("tests/data/bad-batch/*.jsonl")):
+        shutil.copy(f, folder / f.name)
+    lines = ['["scenes/fig01-eight-pitas.json", "--t=0,0.5"]', '["s.json", "--method", "P8", "--samples", "5"]',
+             '[]', '{"not": "an array"}', '["a", 1]', '["caf\u00e9.json"]', '[', '"x"']
+    (folder / "lines.jsonl").write_text("\n".join(lines) + "\n")
+    (folder / "no-final-newline.jsonl").write_text("\n".join(lines))
+    (folder / "nul.jsonl").write_bytes(b'["a\x00b"]\n["c"]\n')
+    (folder / "crlf.jsonl").write_bytes(b'["a"]\r\n["b"]\r\n\n\n')
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
@@ -174,6 +214,8 @@ def main():
     animate_seeds(out)
     http_seeds(out)
     python_entry_seeds(out)
+    edit_seeds(out)
+    batch_seeds(out)
 
 
 if __name__ == "__main__":

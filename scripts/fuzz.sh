@@ -56,6 +56,10 @@ set_options() {
       options+=("-dict=$PITA_ROOT/fuzz/http.dict" -max_len=8192) ;;
     fuzz_python_entry)
       options+=(-max_len=160) ;;
+    fuzz_edit_body)
+      options+=("-dict=$PITA_ROOT/fuzz/scene.dict" -max_len=2048) ;;
+    fuzz_batch_line)
+      options+=(-max_len=4096) ;;
   esac
 }
 

@@ -18,7 +18,7 @@ namespace pita::animate {
 
 namespace {
 
-constexpr int kLayoutSamples = 33;
+constexpr int kLayoutSamples = kLayoutFrames;
 
 using Json = nlohmann::ordered_json;
 using What = scene::Animation::What;
@@ -54,7 +54,8 @@ Json pose_json(const Pose& A) {
 
 }  // namespace
 
-std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline) {
+std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline,
+                                                     const motion::Stage* given) {
   std::vector<render::Drawing> cover;
   if (timeline.what == What::pattern) {
     for (int i = 0; i < kLayoutSamples; ++i) {
@@ -68,7 +69,9 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
   } else {
     // One stage for the static figure and every cover frame; of each frame
     // only its bounds are kept (33 whole frames of a long track held 1 GB).
-    const motion::Stage stage(scene);
+    std::optional<motion::Stage> built;
+    if (given == nullptr) built.emplace(scene);
+    const motion::Stage& stage = given != nullptr ? *given : *built;
     cover = render::build_figure(stage).drawings;
     std::vector<std::optional<scene::Box>> reach(cover.size());
     for (int i = 0; i < kLayoutSamples; ++i) {

@@ -15,13 +15,18 @@
 
 namespace pita::animate {
 
+// The frames the layout draws besides the static figure (animation_layout).
+inline constexpr int kLayoutFrames = 33;
+
 // The placements of every frame: the layout of the drawings that cover the
 // whole animation (the static figure, and frames at 33 times spread over the
 // timeline; for "pattern", the figure at 33 values of tau), so that the view
 // does not jump from frame to frame. A canvas "view" is used as given.
 // Only each cover frame's bounds are kept, and a "motion" timeline builds its
-// motions once (not once per cover frame).
-std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline);
+// motions once (not once per cover frame), or uses `stage`, the scene's
+// motions built by the caller for the frames too.
+std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline,
+                                                     const motion::Stage* stage = nullptr);
 
 // The figure at time t (a scene time for "motion", tau for "pattern") with the
 // shared placements. "motion": the layers that draw frames ("pattern",

@@ -246,8 +246,22 @@ std::string frame_file_name(int k, int count, render::Format format) {
 void check_total_work(const scene::Scene& scene, const Timeline& timeline, const Request& request) {
   const bool vector = request.kind == AnimationOutput::svg ||
                       (request.kind == AnimationOutput::directory && request.frame_format == render::Format::svg);
-  const double units = render::estimate_cost(scene).units * timeline.frames;
   const double limit = kMaxAnimationUnits * request.budget;
+  // The motions: built once for a "motion" animation, once per frame and per
+  // frame of the layout for "pattern" (the keyframes move).
+  const render::MotionBuildCost build = render::motion_build_cost(scene);
+  const double builds = timeline.what == scene::Animation::What::pattern ? timeline.frames + kLayoutFrames : 1.0;
+  if (build.units * builds > 0.5 * limit) {
+    throw AnimationError(
+        fmt::format("{}{}: the animation would build the motions {:.0f} times ({}), about {:.3g} units each for the "
+                    "arc-length timing ({:.3g} in all), beyond half the animation's drawing budget of {:.3g}; use "
+                    "fewer frames or keyframes, drop \"arc_length\" or its \"per\": \"span\", or raise the budget "
+                    "with --budget F",
+                    scene.path.empty() ? "" : scene.path + ": ", build.pointer, builds,
+                    builds > 1 ? "once per frame and per frame of the layout: the keyframes move" : "once", build.units,
+                    build.units * builds, limit));
+  }
+  const double units = render::estimate_cost(scene).units * timeline.frames + build.units * builds;
   if (units > limit) {
     throw AnimationError(
         fmt::format("--frames: {} frames of a figure of about {:.3g} drawn points ({:.3g} in all) "
@@ -282,11 +296,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   render::check_budget(scene, render::estimate_cost(scene), request.budget);
   check_total_work(scene, timeline, request);
   render::check_images(scene);
-  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
-  // The motions, built once for every frame ("pattern" changes the scene per frame).
+  // The motions, built once for the layout and every frame ("pattern" changes
+  // the scene per frame): an arc-length warp of a long track costs seconds
+  // to build, and was built two to four times.
   std::optional<motion::Stage> stage;
   if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
   const motion::Stage* shared = stage ? &*stage : nullptr;
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared);
   // The first frame before any output exists: a scene that cannot be drawn
   // fails here, having written nothing.
   frame_figure(scene, timeline, timeline.time(0), placements, shared);
@@ -294,10 +310,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   switch (request.kind) {
     case AnimationOutput::svg: {
       Progress progress("frames", timeline.frames, request.progress);
-      const std::string svg = animated_svg(scene, timeline, [&](int k) {
-        if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
-        progress.update(k + 1);
-      });
+      const std::string svg = animated_svg(
+          scene, timeline,
+          [&](int k) {
+            if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
+            progress.update(k + 1);
+          },
+          shared);
       if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
       io::write_file_atomically(request.out, svg);
       return {request.out};

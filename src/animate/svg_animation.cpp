@@ -240,13 +240,16 @@ std::string above_frames(const scene::Scene& scene, const render::Figure& first)
 
 }  // namespace
 
-std::string animated_svg(const scene::Scene& scene, const Timeline& timeline,
-                         const std::function<void(int)>& progress) {
-  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline);
-  // The motions, built once for every frame ("pattern" changes the scene per frame).
+std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, const std::function<void(int)>& progress,
+                         const motion::Stage* given) {
+  // The motions, built once for the layout and every frame ("pattern" changes
+  // the scene per frame).
   std::optional<motion::Stage> stage;
-  if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
-  const motion::Stage* shared = stage ? &*stage : nullptr;
+  if (timeline.what != scene::Animation::What::pattern && given == nullptr) stage.emplace(scene);
+  const motion::Stage* shared = timeline.what == scene::Animation::What::pattern ? nullptr
+                                : given != nullptr                               ? given
+                                                                                 : &*stage;
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared);
   const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, shared);
   const int width = scene.canvas.width, height = scene.canvas.height;
 

@@ -11,13 +11,17 @@
 #include <string>
 
 #include "animate/timeline.hpp"
+#include "motion/stage.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
 
 // The animated SVG's text. `progress(k)` is called after frame k (0-based).
-// Throws RenderError as the frames do.
+// Throws RenderError as the frames do. `stage`, for a "motion" timeline: the
+// scene's motions built once by the caller (frame.hpp), so that a motion
+// that is costly to build (an arc-length warp of a long track) is built once
+// for the layout and every frame; nullptr builds them here, once.
 std::string animated_svg(const scene::Scene& scene, const Timeline& timeline,
-                         const std::function<void(int)>& progress = {});
+                         const std::function<void(int)>& progress = {}, const motion::Stage* stage = nullptr);
 
 }  // namespace pita::animate

@@ -27,7 +27,7 @@
 
 #include "cli/eval.hpp"
 #include "io/input_file.hpp"
-#include "scene/json_text.hpp"
+#include "scene/batch_request.hpp"
 #include "scene/limits.hpp"
 #include "scene/scene.hpp"
 
@@ -41,58 +41,6 @@ struct FileCloser {
   }
 };
 using BatchFile = std::unique_ptr<std::FILE, FileCloser>;
-
-// One line of the batch without its '\n', or nothing at the end of the file.
-// A line longer than kMaxBatchLineBytes is read to its end but not kept
-// (`too_long`), so that memory stays bounded whatever the input.
-struct Line {
-  std::string text;
-  bool too_long = false;
-};
-
-bool next_line(std::FILE* file, Line& line) {
-  line.text.clear();
-  line.too_long = false;
-  bool any = false;
-  char chunk[1 << 16];
-  while (std::fgets(chunk, sizeof chunk, file) != nullptr) {
-    any = true;
-    std::size_t size = std::strlen(chunk);
-    const bool end = size > 0 && chunk[size - 1] == '\n';
-    if (end) --size;
-    if (line.text.size() + size > scene::kMaxBatchLineBytes) {
-      line.too_long = true;
-      line.text.clear();
-    } else if (!line.too_long) {
-      line.text.append(chunk, size);
-    }
-    if (end) return true;
-  }
-  return any;
-}
-
-// The arguments of a request line, or a message saying what is wrong with it.
-std::vector<std::string> request_arguments(const std::string& text, const std::string& where) {
-  nlohmann::ordered_json request;
-  try {
-    request = scene::parse_json(text, where);
-  } catch (const scene::SceneError& error) {
-    throw scene::SceneError(where, "", fmt::format("column {}: {}", error.column(), error.reason()));
-  }
-  if (!request.is_array()) {
-    throw scene::SceneError(where, "",
-                            "a request is the arguments of one `pita eval` as a JSON array of "
-                            "strings, for example [\"scene.json\", \"--t=0,0.5\"]");
-  }
-  std::vector<std::string> arguments;
-  for (std::size_t i = 0; i < request.size(); ++i) {
-    if (!request[i].is_string()) {
-      throw scene::SceneError(where, fmt::format("/{}", i), "an argument must be a string");
-    }
-    arguments.push_back(request[i].get<std::string>());
-  }
-  return arguments;
-}
 
 // One request, as `pita eval ARGUMENTS...` would answer it.
 EvalOutcome answer(const std::vector<std::string>& arguments, const std::string& where) {
@@ -150,8 +98,8 @@ ExitCode run_eval_batch(const std::string& path) {
   const std::string name = from_stdin ? "standard input" : path;
   ExitCode worst = ExitCode::success;
   double work = 0.0;
-  Line line;
-  for (std::size_t number = 1; next_line(file.get(), line); ++number) {
+  scene::BatchLine line;
+  for (std::size_t number = 1; scene::next_batch_line(file.get(), line); ++number) {
     const std::string where = fmt::format("{}:{}", name, number);
     EvalOutcome outcome;
     if (number > scene::kMaxBatchRequests) {
@@ -167,7 +115,7 @@ ExitCode run_eval_batch(const std::string& path) {
                               where, work, scene::kMaxBatchWork));
     } else {
       try {
-        outcome = answer(request_arguments(line.text, where), where);
+        outcome = answer(scene::batch_request_arguments(line.text, where), where);
       } catch (const scene::SceneError& error) {
         outcome = refused(error.what());
       }

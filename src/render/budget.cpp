@@ -142,6 +142,30 @@ FigureCost estimate_cost(const scene::Scene& scene) {
   return cost;
 }
 
+MotionBuildCost motion_build_cost(const scene::Scene& scene) {
+  MotionBuildCost cost;
+  double most = 0.0;
+  for (const scene::Panel& panel : scene.panels) {
+    if (!panel.timing.arc_length) continue;
+    const std::size_t knots =
+        std::visit(overloaded{[](const scene::KeyframeKeys& given) { return given.keyframes.size(); },
+                              [](const scene::PointKeys& given) { return given.points.size(); },
+                              [](const scene::PlanePoseKeys& given) { return given.poses.size(); },
+                              [](const scene::SpacePoseKeys& given) { return given.poses.size(); }},
+                   panel.keys);
+    const double spans = knots > 1 ? static_cast<double>(knots - 1) : 1.0;
+    const double tables = panel.timing.per == WarpSpan::span ? spans : 1.0;
+    const double units =
+        tables * std::min(spans / tables * kArcLengthSpanUnits, kArcLengthTableUnits) * motion::frame_cost(panel);
+    cost.units += units;
+    if (units > most) {
+      most = units;
+      cost.pointer = panel.timing.pointer.empty() ? "/timing" : panel.timing.pointer;
+    }
+  }
+  return cost;
+}
+
 void check_budget(const scene::Scene& scene, const FigureCost& cost, double factor) {
   const double budget = kDefaultBudgetUnits * factor;
   if (cost.units <= budget) return;

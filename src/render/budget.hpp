@@ -50,6 +50,22 @@ struct FigureCost {
 // give a drawn layer more frames than kMaxFigureSamples.
 FigureCost estimate_cost(const scene::Scene& scene);
 
+// What building a scene's motions costs, in the same units (about one method
+// frame each), beyond the frames drawn: an arc-length timing measures its
+// point's path in a table per span ("per": "span") or one for the whole
+// motion, about kArcLengthSpanUnits method frames per span a table covers
+// (a 1000-keyframe track whose knots run to 1000: 5.5 s on one core), at most
+// kArcLengthTableUnits a table (limits::kArcLengthMaxCells). `pita animate`
+// builds them once for a "motion" animation and once per frame for a
+// "pattern" one (animate/output.hpp). 0 without arc-length timing.
+inline constexpr double kArcLengthSpanUnits = 3.3e4;
+inline constexpr double kArcLengthTableUnits = 2e6;
+struct MotionBuildCost {
+  double units = 0.0;
+  std::string pointer;  // the "timing" that costs most ("/timing", "/panels/2/timing")
+};
+MotionBuildCost motion_build_cost(const scene::Scene& scene);
+
 // Throws RenderError when `cost` exceeds factor x kDefaultBudgetUnits, naming
 // the pointer whose parts add up to the most units.
 void check_budget(const scene::Scene& scene, const FigureCost& cost, double factor = 1.0);

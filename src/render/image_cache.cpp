@@ -4,10 +4,10 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
 #include <list>
 #include <memory>
+#include <optional>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -15,7 +15,9 @@
 #include <fmt/format.h>
 #include <sys/stat.h>
 
+#include "io/input_file.hpp"
 #include "render/cairo_handles.hpp"
+#include "scene/limits.hpp"
 
 namespace pita::render {
 
@@ -91,14 +93,23 @@ class ThreadCache {
 // memory" (CAIRO_STATUS_NO_MEMORY) as often as a read error, so the header
 // is looked at to tell a corrupt file from a truly huge image.
 std::string decode_failure(const std::string& path, cairo_status_t status) {
-  std::ifstream in(path, std::ios::binary);
   unsigned char head[24] = {};
-  in.read(reinterpret_cast<char*>(head), sizeof head);
+  std::size_t got = 0;
+  try {
+    io::InputFile in(path);
+    while (got < sizeof head) {
+      const std::size_t n = in.read(reinterpret_cast<char*>(head) + got, sizeof head - got);
+      if (n == 0) break;
+      got += n;
+    }
+  } catch (const io::InputError& error) {
+    return error.what();
+  }
   static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (in.gcount() < 8 || !std::equal(head, head + 8, kSignature)) {
+  if (got < 8 || !std::equal(head, head + 8, kSignature)) {
     return "not a PNG file (its first bytes are not the PNG signature)";
   }
-  if (in.gcount() < 24 || !std::equal(head + 12, head + 16, reinterpret_cast<const unsigned char*>("IHDR"))) {
+  if (got < 24 || !std::equal(head + 12, head + 16, reinterpret_cast<const unsigned char*>("IHDR"))) {
     return "corrupt PNG (truncated before its header)";
   }
   const auto be32 = [&](int at) {
@@ -113,14 +124,61 @@ std::string decode_failure(const std::string& path, cairo_status_t status) {
                      status == CAIRO_STATUS_READ_ERROR ? "read error" : cairo_status_to_string(status), width, height);
 }
 
+// The PNG's bytes as cairo reads them: from the file opened as a regular file
+// (io/input_file.hpp: a FIFO, a device or a directory put in the image's place
+// since the scene was read is refused at once, never waited on), at most
+// scene::kMaxImageFileBytes.
+struct PngStream {
+  io::InputFile file;
+  std::size_t read = 0;
+  bool too_large = false;
+  std::string failure;  // a read error
+  static cairo_status_t next(void* closure, unsigned char* data, unsigned int length) {
+    auto* self = static_cast<PngStream*>(closure);
+    try {
+      unsigned int got = 0;
+      while (got < length) {
+        const std::size_t n = self->file.read(reinterpret_cast<char*>(data) + got, length - got);
+        if (n == 0) return CAIRO_STATUS_READ_ERROR;  // the file ends before the PNG does
+        got += static_cast<unsigned int>(n);
+      }
+      self->read += length;
+      if (self->read > scene::kMaxImageFileBytes) {
+        self->too_large = true;
+        return CAIRO_STATUS_READ_ERROR;
+      }
+      return CAIRO_STATUS_SUCCESS;
+    } catch (const io::InputError& error) {
+      self->failure = error.what();
+      return CAIRO_STATUS_READ_ERROR;
+    }
+  }
+};
+
 }  // namespace
 
 cairo_surface_t* cached_image(const std::string& path, const std::string& name) {
   thread_local ThreadCache cache;
   const std::string stamp = file_stamp(path);
   if (cairo_surface_t* found = cache.find(path, stamp)) return found;
-  SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()));
+  std::optional<PngStream> stream;
+  try {
+    stream.emplace(PngStream{io::InputFile(path)});
+  } catch (const io::InputError& error) {
+    throw ImageError(fmt::format("cannot read the image \"{}\": {}", name,
+                                 error.kind() == io::InputError::Kind::cannot_open
+                                     ? fmt::format("cannot open it ({})", error.what())
+                                     : std::string(error.what())));
+  }
+  SurfacePtr surface(cairo_image_surface_create_from_png_stream(&PngStream::next, &*stream));
   const cairo_status_t status = cairo_surface_status(surface.get());
+  if (stream->too_large) {
+    throw ImageError(fmt::format("cannot read the image \"{}\": it is larger than the limit of {} MiB", name,
+                                 scene::kMaxImageFileBytes >> 20));
+  }
+  if (!stream->failure.empty()) {
+    throw ImageError(fmt::format("cannot read the image \"{}\" ({})", name, stream->failure));
+  }
   if (status != CAIRO_STATUS_SUCCESS) {
     throw ImageError(fmt::format("cannot read the image \"{}\": {}", name, decode_failure(path, status)));
   }

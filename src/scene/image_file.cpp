@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "io/input_file.hpp"
 #include "scene/limits.hpp"
 
 namespace pita::scene {
@@ -75,18 +76,30 @@ ImageRef check_image_file(const std::string& scene_file, const std::string& give
         fmt::format("image \"{}\" does not exist{}", given,
                     path.is_absolute() ? "" : " (image paths are relative to the scene's folder)"));
   }
-  if (!fs::is_regular_file(status)) {
-    throw std::invalid_argument(fmt::format("image \"{}\" is not a regular file", given));
-  }
-  std::ifstream in(resolved, std::ios::binary);
+  // Opened as a regular file only (a FIFO, a device or a directory is refused
+  // at once: io/input_file.hpp), and no larger than kMaxImageFileBytes.
   std::array<unsigned char, 24> header{};
-  if (!in) {
-    throw std::invalid_argument(fmt::format("image \"{}\" cannot be read ({})", given, std::strerror(errno)));
+  std::size_t got = 0;
+  try {
+    io::InputFile in(resolved);
+    const auto size = fs::file_size(resolved, error);
+    if (!error && size > kMaxImageFileBytes) {
+      throw std::invalid_argument(
+          fmt::format("image \"{}\" is larger than the limit of {} MiB", given, kMaxImageFileBytes >> 20));
+    }
+    while (got < header.size()) {
+      const std::size_t n = in.read(reinterpret_cast<char*>(header.data()) + got, header.size() - got);
+      if (n == 0) break;
+      got += n;
+    }
+  } catch (const io::InputError& failure) {
+    throw std::invalid_argument(fmt::format("image \"{}\" {}", given,
+                                            failure.kind() == io::InputError::Kind::cannot_open
+                                                ? fmt::format("cannot be opened ({})", failure.what())
+                                                : fmt::format("cannot be read: {}", failure.what())));
   }
-  in.read(reinterpret_cast<char*>(header.data()), static_cast<std::streamsize>(header.size()));
   static constexpr std::array<unsigned char, 8> kSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (in.gcount() < static_cast<std::streamsize>(header.size()) ||
-      !std::equal(kSignature.begin(), kSignature.end(), header.begin()) ||
+  if (got < header.size() || !std::equal(kSignature.begin(), kSignature.end(), header.begin()) ||
       std::memcmp(header.data() + 12, "IHDR", 4) != 0) {
     throw std::invalid_argument(fmt::format("image \"{}\" is not a PNG file (only PNG images are read)", given));
   }

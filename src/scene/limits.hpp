@@ -114,6 +114,10 @@ inline constexpr int kMaxSam3dExistenceSubdivisions = 4;  // "subdivisions" of "
 // side (8192 x 8192 x 4 bytes = 256 MiB decoded), at most kMaxImages per list
 // of shapes, and at most kMaxImagePixels pixels in all.
 inline constexpr int kMaxImageSide = 8192;
+// An image file at most 272 MiB: the largest image's 256 MiB of pixels stored
+// without compression, with room for its chunks. Larger is refused before it
+// is read.
+inline constexpr std::size_t kMaxImageFileBytes = std::size_t{272} << 20;
 inline constexpr int kMaxImages = 16;
 // Pixels of all the images of one list of shapes together: decoded, 4 bytes
 // each, once per drawing thread (256 MiB a thread at most).

@@ -26,6 +26,7 @@
 #include "golden/check.hpp"
 #include "golden/image_compare.hpp"
 #include "run_pita.hpp"
+#include "support/sanitizers.hpp"
 
 namespace pita::test {
 namespace {
@@ -659,6 +660,51 @@ TEST(AnimateBudget, TheFramesDrawingIsRefusedUpFront) {
     EXPECT_NE(r.err.find("--frames: 100000 frames"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("drawing budget"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--budget F"), std::string::npos) << r.err;
+    EXPECT_TRUE(names_in(dir.path() / "out").empty()) << out << ": " << joined(hidden_in(dir.path() / "out"));
+  }
+}
+
+// Issue 60: 30 frames of a 1000-keyframe track paced by arc length span by
+// span took more than a minute, four times the motion's build (seconds) for
+// the layout and the frames. It is built once: the animation takes about as
+// long as `pita render` of the scene. (Under the sanitizers, the first 300
+// keyframes.)
+TEST(AnimateBudget, ALongTrackPacedByArcLengthIsBuiltOnce) {
+  const ScratchDir dir;
+  Json scene =
+      Json::parse(read_file(fs::path(PITA_SOURCE_DIR) / "tests/data/long-tracks/arc-length-per-span-1000.json"));
+  ASSERT_EQ(scene["keyframes"].size(), 1000u);
+  if (kUnderSanitizers) scene["keyframes"].erase(scene["keyframes"].begin() + 300, scene["keyframes"].end());
+  dir.write("long.json", scene.dump());
+  const auto timed = [&](const std::vector<std::string>& args) {
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult r = run_pita(args, dir.path());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  const double render = timed({"render", "long.json", "-o", "still.svg"});
+  const double animate = timed({"animate", "long.json", "-o", "moving.svg", "--quiet"});
+  EXPECT_LT(animate, 1.8 * render + 2.0) << "render " << render << " s";
+  EXPECT_TRUE(fs::exists(dir.path() / "moving.svg"));
+}
+
+// Issue 60: the same track with a moving keyframe is a "pattern" animation,
+// whose motion is built anew for each frame and each frame of the layout (63
+// builds of seconds each): refused at once, before anything is built, naming
+// the timing and --budget F; the still figure (one build) renders.
+TEST(AnimateBudget, ALongMovingTrackPacedByArcLengthIsRefusedAtOnce) {
+  const ScratchDir dir;
+  dir.write("moving.json",
+            read_file(fs::path(PITA_SOURCE_DIR) / "tests/data/long-tracks/moving-arc-length-per-span-1000.json"));
+  fs::create_directories(dir.path() / "out");
+  for (const char* out : {"out/frames", "out/a.svg"}) {
+    const auto start = std::chrono::steady_clock::now();
+    const RunResult r = run_pita({"animate", "moving.json", "-o", out}, dir.path());
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("/timing: the animation would build the motions 63 times"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--budget F"), std::string::npos) << r.err;
+    EXPECT_LT(seconds, kUnderSanitizers ? 30.0 : 5.0);
     EXPECT_TRUE(names_in(dir.path() / "out").empty()) << out << ": " << joined(hidden_in(dir.path() / "out"));
   }
 }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <nlohmann/json.hpp>
 
 #include "run_pita.hpp"
@@ -105,6 +106,26 @@ TEST(Render, BadSceneWritesNothingAndNamesThePointer) {
   // The good scene is still rendered.
   EXPECT_TRUE(fs::exists(dir.path() / "out/good.svg"));
   EXPECT_TRUE(fs::exists(dir.path() / "out/good.png"));
+}
+
+// Issue 60: an image that is a FIFO (no writer) is refused at once, naming
+// the image's pointer and what it is, as a directory is
+// (tests/data/bad/images-path-a-folder); pita never waits in open().
+TEST(Render, AnImageThatIsAFifoIsRefusedAtOnce) {
+  const ScratchDir dir;
+  ASSERT_EQ(::mkfifo((dir.path() / "pipe.png").c_str(), 0600), 0);
+  dir.write("s.json", R"({"method": "P6", "keyframes": [{"t": 0, "p": [0, 0], "m": 1, "w": 0},
+      {"t": 0.5, "p": [1, 1], "m": 1, "w": 0}, {"t": 1, "p": [2, 0], "m": 1, "w": 0}],
+      "shapes": [{"image": "pipe.png", "box": [[0, 0], [1, 1]]}]})");
+  for (const char* command : {"render", "animate"}) {
+    const RunResult r = run_pita({command, "s.json", "-o", "out.svg"}, dir.path());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err,
+              "pita: s.json: /shapes/0/image: image \"pipe.png\" cannot be read: it is a named pipe (FIFO), not a "
+              "regular file\n")
+        << command;
+    EXPECT_FALSE(fs::exists(dir.path() / "out.svg"));
+  }
 }
 
 TEST(Render, BadFigureFieldsWriteNothing) {

@@ -1,7 +1,8 @@
 // pita watch (src/cli/watch.cpp): it renders the scene, renders again on each
 // save of the scene (in place or by a rename over it) or of an image it uses,
-// keeps the last good output when a save is bad and says why, and leaves no
-// temporary behind after a hundred saves or a signal.
+// keeps the last good output when a save is bad and says why (a deleted
+// scene, a folder in its place), watches a folder removed and made again,
+// and leaves no temporary behind after a hundred saves or a signal.
 #include <chrono>
 #include <filesystem>
 #include <string>
@@ -135,6 +136,55 @@ TEST(Watch, AHundredSavesInARowLeaveTheLastFigureAndNoTemporary) {
   EXPECT_EQ(stopped.exit_code, 128 + SIGINT);
   EXPECT_EQ(hidden_in(dir.path()), std::vector<std::string>{});
   EXPECT_EQ(hidden_in(dir.path() / "out"), std::vector<std::string>{});
+}
+
+// Issue 60: a scene deleted is "no such file" (not malformed JSON), one
+// replaced by a folder "a directory"; the next good save renders again.
+TEST(Watch, ADeletedSceneAndAFolderInItsPlaceSayWhatTheyAre) {
+  ScratchDir dir;
+  dir.write("s.json", sma_scene(3.6));
+  Watching watch(dir, {"watch", "s.json", "-o", "out.svg"});
+  ASSERT_TRUE(watch.renders(1)) << watch.err();
+  const std::string good = read_file(dir.path() / "out.svg");
+  fs::remove(dir.path() / "s.json");
+  ASSERT_TRUE(eventually([&] {
+    return watch.err().find("s.json: cannot open the scene file (No such file") != std::string::npos;
+  })) << watch.err();
+  fs::create_directory(dir.path() / "s.json");
+  ASSERT_TRUE(eventually([&] {
+    return watch.err().find("s.json: cannot read the scene file: it is a directory") != std::string::npos;
+  })) << watch.err();
+  EXPECT_EQ(watch.err().find("malformed"), std::string::npos) << watch.err();
+  EXPECT_EQ(watch.err().find("basic_filebuf"), std::string::npos) << watch.err();
+  EXPECT_EQ(read_file(dir.path() / "out.svg"), good);
+  fs::remove(dir.path() / "s.json");
+  dir.write("s.json", sma_scene(2.0));
+  ASSERT_TRUE(watch.renders(2)) << watch.err();
+  watch.stop();
+}
+
+// Issue 60: the scene's folder removed and made again (`rm -r d; mkdir d;
+// cp s.json d/`) is watched again: the scene is rendered again, and so is
+// its next save.
+TEST(Watch, TheScenesFolderRemovedAndMadeAgainIsWatchedAgain) {
+  ScratchDir dir;
+  dir.write("d/s.json", sma_scene(3.6));
+  Watching watch(dir, {"watch", "d/s.json", "-o", "out.svg"});
+  ASSERT_TRUE(watch.renders(1)) << watch.err();
+  ASSERT_TRUE(eventually([&] { return watch.err().find("watching d/s.json") != std::string::npos; }));
+  const std::string first = read_file(dir.path() / "out.svg");
+  fs::remove_all(dir.path() / "d");
+  ASSERT_TRUE(eventually([&] { return watch.err().find("No such file") != std::string::npos; })) << watch.err();
+  fs::create_directory(dir.path() / "d");
+  dir.write("d/s.json", sma_scene(2.0));
+  ASSERT_TRUE(watch.renders(2)) << watch.err();
+  EXPECT_TRUE(eventually([&] { return read_file(dir.path() / "out.svg") != first; }));
+  const std::string second = read_file(dir.path() / "out.svg");
+  dir.write("d/s.json", sma_scene(3.6));
+  ASSERT_TRUE(watch.renders(3)) << watch.err();
+  EXPECT_TRUE(eventually([&] { return read_file(dir.path() / "out.svg") == first; }));
+  EXPECT_NE(second, first);
+  watch.stop();
 }
 
 TEST(Watch, MaxRendersEndsIt) {

@@ -7,8 +7,10 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "render/cairo_handles.hpp"
@@ -72,6 +74,26 @@ TEST_F(ImageCache, NotAPngAndACutPngAreNamed) {
     EXPECT_NE(std::string(e.what()).find("corrupt PNG"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find("out of memory"), std::string::npos) << e.what();
   }
+}
+
+// Issue 60: an image replaced by a FIFO or a folder after the scene was read
+// is refused at once (opened with O_NONBLOCK, checked with fstat), naming
+// the image and what it is; cairo never opens it by its name.
+TEST_F(ImageCache, AFifoOrAFolderInTheImagesPlaceIsRefusedAtOnce) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.png").c_str(), 0600), 0);
+  fs::create_directories(dir_ / "folder.png");
+  for (const auto& [name, what] : {std::pair<std::string, std::string>{"pipe.png", "it is a named pipe (FIFO)"},
+                                   {"folder.png", "it is a directory"}}) {
+    try {
+      (void)cached_image((dir_ / name).string(), name);
+      ADD_FAILURE() << name << ": no error";
+    } catch (const ImageError& e) {
+      EXPECT_NE(std::string(e.what()).find("the image \"" + name + "\": " + what), std::string::npos) << e.what();
+    }
+  }
+  // A good image still decodes from its bytes.
+  const fs::path good = blank_png("good.png", 7);
+  EXPECT_EQ(cairo_image_surface_get_width(cached_image(good.string(), "good.png")), 7);
 }
 
 }  // namespace

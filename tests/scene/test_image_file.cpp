@@ -12,6 +12,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "scene/image_file.hpp"
@@ -132,9 +133,17 @@ TEST_F(ImageFile, OnlyPngFilesAreRead) {
 TEST_F(ImageFile, MissingFilesAndFoldersAreRefused) {
   EXPECT_EQ(refusal("missing.png"),
             "image \"missing.png\" does not exist (image paths are relative to the scene's folder)");
-  EXPECT_EQ(refusal("images"), "image \"images\" is not a regular file");
+  EXPECT_EQ(refusal("images"), "image \"images\" cannot be read: it is a directory");
   EXPECT_EQ(refusal(""), "the image path is empty");
   EXPECT_EQ(refusal(std::string("pic\0ture.png", 12)), "the image path contains a NUL character");
+}
+
+// Issue 60: an image that is a FIFO (no writer: opening it would wait for
+// one), or a device, is refused at once, saying what it is.
+TEST_F(ImageFile, FifosAndDevicesAreRefusedAtOnce) {
+  ASSERT_EQ(::mkfifo((root_ / "scene" / "pipe.png").c_str(), 0600), 0);
+  EXPECT_EQ(refusal("pipe.png"), "image \"pipe.png\" cannot be read: it is a named pipe (FIFO), not a regular file");
+  EXPECT_EQ(refusal("/dev/zero", true), "image \"/dev/zero\" cannot be read: it is a device, not a regular file");
 }
 
 TEST_F(ImageFile, PathsOutOfTheScenesFolderAreRefusedEvenWhenTheFileExists) {

@@ -1,6 +1,7 @@
 // Saves of watched files (src/serve/file_watch.cpp): a write in place, a new
 // file renamed over the old one and a deletion each count; a file that is not
-// watched does not; a burst of saves is one answer; nothing is a timeout.
+// watched does not; a burst of saves is one answer; nothing is a timeout; a
+// folder removed (or moved away) and made again is watched again.
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -107,6 +108,91 @@ TEST_F(FileWatcherTest, AWriteThroughASymbolicLinkIsASaveOfTheLink) {
 TEST_F(FileWatcherTest, AFolderThatDoesNotExistIsRefused) {
   FileWatcher watcher;
   EXPECT_THROW(watcher.watch({dir_ / "no-such-folder" / "scene.json"}), std::system_error);
+}
+
+// `rm -r d; mkdir d; cp scene.json d/`: the deletion counts, then the file
+// made again in the folder made again, and later saves in it too.
+TEST_F(FileWatcherTest, AFolderRemovedAndMadeAgainIsWatchedAgain) {
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", "{}");
+  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
+  FileWatcher watcher;
+  watcher.watch({scene});
+  fs::remove_all(dir_ / "d");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", R"({"c": 3})");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+  write(dir_ / "d" / "scene.json", R"({"c": 4})");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+}
+
+// The folder made again between two waits, its file already in it: the file
+// counts as saved when the folder is found again.
+TEST_F(FileWatcherTest, AFolderMadeAgainWithItsFileCountsAsASave) {
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", "{}");
+  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
+  FileWatcher watcher;
+  watcher.watch({scene});
+  fs::remove_all(dir_ / "d");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+  fs::create_directories(dir_ / "d.new");
+  write(dir_ / "d.new" / "scene.json", R"({"c": 5})");
+  fs::rename(dir_ / "d.new", dir_ / "d");  // the whole folder moved into place
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+}
+
+// Several levels gone: a/b/c removed from a, then made again in one go.
+TEST_F(FileWatcherTest, NestedFoldersMadeAgainAreWatchedAgain) {
+  fs::create_directories(dir_ / "a" / "b" / "c");
+  write(dir_ / "a" / "b" / "c" / "scene.json", "{}");
+  const fs::path scene = fs::absolute(dir_ / "a" / "b" / "c" / "scene.json");
+  FileWatcher watcher;
+  watcher.watch({scene});
+  fs::remove_all(dir_ / "a");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+  fs::create_directories(dir_ / "a" / "b" / "c");
+  write(dir_ / "a" / "b" / "c" / "scene.json", R"({"d": 1})");
+  bool seen = false;
+  for (int i = 0; i < 5 && !seen; ++i) seen = watcher.wait(milliseconds(2000)).count(scene) == 1;
+  EXPECT_TRUE(seen);
+  write(dir_ / "a" / "b" / "c" / "scene.json", R"({"d": 2})");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+}
+
+// A folder moved away is no longer the scene's: saves in it do not count,
+// and one moved back is watched again.
+TEST_F(FileWatcherTest, AFolderMovedAwayAndBackIsWatchedAgain) {
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", "{}");
+  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
+  FileWatcher watcher;
+  watcher.watch({scene});
+  fs::rename(dir_ / "d", dir_ / "elsewhere");
+  watcher.wait(milliseconds(300));
+  write(dir_ / "elsewhere" / "scene.json", R"({"e": 1})");
+  EXPECT_TRUE(watcher.wait(milliseconds(300)).empty());
+  fs::rename(dir_ / "elsewhere", dir_ / "d");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+  write(dir_ / "d" / "scene.json", R"({"e": 2})");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
+}
+
+// Watching the same set again while its folder is gone keeps waiting for it
+// (pita watch re-watches after each render).
+TEST_F(FileWatcherTest, WatchingAgainWhileTheFolderIsGoneKeepsWaiting) {
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", "{}");
+  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
+  FileWatcher watcher;
+  watcher.watch({scene});
+  fs::remove_all(dir_ / "d");
+  watcher.wait(milliseconds(300));
+  EXPECT_NO_THROW(watcher.watch({scene}));
+  fs::create_directories(dir_ / "d");
+  write(dir_ / "d" / "scene.json", "{}");
+  EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
 }
 
 }  // namespace
