@@ -163,7 +163,7 @@ cairo_surface_t* cached_image(const std::string& path, const std::string& name) 
   if (cairo_surface_t* found = cache.find(path, stamp)) return found;
   std::optional<PngStream> stream;
   try {
-    stream.emplace(PngStream{io::InputFile(path)});
+    stream.emplace(PngStream{io::InputFile(path), 0, false, {}});
   } catch (const io::InputError& error) {
     throw ImageError(fmt::format("cannot read the image \"{}\": {}", name,
                                  error.kind() == io::InputError::Kind::cannot_open

@@ -14,7 +14,7 @@ constexpr std::int64_t kMaxFirstsKept = std::int64_t{1} << 20;
 
 UnchangedAxes::UnchangedAxes(const Grid& grid) : zip_(grid.zip()) {
   if (zip_) {
-    for (const Axis& axis : grid.axes()) tracks_.push_back({axis.pointer});
+    for (const Axis& axis : grid.axes()) tracks_.push_back({axis.pointer, 1, 1, {}, true, false});
     return;
   }
   const std::vector<Axis>& axes = grid.axes();

@@ -60,7 +60,7 @@ class ImageFile : public ::testing::Test {
   }
 
   ImageRef check(const std::string& given, bool allow_absolute = false) const {
-    return check_image_file(scene_file_, given, ReadOptions{allow_absolute});
+    return check_image_file(scene_file_, given, ReadOptions{allow_absolute, std::nullopt});
   }
 
   // The reason check_image_file gives for `given`, or "(accepted)".
@@ -231,7 +231,7 @@ TEST_F(ImageFile, SceneReaderChecksImageShapes) {
   } catch (const SceneError& error) {
     EXPECT_EQ(error.pointer(), "/shapes/0/image");
   }
-  const Scene allowed = load_scene(scene_file_, ReadOptions{true});
+  const Scene allowed = load_scene(scene_file_, ReadOptions{true, std::nullopt});
   ASSERT_TRUE(figure_of<KeyframeKeys>(allowed).shapes[0].image.has_value());
   EXPECT_EQ(figure_of<KeyframeKeys>(allowed).shapes[0].image->path, absolute);
   // parse_scene finds images from the folder of its source name too.
