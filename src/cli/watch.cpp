@@ -27,7 +27,8 @@ namespace fs = std::filesystem;
 // could be read (else those of the last scene that could).
 std::vector<fs::path> watched_files(const RenderOptions& options, std::vector<fs::path>& images) {
   try {
-    images = scene::image_files(scene::load_scene(options.scene_paths.front(), {options.allow_absolute_paths, std::nullopt}));
+    images = scene::image_files(
+        scene::load_scene(options.scene_paths.front(), {options.allow_absolute_paths, std::nullopt}));
   } catch (...) {
     // a bad save: keep the images of the last good one
   }
