@@ -61,18 +61,28 @@ bool send_all(int fd, const char* data, std::size_t size) {
   return true;
 }
 
-// The request received whole, then the socket for the answer.
-class ReceivedStream : public httplib::Stream {
+// A request already received whole, read from memory: what cpp-httplib reads.
+class ReceivedRequest : public httplib::Stream {
  public:
-  ReceivedStream(std::string request, int fd) : request_(std::move(request)), fd_(fd) {}
+  explicit ReceivedRequest(std::string request) : request_(std::move(request)) {}
   bool is_readable() const override { return read_ < request_.size(); }
-  bool is_writable() const override { return ready(fd_, POLLOUT, std::chrono::seconds(5)); }
   ssize_t read(char* ptr, std::size_t size) override {
     const std::size_t n = std::min(size, request_.size() - read_);
     std::copy_n(request_.data() + read_, n, ptr);
     read_ += n;
     return static_cast<ssize_t>(n);
   }
+
+ private:
+  std::string request_;
+  std::size_t read_ = 0;
+};
+
+// The request received whole, then the socket for the answer.
+class ReceivedStream : public ReceivedRequest {
+ public:
+  ReceivedStream(std::string request, int fd) : ReceivedRequest(std::move(request)), fd_(fd) {}
+  bool is_writable() const override { return ready(fd_, POLLOUT, std::chrono::seconds(5)); }
   ssize_t write(const char* ptr, std::size_t size) override {
     return send_all(fd_, ptr, size) ? static_cast<ssize_t>(size) : -1;
   }
@@ -81,23 +91,14 @@ class ReceivedStream : public httplib::Stream {
   socket_t socket() const override { return fd_; }
 
  private:
-  std::string request_;
-  std::size_t read_ = 0;
   int fd_;
 };
 
 // A request given as bytes, and its answer gathered (at most 64 MiB).
-class MemoryStream : public httplib::Stream {
+class MemoryStream : public ReceivedRequest {
  public:
-  explicit MemoryStream(std::string_view request) : request_(request) {}
-  bool is_readable() const override { return read_ < request_.size(); }
+  explicit MemoryStream(std::string_view request) : ReceivedRequest(std::string(request)) {}
   bool is_writable() const override { return answer_.size() < (64U << 20); }
-  ssize_t read(char* ptr, std::size_t size) override {
-    const std::size_t n = std::min(size, request_.size() - read_);
-    std::copy_n(request_.data() + read_, n, ptr);
-    read_ += n;
-    return static_cast<ssize_t>(n);
-  }
   ssize_t write(const char* ptr, std::size_t size) override {
     answer_.append(ptr, size);
     return static_cast<ssize_t>(size);
@@ -114,8 +115,6 @@ class MemoryStream : public httplib::Stream {
   std::string take() { return std::move(answer_); }
 
  private:
-  std::string_view request_;
-  std::size_t read_ = 0;
   std::string answer_;
 };
 
