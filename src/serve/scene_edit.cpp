@@ -1,5 +1,6 @@
 #include "serve/scene_edit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <regex>
@@ -41,7 +42,10 @@ Point world_of(const render::ViewTransform& view, Point canvas) {
   return view.world_center + Point{d.real(), view.y_up ? -d.imag() : d.imag()} / view.scale;
 }
 
-std::string point_json(Point p) { return fmt::format("[{}, {}]", number_json(p.real()), number_json(p.imag())); }
+// A dragged point, each coordinate to a tenth of the pixel (`step`, in world units).
+std::string point_json(Point p, double step) {
+  return fmt::format("[{}, {}]", rounded_json(p.real(), step), rounded_json(p.imag(), step));
+}
 
 // The reference triangle's corners moved by a pose of the scene's.
 std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKeys& keys, const Affine2& pose) {
@@ -56,7 +60,7 @@ std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKe
 void check_change(const std::string& text, const Change& change) {
   // /keyframes/K/(p|q|m|w), /poses/K/(triangle/J|matrix), or the same under /panels/N.
   static const std::regex editable(
-      R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix))$)");
+      R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix(/[01]/[0-2])?))$)");
   if (!std::regex_match(change.pointer, editable)) {
     throw std::invalid_argument("\"" + change.pointer + "\" is not a value a drag writes");
   }
@@ -70,6 +74,14 @@ void check_change(const std::string& text, const Change& change) {
 }
 
 std::string number_json(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
+
+std::string rounded_json(double x, double step) {
+  if (!(step > 0.0) || !std::isfinite(step) || !std::isfinite(x)) return number_json(x);
+  const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(step))), 0, 15);
+  const double unit = std::pow(10.0, decimals);
+  const double rounded = std::round(x * unit) / unit;
+  return number_json(std::abs(rounded - x) <= step ? rounded : x);  // x * unit beyond a double's digits: x
+}
 
 std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
                             const std::vector<render::PanelPlacement>& placements) {
@@ -115,7 +127,10 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
     found = found || (handle.panel == panel && handle.pointer == pointer && handle.part == part);
   }
   if (!found) throw std::invalid_argument(fmt::format("{} has no handle \"{}\" in panel {}", pointer, part, panel));
-  const Point world = world_of(placements[panel].transform, to);
+  const render::ViewTransform& view = placements[panel].transform;
+  const Point world = world_of(view, to);
+  // What a drag resolves: a tenth of the pixel, in world units.
+  const double step = 0.1 / view.scale;
   const TextSpan span = value_span(text, pointer);
   const Json given = Json::parse(text.substr(span.begin, span.end - span.begin));
   const scene::Panel& drawn = scene.panels[panel];
@@ -123,18 +138,22 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
 
   if (const auto* arrows = std::get_if<scene::KeyframeKeys>(&drawn.keys)) {
     const Arrow& arrow = arrows->keyframes.at(index).arrow;
-    if (part == "tail") return {{pointer + "/p", point_json(world)}};
-    if (given.contains("q")) return {{pointer + "/q", point_json(world)}};
+    if (part == "tail") return {{pointer + "/p", point_json(world, step)}};
+    if (given.contains("q")) return {{pointer + "/q", point_json(world, step)}};
     // The winding that was, turned by the least angle to the new direction.
     const Point v = world - arrow.p;
     const double turn = std::remainder(std::arg(v) - arrow.w, 2.0 * std::numbers::pi);
     const double turns = given.contains("turns") ? given["turns"].get<double>() : 0.0;
-    return {{pointer + "/m", number_json(std::abs(v))},
-            {pointer + "/w", number_json(arrow.w + turn - 2.0 * std::numbers::pi * turns)}};
+    // The winding to the angle a tenth of a pixel makes at the tip.
+    const double angle_step = step / std::max(std::abs(v), step);
+    return {{pointer + "/m", rounded_json(std::abs(v), step)},
+            {pointer + "/w", rounded_json(arrow.w + turn - 2.0 * std::numbers::pi * turns, angle_step)}};
   }
   const auto& poses = std::get<scene::PlanePoseKeys>(drawn.keys);
   const int corner = part.back() - '0';
-  if (given.contains("triangle")) return {{fmt::format("{}/triangle/{}", pointer, corner), point_json(world)}};
+  if (given.contains("triangle")) {
+    return {{fmt::format("{}/triangle/{}", pointer, corner), point_json(world, step)}};
+  }
   auto moved = corners(scene, poses, poses.poses.at(index).pose);
   moved[static_cast<std::size_t>(corner)] = world;
   // The affinity that maps the reference triangle r onto `moved`.
@@ -146,9 +165,21 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
   Affine2 A;
   A.L = M * R.inverse();
   A.b = Eigen::Vector2d(moved[0].real(), moved[0].imag()) - A.L * Eigen::Vector2d(r[0].real(), r[0].imag());
-  return {{pointer + "/matrix",
-           fmt::format("[[{}, {}, {}], [{}, {}, {}]]", number_json(A.L(0, 0)), number_json(A.L(0, 1)),
-                       number_json(A.b(0)), number_json(A.L(1, 0)), number_json(A.L(1, 1)), number_json(A.b(1)))}};
+  // Each entry that moved by more than what the drag resolves, rounded to
+  // that: the others keep their text (0.4 stays 0.4, never 0.39999999999999997).
+  const double extent = std::max(std::abs(r[1] - r[0]), std::abs(r[2] - r[0]));
+  const double linear_step = step / std::max(extent, 1e-300);
+  std::vector<Change> changes;
+  for (int row = 0; row < 2; ++row) {
+    for (int column = 0; column < 3; ++column) {
+      const double now = column < 2 ? A.L(row, column) : A.b(row);
+      const double entry_step = column < 2 ? linear_step : step;
+      const double was = given.at("matrix").at(row).at(column).get<double>();
+      if (std::abs(now - was) <= entry_step) continue;
+      changes.push_back({fmt::format("{}/matrix/{}/{}", pointer, row, column), rounded_json(now, entry_step)});
+    }
+  }
+  return changes;
 }
 
 }  // namespace pita::serve

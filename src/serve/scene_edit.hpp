@@ -38,8 +38,10 @@ struct Change {
 // point `to` changes in the scene file `text` (the scene read from it):
 //   tail: "p"; tip: "q" when the keyframe gives q, else "m" and "w" (the
 //   winding moved by less than half a turn, so its turns stay);
-//   a corner: that point of "triangle", else the whole "matrix" that maps the
-//   reference triangle onto the moved one.
+//   a corner: that point of "triangle", else the entries of "matrix" (of the
+//   affinity that maps the reference triangle onto the moved one) that
+//   changed by more than the drag resolves; the others keep their text.
+// Dragged numbers are rounded to a tenth of the pixel (rounded_json).
 // Throws std::invalid_argument for a handle the figure does not have.
 // Changes a page sends back (undo) are checked by checked_change.
 std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
@@ -53,5 +55,10 @@ void check_change(const std::string& text, const Change& change);
 
 // A number as the edits write it: the shortest text that reads back to it.
 std::string number_json(double x);
+
+// A dragged number: `x` rounded to the decimals that resolve `step` (what the
+// drag resolves: a tenth of a pixel, in the value's units), in its shortest
+// text, so that a drag writes 0.827, not 0.8274027248313519.
+std::string rounded_json(double x, double step);
 
 }  // namespace pita::serve

@@ -151,6 +151,47 @@ TEST(SceneEdit, OnlyTheValuesADragWritesMayBeSentBack) {
   }
 }
 
+// A drag writes what it resolves, a tenth of the pixel: short numbers, not
+// 16 or 17 digits of where the pointer happened to be.
+TEST(SceneEdit, DraggedNumbersAreRoundedToATenthOfThePixel) {
+  const Drawn d = draw(kArrows);
+  const auto& view = d.figure.placements[0].transform;
+  const double step = 0.1 / view.scale;
+  const auto changes =
+      drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "tail", view(Point(1.23456789, -2.3456789)));
+  ASSERT_EQ(changes.size(), 1U);
+  const auto p = nlohmann::json::parse(changes[0].value);
+  EXPECT_NEAR(p[0].get<double>(), 1.23456789, step);
+  EXPECT_NEAR(p[1].get<double>(), -2.3456789, step);
+  EXPECT_LE(changes[0].value.size(), 20U) << changes[0].value;  // "[1.2346, -2.3457]" at this scale, not 17 digits each
+  EXPECT_EQ(rounded_json(0.8274027248313519, 0.001), "0.827");
+  EXPECT_EQ(rounded_json(0.39999999999999997, 0.001), "0.4");
+  EXPECT_EQ(rounded_json(1e20 + 12345, 0.001), number_json(1e20 + 12345));  // beyond a double's decimals: as it is
+}
+
+// Moving one corner of a matrix pose changes the entries that move; the
+// others keep their text byte for byte (0.4 stays 0.4).
+TEST(SceneEdit, AMatrixDragRewritesOnlyTheEntriesThatMove) {
+  const std::string text = R"({"method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0.4, 0], [0, 1, 0.4]]},
+    {"t": 1, "matrix": [[2, 0, 1], [0, 2, 0]]}]})";
+  const Drawn d = draw(text);
+  const auto& view = d.figure.placements[0].transform;
+  // Corner 0 (the image of (0, 0)) moved right by 0.5: only b_x changes ... and L, whose columns are edges from it.
+  const Point corner0(0, 0.4);
+  const auto changes =
+      drag(text, d.scene, d.figure.placements, 0, "/poses/0", "corner0", view(corner0 + Point(0.5, 0)));
+  ASSERT_FALSE(changes.empty());
+  for (const Change& c : changes) {
+    EXPECT_EQ(c.pointer.rfind("/poses/0/matrix/", 0), 0U) << c.pointer;
+    check_change(text, c);
+  }
+  const std::string edited = applied(text, changes);
+  const auto m = nlohmann::json::parse(edited)["poses"][0]["matrix"];
+  EXPECT_NEAR(m[0][2].get<double>(), 0.5, 0.1 / view.scale);
+  EXPECT_NE(edited.find("[0, 1, 0.4]"), std::string::npos) << edited;  // the second row untouched
+}
+
 TEST(SceneEdit, NumbersAreWrittenShortAndExact) {
   EXPECT_EQ(number_json(3.0), "3");
   EXPECT_EQ(number_json(-0.0), "0");
