@@ -8,10 +8,13 @@
 #include "analysis/measure.hpp"
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
+#include "animate/output.hpp"
+#include "animate/svg_animation.hpp"
 #include "animate/timeline.hpp"
 #include "core/fnv1a.hpp"
 #include "io/output_file.hpp"
 #include "motion/stage.hpp"
+#include "render/budget.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
 #include "scene/json_text.hpp"
@@ -108,6 +111,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.claims = std::move(claims);
       state.text = std::move(text);
       state.files = {state.path};
+      state.animation.reset();  // made again when asked for
       for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
     }
     state.error = std::move(error);
@@ -157,6 +161,7 @@ Json LiveScenes::scenes_json() {
                {"path", state.path.string()},
                {"version", state.version},
                {"title", state.scene ? state.scene->title : ""},
+               {"description", state.scene ? state.scene->description : ""},
                {"error", state.error ? *state.error : Json(nullptr)},
                {"timeline", nullptr},
                {"handles", Json::array()},
@@ -182,6 +187,7 @@ Json LiveScenes::scenes_json() {
                                  {"last", timeline.last},
                                  {"frames", timeline.frames},
                                  {"fps", timeline.fps},
+                                 {"loop", timeline.loop},
                                  {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
       } catch (const std::exception&) {
         // no motion to play (a figure without one)
@@ -204,6 +210,66 @@ std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<doubl
   const render::Figure figure =
       animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
   return render::render_figure(*scene, figure, render::Format::svg);
+}
+
+std::optional<std::string> LiveScenes::animation(std::size_t i) {
+  std::shared_ptr<const scene::Scene> scene;
+  std::shared_ptr<AnimationCache> cache;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    SceneState& state = *scenes_[i];
+    if (!state.scene) return std::nullopt;
+    if (!state.animation) state.animation = std::make_shared<AnimationCache>();
+    scene = state.scene;
+    cache = state.animation;
+  }
+  const std::lock_guard<std::mutex> lock(cache->mutex);
+  if (!cache->made) {
+    try {
+      // As `pita animate -o OUT.svg` checks and writes it.
+      const animate::Timeline timeline = animate::make_timeline(*scene);
+      animate::Request request;
+      request.kind = animate::AnimationOutput::svg;
+      render::check_budget(*scene, render::estimate_cost(*scene), request.budget);
+      animate::check_total_work(*scene, timeline, request);
+      render::check_images(*scene);
+      cache->svg = animate::animated_svg(*scene, timeline);
+      if (cache->svg.size() > kMaxPageAnimationBytes) {
+        const std::size_t size = cache->svg.size();
+        cache->svg.clear();
+        throw animate::AnimationError(fmt::format(
+            "the animated SVG would be {:.3g} MB, more than the page takes ({} MB): its frames are drawn one by one",
+            static_cast<double>(size) / 1e6, kMaxPageAnimationBytes >> 20U));
+      }
+    } catch (...) {
+      cache->error = std::current_exception();
+    }
+    cache->made = true;
+  }
+  if (cache->error) std::rethrow_exception(cache->error);
+  return cache->svg;
+}
+
+std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format) {
+  std::shared_ptr<const scene::Scene> scene;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    scene = scenes_[i]->scene;
+    if (scene && !at && format == render::Format::svg) return scenes_[i]->svg;
+  }
+  if (!scene) return std::nullopt;
+  render::Figure figure;
+  if (at) {
+    // As pita render --at: one frame of the animation, in the view its frames share.
+    const animate::Timeline timeline = animate::make_timeline(*scene);
+    render::check_budget(*scene, render::estimate_cost(*scene), 1.0);
+    render::check_images(*scene);
+    figure = animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
+  } else {
+    const motion::Stage stage(*scene);
+    figure = render::build_figure(stage);
+  }
+  return render::render_figure(*scene, figure, format);
 }
 
 std::optional<std::string> LiveScenes::measures(std::size_t i) {
