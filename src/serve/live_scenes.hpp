@@ -46,9 +46,23 @@ struct AnimationCache {
   std::exception_ptr error;  // why there is none (AnimationError: no motion, or too large)
 };
 
-// The largest animated SVG the page is sent: a larger one is refused (409)
-// and the page fetches each frame from the server instead.
+// The largest animated SVG the page is sent, and the longest it may take to
+// make (judged after each frame: the time so far, and the frames to come at
+// the pace so far): beyond either it is refused (409) and the page fetches
+// each frame from the server instead. Most figures of scenes/ take 0.01 to
+// 3 s; one that draws a table or an analysis again in every frame (Fig. 10's
+// audit, 1.3 s a frame and 43 s for the layout) would take minutes.
 inline constexpr std::size_t kMaxPageAnimationBytes = 32U << 20U;
+inline constexpr double kMaxPageAnimationSeconds = 20.0;
+
+// The view every frame of one good state shares (animate::animation_layout),
+// made once for the frames fetched one by one.
+struct LayoutCache {
+  std::mutex mutex;
+  bool made = false;
+  std::vector<render::PanelPlacement> placements;
+  std::exception_ptr error;
+};
 
 // One scene of the command line: its last good figure and what is wrong now.
 struct SceneState {
@@ -62,6 +76,7 @@ struct SceneState {
   Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
   std::string text;                                // the file it was read from
   std::shared_ptr<AnimationCache> animation;       // its animated SVG, once asked for
+  std::shared_ptr<LayoutCache> layout;             // its frames' view, once asked for
 };
 
 class LiveScenes {
@@ -123,6 +138,11 @@ class LiveScenes {
     options.allow_absolute_paths = settings_.allow_absolute_paths;
     return options;
   }
+
+  // The scene of the last good state of scene i and its frames' view (made
+  // once per good state, when first asked for); a null scene without one.
+  std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
+  frame_layout(std::size_t i);
 
   const Settings& settings_;
   std::vector<std::unique_ptr<SceneState>> scenes_;
