@@ -137,6 +137,14 @@ def test_dragging_writes_the_scene_file(folder, browser):
         browser.open(served.url)
         tail = "#scene-0 circle.handle.tail[data-pointer='/keyframes/0']"
         eventually(lambda: browser.evaluate(f"document.querySelector({json.dumps(tail)}) !== null"), 60)
+        # Zoomed in about the tail (the wheel over it), the handle stays under the pointer and drags.
+        x, y = browser.evaluate(f"""(() => {{ const r = document.querySelector({json.dumps(tail)}).getBoundingClientRect();
+            return [r.x + r.width / 2, r.y + r.height / 2]; }})()""")
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
+        check(browser.evaluate("document.querySelector('#scene-0 .figure svg').classList.contains('zoomed')"), "zoomed")
+        moved = browser.evaluate(f"""(() => {{ const r = document.querySelector({json.dumps(tail)}).getBoundingClientRect();
+            return Math.hypot(r.x + r.width / 2 - {x}, r.y + r.height / 2 - {y}); }})()""")
+        check(moved < 1, f"the tail stays under the pointer when zoomed about it ({moved} px)")
         browser.drag(tail, 40, 0)
         edited = eventually(lambda: (folder / "s.json").read_text() != text and (folder / "s.json").read_text(), 60)
         before, after = json.loads(text), json.loads(edited)
@@ -155,7 +163,8 @@ def test_dragging_writes_the_scene_file(folder, browser):
         # An edit that would make the scene bad (a magnitude of -1) is refused, with the reason shown.
         browser.evaluate("""edit(0, {changes: [{pointer: '/keyframes/0/m', value: '-1'}]}, true)""")
         refused = eventually(lambda: browser.evaluate(
-            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60)
+            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60,
+            what=lambda: "the refusal shown: " + page_state(browser) + " " + served.stderr()[-600:])
         check("/keyframes/0/m" in refused and "magnitude must be > 0" in refused, f"the reason: {refused}")
         # The refusal is shown over the figure, which stays where it was; a good state clears it.
         top = browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top")
@@ -323,10 +332,21 @@ def test_scrubbing_and_play(folder, browser, rates):
             check(shown and shown == animation_frame_paths((folder / ".a.svg").read_text(), k),
                   f"{name}: the page's frame {k} is pita animate's")
             (folder / ".a.svg").unlink()
-            # Its time is render --at's t_k: the frame fetched at that time is the same frame.
+            # Its time is render --at's t_k.
             t = browser.evaluate(f"views.get({i}).t")
             expected = browser.evaluate(f"frameTime(views.get({i}).timeline, {k})")
             check(t == expected, f"t = {t} is frame {k}'s time {expected}")
+        # Without the animated SVG (too large or slow to make) frames are fetched: a scrub cancels
+        # each request the next one supersedes, and the last frame asked for is the one shown.
+        browser.evaluate("""(() => { window.pitaSignals = []; const fetched = window.fetch;
+            window.fetch = (url, options) => { if (String(url).includes('/api/figure/'))
+              window.pitaSignals.push(options.signal); return fetched(url, options); };
+            views.get(1).animation = null; const s = document.querySelector('#scene-1 input[type=range]');
+            for (const k of [10, 20, 30]) { s.value = String(k); s.dispatchEvent(new Event('input')); } })()""")
+        eventually(lambda: browser.evaluate("views.get(1).shown === 'frame' && views.get(1).shownFrame === 30"), 60,
+                   what=lambda: browser.evaluate("[views.get(1).shown, views.get(1).shownFrame]"))
+        aborted = browser.evaluate("window.pitaSignals.map(s => s.aborted)")
+        check(aborted == [True, True, False], f"superseded requests cancelled: {aborted}")
     finally:
         served.stop()
 
