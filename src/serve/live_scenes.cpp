@@ -274,6 +274,13 @@ std::optional<std::string> LiveScenes::animation(std::size_t i) {
         const double spent = std::chrono::duration<double>(now - started).count();
         const double each = k == 0 ? 0.0 : std::chrono::duration<double>(now - first).count() / k;
         const double total = spent + each * (timeline.frames - 1 - k);
+        {
+          // A save since makes another: this one is left (its page asks again), as when stopping.
+          const std::lock_guard<std::mutex> state_lock(mutex_);
+          if (scenes_[i]->animation != cache || stopping_) {
+            throw animate::AnimationError("the scene was saved again while its animated SVG was made");
+          }
+        }
         if (total > kMaxPageAnimationSeconds) {
           throw animate::AnimationError(fmt::format(
               "the animated SVG would take about {:.0f} s to make, more than the page waits ({:.0f} s): its frames "
