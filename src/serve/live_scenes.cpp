@@ -8,10 +8,13 @@
 #include "analysis/measure.hpp"
 #include "analysis/measure_report.hpp"
 #include "animate/frame.hpp"
+#include "animate/output.hpp"
+#include "animate/svg_animation.hpp"
 #include "animate/timeline.hpp"
 #include "core/fnv1a.hpp"
 #include "io/output_file.hpp"
 #include "motion/stage.hpp"
+#include "render/budget.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/image_file.hpp"
 #include "scene/json_text.hpp"
@@ -108,6 +111,8 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.claims = std::move(claims);
       state.text = std::move(text);
       state.files = {state.path};
+      state.animation.reset();  // made again when asked for
+      state.layout.reset();
       for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
     }
     state.error = std::move(error);
@@ -157,6 +162,7 @@ Json LiveScenes::scenes_json() {
                {"path", state.path.string()},
                {"version", state.version},
                {"title", state.scene ? state.scene->title : ""},
+               {"description", state.scene ? state.scene->description : ""},
                {"error", state.error ? *state.error : Json(nullptr)},
                {"timeline", nullptr},
                {"handles", Json::array()},
@@ -182,6 +188,7 @@ Json LiveScenes::scenes_json() {
                                  {"last", timeline.last},
                                  {"frames", timeline.frames},
                                  {"fps", timeline.fps},
+                                 {"loop", timeline.loop},
                                  {"what", timeline.what == scene::Animation::What::pattern ? "pattern" : "motion"}};
       } catch (const std::exception&) {
         // no motion to play (a figure without one)
@@ -192,18 +199,136 @@ Json LiveScenes::scenes_json() {
   return all;
 }
 
-std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at) {
+std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
+LiveScenes::frame_layout(std::size_t i) {
   std::shared_ptr<const scene::Scene> scene;
+  std::shared_ptr<LayoutCache> cache;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    SceneState& state = *scenes_[i];
+    if (!state.scene) return {};
+    if (!state.layout) state.layout = std::make_shared<LayoutCache>();
+    scene = state.scene;
+    cache = state.layout;
+  }
+  const std::lock_guard<std::mutex> lock(cache->mutex);
+  if (!cache->made) {
+    try {
+      cache->placements = animate::animation_layout(*scene, animate::make_timeline(*scene));
+    } catch (...) {
+      cache->error = std::current_exception();
+    }
+    cache->made = true;
+  }
+  if (cache->error) std::rethrow_exception(cache->error);
+  // Shares the cache's lifetime: the placements stay while a frame is drawn with them.
+  return {scene, std::shared_ptr<const std::vector<render::PanelPlacement>>(cache, &cache->placements)};
+}
+
+std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+  }
+  return export_figure(i, at, render::Format::svg);
+}
+
+std::optional<std::string> LiveScenes::animation(std::size_t i) {
+  std::shared_ptr<const scene::Scene> scene;
+  std::shared_ptr<AnimationCache> cache;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    SceneState& state = *scenes_[i];
+    if (!state.scene) return std::nullopt;
+    if (!state.animation) state.animation = std::make_shared<AnimationCache>();
+    scene = state.scene;
+    cache = state.animation;
+  }
+  const std::lock_guard<std::mutex> lock(cache->mutex);
+  if (!cache->made) {
+    try {
+      // As `pita animate -o OUT.svg` checks and writes it.
+      const animate::Timeline timeline = animate::make_timeline(*scene);
+      animate::Request request;
+      request.kind = animate::AnimationOutput::svg;
+      render::check_budget(*scene, render::estimate_cost(*scene), request.budget);
+      animate::check_total_work(*scene, timeline, request);
+      render::check_images(*scene);
+      // Given up once it would take longer than kMaxPageAnimationSeconds. It
+      // makes the frames' view first, as the fetched frames do: the view made
+      // here (and kept for them) says how long making it again would take.
+      const auto started = std::chrono::steady_clock::now();
+      frame_layout(i);
+      const double layout = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      if (layout > kMaxPageAnimationSeconds / 2) {
+        throw animate::AnimationError(
+            fmt::format("the animated SVG would take minutes to make (its view alone took {:.0f} s): its frames "
+                        "are drawn one by one",
+                        layout));
+      }
+      // The pace of the frames from the end of the first (the layout comes before it).
+      std::chrono::steady_clock::time_point first;
+      const auto pace = [&](int k) {
+        const auto now = std::chrono::steady_clock::now();
+        if (k == 0) first = now;
+        const double spent = std::chrono::duration<double>(now - started).count();
+        const double each = k == 0 ? 0.0 : std::chrono::duration<double>(now - first).count() / k;
+        const double total = spent + each * (timeline.frames - 1 - k);
+        {
+          // A save since makes another: this one is left (its page asks again), as when stopping.
+          const std::lock_guard<std::mutex> state_lock(mutex_);
+          if (scenes_[i]->animation != cache || stopping_) {
+            throw animate::AnimationError("the scene was saved again while its animated SVG was made");
+          }
+        }
+        if (total > kMaxPageAnimationSeconds) {
+          throw animate::AnimationError(fmt::format(
+              "the animated SVG would take about {:.0f} s to make, more than the page waits ({:.0f} s): its frames "
+              "are drawn one by one",
+              total, kMaxPageAnimationSeconds));
+        }
+      };
+      cache->svg = animate::animated_svg(*scene, timeline, pace);
+      if (cache->svg.size() > kMaxPageAnimationBytes) {
+        const std::size_t size = cache->svg.size();
+        cache->svg.clear();
+        throw animate::AnimationError(fmt::format(
+            "the animated SVG would be {:.3g} MB, more than the page takes ({} MB): its frames are drawn one by one",
+            static_cast<double>(size) / 1e6, kMaxPageAnimationBytes >> 20U));
+      }
+    } catch (...) {
+      cache->error = std::current_exception();
+    }
+    cache->made = true;
+  }
+  if (cache->error) std::rethrow_exception(cache->error);
+  return cache->svg;
+}
+
+std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format) {
+  std::shared_ptr<const scene::Scene> scene;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
     scene = scenes_[i]->scene;
+    if (scene && !at && format == render::Format::svg) return scenes_[i]->svg;
   }
   if (!scene) return std::nullopt;
-  const animate::Timeline timeline = animate::make_timeline(*scene);
-  const render::Figure figure =
-      animate::frame_figure(*scene, timeline, *at, animate::animation_layout(*scene, timeline));
-  return render::render_figure(*scene, figure, render::Format::svg);
+  render::Figure figure;
+  if (at) {
+    // As pita render --at: one frame of the animation, in the view its frames
+    // share (made once per good state: it draws 33 frames of the figure).
+    const auto [layout_scene, placements] = frame_layout(i);
+    if (!layout_scene) return std::nullopt;
+    scene = layout_scene;
+    const animate::Timeline timeline = animate::make_timeline(*scene);
+    render::check_budget(*scene, render::estimate_cost(*scene), 1.0);
+    render::check_images(*scene);
+    figure = animate::frame_figure(*scene, timeline, *at, *placements);
+  } else {
+    const motion::Stage stage(*scene);
+    figure = render::build_figure(stage);
+  }
+  return render::render_figure(*scene, figure, format);
 }
 
 std::optional<std::string> LiveScenes::measures(std::size_t i) {

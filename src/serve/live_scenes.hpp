@@ -36,6 +36,34 @@ Json error_json(const std::exception_ptr& thrown, const std::string& path);
 // it is, cannot be drawn or measured).
 int error_status(const std::exception_ptr& thrown);
 
+// The animated SVG of one good state of a scene (`pita animate OUT.svg`'s),
+// made when first asked for and kept until the next good save: the page
+// seeks it for every frame, so that no frame waits for the server.
+struct AnimationCache {
+  std::mutex mutex;  // held while it is made: a second request waits for it
+  bool made = false;
+  std::string svg;
+  std::exception_ptr error;  // why there is none (AnimationError: no motion, or too large)
+};
+
+// The largest animated SVG the page is sent, and the longest it may take to
+// make (judged after each frame: the time so far, and the frames to come at
+// the pace so far): beyond either it is refused (409) and the page fetches
+// each frame from the server instead. Most figures of scenes/ take 0.01 to
+// 3 s; one that draws a table or an analysis again in every frame (Fig. 10's
+// audit, 1.3 s a frame and 43 s for the layout) would take minutes.
+inline constexpr std::size_t kMaxPageAnimationBytes = 32U << 20U;
+inline constexpr double kMaxPageAnimationSeconds = 20.0;
+
+// The view every frame of one good state shares (animate::animation_layout),
+// made once for the frames fetched one by one.
+struct LayoutCache {
+  std::mutex mutex;
+  bool made = false;
+  std::vector<render::PanelPlacement> placements;
+  std::exception_ptr error;
+};
+
 // One scene of the command line: its last good figure and what is wrong now.
 struct SceneState {
   fs::path path;
@@ -47,6 +75,8 @@ struct SceneState {
   std::vector<render::PanelPlacement> placements;  // where the last good figure drew each panel
   Json claims = Json::array();                     // its caption's claims, measured (as pita check does)
   std::string text;                                // the file it was read from
+  std::shared_ptr<AnimationCache> animation;       // its animated SVG, once asked for
+  std::shared_ptr<LayoutCache> layout;             // its frames' view, once asked for
 };
 
 class LiveScenes {
@@ -73,6 +103,17 @@ class LiveScenes {
 
   std::optional<std::string> measures(std::size_t i);
 
+  // The animated SVG of the last good figure, as `pita animate -o OUT.svg`
+  // writes it (made once per good save, when first asked for); nullopt
+  // without a good figure. Throws animate::AnimationError when the scene has
+  // no animation, or its SVG would exceed an animation's work or
+  // kMaxPageAnimationBytes, and what drawing throws.
+  std::optional<std::string> animation(std::size_t i);
+
+  // The bytes `pita render SCENE [--at t] -o OUT.svg|.png` writes for the
+  // last good figure; nullopt without one. Throws what rendering throws.
+  std::optional<std::string> export_figure(std::size_t i, std::optional<double> at, render::Format format);
+
   // Waits (at most `wait`) for a render newer than `seen`; the versions now.
   std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait);
 
@@ -97,6 +138,11 @@ class LiveScenes {
     options.allow_absolute_paths = settings_.allow_absolute_paths;
     return options;
   }
+
+  // The scene of the last good state of scene i and its frames' view (made
+  // once per good state, when first asked for); a null scene without one.
+  std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
+  frame_layout(std::size_t i);
 
   const Settings& settings_;
   std::vector<std::unique_ptr<SceneState>> scenes_;

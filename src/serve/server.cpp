@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "animate/timeline.hpp"
 #include "serve/file_watch.hpp"
 #include "serve/live_scenes.hpp"
 #include "serve/oldest_first.hpp"
@@ -137,6 +138,75 @@ void get_figure(Site& site, const httplib::Request& req, httplib::Response& res)
   }
 }
 
+// The animated SVG the page seeks for every frame of the slider and of play:
+// 409, with the reason, when the scene has none (no motion to play, beyond an
+// animation's work or kMaxPageAnimationBytes): the page then fetches frames.
+void get_animation(Site& site, const httplib::Request& req, httplib::Response& res) {
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  try {
+    const auto svg = site.state.animation(*i);
+    if (!svg) return send_error(res, 409, "the scene has no good figure yet: see its error");
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(*svg, "image/svg+xml; charset=utf-8");  // the charset: as get_figure
+  } catch (const animate::AnimationError& e) {
+    send_error(res, 409, e.what());
+  } catch (...) {
+    send_failure(res, site.settings.scenes[*i].string());
+  }
+}
+
+// A file name of the download: the scene's name in letters, digits, '.',
+// '-' and '_' only (it goes into a header), and what it holds.
+std::string download_name(const fs::path& scene, const std::string& what) {
+  std::string name;
+  for (const char c : scene.stem().string()) {
+    const bool plain =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_';
+    name += plain ? c : '_';
+  }
+  if (name.empty() || name.front() == '.') name.insert(0, "scene");
+  return name + what;
+}
+
+// Export: GET /api/export/N?what=svg|png[&at=t] the bytes `pita render SCENE
+// [--at t] -o OUT.svg|.png` writes, what=animation those of `pita animate
+// SCENE -o OUT.svg`; as a download (Content-Disposition: attachment).
+void get_export(Site& site, const httplib::Request& req, httplib::Response& res) {
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  const std::string what = req.has_param("what") ? req.get_param_value("what") : "";
+  if (what != "svg" && what != "png" && what != "animation") {
+    return send_error(res, 400, "what: svg, png or animation, please");
+  }
+  std::optional<double> at;
+  try {
+    at = figure_time(req);
+  } catch (const std::exception&) {
+    return send_error(res, 400, "at: a finite number, please");
+  }
+  if (what == "animation" && at) return send_error(res, 400, "at: not with what=animation (it has every frame)");
+  try {
+    const auto bytes = what == "animation" ? site.state.animation(*i)
+                                           : site.state.export_figure(
+                                                 *i, at, what == "png" ? render::Format::png : render::Format::svg);
+    if (!bytes) return send_error(res, 409, "the scene has no good figure yet: see its error");
+    const std::string suffix = what == "animation" ? "-animation.svg"
+                               : at                ? fmt::format("-at-{}.{}", *at, what)
+                                                   : "." + what;
+    res.set_header("Cache-Control", "no-store");
+    res.set_header("Content-Disposition",
+                   fmt::format("attachment; filename=\"{}\"", download_name(site.settings.scenes[*i], suffix)));
+    res.set_header("X-Content-Type-Options", "nosniff");
+    // Downloads are sent as bytes (never compressed, never shown inline).
+    res.set_content(*bytes, what == "png" ? "image/png" : "application/octet-stream");
+  } catch (const animate::AnimationError& e) {
+    send_error(res, 409, e.what());
+  } catch (...) {
+    send_failure(res, site.settings.scenes[*i].string());
+  }
+}
+
 void get_measures(Site& site, const httplib::Request& req, httplib::Response& res) {
   const auto i = scene_index(req.matches[1], site.state.size());
   if (!i) return send_error(res, 404, "no such scene");
@@ -231,6 +301,8 @@ constexpr std::array kRoutes{
     Route{Verb::get, "/api/scenes", get_scenes},
     Route{Verb::get, R"(/api/figure/(\d+))", get_figure},
     Route{Verb::get, R"(/api/measures/(\d+))", get_measures},
+    Route{Verb::get, R"(/api/animation/(\d+))", get_animation},
+    Route{Verb::get, R"(/api/export/(\d+))", get_export},
     Route{Verb::get, "/api/events", get_events},
     Route{Verb::post, R"(/api/edit/(\d+))", post_edit},
 };

@@ -10,6 +10,11 @@
 //   GET /api/scenes?token=T            every scene: name, title, version, error, time range
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
 //   GET /api/measures/N?token=T        scene N's `pita measure --format json`
+//   GET /api/animation/N?token=T       scene N's animated SVG (`pita animate -o OUT.svg`'s), made
+//                                      once per save; 409 when it has none or it is too large
+//   GET /api/export/N?token=T&what=W[&at=t]  a download (Content-Disposition: attachment): W = svg
+//                                      or png, the bytes of `pita render [--at t] -o OUT.W`;
+//                                      W = animation, those of `pita animate -o OUT.svg`
 //   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
 //   POST /api/edit/N?token=T           with --edit: a drag of a handle ({"drag": {"panel", "pointer",
 //                                      "part", "to": [x, y]}}) or changes ({"changes": [{"pointer",

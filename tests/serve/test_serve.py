@@ -13,6 +13,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import urllib.request
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from serve_session import PITA, Browser, Served, eventually  # noqa: E402
@@ -104,20 +105,24 @@ def test_the_page_follows_the_saves(folder, browser, latencies):
         check("s.json:2:" in said and "/keyframes/1/m: magnitude must be > 0" in said, said)
         check("the page keeps the last good figure" in said, said)
 
-        # The slider: the frame at its time, as pita render --at draws it.
+        # The slider: frame k of pita animate, at its time t_k, as pita render --at draws it.
         check(browser.evaluate("getComputedStyle(document.querySelector('#scene-0 .controls')).display") != "none",
               "a scene with a motion has a slider")
-        browser.evaluate("""(() => { const s = document.querySelector('#scene-0 input[type=range]');
-            s.value = '0.5'; s.dispatchEvent(new Event('input')); })()""")
-        at_half = eventually(lambda: figure_text(browser) != first and figure_text(browser), 60,
-                             what=lambda: "the frame at 0.5: " + page_state(browser))
-        subprocess.run([PITA, "render", "s.json", "--at", "0.5", "-o", ".at.svg"], cwd=folder, check=True,
+        check(browser.evaluate("document.querySelector('#scene-0 .controls label').textContent") == "t from 0 to 1",
+              "the slider says what it runs through")
+        # Frames fetched one by one (before the animated SVG came, or without one): render --at's frame.
+        browser.evaluate("""(() => { views.get(0).animation = null; const s = document.querySelector('#scene-0 input[type=range]');
+            s.value = String(Math.round(+s.max / 2)); s.dispatchEvent(new Event('input')); })()""")
+        at = eventually(lambda: browser.evaluate("views.get(0).shown === 'frame' && views.get(0).t"), 60,
+                        what=lambda: "the fetched frame: " + page_state(browser))
+        frame = figure_text(browser)
+        subprocess.run([PITA, "render", "s.json", "--at", repr(at), "-o", ".at.svg"], cwd=folder, check=True,
                        stdout=subprocess.DEVNULL)
         svg = (folder / ".at.svg").read_text()
         (folder / ".at.svg").unlink()
-        check(svg.split("<svg", 1)[1][:300] in at_half, "the slider's frame is render --at's")
-        check(browser.evaluate("document.querySelector('#scene-0 .controls span').textContent") == "t = 0.500",
-              "the slider's time is shown")
+        check(svg.split("<svg", 1)[1][:300] in frame and frame != first, "the slider's frame is render --at's")
+        check(browser.evaluate("document.querySelector('#scene-0 .controls .time').textContent").startswith(
+              f"t = {at:.3f}  (frame "), "the slider's time is shown")
     finally:
         check(served.stop() == 128 + 15, "SIGTERM stops it with 128 + 15")
 
@@ -132,6 +137,14 @@ def test_dragging_writes_the_scene_file(folder, browser):
         browser.open(served.url)
         tail = "#scene-0 circle.handle.tail[data-pointer='/keyframes/0']"
         eventually(lambda: browser.evaluate(f"document.querySelector({json.dumps(tail)}) !== null"), 60)
+        # Zoomed in about the tail (the wheel over it), the handle stays under the pointer and drags.
+        x, y = browser.evaluate(f"""(() => {{ const r = document.querySelector({json.dumps(tail)}).getBoundingClientRect();
+            return [r.x + r.width / 2, r.y + r.height / 2]; }})()""")
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
+        check(browser.evaluate("document.querySelector('#scene-0 .figure svg').classList.contains('zoomed')"), "zoomed")
+        moved = browser.evaluate(f"""(() => {{ const r = document.querySelector({json.dumps(tail)}).getBoundingClientRect();
+            return Math.hypot(r.x + r.width / 2 - {x}, r.y + r.height / 2 - {y}); }})()""")
+        check(moved < 1, f"the tail stays under the pointer when zoomed about it ({moved} px)")
         browser.drag(tail, 40, 0)
         edited = eventually(lambda: (folder / "s.json").read_text() != text and (folder / "s.json").read_text(), 60)
         before, after = json.loads(text), json.loads(edited)
@@ -150,7 +163,8 @@ def test_dragging_writes_the_scene_file(folder, browser):
         # An edit that would make the scene bad (a magnitude of -1) is refused, with the reason shown.
         browser.evaluate("""edit(0, {changes: [{pointer: '/keyframes/0/m', value: '-1'}]}, true)""")
         refused = eventually(lambda: browser.evaluate(
-            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60)
+            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"), 60,
+            what=lambda: "the refusal shown: " + page_state(browser) + " " + served.stderr()[-600:])
         check("/keyframes/0/m" in refused and "magnitude must be > 0" in refused, f"the reason: {refused}")
         # The refusal is shown over the figure, which stays where it was; a good state clears it.
         top = browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top")
@@ -248,6 +262,190 @@ def test_the_page_links_only_within_itself(folder, browser):
         check(not bad, f"links out of the page: {bad[:5]}")
         check(browser.evaluate("document.querySelector('#scene-0 h2').textContent").startswith("javascript:alert(1)"),
               "the scene's name is shown as text")
+    finally:
+        served.stop()
+
+
+def key(browser, name, code, keycode, text=None):
+    """A key pressed and released, as the keyboard sends it."""
+    extra = {"text": text} if text else {}
+    browser.call("Input.dispatchKeyEvent", type="keyDown", key=name, code=code, windowsVirtualKeyCode=keycode, **extra)
+    browser.call("Input.dispatchKeyEvent", type="keyUp", key=name, code=code, windowsVirtualKeyCode=keycode)
+
+
+def visible_frames(browser, index):
+    """The frame groups of the animated SVG the page shows, visible now (their indices)."""
+    return browser.evaluate(f"""[...document.querySelectorAll('#scene-{index} .figure svg > g[visibility]')]
+        .map((g, j) => getComputedStyle(g).visibility === 'visible' ? j : -1).filter(j => j >= 0)""")
+
+
+def animation_frame_paths(svg_text, k):
+    """The d of every path of frame k of an animated SVG (`pita animate -o x.svg`)."""
+    groups = re.findall(r'<g visibility="(?:visible|hidden)"><animate .*?\n', svg_text)
+    return re.findall(r' d="([^"]*)"', groups[k])
+
+
+def test_scrubbing_and_play(folder, browser, rates):
+    """The slider, the arrow keys and play seek the scene's animated SVG, asking nothing of the
+    server: the frame shown is pita animate's frame k, at the time of render --at's; play shows
+    frames at the timeline's fps (measured over 2 s)."""
+    names = ("fig01-eight-pitas", "sam-fig02-linear-and-sam")
+    shutil.copytree(SOURCE / "scenes" / "images", folder / "images")
+    for name in names:
+        shutil.copy(SOURCE / "scenes" / f"{name}.json", folder / f"{name}.json")
+    served = Served(folder, [f"{name}.json" for name in names])
+    try:
+        browser.open(served.url)
+        for i, name in enumerate(names):
+            eventually(lambda: browser.evaluate(f"typeof views !== 'undefined' && views.get({i}) && views.get({i}).animation !== null"), 60,
+                       what=f"{name}'s animated SVG")
+            browser.evaluate(f"document.querySelector('#scene-{i}').scrollIntoView(); "
+                             f"document.querySelector('#scene-{i} .figure').focus()")
+            requests = browser.evaluate("performance.getEntriesByType('resource').length")
+            # Space plays: the frames shown change at the display's rate, up to the timeline's fps.
+            key(browser, " ", "Space", 32, " ")
+            eventually(lambda: browser.evaluate(f"views.get({i}).shown") == "animation", 10)
+            before = browser.evaluate(f"views.get({i}).changes")
+            time.sleep(2)
+            after = browser.evaluate(f"views.get({i}).changes")
+            key(browser, " ", "Space", 32, " ")
+            check(not browser.evaluate(f"views.get({i}).playing"), "space pauses")
+            fps = browser.evaluate(f"views.get({i}).timeline.fps")
+            rates.append((name, (after - before) / 2, fps))
+            check((after - before) / 2 > 0.8 * fps, f"{name}: {(after - before) / 2} frames a second, of {fps}")
+            # An arrow steps one frame; the frame shown is pita animate's frame k.
+            k = browser.evaluate(f"views.get({i}).k")
+            key(browser, "ArrowRight", "ArrowRight", 39)
+            check(browser.evaluate(f"views.get({i}).k") == k + 1, "the right arrow steps a frame")
+            key(browser, "ArrowLeft", "ArrowLeft", 37)
+            key(browser, "ArrowLeft", "ArrowLeft", 37)
+            k -= 1
+            check(browser.evaluate(f"views.get({i}).k") == k, "the left arrow steps back")
+            eventually(lambda: visible_frames(browser, i) == [k], 10,
+                       what=lambda: f"frame {k} shown: {visible_frames(browser, i)}")
+            asked = browser.evaluate(f"performance.getEntriesByType('resource').slice({requests}).map(e => e.name).filter(n => n.includes('/api/figure/'))")
+            check(not asked, f"play and the arrows asked nothing of the server: {asked}")
+            subprocess.run([PITA, "animate", f"{name}.json", "-o", ".a.svg"], cwd=folder, check=True,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            shown = browser.evaluate(f"""[...document.querySelectorAll('#scene-{i} .figure svg > g[visibility]')[{k}]
+                .querySelectorAll('path')].map(p => p.getAttribute('d'))""")
+            check(shown and shown == animation_frame_paths((folder / ".a.svg").read_text(), k),
+                  f"{name}: the page's frame {k} is pita animate's")
+            (folder / ".a.svg").unlink()
+            # Its time is render --at's t_k.
+            t = browser.evaluate(f"views.get({i}).t")
+            expected = browser.evaluate(f"frameTime(views.get({i}).timeline, {k})")
+            check(t == expected, f"t = {t} is frame {k}'s time {expected}")
+        # Without the animated SVG (too large or slow to make) frames are fetched: a scrub cancels
+        # each request the next one supersedes, and the last frame asked for is the one shown.
+        browser.evaluate("""(() => { window.pitaSignals = []; const fetched = window.fetch;
+            window.fetch = (url, options) => { if (String(url).includes('/api/figure/'))
+              window.pitaSignals.push(options.signal); return fetched(url, options); };
+            views.get(1).animation = null; const s = document.querySelector('#scene-1 input[type=range]');
+            for (const k of [10, 20, 30]) { s.value = String(k); s.dispatchEvent(new Event('input')); } })()""")
+        eventually(lambda: browser.evaluate("views.get(1).shown === 'frame' && views.get(1).shownFrame === 30"), 60,
+                   what=lambda: browser.evaluate("[views.get(1).shown, views.get(1).shownFrame]"))
+        aborted = browser.evaluate("window.pitaSignals.map(s => s.aborted)")
+        check(aborted == [True, True, False], f"superseded requests cancelled: {aborted}")
+    finally:
+        served.stop()
+
+
+def test_orientation(folder, browser):
+    """The caption, labelled controls, an index telling same-named files apart, the hovered
+    panel outlined with pita measure's row, zoom and pan, and a page that fits 800 x 600."""
+    fig01 = json.loads((SOURCE / "scenes" / "fig01-eight-pitas.json").read_text())
+    for sub in ("a", "b"):
+        (folder / sub).mkdir()
+    save(folder / "a", FIG03)
+    save(folder / "b", fig01)
+    served = Served(folder, ["a/s.json", "b/s.json"])
+    try:
+        browser.call("Emulation.setDeviceMetricsOverride", width=800, height=600, deviceScaleFactor=1, mobile=False)
+        browser.open(served.url)
+        eventually(lambda: browser.evaluate("document.querySelectorAll('.figure svg').length") == 2, 60)
+        index = browser.evaluate("[...document.querySelectorAll('#index li')].map(li => li.textContent)")
+        check(len(index) == 2 and "a/s.json" in index[0] and "b/s.json" in index[1], f"the index: {index}")
+        check(browser.evaluate("document.querySelector('#index a').getAttribute('href')") == "#scene-0", "its links")
+        check(browser.evaluate("document.querySelector('#scene-0 .caption').textContent") == FIG03["description"],
+              "the caption")
+        check(browser.evaluate("document.querySelector('#scene-0 button.play').title").startswith("play"), "play")
+        # At 800 x 600: no horizontal scroll, each figure within the window.
+        check(browser.evaluate("document.documentElement.scrollWidth <= innerWidth"), "no horizontal scroll")
+        check(browser.evaluate("[...document.querySelectorAll('.figure svg')].every(s => "
+                               "s.getBoundingClientRect().right <= innerWidth && s.getBoundingClientRect().height <= innerHeight)"),
+              "the figures fit")
+        # The pointer over Fig. 1's second panel: outlined, and pita measure's row for it.
+        browser.evaluate("document.querySelector('#scene-1 .figure').scrollIntoView()")
+        at = """(() => { const svg = document.querySelector('#scene-1 .figure svg');
+            const [cx, cy, w, h] = views.get(1).panels[PANEL]; const p = svg.createSVGPoint();
+            p.x = cx + w / 2; p.y = cy + h / 2; const q = p.matrixTransform(svg.getScreenCTM()); return [q.x, q.y]; })()"""
+        x, y = browser.evaluate(at.replace("PANEL", "1"))
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        row = eventually(lambda: browser.evaluate("document.querySelector('#scene-1 .measures').textContent"), 60)
+        check(row.startswith("P2 LS-Po") and "\n" not in row and "/panels" not in row, f"one panel's row: {row}")
+        for cell in ("E max prev / avg / pita", "length p, q", "turning p, q", "winding [", "most sensitive", "pop "):
+            check(cell in row, f"{cell} in {row}")
+        outline = browser.evaluate("(() => { const r = document.querySelector('#scene-1 svg rect.outline');"
+                                   " return r && [+r.getAttribute('x'), +r.getAttribute('width')]; })()")
+        cell = browser.evaluate("views.get(1).panels[1]")
+        check(outline and abs(outline[0] - cell[0] - 1) < 1e-6 and abs(outline[1] - cell[2] + 2) < 1e-6,
+              f"the panel outlined: {outline} {cell}")
+        x, y = browser.evaluate(at.replace("PANEL", "2"))
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        row = eventually(lambda: (lambda t: t.startswith("P3") and t)(
+            browser.evaluate("document.querySelector('#scene-1 .measures').textContent")), 10)
+        check(row.startswith("P3 Pa-LP:") and "P3 (Pa-LP)" not in row, f"no label twice: {row}")
+        # A panel the report names by its pointer alone is "panel N".
+        untitled = browser.evaluate("""measureRow({pointer: '/panels/1', title: '', method: 'SAM', kind: 'poses',
+            ara: 0.5, velocity_jump: 0}, 1)""")
+        check(untitled == "panel 2 (SAM): ARA 0.5; velocity jump 0", untitled)
+        # The wheel zooms in about the pointer, a drag of the background pans, "fit" shows it all.
+        box = lambda: browser.evaluate("document.querySelector('#scene-1 .figure svg').getAttribute('viewBox')")
+        whole = box()
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
+        zoomed = eventually(lambda: box() != whole and box(), 10)
+        check(float(zoomed.split()[2]) < float(whole.split()[2]), f"zoomed in: {zoomed}")
+        browser.call("Input.dispatchMouseEvent", type="mousePressed", x=x, y=y, button="left", clickCount=1)
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x + 50, y=y, button="left", buttons=1)
+        browser.call("Input.dispatchMouseEvent", type="mouseReleased", x=x + 50, y=y, button="left", clickCount=1)
+        panned = box()
+        check(float(panned.split()[0]) < float(zoomed.split()[0]) and panned.split()[2] == zoomed.split()[2],
+              f"panned left: {zoomed} -> {panned}")
+        browser.evaluate("document.querySelector('#scene-1 button.fit').click()")
+        check(box() == whole, "fit")
+    finally:
+        browser.call("Emulation.clearDeviceMetricsOverride")
+        served.stop()
+
+
+def test_exports_are_render_and_animate_bytes(folder):
+    """The downloads of the frame (SVG, PNG) and of the animation are the bytes pita render --at
+    and pita animate write, as attachments, with the token only."""
+    save(folder, FIG03)
+    served = Served(folder, ["s.json"])
+    try:
+        for args, what in ((["render", "--at", "0.25", "-o", ".x.png"], "png&at=0.25"),
+                           (["render", "--at", "0.25", "-o", ".x.svg"], "svg&at=0.25"),
+                           (["render", "-o", ".x.png"], "png"), (["animate", "-o", ".x.svg"], "animation")):
+            subprocess.run([PITA, args[0], "s.json", *args[1:]], cwd=folder, check=True,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+            out = folder / args[-1]
+            status, body = served.get(f"/api/export/0?what={what}")
+            check(status == 200 and body == out.read_bytes(), f"{what}: {status}, {len(body)} bytes, "
+                  f"not the {out.stat().st_size} of pita {' '.join(args)}")
+            out.unlink()
+        url = f"{served.base}/api/export/0?what=png&at=0.5&token={served.token}"
+        with urllib.request.urlopen(url, timeout=30) as response:
+            disposition = response.headers["Content-Disposition"]
+        check(disposition == 'attachment; filename="s-at-0.5.png"', disposition)
+        check(served.get("/api/export/0?what=png", token="")[0] == 403, "an export without the token")
+        check(served.get("/api/animation/0", token="")[0] == 403, "the animation without the token")
+        for path in ("/api/export/0?what=../s.json", "/api/export/0", "/api/export/0?what=png&at=x",
+                     "/api/export/0?what=animation&at=0.5"):
+            check(served.get(path)[0] == 400, path)
+        check(served.get("/api/export/1?what=png")[0] == 404, "no scene 1")
     finally:
         served.stop()
 
@@ -364,20 +562,25 @@ def test_a_hundred_saves_leave_the_last_figure_and_no_temporary(folder):
 
 def main():
     latencies = []
+    rates = []
     root = pathlib.Path(tempfile.mkdtemp(prefix="pita-serve-test-"))
     browser = Browser()
     try:
         for test in (test_the_page_follows_the_saves, test_dragging_writes_the_scene_file,
                      test_two_figures_keep_their_own_glyphs, test_the_page_links_only_within_itself,
                      test_a_restart_keeps_the_open_tab, test_hostile_requests_are_refused,
-                     test_a_hundred_saves_leave_the_last_figure_and_no_temporary):
+                     test_a_hundred_saves_leave_the_last_figure_and_no_temporary, test_scrubbing_and_play,
+                     test_orientation, test_exports_are_render_and_animate_bytes):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
             if test is test_the_page_follows_the_saves:
                 test(folder, browser, latencies)
+            elif test is test_scrubbing_and_play:
+                test(folder, browser, rates)
             elif test in (test_dragging_writes_the_scene_file, test_two_figures_keep_their_own_glyphs,
-                          test_the_page_links_only_within_itself, test_a_restart_keeps_the_open_tab):
+                          test_the_page_links_only_within_itself, test_a_restart_keeps_the_open_tab,
+                          test_orientation):
                 test(folder, browser)
             else:
                 test(folder)
@@ -392,6 +595,8 @@ def main():
         shutil.rmtree(root, ignore_errors=True)
     for name, seconds in latencies:
         print(f"save to updated figure in the page, {name}: {seconds * 1000:.0f} ms")
+    for name, shown, fps in rates:
+        print(f"play in the page, {name}: {shown:.1f} frames shown a second (the timeline's fps: {fps:g})")
 
 
 if __name__ == "__main__":
