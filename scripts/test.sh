@@ -9,9 +9,10 @@
 #                                but the tests of labels slurm (the cluster),
 #                                oracle (numbers against SciPy), checks
 #                                (the docs' text, the format of the sources)
-#                                and packaging (the install tree, the .deb,
-#                                each header compiled alone), which test
-#                                numbers, text and files, not memory: the
+#                                packaging (the install tree, the .deb,
+#                                each header compiled alone) and browser
+#                                (pages in Chromium), which test numbers,
+#                                text, files and pages, not memory: the
 #                                Release step runs them
 #   scripts/test.sh --quick [LAYER...]
 #                                the edit loop: builds only the unit tests of
@@ -46,7 +47,7 @@ done
 case "$mode" in
   sanitize)
     pita_build_sanitize
-    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$((PITA_JOBS + 1))" -LE '^(slurm|oracle|checks|packaging)$' ;;
+    ctest --test-dir "$PITA_SANITIZE_BUILD" --output-on-failure -j "$((PITA_JOBS + 1))" -LE '^(slurm|oracle|checks|packaging|browser)$' ;;
   quick)
     if [ ${#layers[@]} -eq 0 ]; then layers=("${PITA_UNIT_LAYERS[@]}"); fi
     pita_build_tests "${layers[@]/#/test_}"

@@ -1,6 +1,7 @@
 #include "analysis/claims.hpp"
 
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include <fmt/format.h>
@@ -72,6 +73,11 @@ ClaimOutcome check_claim(Measurer& measurer, const motion::Stage& stage, const s
 }  // namespace
 
 std::vector<ClaimOutcome> check_claims(const motion::Stage& stage) {
+  return check_claims(stage, [](const scene::Claim&) { return true; });
+}
+
+std::vector<ClaimOutcome> check_claims(const motion::Stage& stage,
+                                       const std::function<bool(const scene::Claim&)>& which) {
   const scene::Scene& scene = stage.scene();
   if (scene.claims.empty()) return {};
   const double work = claims_cost(scene);
@@ -85,6 +91,10 @@ std::vector<ClaimOutcome> check_claims(const motion::Stage& stage) {
   Measurer measurer(stage);
   std::vector<ClaimOutcome> outcomes;
   for (const scene::Claim& claim : stage.scene().claims) {
+    if (!which(claim)) {
+      outcomes.push_back({claim.pointer, claim.says, false, "not measured", std::numeric_limits<double>::quiet_NaN()});
+      continue;
+    }
     try {
       outcomes.push_back(check_claim(measurer, stage, claim));
     } catch (const motion::NoMotion& error) {

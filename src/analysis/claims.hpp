@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
@@ -27,6 +28,12 @@ struct ClaimOutcome {
 
 // Every claim of the stage's scene, in order. Throws as Measurer::value.
 std::vector<ClaimOutcome> check_claims(const motion::Stage& stage);
+
+// Only the claims `which` chooses are measured (`pita lint` needs a few of
+// them); the others are outcomes that did not hold, with a NaN value and
+// "not measured". In order, one per claim, as check_claims.
+std::vector<ClaimOutcome> check_claims(const motion::Stage& stage,
+                                       const std::function<bool(const scene::Claim&)>& which);
 
 // What the claims cost, in frames of a plain method (motion::frame_cost):
 // the measures of each panel a claim names (what `pita check` budgets).

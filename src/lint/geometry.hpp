@@ -83,6 +83,10 @@ FigureGeometry figure_geometry(const scene::Scene& scene, const render::Figure& 
 // motions is above a bound and that hold, with the distance measured
 // (`claims`: their outcomes, as analysis::check_claims gives them, in order).
 // A claim that fails is left out: pita check reports it.
+// Whether the small-feature check reads `claim`: a distance between drawn
+// motions claimed above a bound, on a panel of keyframes.
+bool is_claimed_distance(const scene::Scene& scene, const scene::Claim& claim);
+
 std::vector<ClaimedDistance> claimed_distances(const motion::Stage& stage,
                                                const std::vector<analysis::ClaimOutcome>& claims);
 
