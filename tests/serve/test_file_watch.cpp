@@ -32,6 +32,14 @@ class FileWatcherTest : public ::testing::Test {
   void TearDown() override { fs::remove_all(dir_); }
   static void write(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
   fs::path scene() const { return fs::absolute(dir_ / "scene.json"); }
+  // d/scene.json, made and watched: the scene of the tests whose folder goes and comes back.
+  fs::path watched_in_folder(FileWatcher& watcher) const {
+    fs::create_directories(dir_ / "d");
+    write(dir_ / "d" / "scene.json", "{}");
+    const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
+    watcher.watch({scene});
+    return scene;
+  }
   fs::path other() const { return fs::absolute(dir_ / "other.txt"); }
   fs::path dir_;
 };
@@ -113,11 +121,8 @@ TEST_F(FileWatcherTest, AFolderThatDoesNotExistIsRefused) {
 // `rm -r d; mkdir d; cp scene.json d/`: the deletion counts, then the file
 // made again in the folder made again, and later saves in it too.
 TEST_F(FileWatcherTest, AFolderRemovedAndMadeAgainIsWatchedAgain) {
-  fs::create_directories(dir_ / "d");
-  write(dir_ / "d" / "scene.json", "{}");
-  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
   FileWatcher watcher;
-  watcher.watch({scene});
+  const fs::path scene = watched_in_folder(watcher);
   fs::remove_all(dir_ / "d");
   EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
   fs::create_directories(dir_ / "d");
@@ -130,11 +135,8 @@ TEST_F(FileWatcherTest, AFolderRemovedAndMadeAgainIsWatchedAgain) {
 // The folder made again between two waits, its file already in it: the file
 // counts as saved when the folder is found again.
 TEST_F(FileWatcherTest, AFolderMadeAgainWithItsFileCountsAsASave) {
-  fs::create_directories(dir_ / "d");
-  write(dir_ / "d" / "scene.json", "{}");
-  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
   FileWatcher watcher;
-  watcher.watch({scene});
+  const fs::path scene = watched_in_folder(watcher);
   fs::remove_all(dir_ / "d");
   EXPECT_EQ(watcher.wait(milliseconds(5000)).count(scene), 1u);
   fs::create_directories(dir_ / "d.new");
@@ -164,11 +166,8 @@ TEST_F(FileWatcherTest, NestedFoldersMadeAgainAreWatchedAgain) {
 // A folder moved away is no longer the scene's: saves in it do not count,
 // and one moved back is watched again.
 TEST_F(FileWatcherTest, AFolderMovedAwayAndBackIsWatchedAgain) {
-  fs::create_directories(dir_ / "d");
-  write(dir_ / "d" / "scene.json", "{}");
-  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
   FileWatcher watcher;
-  watcher.watch({scene});
+  const fs::path scene = watched_in_folder(watcher);
   fs::rename(dir_ / "d", dir_ / "elsewhere");
   watcher.wait(milliseconds(300));
   write(dir_ / "elsewhere" / "scene.json", R"({"e": 1})");
@@ -182,11 +181,8 @@ TEST_F(FileWatcherTest, AFolderMovedAwayAndBackIsWatchedAgain) {
 // Watching the same set again while its folder is gone keeps waiting for it
 // (pita watch re-watches after each render).
 TEST_F(FileWatcherTest, WatchingAgainWhileTheFolderIsGoneKeepsWaiting) {
-  fs::create_directories(dir_ / "d");
-  write(dir_ / "d" / "scene.json", "{}");
-  const fs::path scene = fs::absolute(dir_ / "d" / "scene.json");
   FileWatcher watcher;
-  watcher.watch({scene});
+  const fs::path scene = watched_in_folder(watcher);
   fs::remove_all(dir_ / "d");
   watcher.wait(milliseconds(300));
   EXPECT_NO_THROW(watcher.watch({scene}));
