@@ -1,4 +1,4 @@
-// The page of `pita serve` (src/serve/page.html), built into the binary:
+// The page of `pita serve` (src/serve/page/), built into the binary:
 // CMake writes its text into serve_page.cpp in the build folder
 // (src/CMakeLists.txt), so that nothing is fetched or installed beside pita
 // to show it.

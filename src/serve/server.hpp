@@ -6,7 +6,7 @@
 // shows the error. Every request must carry the token printed at start; only
 // the fixed routes below are served (no file is served by its path).
 //
-//   GET /?token=T                      the page (src/serve/page.html)
+//   GET /?token=T                      the page (src/serve/page/)
 //   GET /api/scenes?token=T            every scene: name, title, version, error, time range
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
 //   GET /api/measures/N?token=T        scene N's `pita measure --format json`

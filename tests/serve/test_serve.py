@@ -1,4 +1,4 @@
-"""pita serve (src/serve/server.cpp, src/serve/page.html), as a person uses it in Chromium
+"""pita serve (src/serve/server.cpp, src/serve/page/), as a person uses it in Chromium
 and as a hostile page would try it: a save updates the figure in the page, a bad save shows its
 error and keeps the figure, the slider draws the frame at its time; requests without the token,
 with another path or too large a body are refused; a hundred saves leave the last figure and no
