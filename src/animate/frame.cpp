@@ -55,7 +55,7 @@ Json pose_json(const Pose& A) {
 }  // namespace
 
 std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline,
-                                                     const motion::Stage* given) {
+                                                     const motion::Stage* given, render::StaticLayers* layers) {
   std::vector<render::Drawing> cover;
   if (timeline.what == What::pattern) {
     for (int i = 0; i < kLayoutSamples; ++i) {
@@ -73,11 +73,13 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
     if (given == nullptr) built.emplace(scene);
     const motion::Stage& stage = given != nullptr ? *given : *built;
     cover = render::build_figure(stage).drawings;
+    render::StaticLayers own;
+    if (layers == nullptr) layers = &own;
     std::vector<std::optional<scene::Box>> reach(cover.size());
     for (int i = 0; i < kLayoutSamples; ++i) {
       const render::FrameSelection selection{
           timeline.first + (timeline.last - timeline.first) * i / (kLayoutSamples - 1), {}};
-      const std::vector<render::Drawing> frame = render::frame_drawings(stage, &selection);
+      const std::vector<render::Drawing> frame = render::frame_drawings(stage, &selection, layers);
       for (std::size_t p = 0; p < reach.size() && p < frame.size(); ++p) {
         const std::optional<scene::Box> b = render::bounds(frame[p]);
         if (!b) continue;
@@ -100,7 +102,8 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
 }
 
 render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline, double t,
-                            const std::vector<render::PanelPlacement>& placements, const motion::Stage* stage) {
+                            const std::vector<render::PanelPlacement>& placements, const motion::Stage* stage,
+                            render::StaticLayers* layers) {
   render::Figure figure;
   if (timeline.what == What::pattern) {
     figure.drawings = render::frame_drawings(motion::scene_at(scene, timeline.tau(t)), nullptr);
@@ -109,8 +112,8 @@ render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline,
     }
   } else {
     const render::FrameSelection selection{t, timeline.trail_times(t)};
-    figure.drawings =
-        stage != nullptr ? render::frame_drawings(*stage, &selection) : render::frame_drawings(scene, &selection);
+    figure.drawings = stage != nullptr ? render::frame_drawings(*stage, &selection, layers)
+                                       : render::frame_drawings(scene, &selection);
   }
   figure.placements = placements;
   render::place_labels(scene, figure.drawings, figure.placements);  // against this frame's data

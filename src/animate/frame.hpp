@@ -11,6 +11,7 @@
 #include "animate/timeline.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
+#include "render/static_layers.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
@@ -24,9 +25,12 @@ inline constexpr int kLayoutFrames = 33;
 // does not jump from frame to frame. A canvas "view" is used as given.
 // Only each cover frame's bounds are kept, and a "motion" timeline builds its
 // motions once (not once per cover frame), or uses `stage`, the scene's
-// motions built by the caller for the frames too.
+// motions built by the caller for the frames too; the cover frames draw the
+// layers that read nothing of the frame once, into `layers` when given (the
+// frames' own, frame_figure), else into a cache of their own.
 std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, const Timeline& timeline,
-                                                     const motion::Stage* stage = nullptr);
+                                                     const motion::Stage* stage = nullptr,
+                                                     render::StaticLayers* layers = nullptr);
 
 // The figure at time t (a scene time for "motion", tau for "pattern") with the
 // shared placements. "motion": the layers that draw frames ("pattern",
@@ -35,10 +39,12 @@ std::vector<render::PanelPlacement> animation_layout(const scene::Scene& scene, 
 // every item but the labels moving. Throws RenderError. `stage`, for a
 // "motion" timeline: the scene's motions, built once by the caller for all
 // its frames (a const Stage is shared safely between threads); nullptr
-// builds them for this frame.
+// builds them for this frame. `layers`: shared by the frames of one stage,
+// the layers that read nothing of the frame, drawn once
+// (render/static_layers.hpp); nullptr draws every layer.
 render::Figure frame_figure(const scene::Scene& scene, const Timeline& timeline, double t,
-                            const std::vector<render::PanelPlacement>& placements,
-                            const motion::Stage* stage = nullptr);
+                            const std::vector<render::PanelPlacement>& placements, const motion::Stage* stage = nullptr,
+                            render::StaticLayers* layers = nullptr);
 
 // What frames.json records of frame k: {"frame": k + 1, "file", "t" (and
 // "tau" = ease(t) for "pattern"), and the first panel's state: "D": {"p", "m",

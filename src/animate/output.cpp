@@ -26,6 +26,7 @@
 #include "render/backdrop.hpp"
 #include "render/budget.hpp"
 #include "render/panel_drawing.hpp"
+#include "render/static_layers.hpp"
 
 namespace pita::animate {
 
@@ -135,12 +136,12 @@ fs::path frame_folder(const fs::path& target) {
 
 // Draws every frame into `folder` (frame-NNNN.png or .svg); their records for frames.json.
 Json write_frames(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                  const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements,
-                  TemporaryFolder& folder) {
+                  const motion::Stage* stage, render::StaticLayers* layers,
+                  const std::vector<render::PanelPlacement>& placements, TemporaryFolder& folder) {
   // PNG frames are painted over the layers every frame shares, painted once.
   std::optional<render::FrameBackdrop> backdrop;
   if (request.frame_format == render::Format::png) {
-    const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, stage);
+    const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, stage, layers);
     const auto [width, height] = render::checked_png_size(scene, first, request.scale, request.budget);
     backdrop.emplace(scene, first, width, height, request.scale);
   }
@@ -150,7 +151,7 @@ Json write_frames(const scene::Scene& scene, const Timeline& timeline, const Req
     run_frames(
         timeline.frames, request.threads,
         [&](int k) {
-          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
+          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage, layers);
           if (!backdrop)
             return render::render_figure(scene, figure, request.frame_format, request.scale, request.budget);
           render::checked_png_size(scene, figure, request.scale, request.budget);
@@ -200,7 +201,8 @@ void move_into_place(TemporaryFolder& folder, const fs::path& final_path, const 
 }
 
 fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                         const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements) {
+                         const motion::Stage* stage, render::StaticLayers* layers,
+                         const std::vector<render::PanelPlacement>& placements) {
   const fs::path target = request.out;
   std::error_code error;
   const fs::path directory = frame_folder(target);
@@ -210,7 +212,7 @@ fs::path write_directory(const scene::Scene& scene, const Timeline& timeline, co
   std::string pattern = (parent / ("." + name.string() + ".XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) output_failed(target, std::strerror(errno));
   TemporaryFolder folder{pattern};
-  Json records = write_frames(scene, timeline, request, stage, placements, folder);
+  Json records = write_frames(scene, timeline, request, stage, layers, placements, folder);
   write_bytes(folder.path / "frames.json", frames_index(scene, timeline, request, std::move(records)).dump(1) + "\n");
   if (const int sig = pending_stop(request.cancelled)) folder.exit_interrupted(sig);
   move_into_place(folder, parent / name, target);
@@ -302,10 +304,13 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
   std::optional<motion::Stage> stage;
   if (timeline.what != scene::Animation::What::pattern) stage.emplace(scene);
   const motion::Stage* shared = stage ? &*stage : nullptr;
-  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared);
+  // The layers that read nothing of the frame: drawn once, for the layout and
+  // every frame (render/static_layers.hpp).
+  render::StaticLayers layers;
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared, &layers);
   // The first frame before any output exists: a scene that cannot be drawn
   // fails here, having written nothing.
-  frame_figure(scene, timeline, timeline.time(0), placements, shared);
+  frame_figure(scene, timeline, timeline.time(0), placements, shared, &layers);
   const io::DeferredInterrupts deferred;
   switch (request.kind) {
     case AnimationOutput::svg: {
@@ -316,16 +321,16 @@ std::vector<fs::path> write_animation(const scene::Scene& scene, const Timeline&
             if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
             progress.update(k + 1);
           },
-          shared);
+          shared, &layers);
       if (const int sig = pending_stop(request.cancelled)) stop_interrupted(sig);
       io::write_file_atomically(request.out, svg);
       return {request.out};
     }
     case AnimationOutput::directory:
-      return {write_directory(scene, timeline, request, shared, placements)};
+      return {write_directory(scene, timeline, request, shared, &layers, placements)};
     case AnimationOutput::mp4:
     case AnimationOutput::webm:
-      return {write_video(scene, timeline, request, shared, placements)};
+      return {write_video(scene, timeline, request, shared, &layers, placements)};
   }
   return {};
 }

@@ -13,6 +13,7 @@
 #include "render/painter.hpp"
 #include "render/panel_drawing.hpp"
 #include "render/pango_library.hpp"
+#include "render/static_layers.hpp"
 #include "text/html.hpp"
 
 namespace pita::animate {
@@ -241,7 +242,7 @@ std::string above_frames(const scene::Scene& scene, const render::Figure& first)
 }  // namespace
 
 std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, const std::function<void(int)>& progress,
-                         const motion::Stage* given) {
+                         const motion::Stage* given, render::StaticLayers* layers) {
   // The motions, built once for the layout and every frame ("pattern" changes
   // the scene per frame).
   std::optional<motion::Stage> stage;
@@ -249,8 +250,10 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
   const motion::Stage* shared = timeline.what == scene::Animation::What::pattern ? nullptr
                                 : given != nullptr                               ? given
                                                                                  : &*stage;
-  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared);
-  const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, shared);
+  render::StaticLayers own;  // drawn once for every frame (render/static_layers.hpp)
+  if (layers == nullptr) layers = &own;
+  const std::vector<render::PanelPlacement> placements = animation_layout(scene, timeline, shared, layers);
+  const render::Figure first = frame_figure(scene, timeline, timeline.time(0), placements, shared, layers);
   const int width = scene.canvas.width, height = scene.canvas.height;
 
   std::string svg = fmt::format(
@@ -270,7 +273,8 @@ std::string animated_svg(const scene::Scene& scene, const Timeline& timeline, co
       prefixed_ids(nested(render::render_figure(scene, static_part(first, false), render::Format::svg)), "pita-below-");
   svg += "\n";
   for (int k = 0; k < timeline.frames; ++k) {
-    const render::Figure frame = k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements, shared);
+    const render::Figure frame =
+        k == 0 ? first : frame_figure(scene, timeline, timeline.time(k), placements, shared, layers);
     svg += frame_group(frame, k, timeline, image_ids);
     if (progress) progress(k);
   }

@@ -12,6 +12,7 @@
 
 #include "animate/timeline.hpp"
 #include "motion/stage.hpp"
+#include "render/static_layers.hpp"
 #include "scene/scene.hpp"
 
 namespace pita::animate {
@@ -20,8 +21,11 @@ namespace pita::animate {
 // Throws RenderError as the frames do. `stage`, for a "motion" timeline: the
 // scene's motions built once by the caller (frame.hpp), so that a motion
 // that is costly to build (an arc-length warp of a long track) is built once
-// for the layout and every frame; nullptr builds them here, once.
+// for the layout and every frame; nullptr builds them here, once. `layers`:
+// the layers drawn once for every frame (frame_figure), the caller's or,
+// when nullptr, a cache of its own.
 std::string animated_svg(const scene::Scene& scene, const Timeline& timeline,
-                         const std::function<void(int)>& progress = {}, const motion::Stage* stage = nullptr);
+                         const std::function<void(int)>& progress = {}, const motion::Stage* stage = nullptr,
+                         render::StaticLayers* layers = nullptr);
 
 }  // namespace pita::animate

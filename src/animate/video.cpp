@@ -26,6 +26,7 @@
 #include "render/backdrop.hpp"
 #include "render/budget.hpp"
 #include "render/panel_drawing.hpp"
+#include "render/static_layers.hpp"
 
 extern char** environ;
 
@@ -291,7 +292,8 @@ class FfmpegProcess {
 }  // namespace
 
 fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                     const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements) {
+                     const motion::Stage* stage, render::StaticLayers* layers,
+                     const std::vector<render::PanelPlacement>& placements) {
   const std::string& ffmpeg = request.ffmpeg;
   if (ffmpeg.empty()) {
     throw AnimationError(
@@ -308,14 +310,14 @@ fs::path write_video(const scene::Scene& scene, const Timeline& timeline, const 
       ffmpeg_arguments(ffmpeg, width, height, timeline.fps, request.kind == AnimationOutput::webm, temporary.path()),
       request.out);
   // Every frame is painted over the layers they share, painted once.
-  const render::FrameBackdrop backdrop(scene, frame_figure(scene, timeline, timeline.time(0), placements, stage), width,
-                                       height, request.scale);
+  const render::FrameBackdrop backdrop(
+      scene, frame_figure(scene, timeline, timeline.time(0), placements, stage, layers), width, height, request.scale);
   Progress progress("video", timeline.frames, request.progress);
   try {
     run_frames(
         timeline.frames, request.threads,
         [&](int k) {
-          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage);
+          const render::Figure figure = frame_figure(scene, timeline, timeline.time(k), placements, stage, layers);
           return raw_frame(scene, figure, backdrop, width, height);
         },
         [&](int k, std::string&& bytes) {

@@ -25,11 +25,12 @@ namespace pita::animate {
 // /usr/bin:/bin); "" when there is none.
 std::string find_ffmpeg(std::optional<std::string_view> given, std::optional<std::string_view> search_path);
 
-// Writes request.out. `stage`: the scene's motions for a "motion" timeline
-// (frame_figure), else nullptr. Throws AnimationError (no ffmpeg, exit 2),
+// Writes request.out. `stage` and `layers`: the scene's motions for a
+// "motion" timeline and the layers drawn once (frame_figure), else nullptr. Throws AnimationError (no ffmpeg, exit 2),
 // RenderError, OutputError (exit 3: ffmpeg failed or said an error, the file
 // is empty or unreadable); on a signal removes its temporary and exits.
 std::filesystem::path write_video(const scene::Scene& scene, const Timeline& timeline, const Request& request,
-                                  const motion::Stage* stage, const std::vector<render::PanelPlacement>& placements);
+                                  const motion::Stage* stage, render::StaticLayers* layers,
+                                  const std::vector<render::PanelPlacement>& placements);
 
 }  // namespace pita::animate

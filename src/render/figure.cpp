@@ -137,18 +137,19 @@ std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelect
   return frame_drawings(motion::Stage(scene), selection);
 }
 
-std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection) {
+std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection, StaticLayers* cache) {
   const scene::Scene& scene = stage.scene();
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   std::vector<Drawing> drawings;
   for (std::size_t i = 0; i < stage.size(); ++i) {
     const scene::Panel& panel = stage.panel(i);
-    const auto arrows = [&](const auto&) { return panel_drawing(stage, i, selection); };
+    const auto arrows = [&](const auto&) { return panel_drawing(stage, i, selection, cache); };
     Drawing drawing = std::visit(
-        overloaded{[&](const scene::KeyframeKeys& given) { return arrows(given); },
-                   [&](const scene::PointKeys& given) { return arrows(given); },
-                   [&](const scene::PlanePoseKeys&) { return pose_panel_drawing<Affine2>(stage, i, selection); },
-                   [&](const scene::SpacePoseKeys&) { return pose_panel_drawing<Affine3>(stage, i, selection); }},
+        overloaded{
+            [&](const scene::KeyframeKeys& given) { return arrows(given); },
+            [&](const scene::PointKeys& given) { return arrows(given); },
+            [&](const scene::PlanePoseKeys&) { return pose_panel_drawing<Affine2>(stage, i, selection, cache); },
+            [&](const scene::SpacePoseKeys&) { return pose_panel_drawing<Affine3>(stage, i, selection, cache); }},
         panel.keys);
     if (!is_finite(drawing)) {
       throw RenderError(scene.path, panel.pointer, "the figure has non-finite coordinates (the motion overflows)");

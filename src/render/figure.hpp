@@ -47,9 +47,12 @@ Figure build_figure(const motion::Stage& stage, double budget = 1.0);
 
 // Every panel's drawing, without layout or budget; with a selection, one
 // frame of an animation (render/panel_drawing.hpp). Throws RenderError. The
-// second draws the motions of a stage built once (animate's frames).
+// second draws the motions of a stage built once (animate's frames); with a
+// cache shared by the frames of one stage, a layer that reads nothing of the
+// frame is drawn once (render/static_layers.hpp).
 std::vector<Drawing> frame_drawings(const scene::Scene& scene, const FrameSelection* selection);
-std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection);
+std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelection* selection,
+                                    StaticLayers* cache = nullptr);
 
 // Decodes every image of the scene's shapes (once per thread): a corrupt PNG
 // is refused before anything is drawn. Throws RenderError.

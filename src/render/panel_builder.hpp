@@ -19,6 +19,7 @@
 #include "motion/stage.hpp"
 #include "render/measure_text.hpp"
 #include "render/panel_drawing.hpp"
+#include "render/static_layers.hpp"
 
 namespace pita::render::detail {
 
@@ -43,12 +44,14 @@ inline std::string trajectory_name(scene::TrackedPoint point) {
 
 class PanelBuilder {
  public:
-  PanelBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
+  PanelBuilder(const motion::Stage& stage, std::size_t index, const FrameSelection* selection,
+               StaticLayers* cache = nullptr)
       : stage_(stage),
         index_(index),
         scene_(stage.scene()),
         panel_(stage.panel(index)),
-        selection_(selection),
+        frame_(selection),
+        cache_(selection != nullptr ? cache : nullptr),
         motion_(built(stage, index)),
         track_(track_of(stage.scene(), panel_)),
         keyframes_(keyframes_of(panel_)),
@@ -91,7 +94,15 @@ class PanelBuilder {
   // frame's trail and time, else the layer's samples over its range.
   std::vector<double> sequence_times(const std::optional<int>& samples,
                                      const std::optional<scene::TimeRange>& range) const;
-  double fade(std::size_t i, std::size_t count) const { return selection_ != nullptr ? trail_fade(i, count) : 1.0; }
+  double fade(std::size_t i, std::size_t count) const { return selection() != nullptr ? trail_fade(i, count) : 1.0; }
+
+  // An animation frame's time and trail, or nullptr for the static figure.
+  // Every layer asks here, so that a layer that never asks is known to be
+  // the same at every frame (render/static_layers.hpp).
+  const FrameSelection* selection() const {
+    read_frame_ = true;
+    return frame_;
+  }
 
   // A pattern layer with its own "method" or "options" draws the motion of
   // a copy of the panel that has them (N57); its errors are the layer's.
@@ -169,7 +180,9 @@ class PanelBuilder {
   std::size_t index_;
   const scene::Scene& scene_;
   const scene::Panel& panel_;
-  const FrameSelection* selection_ = nullptr;
+  const FrameSelection* frame_ = nullptr;  // through selection() only
+  StaticLayers* cache_ = nullptr;          // with a frame: its layers that read nothing of it
+  mutable bool read_frame_ = false;        // the layer being drawn asked for the frame
   const motion::SceneMotion& motion_;
   const scene::TrackMethod& track_;
   const std::vector<Keyframe>& keyframes_;

@@ -23,7 +23,11 @@ Drawing PanelBuilder::build() {
     // The reader has checked that the layer draws the panel's kind of keys
     // (scene/layer_kinds.hpp, the "draws" column); a layer drawn on the
     // other kind fails as its motion does (NoMotion), with the layer's pointer.
-    std::visit([this](const auto& layer) { add(layer); }, layers[i]);
+    draw_layer(cache_, index_, i, drawing_, [&] {
+      read_frame_ = false;
+      std::visit([this](const auto& layer) { add(layer); }, layers[i]);
+      return read_frame_;
+    });
   }
   return std::move(drawing_);
 }
@@ -57,9 +61,9 @@ std::vector<Arrow> PanelBuilder::frames(const motion::SceneMotion& motion, const
 // frame's trail and time, else the layer's samples over its range.
 std::vector<double> PanelBuilder::sequence_times(const std::optional<int>& samples,
                                                  const std::optional<scene::TimeRange>& range) const {
-  if (selection_ == nullptr) return layer_times(panel_, samples, range);
-  std::vector<double> times = selection_->trail;
-  times.push_back(selection_->t);
+  if (selection() == nullptr) return layer_times(panel_, samples, range);
+  std::vector<double> times = selection()->trail;
+  times.push_back(selection()->t);
   return times;
 }
 
@@ -135,8 +139,9 @@ Color lightened(Color color, double white) {
                color.a};
 }
 
-Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection) {
-  return detail::PanelBuilder(stage, index, selection).build();
+Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection,
+                      StaticLayers* cache) {
+  return detail::PanelBuilder(stage, index, selection, cache).build();
 }
 
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection) {

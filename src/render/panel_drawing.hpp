@@ -52,9 +52,14 @@ std::vector<double> lightness_whites(const std::vector<double>& measures);
 // The colour mixed with white by `white` in [0, 1] (alpha kept).
 Color lightened(Color color, double white);
 
+class StaticLayers;  // render/static_layers.hpp
+
 // The shapes of every layer of the stage's scene for its panel `index`, in
-// drawing order, with the motion the stage built. Throws RenderError.
-Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr);
+// drawing order, with the motion the stage built. With a selection and a
+// cache, the layers that read nothing of the frame are copied from the cache
+// once it holds them. Throws RenderError.
+Drawing panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection = nullptr,
+                      StaticLayers* cache = nullptr);
 // The same for `panel` alone (a stage of its own).
 Drawing panel_drawing(const scene::Scene& scene, const scene::Panel& panel, const FrameSelection* selection = nullptr);
 

@@ -56,10 +56,20 @@ class PosePanel {
   const scene::PoseFigure<Pose>& figure() const { return scene::figure_of<Keys>(scene_); }
   const std::vector<scene::ShapeOf<Pose>>& shapes() const { return scene::figure_of<Keys>(panel_).shapes; }
   // An animation frame's time and trail, or nullptr for the static figure.
-  const FrameSelection* selection() const { return selection_; }
+  // Every layer asks here, so that a layer that never asks is known to be
+  // the same at every frame (render/static_layers.hpp).
+  const FrameSelection* selection() const {
+    read_frame_ = true;
+    return selection_;
+  }
+  // Whether the layer being drawn asked for the frame.
+  bool took_frame() const { return read_frame_; }
 
   // The layer being drawn: its JSON Pointer names every error.
-  void begin_layer(std::string pointer) { layer_ = std::move(pointer); }
+  void begin_layer(std::string pointer) {
+    layer_ = std::move(pointer);
+    read_frame_ = false;
+  }
   const std::string& layer() const { return layer_; }
   [[noreturn]] void fail(const std::string& reason) const;
   [[noreturn]] void fail_at(const std::string& pointer, const std::string& reason) const;
@@ -91,6 +101,9 @@ class PosePanel {
   // motion's samples, or of any shadow lower still. take() paints every
   // shadow first, under all the layers, at "/camera/shadow".
   void cast_shadow(int index, std::vector<std::vector<Eigen::Vector3d>> faces, double opacity, bool moving);
+  std::size_t shadow_count() const { return shadows_.size(); }
+  // The drawing so far (before take()'s shadows).
+  Drawing& drawing() { return drawing_; }
   Drawing take();
 
  private:
@@ -98,7 +111,8 @@ class PosePanel {
   std::size_t index_;
   const scene::Scene& scene_;
   const scene::Panel& panel_;
-  const FrameSelection* selection_;
+  const FrameSelection* selection_;  // through selection() only
+  mutable bool read_frame_ = false;
   const Keys& keys_;
   double ground_ = 0.0;  // z of the ground (space, with a shadow): set with view_, so declared first
   PoseView<Pose> view_;

@@ -34,7 +34,7 @@ void PanelBuilder::add(const scene::CompareLayer& layer) {
   const double distance = analysis::pattern_distance(own, other);
   if (!std::isfinite(distance)) fail(layer_, "the distance between the two patterns is not finite");
   const Color text{0.1, 0.1, 0.1, 1.0};
-  if (selection_ == nullptr) {
+  if (selection() == nullptr) {
     add_lines({{text, fmt::format("max |{} \u2212 {}| = {:.3g}", scene::method_id(panel_.keys), layer.method_name,
                                   distance)}},
               layer.at, layer.corner, layer.size, text);

@@ -34,7 +34,7 @@ void PanelBuilder::add(const scene::GuessesLayer& layer) {
           {guess.color, fmt::format("{}({}, D({:g})) = {:.3g}", discrepancy ? "E" : "d", guess.name, guess.t, value)});
     }
   }
-  if (selection_ == nullptr) add_lines(lines, layer.at, layer.corner, layer.size, layer.color);
+  if (selection() == nullptr) add_lines(lines, layer.at, layer.corner, layer.size, layer.color);
 }
 
 // Its cost (render/layer_cost.hpp).

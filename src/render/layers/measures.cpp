@@ -32,7 +32,7 @@ namespace detail {
 
 // "measures": the numbers of `pita measure` for this panel's motion.
 void PanelBuilder::add(const scene::MeasuresLayer& layer) {
-  if (selection_ != nullptr) return;  // a figure's numbers, not an animation frame's
+  if (selection() != nullptr) return;  // a figure's numbers, not an animation frame's
   // "angle:M@t" and "handle-shift" compare with another motion, and
   // "knot-distance" with the keyframes (analysis/comparison.hpp); the others
   // are `pita measure`'s.

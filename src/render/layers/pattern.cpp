@@ -19,7 +19,7 @@ void PanelBuilder::add(const scene::PatternLayer& layer) {
   // "times": exactly those, fixed, in the figure and in every animation frame
   // alike (as a "shapes" layer's); otherwise the samples, or the animation's
   // moving frame and its trail.
-  const bool moving = selection_ != nullptr && layer.times.empty();
+  const bool moving = selection() != nullptr && layer.times.empty();
   const std::vector<double> times = layer.times.empty() ? sequence_times(layer.samples, layer.range) : layer.times;
   const std::vector<Arrow> pattern = own ? frames(layer_motion(layer.method, layer.options), times) : frames(times);
   // A dot's radius: a fixed share of the first keyframe's magnitude.

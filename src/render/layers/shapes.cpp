@@ -89,7 +89,7 @@ void PanelBuilder::add(const scene::ShapesLayer& layer) {
   const bool fixed = !layer.times.empty();
   const std::vector<Arrow> pattern =
       fixed ? frames(motion_, layer.times) : frames(sequence_times(layer.samples, layer.range));
-  const bool moving = selection_ != nullptr && !fixed;
+  const bool moving = selection() != nullptr && !fixed;
   for (std::size_t i = 0; i < pattern.size(); ++i) {
     for (Shape& shape :
          carried_shapes(scene::figure_of<scene::KeyframeKeys>(panel_).shapes, carrier(handle(), pattern[i]), layer,
