@@ -297,11 +297,16 @@ def test_scrubbing_and_play(folder, browser, rates):
     try:
         browser.open(served.url)
         for i, name in enumerate(names):
-            eventually(lambda: browser.evaluate(f"typeof views !== 'undefined' && views.get({i}) && views.get({i}).animation !== null"), 60,
-                       what=f"{name}'s animated SVG")
+            # The animated SVG, and the figure fetched first (the animation may come before it).
+            eventually(lambda: browser.evaluate(f"typeof views !== 'undefined' && views.get({i}) && "
+                                                f"views.get({i}).animation !== null && views.get({i}).shown !== null && "
+                                                f"!views.get({i}).fetching"), 60,
+                       what=f"{name}'s animated SVG and figure")
             browser.evaluate(f"document.querySelector('#scene-{i}').scrollIntoView(); "
                              f"document.querySelector('#scene-{i} .figure').focus()")
-            requests = browser.evaluate("performance.getEntriesByType('resource').length")
+            # Requests are told apart by when they started (the list is in that order, and a
+            # request still on its way when counted would join it before the later ones).
+            since = browser.evaluate("performance.now()")
             # Space plays: the frames shown change at the display's rate, up to the timeline's fps.
             key(browser, " ", "Space", 32, " ")
             eventually(lambda: browser.evaluate(f"views.get({i}).shown") == "animation", 10)
@@ -323,7 +328,8 @@ def test_scrubbing_and_play(folder, browser, rates):
             check(browser.evaluate(f"views.get({i}).k") == k, "the left arrow steps back")
             eventually(lambda: visible_frames(browser, i) == [k], 10,
                        what=lambda: f"frame {k} shown: {visible_frames(browser, i)}")
-            asked = browser.evaluate(f"performance.getEntriesByType('resource').slice({requests}).map(e => e.name).filter(n => n.includes('/api/figure/'))")
+            asked = browser.evaluate(f"performance.getEntriesByType('resource').filter(e => e.startTime >= {since})"
+                                     ".map(e => e.name).filter(n => n.includes('/api/figure/'))")
             check(not asked, f"play and the arrows asked nothing of the server: {asked}")
             subprocess.run([PITA, "animate", f"{name}.json", "-o", ".a.svg"], cwd=folder, check=True,
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
