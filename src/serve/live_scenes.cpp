@@ -78,6 +78,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
   std::optional<Json> error;
   render::Figure figure;
   Json claims = Json::array();
+  Json camera;
   std::string text;
   try {
     text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
@@ -85,6 +86,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
     const motion::Stage stage(*scene);
     figure = render::build_figure(stage);
     svg = render::render_figure(*scene, figure, render::Format::svg);
+    camera = camera_json(stage);
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       claims.push_back(
           {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
@@ -109,6 +111,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.svg = std::move(svg);
       state.placements = figure.placements;
       state.claims = std::move(claims);
+      state.camera = std::move(camera);
       state.text = std::move(text);
       state.files = {state.path};
       state.animation.reset();  // made again when asked for
@@ -168,7 +171,10 @@ Json LiveScenes::scenes_json() {
                {"handles", Json::array()},
                {"claims", state.claims},
                {"digest", digest_of(state.text)},
+               {"camera", state.camera},
                {"panels", Json::array()}};
+    // A 3D scene's camera, which the page turns; "Save view" writes it with --edit only.
+    if (!state.camera.is_null()) entry["camera"]["save"] = settings_.edit;
     // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
     for (const render::PanelPlacement& placement : state.placements) {
       entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
@@ -225,12 +231,22 @@ LiveScenes::frame_layout(std::size_t i) {
   return {scene, std::shared_ptr<const std::vector<render::PanelPlacement>>(cache, &cache->placements)};
 }
 
-std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at) {
+std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at,
+                                              const std::optional<CameraTurn>& turn) {
+  std::shared_ptr<const scene::Scene> scene;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+    if (!at && !turn) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+    scene = scenes_[i]->scene;
   }
-  return export_figure(i, at, render::Format::svg);
+  if (!turn) return export_figure(i, at, render::Format::svg);
+  if (!scene) return std::nullopt;
+  // Frames keep the scene's own camera: they share the view of the animation the page seeks.
+  if (at) throw CameraRefused("camera: not with at (the frames are drawn with the scene's own camera)");
+  // As pita render draws the file with the turned camera written in.
+  const scene::Scene turned = turned_scene(*scene, *turn);
+  const motion::Stage stage(turned);
+  return render::render_figure(turned, render::build_figure(stage), render::Format::svg);
 }
 
 std::optional<std::string> LiveScenes::animation(std::size_t i) {
@@ -383,16 +399,33 @@ Json LiveScenes::edit(std::size_t i, const Json& request) {
              d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
   } else {
     for (const Json& change : request.at("changes")) {
-      changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      const bool remove = change.contains("remove") && change.at("remove").get<bool>();
+      changes.push_back(
+          {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
       check_change(text, changes.back());
     }
   }
   std::string edited = text;
   Json previous = Json::array();
   for (const Change& change : changes) {
-    const TextSpan span = value_span(edited, change.pointer);
-    previous.push_back({{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}});
-    edited = replace_value(edited, change.pointer, change.value);
+    Json back;
+    if (change.remove) {
+      const TextSpan span = value_span(edited, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
+      edited = remove_member(edited, change.pointer);
+    } else if (is_camera_pointer(change.pointer)) {
+      // "Save view": added where the file has no such member yet.
+      Undo undo;
+      edited = set_value(edited, change.pointer, change.value, &undo);
+      back = undo.value ? Json{{"pointer", undo.pointer}, {"value", *undo.value}}
+                        : Json{{"pointer", undo.pointer}, {"remove", true}};
+    } else {
+      const TextSpan span = value_span(edited, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
+      edited = replace_value(edited, change.pointer, change.value);
+    }
+    // Last change first: its undo removes what it added before an earlier one's removes the object it went into.
+    previous.insert(previous.begin(), back);
   }
   // Refused unless the result is a scene pita draws.
   const scene::Scene checked = scene::parse_scene(edited, path.string(), read_options());

@@ -21,6 +21,7 @@
 
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
+#include "serve/camera_edit.hpp"
 #include "serve/server.hpp"
 
 namespace pita::serve {
@@ -77,6 +78,7 @@ struct SceneState {
   std::string text;                                // the file it was read from
   std::shared_ptr<AnimationCache> animation;       // its animated SVG, once asked for
   std::shared_ptr<LayoutCache> layout;             // its frames' view, once asked for
+  Json camera;                                     // a 3D scene's camera (camera_json), else null
 };
 
 class LiveScenes {
@@ -99,7 +101,11 @@ class LiveScenes {
 
   Json scenes_json();
 
-  std::optional<std::string> figure(std::size_t i, std::optional<double> at);
+  // The last good figure, or its frame at `at`; with `turn`, the figure of
+  // the scene with its camera turned (turned_scene: throws CameraRefused for
+  // a scene of the plane, and with `at`).
+  std::optional<std::string> figure(std::size_t i, std::optional<double> at,
+                                    const std::optional<CameraTurn>& turn = std::nullopt);
 
   std::optional<std::string> measures(std::size_t i);
 
