@@ -258,6 +258,43 @@ def test_auto_camera_and_turn_latency(folder, browser, latencies):
         served.stop()
 
 
+def test_shift_wheel_moves_a_perspective_camera(folder, browser):
+    """With "projection": "perspective", Shift+wheel over a panel moves the camera farther (down)
+    or nearer; the plain wheel still zooms. Save view writes the distance."""
+    text = (SOURCE / "scenes" / "sam-3d-fig12-bezier.json").read_text()
+    text = text.replace('"shadow": true', '"shadow": true, "projection": "perspective", "distance": 12', 1)
+    (folder / "s.json").write_text(text)
+    served = Served(folder, ["s.json"], "--edit")
+    try:
+        open_scene(browser, served)
+        box = lambda: browser.evaluate(f"{FIGURE}.getAttribute('viewBox')")
+        whole = box()
+        x, y = panel_centre(browser)
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=100, modifiers=8)
+        eventually(lambda: settled(browser), 60, what="the farther camera's figure")
+        distance = browser.evaluate("views.get(0).turned.distance")
+        check(distance == 13.2 and turned(browser) == [-65, 32], f"a tenth farther: {distance}, {turned(browser)}")
+        check(box() == whole, "Shift+wheel does not zoom the view box")
+        scene = json.loads(text)
+        scene["camera"]["distance"] = 13.2
+        check(browser.evaluate("views.get(0).svg") == rendered(folder, json.dumps(scene)),
+              "the figure is pita render's with that distance")
+        check("distance 13.2" in browser.evaluate("document.querySelector('#scene-0 .camera').textContent"),
+              "the distance shown")
+        click(browser, "#scene-0 button.save-view")
+        saved = eventually(lambda: (lambda t: t != text and t)((folder / "s.json").read_text()), 60,
+                           what=lambda: "the file saved: " + served.stderr()[-400:])
+        check(saved == text.replace('"distance": 12', '"distance": 13.2', 1), f"only the distance changed: {saved[:600]}")
+        eventually(lambda: browser.evaluate("views.get(0).turned === null && !views.get(0).fetching"), 60)
+        browser.evaluate("document.querySelector('#scene-0 .figure').scrollIntoView()")
+        x, y = panel_centre(browser)
+        browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
+        eventually(lambda: box() != whole, 10, what="the plain wheel zooms")
+    finally:
+        served.stop()
+
+
 def test_a_scene_of_the_plane_does_not_turn(folder, browser):
     text = (SOURCE / "scenes" / "fig03-steady-morph.json").read_text()
     (folder / "s.json").write_text(text)
@@ -308,7 +345,7 @@ def main():
     try:
         for test in (test_the_camera_parameter_is_checked, test_a_scene_of_the_plane_does_not_turn,
                      test_turning_and_saving, test_save_view_adds_what_the_file_lacks,
-                     test_auto_camera_and_turn_latency):
+                     test_shift_wheel_moves_a_perspective_camera, test_auto_camera_and_turn_latency):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
