@@ -181,11 +181,19 @@ def test_save_view_adds_what_the_file_lacks(folder, browser):
     served = Served(folder, ["s.json"], "--edit")
     try:
         open_scene(browser, served)
+        # A frame of the slider shown (the right arrow): turning goes back to the figure itself.
+        browser.evaluate("document.querySelector('#scene-0 .figure').focus()")
+        browser.call("Input.dispatchKeyEvent", type="keyDown", key="ArrowRight", code="ArrowRight",
+                     windowsVirtualKeyCode=39)
+        browser.call("Input.dispatchKeyEvent", type="keyUp", key="ArrowRight", code="ArrowRight",
+                     windowsVirtualKeyCode=39)
+        check(browser.evaluate("views.get(0).t !== null"), "a frame of the slider shown")
         x, y = panel_centre(browser)
         drag(browser, x, y, -30, -10)
         eventually(lambda: settled(browser), 60, what=lambda: f"the turned figure: {turned(browser)}")
         azimuth, elevation = turned(browser)
         check([azimuth, elevation] == [50, 20], f"from the default camera (35, 25): {[azimuth, elevation]}")
+        check(browser.evaluate("views.get(0).t === null && views.get(0).shown === 'still'"), "the figure itself, turned")
         click(browser, "#scene-0 button.save-view")
         saved = eventually(lambda: (lambda t: t != bare and t)((folder / "s.json").read_text()), 60,
                            what=lambda: "the file saved: " + served.stderr()[-400:])
@@ -291,6 +299,12 @@ def test_shift_wheel_moves_a_perspective_camera(folder, browser):
         x, y = panel_centre(browser)
         browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100)
         eventually(lambda: box() != whole, 10, what="the plain wheel zooms")
+        # Nearer and nearer, until the camera stands among the solids: the page says why it is not drawn.
+        for _ in range(30):
+            browser.call("Input.dispatchMouseEvent", type="mouseWheel", x=x, y=y, deltaX=0, deltaY=-100, modifiers=8)
+        said = lambda: browser.evaluate("document.querySelector('#scene-0 .camera').textContent")
+        eventually(lambda: "not drawn" in said() and "behind the perspective camera" in said(), 60,
+                   what=lambda: f"the reason shown: {said()}")
     finally:
         served.stop()
 

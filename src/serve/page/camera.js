@@ -74,6 +74,14 @@ function showCamera(index) {
   v.saveView.style.display = v.turned && c.save ? "" : "none";
 }
 
+// The server could not draw the turned view (a perspective camera among the solids): why, after the camera.
+function turnFailed(index, failure) {
+  const v = views.get(index);
+  if (!v.cameraShown || !failure) return;
+  const why = failure.error || (failure.reason ? describe(failure) : "");
+  if (why) v.cameraShown.textContent += ` — not drawn: ${why}`;
+}
+
 // The panel under the pointer, or -1.
 function panelAt(index, e) {
   const v = views.get(index);

@@ -94,10 +94,10 @@ async function frame(index) {
   const control = v.fetching = new AbortController();
   v.fetchingTurn = !!turned;
   const k = v.k;
-  let response, svg;
+  let response, svg, failure;
   try {
     response = await fetch(api(`/api/figure/${index}`, extra), { signal: control.signal });
-    if (response.ok) svg = await response.text();
+    if (response.ok) svg = await response.text(); else failure = await response.json().catch(() => null);
   } catch (error) {
     return;  // cancelled: a newer request took its place
   } finally {
@@ -119,6 +119,7 @@ async function frame(index) {
     if (v.t === null) drawHandles(index);
   } else {
     v.figure.classList.add("stale");
+    if (turned) turnFailed(index, failure);
   }
   afterFrame(index);
 }
