@@ -116,6 +116,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.files = {state.path};
       state.animation.reset();  // made again when asked for
       state.layout.reset();
+      state.turned_layout.reset();
       for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
     }
     state.error = std::move(error);
@@ -206,16 +207,29 @@ Json LiveScenes::scenes_json() {
 }
 
 std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
-LiveScenes::frame_layout(std::size_t i) {
+LiveScenes::frame_layout(std::size_t i, const std::optional<CameraTurn>& turn) {
   std::shared_ptr<const scene::Scene> scene;
   std::shared_ptr<LayoutCache> cache;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     SceneState& state = *scenes_[i];
     if (!state.scene) return {};
-    if (!state.layout) state.layout = std::make_shared<LayoutCache>();
-    scene = state.scene;
-    cache = state.layout;
+    if (turn) {
+      // One turned view kept: scrubbing a view held turned makes its layout once.
+      const std::string key = fmt::format("{},{},{}", turn->azimuth, turn->elevation, turn->distance.value_or(0.0));
+      if (!state.turned_layout || state.turned_layout->turn != key) {
+        auto made = std::make_shared<LayoutCache>();
+        made->turn = key;
+        made->scene = std::make_shared<const scene::Scene>(turned_scene(*state.scene, *turn));
+        state.turned_layout = made;
+      }
+      cache = state.turned_layout;
+      scene = cache->scene;
+    } else {
+      if (!state.layout) state.layout = std::make_shared<LayoutCache>();
+      scene = state.scene;
+      cache = state.layout;
+    }
   }
   const std::lock_guard<std::mutex> lock(cache->mutex);
   if (!cache->made) {
@@ -233,20 +247,11 @@ LiveScenes::frame_layout(std::size_t i) {
 
 std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at,
                                               const std::optional<CameraTurn>& turn) {
-  std::shared_ptr<const scene::Scene> scene;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!at && !turn) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
-    scene = scenes_[i]->scene;
   }
-  if (!turn) return export_figure(i, at, render::Format::svg);
-  if (!scene) return std::nullopt;
-  // Frames keep the scene's own camera: they share the view of the animation the page seeks.
-  if (at) throw CameraRefused("camera: not with at (the frames are drawn with the scene's own camera)");
-  // As pita render draws the file with the turned camera written in.
-  const scene::Scene turned = turned_scene(*scene, *turn);
-  const motion::Stage stage(turned);
-  return render::render_figure(turned, render::build_figure(stage), render::Format::svg);
+  return export_figure(i, at, render::Format::svg, turn);
 }
 
 std::optional<std::string> LiveScenes::animation(std::size_t i) {
@@ -321,19 +326,22 @@ std::optional<std::string> LiveScenes::animation(std::size_t i) {
   return cache->svg;
 }
 
-std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format) {
+std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format,
+                                                     const std::optional<CameraTurn>& turn) {
   std::shared_ptr<const scene::Scene> scene;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     scene = scenes_[i]->scene;
-    if (scene && !at && format == render::Format::svg) return scenes_[i]->svg;
+    if (scene && !at && !turn && format == render::Format::svg) return scenes_[i]->svg;
   }
   if (!scene) return std::nullopt;
+  // As pita render draws the file with the turned camera written in.
+  if (turn && !at) scene = std::make_shared<const scene::Scene>(turned_scene(*scene, *turn));
   render::Figure figure;
   if (at) {
     // As pita render --at: one frame of the animation, in the view its frames
-    // share (made once per good state: it draws 33 frames of the figure).
-    const auto [layout_scene, placements] = frame_layout(i);
+    // share (made once per good state, or per turned camera: it draws 33 frames of the figure).
+    const auto [layout_scene, placements] = frame_layout(i, turn);
     if (!layout_scene) return std::nullopt;
     scene = layout_scene;
     const animate::Timeline timeline = animate::make_timeline(*scene);

@@ -74,10 +74,10 @@ def click(browser, selector):
     mouse(browser, "mouseReleased", x, y)
 
 
-def rendered(folder, text):
-    """The bytes `pita render` writes of the scene `text`."""
+def rendered(folder, text, *extra):
+    """The bytes `pita render [EXTRA...]` writes of the scene `text`."""
     (folder / ".r.json").write_text(text)
-    subprocess.run([PITA, "render", ".r.json", "-o", ".r.svg"], cwd=folder, check=True,
+    subprocess.run([PITA, "render", ".r.json", *extra, "-o", ".r.svg"], cwd=folder, check=True,
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     svg = (folder / ".r.svg").read_text()
     (folder / ".r.json").unlink()
@@ -130,6 +130,24 @@ def test_turning_and_saving(folder, browser):
         check(svg == rendered(folder, with_camera(text, -105, 47)),
               "the turned figure is pita render's of the scene with that camera")
         check((folder / "s.json").read_text() == text, "turning is not an edit")
+        # The slider's frames, while the view is held turned, are drawn with the turned camera:
+        # render --at's of the scene with that camera written in; "figure" returns to the turned figure.
+        browser.evaluate("document.querySelector('#scene-0 .figure').focus()")
+        for _ in range(3):
+            browser.call("Input.dispatchKeyEvent", type="keyDown", key="ArrowRight", code="ArrowRight",
+                         windowsVirtualKeyCode=39)
+            browser.call("Input.dispatchKeyEvent", type="keyUp", key="ArrowRight", code="ArrowRight",
+                         windowsVirtualKeyCode=39)
+        at = eventually(lambda: browser.evaluate("""(() => { const v = views.get(0); return v.t !== null &&
+            v.shown === 'frame' && v.shownFrame === 3 && !v.fetching && v.t; })()"""), 60, what="the turned frame")
+        check(browser.evaluate("views.get(0).svg") == rendered(folder, with_camera(text, -105, 47), "--at", repr(at)),
+              "the turned frame is render --at's of the scene with that camera")
+        click(browser, "#scene-0 button.still")
+        eventually(lambda: browser.evaluate("views.get(0).t === null && views.get(0).shown === 'still'")
+                   and settled(browser), 60, what="the turned figure back")
+        check(browser.evaluate("views.get(0).svg") == svg, "the turned figure again")
+        browser.evaluate(f"document.querySelector('#scene-0 .figure').scrollIntoView()")
+        x, y = panel_centre(browser)
 
         # The wheel zooms the figure (the view box); a drag still turns it, and keeps the zoom.
         box = lambda: browser.evaluate(f"{FIGURE}.getAttribute('viewBox')")
@@ -342,7 +360,7 @@ def test_the_camera_parameter_is_checked(folder):
         check(served.get("/api/figure/0?camera=10,20")[0] == 200, "a good camera")
         for query, reason in (("nan,20", b"finite"), ("10,95", b"elevation must be within"),
                               ("361,0", b"azimuth must be within"), ("10", b"two or three"),
-                              ("10,20,0", b"distance must be > 0"), ("10,20&at=0.5", b"not with at")):
+                              ("10,20,0", b"distance must be > 0")):
             status, body = served.get(f"/api/figure/0?camera={query}")
             check(status == 400 and reason in body, f"{query}: {status} {body}")
         check(served.get("/api/figure/0?camera=10,20", token="")[0] == 403, "the token first")

@@ -158,8 +158,11 @@ TEST_F(ServiceTest, TheFigureIsDrawnWithTheCameraThePageTurned) {
     EXPECT_EQ(status(answer), 400) << query << ": " << answer;
     EXPECT_NE(body(answer).find(reason), std::string::npos) << query << ": " << answer;
   }
-  const std::string with_time = get("/api/figure/0" + token + "&camera=10,20&at=0.5");
-  EXPECT_EQ(status(with_time), 400) << with_time;
+  // A frame of the turned view: another than the scene's own camera draws.
+  const std::string frame = get("/api/figure/0" + token + "&camera=10,20&at=0.5");
+  ASSERT_EQ(status(frame), 200) << frame;
+  EXPECT_NE(body(frame), body(get("/api/figure/0" + token + "&at=0.5")));
+  EXPECT_EQ(body(frame), body(get("/api/figure/0" + token + "&at=0.5&camera=10,20")));  // the layout kept
 }
 
 TEST_F(ServiceTest, ASceneOfThePlaneHasNoCameraToTurn) {

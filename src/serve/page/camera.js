@@ -1,5 +1,6 @@
 // Turning 3D scenes: a drag on a panel turns the scene's camera and the server draws the figure
-// with it (/api/figure/N?camera=AZ,EL[,DIST]); "Save view" writes it into the scene file (--edit).
+// with it (/api/figure/N?camera=AZ,EL[,DIST]), and the slider's frames while the view is held
+// turned; "Save view" writes it into the scene file (--edit).
 // Part of pita serve's page: src/CMakeLists.txt joins src/serve/page/*.js, in
 // its order, into page.html's one script.
 
@@ -48,7 +49,10 @@ function cameraTools(index) {
   v.resetView = el("button", "reset-view", v.cameraTools);
   v.resetView.textContent = "reset view";
   v.resetView.title = "the camera the scene file gives";
-  v.resetView.addEventListener("click", () => { v.turned = null; showCamera(index); frame(index); });
+  v.resetView.addEventListener("click", () => {
+    v.turned = null; showCamera(index);
+    if (v.t !== null) { v.shown = null; seek(index, v.k); } else frame(index);
+  });
   v.saveView = el("button", "save-view", v.cameraTools);
   v.saveView.textContent = "Save view";
   v.saveView.title = "write this camera into the scene file (its azimuth and elevation; \"auto\": false)";

@@ -86,9 +86,9 @@ function view(scene) {
 // latest request wins, and a request it supersedes is cancelled.
 async function frame(index) {
   const v = views.get(index);
-  // The figure with the camera turned in the page (camera.js), or a frame with the scene's own.
+  // The figure or the frame with the camera turned in the page (camera.js), if it is.
   const turned = v.t === null ? turnKey(v.turned) : "";
-  const extra = v.t === null ? turnedQuery(index) : `&at=${v.t}`;
+  const extra = (v.t === null ? "" : `&at=${v.t}`) + turnedQuery(index);
   const mine = v.frames = (v.frames || 0) + 1;  // answers can come out of order: the latest request wins
   if (v.fetching) v.fetching.abort();
   const control = v.fetching = new AbortController();
