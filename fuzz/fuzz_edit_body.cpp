@@ -2,16 +2,15 @@
 // chooses one of three scene files (keyframe arrows, panels with keyframes
 // of their own, poses of the plane), the rest is the request's body. The
 // body is read as the server reads it (JSON; "drag": {"panel", "pointer",
-// "part", "to", "version"} or "changes": [{"pointer", "value"}]) and applied
+// "part", "to", "version"} or "changes": [{"pointer", "value"} or {"pointer",
+// "remove": true}], "Save view"'s camera members among them) and applied
 // with the functions the server calls (serve/scene_edit.hpp, serve/json_edit.hpp):
 // drag for a drag, check_change for each change, then value_span and
-// replace_value; the result is read as a scene and its figure built, as the
-// server does before it writes anything. Refusals are the server's 400s
-// (nlohmann's exceptions, std::invalid_argument) and the scene's own errors
-// (scene::LocatedError: SceneError, motion::NoMotion, RenderError); nothing
-// else may escape. A change that is
-// applied must leave every other byte of the file as it was, and read back
-// as the value written.
+// replace_value (set_value and remove_member for the camera); the result is read as a scene and its figure built, as
+// the server does before it writes anything. Refusals are the server's 400s (nlohmann's exceptions,
+// std::invalid_argument) and the scene's own errors (scene::LocatedError: SceneError, motion::NoMotion, RenderError);
+// nothing else may escape. A change that is applied must leave every other byte of the file as it was, and read back as
+// the value written.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -24,6 +23,7 @@
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
+#include "serve/camera_edit.hpp"
 #include "serve/json_edit.hpp"
 #include "serve/scene_edit.hpp"
 
@@ -59,12 +59,29 @@ void edit(const std::string& text, const Json& request) {
                           Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
   } else {
     for (const Json& change : request.at("changes")) {
-      changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      const bool remove = change.contains("remove") && change.at("remove").get<bool>();
+      changes.push_back(
+          {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
       serve::check_change(text, changes.back());
     }
   }
   std::string edited = text;
   for (const serve::Change& change : changes) {
+    if (change.remove) {
+      edited = serve::remove_member(edited, change.pointer);
+      continue;
+    }
+    if (serve::is_camera_pointer(change.pointer)) {
+      // "Save view": set, or added where missing; its undo gives the text back byte for byte.
+      const std::string before = edited;
+      serve::Undo undo;
+      edited = serve::set_value(edited, change.pointer, change.value, &undo);
+      PITA_FUZZ_CHECK((undo.value ? serve::set_value(edited, undo.pointer, *undo.value)
+                                  : serve::remove_member(edited, undo.pointer)) == before);
+      const serve::TextSpan now = serve::value_span(edited, change.pointer);
+      PITA_FUZZ_CHECK(Json::parse(edited.substr(now.begin, now.end - now.begin)) == Json::parse(change.value));
+      continue;
+    }
     const serve::TextSpan span = serve::value_span(edited, change.pointer);
     PITA_FUZZ_CHECK(span.begin <= span.end && span.end <= edited.size());
     const std::string before = edited;
