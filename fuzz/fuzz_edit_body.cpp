@@ -1,6 +1,6 @@
 // Bytes -> an edit of `pita serve --edit` (POST /api/edit/N): the first byte
-// chooses one of three scene files (keyframe arrows, panels with keyframes
-// of their own, poses of the plane), the rest is the request's body. The
+// chooses one of four scene files (keyframe arrows, panels with keyframes
+// of their own, poses of the plane, poses of space), the rest is the request's body. The
 // body is read as the server reads it (JSON; "drag": {"panel", "pointer",
 // "part", "to", "version"} or "changes": [{"pointer", "value"} or {"pointer",
 // "remove": true}], "Save view"'s camera members among them) and applied
@@ -42,6 +42,10 @@ const char* const kScenes[] = {
     {"title": "shared", "method": "P8"}]})",
     R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
   {"t": 1, "triangle": [[4, 0], [5, 0], [4, 1]]}]})",
+    R"({"dimension": 3, "method": "polySAM", "samples": 3,
+  "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+            {"t": 1, "matrix": [[0, -1, 0, 2], [1, 0, 0, 0], [0, 0, 1, 1]]}],
+  "camera": {"shadow": true}})",
 };
 
 // The edit as server.cpp's edit() applies it, without the file.
@@ -103,7 +107,7 @@ void edit(const std::string& text, const Json& request) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  const std::string text = kScenes[data[0] % 3];
+  const std::string text = kScenes[data[0] % 4];
   const std::string_view body = fuzz::text_of(data + 1, size - 1);
   Json request;
   try {
