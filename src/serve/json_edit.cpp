@@ -108,9 +108,8 @@ class Scanner {
     }
   }
   // Every member of the object at the position: where its key starts, where
-  // its key's closing quote ends, and its value's span; `close` is where the
-  // object's '}' is.
-  std::vector<MemberSpan> members(std::size_t& close) {
+  // its key's closing quote ends, and its value's span.
+  std::vector<MemberSpan> members() {
     std::vector<MemberSpan> all;
     space();
     expect('{');
@@ -131,7 +130,6 @@ class Scanner {
     }
     space();
     if (!peek('}')) fail("'}'");
-    close = at_;
     return all;
   }
   bool object_here() {
@@ -292,11 +290,11 @@ std::string quoted(const std::string& key) {
 }
 
 // The members of the object whose value is at `span` (throws when it is not an object).
-std::vector<MemberSpan> members_of(std::string_view text, TextSpan span, std::size_t& close) {
+std::vector<MemberSpan> members_of(std::string_view text, TextSpan span) {
   Scanner scanner(text);
   scanner.jump(span.begin);
   if (!scanner.object_here()) throw std::invalid_argument("a member can be added to an object only");
-  return scanner.members(close);
+  return scanner.members();
 }
 
 }  // namespace
@@ -325,8 +323,7 @@ std::string set_value(std::string_view text, std::string_view pointer, std::stri
   // The missing objects, innermost first, written on one line.
   std::string added(value);
   for (std::size_t k = names.size() - 1; k > have; --k) added = "{" + quoted(names[k]) + ": " + added + "}";
-  std::size_t close = 0;
-  const std::vector<MemberSpan> members = members_of(text, parent, close);
+  const std::vector<MemberSpan> members = members_of(text, parent);
   std::string inserted;
   std::size_t at = 0;
   if (members.empty()) {
@@ -358,8 +355,7 @@ std::string remove_member(std::string_view text, std::string_view pointer) {
   const std::vector<std::string> names = tokens(pointer);
   if (names.empty()) throw std::invalid_argument("the whole document cannot be removed");
   const TextSpan parent = value_span(text, pointer_prefix(pointer, names.size() - 1));
-  std::size_t close = 0;
-  const std::vector<MemberSpan> members = members_of(text, parent, close);
+  const std::vector<MemberSpan> members = members_of(text, parent);
   for (std::size_t j = 0; j < members.size(); ++j) {
     if (members[j].name != names.back()) continue;
     // The bytes set_value adds: from the end of the member before (its comma

@@ -119,7 +119,7 @@ function turn(index, down) {
     // Turning shows the figure itself: a frame of the slider has the scene's own camera.
     if (v.t !== null) { stop(index); v.t = null; v.k = 0; v.slider.value = "0"; v.time.textContent = ""; }
     v.turned = next;
-    v.turnMovedAt = performance.now();
+    v.turnMovedAt = e.timeStamp;  // when the move happened (performance.now's clock)
     showCamera(index);
     askTurned(index);
   };
