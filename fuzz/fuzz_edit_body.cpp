@@ -1,17 +1,16 @@
 // Bytes -> an edit of `pita serve --edit` (POST /api/edit/N): the first byte
-// chooses one of three scene files (keyframe arrows, panels with keyframes
-// of their own, poses of the plane), the rest is the request's body. The
+// chooses one of four scene files (keyframe arrows, panels with keyframes
+// of their own, poses of the plane, poses of space), the rest is the request's body. The
 // body is read as the server reads it (JSON; "drag": {"panel", "pointer",
-// "part", "to", "version"} or "changes": [{"pointer", "value"}]) and applied
+// "part", "to", "version"} or "changes": [{"pointer", "value"} or {"pointer",
+// "remove": true}], "Save view"'s camera members among them) and applied
 // with the functions the server calls (serve/scene_edit.hpp, serve/json_edit.hpp):
 // drag for a drag, check_change for each change, then value_span and
-// replace_value; the result is read as a scene and its figure built, as the
-// server does before it writes anything. Refusals are the server's 400s
-// (nlohmann's exceptions, std::invalid_argument) and the scene's own errors
-// (scene::LocatedError: SceneError, motion::NoMotion, RenderError); nothing
-// else may escape. A change that is
-// applied must leave every other byte of the file as it was, and read back
-// as the value written.
+// replace_value (set_value and remove_member for the camera); the result is read as a scene and its figure built, as
+// the server does before it writes anything. Refusals are the server's 400s (nlohmann's exceptions,
+// std::invalid_argument) and the scene's own errors (scene::LocatedError: SceneError, motion::NoMotion, RenderError);
+// nothing else may escape. A change that is applied must leave every other byte of the file as it was, and read back as
+// the value written.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -24,6 +23,7 @@
 #include "render/figure.hpp"
 #include "render/panel_drawing.hpp"
 #include "scene/scene.hpp"
+#include "serve/camera_edit.hpp"
 #include "serve/json_edit.hpp"
 #include "serve/scene_edit.hpp"
 
@@ -42,6 +42,10 @@ const char* const kScenes[] = {
     {"title": "shared", "method": "P8"}]})",
     R"({"method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]},
   {"t": 1, "triangle": [[4, 0], [5, 0], [4, 1]]}]})",
+    R"({"dimension": 3, "method": "polySAM", "samples": 3,
+  "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+            {"t": 1, "matrix": [[0, -1, 0, 2], [1, 0, 0, 0], [0, 0, 1, 1]]}],
+  "camera": {"shadow": true}})",
 };
 
 // The edit as server.cpp's edit() applies it, without the file.
@@ -59,12 +63,29 @@ void edit(const std::string& text, const Json& request) {
                           Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
   } else {
     for (const Json& change : request.at("changes")) {
-      changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      const bool remove = change.contains("remove") && change.at("remove").get<bool>();
+      changes.push_back(
+          {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
       serve::check_change(text, changes.back());
     }
   }
   std::string edited = text;
   for (const serve::Change& change : changes) {
+    if (change.remove) {
+      edited = serve::remove_member(edited, change.pointer);
+      continue;
+    }
+    if (serve::is_camera_pointer(change.pointer)) {
+      // "Save view": set, or added where missing; its undo gives the text back byte for byte.
+      const std::string before = edited;
+      serve::Undo undo;
+      edited = serve::set_value(edited, change.pointer, change.value, &undo);
+      PITA_FUZZ_CHECK((undo.value ? serve::set_value(edited, undo.pointer, *undo.value)
+                                  : serve::remove_member(edited, undo.pointer)) == before);
+      const serve::TextSpan now = serve::value_span(edited, change.pointer);
+      PITA_FUZZ_CHECK(Json::parse(edited.substr(now.begin, now.end - now.begin)) == Json::parse(change.value));
+      continue;
+    }
     const serve::TextSpan span = serve::value_span(edited, change.pointer);
     PITA_FUZZ_CHECK(span.begin <= span.end && span.end <= edited.size());
     const std::string before = edited;
@@ -86,7 +107,7 @@ void edit(const std::string& text, const Json& request) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  const std::string text = kScenes[data[0] % 3];
+  const std::string text = kScenes[data[0] % 4];
   const std::string_view body = fuzz::text_of(data + 1, size - 1);
   Json request;
   try {

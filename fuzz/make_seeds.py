@@ -164,7 +164,7 @@ def python_entry_seeds(out):
 
 
 def edit_seeds(out):
-    """fuzz_edit_body: a byte choosing the scene (0 arrows, 1 panels, 2 poses), then the body."""
+    """fuzz_edit_body: a byte choosing the scene (0 arrows, 1 panels, 2 poses, 3 poses of space), then the body."""
     folder = out / "fuzz_edit_body"
     folder.mkdir(parents=True, exist_ok=True)
     bodies = [
@@ -181,6 +181,10 @@ def edit_seeds(out):
         (2, {"drag": {"panel": 0, "pointer": "/poses/0", "part": "corner0", "to": [100, 300]}}),
         (2, {"changes": [{"pointer": "/poses/0/matrix", "value": "[[1, 0, 1], [0, 1, 0]]"}]}),
         (0, {"drag": {"panel": 1e20, "pointer": "/keyframes/0", "part": "tail", "to": [0, 0]}}),
+        # "Save view" of a 3D camera, and its undo: members added, then removed.
+        (3, {"changes": [{"pointer": "/camera/azimuth", "value": "30"},
+                         {"pointer": "/camera/elevation", "value": "-20.5"}, {"pointer": "/camera/auto", "value": "false"}]}),
+        (0, {"changes": [{"pointer": "/camera", "remove": True}, {"pointer": "/camera", "value": "{\"azimuth\": 10}"}]}),
     ]
     for i, (scene, body) in enumerate(bodies):
         (folder / f"edit-{i:02d}.bin").write_bytes(bytes([scene]) + json.dumps(body).encode())

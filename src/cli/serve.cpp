@@ -47,8 +47,8 @@ void add_serve_options(CLI::App& command, ServeOptions& options) {
       ->type_name("ADDRESS");
   command.add_flag("--allow-absolute-paths", options.allow_absolute_paths, "Allow images given by absolute paths");
   command.add_flag("--edit", options.edit,
-                   "Let the page drag keyframe arrows (tail, tip) and pose corners, and write them into the scene "
-                   "files (atomically, keeping the rest of each file as it is)");
+                   "Let the page drag keyframe arrows (tail, tip) and pose corners, and save turned 3D views, "
+                   "writing them into the scene files (atomically, keeping the rest of each file as it is)");
   command
       .add_option("--token", options.token,
                   "The token every request must give (16 to 128 letters, digits, - or _), instead of a new random "
@@ -81,7 +81,8 @@ the server. Only the scenes named are served. Ctrl-C stops it.
 With --edit, the tails and tips of the keyframe arrows and the corners of the poses can be dragged
 in the page; each drag is written into the scene file (atomically; the rest of the file, its
 order, spacing and numbers, as it was), unless it would make the scene bad: then the page shows
-why and the file stays. The page keeps an undo list.
+why and the file stays. The page keeps an undo list. A drag on a 3D scene's figure turns its
+camera (in the page only; with --edit, "Save view" writes it into the file).
 
 Examples:
   pita serve scenes/fig01-eight-pitas.json

@@ -106,6 +106,13 @@ PoseView<Pose> make_view(const motion::Stage& stage, std::size_t index, const sc
 
 }  // namespace
 
+scene::Camera drawn_camera(const motion::Stage& stage, std::size_t index) {
+  const scene::SpacePoseKeys& keys = pose_keys_of<Affine3>(stage.scene(), stage.panel(index));
+  const scene::PoseFigure<Affine3>& figure = scene::figure_of(stage.scene(), keys);
+  if (!figure.camera.automatic) return figure.camera;
+  return chosen_camera(figure.camera, figure.shapes, seen_poses(stage, index, keys));
+}
+
 template <class Pose>
 PosePanel<Pose>::PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
     : stage_(stage),

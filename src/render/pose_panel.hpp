@@ -130,4 +130,10 @@ class PosePanel {
 extern template class PosePanel<Affine2>;
 extern template class PosePanel<Affine3>;
 
+// The camera panel `index` of a 3D pose scene is drawn with: the scene's,
+// turned as "auto" turns it (camera_choice.hpp) when it says so; `pita serve`
+// starts turning a panel in the page from it. Throws RenderError when the
+// panel has no poses of space.
+scene::Camera drawn_camera(const motion::Stage& stage, std::size_t index);
+
 }  // namespace pita::render

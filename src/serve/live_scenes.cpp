@@ -78,6 +78,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
   std::optional<Json> error;
   render::Figure figure;
   Json claims = Json::array();
+  Json camera;
   std::string text;
   try {
     text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
@@ -85,6 +86,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
     const motion::Stage stage(*scene);
     figure = render::build_figure(stage);
     svg = render::render_figure(*scene, figure, render::Format::svg);
+    camera = camera_json(stage);
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       claims.push_back(
           {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
@@ -109,10 +111,12 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.svg = std::move(svg);
       state.placements = figure.placements;
       state.claims = std::move(claims);
+      state.camera = std::move(camera);
       state.text = std::move(text);
       state.files = {state.path};
       state.animation.reset();  // made again when asked for
       state.layout.reset();
+      state.turned_layout.reset();
       for (const fs::path& image : scene::image_files(*scene)) state.files.push_back(image);
     }
     state.error = std::move(error);
@@ -168,7 +172,10 @@ Json LiveScenes::scenes_json() {
                {"handles", Json::array()},
                {"claims", state.claims},
                {"digest", digest_of(state.text)},
+               {"camera", state.camera},
                {"panels", Json::array()}};
+    // A 3D scene's camera, which the page turns; "Save view" writes it with --edit only.
+    if (!state.camera.is_null()) entry["camera"]["save"] = settings_.edit;
     // Where each panel is drawn (canvas pixels): the page shows the measures of the one under the pointer.
     for (const render::PanelPlacement& placement : state.placements) {
       entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
@@ -200,16 +207,29 @@ Json LiveScenes::scenes_json() {
 }
 
 std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
-LiveScenes::frame_layout(std::size_t i) {
+LiveScenes::frame_layout(std::size_t i, const std::optional<CameraTurn>& turn) {
   std::shared_ptr<const scene::Scene> scene;
   std::shared_ptr<LayoutCache> cache;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     SceneState& state = *scenes_[i];
     if (!state.scene) return {};
-    if (!state.layout) state.layout = std::make_shared<LayoutCache>();
-    scene = state.scene;
-    cache = state.layout;
+    if (turn) {
+      // One turned view kept: scrubbing a view held turned makes its layout once.
+      const std::string key = fmt::format("{},{},{}", turn->azimuth, turn->elevation, turn->distance.value_or(0.0));
+      if (!state.turned_layout || state.turned_layout->turn != key) {
+        auto made = std::make_shared<LayoutCache>();
+        made->turn = key;
+        made->scene = std::make_shared<const scene::Scene>(turned_scene(*state.scene, *turn));
+        state.turned_layout = made;
+      }
+      cache = state.turned_layout;
+      scene = cache->scene;
+    } else {
+      if (!state.layout) state.layout = std::make_shared<LayoutCache>();
+      scene = state.scene;
+      cache = state.layout;
+    }
   }
   const std::lock_guard<std::mutex> lock(cache->mutex);
   if (!cache->made) {
@@ -225,12 +245,13 @@ LiveScenes::frame_layout(std::size_t i) {
   return {scene, std::shared_ptr<const std::vector<render::PanelPlacement>>(cache, &cache->placements)};
 }
 
-std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at) {
+std::optional<std::string> LiveScenes::figure(std::size_t i, std::optional<double> at,
+                                              const std::optional<CameraTurn>& turn) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    if (!at) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
+    if (!at && !turn) return scenes_[i]->scene ? std::optional<std::string>(scenes_[i]->svg) : std::nullopt;
   }
-  return export_figure(i, at, render::Format::svg);
+  return export_figure(i, at, render::Format::svg, turn);
 }
 
 std::optional<std::string> LiveScenes::animation(std::size_t i) {
@@ -305,19 +326,22 @@ std::optional<std::string> LiveScenes::animation(std::size_t i) {
   return cache->svg;
 }
 
-std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format) {
+std::optional<std::string> LiveScenes::export_figure(std::size_t i, std::optional<double> at, render::Format format,
+                                                     const std::optional<CameraTurn>& turn) {
   std::shared_ptr<const scene::Scene> scene;
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     scene = scenes_[i]->scene;
-    if (scene && !at && format == render::Format::svg) return scenes_[i]->svg;
+    if (scene && !at && !turn && format == render::Format::svg) return scenes_[i]->svg;
   }
   if (!scene) return std::nullopt;
+  // As pita render draws the file with the turned camera written in.
+  if (turn && !at) scene = std::make_shared<const scene::Scene>(turned_scene(*scene, *turn));
   render::Figure figure;
   if (at) {
     // As pita render --at: one frame of the animation, in the view its frames
-    // share (made once per good state: it draws 33 frames of the figure).
-    const auto [layout_scene, placements] = frame_layout(i);
+    // share (made once per good state, or per turned camera: it draws 33 frames of the figure).
+    const auto [layout_scene, placements] = frame_layout(i, turn);
     if (!layout_scene) return std::nullopt;
     scene = layout_scene;
     const animate::Timeline timeline = animate::make_timeline(*scene);
@@ -383,16 +407,33 @@ Json LiveScenes::edit(std::size_t i, const Json& request) {
              d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
   } else {
     for (const Json& change : request.at("changes")) {
-      changes.push_back({change.at("pointer").get<std::string>(), change.at("value").get<std::string>()});
+      const bool remove = change.contains("remove") && change.at("remove").get<bool>();
+      changes.push_back(
+          {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
       check_change(text, changes.back());
     }
   }
   std::string edited = text;
   Json previous = Json::array();
   for (const Change& change : changes) {
-    const TextSpan span = value_span(edited, change.pointer);
-    previous.push_back({{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}});
-    edited = replace_value(edited, change.pointer, change.value);
+    Json back;
+    if (change.remove) {
+      const TextSpan span = value_span(edited, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
+      edited = remove_member(edited, change.pointer);
+    } else if (is_camera_pointer(change.pointer)) {
+      // "Save view": added where the file has no such member yet.
+      Undo undo;
+      edited = set_value(edited, change.pointer, change.value, &undo);
+      back = undo.value ? Json{{"pointer", undo.pointer}, {"value", *undo.value}}
+                        : Json{{"pointer", undo.pointer}, {"remove", true}};
+    } else {
+      const TextSpan span = value_span(edited, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
+      edited = replace_value(edited, change.pointer, change.value);
+    }
+    // Last change first: its undo removes what it added before an earlier one's removes the object it went into.
+    previous.insert(previous.begin(), back);
   }
   // Refused unless the result is a scene pita draws.
   const scene::Scene checked = scene::parse_scene(edited, path.string(), read_options());

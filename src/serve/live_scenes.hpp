@@ -21,6 +21,7 @@
 
 #include "render/figure.hpp"
 #include "scene/scene.hpp"
+#include "serve/camera_edit.hpp"
 #include "serve/server.hpp"
 
 namespace pita::serve {
@@ -62,6 +63,9 @@ struct LayoutCache {
   bool made = false;
   std::vector<render::PanelPlacement> placements;
   std::exception_ptr error;
+  // For the frames of a view turned in the page: its camera ("AZ,EL,DIST") and the turned scene.
+  std::string turn;
+  std::shared_ptr<const scene::Scene> scene;
 };
 
 // One scene of the command line: its last good figure and what is wrong now.
@@ -77,6 +81,8 @@ struct SceneState {
   std::string text;                                // the file it was read from
   std::shared_ptr<AnimationCache> animation;       // its animated SVG, once asked for
   std::shared_ptr<LayoutCache> layout;             // its frames' view, once asked for
+  std::shared_ptr<LayoutCache> turned_layout;      // that of the camera last turned in the page
+  Json camera;                                     // a 3D scene's camera (camera_json), else null
 };
 
 class LiveScenes {
@@ -99,7 +105,11 @@ class LiveScenes {
 
   Json scenes_json();
 
-  std::optional<std::string> figure(std::size_t i, std::optional<double> at);
+  // The last good figure, or its frame at `at`; with `turn`, those of the
+  // scene with its camera turned (turned_scene: throws CameraRefused for a
+  // scene of the plane).
+  std::optional<std::string> figure(std::size_t i, std::optional<double> at,
+                                    const std::optional<CameraTurn>& turn = std::nullopt);
 
   std::optional<std::string> measures(std::size_t i);
 
@@ -112,7 +122,9 @@ class LiveScenes {
 
   // The bytes `pita render SCENE [--at t] -o OUT.svg|.png` writes for the
   // last good figure; nullopt without one. Throws what rendering throws.
-  std::optional<std::string> export_figure(std::size_t i, std::optional<double> at, render::Format format);
+  // With `turn`, of the scene with that camera written in.
+  std::optional<std::string> export_figure(std::size_t i, std::optional<double> at, render::Format format,
+                                           const std::optional<CameraTurn>& turn = std::nullopt);
 
   // Waits (at most `wait`) for a render newer than `seen`; the versions now.
   std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait);
@@ -140,9 +152,10 @@ class LiveScenes {
   }
 
   // The scene of the last good state of scene i and its frames' view (made
-  // once per good state, when first asked for); a null scene without one.
+  // once per good state, when first asked for; with `turn`, the turned
+  // scene's, made once per camera); a null scene without one.
   std::pair<std::shared_ptr<const scene::Scene>, std::shared_ptr<const std::vector<render::PanelPlacement>>>
-  frame_layout(std::size_t i);
+  frame_layout(std::size_t i, const std::optional<CameraTurn>& turn = std::nullopt);
 
   const Settings& settings_;
   std::vector<std::unique_ptr<SceneState>> scenes_;

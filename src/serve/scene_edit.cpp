@@ -13,6 +13,7 @@
 
 #include "core/affine2.hpp"
 #include "core/overloaded.hpp"
+#include "serve/camera_edit.hpp"
 #include "serve/json_edit.hpp"
 
 namespace pita::serve {
@@ -58,6 +59,8 @@ std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKe
 }  // namespace
 
 void check_change(const std::string& text, const Change& change) {
+  if (is_camera_pointer(change.pointer)) return check_camera_change(change);
+  if (change.remove) throw std::invalid_argument("\"" + change.pointer + "\" is not a member an edit may remove");
   // /keyframes/K/(p|q|m|w), /poses/K/(triangle/J|matrix), or the same under /panels/N.
   static const std::regex editable(
       R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix(/[01]/[0-2])?))$)");

@@ -28,10 +28,13 @@ struct Handle {
 std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
                             const std::vector<render::PanelPlacement>& placements);
 
-// The value at `pointer` becomes `value` (JSON text).
+// The value at `pointer` becomes `value` (JSON text), added when the file
+// lacks it; or, with `remove`, the member at `pointer` goes (the undo of an
+// added one).
 struct Change {
   std::string pointer;
   std::string value;
+  bool remove = false;
 };
 
 // What moving `part` of `pointer`, as drawn in panel `panel`, to the canvas
@@ -50,7 +53,10 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
 
 // A change as the page may send it: the pointer names a value a handle
 // writes (p, q, m, w, a triangle's point, a matrix) of a keyframe or pose, and
-// the value is one JSON value. Throws std::invalid_argument otherwise.
+// the value is one JSON value; or it is what "Save view" writes (camera_edit.hpp:
+// /camera/azimuth, elevation, distance or auto, within the reader's limits),
+// or the undo of it (the camera's object, or one of those removed). Throws
+// std::invalid_argument otherwise.
 void check_change(const std::string& text, const Change& change);
 
 // A number as the edits write it: the shortest text that reads back to it.

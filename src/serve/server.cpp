@@ -126,13 +126,18 @@ void get_figure(Site& site, const httplib::Request& req, httplib::Response& res)
     return send_error(res, 400, "at: a finite number, please");
   }
   try {
-    const auto svg = site.state.figure(*i, at);
+    // camera=AZ,EL[,DIST]: a 3D scene turned in the page (camera_edit.hpp).
+    std::optional<CameraTurn> turn;
+    if (req.has_param("camera")) turn = camera_parameter(req.get_param_value("camera"));
+    const auto svg = site.state.figure(*i, at, turn);
     if (!svg) return send_error(res, 409, "the scene has no good figure yet: see its error");
     res.set_header("Cache-Control", "no-store");
     // With the charset, not the bare type: cpp-httplib compresses a bare
     // image/svg+xml with brotli at its slowest setting when the browser
     // accepts it (380 ms for Fig. 1's 150 kB; 7 ms to send it as it is).
     res.set_content(*svg, "image/svg+xml; charset=utf-8");
+  } catch (const CameraRefused& e) {
+    send_error(res, 400, e.what());
   } catch (...) {
     send_failure(res, site.settings.scenes[*i].string());
   }

@@ -9,6 +9,8 @@
 //   GET /?token=T                      the page (src/serve/page/)
 //   GET /api/scenes?token=T            every scene: name, title, version, error, time range
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
+//   GET /api/figure/N?token=T&camera=AZ,EL[,DIST]  a 3D scene's figure with its camera turned
+//                                      (camera_edit.hpp); 400 with the reason for a bad camera
 //   GET /api/measures/N?token=T        scene N's `pita measure --format json`
 //   GET /api/animation/N?token=T       scene N's animated SVG (`pita animate -o OUT.svg`'s), made
 //                                      once per save; 409 when it has none or it is too large
@@ -18,8 +20,9 @@
 //   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
 //   POST /api/edit/N?token=T           with --edit: a drag of a handle ({"drag": {"panel", "pointer",
 //                                      "part", "to": [x, y]}}) or changes ({"changes": [{"pointer",
-//                                      "value"}]}) written into scene N's file (scene_edit.hpp);
-//                                      answers {"previous": [...]}, the changes that undo it
+//                                      "value"}]}; "Save view": /camera/... values, added when missing,
+//                                      or {"pointer", "remove": true}) written into scene N's file
+//                                      (scene_edit.hpp); answers {"previous": [...]}, the changes that undo it
 #pragma once
 
 #include <filesystem>

@@ -192,6 +192,39 @@ TEST(SceneEdit, AMatrixDragRewritesOnlyTheEntriesThatMove) {
   EXPECT_NE(edited.find("[0, 1, 0.4]"), std::string::npos) << edited;  // the second row untouched
 }
 
+// "Save view" writes the camera of a 3D scene: exactly its azimuth,
+// elevation, distance and auto, within the reader's limits; and its undo
+// removes them, or puts the camera's object back.
+TEST(SceneEdit, SaveViewWritesTheCameraWithinItsLimits) {
+  const std::string text = R"({"dimension": 3, "poses": [], "camera": {"shadow": true}})";
+  for (const Change& good : std::vector<Change>{{"/camera/azimuth", "-52.5"},
+                                                {"/camera/azimuth", "360"},
+                                                {"/camera/elevation", "-90"},
+                                                {"/camera/distance", "4.5"},
+                                                {"/camera/auto", "false"},
+                                                {"/camera/azimuth", "", true},
+                                                {"/camera", "", true},
+                                                {"/camera", R"({"azimuth": 10, "elevation": 20, "auto": true})"}}) {
+    EXPECT_NO_THROW(check_change(text, good)) << good.pointer << " = " << good.value;
+  }
+  for (const Change& bad : std::vector<Change>{{"/camera/azimuth", "360.5"},
+                                               {"/camera/elevation", "90.1"},
+                                               {"/camera/elevation", "\"up\""},
+                                               {"/camera/distance", "0"},
+                                               {"/camera/distance", "-3"},
+                                               {"/camera/auto", "1"},
+                                               {"/camera/shadow", "false"},
+                                               {"/camera/target", "[0, 0, 0]"},
+                                               {"/camera/azimuth", "10, \"x\": 1"},
+                                               {"/camera", R"({"shadow": false})"},
+                                               {"/camera", "[]"},
+                                               {"/camera/shadow", "", true},
+                                               {"/poses", "", true},
+                                               {"/keyframes/0/p", "", true}}) {
+    EXPECT_THROW(check_change(text, bad), std::invalid_argument) << bad.pointer << " = " << bad.value;
+  }
+}
+
 TEST(SceneEdit, NumbersAreWrittenShortAndExact) {
   EXPECT_EQ(number_json(3.0), "3");
   EXPECT_EQ(number_json(-0.0), "0");

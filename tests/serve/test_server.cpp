@@ -2,11 +2,18 @@
 // src/serve/http_front.cpp and server.cpp): the bounds come before the token,
 // the token before the routes. The sockets, the slow clients and the signals are tested on the
 // program itself (tests/serve/test_serve_limits.py).
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "motion/stage.hpp"
+#include "render/figure.hpp"
+#include "scene/scene.hpp"
 #include "serve/server.hpp"
 #include "support/scratch_dir.hpp"
 
@@ -27,12 +34,20 @@ class ServiceTest : public ::testing::Test {
   std::string get(const std::string& target, const std::string& host = "127.0.0.1:8765") {
     return service().answer("GET " + target + " HTTP/1.1\r\nHost: " + host + "\r\n\r\n");
   }
+  std::string post(const std::string& target, const std::string& body) {
+    return service().answer("POST " + target + " HTTP/1.1\r\nHost: localhost\r\nContent-Length: " +
+                            std::to_string(body.size()) + "\r\n\r\n" + body);
+  }
   Service& service() {
     if (!service_) {
       service_ = std::make_unique<Service>(settings_);
       service_->render_all();
     }
     return *service_;
+  }
+  std::string text_of(const std::string& name) const {
+    std::ifstream in(folder_.path() / name, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
   }
   static int status(const std::string& answer) { return std::stoi(answer.substr(9, 3)); }
   static std::string body(const std::string& answer) { return answer.substr(answer.find("\r\n\r\n") + 4); }
@@ -91,6 +106,113 @@ TEST_F(ServiceTest, AnEditIsRefusedWithoutEditAndAnsweredWithIt) {
   const std::string answer = service().answer(request);
   EXPECT_EQ(status(answer), 200) << answer;
   EXPECT_EQ(nlohmann::json::parse(body(answer)).at("previous"), nlohmann::json::array());
+}
+
+// A 3D pose scene whose camera gives neither azimuth nor elevation.
+const char* const kSpace = R"({"dimension": 3, "method": "polySAM", "samples": 5,
+  "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+            {"t": 1, "matrix": [[0, -1, 0, 2], [1, 0, 0, 0], [0, 0, 1, 1]]}],
+  "camera": {"shadow": true}
+}
+)";
+
+// What `pita render` draws of the scene text (an SVG).
+std::string rendered(const std::string& text) {
+  const scene::Scene scene = scene::parse_scene(text, "s.json");
+  const motion::Stage stage(scene);
+  return render::render_figure(scene, render::build_figure(stage), render::Format::svg);
+}
+
+// The page turns a 3D scene: /api/figure/N?camera=AZ,EL[,DIST] is what pita
+// render draws of the file with that camera written in; a bad camera is 400
+// with the reason.
+TEST_F(ServiceTest, TheFigureIsDrawnWithTheCameraThePageTurned) {
+  folder_.write("s.json", kSpace);
+  const std::string token = "?token=" + settings_.token;
+  const std::string turned = get("/api/figure/0" + token + "&camera=-52.5,30");
+  ASSERT_EQ(status(turned), 200) << turned;
+  std::string written = kSpace;
+  written.replace(written.find(R"({"shadow": true})"), 16, R"({"shadow": true, "azimuth": -52.5, "elevation": 30})");
+  EXPECT_EQ(body(turned), rendered(written));
+  EXPECT_NE(body(turned), body(get("/api/figure/0" + token)));
+  const std::string farther = get("/api/figure/0" + token + "&camera=-52.5,30,25");
+  ASSERT_EQ(status(farther), 200) << farther;
+  // The page is told the camera, and the panels' as drawn.
+  const auto camera = nlohmann::json::parse(body(get("/api/scenes" + token))).at(0).at("camera");
+  EXPECT_EQ(camera.at("azimuth"), 35.0);
+  EXPECT_EQ(camera.at("elevation"), 25.0);
+  EXPECT_EQ(camera.at("auto"), false);
+  EXPECT_EQ(camera.at("save"), false);
+  EXPECT_EQ(camera.at("panels").at(0).at("azimuth"), 35.0);
+  for (const auto& [query, reason] :
+       std::vector<std::pair<std::string, std::string>>{{"nan,0", "azimuth must be a finite number"},
+                                                        {"400,0", "azimuth must be within +-360"},
+                                                        {"0,-91", "elevation must be within +-90"},
+                                                        {"10", "two or three numbers"},
+                                                        {"1,2,3,4", "two or three numbers"},
+                                                        {"1,2,0", "distance must be > 0"},
+                                                        {"x,2", "is not a number"},
+                                                        {"1,,2", "is not a number"},
+                                                        {"1e999,2", "is not a number"}}) {
+    const std::string answer = get("/api/figure/0" + token + "&camera=" + query);
+    EXPECT_EQ(status(answer), 400) << query << ": " << answer;
+    EXPECT_NE(body(answer).find(reason), std::string::npos) << query << ": " << answer;
+  }
+  // A frame of the turned view: another than the scene's own camera draws.
+  const std::string frame = get("/api/figure/0" + token + "&camera=10,20&at=0.5");
+  ASSERT_EQ(status(frame), 200) << frame;
+  EXPECT_NE(body(frame), body(get("/api/figure/0" + token + "&at=0.5")));
+  EXPECT_EQ(body(frame), body(get("/api/figure/0" + token + "&at=0.5&camera=10,20")));  // the layout kept
+}
+
+TEST_F(ServiceTest, ASceneOfThePlaneHasNoCameraToTurn) {
+  const std::string token = "?token=" + settings_.token;
+  const std::string answer = get("/api/figure/0" + token + "&camera=10,20");
+  EXPECT_EQ(status(answer), 400);
+  EXPECT_NE(body(answer).find("only a 3D pose scene has a camera"), std::string::npos) << answer;
+  EXPECT_TRUE(nlohmann::json::parse(body(get("/api/scenes" + token))).at(0).at("camera").is_null());
+}
+
+// "Save view": the camera's members the file lacks are added, every other
+// byte kept; its undo gives the file back byte for byte.
+TEST_F(ServiceTest, SaveViewAddsTheCameraAndItsUndoTakesItOut) {
+  folder_.write("s.json", kSpace);
+  settings_.edit = true;
+  const std::string edit = "/api/edit/0?token=" + settings_.token;
+  const std::string answer = post(edit, R"({"changes": [{"pointer": "/camera/azimuth", "value": "-52.5"},
+                                 {"pointer": "/camera/elevation", "value": "30"}]})");
+  ASSERT_EQ(status(answer), 200) << answer;
+  std::string expected = kSpace;
+  expected.replace(expected.find(R"({"shadow": true})"), 16, R"({"shadow": true, "azimuth": -52.5, "elevation": 30})");
+  EXPECT_EQ(text_of("s.json"), expected);
+  const auto previous = nlohmann::json::parse(body(answer)).at("previous");
+  EXPECT_EQ(previous, nlohmann::json::parse(R"([{"pointer": "/camera/elevation", "remove": true},
+                                                {"pointer": "/camera/azimuth", "remove": true}])"));
+  const std::string undone = post(edit, nlohmann::json{{"changes", previous}}.dump());
+  ASSERT_EQ(status(undone), 200) << undone;
+  EXPECT_EQ(text_of("s.json"), kSpace);
+  // Beyond the limits, or another member of the camera: refused, the file as it was.
+  for (const char* bad : {R"({"changes": [{"pointer": "/camera/elevation", "value": "95"}]})",
+                          R"({"changes": [{"pointer": "/camera/shadow", "value": "false"}]})",
+                          R"({"changes": [{"pointer": "/camera/shadow", "remove": true}]})"}) {
+    EXPECT_EQ(status(post(edit, bad)), 400) << bad;
+  }
+  EXPECT_EQ(text_of("s.json"), kSpace);
+  // A scene without "camera": the member is added, at the end of the scene.
+  std::string bare = kSpace;
+  bare.replace(bare.find(",\n  \"camera\""), std::string(",\n  \"camera\": {\"shadow\": true}").size(), "");
+  folder_.write("s.json", bare);
+  service_.reset();  // the page's figure is of this file now
+  const std::string added = post(edit, R"({"changes": [{"pointer": "/camera/azimuth", "value": "10"},
+                                                        {"pointer": "/camera/elevation", "value": "20"}]})");
+  ASSERT_EQ(status(added), 200) << added;
+  const std::string with_camera = text_of("s.json");
+  EXPECT_EQ(nlohmann::json::parse(with_camera).at("camera"),
+            nlohmann::json::parse(R"({"azimuth": 10, "elevation": 20})"));
+  EXPECT_EQ(rendered(with_camera), body(get("/api/figure/0?token=" + settings_.token + "&camera=10,20")));
+  const auto back = nlohmann::json::parse(body(added)).at("previous");
+  EXPECT_EQ(status(post(edit, nlohmann::json{{"changes", back}}.dump())), 200);
+  EXPECT_EQ(text_of("s.json"), bare);
 }
 
 }  // namespace

@@ -65,6 +65,7 @@ function view(scene) {
   v.figure.addEventListener("mousemove", (e) => pointAt(scene.index, e));
   v.figure.addEventListener("wheel", (e) => zoom(scene.index, e), { passive: false });
   v.figure.addEventListener("pointerdown", (e) => pan(scene.index, e));
+  v.figure.addEventListener("pointerdown", (e) => turn(scene.index, e));  // a 3D panel (camera.js)
   // Keys, on the figure or the slider: arrows step a frame, space plays and pauses.
   const keys = (e) => {
     if (!v.timeline || e.ctrlKey || e.metaKey || e.altKey) return;
@@ -85,15 +86,18 @@ function view(scene) {
 // latest request wins, and a request it supersedes is cancelled.
 async function frame(index) {
   const v = views.get(index);
-  const extra = v.t === null ? "" : `&at=${v.t}`;
+  // The figure or the frame with the camera turned in the page (camera.js), if it is.
+  const turned = v.t === null ? turnKey(v.turned) : "";
+  const extra = (v.t === null ? "" : `&at=${v.t}`) + turnedQuery(index);
   const mine = v.frames = (v.frames || 0) + 1;  // answers can come out of order: the latest request wins
   if (v.fetching) v.fetching.abort();
   const control = v.fetching = new AbortController();
+  v.fetchingTurn = !!turned;
   const k = v.k;
-  let response, svg;
+  let response, svg, failure;
   try {
     response = await fetch(api(`/api/figure/${index}`, extra), { signal: control.signal });
-    if (response.ok) svg = await response.text();
+    if (response.ok) svg = await response.text(); else failure = await response.json().catch(() => null);
   } catch (error) {
     return;  // cancelled: a newer request took its place
   } finally {
@@ -103,6 +107,9 @@ async function frame(index) {
   v.still.style.display = v.t === null ? "none" : "";
   if (response.ok) {
     v.figure.innerHTML = scoped(svg, `s${index}-`);
+    v.svg = svg;  // as the server sent it
+    v.shownTurn = turned;
+    if (turned) v.turnShownAt = performance.now();
     v.shown = v.t === null ? "still" : "frame";
     v.shownFrame = v.t === null ? null : k;
     v.changes++;
@@ -112,7 +119,9 @@ async function frame(index) {
     if (v.t === null) drawHandles(index);
   } else {
     v.figure.classList.add("stale");
+    if (turned) turnFailed(index, failure);
   }
+  afterFrame(index);
 }
 
 // cairo names the glyphs and clips of every SVG alike (glyph0-1, clip1): in

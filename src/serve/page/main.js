@@ -36,6 +36,7 @@ async function refresh(only) {
     v.timeline = scene.timeline;
     v.handles = scene.handles || [];
     v.panels = scene.panels || [];
+    cameraState(scene.index, scene);
     if (scene.version !== v.version) {
       // Measures of the figure shown: those under the pointer follow it; the others go.
       v.report = null;

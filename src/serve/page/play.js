@@ -22,7 +22,8 @@ function seek(index, k) {
   const name = tl.what === "pattern" ? "\u03c4" : "t";
   v.time.textContent = `${name} = ${v.t.toFixed(3)}  (frame ${k + 1} of ${tl.frames})`;
   v.still.style.display = "";
-  if (v.animation !== null) {
+  // The animated SVG has the scene's own camera: a view turned in the page (camera.js) fetches its frames.
+  if (v.animation !== null && !v.turned) {
     if (v.shown !== "animation") {
       v.frames = (v.frames || 0) + 1;  // a frame still on its way is not shown
       if (v.fetching) v.fetching.abort();

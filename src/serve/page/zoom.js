@@ -37,7 +37,7 @@ function svgPoint(svg, e) {
 function zoom(index, e) {
   const v = views.get(index);
   const svg = v.figure.querySelector("svg");
-  if (!svg) return;
+  if (!svg || wheelDistance(index, e)) return;  // shift+wheel: a perspective camera's distance (camera.js)
   e.preventDefault();
   const at = svgPoint(svg, e);
   const [x, y, w, h] = v.box || canvasBox(svg);
@@ -53,6 +53,7 @@ function pan(index, down) {
   const v = views.get(index);
   const svg = v.figure.querySelector("svg");
   if (!svg || !v.box || down.button !== 0 || down.target.classList.contains("handle")) return;
+  if (turnsAt(index, down)) return;  // a drag on a 3D panel turns it (camera.js); shift+drag pans
   down.preventDefault();
   const inverse = svg.getScreenCTM().inverse();
   const start = new DOMPoint(down.clientX, down.clientY).matrixTransform(inverse);
