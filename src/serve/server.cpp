@@ -289,6 +289,33 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
   }
 }
 
+// POST /api/preview/N: the figure with a drag made in memory (nothing is
+// written), in the views the page holds while it edits; the page shows it
+// while the button is held. A drag the edit would refuse answers why, as an
+// edit's refusal does, and is not logged (the release's edit is).
+void post_preview(Site& site, const httplib::Request& req, httplib::Response& res) {
+  if (!site.settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) return send_error(res, 404, "no such scene");
+  Json request;
+  try {
+    request = Json::parse(req.body);
+  } catch (const std::exception&) {
+    return send_error(res, 400, "the request is not JSON");
+  }
+  try {
+    const auto answer = site.state.preview(*i, request);
+    if (!answer) return send_error(res, 409, "the scene has no good figure yet: see its error");
+    send_json(res, 200, *answer);
+  } catch (const nlohmann::json::exception& e) {
+    send_error(res, 400, std::string("the request lacks a field: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    send_error(res, 400, e.what());
+  } catch (...) {
+    send_failure(res, site.settings.scenes[*i].string(), "refused");
+  }
+}
+
 // The routes (server.hpp lists them): nothing else is served.
 enum class Verb { get, post };
 struct Route {
@@ -305,6 +332,7 @@ constexpr std::array kRoutes{
     Route{Verb::get, R"(/api/export/(\d+))", get_export},
     Route{Verb::get, "/api/events", get_events},
     Route{Verb::post, R"(/api/edit/(\d+))", post_edit},
+    Route{Verb::post, R"(/api/preview/(\d+))", post_preview},
 };
 
 // The HTTP server's limits, its token check and its routes.

@@ -7,7 +7,9 @@
 // the fixed routes below are served (no file is served by its path).
 //
 //   GET /?token=T                      the page (src/serve/page/)
-//   GET /api/scenes?token=T            every scene: name, title, version, error, time range
+//   GET /api/scenes?token=T            every scene: name, title, version, error, time range, the
+//                                      timeline's keys ("keys"); with --edit, the handles and
+//                                      each panel's world view ("views")
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
 //   GET /api/measures/N?token=T        scene N's `pita measure --format json`
 //   GET /api/animation/N?token=T       scene N's animated SVG (`pita animate -o OUT.svg`'s), made
@@ -18,8 +20,14 @@
 //   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
 //   POST /api/edit/N?token=T           with --edit: a drag of a handle ({"drag": {"panel", "pointer",
 //                                      "part", "to": [x, y]}}) or changes ({"changes": [{"pointer",
-//                                      "value"}]}) written into scene N's file (scene_edit.hpp);
+//                                      "value"}]}, undo and redo),
+//                                      or a time moved on the timeline ({"time": {"pointer", "t",
+//                                      "step"}}) written into scene N's file (edit_request.hpp);
+//                                      a drag may give the "views" the page holds;
 //                                      answers {"previous": [...]}, the changes that undo it
+//   POST /api/preview/N?token=T        with --edit: {"drag": ..., "views": [...]} (both optional)
+//                                      made in memory, nothing written: {"version", "svg",
+//                                      "handles"} of the figure in those views, or why refused
 #pragma once
 
 #include <filesystem>

@@ -35,6 +35,10 @@ async function refresh(only) {
     v.error.classList.toggle("shown", !!scene.error);
     v.timeline = scene.timeline;
     v.handles = scene.handles || [];
+    v.sceneViews = scene.views || null;  // each panel's world view, which edits hold (edit.js)
+    v.editing = !!scene.views;
+    v.keys = scene.keys || [];
+    drawTimeline(scene.index);
     v.panels = scene.panels || [];
     if (scene.version !== v.version) {
       // Measures of the figure shown: those under the pointer follow it; the others go.
