@@ -55,11 +55,13 @@ std::optional<std::size_t> scene_index(const std::string& text, std::size_t coun
   return i < count ? std::optional<std::size_t>(i) : std::nullopt;
 }
 
-// A body of JSON text as it is (pita measure's report).
+// A body of JSON text as it is (pita measure's report). With the charset:
+// cpp-httplib compresses a bare application/json with brotli at its slowest
+// setting when the browser accepts it (150 ms of a preview's 67 kB, made in 6).
 void send_json_text(httplib::Response& res, int status, const std::string& text) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
-  res.set_content(text, "application/json");
+  res.set_content(text, "application/json; charset=utf-8");
 }
 
 // Text that is not UTF-8 (a scene saved as Latin-1, quoted in a message) is

@@ -111,8 +111,8 @@ async function preview(index, drag) {
       decorate(index);
       drawHandles(index, answer.handles);
       v.refused.classList.remove("shown");
-      // Pointer move to figure shown, in ms (the browser test reads them).
-      (window.pitaPreviewLatencies = window.pitaPreviewLatencies || []).push(performance.now() - movedAt);
+      // Pointer move to the figure on screen (the next frame drawn), in ms: the browser test prints them.
+      requestAnimationFrame(() => (window.pitaPreviewLatencies = window.pitaPreviewLatencies || []).push(performance.now() - movedAt));
     } else {
       // Refused: the reason over the figure, which does not move.
       v.refused.textContent = answer.refused ? `refused: ${describe(answer.refused)}` : `refused: ${answer.error}`;
@@ -190,6 +190,7 @@ async function sendEdit(index, request, kind) {
 // Undo and redo put back the text each edit replaced: byte for byte.
 async function undo(index) {
   const v = views.get(index);
+  await v.queue;  // an edit on its way is undone once its answer has come
   const last = v.undo.pop();
   if (!last) return;
   if (!(await edit(index, { changes: last }, "undo"))) v.undo.push(last);
@@ -198,6 +199,7 @@ async function undo(index) {
 
 async function redo(index) {
   const v = views.get(index);
+  await v.queue;  // an edit on its way is redone once its answer has come
   const last = v.redo.pop();
   if (!last) return;
   if (!(await edit(index, { changes: last }, "redo"))) v.redo.push(last);

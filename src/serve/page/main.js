@@ -38,7 +38,9 @@ async function refresh(only) {
     v.sceneViews = scene.views || null;  // each panel's world view, which edits hold (edit.js)
     v.editing = !!scene.views;
     v.keys = scene.keys || [];
-    drawTimeline(scene.index);
+    // Drawn again only when the times change, and not under a marker being dragged.
+    const keysText = JSON.stringify(v.keys) + v.editing;
+    if (keysText !== v.keysText && !v.markerDrag) { v.keysText = keysText; drawTimeline(scene.index); }
     v.panels = scene.panels || [];
     if (scene.version !== v.version) {
       // Measures of the figure shown: those under the pointer follow it; the others go.

@@ -50,11 +50,13 @@ function marker(index, track, range, key, k) {
     const box = track.getBoundingClientRect();
     const timeAt = (e) => range.lo + (range.hi - range.lo) * Math.min(1, Math.max(0, (e.clientX - box.left) / box.width));
     let t = key.t, moved = false;
+    v.markerDrag = true;
     const move = (e) => { t = timeAt(e); moved = true; place(t); m.classList.add("dragging"); };
     const up = async () => {
       m.removeEventListener("pointermove", move);
       m.removeEventListener("pointerup", up);
       m.classList.remove("dragging");
+      v.markerDrag = false;
       if (!moved) return;
       // Written to what a pixel of the strip resolves.
       const step = (range.hi - range.lo) / Math.max(box.width, 1);
