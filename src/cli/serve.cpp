@@ -81,7 +81,8 @@ the server. Only the scenes named are served. Ctrl-C stops it.
 With --edit, the tails and tips of the keyframe arrows and the corners of the poses can be dragged
 in the page; each drag is written into the scene file (atomically; the rest of the file, its
 order, spacing and numbers, as it was), unless it would make the scene bad: then the page shows
-why and the file stays. The page keeps an undo list.
+why and the file stays. The timeline's markers move the keyframes' times the same way.
+Ctrl+Z undoes an edit and Ctrl+Shift+Z redoes it, byte for byte.
 
 Examples:
   pita serve scenes/fig01-eight-pitas.json
