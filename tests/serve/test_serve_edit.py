@@ -206,6 +206,37 @@ def test_arrow_keys_nudge_the_selected_handle(folder, browser):
         served.stop()
 
 
+def test_a_refused_drag_says_why_while_held(folder, browser):
+    """A drag the scene would refuse (a tip dropped on its tail: a magnitude of 0) says why while the
+    button is held, over a figure that does not move; on release the file stays as it was."""
+    served = serve_fig03(folder, browser)
+    try:
+        tip = "#scene-0 circle.handle.tip[data-pointer='/keyframes/0']"
+        tail = "#scene-0 circle.handle.tail[data-pointer='/keyframes/0']"
+        eventually(lambda: centre(browser, tip) is not None, 30)
+        before = browser.evaluate(f"{FIGURE}.outerHTML")
+        top = browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top")
+        (x, y), (tx, ty) = centre(browser, tip), centre(browser, tail)
+        mouse(browser, "mouseMoved", x, y)
+        mouse(browser, "mousePressed", x, y)
+        for k in range(1, 6):
+            mouse(browser, "mouseMoved", x + (tx - x) * k / 5, y + (ty - y) * k / 5, held=True)
+        refused = eventually(lambda: browser.evaluate(
+            "document.querySelector('#scene-0 .refused.shown') && document.querySelector('#scene-0 .refused').textContent"),
+            30, what="the refusal shown while the button is held")
+        check("/keyframes/0/m" in refused and "magnitude" in refused, f"the reason: {refused}")
+        check(browser.evaluate("document.querySelector('#scene-0 .figure').getBoundingClientRect().top") == top,
+              "the banner does not move the figure")
+        # The last figure shown is a good one: the previews before the tail was reached, or the first.
+        check(browser.evaluate(f"{FIGURE}.outerHTML") != "" and (folder / "s.json").read_text() == FIG03, "nothing written")
+        mouse(browser, "mouseReleased", tx, ty)
+        eventually(lambda: "edit refused: /keyframes/0/m" in served.stderr(), 30, what=lambda: served.stderr())
+        check((folder / "s.json").read_text() == FIG03, "a refused drag leaves the file")
+        check(before != "", "a figure was shown")
+    finally:
+        served.stop()
+
+
 def marker(pointer):
     return f"#scene-0 .timeline .marker[data-pointer='{pointer}']"
 
@@ -288,7 +319,7 @@ def main():
     browser = Browser()
     try:
         for test in (test_a_drag_is_seen_live_and_undone_from_the_keyboard, test_arrow_keys_nudge_the_selected_handle,
-                     test_the_timeline_edits_times):
+                     test_a_refused_drag_says_why_while_held, test_the_timeline_edits_times):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()
