@@ -185,6 +185,11 @@ def edit_seeds(out):
         (3, {"changes": [{"pointer": "/camera/azimuth", "value": "30"},
                          {"pointer": "/camera/elevation", "value": "-20.5"}, {"pointer": "/camera/auto", "value": "false"}]}),
         (0, {"changes": [{"pointer": "/camera", "remove": True}, {"pointer": "/camera", "value": "{\"azimuth\": 10}"}]}),
+        # A time moved on the timeline, one past its neighbour, and a drag in views the page holds.
+        (0, {"time": {"pointer": "/keyframes/1", "t": 1.25, "step": 0.01}}),
+        (2, {"time": {"pointer": "/poses/0", "t": 2, "step": 0.5}}),
+        (0, {"drag": {"panel": 0, "pointer": "/keyframes/1", "part": "tail", "to": [200, 150]},
+             "views": [[-1, -1, 10, 4]]}),
     ]
     for i, (scene, body) in enumerate(bodies):
         (folder / f"edit-{i:02d}.bin").write_bytes(bytes([scene]) + json.dumps(body).encode())

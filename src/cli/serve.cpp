@@ -81,8 +81,9 @@ the server. Only the scenes named are served. Ctrl-C stops it.
 With --edit, the tails and tips of the keyframe arrows and the corners of the poses can be dragged
 in the page; each drag is written into the scene file (atomically; the rest of the file, its
 order, spacing and numbers, as it was), unless it would make the scene bad: then the page shows
-why and the file stays. The page keeps an undo list. A drag on a 3D scene's figure turns its
-camera (in the page only; with --edit, "Save view" writes it into the file).
+why and the file stays. The timeline's markers move the keyframes' times the same way.
+Ctrl+Z undoes an edit and Ctrl+Shift+Z redoes it, byte for byte. A drag on a 3D scene's
+figure turns its camera (in the page only; with --edit, "Save view" writes it into the file).
 
 Examples:
   pita serve scenes/fig01-eight-pitas.json

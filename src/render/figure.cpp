@@ -172,8 +172,10 @@ void check_images(const scene::Scene& scene) {
   }
 }
 
-std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings) {
-  std::vector<PanelPlacement> placements = layout_panels(scene, drawings);
+std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings,
+                                           const std::vector<scene::Box>* views) {
+  std::vector<PanelPlacement> placements =
+      views != nullptr ? layout_in_views(scene, drawings, *views) : layout_panels(scene, drawings);
   for (std::size_t i = 0; i < placements.size(); ++i) {
     if (!finite_transform(placements[i].transform)) {
       throw RenderError(scene.path, scene.panels[i].pointer,
@@ -185,7 +187,8 @@ std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std:
 
 namespace {
 
-Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, double budget) {
+Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, double budget,
+                    const std::vector<scene::Box>* views = nullptr) {
   Figure figure;
   if (scene.panels.empty()) throw RenderError(scene.path, "/panels", "a figure needs a panel");
   check_images(scene);
@@ -210,7 +213,7 @@ Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, doubl
       }
     }
   }
-  figure.placements = checked_layout(scene, figure.drawings);
+  figure.placements = checked_layout(scene, figure.drawings, views);
   place_labels(scene, figure.drawings, figure.placements);
   return figure;
 }
@@ -220,6 +223,10 @@ Figure built_figure(const scene::Scene& scene, const motion::Stage* stage, doubl
 Figure build_figure(const scene::Scene& scene, double budget) { return built_figure(scene, nullptr, budget); }
 
 Figure build_figure(const motion::Stage& stage, double budget) { return built_figure(stage.scene(), &stage, budget); }
+
+Figure build_figure_in_views(const motion::Stage& stage, const std::vector<scene::Box>& views, double budget) {
+  return built_figure(stage.scene(), &stage, budget, &views);
+}
 
 std::pair<int, int> checked_png_size(const scene::Scene& scene, const Figure& figure, double scale, double budget) {
   const double width = scene.canvas.width, height = scene.canvas.height;

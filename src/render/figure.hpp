@@ -44,6 +44,9 @@ Figure build_figure(const scene::Scene& scene, double budget = 1.0);
 // The same with the motions of a stage built already (pita sweep checks
 // them first).
 Figure build_figure(const motion::Stage& stage, double budget = 1.0);
+// The same in the world views given, one per panel (layout_in_views): what
+// pita serve --edit draws while a figure's views are held.
+Figure build_figure_in_views(const motion::Stage& stage, const std::vector<scene::Box>& views, double budget = 1.0);
 
 // Every panel's drawing, without layout or budget; with a selection, one
 // frame of an animation (render/panel_drawing.hpp). Throws RenderError. The
@@ -59,7 +62,9 @@ std::vector<Drawing> frame_drawings(const motion::Stage& stage, const FrameSelec
 void check_images(const scene::Scene& scene);
 
 // layout_panels, refusing placements that overflow. Throws RenderError.
-std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings);
+// With `views`, in those (layout_in_views).
+std::vector<PanelPlacement> checked_layout(const scene::Scene& scene, const std::vector<Drawing>& drawings,
+                                           const std::vector<scene::Box>* views = nullptr);
 
 // Which part of a figure paint_figure paints: all of it; an animation's
 // backdrop (the background, the titles and the first `leading[i]` items of

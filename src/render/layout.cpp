@@ -122,4 +122,14 @@ std::vector<PanelPlacement> layout_panels(const scene::Scene& scene, const std::
   return placements;
 }
 
+std::vector<PanelPlacement> layout_in_views(const scene::Scene& scene, const std::vector<Drawing>& drawings,
+                                            const std::vector<scene::Box>& views) {
+  std::vector<PanelPlacement> placements = layout_panels(scene, drawings);
+  for (std::size_t i = 0; i < placements.size() && i < views.size(); ++i) {
+    placements[i].view = views[i];
+    placements[i].transform = fit(views[i], placements[i].plot, scene.canvas.y_up);
+  }
+  return placements;
+}
+
 }  // namespace pita::render

@@ -57,4 +57,12 @@ struct PanelPlacement {
 // or given view, every panel leaves the room of the most, to keep one scale).
 std::vector<PanelPlacement> layout_panels(const scene::Scene& scene, const std::vector<Drawing>& drawings);
 
+// layout_panels with each panel's world view given (views[i] for panel i, one
+// per drawing, each side positive): the cells and plot areas are
+// layout_panels', each view is fitted into its plot area in place of the
+// drawing's bounds. pita serve --edit holds a figure's views while it is
+// edited, so that what is dragged stays under the pointer.
+std::vector<PanelPlacement> layout_in_views(const scene::Scene& scene, const std::vector<Drawing>& drawings,
+                                            const std::vector<scene::Box>& views);
+
 }  // namespace pita::render

@@ -20,6 +20,7 @@
 #include "scene/json_text.hpp"
 #include "scene/limits.hpp"
 #include "scene/located_error.hpp"
+#include "serve/edit_request.hpp"
 #include "serve/json_edit.hpp"
 #include "serve/scene_edit.hpp"
 
@@ -31,6 +32,28 @@ std::string digest_of(const std::string& text) {
   Fnv1a hash;
   hash.add(text);
   return fmt::format("{:016x}", hash.value());
+}
+
+Json handles_json(const std::vector<Handle>& all) {
+  Json out = Json::array();
+  for (const Handle& handle : all) {
+    out.push_back({{"panel", handle.panel},
+                   {"pointer", handle.pointer},
+                   {"part", handle.part},
+                   {"at", {handle.at.real(), handle.at.imag()}}});
+  }
+  return out;
+}
+
+// The timeline's rows: each keyframe's, point's or pose's time, by where the keys are given.
+Json key_rows_json(const std::vector<KeyRow>& rows) {
+  Json out = Json::array();
+  for (const KeyRow& row : rows) {
+    Json times = Json::array();
+    for (const KeyTime& time : row.times) times.push_back({{"pointer", time.pointer}, {"t", time.t}});
+    out.push_back({{"keys", row.keys}, {"panels", row.panels}, {"times", times}});
+  }
+  return out;
 }
 
 }  // namespace
@@ -181,13 +204,15 @@ Json LiveScenes::scenes_json() {
       entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
     }
     if (settings_.edit && state.scene) {
-      for (const Handle& handle : handles(state.text, *state.scene, state.placements)) {
-        entry["handles"].push_back({{"panel", handle.panel},
-                                    {"pointer", handle.pointer},
-                                    {"part", handle.part},
-                                    {"at", {handle.at.real(), handle.at.imag()}}});
+      entry["handles"] = handles_json(handles(state.text, *state.scene, state.placements));
+      // The world view of each panel: the page holds them while it edits (edit_request.hpp).
+      entry["views"] = Json::array();
+      for (const render::PanelPlacement& placement : state.placements) {
+        const scene::Box& b = placement.view;
+        entry["views"].push_back({b.min.real(), b.min.imag(), b.max.real(), b.max.imag()});
       }
     }
+    if (state.scene) entry["keys"] = key_rows_json(key_rows(state.text, *state.scene));
     if (state.scene) {
       try {
         const animate::Timeline timeline = animate::make_timeline(*state.scene);
@@ -382,59 +407,17 @@ Json LiveScenes::edit(std::size_t i, const Json& request) {
   const std::lock_guard<std::mutex> one_at_a_time(edit_mutex_);
   const fs::path path = scenes_[i]->path;
   const std::string text = scene::read_input_file(path, scene::kMaxSceneFileBytes, "scene file");
-  std::vector<Change> changes;
-  if (request.contains("drag")) {
-    const Json& d = request.at("drag");
-    // Where the page drew the handle is where the figure it showed put it.
-    if (d.contains("version")) {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      if (d.at("version").get<std::uint64_t>() != scenes_[i]->version) {
-        throw std::invalid_argument("the figure changed while dragging: drag again");
-      }
-    }
-    const scene::Scene scene = scene::parse_scene(text, path.string(), read_options());
-    const motion::Stage stage(scene);
-    const render::Figure figure = render::build_figure(stage);
-    // An index of the figure's panels: 1e20 or -1 would be read as another panel.
-    const Json& panel = d.at("panel");
-    if (!panel.is_number_unsigned() || panel.get<std::uint64_t>() >= figure.placements.size()) {
-      throw std::invalid_argument(fmt::format("\"panel\" must be the index of a panel of the figure, 0 to {} (got {})",
-                                              figure.placements.size() - 1,
-                                              panel.dump(-1, ' ', false, Json::error_handler_t::replace)));
-    }
-    changes =
-        drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
-             d.at("part").get<std::string>(), Point{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()});
-  } else {
-    for (const Json& change : request.at("changes")) {
-      const bool remove = change.contains("remove") && change.at("remove").get<bool>();
-      changes.push_back(
-          {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
-      check_change(text, changes.back());
+  // Where the page drew the handle is where the figure it showed put it.
+  if (request.contains("drag") && request.at("drag").contains("version")) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (request.at("drag").at("version").get<std::uint64_t>() != scenes_[i]->version) {
+      throw std::invalid_argument("the figure changed while dragging: drag again");
     }
   }
-  std::string edited = text;
-  Json previous = Json::array();
-  for (const Change& change : changes) {
-    Json back;
-    if (change.remove) {
-      const TextSpan span = value_span(edited, change.pointer);
-      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
-      edited = remove_member(edited, change.pointer);
-    } else if (is_camera_pointer(change.pointer)) {
-      // "Save view": added where the file has no such member yet.
-      Undo undo;
-      edited = set_value(edited, change.pointer, change.value, &undo);
-      back = undo.value ? Json{{"pointer", undo.pointer}, {"value", *undo.value}}
-                        : Json{{"pointer", undo.pointer}, {"remove", true}};
-    } else {
-      const TextSpan span = value_span(edited, change.pointer);
-      back = {{"pointer", change.pointer}, {"value", edited.substr(span.begin, span.end - span.begin)}};
-      edited = replace_value(edited, change.pointer, change.value);
-    }
-    // Last change first: its undo removes what it added before an earlier one's removes the object it went into.
-    previous.insert(previous.begin(), back);
-  }
+  const scene::Scene scene = scene::parse_scene(text, path.string(), read_options());
+  const Applied applied = apply_changes(text, request_changes(text, scene, request));
+  const std::string& edited = applied.text;
+  const Json& previous = applied.previous;
   // Refused unless the result is a scene pita draws.
   const scene::Scene checked = scene::parse_scene(edited, path.string(), read_options());
   const motion::Stage stage(checked);
@@ -450,6 +433,32 @@ Json LiveScenes::edit(std::size_t i, const Json& request) {
   }
   fs::permissions(target, permissions);
   return Json{{"previous", previous}};
+}
+
+std::optional<Json> LiveScenes::preview(std::size_t i, const Json& request) {
+  std::shared_ptr<const scene::Scene> shown;
+  std::string text;
+  std::uint64_t version = 0;
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (!scenes_[i]->scene) return std::nullopt;
+    shown = scenes_[i]->scene;
+    text = scenes_[i]->text;
+    version = scenes_[i]->version;
+  }
+  const auto views = views_of(request, shown->panels.size());
+  // The drag made in the text of the figure shown, in memory: nothing is written.
+  std::optional<scene::Scene> edited;
+  if (request.contains("drag")) {
+    text = apply_changes(text, request_changes(text, *shown, request)).text;
+    edited = scene::parse_scene(text, shown->path, read_options());
+  }
+  const scene::Scene& scene = edited ? *edited : *shown;
+  const motion::Stage stage(scene);
+  const render::Figure figure = figure_in(stage, views);
+  return Json{{"version", version},
+              {"svg", render::render_figure(scene, figure, render::Format::svg)},
+              {"handles", handles_json(handles(text, scene, figure.placements))}};
 }
 
 void LiveScenes::stop() {

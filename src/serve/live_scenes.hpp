@@ -129,11 +129,18 @@ class LiveScenes {
   // Waits (at most `wait`) for a render newer than `seen`; the versions now.
   std::vector<std::uint64_t> versions_after(const std::vector<std::uint64_t>& seen, std::chrono::milliseconds wait);
 
-  // Applies an edit to scene i's file: checks the result as a scene (and
+  // Applies an edit (edit_request.hpp: a drag, a time, changes) to scene i's file: checks the result as a scene (and
   // draws it) before writing it atomically. Returns the changes that undo
   // it; throws what reading or drawing the result throws, and
   // std::invalid_argument for a request that names no handle or value.
   Json edit(std::size_t i, const Json& request);
+
+  // The figure of the last good state of scene i, drawn in the request's
+  // "views" when given (edit_request.hpp), with its "drag" made in memory
+  // when given (nothing is written): {"version", "svg", "handles"}, the
+  // handles where that figure draws them; nullopt without a good state.
+  // Throws as edit does for a drag it would refuse.
+  std::optional<Json> preview(std::size_t i, const Json& request);
 
   // The digest of scene i's file as it is now (FNV-1a, hexadecimal), "" when it cannot be read;
   // scenes_json gives each good state's as "digest".

@@ -61,9 +61,9 @@ std::array<Point, 3> corners(const scene::Scene& scene, const scene::PlanePoseKe
 void check_change(const std::string& text, const Change& change) {
   if (is_camera_pointer(change.pointer)) return check_camera_change(change);
   if (change.remove) throw std::invalid_argument("\"" + change.pointer + "\" is not a member an edit may remove");
-  // /keyframes/K/(p|q|m|w), /poses/K/(triangle/J|matrix), or the same under /panels/N.
+  // /keyframes/K/(p|q|m|w|t), /poses/K/(triangle/J|matrix|t), /points/K/t, or the same under /panels/N.
   static const std::regex editable(
-      R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w)|poses/[0-9]+/(triangle/[0-2]|matrix(/[01]/[0-2])?))$)");
+      R"(^(/panels/[0-9]+)?/(keyframes/[0-9]+/(p|q|m|w|t)|poses/[0-9]+/(t|triangle/[0-2]|matrix(/[01]/[0-2])?)|points/[0-9]+/t)$)");
   if (!std::regex_match(change.pointer, editable)) {
     throw std::invalid_argument("\"" + change.pointer + "\" is not a value a drag writes");
   }
@@ -74,6 +74,41 @@ void check_change(const std::string& text, const Change& change) {
     throw std::invalid_argument("the value for " + change.pointer + " is not one JSON value");
   }
   value_span(text, change.pointer);  // and it is there to be replaced
+}
+
+std::vector<KeyRow> key_rows(const std::string& text, const scene::Scene& scene) {
+  std::vector<KeyRow> rows;
+  for (std::size_t i = 0; i < scene.panels.size(); ++i) {
+    const scene::Panel& panel = scene.panels[i];
+    const std::string keys = keys_pointer(text, scene, panel);
+    const auto same = std::find_if(rows.begin(), rows.end(), [&](const KeyRow& row) { return row.keys == keys; });
+    if (same != rows.end()) {
+      same->panels.push_back(i);
+      continue;
+    }
+    KeyRow row{keys, {i}, {}};
+    const auto add = [&](const auto& items) {
+      for (std::size_t k = 0; k < items.size(); ++k) row.times.push_back({fmt::format("{}/{}", keys, k), items[k].t});
+    };
+    std::visit(overloaded{[&](const scene::KeyframeKeys& given) { add(given.keyframes); },
+                          [&](const scene::PointKeys& given) { add(given.points); },
+                          [&](const scene::PlanePoseKeys& given) { add(given.poses); },
+                          [&](const scene::SpacePoseKeys& given) { add(given.poses); }},
+               panel.keys);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+Change time_change(const std::string& text, const scene::Scene& scene, const std::string& pointer, double t,
+                   double step) {
+  if (!std::isfinite(t)) throw std::invalid_argument("the time must be a finite number");
+  for (const KeyRow& row : key_rows(text, scene)) {
+    for (const KeyTime& time : row.times) {
+      if (time.pointer == pointer) return {pointer + "/t", rounded_json(t, step)};
+    }
+  }
+  throw std::invalid_argument(fmt::format("\"{}\" is not a keyframe, point or pose of the timeline", pointer));
 }
 
 std::string number_json(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }

@@ -52,12 +52,35 @@ std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
                          const std::string& pointer, const std::string& part, Point to);
 
 // A change as the page may send it: the pointer names a value a handle
-// writes (p, q, m, w, a triangle's point, a matrix) of a keyframe or pose, and
-// the value is one JSON value; or it is what "Save view" writes (camera_edit.hpp:
+// writes (p, q, m, w, a triangle's point, a matrix) of a keyframe or pose, or
+// the time "t" of a keyframe, point or pose the timeline moves, and the value
+// is one JSON value; or it is what "Save view" writes (camera_edit.hpp:
 // /camera/azimuth, elevation, distance or auto, within the reader's limits),
 // or the undo of it (the camera's object, or one of those removed). Throws
 // std::invalid_argument otherwise.
 void check_change(const std::string& text, const Change& change);
+
+// The times the timeline shows: each keyframe's, point's or pose's "t", by
+// where the keys are given (the scene's "/keyframes", or a panel's own
+// "/panels/1/poses"), with the panels that draw them.
+struct KeyTime {
+  std::string pointer;  // the keyframe, point or pose: "/keyframes/1"
+  double t = 0.0;
+};
+struct KeyRow {
+  std::string keys;                 // "/keyframes", "/panels/1/poses"
+  std::vector<std::size_t> panels;  // the panels that draw these keys
+  std::vector<KeyTime> times;       // in the file's order
+};
+std::vector<KeyRow> key_rows(const std::string& text, const scene::Scene& scene);
+
+// Moving the time of `pointer` (one of key_rows') to `t`, rounded to the
+// decimals that resolve `step` (what the timeline resolves: a pixel of it).
+// Whether the times still increase is the scene's own check, when the
+// edited text is read. Throws std::invalid_argument for another pointer or
+// a t that is not finite.
+Change time_change(const std::string& text, const scene::Scene& scene, const std::string& pointer, double t,
+                   double step);
 
 // A number as the edits write it: the shortest text that reads back to it.
 std::string number_json(double x);

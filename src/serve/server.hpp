@@ -7,7 +7,9 @@
 // the fixed routes below are served (no file is served by its path).
 //
 //   GET /?token=T                      the page (src/serve/page/)
-//   GET /api/scenes?token=T            every scene: name, title, version, error, time range
+//   GET /api/scenes?token=T            every scene: name, title, version, error, time range, the
+//                                      timeline's keys ("keys"); with --edit, the handles and
+//                                      each panel's world view ("views")
 //   GET /api/figure/N?token=T[&at=t]   scene N's SVG (its animation's frame at t)
 //   GET /api/figure/N?token=T&camera=AZ,EL[,DIST]  a 3D scene's figure with its camera turned
 //                                      (camera_edit.hpp); 400 with the reason for a bad camera
@@ -20,9 +22,15 @@
 //   GET /api/events?token=T            server-sent events: {"scene": N, "version": V} per render
 //   POST /api/edit/N?token=T           with --edit: a drag of a handle ({"drag": {"panel", "pointer",
 //                                      "part", "to": [x, y]}}) or changes ({"changes": [{"pointer",
-//                                      "value"}]}; "Save view": /camera/... values, added when missing,
-//                                      or {"pointer", "remove": true}) written into scene N's file
-//                                      (scene_edit.hpp); answers {"previous": [...]}, the changes that undo it
+//                                      "value"}]}, undo and redo; "Save view": /camera/... values,
+//                                      added when missing, or {"pointer", "remove": true}), or a
+//                                      time moved on the timeline ({"time": {"pointer", "t",
+//                                      "step"}}) written into scene N's file (edit_request.hpp);
+//                                      a drag may give the "views" the page holds;
+//                                      answers {"previous": [...]}, the changes that undo it
+//   POST /api/preview/N?token=T        with --edit: {"drag": ..., "views": [...]} (both optional)
+//                                      made in memory, nothing written: {"version", "svg",
+//                                      "handles"} of the figure in those views, or why refused
 #pragma once
 
 #include <filesystem>

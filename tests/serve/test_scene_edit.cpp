@@ -141,9 +141,12 @@ TEST(SceneEdit, APanelWithPosesOfItsOwnEditsThem) {
 TEST(SceneEdit, OnlyTheValuesADragWritesMayBeSentBack) {
   check_change(kArrows, {"/keyframes/0/p", "[1, 2]"});
   check_change(kArrows, {"/keyframes/2/w", "3.5"});
+  check_change(kArrows, {"/keyframes/1/t", "0.75"});  // the timeline's
   for (const Change& bad : std::vector<Change>{{"", "{}"},
                                                {"/method", "\"P1\""},
-                                               {"/keyframes/0/t", "5"},
+                                               {"/keyframes/0/turns", "5"},
+                                               {"/keyframes/0/t/x", "5"},
+                                               {"/canvas/t", "5"},
                                                {"/keyframes/0/p", "[1, 2], \"x\": 1"},
                                                {"/keyframes/0/q", "[1, 2]"},
                                                {"/keyframes/9/p", "[1, 2]"}}) {
@@ -229,6 +232,37 @@ TEST(SceneEdit, NumbersAreWrittenShortAndExact) {
   EXPECT_EQ(number_json(3.0), "3");
   EXPECT_EQ(number_json(-0.0), "0");
   EXPECT_EQ(std::stod(number_json(0.1 + 0.2)), 0.1 + 0.2);
+}
+
+// The timeline's rows: the scene's keys and each panel's own, every time
+// with the pointer a marker's drag edits.
+TEST(SceneEdit, TheTimelineShowsEachKeysTimeByWhereItIsGiven) {
+  const std::string text = R"({"method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0], [0, 1, 0]]}, {"t": 1, "matrix": [[2, 0, 1], [0, 2, 0]]}],
+    "panels": [{}, {"poses": [{"t": 0.5, "triangle": [[0, 0], [1, 0], [0, 1]]},
+                              {"t": 2, "triangle": [[3, 0], [4, 0], [3, 1]]}]}, {}]})";
+  const Drawn d = draw(text);
+  const std::vector<KeyRow> rows = key_rows(text, d.scene);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].keys, "/poses");
+  EXPECT_EQ(rows[0].panels, (std::vector<std::size_t>{0, 2}));
+  ASSERT_EQ(rows[1].times.size(), 2u);
+  EXPECT_EQ(rows[1].keys, "/panels/1/poses");
+  EXPECT_EQ(rows[1].times[1].pointer, "/panels/1/poses/1");
+  EXPECT_EQ(rows[1].times[1].t, 2.0);
+  const std::vector<KeyRow> arrows = key_rows(kArrows, draw(kArrows).scene);
+  ASSERT_EQ(arrows.size(), 1u);
+  EXPECT_EQ(arrows[0].times.size(), 3u);
+}
+
+TEST(SceneEdit, AMovedTimeIsRoundedToWhatTheTimelineResolves) {
+  const Drawn d = draw(kArrows);
+  const Change change = time_change(kArrows, d.scene, "/keyframes/1", 0.7512345, 0.004);
+  EXPECT_EQ(change.pointer, "/keyframes/1/t");
+  EXPECT_EQ(change.value, "0.751");
+  EXPECT_THROW(time_change(kArrows, d.scene, "/keyframes/7", 0.5, 0.01), std::invalid_argument);
+  EXPECT_THROW(time_change(kArrows, d.scene, "/method", 0.5, 0.01), std::invalid_argument);
+  EXPECT_THROW(time_change(kArrows, d.scene, "/keyframes/1", std::nan(""), 0.01), std::invalid_argument);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // src/serve/http_front.cpp and server.cpp): the bounds come before the token,
 // the token before the routes. The sockets, the slow clients and the signals are tested on the
 // program itself (tests/serve/test_serve_limits.py).
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -213,6 +214,78 @@ TEST_F(ServiceTest, SaveViewAddsTheCameraAndItsUndoTakesItOut) {
   const auto back = nlohmann::json::parse(body(added)).at("previous");
   EXPECT_EQ(status(post(edit, nlohmann::json{{"changes", back}}.dump())), 200);
   EXPECT_EQ(text_of("s.json"), bare);
+}
+
+// The figure while dragging: the drag made in memory, in the views the page
+// holds; nothing is written, and what an edit would refuse says why.
+TEST_F(ServiceTest, APreviewDrawsTheDragInTheViewsHeldAndWritesNothing) {
+  settings_.edit = true;
+  const std::string token = "?token=" + settings_.token;
+  const nlohmann::json scenes = nlohmann::json::parse(body(get("/api/scenes" + token)));
+  const nlohmann::json views = scenes.at(0).at("views");
+  ASSERT_EQ(views.size(), 1u);
+  const nlohmann::json handle = scenes.at(0).at("handles").at(0);
+  const nlohmann::json drag{{"panel", 0},
+                            {"pointer", handle.at("pointer")},
+                            {"part", handle.at("part")},
+                            {"to", {handle.at("at").at(0).get<double>() + 30, handle.at("at").at(1)}}};
+  const std::string still = post("/api/preview/0" + token, nlohmann::json{{"views", views}}.dump());
+  ASSERT_EQ(status(still), 200) << still;
+  const std::string dragged = post("/api/preview/0" + token, nlohmann::json{{"views", views}, {"drag", drag}}.dump());
+  ASSERT_EQ(status(dragged), 200) << dragged;
+  const nlohmann::json a = nlohmann::json::parse(body(still)), b = nlohmann::json::parse(body(dragged));
+  EXPECT_EQ(a.at("svg").get<std::string>().rfind("<?xml", 0), 0u);
+  EXPECT_NE(a.at("svg"), b.at("svg"));
+  // The dragged handle is where it was dropped, in the views held.
+  for (const auto& h : b.at("handles")) {
+    if (h.at("pointer") != handle.at("pointer") || h.at("part") != handle.at("part")) continue;
+    EXPECT_NEAR(h.at("at").at(0).get<double>(), drag.at("to").at(0).get<double>(), 0.2) << h;
+  }
+  EXPECT_EQ(text_of("s.json"), kScene);
+  // Views that are not one box per panel, or not finite, are refused with the reason.
+  const std::string bad = post("/api/preview/0" + token, R"({"views": [[0, 0, -1, 1]]})");
+  EXPECT_EQ(status(bad), 400) << bad;
+  EXPECT_NE(body(bad).find("views/0 must have positive sizes"), std::string::npos) << bad;
+  const std::string two = post("/api/preview/0" + token, R"({"views": [[0, 0, 1, 1], [0, 0, 1, 1]]})");
+  EXPECT_EQ(status(two), 400) << two;
+  // A handle the figure does not have: refused as an edit is.
+  const std::string none = post("/api/preview/0" + token,
+                                R"({"drag": {"panel": 0, "pointer": "/keyframes/9", "part": "tail", "to": [1, 1]}})");
+  EXPECT_EQ(status(none), 400) << none;
+  EXPECT_EQ(text_of("s.json"), kScene);
+}
+
+TEST_F(ServiceTest, APreviewNeedsEdit) {
+  EXPECT_EQ(status(post("/api/preview/0?token=" + settings_.token, "{}")), 403);
+  EXPECT_EQ(status(post("/api/preview/0", "{}")), 403);
+}
+
+// The timeline: each keyframe's time and pointer; a drag of its marker edits
+// "t", refused with the scene's own reason when the times would not increase.
+TEST_F(ServiceTest, ATimeEditIsWrittenOrRefusedWithTheReason) {
+  settings_.edit = true;
+  const std::string token = "?token=" + settings_.token;
+  const nlohmann::json keys = nlohmann::json::parse(body(get("/api/scenes" + token))).at(0).at("keys");
+  ASSERT_EQ(keys.size(), 1u);
+  EXPECT_EQ(keys.at(0).at("times").at(1), (nlohmann::json{{"pointer", "/keyframes/1"}, {"t", 1}}));
+  const std::string past =
+      post("/api/edit/0" + token, R"({"time": {"pointer": "/keyframes/1", "t": 2.5, "step": 0.01}})");
+  EXPECT_GE(status(past), 400) << past;
+  const nlohmann::json refused = nlohmann::json::parse(body(past)).at("refused");
+  EXPECT_EQ(refused.at("pointer"), "/keyframes/2/t") << past;
+  EXPECT_NE(refused.at("reason").get<std::string>().find("increasing"), std::string::npos) << past;
+  EXPECT_EQ(text_of("s.json"), kScene);
+  const std::string moved =
+      post("/api/edit/0" + token, R"({"time": {"pointer": "/keyframes/1", "t": 1.2345, "step": 0.01}})");
+  ASSERT_EQ(status(moved), 200) << moved;
+  std::string expected = kScene;
+  expected.replace(expected.find(R"({"t": 1,)") + 6, 1, "1.23");
+  EXPECT_EQ(text_of("s.json"), expected);
+  // Undone byte for byte with the changes it answered.
+  const nlohmann::json previous = nlohmann::json::parse(body(moved)).at("previous");
+  const std::string undone = post("/api/edit/0" + token, nlohmann::json{{"changes", previous}}.dump());
+  ASSERT_EQ(status(undone), 200) << undone;
+  EXPECT_EQ(text_of("s.json"), kScene);
 }
 
 }  // namespace

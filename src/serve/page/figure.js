@@ -9,11 +9,14 @@ function view(scene) {
   const v = { root, title: el("h2", "", root), path: el("div", "path", root), error: el("div", "error", root),
               controls: el("div", "controls", root), stage: el("div", "stage", root), t: null, k: 0, version: -1,
               playing: false, timeline: null, handles: [], undo: [], hovered: false, panel: -1, box: null,
-              animation: null, shown: null, changes: 0 };
+              animation: null, shown: null, changes: 0, held: null, sceneViews: null, selected: null, redo: [],
+              shownHandles: [], keys: [], editing: false, queue: Promise.resolve() };
   v.figure = el("div", "figure", v.stage);
   v.figure.tabIndex = 0;
   v.figure.title = "wheel: zoom; drag the background: pan; \u2190 \u2192: a frame; space: play";
   v.refused = el("div", "refused", v.stage);
+  // The keyframes' times under the figure (timeline.js).
+  v.timelineStrip = el("div", "timeline", root);
   v.caption = el("p", "caption", root);
   v.tools = el("div", "tools", root);
   v.claims = el("ul", "claims", root);
@@ -38,11 +41,16 @@ function view(scene) {
     v.slider.value = "0"; v.k = 0;
     frame(scene.index);
   });
-  // Zoom and pan: "fit" shows the whole figure again.
+  // "fit" shows the whole figure again: out of the zoom and pan, and, with
+  // --edit, refitted to its content (drags hold the view they started in).
   v.fit = el("button", "fit", v.tools);
   v.fit.textContent = "fit";
-  v.fit.title = "the whole figure (after zooming with the wheel or panning by dragging the background)";
-  v.fit.addEventListener("click", () => { v.box = null; applyBox(scene.index); });
+  v.fit.title = "the whole figure, fitted to its content (after zooming with the wheel, panning by dragging the " +
+                "background, or edits, which keep the view they started in)";
+  v.fit.addEventListener("click", () => {
+    v.box = null; applyBox(scene.index);
+    if (v.held) { v.held = null; if (v.t === null) frame(scene.index); }
+  });
   // Export: what pita render --at and pita animate write.
   const exportLink = (what, label, title) => {
     const a = el("a", `export ${what}`, v.tools);
@@ -56,8 +64,14 @@ function view(scene) {
   v.exportAnimation = exportLink("animation", "animated SVG", "the animation as pita animate -o OUT.svg writes it");
   v.undoButton = el("button", "undo", root);
   v.undoButton.textContent = "undo";
+  v.undoButton.title = "undo the last edit (Ctrl+Z)";
   v.undoButton.style.display = "none";
   v.undoButton.addEventListener("click", () => undo(scene.index));
+  v.redoButton = el("button", "redo", root);
+  v.redoButton.textContent = "redo";
+  v.redoButton.title = "redo the edit undone (Ctrl+Shift+Z or Ctrl+Y)";
+  v.redoButton.style.display = "none";
+  v.redoButton.addEventListener("click", () => redo(scene.index));
   v.slider.addEventListener("input", () => { stop(scene.index); seek(scene.index, parseInt(v.slider.value, 10)); });
   v.play.addEventListener("click", () => toggle(scene.index));
   v.figure.addEventListener("mouseenter", () => { v.hovered = true; measures(scene.index); });
@@ -66,8 +80,10 @@ function view(scene) {
   v.figure.addEventListener("wheel", (e) => zoom(scene.index, e), { passive: false });
   v.figure.addEventListener("pointerdown", (e) => pan(scene.index, e));
   v.figure.addEventListener("pointerdown", (e) => turn(scene.index, e));  // a 3D panel (camera.js)
-  // Keys, on the figure or the slider: arrows step a frame, space plays and pauses.
+  // Keys, on the figure or the slider: arrows step a frame, space plays and
+  // pauses; on the figure with a handle selected, arrows nudge it (edit.js).
   const keys = (e) => {
+    if (e.currentTarget === v.figure && nudgeKey(scene.index, e)) return;
     if (!v.timeline || e.ctrlKey || e.metaKey || e.altKey) return;
     if (e.key === "ArrowRight" || e.key === "ArrowLeft") {
       e.preventDefault(); stop(scene.index);
@@ -95,15 +111,30 @@ async function frame(index) {
   v.fetchingTurn = !!turned;
   const k = v.k;
   let response, svg, failure;
+  // While edits hold the views, the figure and its handles in those views
+  // (edit.js); a view turned in the page is drawn with its camera (camera.js).
+  const held = v.t === null && v.held && !turned ? v.held : null;
+  let handles = v.handles;
   try {
-    response = await fetch(api(`/api/figure/${index}`, extra), { signal: control.signal });
-    if (response.ok) svg = await response.text(); else failure = await response.json().catch(() => null);
+    if (held) {
+      response = await fetch(api(`/api/preview/${index}`), { method: "POST", signal: control.signal,
+                                                             body: JSON.stringify({ views: held }) });
+      const answer = await response.json();
+      if (response.ok) { svg = answer.svg; handles = answer.handles; }
+    } else {
+      response = await fetch(api(`/api/figure/${index}`, extra), { signal: control.signal });
+      if (response.ok) svg = await response.text(); else failure = await response.json().catch(() => null);
+    }
   } catch (error) {
     return;  // cancelled: a newer request took its place
   } finally {
     if (v.fetching === control) v.fetching = null;
   }
   if (mine !== v.frames) return;
+  if (held && !response.ok && response.status === 400 && v.held === held) {
+    v.held = null;  // views the figure no longer has (a panel added or removed): fitted again
+    return frame(index);
+  }
   v.still.style.display = v.t === null ? "none" : "";
   if (response.ok) {
     v.figure.innerHTML = scoped(svg, `s${index}-`);
@@ -116,7 +147,7 @@ async function frame(index) {
     v.figure.classList.remove("stale");
     v.figure.dataset.version = String(v.version);
     decorate(index);
-    if (v.t === null) drawHandles(index);
+    if (v.t === null) drawHandles(index, handles);
   } else {
     v.figure.classList.add("stale");
     if (turned) turnFailed(index, failure);

@@ -35,6 +35,16 @@ async function refresh(only) {
     v.error.classList.toggle("shown", !!scene.error);
     v.timeline = scene.timeline;
     v.handles = scene.handles || [];
+    v.sceneViews = scene.views || null;  // each panel's world view, which edits hold (edit.js)
+    v.editing = !!scene.views;
+    if (v.editing) {
+      v.figure.title = "drag a handle to edit; click one, then \u2190 \u2192 \u2191 \u2193 nudge it (Shift: ten), Escape " +
+                       "deselects; Ctrl+Z: undo, Ctrl+Shift+Z: redo; wheel: zoom; \"fit\": the whole figure refitted";
+    }
+    v.keys = scene.keys || [];
+    // Drawn again only when the times change, and not under a marker being dragged.
+    const keysText = JSON.stringify(v.keys) + v.editing;
+    if (keysText !== v.keysText && !v.markerDrag) { v.keysText = keysText; drawTimeline(scene.index); }
     v.panels = scene.panels || [];
     cameraState(scene.index, scene);
     if (scene.version !== v.version) {

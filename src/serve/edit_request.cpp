@@ -1,0 +1,115 @@
+#include "serve/edit_request.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "serve/camera_edit.hpp"
+#include "serve/json_edit.hpp"
+
+namespace pita::serve {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string shown(const Json& value) { return value.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+// One view: [xmin, ymin, xmax, ymax], finite, each side positive.
+scene::Box view_of(const Json& given, std::size_t i) {
+  const std::string where = fmt::format("views/{}", i);
+  if (!given.is_array() || given.size() != 4) {
+    throw std::invalid_argument(where + " must be [xmin, ymin, xmax, ymax] (got " + shown(given) + ")");
+  }
+  double v[4];
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (!given[k].is_number() || !std::isfinite(given[k].get<double>()) || std::abs(given[k].get<double>()) > 1e12) {
+      throw std::invalid_argument(where + " must hold finite numbers (got " + shown(given) + ")");
+    }
+    v[k] = given[k].get<double>();
+  }
+  if (!(v[2] > v[0]) || !(v[3] > v[1])) {
+    throw std::invalid_argument(where + " must have positive sizes, xmax > xmin and ymax > ymin (got " + shown(given) +
+                                ")");
+  }
+  return {{v[0], v[1]}, {v[2], v[3]}};
+}
+
+}  // namespace
+
+std::optional<std::vector<scene::Box>> views_of(const Json& request, std::size_t panels) {
+  if (!request.is_object() || !request.contains("views") || request.at("views").is_null()) return std::nullopt;
+  const Json& given = request.at("views");
+  if (!given.is_array() || given.size() != panels) {
+    throw std::invalid_argument(fmt::format("views must be one [xmin, ymin, xmax, ymax] per panel, {} of them (got {})",
+                                            panels, given.is_array() ? fmt::format("{}", given.size()) : shown(given)));
+  }
+  std::vector<scene::Box> views;
+  for (std::size_t i = 0; i < given.size(); ++i) views.push_back(view_of(given[i], i));
+  return views;
+}
+
+render::Figure figure_in(const motion::Stage& stage, const std::optional<std::vector<scene::Box>>& views) {
+  return views ? render::build_figure_in_views(stage, *views) : render::build_figure(stage);
+}
+
+std::vector<Change> request_changes(const std::string& text, const scene::Scene& scene, const Json& request) {
+  std::vector<Change> changes;
+  if (request.contains("drag")) {
+    const Json& d = request.at("drag");
+    const auto views = views_of(request, scene.panels.size());
+    const motion::Stage stage(scene);
+    const render::Figure figure = figure_in(stage, views);
+    // An index of the figure's panels: 1e20 or -1 would be read as another panel.
+    const Json& panel = d.at("panel");
+    if (!panel.is_number_unsigned() || panel.get<std::uint64_t>() >= figure.placements.size()) {
+      throw std::invalid_argument(fmt::format("\"panel\" must be the index of a panel of the figure, 0 to {} (got {})",
+                                              figure.placements.size() - 1, shown(panel)));
+    }
+    const Point to{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()};
+    if (!std::isfinite(to.real()) || !std::isfinite(to.imag())) throw std::invalid_argument("\"to\" must be finite");
+    return drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
+                d.at("part").get<std::string>(), to);
+  }
+  if (request.contains("time")) {
+    const Json& time = request.at("time");
+    const double step = time.contains("step") ? time.at("step").get<double>() : 0.0;
+    return {time_change(text, scene, time.at("pointer").get<std::string>(), time.at("t").get<double>(), step)};
+  }
+  for (const Json& change : request.at("changes")) {
+    const bool remove = change.contains("remove") && change.at("remove").get<bool>();
+    changes.push_back(
+        {change.at("pointer").get<std::string>(), remove ? "" : change.at("value").get<std::string>(), remove});
+    check_change(text, changes.back());
+  }
+  return changes;
+}
+
+Applied apply_changes(const std::string& text, const std::vector<Change>& changes) {
+  Applied applied{text};
+  for (const Change& change : changes) {
+    Json back;
+    if (change.remove) {
+      const TextSpan span = value_span(applied.text, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", applied.text.substr(span.begin, span.end - span.begin)}};
+      applied.text = remove_member(applied.text, change.pointer);
+    } else if (is_camera_pointer(change.pointer)) {
+      // "Save view": added where the file has no such member yet.
+      Undo undo;
+      applied.text = set_value(applied.text, change.pointer, change.value, &undo);
+      back = undo.value ? Json{{"pointer", undo.pointer}, {"value", *undo.value}}
+                        : Json{{"pointer", undo.pointer}, {"remove", true}};
+    } else {
+      const TextSpan span = value_span(applied.text, change.pointer);
+      back = {{"pointer", change.pointer}, {"value", applied.text.substr(span.begin, span.end - span.begin)}};
+      applied.text = replace_value(applied.text, change.pointer, change.value);
+    }
+    // Last change first: its undo removes what it added before an earlier
+    // one's removes the object it went into.
+    applied.previous.insert(applied.previous.begin(), std::move(back));
+  }
+  return applied;
+}
+
+}  // namespace pita::serve
