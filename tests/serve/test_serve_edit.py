@@ -166,8 +166,9 @@ def test_a_drag_is_seen_live_and_undone_from_the_keyboard(folder, browser, laten
                    what=lambda: f"the handle refitted: {in_figure(browser, TAIL1)} against {held}")
         press(browser, "z", CTRL)
         eventually(lambda: (folder / "s.json").read_text() == FIG03, 30)
-        said = served.stderr()
-        check(said.count("edited /keyframes/1/p") == 6, f"one log line per edit, none for previews: {said}")
+        # The log line of an edit follows its write: awaited.
+        eventually(lambda: served.stderr().count("edited /keyframes/1/p") == 6, 30,
+                   what=lambda: f"one log line per edit, none for previews: {served.stderr()}")
     finally:
         served.stop()
 
