@@ -256,25 +256,40 @@ void get_events(Site& site, const httplib::Request&, httplib::Response& res) {
       });
 }
 
-void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) {
-  if (!site.settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
-  const auto i = scene_index(req.matches[1], site.state.size());
-  if (!i) return send_error(res, 404, "no such scene");
-  Json request;
-  try {
-    request = Json::parse(req.body);
-  } catch (const std::exception&) {
-    return send_error(res, 400, "the request is not JSON");
+// The scene and the JSON body of an edit or a preview; nullopt when editing
+// is off, there is no such scene or the body is not JSON (answered already).
+std::optional<std::pair<std::size_t, Json>> edit_body(Site& site, const httplib::Request& req, httplib::Response& res) {
+  if (!site.settings.edit) {
+    send_error(res, 403, "editing is off: start pita serve with --edit");
+    return std::nullopt;
   }
-  const std::string path = site.settings.scenes[*i].string();
+  const auto i = scene_index(req.matches[1], site.state.size());
+  if (!i) {
+    send_error(res, 404, "no such scene");
+    return std::nullopt;
+  }
+  try {
+    return std::pair{*i, Json::parse(req.body)};
+  } catch (const std::exception&) {
+    send_error(res, 400, "the request is not JSON");
+    return std::nullopt;
+  }
+}
+
+void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) {
+  const auto given = edit_body(site, req, res);
+  if (!given) return;
+  const std::size_t i = given->first;
+  const Json& request = given->second;
+  const std::string path = site.settings.scenes[i].string();
   // A refusal carries the digest of the file it was refused against: the
   // page clears it when a good state of another text arrives.
   const auto refuse = [&](int status, Json body) {
-    body["digest"] = site.state.file_digest(*i);
+    body["digest"] = site.state.file_digest(i);
     send_json(res, status, body);
   };
   try {
-    const Json answer = site.state.edit(*i, request);
+    const Json answer = site.state.edit(i, request);
     std::vector<std::string> pointers;
     for (const Json& change : answer.at("previous")) pointers.push_back(change.at("pointer").get<std::string>());
     site.state.say(fmt::format("{}: edited {}", path, fmt::join(pointers, ", ")));
@@ -301,17 +316,12 @@ void post_edit(Site& site, const httplib::Request& req, httplib::Response& res) 
 // while the button is held. A drag the edit would refuse answers why, as an
 // edit's refusal does, and is not logged (the release's edit is).
 void post_preview(Site& site, const httplib::Request& req, httplib::Response& res) {
-  if (!site.settings.edit) return send_error(res, 403, "editing is off: start pita serve with --edit");
-  const auto i = scene_index(req.matches[1], site.state.size());
-  if (!i) return send_error(res, 404, "no such scene");
-  Json request;
+  const auto given = edit_body(site, req, res);
+  if (!given) return;
+  const std::size_t i = given->first;
+  const Json& request = given->second;
   try {
-    request = Json::parse(req.body);
-  } catch (const std::exception&) {
-    return send_error(res, 400, "the request is not JSON");
-  }
-  try {
-    const auto answer = site.state.preview(*i, request);
+    const auto answer = site.state.preview(i, request);
     if (!answer) return send_error(res, 409, "the scene has no good figure yet: see its error");
     send_json(res, 200, *answer);
   } catch (const nlohmann::json::exception& e) {
@@ -319,7 +329,7 @@ void post_preview(Site& site, const httplib::Request& req, httplib::Response& re
   } catch (const std::invalid_argument& e) {
     send_error(res, 400, e.what());
   } catch (...) {
-    send_failure(res, site.settings.scenes[*i].string(), "refused");
+    send_failure(res, site.settings.scenes[i].string(), "refused");
   }
 }
 

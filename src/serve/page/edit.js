@@ -187,24 +187,20 @@ async function sendEdit(index, request, kind) {
   return response.ok ? answer : null;
 }
 
-// Undo and redo put back the text each edit replaced: byte for byte.
-async function undo(index) {
+// Undo and redo put back the text each edit replaced: byte for byte. An
+// edit on its way is undone (redone) once its answer has come.
+async function replay(index, kind) {
   const v = views.get(index);
-  await v.queue;  // an edit on its way is undone once its answer has come
-  const last = v.undo.pop();
+  await v.queue;
+  const stack = v[kind];
+  const last = stack.pop();
   if (!last) return;
-  if (!(await edit(index, { changes: last }, "undo"))) v.undo.push(last);
-  v.undoButton.style.display = v.undo.length ? "" : "none";
+  if (!(await edit(index, { changes: last }, kind))) stack.push(last);
+  v[`${kind}Button`].style.display = stack.length ? "" : "none";
 }
 
-async function redo(index) {
-  const v = views.get(index);
-  await v.queue;  // an edit on its way is redone once its answer has come
-  const last = v.redo.pop();
-  if (!last) return;
-  if (!(await edit(index, { changes: last }, "redo"))) v.redo.push(last);
-  v.redoButton.style.display = v.redo.length ? "" : "none";
-}
+const undo = (index) => replay(index, "undo");
+const redo = (index) => replay(index, "redo");
 
 // Ctrl+Z undoes, Ctrl+Shift+Z and Ctrl+Y redo, in the scene whose figure or
 // controls have the focus, else the one edited last.
