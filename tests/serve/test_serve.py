@@ -317,7 +317,8 @@ def test_scrubbing_and_play(folder, browser, rates):
             check(not browser.evaluate(f"views.get({i}).playing"), "space pauses")
             fps = browser.evaluate(f"views.get({i}).timeline.fps")
             rates.append((name, (after - before) / 2, fps))
-            check((after - before) / 2 > 0.8 * fps, f"{name}: {(after - before) / 2} frames a second, of {fps}")
+            # A third of the rate: ctest runs this beside builds and other browsers (serve.browser.scenes).
+            check((after - before) / 2 > fps / 3, f"{name}: {(after - before) / 2} frames a second, of {fps}")
             # An arrow steps one frame; the frame shown is pita animate's frame k.
             k = browser.evaluate(f"views.get({i}).k")
             key(browser, "ArrowRight", "ArrowRight", 39)
