@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "render/pose_panel.hpp"
 #include "serve/camera_edit.hpp"
 #include "serve/json_edit.hpp"
 
@@ -36,7 +38,27 @@ scene::Box view_of(const Json& given, std::size_t i) {
   return {{v[0], v[1]}, {v[2], v[3]}};
 }
 
+// Where the world's origin is drawn in panel i's image plane, for an
+// orthographic camera of space (views_json); else 0, the plane's views and
+// a perspective camera's being as drawn.
+Point image_origin(const motion::Stage& stage, std::size_t i) {
+  const auto* keys = std::get_if<scene::SpacePoseKeys>(&stage.panel(i).keys);
+  if (!keys || scene::figure_of(stage.scene(), *keys).camera.perspective) return {0.0, 0.0};
+  return render::PosePanel<Affine3>(stage, i, nullptr).view().project(Eigen::Vector3d::Zero()).value_or(Point{});
+}
+
 }  // namespace
+
+Json views_json(const motion::Stage& stage, const std::vector<render::PanelPlacement>& placements) {
+  Json out = Json::array();
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const Point origin = i < stage.size() ? image_origin(stage, i) : Point{};
+    const scene::Box& b = placements[i].view;
+    out.push_back({b.min.real() - origin.real(), b.min.imag() - origin.imag(), b.max.real() - origin.real(),
+                   b.max.imag() - origin.imag()});
+  }
+  return out;
+}
 
 std::optional<std::vector<scene::Box>> views_of(const Json& request, std::size_t panels) {
   if (!request.is_object() || !request.contains("views") || request.at("views").is_null()) return std::nullopt;
@@ -51,7 +73,13 @@ std::optional<std::vector<scene::Box>> views_of(const Json& request, std::size_t
 }
 
 render::Figure figure_in(const motion::Stage& stage, const std::optional<std::vector<scene::Box>>& views) {
-  return views ? render::build_figure_in_views(stage, *views) : render::build_figure(stage);
+  if (!views) return render::build_figure(stage);
+  std::vector<scene::Box> drawn = *views;
+  for (std::size_t i = 0; i < drawn.size() && i < stage.size(); ++i) {
+    const Point origin = image_origin(stage, i);
+    drawn[i] = {drawn[i].min + origin, drawn[i].max + origin};
+  }
+  return render::build_figure_in_views(stage, drawn);
 }
 
 std::vector<Change> request_changes(const std::string& text, const scene::Scene& scene, const Json& request) {
@@ -69,7 +97,7 @@ std::vector<Change> request_changes(const std::string& text, const scene::Scene&
     }
     const Point to{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()};
     if (!std::isfinite(to.real()) || !std::isfinite(to.imag())) throw std::invalid_argument("\"to\" must be finite");
-    return drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
+    return drag(text, stage, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
                 d.at("part").get<std::string>(), to);
   }
   if (request.contains("time")) {

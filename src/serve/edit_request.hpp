@@ -13,6 +13,7 @@
 
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
+#include "render/layout.hpp"
 #include "scene/scene.hpp"
 #include "serve/scene_edit.hpp"
 
@@ -24,8 +25,14 @@ namespace pita::serve {
 // what is wrong.
 std::optional<std::vector<scene::Box>> views_of(const nlohmann::ordered_json& request, std::size_t panels);
 
-// The figure as pita render draws it, or in the views given (each panel's
-// view held, the rest laid out as pita render does).
+// The views the page is told to hold: each panel's world view as `placements`
+// draw it. The image plane of an orthographic camera is measured from the
+// world's origin here, not from the camera's target (the centre of the
+// solids, which a drag of a corner moves): so a held view stays put in space.
+nlohmann::ordered_json views_json(const motion::Stage& stage, const std::vector<render::PanelPlacement>& placements);
+
+// The figure as pita render draws it, or in the views given (views_json's:
+// each panel's view held, the rest laid out as pita render does).
 render::Figure figure_in(const motion::Stage& stage, const std::optional<std::vector<scene::Box>>& views);
 
 // The changes a request makes in `text` (`scene`, read from it):
