@@ -82,10 +82,25 @@ render::Figure figure_in(const motion::Stage& stage, const std::optional<std::ve
   return render::build_figure_in_views(stage, drawn);
 }
 
-std::vector<Change> request_changes(const std::string& text, const scene::Scene& scene, const Json& request) {
+std::optional<scene::Scene> held_camera(const scene::Scene& scene, const Json& request) {
+  if (!request.is_object() || !request.contains("camera") || request.at("camera").is_null()) return std::nullopt;
+  const Json& given = request.at("camera");
+  if (!given.is_object() || !given.contains("azimuth") || !given.contains("elevation") ||
+      !given.at("azimuth").is_number() || !given.at("elevation").is_number()) {
+    throw std::invalid_argument("camera must be {\"azimuth\": A, \"elevation\": E} (got " + shown(given) + ")");
+  }
+  const CameraTurn turn =
+      camera_parameter(fmt::format("{},{}", given.at("azimuth").get<double>(), given.at("elevation").get<double>()));
+  return turned_scene(scene, turn);
+}
+
+std::vector<Change> request_changes(const std::string& text, const scene::Scene& file_scene, const Json& request) {
   std::vector<Change> changes;
   if (request.contains("drag")) {
     const Json& d = request.at("drag");
+    // The figure the page showed: the file's scene, with the camera it holds.
+    const std::optional<scene::Scene> held = held_camera(file_scene, request);
+    const scene::Scene& scene = held ? *held : file_scene;
     const auto views = views_of(request, scene.panels.size());
     const motion::Stage stage(scene);
     const render::Figure figure = figure_in(stage, views);
@@ -103,7 +118,7 @@ std::vector<Change> request_changes(const std::string& text, const scene::Scene&
   if (request.contains("time")) {
     const Json& time = request.at("time");
     const double step = time.contains("step") ? time.at("step").get<double>() : 0.0;
-    return {time_change(text, scene, time.at("pointer").get<std::string>(), time.at("t").get<double>(), step)};
+    return {time_change(text, file_scene, time.at("pointer").get<std::string>(), time.at("t").get<double>(), step)};
   }
   for (const Json& change : request.at("changes")) {
     const bool remove = change.contains("remove") && change.at("remove").get<bool>();

@@ -35,9 +35,19 @@ nlohmann::ordered_json views_json(const motion::Stage& stage, const std::vector<
 // each panel's view held, the rest laid out as pita render does).
 render::Figure figure_in(const motion::Stage& stage, const std::optional<std::vector<scene::Box>>& views);
 
+// The request's "camera": {"azimuth", "elevation"}, which the page holds
+// with the views while it edits a scene whose camera "auto" turns (the
+// camera the panels were drawn with when the edit began): the scene with
+// that camera (turned_scene, camera_edit.hpp), drawn and read so, since an
+// edit could make "auto" turn the view under the pointer; nullopt when the
+// request has none. Throws std::invalid_argument (CameraRefused) for
+// numbers the scene's camera may not have, or a scene without a camera.
+std::optional<scene::Scene> held_camera(const scene::Scene& scene, const nlohmann::ordered_json& request);
+
 // The changes a request makes in `text` (`scene`, read from it):
-//   {"drag": {"panel", "pointer", "part", "to": [x, y]}[, "views"]}: the
-//     handle moved to the canvas point `to` of the figure drawn in the views;
+//   {"drag": {"panel", "pointer", "part", "to": [x, y]}[, "views"][, "camera"]}:
+//     the handle moved to the canvas point `to` of the figure drawn in the
+//     views (with the camera held);
 //   {"time": {"pointer", "t"[, "step"]}}: a keyframe's, point's or pose's time
 //     (time_change; step: what the page's timeline resolves);
 //   {"changes": [{"pointer", "value"}, ...]}: each checked by check_change.

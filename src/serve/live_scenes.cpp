@@ -456,7 +456,8 @@ std::optional<Json> LiveScenes::preview(std::size_t i, const Json& request) {
     text = apply_changes(text, request_changes(text, *shown, request)).text;
     edited = scene::parse_scene(text, shown->path, read_options());
   }
-  const scene::Scene& scene = edited ? *edited : *shown;
+  const std::optional<scene::Scene> held = held_camera(edited ? *edited : *shown, request);
+  const scene::Scene& scene = held ? *held : edited ? *edited : *shown;
   const motion::Stage stage(scene);
   const render::Figure figure = figure_in(stage, views);
   return Json{{"version", version},

@@ -110,6 +110,31 @@ TEST(EditRequest, ADragOfSpaceInHeldViewsStaysUnderThePointer) {
       0.2);
 }
 
+// The camera the page holds while editing a scene with "auto": the scene
+// drawn with it, "auto" off; numbers beyond the camera's limits, and a
+// scene of the plane, refused.
+TEST(EditRequest, TheHeldCameraDrawsTheSceneAsItWasShown) {
+  const scene::Scene space = scene::parse_scene(
+      R"({"dimension": 3, "method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                                        {"t": 1, "matrix": [[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]]}],
+          "camera": {"auto": true}})",
+      "e.json");
+  EXPECT_FALSE(held_camera(space, Json{{"views", nullptr}}).has_value());
+  const auto held = held_camera(space, Json::parse(R"({"camera": {"azimuth": -40.5, "elevation": 12}})"));
+  ASSERT_TRUE(held.has_value());
+  const scene::Camera& camera = scene::figure_of<scene::SpacePoseKeys>(*held).camera;
+  EXPECT_EQ(camera.azimuth, -40.5);
+  EXPECT_EQ(camera.elevation, 12.0);
+  EXPECT_FALSE(camera.automatic);
+  for (const char* bad : {R"({"camera": {"azimuth": 10, "elevation": 91}})", R"({"camera": {"azimuth": 10}})",
+                          R"({"camera": [10, 20]})", R"({"camera": {"azimuth": "10", "elevation": 20}})"}) {
+    EXPECT_THROW(held_camera(space, Json::parse(bad)), std::invalid_argument) << bad;
+  }
+  const scene::Scene plane = scene::parse_scene(kTwoPanelArrows, "e.json");
+  EXPECT_THROW(held_camera(plane, Json::parse(R"({"camera": {"azimuth": 10, "elevation": 20}})")),
+               std::invalid_argument);
+}
+
 TEST(EditRequest, ATimeIsWrittenShortAndUndoneByteForByte) {
   const scene::Scene scene = scene::parse_scene(kTwoPanelArrows, "e.json");
   const Json request = Json::parse(R"({"time": {"pointer": "/keyframes/1", "t": 0.6012345, "step": 0.002}})");

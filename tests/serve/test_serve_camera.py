@@ -360,12 +360,23 @@ def corner_on_screen(browser, pointer, part):
         if (!c) return null; const r = c.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; }})()""")
 
 
-def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser):
+def top_corner(browser):
+    """A corner handle nothing covers (the pointer finds it at its centre), the last drawn first."""
+    for h in reversed(browser.evaluate("views.get(0).shownHandles")):
+        at = corner_on_screen(browser, h["pointer"], h["part"])
+        hit = at and browser.evaluate(f"(() => {{ const e = document.elementFromPoint({at[0]}, {at[1]}); "
+                                      "return e && e.dataset ? [e.dataset.pointer, e.dataset.part] : null; })()")
+        if hit == [h["pointer"], h["part"]]:
+            return h["pointer"], h["part"], at
+    raise AssertionError("no corner handle on top")
+
+
+def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser, name="sam-3d-fig12-bezier"):
     """Fig. 12 with --edit: a handle at each corner of each pose's reference tetrahedron; a drag
     that starts on one moves it (the camera does not turn), the figure follows while the button is
     held, the release writes that pose's matrix entries only, the handle stays under the pointer,
     and Ctrl+Z gives the file back byte for byte. While the view is turned, no handles."""
-    text = (SOURCE / "scenes" / "sam-3d-fig12-bezier.json").read_text()
+    text = (SOURCE / "scenes" / f"{name}.json").read_text()
     (folder / "s.json").write_text(text)
     served = Served(folder, ["s.json"], "--edit")
     try:
@@ -373,19 +384,15 @@ def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser):
         poses = len(json.loads(text)["poses"])
         count = lambda: browser.evaluate("document.querySelectorAll('#scene-0 circle.handle').length")
         eventually(lambda: count() == 4 * poses, 30, what=lambda: f"four handles a pose: {count()}")
-        # A corner nobody covers: the circle the pointer finds at its centre (pose B's apex, the roof's corner).
-        pointer, part = "/poses/1", "corner3"
-        x, y = corner_on_screen(browser, pointer, part)
-        hit = browser.evaluate(f"(() => {{ const e = document.elementFromPoint({x}, {y}); "
-                               "return e && e.dataset ? [e.dataset.pointer, e.dataset.part] : null; })()")
-        check(hit == [pointer, part], f"the handle is on top at its centre: {hit}")
+        pointer, part, (x, y) = top_corner(browser)
+        k = int(pointer.split("/")[-1])
         shown = browser.evaluate("views.get(0).changes")
         old_version = json.loads(served.get("/api/scenes")[1])[0]["version"]
         dx, dy = 36.0, -28.0
         browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
         mouse(browser, "mousePressed", x, y)
-        for k in range(1, 7):
-            mouse(browser, "mouseMoved", x + dx * k / 6, y + dy * k / 6)
+        for step in range(1, 7):
+            mouse(browser, "mouseMoved", x + dx * step / 6, y + dy * step / 6)
             time.sleep(0.05)
         # The figure follows while the button is held (POST /api/preview), and the camera stays.
         eventually(lambda: browser.evaluate("views.get(0).changes") > shown, 30, what="a live figure while dragging")
@@ -394,17 +401,21 @@ def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser):
         mouse(browser, "mouseReleased", x + dx, y + dy)
         edited = eventually(lambda: (lambda t: t != text and t)((folder / "s.json").read_text()), 60,
                             what=lambda: "the file edited: " + served.stderr()[-400:])
-        # Only pose 1's line changed, and in it only numbers of its matrix.
-        old_lines, new_lines = text.split("\n"), edited.split("\n")
-        changed = [i for i, (a, b) in enumerate(zip(old_lines, new_lines)) if a != b]
-        check(len(old_lines) == len(new_lines) and len(changed) == 1, f"one line changed: {changed}")
-        was, now = json.loads(old_lines[changed[0]].rstrip(",")), json.loads(new_lines[changed[0]].rstrip(","))
-        check(now["t"] == was["t"] and now["matrix"] != was["matrix"] and was == json.loads(text)["poses"][1],
-              f"pose 1's matrix: {new_lines[changed[0]]}")
-        untouched = [(r, c) for r in range(3) for c in range(4) if now["matrix"][r][c] == was["matrix"][r][c]]
-        check(untouched, "some entries keep their value")
-        for r, c in untouched:
-            check(f"{was['matrix'][r][c]}" in new_lines[changed[0]], "an untouched entry keeps its text")
+        # Only numbers of pose k's matrix changed: the bytes that differ lie within that pose.
+        was, now = json.loads(text), json.loads(edited)
+        moved = was["poses"][k]["matrix"]
+        was["poses"][k]["matrix"] = now["poses"][k]["matrix"]
+        check(was == now and moved != now["poses"][k]["matrix"], f"only pose {k}'s matrix changed")
+        same_start = next(i for i, (a, b) in enumerate(zip(text, edited)) if a != b)
+        same_end = next(i for i, (a, b) in enumerate(zip(reversed(text), reversed(edited))) if a != b)
+        starts = [i for i in range(text.index('"poses"'), len(text)) if text.startswith('"t":', i)]
+        end = text.index("}", starts[k])  # a pose is an object with no object inside
+        check(starts[k] < same_start and len(text) - same_end <= end,
+              f"the changed bytes lie in pose {k}: {text[same_start:len(text) - same_end]!r}")
+        for r in range(3):
+            for c in range(4):
+                if now["poses"][k]["matrix"][r][c] == moved[r][c]:
+                    check(str(moved[r][c]) in edited[starts[k]:], "an untouched entry keeps its text")
         check(browser.evaluate("views.get(0).turned") is None, "still the file's camera")
         # The figure drawn from the file in the view held: the corner where it was dropped.
         def at_new_version():
@@ -439,6 +450,12 @@ def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser):
         served.stop()
 
 
+def test_a_corner_under_an_auto_camera_stays_under_the_pointer(folder, browser):
+    """SAM 3D Fig. 13 ("auto": true, poses over several lines): the camera the figure was drawn with
+    is held while editing, so that the edit does not turn the view under the pointer."""
+    test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser, "sam-3d-fig13-polysam")
+
+
 def test_the_camera_parameter_is_checked(folder):
     shutil.copy(SOURCE / "scenes" / "sam-3d-fig12-bezier.json", folder / "s.json")
     served = Served(folder, ["s.json"])
@@ -464,7 +481,8 @@ def main():
         for test in (test_the_camera_parameter_is_checked, test_a_scene_of_the_plane_does_not_turn,
                      test_turning_and_saving, test_save_view_adds_what_the_file_lacks,
                      test_shift_wheel_moves_a_perspective_camera, test_auto_camera_and_turn_latency,
-                     test_a_corner_of_space_is_dragged_in_the_views_plane):
+                     test_a_corner_of_space_is_dragged_in_the_views_plane,
+                     test_a_corner_under_an_auto_camera_stays_under_the_pointer):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()

@@ -118,7 +118,7 @@ async function frame(index) {
   try {
     if (held) {
       response = await fetch(api(`/api/preview/${index}`), { method: "POST", signal: control.signal,
-                                                             body: JSON.stringify({ views: held }) });
+                                                             body: JSON.stringify({ views: held, camera: v.heldCamera }) });
       const answer = await response.json();
       if (response.ok) { svg = answer.svg; handles = answer.handles; }
     } else {
