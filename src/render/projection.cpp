@@ -38,6 +38,12 @@ std::optional<Point> Projection::project(const Eigen::Vector3d& x) const {
 
 double Projection::depth(const Eigen::Vector3d& x) const { return (x - eye_).dot(forward_); }
 
+Eigen::Vector3d Projection::unproject(Point image, double depth) const {
+  // project() scales by distance / depth in perspective; orthographic, by 1.
+  const double scale = perspective_ ? depth / distance_ : 1.0;
+  return eye_ + depth * forward_ + scale * (image.real() * right_ + image.imag() * up_);
+}
+
 double face_shade(const Eigen::Vector3d& normal, const Projection& projection) {
   const Eigen::Vector3d light = (-projection.forward() + 0.8 * projection.up() - 0.5 * projection.right()).normalized();
   return 0.35 + 0.65 * std::abs(normal.dot(light));

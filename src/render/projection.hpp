@@ -21,6 +21,9 @@ class Projection {
   std::optional<Point> project(const Eigen::Vector3d& x) const;
   // Distance from the camera's plane along the view direction (larger: farther).
   double depth(const Eigen::Vector3d& x) const;
+  // The point at `depth` whose image is `image`: where `pita serve --edit`
+  // moves a corner dragged in the view's plane (its depth kept).
+  Eigen::Vector3d unproject(Point image, double depth) const;
   // Unit vectors: towards the target, right and up on the image.
   const Eigen::Vector3d& forward() const { return forward_; }
   const Eigen::Vector3d& right() const { return right_; }

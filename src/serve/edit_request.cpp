@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <variant>
 
 #include <fmt/format.h>
 
+#include "render/pose_panel.hpp"
 #include "serve/camera_edit.hpp"
 #include "serve/json_edit.hpp"
 
@@ -36,7 +38,27 @@ scene::Box view_of(const Json& given, std::size_t i) {
   return {{v[0], v[1]}, {v[2], v[3]}};
 }
 
+// Where the world's origin is drawn in panel i's image plane, for an
+// orthographic camera of space (views_json); else 0, the plane's views and
+// a perspective camera's being as drawn.
+Point image_origin(const motion::Stage& stage, std::size_t i) {
+  const auto* keys = std::get_if<scene::SpacePoseKeys>(&stage.panel(i).keys);
+  if (!keys || scene::figure_of(stage.scene(), *keys).camera.perspective) return {0.0, 0.0};
+  return render::PosePanel<Affine3>(stage, i, nullptr).view().project(Eigen::Vector3d::Zero()).value_or(Point{});
+}
+
 }  // namespace
+
+Json views_json(const motion::Stage& stage, const std::vector<render::PanelPlacement>& placements) {
+  Json out = Json::array();
+  for (std::size_t i = 0; i < placements.size(); ++i) {
+    const Point origin = i < stage.size() ? image_origin(stage, i) : Point{};
+    const scene::Box& b = placements[i].view;
+    out.push_back({b.min.real() - origin.real(), b.min.imag() - origin.imag(), b.max.real() - origin.real(),
+                   b.max.imag() - origin.imag()});
+  }
+  return out;
+}
 
 std::optional<std::vector<scene::Box>> views_of(const Json& request, std::size_t panels) {
   if (!request.is_object() || !request.contains("views") || request.at("views").is_null()) return std::nullopt;
@@ -51,13 +73,34 @@ std::optional<std::vector<scene::Box>> views_of(const Json& request, std::size_t
 }
 
 render::Figure figure_in(const motion::Stage& stage, const std::optional<std::vector<scene::Box>>& views) {
-  return views ? render::build_figure_in_views(stage, *views) : render::build_figure(stage);
+  if (!views) return render::build_figure(stage);
+  std::vector<scene::Box> drawn = *views;
+  for (std::size_t i = 0; i < drawn.size() && i < stage.size(); ++i) {
+    const Point origin = image_origin(stage, i);
+    drawn[i] = {drawn[i].min + origin, drawn[i].max + origin};
+  }
+  return render::build_figure_in_views(stage, drawn);
 }
 
-std::vector<Change> request_changes(const std::string& text, const scene::Scene& scene, const Json& request) {
+std::optional<scene::Scene> held_camera(const scene::Scene& scene, const Json& request) {
+  if (!request.is_object() || !request.contains("camera") || request.at("camera").is_null()) return std::nullopt;
+  const Json& given = request.at("camera");
+  if (!given.is_object() || !given.contains("azimuth") || !given.contains("elevation") ||
+      !given.at("azimuth").is_number() || !given.at("elevation").is_number()) {
+    throw std::invalid_argument("camera must be {\"azimuth\": A, \"elevation\": E} (got " + shown(given) + ")");
+  }
+  const CameraTurn turn =
+      camera_parameter(fmt::format("{},{}", given.at("azimuth").get<double>(), given.at("elevation").get<double>()));
+  return turned_scene(scene, turn);
+}
+
+std::vector<Change> request_changes(const std::string& text, const scene::Scene& file_scene, const Json& request) {
   std::vector<Change> changes;
   if (request.contains("drag")) {
     const Json& d = request.at("drag");
+    // The figure the page showed: the file's scene, with the camera it holds.
+    const std::optional<scene::Scene> held = held_camera(file_scene, request);
+    const scene::Scene& scene = held ? *held : file_scene;
     const auto views = views_of(request, scene.panels.size());
     const motion::Stage stage(scene);
     const render::Figure figure = figure_in(stage, views);
@@ -69,13 +112,13 @@ std::vector<Change> request_changes(const std::string& text, const scene::Scene&
     }
     const Point to{d.at("to").at(0).get<double>(), d.at("to").at(1).get<double>()};
     if (!std::isfinite(to.real()) || !std::isfinite(to.imag())) throw std::invalid_argument("\"to\" must be finite");
-    return drag(text, scene, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
+    return drag(text, stage, figure.placements, panel.get<std::size_t>(), d.at("pointer").get<std::string>(),
                 d.at("part").get<std::string>(), to);
   }
   if (request.contains("time")) {
     const Json& time = request.at("time");
     const double step = time.contains("step") ? time.at("step").get<double>() : 0.0;
-    return {time_change(text, scene, time.at("pointer").get<std::string>(), time.at("t").get<double>(), step)};
+    return {time_change(text, file_scene, time.at("pointer").get<std::string>(), time.at("t").get<double>(), step)};
   }
   for (const Json& change : request.at("changes")) {
     const bool remove = change.contains("remove") && change.at("remove").get<bool>();

@@ -102,6 +102,7 @@ void LiveScenes::render(std::size_t i, bool saved) {
   render::Figure figure;
   Json claims = Json::array();
   Json camera;
+  Json edit_handles = Json::array(), edit_views = Json::array();
   std::string text;
   try {
     text = scene::read_input_file(state.path, scene::kMaxSceneFileBytes, "scene file");
@@ -110,6 +111,11 @@ void LiveScenes::render(std::size_t i, bool saved) {
     figure = render::build_figure(stage);
     svg = render::render_figure(*scene, figure, render::Format::svg);
     camera = camera_json(stage);
+    if (settings_.edit) {
+      // What the page drags, and the world view of each panel it holds while it edits (edit_request.hpp).
+      edit_handles = handles_json(handles(text, stage, figure.placements));
+      edit_views = views_json(stage, figure.placements);
+    }
     for (const analysis::ClaimOutcome& claim : analysis::check_claims(stage)) {
       claims.push_back(
           {{"pointer", claim.pointer}, {"says", claim.says}, {"held", claim.held}, {"measured", claim.measured}});
@@ -135,6 +141,8 @@ void LiveScenes::render(std::size_t i, bool saved) {
       state.placements = figure.placements;
       state.claims = std::move(claims);
       state.camera = std::move(camera);
+      state.handles = std::move(edit_handles);
+      state.views = std::move(edit_views);
       state.text = std::move(text);
       state.files = {state.path};
       state.animation.reset();  // made again when asked for
@@ -204,13 +212,8 @@ Json LiveScenes::scenes_json() {
       entry["panels"].push_back({placement.cell.x, placement.cell.y, placement.cell.width, placement.cell.height});
     }
     if (settings_.edit && state.scene) {
-      entry["handles"] = handles_json(handles(state.text, *state.scene, state.placements));
-      // The world view of each panel: the page holds them while it edits (edit_request.hpp).
-      entry["views"] = Json::array();
-      for (const render::PanelPlacement& placement : state.placements) {
-        const scene::Box& b = placement.view;
-        entry["views"].push_back({b.min.real(), b.min.imag(), b.max.real(), b.max.imag()});
-      }
+      entry["handles"] = state.handles;
+      entry["views"] = state.views;  // the page holds them while it edits
     }
     if (state.scene) entry["keys"] = key_rows_json(key_rows(state.text, *state.scene));
     if (state.scene) {
@@ -453,12 +456,13 @@ std::optional<Json> LiveScenes::preview(std::size_t i, const Json& request) {
     text = apply_changes(text, request_changes(text, *shown, request)).text;
     edited = scene::parse_scene(text, shown->path, read_options());
   }
-  const scene::Scene& scene = edited ? *edited : *shown;
+  const std::optional<scene::Scene> held = held_camera(edited ? *edited : *shown, request);
+  const scene::Scene& scene = held ? *held : edited ? *edited : *shown;
   const motion::Stage stage(scene);
   const render::Figure figure = figure_in(stage, views);
   return Json{{"version", version},
               {"svg", render::render_figure(scene, figure, render::Format::svg)},
-              {"handles", handles_json(handles(text, scene, figure.placements))}};
+              {"handles", handles_json(handles(text, stage, figure.placements))}};
 }
 
 void LiveScenes::stop() {

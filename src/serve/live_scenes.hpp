@@ -83,6 +83,8 @@ struct SceneState {
   std::shared_ptr<LayoutCache> layout;             // its frames' view, once asked for
   std::shared_ptr<LayoutCache> turned_layout;      // that of the camera last turned in the page
   Json camera;                                     // a 3D scene's camera (camera_json), else null
+  Json handles = Json::array();                    // --edit: its handles (scene_edit.hpp)
+  Json views = Json::array();                      // --edit: each panel's view (views_json)
 };
 
 class LiveScenes {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/arrow.hpp"
+#include "motion/stage.hpp"
 #include "render/layout.hpp"
 #include "scene/scene.hpp"
 
@@ -18,14 +19,17 @@ namespace pita::serve {
 struct Handle {
   std::size_t panel = 0;
   std::string pointer;  // the keyframe or pose: "/keyframes/1", "/panels/2/poses/0"
-  std::string part;     // "tail", "tip", "corner0", "corner1", "corner2"
+  std::string part;     // "tail", "tip", "corner0" ... "corner2" ("corner3" in space)
   Point at;             // in canvas pixels (the SVG's user units)
 };
 
-// Every handle of the figure's panels, for the scene read from `text`: a
-// panel that gives its own "keyframes" or "poses" edits those, the others the
-// scene's. Moving keyframes, timed points and poses of space have none.
-std::vector<Handle> handles(const std::string& text, const scene::Scene& scene,
+// Every handle of the figure's panels, for the scene read from `text` (the
+// stage's): a panel that gives its own "keyframes" or "poses" edits those,
+// the others the scene's. A pose of space has a handle per corner of the
+// reference tetrahedron, where the panel's camera as drawn ("auto"
+// included) shows it; none for a corner behind a perspective camera.
+// Moving keyframes and timed points have none.
+std::vector<Handle> handles(const std::string& text, const motion::Stage& stage,
                             const std::vector<render::PanelPlacement>& placements);
 
 // The value at `pointer` becomes `value` (JSON text), added when the file
@@ -41,18 +45,22 @@ struct Change {
 // point `to` changes in the scene file `text` (the scene read from it):
 //   tail: "p"; tip: "q" when the keyframe gives q, else "m" and "w" (the
 //   winding moved by less than half a turn, so its turns stay);
-//   a corner: that point of "triangle", else the entries of "matrix" (of the
-//   affinity that maps the reference triangle onto the moved one) that
-//   changed by more than the drag resolves; the others keep their text.
-// Dragged numbers are rounded to a tenth of the pixel (rounded_json).
+//   a corner: that point of "triangle" ("tetrahedron"), else the entries of
+//   "matrix" (of the affinity that maps the reference simplex onto the moved
+//   one) that changed by more than the drag resolves; the others keep their
+//   text. In space the corner moves in the plane through it parallel to the
+//   image: along the camera's right and up, at the depth it had.
+// Dragged numbers are rounded to a tenth of the pixel (rounded_json; in
+// space, of the pixel at the corner's depth).
 // Throws std::invalid_argument for a handle the figure does not have.
 // Changes a page sends back (undo) are checked by checked_change.
-std::vector<Change> drag(const std::string& text, const scene::Scene& scene,
+std::vector<Change> drag(const std::string& text, const motion::Stage& stage,
                          const std::vector<render::PanelPlacement>& placements, std::size_t panel,
                          const std::string& pointer, const std::string& part, Point to);
 
 // A change as the page may send it: the pointer names a value a handle
-// writes (p, q, m, w, a triangle's point, a matrix) of a keyframe or pose, or
+// writes (p, q, m, w, a triangle's or tetrahedron's point, a matrix or one
+// of its entries) of a keyframe or pose, or
 // the time "t" of a keyframe, point or pose the timeline moves, and the value
 // is one JSON value; or it is what "Save view" writes (camera_edit.hpp:
 // /camera/azimuth, elevation, distance or auto, within the reader's limits),

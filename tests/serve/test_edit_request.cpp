@@ -66,7 +66,7 @@ TEST(EditRequest, ADragInHeldViewsStaysUnderThePointer) {
     request["views"].push_back(
         {placement.view.min.real(), placement.view.min.imag(), placement.view.max.real(), placement.view.max.imag()});
   }
-  const Handle& tail = find_handle(handles(kTwoPanelArrows, scene, fitted.placements), 1, "/keyframes/2", "tail");
+  const Handle& tail = find_handle(handles(kTwoPanelArrows, stage, fitted.placements), 1, "/keyframes/2", "tail");
   const Point to = tail.at + Point{60, 40};  // outward: the content grows
   request["drag"] = {{"panel", 1u}, {"pointer", "/keyframes/2"}, {"part", "tail"}, {"to", {to.real(), to.imag()}}};
   const Applied applied = apply_changes(kTwoPanelArrows, request_changes(kTwoPanelArrows, scene, request));
@@ -74,11 +74,65 @@ TEST(EditRequest, ADragInHeldViewsStaysUnderThePointer) {
   const scene::Scene moved = scene::parse_scene(applied.text, "e.json");
   const motion::Stage moved_stage(moved);
   const render::Figure held = figure_in(moved_stage, views_of(request, 2));
-  const Point there = find_handle(handles(applied.text, moved, held.placements), 1, "/keyframes/2", "tail").at;
+  const Point there = find_handle(handles(applied.text, moved_stage, held.placements), 1, "/keyframes/2", "tail").at;
   EXPECT_LT(std::abs(there - to), 0.2) << there << " " << to;
   const render::Figure refitted = figure_in(moved_stage, std::nullopt);
-  const Point refit = find_handle(handles(applied.text, moved, refitted.placements), 1, "/keyframes/2", "tail").at;
+  const Point refit =
+      find_handle(handles(applied.text, moved_stage, refitted.placements), 1, "/keyframes/2", "tail").at;
   EXPECT_GT(std::abs(refit - to), 2.0) << "the refitted figure should move the handle (else this test shows nothing)";
+}
+
+// In space the camera looks at the centre of the solids, which a drag of a
+// corner moves: the views held are measured from the world's origin, so
+// that the dragged corner is still drawn under the pointer.
+TEST(EditRequest, ADragOfSpaceInHeldViewsStaysUnderThePointer) {
+  const std::string text = R"({"dimension": 3, "method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+    {"t": 1, "tetrahedron": [[2, 0, 0], [3, 0.4, 0], [2, 1, 0], [2, 0, 1.5]]}],
+    "camera": {"azimuth": -60, "elevation": 25}})";
+  const scene::Scene scene = scene::parse_scene(text, "e.json");
+  const motion::Stage stage(scene);
+  const render::Figure fitted = render::build_figure(stage);
+  Json request{{"views", views_json(stage, fitted.placements)}};
+  const Handle& corner = find_handle(handles(text, stage, fitted.placements), 0, "/poses/1", "corner3");
+  const Point to = corner.at + Point{-50, 30};
+  request["drag"] = {{"panel", 0u}, {"pointer", "/poses/1"}, {"part", "corner3"}, {"to", {to.real(), to.imag()}}};
+  const Applied applied = apply_changes(text, request_changes(text, scene, request));
+  const scene::Scene moved = scene::parse_scene(applied.text, "e.json");
+  const motion::Stage moved_stage(moved);
+  const render::Figure held = figure_in(moved_stage, views_of(request, 1));
+  const Point there = find_handle(handles(applied.text, moved_stage, held.placements), 0, "/poses/1", "corner3").at;
+  EXPECT_LT(std::abs(there - to), 0.2) << there << " " << to;
+  // The other pose stays where it was drawn.
+  const Point other = find_handle(handles(text, stage, fitted.placements), 0, "/poses/0", "corner1").at;
+  EXPECT_LT(
+      std::abs(find_handle(handles(applied.text, moved_stage, held.placements), 0, "/poses/0", "corner1").at - other),
+      0.2);
+}
+
+// The camera the page holds while editing a scene with "auto": the scene
+// drawn with it, "auto" off; numbers beyond the camera's limits, and a
+// scene of the plane, refused.
+TEST(EditRequest, TheHeldCameraDrawsTheSceneAsItWasShown) {
+  const scene::Scene space = scene::parse_scene(
+      R"({"dimension": 3, "method": "SAM", "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+                                        {"t": 1, "matrix": [[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]]}],
+          "camera": {"auto": true}})",
+      "e.json");
+  EXPECT_FALSE(held_camera(space, Json{{"views", nullptr}}).has_value());
+  const auto held = held_camera(space, Json::parse(R"({"camera": {"azimuth": -40.5, "elevation": 12}})"));
+  ASSERT_TRUE(held.has_value());
+  const scene::Camera& camera = scene::figure_of<scene::SpacePoseKeys>(*held).camera;
+  EXPECT_EQ(camera.azimuth, -40.5);
+  EXPECT_EQ(camera.elevation, 12.0);
+  EXPECT_FALSE(camera.automatic);
+  for (const char* bad : {R"({"camera": {"azimuth": 10, "elevation": 91}})", R"({"camera": {"azimuth": 10}})",
+                          R"({"camera": [10, 20]})", R"({"camera": {"azimuth": "10", "elevation": 20}})"}) {
+    EXPECT_THROW(held_camera(space, Json::parse(bad)), std::invalid_argument) << bad;
+  }
+  const scene::Scene plane = scene::parse_scene(kTwoPanelArrows, "e.json");
+  EXPECT_THROW(held_camera(plane, Json::parse(R"({"camera": {"azimuth": 10, "elevation": 20}})")),
+               std::invalid_argument);
 }
 
 TEST(EditRequest, ATimeIsWrittenShortAndUndoneByteForByte) {

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -50,7 +51,7 @@ const std::string kArrows = R"({"method": "P6", "keyframes": [
 
 TEST(SceneEdit, HandlesAreWhereTheFigureDrawsTheArrows) {
   const Drawn d = draw(kArrows);
-  const std::vector<Handle> all = handles(kArrows, d.scene, d.figure.placements);
+  const std::vector<Handle> all = handles(kArrows, motion::Stage(d.scene), d.figure.placements);
   ASSERT_EQ(all.size(), 6u);
   const auto& view = d.figure.placements[0].transform;
   EXPECT_EQ(find(all, "/keyframes/1", "tail").at, view(Point(3, 1.5)));
@@ -60,7 +61,8 @@ TEST(SceneEdit, HandlesAreWhereTheFigureDrawsTheArrows) {
 TEST(SceneEdit, DraggingATailMovesP) {
   const Drawn d = draw(kArrows);
   const auto& view = d.figure.placements[0].transform;
-  const auto changes = drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "tail", view(Point(1, -2)));
+  const auto changes =
+      drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0, "/keyframes/0", "tail", view(Point(1, -2)));
   const auto edited = nlohmann::json::parse(applied(kArrows, changes));
   EXPECT_NEAR(edited["keyframes"][0]["p"][0].get<double>(), 1.0, 1e-12);
   EXPECT_NEAR(edited["keyframes"][0]["p"][1].get<double>(), -2.0, 1e-12);
@@ -69,13 +71,13 @@ TEST(SceneEdit, DraggingATailMovesP) {
 TEST(SceneEdit, DraggingATipSetsQOrMagnitudeAndWindingKeepingTheTurns) {
   const Drawn d = draw(kArrows);
   const auto& view = d.figure.placements[0].transform;
-  auto edited = nlohmann::json::parse(
-      applied(kArrows, drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/1", "tip", view(Point(4, 1.5)))));
+  auto edited = nlohmann::json::parse(applied(kArrows, drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0,
+                                                            "/keyframes/1", "tip", view(Point(4, 1.5)))));
   EXPECT_NEAR(edited["keyframes"][1]["q"][0].get<double>(), 4.0, 1e-12);
   // keyframe 2: w = 3.5 with one more turn; the tip moved a little keeps both.
   const Point tip = Point(6, 0) + std::polar(2.0, 3.6);
-  edited = nlohmann::json::parse(
-      applied(kArrows, drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/2", "tip", view(tip))));
+  edited = nlohmann::json::parse(applied(
+      kArrows, drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0, "/keyframes/2", "tip", view(tip))));
   EXPECT_NEAR(edited["keyframes"][2]["m"].get<double>(), 2.0, 1e-9);
   EXPECT_NEAR(edited["keyframes"][2]["w"].get<double>(), 3.6, 1e-9);
   EXPECT_EQ(edited["keyframes"][2]["turns"], 1);
@@ -87,13 +89,13 @@ TEST(SceneEdit, DraggingACornerMovesTheTriangleOrSetsTheMatrix) {
     {"t": 1, "triangle": [[4, 0], [5, 0], [4, 1]]}]})";
   const Drawn d = draw(text);
   const auto& view = d.figure.placements[0].transform;
-  EXPECT_EQ(handles(text, d.scene, d.figure.placements).size(), 6u);
-  auto edited = nlohmann::json::parse(
-      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/1", "corner2", view(Point(4.5, 2)))));
+  EXPECT_EQ(handles(text, motion::Stage(d.scene), d.figure.placements).size(), 6u);
+  auto edited = nlohmann::json::parse(applied(
+      text, drag(text, motion::Stage(d.scene), d.figure.placements, 0, "/poses/1", "corner2", view(Point(4.5, 2)))));
   EXPECT_NEAR(edited["poses"][1]["triangle"][2][1].get<double>(), 2.0, 1e-12);
   // Corner 1 of the identity pose to (2, 0): the matrix that maps (0,0),(1,0),(0,1) to (0,0),(2,0),(0,1).
-  edited = nlohmann::json::parse(
-      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/0", "corner1", view(Point(2, 0)))));
+  edited = nlohmann::json::parse(applied(
+      text, drag(text, motion::Stage(d.scene), d.figure.placements, 0, "/poses/0", "corner1", view(Point(2, 0)))));
   const auto& m = edited["poses"][0]["matrix"];
   EXPECT_NEAR(m[0][0].get<double>(), 2.0, 1e-12);
   EXPECT_NEAR(m[0][1].get<double>(), 0.0, 1e-12);
@@ -110,9 +112,9 @@ TEST(SceneEdit, ThePosesOfAPosePitaAreDraggedByTheirCorners) {
     {"t": 2, "triangle": [[5, 3], [4.4, 4.3], [3.8, 2.8]]}]})";
   const Drawn d = draw(text);
   const auto& view = d.figure.placements[0].transform;
-  EXPECT_EQ(handles(text, d.scene, d.figure.placements).size(), 9u);
-  const auto edited = nlohmann::json::parse(
-      applied(text, drag(text, d.scene, d.figure.placements, 0, "/poses/2", "corner0", view(Point(5.5, 3)))));
+  EXPECT_EQ(handles(text, motion::Stage(d.scene), d.figure.placements).size(), 9u);
+  const auto edited = nlohmann::json::parse(applied(
+      text, drag(text, motion::Stage(d.scene), d.figure.placements, 0, "/poses/2", "corner0", view(Point(5.5, 3)))));
   EXPECT_EQ(edited["method"], "P6");
   EXPECT_NEAR(edited["poses"][2]["triangle"][0][0].get<double>(), 5.5, 1e-12);
   EXPECT_EQ(edited["poses"][1], nlohmann::json::parse(text)["poses"][1]);
@@ -120,10 +122,12 @@ TEST(SceneEdit, ThePosesOfAPosePitaAreDraggedByTheirCorners) {
 
 TEST(SceneEdit, AHandleTheFigureDoesNotHaveIsRefused) {
   const Drawn d = draw(kArrows);
-  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}), std::invalid_argument);
-  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}),
+  EXPECT_THROW(drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0, "/keyframes/7", "tail", {0, 0}),
                std::invalid_argument);
-  EXPECT_THROW(drag(kArrows, d.scene, d.figure.placements, 3, "/keyframes/0", "tail", {0, 0}), std::invalid_argument);
+  EXPECT_THROW(drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0, "/keyframes/0", "corner0", {0, 0}),
+               std::invalid_argument);
+  EXPECT_THROW(drag(kArrows, motion::Stage(d.scene), d.figure.placements, 3, "/keyframes/0", "tail", {0, 0}),
+               std::invalid_argument);
 }
 
 TEST(SceneEdit, APanelWithPosesOfItsOwnEditsThem) {
@@ -132,7 +136,7 @@ TEST(SceneEdit, APanelWithPosesOfItsOwnEditsThem) {
     "panels": [{}, {"poses": [{"t": 0, "triangle": [[0, 0], [1, 0], [0, 1]]},
                               {"t": 1, "triangle": [[3, 0], [4, 0], [3, 1]]}]}]})";
   const Drawn d = draw(text);
-  const std::vector<Handle> all = handles(text, d.scene, d.figure.placements);
+  const std::vector<Handle> all = handles(text, motion::Stage(d.scene), d.figure.placements);
   for (const Handle& h : all) {
     EXPECT_EQ(h.pointer.rfind(h.panel == 0 ? "/poses/" : "/panels/1/poses/", 0), 0u) << h.panel << " " << h.pointer;
   }
@@ -160,8 +164,8 @@ TEST(SceneEdit, DraggedNumbersAreRoundedToATenthOfThePixel) {
   const Drawn d = draw(kArrows);
   const auto& view = d.figure.placements[0].transform;
   const double step = 0.1 / view.scale;
-  const auto changes =
-      drag(kArrows, d.scene, d.figure.placements, 0, "/keyframes/0", "tail", view(Point(1.23456789, -2.3456789)));
+  const auto changes = drag(kArrows, motion::Stage(d.scene), d.figure.placements, 0, "/keyframes/0", "tail",
+                            view(Point(1.23456789, -2.3456789)));
   ASSERT_EQ(changes.size(), 1U);
   const auto p = nlohmann::json::parse(changes[0].value);
   EXPECT_NEAR(p[0].get<double>(), 1.23456789, step);
@@ -183,7 +187,7 @@ TEST(SceneEdit, AMatrixDragRewritesOnlyTheEntriesThatMove) {
   // Corner 0 (the image of (0, 0)) moved right by 0.5: only b_x changes ... and L, whose columns are edges from it.
   const Point corner0(0, 0.4);
   const auto changes =
-      drag(text, d.scene, d.figure.placements, 0, "/poses/0", "corner0", view(corner0 + Point(0.5, 0)));
+      drag(text, motion::Stage(d.scene), d.figure.placements, 0, "/poses/0", "corner0", view(corner0 + Point(0.5, 0)));
   ASSERT_FALSE(changes.empty());
   for (const Change& c : changes) {
     EXPECT_EQ(c.pointer.rfind("/poses/0/matrix/", 0), 0U) << c.pointer;
@@ -193,6 +197,95 @@ TEST(SceneEdit, AMatrixDragRewritesOnlyTheEntriesThatMove) {
   const auto m = nlohmann::json::parse(edited)["poses"][0]["matrix"];
   EXPECT_NEAR(m[0][2].get<double>(), 0.5, 0.1 / view.scale);
   EXPECT_NE(edited.find("[0, 1, 0.4]"), std::string::npos) << edited;  // the second row untouched
+}
+
+// A 3D pose scene seen by an orthographic camera at azimuth 30, elevation 20,
+// looking at a target given: pose 0 a matrix, pose 1 a tetrahedron.
+const std::string kSpacePoses = R"({"dimension": 3, "method": "SAM", "poses": [
+    {"t": 0, "matrix": [[1, 0.4, 0, 0], [0, 1, 0, 0.25], [0, 0, 1, 0]]},
+    {"t": 1, "tetrahedron": [[2, 0, 0], [3, 0.4, 0], [2, 1, 0], [2, 0, 1.5]]}],
+  "camera": {"azimuth": 30, "elevation": 20, "target": [1, 0.5, 0.5]}})";
+
+// The camera's right and up, from its azimuth and elevation (degrees): the
+// eye towards (cos el cos az, cos el sin az, sin el), z up on the image.
+struct CameraAxes {
+  Eigen::Vector3d right, up, forward;
+};
+CameraAxes camera_axes(double azimuth, double elevation) {
+  const double a = azimuth * std::numbers::pi / 180.0, e = elevation * std::numbers::pi / 180.0;
+  return {{-std::sin(a), std::cos(a), 0.0},
+          {-std::sin(e) * std::cos(a), -std::sin(e) * std::sin(a), std::cos(e)},
+          {-std::cos(e) * std::cos(a), -std::cos(e) * std::sin(a), -std::sin(e)}};
+}
+
+TEST(SceneEdit, HandlesOfSpaceAreWhereTheCameraShowsTheCorners) {
+  const Drawn d = draw(kSpacePoses);
+  const std::vector<Handle> all = handles(kSpacePoses, motion::Stage(d.scene), d.figure.placements);
+  ASSERT_EQ(all.size(), 8u);  // four corners of each of the two poses
+  const auto& view = d.figure.placements[0].transform;
+  const CameraAxes c = camera_axes(30, 20);
+  const Eigen::Vector3d target(1, 0.5, 0.5);
+  const auto drawn = [&](const Eigen::Vector3d& x) {
+    return view(Point{(x - target).dot(c.right), (x - target).dot(c.up)});
+  };
+  // Pose 1's corners are its tetrahedron's points; pose 0 maps (0, 1, 0) to (0.4, 1.25, 0).
+  EXPECT_LT(std::abs(find(all, "/poses/1", "corner1").at - drawn({3, 0.4, 0})), 1e-9);
+  EXPECT_LT(std::abs(find(all, "/poses/1", "corner3").at - drawn({2, 0, 1.5})), 1e-9);
+  EXPECT_LT(std::abs(find(all, "/poses/0", "corner2").at - drawn({0.4, 1.25, 0})), 1e-9);
+}
+
+// A corner dragged by (dx, dy) pixels moves in the image plane by that many
+// pixels of the camera's right and up, its depth kept; the pose's other
+// values keep their text.
+TEST(SceneEdit, ADragOfACornerOfSpaceMovesItInTheViewsPlane) {
+  const Drawn d = draw(kSpacePoses);
+  const motion::Stage stage(d.scene);
+  const auto& view = d.figure.placements[0].transform;
+  const CameraAxes c = camera_axes(30, 20);
+  const double pixel = 1.0 / view.scale;
+  const auto moved_by = [&](double dx, double dy) { return (dx * c.right - dy * c.up) * pixel; };  // canvas y down
+
+  // The tetrahedron's point 2 moved: only that point is written.
+  const Handle& h = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/1", "corner2");
+  const auto changes = drag(kSpacePoses, stage, d.figure.placements, 0, "/poses/1", "corner2", h.at + Point(37, -21));
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_EQ(changes[0].pointer, "/poses/1/tetrahedron/2");
+  check_change(kSpacePoses, changes[0]);
+  const auto point = nlohmann::json::parse(changes[0].value);
+  const Eigen::Vector3d was(2, 1, 0), now(point[0].get<double>(), point[1].get<double>(), point[2].get<double>());
+  EXPECT_LT((now - was - moved_by(37, -21)).norm(), 0.1 * pixel) << now.transpose();
+  EXPECT_LT(std::abs((now - was).dot(c.forward)), 0.1 * pixel);
+  const std::string edited = applied(kSpacePoses, changes);
+  EXPECT_NE(edited.find("[[2, 0, 0], [3, 0.4, 0], "), std::string::npos) << edited;
+
+  // The matrix's corner 1, the image of (1, 0, 0): its first column moves, the rest keeps its text.
+  const Handle& m = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/0", "corner1");
+  const auto entries = drag(kSpacePoses, stage, d.figure.placements, 0, "/poses/0", "corner1", m.at + Point(-15, 30));
+  ASSERT_FALSE(entries.empty());
+  for (const Change& change : entries) {
+    EXPECT_EQ(change.pointer.rfind("/poses/0/matrix/", 0), 0u) << change.pointer;
+    EXPECT_EQ(change.pointer.back(), '0') << change.pointer;  // the column of (1, 0, 0)
+    check_change(kSpacePoses, change);
+  }
+  const std::string rewritten = applied(kSpacePoses, entries);
+  const auto matrix = nlohmann::json::parse(rewritten)["poses"][0]["matrix"];
+  const Eigen::Vector3d corner1(matrix[0][0].get<double>() + matrix[0][3].get<double>(),
+                                matrix[1][0].get<double>() + matrix[1][3].get<double>(),
+                                matrix[2][0].get<double>() + matrix[2][3].get<double>());
+  EXPECT_LT((corner1 - Eigen::Vector3d(1, 0.25, 0) - moved_by(-15, 30)).norm(), 0.1 * pixel) << corner1.transpose();
+  EXPECT_NE(rewritten.find(", 0.4, 0, 0], ["), std::string::npos) << rewritten;
+  EXPECT_NE(rewritten.find(", 1, 0, 0.25], ["), std::string::npos) << rewritten;
+  EXPECT_NE(rewritten.find(", 0, 1, 0]]}"), std::string::npos) << rewritten;
+}
+
+TEST(SceneEdit, AChangeOfSpaceNamesAPointOrAnEntryThatIsThere) {
+  for (const std::string good : {"/poses/1/tetrahedron/3", "/poses/0/matrix/2/3", "/poses/0/matrix"}) {
+    EXPECT_NO_THROW(check_change(kSpacePoses, {good, "[1, 2, 3]"})) << good;
+  }
+  for (const std::string bad : {"/poses/1/tetrahedron/4", "/poses/0/matrix/3/0", "/poses/0/matrix/0/4",
+                                "/poses/1/triangle/0", "/poses/0/tetrahedron/0", "/camera/target"}) {
+    EXPECT_THROW(check_change(kSpacePoses, {bad, "1"}), std::invalid_argument) << bad;
+  }
 }
 
 // "Save view" writes the camera of a 3D scene: exactly its azimuth,

@@ -353,6 +353,109 @@ def test_a_scene_of_the_plane_does_not_turn(folder, browser):
         served.stop()
 
 
+def corner_on_screen(browser, pointer, part):
+    """Where the handle of `part` of `pointer` is on the screen (CSS pixels), or None."""
+    return browser.evaluate(f"""(() => {{ const c = [...document.querySelectorAll('#scene-0 circle.handle')].find(h =>
+        h.dataset.pointer === {json.dumps(pointer)} && h.dataset.part === {json.dumps(part)});
+        if (!c) return null; const r = c.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; }})()""")
+
+
+def top_corner(browser):
+    """A corner handle nothing covers (the pointer finds it at its centre), the last drawn first."""
+    for h in reversed(browser.evaluate("views.get(0).shownHandles")):
+        at = corner_on_screen(browser, h["pointer"], h["part"])
+        hit = at and browser.evaluate(f"(() => {{ const e = document.elementFromPoint({at[0]}, {at[1]}); "
+                                      "return e && e.dataset ? [e.dataset.pointer, e.dataset.part] : null; })()")
+        if hit == [h["pointer"], h["part"]]:
+            return h["pointer"], h["part"], at
+    raise AssertionError("no corner handle on top")
+
+
+def test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser, name="sam-3d-fig12-bezier"):
+    """Fig. 12 with --edit: a handle at each corner of each pose's reference tetrahedron; a drag
+    that starts on one moves it (the camera does not turn), the figure follows while the button is
+    held, the release writes that pose's matrix entries only, the handle stays under the pointer,
+    and Ctrl+Z gives the file back byte for byte. While the view is turned, no handles."""
+    text = (SOURCE / "scenes" / f"{name}.json").read_text()
+    (folder / "s.json").write_text(text)
+    served = Served(folder, ["s.json"], "--edit")
+    try:
+        open_scene(browser, served)
+        poses = len(json.loads(text)["poses"])
+        count = lambda: browser.evaluate("document.querySelectorAll('#scene-0 circle.handle').length")
+        eventually(lambda: count() == 4 * poses, 30, what=lambda: f"four handles a pose: {count()}")
+        pointer, part, (x, y) = top_corner(browser)
+        k = int(pointer.split("/")[-1])
+        shown = browser.evaluate("views.get(0).changes")
+        old_version = json.loads(served.get("/api/scenes")[1])[0]["version"]
+        dx, dy = 36.0, -28.0
+        browser.call("Input.dispatchMouseEvent", type="mouseMoved", x=x, y=y)
+        mouse(browser, "mousePressed", x, y)
+        for step in range(1, 7):
+            mouse(browser, "mouseMoved", x + dx * step / 6, y + dy * step / 6)
+            time.sleep(0.05)
+        # The figure follows while the button is held (POST /api/preview), and the camera stays.
+        eventually(lambda: browser.evaluate("views.get(0).changes") > shown, 30, what="a live figure while dragging")
+        check(browser.evaluate("views.get(0).turned") is None, "a drag from a handle does not turn the camera")
+        check((folder / "s.json").read_text() == text, "nothing written before release")
+        mouse(browser, "mouseReleased", x + dx, y + dy)
+        edited = eventually(lambda: (lambda t: t != text and t)((folder / "s.json").read_text()), 60,
+                            what=lambda: "the file edited: " + served.stderr()[-400:])
+        # Only numbers of pose k's matrix changed: the bytes that differ lie within that pose.
+        was, now = json.loads(text), json.loads(edited)
+        moved = was["poses"][k]["matrix"]
+        was["poses"][k]["matrix"] = now["poses"][k]["matrix"]
+        check(was == now and moved != now["poses"][k]["matrix"], f"only pose {k}'s matrix changed")
+        same_start = next(i for i, (a, b) in enumerate(zip(text, edited)) if a != b)
+        same_end = next(i for i, (a, b) in enumerate(zip(reversed(text), reversed(edited))) if a != b)
+        starts = [i for i in range(text.index('"poses"'), len(text)) if text.startswith('"t":', i)]
+        end = text.index("}", starts[k])  # a pose is an object with no object inside
+        check(starts[k] < same_start and len(text) - same_end <= end,
+              f"the changed bytes lie in pose {k}: {text[same_start:len(text) - same_end]!r}")
+        for r in range(3):
+            for c in range(4):
+                if now["poses"][k]["matrix"][r][c] == moved[r][c]:
+                    check(str(moved[r][c]) in edited[starts[k]:], "an untouched entry keeps its text")
+        check(browser.evaluate("views.get(0).turned") is None, "still the file's camera")
+        # The figure drawn from the file in the view held: the corner where it was dropped.
+        def at_new_version():
+            version = json.loads(served.get("/api/scenes")[1])[0]["version"]
+            return (version != old_version and browser.evaluate("views.get(0).fetching") is None and
+                    browser.evaluate("document.querySelector('#scene-0').dataset.version") == str(version))
+        eventually(at_new_version, 60, what="the page at the edited file's version")
+        eventually(lambda: (lambda at: at and abs(at[0] - x - dx) < 2 and abs(at[1] - y - dy) < 2)(
+                       corner_on_screen(browser, pointer, part)), 30,
+                   what=lambda: f"the handle under the pointer: {corner_on_screen(browser, pointer, part)} "
+                                f"against {(x + dx, y + dy)}")
+        # Ctrl+Z: the file back, byte for byte.
+        for kind in ("rawKeyDown", "keyUp"):
+            browser.call("Input.dispatchKeyEvent", type=kind, key="z", code="KeyZ", windowsVirtualKeyCode=90,
+                         nativeVirtualKeyCode=90, modifiers=2)
+        eventually(lambda: (folder / "s.json").read_text() == text, 30, what="the file back after Ctrl+Z")
+        # Turned in the page, the figure shows no handles (they are the file's camera's); "reset view" brings them back.
+        eventually(lambda: count() == 4 * poses and not browser.evaluate("views.get(0).fetching"), 30)
+        # A press on the panel away from every handle turns it.
+        px, py = browser.evaluate(f"""(() => {{ const svg = {FIGURE}; const [x, y, w, h] = views.get(0).panels[0];
+            for (const [fx, fy] of [[0.1, 0.9], [0.9, 0.9], [0.1, 0.2], [0.9, 0.2], [0.5, 0.95]]) {{
+              const p = svg.createSVGPoint(); p.x = x + fx * w; p.y = y + fy * h;
+              const q = p.matrixTransform(svg.getScreenCTM());
+              const e = document.elementFromPoint(q.x, q.y);
+              if (e && !e.classList.contains('handle')) return [q.x, q.y]; }} return null; }})()""")
+        drag(browser, px, py, 40, 0)
+        eventually(lambda: settled(browser), 60, what=lambda: f"the turned figure: {turned(browser)}")
+        check(count() == 0, f"no handles on the turned figure: {count()}")
+        click(browser, "#scene-0 button.reset-view")
+        eventually(lambda: count() == 4 * poses, 30, what=lambda: f"the handles back: {count()}")
+    finally:
+        served.stop()
+
+
+def test_a_corner_under_an_auto_camera_stays_under_the_pointer(folder, browser):
+    """SAM 3D Fig. 13 ("auto": true, poses over several lines): the camera the figure was drawn with
+    is held while editing, so that the edit does not turn the view under the pointer."""
+    test_a_corner_of_space_is_dragged_in_the_views_plane(folder, browser, "sam-3d-fig13-polysam")
+
+
 def test_the_camera_parameter_is_checked(folder):
     shutil.copy(SOURCE / "scenes" / "sam-3d-fig12-bezier.json", folder / "s.json")
     served = Served(folder, ["s.json"])
@@ -377,7 +480,9 @@ def main():
     try:
         for test in (test_the_camera_parameter_is_checked, test_a_scene_of_the_plane_does_not_turn,
                      test_turning_and_saving, test_save_view_adds_what_the_file_lacks,
-                     test_shift_wheel_moves_a_perspective_camera, test_auto_camera_and_turn_latency):
+                     test_shift_wheel_moves_a_perspective_camera, test_auto_camera_and_turn_latency,
+                     test_a_corner_of_space_is_dragged_in_the_views_plane,
+                     test_a_corner_under_an_auto_camera_stays_under_the_pointer):
             folder = root / test.__name__
             folder.mkdir()
             started = time.monotonic()

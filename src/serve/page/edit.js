@@ -39,8 +39,15 @@ function handleCircle(index, h) {
 }
 
 // The views edits are read and drawn in: those of the figure shown when the first edit began, until "fit".
+// With "camera": {"auto": true}, the camera the panels were drawn with then is held too: an edit
+// could make auto turn the view under the pointer (when the panels' own autos differ, it is not).
 function holdViews(v) {
-  if (!v.held && v.sceneViews) v.held = v.sceneViews;
+  if (!v.held && v.sceneViews) {
+    v.held = v.sceneViews;
+    const panels = v.camera && v.camera.auto && v.camera.panels ? v.camera.panels : [];
+    const same = panels.length && panels.every(p => p.azimuth === panels[0].azimuth && p.elevation === panels[0].elevation);
+    v.heldCamera = same ? { azimuth: panels[0].azimuth, elevation: panels[0].elevation } : null;
+  }
   return v.held;
 }
 
@@ -79,7 +86,7 @@ function startDrag(index, h, down) {
     if (!drag.moved) return;  // a click: the handle selected only
     const p = toSvg(e);
     await edit(index, { drag: { panel: h.panel, pointer: h.pointer, part: h.part, to: [p.x, p.y], version: v.version },
-                        views: holdViews(v) }, true);
+                        views: holdViews(v), camera: v.heldCamera }, true);
   };
   window.addEventListener("pointermove", move);
   window.addEventListener("pointerup", up);
@@ -99,7 +106,7 @@ async function preview(index, drag) {
     const response = await fetch(api(`/api/preview/${index}`), {
       method: "POST", signal: control.signal,
       body: JSON.stringify({ drag: { panel: h.panel, pointer: h.pointer, part: h.part, to: drag.at },
-                             views: holdViews(v) }) });
+                             views: holdViews(v), camera: v.heldCamera }) });
     const answer = await response.json();
     if (v.drag !== drag) return;  // released: the edit's figure comes
     if (response.ok) {
@@ -143,8 +150,8 @@ function nudgeKey(index, e) {
   h.at = [h.at[0] + steps[0] * n, h.at[1] + steps[1] * n];
   const c = handleCircle(index, h);
   if (c) { c.setAttribute("cx", h.at[0]); c.setAttribute("cy", h.at[1]); }
-  edit(index, { drag: { panel: h.panel, pointer: h.pointer, part: h.part, to: h.at.slice() }, views: holdViews(v) },
-       true);
+  edit(index, { drag: { panel: h.panel, pointer: h.pointer, part: h.part, to: h.at.slice() }, views: holdViews(v),
+                camera: v.heldCamera }, true);
   return true;
 }
 

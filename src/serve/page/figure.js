@@ -118,7 +118,7 @@ async function frame(index) {
   try {
     if (held) {
       response = await fetch(api(`/api/preview/${index}`), { method: "POST", signal: control.signal,
-                                                             body: JSON.stringify({ views: held }) });
+                                                             body: JSON.stringify({ views: held, camera: v.heldCamera }) });
       const answer = await response.json();
       if (response.ok) { svg = answer.svg; handles = answer.handles; }
     } else {
@@ -147,7 +147,7 @@ async function frame(index) {
     v.figure.classList.remove("stale");
     v.figure.dataset.version = String(v.version);
     decorate(index);
-    if (v.t === null) drawHandles(index, handles);
+    if (v.t === null) drawHandles(index, turned ? [] : handles);  // handles only in the file's own camera
   } else {
     v.figure.classList.add("stale");
     if (turned) turnFailed(index, failure);
