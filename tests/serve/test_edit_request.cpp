@@ -26,8 +26,9 @@ const std::string kTwoPanelArrows = R"({"method": "P6", "keyframes": [
   {"t": 1, "p": [6, 0], "m": 1.2, "w": 3.5, "turns": 1}],
   "panels": [{"title": "one"}, {"title": "two"}]})";
 
-const Handle& find_handle(const std::vector<Handle>& all, std::size_t panel, const std::string& pointer,
-                          const std::string& part) {
+// A copy: the handles are often a temporary list.
+Handle find_handle(const std::vector<Handle>& all, std::size_t panel, const std::string& pointer,
+                   const std::string& part) {
   for (const Handle& h : all) {
     if (h.panel == panel && h.pointer == pointer && h.part == part) return h;
   }
@@ -66,7 +67,7 @@ TEST(EditRequest, ADragInHeldViewsStaysUnderThePointer) {
     request["views"].push_back(
         {placement.view.min.real(), placement.view.min.imag(), placement.view.max.real(), placement.view.max.imag()});
   }
-  const Handle& tail = find_handle(handles(kTwoPanelArrows, stage, fitted.placements), 1, "/keyframes/2", "tail");
+  const Handle tail = find_handle(handles(kTwoPanelArrows, stage, fitted.placements), 1, "/keyframes/2", "tail");
   const Point to = tail.at + Point{60, 40};  // outward: the content grows
   request["drag"] = {{"panel", 1u}, {"pointer", "/keyframes/2"}, {"part", "tail"}, {"to", {to.real(), to.imag()}}};
   const Applied applied = apply_changes(kTwoPanelArrows, request_changes(kTwoPanelArrows, scene, request));
@@ -94,7 +95,7 @@ TEST(EditRequest, ADragOfSpaceInHeldViewsStaysUnderThePointer) {
   const motion::Stage stage(scene);
   const render::Figure fitted = render::build_figure(stage);
   Json request{{"views", views_json(stage, fitted.placements)}};
-  const Handle& corner = find_handle(handles(text, stage, fitted.placements), 0, "/poses/1", "corner3");
+  const Handle corner = find_handle(handles(text, stage, fitted.placements), 0, "/poses/1", "corner3");
   const Point to = corner.at + Point{-50, 30};
   request["drag"] = {{"panel", 0u}, {"pointer", "/poses/1"}, {"part", "corner3"}, {"to", {to.real(), to.imag()}}};
   const Applied applied = apply_changes(text, request_changes(text, scene, request));

@@ -37,7 +37,8 @@ std::string applied(std::string text, const std::vector<Change>& changes) {
   return text;
 }
 
-const Handle& find(const std::vector<Handle>& all, const std::string& pointer, const std::string& part) {
+// A copy: the handles are often a temporary list.
+Handle find(const std::vector<Handle>& all, const std::string& pointer, const std::string& part) {
   for (const Handle& h : all) {
     if (h.pointer == pointer && h.part == part) return h;
   }
@@ -246,7 +247,7 @@ TEST(SceneEdit, ADragOfACornerOfSpaceMovesItInTheViewsPlane) {
   const auto moved_by = [&](double dx, double dy) { return (dx * c.right - dy * c.up) * pixel; };  // canvas y down
 
   // The tetrahedron's point 2 moved: only that point is written.
-  const Handle& h = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/1", "corner2");
+  const Handle h = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/1", "corner2");
   const auto changes = drag(kSpacePoses, stage, d.figure.placements, 0, "/poses/1", "corner2", h.at + Point(37, -21));
   ASSERT_EQ(changes.size(), 1u);
   EXPECT_EQ(changes[0].pointer, "/poses/1/tetrahedron/2");
@@ -259,7 +260,7 @@ TEST(SceneEdit, ADragOfACornerOfSpaceMovesItInTheViewsPlane) {
   EXPECT_NE(edited.find("[[2, 0, 0], [3, 0.4, 0], "), std::string::npos) << edited;
 
   // The matrix's corner 1, the image of (1, 0, 0): its first column moves, the rest keeps its text.
-  const Handle& m = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/0", "corner1");
+  const Handle m = find(handles(kSpacePoses, stage, d.figure.placements), "/poses/0", "corner1");
   const auto entries = drag(kSpacePoses, stage, d.figure.placements, 0, "/poses/0", "corner1", m.at + Point(-15, 30));
   ASSERT_FALSE(entries.empty());
   for (const Change& change : entries) {

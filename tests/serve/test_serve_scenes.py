@@ -23,8 +23,12 @@ SOURCE = pathlib.Path(os.environ.get("PITA_SOURCE_DIR", pathlib.Path(__file__).r
 PLAYED = 0.5  # seconds of play per scene
 
 
-def ready(browser, i):
-    """Scene i's figure is shown, nothing is on its way, and its animated SVG has come (or it has no timeline)."""
+def ready(browser, i, name):
+    """Scene i's figure is shown, nothing is on its way, and its animated SVG has come (or it has
+    no timeline); fails at once when the server refused to make the animated SVG."""
+    refused = browser.evaluate(f"typeof views !== 'undefined' && views.get({i}) && views.get({i}).animationRefused")
+    if refused:
+        raise AssertionError(f"{name}: no animated SVG: {refused}")
     return browser.evaluate(f"""(() => {{ const v = typeof views !== 'undefined' && views.get({i});
         return !!v && v.version >= 0 && v.shown !== null && !v.fetching &&
                (v.timeline === null || v.animation !== null); }})()""")
@@ -59,7 +63,7 @@ def main():
         started = time.monotonic()
         browser.open(served.url)
         for i, name in enumerate(names):
-            eventually(lambda: ready(browser, i), 300, what=f"{name}: its figure and animated SVG")
+            eventually(lambda: ready(browser, i, name), 300, what=f"{name}: its figure and animated SVG")
         print(f"{len(names)} scenes and their animated SVGs in the page: {time.monotonic() - started:.1f} s")
         for i, name in enumerate(names):
             if browser.evaluate(f"views.get({i}).timeline === null"):

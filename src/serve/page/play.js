@@ -48,9 +48,17 @@ async function loadAnimation(index) {
   const v = views.get(index);
   const version = v.version;
   v.animation = null;
+  v.animationRefused = null;
   if (!v.timeline) return;
   const response = await fetch(api(`/api/animation/${index}`)).catch(() => null);
-  if (!response || !response.ok || version !== v.version) return;
+  if (!response || version !== v.version) return;
+  if (!response.ok) {  // why the frames are fetched one by one (the slider's title says it)
+    const answer = await response.json().catch(() => ({}));
+    if (version !== v.version) return;
+    v.animationRefused = answer.error || `the server says ${response.status}`;
+    v.slider.title = `frames drawn by the server one by one: ${v.animationRefused}`;
+    return;
+  }
   const svg = await response.text();
   if (version !== v.version) return;
   v.animation = svg;
