@@ -14,8 +14,8 @@ namespace pita::render {
 template <class Pose>
 Drawing pose_panel_drawing(const motion::Stage& stage, std::size_t index, const FrameSelection* selection,
                            StaticLayers* cache) {
-  PosePanel<Pose> panel(stage, index, selection);
-  if (selection == nullptr) cache = nullptr;
+  if (selection == nullptr) cache = nullptr;  // the figure itself: drawn whole
+  PosePanel<Pose> panel(stage, index, selection, cache);
   const scene::Panel& own = panel.panel();
   // The panel's own layers, else the scene's.
   const scene::LayersOf<scene::PoseLayer> drawn = scene::layers_of<scene::PoseLayer>(panel.scene(), own);

@@ -15,6 +15,7 @@
 #include "motion/scene_motion.hpp"
 #include "motion/stage.hpp"
 #include "render/camera_choice.hpp"
+#include "render/static_layers.hpp"
 #include "scene/body_points.hpp"
 
 namespace pita::render {
@@ -113,15 +114,40 @@ scene::Camera drawn_camera(const motion::Stage& stage, std::size_t index) {
   return chosen_camera(figure.camera, figure.shapes, seen_poses(stage, index, keys));
 }
 
+namespace {
+
+// make_view, once per panel of an animation's frames when given a cache.
 template <class Pose>
-PosePanel<Pose>::PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection)
+PoseView<Pose> kept_view(const motion::Stage& stage, std::size_t index, const scene::PoseKeys<Pose>& keys,
+                         double& ground, StaticLayers* cache) {
+  if constexpr (in_space_v<Pose>) {
+    if (cache != nullptr) {
+      if (const SpaceView* kept = cache->view(index)) {
+        ground = kept->ground;
+        return kept->projection;
+      }
+      const Projection view = make_view<Pose>(stage, index, keys, ground);
+      cache->record_view(index, SpaceView{view, ground});
+      return view;
+    }
+  } else {
+    (void)cache;
+  }
+  return make_view<Pose>(stage, index, keys, ground);
+}
+
+}  // namespace
+
+template <class Pose>
+PosePanel<Pose>::PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection,
+                           StaticLayers* cache)
     : stage_(stage),
       index_(index),
       scene_(stage.scene()),
       panel_(stage.panel(index)),
       selection_(selection),
       keys_(pose_keys_of<Pose>(stage.scene(), stage.panel(index))),
-      view_(make_view<Pose>(stage, index, keys_, ground_)) {}
+      view_(kept_view<Pose>(stage, index, keys_, ground_, selection != nullptr ? cache : nullptr)) {}
 
 template <class Pose>
 void PosePanel<Pose>::fail(const std::string& reason) const {

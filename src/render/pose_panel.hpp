@@ -42,8 +42,10 @@ class PosePanel {
   using Keys = scene::PoseKeys<Pose>;
 
   // Throws RenderError when the panel holds no poses of this dimension, or
-  // (in space) when the camera cannot see the scene.
-  PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection);
+  // (in space) when the camera cannot see the scene. With a cache (frames of
+  // one animation), the view in space is chosen once and kept there.
+  PosePanel(const motion::Stage& stage, std::size_t index, const FrameSelection* selection,
+            StaticLayers* cache = nullptr);
 
   const motion::Stage& stage() const { return stage_; }
   std::size_t index() const { return index_; }

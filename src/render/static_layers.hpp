@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "render/drawing.hpp"
+#include "render/projection.hpp"
 
 namespace pita::render {
 
@@ -30,6 +31,14 @@ namespace pita::render {
 struct LayerPart {
   std::vector<Item> items;
   std::vector<Legend> legends;
+};
+
+// How a panel of space is seen (render/pose_panel.hpp): the camera, which
+// "auto" turns after looking at the motion's samples, and the ground its
+// shadows fall on. It reads nothing of the frame either: chosen once.
+struct SpaceView {
+  Projection projection;
+  double ground = 0.0;
 };
 
 class StaticLayers {
@@ -51,9 +60,21 @@ class StaticLayers {
     parts_.try_emplace({panel, layer}, std::move(part));
   }
 
+  // Panel `panel`'s view in space, once recorded; null before.
+  const SpaceView* view(std::size_t panel) const {
+    const std::lock_guard lock(mutex_);
+    const auto found = views_.find(panel);
+    return found == views_.end() ? nullptr : &found->second;
+  }
+  void record_view(std::size_t panel, const SpaceView& view) {
+    const std::lock_guard lock(mutex_);
+    views_.try_emplace(panel, view);
+  }
+
  private:
   mutable std::mutex mutex_;
   std::map<std::pair<std::size_t, std::size_t>, LayerPart> parts_;
+  std::map<std::size_t, SpaceView> views_;
 };
 
 // Draws layer `layer` of panel `panel` into `drawing`: copied from `cache`

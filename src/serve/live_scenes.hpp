@@ -51,7 +51,7 @@ struct AnimationCache {
 // make, in processor time of the thread that makes it (judged after each
 // frame: the time so far, and the frames to come at the pace so far): beyond
 // either it is refused (409) and the page fetches each frame from the server
-// instead. The figures of scenes/ take 0.03 to 4.4 s (the layers that read
+// instead. The figures of scenes/ take 0.03 to 3.6 s (the layers that read
 // nothing of the frame are drawn once: render/static_layers.hpp).
 inline constexpr std::size_t kMaxPageAnimationBytes = 32U << 20U;
 inline constexpr double kMaxPageAnimationSeconds = 20.0;

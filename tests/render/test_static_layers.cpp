@@ -10,6 +10,7 @@
 #include "../core/pose_test_support.hpp"
 #include "motion/stage.hpp"
 #include "render/figure.hpp"
+#include "render/projection.hpp"
 #include "render/static_layers.hpp"
 #include "render_support.hpp"
 
@@ -144,6 +145,35 @@ TEST(StaticLayers, PoseFramesKeepTheirMovingShapesAndCopyThePlot) {
   }
   EXPECT_EQ(cache.find(0, 0), nullptr) << "the shapes move";
   EXPECT_NE(cache.find(0, 1), nullptr) << "the plot reads nothing of the frame";
+}
+
+// In space, with "auto" (the camera turned after looking at the motion's
+// samples) and shadows: the view is chosen once and kept; the frames are the
+// frames drawn without the cache.
+TEST(StaticLayers, TheViewOfSpaceIsChosenOnceForEveryFrame) {
+  const scene::Scene s = scene::parse_scene(R"({"dimension": 3, "method": "polySAM", "samples": 5,
+    "poses": [{"t": 0, "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]},
+              {"t": 1, "matrix": [[0, -1, 0, 2], [1, 0, 0, 0], [0, 0, 1, 1]]},
+              {"t": 2, "matrix": [[0, 0, 1, 3], [1, 0, 0, 1], [0, 1, 0, 2]]}],
+    "camera": {"azimuth": -70, "elevation": 28, "auto": true, "shadow": true}})",
+                                            "space.json");
+  const motion::Stage stage(s);
+  StaticLayers cache;
+  EXPECT_EQ(cache.view(0), nullptr);
+  for (double t : {0.0, 0.8, 1.5, 2.0}) {
+    const FrameSelection frame{t, {t - 0.3}};
+    expect_same(frame_drawings(stage, &frame, &cache), frame_drawings(stage, &frame, nullptr));
+    ASSERT_NE(cache.view(0), nullptr);
+  }
+  // The view kept is the one the frame uses: a camera put in the cache by hand moves the drawing.
+  StaticLayers other;
+  scene::Camera side;
+  side.azimuth = 90.0;
+  side.elevation = 0.0;
+  other.record_view(0, SpaceView{Projection(side, Eigen::Vector3d::Zero()), cache.view(0)->ground});
+  const FrameSelection frame{0.8, {}};
+  const std::vector<Drawing> seen = frame_drawings(stage, &frame, &other);
+  EXPECT_FALSE(seen[0].items == frame_drawings(stage, &frame, nullptr)[0].items);
 }
 
 }  // namespace
