@@ -186,6 +186,13 @@ std::vector<Change> corner_drag(const scene::Scene& scene, const scene::PoseKeys
 }  // namespace
 
 void check_change(const std::string& text, const Change& change) {
+  // The value's bytes are written as given, and the undo gives back the
+  // bytes the value replaced: JSON whitespace around it would be written and
+  // never taken back (the undo's span is the value's, without it).
+  const auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  if (!change.remove && (change.value.empty() || space(change.value.front()) || space(change.value.back()))) {
+    throw std::invalid_argument("the value for " + change.pointer + " must be one JSON value, with no space around it");
+  }
   if (is_camera_pointer(change.pointer)) return check_camera_change(change);
   if (change.remove) throw std::invalid_argument("\"" + change.pointer + "\" is not a member an edit may remove");
   // /keyframes/K/(p|q|m|w|t), /poses/K/(triangle/J|tetrahedron/J|matrix|t), /points/K/t, or the same under /panels/N.

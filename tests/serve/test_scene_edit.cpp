@@ -154,7 +154,12 @@ TEST(SceneEdit, OnlyTheValuesADragWritesMayBeSentBack) {
                                                {"/canvas/t", "5"},
                                                {"/keyframes/0/p", "[1, 2], \"x\": 1"},
                                                {"/keyframes/0/q", "[1, 2]"},
-                                               {"/keyframes/9/p", "[1, 2]"}}) {
+                                               {"/keyframes/9/p", "[1, 2]"},
+                                               // Space around the value: written, never undone (fuzz_edit_body).
+                                               {"/keyframes/0/p", " [1, 2]"},
+                                               {"/keyframes/0/w", "3\n"},
+                                               {"/camera/azimuth", " 10"},
+                                               {"/keyframes/0/w", ""}}) {
     EXPECT_THROW(check_change(kArrows, bad), std::invalid_argument) << bad.pointer << " = " << bad.value;
   }
 }
