@@ -141,3 +141,33 @@ class Browser:
         self.process.terminate()
         self.process.wait(30)
         shutil.rmtree(self.profile, ignore_errors=True)
+
+
+def key(browser, name, code, keycode, text=None):
+    """A key pressed and released, as the keyboard sends it."""
+    extra = {"text": text} if text else {}
+    browser.call("Input.dispatchKeyEvent", type="keyDown", key=name, code=code, windowsVirtualKeyCode=keycode, **extra)
+    browser.call("Input.dispatchKeyEvent", type="keyUp", key=name, code=code, windowsVirtualKeyCode=keycode)
+
+
+def figures_asked_since(browser, since):
+    """The figures and frames the page asked the server for since `since` (its performance.now()).
+    Requests are told apart by when they started: the list is in that order, and a request still
+    on its way when counted would join it before later ones."""
+    return browser.evaluate(f"performance.getEntriesByType('resource').filter(e => e.startTime >= {since})"
+                            ".map(e => e.name).filter(n => n.includes('/api/figure/'))")
+
+
+def play(browser, i, seconds):
+    """Scene i's figure focused, Space pressed, `seconds` of play, Space again: (the frames shown a
+    second, the timeline's fps, the page's time when play began, for figures_asked_since)."""
+    browser.evaluate(f"document.querySelector('#scene-{i}').scrollIntoView(); "
+                     f"document.querySelector('#scene-{i} .figure').focus()")
+    since = browser.evaluate("performance.now()")
+    key(browser, " ", "Space", 32, " ")
+    eventually(lambda: browser.evaluate(f"views.get({i}).shown") == "animation", 10)
+    before = browser.evaluate(f"views.get({i}).changes")
+    time.sleep(seconds)
+    after = browser.evaluate(f"views.get({i}).changes")
+    key(browser, " ", "Space", 32, " ")
+    return (after - before) / seconds, browser.evaluate(f"views.get({i}).timeline.fps"), since

@@ -16,7 +16,7 @@ import time
 import urllib.request
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from serve_session import PITA, Browser, Served, eventually  # noqa: E402
+from serve_session import PITA, Browser, Served, eventually, figures_asked_since, key, play  # noqa: E402
 
 SOURCE = pathlib.Path(os.environ.get("PITA_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 FIG03 = json.loads((SOURCE / "scenes" / "fig03-steady-morph.json").read_text())
@@ -266,13 +266,6 @@ def test_the_page_links_only_within_itself(folder, browser):
         served.stop()
 
 
-def key(browser, name, code, keycode, text=None):
-    """A key pressed and released, as the keyboard sends it."""
-    extra = {"text": text} if text else {}
-    browser.call("Input.dispatchKeyEvent", type="keyDown", key=name, code=code, windowsVirtualKeyCode=keycode, **extra)
-    browser.call("Input.dispatchKeyEvent", type="keyUp", key=name, code=code, windowsVirtualKeyCode=keycode)
-
-
 def visible_frames(browser, index):
     """The frame groups of the animated SVG the page shows, visible now (their indices)."""
     return browser.evaluate(f"""[...document.querySelectorAll('#scene-{index} .figure svg > g[visibility]')]
@@ -302,23 +295,12 @@ def test_scrubbing_and_play(folder, browser, rates):
                                                 f"views.get({i}).animation !== null && views.get({i}).shown !== null && "
                                                 f"!views.get({i}).fetching"), 60,
                        what=f"{name}'s animated SVG and figure")
-            browser.evaluate(f"document.querySelector('#scene-{i}').scrollIntoView(); "
-                             f"document.querySelector('#scene-{i} .figure').focus()")
-            # Requests are told apart by when they started (the list is in that order, and a
-            # request still on its way when counted would join it before the later ones).
-            since = browser.evaluate("performance.now()")
             # Space plays: the frames shown change at the display's rate, up to the timeline's fps.
-            key(browser, " ", "Space", 32, " ")
-            eventually(lambda: browser.evaluate(f"views.get({i}).shown") == "animation", 10)
-            before = browser.evaluate(f"views.get({i}).changes")
-            time.sleep(2)
-            after = browser.evaluate(f"views.get({i}).changes")
-            key(browser, " ", "Space", 32, " ")
+            shown, fps, since = play(browser, i, 2)
             check(not browser.evaluate(f"views.get({i}).playing"), "space pauses")
-            fps = browser.evaluate(f"views.get({i}).timeline.fps")
-            rates.append((name, (after - before) / 2, fps))
+            rates.append((name, shown, fps))
             # A third of the rate: ctest runs this beside builds and other browsers (serve.browser.scenes).
-            check((after - before) / 2 > fps / 3, f"{name}: {(after - before) / 2} frames a second, of {fps}")
+            check(shown > fps / 3, f"{name}: {shown} frames a second, of {fps}")
             # An arrow steps one frame; the frame shown is pita animate's frame k.
             k = browser.evaluate(f"views.get({i}).k")
             key(browser, "ArrowRight", "ArrowRight", 39)
@@ -329,8 +311,7 @@ def test_scrubbing_and_play(folder, browser, rates):
             check(browser.evaluate(f"views.get({i}).k") == k, "the left arrow steps back")
             eventually(lambda: visible_frames(browser, i) == [k], 10,
                        what=lambda: f"frame {k} shown: {visible_frames(browser, i)}")
-            asked = browser.evaluate(f"performance.getEntriesByType('resource').filter(e => e.startTime >= {since})"
-                                     ".map(e => e.name).filter(n => n.includes('/api/figure/'))")
+            asked = figures_asked_since(browser, since)
             check(not asked, f"play and the arrows asked nothing of the server: {asked}")
             subprocess.run([PITA, "animate", f"{name}.json", "-o", ".a.svg"], cwd=folder, check=True,
                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)

@@ -100,7 +100,7 @@ def open_scene(browser, served):
     # The animated SVG is made in the background after the first figure: waited for, so that the
     # server is not busy with it while turning is measured.
     eventually(lambda: browser.evaluate("views.get(0).animation !== null"), 120, what="the animated SVG")
-    browser.evaluate(f"document.querySelector('#scene-0 .figure').scrollIntoView()")
+    browser.evaluate("document.querySelector('#scene-0 .figure').scrollIntoView()")
 
 
 def test_turning_and_saving(folder, browser):
@@ -146,7 +146,7 @@ def test_turning_and_saving(folder, browser):
         eventually(lambda: browser.evaluate("views.get(0).t === null && views.get(0).shown === 'still'")
                    and settled(browser), 60, what="the turned figure back")
         check(browser.evaluate("views.get(0).svg") == svg, "the turned figure again")
-        browser.evaluate(f"document.querySelector('#scene-0 .figure').scrollIntoView()")
+        browser.evaluate("document.querySelector('#scene-0 .figure').scrollIntoView()")
         x, y = panel_centre(browser)
 
         # The wheel zooms the figure (the view box); a drag still turns it, and keeps the zoom.

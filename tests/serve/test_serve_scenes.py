@@ -16,8 +16,7 @@ import tempfile
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from serve_session import Browser, Served, eventually  # noqa: E402
-from test_serve import key  # noqa: E402
+from serve_session import Browser, Served, eventually, figures_asked_since, play  # noqa: E402
 
 SOURCE = pathlib.Path(os.environ.get("PITA_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 PLAYED = 0.5  # seconds of play per scene
@@ -32,22 +31,6 @@ def ready(browser, i, name):
     return browser.evaluate(f"""(() => {{ const v = typeof views !== 'undefined' && views.get({i});
         return !!v && v.version >= 0 && v.shown !== null && !v.fetching &&
                (v.timeline === null || v.animation !== null); }})()""")
-
-
-def play(browser, i):
-    """(frames shown a second, the timeline's fps, requests of figures made meanwhile) of scene i."""
-    browser.evaluate(f"document.querySelector('#scene-{i}').scrollIntoView(); "
-                     f"document.querySelector('#scene-{i} .figure').focus()")
-    since = browser.evaluate("performance.now()")
-    key(browser, " ", "Space", 32, " ")
-    eventually(lambda: browser.evaluate(f"views.get({i}).shown") == "animation", 10)
-    before = browser.evaluate(f"views.get({i}).changes")
-    time.sleep(PLAYED)
-    after = browser.evaluate(f"views.get({i}).changes")
-    key(browser, " ", "Space", 32, " ")
-    asked = browser.evaluate(f"performance.getEntriesByType('resource').filter(e => e.startTime >= {since})"
-                             ".map(e => e.name).filter(n => n.includes('/api/figure/'))")
-    return (after - before) / PLAYED, browser.evaluate(f"views.get({i}).timeline.fps"), asked
 
 
 def main():
@@ -69,7 +52,8 @@ def main():
             if browser.evaluate(f"views.get({i}).timeline === null"):
                 print(f"{name}: a figure without a timeline (nothing moves in it)")
                 continue
-            shown, fps, asked = play(browser, i)
+            shown, fps, since = play(browser, i, PLAYED)
+            asked = figures_asked_since(browser, since)
             rates.append((shown / fps, shown, fps, name))
             print(f"play in the page, {name}: {shown:.1f} frames shown a second (the timeline's fps: {fps:g})")
             if asked:
